@@ -1,0 +1,60 @@
+// The engine pipeline shared by inlay-cli and the studio (Qt-free):
+//   SceneDoc -> photo, camera, room and supporting surfaces -> lighting (albedo, lights)
+//            -> RenderScene (room + lights + placed objects) -> frames -> composite.
+// prepareScene() does the once-per-photo-and-geometry work; moving an object only needs
+// placeObjectAt() plus RenderSession::setObjectTransform(), never a new prepareScene().
+#pragma once
+
+#include "inlay/lighting/estimate.h"
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image_io.h"
+#include "inlay/modeling/scene_file.h"
+#include "inlay/render/scene.h"
+#include "inlay/render/session.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+struct PreparedScene {
+  SceneDoc doc;
+  LoadedImage photo;            // linear RGB, oriented
+  Camera camera;
+  RoomBox box;
+  std::vector<Extrusion> extrusions;
+  SceneGeometry geometry;
+  LightingEstimate lighting;
+  RenderScene renderScene;      // lights and objects placed; roomAlbedo filled
+  std::vector<Placement> placements;  // per object
+  std::vector<std::string> warnings;  // one line each, for stderr or a status bar
+  std::vector<std::pair<std::string, double>> stageSeconds;  // timings per stage
+};
+
+struct PrepareOptions {
+  const CancelToken* cancel = nullptr;
+  // stage name ("photo", "camera", "room", "lighting", "objects") and fraction in [0,1];
+  // called on the calling thread.
+  std::function<void(const std::string& stage, double fraction)> progress;
+  int threads = 0;
+};
+
+// Everything needed to render `doc`. Errors name the scene file's key and the reason.
+Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});
+
+// Placement of object `index` from the document's current base_px / height_m / yaw_deg (the
+// mesh stays loaded). Errors name "objects[index].base_px" etc.
+Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index);
+
+// The 8-bit-ready linear composite of a frame: differential composite over the photo, then the
+// scene's exposure.
+ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame);
+
+// Path of the bundled example scene (resources/example/scene.json) in the source tree or the
+// install prefix; empty when not found.
+std::string exampleScenePath();
+const char* versionString();
+
+}  // namespace inlay

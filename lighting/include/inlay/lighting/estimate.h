@@ -1,0 +1,62 @@
+// The lighting stage: the room's albedo and its lights' intensities from one photo.
+//
+// Model (per pixel x on the room, per channel, all in the photo's linear units):
+//   B(x) = rho(x) * ( sum_j L_j * E_j(x) + Gamma(x) )
+// where E_j is the irradiance / pi that light j would give with unit radiance (shadowed, from
+// the room geometry), Gamma the indirect irradiance / pi gathered from the photo itself (each
+// gather ray's hit point is projected into the photo; unseen surfaces take their mean
+// radiance), and rho the albedo. Light radiances L_j and per-surface reference albedos are
+// found by a bounded robust least-squares fit (Ceres) that asks the albedo to be smooth within
+// each surface; rho(x) then follows per pixel. Saturated pixels and light outlines are left out.
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image.h"
+#include "inlay/render/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+struct LightingOptions {
+  int gatherSamples = 64;       // cosine-weighted rays per gathered pixel
+  int gatherStride = 4;         // gather on every n-th pixel, interpolate between
+  int directSamples = 16;       // points per light for E_j
+  int fitPixels = 6000;         // pixels sampled for the fit
+  double saturatedAbove = 0.98; // linear value treated as clipped
+  uint32_t seed = 7;
+  int threads = 0;
+  const CancelToken* cancel = nullptr;
+};
+
+struct LightingEstimate {
+  ImageF albedo;        // W x H x 3, reflectance in [0,1]
+  ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
+  ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
+  std::vector<AreaLight> lights;      // with fitted radiance
+  std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
+  double fitRmsLog = 0;  // robust fit residual (log space)
+  double seconds = 0;
+  std::vector<std::string> notes;
+};
+
+// An area light for a light the user outlined on the photo: the outline's pixels are cast onto
+// the room; the light is the best-fitting rectangle on the surface they land on (usually the
+// ceiling), offset 1 mm into the room and facing it. Errors name `keyForMessages`.
+Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
+                                     const std::vector<Vec2>& outlinePx,
+                                     const std::string& keyForMessages);
+
+// `lightMaskPx`: W x H x 1, 1 where a light is visible in the photo (excluded from gathering
+// and fitting); may be empty.
+Expected<LightingEstimate> estimateLighting(const ImageF& photoLinear, const Camera& camera,
+                                            const SceneGeometry& geometry,
+                                            const std::vector<AreaLight>& lights,
+                                            const std::vector<bool>& refine,
+                                            const ImageF& lightMaskPx,
+                                            const LightingOptions& options = {});
+
+}  // namespace inlay

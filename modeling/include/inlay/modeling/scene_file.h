@@ -1,0 +1,118 @@
+// The scene file (../shared/spec/scene-file.md, format "inlay-scene", version 1): the one
+// document a user saves. SceneDoc mirrors its keys one to one; every optional key is a
+// std::optional (missing = estimate automatically). Parsing validates every value and returns
+// an Error naming the file, the key (e.g. "objects[1].height_m") and the reason; unknown keys
+// are reported as warnings, never errors. Saving writes atomically and round-trips: what
+// loadSceneFile reads back equals what was saved.
+#pragma once
+
+#include "inlay/modeling/core.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+struct CameraKeys {
+  std::optional<double> heightM;                    // default 1.6 when missing
+  std::optional<double> focalPx;
+  std::optional<Vec2> principalPx;
+  std::optional<std::array<Vec2, 3>> vanishingPointsPx;  // world x, y, z axes, in that order
+};
+
+struct LayoutKeys {
+  // Top-left, top-right, bottom-right, bottom-left corners of the back wall.
+  std::optional<std::array<Vec2, 4>> backWallPx;
+};
+
+struct LightKeys {
+  enum class Kind { PolygonPx, RectM };
+  Kind kind = Kind::PolygonPx;
+  std::vector<Vec2> pointsPx;        // PolygonPx: the outline on the photo (>= 3 points)
+  std::array<Vec3, 4> cornersM{};    // RectM: corners in the world frame (metres)
+  std::optional<Vec3> rgb;           // starting intensity (RectM), linear photo units
+  bool refine = true;                // "refine": false keeps the light as given
+};
+
+struct ShaftKeys {
+  std::optional<std::array<double, 4>> shaftBoxPx;   // x0, y0, x1, y1
+  std::optional<std::array<double, 4>> sourceBoxPx;
+  std::optional<Vec3> direction;                     // direction the light travels (world)
+};
+
+struct SurfaceKeys {
+  std::string kind = "extrusion";
+  std::vector<Vec2> outlinePx;       // closed outline around a horizontal top
+  Vec2 heightClickPx{0, 0};          // a floor click straight below outlinePx[0]
+};
+
+struct OccluderKeys {
+  std::vector<std::vector<Vec2>> foregroundScribblesPx;
+  std::vector<std::vector<Vec2>> backgroundScribblesPx;
+};
+
+struct MaterialKeys {
+  // "diffuse" | "glossy" | "mirror" | "glass" | "emissive" | "asset"
+  std::string preset = "diffuse";
+  Vec3 albedo{0.8, 0.8, 0.8};
+  double roughness = 0.3;
+  double ior = 1.5;
+  Vec3 rgb{1, 1, 1};                 // emissive radiance, photo linear units
+};
+
+struct ObjectKeys {
+  std::string mesh;                  // "builtin:sphere", "builtin:cube", or a path as written
+  std::string meshResolved;          // absolute path (empty for builtins), filled by the parser
+  Vec2 basePx{0, 0};
+  double heightM = 0.5;
+  double yawDeg = 0.0;
+  MaterialKeys material;
+};
+
+struct RenderKeys {
+  int spp = 256;
+  std::optional<double> seconds;     // null / missing: no time limit
+  double exposure = 0.0;             // stops applied to the composite before encoding
+  unsigned seed = 1;
+};
+
+struct SceneDoc {
+  std::string photo;                 // as written in the file
+  std::string photoResolved;         // absolute path, filled by the parser
+  CameraKeys camera;
+  LayoutKeys layout;
+  std::vector<LightKeys> lights;
+  std::vector<ShaftKeys> shafts;
+  std::vector<SurfaceKeys> surfaces;
+  std::vector<OccluderKeys> occluders;
+  std::vector<ObjectKeys> objects;
+  RenderKeys render;
+};
+
+struct SceneLoadResult {
+  SceneDoc doc;
+  std::vector<std::string> warnings;  // unknown keys and the like, one line each
+};
+
+struct SceneLimits {
+  size_t maxFileBytes = 64u << 20;   // 64 MiB
+  size_t maxObjects = 10'000;
+  size_t maxPointsPerPolyline = 100'000;
+  int maxNesting = 64;
+};
+
+// Parse from a file. Relative paths in the file are resolved against the file's folder.
+Expected<SceneLoadResult> loadSceneFile(const std::string& path, const SceneLimits& limits = {});
+// Parse from text; `baseDir` resolves relative paths; `fileNameForMessages` names the file in
+// errors.
+Expected<SceneLoadResult> parseSceneJson(const std::string& text, const std::string& baseDir,
+                                         const std::string& fileNameForMessages,
+                                         const SceneLimits& limits = {});
+// Serialise (stable key order, indented). Paths are written as in `photo` / `mesh`.
+std::string sceneToJson(const SceneDoc& doc);
+// Atomic save.
+Status saveSceneFile(const std::string& path, const SceneDoc& doc);
+
+}  // namespace inlay

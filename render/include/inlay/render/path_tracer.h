@@ -1,0 +1,95 @@
+// The Embree path tracer, differential by construction.
+//
+// One camera path is traced per (pixel, sample) in the scene WITH the inserted objects; the
+// scene WITHOUT them shares the same random numbers (a pure function of pixel, sample,
+// dimension and seed) and the same path prefix until the with-object path meets an object (a
+// hit or a blocked shadow ray); only from there on is the without-object path traced on its
+// own. So withObjects - withoutObjects is exactly zero wherever no path meets an object.
+//
+// Thread safety: after construction, render*() may run concurrently on disjoint pixel sets;
+// setObjectTransform() must not overlap with rendering (the session serialises them).
+#pragma once
+
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
+#include "inlay/render/scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace inlay {
+
+struct TracerOptions {
+  int maxDepth = 8;          // path vertices after the camera (bounces)
+  int russianRouletteDepth = 3;  // roulette starts at this depth
+  double clampRadiance = 0;  // per-sample clamp of indirect radiance; 0 = off (unbiased)
+};
+
+// Running sums of a differential render at full resolution. mean = sum / samples[pixel].
+struct DifferentialBuffers {
+  int width = 0, height = 0;
+  ImageF sumWith;      // W x H x 3, radiance of the scene with objects
+  ImageF sumWithout;   // W x H x 3, radiance of the scene without objects
+  ImageF sumMask;      // W x H x 1, fraction of camera samples whose first hit is an object
+  ImageF sumDiffSq;    // W x H x 1, sum over samples of |with - without|^2 (mean over RGB)
+  std::vector<int> samples;  // per pixel
+
+  DifferentialBuffers() = default;
+  DifferentialBuffers(int w, int h);
+  void clear();
+  // Means (W x H x 3, x 3, x 1) with unsampled pixels left 0.
+  ImageF meanWith() const;
+  ImageF meanWithout() const;
+  ImageF meanMask() const;
+};
+
+class PathTracer {
+ public:
+  explicit PathTracer(const RenderScene& scene, const TracerOptions& options = {});
+  ~PathTracer();
+  PathTracer(const PathTracer&) = delete;
+  PathTracer& operator=(const PathTracer&) = delete;
+
+  const RenderScene& scene() const;
+  // Moves object `index` (an instance transform update; its BVH is not rebuilt).
+  void setObjectTransform(size_t index, const Mat4& worldFromObject);
+
+  // Adds samples [firstSample, firstSample + count) for every pixel in [x0,x1) x [y0,y1).
+  // Returns false when `cancel` stopped it (the buffers then hold whole samples only for the
+  // pixels completed).
+  bool renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, int firstSample,
+                  int count, uint32_t seed, const CancelToken* cancel = nullptr) const;
+  // The whole frame, parallel over tiles with `threads` threads (0 = all cores).
+  bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
+              int threads = 0, const CancelToken* cancel = nullptr) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Queries on the empty room for the lighting stage (gather rays, direct light), through Embree.
+class RoomTracer {
+ public:
+  explicit RoomTracer(const SceneGeometry& room);
+  ~RoomTracer();
+  RoomTracer(const RoomTracer&) = delete;
+  RoomTracer& operator=(const RoomTracer&) = delete;
+
+  std::optional<SurfaceHit> intersect(const Ray& ray, double tMin = 1e-5) const;
+  // True when the open segment a-b crosses no surface.
+  bool visible(const Vec3& a, const Vec3& b) const;
+  // Irradiance over pi at point p (normal n) due to `light` if its radiance were 1 in every
+  // channel, with shadows, from `samples` stratified points on the light (deterministic in
+  // `seed`). Points behind the light or facing away get 0.
+  double unitLightIrradianceOverPi(const AreaLight& light, const Vec3& p, const Vec3& n,
+                                   int samples, uint32_t seed) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace inlay

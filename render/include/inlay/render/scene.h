@@ -1,0 +1,68 @@
+// What the renderer renders: the room (surfaces with the photo's albedo projected onto them),
+// its lights, and the inserted objects. Plain data, built by the host (the engine pipeline),
+// copied into a PathTracer. Units: metres; radiance in the photo's linear units (1.0 = the
+// radiance that shows as a pure white pixel at exposure 0).
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image.h"
+#include "inlay/modeling/mesh.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace inlay {
+
+struct Material {
+  enum class Kind { Diffuse, Glossy, Mirror, Glass, Emissive };
+  Kind kind = Kind::Diffuse;
+  Vec3 albedo{0.8, 0.8, 0.8};  // Diffuse/Glossy: base colour; Mirror: reflectance
+  double roughness = 0.3;      // Glossy (GGX alpha = roughness^2)
+  double ior = 1.5;            // Glass
+  Vec3 emission{0, 0, 0};      // Emissive: radiance
+};
+
+// The room's reflectance as a projective texture: a world point on surface `s` that the camera
+// sees (it projects into the photo onto a pixel whose first surface is `s`) takes that pixel's
+// albedo; anything else (out of frame, behind the camera, hidden) takes the surface's mean.
+struct ProjectedAlbedo {
+  Camera camera;
+  ImageF albedo;                       // W x H x 3, in [0,1], the photo's size
+  std::vector<int> firstSurfacePerPixel;  // W*H surface ids (-1: none)
+  std::vector<Vec3> surfaceMean;       // per surface id
+
+  Vec3 lookup(int surfaceId, const Vec3& pointWorld) const;
+  // Fills firstSurfacePerPixel by casting each pixel centre's ray into `geometry`.
+  void computeFirstSurfaces(const SceneGeometry& geometry);
+};
+
+// A planar quad light, one-sided: it emits on the side of normal() = (c1 - c0) x (c3 - c0)
+// normalised (corners in order around the quad).
+struct AreaLight {
+  std::array<Vec3, 4> cornersWorld;
+  Vec3 radiance{1, 1, 1};
+  Vec3 normal() const { return (cornersWorld[1] - cornersWorld[0]).cross(cornersWorld[3] - cornersWorld[0]).normalized(); }
+  double area() const {
+    return 0.5 * ((cornersWorld[1] - cornersWorld[0]).cross(cornersWorld[2] - cornersWorld[0]).norm() +
+                  (cornersWorld[2] - cornersWorld[0]).cross(cornersWorld[3] - cornersWorld[0]).norm());
+  }
+  Vec3 centre() const { return 0.25 * (cornersWorld[0] + cornersWorld[1] + cornersWorld[2] + cornersWorld[3]); }
+};
+
+struct InsertedObject {
+  std::shared_ptr<const TriangleMesh> meshObject;  // object space, shared between copies
+  Mat4 worldFromObject = Mat4::Identity();
+  Material material;
+};
+
+struct RenderScene {
+  Camera camera;
+  SceneGeometry room;
+  ProjectedAlbedo roomAlbedo;
+  std::vector<AreaLight> lights;
+  std::vector<InsertedObject> objects;
+};
+
+}  // namespace inlay

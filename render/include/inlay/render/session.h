@@ -1,0 +1,93 @@
+// The progressive render session: one long-lived thread that renders a differential frame in
+// waves (coarse first, then doubling), publishes each wave's result to a FrameSink, and
+// restarts when the scene changes.
+//
+// Threads: every public method may be called from any thread (the studio's GUI thread, a
+// test's threads). An edit bumps the scene version and raises the cancel flag; the render
+// thread notices within one tile (a few ms) and applies the edit at a safe point (Cycles'
+// delayed reset). Frames carry the version they were rendered for, and a frame of an older
+// version is never published after one of a newer version. Lock order: none held while
+// calling the sink.
+#pragma once
+
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
+#include "inlay/render/path_tracer.h"
+#include "inlay/render/scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace inlay {
+
+// One wave of work: render `sampleCount` samples starting at `firstSample`, on a grid
+// `resolutionDivider` times coarser than the frame in each direction (1 = full resolution).
+struct RenderWork {
+  int firstSample = 0;
+  int sampleCount = 1;
+  int resolutionDivider = 1;
+  bool operator==(const RenderWork&) const = default;
+};
+
+// The schedule as a pure value: a coarse preview at `startDivider` (halving to 1, one sample
+// each), then full resolution in waves of 1, 1, 2, 4, ... samples (at most `maxWave`) until
+// `targetSpp` samples per pixel.
+std::vector<RenderWork> makeRenderSchedule(int targetSpp, int startDivider = 8, int maxWave = 16);
+
+struct RenderFrame {
+  uint64_t sceneVersion = 0;
+  int width = 0, height = 0;
+  int spp = 0;                  // full-resolution samples per pixel (0 during the preview)
+  int resolutionDivider = 1;    // > 1 for preview frames (upsampled to full size)
+  double seconds = 0;           // since the version's render began
+  ImageF withObjects;           // W x H x 3 means
+  ImageF withoutObjects;        // W x H x 3
+  ImageF mask;                  // W x H x 1
+  double estimatedError = 0;    // estimated RMSE (sRGB [0,1]) of the composite where it differs
+  bool final = false;           // target reached for this version
+};
+
+// Implemented by the host (the CLI writes files, the studio converts to a QImage).
+// Called on the render thread; must be quick and must not call back into the session.
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  virtual void onFrame(std::shared_ptr<const RenderFrame> frame) = 0;
+};
+
+struct SessionOptions {
+  int targetSpp = 256;
+  double seconds = 0;   // 0 = no time limit (per scene version)
+  uint32_t seed = 1;
+  int threads = 0;      // 0 = all cores
+  int startDivider = 8;
+  TracerOptions tracer;
+};
+
+class RenderSession {
+ public:
+  RenderSession(FrameSink* sink, const SessionOptions& options);
+  ~RenderSession();  // stops the thread (cancels the current wave)
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+
+  // Replace the whole scene (rebuilds the BVHs). Returns the new scene version.
+  uint64_t setScene(const RenderScene& scene);
+  // Move one inserted object (an instance update only). Returns the new scene version.
+  uint64_t setObjectTransform(size_t index, const Mat4& worldFromObject);
+  void setOptions(const SessionOptions& options);  // restarts the current version
+  // Blocks until the current version reached its target (or time limit), or was cancelled.
+  // Returns false on timeout (seconds <= 0: wait forever).
+  bool waitUntilDone(double timeoutSeconds = 0);
+  void cancel();              // stop rendering the current version (state: idle)
+  uint64_t version() const;
+  bool busy() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace inlay
