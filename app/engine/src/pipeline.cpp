@@ -1,0 +1,287 @@
+#include "inlay/engine/pipeline.h"
+
+#include "inlay/render/composite.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+namespace inlay {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Marks the pixels inside each outlined light (dilated by `growPx`): they show the emitter, not
+// a reflecting surface, and are left out of gathering and fitting.
+ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polygons, int growPx) {
+  ImageF mask(W, H, 1, 0.f);
+  for (const auto& poly : polygons) {
+    if (poly.size() < 3) continue;
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (const Vec2& p : poly) {
+      x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
+      x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
+    }
+    const int ix0 = std::max(0, int(std::floor(x0)) - growPx), iy0 = std::max(0, int(std::floor(y0)) - growPx);
+    const int ix1 = std::min(W - 1, int(std::ceil(x1)) + growPx), iy1 = std::min(H - 1, int(std::ceil(y1)) + growPx);
+    for (int y = iy0; y <= iy1; ++y)
+      for (int x = ix0; x <= ix1; ++x) {
+        // Inside test (even-odd) at the pixel centre, or within growPx of an edge.
+        const Vec2 c(x + 0.5, y + 0.5);
+        bool inside = false;
+        double nearest = 1e300;
+        for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+          const Vec2 &a = poly[i], &b = poly[j];
+          if (((a.y() > c.y()) != (b.y() > c.y())) &&
+              (c.x() < (b.x() - a.x()) * (c.y() - a.y()) / (b.y() - a.y()) + a.x()))
+            inside = !inside;
+          const Vec2 ab = b - a;
+          const double t = std::clamp((c - a).dot(ab) / std::max(1e-12, ab.squaredNorm()), 0.0, 1.0);
+          nearest = std::min(nearest, (a + t * ab - c).norm());
+        }
+        if (inside || nearest <= growPx) mask.at(x, y) = 1.f;
+      }
+  }
+  return mask;
+}
+
+Material materialOf(const MaterialKeys& m, const TriangleMesh& mesh) {
+  Material out;
+  if (m.preset == "diffuse") {
+    out.kind = Material::Kind::Diffuse;
+    out.albedo = m.albedo;
+  } else if (m.preset == "glossy") {
+    out.kind = Material::Kind::Glossy;
+    out.albedo = m.albedo;
+    out.roughness = m.roughness;
+  } else if (m.preset == "mirror") {
+    out.kind = Material::Kind::Mirror;
+    out.albedo = m.albedo;
+  } else if (m.preset == "glass") {
+    out.kind = Material::Kind::Glass;
+    out.ior = m.ior;
+  } else if (m.preset == "emissive") {
+    out.kind = Material::Kind::Emissive;
+    out.emission = m.rgb;
+    out.albedo = Vec3::Zero();
+  } else {  // "asset": the file's first material, mapped onto the renderer's models
+    if (!mesh.materials.empty()) {
+      const AssetMaterial& a = mesh.materials.front();
+      out.albedo = a.baseColor;
+      out.roughness = a.roughness;
+      out.ior = a.ior;
+      if (a.emission.maxCoeff() > 0) {
+        out.kind = Material::Kind::Emissive;
+        out.emission = a.emission;
+      } else if (a.transmission > 0.5) {
+        out.kind = Material::Kind::Glass;
+      } else if (a.metallic > 0.5) {
+        out.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
+      } else {
+        out.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const char* versionString() { return INLAY_VERSION; }
+
+std::string exampleScenePath() {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> candidates;
+  if (const char* env = std::getenv("INLAY_EXAMPLE_DIR")) candidates.emplace_back(env);
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    candidates.push_back(exe.parent_path() / "../share/inlay/example");
+    candidates.push_back(exe.parent_path() / "../../resources/example");
+  }
+  candidates.emplace_back(INLAY_EXAMPLE_DIR);
+  for (const auto& c : candidates)
+    if (fs::exists(c / "scene.json")) return fs::weakly_canonical(c / "scene.json").string();
+  return {};
+}
+
+Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index) {
+  INLAY_CHECK(index < scene.doc.objects.size() && index < scene.renderScene.objects.size());
+  const ObjectKeys& o = scene.doc.objects[index];
+  const auto& mesh = scene.renderScene.objects[index].meshObject;
+  return placeObject(*mesh, scene.geometry, scene.camera, o.basePx, o.heightM, o.yawDeg,
+                     "objects[" + std::to_string(index) + "]");
+}
+
+Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+  PreparedScene ps;
+  ps.doc = doc;
+  auto progress = [&](const char* stage, double f) {
+    if (opt.progress) opt.progress(stage, f);
+  };
+  auto cancelled = [&] { return opt.cancel && opt.cancel->shouldStop(); };
+  auto t = Clock::now();
+
+  // Photo.
+  progress("photo", 0);
+  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved);
+  if (!photo) return photo.error().underKey("photo");
+  ps.photo = std::move(*photo);
+  const int W = ps.photo.linearRgb.width, H = ps.photo.linearRgb.height;
+  ps.stageSeconds.emplace_back("photo", secondsSince(t));
+  if (cancelled()) return Error{"", "", "cancelled"};
+
+  // Camera.
+  progress("camera", 0);
+  t = Clock::now();
+  const double heightM = doc.camera.heightM.value_or(1.6);
+  if (!(heightM > 0 && std::isfinite(heightM)))
+    return Error{"", "camera.height_m", "must be a positive number of metres"};
+  if (doc.camera.vanishingPointsPx) {
+    VanishingInput in;
+    in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
+    in.focalPx = doc.camera.focalPx;
+    in.principalPx = doc.camera.principalPx;
+    in.widthPx = W;
+    in.heightPx = H;
+    in.heightM = heightM;
+    auto cam = cameraFromVanishingPoints(in);
+    if (!cam) return cam.error();
+    ps.camera = *cam;
+  } else {
+    double f = doc.camera.focalPx.value_or(0);
+    if (!(f > 0)) {
+      const auto exifF = ps.photo.exif.focalPx(W, H);
+      f = exifF ? *exifF : 0.5 * W / std::tan(0.5 * 60.0 * M_PI / 180.0);
+      ps.warnings.push_back(std::string("camera: no focal length or vanishing points given; using ") +
+                            (exifF ? "the photo's EXIF focal length" : "a 60 degree field of view") +
+                            " and a level camera (automatic estimation is not in this version)");
+    } else {
+      ps.warnings.push_back("camera: no vanishing points given; assuming a level camera");
+    }
+    ps.camera = levelCamera(W, H, f, heightM);
+    if (doc.camera.principalPx) ps.camera.principalPx = *doc.camera.principalPx;
+  }
+  ps.stageSeconds.emplace_back("camera", secondsSince(t));
+
+  // Room and supporting surfaces.
+  progress("room", 0);
+  t = Clock::now();
+  if (doc.layout.backWallPx) {
+    auto box = roomFromBackWall(ps.camera, *doc.layout.backWallPx);
+    if (!box) return box.error();
+    ps.box = *box;
+  } else {
+    // No layout: a room of ordinary proportions around the camera, the back wall 5 m ahead.
+    ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, heightM + 0.5)};
+    ps.warnings.push_back("layout: no back_wall_px given; using a 5 x 5.5 m room (automatic layout "
+                          "is not in this version)");
+  }
+  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+    const std::string key = "surfaces[" + std::to_string(i) + "]";
+    if (doc.surfaces[i].kind != "extrusion") {
+      ps.warnings.push_back(key + ": kind '" + doc.surfaces[i].kind + "' is not supported yet; ignored");
+      continue;
+    }
+    auto ex = extrusionFromOutline(ps.camera, doc.surfaces[i].outlinePx, doc.surfaces[i].heightClickPx, key);
+    if (!ex) return ex.error();
+    ps.extrusions.push_back(*ex);
+  }
+  ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
+  if (!doc.shafts.empty())
+    ps.warnings.push_back("shafts: sun shafts are not rendered in this version; ignored");
+  if (!doc.occluders.empty())
+    ps.warnings.push_back("occluders: occluder mattes are not in this version; ignored");
+  ps.stageSeconds.emplace_back("room", secondsSince(t));
+  if (cancelled()) return Error{"", "", "cancelled"};
+
+  // Lights.
+  progress("lighting", 0);
+  t = Clock::now();
+  std::vector<AreaLight> lights;
+  std::vector<bool> refine;
+  std::vector<std::vector<Vec2>> outlines;
+  const Vec3 roomCentre(0.5 * (ps.box.xLeftM + ps.box.xRightM), 0.5 * ps.box.ceilingM,
+                        0.5 * (ps.box.zBackM + ps.box.zRearM));
+  for (size_t i = 0; i < doc.lights.size(); ++i) {
+    const LightKeys& l = doc.lights[i];
+    const std::string key = "lights[" + std::to_string(i) + "]";
+    if (l.kind == LightKeys::Kind::PolygonPx) {
+      auto a = lightFromOutline(ps.camera, ps.geometry, l.pointsPx, key + ".points");
+      if (!a) return a.error();
+      lights.push_back(*a);
+      outlines.push_back(l.pointsPx);
+    } else {
+      AreaLight a;
+      a.cornersWorld = l.cornersM;
+      if (!(a.area() > 1e-8)) return Error{"", key + ".corners", "the rectangle has no area"};
+      if (a.normal().dot(roomCentre - a.centre()) < 0) std::swap(a.cornersWorld[1], a.cornersWorld[3]);
+      a.radiance = l.rgb.value_or(Vec3(1, 1, 1));
+      lights.push_back(a);
+    }
+    refine.push_back(l.refine || !(l.kind == LightKeys::Kind::RectM && l.rgb));
+  }
+  if (lights.empty())
+    ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
+  const ImageF lightMask = rasterizeLights(W, H, outlines, 2);
+  LightingOptions lo;
+  lo.cancel = opt.cancel;
+  lo.threads = opt.threads;
+  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine, lightMask, lo);
+  if (!lighting) return lighting.error();
+  ps.lighting = std::move(*lighting);
+  for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
+  ps.stageSeconds.emplace_back("lighting", secondsSince(t));
+  if (cancelled()) return Error{"", "", "cancelled"};
+
+  // The render scene: room with its projected albedo, lights, objects placed.
+  progress("objects", 0);
+  t = Clock::now();
+  RenderScene& rs = ps.renderScene;
+  rs.camera = ps.camera;
+  rs.room = ps.geometry;
+  rs.lights = ps.lighting.lights;
+  rs.roomAlbedo.camera = ps.camera;
+  rs.roomAlbedo.albedo = ps.lighting.albedo;
+  rs.roomAlbedo.surfaceMean = ps.lighting.surfaceMeanAlbedo;
+  rs.roomAlbedo.computeFirstSurfaces(ps.geometry);
+  std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes;
+  for (size_t i = 0; i < doc.objects.size(); ++i) {
+    const ObjectKeys& o = doc.objects[i];
+    const std::string key = "objects[" + std::to_string(i) + "]";
+    const std::string path = o.meshResolved.empty() ? o.mesh : o.meshResolved;
+    auto& cached = meshes[path];
+    if (!cached) {
+      auto mesh = loadMesh(path);
+      if (!mesh) return mesh.error().underKey(key + ".mesh");
+      cached = std::make_shared<const TriangleMesh>(std::move(*mesh));
+    }
+    auto place = placeObject(*cached, ps.geometry, ps.camera, o.basePx, o.heightM, o.yawDeg, key);
+    if (!place) return place.error();
+    InsertedObject obj;
+    obj.meshObject = cached;
+    obj.worldFromObject = place->worldFromObject;
+    obj.material = materialOf(o.material, *cached);
+    rs.objects.push_back(obj);
+    ps.placements.push_back(*place);
+  }
+  ps.stageSeconds.emplace_back("objects", secondsSince(t));
+  progress("objects", 1);
+  return ps;
+}
+
+ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame) {
+  ImageF c = differentialComposite(scene.photo.linearRgb, frame.withObjects, frame.withoutObjects,
+                                   frame.mask);
+  applyExposure(c, scene.doc.render.exposure);
+  return c;
+}
+
+}  // namespace inlay

@@ -1,0 +1,440 @@
+#include "inlay/lighting/estimate.h"
+
+#include "inlay/render/path_tracer.h"
+
+#include <ceres/ceres.h>
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace inlay {
+
+namespace {
+
+// A stateless hash to [0,1): deterministic sampling independent of thread scheduling.
+inline uint32_t hash32(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+inline double uniform(uint32_t a, uint32_t b, uint32_t c) {
+  return (hash32(a ^ hash32(b ^ hash32(c))) >> 8) * (1.0 / 16777216.0);
+}
+
+// An orthonormal frame around n.
+void frameAround(const Vec3& n, Vec3& t, Vec3& b) {
+  t = (std::abs(n.x()) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)).cross(n).normalized();
+  b = n.cross(t);
+}
+
+struct PixelSurface {
+  int surface = -1;
+  Vec3 point;
+  Vec3 normal;
+  double depth = 0;
+};
+
+double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
+
+// The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
+struct LogResidual {
+  LogResidual(double logB, double gamma, std::vector<double> e) : logB(logB), gamma(gamma), e(std::move(e)) {}
+  template <class T>
+  bool operator()(T const* const* params, T* residual) const {
+    // params[0]: rho (1), params[1..]: light radiance channel (1 each).
+    T shading = T(gamma);
+    for (size_t j = 0; j < e.size(); ++j) shading += params[1 + j][0] * T(e[j]);
+    residual[0] = T(logB) - log(params[0][0]) - log(shading + T(1e-9));
+    return true;
+  }
+  double logB, gamma;
+  std::vector<double> e;
+};
+
+}  // namespace
+
+Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
+                                     const std::vector<Vec2>& outlinePx, const std::string& key) {
+  if (outlinePx.size() < 3)
+    return Error{"", key, "a light outline needs at least 3 points"};
+  std::vector<SurfaceHit> hits;
+  std::vector<int> count(geometry.surfaces.size(), 0);
+  for (size_t i = 0; i < outlinePx.size(); ++i) {
+    if (!outlinePx[i].allFinite())
+      return Error{"", key + "[" + std::to_string(i) + "]", "is not a finite number"};
+    const auto h = geometry.intersect(camera.rayThroughPixel(outlinePx[i]));
+    if (!h)
+      return Error{"", key + "[" + std::to_string(i) + "]",
+                   "the point does not fall on any surface of the room"};
+    hits.push_back(*h);
+    ++count[h->surfaceId];
+  }
+  const int surface = int(std::max_element(count.begin(), count.end()) - count.begin());
+  // Plane of the majority surface; points on other surfaces are projected onto it.
+  Vec3 n(0, 0, 0), c(0, 0, 0);
+  int k = 0;
+  for (const auto& h : hits)
+    if (h.surfaceId == surface) {
+      n = h.normalWorld;
+      c += h.pointWorld;
+      ++k;
+    }
+  c /= k;
+  std::vector<Vec3> pts;
+  for (size_t i = 0; i < outlinePx.size(); ++i) {
+    const Ray r = camera.rayThroughPixel(outlinePx[i]);
+    const double den = r.direction.dot(n);
+    if (std::abs(den) < 1e-9)
+      return Error{"", key, "the outline is seen edge-on and cannot be placed"};
+    const double t = (c - r.origin).dot(n) / den;
+    if (!(t > 0)) return Error{"", key, "the outline lies behind the camera"};
+    pts.push_back(r.at(t));
+  }
+  // An in-plane frame along the room's axes: lights on the ceiling are rectangles aligned with
+  // it. Four points are kept as the user drew them; more become their bounding rectangle.
+  Vec3 u = std::abs(n.y()) > 0.7 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  u = (u - u.dot(n) * n).normalized();
+  const Vec3 v = n.cross(u);
+  AreaLight L;
+  if (pts.size() == 4) {
+    for (int i = 0; i < 4; ++i) L.cornersWorld[i] = pts[i];
+  } else {
+    double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+    for (const Vec3& p : pts) {
+      u0 = std::min(u0, (p - c).dot(u));
+      u1 = std::max(u1, (p - c).dot(u));
+      v0 = std::min(v0, (p - c).dot(v));
+      v1 = std::max(v1, (p - c).dot(v));
+    }
+    L.cornersWorld = {c + u0 * u + v0 * v, c + u1 * u + v0 * v, c + u1 * u + v1 * v,
+                      c + u0 * u + v1 * v};
+  }
+  if (!(L.area() > 1e-6)) return Error{"", key, "the light outline has no area"};
+  // Face into the room (the hit normal faces the camera side), 1 mm off the surface.
+  if (L.normal().dot(n) < 0) std::swap(L.cornersWorld[1], L.cornersWorld[3]);
+  for (auto& p : L.cornersWorld) p += 1e-3 * n;
+  L.radiance = Vec3(1, 1, 1);
+  return L;
+}
+
+Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& camera,
+                                            const SceneGeometry& geometry,
+                                            const std::vector<AreaLight>& lightsIn,
+                                            const std::vector<bool>& refineIn,
+                                            const ImageF& lightMask,
+                                            const LightingOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int W = photo.width, H = photo.height;
+  if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
+  LightingEstimate out;
+  const size_t S = geometry.surfaces.size();
+  const size_t J = lightsIn.size();
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (opt.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
+  auto stop = [&] { return opt.cancel && opt.cancel->shouldStop(); };
+  auto cancelled = [] { return Error{"", "", "cancelled"}; };
+
+  RoomTracer tracer(geometry);
+
+  // 1. The first surface behind every pixel.
+  std::vector<PixelSurface> ps(size_t(W) * H);
+  tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+        const auto h = tracer.intersect(r, 1e-6);
+        if (!h) continue;
+        PixelSurface& p = ps[size_t(y) * W + x];
+        p.surface = h->surfaceId;
+        p.point = h->pointWorld;
+        p.normal = h->normalWorld;
+        p.depth = camera.depthOf(h->pointWorld);
+      }
+  });
+  if (stop()) return cancelled();
+
+  auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
+  auto saturated = [&](int x, int y) {
+    const float* p = photo.pixel(x, y);
+    return std::max({p[0], p[1], p[2]}) >= float(opt.saturatedAbove);
+  };
+
+  // 2. Mean radiance of each surface where the photo shows it (for what the camera does not
+  // see), and of the whole room as the last resort.
+  std::vector<Vec3> surfaceRadiance(S, Vec3::Zero());
+  std::vector<double> surfaceCount(S, 0);
+  Vec3 roomRadiance = Vec3::Zero();
+  double roomCount = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const auto& p = ps[size_t(y) * W + x];
+      if (p.surface < 0 || isLight(x, y)) continue;
+      const Vec3 b = photo.rgb(x, y);
+      surfaceRadiance[p.surface] += b;
+      surfaceCount[p.surface] += 1;
+      roomRadiance += b;
+      roomCount += 1;
+    }
+  if (roomCount == 0) return Error{"", "photo", "no pixel of the photo falls on the room"};
+  roomRadiance /= roomCount;
+  for (size_t s = 0; s < S; ++s)
+    surfaceRadiance[s] = surfaceCount[s] > 0 ? Vec3(surfaceRadiance[s] / surfaceCount[s]) : roomRadiance;
+
+  // Radiance leaving a room point toward another, read from the photo where the camera sees it.
+  auto radianceAt = [&](const SurfaceHit& h) -> Vec3 {
+    const auto px = camera.project(h.pointWorld);
+    if (px) {
+      const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
+      if (x >= 0 && y >= 0 && x < W && y < H) {
+        const auto& p = ps[size_t(y) * W + x];
+        if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
+                                            0.02 * p.depth + 1e-3) {
+          if (isLight(x, y)) return surfaceRadiance[h.surfaceId];
+          return photo.rgb(x, y);
+        }
+      }
+    }
+    return surfaceRadiance[h.surfaceId];
+  };
+
+  // 3. Gamma and E_j on a coarse grid, then spread to every pixel of the same surface.
+  const int stride = std::max(1, opt.gatherStride);
+  const int GW = (W + stride - 1) / stride, GH = (H + stride - 1) / stride;
+  std::vector<Vec3> gridGamma(size_t(GW) * GH, Vec3::Zero());
+  std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
+  std::vector<int> gridSurface(size_t(GW) * GH, -1);
+  const int nSide = std::max(1, int(std::lround(std::sqrt(double(opt.gatherSamples)))));
+  auto gatherAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
+    Vec3 t, b;
+    frameAround(p.normal, t, b);
+    Vec3 sum = Vec3::Zero();
+    int n = 0;
+    for (int i = 0; i < nSide; ++i)
+      for (int k = 0; k < nSide; ++k) {
+        const double u1 = (i + uniform(pixelId, opt.seed, 2 * (i * nSide + k))) / nSide;
+        const double u2 = (k + uniform(pixelId, opt.seed, 2 * (i * nSide + k) + 1)) / nSide;
+        const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
+        const Vec3 d = (r * std::cos(phi) * t + r * std::sin(phi) * b +
+                        std::sqrt(std::max(0.0, 1 - u1)) * p.normal).normalized();
+        const auto h = tracer.intersect(Ray{p.point + 1e-5 * p.normal, d}, 1e-5);
+        ++n;
+        if (h) sum += radianceAt(*h);
+      }
+    return sum / std::max(n, 1);
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, GH), [&](const tbb::blocked_range<int>& rows) {
+    for (int gy = rows.begin(); gy < rows.end(); ++gy) {
+      if (stop()) return;
+      for (int gx = 0; gx < GW; ++gx) {
+        const int x = std::min(W - 1, gx * stride + stride / 2), y = std::min(H - 1, gy * stride + stride / 2);
+        const auto& p = ps[size_t(y) * W + x];
+        const size_t g = size_t(gy) * GW + gx;
+        gridSurface[g] = p.surface;
+        if (p.surface < 0) continue;
+        const uint32_t id = uint32_t(y * W + x);
+        gridGamma[g] = gatherAt(p, id);
+        for (size_t j = 0; j < J; ++j)
+          gridE[g * J + j] = tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal,
+                                                              p.normal, opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+      }
+    }
+  });
+  if (stop()) return cancelled();
+
+  out.gathered = ImageF(W, H, 3, 0.f);
+  std::vector<double> E(size_t(W) * H * std::max<size_t>(J, 1), 0.0);
+  tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const auto& p = ps[size_t(y) * W + x];
+        if (p.surface < 0) continue;
+        // Bilinear weights of the four grid samples around, keeping only the same surface.
+        const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
+        const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
+        const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
+        double wsum = 0;
+        Vec3 g = Vec3::Zero();
+        std::vector<double> e(J, 0.0);
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx) {
+            const int gx = std::min(gx0 + dx, GW - 1), gy = std::min(gy0 + dy, GH - 1);
+            const size_t gi = size_t(gy) * GW + gx;
+            if (gridSurface[gi] != p.surface) continue;
+            const double w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay) + 1e-6;
+            wsum += w;
+            g += w * gridGamma[gi];
+            for (size_t j = 0; j < J; ++j) e[j] += w * gridE[gi * J + j];
+          }
+        const uint32_t id = uint32_t(y * W + x);
+        if (wsum > 0) {
+          g /= wsum;
+          for (size_t j = 0; j < J; ++j) e[j] /= wsum;
+        } else {  // a thin sliver of a surface between grid samples: compute here
+          g = gatherAt(p, id);
+          for (size_t j = 0; j < J; ++j)
+            e[j] = tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
+                                                    opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+        }
+        out.gathered.setRgb(x, y, g);
+        for (size_t j = 0; j < J; ++j) E[(size_t(y) * W + x) * J + j] = e[j];
+      }
+  });
+  if (stop()) return cancelled();
+
+  // 4. Fit light radiances (per channel) and one reference albedo per surface: the albedo
+  // should be as flat within a surface as the lights and Gamma allow (robust to texture).
+  std::vector<size_t> candidates;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const auto& p = ps[size_t(y) * W + x];
+      if (p.surface < 0 || isLight(x, y) || saturated(x, y)) continue;
+      if (luminance(photo.rgb(x, y)) < 1e-4) continue;
+      candidates.push_back(size_t(y) * W + x);
+    }
+  if (candidates.empty())
+    return Error{"", "photo", "every pixel of the room is black or saturated: nothing to fit"};
+  std::mt19937 rng(opt.seed);
+  std::shuffle(candidates.begin(), candidates.end(), rng);
+  if (candidates.size() > size_t(opt.fitPixels)) candidates.resize(size_t(opt.fitPixels));
+
+  out.lights = lightsIn;
+  std::vector<bool> refine(J, true);
+  for (size_t j = 0; j < J && j < refineIn.size(); ++j) refine[j] = refineIn[j];
+  std::vector<std::array<double, 3>> rho(S, {0.5, 0.5, 0.5});
+  std::vector<std::array<double, 3>> L(J);
+  // Start: with albedo 0.6 everywhere, the median radiance that explains the direct part.
+  {
+    std::vector<double> ratios;
+    for (size_t idx : candidates) {
+      double esum = 0;
+      for (size_t j = 0; j < J; ++j) esum += E[idx * J + j];
+      if (esum < 1e-6) continue;
+      const int x = int(idx % W), y = int(idx / W);
+      const double b = luminance(photo.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
+      ratios.push_back(std::max(0.0, b / 0.6 - g) / esum);
+    }
+    double start = 1.0;
+    if (!ratios.empty()) {
+      std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
+      start = std::max(1e-6, ratios[ratios.size() / 2]);
+    }
+    // A light kept as given starts (and stays) at its radiance; the others start at `start`.
+    for (size_t j = 0; j < J; ++j)
+      for (int c = 0; c < 3; ++c)
+        L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
+  }
+  double cost = 0, count = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (stop()) return cancelled();
+    ceres::Problem problem;
+    for (size_t idx : candidates) {
+      const int x = int(idx % W), y = int(idx / W);
+      const int s = ps[idx].surface;
+      std::vector<double> e(J);
+      for (size_t j = 0; j < J; ++j) e[j] = E[idx * J + j];
+      auto* cost = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(
+          new LogResidual(std::log(std::max(1e-6, double(photo.at(x, y, c)))), out.gathered.at(x, y, c), e));
+      std::vector<double*> blocks{&rho[s][c]};
+      cost->AddParameterBlock(1);
+      for (size_t j = 0; j < J; ++j) {
+        cost->AddParameterBlock(1);
+        blocks.push_back(&L[j][c]);
+      }
+      cost->SetNumResiduals(1);
+      problem.AddResidualBlock(cost, new ceres::CauchyLoss(0.15), blocks);
+    }
+    for (size_t s = 0; s < S; ++s)
+      if (problem.HasParameterBlock(&rho[s][c])) {
+        problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
+        problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
+      }
+    for (size_t j = 0; j < J; ++j)
+      if (problem.HasParameterBlock(&L[j][c])) {
+        problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
+        problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
+        if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
+      }
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = 100;
+    so.num_threads = opt.threads > 0 ? opt.threads : 2;
+    so.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+    if (!summary.IsSolutionUsable())
+      out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
+    cost += summary.final_cost;
+    count += double(candidates.size());
+  }
+  out.fitRmsLog = std::sqrt(2 * cost / std::max(1.0, count));
+  for (size_t j = 0; j < J; ++j) {
+    Vec3 r(L[j][0], L[j][1], L[j][2]);
+    if (!r.allFinite()) r = lightsIn[j].radiance;
+    out.lights[j].radiance = r.cwiseMax(0.0);
+  }
+
+  // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
+  out.albedo = ImageF(W, H, 3, 0.f);
+  out.direct = ImageF(W, H, 3, 0.f);
+  std::vector<Vec3> albedoSum(S, Vec3::Zero());
+  std::vector<double> albedoCount(S, 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      const auto& p = ps[idx];
+      if (p.surface < 0) continue;
+      Vec3 a;
+      const Vec3 g = out.gathered.rgb(x, y);
+      for (int c = 0; c < 3; ++c) {
+        double shading = g[c];
+        for (size_t j = 0; j < J; ++j) shading += out.lights[j].radiance[c] * E[idx * J + j];
+        const double b = photo.at(x, y, c);
+        double r = shading > 1e-9 ? b / shading : rho[p.surface][c];
+        if (isLight(x, y) || saturated(x, y)) r = rho[p.surface][c];
+        a[c] = std::clamp(std::isfinite(r) ? r : rho[p.surface][c], 0.0, 1.0);
+      }
+      out.albedo.setRgb(x, y, a);
+      out.direct.setRgb(x, y, (photo.rgb(x, y) - a.cwiseProduct(g)).cwiseMax(0.0));
+      if (!isLight(x, y) && !saturated(x, y)) {
+        albedoSum[p.surface] += a;
+        albedoCount[p.surface] += 1;
+      }
+    }
+  // Surfaces the camera does not see take the mean of the walls it sees (or of the room).
+  Vec3 wallSum = Vec3::Zero(), roomSum = Vec3::Zero();
+  double wallN = 0, roomN = 0;
+  for (size_t s = 0; s < S; ++s) {
+    if (albedoCount[s] <= 0) continue;
+    const SurfaceKind k = geometry.surfaces[s].kind;
+    const bool wall = k == SurfaceKind::WallLeft || k == SurfaceKind::WallRight ||
+                      k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
+    if (wall) wallSum += albedoSum[s], wallN += albedoCount[s];
+    roomSum += albedoSum[s], roomN += albedoCount[s];
+  }
+  const Vec3 roomMean = roomN > 0 ? Vec3(roomSum / roomN) : Vec3(0.5, 0.5, 0.5);
+  const Vec3 wallMean = wallN > 0 ? Vec3(wallSum / wallN) : roomMean;
+  out.surfaceMeanAlbedo.resize(S);
+  for (size_t s = 0; s < S; ++s) {
+    const SurfaceKind k = geometry.surfaces[s].kind;
+    const bool wall = k == SurfaceKind::WallLeft || k == SurfaceKind::WallRight ||
+                      k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
+    out.surfaceMeanAlbedo[s] = albedoCount[s] > 0 ? Vec3(albedoSum[s] / albedoCount[s])
+                                                  : (wall ? wallMean : roomMean);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace inlay

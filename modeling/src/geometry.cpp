@@ -1,0 +1,382 @@
+#include "inlay/modeling/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace inlay {
+
+const char* surfaceKindName(SurfaceKind kind) {
+  switch (kind) {
+    case SurfaceKind::Floor: return "floor";
+    case SurfaceKind::Ceiling: return "ceiling";
+    case SurfaceKind::WallLeft: return "wall_left";
+    case SurfaceKind::WallRight: return "wall_right";
+    case SurfaceKind::WallBack: return "wall_back";
+    case SurfaceKind::WallRear: return "wall_rear";
+    case SurfaceKind::ExtrusionTop: return "extrusion_top";
+    case SurfaceKind::ExtrusionSide: return "extrusion_side";
+    case SurfaceKind::OccluderCard: return "occluder_card";
+  }
+  return "surface";
+}
+
+namespace {
+
+std::string pxText(const Vec2& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.1f, %.1f)", p.x(), p.y());
+  return buf;
+}
+
+// Ray / horizontal plane y = h; nullopt when parallel or behind.
+std::optional<Vec3> hitHorizontal(const Ray& ray, double h) {
+  if (std::abs(ray.direction.y()) < 1e-12) return std::nullopt;
+  const double t = (h - ray.origin.y()) / ray.direction.y();
+  if (!(t > 1e-9) || !std::isfinite(t)) return std::nullopt;
+  return ray.at(t);
+}
+
+// Adds quad a b c d (counter-clockwise seen from the side its normal n points to).
+void addQuad(TriangleMesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+             const Vec3& n) {
+  const uint32_t base = uint32_t(m.positions.size());
+  for (const Vec3* p : {&a, &b, &c, &d}) {
+    m.positions.push_back(p->cast<float>());
+    m.normals.push_back(n.cast<float>());
+  }
+  m.triangles.push_back({base, base + 1, base + 2});
+  m.triangles.push_back({base, base + 2, base + 3});
+}
+
+Surface makeSurface(SurfaceKind kind, std::string name, bool supports, int group = -1) {
+  Surface s;
+  s.kind = kind;
+  s.name = std::move(name);
+  s.supportsObjects = supports;
+  s.groupIndex = group;
+  return s;
+}
+
+// Signed area of a polygon in the (x, -z) plane: positive when counter-clockwise seen from
+// above with x to the right and -z (away from the camera) up.
+double signedAreaTop(const std::vector<Vec3>& poly) {
+  double a = 0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec3& p = poly[i];
+    const Vec3& q = poly[(i + 1) % poly.size()];
+    a += p.x() * (-q.z()) - q.x() * (-p.z());
+  }
+  return 0.5 * a;
+}
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+bool segmentsCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a);
+  const double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
+         d4 != 0;
+}
+
+bool pointInTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
+  return d1 >= 0 && d2 >= 0 && d3 >= 0;
+}
+
+// Ear clipping of a simple counter-clockwise polygon; returns index triples.
+std::vector<std::array<uint32_t, 3>> triangulateSimple(const std::vector<Vec2>& pts) {
+  std::vector<std::array<uint32_t, 3>> tris;
+  std::vector<uint32_t> idx(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) idx[i] = uint32_t(i);
+  size_t guard = 0;
+  while (idx.size() > 3 && guard++ < pts.size() * pts.size() + 8) {
+    bool clipped = false;
+    for (size_t i = 0; i < idx.size(); ++i) {
+      const uint32_t ia = idx[(i + idx.size() - 1) % idx.size()], ib = idx[i],
+                     ic = idx[(i + 1) % idx.size()];
+      const Vec2 &a = pts[ia], &b = pts[ib], &c = pts[ic];
+      if (cross2(b - a, c - b) <= 0) continue;  // reflex or degenerate
+      bool inside = false;
+      for (uint32_t j : idx)
+        if (j != ia && j != ib && j != ic && pointInTriangle(pts[j], a, b, c)) {
+          inside = true;
+          break;
+        }
+      if (inside) continue;
+      tris.push_back({ia, ib, ic});
+      idx.erase(idx.begin() + long(i));
+      clipped = true;
+      break;
+    }
+    if (!clipped) break;  // numerically degenerate remainder: fan it
+  }
+  for (size_t i = 1; i + 1 < idx.size(); ++i) tris.push_back({idx[0], idx[i], idx[i + 1]});
+  return tris;
+}
+
+}  // namespace
+
+std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray, bool supportsOnly,
+                                                   double tMin) const {
+  std::optional<SurfaceHit> best;
+  double bestT = std::numeric_limits<double>::infinity();
+  for (size_t s = 0; s < surfaces.size(); ++s) {
+    const Surface& surf = surfaces[s];
+    if (supportsOnly && !surf.supportsObjects) continue;
+    const auto& P = surf.meshWorld.positions;
+    for (const auto& tri : surf.meshWorld.triangles) {
+      // Moller-Trumbore in double precision.
+      const Vec3 v0 = P[tri[0]].cast<double>(), v1 = P[tri[1]].cast<double>(),
+                 v2 = P[tri[2]].cast<double>();
+      const Vec3 e1 = v1 - v0, e2 = v2 - v0;
+      const Vec3 pv = ray.direction.cross(e2);
+      const double det = e1.dot(pv);
+      if (std::abs(det) < 1e-14) continue;
+      const double inv = 1.0 / det;
+      const Vec3 tv = ray.origin - v0;
+      const double u = tv.dot(pv) * inv;
+      if (u < -1e-9 || u > 1 + 1e-9) continue;
+      const Vec3 qv = tv.cross(e1);
+      const double v = ray.direction.dot(qv) * inv;
+      if (v < -1e-9 || u + v > 1 + 1e-9) continue;
+      const double t = e2.dot(qv) * inv;
+      if (t > tMin && t < bestT) {
+        bestT = t;
+        Vec3 n = e1.cross(e2).normalized();
+        if (n.dot(ray.direction) > 0) n = -n;
+        best = SurfaceHit{int(s), t, ray.at(t), n};
+      }
+    }
+  }
+  return best;
+}
+
+Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 4>& c,
+                                   const RoomOptions& options) {
+  const std::string key = "layout.back_wall_px";
+  const char* names[4] = {"top-left", "top-right", "bottom-right", "bottom-left"};
+  for (int i = 0; i < 4; ++i)
+    if (!std::isfinite(c[i].x()) || !std::isfinite(c[i].y()))
+      return Error{"", key + "[" + std::to_string(i) + "]", "is not a finite number"};
+  // Floor corners: the bottom edge's rays meet the floor.
+  const auto bl = hitHorizontal(camera.rayThroughPixel(c[3]), 0.0);
+  const auto br = hitHorizontal(camera.rayThroughPixel(c[2]), 0.0);
+  if (!bl)
+    return Error{"", key + "[3]",
+                 std::string("the ") + names[3] + " corner " + pxText(c[3]) +
+                     " is at or above the horizon, so it cannot be on the floor"};
+  if (!br)
+    return Error{"", key + "[2]",
+                 std::string("the ") + names[2] + " corner " + pxText(c[2]) +
+                     " is at or above the horizon, so it cannot be on the floor"};
+  RoomBox box;
+  box.zBackM = 0.5 * (bl->z() + br->z());
+  box.xLeftM = bl->x();
+  box.xRightM = br->x();
+  if (!(box.zBackM < -0.05))
+    return Error{"", key, "the back wall would stand behind the camera"};
+  if (!(box.xRightM - box.xLeftM > 0.05))
+    return Error{"", key,
+                 "the corners give a back wall of no width (are they in the order top-left, "
+                 "top-right, bottom-right, bottom-left?)"};
+  // Ceiling: the top corners' rays meet the vertical corner lines of the back wall.
+  double sumH = 0;
+  int n = 0;
+  for (int i : {0, 1}) {
+    const Ray r = camera.rayThroughPixel(c[i]);
+    if (std::abs(r.direction.z()) < 1e-12) continue;
+    const double t = (box.zBackM - r.origin.z()) / r.direction.z();
+    if (!(t > 0)) continue;
+    sumH += r.at(t).y();
+    ++n;
+  }
+  if (n == 0) return Error{"", key + "[0]", "the top corners do not lie on the back wall"};
+  box.ceilingM = sumH / n;
+  if (!(box.ceilingM > camera.heightM + 0.02))
+    return Error{"", key,
+                 "the top edge gives a ceiling at " + std::to_string(box.ceilingM) +
+                     " m, not above the camera (" + std::to_string(camera.heightM) +
+                     " m): is the top edge below the horizon, or camera.height_m too large?"};
+  // The camera stands inside the room.
+  box.xLeftM = std::min(box.xLeftM, -0.1);
+  box.xRightM = std::max(box.xRightM, 0.1);
+  box.zRearM = std::max(options.rearMarginM, 0.05);
+  return box;
+}
+
+std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box) {
+  const Vec3 w[4] = {{box.xLeftM, box.ceilingM, box.zBackM},
+                     {box.xRightM, box.ceilingM, box.zBackM},
+                     {box.xRightM, 0.0, box.zBackM},
+                     {box.xLeftM, 0.0, box.zBackM}};
+  std::array<Vec2, 4> out;
+  for (int i = 0; i < 4; ++i) {
+    const auto p = camera.project(w[i]);
+    out[i] = p ? *p : Vec2(std::nan(""), std::nan(""));
+  }
+  return out;
+}
+
+Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
+                                         const Vec2& clickPx, const std::string& key) {
+  if (outlinePx.size() < 3)
+    return Error{"", key + ".outline_px", "needs at least 3 points, has " +
+                                              std::to_string(outlinePx.size())};
+  for (size_t i = 0; i < outlinePx.size(); ++i)
+    if (!outlinePx[i].allFinite())
+      return Error{"", key + ".outline_px[" + std::to_string(i) + "]", "is not a finite number"};
+  if (!clickPx.allFinite()) return Error{"", key + ".height_click_px", "is not a finite number"};
+  const size_t n = outlinePx.size();
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      if (j == i + 1 || (i == 0 && j == n - 1)) continue;
+      if (segmentsCross(outlinePx[i], outlinePx[(i + 1) % n], outlinePx[j],
+                        outlinePx[(j + 1) % n]))
+        return Error{"", key + ".outline_px",
+                     "the outline crosses itself (edges " + std::to_string(i) + " and " +
+                         std::to_string(j) + ")"};
+    }
+  // Height by single-view metrology: the click is on the floor straight below outline point 0;
+  // the height is where point 0's ray passes closest to the vertical line through the click.
+  const auto floorPt = hitHorizontal(camera.rayThroughPixel(clickPx), 0.0);
+  if (!floorPt)
+    return Error{"", key + ".height_click_px",
+                 "the click " + pxText(clickPx) + " is at or above the horizon, so it cannot be "
+                 "on the floor"};
+  const Ray r0 = camera.rayThroughPixel(outlinePx[0]);
+  // Closest points of r0.origin + t d and floorPt + s up.
+  const Vec3 up(0, 1, 0);
+  const Vec3 w0 = r0.origin - *floorPt;
+  const double a = r0.direction.dot(r0.direction), b = r0.direction.dot(up), cc = 1.0;
+  const double d = r0.direction.dot(w0), e = up.dot(w0);
+  const double den = a * cc - b * b;
+  if (den < 1e-12)
+    return Error{"", key + ".height_click_px", "the outline point is straight above the camera"};
+  const double s = (a * e - b * d) / den;     // along the vertical line: the height
+  const double tRay = (b * e - cc * d) / den;  // along the ray
+  if (!(tRay > 0))
+    return Error{"", key + ".height_click_px", "the outline is behind the camera"};
+  const double h = s;
+  if (!(h > 0.01))
+    return Error{"", key + ".height_click_px",
+                 "the click " + pxText(clickPx) + " is not below the outline's first point "
+                 "(the height would be " + std::to_string(h) + " m)"};
+  if (std::abs(h - camera.heightM) < 0.01)
+    return Error{"", key + ".height_click_px",
+                 "the top would be at the camera's height, seen edge-on: its outline cannot be "
+                 "placed"};
+  Extrusion ex;
+  ex.heightM = h;
+  for (size_t i = 0; i < n; ++i) {
+    const auto p = hitHorizontal(camera.rayThroughPixel(outlinePx[i]), h);
+    if (!p)
+      return Error{"", key + ".outline_px[" + std::to_string(i) + "]",
+                   "the point " + pxText(outlinePx[i]) + " cannot lie on a top at " +
+                       std::to_string(h) + " m (it is on the other side of the horizon)"};
+    ex.topOutlineWorld.push_back(*p);
+  }
+  const double area = signedAreaTop(ex.topOutlineWorld);
+  if (std::abs(area) < 1e-6) return Error{"", key + ".outline_px", "the outline has no area"};
+  if (area < 0) std::reverse(ex.topOutlineWorld.begin(), ex.topOutlineWorld.end());
+  return ex;
+}
+
+SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>& extrusions) {
+  SceneGeometry g;
+  g.box = b;
+  const double x0 = b.xLeftM, x1 = b.xRightM, z0 = b.zBackM, z1 = b.zRearM, y1 = b.ceilingM;
+  {
+    Surface s = makeSurface(SurfaceKind::Floor, "floor", true);
+    addQuad(s.meshWorld, {x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}, {x0, 0, z0}, {0, 1, 0});
+    g.surfaces.push_back(std::move(s));
+  }
+  {
+    Surface s = makeSurface(SurfaceKind::Ceiling, "ceiling", false);
+    addQuad(s.meshWorld, {x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}, {0, -1, 0});
+    g.surfaces.push_back(std::move(s));
+  }
+  {
+    Surface s = makeSurface(SurfaceKind::WallLeft, "wall_left", false);
+    addQuad(s.meshWorld, {x0, 0, z1}, {x0, 0, z0}, {x0, y1, z0}, {x0, y1, z1}, {1, 0, 0});
+    g.surfaces.push_back(std::move(s));
+  }
+  {
+    Surface s = makeSurface(SurfaceKind::WallRight, "wall_right", false);
+    addQuad(s.meshWorld, {x1, 0, z0}, {x1, 0, z1}, {x1, y1, z1}, {x1, y1, z0}, {-1, 0, 0});
+    g.surfaces.push_back(std::move(s));
+  }
+  {
+    Surface s = makeSurface(SurfaceKind::WallBack, "wall_back", false);
+    addQuad(s.meshWorld, {x0, 0, z0}, {x1, 0, z0}, {x1, y1, z0}, {x0, y1, z0}, {0, 0, 1});
+    g.surfaces.push_back(std::move(s));
+  }
+  {
+    Surface s = makeSurface(SurfaceKind::WallRear, "wall_rear", false);
+    addQuad(s.meshWorld, {x1, 0, z1}, {x0, 0, z1}, {x0, y1, z1}, {x1, y1, z1}, {0, 0, -1});
+    g.surfaces.push_back(std::move(s));
+  }
+  for (size_t e = 0; e < extrusions.size(); ++e) {
+    const auto& ex = extrusions[e];
+    const std::string base = "surface_" + std::to_string(e);
+    Surface top = makeSurface(SurfaceKind::ExtrusionTop, base + "_top", true, int(e));
+    std::vector<Vec2> pts2;
+    for (const Vec3& p : ex.topOutlineWorld) {
+      top.meshWorld.positions.push_back(p.cast<float>());
+      top.meshWorld.normals.push_back(Vec3f(0, 1, 0));
+      pts2.emplace_back(p.x(), -p.z());
+    }
+    for (const auto& t : triangulateSimple(pts2)) {
+      // (x, -z) counter-clockwise is clockwise in (x, z): flip so the normal points up.
+      top.meshWorld.triangles.push_back({t[0], t[2], t[1]});
+    }
+    g.surfaces.push_back(std::move(top));
+    Surface side = makeSurface(SurfaceKind::ExtrusionSide, base + "_side", false, int(e));
+    const size_t n = ex.topOutlineWorld.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3 a = ex.topOutlineWorld[i], c = ex.topOutlineWorld[(i + 1) % n];
+      const Vec3 a0(a.x(), 0, a.z()), c0(c.x(), 0, c.z());
+      Vec3 nrm = (c - a).cross(Vec3(0, 1, 0));
+      if (nrm.norm() < 1e-12) continue;
+      nrm.normalize();
+      // Outward for a counter-clockwise outline seen from above.
+      addQuad(side.meshWorld, a0, c0, c, a, -nrm);
+    }
+    g.surfaces.push_back(std::move(side));
+  }
+  return g;
+}
+
+Expected<Placement> placeObject(const TriangleMesh& mesh, const SceneGeometry& geometry,
+                                const Camera& camera, const Vec2& basePx, double heightM,
+                                double yawDeg, const std::string& key) {
+  if (mesh.empty()) return Error{"", key + ".mesh", "the mesh has no triangles"};
+  if (!basePx.allFinite()) return Error{"", key + ".base_px", "is not a finite number"};
+  if (!(heightM > 0 && std::isfinite(heightM)))
+    return Error{"", key + ".height_m", "must be a positive finite number"};
+  if (!std::isfinite(yawDeg)) return Error{"", key + ".yaw_deg", "is not a finite number"};
+  const auto hit = geometry.intersect(camera.rayThroughPixel(basePx), true);
+  if (!hit || hit->normalWorld.y() < 0.5)
+    return Error{"", key + ".base_px",
+                 "the pixel " + pxText(basePx) + " is not on the floor or any surface an "
+                 "object can stand on"};
+  const Eigen::AlignedBox3f bb = mesh.bounds();
+  const double sizeY = double(bb.max().y() - bb.min().y());
+  if (!(sizeY > 1e-12) || !std::isfinite(sizeY))
+    return Error{"", key + ".mesh", "the mesh is flat (zero height): it cannot be scaled"};
+  const double s = heightM / sizeY;
+  const Vec3 baseCentre(0.5 * (bb.min().x() + bb.max().x()), bb.min().y(),
+                        0.5 * (bb.min().z() + bb.max().z()));
+  Eigen::Affine3d t = Eigen::Affine3d::Identity();
+  t.translate(hit->pointWorld);
+  t.rotate(Eigen::AngleAxisd(yawDeg * M_PI / 180.0, Vec3::UnitY()));
+  t.scale(s);
+  t.translate(-baseCentre);
+  Placement p;
+  p.worldFromObject = t.matrix();
+  p.baseWorld = hit->pointWorld;
+  p.supportSurfaceId = hit->surfaceId;
+  return p;
+}
+
+}  // namespace inlay
