@@ -1,0 +1,122 @@
+#!/usr/bin/python3
+"""inlay-cli's contract (../shared/spec/cli.md) on the bundled example: usage, exit status, bad
+input named by file and key, atomic outputs, progress CSV, layers, Ctrl-C. Needs nothing from
+../shared.
+
+usage: cli_badinput_test.py INLAY_CLI
+"""
+import json, os, shutil, signal, subprocess, sys, tempfile, time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+EXAMPLE = os.path.join(HERE, "..", "resources", "example")
+passed, failed = 0, []
+
+
+def check(name, cond, detail=""):
+    global passed
+    if cond:
+        passed += 1
+    else:
+        failed.append("%s %s" % (name, detail))
+        print("FAIL", name, detail)
+
+
+def run(cli, *args, timeout=300):
+    return subprocess.run([cli, *args], capture_output=True, text=True, timeout=timeout)
+
+
+def main():
+    cli = os.path.abspath(sys.argv[1])
+    tmp = tempfile.mkdtemp(prefix="inlay_cli_")
+    base = json.load(open(os.path.join(EXAMPLE, "scene.json")))
+    photo = os.path.abspath(os.path.join(EXAMPLE, "photo.png"))
+
+    def scene(mutate, name):
+        s = json.loads(json.dumps(base))
+        s["photo"] = photo
+        mutate(s)
+        p = os.path.join(tmp, name + ".json")
+        with open(p, "w") as f:
+            json.dump(s, f)
+        return p
+
+    r = run(cli, "--help")
+    check("help", r.returncode == 0 and "render" in r.stdout and "Exit status" in r.stdout, r.stderr)
+    r = run(cli, "--version")
+    check("version", r.returncode == 0 and r.stdout.startswith("inlay-cli "), r.stdout)
+    check("no args", run(cli).returncode == 2)
+    r = run(cli, "frobnicate")
+    check("unknown command", r.returncode == 2 and "frobnicate" in r.stderr, r.stderr)
+    r = run(cli, "render", "x.json", "--spp", "-3", "-o", "a.png")
+    check("bad flag value", r.returncode == 2 and "--spp" in r.stderr, r.stderr)
+    r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
+    check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
+
+    bad = os.path.join(tmp, "broken.json")
+    open(bad, "w").write('{"format": "inlay-scene", "version": 1, "photo": ')
+    r = run(cli, "render", bad, "-o", os.path.join(tmp, "o.png"))
+    check("malformed json", r.returncode == 2 and "broken.json" in r.stderr, r.stderr)
+
+    cases = [
+        ("no photo key", lambda s: s.pop("photo"), "photo"),
+        ("photo missing", lambda s: s.update(photo=os.path.join(tmp, "nope.png")), "photo"),
+        ("height negative", lambda s: s["objects"][0].update(height_m=-1), "objects[0].height_m"),
+        ("huge number", None, "camera.height_m"),
+        ("wrong type", lambda s: s["objects"][0].update(base_px="here"), "objects[0].base_px"),
+        ("zero-area light", lambda s: s["lights"][0].update(points=[[10, 10], [20, 20], [30, 30]]), "lights[0]"),
+        ("base in the sky", lambda s: s["objects"][0].update(base_px=[200.0, 20.0]), "objects[0].base_px"),
+        ("floor corner above horizon", lambda s: s["layout"]["back_wall_px"].__setitem__(3, [17.0, 100.0]), "layout.back_wall_px"),
+        ("unknown preset", lambda s: s["objects"][0]["material"].update(preset="velvet"), "objects[0].material"),
+        ("missing mesh file", lambda s: s["objects"][0].update(mesh="no_such_mesh.obj"), "objects[0].mesh"),
+    ]
+    out = os.path.join(tmp, "keep.png")
+    for name, mutate, key in cases:
+        if mutate is None:  # 1e999 overflows to infinity: written by hand
+            p = os.path.join(tmp, "huge.json")
+            txt = json.dumps(dict(base, photo=photo)).replace('"height_m": 1.6', '"height_m": 1e999')
+            open(p, "w").write(txt)
+        else:
+            p = scene(mutate, name.replace(" ", "_"))
+        open(out, "wb").write(b"users file")
+        r = run(cli, "render", p, "-o", out, "--spp", "1", "--quiet")
+        ok = r.returncode == 2 and key in r.stderr and len(r.stderr.strip().splitlines()) <= 2
+        check(name, ok, "exit %d: %s" % (r.returncode, r.stderr.strip()))
+        check(name + " leaves output", open(out, "rb").read() == b"users file")
+
+    corrupt = os.path.join(tmp, "corrupt.png")
+    open(corrupt, "wb").write(open(photo, "rb").read()[:2000])
+    p = scene(lambda s: s.update(photo=corrupt), "corrupt")
+    r = run(cli, "render", p, "-o", out, "--spp", "1")
+    check("truncated photo", r.returncode == 2 and "corrupt.png" in r.stderr, r.stderr)
+
+    # A real, small render: output, progress CSV, layers.
+    p = scene(lambda s: None, "good")
+    png, csvp, exr = (os.path.join(tmp, n) for n in ("good.png", "progress.csv", "layers.exr"))
+    r = run(cli, "render", p, "-o", png, "--spp", "4", "--progress-csv", csvp, "--layers", exr)
+    check("render ok", r.returncode == 0 and os.path.getsize(png) > 1000, r.stderr)
+    rows = open(csvp).read().strip().splitlines() if os.path.exists(csvp) else []
+    check("progress csv", len(rows) >= 2 and rows[0] == "seconds,spp,estimated_error" and rows[-1].split(",")[1] == "4", str(rows))
+    check("layers", os.path.exists(exr) and os.path.getsize(exr) > 1000)
+    check("no temp files left", not [f for f in os.listdir(tmp) if f.startswith(".") or ".tmp" in f], str(os.listdir(tmp)))
+
+    # Ctrl-C stops within a second or two and writes nothing.
+    stop = os.path.join(tmp, "stopped.png")
+    proc = subprocess.Popen([cli, "render", p, "-o", stop, "--spp", "100000", "--quiet"], stderr=subprocess.PIPE, text=True)
+    time.sleep(4.0)
+    t0 = time.time()
+    proc.send_signal(signal.SIGINT)
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+    dt = time.time() - t0
+    check("ctrl-c", proc.returncode == 1 and dt < 2.5 and not os.path.exists(stop), "exit %s after %.2f s" % (proc.returncode, dt))
+    print("ctrl-c stopped after %.2f s" % dt)
+
+    shutil.rmtree(tmp, ignore_errors=True)
+    print("%d passed, %d failed" % (passed, len(failed)))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
