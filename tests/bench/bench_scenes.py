@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Error against run time on every room of ../shared/scenes.
+
+For each room the harness writes the assisted scene file; inlay-cli renders it with a series of
+time budgets; the harness scores each composite (object RMSE against the true photo with the
+object, sRGB [0,1]; the same after removing the mean; the surroundings). Writes
+OUT/scenes_error_vs_time.csv and OUT/scenes_error_vs_time.png.
+
+usage: bench_scenes.py INLAY_CLI [--out DIR] [--budgets 2,4,8,16] [--scenes d1,d3] [--repeat N]
+"""
+import csv, json, os, statistics, subprocess, sys, time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def main():
+    a = sys.argv[1:]
+    cli = os.path.abspath(a[0])
+    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    budgets = [float(x) for x in opt("--budgets", "2,4,8,16,32").split(",")]
+    repeat = int(opt("--repeat", "1"))
+    shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
+    sdir = os.path.join(shared, "scenes")
+    harness = os.path.join(shared, "tools", "harness.py")
+    if not os.path.isdir(sdir):
+        print("skipped: no ../shared/scenes")
+        return 0
+    only = opt("--scenes", "")
+    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
+    if only:
+        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
+    os.makedirs(out, exist_ok=True)
+    py = sys.executable
+    base = {json.loads(l)["scene"]: json.loads(l) for l in
+            subprocess.run([py, harness, "baselines", sdir], capture_output=True, text=True, check=True).stdout.splitlines()}
+    rows = []
+    for name in names:
+        sd = os.path.join(sdir, name)
+        for budget in budgets:
+            scores, walls, spps = [], [], []
+            for rep in range(repeat):
+                sf = os.path.join(out, "%s.json" % name)
+                comp = os.path.join(out, "%s_%g.png" % (name, budget))
+                prog = os.path.join(out, "%s_%g.csv" % (name, budget))
+                subprocess.run([py, harness, "scene", sd, sf, "--seconds", str(budget)], check=True)
+                t0 = time.time()
+                p = subprocess.run([cli, "render", sf, "-o", comp, "--quiet", "--progress-csv", prog], capture_output=True, text=True)
+                walls.append(time.time() - t0)
+                if p.returncode != 0:
+                    print(name, budget, "failed:", p.stderr.strip()[-200:])
+                    break
+                scores.append(json.loads(subprocess.run([py, harness, "score", sd, comp], capture_output=True, text=True, check=True).stdout))
+                lines = open(prog).read().strip().splitlines()
+                spps.append(int(lines[-1].split(",")[1]) if len(lines) > 1 else 0)
+            if not scores:
+                continue
+            med = lambda k: statistics.median(s[k] for s in scores)
+            row = {"scene": name, "budget_s": budget, "wall_s": round(statistics.median(walls), 2),
+                   "spp": int(statistics.median(spps)), "object_rmse": round(med("object_rmse"), 4),
+                   "object_rmse_adjusted": round(med("object_rmse_adjusted"), 4),
+                   "around_rmse": round(med("around_rmse"), 4), "around_rmse_do_nothing": round(med("around_rmse_do_nothing"), 4),
+                   "uniform_baseline": round(base[name]["uniform_dataset_mean_rmse"], 4)}
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+    if not rows:
+        return 1
+    csvp = os.path.join(out, "scenes_error_vs_time.csv")
+    with open(csvp, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+        for name in names:
+            rr = [r for r in rows if r["scene"] == name]
+            if not rr:
+                continue
+            ax[0].plot([r["wall_s"] for r in rr], [r["object_rmse"] for r in rr], "o-", label=name)
+            ax[1].plot([r["wall_s"] for r in rr], [r["around_rmse"] for r in rr], "o-", label=name)
+        ax[0].set(xscale="log", xlabel="wall seconds (prepare + render)", ylabel="object RMSE vs truth (sRGB)", title="object")
+        ax[1].set(xscale="log", xlabel="wall seconds", ylabel="surroundings RMSE vs truth", title="shadows and bounce")
+        ax[0].legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "scenes_error_vs_time.png"), dpi=110)
+    except ImportError:
+        print("matplotlib missing: no plot")
+    print("wrote", csvp)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
