@@ -166,8 +166,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (stop()) return cancelled();
 
   auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
+  // Clipped (or non-finite) pixels say nothing about albedo and light.
   auto saturated = [&](int x, int y) {
     const float* p = photo.pixel(x, y);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return true;
     return std::max({p[0], p[1], p[2]}) >= float(opt.saturatedAbove);
   };
 
@@ -182,6 +184,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       const auto& p = ps[size_t(y) * W + x];
       if (p.surface < 0 || isLight(x, y)) continue;
       const Vec3 b = photo.rgb(x, y);
+      if (!b.allFinite()) continue;
       surfaceRadiance[p.surface] += b;
       surfaceCount[p.surface] += 1;
       roomRadiance += b;
@@ -201,8 +204,9 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         const auto& p = ps[size_t(y) * W + x];
         if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
                                             0.02 * p.depth + 1e-3) {
-          if (isLight(x, y)) return surfaceRadiance[h.surfaceId];
-          return photo.rgb(x, y);
+          const Vec3 b = photo.rgb(x, y);
+          if (isLight(x, y) || !b.allFinite()) return surfaceRadiance[h.surfaceId];
+          return b;
         }
       }
     }
@@ -406,7 +410,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         a[c] = std::clamp(std::isfinite(r) ? r : rho[p.surface][c], 0.0, 1.0);
       }
       out.albedo.setRgb(x, y, a);
-      out.direct.setRgb(x, y, (photo.rgb(x, y) - a.cwiseProduct(g)).cwiseMax(0.0));
+      const Vec3 b = photo.rgb(x, y);
+      out.direct.setRgb(x, y, b.allFinite() ? Vec3((b - a.cwiseProduct(g)).cwiseMax(0.0)) : Vec3::Zero());
       if (!isLight(x, y) && !saturated(x, y)) {
         albedoSum[p.surface] += a;
         albedoCount[p.surface] += 1;

@@ -1,0 +1,141 @@
+// The lighting stage on rooms with known answers: an empty room rendered by our own path tracer
+// from known albedos and a known light must give them back; stiff photos (black, saturated,
+// non-finite) give finite output or a clear error.
+#include "inlay/lighting/estimate.h"
+#include "inlay/render/path_tracer.h"
+#include "test_support.h"
+
+#include <cmath>
+
+namespace inlay {
+namespace {
+
+struct SyntheticRoom {
+  Camera camera;
+  SceneGeometry geometry;
+  std::vector<Vec3> albedo;  // per surface
+  AreaLight light;
+  std::vector<Vec2> lightOutlinePx;
+  ImageF photo;
+};
+
+// A 5 x 6 m room, 2.7 m high, camera 1.5 m up looking slightly down; a 0.8 x 0.8 m ceiling
+// panel of radiance `radiance`; rendered with `spp` samples (no objects).
+SyntheticRoom makeRoom(const Vec3& radiance, int spp) {
+  SyntheticRoom r;
+  r.camera = levelCamera(160, 120, 130, 1.5);
+  r.camera.worldFromCamera = Eigen::AngleAxisd(-8 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  RoomBox box;
+  box.xLeftM = -2.5, box.xRightM = 2.5, box.zBackM = -5.5, box.zRearM = 0.5, box.ceilingM = 2.7;
+  r.geometry = buildSceneGeometry(box, {});
+  r.albedo = {Vec3(0.35, 0.3, 0.25), Vec3(0.8, 0.8, 0.8), Vec3(0.6, 0.55, 0.5),
+              Vec3(0.5, 0.6, 0.55), Vec3(0.7, 0.65, 0.6), Vec3(0.6, 0.6, 0.6)};
+  const double y = 2.699;
+  r.light.cornersWorld = {Vec3(-0.4, y, -3.4), Vec3(-0.4, y, -2.6), Vec3(0.4, y, -2.6), Vec3(0.4, y, -3.4)};
+  if (r.light.normal().y() > 0) std::swap(r.light.cornersWorld[1], r.light.cornersWorld[3]);
+  r.light.radiance = radiance;
+  for (const Vec3& c : r.light.cornersWorld) r.lightOutlinePx.push_back(*r.camera.project(c));
+  RenderScene scene;
+  scene.camera = r.camera;
+  scene.room = r.geometry;
+  scene.roomAlbedo.camera = r.camera;
+  scene.roomAlbedo.surfaceMean = r.albedo;  // no albedo image: every surface is uniform
+  scene.lights = {r.light};
+  PathTracer tracer(scene);
+  DifferentialBuffers buf(160, 120);
+  EXPECT_TRUE(tracer.render(buf, 0, spp, 3));
+  r.photo = buf.meanWithout();
+  return r;
+}
+
+ImageF lightMaskOf(const SyntheticRoom& r) {
+  ImageF m(r.photo.width, r.photo.height, 1, 0.f);
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  for (const Vec2& p : r.lightOutlinePx) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  for (int y = std::max(0, int(y0) - 2); y <= std::min(r.photo.height - 1, int(y1) + 2); ++y)
+    for (int x = std::max(0, int(x0) - 2); x <= std::min(r.photo.width - 1, int(x1) + 2); ++x) m.at(x, y) = 1;
+  return m;
+}
+
+TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
+  const Vec3 trueRadiance(6.0, 5.0, 4.0);
+  const SyntheticRoom r = makeRoom(trueRadiance, 64);
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok()) << light.error().message();
+  EXPECT_LT((light->centre() - r.light.centre()).norm(), 0.02);
+  EXPECT_NEAR(light->area(), r.light.area(), 0.02 * r.light.area());
+  EXPECT_GT(light->normal().dot(Vec3(0, -1, 0)), 0.999);
+  LightingOptions opt;
+  opt.gatherSamples = 64;
+  opt.gatherStride = 2;
+  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), opt);
+  ASSERT_TRUE(est.ok()) << est.error().message();
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(est->lights[0].radiance[c] / trueRadiance[c], 1.0, 0.15) << "channel " << c;
+  }
+  // Albedo per visible surface.
+  for (size_t s = 0; s < r.albedo.size(); ++s) {
+    if (r.geometry.surfaces[s].kind == SurfaceKind::WallRear) continue;  // not seen
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(est->surfaceMeanAlbedo[s][c], r.albedo[s][c], 0.08)
+          << r.geometry.surfaces[s].name << " channel " << c;
+  }
+  for (float v : est->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  for (float v : est->direct.data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
+  std::printf("fitted radiance %.3f %.3f %.3f (true 6 5 4), fit rms(log) %.4f, %.2f s\n",
+              est->lights[0].radiance[0], est->lights[0].radiance[1], est->lights[0].radiance[2],
+              est->fitRmsLog, est->seconds);
+}
+
+TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
+  const SyntheticRoom r = makeRoom(Vec3(4, 4, 4), 4);
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok());
+  LightingOptions opt;
+  opt.gatherSamples = 16;
+  // Black photo: nothing to fit, said so.
+  ImageF black(r.photo.width, r.photo.height, 3, 0.f);
+  auto e1 = estimateLighting(black, r.camera, r.geometry, {*light}, {true}, ImageF(), opt);
+  ASSERT_FALSE(e1.ok());
+  EXPECT_NE(e1.error().message().find("black or saturated"), std::string::npos);
+  // Saturated photo.
+  ImageF white(r.photo.width, r.photo.height, 3, 1.f);
+  EXPECT_FALSE(estimateLighting(white, r.camera, r.geometry, {*light}, {true}, ImageF(), opt).ok());
+  // Half the photo black, some pixels NaN, some saturated: finite, bounded output.
+  ImageF mixed = r.photo;
+  for (int y = 0; y < mixed.height; ++y)
+    for (int x = 0; x < mixed.width; ++x) {
+      if (x < mixed.width / 2) mixed.setRgb(x, y, Vec3::Zero());
+      if ((x + y) % 17 == 0) mixed.setRgb(x, y, Vec3(std::nan(""), 1, 2));
+      if ((x * y) % 23 == 1) mixed.setRgb(x, y, Vec3(1, 1, 1));
+    }
+  auto e2 = estimateLighting(mixed, r.camera, r.geometry, {*light}, {true}, ImageF(), opt);
+  ASSERT_TRUE(e2.ok()) << e2.error().message();
+  for (float v : e2->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  for (float v : e2->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
+  for (const auto& l : e2->lights) ASSERT_TRUE(l.radiance.allFinite() && l.radiance.minCoeff() >= 0);
+  // A light kept as given is not changed by the fit; huge and tiny radiances stay finite.
+  for (double given : {1e-4, 1e4}) {
+    AreaLight fixed = *light;
+    fixed.radiance = Vec3(given, given, given);
+    auto e3 = estimateLighting(r.photo, r.camera, r.geometry, {fixed}, {false}, lightMaskOf(r), opt);
+    ASSERT_TRUE(e3.ok());
+    EXPECT_EQ(e3->lights[0].radiance, fixed.radiance);
+    for (float v : e3->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  }
+}
+
+TEST(Lighting, OutlinesThatCannotBeLightsAreNamed) {
+  const SyntheticRoom r = makeRoom(Vec3(1, 1, 1), 1);
+  auto two = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(20, 10)}, "lights[3].points");
+  ASSERT_FALSE(two.ok());
+  EXPECT_NE(two.error().message().find("lights[3].points"), std::string::npos);
+  auto flat = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(20, 10), Vec2(30, 10)}, "lights[0].points");
+  ASSERT_FALSE(flat.ok());
+  EXPECT_NE(flat.error().message().find("no area"), std::string::npos);
+  auto nan = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(std::nan(""), 10), Vec2(30, 20)}, "lights[0].points");
+  EXPECT_FALSE(nan.ok());
+}
+
+}  // namespace
+}  // namespace inlay
