@@ -105,6 +105,14 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
   Vec3 u = std::abs(n.y()) > 0.7 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
   u = (u - u.dot(n) * n).normalized();
   const Vec3 v = n.cross(u);
+  // The outline's own area (shoelace in the plane): a degenerate outline is refused even when
+  // its bounding rectangle would not be.
+  double polyArea = 0;
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const Vec3 a = pts[i] - c, b = pts[(i + 1) % pts.size()] - c;
+    polyArea += a.dot(u) * b.dot(v) - b.dot(u) * a.dot(v);
+  }
+  if (!(std::abs(0.5 * polyArea) > 1e-6)) return Error{"", key, "the light outline has no area"};
   AreaLight L;
   if (pts.size() == 4) {
     for (int i = 0; i < 4; ++i) L.cornersWorld[i] = pts[i];
