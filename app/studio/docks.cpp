@@ -1,0 +1,237 @@
+#include "docks.h"
+
+#include "document.h"
+
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace inlay::studio {
+namespace {
+
+constexpr int kRoleObject = Qt::UserRole + 1;  // object index, or -1
+
+QString meshName(const ObjectKeys& o) {
+  if (o.mesh == "builtin:sphere") return SceneTreeDock::tr("sphere");
+  if (o.mesh == "builtin:cube") return SceneTreeDock::tr("cube");
+  return QFileInfo(QString::fromStdString(o.mesh)).fileName();
+}
+
+QColor displayColour(const Vec3& linear) {
+  auto enc = [](double v) { return int(std::lround(255.0 * linearToSrgb(float(v)))); };
+  return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- SceneTreeDock
+
+SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
+    : QDockWidget(tr("Scene"), parent), document_(document), tree_(new QTreeWidget(this)) {
+  setObjectName(QStringLiteral("sceneDock"));
+  tree_->setHeaderLabels({tr("Item"), tr("Details")});
+  tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+  tree_->setRootIsDecorated(true);
+  setWidget(tree_);
+  connect(document_, &Document::changed, this, &SceneTreeDock::onDocumentChanged);
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+    if (updating_ || !item) return;
+    const QVariant v = item->data(0, kRoleObject);
+    if (v.isValid()) document_->setSelectedObject(v.toInt());
+  });
+  rebuild();
+}
+
+void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
+  if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
+      event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement))
+    rebuild();
+  else if (event.has(ChangeEvent::Selection))
+    syncSelection();
+}
+
+void SceneTreeDock::rebuild() {
+  updating_ = true;
+  tree_->clear();
+  const SceneDoc& doc = document_->scene();
+
+  auto* room = new QTreeWidgetItem(tree_, {tr("Room")});
+  if (const PreparedScene* p = document_->prepared()) {
+    const RoomBox& b = p->box;
+    room->setText(1, tr("%1 × %2 m, %3 m high")
+                         .arg(b.xRightM - b.xLeftM, 0, 'f', 2)
+                         .arg(b.zRearM - b.zBackM, 0, 'f', 2)
+                         .arg(b.ceilingM, 0, 'f', 2));
+  } else {
+    room->setText(1, doc.layout.backWallPx ? tr("back wall given") : tr("estimated"));
+  }
+
+  auto* lights = new QTreeWidgetItem(tree_, {tr("Lights"), QString::number(doc.lights.size())});
+  for (size_t i = 0; i < doc.lights.size(); ++i) {
+    const LightKeys& l = doc.lights[i];
+    new QTreeWidgetItem(lights, {tr("Light %1").arg(i + 1),
+                                 l.kind == LightKeys::Kind::PolygonPx ? tr("outline on the photo")
+                                                                      : tr("rectangle in 3D")});
+  }
+  auto* objects =
+      new QTreeWidgetItem(tree_, {tr("Objects"), QString::number(doc.objects.size())});
+  for (size_t i = 0; i < doc.objects.size(); ++i) {
+    const ObjectKeys& o = doc.objects[i];
+    auto* item = new QTreeWidgetItem(
+        objects, {tr("Object %1").arg(i + 1),
+                  tr("%1, %2 m").arg(meshName(o)).arg(o.heightM, 0, 'f', 2)});
+    item->setData(0, kRoleObject, int(i));
+    item->setIcon(0, [&] {
+      QPixmap swatch(12, 12);
+      swatch.fill(displayColour(o.material.albedo));
+      return QIcon(swatch);
+    }());
+  }
+  tree_->expandAll();
+  updating_ = false;
+  syncSelection();
+}
+
+void SceneTreeDock::syncSelection() {
+  updating_ = true;
+  const int selected = document_->selectedObject();
+  QTreeWidgetItem* found = nullptr;
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+    if ((*it)->data(0, kRoleObject).isValid() && (*it)->data(0, kRoleObject).toInt() == selected)
+      found = *it;
+  tree_->setCurrentItem(found);
+  if (!found) tree_->clearSelection();
+  updating_ = false;
+}
+
+// ---------------------------------------------------------------- PropertiesDock
+
+PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
+    : QDockWidget(tr("Properties"), parent), document_(document) {
+  setObjectName(QStringLiteral("propertiesDock"));
+  auto* panel = new QWidget(this);
+  auto* form = new QFormLayout(panel);
+  title_ = new QLabel(panel);
+  base_ = new QLabel(panel);
+  base_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+  height_ = new QDoubleSpinBox(panel);
+  height_->setRange(0.01, 100.0);
+  height_->setDecimals(3);
+  height_->setSingleStep(0.05);
+  height_->setSuffix(tr(" m"));
+  height_->setKeyboardTracking(false);
+
+  yaw_ = new QDoubleSpinBox(panel);
+  yaw_->setRange(-360.0, 360.0);
+  yaw_->setDecimals(1);
+  yaw_->setSingleStep(5.0);
+  yaw_->setWrapping(true);
+  yaw_->setSuffix(tr(" °"));
+  yaw_->setKeyboardTracking(false);
+
+  preset_ = new QComboBox(panel);
+  preset_->addItem(tr("Diffuse"), QStringLiteral("diffuse"));
+  preset_->addItem(tr("Glossy"), QStringLiteral("glossy"));
+  preset_->addItem(tr("Mirror"), QStringLiteral("mirror"));
+  preset_->addItem(tr("Glass"), QStringLiteral("glass"));
+  preset_->addItem(tr("Emissive"), QStringLiteral("emissive"));
+  preset_->addItem(tr("From the file"), QStringLiteral("asset"));
+
+  albedo_ = new QPushButton(panel);
+  albedo_->setToolTip(tr("Reflectance of the object's surface"));
+
+  form->addRow(title_);
+  form->addRow(tr("Base (px):"), base_);
+  form->addRow(tr("Height:"), height_);
+  form->addRow(tr("Turn:"), yaw_);
+  form->addRow(tr("Material:"), preset_);
+  form->addRow(tr("Colour:"), albedo_);
+  setWidget(panel);
+
+  connect(height_, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::editHeight);
+  connect(yaw_, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::editYaw);
+  connect(preset_, &QComboBox::activated, this, &PropertiesDock::editPreset);
+  connect(albedo_, &QPushButton::clicked, this, &PropertiesDock::pickAlbedo);
+  connect(document_, &Document::changed, this, [this] { refresh(); });
+  refresh();
+}
+
+void PropertiesDock::refresh() {
+  const int i = document_->selectedObject();
+  const bool valid = i >= 0 && i < document_->objectCount();
+  const bool editable = valid && document_->isReady();
+  for (QWidget* w : {static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
+                     static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
+    w->setEnabled(editable);
+  if (!valid) {
+    title_->setText(tr("No object selected"));
+    base_->clear();
+    return;
+  }
+  const ObjectKeys& o = document_->scene().objects[size_t(i)];
+  title_->setText(tr("<b>Object %1</b> (%2)").arg(i + 1).arg(meshName(o)));
+  base_->setText(QStringLiteral("%1, %2").arg(o.basePx.x(), 0, 'f', 1).arg(o.basePx.y(), 0, 'f', 1));
+  const QSignalBlocker b1(height_), b2(yaw_), b3(preset_);
+  height_->setValue(o.heightM);
+  yaw_->setValue(o.yawDeg);
+  const int presetIndex = preset_->findData(QString::fromStdString(o.material.preset));
+  preset_->setCurrentIndex(std::max(0, presetIndex));
+  const QColor c = displayColour(o.material.albedo);
+  albedo_->setText(c.name());
+  albedo_->setStyleSheet(QStringLiteral("QPushButton { background: %1; color: %2; }")
+                             .arg(c.name(), c.lightnessF() > 0.5 ? QStringLiteral("black")
+                                                                 : QStringLiteral("white")));
+}
+
+void PropertiesDock::report(bool ok, const QString& reason) {
+  if (!ok) {
+    Q_EMIT statusMessage(reason);
+    refresh();  // show the document's value again
+  }
+}
+
+void PropertiesDock::editHeight(double heightM) {
+  QString reason;
+  report(document_->setObjectHeight(document_->selectedObject(), heightM, &reason), reason);
+}
+
+void PropertiesDock::editYaw(double yawDeg) {
+  QString reason;
+  report(document_->setObjectYaw(document_->selectedObject(), yawDeg, &reason), reason);
+}
+
+void PropertiesDock::editPreset(int comboIndex) {
+  const int i = document_->selectedObject();
+  if (i < 0 || i >= document_->objectCount()) return;
+  MaterialKeys m = document_->scene().objects[size_t(i)].material;
+  m.preset = preset_->itemData(comboIndex).toString().toStdString();
+  QString reason;
+  report(document_->setMaterial(i, m, &reason), reason);
+}
+
+void PropertiesDock::pickAlbedo() {
+  const int i = document_->selectedObject();
+  if (i < 0 || i >= document_->objectCount()) return;
+  MaterialKeys m = document_->scene().objects[size_t(i)].material;
+  const QColor chosen =
+      QColorDialog::getColor(displayColour(m.albedo), this, tr("Object colour"));
+  if (!chosen.isValid()) return;
+  // The dialog speaks sRGB; the scene file stores linear reflectance.
+  m.albedo = Vec3(srgbToLinear(float(chosen.redF())), srgbToLinear(float(chosen.greenF())),
+                  srgbToLinear(float(chosen.blueF())));
+  QString reason;
+  report(document_->setMaterial(i, m, &reason), reason);
+}
+
+}  // namespace inlay::studio

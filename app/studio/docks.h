@@ -1,0 +1,68 @@
+// The two docks beside the viewport. Both rebuild their contents from the Document's state when
+// it announces a change, and edit it only through its API (undoable commands).
+//   SceneTreeDock: the room, the lights and the objects; selecting an object selects it in the
+//     document (and so in the viewport).
+//   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object.
+// GUI thread only.
+#pragma once
+
+#include <QDockWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTreeWidget;
+
+namespace inlay::studio {
+
+class Document;
+struct ChangeEvent;
+
+class SceneTreeDock : public QDockWidget {
+  Q_OBJECT
+
+ public:
+  explicit SceneTreeDock(Document* document, QWidget* parent = nullptr);
+  QTreeWidget* tree() const { return tree_; }
+
+ private:
+  void rebuild();
+  void syncSelection();
+  void onDocumentChanged(const ChangeEvent& event);
+
+  Document* document_;
+  QTreeWidget* tree_;
+  bool updating_ = false;
+};
+
+class PropertiesDock : public QDockWidget {
+  Q_OBJECT
+
+ public:
+  explicit PropertiesDock(Document* document, QWidget* parent = nullptr);
+  QDoubleSpinBox* heightBox() const { return height_; }
+  QDoubleSpinBox* yawBox() const { return yaw_; }
+  QComboBox* presetBox() const { return preset_; }
+
+ Q_SIGNALS:
+  void statusMessage(const QString& message);
+
+ private:
+  void refresh();
+  void editHeight(double heightM);
+  void editYaw(double yawDeg);
+  void editPreset(int comboIndex);
+  void pickAlbedo();
+  void report(bool ok, const QString& reason);
+
+  Document* document_;
+  QLabel* title_;
+  QLabel* base_;
+  QDoubleSpinBox* height_;
+  QDoubleSpinBox* yaw_;
+  QComboBox* preset_;
+  QPushButton* albedo_;
+};
+
+}  // namespace inlay::studio

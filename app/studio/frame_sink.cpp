@@ -1,0 +1,73 @@
+#include "frame_sink.h"
+
+#include "image_convert.h"
+
+namespace inlay::studio {
+
+CompositeSink::CompositeSink(std::function<void()> notify) : notify_(std::move(notify)) {}
+
+std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const PreparedScene& scene) {
+  auto context = std::make_shared<PreparedScene>();
+  context->doc.photo = scene.doc.photo;
+  context->doc.photoResolved = scene.doc.photoResolved;
+  context->doc.render = scene.doc.render;
+  context->photo = scene.photo;
+  context->camera = scene.camera;
+  context->box = scene.box;
+  return context;
+}
+
+void CompositeSink::setContext(std::shared_ptr<const PreparedScene> context, uint64_t minVersion) {
+  std::lock_guard lock(mutex_);
+  context_ = std::move(context);
+  minVersion_.store(minVersion);
+  pending_.reset();
+}
+
+void CompositeSink::setMinVersion(uint64_t version) {
+  uint64_t current = minVersion_.load();
+  while (current < version && !minVersion_.compare_exchange_weak(current, version)) {
+  }
+}
+
+std::optional<CompositeImage> CompositeSink::take() {
+  std::lock_guard lock(mutex_);
+  std::optional<CompositeImage> out = std::move(pending_);
+  pending_.reset();
+  return out;
+}
+
+void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
+  if (!frame || frame->sceneVersion < minVersion_.load()) return;
+  std::shared_ptr<const PreparedScene> context;
+  {
+    std::lock_guard lock(mutex_);
+    context = context_;
+  }
+  if (!context || frame->width != context->photo.linearRgb.width ||
+      frame->height != context->photo.linearRgb.height)
+    return;  // a frame of a scene the GUI no longer shows
+
+  CompositeImage image;
+  image.sceneVersion = frame->sceneVersion;
+  image.spp = frame->spp;
+  image.resolutionDivider = frame->resolutionDivider;
+  image.seconds = frame->seconds;
+  image.estimatedError = frame->estimatedError;
+  image.final = frame->final;
+  auto linear = std::make_shared<ImageF>(compositeOf(*context, *frame));
+  // compositeOf already applied the scene's exposure.
+  image.srgb8 = srgb8FromLinear(*linear, 0.0);
+  image.linear = std::move(linear);
+
+  bool wasEmpty = false;
+  {
+    std::lock_guard lock(mutex_);
+    if (frame->sceneVersion < minVersion_.load() || context != context_) return;
+    wasEmpty = !pending_.has_value();
+    pending_ = std::move(image);
+  }
+  if (wasEmpty && notify_) notify_();
+}
+
+}  // namespace inlay::studio

@@ -1,0 +1,15 @@
+// Conversions between the engine's float images and QImage, for display only.
+// Thread-safe (pure functions); the render thread calls them on every frame.
+#pragma once
+
+#include "inlay/modeling/image.h"
+
+#include <QImage>
+
+namespace inlay::studio {
+
+// linearRgb: W x H x C (C = 1 or >= 3), linear photo units. Returns a W x H QImage
+// (Format_RGB32) holding the sRGB encoding of linearRgb * 2^exposureStops, clamped to [0,1].
+QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops = 0.0);
+
+}  // namespace inlay::studio

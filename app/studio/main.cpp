@@ -1,0 +1,127 @@
+// inlay: the studio. See ../../../shared/spec/cli.md ("inlay [SCENE.json | PHOTO]").
+//
+// Test hook: inlay --screenshot OUT.png [--wait-spp N] [SCENE | PHOTO] opens the scene, waits
+// until the composite reaches N samples per pixel (default 4; or its render ends, or 60 s
+// pass), grabs the main window to OUT.png and exits: 0 when the screenshot shows the rendered
+// scene, 2 when the scene could not be opened or prepared (the screenshot is still written,
+// showing the error), 1 when OUT.png could not be written.
+#include "document.h"
+#include "i18n.h"
+#include "main_window.h"
+#include "render_controller.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <cstdio>
+
+using inlay::studio::Document;
+using inlay::studio::MainWindow;
+
+namespace {
+
+int writeScreenshot(MainWindow& window, const QString& path) {
+  const QPixmap shot = window.grab();
+  if (shot.isNull() || !shot.save(path)) {
+    std::fprintf(stderr, "inlay: %s: cannot write the screenshot\n", qUtf8Printable(path));
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName(QStringLiteral("Inlay"));
+  QApplication::setApplicationName(QStringLiteral("inlay"));
+  QApplication::setApplicationVersion(QString::fromLatin1(inlay::versionString()));
+  inlay::studio::installTranslators();
+
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      QCoreApplication::translate("main", "Insert synthetic objects into a photograph."));
+  parser.addHelpOption();
+  parser.addVersionOption();
+  parser.addPositionalArgument(
+      QStringLiteral("file"),
+      QCoreApplication::translate("main", "A scene file (.json) or a photo; none: the example."),
+      QStringLiteral("[SCENE.json | PHOTO]"));
+  const QCommandLineOption screenshotOpt(
+      QStringLiteral("screenshot"),
+      QCoreApplication::translate("main", "Grab the window to <file> once rendered, then exit."),
+      QStringLiteral("file"));
+  const QCommandLineOption waitSppOpt(
+      QStringLiteral("wait-spp"),
+      QCoreApplication::translate("main", "Samples per pixel to wait for (default 4)."),
+      QStringLiteral("n"), QStringLiteral("4"));
+  parser.addOption(screenshotOpt);
+  parser.addOption(waitSppOpt);
+  parser.process(app);
+
+  const QStringList files = parser.positionalArguments();
+  if (files.size() > 1) {
+    std::fprintf(stderr, "inlay: %s\n",
+                 qUtf8Printable(QCoreApplication::translate("main", "Give at most one file.")));
+    return 2;
+  }
+  bool sppOk = false;
+  const int waitSpp = parser.value(waitSppOpt).toInt(&sppOk);
+  if (!sppOk || waitSpp < 0) {
+    std::fprintf(stderr, "inlay: --wait-spp: %s\n",
+                 qUtf8Printable(QCoreApplication::translate("main", "expected a number >= 0")));
+    return 2;
+  }
+  const bool screenshot = parser.isSet(screenshotOpt);
+
+  MainWindow window;
+  window.setInteractive(!screenshot);
+  if (screenshot) window.resize(1280, 800);
+  window.show();
+  const bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
+  if (!screenshot) return app.exec();
+
+  // --- Screenshot mode ---
+  const QString out = QDir::current().absoluteFilePath(parser.value(screenshotOpt));
+  if (!opened) {
+    const int rc = writeScreenshot(window, out);
+    return rc ? rc : 2;
+  }
+  int exitCode = -1;
+  QElapsedTimer clock;
+  clock.start();
+  auto check = [&] {
+    if (exitCode >= 0) return;
+    const Document::State state = window.document()->state();
+    const auto* renderer = window.renderer();
+    bool done = false;
+    int rc = 0;
+    if (state == Document::State::Failed || state == Document::State::Empty) {
+      std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(window.document()->prepareError()));
+      done = true;
+      rc = 2;
+    } else if (renderer->isCurrent() &&
+               (renderer->frameInfo().spp >= waitSpp || renderer->frameInfo().final)) {
+      done = true;
+    } else if (clock.elapsed() > 60'000) {
+      std::fprintf(stderr, "inlay: the render did not reach %d spp within 60 s; grabbing anyway\n",
+                   waitSpp);
+      done = true;
+    }
+    if (!done) return;
+    const int written = writeScreenshot(window, out);
+    exitCode = written ? written : rc;
+    QCoreApplication::exit(exitCode);
+  };
+  QObject::connect(window.renderer(), &inlay::studio::RenderController::frameUpdated, &app, check,
+                   Qt::QueuedConnection);
+  QObject::connect(window.document(), &Document::changed, &app, check, Qt::QueuedConnection);
+  QTimer poll;
+  QObject::connect(&poll, &QTimer::timeout, &app, check);
+  poll.start(250);
+  const int rc = app.exec();
+  return exitCode >= 0 ? exitCode : rc;
+}

@@ -1,0 +1,506 @@
+#include "main_window.h"
+
+#include "docks.h"
+#include "document.h"
+#include "render_controller.h"
+#include "viewport.h"
+
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDirIterator>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImageReader>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPainter>
+#include <QProgressDialog>
+#include <QSettings>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+#include <QUndoStack>
+
+namespace inlay::studio {
+namespace {
+
+constexpr int kMaxRecentFiles = 8;
+const char* const kRecentKey = "recentFiles";
+
+// The window icon: the SVG when Qt can read SVG here, else the same drawing painted directly
+// (a box room in perspective with a sphere standing in it).
+QIcon appIcon() {
+  if (QImageReader::supportedImageFormats().contains("svg"))
+    return QIcon(QStringLiteral(":/icons/inlay.svg"));
+  QIcon icon;
+  for (int size : {16, 32, 64, 128}) {
+    QPixmap pm(size, size);
+    pm.fill(Qt::transparent);
+    QPainter p(&pm);
+    p.setRenderHint(QPainter::Antialiasing);
+    p.scale(size / 64.0, size / 64.0);
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(38, 50, 72));
+    p.drawRoundedRect(QRectF(2, 2, 60, 60), 10, 10);
+    p.setPen(QPen(QColor(90, 200, 255), 2.5));
+    p.setBrush(Qt::NoBrush);
+    const QRectF back(20, 16, 24, 22);
+    p.drawRect(back);
+    p.drawLine(back.topLeft(), QPointF(6, 6));
+    p.drawLine(back.topRight(), QPointF(58, 6));
+    p.drawLine(back.bottomLeft(), QPointF(6, 58));
+    p.drawLine(back.bottomRight(), QPointF(58, 58));
+    QRadialGradient g(QPointF(29, 38), 14);
+    g.setColorAt(0, QColor(255, 210, 150));
+    g.setColorAt(1, QColor(230, 120, 40));
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 0, 0, 90));
+    p.drawEllipse(QRectF(22, 49, 22, 6));
+    p.setBrush(g);
+    p.drawEllipse(QRectF(23, 31, 20, 20));
+    p.end();
+    icon.addPixmap(pm);
+  }
+  return icon;
+}
+
+QString stageText(const QString& stage) {
+  if (stage == QLatin1String("photo")) return MainWindow::tr("Reading the photo");
+  if (stage == QLatin1String("camera")) return MainWindow::tr("Estimating the camera");
+  if (stage == QLatin1String("room")) return MainWindow::tr("Fitting the room");
+  if (stage == QLatin1String("lighting")) return MainWindow::tr("Estimating the lighting");
+  if (stage == QLatin1String("objects")) return MainWindow::tr("Placing the objects");
+  return stage;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setObjectName(QStringLiteral("inlayMainWindow"));
+  setWindowIcon(appIcon());
+  document_ = new Document(this);
+  renderer_ = new RenderController(document_, this);
+  viewport_ = new Viewport(document_, renderer_, this);
+  setCentralWidget(viewport_);
+
+  sceneDock_ = new SceneTreeDock(document_, this);
+  propertiesDock_ = new PropertiesDock(document_, this);
+  addDockWidget(Qt::LeftDockWidgetArea, sceneDock_);
+  addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
+
+  sppLabel_ = new QLabel(this);
+  errorLabel_ = new QLabel(this);
+  timeLabel_ = new QLabel(this);
+  for (QLabel* l : {sppLabel_, errorLabel_, timeLabel_}) {
+    l->setMinimumWidth(90);
+    statusBar()->addPermanentWidget(l);
+  }
+
+  createActions();
+  createMenus();
+
+  connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
+  connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
+  connect(document_, &Document::prepareProgress, this, [this](const QString& stage, double f) {
+    if (!progress_) return;
+    progress_->setLabelText(tr("Preparing the scene: %1…").arg(stageText(stage)));
+    progress_->setValue(int(std::clamp(f, 0.0, 1.0) * 999));
+  });
+  connect(renderer_, &RenderController::frameUpdated, this, &MainWindow::onFrame);
+  connect(viewport_, &Viewport::statusMessage, this, [this](const QString& m) {
+    if (m.isEmpty())
+      statusBar()->clearMessage();
+    else
+      statusBar()->showMessage(m, 5000);
+  });
+  connect(propertiesDock_, &PropertiesDock::statusMessage, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 5000); });
+
+  const QSettings settings;
+  if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
+    resize(1200, 800);
+  restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  updateTitle();
+  onFrame();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::createActions() {
+  QStyle* s = style();
+  openSceneAct_ = new QAction(s->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Scene…"), this);
+  openSceneAct_->setShortcut(QKeySequence::Open);
+  openSceneAct_->setStatusTip(tr("Open a scene file (.json)"));
+  connect(openSceneAct_, &QAction::triggered, this, &MainWindow::openSceneDialog);
+
+  openPhotoAct_ = new QAction(tr("Open &Photo…"), this);
+  openPhotoAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+  openPhotoAct_->setStatusTip(tr("Start a new scene from a photo"));
+  connect(openPhotoAct_, &QAction::triggered, this, &MainWindow::openPhotoDialog);
+
+  openExampleAct_ = new QAction(tr("Open &Example"), this);
+  connect(openExampleAct_, &QAction::triggered, this, [this] { openExample(); });
+
+  saveAct_ = new QAction(s->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save"), this);
+  saveAct_->setShortcut(QKeySequence::Save);
+  connect(saveAct_, &QAction::triggered, this, &MainWindow::save);
+
+  saveAsAct_ = new QAction(tr("Save &As…"), this);
+  saveAsAct_->setShortcut(QKeySequence::SaveAs);
+  connect(saveAsAct_, &QAction::triggered, this, &MainWindow::saveAsDialog);
+
+  exportAct_ = new QAction(tr("&Export Composite…"), this);
+  exportAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+  exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
+  connect(exportAct_, &QAction::triggered, this, &MainWindow::exportCompositeDialog);
+
+  quitAct_ = new QAction(tr("&Quit"), this);
+  quitAct_->setShortcut(QKeySequence::Quit);
+  connect(quitAct_, &QAction::triggered, this, &QWidget::close);
+
+  undoAct_ = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undoAct_->setShortcut(QKeySequence::Undo);
+  undoAct_->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
+  redoAct_ = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redoAct_->setShortcut(QKeySequence::Redo);
+  redoAct_->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
+
+  zoomInAct_ = new QAction(tr("Zoom &In"), this);
+  zoomInAct_->setShortcut(QKeySequence::ZoomIn);
+  connect(zoomInAct_, &QAction::triggered, viewport_, &Viewport::zoomIn);
+  zoomOutAct_ = new QAction(tr("Zoom &Out"), this);
+  zoomOutAct_->setShortcut(QKeySequence::ZoomOut);
+  connect(zoomOutAct_, &QAction::triggered, viewport_, &Viewport::zoomOut);
+  fitAct_ = new QAction(tr("&Fit to Window"), this);
+  fitAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+  connect(fitAct_, &QAction::triggered, viewport_, &Viewport::zoomToFit);
+  beforeAct_ = new QAction(tr("&Before (Photo Only)"), this);
+  beforeAct_->setCheckable(true);
+  beforeAct_->setShortcut(QKeySequence(Qt::Key_B));
+  beforeAct_->setStatusTip(tr("Toggle between the photo and the composite with the objects"));
+  connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
+
+  aboutAct_ = new QAction(tr("&About Inlay"), this);
+  connect(aboutAct_, &QAction::triggered, this, &MainWindow::about);
+}
+
+void MainWindow::createMenus() {
+  fileMenu_ = menuBar()->addMenu(tr("&File"));
+  fileMenu_->addAction(openSceneAct_);
+  fileMenu_->addAction(openPhotoAct_);
+  fileMenu_->addAction(openExampleAct_);
+  recentMenu_ = fileMenu_->addMenu(tr("Open &Recent"));
+  connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
+  rebuildRecentMenu();
+  fileMenu_->addSeparator();
+  fileMenu_->addAction(saveAct_);
+  fileMenu_->addAction(saveAsAct_);
+  fileMenu_->addAction(exportAct_);
+  fileMenu_->addSeparator();
+  fileMenu_->addAction(quitAct_);
+
+  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  edit->addAction(undoAct_);
+  edit->addAction(redoAct_);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  view->addAction(zoomInAct_);
+  view->addAction(zoomOutAct_);
+  view->addAction(fitAct_);
+  view->addSeparator();
+  view->addAction(beforeAct_);
+  view->addSeparator();
+  view->addAction(sceneDock_->toggleViewAction());
+  view->addAction(propertiesDock_->toggleViewAction());
+  view->addSeparator();
+  QMenu* language = view->addMenu(tr("&Language"));
+  auto* group = new QActionGroup(language);
+  const QString current = QSettings().value(QStringLiteral("language")).toString();
+  const std::pair<QString, QString> languages[] = {
+      {QString(), tr("System Default")}, {QStringLiteral("en"), QStringLiteral("English")},
+      {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+  for (const auto& [code, name] : languages) {
+    QAction* a = language->addAction(name);
+    a->setCheckable(true);
+    a->setChecked(code == current);
+    group->addAction(a);
+    connect(a, &QAction::triggered, this, [this, code = code] { setLanguage(code); });
+  }
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(aboutAct_);
+
+  QToolBar* tools = addToolBar(tr("Main"));
+  tools->setObjectName(QStringLiteral("mainToolBar"));
+  tools->addAction(openSceneAct_);
+  tools->addAction(saveAct_);
+  tools->addSeparator();
+  tools->addAction(undoAct_);
+  tools->addAction(redoAct_);
+  tools->addSeparator();
+  tools->addAction(zoomInAct_);
+  tools->addAction(zoomOutAct_);
+  tools->addAction(fitAct_);
+  tools->addAction(beforeAct_);
+}
+
+void MainWindow::onDocumentChanged(const ChangeEvent& event) {
+  if (event.has(ChangeEvent::FilePath) || event.has(ChangeEvent::SceneReplaced)) updateTitle();
+  if (event.has(ChangeEvent::PrepareStarted)) {
+    delete progress_;
+    progress_ = new QProgressDialog(tr("Preparing the scene…"), tr("Cancel"), 0, 1000, this);
+    progress_->setWindowTitle(tr("Inlay"));
+    progress_->setWindowModality(Qt::WindowModal);
+    progress_->setMinimumDuration(interactive_ ? 500 : 1000000000);
+    progress_->setAutoClose(false);
+    progress_->setAutoReset(false);
+    connect(progress_, &QProgressDialog::canceled, document_, &Document::cancelPrepare);
+    statusBar()->showMessage(tr("Preparing the scene…"));
+  }
+  if (event.has(ChangeEvent::PrepareFinished)) {
+    if (progress_) {
+      progress_->hide();
+      progress_->deleteLater();
+      progress_ = nullptr;
+    }
+    statusBar()->clearMessage();
+    switch (document_->state()) {
+      case Document::State::Failed:
+        showError(tr("The scene could not be prepared"), document_->prepareError());
+        break;
+      case Document::State::Ready:
+        if (!document_->warnings().isEmpty())
+          statusBar()->showMessage(document_->warnings().join(QStringLiteral("; ")), 10000);
+        break;
+      default:
+        statusBar()->showMessage(document_->prepareError(), 5000);
+        break;
+    }
+  }
+  const bool ready = document_->isReady();
+  exportAct_->setEnabled(ready);
+  saveAct_->setEnabled(document_->state() != Document::State::Empty ||
+                       !document_->scene().photo.empty());
+  saveAsAct_->setEnabled(saveAct_->isEnabled());
+}
+
+void MainWindow::onFrame() {
+  if (!renderer_->hasFrame()) {
+    sppLabel_->setText(tr("– spp"));
+    errorLabel_->setText(tr("error –"));
+    timeLabel_->setText(tr("– s"));
+    return;
+  }
+  const CompositeImage& f = renderer_->frameInfo();
+  sppLabel_->setText(f.resolutionDivider > 1 ? tr("preview 1/%1").arg(f.resolutionDivider)
+                                             : tr("%1 spp").arg(f.spp));
+  errorLabel_->setText(tr("error %1").arg(f.estimatedError, 0, 'f', 4));
+  timeLabel_->setText(tr("%1 s").arg(f.seconds, 0, 'f', 1));
+  exportAct_->setEnabled(true);
+}
+
+void MainWindow::updateTitle() {
+  const QString path = document_->filePath();
+  QString name;
+  if (!path.isEmpty())
+    name = QFileInfo(path).fileName();
+  else if (!document_->scene().photo.empty())
+    name = tr("%1 (new scene)").arg(
+        QFileInfo(QString::fromStdString(document_->scene().photo)).fileName());
+  else
+    name = tr("Untitled");
+  setWindowTitle(tr("%1[*] — Inlay").arg(name));
+  setWindowModified(!document_->undoStack()->isClean());
+}
+
+void MainWindow::showError(const QString& title, const QString& text) {
+  statusBar()->showMessage(text, 10000);
+  if (!interactive_) {
+    qWarning("inlay: %s: %s", qUtf8Printable(title), qUtf8Printable(text));
+    return;
+  }
+  // Window-modal and asynchronous: never blocks a caller (or a test) in a nested event loop.
+  auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->open();
+}
+
+bool MainWindow::openPath(const QString& path) {
+  const QFileInfo info(path);
+  if (!info.exists()) {
+    showError(tr("Cannot open"), tr("%1: no such file").arg(path));
+    return false;
+  }
+  if (info.suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0) {
+    QString error;
+    if (!document_->openSceneFile(info.absoluteFilePath(), &error)) {
+      showError(tr("Cannot open the scene"), error);
+      return false;
+    }
+  } else {
+    document_->newFromPhoto(info.absoluteFilePath());
+  }
+  addRecentFile(info.absoluteFilePath());
+  return true;
+}
+
+bool MainWindow::openExample() {
+  const std::string onDisk = exampleScenePath();
+  if (!onDisk.empty()) return openPath(QString::fromStdString(onDisk));
+  // Unpack the embedded copy (scene.json refers to its photo by a relative path).
+  if (!QFile::exists(QStringLiteral(":/example/scene.json"))) {
+    showError(tr("Cannot open the example"), tr("The example scene is not installed."));
+    return false;
+  }
+  exampleCopy_ = std::make_unique<QTemporaryDir>();
+  QDirIterator it(QStringLiteral(":/example"), QDir::Files, QDirIterator::Subdirectories);
+  while (it.hasNext()) {
+    const QString from = it.next();
+    const QString to = exampleCopy_->filePath(from.mid(QStringLiteral(":/example/").size()));
+    QDir().mkpath(QFileInfo(to).absolutePath());
+    if (!QFile::copy(from, to)) {
+      showError(tr("Cannot open the example"), tr("Cannot write %1").arg(to));
+      return false;
+    }
+    QFile::setPermissions(to, QFile::ReadOwner | QFile::WriteOwner);
+  }
+  return openPath(exampleCopy_->filePath(QStringLiteral("scene.json")));
+}
+
+void MainWindow::openSceneDialog() {
+  if (!maybeSave()) return;
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open Scene"), QString(),
+                                                    tr("Inlay scenes (*.json);;All files (*)"));
+  if (!path.isEmpty()) openPath(path);
+}
+
+void MainWindow::openPhotoDialog() {
+  if (!maybeSave()) return;
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open Photo"), QString(),
+      tr("Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)"));
+  if (!path.isEmpty()) openPath(path);
+}
+
+bool MainWindow::saveTo(const QString& path) {
+  QString error;
+  if (!document_->saveAs(path, &error)) {
+    showError(tr("Cannot save the scene"), error);
+    return false;
+  }
+  addRecentFile(document_->filePath());
+  statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), 4000);
+  return true;
+}
+
+bool MainWindow::save() {
+  if (document_->filePath().isEmpty()) return saveAsDialog();
+  return saveTo(document_->filePath());
+}
+
+bool MainWindow::saveAsDialog() {
+  QString suggestion = document_->filePath();
+  if (suggestion.isEmpty() && !document_->scene().photoResolved.empty()) {
+    const QFileInfo photo(QString::fromStdString(document_->scene().photoResolved));
+    suggestion = photo.absoluteDir().filePath(photo.completeBaseName() + QStringLiteral(".json"));
+  }
+  QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), suggestion,
+                                              tr("Inlay scenes (*.json)"));
+  if (path.isEmpty()) return false;
+  if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+  return saveTo(path);
+}
+
+void MainWindow::exportCompositeDialog() {
+  const std::shared_ptr<const ImageF> linear = renderer_->compositeLinear();
+  if (!linear) {
+    showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
+    return;
+  }
+  QString selected;
+  const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
+                tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
+  QString path = QFileDialog::getSaveFileName(this, tr("Export Composite"), QString(),
+                                              QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")),
+                                              &selected);
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty())
+    path += selected == jpeg ? QStringLiteral(".jpg")
+            : selected == tiff ? QStringLiteral(".tif")
+            : selected == exr  ? QStringLiteral(".exr")
+                               : QStringLiteral(".png");
+  const Status saved = saveImage(path.toStdString(), *linear);
+  if (!saved.ok()) {
+    showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
+    return;
+  }
+  statusBar()->showMessage(tr("Exported %1 (%2 spp)")
+                               .arg(QDir::toNativeSeparators(path))
+                               .arg(renderer_->frameInfo().spp),
+                           5000);
+}
+
+void MainWindow::about() {
+  QMessageBox::about(
+      this, tr("About Inlay"),
+      tr("<h3>Inlay %1</h3><p>Inserts synthetic objects into an ordinary photograph: a box room "
+         "is fitted to the photo, its lights and reflectance are estimated, and a path tracer "
+         "renders the objects into it (after Karsch et al., 2011).</p>")
+          .arg(QString::fromLatin1(versionString())));
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+  QSettings settings;
+  QStringList files = settings.value(QLatin1String(kRecentKey)).toStringList();
+  files.removeAll(path);
+  files.prepend(path);
+  while (files.size() > kMaxRecentFiles) files.removeLast();
+  settings.setValue(QLatin1String(kRecentKey), files);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recentMenu_->clear();
+  const QStringList files = QSettings().value(QLatin1String(kRecentKey)).toStringList();
+  for (int i = 0; i < files.size(); ++i) {
+    const QString& f = files[i];
+    QAction* a = recentMenu_->addAction(
+        QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(f).fileName()));
+    a->setStatusTip(QDir::toNativeSeparators(f));
+    connect(a, &QAction::triggered, this, [this, f] {
+      if (maybeSave()) openPath(f);
+    });
+  }
+  recentMenu_->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::setLanguage(const QString& code) {
+  QSettings().setValue(QStringLiteral("language"), code);
+  statusBar()->showMessage(tr("The language changes when Inlay is started again."), 6000);
+}
+
+bool MainWindow::maybeSave() {
+  if (!interactive_ || document_->undoStack()->isClean()) return true;
+  const auto answer = QMessageBox::warning(
+      this, tr("Inlay"), tr("The scene has unsaved changes. Save them?"),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Save) return save();
+  return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  QSettings settings;
+  settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  settings.setValue(QStringLiteral("window/state"), saveState());
+  event->accept();
+}
+
+}  // namespace inlay::studio

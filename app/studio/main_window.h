@@ -1,0 +1,104 @@
+// The studio's main window: menus, toolbar, status bar, the viewport in the centre and the
+// scene / properties docks. It owns the Document and the RenderController; everything it shows
+// comes from them. GUI thread only.
+#pragma once
+
+#include <QMainWindow>
+#include <QPointer>
+#include <QTemporaryDir>
+
+#include <memory>
+
+class QAction;
+class QLabel;
+class QMenu;
+class QProgressDialog;
+
+namespace inlay::studio {
+
+class Document;
+class PropertiesDock;
+class RenderController;
+class SceneTreeDock;
+class Viewport;
+struct ChangeEvent;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  Document* document() const { return document_; }
+  RenderController* renderer() const { return renderer_; }
+  Viewport* viewport() const { return viewport_; }
+  SceneTreeDock* sceneDock() const { return sceneDock_; }
+  PropertiesDock* propertiesDock() const { return propertiesDock_; }
+  QMenu* fileMenu() const { return fileMenu_; }
+
+  // Opens a scene file (.json) or a bare photo (anything else). Problems are shown in a
+  // (non-blocking) message box; returns false when nothing was opened.
+  bool openPath(const QString& path);
+  // The bundled example: exampleScenePath(), or the copy embedded in the program.
+  bool openExample();
+  // Writes the scene file; returns false (after telling the user) on failure.
+  bool saveTo(const QString& path);
+  // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
+  void setInteractive(bool interactive) { interactive_ = interactive; }
+
+ public Q_SLOTS:
+  void openSceneDialog();
+  void openPhotoDialog();
+  bool save();
+  bool saveAsDialog();
+  void exportCompositeDialog();
+  void about();
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void createActions();
+  void createMenus();
+  void onDocumentChanged(const ChangeEvent& event);
+  void onFrame();
+  void updateTitle();
+  void showError(const QString& title, const QString& text);
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  void setLanguage(const QString& code);
+  bool maybeSave();
+
+  Document* document_;
+  RenderController* renderer_;
+  Viewport* viewport_;
+  SceneTreeDock* sceneDock_;
+  PropertiesDock* propertiesDock_;
+  QPointer<QProgressDialog> progress_;
+  std::unique_ptr<QTemporaryDir> exampleCopy_;  // the embedded example, unpacked
+  bool interactive_ = true;
+
+  QMenu* fileMenu_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QAction* openSceneAct_ = nullptr;
+  QAction* openPhotoAct_ = nullptr;
+  QAction* openExampleAct_ = nullptr;
+  QAction* saveAct_ = nullptr;
+  QAction* saveAsAct_ = nullptr;
+  QAction* exportAct_ = nullptr;
+  QAction* quitAct_ = nullptr;
+  QAction* undoAct_ = nullptr;
+  QAction* redoAct_ = nullptr;
+  QAction* zoomInAct_ = nullptr;
+  QAction* zoomOutAct_ = nullptr;
+  QAction* fitAct_ = nullptr;
+  QAction* beforeAct_ = nullptr;
+  QAction* aboutAct_ = nullptr;
+
+  QLabel* sppLabel_ = nullptr;
+  QLabel* errorLabel_ = nullptr;
+  QLabel* timeLabel_ = nullptr;
+};
+
+}  // namespace inlay::studio

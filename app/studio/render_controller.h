@@ -1,0 +1,63 @@
+// Keeps a RenderSession in step with the Document and holds what the viewport shows: the
+// newest composite and the photo (the "before" image).
+//
+// Threads: a RenderController lives on the GUI thread. It owns the RenderSession (whose render
+// thread calls the CompositeSink) and reacts to Document::changed: a new prepared scene ->
+// setScene, a moved object -> setObjectTransform (an instance update), a material -> setScene.
+// Each call returns a new scene version; frames of older versions are dropped by the sink and
+// again here. Images arrive by queued call; nothing here ever waits for the renderer.
+// Destruction stops the session (joins its thread) before the sink is destroyed.
+#pragma once
+
+#include "document.h"
+#include "frame_sink.h"
+
+#include <QImage>
+#include <QObject>
+
+#include <memory>
+
+namespace inlay::studio {
+
+class RenderController : public QObject {
+  Q_OBJECT
+
+ public:
+  explicit RenderController(Document* document, QObject* parent = nullptr);
+  ~RenderController() override;
+
+  // The newest composite of the current scene version (null until its first frame).
+  const QImage& compositeImage() const { return composite_.srgb8; }
+  // Its linear pixels (for export); null until the first frame.
+  std::shared_ptr<const ImageF> compositeLinear() const { return composite_.linear; }
+  // Statistics of compositeImage() (spp, error, seconds, version).
+  const CompositeImage& frameInfo() const { return composite_; }
+  bool hasFrame() const { return !composite_.srgb8.isNull(); }
+  // The photo as the composite's background, 8-bit sRGB with the scene's exposure; a quick
+  // preview decoded by Qt until the scene is prepared.
+  const QImage& photoImage() const { return photo_; }
+  // The scene version of the newest request to the renderer (0: none).
+  quint64 requestedVersion() const { return requestedVersion_; }
+  // True when the shown composite belongs to the newest request.
+  bool isCurrent() const { return hasFrame() && composite_.sceneVersion >= requestedVersion_; }
+
+ Q_SIGNALS:
+  // A new composite is in compositeImage(), or the images were cleared.
+  void frameUpdated();
+
+ private:
+  void onDocumentChanged(const ChangeEvent& event);
+  void takeFrame();
+  void startScene();
+  void request(uint64_t version);
+
+  Document* document_;
+  CompositeImage composite_;
+  QImage photo_;
+  quint64 requestedVersion_ = 0;
+  // Declared before session_: the session (and its thread) must go first.
+  std::unique_ptr<CompositeSink> sink_;
+  std::unique_ptr<RenderSession> session_;
+};
+
+}  // namespace inlay::studio
