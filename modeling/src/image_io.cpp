@@ -1,0 +1,454 @@
+// Image input and output through OpenImageIO (the only unit that includes it).
+#include "inlay/modeling/image_io.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace inlay {
+namespace {
+
+namespace fs = std::filesystem;
+namespace OIIO = OIIO_NAMESPACE;
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// A unique name beside `path` that keeps its extension (OpenImageIO picks the writer by it).
+fs::path tempPathBeside(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  const fs::path target(path);
+  std::ostringstream name;
+  name << '.' << target.stem().string() << ".inlay-tmp-" << ::getpid() << '-'
+       << std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000 << '-'
+       << counter.fetch_add(1) << target.extension().string();
+  return target.parent_path() / name.str();
+}
+
+// Renames `temp` over `path`; removes `temp` on failure.
+Status commitTemp(const fs::path& temp, const std::string& path) {
+  std::error_code ec;
+  fs::rename(temp, path, ec);
+  if (ec) {
+    fs::remove(temp, ec);
+    return Error{path, "", "cannot replace the file: " + ec.message()};
+  }
+  return {};
+}
+
+std::string oiioError(const std::string& fallback, const std::string& detail) {
+  std::string d = detail;
+  while (!d.empty() && (d.back() == '\n' || d.back() == ' ')) d.pop_back();
+  return d.empty() ? fallback : fallback + ": " + d;
+}
+
+// Source pixel of output pixel (u, v) for EXIF orientation `o` of a W x H stored image.
+inline void orientedSource(int o, int w, int h, int u, int v, int& x, int& y) {
+  switch (o) {
+    case 2: x = w - 1 - u; y = v; break;
+    case 3: x = w - 1 - u; y = h - 1 - v; break;
+    case 4: x = u; y = h - 1 - v; break;
+    case 5: x = v; y = u; break;
+    case 6: x = v; y = h - 1 - u; break;
+    case 7: x = w - 1 - v; y = h - 1 - u; break;
+    case 8: x = w - 1 - v; y = u; break;
+    default: x = u; y = v; break;
+  }
+}
+
+int channelIndex(const OIIO::ImageSpec& spec, const char* name, int fallback) {
+  for (int c = 0; c < spec.nchannels; ++c)
+    if (spec.channel_name(c) == name) return c;
+  return std::min(fallback, spec.nchannels - 1);
+}
+
+std::optional<double> positiveFloatAttr(const OIIO::ImageSpec& spec, const char* name) {
+  if (!spec.find_attribute(name)) return std::nullopt;
+  const double v = spec.get_float_attribute(name, 0.f);
+  if (!std::isfinite(v) || v <= 0) return std::nullopt;
+  return v;
+}
+
+ExifInfo readExif(const OIIO::ImageSpec& spec) {
+  ExifInfo e;
+  e.focalLengthMm = positiveFloatAttr(spec, "Exif:FocalLength");
+  if (spec.find_attribute("Exif:FocalLengthIn35mmFilm")) {
+    const int f35 = spec.get_int_attribute("Exif:FocalLengthIn35mmFilm", 0);
+    if (f35 > 0) e.focalLength35mm = f35;
+  }
+  e.focalPlaneXResolution = positiveFloatAttr(spec, "Exif:FocalPlaneXResolution");
+  if (spec.find_attribute("Exif:FocalPlaneResolutionUnit"))
+    e.focalPlaneResolutionUnit = spec.get_int_attribute("Exif:FocalPlaneResolutionUnit", 0);
+  e.orientation = spec.get_int_attribute("Orientation", 1);
+  if (e.orientation < 1 || e.orientation > 8) e.orientation = 1;
+  e.make = std::string(spec.get_string_attribute("Make"));
+  e.model = std::string(spec.get_string_attribute("Model"));
+  return e;
+}
+
+// Linear float (C = 1, 3 or 4) -> interleaved 8-bit sRGB with `outChannels` <= C channels
+// (grey stays grey, RGBA may drop its alpha for JPEG).
+std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels) {
+  std::vector<unsigned char> out(linear.pixelCount() * size_t(outChannels));
+  for (size_t i = 0; i < linear.pixelCount(); ++i) {
+    const float* p = &linear.data[i * size_t(linear.channels)];
+    for (int c = 0; c < outChannels; ++c) {
+      const float v = c < 3 ? linearToSrgb(p[linear.channels == 1 ? 0 : c])
+                            : std::clamp(p[c], 0.f, 1.f);  // alpha stays linear
+      out[i * size_t(outChannels) + size_t(c)] = (unsigned char)std::lround(v * 255.f);
+    }
+  }
+  return out;
+}
+
+Status checkImage(const std::string& path, const ImageF& img) {
+  if (img.width <= 0 || img.height <= 0 || img.empty())
+    return Error{path, "", "cannot write an empty image"};
+  if (img.channels != 1 && img.channels != 3 && img.channels != 4)
+    return Error{path, "", "cannot write an image with " + std::to_string(img.channels) +
+                               " channels (1, 3 or 4 expected)"};
+  if (img.data.size() != img.pixelCount() * size_t(img.channels))
+    return Error{path, "", "image buffer size does not match its dimensions"};
+  return {};
+}
+
+// Writes a temporary file beside `path`, reads it back completely (a short write shows up as a
+// decode error), then renames it over `path`.
+Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec,
+                            OIIO::TypeDesc bufType, const void* pixels) {
+  const fs::path temp = tempPathBeside(path);
+  std::error_code ec;
+  auto failWith = [&](const std::string& msg) {
+    fs::remove(temp, ec);
+    return Status(Error{path, "", msg});
+  };
+  {
+    auto out = OIIO::ImageOutput::create(temp.string());
+    if (!out) return failWith(oiioError("no writer for this file type", OIIO::geterror()));
+    if (!out->open(temp.string(), spec))
+      return failWith(oiioError("cannot create a temporary file beside it", out->geterror()));
+    const bool wrote = out->write_image(bufType, pixels);
+    const std::string writeErr = wrote ? "" : out->geterror();
+    if (!out->close() || !wrote)
+      return failWith(oiioError("write failed", wrote ? out->geterror() : writeErr));
+  }
+  {
+    auto in = OIIO::ImageInput::open(temp.string());
+    std::vector<float> check;
+    if (in) check.resize(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
+    if (!in || in->spec().width != spec.width || in->spec().height != spec.height ||
+        !in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, check.data()) ||
+        in->has_error())
+      return failWith("write failed: the written file does not read back (disk full?)");
+  }
+  return commitTemp(temp, path);
+}
+
+// Encodes `pixels` (interleaved; `spec.format` is the file's type, `bufType` the buffer's)
+// in memory, then writes the bytes through writeFileAtomically, whose every write is checked:
+// OpenImageIO's file writers do not all report a short write (a full disk left a truncated PNG
+// and returned success), so they never touch the target folder themselves.
+Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
+                       OIIO::TypeDesc bufType, const void* pixels) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) return Error{path, "", oiioError("no writer for this file type", OIIO::geterror())};
+  // TIFF seeks back to patch its directories, which OpenImageIO 2.4's in-memory proxy gets
+  // wrong (an unreadable file): write it beside the target and read it back instead.
+  if (!out->supports("ioproxy") || std::string(out->format_name()) == "tiff")
+    return writeViaVerifiedTemp(path, spec, bufType, pixels);
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  if (!out->set_ioproxy(&memory) || !out->open(path, spec))
+    return Error{path, "", oiioError("cannot encode the image", out->geterror())};
+  const bool wrote = out->write_image(bufType, pixels);
+  const std::string writeErr = wrote ? "" : out->geterror();
+  const bool closed = out->close();
+  if (!wrote || !closed)
+    return Error{path, "", oiioError("cannot encode the image", wrote ? out->geterror() : writeErr)};
+  out.reset();
+  return writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));
+}
+
+}  // namespace
+
+std::optional<double> ExifInfo::focalPx(int width, int height) const {
+  const double longSide = double(std::max(width, height));
+  if (longSide <= 0) return std::nullopt;
+  if (focalLength35mm && *focalLength35mm > 0) return *focalLength35mm / 36.0 * longSide;
+  if (focalLengthMm && focalPlaneXResolution && focalPlaneResolutionUnit) {
+    double mmPerUnit = 0;
+    switch (*focalPlaneResolutionUnit) {
+      case 2: mmPerUnit = 25.4; break;
+      case 3: mmPerUnit = 10.0; break;
+      case 4: mmPerUnit = 1.0; break;
+      default: return std::nullopt;
+    }
+    const double f = *focalLengthMm * (*focalPlaneXResolution / mmPerUnit);
+    if (std::isfinite(f) && f > 0) return f;
+  }
+  return std::nullopt;
+}
+
+Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limits) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return Error{path, "", "file not found"};
+  if (!fs::is_regular_file(path, ec)) return Error{path, "", "not a regular file"};
+  if (fs::file_size(path, ec) == 0) return Error{path, "", "empty file"};
+
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);  // colour as stored, not premultiplied
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) return Error{path, "", oiioError("cannot read the image", OIIO::geterror())};
+  const OIIO::ImageSpec spec = in->spec();  // header only: nothing decoded yet
+
+  // Decompression-bomb guard, from the header alone.
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
+    return Error{path, "", "invalid image dimensions"};
+  if (spec.width > limits.maxDimension || spec.height > limits.maxDimension ||
+      (long long)spec.width * (long long)spec.height > limits.maxPixels)
+    return Error{path, "",
+                 "image of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                     " pixels exceeds the limit (" + std::to_string(limits.maxPixels) +
+                     " pixels, " + std::to_string(limits.maxDimension) + " per side)"};
+  if (spec.nchannels < 1 || spec.nchannels > 64)
+    return Error{path, "", "unsupported channel count " + std::to_string(spec.nchannels)};
+
+  const std::string colorSpace = std::string(spec.get_string_attribute("jpeg:ColorSpace")) +
+                                 std::string(spec.get_string_attribute("tiff:ColorSpace")) +
+                                 std::string(spec.get_string_attribute("oiio:ColorSpace"));
+  bool cmyk = colorSpace.find("CMYK") != std::string::npos;
+  if (spec.nchannels >= 4 && spec.channel_name(0) == "C" && spec.channel_name(1) == "M")
+    cmyk = true;
+  if (cmyk)
+    return Error{path, "", "CMYK images are not supported; convert the photo to RGB"};
+
+  const std::string formatName = in->format_name();
+  const bool floatData = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                         spec.format.basetype == OIIO::TypeDesc::HALF ||
+                         spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+  const bool isLinear = formatName == "openexr" || formatName == "hdr" || floatData;
+
+  const int nch = spec.nchannels;
+  std::vector<float> raw;
+  try {
+    raw.resize(size_t(spec.width) * size_t(spec.height) * size_t(nch));
+  } catch (const std::bad_alloc&) {
+    return Error{path, "", "not enough memory for the image"};
+  }
+  if (!in->read_image(0, 0, 0, nch, OIIO::TypeDesc::FLOAT, raw.data()) || in->has_error())
+    return Error{path, "", oiioError("corrupt or truncated image", in->geterror())};
+  in->close();
+
+  LoadedImage result;
+  result.exif = readExif(spec);
+  result.wasSrgbEncoded = !isLinear;
+  result.sourceBitsPerChannel = int(spec.format.size()) * 8;
+
+  const int o = result.exif.orientation;
+  const bool swap = o >= 5;
+  const int W = spec.width, H = spec.height;
+  const int outW = swap ? H : W, outH = swap ? W : H;
+  int ci[3];
+  if (nch >= 3) {
+    ci[0] = channelIndex(spec, "R", 0);
+    ci[1] = channelIndex(spec, "G", 1);
+    ci[2] = channelIndex(spec, "B", 2);
+  } else {
+    ci[0] = ci[1] = ci[2] = 0;  // grey (and grey + alpha): alpha dropped
+  }
+  ImageF& img = result.linearRgb;
+  img = ImageF(outW, outH, 3);
+  for (int v = 0; v < outH; ++v) {
+    for (int u = 0; u < outW; ++u) {
+      int x, y;
+      orientedSource(o, W, H, u, v, x, y);
+      const float* s = &raw[(size_t(y) * size_t(W) + size_t(x)) * size_t(nch)];
+      float* d = img.pixel(u, v);
+      for (int c = 0; c < 3; ++c) {
+        float val = s[ci[c]];
+        if (!std::isfinite(val)) val = 0.f;
+        d[c] = isLinear ? std::max(val, 0.f) : srgbToLinear(val);
+      }
+    }
+  }
+  return result;
+}
+
+Status saveImage(const std::string& path, const ImageF& linear, const SaveOptions& options) {
+  if (Status s = checkImage(path, linear); !s) return s;
+  const std::string ext = lowerExtension(path);
+  if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tif" || ext == ".tiff") {
+    const bool jpeg = ext == ".jpg" || ext == ".jpeg";
+    int outC = linear.channels == 4 ? (jpeg ? 3 : 4) : (linear.channels == 1 ? 1 : 3);
+    const std::vector<unsigned char> px = toSrgb8(linear, outC);
+    OIIO::ImageSpec spec(linear.width, linear.height, outC, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    if (jpeg) spec.attribute("CompressionQuality", std::clamp(options.jpegQuality, 1, 100));
+    return writeAtomically(path, spec, OIIO::TypeDesc::UINT8, px.data());
+  }
+  if (ext == ".exr") {
+    OIIO::ImageSpec spec(linear.width, linear.height, linear.channels,
+                         options.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    if (linear.channels == 1) spec.channelnames = {"Y"};
+    spec.attribute("compression", "zip");
+    return writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, linear.data.data());
+  }
+  if (ext == ".hdr") {
+    std::vector<float> rgb(linear.pixelCount() * 3);
+    for (size_t i = 0; i < linear.pixelCount(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        const float v = linear.data[i * size_t(linear.channels) +
+                                    size_t(linear.channels == 1 ? 0 : c)];
+        rgb[i * 3 + size_t(c)] = std::isfinite(v) ? std::max(v, 0.f) : 0.f;
+      }
+    OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);
+    return writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, rgb.data());
+  }
+  return Error{path, "", "unknown image extension '" + ext +
+                             "' (expected .png, .jpg, .jpeg, .tif, .tiff, .exr or .hdr)"};
+}
+
+Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers, bool half) {
+  if (layers.empty()) return Error{path, "", "no layers to write"};
+  const ImageF* first = layers.front().image;
+  std::vector<std::string> names;
+  std::vector<std::pair<const ImageF*, int>> sources;  // (image, channel) per output channel
+  for (const NamedLayer& layer : layers) {
+    const std::string key = "layer '" + layer.name + "'";
+    if (!layer.image) return Error{path, key, "no image"};
+    if (layer.name.empty() || layer.name.find('.') != std::string::npos)
+      return Error{path, key, "layer names must be non-empty and contain no '.'"};
+    if (Status s = checkImage(path, *layer.image); !s) return s.error().underKey(key);
+    if (layer.image->width != first->width || layer.image->height != first->height)
+      return Error{path, key, "size differs from the first layer"};
+    static const char* rgba[] = {"R", "G", "B", "A"};
+    for (int c = 0; c < layer.image->channels; ++c) {
+      names.push_back(layer.name + "." + (layer.image->channels == 1 ? "Y" : rgba[c]));
+      sources.emplace_back(layer.image, c);
+    }
+  }
+  const size_t nch = names.size();
+  std::vector<float> buf(first->pixelCount() * nch);
+  for (size_t i = 0; i < first->pixelCount(); ++i)
+    for (size_t c = 0; c < nch; ++c)
+      buf[i * nch + c] =
+          sources[c].first->data[i * size_t(sources[c].first->channels) + size_t(sources[c].second)];
+  OIIO::ImageSpec spec(first->width, first->height, int(nch),
+                       half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+  spec.channelnames = names;
+  spec.alpha_channel = -1;
+  spec.attribute("compression", "zip");
+  return writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, buf.data());
+}
+
+Status writeFileAtomically(const std::string& path, const std::string& bytes) {
+  const fs::path temp = tempPathBeside(path);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0)
+    return Error{path, "", std::string("cannot create a temporary file beside it: ") +
+                               std::strerror(errno)};
+  size_t done = 0;
+  int err = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      err = n < 0 ? errno : EIO;
+      break;
+    }
+    done += size_t(n);
+  }
+  if (!err && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && !err) err = errno;
+  if (err) {
+    std::error_code ec;
+    fs::remove(temp, ec);
+    return Error{path, "", std::string("write failed: ") + std::strerror(err)};
+  }
+  return commitTemp(temp, path);
+}
+
+namespace {
+
+// Per destination index: the source indices and weights along one axis.
+struct AxisTaps {
+  std::vector<int> begin;  // offsets into idx/w, size n+1
+  std::vector<int> idx;
+  std::vector<float> w;
+};
+
+AxisTaps axisTaps(int srcN, int dstN) {
+  AxisTaps t;
+  t.begin.push_back(0);
+  const double scale = double(srcN) / double(dstN);
+  for (int i = 0; i < dstN; ++i) {
+    if (dstN < srcN) {  // area average over [i*scale, (i+1)*scale)
+      const double a = i * scale, b = (i + 1) * scale;
+      const int j0 = int(std::floor(a)), j1 = std::min(srcN - 1, int(std::ceil(b)) - 1);
+      for (int j = j0; j <= j1; ++j) {
+        const double overlap = std::min(b, double(j + 1)) - std::max(a, double(j));
+        if (overlap > 0) {
+          t.idx.push_back(j);
+          t.w.push_back(float(overlap / scale));
+        }
+      }
+    } else {  // bilinear between pixel centres, edges clamped
+      const double s = std::clamp((i + 0.5) * scale - 0.5, 0.0, double(srcN - 1));
+      const int j0 = int(std::floor(s)), j1 = std::min(j0 + 1, srcN - 1);
+      const double f = s - j0;
+      t.idx.push_back(j0);
+      t.w.push_back(float(1 - f));
+      if (j1 != j0) {
+        t.idx.push_back(j1);
+        t.w.push_back(float(f));
+      }
+    }
+    t.begin.push_back(int(t.idx.size()));
+  }
+  return t;
+}
+
+}  // namespace
+
+ImageF resizeImage(const ImageF& src, int width, int height) {
+  if (src.empty() || width <= 0 || height <= 0) return {};
+  if (width == src.width && height == src.height) return src;
+  const int C = src.channels;
+  const AxisTaps tx = axisTaps(src.width, width), ty = axisTaps(src.height, height);
+  ImageF tmp(width, src.height, C);  // horizontal pass
+  for (int y = 0; y < src.height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float* d = tmp.pixel(x, y);
+      for (int k = tx.begin[x]; k < tx.begin[x + 1]; ++k) {
+        const float* s = src.pixel(tx.idx[k], y);
+        for (int c = 0; c < C; ++c) d[c] += tx.w[k] * s[c];
+      }
+    }
+  ImageF dst(width, height, C);  // vertical pass
+  for (int y = 0; y < height; ++y)
+    for (int k = ty.begin[y]; k < ty.begin[y + 1]; ++k) {
+      const float wk = ty.w[k];
+      const float* srow = tmp.pixel(0, ty.idx[k]);
+      float* drow = dst.pixel(0, y);
+      for (size_t i = 0; i < size_t(width) * size_t(C); ++i) drow[i] += wk * srow[i];
+    }
+  return dst;
+}
+
+}  // namespace inlay
