@@ -33,7 +33,7 @@ struct PrepareResult;
 // What changed, so listeners can do only the work they need. The viewport ignores the details
 // and repaints everything from the document's state.
 struct ChangeEvent {
-  enum Kind : unsigned {
+  enum Kind {
     SceneReplaced = 1u << 0,    // a new SceneDoc (open / new from photo); nothing prepared yet
     PrepareStarted = 1u << 1,
     PrepareFinished = 1u << 2,  // state() is Ready or Failed (or Empty after a cancel)
