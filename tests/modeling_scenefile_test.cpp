@@ -1,0 +1,482 @@
+// The scene file: every key parsed and round-tripped, every bad input named by its key path.
+#include "inlay/modeling/scene_file.h"
+
+#include "test_support.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace inlay {
+namespace {
+
+namespace fs = std::filesystem;
+
+void writeText(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+}
+
+// A folder with a photo and a mesh the scene files below refer to.
+fs::path sceneDir(const std::string& name) {
+  const fs::path dir = test::tempDir("scene_" + name);
+  writeText(dir / "room.jpg", "not decoded by the scene reader");
+  writeText(dir / "models" / "chair.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  return dir;
+}
+
+const char* kFullScene = R"({
+  "format": "inlay-scene",
+  "version": 1,
+  "photo": "room.jpg",
+  "camera": {
+    "height_m": 1.5,
+    "focal_px": 620.25,
+    "principal_px": [256.0, 192.5],
+    "vanishing_points_px": [[10000000.0, 190.0], [256.0, -9000.5], [250.0, 180.0]]
+  },
+  "layout": { "back_wall_px": [[100, 50], [400, 52], [398, 300], [102, 298]] },
+  "lights": [
+    { "kind": "polygon_px", "points": [[200, 10], [300, 10], [300, 40], [200, 40]] },
+    { "kind": "rect_m", "corners": [[-1, 2.5, -3], [1, 2.5, -3], [1, 2.5, -2], [-1, 2.5, -2]],
+      "rgb": [5, 4.5, 4], "refine": false }
+  ],
+  "shafts": [
+    { "shaft_box_px": [10, 200, 120, 300], "source_box_px": [0, 20, 60, 150] },
+    { "shaft_box_px": [10, 200, 120, 300], "direction": [0.3, -0.8, 0.2] }
+  ],
+  "surfaces": [
+    { "kind": "extrusion", "outline_px": [[150, 220], [260, 220], [270, 260], [140, 260]],
+      "height_click_px": [150, 330] }
+  ],
+  "occluders": [
+    { "foreground_scribbles_px": [[[10, 10], [12, 14]], [[30, 30]]],
+      "background_scribbles_px": [[[50, 50], [60, 65], [70, 80]]] }
+  ],
+  "objects": [
+    { "mesh": "builtin:sphere", "base_px": [210.5, 250.25], "height_m": 0.25, "yaw_deg": 30,
+      "material": { "preset": "glossy", "albedo": [0.7, 0.1, 0.05], "roughness": 0.35 } },
+    { "mesh": "models/chair.obj", "base_px": [300, 280], "height_m": 0.9, "yaw_deg": -15.5,
+      "material": { "preset": "glass", "ior": 1.45 } },
+    { "mesh": "builtin:cube", "base_px": [100, 290],
+      "material": { "preset": "emissive", "rgb": [3, 2, 1] } }
+  ],
+  "render": { "spp": 64, "seconds": 12.5, "exposure": -0.5, "seed": 7 }
+})";
+
+void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
+  EXPECT_EQ(a.photo, b.photo);
+  EXPECT_EQ(a.photoResolved, b.photoResolved);
+  EXPECT_EQ(a.camera.heightM, b.camera.heightM);
+  EXPECT_EQ(a.camera.focalPx, b.camera.focalPx);
+  EXPECT_EQ(a.camera.principalPx.has_value(), b.camera.principalPx.has_value());
+  if (a.camera.principalPx && b.camera.principalPx)
+    EXPECT_EQ(*a.camera.principalPx, *b.camera.principalPx);
+  ASSERT_EQ(a.camera.vanishingPointsPx.has_value(), b.camera.vanishingPointsPx.has_value());
+  if (a.camera.vanishingPointsPx)
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ((*a.camera.vanishingPointsPx)[i], (*b.camera.vanishingPointsPx)[i]);
+  ASSERT_EQ(a.layout.backWallPx.has_value(), b.layout.backWallPx.has_value());
+  if (a.layout.backWallPx)
+    for (int i = 0; i < 4; ++i) EXPECT_EQ((*a.layout.backWallPx)[i], (*b.layout.backWallPx)[i]);
+  ASSERT_EQ(a.lights.size(), b.lights.size());
+  for (size_t i = 0; i < a.lights.size(); ++i) {
+    EXPECT_EQ(a.lights[i].kind, b.lights[i].kind);
+    EXPECT_EQ(a.lights[i].pointsPx, b.lights[i].pointsPx);
+    if (a.lights[i].kind == LightKeys::Kind::RectM)
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(a.lights[i].cornersM[k], b.lights[i].cornersM[k]);
+    EXPECT_EQ(a.lights[i].rgb.has_value(), b.lights[i].rgb.has_value());
+    if (a.lights[i].rgb && b.lights[i].rgb) EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb);
+    EXPECT_EQ(a.lights[i].refine, b.lights[i].refine);
+  }
+  ASSERT_EQ(a.shafts.size(), b.shafts.size());
+  for (size_t i = 0; i < a.shafts.size(); ++i) {
+    EXPECT_EQ(a.shafts[i].shaftBoxPx, b.shafts[i].shaftBoxPx);
+    EXPECT_EQ(a.shafts[i].sourceBoxPx, b.shafts[i].sourceBoxPx);
+    EXPECT_EQ(a.shafts[i].direction.has_value(), b.shafts[i].direction.has_value());
+    if (a.shafts[i].direction && b.shafts[i].direction)
+      EXPECT_EQ(*a.shafts[i].direction, *b.shafts[i].direction);
+  }
+  ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
+  for (size_t i = 0; i < a.surfaces.size(); ++i) {
+    EXPECT_EQ(a.surfaces[i].kind, b.surfaces[i].kind);
+    EXPECT_EQ(a.surfaces[i].outlinePx, b.surfaces[i].outlinePx);
+    EXPECT_EQ(a.surfaces[i].heightClickPx, b.surfaces[i].heightClickPx);
+  }
+  ASSERT_EQ(a.occluders.size(), b.occluders.size());
+  for (size_t i = 0; i < a.occluders.size(); ++i) {
+    EXPECT_EQ(a.occluders[i].foregroundScribblesPx, b.occluders[i].foregroundScribblesPx);
+    EXPECT_EQ(a.occluders[i].backgroundScribblesPx, b.occluders[i].backgroundScribblesPx);
+  }
+  ASSERT_EQ(a.objects.size(), b.objects.size());
+  for (size_t i = 0; i < a.objects.size(); ++i) {
+    const ObjectKeys &x = a.objects[i], &y = b.objects[i];
+    EXPECT_EQ(x.mesh, y.mesh);
+    EXPECT_EQ(x.meshResolved, y.meshResolved);
+    EXPECT_EQ(x.basePx, y.basePx);
+    EXPECT_EQ(x.heightM, y.heightM);
+    EXPECT_EQ(x.yawDeg, y.yawDeg);
+    EXPECT_EQ(x.material.preset, y.material.preset);
+    EXPECT_EQ(x.material.albedo, y.material.albedo);
+    EXPECT_EQ(x.material.roughness, y.material.roughness);
+    EXPECT_EQ(x.material.ior, y.material.ior);
+    EXPECT_EQ(x.material.rgb, y.material.rgb);
+  }
+  EXPECT_EQ(a.render.spp, b.render.spp);
+  EXPECT_EQ(a.render.seconds, b.render.seconds);
+  EXPECT_EQ(a.render.exposure, b.render.exposure);
+  EXPECT_EQ(a.render.seed, b.render.seed);
+}
+
+TEST(SceneFile, FullSceneParsesEveryKey) {
+  const fs::path dir = sceneDir("full");
+  writeText(dir / "scene.json", kFullScene);
+  auto r = loadSceneFile((dir / "scene.json").string());
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_TRUE(r->warnings.empty());
+  const SceneDoc& d = r->doc;
+  EXPECT_EQ(d.photo, "room.jpg");
+  EXPECT_EQ(fs::path(d.photoResolved), (dir / "room.jpg").lexically_normal());
+  EXPECT_EQ(d.camera.heightM, 1.5);
+  EXPECT_EQ(d.camera.focalPx, 620.25);
+  EXPECT_EQ(*d.camera.principalPx, Vec2(256.0, 192.5));
+  EXPECT_EQ((*d.camera.vanishingPointsPx)[0], Vec2(1e7, 190.0));  // far away: kept as given
+  EXPECT_EQ((*d.layout.backWallPx)[2], Vec2(398, 300));
+  ASSERT_EQ(d.lights.size(), 2u);
+  EXPECT_EQ(d.lights[0].kind, LightKeys::Kind::PolygonPx);
+  EXPECT_EQ(d.lights[0].pointsPx.size(), 4u);
+  EXPECT_TRUE(d.lights[0].refine);
+  EXPECT_FALSE(d.lights[0].rgb.has_value());
+  EXPECT_EQ(d.lights[1].kind, LightKeys::Kind::RectM);
+  EXPECT_EQ(d.lights[1].cornersM[3], Vec3(-1, 2.5, -2));
+  EXPECT_EQ(*d.lights[1].rgb, Vec3(5, 4.5, 4));
+  EXPECT_FALSE(d.lights[1].refine);
+  ASSERT_EQ(d.shafts.size(), 2u);
+  EXPECT_EQ(d.shafts[0].sourceBoxPx, (std::array<double, 4>{0, 20, 60, 150}));
+  EXPECT_FALSE(d.shafts[0].direction.has_value());
+  EXPECT_EQ(*d.shafts[1].direction, Vec3(0.3, -0.8, 0.2));
+  ASSERT_EQ(d.surfaces.size(), 1u);
+  EXPECT_EQ(d.surfaces[0].heightClickPx, Vec2(150, 330));
+  ASSERT_EQ(d.occluders.size(), 1u);
+  EXPECT_EQ(d.occluders[0].foregroundScribblesPx.size(), 2u);
+  EXPECT_EQ(d.occluders[0].backgroundScribblesPx[0].size(), 3u);
+  ASSERT_EQ(d.objects.size(), 3u);
+  EXPECT_EQ(d.objects[0].mesh, "builtin:sphere");
+  EXPECT_TRUE(d.objects[0].meshResolved.empty());
+  EXPECT_EQ(d.objects[0].material.preset, "glossy");
+  EXPECT_EQ(d.objects[0].material.roughness, 0.35);
+  EXPECT_EQ(d.objects[1].mesh, "models/chair.obj");
+  EXPECT_EQ(fs::path(d.objects[1].meshResolved), (dir / "models" / "chair.obj").lexically_normal());
+  EXPECT_TRUE(fs::path(d.objects[1].meshResolved).is_absolute());
+  EXPECT_EQ(d.objects[1].material.ior, 1.45);
+  EXPECT_EQ(d.objects[2].heightM, 0.5);  // default
+  EXPECT_EQ(d.objects[2].material.rgb, Vec3(3, 2, 1));
+  EXPECT_EQ(d.render.spp, 64);
+  EXPECT_EQ(d.render.seconds, 12.5);
+  EXPECT_EQ(d.render.exposure, -0.5);
+  EXPECT_EQ(d.render.seed, 7u);
+}
+
+TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
+  const fs::path dir = sceneDir("roundtrip");
+  writeText(dir / "scene.json", kFullScene);
+  auto first = loadSceneFile((dir / "scene.json").string());
+  ASSERT_TRUE(first.ok()) << first.error().message();
+  // Values that decimal text cannot hold exactly must survive too.
+  SceneDoc doc = first->doc;
+  doc.camera.focalPx = 1.0 / 3.0;
+  doc.objects[0].yawDeg = 0.1 + 0.2;
+  const fs::path saved = dir / "saved.json";
+  ASSERT_TRUE(saveSceneFile(saved.string(), doc).ok());
+  auto second = loadSceneFile(saved.string());
+  ASSERT_TRUE(second.ok()) << second.error().message();
+  EXPECT_TRUE(second->warnings.empty());
+  expectDocsEqual(doc, second->doc);
+  // And the text is stable.
+  EXPECT_EQ(sceneToJson(doc), sceneToJson(second->doc));
+  // Spec order: format, version, photo first; render last.
+  const std::string text = sceneToJson(doc);
+  EXPECT_LT(text.find("\"format\""), text.find("\"version\""));
+  EXPECT_LT(text.find("\"version\""), text.find("\"photo\""));
+  EXPECT_LT(text.find("\"photo\""), text.find("\"camera\""));
+  EXPECT_LT(text.find("\"objects\""), text.find("\"render\""));
+}
+
+TEST(SceneFile, MinimalSceneGetsDefaults) {
+  const fs::path dir = sceneDir("minimal");
+  auto r = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
+                          dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const SceneDoc& d = r->doc;
+  EXPECT_FALSE(d.camera.heightM.has_value());  // 1.6 is applied by the consumer
+  EXPECT_FALSE(d.camera.focalPx.has_value());
+  EXPECT_FALSE(d.camera.vanishingPointsPx.has_value());
+  EXPECT_FALSE(d.layout.backWallPx.has_value());
+  EXPECT_TRUE(d.lights.empty() && d.objects.empty() && d.shafts.empty());
+  EXPECT_EQ(d.render.spp, 256);
+  EXPECT_EQ(d.render.seed, 1u);
+  EXPECT_EQ(d.render.exposure, 0.0);
+  EXPECT_FALSE(d.render.seconds.has_value());
+  // Minimal round trip too.
+  auto again = parseSceneJson(sceneToJson(d), dir.string(), "scene.json");
+  ASSERT_TRUE(again.ok()) << again.error().message();
+  expectDocsEqual(d, again->doc);
+  // An absolute photo path is kept as it is.
+  const std::string abs = (dir / "room.jpg").string();
+  auto a = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": ")" + abs + R"("})",
+                          "/nonexistent", "scene.json");
+  ASSERT_TRUE(a.ok()) << a.error().message();
+  EXPECT_EQ(a->doc.photoResolved, abs);
+}
+
+TEST(SceneFile, UnknownKeysAreWarningsNotErrors) {
+  const fs::path dir = sceneDir("unknown");
+  auto r = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg",
+      "foo": 3, "camera": {"bar": true},
+      "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "colour": "red"}]})",
+                          dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const auto& w = r->warnings;
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_NE(std::find(w.begin(), w.end(), "scene.json: unknown key 'foo' ignored"), w.end());
+  EXPECT_NE(std::find(w.begin(), w.end(), "scene.json: unknown key 'camera.bar' ignored"), w.end());
+  EXPECT_NE(std::find(w.begin(), w.end(), "scene.json: unknown key 'objects[0].colour' ignored"),
+            w.end());
+}
+
+struct BadCase {
+  const char* name;
+  std::string body;        // keys after format/version/photo (with a leading comma)
+  std::string key;         // expected Error::key
+  std::string reasonPart;  // expected substring of Error::reason
+};
+
+std::string withHeader(const std::string& body) {
+  return R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg")" + body + "}";
+}
+const std::string kPolygon = R"("kind": "polygon_px", "points": [[0,0],[10,0],[10,10],[0,10]])";
+const std::string kSphere = R"({"mesh": "builtin:sphere", "base_px": [1, 2]})";
+
+class SceneFileBadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(SceneFileBadInput, NamesTheKeyAndTheReason) {
+  const BadCase& c = GetParam();
+  const fs::path dir = sceneDir("bad");
+  auto r = parseSceneJson(withHeader(c.body), dir.string(), "scene.json");
+  ASSERT_FALSE(r.ok()) << c.name;
+  EXPECT_EQ(r.error().file, "scene.json") << c.name;
+  EXPECT_EQ(r.error().key, c.key) << c.name << ": " << r.error().message();
+  EXPECT_NE(r.error().reason.find(c.reasonPart), std::string::npos)
+      << c.name << ": " << r.error().message();
+  EXPECT_NE(r.error().message().find(c.key), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    AllKeys, SceneFileBadInput,
+    ::testing::Values(
+        BadCase{"camera_nan_string", R"(, "camera": {"focal_px": "NaN"})", "camera.focal_px",
+                "expected a number"},
+        BadCase{"camera_overflow", R"(, "camera": {"height_m": 1e999})", "camera.height_m",
+                "out of range"},
+        BadCase{"camera_height_zero", R"(, "camera": {"height_m": 0})", "camera.height_m", "> 0"},
+        BadCase{"vp_count", R"(, "camera": {"vanishing_points_px": [[1,2],[3,4]]})",
+                "camera.vanishing_points_px", "expected 3 elements"},
+        BadCase{"vp_type", R"(, "camera": {"vanishing_points_px": [[1,2],[3,4],[5,null]]})",
+                "camera.vanishing_points_px[2][1]", "expected a number, got null"},
+        BadCase{"principal_type", R"(, "camera": {"principal_px": "centre"})",
+                "camera.principal_px", "expected an array"},
+        BadCase{"back_wall", R"(, "layout": {"back_wall_px": [[1,2],[3,4],[5,6]]})",
+                "layout.back_wall_px", "expected 4 elements"},
+        BadCase{"lights_not_array", R"(, "lights": {})", "lights", "expected an array"},
+        BadCase{"light_kind", R"(, "lights": [{"kind": "spot"}])", "lights[0].kind",
+                "unknown light kind"},
+        BadCase{"light_bowtie",
+                R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[10,10],[10,0],[0,10]]}])",
+                "lights[0].points", "self-intersecting"},
+        BadCase{"light_zero_area",
+                R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[5,5],[10,10]]}])",
+                "lights[0].points", "zero area"},
+        BadCase{"light_two_points",
+                R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[5,5]]}])",
+                "lights[0].points", "at least 3 points"},
+        BadCase{"light_second_bad",
+                ", \"lights\": [{" + kPolygon + R"(}, {"kind": "polygon_px", "points": [[0,0],[1,1],[1,"x"]]}])",
+                "lights[1].points[2][1]", "expected a number"},
+        BadCase{"rect_corner_size",
+                R"(, "lights": [{"kind": "rect_m", "corners": [[0,0,0],[1,0],[1,0,1],[0,0,1]]}])",
+                "lights[0].corners[1]", "expected 3 elements"},
+        BadCase{"rect_three_corners",
+                R"(, "lights": [{"kind": "rect_m", "corners": [[0,0,0],[1,0,0],[1,0,1]]}])",
+                "lights[0].corners", "expected 4 elements"},
+        BadCase{"rect_degenerate",
+                R"(, "lights": [{"kind": "rect_m", "corners": [[0,0,0],[0,0,0],[0,0,0],[0,0,0]]}])",
+                "lights[0].corners", "zero area"},
+        BadCase{"light_refine_type", ", \"lights\": [{" + kPolygon + R"(, "refine": "yes"}])",
+                "lights[0].refine", "expected true or false"},
+        BadCase{"light_rgb_negative", ", \"lights\": [{" + kPolygon + R"(, "rgb": [1, -1, 1]}])",
+                "lights[0].rgb[1]", ">= 0"},
+        BadCase{"shaft_no_direction", R"(, "shafts": [{"shaft_box_px": [0, 0, 10, 10]}])",
+                "shafts[0].direction", "required"},
+        BadCase{"shaft_box_order",
+                R"(, "shafts": [{"shaft_box_px": [10, 0, 0, 10], "source_box_px": [0,0,1,1]}])",
+                "shafts[0].shaft_box_px", "x0 < x1"},
+        BadCase{"shaft_zero_direction", R"(, "shafts": [{"direction": [0, 0, 0]}])",
+                "shafts[0].direction", "non-zero"},
+        BadCase{"surface_bowtie",
+                R"(, "surfaces": [{"kind": "extrusion", "outline_px": [[0,0],[10,10],[10,0],[0,10]], "height_click_px": [0, 20]}])",
+                "surfaces[0].outline_px", "self-intersecting"},
+        BadCase{"surface_fold_back",
+                R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[5,0],[5,5]], "height_click_px": [0, 20]}])",
+                "surfaces[0].outline_px", "self-intersecting"},
+        BadCase{"surface_kind",
+                R"(, "surfaces": [{"kind": "stairs", "outline_px": [[0,0],[1,0],[1,1]], "height_click_px": [0, 2]}])",
+                "surfaces[0].kind", "unknown surface kind"},
+        BadCase{"surface_no_click",
+                R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[10,10]]}])",
+                "surfaces[0].height_click_px", "missing"},
+        BadCase{"occluder_scribble",
+                R"(, "occluders": [{"foreground_scribbles_px": [[]]}])",
+                "occluders[0].foreground_scribbles_px[0]", "at least 1"},
+        BadCase{"height_zero", ", \"objects\": [" + kSphere + R"(, {"mesh": "builtin:cube", "base_px": [1, 2], "height_m": 0}])",
+                "objects[1].height_m", "> 0"},
+        BadCase{"height_negative", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -2}])",
+                "objects[0].height_m", "> 0"},
+        BadCase{"height_overflow", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -1e999}])",
+                "objects[0].height_m", "out of range"},
+        BadCase{"mesh_missing_file", R"(, "objects": [{"mesh": "models/nope.obj", "base_px": [1, 2]}])",
+                "objects[0].mesh", "file not found"},
+        BadCase{"mesh_unknown_builtin", R"(, "objects": [{"mesh": "builtin:torus", "base_px": [1, 2]}])",
+                "objects[0].mesh", "unknown builtin"},
+        BadCase{"mesh_format", R"(, "objects": [{"mesh": "models/chair.stl", "base_px": [1, 2]}])",
+                "objects[0].mesh", "unsupported mesh format"},
+        BadCase{"mesh_absent", R"(, "objects": [{"base_px": [1, 2]}])", "objects[0].mesh",
+                "missing"},
+        BadCase{"base_missing", R"(, "objects": [{"mesh": "builtin:cube"}])", "objects[0].base_px",
+                "missing"},
+        BadCase{"preset", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "velvet"}}])",
+                "objects[0].material.preset", "unknown material preset"},
+        BadCase{"albedo_range", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"albedo": [0.5, 1.5, 0.5]}}])",
+                "objects[0].material.albedo[1]", "[0, 1]"},
+        BadCase{"ior_range", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "glass", "ior": 0.5}}])",
+                "objects[0].material.ior", "[1, 5]"},
+        BadCase{"spp_negative", R"(, "render": {"spp": -4})", "render.spp", ">= 1"},
+        BadCase{"spp_fraction", R"(, "render": {"spp": 2.5})", "render.spp", "integer"},
+        BadCase{"seconds_negative", R"(, "render": {"seconds": -1})", "render.seconds", "> 0"},
+        BadCase{"seed_string", R"(, "render": {"seed": "abc"})", "render.seed", "integer"},
+        BadCase{"exposure_bool", R"(, "render": {"exposure": true})", "render.exposure",
+                "expected a number, got a boolean"},
+        BadCase{"invalid_json", R"(, "render": {"spp": 4,}})", "render", "invalid JSON"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+
+TEST(SceneFile, HeaderErrors) {
+  const fs::path dir = sceneDir("header");
+  auto parse = [&](const std::string& text) {
+    return parseSceneJson(text, dir.string(), "scene.json");
+  };
+  auto e = parse(R"({"format": "inlay-scene", "version": 1})");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().key, "photo");
+  e = parse(R"({"format": "inlay-scene", "version": 1, "photo": "missing.jpg"})");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().key, "photo");
+  EXPECT_NE(e.error().reason.find("not found"), std::string::npos);
+  e = parse(R"({"format": "other", "version": 1, "photo": "room.jpg"})");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().key, "format");
+  e = parse(R"({"version": 1, "photo": "room.jpg"})");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().key, "format");
+  e = parse(R"({"format": "inlay-scene", "version": 2, "photo": "room.jpg"})");
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().key, "version");
+  EXPECT_NE(e.error().reason.find("unsupported version 2"), std::string::npos);
+  e = parse(R"([1, 2, 3])");
+  ASSERT_FALSE(e.ok());
+  EXPECT_NE(e.error().reason.find("expected an object"), std::string::npos);
+  e = parse("");
+  ASSERT_FALSE(e.ok());
+  e = parse("{\"format\": \"inlay-scene\", \"version\": 1, \"photo\": \"room.jpg\"");  // cut short
+  ASSERT_FALSE(e.ok());
+  EXPECT_NE(e.error().reason.find("invalid JSON"), std::string::npos);
+  auto missing = loadSceneFile((dir / "nope.json").string());
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.error().file, (dir / "nope.json").string());
+}
+
+TEST(SceneFile, LimitsAreEnforcedWithoutDeepRecursion) {
+  const fs::path dir = sceneDir("limits");
+  // 200,000 nested arrays under an unknown key: refused by depth, quickly, without recursion.
+  const std::string deep = withHeader(", \"junk\": " + std::string(200000, '[') +
+                                      std::string(200000, ']'));
+  const auto t0 = std::chrono::steady_clock::now();
+  auto r = parseSceneJson(deep, dir.string(), "scene.json");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().reason.find("nesting"), std::string::npos) << r.error().message();
+  EXPECT_EQ(r.error().key.rfind("junk", 0), 0u) << r.error().key;
+
+  SceneLimits small;
+  small.maxObjects = 2;
+  r = parseSceneJson(withHeader(", \"objects\": [" + kSphere + "," + kSphere + "," + kSphere + "]"),
+                     dir.string(), "scene.json", small);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().key, "objects");
+  EXPECT_NE(r.error().reason.find("limit"), std::string::npos);
+
+  SceneLimits tiny;
+  tiny.maxFileBytes = 20;
+  r = parseSceneJson(withHeader(""), dir.string(), "scene.json", tiny);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().reason.find("exceeds"), std::string::npos);
+  writeText(dir / "big.json", withHeader(""));
+  r = loadSceneFile((dir / "big.json").string(), tiny);
+  ASSERT_FALSE(r.ok());
+
+  SceneLimits fewPoints;
+  fewPoints.maxPointsPerPolyline = 3;
+  r = parseSceneJson(withHeader(", \"lights\": [{" + kPolygon + "}]"), dir.string(), "scene.json",
+                     fewPoints);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().key, "lights[0].points");
+}
+
+TEST(SceneFile, RelativePathsResolveAgainstTheSceneFolder) {
+  const fs::path dir = sceneDir("relative");
+  writeText(dir / "sub" / "scene.json",
+            withHeader(R"(, "objects": [{"mesh": "../models/chair.obj", "base_px": [1, 2]}])"));
+  // The photo is one level up from the scene: "room.jpg" alone must not be found.
+  auto r = loadSceneFile((dir / "sub" / "scene.json").string());
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().key, "photo");
+  writeText(dir / "sub" / "scene.json",
+            R"({"format": "inlay-scene", "version": 1, "photo": "../room.jpg",
+                "objects": [{"mesh": "../models/chair.obj", "base_px": [1, 2]}]})");
+  r = loadSceneFile((dir / "sub" / "scene.json").string());
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(fs::path(r->doc.objects[0].meshResolved), (dir / "models" / "chair.obj").lexically_normal());
+  EXPECT_EQ(r->doc.objects[0].mesh, "../models/chair.obj");  // written back as given
+  EXPECT_NE(sceneToJson(r->doc).find("\"../models/chair.obj\""), std::string::npos);
+}
+
+TEST(SceneFile, OutlineChecksAcceptValidShapes) {
+  const fs::path dir = sceneDir("shapes");
+  // A concave L-shaped table top and a clockwise triangle are fine.
+  auto r = parseSceneJson(
+      withHeader(R"(, "surfaces": [{"outline_px": [[0,0],[20,0],[20,10],[10,10],[10,20],[0,20]], "height_click_px": [0, 30]}],
+                    "lights": [{"kind": "polygon_px", "points": [[0,0],[0,10],[10,0]]}])"),
+      dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r->doc.surfaces[0].outlinePx.size(), 6u);
+  // Touching itself at a vertex is a self-intersection.
+  r = parseSceneJson(
+      withHeader(R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[10,0],[5,5],[10,10],[0,10],[5,5]]}])"),
+      dir.string(), "scene.json");
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().key.rfind("lights[0].points", 0), 0u);
+}
+
+}  // namespace
+}  // namespace inlay
