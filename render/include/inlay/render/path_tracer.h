@@ -64,6 +64,8 @@ class PathTracer {
   // The whole frame, parallel over tiles with `threads` threads (0 = all cores).
   bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
               int threads = 0, const CancelToken* cancel = nullptr) const;
+  // Samples dropped so far because a value was not finite (they count as zero in both renders).
+  uint64_t nonFiniteSamples() const;
 
  private:
   struct Impl;

@@ -1,0 +1,44 @@
+// Debevec's differential composite and exposure (see composite.h).
+#include "inlay/render/composite.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace inlay {
+
+ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObjects,
+                             const ImageF& withoutObjects, const ImageF& mask) {
+  const int w = photoLinear.width, h = photoLinear.height, ch = photoLinear.channels;
+  INLAY_CHECK(withObjects.width == w && withObjects.height == h && withObjects.channels == 3);
+  INLAY_CHECK(withoutObjects.width == w && withoutObjects.height == h && withoutObjects.channels == 3);
+  INLAY_CHECK(mask.empty() || (mask.width == w && mask.height == h && mask.channels >= 1));
+  ImageF out = photoLinear;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float m = mask.empty() ? 0.f : mask.at(x, y, 0);
+      const float* io = withObjects.pixel(x, y);
+      const float* in = withoutObjects.pixel(x, y);
+      float* o = out.pixel(x, y);
+      for (int c = 0; c < std::min(ch, 3); ++c) {  // further channels (alpha) kept
+        const int rc = c;
+        const float photo = o[c];
+        if (m == 0.f && io[rc] == in[rc]) {
+          // Untouched: the photo bit for bit (only a non-finite photo value is replaced).
+          o[c] = std::isfinite(photo) ? photo : 0.f;
+          continue;
+        }
+        const double mm = std::isfinite(m) ? std::clamp(double(m), 0.0, 1.0) : 0.0;
+        const double v = mm * io[rc] + (1.0 - mm) * (double(photo) + double(io[rc]) - double(in[rc]));
+        o[c] = std::isfinite(v) && v > 0 ? float(v) : 0.f;
+      }
+    }
+  return out;
+}
+
+void applyExposure(ImageF& linear, double stops) {
+  const float scale = float(std::exp2(stops));
+  if (scale == 1.f) return;
+  for (float& v : linear.data) v *= scale;
+}
+
+}  // namespace inlay

@@ -1,0 +1,75 @@
+// Internal: small RAII and conversion helpers around the Embree 3 C API.
+#pragma once
+
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/mesh.h"
+
+#include <embree3/rtcore.h>
+#include <pmmintrin.h>  // _MM_SET_DENORMALS_ZERO_MODE
+#include <xmmintrin.h>
+
+#include <array>
+#include <limits>
+
+namespace inlay::detail {
+
+// Sets flush-to-zero and denormals-are-zero for the scope (Embree's advice for tracing
+// threads) and restores the caller's MXCSR, so TBB workers shared with other libraries are
+// left as they were.
+class DenormalsOffScope {
+ public:
+  DenormalsOffScope() : saved_(_mm_getcsr()) {
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+  }
+  ~DenormalsOffScope() { _mm_setcsr(saved_); }
+  DenormalsOffScope(const DenormalsOffScope&) = delete;
+  DenormalsOffScope& operator=(const DenormalsOffScope&) = delete;
+
+ private:
+  unsigned int saved_;
+};
+
+// A new Embree device; aborts (a bug or a broken install) when Embree cannot start.
+RTCDevice newDevice();
+
+// Adds triangles (positions in the scene's frame) as geometry `geomId` of `scene`.
+// Skips empty meshes. Returns false when the mesh had nothing to add.
+bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const TriangleMesh& mesh);
+// Adds a two-triangle quad as geometry `geomId`.
+void attachQuad(RTCDevice device, RTCScene scene, unsigned geomId, const std::array<Vec3, 4>& c);
+
+inline RTCRayHit makeRayHit(const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
+  RTCRayHit rh;
+  rh.ray.org_x = float(origin.x());
+  rh.ray.org_y = float(origin.y());
+  rh.ray.org_z = float(origin.z());
+  rh.ray.dir_x = float(dir.x());
+  rh.ray.dir_y = float(dir.y());
+  rh.ray.dir_z = float(dir.z());
+  rh.ray.tnear = float(tNear);
+  rh.ray.tfar = tFar >= 3e38 ? std::numeric_limits<float>::infinity() : float(tFar);
+  rh.ray.time = 0;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l) rh.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+// True when the ray segment (tNear, tFar) is blocked in `scene`.
+inline bool occluded(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
+  RTCRayHit rh = makeRayHit(origin, dir, tNear, tFar);
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  rtcOccluded1(scene, &ctx, &rh.ray);
+  return rh.ray.tfar < 0;  // Embree sets tfar = -inf on a hit
+}
+
+// Offset for a ray leaving a surface point: enough to clear float round-off of the hit point
+// (Embree intersects in float) at room scale, small against any modelled gap.
+inline double rayEpsilon(const Vec3& p) { return 1e-4 * (1.0 + p.cwiseAbs().maxCoeff() * 0.1); }
+
+}  // namespace inlay::detail

@@ -1,0 +1,606 @@
+// The differential Embree path tracer (see path_tracer.h for the contract).
+//
+// Scenes: `withScene` holds the room surfaces (geomID = surface id), the emitter quads of the
+// area lights (geomID = surfaceCount + light index) and one instance per inserted object
+// (geomID = surfaceCount + lightCount + object index), each instancing the object's own BVH.
+// `withoutScene` holds the same room surfaces and emitters only. Moving an object rewrites its
+// instance transform and recommits the top-level scene; the object's BVH is kept.
+//
+// Differential paths: tracePath() runs in Shared mode while the with-object path has met no
+// object: every contribution is added to both sums with the same float value, so the sums
+// stay bit-identical. A shadow ray blocked in the with-scene is retried in the without-scene
+// (only then do the contributions differ). When the with-path hits an object, the same ray is
+// traced on in the without-scene (WithoutOnly) and the with-path continues (WithOnly); both use
+// the random dimensions of their depth, so they stay correlated.
+#include "embree_util.h"
+#include "sampling.h"
+
+#include "inlay/render/path_tracer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace inlay {
+
+using namespace detail;
+
+namespace {
+
+constexpr int kTileSize = 16;
+constexpr uint32_t kDimsPerVertex = 8;
+constexpr uint32_t kFirstVertexDim = 2;  // dimensions 0, 1: the pixel jitter
+
+enum class Mode { Shared, WithOnly, WithoutOnly };
+
+struct ObjectData {
+  RTCScene scene = nullptr;      // the object's own BVH (object space)
+  RTCGeometry instance = nullptr;  // its instance in withScene (retained)
+  std::shared_ptr<const TriangleMesh> mesh;
+  Mat4 worldFromObject = Mat4::Identity();
+  Mat3 normalFromObject = Mat3::Identity();  // inverse transpose of the linear part
+  bool mirrored = false;         // negative determinant: winding flips
+  bool shadingNormals = false;   // per-vertex normals usable
+  Material material;
+};
+
+struct LightData {
+  std::array<Vec3, 4> emitter;  // corners of the emitter quad (offset from the light)
+  Vec3 normal;
+  double area = 0;
+  Vec3 radiance;
+  double selectProb = 0;
+};
+
+struct Hit {
+  enum class Kind { None, Room, Light, Object } kind = Kind::None;
+  int index = -1;  // surface id, light index or object index
+  double t = 0;
+  Vec3 point;
+  Vec3 geometricNormal;  // unit, as the mesh winds it (outward for objects), world space
+  Vec3 shadingNormal;    // unit, world space; equals geometricNormal without vertex normals
+};
+
+struct BsdfSample {
+  Vec3 dir;
+  Vec3 weight;        // f cos / pdf
+  double pdf = 0;     // solid angle; 0 for specular
+  bool specular = false;
+  bool valid = false;
+};
+
+double powerHeuristic(double a, double b) {
+  const double a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
+}
+
+Vec3 reflect(const Vec3& wo, const Vec3& n) { return 2.0 * wo.dot(n) * n - wo; }
+
+// Lambertian, or the dielectric-coated glossy model: f = F(cos_o) * DG / (4 cos_i cos_o) +
+// (1 - F(cos_o)) * albedo / pi, where the GGX lobe without Fresnel has directional albedo <= 1,
+// so the total never exceeds F + (1 - F) * albedo <= 1. Not reciprocal (F of the outgoing
+// direction only); a unidirectional tracer does not need reciprocity.
+struct SurfaceBsdf {
+  Material::Kind kind = Material::Kind::Diffuse;
+  Vec3 albedo{0.5, 0.5, 0.5};
+  double alpha = 0.1;
+  double ior = 1.5;
+
+  bool nonSpecular() const {
+    return kind == Material::Kind::Diffuse || kind == Material::Kind::Glossy;
+  }
+  double coatFresnel(double cosO) const {
+    double cosT = 0;
+    return fresnelDielectric(cosO, ior, &cosT);
+  }
+  // f * cos(wi) and the sampling pdf; directions local to the shading frame (+z normal).
+  Vec3 eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
+    *pdf = 0;
+    if (wo.z() <= 0 || wi.z() <= 0) return Vec3::Zero();
+    if (kind == Material::Kind::Diffuse) {
+      *pdf = wi.z() / kPi;
+      return albedo * (wi.z() / kPi);
+    }
+    const double f = coatFresnel(wo.z());
+    Vec3 h = wo + wi;
+    const double hn = h.norm();
+    if (!(hn > 0)) return Vec3::Zero();
+    h /= hn;
+    const double d = ggxD(h, alpha);
+    const double spec = d * ggxG1(wo, alpha) * ggxG1(wi, alpha) / (4.0 * wo.z());  // * cos_i / cos_i
+    *pdf = f * d * h.z() / (4.0 * std::max(1e-12, wo.dot(h))) + (1.0 - f) * wi.z() / kPi;
+    return Vec3::Constant(f * spec) + (1.0 - f) * albedo * (wi.z() / kPi);
+  }
+  BsdfSample sample(const Vec3& wo, double uLobe, double u1, double u2) const {
+    BsdfSample s;
+    if (wo.z() <= 0) return s;
+    Vec3 wi;
+    if (kind == Material::Kind::Glossy && uLobe < coatFresnel(wo.z())) {
+      const Vec3 h = sampleGgxHalfVector(alpha, u1, u2);
+      wi = reflect(wo, h);
+    } else {
+      wi = sampleCosineHemisphere(u1, u2);
+    }
+    if (wi.z() <= 0) return s;
+    const Vec3 fcos = eval(wo, wi, &s.pdf);
+    if (!(s.pdf > 0)) return s;
+    s.dir = wi;
+    s.weight = fcos / s.pdf;
+    s.valid = true;
+    return s;
+  }
+};
+
+}  // namespace
+
+struct PathTracer::Impl {
+  RenderScene scene;
+  TracerOptions options;
+  RTCDevice device = nullptr;
+  RTCScene withScene = nullptr;
+  RTCScene withoutScene = nullptr;
+  unsigned surfaceCount = 0;
+  std::vector<LightData> lights;
+  std::vector<ObjectData> objects;
+  std::vector<double> lightCdf;
+  mutable std::atomic<uint64_t> nonFiniteSamples{0};
+
+  ~Impl() {
+    for (auto& o : objects) {
+      if (o.instance) rtcReleaseGeometry(o.instance);
+      if (o.scene) rtcReleaseScene(o.scene);
+    }
+    if (withScene) rtcReleaseScene(withScene);
+    if (withoutScene) rtcReleaseScene(withoutScene);
+    if (device) rtcReleaseDevice(device);
+  }
+
+  unsigned objectGeomId(size_t i) const { return surfaceCount + unsigned(lights.size()) + unsigned(i); }
+
+  void setTransform(ObjectData& o, const Mat4& worldFromObject) {
+    o.worldFromObject = worldFromObject;
+    const Mat3 linear = worldFromObject.topLeftCorner<3, 3>();
+    const double det = linear.determinant();
+    o.mirrored = det < 0;
+    o.shadingNormals = o.mesh && o.mesh->normals.size() == o.mesh->positions.size() &&
+                       std::isfinite(det) && std::abs(det) > 1e-300;
+    o.normalFromObject = o.shadingNormals ? Mat3(linear.inverse().transpose()) : Mat3::Identity();
+    if (!o.instance) return;
+    float m[12];
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 3; ++r) m[c * 3 + r] = float(worldFromObject(r, c));
+    rtcSetGeometryTransform(o.instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+    rtcCommitGeometry(o.instance);
+  }
+
+  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear) const {
+    RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    rtcIntersect1(scene, &ctx, &rh);
+    Hit hit;
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    hit.t = rh.ray.tfar;
+    hit.point = origin + hit.t * dir;
+    const unsigned inst = rh.hit.instID[0];
+    const unsigned id = inst != RTC_INVALID_GEOMETRY_ID ? inst : rh.hit.geomID;
+    if (id < surfaceCount) {
+      hit.kind = Hit::Kind::Room;
+      hit.index = int(id);
+      const TriangleMesh& m = scene_surface(id);
+      const auto& tri = m.triangles[rh.hit.primID];
+      const Vec3 a = m.positions[tri[0]].cast<double>(), b = m.positions[tri[1]].cast<double>(),
+                 c = m.positions[tri[2]].cast<double>();
+      hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
+      hit.shadingNormal = hit.geometricNormal;
+    } else if (id < surfaceCount + lights.size()) {
+      hit.kind = Hit::Kind::Light;
+      hit.index = int(id - surfaceCount);
+      hit.geometricNormal = lights[size_t(hit.index)].normal;
+      hit.shadingNormal = hit.geometricNormal;
+    } else {
+      hit.kind = Hit::Kind::Object;
+      hit.index = int(id - surfaceCount - lights.size());
+      const ObjectData& o = objects[size_t(hit.index)];
+      const TriangleMesh& m = *o.mesh;
+      const auto& tri = m.triangles[rh.hit.primID];
+      const Mat4& w = o.worldFromObject;
+      auto toWorld = [&](const Vec3f& p) -> Vec3 {
+        return w.topLeftCorner<3, 3>() * p.cast<double>() + w.topRightCorner<3, 1>();
+      };
+      const Vec3 a = toWorld(m.positions[tri[0]]), b = toWorld(m.positions[tri[1]]),
+                 c = toWorld(m.positions[tri[2]]);
+      Vec3 ng = safeNormal((b - a).cross(c - a), dir);
+      if (o.mirrored) ng = -ng;
+      hit.geometricNormal = ng;
+      hit.shadingNormal = ng;
+      if (o.shadingNormals) {
+        const double u = rh.hit.u, v = rh.hit.v;
+        const Vec3 nObj = (1.0 - u - v) * m.normals[tri[0]].cast<double>() +
+                          u * m.normals[tri[1]].cast<double>() + v * m.normals[tri[2]].cast<double>();
+        const Vec3 ns = o.normalFromObject * nObj;
+        if (ns.squaredNorm() > 0 && ns.allFinite()) {
+          hit.shadingNormal = ns.normalized();
+          // Vertex normals define outward when the winding disagrees.
+          if (hit.shadingNormal.dot(ng) < 0) hit.geometricNormal = -ng;
+        }
+      }
+    }
+    return hit;
+  }
+
+  const TriangleMesh& scene_surface(unsigned id) const { return scene.room.surfaces[id].meshWorld; }
+
+  static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
+    const double len = n.norm();
+    return len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3(-dir);
+  }
+
+  // Solid-angle pdf with which NEE would have picked the point `t` along a ray on light i.
+  double lightPdf(int i, double t, double cosLight) const {
+    const LightData& l = lights[size_t(i)];
+    if (!(cosLight > 0) || !(l.area > 0)) return 0;
+    return l.selectProb * t * t / (l.area * cosLight);
+  }
+
+  Vec3 clampIndirect(const Vec3& c, bool indirect) const {
+    if (!indirect || options.clampRadiance <= 0) return c;
+    const double m = maxComponent(c);
+    return m > options.clampRadiance ? Vec3(c * (options.clampRadiance / m)) : c;
+  }
+
+  struct Sums {
+    Vec3 with = Vec3::Zero();
+    Vec3 without = Vec3::Zero();
+  };
+
+  // Where a path stands: the next ray and what the vertices so far left it with.
+  struct PathState {
+    Vec3 origin, dir;
+    double tNear = 0;
+    Vec3 throughput = Vec3::Ones();
+    int depth = 0;             // index of the vertex the ray will find (0: the camera ray's hit)
+    bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
+    double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
+  };
+
+  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
+                 bool* firstHitIsObject) const;
+};
+
+void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
+                                 bool* firstHitIsObject) const {
+  auto add = [&](const Vec3& c) {
+    if (mode != Mode::WithoutOnly) out.with += c;
+    if (mode != Mode::WithOnly) out.without += c;
+  };
+  Vec3& throughput = st.throughput;
+  Vec3& origin = st.origin;
+  Vec3& dir = st.dir;
+  for (;; ++st.depth) {
+    const int depth = st.depth;
+    const Hit hit = intersect(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir, st.tNear);
+    if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
+      if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
+      // The paths part here: the same ray goes on through the room alone, from the same state
+      // and with the same depth-indexed random dimensions; this path goes on with the objects.
+      tracePath(Mode::WithoutOnly, st, rng, out, nullptr);
+      mode = Mode::WithOnly;
+    }
+    if (hit.kind == Hit::Kind::None) return;
+    const bool indirectHit = depth >= 2;
+    if (hit.kind == Hit::Kind::Light) {
+      const LightData& l = lights[size_t(hit.index)];
+      const double cosL = -l.normal.dot(dir);
+      if (cosL <= 0) return;  // the black back of the light
+      const double w =
+          st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, hit.t, cosL));
+      if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
+      return;
+    }
+    SurfaceBsdf bsdf;
+    if (hit.kind == Hit::Kind::Room) {
+      bsdf.kind = Material::Kind::Diffuse;
+      bsdf.albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
+    } else {
+      const Material& m = objects[size_t(hit.index)].material;
+      if (m.kind == Material::Kind::Emissive) {
+        // Emissive objects are not sampled by NEE: every hit counts in full (both sides).
+        add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission)), indirectHit));
+        return;
+      }
+      bsdf.kind = m.kind;
+      bsdf.albedo = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
+      bsdf.alpha = std::max(1e-4, m.roughness * m.roughness);
+      bsdf.ior = m.ior > 1e-3 && std::isfinite(m.ior) ? m.ior : 1.5;
+    }
+    if (depth >= options.maxDepth) return;
+
+    const Vec3 wo = -dir;
+    const Vec3 ng = hit.geometricNormal;
+    const bool frontSide = wo.dot(ng) >= 0;
+    const Vec3 ngFacing = frontSide ? ng : Vec3(-ng);
+    Vec3 ns = hit.shadingNormal;
+    if (ns.dot(ngFacing) < 0) ns = -ns;
+    const double eps = rayEpsilon(hit.point);
+    const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
+
+    if (bsdf.nonSpecular()) {
+      const Frame frame(ns);
+      const Vec3 woLocal = frame.toLocal(wo);
+      // Next-event estimation: one light by power, one point uniformly on its emitter quad.
+      if (!lights.empty() && lightCdf.back() > 0) {
+        const double uPick = rng.get(dim + 0) * lightCdf.back();
+        const size_t li = std::min(lights.size() - 1, size_t(std::upper_bound(lightCdf.begin(),
+                                                                                  lightCdf.end(), uPick) -
+                                                                 lightCdf.begin()));
+        const LightData& l = lights[li];
+        const Vec3 y = sampleQuadUniform(l.emitter, rng.get(dim + 1), rng.get(dim + 2));
+        Vec3 w = y - hit.point;
+        const double d2 = w.squaredNorm();
+        const double d = std::sqrt(d2);
+        if (d > 0) w /= d;
+        const double cosL = -l.normal.dot(w);
+        if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0 && l.selectProb > 0) {
+          double pdfBsdf = 0;
+          const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
+          if (fcos.maxCoeff() > 0) {
+            const double pdfLight = l.selectProb * d2 / (l.area * cosL);
+            const Vec3 c = clampIndirect(
+                Vec3(throughput.cwiseProduct(fcos).cwiseProduct(l.radiance) *
+                     (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                depth >= 1);
+            // The shadow ray runs from the offset origin to the sampled point itself, stopping
+            // just short of the emitter (which would otherwise block its own light).
+            const Vec3 o = hit.point + eps * ngFacing;
+            Vec3 ws = y - o;
+            const double ds = ws.norm();
+            ws /= ds;
+            const double tFar = ds * (1.0 - 1e-4);
+            if (mode == Mode::Shared) {
+              if (!occluded(withScene, o, ws, 0, tFar))
+                add(c);
+              else if (!occluded(withoutScene, o, ws, 0, tFar))
+                out.without += c;  // only an object blocks it
+            } else if (!occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
+              add(c);
+            }
+          }
+        }
+      }
+      const BsdfSample s = bsdf.sample(woLocal, rng.get(dim + 3), rng.get(dim + 4), rng.get(dim + 5));
+      if (!s.valid) return;
+      dir = frame.toWorld(s.dir).normalized();
+      if (dir.dot(ngFacing) <= 0) return;  // shading normal sent it below the surface
+      throughput = throughput.cwiseProduct(s.weight);
+      st.lastSpecular = false;
+      st.lastPdf = s.pdf;
+      origin = hit.point + eps * ngFacing;
+    } else if (bsdf.kind == Material::Kind::Mirror) {
+      dir = reflect(wo, ns).normalized();
+      if (dir.dot(ngFacing) <= 0) dir = reflect(wo, ngFacing).normalized();
+      throughput = throughput.cwiseProduct(bsdf.albedo);
+      st.lastSpecular = true;
+      st.lastPdf = 0;
+      origin = hit.point + eps * ngFacing;
+    } else {  // Glass: smooth dielectric, clear (no absorption)
+      // Entering when the ray comes from the outward side.
+      const bool entering = frontSide;
+      const double eta = entering ? bsdf.ior : 1.0 / bsdf.ior;
+      Vec3 n = ns;  // faces the incoming side
+      double cosI = wo.dot(n);
+      if (cosI <= 0) n = ngFacing, cosI = wo.dot(n);
+      double cosT = 0;
+      const double f = fresnelDielectric(cosI, eta, &cosT);
+      if (rng.get(dim + 3) < f) {
+        dir = reflect(wo, n).normalized();
+        origin = hit.point + eps * ngFacing;
+        if (dir.dot(ngFacing) <= 0) return;
+      } else {
+        dir = (-wo / eta + (cosI / eta - cosT) * n).normalized();
+        origin = hit.point - eps * ngFacing;
+        if (dir.dot(ngFacing) >= 0) return;
+      }
+      st.lastSpecular = true;
+      st.lastPdf = 0;
+    }
+    st.tNear = 0;
+
+    if (depth + 1 >= options.russianRouletteDepth) {
+      const double q = std::min(0.95, maxComponent(throughput));
+      if (!(q > 0) || rng.get(dim + 6) >= q) return;
+      throughput /= q;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+DifferentialBuffers::DifferentialBuffers(int w, int h)
+    : width(w),
+      height(h),
+      sumWith(w, h, 3),
+      sumWithout(w, h, 3),
+      sumMask(w, h, 1),
+      sumDiffSq(w, h, 1),
+      samples(size_t(w) * size_t(h), 0) {}
+
+void DifferentialBuffers::clear() {
+  std::fill(sumWith.data.begin(), sumWith.data.end(), 0.f);
+  std::fill(sumWithout.data.begin(), sumWithout.data.end(), 0.f);
+  std::fill(sumMask.data.begin(), sumMask.data.end(), 0.f);
+  std::fill(sumDiffSq.data.begin(), sumDiffSq.data.end(), 0.f);
+  std::fill(samples.begin(), samples.end(), 0);
+}
+
+namespace {
+ImageF meanOf(const ImageF& sum, const std::vector<int>& samples) {
+  ImageF out(sum.width, sum.height, sum.channels);
+  for (size_t i = 0; i < sum.pixelCount(); ++i) {
+    if (samples[i] <= 0) continue;
+    const float inv = 1.f / float(samples[i]);
+    for (int c = 0; c < sum.channels; ++c)
+      out.data[i * sum.channels + c] = sum.data[i * sum.channels + c] * inv;
+  }
+  return out;
+}
+}  // namespace
+
+ImageF DifferentialBuffers::meanWith() const { return meanOf(sumWith, samples); }
+ImageF DifferentialBuffers::meanWithout() const { return meanOf(sumWithout, samples); }
+ImageF DifferentialBuffers::meanMask() const { return meanOf(sumMask, samples); }
+
+// ---------------------------------------------------------------------------------------------
+
+PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& d = *impl_;
+  d.scene = scene;
+  d.options = options;
+  d.device = newDevice();
+  d.withScene = rtcNewScene(d.device);
+  d.withoutScene = rtcNewScene(d.device);
+  d.surfaceCount = unsigned(scene.room.surfaces.size());
+  for (unsigned i = 0; i < d.surfaceCount; ++i) {
+    attachTriangles(d.device, d.withScene, i, scene.room.surfaces[i].meshWorld);
+    attachTriangles(d.device, d.withoutScene, i, scene.room.surfaces[i].meshWorld);
+  }
+  double cumulative = 0;
+  for (size_t i = 0; i < scene.lights.size(); ++i) {
+    const AreaLight& light = scene.lights[i];
+    LightData l;
+    l.emitter = emitterCorners(light);
+    l.normal = light.normal();
+    l.area = light.area();
+    l.radiance = light.radiance.allFinite() ? Vec3(light.radiance.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+    const bool valid = l.normal.allFinite() && l.area > 0 && std::isfinite(l.area);
+    if (!valid) l.area = 0, l.normal = Vec3(0, -1, 0);
+    // Pick lights for NEE by power (area x mean radiance).
+    const double power = valid ? l.area * meanComponent(l.radiance) : 0.0;
+    cumulative += std::isfinite(power) ? power : 0.0;
+    d.lightCdf.push_back(cumulative);
+    d.lights.push_back(l);
+    const unsigned geomId = d.surfaceCount + unsigned(i);
+    if (valid) {
+      attachQuad(d.device, d.withScene, geomId, l.emitter);
+      attachQuad(d.device, d.withoutScene, geomId, l.emitter);
+    }
+  }
+  for (size_t i = 0; i < d.lights.size(); ++i) {
+    const double before = i == 0 ? 0.0 : d.lightCdf[i - 1];
+    d.lights[i].selectProb = cumulative > 0 ? (d.lightCdf[i] - before) / cumulative : 0.0;
+  }
+  d.objects.resize(scene.objects.size());
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const InsertedObject& src = scene.objects[i];
+    ObjectData& o = d.objects[i];
+    o.mesh = src.meshObject;
+    o.material = src.material;
+    if (o.mesh && !o.mesh->empty()) {
+      o.scene = rtcNewScene(d.device);
+      rtcSetSceneBuildQuality(o.scene, RTC_BUILD_QUALITY_HIGH);
+      if (attachTriangles(d.device, o.scene, 0, *o.mesh)) {
+        rtcCommitScene(o.scene);
+        o.instance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(o.instance, o.scene);
+      }
+    }
+    d.setTransform(o, src.worldFromObject);
+    if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
+  }
+  rtcCommitScene(d.withScene);
+  rtcCommitScene(d.withoutScene);
+}
+
+PathTracer::~PathTracer() = default;
+
+const RenderScene& PathTracer::scene() const { return impl_->scene; }
+
+uint64_t PathTracer::nonFiniteSamples() const { return impl_->nonFiniteSamples.load(); }
+
+void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
+  Impl& d = *impl_;
+  if (index >= d.objects.size()) return;
+  d.scene.objects[index].worldFromObject = worldFromObject;
+  d.setTransform(d.objects[index], worldFromObject);
+  rtcCommitScene(d.withScene);
+}
+
+bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                            int firstSample, int count, uint32_t seed,
+                            const CancelToken* cancel) const {
+  const Impl& d = *impl_;
+  INLAY_CHECK(buffers.width > 0 && buffers.height > 0 &&
+              buffers.samples.size() == size_t(buffers.width) * buffers.height);
+  x0 = std::max(0, x0), y0 = std::max(0, y0);
+  x1 = std::min(buffers.width, x1), y1 = std::min(buffers.height, y1);
+  const Camera& cam = d.scene.camera;
+  if (cam.widthPx <= 0 || cam.heightPx <= 0) return true;
+  // Buffers may be a different size from the camera's pixel frame: scale into it.
+  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  const Vec3 eye = cam.centreWorld();
+  DenormalsOffScope ftz;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      if (cancel && cancel->shouldStop()) return false;
+      Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
+      double sumMask = 0, sumDiffSq = 0;
+      for (int k = 0; k < count; ++k) {
+        const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
+        const Vec2 px((x + rng.get(0)) * sx, (y + rng.get(1)) * sy);
+        Impl::PathState st;
+        st.origin = eye;
+        st.dir = cam.directionThroughPixel(px);
+        Impl::Sums sums;
+        bool objectFirst = false;
+        d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
+        if (!sums.with.allFinite() || !sums.without.allFinite()) {
+          d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
+          continue;  // dropped: counts as a sample of zero in both renders
+        }
+        sumW += sums.with;
+        sumWo += sums.without;
+        sumMask += objectFirst ? 1.0 : 0.0;
+        sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
+      }
+      float* w = buffers.sumWith.pixel(x, y);
+      float* wo = buffers.sumWithout.pixel(x, y);
+      for (int c = 0; c < 3; ++c) {
+        w[c] += float(sumW[c]);
+        wo[c] += float(sumWo[c]);
+      }
+      buffers.sumMask.at(x, y) += float(sumMask);
+      buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
+      buffers.samples[size_t(y) * buffers.width + x] += count;
+    }
+  return true;
+}
+
+bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
+                        int threads, const CancelToken* cancel) const {
+  const int tilesX = (buffers.width + kTileSize - 1) / kTileSize;
+  const int tilesY = (buffers.height + kTileSize - 1) / kTileSize;
+  std::atomic<bool> stopped{false};
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int t = r.begin(); t != r.end(); ++t) {
+        if (stopped.load(std::memory_order_relaxed) || (cancel && cancel->shouldStop())) {
+          stopped = true;
+          return;
+        }
+        const int tx = t % tilesX, ty = t / tilesX;
+        if (!renderRect(buffers, tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize,
+                        (ty + 1) * kTileSize, firstSample, count, seed, cancel))
+          stopped = true;
+      }
+    });
+  });
+  return !stopped.load();
+}
+
+}  // namespace inlay

@@ -1,0 +1,132 @@
+// RoomTracer: Embree queries on the empty room for the lighting stage, and the projected albedo
+// lookup that the path tracer uses for room surfaces.
+#include "embree_util.h"
+#include "sampling.h"
+
+#include "inlay/render/path_tracer.h"
+#include "inlay/render/scene.h"
+
+#include <cmath>
+
+namespace inlay {
+
+using namespace detail;
+
+struct RoomTracer::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<TriangleMesh> meshes;  // per surface id, world space (for normals)
+
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+RoomTracer::RoomTracer(const SceneGeometry& room) : impl_(std::make_unique<Impl>()) {
+  impl_->device = newDevice();
+  impl_->scene = rtcNewScene(impl_->device);
+  for (size_t i = 0; i < room.surfaces.size(); ++i) {
+    impl_->meshes.push_back(room.surfaces[i].meshWorld);
+    attachTriangles(impl_->device, impl_->scene, unsigned(i), room.surfaces[i].meshWorld);
+  }
+  rtcCommitScene(impl_->scene);
+}
+
+RoomTracer::~RoomTracer() = default;
+
+std::optional<SurfaceHit> RoomTracer::intersect(const Ray& ray, double tMin) const {
+  DenormalsOffScope ftz;
+  RTCRayHit rh = makeRayHit(ray.origin, ray.direction, tMin, 3.4e38);
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  rtcIntersect1(impl_->scene, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  SurfaceHit hit;
+  hit.surfaceId = int(rh.hit.geomID);
+  hit.t = rh.ray.tfar;
+  hit.pointWorld = ray.at(hit.t);
+  const TriangleMesh& m = impl_->meshes[rh.hit.geomID];
+  const auto& tri = m.triangles[rh.hit.primID];
+  const Vec3 a = m.positions[tri[0]].cast<double>(), b = m.positions[tri[1]].cast<double>(),
+             c = m.positions[tri[2]].cast<double>();
+  Vec3 n = (b - a).cross(c - a);
+  n = n.squaredNorm() > 0 ? n.normalized() : Vec3(-ray.direction);
+  hit.normalWorld = n.dot(ray.direction) > 0 ? Vec3(-n) : n;
+  return hit;
+}
+
+bool RoomTracer::visible(const Vec3& a, const Vec3& b) const {
+  const Vec3 d = b - a;
+  const double len = d.norm();
+  if (!(len > 0)) return true;
+  const double eps = std::min(rayEpsilon(a), 0.25 * len);
+  DenormalsOffScope ftz;
+  return !occluded(impl_->scene, a, d / len, eps, len - std::min(rayEpsilon(b), 0.25 * len));
+}
+
+double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3& p, const Vec3& n,
+                                             int samples, uint32_t seed) const {
+  const Vec3 nl = light.normal();
+  const double area = light.area();
+  if (samples <= 0 || !(area > 0) || !nl.allFinite()) return 0;
+  const std::array<Vec3, 4> corners = emitterCorners(light);
+  if ((p - corners[0]).dot(nl) <= 0) return 0;  // behind the light
+  const int nx = std::max(1, int(std::sqrt(double(samples))));
+  const int ny = std::max(1, samples / nx);
+  const uint32_t key = pcgHash(seed ^ 0x5bd1e995u);
+  DenormalsOffScope ftz;
+  double sum = 0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const uint32_t h = pcgHash(key + pcgHash(uint32_t(j * nx + i)));
+      const double ju = double(h & 0xFFFF) / 65536.0, jv = double(h >> 16) / 65536.0;
+      const Vec3 y = sampleQuadUniform(corners, (i + ju) / nx, (j + jv) / ny);
+      Vec3 w = y - p;
+      const double d2 = w.squaredNorm();
+      if (!(d2 > 0)) continue;
+      const double d = std::sqrt(d2);
+      w /= d;
+      const double cosR = n.dot(w), cosL = -nl.dot(w);
+      if (cosR <= 0 || cosL <= 0) continue;
+      const double eps = std::min(rayEpsilon(p), 0.25 * d);
+      if (occluded(impl_->scene, p, w, eps, d * (1.0 - 1e-5))) continue;
+      sum += cosR * cosL / d2;
+    }
+  // E / pi = (1/pi) * integral L cosR cosL / d^2 dA with L = 1, estimated with pdf 1/area.
+  return sum * area / (double(nx) * ny) / kPi;
+}
+
+Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {
+  const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean.size();
+  // No mean for this id (the host gave none): a neutral grey rather than black or white.
+  const Vec3 fallback = haveMean ? surfaceMean[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
+  const int w = albedo.width, h = albedo.height;
+  if (albedo.empty() || albedo.channels < 1 || firstSurfacePerPixel.size() != size_t(w) * h ||
+      camera.widthPx <= 0 || camera.heightPx <= 0)
+    return fallback;
+  const auto px = camera.project(pointWorld);
+  if (!px) return fallback;
+  // The albedo image may differ in size from the camera's pixel frame: scale.
+  const double x = px->x() * double(w) / camera.widthPx, y = px->y() * double(h) / camera.heightPx;
+  if (!(x >= 0 && y >= 0 && x < w && y < h)) return fallback;
+  const int ix = std::min(w - 1, int(x)), iy = std::min(h - 1, int(y));
+  if (firstSurfacePerPixel[size_t(iy) * w + ix] != surfaceId) return fallback;
+  return albedo.rgb(ix, iy);
+}
+
+void ProjectedAlbedo::computeFirstSurfaces(const SceneGeometry& geometry) {
+  const int w = albedo.empty() ? camera.widthPx : albedo.width;
+  const int h = albedo.empty() ? camera.heightPx : albedo.height;
+  firstSurfacePerPixel.assign(size_t(std::max(0, w)) * std::max(0, h), -1);
+  if (w <= 0 || h <= 0 || camera.widthPx <= 0 || camera.heightPx <= 0) return;
+  RoomTracer tracer(geometry);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Vec2 px((x + 0.5) * camera.widthPx / w, (y + 0.5) * camera.heightPx / h);
+      const auto hit = tracer.intersect(camera.rayThroughPixel(px), 1e-6);
+      if (hit) firstSurfacePerPixel[size_t(y) * w + x] = hit->surfaceId;
+    }
+}
+
+}  // namespace inlay

@@ -1,0 +1,301 @@
+// RenderSession: one long-lived render thread with the states wait / render / end, a delayed
+// reset (edits bump the version and cancel; the thread applies them between waves, once the
+// wave's tiles have stopped), and the pure schedule.
+//
+// Lock order: only Impl::mutex, never held while rendering or while calling the sink.
+#include "inlay/render/session.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+namespace inlay {
+
+std::vector<RenderWork> makeRenderSchedule(int targetSpp, int startDivider, int maxWave) {
+  std::vector<RenderWork> work;
+  for (int d = startDivider; d > 1; d /= 2) work.push_back({0, 1, d});
+  maxWave = std::max(1, maxWave);
+  int done = 0;
+  while (done < targetSpp) {
+    // 1, 1, 2, 4, ...: each wave doubles the samples so far, up to maxWave.
+    const int n = std::min({std::max(1, done), maxWave, targetSpp - done});
+    work.push_back({done, n, 1});
+    done += n;
+  }
+  return work;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Slope of the sRGB encoding at linear value v: the error a small linear error becomes on
+// screen. 12.92 on the linear toe; above 1 the slope at 1 (displays clip, so this bounds it).
+double srgbSlope(double v) {
+  if (!(v > 0.0031308)) return 12.92;
+  v = std::min(v, 1.0);
+  return 1.055 / 2.4 * std::pow(v, 1.0 / 2.4 - 1.0);
+}
+
+// Estimated RMSE, in sRGB [0,1], of the composite over the pixels where with != without.
+// Per pixel: the variance of the mean of the per-sample difference D = with - without (the
+// photo is fixed, so the composite's noise is D's, ignoring the mask's), from the running sums
+// (sumDiffSq is the second moment of D averaged over RGB; unbiased with n >= 2, the raw
+// second moment with n = 1), mapped to sRGB by the slope at the pixel's mean with-object value
+// (the composite's value where the render matches the photo).
+double estimateError(const DifferentialBuffers& b) {
+  double sum = 0;
+  size_t count = 0;
+  for (int y = 0; y < b.height; ++y)
+    for (int x = 0; x < b.width; ++x) {
+      const int n = b.samples[size_t(y) * b.width + x];
+      if (n <= 0) continue;
+      const float* w = b.sumWith.pixel(x, y);
+      const float* wo = b.sumWithout.pixel(x, y);
+      const double m2 = b.sumDiffSq.at(x, y) / n;
+      if (w[0] == wo[0] && w[1] == wo[1] && w[2] == wo[2] && m2 == 0) continue;
+      double meanSq = 0, meanWith = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double md = (double(w[c]) - wo[c]) / n;
+        meanSq += md * md / 3.0;
+        meanWith += w[c] / (3.0 * n);
+      }
+      const double var = n >= 2 ? std::max(0.0, m2 - meanSq) * n / (n - 1.0) : m2;
+      const double s = srgbSlope(meanWith);
+      sum += s * s * var / n;
+      ++count;
+    }
+  return count ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+}  // namespace
+
+struct RenderSession::Impl {
+  FrameSink* sink = nullptr;
+  mutable std::mutex mutex;
+  std::condition_variable wake;    // the render thread waits on it
+  std::condition_variable doneCv;  // waitUntilDone waits on it
+  SessionOptions options;
+  std::shared_ptr<const RenderScene> scene;  // as last set (transforms: see `moves`)
+  std::vector<std::pair<size_t, Mat4>> movesSinceScene;  // applied after every rebuild
+  std::vector<std::pair<size_t, Mat4>> pendingMoves;     // not yet given to the tracer
+  bool rebuild = false;
+  uint64_t version = 0;
+  uint64_t doneVersion = 0;  // last version finished (target, time limit or cancel())
+  bool working = false;
+  bool stop = false;
+  CancelToken token;  // cancel and the per-version time limit, polled per pixel
+  std::thread thread;
+
+  void run();
+  // Renders version v; returns when done, out of time or cancelled.
+  void renderVersion(uint64_t v, const SessionOptions& opt, const PathTracer& tracer);
+  void publish(uint64_t v, std::shared_ptr<RenderFrame> frame) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (version != v) return;  // stale: a newer version is on its way
+    }
+    if (sink) sink->onFrame(std::move(frame));
+  }
+};
+
+void RenderSession::Impl::run() {
+  std::unique_ptr<PathTracer> tracer;
+  for (;;) {
+    std::unique_lock<std::mutex> lock(mutex);
+    wake.wait(lock, [&] { return stop || (scene && version != doneVersion); });
+    if (stop) return;
+    const uint64_t v = version;
+    const bool rebuildNow = rebuild || !tracer;
+    rebuild = false;
+    std::vector<std::pair<size_t, Mat4>> moves;
+    if (rebuildNow)
+      moves = movesSinceScene;
+    else
+      moves = pendingMoves;
+    pendingMoves.clear();
+    const std::shared_ptr<const RenderScene> sceneNow = scene;
+    const SessionOptions opt = options;
+    token.reset();
+    token.setDeadlineFromNow(opt.seconds);
+    working = true;
+    lock.unlock();
+
+    // The safe point: no wave is running, so the tracer may change.
+    if (rebuildNow) tracer = std::make_unique<PathTracer>(*sceneNow, opt.tracer);
+    for (const auto& [index, m] : moves) tracer->setObjectTransform(index, m);
+    renderVersion(v, opt, *tracer);
+
+    lock.lock();
+    working = false;
+    if (version == v) doneVersion = v;
+    doneCv.notify_all();
+  }
+}
+
+void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
+                                        const PathTracer& tracer) {
+  const auto start = Clock::now();
+  const Camera& cam = tracer.scene().camera;
+  const int w = cam.widthPx, h = cam.heightPx;
+  if (w <= 0 || h <= 0) return;
+  auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  DifferentialBuffers full(w, h);
+  DifferentialBuffers preview;
+  int spp = 0;
+  for (const RenderWork& work : makeRenderSchedule(opt.targetSpp, opt.startDivider)) {
+    if (token.shouldStop()) break;
+    if (work.resolutionDivider > 1) {
+      // Coarse preview: only the centre pixel of each d x d cell, shown nearest-upsampled.
+      const int d = work.resolutionDivider;
+      const int cw = (w + d - 1) / d, ch = (h + d - 1) / d;
+      if (preview.width != w) preview = DifferentialBuffers(w, h);
+      preview.clear();
+      auto centre = [&](int c, int size, int limit) { return std::min(limit - 1, c * d + size / 2); };
+      std::atomic<bool> stopped{false};
+      tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, ch), [&](const tbb::blocked_range<int>& r) {
+          for (int cy = r.begin(); cy != r.end() && !stopped; ++cy)
+            for (int cx = 0; cx < cw; ++cx) {
+              const int px = centre(cx, d, w), py = centre(cy, d, h);
+              if (!tracer.renderRect(preview, px, py, px + 1, py + 1, work.firstSample,
+                                     work.sampleCount, opt.seed ^ 0x9E3779B9u, &token)) {
+                stopped = true;
+                break;
+              }
+            }
+        });
+      });
+      if (stopped) break;
+      auto frame = std::make_shared<RenderFrame>();
+      frame->sceneVersion = v;
+      frame->width = w, frame->height = h;
+      frame->spp = 0;
+      frame->resolutionDivider = d;
+      const ImageF mw = preview.meanWith(), mwo = preview.meanWithout(), mm = preview.meanMask();
+      frame->withObjects = ImageF(w, h, 3);
+      frame->withoutObjects = ImageF(w, h, 3);
+      frame->mask = ImageF(w, h, 1);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const int sx = centre(x / d, d, w), sy = centre(y / d, d, h);
+          frame->withObjects.setRgb(x, y, mw.rgb(sx, sy));
+          frame->withoutObjects.setRgb(x, y, mwo.rgb(sx, sy));
+          frame->mask.at(x, y) = mm.at(sx, sy);
+        }
+      frame->estimatedError = estimateError(preview);
+      frame->seconds = seconds();
+      publish(v, std::move(frame));
+      continue;
+    }
+    const bool complete = tracer.render(full, work.firstSample, work.sampleCount, opt.seed,
+                                        opt.threads, &token);
+    if (complete) spp += work.sampleCount;
+    const bool outOfTime = !complete && !token.cancelled();
+    if (!complete && !outOfTime) return;  // cancelled: an edit or cancel(); publish nothing
+    auto frame = std::make_shared<RenderFrame>();
+    frame->sceneVersion = v;
+    frame->width = w, frame->height = h;
+    frame->spp = spp;
+    frame->resolutionDivider = 1;
+    frame->withObjects = full.meanWith();
+    frame->withoutObjects = full.meanWithout();
+    frame->mask = full.meanMask();
+    frame->estimatedError = estimateError(full);
+    frame->final = outOfTime || spp >= opt.targetSpp;
+    frame->seconds = seconds();
+    publish(v, std::move(frame));
+    if (outOfTime) return;
+  }
+}
+
+RenderSession::RenderSession(FrameSink* sink, const SessionOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->sink = sink;
+  impl_->options = options;
+  impl_->thread = std::thread([this] { impl_->run(); });
+}
+
+RenderSession::~RenderSession() {
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    impl_->stop = true;
+    impl_->token.cancel();
+  }
+  impl_->wake.notify_all();
+  impl_->thread.join();
+}
+
+uint64_t RenderSession::setScene(const RenderScene& scene) {
+  auto copy = std::make_shared<const RenderScene>(scene);  // the copy outside the lock
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->scene = std::move(copy);
+  impl_->movesSinceScene.clear();
+  impl_->pendingMoves.clear();
+  impl_->rebuild = true;
+  impl_->token.cancel();
+  const uint64_t v = ++impl_->version;
+  impl_->wake.notify_all();
+  return v;
+}
+
+uint64_t RenderSession::setObjectTransform(size_t index, const Mat4& worldFromObject) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->movesSinceScene.emplace_back(index, worldFromObject);
+  impl_->pendingMoves.emplace_back(index, worldFromObject);
+  impl_->token.cancel();
+  const uint64_t v = ++impl_->version;
+  impl_->wake.notify_all();
+  return v;
+}
+
+void RenderSession::setOptions(const SessionOptions& options) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  const TracerOptions& a = impl_->options.tracer;
+  const TracerOptions& b = options.tracer;
+  if (a.maxDepth != b.maxDepth || a.russianRouletteDepth != b.russianRouletteDepth ||
+      a.clampRadiance != b.clampRadiance)
+    impl_->rebuild = true;
+  impl_->options = options;
+  impl_->token.cancel();
+  ++impl_->version;
+  impl_->wake.notify_all();
+}
+
+bool RenderSession::waitUntilDone(double timeoutSeconds) {
+  std::unique_lock<std::mutex> lock(impl_->mutex);
+  auto done = [&] { return !impl_->scene || (impl_->doneVersion == impl_->version && !impl_->working); };
+  if (timeoutSeconds <= 0) {
+    impl_->doneCv.wait(lock, done);
+    return true;
+  }
+  return impl_->doneCv.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), done);
+}
+
+void RenderSession::cancel() {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  impl_->token.cancel();
+  if (!impl_->working) impl_->doneVersion = impl_->version;  // not started: nothing to stop
+  impl_->doneCv.notify_all();
+}
+
+uint64_t RenderSession::version() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->version;
+}
+
+bool RenderSession::busy() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->scene && (impl_->working || impl_->doneVersion != impl_->version);
+}
+
+}  // namespace inlay

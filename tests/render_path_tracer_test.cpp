@@ -1,0 +1,448 @@
+// Path tracer tests with known answers: a uniform-radiance enclosure (furnace), a diffuse plane
+// under a rectangle light (closed-form form factor), a mirror, the exact zero difference of the
+// differential render, determinism, and stiff inputs.
+#include "render_test_scenes.h"
+#include "test_support.h"
+
+#include "inlay/render/composite.h"
+#include "inlay/render/path_tracer.h"
+
+#include <chrono>
+#include <cstring>
+
+namespace inlay {
+namespace {
+
+using test::kPi;
+
+// Unit-radiance enclosure: every face of the room is lined with an inward light of radiance le.
+RenderScene furnaceScene(int w, int h, double le) {
+  const RoomBox box;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 50), box, 0.5);
+  for (const auto& f : test::boxFaces(box)) s.lights.push_back(test::rectLight(f.c, f.u, f.v, Vec3::Constant(le)));
+  return s;
+}
+
+struct RegionStats {
+  Vec3 mean = Vec3::Zero();
+  double maxAbsDeviation = 0;  // of the per-pixel mean, channel 0
+  int pixels = 0;
+};
+
+// Mean of `image` over pixels whose mask equals `maskValue` exactly (fully inside or outside).
+RegionStats regionStats(const ImageF& image, const ImageF& mask, float maskValue, double expected) {
+  RegionStats r;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (mask.at(x, y) == maskValue) {
+        r.mean += image.rgb(x, y);
+        r.maxAbsDeviation = std::max(r.maxAbsDeviation, std::abs(image.at(x, y, 0) - expected));
+        ++r.pixels;
+      }
+  if (r.pixels) r.mean /= r.pixels;
+  return r;
+}
+
+struct FurnaceCase {
+  const char* name;
+  Material material;
+  double expectedOverLe;  // radiance of the object / le
+  double tolerance;       // relative, on the mean over the object
+};
+
+class Furnace : public ::testing::TestWithParam<FurnaceCase> {};
+
+// A convex object in a uniform radiance field le (black-backed emitters, no room visible):
+// diffuse albedo a shows a * le, a mirror r * le, clear glass le (Fresnel splits, nothing is
+// lost), an albedo-1 diffuse sphere le. Background pixels see an emitter directly: exactly le.
+TEST_P(Furnace, ObjectRadianceMatchesUniformField) {
+  const FurnaceCase& fc = GetParam();
+  const double le = 0.7;
+  RenderScene s = furnaceScene(48, 36, le);
+  InsertedObject o;
+  o.meshObject = test::sphereMesh(0.5);
+  o.worldFromObject = test::translation(Vec3(0, 1.3, -2.2));
+  o.material = fc.material;
+  s.objects.push_back(o);
+  TracerOptions opt;
+  opt.maxDepth = 32;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(48, 36);
+  ASSERT_TRUE(tracer.render(b, 0, 64, 7));
+  const ImageF with = b.meanWith(), mask = b.meanMask();
+  const RegionStats obj = regionStats(with, mask, 1.f, fc.expectedOverLe * le);
+  const RegionStats bg = regionStats(with, mask, 0.f, le);
+  ASSERT_GT(obj.pixels, 100);
+  ASSERT_GT(bg.pixels, 100);
+  const double rel = obj.mean.x() / (fc.expectedOverLe * le) - 1.0;
+  std::printf("[ furnace ] %-14s object mean %.5f expected %.5f (rel err %+.4f) over %d px, "
+              "background max dev %.2g\n",
+              fc.name, obj.mean.x(), fc.expectedOverLe * le, rel, obj.pixels, bg.maxAbsDeviation);
+  EXPECT_LT(std::abs(rel), fc.tolerance);
+  EXPECT_LT(bg.maxAbsDeviation, 1e-6);
+  EXPECT_EQ(tracer.nonFiniteSamples(), 0u);
+}
+
+Material mat(Material::Kind kind, double albedo, double roughness = 0.3) {
+  Material m;
+  m.kind = kind;
+  m.albedo = Vec3::Constant(albedo);
+  m.roughness = roughness;
+  return m;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Materials, Furnace,
+    ::testing::Values(FurnaceCase{"diffuse_0.6", mat(Material::Kind::Diffuse, 0.6), 0.6, 0.02},
+                      FurnaceCase{"diffuse_1.0", mat(Material::Kind::Diffuse, 1.0), 1.0, 0.02},
+                      FurnaceCase{"mirror_0.9", mat(Material::Kind::Mirror, 0.9), 0.9, 1e-5},
+                      FurnaceCase{"glass", mat(Material::Kind::Glass, 1.0), 1.0, 0.02}),
+    [](const auto& info) {
+      std::string n = info.param.name;
+      for (char& c : n)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return n;
+    });
+
+// Glossy (Fresnel-weighted GGX over a white base) must not create energy, and with a white
+// base it must lose little (only the GGX single-scattering loss).
+TEST(Furnace, GlossyWhiteConservesEnergy) {
+  const double le = 0.7;
+  for (double roughness : {0.05, 0.3, 0.8}) {
+    RenderScene s = furnaceScene(48, 36, le);
+    InsertedObject o;
+    o.meshObject = test::sphereMesh(0.5);
+    o.worldFromObject = test::translation(Vec3(0, 1.3, -2.2));
+    o.material = mat(Material::Kind::Glossy, 1.0, roughness);
+    s.objects.push_back(o);
+    PathTracer tracer(s);
+    DifferentialBuffers b(48, 36);
+    ASSERT_TRUE(tracer.render(b, 0, 64, 3));
+    const RegionStats obj = regionStats(b.meanWith(), b.meanMask(), 1.f, le);
+    std::printf("[ furnace ] glossy roughness %.2f: object/le = %.4f\n", roughness, obj.mean.x() / le);
+    EXPECT_LT(obj.mean.x() / le, 1.01);
+    EXPECT_GT(obj.mean.x() / le, 0.95);
+  }
+}
+
+// Form factor from a point to a parallel rectangle [x0,x1] x [z0,z1] at height c above it
+// (irradiance / (pi * radiance)): the corner formula, signed, summed over four corners.
+double cornerFormFactor(double x, double z, double c) {
+  const double a = x / c, b = z / c;
+  const double sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
+  return (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb)) / (2 * kPi);
+}
+double rectFormFactor(double px, double pz, double x0, double x1, double z0, double z1, double c) {
+  return cornerFormFactor(x1 - px, z1 - pz, c) - cornerFormFactor(x0 - px, z1 - pz, c) -
+         cornerFormFactor(x1 - px, z0 - pz, c) + cornerFormFactor(x0 - px, z0 - pz, c);
+}
+
+// A 0.5 x 0.4 m light 1.2 m over the floor, facing down; the emitter sits 1 mm below the given
+// corners (the tracers' offset), a 0.2% change that the tolerances cover.
+struct PlaneSetup {
+  double lightY = 1.2, x0 = -0.25, x1 = 0.25, z0 = -2.2, z1 = -1.8;
+  double le = 3.0;
+  AreaLight light() const {
+    return test::rectLight(Vec3(0.5 * (x0 + x1), lightY, 0.5 * (z0 + z1)), Vec3(0.5 * (x1 - x0), 0, 0),
+                           Vec3(0, 0, 0.5 * (z1 - z0)), Vec3::Constant(le));
+  }
+};
+
+TEST(DiffusePlane, RoomTracerMatchesFormFactor) {
+  const PlaneSetup p;
+  const AreaLight light = p.light();
+  ASSERT_LT(light.normal().y(), -0.99);
+  const RoomTracer tracer(test::boxRoom());
+  for (const Vec3 point : {Vec3(0, 0, -2), Vec3(0.3, 0, -1.5), Vec3(-1.0, 0, -3.0)}) {
+    const double expected = rectFormFactor(point.x(), point.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
+    const double got = tracer.unitLightIrradianceOverPi(light, point, Vec3(0, 1, 0), 1024, 5);
+    std::printf("[ plane ] RoomTracer at (%.1f, %.1f): %.6f, closed form %.6f (rel %+.4f)\n", point.x(),
+                point.z(), got, expected, got / expected - 1);
+    EXPECT_NEAR(got / expected, 1.0, 0.01);
+  }
+  // Facing away, and behind the light: nothing.
+  EXPECT_EQ(tracer.unitLightIrradianceOverPi(light, Vec3(0, 0, -2), Vec3(0, -1, 0), 64, 1), 0.0);
+  EXPECT_EQ(tracer.unitLightIrradianceOverPi(light, Vec3(0, 2, -2), Vec3(0, -1, 0), 64, 1), 0.0);
+  // Shadowed by a wall: the light seen from outside the room's back wall.
+  EXPECT_EQ(tracer.unitLightIrradianceOverPi(light, Vec3(0, 0.5, -4.5), Vec3(0, 0, 1), 64, 1), 0.0);
+  EXPECT_TRUE(tracer.visible(Vec3(0, 1, -1), Vec3(1, 2, -3)));
+  EXPECT_FALSE(tracer.visible(Vec3(0, 1, -1), Vec3(0, 1, -5)));
+  const auto hit = tracer.intersect(Ray{Vec3(0, 1, -1), Vec3(0, -1, 0)});
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->surfaceId, 0);
+  EXPECT_NEAR(hit->t, 1.0, 1e-6);
+  EXPECT_NEAR(hit->normalWorld.y(), 1.0, 1e-9);
+}
+
+// The same through the path tracer with maxDepth 1 (direct light, NEE + MIS): every floor pixel
+// shows albedo * le * F.
+TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {
+  const PlaneSetup p;
+  const double albedo = 0.5;
+  const int w = 48, h = 36;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 60, 0.6, -35), RoomBox{}, albedo);
+  s.lights.push_back(p.light());
+  TracerOptions opt;
+  opt.maxDepth = 1;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 128, 11));
+  const ImageF with = b.meanWith();
+  double sumRel = 0, sumRel2 = 0;
+  int n = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      // Compare only pixels whose whole footprint lands on the floor: its four corners.
+      bool floor = true;
+      for (double dy : {0.0, 1.0})
+        for (double dx : {0.0, 1.0}) {
+          const Vec3 d = s.camera.directionThroughPixel(Vec2(x + dx, y + dy));
+          const double t = d.y() < 0 ? -s.camera.heightM / d.y() : -1;
+          const Vec3 q = s.camera.centreWorld() + t * d;
+          floor = floor && t > 0 && q.x() > -2 && q.x() < 2 && q.z() > -4 && q.z() < 0.5;
+        }
+      if (!floor) continue;
+      const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
+      const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
+      const double expected = albedo * p.le * rectFormFactor(q.x(), q.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
+      if (expected < 0.005) continue;  // the far floor: relative noise too high to compare
+      const double rel = with.at(x, y, 0) / expected - 1;
+      sumRel += rel, sumRel2 += rel * rel, ++n;
+    }
+  ASSERT_GT(n, 200);
+  const double bias = sumRel / n, rms = std::sqrt(sumRel2 / n);
+  std::printf("[ plane ] path tracer, maxDepth 1, 128 spp: %d floor px, mean rel err %+.4f, rms %.4f\n", n,
+              bias, rms);
+  // Pixel-footprint averaging of a smooth function: the mean over pixels stays unbiased to 1%.
+  EXPECT_LT(std::abs(bias), 0.01);
+  EXPECT_LT(rms, 0.05);
+}
+
+// A mirror (an object quad facing the camera) reflecting a large light behind the camera:
+// radiance = reflectance * le, exactly (the path is deterministic).
+TEST(Mirror, ReflectsEmitterTimesReflectance) {
+  const int w = 48, h = 36;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 40), RoomBox{}, 0.5);
+  const double le = 2.5;
+  s.lights.push_back(test::rectLight(Vec3(0, 1.3, 0.45), Vec3(0, 1.2, 0), Vec3(1.9, 0, 0), Vec3::Constant(le)));
+  ASSERT_LT(s.lights[0].normal().z(), -0.99);
+  InsertedObject o;
+  o.meshObject = std::make_shared<TriangleMesh>(
+      test::quadMesh(test::rectCorners(Vec3(0, 1.3, -2), Vec3(0.3, 0, 0), Vec3(0, 0.3, 0))));
+  o.material = mat(Material::Kind::Mirror, 0.8);
+  s.objects.push_back(o);
+  PathTracer tracer(s);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 4, 1));
+  const RegionStats m = regionStats(b.meanWith(), b.meanMask(), 1.f, 0.8 * le);
+  ASSERT_GT(m.pixels, 20);
+  std::printf("[ mirror ] %d px, mean %.6f, expected %.6f, max dev %.2g\n", m.pixels, m.mean.x(), 0.8 * le,
+              m.maxAbsDeviation);
+  EXPECT_LT(m.maxAbsDeviation, 1e-5);
+  // The camera never sees the light directly (it is behind), and the room is lit by it.
+  const RegionStats room = regionStats(b.meanWithout(), b.meanMask(), 0.f, 0);
+  EXPECT_GT(room.mean.x(), 0.0);
+  EXPECT_LT(room.mean.x(), le);
+}
+
+// A closed room lit by a ceiling light, with an object that no path can reach.
+RenderScene closedRoomScene(int w, int h, bool objectInside) {
+  RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);
+  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  InsertedObject o;
+  o.meshObject = test::sphereMesh(0.4);
+  o.worldFromObject = test::translation(objectInside ? Vec3(0.3, 0.4, -2.5) : Vec3(0, 1.3, -5.0));
+  o.material = mat(Material::Kind::Diffuse, 0.7);
+  s.objects.push_back(o);
+  return s;
+}
+
+bool sameBits(const ImageF& a, const ImageF& b) {
+  return a.data.size() == b.data.size() &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+
+ImageF randomPhoto(int w, int h) {
+  ImageF photo(w, h, 3);
+  uint32_t state = 12345;
+  for (float& v : photo.data) {
+    state = state * 1664525u + 1013904223u;
+    v = float(state >> 8) / 16777216.f * 1.3f;
+  }
+  return photo;
+}
+
+TEST(Differential, UnreachableObjectLeavesWithEqualWithoutBitForBit) {
+  const int w = 40, h = 30;
+  PathTracer tracer(closedRoomScene(w, h, false));
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 16, 9));
+  EXPECT_TRUE(sameBits(b.sumWith, b.sumWithout));
+  for (float v : b.sumDiffSq.data) ASSERT_EQ(v, 0.f);
+  for (float v : b.sumMask.data) ASSERT_EQ(v, 0.f);
+  double total = 0;
+  for (float v : b.sumWith.data) total += v;
+  EXPECT_GT(total, 0.0);  // the room is lit: not a vacuous comparison
+  const ImageF photo = randomPhoto(w, h);
+  EXPECT_TRUE(sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
+}
+
+TEST(Differential, NoObjectsGivesThePhotoBack) {
+  const int w = 40, h = 30;
+  RenderScene s = closedRoomScene(w, h, false);
+  s.objects.clear();
+  PathTracer tracer(s);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 8, 2));
+  const ImageF photo = randomPhoto(w, h);
+  EXPECT_TRUE(sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
+}
+
+// The positive control: an object in the room changes the render (so the tests above can fail).
+TEST(Differential, ObjectInsideChangesTheRender) {
+  const int w = 40, h = 30;
+  PathTracer tracer(closedRoomScene(w, h, true));
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 16, 9));
+  EXPECT_FALSE(sameBits(b.sumWith, b.sumWithout));
+  double mask = 0, diffSq = 0;
+  for (float v : b.sumMask.data) mask += v;
+  for (float v : b.sumDiffSq.data) diffSq += v;
+  EXPECT_GT(mask, 0);
+  EXPECT_GT(diffSq, 0);
+}
+
+TEST(Determinism, SameSeedSameBuffersAnyThreadCount) {
+  const int w = 40, h = 30;
+  PathTracer tracer(closedRoomScene(w, h, true));
+  DifferentialBuffers a(w, h), b(w, h), c(w, h);
+  ASSERT_TRUE(tracer.render(a, 0, 4, 21, 1));
+  ASSERT_TRUE(tracer.render(b, 0, 4, 21, 2));
+  ASSERT_TRUE(tracer.render(c, 0, 4, 22, 2));
+  EXPECT_TRUE(sameBits(a.sumWith, b.sumWith));
+  EXPECT_TRUE(sameBits(a.sumWithout, b.sumWithout));
+  EXPECT_TRUE(sameBits(a.sumMask, b.sumMask));
+  EXPECT_FALSE(sameBits(a.sumWith, c.sumWith));
+  // Two waves of 2 equal one wave of 4 up to float summation order: same samples.
+  DifferentialBuffers d(w, h);
+  ASSERT_TRUE(tracer.render(d, 0, 2, 21));
+  ASSERT_TRUE(tracer.render(d, 2, 2, 21));
+  EXPECT_EQ(d.samples, a.samples);
+  for (size_t i = 0; i < d.sumWith.data.size(); ++i)
+    ASSERT_NEAR(d.sumWith.data[i], a.sumWith.data[i], 1e-4 * (1 + std::abs(a.sumWith.data[i])));
+}
+
+TEST(Determinism, MovingAnObjectEqualsBuildingItThere) {
+  const int w = 40, h = 30;
+  RenderScene s = closedRoomScene(w, h, true);
+  const Mat4 there = test::translation(Vec3(-0.4, 0.5, -2.0));
+  PathTracer moved(s);
+  moved.setObjectTransform(0, there);
+  EXPECT_TRUE(moved.scene().objects[0].worldFromObject.isApprox(there));
+  s.objects[0].worldFromObject = there;
+  PathTracer built(s);
+  DifferentialBuffers a(w, h), b(w, h);
+  ASSERT_TRUE(moved.render(a, 0, 4, 5));
+  ASSERT_TRUE(built.render(b, 0, 4, 5));
+  EXPECT_TRUE(sameBits(a.sumWith, b.sumWith));
+  EXPECT_TRUE(sameBits(a.sumWithout, b.sumWithout));
+  EXPECT_TRUE(sameBits(a.sumMask, b.sumMask));
+  // And moving it changes the picture.
+  PathTracer original(closedRoomScene(w, h, true));
+  DifferentialBuffers c(w, h);
+  ASSERT_TRUE(original.render(c, 0, 4, 5));
+  EXPECT_FALSE(sameBits(a.sumWith, c.sumWith));
+}
+
+TEST(Cancel, StoppedRenderReportsFalseAndKeepsWholeSamples) {
+  const int w = 64, h = 48;
+  PathTracer tracer(closedRoomScene(w, h, true));
+  DifferentialBuffers b(w, h);
+  CancelToken token;
+  token.cancel();
+  EXPECT_FALSE(tracer.render(b, 0, 4, 1, 0, &token));
+  for (int n : b.samples) EXPECT_TRUE(n == 0 || n == 4);
+}
+
+// Stiff inputs: a light lying on the floor, a light touching the floor edge-on, a 1e6-radiance
+// light, a needle-thin triangle, a degenerate light and a NaN radiance. All finite.
+TEST(Stiff, ExtremeInputsStayFinite) {
+  const int w = 40, h = 30;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -15), RoomBox{}, 0.7);
+  s.lights.push_back(test::rectLight(Vec3(0.5, 0.0, -2), Vec3(0, 0, 0.3), Vec3(0.3, 0, 0), Vec3::Constant(2)));
+  s.lights.push_back(test::rectLight(Vec3(-0.5, 0.3, -2.5), Vec3(0, 0.3, 0), Vec3(0, 0, 0.3), Vec3::Constant(2)));
+  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -1.5), Vec3(0.05, 0, 0), Vec3(0, 0, 0.05), Vec3::Constant(1e6)));
+  s.lights.push_back(test::rectLight(Vec3(0, 1, -1), Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3::Constant(1)));
+  s.lights.push_back(test::rectLight(Vec3(1, 1, -1), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0),
+                                     Vec3::Constant(std::numeric_limits<double>::quiet_NaN())));
+  auto needle = std::make_shared<TriangleMesh>();
+  needle->positions = {Vec3f(0, 0, 0), Vec3f(1e-7f, 0, 0), Vec3f(0, 2, 0)};
+  needle->triangles = {{0, 1, 2}};
+  for (auto kind : {Material::Kind::Diffuse, Material::Kind::Glass, Material::Kind::Glossy}) {
+    InsertedObject o;
+    o.meshObject = needle;
+    o.worldFromObject = test::translation(Vec3(0.2 * int(kind), 0.0, -2.0));
+    o.material = mat(kind, 0.9, 0.01);
+    s.objects.push_back(o);
+  }
+  InsertedObject glossy;
+  glossy.meshObject = test::sphereMesh(0.3, 8, 16);
+  glossy.worldFromObject = test::translation(Vec3(0.5, 0.3, -2.0));  // resting on the floor light
+  glossy.material = mat(Material::Kind::Glossy, 0.5, 0.0);
+  s.objects.push_back(glossy);
+  PathTracer tracer(s);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 16, 4));
+  EXPECT_TRUE(test::allFinite(b.sumWith));
+  EXPECT_TRUE(test::allFinite(b.sumWithout));
+  EXPECT_TRUE(test::allFinite(b.sumDiffSq));
+  EXPECT_TRUE(test::allFinite(b.meanWith()));
+  std::printf("[ stiff ] non-finite samples dropped: %llu of %d\n",
+              (unsigned long long)tracer.nonFiniteSamples(), w * h * 16);
+  EXPECT_EQ(tracer.nonFiniteSamples(), 0u);
+  double total = 0;
+  for (float v : b.sumWith.data) total += v;
+  EXPECT_GT(total, 0.0);
+}
+
+// The projected albedo: visible points take their pixel, hidden or out-of-frame points the
+// surface mean, unknown ids a neutral grey.
+TEST(ProjectedAlbedo, LookupFollowsFirstSurfaces) {
+  const int w = 32, h = 24;
+  ProjectedAlbedo pa;
+  pa.camera = test::testCamera(w, h, 60);
+  pa.albedo = ImageF(w, h, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) pa.albedo.setRgb(x, y, Vec3(x / 64.0, y / 64.0, 0.25));
+  const SceneGeometry room = test::boxRoom();
+  pa.surfaceMean.assign(room.surfaces.size(), Vec3(0.1, 0.2, 0.3));
+  pa.computeFirstSurfaces(room);
+  ASSERT_EQ(pa.firstSurfacePerPixel.size(), size_t(w * h));
+  // Centre pixel sees the back wall (id 4).
+  EXPECT_EQ(pa.firstSurfacePerPixel[size_t(h / 2) * w + w / 2], 4);
+  const Ray r = pa.camera.rayThroughPixel(Vec2(20.5, 10.5));
+  const Vec3 onBack = r.at((-4.0 - r.origin.z()) / r.direction.z());
+  EXPECT_TRUE(pa.lookup(4, onBack).isApprox(Vec3(20 / 64.0, 10 / 64.0, 0.25), 1e-6));
+  // The same point claimed by the floor (id 0): that pixel's first surface is not the floor.
+  EXPECT_TRUE(pa.lookup(0, onBack).isApprox(Vec3(0.1, 0.2, 0.3)));
+  // Behind the camera: the mean; an unknown id: grey.
+  EXPECT_TRUE(pa.lookup(5, Vec3(0, 1.3, 0.5)).isApprox(Vec3(0.1, 0.2, 0.3)));
+  EXPECT_TRUE(pa.lookup(42, onBack).isApprox(Vec3(0.5, 0.5, 0.5)));
+  EXPECT_TRUE(pa.lookup(-1, onBack).isApprox(Vec3(0.5, 0.5, 0.5)));
+}
+
+// Throughput figure (printed, not asserted): paths and rays per second on this machine.
+TEST(Performance, PrintsPathRate) {
+  const int w = 160, h = 120;
+  PathTracer tracer(closedRoomScene(w, h, true));
+  DifferentialBuffers b(w, h);
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_TRUE(tracer.render(b, 0, 4, 1));
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("[ perf ] %dx%d x 4 spp differential (sphere in a lit room, maxDepth 8): %.3f s, %.2f M "
+              "samples/s\n",
+              w, h, s, w * h * 4 / s * 1e-6);
+}
+
+}  // namespace
+}  // namespace inlay

@@ -1,0 +1,122 @@
+// Hand-built scenes for the render tests: box rooms of quads, rectangle lights, spheres, and a
+// camera filled in field by field (no modeling solvers involved).
+#pragma once
+
+#include "inlay/render/path_tracer.h"
+#include "inlay/render/scene.h"
+
+#include <cmath>
+#include <memory>
+
+namespace inlay::test {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Corners C-U-V, C+U-V, C+U+V, C-U+V: a light made from them emits along U x V.
+inline std::array<Vec3, 4> rectCorners(const Vec3& c, const Vec3& u, const Vec3& v) {
+  return {c - u - v, c + u - v, c + u + v, c - u + v};
+}
+
+inline TriangleMesh quadMesh(const std::array<Vec3, 4>& c) {
+  TriangleMesh m;
+  for (const auto& p : c) m.positions.push_back(p.cast<float>());
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return m;
+}
+
+inline AreaLight rectLight(const Vec3& c, const Vec3& u, const Vec3& v, const Vec3& radiance) {
+  AreaLight l;
+  l.cornersWorld = rectCorners(c, u, v);
+  l.radiance = radiance;
+  return l;
+}
+
+// The six inward-facing faces of a box as (centre, U, V) with U x V pointing into the box.
+struct Face {
+  Vec3 c, u, v;
+};
+inline std::array<Face, 6> boxFaces(const RoomBox& b) {
+  const double cx = 0.5 * (b.xLeftM + b.xRightM), cy = 0.5 * b.ceilingM, cz = 0.5 * (b.zBackM + b.zRearM);
+  const double hx = 0.5 * (b.xRightM - b.xLeftM), hy = 0.5 * b.ceilingM, hz = 0.5 * (b.zRearM - b.zBackM);
+  return {{
+      {Vec3(cx, 0, cz), Vec3(0, 0, hz), Vec3(hx, 0, 0)},             // floor, +y
+      {Vec3(cx, b.ceilingM, cz), Vec3(hx, 0, 0), Vec3(0, 0, hz)},    // ceiling, -y
+      {Vec3(b.xLeftM, cy, cz), Vec3(0, hy, 0), Vec3(0, 0, hz)},      // left, +x
+      {Vec3(b.xRightM, cy, cz), Vec3(0, 0, hz), Vec3(0, hy, 0)},     // right, -x
+      {Vec3(cx, cy, b.zBackM), Vec3(hx, 0, 0), Vec3(0, hy, 0)},      // back, +z
+      {Vec3(cx, cy, b.zRearM), Vec3(0, hy, 0), Vec3(hx, 0, 0)},      // rear, -z
+  }};
+}
+
+inline SceneGeometry boxRoom(const RoomBox& b = {}) {
+  SceneGeometry g;
+  g.box = b;
+  const SurfaceKind kinds[6] = {SurfaceKind::Floor,    SurfaceKind::Ceiling,  SurfaceKind::WallLeft,
+                                SurfaceKind::WallRight, SurfaceKind::WallBack, SurfaceKind::WallRear};
+  const auto faces = boxFaces(b);
+  for (int i = 0; i < 6; ++i) {
+    Surface s;
+    s.kind = kinds[i];
+    s.name = surfaceKindName(kinds[i]);
+    s.meshWorld = quadMesh(rectCorners(faces[i].c, faces[i].u, faces[i].v));
+    s.supportsObjects = i == 0;
+    g.surfaces.push_back(std::move(s));
+  }
+  return g;
+}
+
+// A pinhole camera at (0, heightM, 0) looking along -z, pitched by pitchDeg (negative: down).
+inline Camera testCamera(int w, int h, double hfovDeg, double heightM = 1.3, double pitchDeg = 0) {
+  Camera c;
+  c.widthPx = w;
+  c.heightPx = h;
+  c.focalPx = 0.5 * w / std::tan(0.5 * hfovDeg * kPi / 180.0);
+  c.principalPx = Vec2(0.5 * w, 0.5 * h);
+  c.worldFromCamera = Eigen::AngleAxisd(pitchDeg * kPi / 180.0, Vec3::UnitX()).toRotationMatrix();
+  c.heightM = heightM;
+  return c;
+}
+
+// Room with uniform albedo per surface (no albedo image: every lookup takes the surface mean).
+inline RenderScene roomScene(const Camera& cam, const RoomBox& box, double albedo) {
+  RenderScene s;
+  s.camera = cam;
+  s.room = boxRoom(box);
+  s.roomAlbedo.camera = cam;
+  s.roomAlbedo.surfaceMean.assign(s.room.surfaces.size(), Vec3::Constant(albedo));
+  return s;
+}
+
+// UV sphere of radius r around the origin with outward vertex normals.
+inline std::shared_ptr<TriangleMesh> sphereMesh(double r, int rings = 24, int segments = 48) {
+  auto m = std::make_shared<TriangleMesh>();
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const double th = kPi * i / rings, ph = 2 * kPi * j / segments;
+      const Vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      m->positions.push_back((r * n).cast<float>());
+      m->normals.push_back(n.cast<float>());
+    }
+  auto id = [&](int i, int j) { return uint32_t(i * (segments + 1) + j); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      // Counter-clockwise seen from outside: (b - a) x (c - a) points outward.
+      m->triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j)});
+      m->triangles.push_back({id(i, j + 1), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  return m;
+}
+
+inline Mat4 translation(const Vec3& t) {
+  Mat4 m = Mat4::Identity();
+  m.topRightCorner<3, 1>() = t;
+  return m;
+}
+
+inline bool allFinite(const ImageF& im) {
+  for (float v : im.data)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+
+}  // namespace inlay::test
