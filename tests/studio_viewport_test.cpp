@@ -9,8 +9,11 @@
 #include "viewport.h"
 
 #include "inlay/engine/pipeline.h"
+#include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
 
+#include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
@@ -154,9 +157,42 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   QCOMPARE(doc->undoStack()->count(), 1);
   QVERIFY2(!window.statusBar()->currentMessage().isEmpty(), "no reason shown");
 
-  // --- Save, and read back what was saved ---
+  // --- Edits from the properties dock are undoable commands too ---
+  PropertiesDock* props = window.propertiesDock();
+  QCOMPARE(doc->selectedObject(), 0);
+  const double height0 = doc->scene().objects[0].heightM;
+  props->heightBox()->setValue(height0 + 0.25);
+  QCOMPARE(doc->scene().objects[0].heightM, height0 + 0.25);
+  QCOMPARE(doc->undoStack()->count(), 2);
+  const int glossy = props->presetBox()->findData(QStringLiteral("glossy"));
+  QVERIFY(glossy >= 0);
+  props->presetBox()->setCurrentIndex(glossy);
+  Q_EMIT props->presetBox()->activated(glossy);  // as a user's choice does
+  QCOMPARE(QString::fromStdString(doc->scene().objects[0].material.preset), QStringLiteral("glossy"));
+  QCOMPARE(doc->undoStack()->count(), 3);
+  QVERIFY(doc->prepared()->renderScene.objects[0].material.kind == Material::Kind::Glossy);
+  // A material change re-sends the scene; the renderer catches up with it.
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, 30000);
+  doc->undoStack()->undo();
+  doc->undoStack()->undo();
+  QCOMPARE(doc->scene().objects[0].heightM, height0);
+  QCOMPARE(QString::fromStdString(doc->scene().objects[0].material.preset), QStringLiteral("diffuse"));
+  QCOMPARE(props->heightBox()->value(), height0);  // the dock follows the document
+
+  // --- Export the composite (8-bit PNG and linear EXR) ---
   QTemporaryDir dir;
   QVERIFY(dir.isValid());
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, 30000);
+  for (const char* name : {"composite.png", "composite.exr"}) {
+    const QString out = dir.filePath(QString::fromLatin1(name));
+    QVERIFY(window.exportComposite(out));
+    const Expected<LoadedImage> back = loadImage(out.toStdString());
+    QVERIFY2(back.ok(), back.ok() ? "" : back.error().message().c_str());
+    QCOMPARE(back->linearRgb.width, doc->prepared()->photo.linearRgb.width);
+    QCOMPARE(back->linearRgb.height, doc->prepared()->photo.linearRgb.height);
+  }
+
+  // --- Save, and read back what was saved ---
   const QString path = dir.filePath(QStringLiteral("moved.json"));
   QVERIFY(window.saveTo(path));
   QVERIFY(doc->undoStack()->isClean());

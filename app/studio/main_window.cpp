@@ -8,6 +8,9 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
@@ -82,6 +85,7 @@ QString stageText(const QString& stage) {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setObjectName(QStringLiteral("inlayMainWindow"));
   setWindowIcon(appIcon());
+  setAcceptDrops(true);
   document_ = new Document(this);
   renderer_ = new RenderController(document_, this);
   viewport_ = new Viewport(document_, renderer_, this);
@@ -260,6 +264,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     progress_->setAutoReset(false);
     connect(progress_, &QProgressDialog::canceled, document_, &Document::cancelPrepare);
     statusBar()->showMessage(tr("Preparing the scene…"));
+    statusBar()->setToolTip(QString());
   }
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (progress_) {
@@ -273,8 +278,14 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
         showError(tr("The scene could not be prepared"), document_->prepareError());
         break;
       case Document::State::Ready:
-        if (!document_->warnings().isEmpty())
-          statusBar()->showMessage(document_->warnings().join(QStringLiteral("; ")), 10000);
+        if (!document_->warnings().isEmpty()) {
+          // The first note in the bar, all of them in its tooltip.
+          const QStringList& w = document_->warnings();
+          statusBar()->showMessage(
+              w.size() == 1 ? w.first() : tr("%1 (and %n more)", nullptr, int(w.size() - 1)).arg(w.first()),
+              10000);
+          statusBar()->setToolTip(w.join(QLatin1Char('\n')));
+        }
         break;
       default:
         statusBar()->showMessage(document_->prepareError(), 5000);
@@ -416,8 +427,7 @@ bool MainWindow::saveAsDialog() {
 }
 
 void MainWindow::exportCompositeDialog() {
-  const std::shared_ptr<const ImageF> linear = renderer_->compositeLinear();
-  if (!linear) {
+  if (!renderer_->compositeLinear()) {
     showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
     return;
   }
@@ -433,15 +443,40 @@ void MainWindow::exportCompositeDialog() {
             : selected == tiff ? QStringLiteral(".tif")
             : selected == exr  ? QStringLiteral(".exr")
                                : QStringLiteral(".png");
-  const Status saved = saveImage(path.toStdString(), *linear);
+  exportComposite(path);
+}
+
+bool MainWindow::exportComposite(const QString& path) {
+  const std::shared_ptr<const ImageF> linear = renderer_->compositeLinear();
+  if (!linear) {
+    showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
+    return false;
+  }
+  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), *linear);
   if (!saved.ok()) {
     showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
-    return;
+    return false;
   }
   statusBar()->showMessage(tr("Exported %1 (%2 spp)")
                                .arg(QDir::toNativeSeparators(path))
                                .arg(renderer_->frameInfo().spp),
                            5000);
+  return true;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.first().isLocalFile()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() != 1 || !urls.first().isLocalFile()) return;
+  event->acceptProposedAction();
+  const QString path = urls.first().toLocalFile();
+  // After the drop has finished: maybeSave() may open a dialog.
+  QMetaObject::invokeMethod(
+      this, [this, path] { if (maybeSave()) openPath(path); }, Qt::QueuedConnection);
 }
 
 void MainWindow::about() {

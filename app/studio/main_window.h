@@ -44,6 +44,9 @@ class MainWindow : public QMainWindow {
   bool openExample();
   // Writes the scene file; returns false (after telling the user) on failure.
   bool saveTo(const QString& path);
+  // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear);
+  // returns false (after telling the user) on failure.
+  bool exportComposite(const QString& path);
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -57,6 +60,8 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
   void createActions();
