@@ -1,0 +1,86 @@
+// Differential composite and exposure: the header's formula, bit-identity where nothing
+// changed, clamping, and no non-finite output.
+#include "test_support.h"
+
+#include "inlay/render/composite.h"
+
+#include <cstring>
+
+namespace inlay {
+namespace {
+
+ImageF filled(int w, int h, int c, uint32_t seed, float scale) {
+  ImageF im(w, h, c);
+  for (float& v : im.data) {
+    seed = seed * 1664525u + 1013904223u;
+    v = float(seed >> 8) / 16777216.f * scale;
+  }
+  return im;
+}
+
+TEST(Composite, FollowsDebevecFormula) {
+  const int w = 16, h = 8;
+  const ImageF photo = filled(w, h, 3, 1, 1.f), with = filled(w, h, 3, 2, 2.f),
+               without = filled(w, h, 3, 3, 2.f), mask = filled(w, h, 1, 4, 1.f);
+  const ImageF out = differentialComposite(photo, with, without, mask);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double m = mask.at(x, y);
+        const double expected = std::max(
+            0.0, m * with.at(x, y, c) + (1 - m) * (photo.at(x, y, c) + with.at(x, y, c) - without.at(x, y, c)));
+        ASSERT_NEAR(out.at(x, y, c), expected, 1e-6 * (1 + expected));
+      }
+}
+
+TEST(Composite, UnchangedPixelsAreThePhotoBitForBit) {
+  const int w = 16, h = 8;
+  const ImageF photo = filled(w, h, 3, 5, 3.f);  // including values above 1
+  ImageF render = filled(w, h, 3, 6, 1.f);
+  ImageF mask(w, h, 1, 0.f);
+  const ImageF out = differentialComposite(photo, render, render, mask);
+  EXPECT_EQ(std::memcmp(out.data.data(), photo.data.data(), photo.data.size() * sizeof(float)), 0);
+  // One pixel differs: only that pixel changes.
+  ImageF with = render;
+  with.at(3, 2, 1) += 0.25f;
+  const ImageF out2 = differentialComposite(photo, with, render, mask);
+  for (size_t i = 0; i < out2.data.size(); ++i) {
+    if (i == (size_t(2) * w + 3) * 3 + 1)
+      EXPECT_FLOAT_EQ(out2.data[i], photo.data[i] + 0.25f);
+    else
+      ASSERT_EQ(out2.data[i], photo.data[i]);
+  }
+}
+
+TEST(Composite, ClampsNegativeAndNeverProducesNonFinite) {
+  ImageF photo(2, 1, 3, 0.1f), with(2, 1, 3, 0.f), without(2, 1, 3, 1.f), mask(2, 1, 1, 0.f);
+  with.at(1, 0, 0) = std::numeric_limits<float>::quiet_NaN();
+  with.at(1, 0, 1) = std::numeric_limits<float>::infinity();
+  const ImageF out = differentialComposite(photo, with, without, mask);
+  for (float v : out.data) {
+    EXPECT_TRUE(std::isfinite(v));
+    EXPECT_GE(v, 0.f);
+  }
+  EXPECT_EQ(out.at(0, 0, 0), 0.f);  // 0.1 + 0 - 1 clamps to 0
+}
+
+TEST(Composite, FullMaskShowsTheRender) {
+  const ImageF photo = filled(4, 4, 3, 7, 1.f), with = filled(4, 4, 3, 8, 1.f), without = filled(4, 4, 3, 9, 1.f);
+  const ImageF out = differentialComposite(photo, with, without, ImageF(4, 4, 1, 1.f));
+  for (size_t i = 0; i < out.data.size(); ++i) EXPECT_FLOAT_EQ(out.data[i], with.data[i]);
+}
+
+TEST(Exposure, ScalesByPowersOfTwo) {
+  ImageF im = filled(4, 4, 3, 10, 1.f);
+  const ImageF original = im;
+  applyExposure(im, 0.0);
+  EXPECT_EQ(std::memcmp(im.data.data(), original.data.data(), im.data.size() * sizeof(float)), 0);
+  applyExposure(im, 1.0);
+  for (size_t i = 0; i < im.data.size(); ++i) EXPECT_FLOAT_EQ(im.data[i], 2.f * original.data[i]);
+  applyExposure(im, -2.5);
+  for (size_t i = 0; i < im.data.size(); ++i)
+    EXPECT_NEAR(im.data[i], original.data[i] * std::exp2(-1.5), 1e-6);
+}
+
+}  // namespace
+}  // namespace inlay

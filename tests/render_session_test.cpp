@@ -1,0 +1,199 @@
+// The render schedule as a pure value, and the progressive session: frames arrive in order,
+// an edit cancels the running wave quickly, time limits, cancel() and shutdown.
+#include "render_test_scenes.h"
+#include "test_support.h"
+
+#include "inlay/render/session.h"
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+
+namespace inlay {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+TEST(Schedule, CoarseThenDoublingWaves) {
+  const std::vector<RenderWork> expected = {{0, 1, 8}, {0, 1, 4}, {0, 1, 2}, {0, 1, 1}, {1, 1, 1},
+                                            {2, 2, 1}, {4, 4, 1}, {8, 8, 1}, {16, 4, 1}};
+  EXPECT_EQ(makeRenderSchedule(20, 8, 16), expected);
+  // Capped waves, no preview, exact total.
+  const auto s = makeRenderSchedule(100, 1, 16);
+  int next = 0;
+  for (const RenderWork& w : s) {
+    EXPECT_EQ(w.resolutionDivider, 1);
+    EXPECT_EQ(w.firstSample, next);
+    EXPECT_LE(w.sampleCount, 16);
+    EXPECT_GE(w.sampleCount, 1);
+    next += w.sampleCount;
+  }
+  EXPECT_EQ(next, 100);
+  EXPECT_EQ(s.size(), 11u);  // 1 1 2 4 8 16 16 16 16 16 4
+  EXPECT_TRUE(makeRenderSchedule(0, 1).empty());
+  EXPECT_EQ(makeRenderSchedule(1, 3, 16), (std::vector<RenderWork>{{0, 1, 3}, {0, 1, 1}}));
+}
+
+class Collector : public FrameSink {
+ public:
+  void onFrame(std::shared_ptr<const RenderFrame> frame) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    frames_.push_back({std::move(frame), Clock::now()});
+    cv_.notify_all();
+  }
+  struct Entry {
+    std::shared_ptr<const RenderFrame> frame;
+    Clock::time_point at;
+  };
+  // Waits until pred(frames) or the timeout; returns pred's last value.
+  template <class Pred>
+  bool waitFor(Pred pred, double seconds) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return cv_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return pred(frames_); });
+  }
+  std::vector<Entry> frames() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return frames_;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable cv_;
+  std::vector<Entry> frames_;
+};
+
+RenderScene sessionScene(int w, int h) {
+  RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);
+  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  InsertedObject o;
+  o.meshObject = test::sphereMesh(0.4, 12, 24);
+  o.worldFromObject = test::translation(Vec3(0.3, 0.4, -2.5));
+  s.objects.push_back(o);
+  return s;
+}
+
+TEST(Session, FramesFollowTheScheduleAndMatchTheTracer) {
+  const int w = 48, h = 36;
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 8;
+  opt.seed = 17;
+  const RenderScene scene = sessionScene(w, h);
+  {
+    RenderSession session(&sink, opt);
+    EXPECT_TRUE(session.waitUntilDone(0.01));  // no scene yet: nothing to do
+    const uint64_t v = session.setScene(scene);
+    EXPECT_EQ(session.version(), v);
+    ASSERT_TRUE(session.waitUntilDone(60));
+    EXPECT_FALSE(session.busy());
+    const auto frames = sink.frames();
+    std::vector<std::pair<int, int>> got;  // (divider, spp)
+    for (const auto& e : frames) {
+      got.emplace_back(e.frame->resolutionDivider, e.frame->spp);
+      EXPECT_EQ(e.frame->sceneVersion, v);
+      EXPECT_EQ(e.frame->width, w);
+      EXPECT_EQ(e.frame->withObjects.width, w);
+      EXPECT_EQ(e.frame->withObjects.height, h);
+      EXPECT_EQ(e.frame->mask.channels, 1);
+      EXPECT_TRUE(std::isfinite(e.frame->estimatedError));
+      EXPECT_EQ(e.frame->final, &e == &frames.back());
+    }
+    const std::vector<std::pair<int, int>> expected = {{8, 0}, {4, 0}, {2, 0}, {1, 1}, {1, 2}, {1, 4}, {1, 8}};
+    EXPECT_EQ(got, expected);
+    // The final frame is the tracer's 8-sample render (same seed), up to float summation order.
+    PathTracer tracer(scene, opt.tracer);
+    DifferentialBuffers b(w, h);
+    ASSERT_TRUE(tracer.render(b, 0, 8, opt.seed));
+    const ImageF ref = b.meanWith();
+    const ImageF& fin = frames.back().frame->withObjects;
+    for (size_t i = 0; i < ref.data.size(); ++i)
+      ASSERT_NEAR(fin.data[i], ref.data[i], 1e-4 * (1 + std::abs(ref.data[i])));
+    // Preview frames are nearest-upsampled: constant over each 8x8 cell.
+    const ImageF& p8 = frames.front().frame->withObjects;
+    EXPECT_EQ(p8.at(0, 0, 0), p8.at(7, 7, 0));
+    EXPECT_EQ(p8.at(8, 0, 0), p8.at(15, 7, 0));
+    // Error estimates fall with samples (4x the samples: about half the error).
+    const double e1 = frames[3].frame->estimatedError, e8 = frames.back().frame->estimatedError;
+    std::printf("[ session ] estimated sRGB RMSE where with != without: 1 spp %.4f, 8 spp %.4f\n", e1, e8);
+    EXPECT_GT(e1, 0.0);
+    EXPECT_LT(e8, e1);
+  }
+}
+
+TEST(Session, EditCancelsTheRunningWaveQuickly) {
+  const int w = 160, h = 120;
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 1 << 20;
+  RenderSession session(&sink, opt);
+  const uint64_t v1 = session.setScene(sessionScene(w, h));
+  // Wait until long waves run (a full-resolution frame with 4 spp or more is out).
+  ASSERT_TRUE(sink.waitFor([&](const auto& f) { return !f.empty() && f.back().frame->spp >= 4; }, 60));
+  std::vector<double> latenciesMs;
+  uint64_t v = v1;
+  for (int k = 0; k < 5; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));  // land mid-wave
+    const auto t0 = Clock::now();
+    v = session.setObjectTransform(0, test::translation(Vec3(-0.5 + 0.2 * k, 0.4, -2.5)));
+    ASSERT_TRUE(sink.waitFor([&](const auto& f) { return !f.empty() && f.back().frame->sceneVersion == v; }, 10));
+    for (const auto& e : sink.frames())
+      if (e.frame->sceneVersion == v) {
+        latenciesMs.push_back(std::chrono::duration<double, std::milli>(e.at - t0).count());
+        break;
+      }
+  }
+  std::sort(latenciesMs.begin(), latenciesMs.end());
+  std::printf("[ session ] edit -> first frame of the new version (160x120, 2 threads busy): median %.1f ms, "
+              "max %.1f ms\n",
+              latenciesMs[latenciesMs.size() / 2], latenciesMs.back());
+  EXPECT_LT(latenciesMs[latenciesMs.size() / 2], 500.0);
+  // Versions never go backwards.
+  uint64_t last = 0;
+  for (const auto& e : sink.frames()) {
+    EXPECT_GE(e.frame->sceneVersion, last);
+    last = e.frame->sceneVersion;
+  }
+  EXPECT_EQ(last, v);
+  EXPECT_TRUE(session.busy());
+  const auto t0 = Clock::now();
+  session.cancel();
+  EXPECT_TRUE(session.waitUntilDone(5));
+  std::printf("[ session ] cancel() -> idle: %.1f ms\n",
+              std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  EXPECT_FALSE(session.busy());
+}
+
+TEST(Session, TimeLimitEndsWithAFinalFrame) {
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 1 << 20;
+  opt.seconds = 0.3;
+  RenderSession session(&sink, opt);
+  const auto t0 = Clock::now();
+  session.setScene(sessionScene(96, 72));
+  ASSERT_TRUE(session.waitUntilDone(10));
+  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
+  EXPECT_LT(s, 3.0);
+  EXPECT_GT(s, 0.25);
+  const auto frames = sink.frames();
+  ASSERT_FALSE(frames.empty());
+  EXPECT_TRUE(frames.back().frame->final);
+  EXPECT_GT(frames.back().frame->spp, 0);
+}
+
+TEST(Session, DestructorStopsARunningRender) {
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 1 << 20;
+  auto session = std::make_unique<RenderSession>(&sink, opt);
+  session->setScene(sessionScene(160, 120));
+  ASSERT_TRUE(sink.waitFor([](const auto& f) { return f.size() >= 4; }, 60));
+  const auto t0 = Clock::now();
+  session.reset();
+  const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  std::printf("[ session ] destructor while rendering: %.1f ms\n", ms);
+  EXPECT_LT(ms, 1000.0);
+}
+
+}  // namespace
+}  // namespace inlay
