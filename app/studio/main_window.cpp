@@ -132,7 +132,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   onFrame();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // Stop the render thread before the document it renders goes away.
+  delete renderer_;
+  renderer_ = nullptr;
+}
 
 void MainWindow::createActions() {
   QStyle* s = style();

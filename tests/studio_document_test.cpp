@@ -1,0 +1,224 @@
+// The studio's non-visual parts with known answers: the sRGB conversion, the frame sink's
+// version filter and hand-off, the document's undo merging, cancelling, and Save As path
+// rewriting.
+#include "document.h"
+#include "frame_sink.h"
+#include "image_convert.h"
+
+#include "inlay/engine/pipeline.h"
+#include "inlay/modeling/scene_file.h"
+
+#include <QDir>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace inlay;
+using namespace inlay::studio;
+
+namespace {
+
+QString exampleDir() {
+  const QString src = qEnvironmentVariable("INLAY_SOURCE_DIR");
+  if (!src.isEmpty() && QFile::exists(src + QStringLiteral("/resources/example/scene.json")))
+    return src + QStringLiteral("/resources/example");
+  const std::string p = exampleScenePath();
+  return p.empty() ? QString() : QFileInfo(QString::fromStdString(p)).absolutePath();
+}
+
+std::shared_ptr<RenderFrame> makeFrame(uint64_t version, const ImageF& with, const ImageF& without,
+                                       float mask) {
+  auto f = std::make_shared<RenderFrame>();
+  f->sceneVersion = version;
+  f->width = with.width;
+  f->height = with.height;
+  f->spp = 1;
+  f->withObjects = with;
+  f->withoutObjects = without;
+  f->mask = ImageF(with.width, with.height, 1, mask);
+  return f;
+}
+
+}  // namespace
+
+class StudioDocumentTest : public QObject {
+  Q_OBJECT
+
+ private Q_SLOTS:
+  void srgbEncodingHasKnownValues();
+  void sinkDropsOldVersionsAndNotifiesOnce();
+  void sinkCompositeOfUntouchedSceneIsThePhoto();
+  void dragMergesAndReturningIsObsolete();
+  void cancelDropsTheResult();
+  void saveAsRewritesRelativePaths();
+};
+
+void StudioDocumentTest::srgbEncodingHasKnownValues() {
+  ImageF img(5, 1, 3);
+  const float values[5] = {0.f, 0.0031308f, 0.5f, 1.f, 4.f};
+  for (int x = 0; x < 5; ++x) img.setRgb(x, 0, Vec3::Constant(values[x]));
+  const QImage q = srgb8FromLinear(img);
+  QCOMPARE(q.size(), QSize(5, 1));
+  QCOMPARE(qRed(q.pixel(0, 0)), 0);
+  QCOMPARE(qRed(q.pixel(1, 0)), 10);   // 12.92 * 0.0031308 * 255 = 10.3
+  QCOMPARE(qRed(q.pixel(2, 0)), 188);  // 1.055 * 0.5^(1/2.4) - 0.055 = 0.7354
+  QCOMPARE(qRed(q.pixel(3, 0)), 255);
+  QCOMPARE(qRed(q.pixel(4, 0)), 255);  // clamped
+  // One stop of exposure doubles the linear value: 0.25 -> 0.5.
+  ImageF quarter(1, 1, 3, 0.25f);
+  QCOMPARE(qGreen(srgb8FromLinear(quarter, 1.0).pixel(0, 0)), 188);
+  // Every 8-bit code round-trips through linear.
+  ImageF ramp(256, 1, 3);
+  for (int x = 0; x < 256; ++x) ramp.setRgb(x, 0, Vec3::Constant(srgbToLinear(x / 255.f)));
+  const QImage r = srgb8FromLinear(ramp);
+  for (int x = 0; x < 256; ++x) QCOMPARE(qBlue(r.pixel(x, 0)), x);
+}
+
+void StudioDocumentTest::sinkDropsOldVersionsAndNotifiesOnce() {
+  int notified = 0;
+  CompositeSink sink([&] { ++notified; });
+  PreparedScene scene;
+  scene.photo.linearRgb = ImageF(4, 3, 3, 0.2f);
+  sink.setContext(CompositeSink::compositeContextOf(scene), 5);
+  const ImageF a(4, 3, 3, 0.2f);
+
+  sink.onFrame(makeFrame(4, a, a, 0.f));  // older than the GUI asked for
+  QCOMPARE(notified, 0);
+  QVERIFY(!sink.take());
+
+  sink.onFrame(makeFrame(5, a, a, 0.f));
+  sink.onFrame(makeFrame(6, a, a, 0.f));  // not yet taken: replaces, no second post
+  QCOMPARE(notified, 1);
+  const std::optional<CompositeImage> got = sink.take();
+  QVERIFY(got);
+  QCOMPARE(got->sceneVersion, uint64_t(6));
+  QVERIFY(!sink.take());
+
+  sink.setMinVersion(8);
+  sink.setMinVersion(7);  // never lowers
+  sink.onFrame(makeFrame(7, a, a, 0.f));
+  QVERIFY(!sink.take());
+  ImageF wrongSize(2, 2, 3, 0.2f);
+  sink.onFrame(makeFrame(9, wrongSize, wrongSize, 0.f));  // another scene's frame
+  QVERIFY(!sink.take());
+  QCOMPARE(notified, 1);
+}
+
+void StudioDocumentTest::sinkCompositeOfUntouchedSceneIsThePhoto() {
+  CompositeSink sink([] {});
+  PreparedScene scene;
+  scene.photo.linearRgb = ImageF(8, 6, 3);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) scene.photo.linearRgb.setRgb(x, y, Vec3(x / 8.0, y / 6.0, 0.3));
+  scene.doc.render.exposure = 0.5;
+  sink.setContext(CompositeSink::compositeContextOf(scene), 1);
+  // With and without objects equal, mask 0: the composite is the photo (times the exposure).
+  const ImageF radiance(8, 6, 3, 0.7f);
+  sink.onFrame(makeFrame(1, radiance, radiance, 0.f));
+  const std::optional<CompositeImage> got = sink.take();
+  QVERIFY(got);
+  QCOMPARE(got->srgb8, srgb8FromLinear(scene.photo.linearRgb, 0.5));
+  // A bright object covering everything (mask 1) shows the object instead.
+  const ImageF white(8, 6, 3, 1.f);
+  sink.onFrame(makeFrame(2, white, radiance, 1.f));
+  const std::optional<CompositeImage> obj = sink.take();
+  QVERIFY(obj);
+  QCOMPARE(qRed(obj->srgb8.pixel(0, 0)), 255);
+}
+
+void StudioDocumentTest::dragMergesAndReturningIsObsolete() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  QString error;
+  QVERIFY2(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error), qPrintable(error));
+  QString reason;
+  QVERIFY(!doc.moveObject(0, Vec2(1, 1), 0, &reason));  // still preparing
+  QVERIFY(!reason.isEmpty());
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
+
+  QSignalSpy changes(&doc, &Document::changed);
+  const Vec2 start = doc.scene().objects[0].basePx;
+  const int drag1 = Document::newDragId();
+  for (int k = 1; k <= 5; ++k) QVERIFY(doc.moveObject(0, start + Vec2(-4.0 * k, -1.0 * k), drag1));
+  QCOMPARE(doc.undoStack()->count(), 1);
+  QCOMPARE(changes.count(), 5);  // one change per applied move
+  QVERIFY(doc.scene().objects[0].basePx == start + Vec2(-20, -5));
+
+  // A second drag is its own step, even of the same object.
+  const int drag2 = Document::newDragId();
+  QVERIFY(doc.moveObject(0, start + Vec2(-30, -5), drag2));
+  QCOMPARE(doc.undoStack()->count(), 2);
+  // Back to where that drag began: the step disappears.
+  QVERIFY(doc.moveObject(0, start + Vec2(-20, -5), drag2));
+  QCOMPARE(doc.undoStack()->count(), 1);
+
+  // A move off every supporting surface changes nothing.
+  QVERIFY(!doc.moveObject(0, Vec2(256, 5), drag2, &reason));
+  QVERIFY(reason.contains(QStringLiteral("objects[0]")));
+  QVERIFY(doc.scene().objects[0].basePx == start + Vec2(-20, -5));
+  QVERIFY(!doc.setObjectHeight(0, -1.0, &reason));
+  QVERIFY(!doc.moveObject(3, start, 0, &reason));
+
+  doc.undoStack()->undo();
+  QVERIFY(doc.scene().objects[0].basePx == start);
+  QVERIFY(doc.undoStack()->isClean());
+}
+
+void StudioDocumentTest::cancelDropsTheResult() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  QString error;
+  QVERIFY(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error));
+  QCOMPARE(doc.state(), Document::State::Preparing);
+  doc.cancelPrepare();
+  QCOMPARE(doc.state(), Document::State::Empty);
+  QVERIFY(!doc.prepareError().isEmpty());
+  QTest::qWait(1500);  // whatever the worker still delivers is dropped
+  QCOMPARE(doc.state(), Document::State::Empty);
+  QVERIFY(!doc.prepared());
+  // Prepared again on request.
+  doc.prepare();
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QVERIFY(doc.isReady());
+}
+
+void StudioDocumentTest::saveAsRewritesRelativePaths() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  QTemporaryDir tmp;
+  QVERIFY(QFile::copy(dir + QStringLiteral("/scene.json"), tmp.filePath(QStringLiteral("scene.json"))));
+  QVERIFY(QFile::copy(dir + QStringLiteral("/photo.png"), tmp.filePath(QStringLiteral("photo.png"))));
+  QVERIFY(QDir(tmp.path()).mkdir(QStringLiteral("sub")));
+
+  Document doc;
+  QString error;
+  QVERIFY(doc.openSceneFile(tmp.filePath(QStringLiteral("scene.json")), &error));
+  doc.cancelPrepare();  // saving needs no prepared scene
+  const std::string photo = doc.scene().photoResolved;
+
+  // Beside the photo: stays relative.
+  QVERIFY2(doc.saveAs(tmp.filePath(QStringLiteral("copy.json")), &error), qPrintable(error));
+  QCOMPARE(QString::fromStdString(doc.scene().photo), QStringLiteral("photo.png"));
+  // In a subfolder: the photo is outside it, so the path becomes absolute.
+  const QString deeper = tmp.filePath(QStringLiteral("sub/deeper.json"));
+  QVERIFY(doc.saveAs(deeper, &error));
+  QCOMPARE(doc.filePath(), QFileInfo(deeper).absoluteFilePath());
+  QVERIFY(QFileInfo(QString::fromStdString(doc.scene().photo)).isAbsolute());
+  const Expected<SceneLoadResult> back = loadSceneFile(deeper.toStdString());
+  QVERIFY(back.ok());
+  QCOMPARE(QString::fromStdString(back->doc.photoResolved), QString::fromStdString(photo));
+  QCOMPARE(QString::fromStdString(sceneToJson(back->doc)),
+           QString::fromStdString(sceneToJson(doc.scene())));
+
+  // A folder that cannot be written: an error, and the document keeps its file.
+  QVERIFY(!doc.saveAs(QStringLiteral("/proc/inlay-no/x.json"), &error));
+  QVERIFY(!error.isEmpty());
+  QCOMPARE(doc.filePath(), QFileInfo(deeper).absoluteFilePath());
+}
+
+QTEST_GUILESS_MAIN(StudioDocumentTest)
+#include "studio_document_test.moc"
