@@ -26,19 +26,26 @@ bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const Tr
                                                         RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                                                         mesh.positions.size()));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    v[3 * i + 0] = mesh.positions[i].x();
-    v[3 * i + 1] = mesh.positions[i].y();
-    v[3 * i + 2] = mesh.positions[i].z();
+    // A non-finite vertex would poison the BVH bounds: zero it; its triangles are made
+    // degenerate below.
+    const Vec3f p = mesh.positions[i].allFinite() ? mesh.positions[i] : Vec3f::Zero();
+    v[3 * i + 0] = p.x();
+    v[3 * i + 1] = p.y();
+    v[3 * i + 2] = p.z();
   }
   auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
                                                              RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
                                                              mesh.triangles.size()));
   const auto n = uint32_t(mesh.positions.size());
-  for (size_t i = 0; i < mesh.triangles.size(); ++i)
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    bool usable = true;
     for (int k = 0; k < 3; ++k) {
       const uint32_t j = mesh.triangles[i][k];
-      idx[3 * i + k] = j < n ? j : 0;  // out-of-range index: a degenerate triangle, never hit
+      usable = usable && j < n && mesh.positions[j].allFinite();
     }
+    // An unusable triangle (index out of range, non-finite vertex) becomes degenerate: never hit.
+    for (int k = 0; k < 3; ++k) idx[3 * i + k] = usable ? mesh.triangles[i][k] : 0;
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometryByID(scene, geom, geomId);
   rtcReleaseGeometry(geom);

@@ -148,6 +148,7 @@ struct PathTracer::Impl {
   std::vector<ObjectData> objects;
   std::vector<double> lightCdf;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
+  mutable std::atomic<uint64_t> rays{0};
 
   ~Impl() {
     for (auto& o : objects) {
@@ -256,6 +257,7 @@ struct PathTracer::Impl {
   struct Sums {
     Vec3 with = Vec3::Zero();
     Vec3 without = Vec3::Zero();
+    uint32_t rays = 0;
   };
 
   // Where a path stands: the next ray and what the vertices so far left it with.
@@ -284,6 +286,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
   for (;; ++st.depth) {
     const int depth = st.depth;
     const Hit hit = intersect(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir, st.tNear);
+    ++out.rays;
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
@@ -361,10 +364,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
             const double ds = ws.norm();
             ws /= ds;
             const double tFar = ds * (1.0 - 1e-4);
+            ++out.rays;
             if (mode == Mode::Shared) {
               if (!occluded(withScene, o, ws, 0, tFar))
                 add(c);
-              else if (!occluded(withoutScene, o, ws, 0, tFar))
+              else if (++out.rays, !occluded(withoutScene, o, ws, 0, tFar))
                 out.without += c;  // only an object blocks it
             } else if (!occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
               add(c);
@@ -520,7 +524,10 @@ PathTracer::~PathTracer() = default;
 
 const RenderScene& PathTracer::scene() const { return impl_->scene; }
 
-uint64_t PathTracer::nonFiniteSamples() const { return impl_->nonFiniteSamples.load(); }
+PathTracer::Stats PathTracer::stats() const {
+  return {impl_->rays.load(std::memory_order_relaxed),
+          impl_->nonFiniteSamples.load(std::memory_order_relaxed)};
+}
 
 void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   Impl& d = *impl_;
@@ -549,6 +556,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       if (cancel && cancel->shouldStop()) return false;
       Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
       double sumMask = 0, sumDiffSq = 0;
+      uint64_t rays = 0;
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
         const Vec2 px((x + rng.get(0)) * sx, (y + rng.get(1)) * sy);
@@ -558,6 +566,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
         Impl::Sums sums;
         bool objectFirst = false;
         d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
+        rays += sums.rays;
         if (!sums.with.allFinite() || !sums.without.allFinite()) {
           d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
           continue;  // dropped: counts as a sample of zero in both renders
@@ -576,6 +585,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       buffers.sumMask.at(x, y) += float(sumMask);
       buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
       buffers.samples[size_t(y) * buffers.width + x] += count;
+      d.rays.fetch_add(rays, std::memory_order_relaxed);
     }
   return true;
 }

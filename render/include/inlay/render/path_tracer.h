@@ -64,8 +64,14 @@ class PathTracer {
   // The whole frame, parallel over tiles with `threads` threads (0 = all cores).
   bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
               int threads = 0, const CancelToken* cancel = nullptr) const;
-  // Samples dropped so far because a value was not finite (they count as zero in both renders).
-  uint64_t nonFiniteSamples() const;
+  // Counters since construction (all threads): rays traced (camera, bounce and shadow rays in
+  // either scene), and samples dropped because a value was not finite (they count as zero in
+  // both renders).
+  struct Stats {
+    uint64_t rays = 0;
+    uint64_t nonFiniteSamples = 0;
+  };
+  Stats stats() const;
 
  private:
   struct Impl;
