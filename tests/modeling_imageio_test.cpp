@@ -379,6 +379,47 @@ TEST(ImageIo, TruncatedJpegIsAnError) {
   EXPECT_FALSE(loadImage(cut.string()).ok());
 }
 
+class TruncatedImage : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(TruncatedImage, IsAnErrorNotACrash) {
+  const auto dir = test::tempDir(std::string("trunc_") + GetParam());
+  ImageF img(64, 48, 3);
+  uint32_t state = 7;
+  for (float& x : img.data) {
+    state = state * 1664525u + 1013904223u;
+    x = float(state >> 8) / float(1u << 24);
+  }
+  const auto full = dir / (std::string("full.") + GetParam());
+  ASSERT_TRUE(saveImage(full.string(), img).ok());
+  const std::string bytes = readBytes(full);
+  for (size_t cut : {bytes.size() / 2, bytes.size() * 9 / 10, size_t(40)}) {
+    const auto p = dir / (std::string("cut.") + GetParam());
+    writeBytes(p, bytes.substr(0, cut));
+    auto loaded = loadImage(p.string());
+    EXPECT_FALSE(loaded.ok()) << GetParam() << " cut at " << cut << " of " << bytes.size();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, TruncatedImage,
+                         ::testing::Values("png", "jpg", "exr", "tif", "hdr"));
+
+TEST(ImageIo, CmykIsConvertedByTheReader) {
+  const auto dir = test::tempDir("cmyk");
+  const auto path = dir / "cmyk.tif";
+  if (std::system("oiiotool --help > /dev/null 2>&1") != 0) GTEST_SKIP() << "no oiiotool";
+  ASSERT_EQ(std::system(("oiiotool --pattern constant:color=0.1,0.2,0.3,0.4 8x8 4 "
+                         "--chnames C,M,Y,K -d uint8 --attrib tiff:ColorSpace CMYK -o " +
+                         path.string() + " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  auto loaded = loadImage(path.string());
+  ASSERT_TRUE(loaded.ok()) << loaded.error().message();
+  // R = (1 - C)(1 - K) and so on, then sRGB-decoded (8-bit quantised).
+  EXPECT_NEAR(linearToSrgb(loaded->linearRgb.at(3, 3, 0)), 0.9 * 0.6, 2.0 / 255);
+  EXPECT_NEAR(linearToSrgb(loaded->linearRgb.at(3, 3, 1)), 0.8 * 0.6, 2.0 / 255);
+  EXPECT_NEAR(linearToSrgb(loaded->linearRgb.at(3, 3, 2)), 0.7 * 0.6, 2.0 / 255);
+}
+
 TEST(ImageIo, PngWithWrongCrcIsAnError) {
   const auto dir = test::tempDir("crc_png");
   ImageF img(8, 8, 3, 0.5f);

@@ -157,6 +157,35 @@ TEST(Mesh, ObjPolygonsNegativeIndicesAndCorners) {
   EXPECT_TRUE(m->normals.empty());
 }
 
+TEST(Mesh, ObjMaterialsFromMtl) {
+  const auto dir = test::tempDir("obj_mtl");
+  writeFile(dir, "m.mtl",
+            "# two materials\nnewmtl red\nKd 0.8 0.1 0.1\nNs 98\nNi 1.33\nd 0.25\n"
+            "newmtl lamp\nKd 1 1 1\nKe 4 3 2\nPr 0.2\nPm 1\nNs 1000\nnewmtl unused\nKd 0 0 0\n");
+  const auto p = writeFile(dir, "m.obj",
+                           "mtllib m.mtl missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                           "f 1 2 3\nusemtl red\nf 1 2 3 4\nusemtl lamp\nf 1 3 4\n"
+                           "usemtl nowhere\nf 2 3 4\n");
+  auto m = loadMesh(p.string());
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  ASSERT_EQ(m->triangles.size(), 5u);
+  ASSERT_EQ(m->triangleMaterial.size(), 5u);
+  auto mat = [&](size_t t) { return m->materials.at(m->triangleMaterial[t]); };
+  EXPECT_EQ(mat(0).name, "default");  // before any usemtl
+  EXPECT_EQ(mat(1).name, "red");
+  EXPECT_EQ(mat(2).name, "red");
+  EXPECT_EQ(mat(3).name, "lamp");
+  EXPECT_EQ(mat(4).name, "nowhere");  // not in any MTL: defaults
+  EXPECT_EQ(mat(1).baseColor, Vec3(0.8, 0.1, 0.1));
+  EXPECT_NEAR(mat(1).roughness, std::sqrt(2.0 / 100.0), 1e-12);
+  EXPECT_NEAR(mat(1).ior, 1.33, 1e-12);
+  EXPECT_NEAR(mat(1).transmission, 0.75, 1e-12);
+  EXPECT_EQ(mat(3).emission, Vec3(4, 3, 2));
+  EXPECT_NEAR(mat(3).roughness, 0.2, 1e-12);  // Pr wins over Ns
+  EXPECT_NEAR(mat(3).metallic, 1.0, 1e-12);
+  EXPECT_EQ(mat(4).baseColor, AssetMaterial{}.baseColor);
+}
+
 struct BadMesh {
   const char* name;
   const char* file;

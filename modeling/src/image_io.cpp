@@ -229,13 +229,10 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
   if (spec.nchannels < 1 || spec.nchannels > 64)
     return Error{path, "", "unsupported channel count " + std::to_string(spec.nchannels)};
 
-  const std::string colorSpace = std::string(spec.get_string_attribute("jpeg:ColorSpace")) +
-                                 std::string(spec.get_string_attribute("tiff:ColorSpace")) +
-                                 std::string(spec.get_string_attribute("oiio:ColorSpace"));
-  bool cmyk = colorSpace.find("CMYK") != std::string::npos;
-  if (spec.nchannels >= 4 && spec.channel_name(0) == "C" && spec.channel_name(1) == "M")
-    cmyk = true;
-  if (cmyk)
+  // OpenImageIO converts CMYK JPEG/TIFF to RGB itself (channels R, G, B); raw CMYK channels
+  // would need a colour profile we do not have.
+  if (spec.nchannels >= 4 && spec.channel_name(0) == "C" && spec.channel_name(1) == "M" &&
+      spec.channel_name(2) == "Y")
     return Error{path, "", "CMYK images are not supported; convert the photo to RGB"};
 
   const std::string formatName = in->format_name();

@@ -221,11 +221,80 @@ void splitTokens(std::string_view line, std::vector<std::string_view>& toks) {
   }
 }
 
-TriangleMesh readObj(const std::string& text, const MeshLimits& limits) {
+// Clamps what a file may say to what the renderer can use.
+void sanitize(AssetMaterial& mat) {
+  auto clamp01 = [](double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; };
+  for (int k = 0; k < 3; ++k) {
+    mat.baseColor[k] = clamp01(mat.baseColor[k]);
+    mat.emission[k] = std::isfinite(mat.emission[k]) ? std::max(0.0, mat.emission[k]) : 0.0;
+  }
+  mat.metallic = clamp01(mat.metallic);
+  mat.roughness = clamp01(mat.roughness);
+  mat.transmission = clamp01(mat.transmission);
+  if (!(mat.ior >= 1.0 && mat.ior <= 5.0)) mat.ior = 1.5;
+}
+
+// Materials named by `usemtl`, in that order, filled from the MTL files. Lenient: a missing
+// MTL file or a malformed line leaves the defaults (the geometry is still worth loading).
+std::vector<AssetMaterial> readMtl(const std::vector<std::string>& files, const fs::path& dir,
+                                   const std::vector<std::string>& names) {
+  std::vector<AssetMaterial> out(names.size());
+  std::map<std::string, size_t> index;
+  for (size_t i = 0; i < names.size(); ++i) {
+    out[i].name = names[i];
+    index.emplace(names[i], i);
+  }
+  std::vector<std::string_view> toks;
+  for (const std::string& f : files) {
+    std::error_code ec;
+    const fs::path p = dir / f;
+    if (!fs::is_regular_file(p, ec) || fs::file_size(p, ec) > (64u << 20)) continue;
+    std::ifstream in(p, std::ios::binary);
+    std::string line;
+    AssetMaterial* cur = nullptr;
+    bool haveRoughness = false;
+    while (std::getline(in, line)) {
+      splitTokens(line, toks);
+      if (toks.empty() || toks[0][0] == '#') continue;
+      if (toks[0] == "newmtl") {
+        auto it = toks.size() >= 2 ? index.find(std::string(toks[1])) : index.end();
+        cur = it == index.end() ? nullptr : &out[it->second];
+        haveRoughness = false;
+        continue;
+      }
+      if (!cur) continue;
+      double x[3] = {0, 0, 0};
+      size_t n = 0;
+      for (; n < 3 && n + 1 < toks.size() && parseDouble(toks[n + 1], x[n]); ++n) {
+      }
+      const std::string_view kw = toks[0];
+      if (kw == "Kd" && n == 3) cur->baseColor = Vec3(x[0], x[1], x[2]);
+      else if (kw == "Ke" && n == 3) cur->emission = Vec3(x[0], x[1], x[2]);
+      else if (kw == "Ni" && n >= 1) cur->ior = x[0];
+      else if (kw == "d" && n >= 1) cur->transmission = 1.0 - x[0];
+      else if (kw == "Tr" && n >= 1) cur->transmission = x[0];
+      else if (kw == "Pm" && n >= 1) cur->metallic = x[0];
+      else if (kw == "Pr" && n >= 1) {
+        cur->roughness = x[0];
+        haveRoughness = true;
+      } else if (kw == "Ns" && n >= 1 && !haveRoughness && x[0] >= 0) {
+        cur->roughness = std::sqrt(2.0 / (x[0] + 2.0));  // Blinn-Phong exponent -> roughness
+      }
+    }
+  }
+  for (AssetMaterial& m : out) sanitize(m);
+  return out;
+}
+
+TriangleMesh readObj(const std::string& text, const std::string& path, const MeshLimits& limits) {
   std::vector<Vec3f> v, vn;
   std::vector<Vec2f> vt;
   std::vector<std::vector<ObjCorner>> faces;
   std::vector<size_t> faceLine;
+  std::vector<int> faceMaterial;  // index into materialNames, -1 before any usemtl
+  std::vector<std::string> materialNames, mtlFiles;
+  std::map<std::string, int> materialIndex;
+  int currentMaterial = -1;
   std::vector<std::string_view> toks;
   size_t lineNo = 0, pos = 0, triangleCount = 0;
   while (pos < text.size()) {
@@ -298,8 +367,16 @@ TriangleMesh readObj(const std::string& text, const MeshLimits& limits) {
         fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
       faces.push_back(std::move(face));
       faceLine.push_back(lineNo);
+      faceMaterial.push_back(currentMaterial);
+    } else if (kw == "usemtl" && toks.size() >= 2) {
+      const std::string name(toks[1]);
+      auto [it, added] = materialIndex.emplace(name, int(materialNames.size()));
+      if (added) materialNames.push_back(name);
+      currentMaterial = it->second;
+    } else if (kw == "mtllib") {
+      for (size_t k = 1; k < toks.size(); ++k) mtlFiles.emplace_back(toks[k]);
     }
-    // Other statements (o, g, s, usemtl, mtllib, l, p) do not change the geometry we keep.
+    // Other statements (o, g, s, l, p) do not change what we keep.
   }
 
   // Range checks against the final counts (forward references are tolerated).
@@ -322,6 +399,15 @@ TriangleMesh readObj(const std::string& text, const MeshLimits& limits) {
   }
 
   TriangleMesh m;
+  if (!materialNames.empty()) {
+    m.materials = readMtl(mtlFiles, fs::path(path).parent_path(), materialNames);
+    uint32_t noMaterial = uint32_t(m.materials.size());
+    if (std::find(faceMaterial.begin(), faceMaterial.end(), -1) != faceMaterial.end())
+      m.materials.push_back(AssetMaterial{"default"});
+    for (size_t fi = 0; fi < faces.size(); ++fi)
+      m.triangleMaterial.insert(m.triangleMaterial.end(), faces[fi].size() - 2,
+                                faceMaterial[fi] < 0 ? noMaterial : uint32_t(faceMaterial[fi]));
+  }
   if (!allVt && !allVn) {
     m.positions = std::move(v);
     for (const auto& face : faces)
@@ -838,16 +924,7 @@ TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
         mat.transmission = ext["KHR_materials_transmission"]["transmissionFactor"].get<double>();
     }
     mat.emission *= strength;
-    // Sanitise: the file may say anything.
-    auto clamp01 = [](double v) { return std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0; };
-    for (int k = 0; k < 3; ++k) {
-      mat.baseColor[k] = clamp01(mat.baseColor[k]);
-      mat.emission[k] = std::isfinite(mat.emission[k]) ? std::max(0.0, mat.emission[k]) : 0.0;
-    }
-    mat.metallic = clamp01(mat.metallic);
-    mat.roughness = clamp01(mat.roughness);
-    mat.transmission = clamp01(mat.transmission);
-    if (!(mat.ior >= 1.0 && mat.ior <= 5.0)) mat.ior = 1.5;
+    sanitize(mat);
     m.materials.push_back(mat);
   }
 
@@ -949,7 +1026,7 @@ Expected<TriangleMesh> loadMesh(const std::string& pathOrBuiltin, const MeshLimi
   const std::string ext = lowerExtension(path);
   try {
     TriangleMesh m;
-    if (ext == ".obj") m = readObj(readWholeFile(path), limits);
+    if (ext == ".obj") m = readObj(readWholeFile(path), path, limits);
     else if (ext == ".ply") m = readPly(readWholeFile(path), limits);
     else if (ext == ".gltf" || ext == ".glb") m = readGltf(path, limits);
     else
