@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -203,6 +204,40 @@ TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
   EXPECT_LT(text.find("\"version\""), text.find("\"photo\""));
   EXPECT_LT(text.find("\"photo\""), text.find("\"camera\""));
   EXPECT_LT(text.find("\"objects\""), text.find("\"render\""));
+}
+
+TEST(SceneFile, SaveRefusesWhatCouldNotBeReadBack) {
+  const fs::path dir = sceneDir("save_refuses");
+  writeText(dir / "scene.json", kFullScene);
+  auto r = loadSceneFile((dir / "scene.json").string());
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const std::string before = sceneToJson(r->doc);
+  SceneDoc doc = r->doc;
+  doc.objects[1].heightM = std::nan("");
+  auto s = saveSceneFile((dir / "scene.json").string(), doc);
+  ASSERT_FALSE(s.ok());
+  EXPECT_EQ(s.error().key, "objects[1].height_m");
+  doc = r->doc;
+  doc.photo = std::string("bad\xff\xfe.jpg");
+  s = saveSceneFile((dir / "scene.json").string(), doc);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().reason.find("UTF-8"), std::string::npos);
+  EXPECT_FALSE(sceneToJson(doc).empty());  // replaced, not thrown
+  // The user's file is untouched.
+  auto again = loadSceneFile((dir / "scene.json").string());
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(sceneToJson(again->doc), before);
+}
+
+TEST(SceneFile, DuplicateKeysWarn) {
+  const fs::path dir = sceneDir("dup");
+  auto r = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "render": {"spp": 4, "spp": 8}})",
+      dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r->doc.render.spp, 8);
+  ASSERT_EQ(r->warnings.size(), 1u);
+  EXPECT_NE(r->warnings[0].find("render.spp"), std::string::npos) << r->warnings[0];
 }
 
 TEST(SceneFile, MinimalSceneGetsDefaults) {

@@ -652,7 +652,9 @@ Expected<SceneLoadResult> loadSceneFile(const std::string& path, const SceneLimi
                         limits);
 }
 
-std::string sceneToJson(const SceneDoc& doc) {
+namespace {
+
+ojson buildJson(const SceneDoc& doc) {
   ojson j;
   j["format"] = "inlay-scene";
   j["version"] = kVersion;
@@ -744,12 +746,40 @@ std::string sceneToJson(const SceneDoc& doc) {
   r["exposure"] = doc.render.exposure;
   r["seed"] = doc.render.seed;
   j["render"] = r;
-  // Non-finite doubles would be written as null; the parser rejects them on reading back.
-  return j.dump(2) + "\n";
+  return j;
+}
+
+// The key path of the first non-finite number (JSON cannot hold it: nlohmann writes null).
+std::optional<std::string> firstNonFinite(const ojson& j, const std::string& path) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) return path;
+  if (j.is_object())
+    for (auto it = j.begin(); it != j.end(); ++it)
+      if (auto p = firstNonFinite(it.value(), child(path, it.key()))) return p;
+  if (j.is_array())
+    for (size_t i = 0; i < j.size(); ++i)
+      if (auto p = firstNonFinite(j[i], child(path, i))) return p;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string sceneToJson(const SceneDoc& doc) {
+  // Invalid UTF-8 in a path is replaced (U+FFFD) rather than thrown; saveSceneFile refuses it.
+  return buildJson(doc).dump(2, ' ', false, ojson::error_handler_t::replace) + "\n";
 }
 
 Status saveSceneFile(const std::string& path, const SceneDoc& doc) {
-  return writeFileAtomically(path, sceneToJson(doc));
+  const ojson j = buildJson(doc);
+  // Never write a file that would not read back.
+  if (auto key = firstNonFinite(j, ""))
+    return Error{path, *key, "not a finite number; nothing was written"};
+  std::string text;
+  try {
+    text = j.dump(2) + "\n";
+  } catch (const nlohmann::json::exception&) {
+    return Error{path, "", "a path or name is not valid UTF-8; nothing was written"};
+  }
+  return writeFileAtomically(path, text);
 }
 
 }  // namespace inlay
