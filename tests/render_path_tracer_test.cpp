@@ -125,6 +125,40 @@ TEST(Furnace, GlossyWhiteConservesEnergy) {
   }
 }
 
+// A glass slab seen at near-normal incidence in front of an emitter, in a black room: the
+// incoherent sum of the inter-reflections transmits (1 - R) / (1 + R) with R = ((n-1)/(n+1))^2.
+TEST(Glass, SlabTransmitsFresnelSeries) {
+  const int w = 32, h = 24;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 10), RoomBox{}, 0.0);
+  const double le = 2.0;
+  s.lights.push_back(test::rectLight(Vec3(0, 1.3, -3), Vec3(0.5, 0, 0), Vec3(0, 0.5, 0), Vec3::Constant(le)));
+  ASSERT_GT(s.lights[0].normal().z(), 0.99);
+  auto box = std::make_shared<TriangleMesh>();
+  const auto faces = test::boxFaces(RoomBox{-0.5, 0.5, -0.2, 0.2, 1.0});  // y in [0, 1]
+  for (const auto& f : faces) {
+    TriangleMesh q = test::quadMesh(test::rectCorners(f.c, f.u, f.v));
+    std::swap(q.triangles[0][1], q.triangles[0][2]);  // box faces wind inward: turn them outward
+    std::swap(q.triangles[1][1], q.triangles[1][2]);
+    box->append(q);
+  }
+  InsertedObject o;
+  o.meshObject = box;
+  o.worldFromObject = test::translation(Vec3(0, 0.8, -2.0));
+  o.material = mat(Material::Kind::Glass, 1.0);
+  o.material.ior = 1.5;
+  s.objects.push_back(o);
+  TracerOptions opt;
+  opt.maxDepth = 16;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 64, 8));
+  const double r = 0.04;
+  const RegionStats g = regionStats(b.meanWith(), b.meanMask(), 1.f, le * (1 - r) / (1 + r));
+  ASSERT_EQ(g.pixels, w * h);
+  std::printf("[ glass ] slab transmission %.5f, expected %.5f\n", g.mean.x() / le, (1 - r) / (1 + r));
+  EXPECT_NEAR(g.mean.x() / le, (1 - r) / (1 + r), 0.01);
+}
+
 // Form factor from a point to a parallel rectangle [x0,x1] x [z0,z1] at height c above it
 // (irradiance / (pi * radiance)): the corner formula, signed, summed over four corners.
 double cornerFormFactor(double x, double z, double c) {
@@ -472,6 +506,45 @@ TEST(ProjectedAlbedo, LookupFollowsFirstSurfaces) {
   EXPECT_TRUE(pa.lookup(5, Vec3(0, 1.3, 0.5)).isApprox(Vec3(0.1, 0.2, 0.3)));
   EXPECT_TRUE(pa.lookup(42, onBack).isApprox(Vec3(0.5, 0.5, 0.5)));
   EXPECT_TRUE(pa.lookup(-1, onBack).isApprox(Vec3(0.5, 0.5, 0.5)));
+}
+
+// The point of correlated rendering: at equal samples, the error of with - without is far
+// below that of two independent renders (which are noisy everywhere, not only near the object).
+TEST(Differential, CorrelatedBeatsIndependentRenders) {
+  const int w = 32, h = 24, spp = 16;
+  const RenderScene scene = closedRoomScene(w, h, true);
+  RenderScene empty = scene;
+  empty.objects.clear();
+  PathTracer tracer(scene), emptyTracer(empty);
+  DifferentialBuffers ref(w, h);
+  ASSERT_TRUE(tracer.render(ref, 1000, 256, 99));  // reference: other samples, 16x as many
+  auto diffOf = [](const ImageF& a, const ImageF& b) {
+    ImageF d = a;
+    for (size_t i = 0; i < d.data.size(); ++i) d.data[i] -= b.data[i];
+    return d;
+  };
+  const ImageF refDiff = diffOf(ref.meanWith(), ref.meanWithout());
+  auto rmse = [&](const ImageF& d) {
+    double s = 0;
+    for (size_t i = 0; i < d.data.size(); ++i) s += double(d.data[i] - refDiff.data[i]) * (d.data[i] - refDiff.data[i]);
+    return std::sqrt(s / d.data.size());
+  };
+  DifferentialBuffers corr(w, h), withOnly(w, h), withoutOnly(w, h);
+  const uint64_t r0 = tracer.stats().rays;
+  ASSERT_TRUE(tracer.render(corr, 0, spp, 1));
+  const uint64_t r1 = tracer.stats().rays;
+  ASSERT_TRUE(tracer.render(withOnly, 0, spp, 2));
+  const uint64_t r2 = tracer.stats().rays;
+  ASSERT_TRUE(emptyTracer.render(withoutOnly, 0, spp, 3));
+  const double raysCorr = double(r1 - r0), raysIndep = double(r2 - r1 + emptyTracer.stats().rays);
+  const double eCorr = rmse(diffOf(corr.meanWith(), corr.meanWithout()));
+  const double eIndep = rmse(diffOf(withOnly.meanWith(), withoutOnly.meanWith()));
+  // At equal cost (rays as the cost), error goes as 1 / sqrt(cost).
+  const double equalCost = eIndep / eCorr * std::sqrt(raysIndep / raysCorr);
+  std::printf("[ differential ] RMSE of with-without at %d spp: correlated %.4f, independent %.4f (%.1fx at "
+              "equal samples, %.1fx at equal rays)\n",
+              spp, eCorr, eIndep, eIndep / eCorr, equalCost);
+  EXPECT_GT(equalCost, 3.0);
 }
 
 // Throughput figure (printed, not asserted): paths and rays per second on this machine.
