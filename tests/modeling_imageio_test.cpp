@@ -475,6 +475,9 @@ TEST(ImageIo, UnknownExtensionAndBadImagesAreRefused) {
   EXPECT_FALSE(saveImage((dir / "a.png").string(), ImageF(2, 2, 2)).ok());
   EXPECT_FALSE(saveImage((dir / "missing_dir" / "a.png").string(), ImageF(2, 2, 3)).ok());
   EXPECT_EQ(countFiles(dir), 0u);
+  // Extensions are case-insensitive.
+  ASSERT_TRUE(saveImage((dir / "UPPER.PNG").string(), ImageF(2, 2, 3, 0.5f)).ok());
+  EXPECT_TRUE(loadImage((dir / "UPPER.PNG").string()).ok());
 }
 
 // Caps the size of files this process may write, so a write fails part-way (works as root,
@@ -536,9 +539,12 @@ TEST(ImageIo, FailedWriteLeavesTheOldFile) {
   EXPECT_TRUE(readBytes(tif) == tifBefore);
   EXPECT_EQ(countFiles(dir), 3u);
 
-  // A writable folder: the new contents replace the old.
+  // A writable folder: the new contents replace the old, keeping its permissions.
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   ASSERT_TRUE(writeFileAtomically(path.string(), "new").ok());
   EXPECT_TRUE(readBytes(path) == "new");
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
 }
 
 TEST(ImageIo, LayersExrHasNamedChannels) {

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace inlay {
@@ -360,6 +361,9 @@ Status writeFileAtomically(const std::string& path, const std::string& bytes) {
   if (fd < 0)
     return Error{path, "", std::string("cannot create a temporary file beside it: ") +
                                std::strerror(errno)};
+  // Keep the permissions of the file being replaced.
+  struct stat old {};
+  if (::stat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode)) ::fchmod(fd, old.st_mode & 07777);
   size_t done = 0;
   int err = 0;
   while (done < bytes.size()) {
