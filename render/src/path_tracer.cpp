@@ -12,6 +12,22 @@
 // (only then do the contributions differ). When the with-path hits an object, the same ray is
 // traced on in the without-scene (WithoutOnly) and the with-path continues (WithOnly); both use
 // the random dimensions of their depth, so they stay correlated.
+//
+// Light transport: unidirectional path tracing with next-event estimation to the area lights
+// (one light picked by power, a uniform point on its emitter quad, a shadow ray) combined with
+// BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
+// full weight. Emissive objects are not sampled by NEE; every hit on them counts in full.
+// Materials: room surfaces are Lambertian with the projected albedo; objects are Lambertian,
+// Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Mirror, clear smooth
+// Glass (Fresnel, Snell, no absorption, no eta^2 radiance scaling: it cancels on the way out),
+// or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
+// min(0.95, max throughput).
+//
+// Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0 light pick, 1-2 light
+// point, 3 lobe or Fresnel choice, 4-5 direction, 6 roulette}.
+//
+// Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
+// emitters sit 1 mm in front of their lights (kLightOffsetM).
 #include "embree_util.h"
 #include "sampling.h"
 

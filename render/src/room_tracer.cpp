@@ -6,6 +6,9 @@
 #include "inlay/render/path_tracer.h"
 #include "inlay/render/scene.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace inlay {
@@ -120,13 +123,15 @@ void ProjectedAlbedo::computeFirstSurfaces(const SceneGeometry& geometry) {
   const int h = albedo.empty() ? camera.heightPx : albedo.height;
   firstSurfacePerPixel.assign(size_t(std::max(0, w)) * std::max(0, h), -1);
   if (w <= 0 || h <= 0 || camera.widthPx <= 0 || camera.heightPx <= 0) return;
-  RoomTracer tracer(geometry);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Vec2 px((x + 0.5) * camera.widthPx / w, (y + 0.5) * camera.heightPx / h);
-      const auto hit = tracer.intersect(camera.rayThroughPixel(px), 1e-6);
-      if (hit) firstSurfacePerPixel[size_t(y) * w + x] = hit->surfaceId;
-    }
+  const RoomTracer tracer(geometry);
+  tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < w; ++x) {
+        const Vec2 px((x + 0.5) * camera.widthPx / w, (y + 0.5) * camera.heightPx / h);
+        const auto hit = tracer.intersect(camera.rayThroughPixel(px), 1e-6);
+        if (hit) firstSurfacePerPixel[size_t(y) * w + x] = hit->surfaceId;
+      }
+  });
 }
 
 }  // namespace inlay
