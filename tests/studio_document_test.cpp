@@ -70,7 +70,7 @@ void StudioDocumentTest::srgbEncodingHasKnownValues() {
   QCOMPARE(qGreen(srgb8FromLinear(quarter, 1.0).pixel(0, 0)), 188);
   // Every 8-bit code round-trips through linear.
   ImageF ramp(256, 1, 3);
-  for (int x = 0; x < 256; ++x) ramp.setRgb(x, 0, Vec3::Constant(srgbToLinear(x / 255.f)));
+  for (int x = 0; x < 256; ++x) ramp.setRgb(x, 0, Vec3::Constant(srgbToLinear(float(x) / 255.f)));
   const QImage r = srgb8FromLinear(ramp);
   for (int x = 0; x < 256; ++x) QCOMPARE(qBlue(r.pixel(x, 0)), x);
 }

@@ -157,6 +157,14 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   QCOMPARE(doc->undoStack()->count(), 1);
   QVERIFY2(!window.statusBar()->currentMessage().isEmpty(), "no reason shown");
 
+  // --- Arrow keys nudge the selected object, one undo step per press ---
+  view->setFocus();
+  QTest::keyClick(view, Qt::Key_Left, Qt::ShiftModifier);
+  QVERIFY(doc->scene().objects[0].basePx == settled + Vec2(-10, 0));
+  QCOMPARE(doc->undoStack()->count(), 2);
+  doc->undoStack()->undo();
+  QVERIFY(doc->scene().objects[0].basePx == settled);
+
   // --- Edits from the properties dock are undoable commands too ---
   PropertiesDock* props = window.propertiesDock();
   QCOMPARE(doc->selectedObject(), 0);

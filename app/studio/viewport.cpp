@@ -3,6 +3,7 @@
 #include "document.h"
 #include "render_controller.h"
 
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -158,9 +159,17 @@ void Viewport::paintEvent(QPaintEvent*) {
                                                                  : renderer_->compositeImage();
   const QSize imgSize = imageSize();
   if (!image.isNull()) {
-    p.setRenderHint(QPainter::SmoothPixmapTransform, scale_ < 1.0);
     const QRectF target(offset_, QSizeF(imgSize.width() * scale_, imgSize.height() * scale_));
-    p.drawImage(target, image, QRectF(image.rect()));
+    const QSize screenSize = target.size().toSize();
+    if (scale_ < 1.0 && !screenSize.isEmpty()) {
+      if (image.cacheKey() != scaledKey_ || scaledImage_.size() != screenSize) {
+        scaledImage_ = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+        scaledKey_ = image.cacheKey();
+      }
+      p.drawImage(target, scaledImage_, QRectF(scaledImage_.rect()));
+    } else {
+      p.drawImage(target, image, QRectF(image.rect()));  // magnified: nearest, pixels visible
+    }
   }
   p.setRenderHint(QPainter::Antialiasing);
 
@@ -347,6 +356,29 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     setCursor(objectAt(event->position()) >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
     update();
   }
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+  const int i = document_->selectedObject();
+  Vec2 step(0, 0);
+  switch (event->key()) {
+    case Qt::Key_Left: step = Vec2(-1, 0); break;
+    case Qt::Key_Right: step = Vec2(1, 0); break;
+    case Qt::Key_Up: step = Vec2(0, -1); break;
+    case Qt::Key_Down: step = Vec2(0, 1); break;
+    default: QWidget::keyPressEvent(event); return;
+  }
+  if (i < 0 || i >= document_->objectCount()) {
+    QWidget::keyPressEvent(event);
+    return;
+  }
+  if (event->modifiers() & Qt::ShiftModifier) step *= 10.0;
+  QString reason;
+  if (document_->moveObject(i, document_->scene().objects[size_t(i)].basePx + step, 0, &reason))
+    Q_EMIT statusMessage(QString());
+  else
+    Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
+  event->accept();
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {

@@ -8,12 +8,14 @@
 //
 // Mouse: left press on an object's marker (within kPickRadiusPx) selects it and a drag moves its
 // base (Document::moveObject, one undo step per drag; a pixel not on a supporting surface keeps
-// the last valid position and reports the reason through statusMessage()). Wheel zooms about
-// the cursor; middle drag pans. GUI thread only.
+// the last valid position and reports the reason through statusMessage()). Arrow keys nudge
+// the selected object by one image pixel (ten with Shift), one undo step each. Wheel zooms
+// about the cursor; middle drag pans. GUI thread only.
 #pragma once
 
 #include "inlay/modeling/core.h"
 
+#include <QImage>
 #include <QPointF>
 #include <QWidget>
 
@@ -57,6 +59,7 @@ class Viewport : public QWidget {
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
+  void keyPressEvent(QKeyEvent* event) override;
 
  private:
   QSize imageSize() const;
@@ -76,6 +79,11 @@ class Viewport : public QWidget {
   bool panning_ = false;
   QPointF lastPanPos_;
   int hoverObject_ = -1;
+
+  // The shown image resampled to the screen size when zoomed out (smooth resampling of a large
+  // photo on every paint would make drags stutter). A cache of pixels, not of overlay state.
+  QImage scaledImage_;
+  qint64 scaledKey_ = 0;
 };
 
 }  // namespace inlay::studio
