@@ -60,7 +60,13 @@ int main(int argc, char** argv) {
       QStringLiteral("n"), QStringLiteral("4"));
   parser.addOption(screenshotOpt);
   parser.addOption(waitSppOpt);
-  parser.process(app);
+  // Not process(): a usage error exits with 2, as cli.md asks.
+  if (!parser.parse(QCoreApplication::arguments())) {
+    std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(parser.errorText()));
+    return 2;
+  }
+  if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
+  if (parser.isSet(QStringLiteral("version"))) parser.showVersion();
 
   const QStringList files = parser.positionalArguments();
   if (files.size() > 1) {
@@ -100,7 +106,8 @@ int main(int argc, char** argv) {
     bool done = false;
     int rc = 0;
     if (state == Document::State::Failed || state == Document::State::Empty) {
-      std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(window.document()->prepareError()));
+      if (state == Document::State::Empty)  // a failure was already reported by the window
+        std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(window.document()->prepareError()));
       done = true;
       rc = 2;
     } else if (renderer->isCurrent() &&
