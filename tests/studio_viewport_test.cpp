@@ -71,6 +71,7 @@ class StudioViewportTest : public QObject {
   void dragMovesObjectAsOneUndoStep();
   void germanTranslation();
   void badPhotoReportsErrorWithoutCrash();
+  void embeddedExampleOpens();
 };
 
 void StudioViewportTest::initTestCase() {
@@ -254,6 +255,21 @@ void StudioViewportTest::badPhotoReportsErrorWithoutCrash() {
   QString reason;
   QVERIFY(!window.document()->moveObject(0, Vec2(10, 10), 0, &reason));
   QVERIFY(!reason.isEmpty());
+}
+
+void StudioViewportTest::embeddedExampleOpens() {
+  if (!QFile::exists(QStringLiteral(":/example/scene.json")))
+    QSKIP("the example was not embedded (resources/example absent at configure time)");
+  QVERIFY(QFile::exists(QStringLiteral(":/icons/inlay.svg")));
+  MainWindow window;
+  window.setInteractive(false);
+  QVERIFY(window.openEmbeddedExample());
+  const QString path = window.document()->filePath();
+  QVERIFY(!path.startsWith(QLatin1String(":")));
+  QVERIFY(QFile::exists(path));
+  QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, 60000);
+  QVERIFY2(window.document()->isReady(), qPrintable(window.document()->prepareError()));
+  QCOMPARE(window.document()->objectCount(), 1);
 }
 
 QTEST_MAIN(StudioViewportTest)

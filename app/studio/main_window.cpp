@@ -366,7 +366,11 @@ bool MainWindow::openPath(const QString& path) {
 bool MainWindow::openExample() {
   const std::string onDisk = exampleScenePath();
   if (!onDisk.empty()) return openPath(QString::fromStdString(onDisk));
-  // Unpack the embedded copy (scene.json refers to its photo by a relative path).
+  return openEmbeddedExample();
+}
+
+bool MainWindow::openEmbeddedExample() {
+  // Unpacked whole: scene.json refers to its photo (and any mesh) by relative paths.
   if (!QFile::exists(QStringLiteral(":/example/scene.json"))) {
     showError(tr("Cannot open the example"), tr("The example scene is not installed."));
     return false;

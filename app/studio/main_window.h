@@ -42,6 +42,9 @@ class MainWindow : public QMainWindow {
   bool openPath(const QString& path);
   // The bundled example: exampleScenePath(), or the copy embedded in the program.
   bool openExample();
+  // The copy embedded in the program (:/example/), unpacked to a temporary folder that lives
+  // as long as the window.
+  bool openEmbeddedExample();
   // Writes the scene file; returns false (after telling the user) on failure.
   bool saveTo(const QString& path);
   // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear);
