@@ -23,8 +23,8 @@
 // or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
 // min(0.95, max throughput).
 //
-// Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0 light pick, 1-2 light
-// point, 3 lobe or Fresnel choice, 4-5 direction, 6 roulette}.
+// Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0-1 light point, 2-3
+// direction, 4 light pick, 5 lobe or Fresnel choice, 6 roulette} (pairs are 2D-stratified).
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
@@ -347,18 +347,20 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (ns.dot(ngFacing) < 0) ns = -ns;
     const double eps = rayEpsilon(hit.point);
     const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
+    const auto pickAndLobe = rng.get2(dim / 2 + 2);
 
     if (bsdf.nonSpecular()) {
       const Frame frame(ns);
       const Vec3 woLocal = frame.toLocal(wo);
       // Next-event estimation: one light by power, one point uniformly on its emitter quad.
       if (!lights.empty() && lightCdf.back() > 0) {
-        const double uPick = rng.get(dim + 0) * lightCdf.back();
+        const double uPick = pickAndLobe[0] * lightCdf.back();
         const size_t li = std::min(lights.size() - 1, size_t(std::upper_bound(lightCdf.begin(),
                                                                                   lightCdf.end(), uPick) -
                                                                  lightCdf.begin()));
         const LightData& l = lights[li];
-        const Vec3 y = sampleQuadUniform(l.emitter, rng.get(dim + 1), rng.get(dim + 2));
+        const auto uLight = rng.get2(dim / 2);
+        const Vec3 y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
         Vec3 w = y - hit.point;
         const double d2 = w.squaredNorm();
         const double d = std::sqrt(d2);
@@ -392,7 +394,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
           }
         }
       }
-      const BsdfSample s = bsdf.sample(woLocal, rng.get(dim + 3), rng.get(dim + 4), rng.get(dim + 5));
+      const auto uDir = rng.get2(dim / 2 + 1);
+      const BsdfSample s = bsdf.sample(woLocal, pickAndLobe[1], uDir[0], uDir[1]);
       if (!s.valid) return;
       dir = frame.toWorld(s.dir).normalized();
       if (dir.dot(ngFacing) <= 0) return;  // shading normal sent it below the surface
@@ -416,7 +419,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       if (cosI <= 0) n = ngFacing, cosI = wo.dot(n);
       double cosT = 0;
       const double f = fresnelDielectric(cosI, eta, &cosT);
-      if (rng.get(dim + 3) < f) {
+      if (pickAndLobe[1] < f) {
         dir = reflect(wo, n).normalized();
         origin = hit.point + eps * ngFacing;
         if (dir.dot(ngFacing) <= 0) return;
@@ -575,7 +578,8 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       uint64_t rays = 0;
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
-        const Vec2 px((x + rng.get(0)) * sx, (y + rng.get(1)) * sy);
+        const auto jitter = rng.get2(0);
+        const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
         Impl::PathState st;
         st.origin = eye;
         st.dir = cam.directionThroughPixel(px);

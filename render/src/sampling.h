@@ -24,20 +24,66 @@ inline uint32_t pcgHash(uint32_t v) {
   return (word >> 22u) ^ word;
 }
 
+inline uint32_t reverseBits(uint32_t x) {
+  x = (x << 16) | (x >> 16);
+  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+  return x;
+}
+
+// Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling").
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  x = reverseBits(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return reverseBits(x);
+}
+
+// The first two Sobol' dimensions (a (0,2)-sequence in base 2).
+inline uint32_t sobol0(uint32_t i) { return reverseBits(i); }
+struct Sobol1Table {
+  uint32_t v[32];
+  constexpr Sobol1Table() : v() {
+    v[0] = 0x80000000u;
+    for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+  }
+};
+inline constexpr Sobol1Table kSobol1{};
+inline uint32_t sobol1(uint32_t i) {
+  uint32_t r = 0;
+  for (; i; i &= i - 1) r ^= kSobol1.v[__builtin_ctz(i)];
+  return r;
+}
+
 // Random numbers as a pure function of (pixel x, y, sample, dimension, seed): every render
-// replays exactly and the with-object and without-object paths share them.
+// replays exactly and the with-object and without-object paths share them. Dimensions come in
+// pairs (2k, 2k+1), each pair an Owen-scrambled, index-shuffled 2D Sobol' point set per pixel
+// (Burley's padding): stratified in 2D for every pair and in 1D for every dimension, so soft
+// shadows and pixel footprints converge faster than with independent numbers; a pair's first
+// 2^m samples form a (0,m,2)-net.
 class SampleRng {
  public:
   SampleRng(uint32_t x, uint32_t y, uint32_t sample, uint32_t seed)
-      : key_(pcgHash(sample + pcgHash(y + pcgHash(x + pcgHash(seed))))) {}
-  // Uniform in [0, 1).
-  double get(uint32_t dimension) const {
-    const uint32_t h = pcgHash(key_ ^ pcgHash(dimension * 0x9E3779B9u + 0x632BE5ABu));
-    return double(h >> 8) * (1.0 / 16777216.0);
+      : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))), sample_(sample) {}
+  // Dimensions 2 pair and 2 pair + 1, uniform in [0, 1)^2.
+  std::array<double, 2> get2(uint32_t pair) const {
+    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
+    const uint32_t index = nestedUniformScramble(sample_, pairSeed);
+    return {toUnit(nestedUniformScramble(sobol0(index), pcgHash(pairSeed))),
+            toUnit(nestedUniformScramble(sobol1(index), pcgHash(pairSeed + 1u)))};
   }
+  // One dimension, uniform in [0, 1).
+  double get(uint32_t dimension) const { return get2(dimension >> 1)[dimension & 1u]; }
 
  private:
-  uint32_t key_;
+  static double toUnit(uint32_t bits) { return double(bits >> 8) * (1.0 / 16777216.0); }
+  uint32_t pixelKey_;
+  uint32_t sample_;
 };
 
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
