@@ -4,6 +4,7 @@
 #include "document.h"
 #include "frame_sink.h"
 #include "image_convert.h"
+#include "render_controller.h"
 
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/scene_file.h"
@@ -52,6 +53,7 @@ class StudioDocumentTest : public QObject {
   void dragMergesAndReturningIsObsolete();
   void cancelDropsTheResult();
   void saveAsRewritesRelativePaths();
+  void rendererKeepsUpWithManyMoves();
 };
 
 void StudioDocumentTest::srgbEncodingHasKnownValues() {
@@ -218,6 +220,39 @@ void StudioDocumentTest::saveAsRewritesRelativePaths() {
   QVERIFY(!doc.saveAs(QStringLiteral("/proc/inlay-no/x.json"), &error));
   QVERIFY(!error.isEmpty());
   QCOMPARE(doc.filePath(), QFileInfo(deeper).absoluteFilePath());
+}
+
+void StudioDocumentTest::rendererKeepsUpWithManyMoves() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  RenderController renderer(&doc);
+  QString error;
+  QVERIFY(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error));
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QVERIFY(doc.isReady());
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.hasFrame(), 30000);
+  QVERIFY(!renderer.photoImage().isNull());
+  QCOMPARE(renderer.compositeImage().size(), renderer.photoImage().size());
+
+  // A fast drag: every move restarts the render; stale frames never replace newer ones.
+  const Vec2 start = doc.scene().objects[0].basePx;
+  const int dragId = Document::newDragId();
+  quint64 lastShown = 0;
+  connect(&renderer, &RenderController::frameUpdated, this, [&] {
+    QVERIFY(renderer.frameInfo().sceneVersion >= lastShown);
+    lastShown = renderer.frameInfo().sceneVersion;
+  });
+  for (int k = 1; k <= 200; ++k) {
+    QVERIFY(doc.moveObject(0, start + Vec2(-0.3 * k, -0.05 * k), dragId));
+    if (k % 10 == 0) QCoreApplication::processEvents();
+  }
+  QCOMPARE(doc.undoStack()->count(), 1);
+  const quint64 wanted = renderer.requestedVersion();
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+  QCOMPARE(quint64(renderer.frameInfo().sceneVersion), wanted);
+  doc.undoStack()->undo();
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted, 30000);
 }
 
 QTEST_GUILESS_MAIN(StudioDocumentTest)
