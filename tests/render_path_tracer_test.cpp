@@ -252,6 +252,53 @@ TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {
   EXPECT_LT(rms, 0.05);
 }
 
+// A scaled diffuse sphere (instance with scale) on the floor under a ceiling light, direct
+// light only: each sphere pixel shows albedo * le * (E / pi) at its surface point, computed by
+// the RoomTracer (a convex object cannot shadow itself from above its tangent plane).
+TEST(DiffuseSphere, DirectLightMatchesRoomTracerPerPixel) {
+  const int w = 48, h = 36;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 30, 1.3, -20), RoomBox{}, 0.5);
+  const double le = 4.0, albedo = 0.8, radius = 0.3;
+  s.lights.push_back(test::rectLight(Vec3(0.3, 2.6, -2.4), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(le)));
+  const Vec3 centre(0, radius, -2.5);
+  InsertedObject o;
+  o.meshObject = test::sphereMesh(0.5, 48, 96);  // radius 0.5, scaled to 0.3 below
+  Mat4 m = Mat4::Identity();
+  m.topLeftCorner<3, 3>() *= radius / 0.5;
+  m.topRightCorner<3, 1>() = centre;
+  o.worldFromObject = m;
+  o.material = mat(Material::Kind::Diffuse, albedo);
+  s.objects.push_back(o);
+  TracerOptions opt;
+  opt.maxDepth = 1;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 64, 4));
+  const ImageF with = b.meanWith(), mask = b.meanMask();
+  const RoomTracer room(s.room);
+  double sumRel = 0, sumRel2 = 0;
+  int n = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (mask.at(x, y) != 1.f) continue;
+      const Ray r = s.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+      const Vec3 oc = r.origin - centre;
+      const double bq = oc.dot(r.direction), disc = bq * bq - (oc.squaredNorm() - radius * radius);
+      if (disc <= 0) continue;
+      const Vec3 p = r.at(-bq - std::sqrt(disc)), nrm = (p - centre).normalized();
+      const double expected =
+          albedo * le * room.unitLightIrradianceOverPi(s.lights[0], p + 1e-4 * nrm, nrm, 1024, 1);
+      if (expected < 0.05) continue;  // the dim side: relative noise too high
+      const double rel = with.at(x, y, 0) / expected - 1;
+      sumRel += rel, sumRel2 += rel * rel, ++n;
+    }
+  ASSERT_GT(n, 30);
+  std::printf("[ sphere ] direct light on a scaled sphere: %d px, mean rel err %+.4f, rms %.4f\n", n, sumRel / n,
+              std::sqrt(sumRel2 / n));
+  EXPECT_LT(std::abs(sumRel / n), 0.02);
+  EXPECT_LT(std::sqrt(sumRel2 / n), 0.08);
+}
+
 // A mirror (an object quad facing the camera) reflecting a large light behind the camera:
 // radiance = reflectance * le, exactly (the path is deterministic).
 TEST(Mirror, ReflectsEmitterTimesReflectance) {
