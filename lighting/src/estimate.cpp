@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -203,8 +204,18 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   for (size_t s = 0; s < S; ++s)
     surfaceRadiance[s] = surfaceCount[s] > 0 ? Vec3(surfaceRadiance[s] / surfaceCount[s]) : roomRadiance;
 
+  // What the first fit knows of the room, used in the second pass to predict the radiance of
+  // what the camera does not see (the wall behind it, parts out of frame) instead of guessing
+  // it from the mean of what it does see.
+  struct RoomModel {
+    bool active = false;
+    std::vector<Vec3> rho;        // per surface
+    std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
+    std::vector<Vec3> lights;     // radiance per light
+  } model;
+
   // Radiance leaving a room point toward another, read from the photo where the camera sees it.
-  auto radianceAt = [&](const SurfaceHit& h) -> Vec3 {
+  auto radianceAt = [&](const SurfaceHit& h, uint32_t sampleId) -> Vec3 {
     const auto px = camera.project(h.pointWorld);
     if (px) {
       const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
@@ -213,12 +224,18 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
                                             0.02 * p.depth + 1e-3) {
           const Vec3 b = photo.rgb(x, y);
-          if (isLight(x, y) || !b.allFinite()) return surfaceRadiance[h.surfaceId];
-          return b;
+          if (!isLight(x, y) && b.allFinite()) return b;
         }
       }
     }
-    return surfaceRadiance[h.surfaceId];
+    if (!model.active) return surfaceRadiance[h.surfaceId];
+    // Unseen: albedo times (direct light from the fitted lights + the surface's mean indirect).
+    Vec3 irradiance = model.gammaMean[h.surfaceId];
+    for (size_t j = 0; j < J; ++j)
+      irradiance += model.lights[j] *
+                    tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
+                                                     h.normalWorld, 1, sampleId * 31u + uint32_t(j));
+    return model.rho[h.surfaceId].cwiseProduct(irradiance);
   };
 
   // 3. Gamma and E_j on a coarse grid, then spread to every pixel of the same surface.
@@ -227,6 +244,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   std::vector<Vec3> gridGamma(size_t(GW) * GH, Vec3::Zero());
   std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
   std::vector<int> gridSurface(size_t(GW) * GH, -1);
+  std::vector<Vec2> gridPixel(size_t(GW) * GH);
   const int nSide = std::max(1, int(std::lround(std::sqrt(double(opt.gatherSamples)))));
   auto gatherAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
     Vec3 t, b;
@@ -242,10 +260,15 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                         std::sqrt(std::max(0.0, 1 - u1)) * p.normal).normalized();
         const auto h = tracer.intersect(Ray{p.point + 1e-5 * p.normal, d}, 1e-5);
         ++n;
-        if (h) sum += radianceAt(*h);
+        if (h) sum += radianceAt(*h, pixelId * 1024u + uint32_t(i * nSide + k));
       }
     return sum / std::max(n, 1);
   };
+  auto lightE = [&](const PixelSurface& p, size_t j, uint32_t id) {
+    return tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
+                                            opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+  };
+  // Grid samples: E_j once.
   tbb::parallel_for(tbb::blocked_range<int>(0, GH), [&](const tbb::blocked_range<int>& rows) {
     for (int gy = rows.begin(); gy < rows.end(); ++gy) {
       if (stop()) return;
@@ -254,56 +277,73 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         const auto& p = ps[size_t(y) * W + x];
         const size_t g = size_t(gy) * GW + gx;
         gridSurface[g] = p.surface;
+        gridPixel[g] = Vec2(x, y);
         if (p.surface < 0) continue;
-        const uint32_t id = uint32_t(y * W + x);
-        gridGamma[g] = gatherAt(p, id);
-        for (size_t j = 0; j < J; ++j)
-          gridE[g * J + j] = tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal,
-                                                              p.normal, opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+        for (size_t j = 0; j < J; ++j) gridE[g * J + j] = lightE(p, j, uint32_t(y * W + x));
       }
     }
   });
   if (stop()) return cancelled();
 
-  out.gathered = ImageF(W, H, 3, 0.f);
-  std::vector<double> E(size_t(W) * H * std::max<size_t>(J, 1), 0.0);
-  tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < W; ++x) {
-        const auto& p = ps[size_t(y) * W + x];
-        if (p.surface < 0) continue;
-        // Bilinear weights of the four grid samples around, keeping only the same surface.
-        const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
-        const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
-        const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
-        double wsum = 0;
-        Vec3 g = Vec3::Zero();
-        std::vector<double> e(J, 0.0);
-        for (int dy = 0; dy < 2; ++dy)
-          for (int dx = 0; dx < 2; ++dx) {
-            const int gx = std::min(gx0 + dx, GW - 1), gy = std::min(gy0 + dy, GH - 1);
-            const size_t gi = size_t(gy) * GW + gx;
-            if (gridSurface[gi] != p.surface) continue;
-            const double w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay) + 1e-6;
-            wsum += w;
-            g += w * gridGamma[gi];
-            for (size_t j = 0; j < J; ++j) e[j] += w * gridE[gi * J + j];
-          }
-        const uint32_t id = uint32_t(y * W + x);
-        if (wsum > 0) {
-          g /= wsum;
-          for (size_t j = 0; j < J; ++j) e[j] /= wsum;
-        } else {  // a thin sliver of a surface between grid samples: compute here
-          g = gatherAt(p, id);
-          for (size_t j = 0; j < J; ++j)
-            e[j] = tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
-                                                    opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+  // Spreads grid values to every pixel with bilinear weights over the grid samples of the same
+  // surface; `compute` fills a pixel whose neighbours are all on other surfaces (a sliver).
+  auto spread = [&](int dims, const std::function<double(size_t g, int d)>& gridValue,
+                    const std::function<void(int x, int y, const double* v)>& store,
+                    const std::function<void(int x, int y, double* v)>& compute) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+      std::vector<double> v(size_t(std::max(dims, 1)));
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < W; ++x) {
+          const auto& p = ps[size_t(y) * W + x];
+          if (p.surface < 0) continue;
+          const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
+          const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
+          const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
+          double wsum = 0;
+          std::fill(v.begin(), v.end(), 0.0);
+          for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+              const int gx = std::min(gx0 + dx, GW - 1), gy = std::min(gy0 + dy, GH - 1);
+              const size_t gi = size_t(gy) * GW + gx;
+              if (gridSurface[gi] != p.surface) continue;
+              const double w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay) + 1e-6;
+              wsum += w;
+              for (int d = 0; d < dims; ++d) v[size_t(d)] += w * gridValue(gi, d);
+            }
+          if (wsum > 0)
+            for (double& e : v) e /= wsum;
+          else
+            compute(x, y, v.data());
+          store(x, y, v.data());
         }
-        out.gathered.setRgb(x, y, g);
-        for (size_t j = 0; j < J; ++j) E[(size_t(y) * W + x) * J + j] = e[j];
-      }
-  });
+    });
+  };
+  std::vector<double> E(size_t(W) * H * std::max<size_t>(J, 1), 0.0);
+  if (J > 0)
+    spread(int(J), [&](size_t g, int d) { return gridE[g * J + size_t(d)]; },
+           [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * J]); },
+           [&](int x, int y, double* v) {
+             for (size_t j = 0; j < J; ++j) v[j] = lightE(ps[size_t(y) * W + x], j, uint32_t(y * W + x));
+           });
   if (stop()) return cancelled();
+
+  auto gatherAll = [&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t g = r.begin(); g < r.end(); ++g) {
+        if (stop()) return;
+        if (gridSurface[g] < 0) continue;
+        const int x = int(gridPixel[g].x()), y = int(gridPixel[g].y());
+        gridGamma[g] = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+      }
+    });
+    out.gathered = ImageF(W, H, 3, 0.f);
+    spread(3, [&](size_t g, int d) { return gridGamma[g][d]; },
+           [&](int x, int y, const double* v) { out.gathered.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
+           [&](int x, int y, double* v) {
+             const Vec3 g = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+             v[0] = g[0], v[1] = g[1], v[2] = g[2];
+           });
+  };
 
   // 4. Fit light radiances (per channel) and one reference albedo per surface: the albedo
   // should be as flat within a surface as the lights and Gamma allow (robust to texture).
@@ -326,8 +366,9 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   for (size_t j = 0; j < J && j < refineIn.size(); ++j) refine[j] = refineIn[j];
   std::vector<std::array<double, 3>> rho(S, {0.5, 0.5, 0.5});
   std::vector<std::array<double, 3>> L(J);
-  // Start: with albedo 0.6 everywhere, the median radiance that explains the direct part.
-  {
+
+  auto fit = [&]() -> bool {
+    // Start: with albedo 0.6 everywhere, the median radiance that explains the direct part.
     std::vector<double> ratios;
     for (size_t idx : candidates) {
       double esum = 0;
@@ -346,55 +387,89 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     for (size_t j = 0; j < J; ++j)
       for (int c = 0; c < 3; ++c)
         L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
-  }
-  double cost = 0, count = 0;
-  for (int c = 0; c < 3; ++c) {
-    if (stop()) return cancelled();
-    ceres::Problem problem;
-    for (size_t idx : candidates) {
-      const int x = int(idx % W), y = int(idx / W);
-      const int s = ps[idx].surface;
-      std::vector<double> e(J);
-      for (size_t j = 0; j < J; ++j) e[j] = E[idx * J + j];
-      auto* cost = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(
-          new LogResidual(std::log(std::max(1e-6, double(photo.at(x, y, c)))), out.gathered.at(x, y, c), e));
-      std::vector<double*> blocks{&rho[s][c]};
-      cost->AddParameterBlock(1);
-      for (size_t j = 0; j < J; ++j) {
-        cost->AddParameterBlock(1);
-        blocks.push_back(&L[j][c]);
+    for (auto& r : rho) r = {0.5, 0.5, 0.5};
+    double cost = 0, count = 0;
+    for (int c = 0; c < 3; ++c) {
+      if (stop()) return false;
+      ceres::Problem problem;
+      for (size_t idx : candidates) {
+        const int x = int(idx % W), y = int(idx / W);
+        const int s = ps[idx].surface;
+        std::vector<double> e(J);
+        for (size_t j = 0; j < J; ++j) e[j] = E[idx * J + j];
+        auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
+            std::log(std::max(1e-6, double(photo.at(x, y, c)))), out.gathered.at(x, y, c), e));
+        std::vector<double*> blocks{&rho[s][c]};
+        f->AddParameterBlock(1);
+        for (size_t j = 0; j < J; ++j) {
+          f->AddParameterBlock(1);
+          blocks.push_back(&L[j][c]);
+        }
+        f->SetNumResiduals(1);
+        problem.AddResidualBlock(f, new ceres::CauchyLoss(0.15), blocks);
       }
-      cost->SetNumResiduals(1);
-      problem.AddResidualBlock(cost, new ceres::CauchyLoss(0.15), blocks);
+      for (size_t s = 0; s < S; ++s)
+        if (problem.HasParameterBlock(&rho[s][c])) {
+          problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
+          problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
+        }
+      for (size_t j = 0; j < J; ++j)
+        if (problem.HasParameterBlock(&L[j][c])) {
+          problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
+          problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
+          if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
+        }
+      ceres::Solver::Options so;
+      so.linear_solver_type = ceres::DENSE_QR;
+      so.max_num_iterations = 100;
+      so.num_threads = opt.threads > 0 ? opt.threads : 2;
+      so.logging_type = ceres::SILENT;
+      ceres::Solver::Summary summary;
+      ceres::Solve(so, &problem, &summary);
+      if (!summary.IsSolutionUsable())
+        out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
+      cost += summary.final_cost;
+      count += double(candidates.size());
     }
+    out.fitRmsLog = std::sqrt(2 * cost / std::max(1.0, count));
+    for (size_t j = 0; j < J; ++j) {
+      Vec3 r(L[j][0], L[j][1], L[j][2]);
+      if (!r.allFinite()) r = lightsIn[j].radiance;
+      out.lights[j].radiance = r.cwiseMax(0.0);
+    }
+    return true;
+  };
+
+  // Pass 1 guesses what the camera does not see from the mean of what it sees; pass 2 predicts
+  // it from the fitted albedo and lights.
+  for (int pass = 0; pass < 2; ++pass) {
+    gatherAll();
+    if (stop() || !fit()) return cancelled();
+    if (pass == 1) break;
+    model.active = true;
+    model.rho.assign(S, Vec3::Zero());
+    model.gammaMean.assign(S, Vec3::Zero());
+    std::vector<double> n(S, 0.0);
+    for (size_t idx = 0; idx < ps.size(); ++idx) {
+      const int s = ps[idx].surface;
+      if (s < 0) continue;
+      model.gammaMean[s] += out.gathered.rgb(int(idx % W), int(idx / W));
+      n[s] += 1;
+    }
+    Vec3 gammaAll = Vec3::Zero(), rhoAll = Vec3::Zero();
+    double nAll = 0, nRho = 0;
     for (size_t s = 0; s < S; ++s)
-      if (problem.HasParameterBlock(&rho[s][c])) {
-        problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
-        problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
-      }
-    for (size_t j = 0; j < J; ++j)
-      if (problem.HasParameterBlock(&L[j][c])) {
-        problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
-        problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
-        if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
-      }
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = 100;
-    so.num_threads = opt.threads > 0 ? opt.threads : 2;
-    so.logging_type = ceres::SILENT;
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
-    if (!summary.IsSolutionUsable())
-      out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
-    cost += summary.final_cost;
-    count += double(candidates.size());
-  }
-  out.fitRmsLog = std::sqrt(2 * cost / std::max(1.0, count));
-  for (size_t j = 0; j < J; ++j) {
-    Vec3 r(L[j][0], L[j][1], L[j][2]);
-    if (!r.allFinite()) r = lightsIn[j].radiance;
-    out.lights[j].radiance = r.cwiseMax(0.0);
+      if (n[s] > 0) gammaAll += model.gammaMean[s], nAll += n[s];
+    gammaAll /= std::max(1.0, nAll);
+    for (size_t s = 0; s < S; ++s) {
+      model.gammaMean[s] = n[s] > 0 ? Vec3(model.gammaMean[s] / n[s]) : gammaAll;
+      if (n[s] > 0) rhoAll += Vec3(rho[s][0], rho[s][1], rho[s][2]), nRho += 1;
+    }
+    rhoAll /= std::max(1.0, nRho);
+    for (size_t s = 0; s < S; ++s)
+      model.rho[s] = n[s] > 0 ? Vec3(rho[s][0], rho[s][1], rho[s][2]) : rhoAll;
+    model.lights.clear();
+    for (const auto& l : out.lights) model.lights.push_back(l.radiance);
   }
 
   // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
