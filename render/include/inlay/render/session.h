@@ -45,7 +45,10 @@ struct RenderFrame {
   ImageF withObjects;           // W x H x 3 means
   ImageF withoutObjects;        // W x H x 3
   ImageF mask;                  // W x H x 1
-  double estimatedError = 0;    // estimated RMSE (sRGB [0,1]) of the composite where it differs
+  // Estimated RMSE (sRGB [0,1]) of the composite over the pixels where with != without: per
+  // pixel the variance of the mean of (with - without) from the running sums, times the sRGB
+  // slope at the pixel's with-object value; mask noise and exposure are not included.
+  double estimatedError = 0;
   bool final = false;           // target reached for this version
 };
 
