@@ -134,3 +134,5 @@ class Document : public QObject {
 Material renderMaterialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);
 
 }  // namespace inlay::studio
+
+Q_DECLARE_METATYPE(inlay::studio::ChangeEvent)

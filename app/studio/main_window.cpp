@@ -99,10 +99,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   sppLabel_ = new QLabel(this);
   errorLabel_ = new QLabel(this);
   timeLabel_ = new QLabel(this);
-  for (QLabel* l : {sppLabel_, errorLabel_, timeLabel_}) {
+  zoomLabel_ = new QLabel(this);
+  for (QLabel* l : {sppLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
     l->setMinimumWidth(90);
     statusBar()->addPermanentWidget(l);
   }
+  sppLabel_->setToolTip(tr("Samples per pixel of the shown composite"));
+  errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
+  timeLabel_->setToolTip(tr("Render time since the last change"));
+  zoomLabel_->setToolTip(tr("Zoom"));
+  auto showZoom = [this](double zoom) { zoomLabel_->setText(tr("%1 %").arg(qRound(zoom * 100))); };
+  connect(viewport_, &Viewport::zoomChanged, this, showZoom);
+  showZoom(viewport_->zoom());
 
   createActions();
   createMenus();
@@ -312,7 +320,8 @@ void MainWindow::onFrame() {
   }
   const CompositeImage& f = renderer_->frameInfo();
   sppLabel_->setText(f.resolutionDivider > 1 ? tr("preview 1/%1").arg(f.resolutionDivider)
-                                             : tr("%1 spp").arg(f.spp));
+                     : f.final                ? tr("%1 spp, done").arg(f.spp)
+                                              : tr("%1 spp").arg(f.spp));
   errorLabel_->setText(tr("error %1").arg(f.estimatedError, 0, 'f', 4));
   timeLabel_->setText(tr("%1 s").arg(f.seconds, 0, 'f', 1));
   exportAct_->setEnabled(true);

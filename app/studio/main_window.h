@@ -107,6 +107,7 @@ class MainWindow : public QMainWindow {
   QLabel* sppLabel_ = nullptr;
   QLabel* errorLabel_ = nullptr;
   QLabel* timeLabel_ = nullptr;
+  QLabel* zoomLabel_ = nullptr;
 };
 
 }  // namespace inlay::studio
