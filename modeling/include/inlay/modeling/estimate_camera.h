@@ -1,0 +1,156 @@
+// Camera and room from the photo alone: line segments, three orthogonal vanishing points, focal
+// length and rotation, and the box layout (the back wall's four corners), each with how sure it
+// is; and the correction the studio applies when the user fixes part of it.
+//
+// Pipeline (estimateCamera): the photo is reduced to grey at a working size (long side at most
+// EstimateOptions::maxWorkingSidePx, area-averaged, so a 100 MP photo costs what a 1 MP one does),
+// line segments are found (OpenCV FastLineDetector), a Manhattan triplet of directions is found
+// by a hypothesis search on the Gaussian sphere over a ladder of focal lengths (three segments
+// per hypothesis: two give one direction, the third the second one orthogonal to it), focal
+// length and rotation are refined by robust least squares (Ceres) on the distance of each inlier
+// segment's endpoints to the line through its midpoint and its vanishing point, and the back
+// wall is found among rays through the vanishing points (edge support plus a line-based
+// orientation map, after Hedau et al. 2009 and Lee et al. 2009).
+//
+// Frames and units: as in camera.h. Pixels are the photo's (x right, y down, origin at the
+// top-left corner), whatever the working size was. Vanishing points are always also given as
+// unit-norm homogeneous pixel points (x, y, w), w ~ 0 at infinity; `vanishingPointsPx` is the
+// scene file's form (a huge coordinate, 1e7 px from the principal point, when w ~ 0).
+//
+// World axes: x is the horizontal room axis that runs most nearly left-to-right in the photo,
+// y is up, z points back toward the camera (the camera looks toward -z); vanishing points and
+// confidences come in the order x, y, z.
+//
+// Thread safety: the functions are pure (no shared state); several may run at once.
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+// One straight line segment of the photo. `family`: the world axis (0 x, 1 y, 2 z) whose
+// vanishing point it supports, -1 when it supports none. `residualPx`: the distance of its
+// endpoints to the line through its midpoint and that vanishing point (0 when family < 0).
+struct LineSegment {
+  Vec2 aPx{0, 0};
+  Vec2 bPx{0, 0};
+  int family = -1;
+  double residualPx = 0;
+  bool userGiven = false;  // drawn by the user (a correction), not detected
+  double lengthPx() const { return (bPx - aPx).norm(); }
+};
+
+// What is known about one vanishing point.
+struct VanishingPointInfo {
+  Vec3 homogeneousPx{0, 0, 1};      // unit norm (x, y, w); w ~ 0 at infinity
+  Vec3 directionCamera{0, 0, -1};    // the world axis in the camera frame (OpenGL), unit
+  bool atInfinity = false;           // farther than 1000 image diagonals from the centre
+  int segmentCount = 0;              // supporting segments (detected and user-given)
+  double supportLengthPx = 0;        // their total length
+  double rmsResidualPx = 0;          // root-mean-square endpoint residual of the supporters
+  double angularSigmaDeg = 180;      // 1-sigma uncertainty of the direction from its own lines
+  double confidence = 0;             // in [0, 1]: support beyond chance times precision
+  bool nearlyParallel = false;       // its lines are nearly parallel in the photo
+};
+
+struct EstimateTimings {
+  double linesMs = 0;      // reduce to working size + line segments
+  double vanishingMs = 0;  // hypothesis search
+  double refineMs = 0;     // least squares, uncertainty
+  double layoutMs = 0;     // back wall search
+  double totalMs = 0;
+};
+
+// The hypothesis search's best score against time (STYLE: every iterative algorithm reports
+// what it reached and when).
+struct SearchProgress {
+  double seconds = 0;
+  double score = 0;  // length-weighted inlier score of the best Manhattan hypothesis so far
+};
+
+// The estimate. `camera` is always usable (finite, a rotation, focal > 0): when the photo shows
+// no Manhattan structure it is the fallback (prior focal length, level or vertical-aligned
+// rotation) and `manhattan` is false, the confidences are low and `warnings` say why.
+struct CameraEstimate {
+  Camera camera;                                 // principal point at the image centre
+  std::array<Vec2, 3> vanishingPointsPx;         // x, y, z: scene file form (huge when at infinity)
+  std::array<VanishingPointInfo, 3> vanishingPoints;
+  std::array<double, 3> confidence{0, 0, 0};     // = vanishingPoints[i].confidence
+  double overallConfidence = 0;                  // in [0, 1]: how far to trust camera rotation
+  bool manhattan = false;                        // false: fallback camera, not measured
+  double focalMinPx = 0, focalMaxPx = 0;         // about 95% interval (prior included)
+  bool focalFromPrior = false;                   // the photo did not determine the focal length
+  std::array<Vec2, 4> backWallPx;                // TL, TR, BR, BL; may lie outside the photo
+  double layoutScore = 0;                        // in [0, 1]: share of the box the photo supports
+  std::vector<LineSegment> segments;             // photo pixels, with families and residuals
+  std::vector<std::string> warnings;             // plain sentences (English, not translated)
+  EstimateTimings timings;
+  std::vector<SearchProgress> progress;
+  double workingScale = 1;                       // working image size / photo size
+};
+
+// Defaults are what `inlay-cli estimate` uses.
+struct EstimateOptions {
+  // Prior focal length in photo pixels (EXIF: ExifInfo::focalPx). nullopt: a 60 degree
+  // horizontal field of view, held loosely. Never taken as truth unless lockFocal.
+  std::optional<double> priorFocalPx;
+  // Log-space 1-sigma of the prior: 0.15 for EXIF (crops, zoom, wrong tags), 0.6 without.
+  double priorLogSigmaExif = 0.15;
+  double priorLogSigmaDefault = 0.6;
+  // Hypotheses per focal-length rung (14 rungs); 0.5x-4x trades accuracy for time.
+  int searchIterations = 120;
+  // Long side of the working image: larger photos are area-averaged down first.
+  int maxWorkingSidePx = 800;
+  // Segments kept (the longest ones) for the search; refinement uses the same.
+  int maxSegments = 300;
+  // Inlier threshold: angle between a segment and the line from its midpoint to the VP.
+  double inlierAngleDeg = 2.0;
+  double cameraHeightM = 1.6;  // Camera::heightM of the result (the scene's camera.height_m)
+  bool estimateLayout = true;
+  uint32_t seed = 1;            // hypothesis sampling; same seed, same result
+  const CancelToken* cancel = nullptr;  // polled between stages and inside the loops
+};
+
+// linearRgb: H x W x C (C = 1, 3 or 4; alpha ignored), linear, the photo as loaded.
+// Errors: an empty image or an unsupported channel count (key "photo"), cancellation
+// (key "estimate", reason "cancelled").
+Expected<CameraEstimate> estimateCamera(const ImageF& linearRgb, const EstimateOptions& options = {});
+
+// The same from given segments (photo pixels; their `family` is ignored): for tests, for the
+// benchmark on ground-truth segments, and for callers with their own line detector.
+Expected<CameraEstimate> estimateCameraFromSegments(int widthPx, int heightPx,
+                                                    const std::vector<LineSegment>& segments,
+                                                    const EstimateOptions& options = {});
+
+// What the user fixed. Anything not given is re-estimated from the previous estimate's
+// segments; everything given is kept.
+struct EstimateCorrection {
+  std::optional<double> lockedFocalPx;  // the focal length, held exactly
+  // Per world axis (x, y, z): two user line segments {a0, b0, a1, b1} whose lines meet at that
+  // axis's vanishing point (parallel lines: a vanishing point at infinity). Weighted far above
+  // detected segments.
+  std::array<std::optional<std::array<Vec2, 4>>, 3> vanishingLinesPx;
+  // Back-wall corners the user placed (TL, TR, BR, BL), photo pixels; kept exactly. A back-wall
+  // edge with both corners placed also acts as a user line of its family (top/bottom: x,
+  // left/right: y), so four placed corners fix the x and y vanishing points.
+  std::array<std::optional<Vec2>, 4> backWallCornersPx;
+};
+
+// The consistent camera and room after the user's fixes: camera re-fitted with the fixes as
+// constraints (segments re-assigned), then the free back-wall lines re-searched starting from the
+// previous ones. `previous` must come from estimateCamera*/correctEstimate of the same photo.
+// Errors (key "correction..."): non-finite input, a focal length <= 0, two user lines of one
+// axis that coincide, corners that cannot be a back wall for the re-fitted camera.
+Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
+                                         const EstimateCorrection& correction,
+                                         const EstimateOptions& options = {});
+
+}  // namespace inlay

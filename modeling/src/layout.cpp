@@ -1,0 +1,455 @@
+#include "layout.h"
+
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace inlay::detail {
+
+namespace {
+
+// Faces of the box seen from inside, and which line families lie in each (a face's two
+// in-plane axes): back wall (normal z) holds x and y lines, floor and ceiling x and z, the side
+// walls y and z. Exception: vertical lines over the floor are furniture legs and door frames
+// standing on it far more often than a wrong box, so they do not count against the floor.
+enum Face { kBack = 0, kCeiling, kRight, kFloor, kLeft };
+constexpr bool kAllowed[5][3] = {
+    {true, true, false}, {true, false, true}, {false, true, true},
+    {true, true, true}, {false, true, true}};
+
+// One line family's evidence: exp(-d^2 / 2 sigma^2) of the distance to its nearest segment pixel.
+struct EvidenceMap {
+  cv::Mat e;  // CV_32F, working pixels
+  float at(const Vec2& pw) const {
+    const int x = int(pw.x()), y = int(pw.y());
+    if (x < 0 || y < 0 || x >= e.cols || y >= e.rows) return 0.f;
+    return e.at<float>(y, x);
+  }
+};
+
+struct Sample {
+  Vec2 pw;      // working pixels
+  double angle; // around the forward vanishing point
+  int family;
+  double weight;  // working pixels of line it stands for
+};
+
+// Liang-Barsky: the part of segment a->b inside [0,w] x [0,h]; false when none.
+bool clipToRect(Vec2& a, Vec2& b, double w, double h) {
+  double t0 = 0, t1 = 1;
+  const Vec2 d = b - a;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double q[4] = {a.x(), w - a.x(), a.y(), h - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (std::abs(p[i]) < 1e-15) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double r = q[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, r);
+    else t1 = std::min(t1, r);
+    if (t0 > t1) return false;
+  }
+  const Vec2 a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  return true;
+}
+
+Vec3 hom(const Vec2& p) { return Vec3(p.x(), p.y(), 1.0); }
+
+bool dehom(const Vec3& h, Vec2& out) {
+  if (!(std::abs(h.z()) > 1e-12 * h.norm())) return false;
+  out = Vec2(h.x() / h.z(), h.y() / h.z());
+  return out.allFinite();
+}
+
+// Everything about one photo's layout search that does not depend on the hypothesis.
+class LayoutSearch {
+ public:
+  LayoutSearch(const LayoutInput& in) : in_(in) {}
+
+  bool setUp(std::string& problem) {
+    const Camera& cam = *in_.camera;
+    W_ = cam.widthPx;
+    H_ = cam.heightPx;
+    ws_ = std::min(1.0, 400.0 / std::max(W_, H_));
+    diag_ = std::hypot(double(W_), double(H_));
+    hx_ = cam.vanishingPointOf(Vec3::UnitX());
+    hy_ = cam.vanishingPointOf(Vec3::UnitY());
+    const Vec3 hf = cam.vanishingPointOf(-Vec3::UnitZ());
+    // The forward vanishing point is the image of the point straight ahead on the back wall:
+    // it must be finite and in front (w > 0) for the camera to stand in the box.
+    if (!(hf.z() > 1e-6) || !dehom(hf, vz_) || (vz_ - Vec2(0.5 * W_, 0.5 * H_)).norm() > 50 * diag_) {
+      problem = "the camera looks along a wall (no back wall in view)";
+      return false;
+    }
+    uY_ = Vec2(hy_.x() - vz_.x() * hy_.z(), hy_.y() - vz_.y() * hy_.z());
+    uX_ = Vec2(hx_.x() - vz_.x() * hx_.z(), hx_.y() - vz_.y() * hx_.z());
+    if (uY_.norm() < 1e-12 || uX_.norm() < 1e-12) {
+      problem = "degenerate vanishing points";
+      return false;
+    }
+    uY_.normalize();
+    uX_.normalize();
+    if (uY_.y() < 0) uY_ = -uY_;
+    if (uX_.x() < 0) uX_ = -uX_;
+    // Parameter ranges: from the forward point to beyond the farthest image corner.
+    const double margin = 0.3 * diag_, eps = 0.01 * diag_;
+    double yMin = 0, yMax = 0, xMin = 0, xMax = 0;
+    for (const Vec2& c : {Vec2(0, 0), Vec2(W_, 0), Vec2(W_, H_), Vec2(0, H_)}) {
+      yMin = std::min(yMin, (c - vz_).dot(uY_));
+      yMax = std::max(yMax, (c - vz_).dot(uY_));
+      xMin = std::min(xMin, (c - vz_).dot(uX_));
+      xMax = std::max(xMax, (c - vz_).dot(uX_));
+    }
+    lo_ = {yMin - margin, eps, xMin - margin, eps};   // top, bottom, left, right
+    hi_ = {-eps, yMax + margin, -eps, xMax + margin};
+    outside_ = {std::min(-eps, yMin - eps), std::max(eps, yMax + eps), std::min(-eps, xMin - eps),
+                std::max(eps, xMax + eps)};
+    buildEvidence();
+    defaultParams();
+    return true;
+  }
+
+  // params: top, bottom (along uY from vz), left, right (along uX).
+  std::array<Vec3, 4> lines(const std::array<double, 4>& t) const {
+    return {hx_.cross(hom(vz_ + t[0] * uY_)), hx_.cross(hom(vz_ + t[1] * uY_)),
+            hy_.cross(hom(vz_ + t[2] * uX_)), hy_.cross(hom(vz_ + t[3] * uX_))};
+  }
+  bool corners(const std::array<double, 4>& t, std::array<Vec2, 4>& c) const {
+    const auto l = lines(t);
+    return dehom(l[0].cross(l[2]), c[0]) && dehom(l[0].cross(l[3]), c[1]) &&
+           dehom(l[1].cross(l[3]), c[2]) && dehom(l[1].cross(l[2]), c[3]);
+  }
+  // Parameter of the line through vanishing point `h` and point p, on the reference line
+  // through vz along u.
+  double paramThrough(const Vec3& h, const Vec2& p, const Vec2& u) const {
+    const Vec3 l = h.cross(hom(p));
+    const Vec3 ref = hom(vz_).cross(Vec3(u.x(), u.y(), 0));
+    Vec2 q;
+    if (!dehom(l.cross(ref), q)) return std::numeric_limits<double>::quiet_NaN();
+    return (q - vz_).dot(u);
+  }
+  double paramOfCorner(int line, const Vec2& p) const {
+    return line < 2 ? paramThrough(hx_, p, uY_) : paramThrough(hy_, p, uX_);
+  }
+
+  struct Score {
+    double total = -1e300;
+    double edgeSupported = 0, edgeVisible = 0, regionSigned = 0, regionTotal = 0;
+  };
+
+  Score score(const std::array<double, 4>& t) const {
+    Score s;
+    std::array<Vec2, 4> c;
+    if (!corners(t, c)) return s;
+    s.total = 0;
+    // Edges: the back wall's four, then the four receding ones from each corner away from vz.
+    const int edgeFamily[8] = {0, 1, 0, 1, 2, 2, 2, 2};
+    Vec2 ea[8], eb[8];
+    for (int i = 0; i < 4; ++i) {
+      ea[i] = c[i];
+      eb[i] = c[(i + 1) % 4];
+      Vec2 d = c[i] - vz_;
+      const double n = d.norm();
+      ea[4 + i] = c[i];
+      eb[4 + i] = n > 1e-9 ? Vec2(c[i] + d / n * 4 * diag_) : c[i];
+    }
+    for (int i = 0; i < 8; ++i) {
+      Vec2 a = ea[i] * ws_, b = eb[i] * ws_;
+      if (!clipToRect(a, b, W_ * ws_, H_ * ws_)) continue;
+      const double len = (b - a).norm();
+      if (len < 1) continue;
+      const int n = std::max(2, int(len / 4.0));
+      double sum = 0;
+      for (int k = 0; k < n; ++k) sum += evidence_[edgeFamily[i]].at(a + (b - a) * ((k + 0.5) / n));
+      s.edgeSupported += sum / n * len;
+      s.edgeVisible += len;
+    }
+    // Faces: inside the quad is the back wall, else the sector around vz between corner rays.
+    const auto l = lines(t);
+    double sign[4];
+    for (int i = 0; i < 4; ++i) sign[i] = l[i].dot(hom(vz_)) >= 0 ? 1 : -1;
+    double ang[4];
+    for (int i = 0; i < 4; ++i) ang[i] = std::atan2(c[i].y() - vz_.y(), c[i].x() - vz_.x());
+    auto rel = [&](double a) {
+      double r = a - ang[0];
+      while (r < 0) r += 2 * M_PI;
+      while (r >= 2 * M_PI) r -= 2 * M_PI;
+      return r;
+    };
+    const double r1 = rel(ang[1]), r2 = rel(ang[2]), r3 = rel(ang[3]);
+    const bool ordered = r1 < r2 && r2 < r3;  // TL, TR, BR, BL clockwise around vz
+    if (!ordered) {
+      s.total = -1e300;
+      return s;
+    }
+    for (const Sample& p : samples_) {
+      const Vec3 ph = hom(p.pw / ws_);
+      bool inside = true;
+      for (int i = 0; i < 4 && inside; ++i) inside = l[i].dot(ph) * sign[i] >= 0;
+      int face = kBack;
+      if (!inside) {
+        const double r = rel(p.angle);
+        face = r < r1 ? kCeiling : r < r2 ? kRight : r < r3 ? kFloor : kLeft;
+      }
+      s.regionSigned += (kAllowed[face][p.family] ? 1.0 : -1.0) * p.weight;
+      s.regionTotal += p.weight;
+    }
+    constexpr double kEdgeBias = 0.15;   // evidence below this along an edge counts against it
+    constexpr double kRegionWeight = 0.2;
+    s.total = s.edgeSupported - kEdgeBias * s.edgeVisible + kRegionWeight * s.regionSigned;
+    // Tie-break toward an ordinary room where the photo says nothing (a wall out of view).
+    double prior = 0;
+    for (int i = 0; i < 4; ++i) prior += std::abs(t[i] - default_[i]) / diag_;
+    s.total -= 0.5 * ws_ * prior;
+    return s;
+  }
+
+  const std::array<double, 4>& lo() const { return lo_; }
+  const std::array<double, 4>& hi() const { return hi_; }
+  const std::array<double, 4>& defaults() const { return default_; }
+  const std::array<double, 4>& outside() const { return outside_; }
+  double diag() const { return diag_; }
+
+ private:
+  void buildEvidence() {
+    const int w = std::max(1, int(std::lround(W_ * ws_))), h = std::max(1, int(std::lround(H_ * ws_)));
+    for (int f = 0; f < 3; ++f) {
+      cv::Mat mask(h, w, CV_8U, cv::Scalar(255));
+      for (const LineSegment& s : *in_.segments)
+        if (s.family == f && !s.userGiven)
+          cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
+                   cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
+      // Receding (z) lines of a floor or ceiling texture end where the back wall begins: their
+      // far ends mark the back wall's top or bottom edge, drawn as short x strokes.
+      if (f == 0)
+        for (const LineSegment& s : *in_.segments) {
+          if (s.family != 2 || s.userGiven) continue;
+          const Vec2 far = (s.aPx - vz_).norm() < (s.bPx - vz_).norm() ? s.aPx : s.bPx;
+          Vec2 dir(hx_.x() - far.x() * hx_.z(), hx_.y() - far.y() * hx_.z());
+          if (dir.norm() < 1e-12) continue;
+          dir = dir.normalized() * (4.0 / ws_);
+          const Vec2 a = (far - dir) * ws_, b = (far + dir) * ws_;
+          cv::line(mask, cv::Point2d(a.x() - 0.5, a.y() - 0.5), cv::Point2d(b.x() - 0.5, b.y() - 0.5),
+                   cv::Scalar(0), 1);
+        }
+      cv::Mat dist;
+      cv::distanceTransform(mask, dist, cv::DIST_L2, 3);
+      constexpr double kSigma = 1.2;  // working pixels
+      cv::Mat e;
+      cv::multiply(dist, dist, e, -1.0 / (2 * kSigma * kSigma));
+      cv::exp(e, evidence_[f].e);
+    }
+    // Samples every 4 working pixels, at most about 400 in all.
+    double total = 0;
+    for (const LineSegment& s : *in_.segments)
+      if (s.family >= 0 && !s.userGiven) total += s.lengthPx() * ws_;
+    const double step = std::max(4.0, total / 400.0);
+    for (const LineSegment& s : *in_.segments) {
+      if (s.family < 0 || s.userGiven) continue;
+      const double len = s.lengthPx() * ws_;
+      const int n = std::max(1, int(len / step));
+      for (int k = 0; k < n; ++k) {
+        const Vec2 p = s.aPx + (s.bPx - s.aPx) * ((k + 0.5) / n);
+        samples_.push_back({p * ws_, std::atan2(p.y() - vz_.y(), p.x() - vz_.x()), s.family,
+                            len / n});
+      }
+    }
+  }
+
+  // An ordinary room: 5 m wide, the back wall 5 m ahead, the ceiling 1.1 m above a 1.6 m eye.
+  void defaultParams() {
+    const Camera& cam = *in_.camera;
+    const double k = cam.heightM / 1.6;
+    const Vec3 eye = cam.centreWorld();
+    const Vec3 fwd = cam.worldFromCamera * Vec3(0, 0, -1);
+    Vec3 f(fwd.x(), 0, fwd.z());
+    f = f.norm() > 1e-6 ? f.normalized() : Vec3(0, 0, -1);
+    const double zB = -5.0 * k * std::max(0.3, -f.z());
+    const Vec3 p[4] = {{-2.5 * k, 2.7 * k, zB}, {2.5 * k, 2.7 * k, zB}, {2.5 * k, 0, zB},
+                       {-2.5 * k, 0, zB}};
+    const double fallback[4] = {-0.3 * diag_, 0.3 * diag_, -0.3 * diag_, 0.3 * diag_};
+    for (int i = 0; i < 4; ++i) default_[i] = fallback[i];
+    const auto a = cam.project(p[0] + Vec3(eye.x(), 0, eye.z()));
+    const auto b = cam.project(p[2] + Vec3(eye.x(), 0, eye.z()));
+    if (a && b) {
+      const double t[4] = {paramOfCorner(0, *a), paramOfCorner(1, *b), paramOfCorner(2, *a),
+                           paramOfCorner(3, *b)};
+      for (int i = 0; i < 4; ++i)
+        if (std::isfinite(t[i])) default_[i] = t[i];
+    }
+    for (int i = 0; i < 4; ++i) default_[i] = std::clamp(default_[i], lo_[i], hi_[i]);
+  }
+
+  const LayoutInput& in_;
+  int W_ = 0, H_ = 0;
+  double ws_ = 1, diag_ = 1;
+  Vec3 hx_, hy_;
+  Vec2 vz_, uX_, uY_;
+  std::array<double, 4> lo_{}, hi_{}, default_{}, outside_{};
+  EvidenceMap evidence_[3];
+  std::vector<Sample> samples_;
+};
+
+}  // namespace
+
+LayoutResult estimateLayout(const LayoutInput& in) {
+  LayoutResult out;
+  INLAY_CHECK(in.camera && in.segments);
+  const Camera& cam = *in.camera;
+  // Whatever happens, a usable default: the middle half of the photo.
+  const double W = cam.widthPx, H = cam.heightPx;
+  out.cornersPx = {Vec2(0.25 * W, 0.25 * H), Vec2(0.75 * W, 0.25 * H), Vec2(0.75 * W, 0.75 * H),
+                   Vec2(0.25 * W, 0.75 * H)};
+  LayoutSearch search(in);
+  if (!search.setUp(out.problem)) return out;
+
+  // Lines fixed by placed corners: TL fixes top and left, TR top and right, BR bottom and
+  // right, BL bottom and left. Two corners on one line: the mean parameter.
+  constexpr int kCornerLines[4][2] = {{0, 2}, {0, 3}, {1, 3}, {1, 2}};
+  std::array<double, 4> fixedSum{0, 0, 0, 0};
+  std::array<int, 4> fixedCount{0, 0, 0, 0};
+  for (int c = 0; c < 4; ++c) {
+    if (!in.fixedCornersPx[c]) continue;
+    for (int line : kCornerLines[c]) {
+      const double t = search.paramOfCorner(line, *in.fixedCornersPx[c]);
+      if (!std::isfinite(t)) continue;
+      fixedSum[line] += t;
+      ++fixedCount[line];
+    }
+  }
+  std::array<bool, 4> isFixed{};
+  std::array<double, 4> t = search.defaults();
+  for (int i = 0; i < 4; ++i)
+    if (fixedCount[i] > 0) {
+      isFixed[i] = true;
+      t[i] = fixedSum[i] / fixedCount[i];
+    }
+
+  auto stop = [&] { return in.cancel && in.cancel->shouldStop(); };
+  const auto& lo = search.lo();
+  const auto& hi = search.hi();
+  LayoutSearch::Score best;
+  std::vector<std::array<double, 4>> starts;
+  if (in.startCornersPx) {
+    std::array<double, 4> s = t;
+    for (int i = 0; i < 4; ++i) {
+      if (isFixed[i]) continue;
+      // Each line passes through two corners of the previous quad: take the first that gives
+      // a finite parameter.
+      for (int c = 0; c < 4; ++c)
+        if (kCornerLines[c][0] == i || kCornerLines[c][1] == i) {
+          const double v = search.paramOfCorner(i, (*in.startCornersPx)[c]);
+          if (std::isfinite(v)) {
+            s[i] = std::clamp(v, lo[i], hi[i]);
+            break;
+          }
+        }
+    }
+    starts.push_back(s);
+  } else {
+    // Candidates per line: lines through its vanishing point and the photo's own segments of
+    // that family (weighted by length, merged when close), the line just outside the photo,
+    // and the ordinary room's; then every combination, keeping the best few as starts.
+    std::array<std::vector<double>, 4> cand;
+    for (int i = 0; i < 4; ++i) {
+      if (isFixed[i]) {
+        cand[i] = {t[i]};
+        continue;
+      }
+      std::vector<std::pair<double, double>> votes;  // (param, weight)
+      for (const LineSegment& sg : *in.segments) {
+        if (sg.userGiven) continue;
+        const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
+        if (!mine) continue;
+        const double v = search.paramOfCorner(i, 0.5 * (sg.aPx + sg.bPx));
+        if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
+      }
+      std::sort(votes.begin(), votes.end());
+      std::vector<std::pair<double, double>> merged;  // (weight, param)
+      const double tol = 0.01 * search.diag();
+      for (size_t a = 0; a < votes.size();) {
+        size_t b = a;
+        double w = 0, sum = 0;
+        while (b < votes.size() && votes[b].first - votes[a].first < tol) {
+          w += votes[b].second;
+          sum += votes[b].second * votes[b].first;
+          ++b;
+        }
+        merged.push_back({w, sum / w});
+        a = b;
+      }
+      std::sort(merged.begin(), merged.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+      for (size_t k = 0; k < std::min<size_t>(6, merged.size()); ++k) cand[i].push_back(merged[k].second);
+      cand[i].push_back(search.outside()[i]);
+      cand[i].push_back(t[i]);
+    }
+    struct Cand { double score; std::array<double, 4> t; };
+    std::vector<Cand> cands;
+    std::array<double, 4> p = t;
+    for (double a : cand[0])
+      for (double b : cand[1]) {
+        if (stop()) break;
+        for (double c : cand[2])
+          for (double d : cand[3]) {
+            p = {a, b, c, d};
+            cands.push_back({search.score(p).total, p});
+          }
+      }
+    std::sort(cands.begin(), cands.end(),
+              [](const Cand& x, const Cand& y) { return x.score > y.score; });
+    for (size_t i = 0; i < std::min<size_t>(3, cands.size()); ++i) starts.push_back(cands[i].t);
+    starts.push_back(t);  // the ordinary room
+  }
+
+  std::array<double, 4> bestT = t;
+  for (auto s : starts) {
+    // Coordinate ascent, coarse to fine: a window around the current value, shrinking.
+    LayoutSearch::Score cur = search.score(s);
+    double window = in.startCornersPx ? 0.05 : 0.25;
+    for (int round = 0; round < 12 && window * search.diag() > 0.5; ++round) {
+      if (stop()) break;
+      bool improved = false;
+      for (int i = 0; i < 4; ++i) {
+        if (isFixed[i]) continue;
+        const double span = window * search.diag();
+        constexpr int kSteps = 8;
+        for (int k = -kSteps; k <= kSteps; ++k) {
+          auto q = s;
+          q[i] = std::clamp(s[i] + span * k / kSteps, lo[i], hi[i]);
+          const auto sc = search.score(q);
+          if (sc.total > cur.total + 1e-9) {
+            cur = sc;
+            s = q;
+            improved = true;
+          }
+        }
+      }
+      if (!improved) window *= 0.35;
+    }
+    if (cur.total > best.total) {
+      best = cur;
+      bestT = s;
+    }
+  }
+  std::array<Vec2, 4> c;
+  if (!(best.total > -1e299) || !search.corners(bestT, c)) {
+    out.problem = "no back wall hypothesis fits the vanishing points";
+    return out;
+  }
+  for (int i = 0; i < 4; ++i)
+    if (in.fixedCornersPx[i]) c[i] = *in.fixedCornersPx[i];
+  out.cornersPx = c;
+  out.ok = true;
+  const double edgeFrac = best.edgeVisible > 0 ? best.edgeSupported / best.edgeVisible : 0;
+  const double regionFrac =
+      best.regionTotal > 0 ? 0.5 * (1 + best.regionSigned / best.regionTotal) : 0;
+  out.score01 = std::clamp(0.6 * edgeFrac + 0.4 * regionFrac, 0.0, 1.0);
+  return out;
+}
+
+}  // namespace inlay::detail

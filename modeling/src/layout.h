@@ -1,0 +1,34 @@
+// The box layout: the back wall's four corners from rays through the vanishing points, scored
+// by edge support and a line-based orientation map (internal to modeling; see
+// estimate_camera.h). Hedau et al. 2009 (rays through vanishing points), Lee et al. 2009
+// (orientation from line sweeps, reduced here to which face each line sample lies on).
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/estimate_camera.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace inlay::detail {
+
+struct LayoutInput {
+  const Camera* camera = nullptr;                    // photo pixels; its heightM shapes the default
+  const std::vector<LineSegment>* segments = nullptr;  // photo pixels, families 0 x, 1 y, 2 z
+  std::array<std::optional<Vec2>, 4> fixedCornersPx;   // TL, TR, BR, BL kept (their lines fixed)
+  std::optional<std::array<Vec2, 4>> startCornersPx;   // search locally from here (a correction)
+  const CancelToken* cancel = nullptr;
+};
+
+struct LayoutResult {
+  bool ok = false;          // false: no box (the camera looks away from every wall); default corners
+  std::array<Vec2, 4> cornersPx;  // TL, TR, BR, BL, photo pixels
+  double score01 = 0;       // share of the box's visible edges and faces the lines support
+  std::string problem;      // why not ok
+};
+
+LayoutResult estimateLayout(const LayoutInput& input);
+
+}  // namespace inlay::detail

@@ -1,0 +1,489 @@
+// Camera and layout from the photo alone (estimate_camera.h): synthetic line drawings of box rooms
+// from known cameras (vanishing points at infinity, two families only, ten segments, noise, tiny
+// and huge photos, wide-angle, tele, roll), the correction API, the Ceres functor's derivatives,
+// and the ground-truth rooms of ../shared/scenes.
+#include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image_io.h"
+#include "../modeling/src/estimate_camera_internal.h"
+#include "test_support.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+namespace inlay {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+double angleDeg(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) / kDeg;
+}
+
+// Largest angle between corresponding world axes of two cameras.
+double rotationErrorDeg(const Camera& a, const Camera& b) {
+  double worst = 0;
+  for (int k = 0; k < 3; ++k)
+    worst = std::max(worst, angleDeg(a.worldFromCamera.col(k), b.worldFromCamera.col(k)));
+  return worst;
+}
+
+bool isRotation(const Mat3& r) {
+  return r.allFinite() && (r * r.transpose() - Mat3::Identity()).norm() < 1e-6 &&
+         std::abs(r.determinant() - 1) < 1e-6;
+}
+
+// Everything a caller may read is finite and in range.
+void expectSane(const CameraEstimate& e) {
+  EXPECT_TRUE(isRotation(e.camera.worldFromCamera));
+  EXPECT_TRUE(std::isfinite(e.camera.focalPx) && e.camera.focalPx > 0);
+  EXPECT_TRUE(e.focalMinPx <= e.camera.focalPx * (1 + 1e-9) &&
+              e.focalMaxPx >= e.camera.focalPx * (1 - 1e-9));
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_TRUE(e.vanishingPointsPx[k].allFinite());
+    EXPECT_TRUE(e.vanishingPoints[k].homogeneousPx.allFinite());
+    EXPECT_GE(e.confidence[k], 0.0);
+    EXPECT_LE(e.confidence[k], 1.0);
+  }
+  EXPECT_GE(e.overallConfidence, 0.0);
+  EXPECT_LE(e.overallConfidence, 1.0);
+  for (const Vec2& c : e.backWallPx) EXPECT_TRUE(c.allFinite());
+  EXPECT_GE(e.layoutScore, 0.0);
+  EXPECT_LE(e.layoutScore, 1.0);
+}
+
+Camera makeCamera(int w, int h, double f, double yawDeg, double pitchDeg, double rollDeg) {
+  Camera c = levelCamera(w, h, f, 1.5);
+  c.worldFromCamera = (Eigen::AngleAxisd(yawDeg * kDeg, Vec3::UnitY()) *
+                       Eigen::AngleAxisd(pitchDeg * kDeg, Vec3::UnitX()) *
+                       Eigen::AngleAxisd(rollDeg * kDeg, Vec3::UnitZ()))
+                          .toRotationMatrix();
+  return c;
+}
+
+struct Seg3 { Vec3 a, b; };
+
+// A 5 m x 2.7 m room, back wall 5 m ahead (camera at x = z = 0), with floor tiles, a door on
+// the back wall and a window on the left wall: lines in all three directions.
+std::vector<Seg3> roomLines(bool xAndYOnly = false) {
+  const double xl = -2.5, xr = 2.5, zb = -5, zf = 0.5, hc = 2.7;
+  std::vector<Seg3> s;
+  // Back wall: edges and a door; horizontal x lines (a dado rail).
+  s.push_back({{xl, 0, zb}, {xr, 0, zb}});
+  s.push_back({{xl, hc, zb}, {xr, hc, zb}});
+  s.push_back({{xl, 0, zb}, {xl, hc, zb}});
+  s.push_back({{xr, 0, zb}, {xr, hc, zb}});
+  s.push_back({{0.4, 0, zb}, {0.4, 2.0, zb}});
+  s.push_back({{1.3, 0, zb}, {1.3, 2.0, zb}});
+  s.push_back({{0.4, 2.0, zb}, {1.3, 2.0, zb}});
+  s.push_back({{xl, 0.9, zb}, {0.2, 0.9, zb}});
+  s.push_back({{-1.6, 0.3, zb}, {-1.6, 1.6, zb}});
+  if (xAndYOnly) return s;
+  // Receding room edges.
+  for (double x : {xl, xr})
+    for (double y : {0.0, hc}) s.push_back({{x, y, zb}, {x, y, zf}});
+  // Floor tiles.
+  for (double z = -4; z <= -1; z += 1) s.push_back({{xl, 0, z}, {xr, 0, z}});
+  for (double x = -1.5; x <= 1.5; x += 1) s.push_back({{x, 0, zb}, {x, 0, zf}});
+  // Window on the left wall.
+  s.push_back({{xl, 1.0, -3.5}, {xl, 1.0, -1.5}});
+  s.push_back({{xl, 2.1, -3.5}, {xl, 2.1, -1.5}});
+  s.push_back({{xl, 1.0, -3.5}, {xl, 2.1, -3.5}});
+  s.push_back({{xl, 1.0, -1.5}, {xl, 2.1, -1.5}});
+  return s;
+}
+
+// Project a world segment (world as in the scene file: camera at (0, h, 0)), clipped to the
+// part in front of the camera; false when none of it is.
+bool projectSegment(const Camera& cam, const Seg3& s, Vec2& a, Vec2& b) {
+  const double near = 0.05;
+  const double da = cam.depthOf(s.a), db = cam.depthOf(s.b);
+  if (da < near && db < near) return false;
+  Vec3 p = s.a, q = s.b;
+  if (da < near) p = s.a + (s.b - s.a) * ((near - da) / (db - da));
+  if (db < near) q = s.b + (s.a - s.b) * ((near - db) / (da - db));
+  const auto pa = cam.project(p), pb = cam.project(q);
+  if (!pa || !pb) return false;
+  a = *pa;
+  b = *pb;
+  return true;
+}
+
+// Dark anti-aliased line of the given width on a 1-channel image, touching only its box.
+void drawLine(ImageF& im, Vec2 a, Vec2 b, double widthPx, float value) {
+  // Clip far-away endpoints to a generous box so the loops stay small.
+  const double m = 4 * widthPx;
+  const double xs[2] = {-m, im.width + m}, ys[2] = {-m, im.height + m};
+  Vec2 d = b - a;
+  double t0 = 0, t1 = 1;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double qv[4] = {a.x() - xs[0], xs[1] - a.x(), a.y() - ys[0], ys[1] - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (std::abs(p[i]) < 1e-12) {
+      if (qv[i] < 0) return;
+      continue;
+    }
+    const double r = qv[i] / p[i];
+    if (p[i] < 0) t0 = std::max(t0, r);
+    else t1 = std::min(t1, r);
+  }
+  if (t0 > t1) return;
+  const Vec2 a0 = a;
+  a = a0 + t0 * d;
+  b = a0 + t1 * d;
+  d = b - a;
+  const double len2 = std::max(1e-12, d.squaredNorm());
+  const int x0 = std::max(0, int(std::floor(std::min(a.x(), b.x()) - widthPx - 1)));
+  const int x1 = std::min(im.width - 1, int(std::ceil(std::max(a.x(), b.x()) + widthPx + 1)));
+  const int y0 = std::max(0, int(std::floor(std::min(a.y(), b.y()) - widthPx - 1)));
+  const int y1 = std::min(im.height - 1, int(std::ceil(std::max(a.y(), b.y()) + widthPx + 1)));
+  const Vec2 n = Vec2(-d.y(), d.x()).normalized();
+  for (int y = y0; y <= y1; ++y) {
+    // Only the band around the line in this row.
+    for (int x = x0; x <= x1; ++x) {
+      const Vec2 c(x + 0.5, y + 0.5);
+      const double dist = std::abs((c - a).dot(n));
+      if (dist > widthPx) continue;
+      const double t = (c - a).dot(d) / len2;
+      if (t < 0 || t > 1) continue;
+      const float cover = float(std::clamp(0.5 * widthPx + 0.5 - dist, 0.0, 1.0));
+      float& v = im.at(x, y, 0);
+      v = v + (value - v) * cover;
+    }
+  }
+}
+
+ImageF drawRoom(const Camera& cam, const std::vector<Seg3>& lines, double widthPx = 1.5) {
+  ImageF im(cam.widthPx, cam.heightPx, 1, 0.5f);
+  for (const Seg3& s : lines) {
+    Vec2 a, b;
+    if (projectSegment(cam, s, a, b)) drawLine(im, a, b, widthPx, 0.05f);
+  }
+  return im;
+}
+
+std::array<Vec2, 4> trueBackWall(const Camera& cam) {
+  RoomBox box;
+  box.xLeftM = -2.5;
+  box.xRightM = 2.5;
+  box.zBackM = -5;
+  box.ceilingM = 2.7;
+  return backWallCornersPx(cam, box);
+}
+
+TEST(EstimateCamera, CeresFunctorDerivativesMatchCentralDifferences) {
+  EXPECT_LT(detail::segmentResidualGradientError(), 1e-5);
+}
+
+TEST(EstimateCamera, RecoversFocalRotationAndBackWallOfACleanRoom) {
+  const Camera truth = makeCamera(640, 480, 420, 8, -6, 0);
+  const auto bw = trueBackWall(truth);
+  for (const Vec2& c : bw) ASSERT_TRUE(c.x() > 0 && c.x() < 640 && c.y() > 0 && c.y() < 480);
+  const auto e = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_TRUE(e->manhattan);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.03);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+  EXPECT_GT(e->overallConfidence, 0.5);
+  EXPECT_FALSE(e->focalFromPrior);
+  EXPECT_LE(e->focalMinPx, truth.focalPx * 1.03);
+  EXPECT_GE(e->focalMaxPx, truth.focalPx * 0.97);
+  for (int i = 0; i < 4; ++i) EXPECT_LT((e->backWallPx[i] - bw[i]).norm(), 3.0) << "corner " << i;
+  EXPECT_TRUE(roomFromBackWall(e->camera, e->backWallPx).ok());
+  // Supporting segments are reported with their families and residuals.
+  int supported = 0;
+  for (const auto& s : e->segments)
+    if (s.family >= 0) {
+      ++supported;
+      EXPECT_LT(s.residualPx, 5.0);
+    }
+  EXPECT_GE(supported, 10);
+  EXPECT_GT(e->timings.totalMs, 0.0);
+  EXPECT_FALSE(e->progress.empty());
+}
+
+TEST(EstimateCamera, FrontalLevelCameraHasVanishingPointsAtInfinityAndFocalFromPrior) {
+  const Camera truth = makeCamera(640, 480, 600, 0, 0, 0);
+  EstimateOptions o;
+  o.priorFocalPx = 640.0;  // EXIF says 640: a prior, the lines cannot say better here
+  const auto e = estimateCamera(drawRoom(truth, roomLines()), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_TRUE(e->manhattan);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+  EXPECT_TRUE(e->vanishingPoints[0].atInfinity);
+  EXPECT_TRUE(e->vanishingPoints[1].atInfinity);
+  EXPECT_FALSE(e->vanishingPoints[2].atInfinity);
+  EXPECT_TRUE(e->focalFromPrior);
+  EXPECT_NEAR(e->camera.focalPx, 640.0, 640.0 * 0.02);
+  bool warned = false;
+  for (const auto& w : e->warnings) warned |= w.find("focal length") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // The scene file form of a point at infinity is a huge coordinate, and the lead's
+  // cameraFromVanishingPoints accepts it with the focal length given.
+  VanishingInput in;
+  in.widthPx = 640;
+  in.heightPx = 480;
+  in.vanishingPointsPx = e->vanishingPointsPx;
+  in.focalPx = e->camera.focalPx;
+  const auto c = cameraFromVanishingPoints(in);
+  ASSERT_TRUE(c.ok()) << c.error().message();
+  EXPECT_LT(rotationErrorDeg(*c, e->camera), 0.05);
+}
+
+TEST(EstimateCamera, TwoFamiliesOnlyStillGiveFocalAndRotation) {
+  // A facade seen from the side and below: a grid of x and y lines, nothing along z.
+  const Camera truth = makeCamera(640, 480, 520, 25, 10, 0);
+  std::vector<Seg3> grid;
+  for (double x = -3; x <= 3.01; x += 0.5) grid.push_back({{x, 0.2, -5}, {x, 4.5, -5}});
+  for (double y = 0.3; y <= 4.51; y += 0.4) grid.push_back({{-3.2, y, -5}, {3.2, y, -5}});
+  const auto e = estimateCamera(drawRoom(truth, grid));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.05);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+  // The third direction has no lines of its own: it says so.
+  EXPECT_LT(e->confidence[2], 0.2);
+  EXPECT_GT(std::min(e->confidence[0], e->confidence[1]), 0.3);
+}
+
+TEST(EstimateCamera, RolledCamera) {
+  const Camera truth = makeCamera(640, 480, 500, -12, -6, 20);
+  const auto e = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.03);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+}
+
+TEST(EstimateCamera, ExtremeWideAngle) {
+  const Camera truth = makeCamera(640, 480, 0.3 * 640, 10, -12, 0);
+  const auto e = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.05);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+}
+
+TEST(EstimateCamera, TeleIsFiniteAndHonestAboutFocal) {
+  // f = 5 W: the view is a 1 m patch of the back wall around the door; lines nearly parallel.
+  const Camera truth = makeCamera(640, 480, 5 * 640, 4, -3, 0);
+  std::vector<Seg3> lines;
+  for (double x = -0.6; x <= 0.61; x += 0.15) lines.push_back({{x, 0.6, -5}, {x, 2.4, -5}});
+  for (double y = 0.7; y <= 2.31; y += 0.15) lines.push_back({{-0.8, y, -5}, {0.8, y, -5}});
+  for (double x = -0.4; x <= 0.41; x += 0.2) lines.push_back({{x, 0.0, -5}, {x, 0.0, -2}});
+  const auto e = estimateCamera(drawRoom(truth, lines));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  const bool focalRight = std::abs(e->camera.focalPx / truth.focalPx - 1) < 0.1;
+  const bool honest = e->focalFromPrior || (e->focalMinPx <= truth.focalPx && truth.focalPx <= e->focalMaxPx);
+  EXPECT_TRUE(focalRight || honest) << "f " << e->camera.focalPx << " in [" << e->focalMinPx
+                                     << ", " << e->focalMaxPx << "]";
+  // Up is still up.
+  EXPECT_LT(angleDeg(e->camera.worldFromCamera.row(1).transpose(),
+                     truth.worldFromCamera.row(1).transpose()), 3.0);
+}
+
+TEST(EstimateCamera, TenSegmentsGiveAnHonestAnswer) {
+  const Camera truth = makeCamera(640, 480, 560, 15, -8, 0);
+  const auto all = roomLines();
+  std::vector<LineSegment> segs;
+  for (int i : {0, 1, 2, 3, 4, 5, 9, 10, 13, 14}) {
+    Vec2 a, b;
+    ASSERT_TRUE(projectSegment(truth, all[i], a, b));
+    segs.push_back({a, b});
+  }
+  ASSERT_EQ(segs.size(), 10u);
+  const auto e = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  // Four, four and two lines cannot beat the chance bar that random-line photos reach: either
+  // a right answer, or the fallback saying it is not sure. Never a wrong answer claimed sure.
+  if (e->manhattan) EXPECT_LT(rotationErrorDeg(e->camera, truth), 2.0);
+  else EXPECT_LT(e->overallConfidence, 0.2);
+  const auto full = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(full.ok());
+  EXPECT_LT(e->overallConfidence, full->overallConfidence);
+}
+
+TEST(EstimateCamera, PureNoiseIsAFallbackWithLowConfidence) {
+  ImageF im(320, 240, 3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (float& v : im.data) v = u(rng);
+  const auto e = estimateCamera(im);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_FALSE(e->manhattan);
+  EXPECT_LT(e->overallConfidence, 0.2);
+  EXPECT_NEAR(e->camera.horizontalFovDeg(), 60.0, 0.5);  // no EXIF: 60 degrees, level
+  EXPECT_LT(rotationErrorDeg(e->camera, levelCamera(320, 240, 300, 1.6)), 1e-9);
+  EXPECT_FALSE(e->warnings.empty());
+  // A blank wall: no lines at all.
+  const auto blank = estimateCamera(ImageF(320, 240, 3, 0.4f));
+  ASSERT_TRUE(blank.ok());
+  expectSane(*blank);
+  EXPECT_FALSE(blank->manhattan);
+  EXPECT_EQ(blank->overallConfidence, 0.0);
+}
+
+TEST(EstimateCamera, TinyPhoto) {
+  const Camera truth = makeCamera(16, 16, 14, 15, -8, 0);
+  const auto e = estimateCamera(drawRoom(truth, roomLines(), 1.0));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_EQ(e->camera.widthPx, 16);
+  EXPECT_EQ(e->camera.heightPx, 16);
+}
+
+TEST(EstimateCamera, HugePhotoIsDownscaledFirst) {
+  // 10000 x 8000 (80 MP, one channel to keep the test's own memory at 320 MB).
+  const Camera truth = makeCamera(10000, 8000, 8750, 15, -8, 0);
+  const ImageF im = drawRoom(truth, roomLines(), 24.0);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto e = estimateCamera(im);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_LT(e->workingScale, 0.1);
+  EXPECT_LT(s, 5.0);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.03);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+}
+
+TEST(EstimateCamera, BadInputAndCancellation) {
+  const auto empty = estimateCamera(ImageF());
+  ASSERT_FALSE(empty.ok());
+  EXPECT_EQ(empty.error().key, "photo");
+  const auto two = estimateCamera(ImageF(32, 32, 2));
+  ASSERT_FALSE(two.ok());
+  EXPECT_EQ(two.error().key, "photo");
+  CancelToken token;
+  token.cancel();
+  EstimateOptions o;
+  o.cancel = &token;
+  const auto c = estimateCamera(drawRoom(makeCamera(640, 480, 560, 15, -8, 0), roomLines()), o);
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().reason, "cancelled");
+  // Non-finite pixels do not poison the estimate.
+  ImageF nan = drawRoom(makeCamera(640, 480, 560, 15, -8, 0), roomLines());
+  nan.at(10, 10) = std::nanf("");
+  nan.at(11, 10) = INFINITY;
+  const auto n = estimateCamera(nan);
+  ASSERT_TRUE(n.ok());
+  expectSane(*n);
+}
+
+TEST(CorrectEstimate, KeepsWhatTheUserFixedAndStaysConsistent) {
+  const Camera truth = makeCamera(640, 480, 560, 15, -8, 0);
+  const auto first = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(first.ok());
+
+  // A locked focal length is kept exactly; the rotation is re-fitted to it.
+  EstimateCorrection lock;
+  lock.lockedFocalPx = 600.0;
+  const auto locked = correctEstimate(*first, lock);
+  ASSERT_TRUE(locked.ok()) << locked.error().message();
+  expectSane(*locked);
+  EXPECT_DOUBLE_EQ(locked->camera.focalPx, 600.0);
+  EXPECT_DOUBLE_EQ(locked->focalMinPx, 600.0);
+  EXPECT_LT(rotationErrorDeg(locked->camera, truth), 3.0);
+
+  // A moved corner is kept exactly, and the box is one the room builder accepts.
+  EstimateCorrection move;
+  const Vec2 tl = first->backWallPx[0] + Vec2(-12, -9);
+  move.backWallCornersPx[0] = tl;
+  const auto moved = correctEstimate(*first, move);
+  ASSERT_TRUE(moved.ok()) << moved.error().message();
+  EXPECT_EQ(moved->backWallPx[0], tl);
+  EXPECT_TRUE(roomFromBackWall(moved->camera, moved->backWallPx).ok());
+  // The other corners stay on lines through the vanishing points: TR on the top edge through
+  // the x vanishing point, BL on the left edge through the y one.
+  const Vec3 top = Vec3(tl.x(), tl.y(), 1).cross(moved->vanishingPoints[0].homogeneousPx);
+  const Vec2 tr = moved->backWallPx[1];
+  EXPECT_LT(std::abs(top.dot(Vec3(tr.x(), tr.y(), 1))) / top.head<2>().norm(), 1.0);
+
+  // A vanishing point given by two user lines: the user's lines are met (residual < 1 px),
+  // even where they disagree with the photo's lines (here: a camera turned by 2 degrees).
+  const Camera turned = makeCamera(640, 480, 560, 17, -8, 0);
+  EstimateCorrection vp;
+  {
+    Vec2 a0, b0, a1, b1;
+    ASSERT_TRUE(projectSegment(turned, {{-2.5, 0, -4.5}, {-2.5, 0, -1.0}}, a0, b0));
+    ASSERT_TRUE(projectSegment(turned, {{2.5, 0, -4.5}, {2.5, 0, -1.0}}, a1, b1));
+    vp.vanishingLinesPx[2] = std::array<Vec2, 4>{a0, b0, a1, b1};
+  }
+  const auto user = correctEstimate(*first, vp);
+  ASSERT_TRUE(user.ok()) << user.error().message();
+  expectSane(*user);
+  int userLines = 0;
+  for (const auto& s : user->segments)
+    if (s.userGiven) {
+      ++userLines;
+      EXPECT_EQ(s.family, 2);
+      EXPECT_LT(s.residualPx, 1.0);
+    }
+  EXPECT_EQ(userLines, 2);
+  EXPECT_DOUBLE_EQ(user->confidence[2], user->vanishingPoints[2].confidence);
+
+  // Bad corrections are named.
+  EstimateCorrection bad;
+  bad.lockedFocalPx = -3;
+  const auto b = correctEstimate(*first, bad);
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().key.find("correction"), std::string::npos);
+  EstimateCorrection above;
+  above.backWallCornersPx[3] = Vec2(100, 5);  // a floor corner far above the horizon
+  above.backWallCornersPx[2] = Vec2(500, 5);
+  EXPECT_FALSE(correctEstimate(*first, above).ok());
+}
+
+TEST(EstimateCamera, GroundTruthRooms) {
+  INLAY_REQUIRE_SHARED();
+  int scenes = 0, goodLayouts = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::sharedDir() + "/scenes")) {
+    if (!std::filesystem::exists(entry.path() / "truth.json")) continue;
+    std::ifstream f(entry.path() / "truth.json");
+    const auto t = nlohmann::json::parse(f);
+    const auto& cam = t["camera"];
+    const auto loaded = loadImage((entry.path() / "photo.png").string());
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message();
+    const ImageF& im = loaded->linearRgb;
+    const auto e = estimateCamera(im);
+    ASSERT_TRUE(e.ok()) << e.error().message();
+    expectSane(*e);
+    Camera truth;
+    truth.widthPx = t["image"]["width"];
+    truth.heightPx = t["image"]["height"];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) truth.worldFromCamera(r, k) = cam["R_cam_to_world_opengl"][r][k];
+    const double fTrue = cam["focal_px"];
+    EXPECT_NEAR(e->camera.focalPx / fTrue, 1.0, 0.05) << entry.path();
+    EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0) << entry.path();
+    const auto& k = t["room"]["corners"];
+    const char* names[4] = {"ceiling_front_left", "ceiling_front_right", "floor_front_right",
+                            "floor_front_left"};
+    double worst = 0;
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_FALSE(k[names[i]]["pixel"].is_null());
+      const Vec2 p(k[names[i]]["pixel"][0].get<double>(), k[names[i]]["pixel"][1].get<double>());
+      worst = std::max(worst, (e->backWallPx[i] - p).norm());
+    }
+    goodLayouts += worst < 3.0;
+    ++scenes;
+  }
+  EXPECT_GE(scenes, 1);
+  // Stated accuracy: half the rooms within 3 px at every back-wall corner (the others miss a
+  // wall corner hidden by clutter or outside the photo; see the benchmark).
+  EXPECT_GE(2 * goodLayouts, scenes);
+}
+
+}  // namespace
+}  // namespace inlay
