@@ -270,7 +270,9 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     delete progress_;
     progress_ = new QProgressDialog(tr("Preparing the scene…"), tr("Cancel"), 0, 1000, this);
     progress_->setWindowTitle(tr("Inlay"));
-    progress_->setWindowModality(Qt::WindowModal);
+    // Not modal: a modal QProgressDialog::setValue() runs processEvents(), and the progress
+    // slot would re-enter. Edits are refused by the document while it prepares anyway.
+    progress_->setWindowModality(Qt::NonModal);
     progress_->setMinimumDuration(interactive_ ? 500 : 1000000000);
     progress_->setAutoClose(false);
     progress_->setAutoReset(false);
