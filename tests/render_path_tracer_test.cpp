@@ -487,6 +487,34 @@ TEST(Cancel, StoppedRenderReportsFalseAndKeepsWholeSamples) {
   for (int n : b.samples) EXPECT_TRUE(n == 0 || n == 4);
 }
 
+// A ceiling light touching the back wall: the wall just below it gets light from a large solid
+// angle at tiny distances. Solid-angle sampling keeps the estimator bounded there: 4 samples
+// already come within 8% rms of a 256-sample render (area sampling: 24%).
+TEST(Stiff, LightTouchingAWallConvergesFast) {
+  const int w = 32, h = 32;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 16, 2.3), RoomBox{}, 0.7);
+  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(10)));
+  TracerOptions opt;
+  opt.maxDepth = 1;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers few(w, h), many(w, h);
+  ASSERT_TRUE(tracer.render(few, 0, 4, 6));
+  ASSERT_TRUE(tracer.render(many, 4, 256, 6));
+  const ImageF a = few.meanWith(), b = many.meanWith();
+  double sum2 = 0, worst = 0;
+  int n = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (b.at(x, y, 0) < 0.2) continue;  // the lit wall under the light, not the dark ceiling
+      const double rel = a.at(x, y, 0) / b.at(x, y, 0) - 1;
+      sum2 += rel * rel, worst = std::max(worst, std::abs(rel)), ++n;
+    }
+  ASSERT_GT(n, 100);
+  std::printf("[ stiff ] wall under a touching light, 4 vs 256 spp: %d px, rms rel %.4f, worst %.4f\n", n,
+              std::sqrt(sum2 / n), worst);
+  EXPECT_LT(std::sqrt(sum2 / n), 0.12);  // area sampling: 0.24 here
+}
+
 // Stiff inputs: a light lying on the floor, a light touching the floor edge-on, a 1e6-radiance
 // light, a needle-thin triangle, a degenerate light and a NaN radiance. All finite.
 TEST(Stiff, ExtremeInputsStayFinite) {

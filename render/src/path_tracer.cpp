@@ -66,6 +66,8 @@ struct ObjectData {
 
 struct LightData {
   std::array<Vec3, 4> emitter;  // corners of the emitter quad (offset from the light)
+  bool rectangle = false;       // sampled by solid angle (corner + edges below) when true
+  Vec3 corner, edgeX, edgeY;
   Vec3 normal;
   double area = 0;
   Vec3 radiance;
@@ -257,11 +259,24 @@ struct PathTracer::Impl {
     return len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3(-dir);
   }
 
-  // Solid-angle pdf with which NEE would have picked the point `t` along a ray on light i.
-  double lightPdf(int i, double t, double cosLight) const {
+  // Below this solid angle (sr) a rectangle is sampled by area: the spherical-rectangle
+  // angles lose precision, and a far light has no 1/d^2 trouble anyway.
+  static constexpr double kMinSolidAngle = 1e-6;
+
+  // Solid-angle pdf with which NEE from `from` picks the direction to `onLight` on light i.
+  // NEE and the MIS weight of BSDF hits both use it (same decision between the strategies).
+  double lightPdf(int i, const Vec3& from, const Vec3& onLight) const {
     const LightData& l = lights[size_t(i)];
-    if (!(cosLight > 0) || !(l.area > 0)) return 0;
-    return l.selectProb * t * t / (l.area * cosLight);
+    if (!(l.area > 0) || !(l.selectProb > 0)) return 0;
+    if (l.rectangle) {
+      const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
+      if (sr.solidAngle > kMinSolidAngle) return l.selectProb / sr.solidAngle;
+    }
+    Vec3 w = onLight - from;
+    const double d2 = w.squaredNorm();
+    const double cosL = -l.normal.dot(w) / std::sqrt(d2);
+    if (!(cosL > 0)) return 0;
+    return l.selectProb * d2 / (l.area * cosL);
   }
 
   Vec3 clampIndirect(const Vec3& c, bool indirect) const {
@@ -284,6 +299,7 @@ struct PathTracer::Impl {
     int depth = 0;             // index of the vertex the ray will find (0: the camera ray's hit)
     bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
     double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
+    Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
   };
 
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
@@ -317,7 +333,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       const double cosL = -l.normal.dot(dir);
       if (cosL <= 0) return;  // the black back of the light
       const double w =
-          st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, hit.t, cosL));
+          st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, hit.point));
       if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
       return;
     }
@@ -360,7 +376,13 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
                                                                  lightCdf.begin()));
         const LightData& l = lights[li];
         const auto uLight = rng.get2(dim / 2);
-        const Vec3 y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
+        Vec3 y;
+        double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
+        if (l.rectangle) {
+          const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
+          if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+        }
+        if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
         Vec3 w = y - hit.point;
         const double d2 = w.squaredNorm();
         const double d = std::sqrt(d2);
@@ -370,7 +392,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
           double pdfBsdf = 0;
           const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
           if (fcos.maxCoeff() > 0) {
-            const double pdfLight = l.selectProb * d2 / (l.area * cosL);
+            const double pdfLight =
+                solidAngle > 0 ? l.selectProb / solidAngle : lightPdf(int(li), hit.point, y);
             const Vec3 c = clampIndirect(
                 Vec3(throughput.cwiseProduct(fcos).cwiseProduct(l.radiance) *
                      (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
@@ -402,6 +425,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       throughput = throughput.cwiseProduct(s.weight);
       st.lastSpecular = false;
       st.lastPdf = s.pdf;
+      st.lastPoint = hit.point;
       origin = hit.point + eps * ngFacing;
     } else if (bsdf.kind == Material::Kind::Mirror) {
       dir = reflect(wo, ns).normalized();
@@ -501,6 +525,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     l.area = light.area();
     l.radiance = light.radiance.allFinite() ? Vec3(light.radiance.cwiseMax(0.0)) : Vec3(Vec3::Zero());
     const bool valid = l.normal.allFinite() && l.area > 0 && std::isfinite(l.area);
+    l.rectangle = valid && asRectangle(l.emitter, &l.corner, &l.edgeX, &l.edgeY);
     if (!valid) l.area = 0, l.normal = Vec3(0, -1, 0);
     // Pick lights for NEE by power (area x mean radiance).
     const double power = valid ? l.area * meanComponent(l.radiance) : 0.0;

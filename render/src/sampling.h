@@ -128,6 +128,65 @@ inline Vec3 sampleQuadUniform(const std::array<Vec3, 4>& c, double u, double v) 
   return (1.0 - su) * b + su * (1.0 - v) * e1 + su * v * e2;
 }
 
+// Uniform sampling of the solid angle a rectangle subtends (Urena, Fajardo, King 2013, "An
+// Area-Preserving Parametrization for Spherical Rectangles"): pdf = 1 / solidAngle, so the
+// estimator has no 1/d^2 and stays bounded next to the light (a light touching a wall).
+// Rectangle: corner s, perpendicular edges ex, ey. Seen from o.
+struct SphericalRect {
+  Vec3 o, x, y, z;
+  double z0 = 0, x0 = 0, y0 = 0, x1 = 0, y1 = 0, b0 = 0, b1 = 0, k = 0;
+  double solidAngle = 0;  // 0 when o lies in the rectangle's plane
+
+  SphericalRect(const Vec3& s, const Vec3& ex, const Vec3& ey, const Vec3& origin) : o(origin) {
+    const double exl = ex.norm(), eyl = ey.norm();
+    x = ex / exl;
+    y = ey / eyl;
+    z = x.cross(y);
+    const Vec3 d = s - o;
+    z0 = d.dot(z);
+    if (z0 > 0) z = -z, z0 = -z0;  // z points away from the rectangle as seen from o
+    x0 = d.dot(x), y0 = d.dot(y);
+    x1 = x0 + exl, y1 = y0 + eyl;
+    if (!(z0 < 0)) return;
+    const Vec3 v00(x0, y0, z0), v01(x0, y1, z0), v10(x1, y0, z0), v11(x1, y1, z0);
+    const Vec3 n0 = v00.cross(v10).normalized(), n1 = v10.cross(v11).normalized(),
+               n2 = v11.cross(v01).normalized(), n3 = v01.cross(v00).normalized();
+    auto angle = [](double c) { return std::acos(std::clamp(c, -1.0, 1.0)); };
+    const double g0 = angle(-n0.dot(n1)), g1 = angle(-n1.dot(n2)), g2 = angle(-n2.dot(n3)),
+                 g3 = angle(-n3.dot(n0));
+    b0 = n0.z();
+    b1 = n2.z();
+    k = 2.0 * kPi - g2 - g3;
+    const double sa = g0 + g1 - k;
+    solidAngle = std::isfinite(sa) && sa > 0 ? sa : 0.0;
+  }
+
+  Vec3 sample(double u, double v) const {
+    const double au = u * solidAngle + k;
+    const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
+    double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + b0 * b0);
+    cu = std::clamp(cu, -1.0, 1.0);
+    double xu = -(cu * z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
+    xu = std::clamp(xu, x0, x1);
+    const double dd = std::sqrt(xu * xu + z0 * z0);
+    const double h0 = y0 / std::sqrt(dd * dd + y0 * y0), h1 = y1 / std::sqrt(dd * dd + y1 * y1);
+    const double hv = h0 + v * (h1 - h0), hv2 = hv * hv;
+    const double yv = hv2 < 1.0 - 1e-12 ? hv * dd / std::sqrt(1.0 - hv2) : y1;
+    return o + xu * x + std::clamp(yv, y0, y1) * y + z0 * z;
+  }
+};
+
+// True when the quad's corners form a rectangle (to round-off); fills corner and edges.
+inline bool asRectangle(const std::array<Vec3, 4>& c, Vec3* s, Vec3* ex, Vec3* ey) {
+  const Vec3 e1 = c[1] - c[0], e2 = c[3] - c[0];
+  const double l1 = e1.norm(), l2 = e2.norm();
+  if (!(l1 > 0) || !(l2 > 0)) return false;
+  if (std::abs(e1.dot(e2)) > 1e-6 * l1 * l2) return false;
+  if ((c[2] - (c[0] + e1 + e2)).norm() > 1e-6 * (l1 + l2)) return false;
+  *s = c[0], *ex = e1, *ey = e2;
+  return true;
+}
+
 // The emitter geometry of a light: its corners moved kLightOffsetM along its normal.
 inline std::array<Vec3, 4> emitterCorners(const AreaLight& light) {
   const Vec3 n = light.normal();
