@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""Plots for bench_camera's CSV (Debian's python3 with numpy and matplotlib).
+
+usage: bench_camera_plot.py OUT_DIR   (reads OUT_DIR/camera_bench.csv and camera_bench_summary.json,
+                                        writes OUT_DIR/camera_*.png)
+"""
+import csv, json, os, sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+out = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(out, "camera_bench.csv"))))
+summary = json.load(open(os.path.join(out, "camera_bench_summary.json")))
+default = summary["default_budget"]
+
+
+def col(set_, budget, key):
+    v = [float(r[key]) for r in rows if r["set"] == set_ and int(r["budget"]) == budget]
+    return np.array(v)
+
+
+def auc(h):
+    xs = np.linspace(0, 0.25, 251)
+    return float(np.trapz([(h <= x).mean() for x in xs], xs) / 0.25)
+
+
+for set_ in ("york", "scenes"):
+    budgets = sorted({int(r["budget"]) for r in rows if r["set"] == set_})
+    if not budgets:
+        continue
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
+    h = col(set_, default, "horizon_err")
+    xs = np.linspace(0, 0.25, 251)
+    ax[0].plot(xs, [(h <= x).mean() for x in xs])
+    ax[0].set_xlabel("horizon error / image height")
+    ax[0].set_ylabel("fraction of images")
+    ax[0].set_title(f"{set_}: horizon AUC(0.25) = {auc(h):.3f} (budget {default})")
+    ax[0].grid(alpha=0.3)
+    a = col(set_, default, "vp_angle_deg_max")
+    ax[1].hist(np.clip(a, 0, 10), bins=40)
+    ax[1].set_xlabel("worst vanishing-direction error (deg, clipped at 10)")
+    ax[1].set_title(f"median {np.median(a):.2f} deg")
+    f = col(set_, default, "focal_rel_err")
+    ax[2].hist(np.clip(f, 0, 0.5), bins=40)
+    ax[2].set_xlabel("relative focal error (clipped at 0.5)")
+    ax[2].set_title(f"median {np.median(f):.3f}")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"camera_{set_}_errors.png"), dpi=110)
+    plt.close(fig)
+
+    # Error against run time as the search budget varies.
+    ms = [np.median(col(set_, b, "ms")) for b in budgets]
+    ang = [np.median(col(set_, b, "vp_angle_deg_max")) for b in budgets]
+    foc = [np.median(col(set_, b, "focal_rel_err")) for b in budgets]
+    aucs = [auc(col(set_, b, "horizon_err")) for b in budgets]
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.2))
+    for k, (y, lab) in enumerate([(ang, "median worst-direction error (deg)"),
+                                  (foc, "median relative focal error"),
+                                  (aucs, "horizon AUC(0.25)")]):
+        ax[k].plot(ms, y, "o-")
+        for b, x_, y_ in zip(budgets, ms, y):
+            ax[k].annotate(str(b), (x_, y_), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        ax[k].set_xlabel("median ms per photo (one core)")
+        ax[k].set_ylabel(lab)
+        ax[k].grid(alpha=0.3)
+    fig.suptitle(f"{set_}: error against run time (labels: hypotheses per focal rung)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"camera_{set_}_budget.png"), dpi=110)
+    plt.close(fig)
+
+scene = [r for r in rows if r["set"] == "scenes" and int(r["budget"]) == default]
+if scene:
+    fig, ax = plt.subplots(figsize=(8, 4))
+    names = [r["image"] for r in scene]
+    ax.bar(np.arange(len(scene)) - 0.2, [float(r["corner_err_px_max"]) for r in scene], 0.4, label="max")
+    ax.bar(np.arange(len(scene)) + 0.2, [float(r["corner_err_px_mean"]) for r in scene], 0.4, label="mean")
+    ax.set_xticks(np.arange(len(scene)))
+    ax.set_xticklabels(names, rotation=30, ha="right", fontsize=8)
+    ax.set_ylabel("back-wall corner error (px)")
+    ax.set_yscale("log")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "camera_scenes_corners.png"), dpi=110)
+    plt.close(fig)
+print("plots in", out)
