@@ -2,10 +2,12 @@
 // Exit status: 0 success, 2 bad input or usage (one line naming file, key and reason),
 // 1 internal failure or interruption.
 #include "inlay/engine/pipeline.h"
+#include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
 #include "inlay/render/session.h"
 
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 
 #include <atomic>
@@ -30,7 +32,9 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours]
                                                      the room's albedo and direct light
-  inlay-cli estimate PHOTO -o CAMERA.json            (not in this version: see below)
+  inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
+                                                     vanishing points, focal length, rotation,
+                                                     back wall; --scene keeps what it fixes
   inlay-cli --help | --version
 
 Render options:
@@ -49,9 +53,10 @@ never leaves a half-written file. Ctrl-C stops within a second.
 
 Exit status: 0 success, 2 bad input or usage, 1 internal failure or interrupted.
 
-Not in this version: 'estimate' (automatic camera and room from the photo alone), sun shafts,
-occluders, '--method retinex'. A scene without vanishing points or layout renders with a level
-camera and a default room, with a warning.
+A scene file without camera.vanishing_points_px or layout.back_wall_px gets them estimated from
+the photo (as 'estimate' does), with a warning when the photo shows no clear room structure.
+
+Not in this version: sun shafts, occluders, '--method retinex'.
 )";
 
 CancelToken gCancel;
@@ -281,6 +286,88 @@ int commandRender(const std::string& scenePath, const Args& a) {
   return 0;
 }
 
+// CAMERA.json: the scene file's `camera` and `layout` keys, plus `rotation` (world from camera,
+// camera looking down its -z, y up), per-vanishing-point confidence and timings.
+int commandEstimate(const std::string& photoPath, const Args& a) {
+  if (a.output.empty()) return usageError("estimate needs -o CAMERA.json");
+  Progress progress(a.quiet);
+  progress.stage("photo", 0);
+  auto photo = loadImage(photoPath);
+  if (!photo) return inputError(photo.error());
+  const int W = photo->linearRgb.width, H = photo->linearRgb.height;
+  SceneDoc fixed;
+  if (!a.sceneForEstimate.empty()) {
+    auto loaded = loadSceneFile(a.sceneForEstimate);
+    if (!loaded) return inputError(loaded.error());
+    fixed = loaded->doc;
+  }
+  EstimateOptions eo;
+  eo.priorFocalPx = fixed.camera.focalPx ? fixed.camera.focalPx : photo->exif.focalPx(W, H);
+  eo.cameraHeightM = fixed.camera.heightM.value_or(1.6);
+  eo.cancel = &gCancel;
+  progress.stage("estimate", 0);
+  auto est = estimateCamera(photo->linearRgb, eo);
+  if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted; nothing written\n"), 1;
+  if (!est) return inputError(est.error().inFile(photoPath));
+  // What the user already fixed in the scene is kept; the rest re-estimated around it.
+  EstimateCorrection fix;
+  bool anyFix = false;
+  if (fixed.camera.focalPx) fix.lockedFocalPx = fixed.camera.focalPx, anyFix = true;
+  if (fixed.layout.backWallPx) {
+    for (int i = 0; i < 4; ++i) fix.backWallCornersPx[i] = (*fixed.layout.backWallPx)[i];
+    anyFix = true;
+  }
+  if (anyFix) {
+    auto c = correctEstimate(*est, fix, eo);
+    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
+    est = std::move(c);
+  }
+  Camera cam = est->camera;
+  std::array<Vec2, 3> vps = est->vanishingPointsPx;
+  if (fixed.camera.vanishingPointsPx) {
+    VanishingInput in;
+    in.vanishingPointsPx = *fixed.camera.vanishingPointsPx;
+    in.focalPx = fixed.camera.focalPx;
+    in.principalPx = fixed.camera.principalPx;
+    in.widthPx = W;
+    in.heightPx = H;
+    in.heightM = eo.cameraHeightM;
+    auto c = cameraFromVanishingPoints(in);
+    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
+    cam = *c;
+    vps = *fixed.camera.vanishingPointsPx;
+  }
+  using nlohmann::json;
+  auto pt = [](const Vec2& p) { return json::array({p.x(), p.y()}); };
+  json j;
+  j["camera"] = {{"height_m", cam.heightM}, {"focal_px", cam.focalPx},
+                 {"principal_px", pt(cam.principalPx)},
+                 {"vanishing_points_px", json::array({pt(vps[0]), pt(vps[1]), pt(vps[2])})}};
+  j["layout"] = {{"back_wall_px", json::array({pt(est->backWallPx[0]), pt(est->backWallPx[1]),
+                                               pt(est->backWallPx[2]), pt(est->backWallPx[3])})}};
+  json rot = json::array();
+  for (int r = 0; r < 3; ++r)
+    rot.push_back(json::array({cam.worldFromCamera(r, 0), cam.worldFromCamera(r, 1), cam.worldFromCamera(r, 2)}));
+  j["rotation"] = rot;
+  j["confidence"] = {{"vanishing_points", json::array({est->confidence[0], est->confidence[1], est->confidence[2]})},
+                     {"overall", est->overallConfidence}, {"manhattan", est->manhattan},
+                     {"layout", est->layoutScore}};
+  j["focal_interval_px"] = json::array({est->focalMinPx, est->focalMaxPx});
+  j["focal_from_prior"] = est->focalFromPrior;
+  j["warnings"] = est->warnings;
+  j["timings_ms"] = {{"lines", est->timings.linesMs}, {"vanishing", est->timings.vanishingMs},
+                     {"refine", est->timings.refineMs}, {"layout", est->timings.layoutMs},
+                     {"total", est->timings.totalMs}};
+  j["segments"] = est->segments.size();
+  if (auto st = writeFileAtomically(a.output, j.dump(2) + "\n"); !st) return inputError(st.error());
+  if (!a.quiet) {
+    for (const auto& w : est->warnings) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+    std::fprintf(stderr, "inlay-cli: wrote %s (focal %.1f px, confidence %.2f, %.0f ms)\n",
+                 a.output.c_str(), cam.focalPx, est->overallConfidence, est->timings.totalMs);
+  }
+  return 0;
+}
+
 int commandDecompose(const std::string& scenePath, const Args& a) {
   if (a.albedo.empty()) return usageError("decompose needs --albedo ALBEDO.exr");
   if (a.method != "ours")
@@ -338,10 +425,8 @@ int main(int argc, char** argv) {
       return commandDecompose(a.positional[0], a);
     }
     if (a.command == "estimate") {
-      std::fprintf(stderr,
-                   "inlay-cli: estimate: automatic camera and room estimation is not in this "
-                   "version; give camera.vanishing_points_px and layout.back_wall_px in the scene\n");
-      return 1;
+      if (a.positional.size() != 1) return usageError("estimate needs exactly one PHOTO");
+      return commandEstimate(a.positional[0], a);
     }
     return usageError(a.command.empty() ? "no command given" : "unknown command '" + a.command + "'");
   } catch (const std::bad_alloc&) {

@@ -1,5 +1,6 @@
 #include "inlay/engine/pipeline.h"
 
+#include "inlay/modeling/estimate_camera.h"
 #include "inlay/render/composite.h"
 
 #include <chrono>
@@ -144,6 +145,30 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   const double heightM = doc.camera.heightM.value_or(1.6);
   if (!(heightM > 0 && std::isfinite(heightM)))
     return Error{"", "camera.height_m", "must be a positive number of metres"};
+  // What the scene file leaves out (vanishing points, layout) is estimated from the photo;
+  // what it gives is kept.
+  std::optional<CameraEstimate> estimate;
+  if (!doc.camera.vanishingPointsPx || !doc.layout.backWallPx) {
+    EstimateOptions eo;
+    eo.priorFocalPx = doc.camera.focalPx ? doc.camera.focalPx : ps.photo.exif.focalPx(W, H);
+    eo.cameraHeightM = heightM;
+    eo.cancel = opt.cancel;
+    auto e = estimateCamera(ps.photo.linearRgb, eo);
+    if (!e) return e.error();
+    if (doc.camera.focalPx && !doc.camera.vanishingPointsPx) {
+      EstimateCorrection fix;
+      fix.lockedFocalPx = doc.camera.focalPx;
+      auto fixed = correctEstimate(*e, fix, eo);
+      if (!fixed) return fixed.error();
+      e = std::move(fixed);
+    }
+    for (const auto& w : e->warnings) ps.warnings.push_back("estimate: " + w);
+    if (!e->manhattan)
+      ps.warnings.push_back("estimate: the photo shows no clear room structure; the camera is a "
+                            "fallback (level, " + std::string(e->focalFromPrior ? "prior" : "default") +
+                            " focal length): give camera.vanishing_points_px for a reliable result");
+    estimate = std::move(*e);
+  }
   if (doc.camera.vanishingPointsPx) {
     VanishingInput in;
     in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
@@ -156,17 +181,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     if (!cam) return cam.error();
     ps.camera = *cam;
   } else {
-    double f = doc.camera.focalPx.value_or(0);
-    if (!(f > 0)) {
-      const auto exifF = ps.photo.exif.focalPx(W, H);
-      f = exifF ? *exifF : 0.5 * W / std::tan(0.5 * 60.0 * M_PI / 180.0);
-      ps.warnings.push_back(std::string("camera: no focal length or vanishing points given; using ") +
-                            (exifF ? "the photo's EXIF focal length" : "a 60 degree field of view") +
-                            " and a level camera (automatic estimation is not in this version)");
-    } else {
-      ps.warnings.push_back("camera: no vanishing points given; assuming a level camera");
-    }
-    ps.camera = levelCamera(W, H, f, heightM);
+    ps.camera = estimate->camera;
+    ps.camera.heightM = heightM;
     if (doc.camera.principalPx) ps.camera.principalPx = *doc.camera.principalPx;
   }
   ps.stageSeconds.emplace_back("camera", secondsSince(t));
@@ -174,15 +190,19 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // Room and supporting surfaces.
   progress("room", 0);
   t = Clock::now();
-  if (doc.layout.backWallPx) {
-    auto box = roomFromBackWall(ps.camera, *doc.layout.backWallPx);
-    if (!box) return box.error();
-    ps.box = *box;
-  } else {
-    // No layout: a room of ordinary proportions around the camera, the back wall 5 m ahead.
-    ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, heightM + 0.5)};
-    ps.warnings.push_back("layout: no back_wall_px given; using a 5 x 5.5 m room (automatic layout "
-                          "is not in this version)");
+  {
+    const std::array<Vec2, 4> corners = doc.layout.backWallPx ? *doc.layout.backWallPx : estimate->backWallPx;
+    auto box = roomFromBackWall(ps.camera, corners);
+    if (!box && doc.layout.backWallPx) return box.error();
+    if (box) {
+      ps.box = *box;
+      ps.backWallPx = corners;
+    } else {
+      // The estimated layout does not fit this camera: a room of ordinary proportions.
+      ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, heightM + 0.5)};
+      ps.warnings.push_back("layout: the estimated back wall is unusable (" + box.error().reason +
+                            "); using a 5 x 5.5 m room: give layout.back_wall_px");
+    }
   }
   for (size_t i = 0; i < doc.surfaces.size(); ++i) {
     const std::string key = "surfaces[" + std::to_string(i) + "]";

@@ -24,6 +24,7 @@ struct PreparedScene {
   LoadedImage photo;            // linear RGB, oriented
   Camera camera;
   RoomBox box;
+  std::array<Vec2, 4> backWallPx{};  // the corners the box was made from
   std::vector<Extrusion> extrusions;
   SceneGeometry geometry;
   LightingEstimate lighting;
