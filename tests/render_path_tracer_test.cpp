@@ -208,6 +208,22 @@ TEST(DiffusePlane, RoomTracerMatchesFormFactor) {
   EXPECT_NEAR(hit->normalWorld.y(), 1.0, 1e-9);
 }
 
+// Next to a light touching a wall, 64 stratified samples already agree with 4096 (solid-angle
+// stratification; area sampling needs far more this close).
+TEST(DiffusePlane, RoomTracerNextToATouchingLight) {
+  const RoomTracer tracer(test::boxRoom());
+  const AreaLight light = test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Ones());
+  for (const double below : {0.003, 0.02, 0.2}) {
+    const Vec3 p(0.1, 2.6 - below, -4.0 + 1e-4), n(0, 0, 1);
+    const double few = tracer.unitLightIrradianceOverPi(light, p, n, 64, 3);
+    const double many = tracer.unitLightIrradianceOverPi(light, p, n, 4096, 4);
+    std::printf("[ plane ] wall point %.3f m below a touching light: 64 samples %.5f, 4096 samples %.5f\n", below,
+                few, many);
+    EXPECT_GT(many, 0.0);
+    EXPECT_NEAR(few / many, 1.0, 0.02);
+  }
+}
+
 // The same through the path tracer with maxDepth 1 (direct light, NEE + MIS): every floor pixel
 // shows albedo * le * F.
 TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {

@@ -78,13 +78,21 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
   const int nx = std::max(1, int(std::sqrt(double(samples))));
   const int ny = std::max(1, samples / nx);
   const uint32_t key = pcgHash(seed ^ 0x5bd1e995u);
+  // Rectangles: stratified in the solid angle they subtend (bounded next to the light, as in
+  // the path tracer); other quads (and tiny solid angles): stratified by area.
+  Vec3 s, ex, ey;
+  std::optional<SphericalRect> sr;
+  if (asRectangle(corners, &s, &ex, &ey)) {
+    sr.emplace(s, ex, ey, p);
+    if (!(sr->solidAngle > 1e-6)) sr.reset();
+  }
   DenormalsOffScope ftz;
   double sum = 0;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const uint32_t h = pcgHash(key + pcgHash(uint32_t(j * nx + i)));
-      const double ju = double(h & 0xFFFF) / 65536.0, jv = double(h >> 16) / 65536.0;
-      const Vec3 y = sampleQuadUniform(corners, (i + ju) / nx, (j + jv) / ny);
+      const double u = (i + double(h & 0xFFFF) / 65536.0) / nx, v = (j + double(h >> 16) / 65536.0) / ny;
+      const Vec3 y = sr ? sr->sample(u, v) : sampleQuadUniform(corners, u, v);
       Vec3 w = y - p;
       const double d2 = w.squaredNorm();
       if (!(d2 > 0)) continue;
@@ -94,10 +102,10 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
       if (cosR <= 0 || cosL <= 0) continue;
       const double eps = std::min(rayEpsilon(p), 0.25 * d);
       if (occluded(impl_->scene, p, w, eps, d * (1.0 - 1e-5))) continue;
-      sum += cosR * cosL / d2;
+      // E / pi = (1/pi) * integral of L cosR over the light's solid angle, with L = 1.
+      sum += sr ? cosR : cosR * cosL / d2 * area;
     }
-  // E / pi = (1/pi) * integral L cosR cosL / d^2 dA with L = 1, estimated with pdf 1/area.
-  return sum * area / (double(nx) * ny) / kPi;
+  return sum * (sr ? sr->solidAngle : 1.0) / (double(nx) * ny) / kPi;
 }
 
 Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {
