@@ -213,6 +213,10 @@ class LayoutSearch {
   const std::array<double, 4>& hi() const { return hi_; }
   const std::array<double, 4>& defaults() const { return default_; }
   const std::array<double, 4>& outside() const { return outside_; }
+  // The end of a receding segment nearer the forward vanishing point (deeper in the room).
+  Vec2 farEnd(const LineSegment& s) const {
+    return (s.aPx - vz_).norm() < (s.bPx - vz_).norm() ? s.aPx : s.bPx;
+  }
   double diag() const { return diag_; }
 
  private:
@@ -224,13 +228,15 @@ class LayoutSearch {
         if (s.family == f && !s.userGiven)
           cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
                    cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
-      // Receding (z) lines of a floor or ceiling texture end where the back wall begins: their
-      // far ends mark the back wall's top or bottom edge, drawn as short x strokes.
-      if (f == 0)
+      // Receding (z) lines of a floor, ceiling or side wall end where the back wall begins:
+      // their far ends mark the back wall's edges, drawn as short x strokes (top and bottom
+      // edges) and y strokes (side edges).
+      if (f == 0 || f == 1)
         for (const LineSegment& s : *in_.segments) {
           if (s.family != 2 || s.userGiven) continue;
-          const Vec2 far = (s.aPx - vz_).norm() < (s.bPx - vz_).norm() ? s.aPx : s.bPx;
-          Vec2 dir(hx_.x() - far.x() * hx_.z(), hx_.y() - far.y() * hx_.z());
+          const Vec2 far = farEnd(s);
+          const Vec3& hv = f == 0 ? hx_ : hy_;
+          Vec2 dir(hv.x() - far.x() * hv.z(), hv.y() - far.y() * hv.z());
           if (dir.norm() < 1e-12) continue;
           dir = dir.normalized() * (4.0 / ws_);
           const Vec2 a = (far - dir) * ws_, b = (far + dir) * ws_;
@@ -361,30 +367,38 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         cand[i] = {t[i]};
         continue;
       }
-      std::vector<std::pair<double, double>> votes;  // (param, weight)
-      for (const LineSegment& sg : *in.segments) {
-        if (sg.userGiven) continue;
-        const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
-        if (!mine) continue;
-        const double v = search.paramOfCorner(i, 0.5 * (sg.aPx + sg.bPx));
-        if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
-      }
-      std::sort(votes.begin(), votes.end());
-      std::vector<std::pair<double, double>> merged;  // (weight, param)
-      const double tol = 0.01 * search.diag();
-      for (size_t a = 0; a < votes.size();) {
-        size_t b = a;
-        double w = 0, sum = 0;
-        while (b < votes.size() && votes[b].first - votes[a].first < tol) {
-          w += votes[b].second;
-          sum += votes[b].second * votes[b].first;
-          ++b;
+      // Two kinds of votes, clustered separately: lines of the edge's own family (their
+      // midpoints), and the far ends of receding lines (where the floor, ceiling or a side wall
+      // meets the back wall): the best 5 and 2 clusters.
+      for (const bool receding : {false, true}) {
+        std::vector<std::pair<double, double>> votes;  // (param, weight)
+        for (const LineSegment& sg : *in.segments) {
+          if (sg.userGiven) continue;
+          const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
+          if (receding ? sg.family != 2 : !mine) continue;
+          const double v = search.paramOfCorner(
+              i, receding ? search.farEnd(sg) : Vec2(0.5 * (sg.aPx + sg.bPx)));
+          if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
         }
-        merged.push_back({w, sum / w});
-        a = b;
+        std::sort(votes.begin(), votes.end());
+        std::vector<std::pair<double, double>> merged;  // (weight, param)
+        const double tol = 0.01 * search.diag();
+        for (size_t a = 0; a < votes.size();) {
+          size_t b = a;
+          double w = 0, sum = 0;
+          while (b < votes.size() && votes[b].first - votes[a].first < tol) {
+            w += votes[b].second;
+            sum += votes[b].second * votes[b].first;
+            ++b;
+          }
+          merged.push_back({w, sum / w});
+          a = b;
+        }
+        std::sort(merged.begin(), merged.end(),
+                  [](const auto& x, const auto& y) { return x.first > y.first; });
+        const size_t keep = receding ? 2 : 5;
+        for (size_t k = 0; k < std::min(keep, merged.size()); ++k) cand[i].push_back(merged[k].second);
       }
-      std::sort(merged.begin(), merged.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-      for (size_t k = 0; k < std::min<size_t>(6, merged.size()); ++k) cand[i].push_back(merged[k].second);
       cand[i].push_back(search.outside()[i]);
       cand[i].push_back(t[i]);
     }
