@@ -68,7 +68,7 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   LightingOptions opt;
   opt.gatherSamples = 64;
   opt.gatherStride = 2;
-  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), opt);
+  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, opt);
   ASSERT_TRUE(est.ok()) << est.error().message();
   // The per-surface fit is ill-conditioned along (albedo / k, light * k) where E and Gamma have
   // nearly the same shape (about 10% here); the decomposition and light refinement tighten it.
@@ -118,12 +118,12 @@ TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   opt.gatherSamples = 16;
   // Black photo: nothing to fit, said so.
   ImageF black(r.photo.width, r.photo.height, 3, 0.f);
-  auto e1 = estimateLighting(black, r.camera, r.geometry, {*light}, {true}, ImageF(), opt);
+  auto e1 = estimateLighting(black, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt);
   ASSERT_FALSE(e1.ok());
   EXPECT_NE(e1.error().message().find("black or saturated"), std::string::npos);
   // Saturated photo.
   ImageF white(r.photo.width, r.photo.height, 3, 1.f);
-  EXPECT_FALSE(estimateLighting(white, r.camera, r.geometry, {*light}, {true}, ImageF(), opt).ok());
+  EXPECT_FALSE(estimateLighting(white, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt).ok());
   // Half the photo black, some pixels NaN, some saturated: finite, bounded output.
   ImageF mixed = r.photo;
   for (int y = 0; y < mixed.height; ++y)
@@ -132,7 +132,7 @@ TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
       if ((x + y) % 17 == 0) mixed.setRgb(x, y, Vec3(std::nan(""), 1, 2));
       if ((x * y) % 23 == 1) mixed.setRgb(x, y, Vec3(1, 1, 1));
     }
-  auto e2 = estimateLighting(mixed, r.camera, r.geometry, {*light}, {true}, ImageF(), opt);
+  auto e2 = estimateLighting(mixed, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt);
   ASSERT_TRUE(e2.ok()) << e2.error().message();
   for (float v : e2->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
   for (float v : e2->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
@@ -141,7 +141,7 @@ TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   for (double given : {1e-4, 1e4}) {
     AreaLight fixed = *light;
     fixed.radiance = Vec3(given, given, given);
-    auto e3 = estimateLighting(r.photo, r.camera, r.geometry, {fixed}, {false}, lightMaskOf(r), opt);
+    auto e3 = estimateLighting(r.photo, r.camera, r.geometry, {fixed}, {false}, lightMaskOf(r), {}, opt);
     ASSERT_TRUE(e3.ok());
     EXPECT_EQ(e3->lights[0].radiance, fixed.radiance);
     for (float v : e3->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);

@@ -48,18 +48,22 @@ struct PixelSurface {
 double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
 
 // The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
+// A clipped pixel (lowerBoundOnly) only says the prediction reaches the clip level.
 struct LogResidual {
-  LogResidual(double logB, double gamma, std::vector<double> e) : logB(logB), gamma(gamma), e(std::move(e)) {}
+  LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false)
+      : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
     // params[0]: rho (1), params[1..]: light radiance channel (1 each).
     T shading = T(gamma);
     for (size_t j = 0; j < e.size(); ++j) shading += params[1 + j][0] * T(e[j]);
     residual[0] = T(logB) - log(params[0][0]) - log(shading + T(1e-9));
+    if (lowerBoundOnly && residual[0] < T(0)) residual[0] = T(0);
     return true;
   }
   double logB, gamma;
   std::vector<double> e;
+  bool lowerBoundOnly;
 };
 
 }  // namespace
@@ -141,6 +145,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                                             const std::vector<AreaLight>& lightsIn,
                                             const std::vector<bool>& refineIn,
                                             const ImageF& lightMask,
+                                            const std::vector<SunLight>& suns,
                                             const LightingOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const int W = photo.width, H = photo.height;
@@ -148,6 +153,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   LightingEstimate out;
   const size_t S = geometry.surfaces.size();
   const size_t J = lightsIn.size();
+  const size_t K = suns.size();
+  const size_t C = J + K;  // unknown light strengths: area lights, then suns
   std::unique_ptr<tbb::global_control> threadLimit;
   if (opt.threads > 0)
     threadLimit = std::make_unique<tbb::global_control>(
@@ -235,6 +242,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       irradiance += model.lights[j] *
                     tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
                                                      h.normalWorld, 1, sampleId * 31u + uint32_t(j));
+    for (size_t k = 0; k < K; ++k)
+      irradiance += model.lights[J + k] *
+                    unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
+                                            h.normalWorld);
     return model.rho[h.surfaceId].cwiseProduct(irradiance);
   };
 
@@ -318,13 +329,25 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         }
     });
   };
-  std::vector<double> E(size_t(W) * H * std::max<size_t>(J, 1), 0.0);
+  std::vector<double> E(size_t(W) * H * std::max<size_t>(C, 1), 0.0);
   if (J > 0)
     spread(int(J), [&](size_t g, int d) { return gridE[g * J + size_t(d)]; },
-           [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * J]); },
+           [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * C]); },
            [&](int x, int y, double* v) {
              for (size_t j = 0; j < J; ++j) v[j] = lightE(ps[size_t(y) * W + x], j, uint32_t(y * W + x));
            });
+  // Suns at every pixel: one ray each, and the shaft's edge stays sharp.
+  if (K > 0)
+    tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+      for (int y = rows.begin(); y < rows.end(); ++y)
+        for (int x = 0; x < W; ++x) {
+          const auto& p = ps[size_t(y) * W + x];
+          if (p.surface < 0) continue;
+          for (size_t k = 0; k < K; ++k)
+            E[(size_t(y) * W + x) * C + J + k] = unitSunIrradianceOverPi(
+                tracer, geometry, suns[k], p.point + 1e-5 * p.normal, p.normal);
+        }
+    });
   if (stop()) return cancelled();
 
   auto gatherAll = [&] {
@@ -347,13 +370,22 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
 
   // 4. Fit light radiances (per channel) and one reference albedo per surface: the albedo
   // should be as flat within a surface as the lights and Gamma allow (robust to texture).
+  // Clipped pixels count only inside a sun's beam (as lower bounds): elsewhere a clipped
+  // pixel is a window or a lamp that no light here explains.
+  auto inSunBeam = [&](size_t idx) {
+    for (size_t k = 0; k < K; ++k)
+      if (E[idx * C + J + k] > 0.05) return true;
+    return false;
+  };
   std::vector<size_t> candidates;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
-      const auto& p = ps[size_t(y) * W + x];
-      if (p.surface < 0 || isLight(x, y) || saturated(x, y)) continue;
+      const size_t idx = size_t(y) * W + x;
+      const auto& p = ps[idx];
+      if (p.surface < 0 || isLight(x, y) || !photo.rgb(x, y).allFinite()) continue;
+      if (saturated(x, y) && !inSunBeam(idx)) continue;
       if (luminance(photo.rgb(x, y)) < 1e-4) continue;
-      candidates.push_back(size_t(y) * W + x);
+      candidates.push_back(idx);
     }
   if (candidates.empty())
     return Error{"", "photo", "every pixel of the room is black or saturated: nothing to fit"};
@@ -362,17 +394,18 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (candidates.size() > size_t(opt.fitPixels)) candidates.resize(size_t(opt.fitPixels));
 
   out.lights = lightsIn;
-  std::vector<bool> refine(J, true);
+  out.suns = suns;
+  std::vector<bool> refine(C, true);
   for (size_t j = 0; j < J && j < refineIn.size(); ++j) refine[j] = refineIn[j];
   std::vector<std::array<double, 3>> rho(S, {0.5, 0.5, 0.5});
-  std::vector<std::array<double, 3>> L(J);
+  std::vector<std::array<double, 3>> L(C);
 
   auto fit = [&]() -> bool {
     // Start: with albedo 0.6 everywhere, the median radiance that explains the direct part.
     std::vector<double> ratios;
     for (size_t idx : candidates) {
       double esum = 0;
-      for (size_t j = 0; j < J; ++j) esum += E[idx * J + j];
+      for (size_t j = 0; j < C; ++j) esum += E[idx * C + j];
       if (esum < 1e-6) continue;
       const int x = int(idx % W), y = int(idx / W);
       const double b = luminance(photo.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
@@ -384,7 +417,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       start = std::max(1e-6, ratios[ratios.size() / 2]);
     }
     // A light kept as given starts (and stays) at its radiance; the others start at `start`.
-    for (size_t j = 0; j < J; ++j)
+    for (size_t j = 0; j < C; ++j)
       for (int c = 0; c < 3; ++c)
         L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
     for (auto& r : rho) r = {0.5, 0.5, 0.5};
@@ -395,13 +428,14 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       for (size_t idx : candidates) {
         const int x = int(idx % W), y = int(idx / W);
         const int s = ps[idx].surface;
-        std::vector<double> e(J);
-        for (size_t j = 0; j < J; ++j) e[j] = E[idx * J + j];
+        std::vector<double> e(C);
+        for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
+        const double b = photo.at(x, y, c);
         auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
-            std::log(std::max(1e-6, double(photo.at(x, y, c)))), out.gathered.at(x, y, c), e));
+            std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove));
         std::vector<double*> blocks{&rho[s][c]};
         f->AddParameterBlock(1);
-        for (size_t j = 0; j < J; ++j) {
+        for (size_t j = 0; j < C; ++j) {
           f->AddParameterBlock(1);
           blocks.push_back(&L[j][c]);
         }
@@ -413,7 +447,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
           problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
           problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
         }
-      for (size_t j = 0; j < J; ++j)
+      for (size_t j = 0; j < C; ++j)
         if (problem.HasParameterBlock(&L[j][c])) {
           problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
           problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
@@ -436,6 +470,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       Vec3 r(L[j][0], L[j][1], L[j][2]);
       if (!r.allFinite()) r = lightsIn[j].radiance;
       out.lights[j].radiance = r.cwiseMax(0.0);
+    }
+    for (size_t k = 0; k < K; ++k) {
+      Vec3 r(L[J + k][0], L[J + k][1], L[J + k][2]);
+      if (!r.allFinite()) r = Vec3::Zero();
+      out.suns[k].irradianceOverPi = r.cwiseMax(0.0);
     }
     return true;
   };
@@ -470,6 +509,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       model.rho[s] = n[s] > 0 ? Vec3(rho[s][0], rho[s][1], rho[s][2]) : rhoAll;
     model.lights.clear();
     for (const auto& l : out.lights) model.lights.push_back(l.radiance);
+    for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
   }
 
   // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
@@ -486,7 +526,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       const Vec3 g = out.gathered.rgb(x, y);
       for (int c = 0; c < 3; ++c) {
         double shading = g[c];
-        for (size_t j = 0; j < J; ++j) shading += out.lights[j].radiance[c] * E[idx * J + j];
+        for (size_t j = 0; j < J; ++j) shading += out.lights[j].radiance[c] * E[idx * C + j];
+        for (size_t k = 0; k < K; ++k) shading += out.suns[k].irradianceOverPi[c] * E[idx * C + J + k];
         const double b = photo.at(x, y, c);
         double r = shading > 1e-9 ? b / shading : rho[p.surface][c];
         if (isLight(x, y) || saturated(x, y)) r = rho[p.surface][c];

@@ -1,6 +1,7 @@
 #include "inlay/engine/pipeline.h"
 
 #include "inlay/modeling/estimate_camera.h"
+#include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
 
 #include <chrono>
@@ -215,8 +216,6 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     ps.extrusions.push_back(*ex);
   }
   ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  if (!doc.shafts.empty())
-    ps.warnings.push_back("shafts: sun shafts are not rendered in this version; ignored");
   if (!doc.occluders.empty())
     ps.warnings.push_back("occluders: occluder mattes are not in this version; ignored");
   ps.stageSeconds.emplace_back("room", secondsSince(t));
@@ -251,10 +250,18 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   if (lights.empty())
     ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
   const ImageF lightMask = rasterizeLights(W, H, outlines, 2);
+  std::vector<SunLight> suns;
+  for (size_t i = 0; i < doc.shafts.size(); ++i) {
+    auto shaft = sunFromShaft(doc.shafts[i], ps.photo.linearRgb, ps.camera, ps.geometry,
+                              "shafts[" + std::to_string(i) + "]");
+    if (!shaft) return shaft.error();
+    suns.push_back(shaft->sun);
+  }
   LightingOptions lo;
   lo.cancel = opt.cancel;
   lo.threads = opt.threads;
-  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine, lightMask, lo);
+  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine,
+                                   lightMask, suns, lo);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
@@ -268,10 +275,18 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   rs.camera = ps.camera;
   rs.room = ps.geometry;
   rs.lights = ps.lighting.lights;
+  rs.suns = ps.lighting.suns;
   rs.roomAlbedo.camera = ps.camera;
   rs.roomAlbedo.albedo = ps.lighting.albedo;
   rs.roomAlbedo.surfaceMean = ps.lighting.surfaceMeanAlbedo;
   rs.roomAlbedo.computeFirstSurfaces(ps.geometry);
+  // Bounces that reach a room point the photo shows take the photo's radiance there (not the
+  // light outlines: their light is the lights' own).
+  rs.roomAlbedo.photoRadiance = ps.photo.linearRgb;
+  rs.roomAlbedo.photoRadianceUsable.assign(size_t(W) * H, 1);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (lightMask.at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
   std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes;
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];

@@ -37,6 +37,7 @@ struct LightingEstimate {
   ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
   ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
   std::vector<AreaLight> lights;      // with fitted radiance
+  std::vector<SunLight> suns;         // with fitted strength
   std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
   double fitRmsLog = 0;  // robust fit residual (log space)
   double seconds = 0;
@@ -51,12 +52,14 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
                                      const std::string& keyForMessages);
 
 // `lightMaskPx`: W x H x 1, 1 where a light is visible in the photo (excluded from gathering
-// and fitting); may be empty.
+// and fitting); may be empty. `suns`: sunlight beams whose strength is fitted alongside the
+// lights (their masks and directions as given).
 Expected<LightingEstimate> estimateLighting(const ImageF& photoLinear, const Camera& camera,
                                             const SceneGeometry& geometry,
                                             const std::vector<AreaLight>& lights,
                                             const std::vector<bool>& refine,
                                             const ImageF& lightMaskPx,
+                                            const std::vector<SunLight>& suns = {},
                                             const LightingOptions& options = {});
 
 }  // namespace inlay

@@ -100,4 +100,11 @@ class RoomTracer {
   std::unique_ptr<Impl> impl_;
 };
 
+// Irradiance over pi at p (normal n) that `sun` would give with strength 1 in every channel:
+// its beam mask at p, times the cosine, times whether anything inside the room (an extrusion, an
+// occluder card) stands between p and the opening. The box's own walls never block: the
+// opening is in them.
+double unitSunIrradianceOverPi(const RoomTracer& tracer, const SceneGeometry& room,
+                               const SunLight& sun, const Vec3& p, const Vec3& n);
+
 }  // namespace inlay

@@ -34,6 +34,15 @@ struct ProjectedAlbedo {
   std::vector<Vec3> surfaceMean;       // per surface id
 
   Vec3 lookup(int surfaceId, const Vec3& pointWorld) const;
+
+  // The photo's own radiance (linear, W x H x 3, the photo's size) and where it may stand for a
+  // room point's outgoing radiance (W x H, 1 = usable; light outlines are 0). Empty: every
+  // bounce is path traced with the albedo instead.
+  ImageF photoRadiance;
+  std::vector<uint8_t> photoRadianceUsable;
+  // The photo's radiance at a room point the camera sees on surface `surfaceId` (and where it
+  // is usable); false otherwise.
+  bool radianceAt(int surfaceId, const Vec3& pointWorld, Vec3* radiance) const;
   // Fills firstSurfacePerPixel by casting each pixel centre's ray into `geometry`.
   void computeFirstSurfaces(const SceneGeometry& geometry);
 };
@@ -51,6 +60,22 @@ struct AreaLight {
   Vec3 centre() const { return 0.25 * (cornersWorld[0] + cornersWorld[1] + cornersWorld[2] + cornersWorld[3]); }
 };
 
+// Sunlight through an opening: parallel light travelling along `travelDirection`, of strength
+// `irradianceOverPi` (irradiance on a surface facing it, over pi, in the photo's units), present
+// only in the beam that lands on the lit patch the photo shows. A point p is in the beam when
+// p + t * travelDirection (t >= 0) meets `receiverPlane` where `litMask` (the photo's soft mask
+// of the patch, read through `camera`) is > 0. An empty mask lights every point.
+struct SunLight {
+  Vec3 travelDirection{0, -1, 0};  // unit, the direction the light travels
+  Vec3 irradianceOverPi{1, 1, 1};
+  Vec4 receiverPlane{0, 1, 0, 0};  // (n, d): n . x + d = 0, the surface the patch lies on
+  Camera camera;
+  ImageF litMask;                  // W x H x 1 in [0, 1]
+
+  // In [0, 1]: how much of the beam reaches p (0 outside it).
+  double beamAt(const Vec3& p) const;
+};
+
 struct InsertedObject {
   std::shared_ptr<const TriangleMesh> meshObject;  // object space, shared between copies
   Mat4 worldFromObject = Mat4::Identity();
@@ -62,6 +87,7 @@ struct RenderScene {
   SceneGeometry room;
   ProjectedAlbedo roomAlbedo;
   std::vector<AreaLight> lights;
+  std::vector<SunLight> suns;
   std::vector<InsertedObject> objects;
 };
 

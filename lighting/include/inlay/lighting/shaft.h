@@ -1,0 +1,35 @@
+// Sun shafts from the user's two boxes: one around the lit patch(es), one around their source
+// (a window). Inside the patch box the lit pixels are separated from the unlit ones (a
+// threshold on log luminance between the two modes, Otsu's), giving a soft mask on the surface
+// the patch lies on; the light's direction runs from the source's lit pixels to the patch's,
+// both as area-weighted 3D centroids on the room. With only one box the user gives the
+// direction. The result is a masked directional light whose strength the lighting fit finds.
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image.h"
+#include "inlay/modeling/scene_file.h"
+#include "inlay/render/scene.h"
+
+#include <string>
+
+namespace inlay {
+
+struct ShaftEstimate {
+  SunLight sun;              // strength (irradianceOverPi) not yet fitted: (1, 1, 1)
+  ImageF litMaskPx;          // = sun.litMask: W x H x 1 soft mask of the lit patch (or window)
+  Vec3 patchCentroidWorld{0, 0, 0};
+  Vec3 sourceCentroidWorld{0, 0, 0};
+  bool directionGiven = false;
+  double contrast = 0;       // mean lit / mean unlit luminance inside the patch box
+  int litPixels = 0;
+};
+
+// photoLinear: W x H x 3. Errors name `key` (e.g. "shafts[0].shaft_box_px") and the reason: a
+// box outside the photo, no lit patch found (too little contrast), no direction.
+Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photoLinear,
+                                     const Camera& camera, const SceneGeometry& geometry,
+                                     const std::string& key);
+
+}  // namespace inlay

@@ -1,0 +1,176 @@
+#include "inlay/lighting/shaft.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace inlay {
+
+namespace {
+
+struct BoxPixel {
+  int x, y;
+  double logLum;
+  int surface;
+  Vec3 point;
+  double area;  // world area of the pixel's footprint (relative)
+};
+
+// Pixels of a box with their surface hits. Returns an error when the box misses the photo.
+Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, const ImageF& photo,
+                                          const Camera& camera, const SceneGeometry& geometry,
+                                          const std::string& key) {
+  for (double v : box)
+    if (!std::isfinite(v)) return Error{"", key, "is not a finite number"};
+  const int x0 = std::max(0, int(std::floor(box[0]))), y0 = std::max(0, int(std::floor(box[1])));
+  const int x1 = std::min(photo.width, int(std::ceil(box[2]))), y1 = std::min(photo.height, int(std::ceil(box[3])));
+  if (!(x1 - x0 >= 2 && y1 - y0 >= 2))
+    return Error{"", key, "the box covers less than 2 x 2 pixels of the photo"};
+  std::vector<BoxPixel> out;
+  out.reserve(size_t(x1 - x0) * (y1 - y0));
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const Vec3 c = photo.rgb(x, y);
+      if (!c.allFinite()) continue;
+      const double lum = 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z();
+      const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+      const auto h = geometry.intersect(r);
+      if (!h) continue;
+      const double cosv = std::max(0.05, std::abs(h->normalWorld.dot(r.direction)));
+      out.push_back({x, y, std::log(std::max(lum, 1e-5)), h->surfaceId, h->pointWorld, h->t * h->t / cosv});
+    }
+  if (out.size() < 4) return Error{"", key, "the box shows no surface of the room"};
+  return out;
+}
+
+// Otsu's threshold on values; also returns the two class means.
+double otsu(const std::vector<double>& v, double* meanLow, double* meanHigh) {
+  const auto [mnIt, mxIt] = std::minmax_element(v.begin(), v.end());
+  const double mn = *mnIt, mx = *mxIt;
+  if (!(mx - mn > 1e-9)) {
+    *meanLow = *meanHigh = mn;
+    return mx;
+  }
+  const int bins = 256;
+  std::vector<double> hist(bins, 0), sum(bins, 0);
+  for (double x : v) {
+    const int b = std::clamp(int((x - mn) / (mx - mn) * (bins - 1)), 0, bins - 1);
+    hist[b] += 1, sum[b] += x;
+  }
+  const double total = double(v.size());
+  double totalSum = 0;
+  for (double s : sum) totalSum += s;
+  double wB = 0, sB = 0, best = -1, thr = mn;
+  for (int b = 0; b < bins - 1; ++b) {
+    wB += hist[b], sB += sum[b];
+    const double wF = total - wB;
+    if (wB == 0 || wF == 0) continue;
+    const double mB = sB / wB, mF = (totalSum - sB) / wF;
+    const double between = wB * wF * (mB - mF) * (mB - mF);
+    if (between > best) best = between, thr = mn + (b + 0.5) / (bins - 1) * (mx - mn), *meanLow = mB, *meanHigh = mF;
+  }
+  return thr;
+}
+
+Vec4 planeOf(const Surface& s) {
+  const auto& m = s.meshWorld;
+  const Vec3 a = m.positions[m.triangles[0][0]].cast<double>(), b = m.positions[m.triangles[0][1]].cast<double>(),
+             c = m.positions[m.triangles[0][2]].cast<double>();
+  Vec3 n = (b - a).cross(c - a).normalized();
+  return Vec4(n.x(), n.y(), n.z(), -n.dot(a));
+}
+
+// The bright mode of a box as a soft mask on its dominant surface.
+struct Patch {
+  ImageF mask;
+  int surface = -1;
+  Vec3 centroid{0, 0, 0};
+  double contrast = 0;
+  int count = 0;
+};
+
+Patch brightPatch(const std::vector<BoxPixel>& px, int W, int H, size_t surfaceCount) {
+  std::vector<double> v;
+  for (const auto& p : px) v.push_back(p.logLum);
+  double lo = 0, hi = 0;
+  const double thr = otsu(v, &lo, &hi);
+  Patch out;
+  out.contrast = std::exp(hi - lo);
+  // Soft edge: a logistic of width 0.08 in log luminance around the threshold.
+  auto soft = [&](double l) { return 1.0 / (1.0 + std::exp(-(l - thr) / 0.08)); };
+  std::vector<double> weight(surfaceCount, 0.0);
+  for (const auto& p : px) weight[size_t(p.surface)] += soft(p.logLum) * p.area;
+  out.surface = int(std::max_element(weight.begin(), weight.end()) - weight.begin());
+  out.mask = ImageF(W, H, 1, 0.f);
+  double wsum = 0;
+  for (const auto& p : px) {
+    if (p.surface != out.surface) continue;
+    const double m = soft(p.logLum);
+    out.mask.at(p.x, p.y) = float(m);
+    out.centroid += m * p.area * p.point;
+    wsum += m * p.area;
+    out.count += m > 0.5;
+  }
+  if (wsum > 0) out.centroid /= wsum;
+  return out;
+}
+
+}  // namespace
+
+Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo, const Camera& camera,
+                                     const SceneGeometry& geometry, const std::string& key) {
+  ShaftEstimate out;
+  const int W = photo.width, H = photo.height;
+  const size_t S = geometry.surfaces.size();
+  std::optional<Patch> patch, source;
+  if (shaft.shaftBoxPx) {
+    auto px = boxPixels(*shaft.shaftBoxPx, photo, camera, geometry, key + ".shaft_box_px");
+    if (!px) return px.error();
+    Patch p = brightPatch(*px, W, H, S);
+    if (!(p.contrast > 1.4) || p.count < 4)
+      return Error{"", key + ".shaft_box_px",
+                   "no sunlit patch found in the box (its bright part is only " +
+                       std::to_string(p.contrast) + " times its dark part)"};
+    patch = std::move(p);
+  }
+  if (shaft.sourceBoxPx) {
+    auto px = boxPixels(*shaft.sourceBoxPx, photo, camera, geometry, key + ".source_box_px");
+    if (!px) return px.error();
+    source = brightPatch(*px, W, H, S);
+  }
+  Vec3 dir;
+  if (shaft.direction) {
+    dir = *shaft.direction;
+    out.directionGiven = true;
+  } else if (patch && source) {
+    dir = patch->centroid - source->centroid;
+  } else {
+    return Error{"", key + ".direction", "is needed when only one box is given"};
+  }
+  if (!dir.allFinite() || dir.norm() < 1e-9)
+    return Error{"", key + ".direction", "is not a usable direction (zero or not finite)"};
+  dir.normalize();
+  const Patch& receiver = patch ? *patch : *source;
+  if (receiver.surface < 0 || size_t(receiver.surface) >= S)
+    return Error{"", key, "the lit region is not on any surface of the room"};
+  const Vec4 plane = planeOf(geometry.surfaces[size_t(receiver.surface)]);
+  // The patch must face the light: light arrives on the room side of its surface.
+  Vec3 n = plane.head<3>();
+  const Vec3 towardCamera = camera.centreWorld() - receiver.centroid;
+  if (n.dot(towardCamera) < 0) n = -n;
+  if (patch && !(n.dot(dir) < -1e-3))
+    return Error{"", key, "the light's direction does not reach the lit patch from inside the room"};
+  out.sun.travelDirection = dir;
+  out.sun.irradianceOverPi = Vec3(1, 1, 1);
+  out.sun.receiverPlane = plane;
+  out.sun.camera = camera;
+  out.sun.litMask = receiver.mask;
+  out.litMaskPx = receiver.mask;
+  out.patchCentroidWorld = patch ? patch->centroid : Vec3::Zero();
+  out.sourceCentroidWorld = source ? source->centroid : Vec3::Zero();
+  out.contrast = receiver.contrast;
+  out.litPixels = receiver.count;
+  return out;
+}
+
+}  // namespace inlay
