@@ -57,7 +57,8 @@ struct VanishingPointInfo {
   double supportLengthPx = 0;        // their total length
   double rmsResidualPx = 0;          // root-mean-square endpoint residual of the supporters
   double angularSigmaDeg = 180;      // 1-sigma uncertainty of the direction from its own lines
-  double confidence = 0;             // in [0, 1]: support beyond chance times precision
+  double confidence = 0;             // in [0, 1]: support beyond chance (a contrario, -log10 of
+                                     // the expected false alarms) times precision of direction
   bool nearlyParallel = false;       // its lines are nearly parallel in the photo
 };
 
@@ -105,7 +106,9 @@ struct EstimateOptions {
   // Log-space 1-sigma of the prior: 0.15 for EXIF (crops, zoom, wrong tags), 0.6 without.
   double priorLogSigmaExif = 0.15;
   double priorLogSigmaDefault = 0.6;
-  // Hypotheses per focal-length rung (14 rungs); 0.5x-4x trades accuracy for time.
+  // Hypotheses per focal-length rung (15 rungs: f from 0.25 to 6 times the long side, and the
+  // prior). Below about 60 the search starts to miss (York: 1.63 deg median worst-direction error
+  // at 5, 1.00 at 60-480); each doubling costs about 1-3 ms at 640 x 480.
   int searchIterations = 120;
   // Long side of the working image: larger photos are area-averaged down first.
   int maxWorkingSidePx = 800;
