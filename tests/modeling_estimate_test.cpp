@@ -445,6 +445,30 @@ TEST(CorrectEstimate, KeepsWhatTheUserFixedAndStaysConsistent) {
   EXPECT_FALSE(correctEstimate(*first, above).ok());
 }
 
+TEST(CorrectEstimate, UserLinesOnABlankPhotoGiveTheCamera) {
+  // Nothing to detect: a fallback. The user draws two lines along x and two along z.
+  const auto blank = estimateCamera(ImageF(640, 480, 3, 0.4f));
+  ASSERT_TRUE(blank.ok());
+  ASSERT_FALSE(blank->manhattan);
+  const Camera truth = makeCamera(640, 480, 500, 20, -10, 0);
+  auto lines = [&](const Seg3& a, const Seg3& b) {
+    Vec2 a0, b0, a1, b1;
+    EXPECT_TRUE(projectSegment(truth, a, a0, b0));
+    EXPECT_TRUE(projectSegment(truth, b, a1, b1));
+    return std::array<Vec2, 4>{a0, b0, a1, b1};
+  };
+  EstimateCorrection c;
+  c.vanishingLinesPx[0] = lines({{-2, 0, -5}, {2, 0, -5}}, {{-2, 2.5, -5}, {2, 2.5, -5}});
+  c.vanishingLinesPx[2] = lines({{-2, 0, -5}, {-2, 0, -1.5}}, {{2, 0, -5}, {2, 0, -1.5}});
+  const auto e = correctEstimate(*blank, c);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.02);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 0.5);
+  EXPECT_GT(e->confidence[0], 0.5);
+  EXPECT_GT(e->confidence[2], 0.5);
+}
+
 TEST(EstimateCamera, GroundTruthRooms) {
   INLAY_REQUIRE_SHARED();
   int scenes = 0, goodLayouts = 0;
