@@ -469,6 +469,36 @@ TEST(CorrectEstimate, UserLinesOnABlankPhotoGiveTheCamera) {
   EXPECT_GT(e->confidence[2], 0.5);
 }
 
+TEST(CorrectEstimate, AFixedCameraIsKeptAndTheBackWallFoundForIt) {
+  const Camera truth = makeCamera(640, 480, 420, 8, -6, 0);
+  const ImageF photo = drawRoom(truth, roomLines());
+  // A poor first estimate (a level camera from a wrong prior), then the user's exact camera.
+  EstimateOptions o;
+  o.priorFocalPx = 700;
+  const auto first = estimateCameraFromSegments(640, 480, {}, o);
+  ASSERT_TRUE(first.ok());
+  auto withLines = estimateCamera(photo);
+  ASSERT_TRUE(withLines.ok());
+  CameraEstimate previous = *first;
+  previous.segments = withLines->segments;
+  EstimateCorrection c;
+  Camera given = truth;
+  given.principalPx = Vec2(318, 243);  // kept, even off centre
+  c.fixedCamera = given;
+  const auto e = correctEstimate(previous, c);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_EQ(e->camera.focalPx, given.focalPx);
+  EXPECT_EQ(e->camera.principalPx, given.principalPx);
+  EXPECT_LT(rotationErrorDeg(e->camera, given), 1e-9);
+  const auto bw = backWallCornersPx(given, RoomBox{-2.5, 2.5, -5, 0.5, 2.7});
+  for (int i = 0; i < 4; ++i) EXPECT_LT((e->backWallPx[i] - bw[i]).norm(), 4.0) << "corner " << i;
+  Camera wrong = given;
+  wrong.widthPx = 320;
+  c.fixedCamera = wrong;
+  EXPECT_FALSE(correctEstimate(previous, c).ok());
+}
+
 TEST(EstimateCamera, GroundTruthRooms) {
   INLAY_REQUIRE_SHARED();
   int scenes = 0, goodLayouts = 0;

@@ -827,6 +827,16 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
       const double dist1 = std::abs(l0.dot(Vec3(p[3].x(), p[3].y(), 1))) / l0.head<2>().norm();
       if (dist0 < 1 && dist1 < 1) return Error{"", key, "the two lines are the same line"};
     }
+  if (corr.fixedCamera) {
+    const Camera& f = *corr.fixedCamera;
+    const Mat3& r = f.worldFromCamera;
+    if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
+      return Error{"", "correction.camera", "is for a photo of another size"};
+    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
+        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
+        std::abs(r.determinant() - 1) > 1e-6)
+      return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
+  }
   for (int i = 0; i < 4; ++i)
     if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
       return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
@@ -835,6 +845,8 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
   CameraEstimate e;
   e.workingScale = previous.workingScale;
   Core c = makeCore(pc.widthPx, pc.heightPx);
+  // A fixed camera's principal point is the normalisation origin (vanishing points assume it).
+  if (corr.fixedCamera) c.frame.centre = corr.fixedCamera->principalPx;
   c.workingScale = previous.workingScale;
   for (const auto& s : previous.segments)
     if (!s.userGiven) c.segments.push_back(s);
@@ -932,21 +944,45 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
   rs.cancel = o.cancel;
   auto ts = Clock::now();
   Assignment as;
-  Triplet tr = refine(c.segs, start, rs, 3, &as);
+  Triplet tr;
+  if (corr.fixedCamera) {
+    // Kept as given: the segments are only re-assigned to its vanishing points.
+    for (int k = 0; k < 3; ++k) tr.d[k] = corr.fixedCamera->cameraFromWorld().col(k);
+    tr.phi = corr.fixedCamera->focalPx / c.frame.s;
+    rs.lockPhi = true;
+    as = assign(c.segs, tr);
+  } else {
+    tr = refine(c.segs, start, rs, 3, &as);
+  }
   if (o.cancel && o.cancel->shouldStop()) return Error{"", "estimate", "cancelled"};
-  if (rs.lockPhi) tr.phi = *corr.lockedFocalPx / c.frame.s;
+  if (rs.lockPhi && !corr.fixedCamera) tr.phi = *corr.lockedFocalPx / c.frame.s;
   // Keep the world-axis meaning the user worked with; only re-apply the sign rules.
   const Triplet w = ordered(tr, {0, 1, 2});
   const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
   std::array<double, 3> z{};
   finish(e, c, w, as, u, rs, o, rs.lockPhi, z);
+  if (corr.fixedCamera) {
+    e.camera = *corr.fixedCamera;
+    for (int k = 0; k < 3; ++k) {
+      e.vanishingPoints[k].homogeneousPx = e.camera.vanishingPointOf(Vec3::Unit(k));
+      e.vanishingPointsPx[k] = scenePixel(e.vanishingPoints[k].homogeneousPx, e.camera.principalPx);
+    }
+  }
   std::sort(z.begin(), z.end());
-  e.manhattan = previous.manhattan || (z[2] >= kStrongZ && z[1] >= kPresentZ);
+  e.manhattan = previous.manhattan || corr.fixedCamera || (z[2] >= kStrongZ && z[1] >= kPresentZ);
   addVpWarnings(e);
   e.timings.refineMs = msSince(ts);
 
   ts = Clock::now();
-  runLayout(e, o, corr.backWallCornersPx, previous.backWallPx);
+  // A small change of camera (a dragged corner, a nudged line) searches the back wall locally
+  // from where it was, so it does not jump; a large one (or a camera the user typed) globally.
+  const double turnDeg =
+      std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
+                           -1.0, 1.0)) / kDeg;
+  const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
+                         std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
+  runLayout(e, o, corr.backWallCornersPx,
+            bigChange ? std::nullopt : std::optional<std::array<Vec2, 4>>(previous.backWallPx));
   e.timings.layoutMs = msSince(ts);
   bool anyFixed = false;
   for (const auto& f : bc) anyFixed |= f.has_value();

@@ -136,6 +136,11 @@ Expected<CameraEstimate> estimateCameraFromSegments(int widthPx, int heightPx,
 // What the user fixed. Anything not given is re-estimated from the previous estimate's
 // segments; everything given is kept.
 struct EstimateCorrection {
+  // A camera the user fixed entirely (e.g. the scene file's camera.vanishing_points_px through
+  // cameraFromVanishingPoints): kept exactly as given, principal point included; the segments
+  // are re-assigned to its vanishing points and the back wall re-searched for it. The lines and
+  // focal length below are then ignored.
+  std::optional<Camera> fixedCamera;
   std::optional<double> lockedFocalPx;  // the focal length, held exactly
   // Per world axis (x, y, z): two user line segments {a0, b0, a1, b1} whose lines meet at that
   // axis's vanishing point (parallel lines: a vanishing point at infinity). Weighted far above
@@ -151,7 +156,8 @@ struct EstimateCorrection {
 // constraints (segments re-assigned), then the free back-wall lines re-searched starting from the
 // previous ones. `previous` must come from estimateCamera*/correctEstimate of the same photo.
 // Errors (key "correction..."): non-finite input, a focal length <= 0, two user lines of one
-// axis that coincide, corners that cannot be a back wall for the re-fitted camera.
+// axis that coincide, a fixed camera of another photo size or without a rotation, corners that
+// cannot be a back wall for the re-fitted camera.
 Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
                                          const EstimateCorrection& correction,
                                          const EstimateOptions& options = {});
