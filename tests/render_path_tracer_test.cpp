@@ -342,6 +342,99 @@ TEST(Mirror, ReflectsEmitterTimesReflectance) {
   EXPECT_LT(room.mean.x(), le);
 }
 
+// Sunlight (parallel, no mask) on the floor, direct light only: radiance albedo *
+// irradianceOverPi * cos, exactly (no sampling involved), the box walls never block it, and a
+// floating sphere's shadow shows only in the with-object render.
+TEST(Sun, FloorRadianceAndObjectShadow) {
+  const int w = 48, h = 36;
+  const double albedo = 0.5;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 60, 0.6, -35), RoomBox{}, albedo);
+  SunLight sun;
+  sun.travelDirection = Vec3(1, -1, 0).normalized();
+  sun.irradianceOverPi = Vec3(2, 1.5, 1);
+  s.suns.push_back(sun);
+  InsertedObject o;
+  o.meshObject = test::sphereMesh(0.3);
+  o.worldFromObject = test::translation(Vec3(0, 0.8, -2.5));
+  s.objects.push_back(o);
+  TracerOptions opt;
+  opt.maxDepth = 1;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 4, 1));
+  const ImageF with = b.meanWith(), without = b.meanWithout();
+  const double cosSun = -sun.travelDirection.y();
+  int floorPx = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      bool floor = true;
+      for (double dy : {0.0, 1.0})
+        for (double dx : {0.0, 1.0}) {
+          const Vec3 d = s.camera.directionThroughPixel(Vec2(x + dx, y + dy));
+          const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
+          floor = floor && d.y() < 0 && q.x() > -2 && q.x() < 2 && q.z() > -4 && q.z() < 0.5;
+        }
+      if (!floor) continue;
+      ++floorPx;
+      EXPECT_NEAR(without.at(x, y, 0), albedo * 2 * cosSun, 1e-5);
+      EXPECT_NEAR(without.at(x, y, 2), albedo * 1 * cosSun, 1e-5);
+    }
+  EXPECT_GT(floorPx, 300);
+  // The shadow of the sphere's centre falls at (0.8, 0, -2.5).
+  const auto px = s.camera.project(Vec3(0.8, 0, -2.5));
+  ASSERT_TRUE(px.has_value());
+  const int sx = int(px->x()), sy = int(px->y());
+  EXPECT_EQ(b.meanMask().at(sx, sy), 0.f);
+  EXPECT_NEAR(without.at(sx, sy, 0), albedo * 2 * cosSun, 1e-5);
+  EXPECT_EQ(with.at(sx, sy, 0), 0.f);
+}
+
+// Bounces that land on room the camera sees take the photo's radiance; camera rays do not.
+// A mirror tilted down reflects the floor in front of it: its pixels show reflectance x photo
+// radiance where that floor is in the photo; the room the camera sees is rendered (no lights:
+// only the photo's light gathered by its first bounce).
+TEST(PhotoRadiance, BouncesSeeThePhotoCameraRaysDoNot) {
+  const int w = 64, h = 48;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.5);
+  s.roomAlbedo.albedo = ImageF(w, h, 3, 0.5f);
+  s.roomAlbedo.photoRadiance = ImageF(w, h, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) s.roomAlbedo.photoRadiance.setRgb(x, y, Vec3(0.3, 0.6, 0.9));
+  s.roomAlbedo.photoRadianceUsable.assign(size_t(w) * h, 1);
+  s.roomAlbedo.computeFirstSurfaces(s.room);
+  const double tilt = 25 * kPi / 180;
+  const Vec3 n(0, -std::sin(tilt), std::cos(tilt)), u(1, 0, 0);
+  const Vec3 v = n.cross(u);
+  InsertedObject o;
+  o.meshObject = std::make_shared<TriangleMesh>(test::quadMesh(test::rectCorners(Vec3(0, 1.3, -3), 0.25 * u, 0.25 * v)));
+  o.material = mat(Material::Kind::Mirror, 0.8);
+  s.objects.push_back(o);
+  PathTracer tracer(s);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 4, 1));
+  const ImageF with = b.meanWith(), mask = b.meanMask();
+  int photo = 0, mirror = 0, room = 0;
+  double roomMean = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (mask.at(x, y) == 1.f) {
+        ++mirror;
+        if (std::abs(with.at(x, y, 1) - 0.8 * 0.6) < 1e-5) ++photo;
+      } else if (mask.at(x, y) == 0.f) {
+        // No lights: what the camera sees directly is rendered (albedo 0.5 x the photo's
+        // radiance gathered by its bounces, below 0.15 in red), never the photo's 0.3 itself.
+        ASSERT_NE(with.at(x, y, 0), 0.3f);
+        roomMean += with.at(x, y, 0), ++room;
+      }
+    }
+  std::printf("[ photo ] mirror pixels %d, showing reflectance x photo radiance %d\n", mirror, photo);
+  EXPECT_GT(mirror, 20);
+  EXPECT_GT(photo, mirror / 2);
+  ASSERT_GT(room, 1000);
+  EXPECT_GT(roomMean / room, 0.0);
+  EXPECT_LT(roomMean / room, 0.15);
+}
+
 // A closed room lit by a ceiling light, with an object that no path can reach.
 RenderScene closedRoomScene(int w, int h, bool objectInside) {
   RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);

@@ -56,6 +56,7 @@ enum class Mode { Shared, WithOnly, WithoutOnly };
 struct ObjectData {
   RTCScene scene = nullptr;      // the object's own BVH (object space)
   RTCGeometry instance = nullptr;  // its instance in withScene (retained)
+  RTCGeometry sunInstance = nullptr;  // its instance in sunWithScene (retained), if suns
   std::shared_ptr<const TriangleMesh> mesh;
   Mat4 worldFromObject = Mat4::Identity();
   Mat3 normalFromObject = Mat3::Identity();  // inverse transpose of the linear part
@@ -74,6 +75,12 @@ struct LightData {
   double selectProb = 0;
 };
 
+struct SunData {
+  const SunLight* sun = nullptr;  // beamAt(); points into Impl::scene.suns
+  Vec3 toSun;                     // unit, against the travel direction
+  Vec3 irradianceOverPi;
+};
+
 struct Hit {
   enum class Kind { None, Room, Light, Object } kind = Kind::None;
   int index = -1;  // surface id, light index or object index
@@ -90,6 +97,11 @@ struct BsdfSample {
   bool specular = false;
   bool valid = false;
 };
+
+bool isBoxSurface(SurfaceKind k) {
+  return k == SurfaceKind::Floor || k == SurfaceKind::Ceiling || k == SurfaceKind::WallLeft ||
+         k == SurfaceKind::WallRight || k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
+}
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
@@ -161,6 +173,11 @@ struct PathTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene withScene = nullptr;
   RTCScene withoutScene = nullptr;
+  // Sun shadow rays see only what stands inside the room: extrusions, cards and (with) the
+  // objects; the box's walls hold the opening the sun comes through, and emitters are left out.
+  RTCScene sunWithScene = nullptr;
+  RTCScene sunWithoutScene = nullptr;
+  std::vector<SunData> suns;
   unsigned surfaceCount = 0;
   std::vector<LightData> lights;
   std::vector<ObjectData> objects;
@@ -171,10 +188,13 @@ struct PathTracer::Impl {
   ~Impl() {
     for (auto& o : objects) {
       if (o.instance) rtcReleaseGeometry(o.instance);
+      if (o.sunInstance) rtcReleaseGeometry(o.sunInstance);
       if (o.scene) rtcReleaseScene(o.scene);
     }
     if (withScene) rtcReleaseScene(withScene);
     if (withoutScene) rtcReleaseScene(withoutScene);
+    if (sunWithScene) rtcReleaseScene(sunWithScene);
+    if (sunWithoutScene) rtcReleaseScene(sunWithoutScene);
     if (device) rtcReleaseDevice(device);
   }
 
@@ -194,6 +214,10 @@ struct PathTracer::Impl {
       for (int r = 0; r < 3; ++r) m[c * 3 + r] = float(worldFromObject(r, c));
     rtcSetGeometryTransform(o.instance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
     rtcCommitGeometry(o.instance);
+    if (o.sunInstance) {
+      rtcSetGeometryTransform(o.sunInstance, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+      rtcCommitGeometry(o.sunInstance);
+    }
   }
 
   Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear) const {
@@ -337,6 +361,16 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
       return;
     }
+    if (hit.kind == Hit::Kind::Room && depth >= 1) {
+      // A bounce that lands on room the camera sees takes the photo's radiance there (all the
+      // light that point sends, so the path ends). Camera rays never do: with and without must
+      // both be rendered there, or an object's shadow would vanish from the difference.
+      Vec3 photo;
+      if (scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) {
+        add(clampIndirect(Vec3(throughput.cwiseProduct(photo)), indirectHit));
+        return;
+      }
+    }
     SurfaceBsdf bsdf;
     if (hit.kind == Hit::Kind::Room) {
       bsdf.kind = Material::Kind::Diffuse;
@@ -415,6 +449,29 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
               add(c);
             }
           }
+        }
+      }
+      // Suns: parallel light, a delta direction (never found by BSDF sampling, so no MIS).
+      for (const SunData& sun : suns) {
+        if (!(sun.toSun.dot(ngFacing) > 0)) continue;
+        const double beam = sun.sun->beamAt(hit.point);
+        if (!(beam > 0)) continue;
+        double pdfBsdf = 0;
+        const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(sun.toSun), &pdfBsdf);
+        if (!(fcos.maxCoeff() > 0)) continue;
+        // L = f cos E_perp with E_perp = pi * irradianceOverPi.
+        const Vec3 c = clampIndirect(
+            Vec3(throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), depth >= 1);
+        const Vec3 o = hit.point + eps * ngFacing;
+        ++out.rays;
+        if (mode == Mode::Shared) {
+          if (!occluded(sunWithScene, o, sun.toSun, 0, 3.4e38))
+            add(c);
+          else if (++out.rays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
+            out.without += c;  // only an object blocks it
+        } else if (!occluded(mode == Mode::WithOnly ? sunWithScene : sunWithoutScene, o, sun.toSun, 0,
+                             3.4e38)) {
+          add(c);
         }
       }
       const auto uDir = rng.get2(dim / 2 + 1);
@@ -557,11 +614,38 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
         rtcSetGeometryInstancedScene(o.instance, o.scene);
       }
     }
+    if (o.instance && !scene.suns.empty()) {
+      o.sunInstance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(o.sunInstance, o.scene);
+    }
     d.setTransform(o, src.worldFromObject);
     if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
   }
   rtcCommitScene(d.withScene);
   rtcCommitScene(d.withoutScene);
+
+  for (const SunLight& sun : d.scene.suns) {
+    SunData sd;
+    sd.sun = &sun;
+    sd.toSun = -sun.travelDirection.normalized();
+    sd.irradianceOverPi =
+        sun.irradianceOverPi.allFinite() ? Vec3(sun.irradianceOverPi.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+    if (sd.toSun.allFinite() && sd.irradianceOverPi.maxCoeff() > 0) d.suns.push_back(sd);
+  }
+  if (!d.suns.empty()) {
+    d.sunWithScene = rtcNewScene(d.device);
+    d.sunWithoutScene = rtcNewScene(d.device);
+    for (unsigned i = 0; i < d.surfaceCount; ++i) {
+      if (isBoxSurface(scene.room.surfaces[i].kind)) continue;
+      attachTriangles(d.device, d.sunWithScene, i, scene.room.surfaces[i].meshWorld);
+      attachTriangles(d.device, d.sunWithoutScene, i, scene.room.surfaces[i].meshWorld);
+    }
+    for (size_t i = 0; i < d.objects.size(); ++i)
+      if (d.objects[i].sunInstance)
+        rtcAttachGeometryByID(d.sunWithScene, d.objects[i].sunInstance, d.objectGeomId(i));
+    rtcCommitScene(d.sunWithScene);
+    rtcCommitScene(d.sunWithoutScene);
+  }
 }
 
 PathTracer::~PathTracer() = default;
@@ -579,6 +663,7 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   d.scene.objects[index].worldFromObject = worldFromObject;
   d.setTransform(d.objects[index], worldFromObject);
   rtcCommitScene(d.withScene);
+  if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
 
 bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
