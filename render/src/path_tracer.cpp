@@ -23,6 +23,11 @@
 // or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
 // min(0.95, max throughput).
 //
+// Suns (parallel light through an opening, masked to their beam) are added at every
+// non-specular vertex with a shadow ray against what stands inside the room (extrusions, cards,
+// objects), never the box walls. When the host gives the photo's radiance, a bounce (never a
+// camera ray) that lands on room the camera sees takes the photo's radiance there and ends.
+//
 // Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0-1 light point, 2-3
 // direction, 4 light pick, 5 lobe or Fresnel choice, 6 roulette} (pairs are 2D-stratified).
 //
