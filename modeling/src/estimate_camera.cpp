@@ -554,21 +554,33 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
     v.rmsResidualPx = count[k] ? std::sqrt(sumR2[k] / count[k]) : 0;
     v.angularSigmaDeg = u.angularSigmaRad[k] / kDeg;
     v.nearlyParallel = count[k] >= 2 && (angMax[k] - angMin[k]) < 2.0 * kDeg;
-    // Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points
-    // tried: segment pairs times focal rungs) x P(at least `tight` of `detected` segments fit by
-    // accident), binomial with the mean chance. Then times the precision of the direction.
-    const double p = detected > 0 ? chanceSum / detected : 0.01;
-    const double tests = 0.5 * detected * std::max(1, detected - 1) * 15.0;
-    const double z = userCount[k] > 0 ? 100.0 : -std::log10(std::max(tests, 1.0)) - log10BinomialTail(detected, tight[k], p);
+    e.vanishingPointsPx[k] = scenePixel(v.homogeneousPx, cam.principalPx);
+  }
+  // Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points tried)
+  // x P(at least `tight` of `detected` segments fit by accident), binomial with the mean chance.
+  // A Manhattan frame is found strongest family first: its point is one of the segment pairs'
+  // (times the focal rungs); the second lies on the great circle orthogonal to the first (one
+  // per segment and rung); the third is then fixed (one per rung).
+  const double p = detected > 0 ? chanceSum / detected : 0.01;
+  const double n = std::max(1, detected);
+  const double firstTests = 0.5 * n * std::max(1.0, n - 1) * 15.0;
+  std::array<double, 3> raw{};
+  for (int k = 0; k < 3; ++k) raw[k] = -log10BinomialTail(detected, tight[k], p);
+  std::array<int, 3> rank{0, 1, 2};
+  std::sort(rank.begin(), rank.end(), [&](int a, int b) { return raw[a] > raw[b]; });
+  const double tests[3] = {firstTests, n * 15.0, 15.0};
+  for (int r = 0; r < 3; ++r) {
+    const int k = rank[r];
+    const double z = userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[r]);
     zScore[k] = z;
     // Calibrated on noise and random-line photos (best family up to 6.5) and real rooms (50-110
-    // for a wall's or floor's lines, 0-15 for a sparse third family).
+    // for a wall's or floor's lines, 2-20 for a sparse second or third family).
     const double significance = std::clamp((z + 1.0) / 8.0, 0.0, 1.0);
+    VanishingPointInfo& v = e.vanishingPoints[k];
     const double sig = v.angularSigmaDeg;
     const double precision = 1.0 / (1.0 + sig * sig);
     v.confidence = std::clamp(significance * precision, 0.0, 1.0);
     e.confidence[k] = v.confidence;
-    e.vanishingPointsPx[k] = scenePixel(v.homogeneousPx, cam.principalPx);
   }
   std::array<double, 3> sorted = e.confidence;
   std::sort(sorted.begin(), sorted.end());
