@@ -17,6 +17,8 @@
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
+#include <QProgressDialog>
+#include <QPushButton>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
@@ -72,6 +74,7 @@ class StudioViewportTest : public QObject {
   void germanTranslation();
   void badPhotoReportsErrorWithoutCrash();
   void embeddedExampleOpens();
+  void progressDialogCancels();
 };
 
 void StudioViewportTest::initTestCase() {
@@ -270,6 +273,26 @@ void StudioViewportTest::embeddedExampleOpens() {
   QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, 60000);
   QVERIFY2(window.document()->isReady(), qPrintable(window.document()->prepareError()));
   QCOMPARE(window.document()->objectCount(), 1);
+}
+
+void StudioViewportTest::progressDialogCancels() {
+  const QString example = exampleScene();
+  if (example.isEmpty() || !QFile::exists(example)) QSKIP("resources/example/scene.json absent");
+  MainWindow window;
+  window.show();
+  QVERIFY(window.openPath(example));
+  // The result comes back by queued signal: until the event loop runs, it is still preparing.
+  QCOMPARE(window.document()->state(), Document::State::Preparing);
+  auto* dialog = window.findChild<QProgressDialog*>();
+  QVERIFY(dialog);
+  auto* cancelButton = dialog->findChild<QPushButton*>();
+  QVERIFY(cancelButton);
+  cancelButton->click();  // as the user does
+  QCOMPARE(window.document()->state(), Document::State::Empty);
+  QTRY_VERIFY(window.findChild<QProgressDialog*>() == nullptr);
+  QTest::qWait(500);
+  QCOMPARE(window.document()->state(), Document::State::Empty);  // the late result is dropped
+  QVERIFY(!window.renderer()->hasFrame());
 }
 
 QTEST_MAIN(StudioViewportTest)
