@@ -14,8 +14,8 @@
 // the random dimensions of their depth, so they stay correlated.
 //
 // Light transport: unidirectional path tracing with next-event estimation to the area lights
-// (one light picked by power, a uniform point on its emitter quad, a shadow ray) combined with
-// BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
+// (one light picked by power over squared distance, a point uniform in its solid angle or area,
+// a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
 // full weight. Emissive objects are not sampled by NEE; every hit on them counts in full.
 // Materials: room surfaces are Lambertian with the projected albedo; objects are Lambertian,
 // Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Mirror, clear smooth
@@ -77,7 +77,8 @@ struct LightData {
   Vec3 normal;
   double area = 0;
   Vec3 radiance;
-  double selectProb = 0;
+  Vec3 centre;
+  double power = 0;  // area x mean radiance; 0: never picked
 };
 
 struct SunData {
@@ -186,7 +187,6 @@ struct PathTracer::Impl {
   unsigned surfaceCount = 0;
   std::vector<LightData> lights;
   std::vector<ObjectData> objects;
-  std::vector<double> lightCdf;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
   mutable std::atomic<uint64_t> rays{0};
 
@@ -292,20 +292,60 @@ struct PathTracer::Impl {
   // angles lose precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
 
-  // Solid-angle pdf with which NEE from `from` picks the direction to `onLight` on light i.
-  // NEE and the MIS weight of BSDF hits both use it (same decision between the strategies).
-  double lightPdf(int i, const Vec3& from, const Vec3& onLight) const {
+  // How much NEE from point p (facing normal n) favours light j: power over squared distance
+  // (capped next to the light), 0 when p is behind the light or the light lies wholly below
+  // p's tangent plane (it cannot contribute there: such directions are rejected).
+  double selectionWeight(size_t j, const Vec3& p, const Vec3& n) const {
+    const LightData& l = lights[j];
+    if (!(l.power > 0) || (p - l.emitter[0]).dot(l.normal) <= 0) return 0;
+    bool above = false;
+    for (const Vec3& c : l.emitter) above = above || (c - p).dot(n) > 0;
+    if (!above) return 0;
+    return l.power / std::max((l.centre - p).squaredNorm(), 0.25 * l.area);
+  }
+  double selectionTotal(const Vec3& p, const Vec3& n) const {
+    double total = 0;
+    for (size_t j = 0; j < lights.size(); ++j) total += selectionWeight(j, p, n);
+    return total;
+  }
+  // The light NEE picks with u in [0, 1); lights.size() when none can contribute.
+  size_t pickLight(const Vec3& p, const Vec3& n, double u, double* prob) const {
+    const double total = selectionTotal(p, n);
+    if (!(total > 0)) return lights.size();
+    const double target = u * total;
+    double run = 0;
+    size_t last = lights.size();
+    for (size_t j = 0; j < lights.size(); ++j) {
+      const double w = selectionWeight(j, p, n);
+      if (!(w > 0)) continue;
+      last = j;
+      run += w;
+      if (target < run) {
+        *prob = w / total;
+        return j;
+      }
+    }
+    *prob = selectionWeight(last, p, n) / total;  // round-off at u close to 1
+    return last;
+  }
+
+  // Solid-angle pdf with which NEE from `from` (facing normal fromNormal) picks the direction
+  // to `onLight` on light i. NEE and the MIS weight of BSDF hits both use it.
+  double lightPdf(int i, const Vec3& from, const Vec3& fromNormal, const Vec3& onLight) const {
     const LightData& l = lights[size_t(i)];
-    if (!(l.area > 0) || !(l.selectProb > 0)) return 0;
+    if (!(l.area > 0)) return 0;
+    const double total = selectionTotal(from, fromNormal);
+    const double selectProb = total > 0 ? selectionWeight(size_t(i), from, fromNormal) / total : 0.0;
+    if (!(selectProb > 0)) return 0;
     if (l.rectangle) {
       const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
-      if (sr.solidAngle > kMinSolidAngle) return l.selectProb / sr.solidAngle;
+      if (sr.solidAngle > kMinSolidAngle) return selectProb / sr.solidAngle;
     }
     Vec3 w = onLight - from;
     const double d2 = w.squaredNorm();
     const double cosL = -l.normal.dot(w) / std::sqrt(d2);
     if (!(cosL > 0)) return 0;
-    return l.selectProb * d2 / (l.area * cosL);
+    return selectProb * d2 / (l.area * cosL);
   }
 
   Vec3 clampIndirect(const Vec3& c, bool indirect) const {
@@ -329,6 +369,7 @@ struct PathTracer::Impl {
     bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
     double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
     Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
+    Vec3 lastNormal;           // its geometric normal on the side the path left from
   };
 
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
@@ -362,7 +403,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       const double cosL = -l.normal.dot(dir);
       if (cosL <= 0) return;  // the black back of the light
       const double w =
-          st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, hit.point));
+          st.lastSpecular ? 1.0
+                          : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, st.lastNormal, hit.point));
       if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
       return;
     }
@@ -407,12 +449,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (bsdf.nonSpecular()) {
       const Frame frame(ns);
       const Vec3 woLocal = frame.toLocal(wo);
-      // Next-event estimation: one light by power, one point uniformly on its emitter quad.
-      if (!lights.empty() && lightCdf.back() > 0) {
-        const double uPick = pickAndLobe[0] * lightCdf.back();
-        const size_t li = std::min(lights.size() - 1, size_t(std::upper_bound(lightCdf.begin(),
-                                                                                  lightCdf.end(), uPick) -
-                                                                 lightCdf.begin()));
+      // Next-event estimation: one light picked by power over squared distance, one point
+      // uniform in its solid angle (rectangles) or area.
+      double selectProb = 0;
+      const size_t li = lights.empty() ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
+      if (li < lights.size() && selectProb > 0) {
         const LightData& l = lights[li];
         const auto uLight = rng.get2(dim / 2);
         Vec3 y;
@@ -427,12 +468,12 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         const double d = std::sqrt(d2);
         if (d > 0) w /= d;
         const double cosL = -l.normal.dot(w);
-        if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0 && l.selectProb > 0) {
+        if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0) {
           double pdfBsdf = 0;
           const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
           if (fcos.maxCoeff() > 0) {
             const double pdfLight =
-                solidAngle > 0 ? l.selectProb / solidAngle : lightPdf(int(li), hit.point, y);
+                solidAngle > 0 ? selectProb / solidAngle : lightPdf(int(li), hit.point, ngFacing, y);
             const Vec3 c = clampIndirect(
                 Vec3(throughput.cwiseProduct(fcos).cwiseProduct(l.radiance) *
                      (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
@@ -488,6 +529,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       st.lastSpecular = false;
       st.lastPdf = s.pdf;
       st.lastPoint = hit.point;
+      st.lastNormal = ngFacing;
       origin = hit.point + eps * ngFacing;
     } else if (bsdf.kind == Material::Kind::Mirror) {
       dir = reflect(wo, ns).normalized();
@@ -578,7 +620,6 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     attachTriangles(d.device, d.withScene, i, scene.room.surfaces[i].meshWorld);
     attachTriangles(d.device, d.withoutScene, i, scene.room.surfaces[i].meshWorld);
   }
-  double cumulative = 0;
   for (size_t i = 0; i < scene.lights.size(); ++i) {
     const AreaLight& light = scene.lights[i];
     LightData l;
@@ -589,20 +630,15 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     const bool valid = l.normal.allFinite() && l.area > 0 && std::isfinite(l.area);
     l.rectangle = valid && asRectangle(l.emitter, &l.corner, &l.edgeX, &l.edgeY);
     if (!valid) l.area = 0, l.normal = Vec3(0, -1, 0);
-    // Pick lights for NEE by power (area x mean radiance).
     const double power = valid ? l.area * meanComponent(l.radiance) : 0.0;
-    cumulative += std::isfinite(power) ? power : 0.0;
-    d.lightCdf.push_back(cumulative);
+    l.power = std::isfinite(power) ? power : 0.0;
+    l.centre = 0.25 * (l.emitter[0] + l.emitter[1] + l.emitter[2] + l.emitter[3]);
     d.lights.push_back(l);
     const unsigned geomId = d.surfaceCount + unsigned(i);
     if (valid) {
       attachQuad(d.device, d.withScene, geomId, l.emitter);
       attachQuad(d.device, d.withoutScene, geomId, l.emitter);
     }
-  }
-  for (size_t i = 0; i < d.lights.size(); ++i) {
-    const double before = i == 0 ? 0.0 : d.lightCdf[i - 1];
-    d.lights[i].selectProb = cumulative > 0 ? (d.lightCdf[i] - before) / cumulative : 0.0;
   }
   d.objects.resize(scene.objects.size());
   for (size_t i = 0; i < scene.objects.size(); ++i) {
