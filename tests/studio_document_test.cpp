@@ -54,6 +54,7 @@ class StudioDocumentTest : public QObject {
   void cancelDropsTheResult();
   void saveAsRewritesRelativePaths();
   void rendererKeepsUpWithManyMoves();
+  void sinkContextCompositesLikeTheFullScene();
 };
 
 void StudioDocumentTest::srgbEncodingHasKnownValues() {
@@ -253,6 +254,33 @@ void StudioDocumentTest::rendererKeepsUpWithManyMoves() {
   QCOMPARE(quint64(renderer.frameInfo().sceneVersion), wanted);
   doc.undoStack()->undo();
   QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted, 30000);
+}
+
+// The sink composites with a slim copy of the prepared scene; it must give what compositeOf
+// gives with the whole one (this fails if compositeOf starts reading something not copied).
+void StudioDocumentTest::sinkContextCompositesLikeTheFullScene() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Expected<SceneLoadResult> loaded = loadSceneFile((dir + QStringLiteral("/scene.json")).toStdString());
+  QVERIFY(loaded.ok());
+  loaded->doc.render.exposure = 0.7;
+  const Expected<PreparedScene> full = prepareScene(loaded->doc);
+  QVERIFY2(full.ok(), full.ok() ? "" : full.error().message().c_str());
+  const int w = full->photo.linearRgb.width, h = full->photo.linearRgb.height;
+  ImageF with(w, h, 3), without(w, h, 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      with.setRgb(x, y, Vec3(0.001 * x, 0.002 * y, 0.5));
+      without.setRgb(x, y, Vec3(0.3, 0.001 * (x + y), 0.25));
+    }
+  auto frame = makeFrame(1, with, without, 0.f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) frame->mask.at(x, y) = float((x * 7 + y * 3) % 11) / 10.f;
+  const ImageF expected = compositeOf(*full, *frame);
+  const ImageF got = compositeOf(*CompositeSink::compositeContextOf(*full), *frame);
+  QCOMPARE(got.width, expected.width);
+  QCOMPARE(got.height, expected.height);
+  QVERIFY(got.data == expected.data);
 }
 
 QTEST_GUILESS_MAIN(StudioDocumentTest)
