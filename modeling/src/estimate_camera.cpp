@@ -475,7 +475,9 @@ Prior makePrior(const Core& c, const EstimateOptions& o, double totalWeight) {
   return p;
 }
 
-// Fill the estimate from a refined, world-ordered triplet.
+// Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
+// families and residuals, confidences, focal interval. zScore (out): per axis the family's
+// meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
 void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
             const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
             bool lockedFocal, std::array<double, 3>& zScore) {
@@ -569,9 +571,9 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   std::array<int, 3> rank{0, 1, 2};
   std::sort(rank.begin(), rank.end(), [&](int a, int b) { return raw[a] > raw[b]; });
   const double tests[3] = {firstTests, n * 15.0, 15.0};
-  for (int r = 0; r < 3; ++r) {
-    const int k = rank[r];
-    const double z = userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[r]);
+  for (int order = 0; order < 3; ++order) {
+    const int k = rank[order];
+    const double z = userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[order]);
     zScore[k] = z;
     // Calibrated on noise and random-line photos (best family up to 6.5) and real rooms (50-110
     // for a wall's or floor's lines, 2-20 for a sparse second or third family).
