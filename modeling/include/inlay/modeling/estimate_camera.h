@@ -101,7 +101,8 @@ struct CameraEstimate {
 // Defaults are what `inlay-cli estimate` uses.
 struct EstimateOptions {
   // Prior focal length in photo pixels (EXIF: ExifInfo::focalPx). nullopt: a 60 degree
-  // horizontal field of view, held loosely. Never taken as truth unless lockFocal.
+  // horizontal field of view, held loosely. Never taken as truth (to hold a focal length, use
+  // EstimateCorrection::lockedFocalPx).
   std::optional<double> priorFocalPx;
   // Log-space 1-sigma of the prior: 0.15 for EXIF (crops, zoom, wrong tags), 0.6 without.
   double priorLogSigmaExif = 0.15;
@@ -153,8 +154,11 @@ struct EstimateCorrection {
 };
 
 // The consistent camera and room after the user's fixes: camera re-fitted with the fixes as
-// constraints (segments re-assigned), then the free back-wall lines re-searched starting from the
-// previous ones. `previous` must come from estimateCamera*/correctEstimate of the same photo.
+// constraints (segments re-assigned), then the free back-wall lines re-searched: locally from
+// the previous ones when the camera moved little (a drag does not make the box jump), globally
+// when it turned more than 2 degrees or its focal length changed by more than 5%.
+// `previous` must come from estimateCamera*/correctEstimate of the same photo; no image needed
+// (it carries its segments), so it is cheap enough for every drag step (a few ms).
 // Errors (key "correction..."): non-finite input, a focal length <= 0, two user lines of one
 // axis that coincide, a fixed camera of another photo size or without a rotation, corners that
 // cannot be a back wall for the re-fitted camera.
