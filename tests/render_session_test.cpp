@@ -120,6 +120,52 @@ TEST(Session, FramesFollowTheScheduleAndMatchTheTracer) {
   }
 }
 
+// Focused sampling: pixels an object has not touched take part in every 4th wave only. Pixels
+// the object covers render exactly as without focus (same samples); quiet ones get fewer.
+TEST(Session, FocusOnChangesKeepsTheObjectPixelsAndSavesTime) {
+  const int w = 96, h = 72;
+  RenderScene scene = sessionScene(w, h);
+  scene.objects[0].worldFromObject = test::translation(Vec3(0.8, 0.15, -3.0));
+  Mat4 small = scene.objects[0].worldFromObject;
+  small.topLeftCorner<3, 3>() *= 0.4;
+  scene.objects[0].worldFromObject = small;
+  std::shared_ptr<const RenderFrame> last[2];
+  double seconds[2];
+  for (int focus = 0; focus < 2; ++focus) {
+    Collector sink;
+    SessionOptions opt;
+    opt.targetSpp = 32;
+    opt.startDivider = 1;
+    opt.focusOnChanges = focus == 1;
+    RenderSession session(&sink, opt);
+    session.setScene(scene);
+    ASSERT_TRUE(session.waitUntilDone(120));
+    const auto frames = sink.frames();
+    ASSERT_FALSE(frames.empty());
+    last[focus] = frames.back().frame;
+    seconds[focus] = last[focus]->seconds;
+    EXPECT_TRUE(last[focus]->final);
+    EXPECT_EQ(last[focus]->spp, 32);
+  }
+  int objectPx = 0, samePx = 0, differentPx = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool same = last[0]->withObjects.rgb(x, y) == last[1]->withObjects.rgb(x, y) &&
+                        last[0]->withoutObjects.rgb(x, y) == last[1]->withoutObjects.rgb(x, y);
+      if (last[0]->mask.at(x, y) == 1.f) {
+        ++objectPx;
+        EXPECT_TRUE(same);
+      }
+      (same ? samePx : differentPx)++;
+    }
+  std::printf("[ session ] focus on changes, %dx%d, 32 spp: %.2f s vs %.2f s uniform; %d object px identical, "
+              "%d px with fewer samples\n",
+              w, h, seconds[1], seconds[0], objectPx, differentPx);
+  EXPECT_GT(objectPx, 5);
+  EXPECT_GT(differentPx, w * h / 2);
+  EXPECT_LT(seconds[1], seconds[0]);  // about 2.5x faster here (most pixels never meet the object)
+}
+
 TEST(Session, EditCancelsTheRunningWaveQuickly) {
   const int w = 160, h = 120;
   Collector sink;

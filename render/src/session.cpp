@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -74,6 +75,59 @@ double estimateError(const DifferentialBuffers& b) {
       ++count;
     }
   return count ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+}  // namespace
+
+namespace {
+
+// Pixels where the composite may change: some sample met an object (a difference, or the
+// object seen), and pixels within 2 of one that sees the object (its edge may not be sampled
+// yet). Sparse indirect touches are not dilated: they say little about their neighbours.
+std::vector<uint8_t> activePixels(const DifferentialBuffers& b) {
+  const int w = b.width, h = b.height;
+  std::vector<uint8_t> active(size_t(w) * h, 0);
+  constexpr int r = 2;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float* a = b.sumWith.pixel(x, y);
+      const float* c = b.sumWithout.pixel(x, y);
+      if (b.sumDiffSq.at(x, y) > 0 || a[0] != c[0] || a[1] != c[1] || a[2] != c[2])
+        active[size_t(y) * w + x] = 1;
+      if (b.sumMask.at(x, y) > 0)
+        for (int yy = std::max(0, y - r); yy <= std::min(h - 1, y + r); ++yy)
+          for (int xx = std::max(0, x - r); xx <= std::min(w - 1, x + r); ++xx) active[size_t(yy) * w + xx] = 1;
+    }
+  return active;
+}
+
+// One focused wave: `count` more samples (each pixel continuing its own sample sequence) in the
+// active pixels, and in the quiet ones too when `quietTurn`. Tiles in parallel; false when
+// stopped.
+bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, int count, bool quietTurn,
+                   const SessionOptions& opt, const CancelToken& token) {
+  const std::vector<uint8_t> active = activePixels(b);
+  constexpr int kTile = 16;
+  const int tilesX = (b.width + kTile - 1) / kTile, tilesY = (b.height + kTile - 1) / kTile;
+  std::atomic<bool> stopped{false};
+  tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
+      for (int t = r.begin(); t != r.end() && !stopped; ++t) {
+        const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
+        for (int y = y0; y < std::min(b.height, y0 + kTile) && !stopped; ++y)
+          for (int x = x0; x < std::min(b.width, x0 + kTile); ++x) {
+            const size_t i = size_t(y) * b.width + x;
+            if (!active[i] && !quietTurn) continue;
+            if (!tracer.renderRect(b, x, y, x + 1, y + 1, b.samples[i], count, opt.seed, &token)) {
+              stopped = true;
+              break;
+            }
+          }
+      }
+    });
+  });
+  return !stopped;
 }
 
 }  // namespace
@@ -151,6 +205,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   DifferentialBuffers full(w, h);
   DifferentialBuffers preview;
   int spp = 0;
+  int fullWaves = 0;
   for (const RenderWork& work : makeRenderSchedule(opt.targetSpp, opt.startDivider)) {
     if (token.shouldStop()) break;
     if (work.resolutionDivider > 1) {
@@ -197,8 +252,11 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       publish(v, std::move(frame));
       continue;
     }
-    const bool complete = tracer.render(full, work.firstSample, work.sampleCount, opt.seed,
-                                        opt.threads, &token);
+    const bool complete =
+        opt.focusOnChanges && fullWaves >= 2
+            ? renderFocused(tracer, full, work.sampleCount, fullWaves % 4 == 0, opt, token)
+            : tracer.render(full, work.firstSample, work.sampleCount, opt.seed, opt.threads, &token);
+    ++fullWaves;
     if (complete) spp += work.sampleCount;
     const bool outOfTime = !complete && !token.cancelled();
     if (!complete && !outOfTime) return;  // cancelled: an edit or cancel(); publish nothing

@@ -66,6 +66,12 @@ struct SessionOptions {
   uint32_t seed = 1;
   int threads = 0;      // 0 = all cores
   int startDivider = 8;
+  // false: every full-resolution wave samples every pixel. true: after the first two waves,
+  // pixels where no sample has yet met an object (with == without, and no pixel within 2
+  // that sees the object) take part in every 4th wave only, so the samples go where the
+  // composite changes. Each pixel still averages its own samples (no bias); quiet pixels just have
+  // fewer of them, and a quiet pixel that meets an object becomes active again.
+  bool focusOnChanges = false;
   TracerOptions tracer;
 };
 
