@@ -14,8 +14,8 @@
 // the random dimensions of their depth, so they stay correlated.
 //
 // Light transport: unidirectional path tracing with next-event estimation to the area lights
-// (one light picked by power over squared distance, a point uniform in its solid angle or area,
-// a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
+// (one light picked by power over squared distance, a point uniform in its solid angle, by area
+// when that is tiny, a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
 // full weight. Emissive objects are not sampled by NEE; every hit on them counts in full.
 // Materials: room surfaces are Lambertian with the projected albedo; objects are Lambertian,
 // Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Mirror, clear smooth
@@ -72,7 +72,8 @@ struct ObjectData {
 
 struct LightData {
   std::array<Vec3, 4> emitter;  // corners of the emitter quad (offset from the light)
-  bool rectangle = false;       // sampled by solid angle (corner + edges below) when true
+  bool rectangle = false;       // Urena's rectangle sampler (corner + edges below), else Arvo's
+                                // triangles; both by solid angle
   Vec3 corner, edgeX, edgeY;
   Vec3 normal;
   double area = 0;
@@ -288,8 +289,8 @@ struct PathTracer::Impl {
     return len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3(-dir);
   }
 
-  // Below this solid angle (sr) a rectangle is sampled by area: the spherical-rectangle
-  // angles lose precision, and a far light has no 1/d^2 trouble anyway.
+  // Below this solid angle (sr) a light is sampled by area: the spherical angles lose
+  // precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
 
   // How much NEE from point p (facing normal n) favours light j: power over squared distance
@@ -340,6 +341,9 @@ struct PathTracer::Impl {
     if (l.rectangle) {
       const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
       if (sr.solidAngle > kMinSolidAngle) return selectProb / sr.solidAngle;
+    } else {
+      const SphericalQuad sq(l.emitter, from);
+      if (sq.solidAngle > kMinSolidAngle) return selectProb / sq.solidAngle;
     }
     Vec3 w = onLight - from;
     const double d2 = w.squaredNorm();
@@ -461,6 +465,9 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         if (l.rectangle) {
           const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
           if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+        } else {
+          const SphericalQuad sq(l.emitter, hit.point);
+          if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
         }
         if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
         Vec3 w = y - hit.point;

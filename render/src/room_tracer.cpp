@@ -78,13 +78,17 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
   const int nx = std::max(1, int(std::sqrt(double(samples))));
   const int ny = std::max(1, samples / nx);
   const uint32_t key = pcgHash(seed ^ 0x5bd1e995u);
-  // Rectangles: stratified in the solid angle they subtend (bounded next to the light, as in
-  // the path tracer); other quads (and tiny solid angles): stratified by area.
+  // Stratified in the solid angle the light subtends (bounded next to the light, as in the
+  // path tracer): Urena's map for rectangles, Arvo's triangles otherwise; by area when tiny.
   Vec3 s, ex, ey;
   std::optional<SphericalRect> sr;
+  std::optional<SphericalQuad> sq;
   if (asRectangle(corners, &s, &ex, &ey)) {
     sr.emplace(s, ex, ey, p);
     if (!(sr->solidAngle > 1e-6)) sr.reset();
+  } else {
+    sq.emplace(corners, p);
+    if (!(sq->solidAngle > 1e-6)) sq.reset();
   }
   DenormalsOffScope ftz;
   double sum = 0;
@@ -92,7 +96,7 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
     for (int i = 0; i < nx; ++i) {
       const uint32_t h = pcgHash(key + pcgHash(uint32_t(j * nx + i)));
       const double u = (i + double(h & 0xFFFF) / 65536.0) / nx, v = (j + double(h >> 16) / 65536.0) / ny;
-      const Vec3 y = sr ? sr->sample(u, v) : sampleQuadUniform(corners, u, v);
+      const Vec3 y = sr ? sr->sample(u, v) : sq ? sq->sample(u, v) : sampleQuadUniform(corners, u, v);
       Vec3 w = y - p;
       const double d2 = w.squaredNorm();
       if (!(d2 > 0)) continue;
@@ -103,9 +107,10 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
       const double eps = std::min(rayEpsilon(p), 0.25 * d);
       if (occluded(impl_->scene, p, w, eps, d * (1.0 - 1e-5))) continue;
       // E / pi = (1/pi) * integral of L cosR over the light's solid angle, with L = 1.
-      sum += sr ? cosR : cosR * cosL / d2 * area;
+      sum += sr || sq ? cosR : cosR * cosL / d2 * area;
     }
-  return sum * (sr ? sr->solidAngle : 1.0) / (double(nx) * ny) / kPi;
+  const double measure = sr ? sr->solidAngle : sq ? sq->solidAngle : 1.0;
+  return sum * measure / (double(nx) * ny) / kPi;
 }
 
 Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {

@@ -176,6 +176,79 @@ struct SphericalRect {
   }
 };
 
+// Uniform sampling of the solid angle a triangle subtends (Arvo 1995, "Stratified Sampling of
+// Spherical Triangles", in pbrt-v4's form). solidAngle by Van Oosterom & Strackee (stable for
+// small triangles); 0 when o lies in the triangle's plane.
+struct SphericalTriangle {
+  Vec3 o, a, b, c;          // unit directions to the corners
+  Vec3 planePoint, planeNormal;
+  double alpha = 0, beta = 0, gamma = 0;
+  double solidAngle = 0;
+
+  SphericalTriangle(const Vec3& A, const Vec3& B, const Vec3& C, const Vec3& origin)
+      : o(origin), planePoint(A), planeNormal((B - A).cross(C - A)) {
+    a = (A - o).normalized(), b = (B - o).normalized(), c = (C - o).normalized();
+    const double triple = std::abs(a.dot(b.cross(c)));
+    const double sa = 2.0 * std::atan2(triple, 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
+    Vec3 nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
+    if (!(sa > 0) || !std::isfinite(sa) || nab.squaredNorm() == 0 || nbc.squaredNorm() == 0 ||
+        nca.squaredNorm() == 0)
+      return;
+    nab.normalize(), nbc.normalize(), nca.normalize();
+    alpha = angleBetween(nab, -nca);
+    beta = angleBetween(nbc, -nab);
+    gamma = angleBetween(nca, -nbc);
+    solidAngle = sa;
+  }
+
+  static double angleBetween(const Vec3& v1, const Vec3& v2) {
+    if (v1.dot(v2) < 0) return kPi - 2.0 * std::asin(std::min(1.0, (v1 + v2).norm() / 2));
+    return 2.0 * std::asin(std::min(1.0, (v2 - v1).norm() / 2));
+  }
+
+  // The point on the triangle in the sampled direction.
+  Vec3 sample(double u0, double u1) const {
+    const double areaPi = alpha + beta + gamma;
+    const double apPi = kPi + u0 * (areaPi - kPi);
+    const double cosA = std::cos(alpha), sinA = std::sin(alpha);
+    const double sinPhi = std::sin(apPi) * cosA - std::cos(apPi) * sinA;
+    const double cosPhi = std::cos(apPi) * cosA + std::sin(apPi) * sinA;
+    const double k1 = cosPhi + cosA;
+    const double k2 = sinPhi - sinA * a.dot(b);
+    double cosBp = (k2 + (k2 * cosPhi - k1 * sinPhi) * cosA) / ((k2 * sinPhi + k1 * cosPhi) * sinA);
+    cosBp = std::isfinite(cosBp) ? std::clamp(cosBp, -1.0, 1.0) : 1.0;
+    const double sinBp = std::sqrt(std::max(0.0, 1.0 - cosBp * cosBp));
+    const Vec3 cp = cosBp * a + sinBp * orthoNormal(c, a);
+    const double cosT = 1.0 - u1 * (1.0 - cp.dot(b));
+    const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+    const Vec3 w = cosT * b + sinT * orthoNormal(cp, b);
+    const double t = (planePoint - o).dot(planeNormal) / w.dot(planeNormal);
+    return o + t * w;
+  }
+
+  static Vec3 orthoNormal(const Vec3& v, const Vec3& w) {
+    const Vec3 g = v - v.dot(w) * w;
+    const double n = g.norm();
+    return n > 0 ? Vec3(g / n) : Vec3::Zero();
+  }
+};
+
+// A planar convex quad's solid angle as two spherical triangles (c0 c1 c2) and (c0 c2 c3):
+// u0 picks one by solid angle and is reused inside it.
+struct SphericalQuad {
+  SphericalTriangle t1, t2;
+  double solidAngle = 0;
+  SphericalQuad(const std::array<Vec3, 4>& c, const Vec3& o)
+      : t1(c[0], c[1], c[2], o), t2(c[0], c[2], c[3], o) {
+    if (t1.solidAngle > 0 && t2.solidAngle > 0) solidAngle = t1.solidAngle + t2.solidAngle;
+  }
+  Vec3 sample(double u0, double u1) const {
+    const double p1 = t1.solidAngle / solidAngle;
+    if (u0 < p1) return t1.sample(std::clamp(u0 / p1, 0.0, 1.0), u1);
+    return t2.sample(std::clamp((u0 - p1) / (1.0 - p1), 0.0, 1.0), u1);
+  }
+};
+
 // True when the quad's corners form a rectangle (to round-off); fills corner and edges.
 inline bool asRectangle(const std::array<Vec3, 4>& c, Vec3* s, Vec3* ex, Vec3* ey) {
   const Vec3 e1 = c[1] - c[0], e2 = c[3] - c[0];
