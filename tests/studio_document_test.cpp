@@ -55,6 +55,7 @@ class StudioDocumentTest : public QObject {
   void saveAsRewritesRelativePaths();
   void rendererKeepsUpWithManyMoves();
   void sinkContextCompositesLikeTheFullScene();
+  void insertAndDeleteAreUndoable();
 };
 
 void StudioDocumentTest::srgbEncodingHasKnownValues() {
@@ -281,6 +282,65 @@ void StudioDocumentTest::sinkContextCompositesLikeTheFullScene() {
   QCOMPARE(got.width, expected.width);
   QCOMPARE(got.height, expected.height);
   QVERIFY(got.data == expected.data);
+}
+
+void StudioDocumentTest::insertAndDeleteAreUndoable() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  RenderController renderer(&doc);
+  QString error;
+  QVERIFY(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error));
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QVERIFY(doc.isReady());
+  const ObjectKeys sphere = doc.scene().objects[0];
+
+  const std::optional<Vec2> at = doc.freeStandingPointPx();
+  QVERIFY(at);
+  ObjectKeys cube;
+  cube.mesh = "builtin:cube";
+  cube.basePx = *at;
+  cube.heightM = 0.4;
+  QVERIFY(doc.insertObject(cube));
+  QCOMPARE(doc.objectCount(), 2);
+  QCOMPARE(doc.selectedObject(), 1);
+  QCOMPARE(doc.prepared()->renderScene.objects.size(), size_t(2));
+  QCOMPARE(doc.prepared()->placements.size(), size_t(2));
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+
+  QString reason;
+  ObjectKeys unknown = cube;
+  unknown.mesh = "builtin:teapot-that-is-not";
+  QVERIFY(!doc.insertObject(unknown, &reason));
+  QVERIFY(!reason.isEmpty());
+  ObjectKeys onCeiling = cube;
+  onCeiling.basePx = Vec2(256, 5);
+  QVERIFY(!doc.insertObject(onCeiling, &reason));
+  QCOMPARE(doc.objectCount(), 2);
+  QCOMPARE(doc.undoStack()->count(), 1);
+
+  QVERIFY(doc.removeObject(0));
+  QCOMPARE(doc.objectCount(), 1);
+  QCOMPARE(QString::fromStdString(doc.scene().objects[0].mesh), QStringLiteral("builtin:cube"));
+  QVERIFY(doc.moveObject(0, *at + Vec2(-15, 0)));  // indices of what is left are consistent
+  const std::optional<Vec2> reprojected =
+      doc.prepared()->camera.project(doc.prepared()->placements[0].baseWorld);
+  QVERIFY(reprojected && (*reprojected - (*at + Vec2(-15, 0))).norm() < 1e-3);
+  doc.undoStack()->undo();  // the move
+  doc.undoStack()->undo();  // the delete: the sphere is back where it was, in its place
+  QCOMPARE(doc.objectCount(), 2);
+  QVERIFY(doc.scene().objects[0].basePx == sphere.basePx);
+  QCOMPARE(QString::fromStdString(doc.scene().objects[0].mesh), QStringLiteral("builtin:sphere"));
+  QVERIFY(doc.scene().objects[1].basePx == *at);
+  doc.undoStack()->undo();  // the insert
+  QCOMPARE(doc.objectCount(), 1);
+  QVERIFY(doc.undoStack()->isClean());
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+  doc.undoStack()->redo();
+  doc.undoStack()->redo();
+  QCOMPARE(doc.objectCount(), 1);
+  QCOMPARE(QString::fromStdString(doc.scene().objects[0].mesh), QStringLiteral("builtin:cube"));
+  QVERIFY(!doc.removeObject(5, &reason));
 }
 
 QTEST_GUILESS_MAIN(StudioDocumentTest)

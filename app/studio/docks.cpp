@@ -54,7 +54,8 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
 
 void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
-      event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement))
+      event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement) ||
+      event.has(ChangeEvent::ObjectsAddedOrRemoved))
     rebuild();
   else if (event.has(ChangeEvent::Selection))
     syncSelection();

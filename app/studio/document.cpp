@@ -68,6 +68,31 @@ class ObjectEditCommand : public QUndoCommand {
   int mergeId_;
 };
 
+// Inserting (or, with `insert` false, removing) one object. Undo does the opposite. The mesh
+// is kept here so redo never reloads a file.
+class ObjectListCommand : public QUndoCommand {
+ public:
+  ObjectListCommand(Document* doc, bool insert, int index, ObjectKeys keys,
+                    std::shared_ptr<const TriangleMesh> mesh, const QString& text)
+      : QUndoCommand(text),
+        doc_(doc),
+        insert_(insert),
+        index_(index),
+        keys_(std::move(keys)),
+        mesh_(std::move(mesh)) {}
+
+  void redo() override { insert_ ? add() : doc_->removeObjectAt(index_); }
+  void undo() override { insert_ ? doc_->removeObjectAt(index_) : add(); }
+
+ private:
+  void add() { doc_->insertObjectAt(index_, keys_, mesh_); }
+  Document* doc_;
+  bool insert_;
+  int index_;
+  ObjectKeys keys_;
+  std::shared_ptr<const TriangleMesh> mesh_;
+};
+
 Material renderMaterialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
   Material m;
   m.albedo = keys.albedo;
@@ -295,6 +320,84 @@ bool Document::setMaterial(int index, const MaterialKeys& material, QString* rea
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.material = material;
   return editObject(index, keys, 0, tr("Change material of object %1").arg(index + 1), reason);
+}
+
+std::optional<Vec2> Document::freeStandingPointPx() const {
+  if (!prepared_) return std::nullopt;
+  const Camera& cam = prepared_->camera;
+  for (double f = 0.92; f > 0.3; f -= 0.04) {
+    const Vec2 px(0.5 * cam.widthPx, f * cam.heightPx);
+    if (prepared_->geometry.intersect(cam.rayThroughPixel(px), /*supportsOnly=*/true))
+      return px;
+  }
+  return std::nullopt;
+}
+
+bool Document::insertObject(const ObjectKeys& keys, QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (state_ == State::Preparing) return fail(tr("The scene is still being prepared."));
+  if (state_ != State::Ready || !prepared_) return fail(tr("The scene could not be prepared."));
+  if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
+    return fail(tr("The height must be greater than zero."));
+  const std::string key = "objects[" + std::to_string(doc_.objects.size()) + "]";
+  Expected<TriangleMesh> mesh = loadMesh(keys.meshResolved.empty() ? keys.mesh : keys.meshResolved);
+  if (!mesh.ok()) return fail(QString::fromStdString(mesh.error().underKey(key + ".mesh").message()));
+  auto shared = std::make_shared<const TriangleMesh>(std::move(mesh.value()));
+  const Expected<Placement> placed = placeObject(*shared, prepared_->geometry, prepared_->camera,
+                                                 keys.basePx, keys.heightM, keys.yawDeg, key);
+  if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
+  const int index = objectCount();
+  undo_.push(new ObjectListCommand(this, true, index, keys, std::move(shared),
+                                   tr("Insert object %1").arg(index + 1)));
+  return true;
+}
+
+bool Document::removeObject(int index, QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (index < 0 || index >= objectCount()) return fail(tr("There is no object %1.").arg(index + 1));
+  if (state_ != State::Ready || !prepared_) return fail(tr("The scene is still being prepared."));
+  undo_.push(new ObjectListCommand(this, false, index, doc_.objects[size_t(index)],
+                                   prepared_->renderScene.objects[size_t(index)].meshObject,
+                                   tr("Delete object %1").arg(index + 1)));
+  return true;
+}
+
+void Document::insertObjectAt(int index, const ObjectKeys& keys,
+                              std::shared_ptr<const TriangleMesh> mesh) {
+  INLAY_CHECK(prepared_ && index >= 0 && index <= objectCount() && mesh);
+  INLAY_CHECK(prepared_->renderScene.objects.size() == doc_.objects.size() &&
+              prepared_->placements.size() == doc_.objects.size());
+  const auto at = [index](auto& v) { return v.begin() + index; };
+  doc_.objects.insert(at(doc_.objects), keys);
+  prepared_->doc.objects.insert(at(prepared_->doc.objects), keys);
+  InsertedObject object;
+  object.material = renderMaterialFromKeys(keys.material, mesh.get());
+  object.meshObject = std::move(mesh);
+  prepared_->renderScene.objects.insert(at(prepared_->renderScene.objects), object);
+  // Validated before the command was pushed, against the same mesh and geometry.
+  const Expected<Placement> placed = placeObjectAt(*prepared_, size_t(index));
+  INLAY_CHECK(placed.ok());
+  prepared_->renderScene.objects[size_t(index)].worldFromObject = placed->worldFromObject;
+  prepared_->placements.insert(at(prepared_->placements), placed.value());
+  selected_ = index;
+  Q_EMIT changed({ChangeEvent::ObjectsAddedOrRemoved | ChangeEvent::Selection, index});
+}
+
+void Document::removeObjectAt(int index) {
+  INLAY_CHECK(prepared_ && index >= 0 && index < objectCount());
+  const auto at = [index](auto& v) { return v.begin() + index; };
+  doc_.objects.erase(at(doc_.objects));
+  prepared_->doc.objects.erase(at(prepared_->doc.objects));
+  prepared_->renderScene.objects.erase(at(prepared_->renderScene.objects));
+  prepared_->placements.erase(at(prepared_->placements));
+  if (selected_ >= objectCount()) selected_ = objectCount() - 1;
+  Q_EMIT changed({ChangeEvent::ObjectsAddedOrRemoved | ChangeEvent::Selection, index});
 }
 
 void Document::applyObject(int index, const ObjectKeys& keys) {

@@ -24,6 +24,7 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <optional>
 
 namespace inlay::studio {
 
@@ -41,6 +42,7 @@ struct ChangeEvent {
     ObjectMaterial = 1u << 4,   // material of objectIndex
     Selection = 1u << 5,
     FilePath = 1u << 6,         // filePath() changed (open, save as)
+    ObjectsAddedOrRemoved = 1u << 7,  // objects inserted or deleted; indices may have shifted
   };
   unsigned what = 0;
   int objectIndex = -1;  // for ObjectPlacement / ObjectMaterial
@@ -95,6 +97,13 @@ class Document : public QObject {
   bool setObjectHeight(int index, double heightM, QString* reason = nullptr);
   bool setObjectYaw(int index, double yawDeg, QString* reason = nullptr);
   bool setMaterial(int index, const MaterialKeys& material, QString* reason = nullptr);
+  // Appends an object (its mesh is loaded here, on the calling thread) and selects it.
+  bool insertObject(const ObjectKeys& keys, QString* reason = nullptr);
+  bool removeObject(int index, QString* reason = nullptr);
+  // A base pixel where a new object can stand: the first point on a supporting surface along
+  // the photo's vertical centre line, from the bottom up. nullopt if there is none (or the
+  // scene is not prepared).
+  std::optional<Vec2> freeStandingPointPx() const;
 
   // A unique id for a new drag (for moveObject's dragId).
   static int newDragId();
@@ -106,11 +115,15 @@ class Document : public QObject {
 
  private:
   friend class ObjectEditCommand;
+  friend class ObjectListCommand;
   // Validates `keys` for object `index` and pushes the command (see the edit functions).
   bool editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text,
                   QString* reason);
   // Applies object keys already known to be valid (from an undo command).
   void applyObject(int index, const ObjectKeys& keys);
+  // Insert / remove one object everywhere it is mirrored (from an undo command).
+  void insertObjectAt(int index, const ObjectKeys& keys, std::shared_ptr<const TriangleMesh> mesh);
+  void removeObjectAt(int index);
   void onPrepared(const PrepareResult& result);
   void resetTo(SceneDoc doc, const QString& filePath);
 

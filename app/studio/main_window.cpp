@@ -138,6 +138,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
   updateTitle();
   onFrame();
+  onDocumentChanged({});  // the actions' enabled states for an empty document
 }
 
 MainWindow::~MainWindow() {
@@ -185,6 +186,18 @@ void MainWindow::createActions() {
   redoAct_->setShortcut(QKeySequence::Redo);
   redoAct_->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
 
+  insertSphereAct_ = new QAction(tr("Insert &Sphere"), this);
+  insertSphereAct_->setStatusTip(tr("Stand a sphere on the floor in the middle of the photo"));
+  connect(insertSphereAct_, &QAction::triggered, this,
+          [this] { insertBuiltin(QStringLiteral("builtin:sphere")); });
+  insertCubeAct_ = new QAction(tr("Insert &Cube"), this);
+  insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
+  connect(insertCubeAct_, &QAction::triggered, this,
+          [this] { insertBuiltin(QStringLiteral("builtin:cube")); });
+  deleteAct_ = new QAction(tr("&Delete Object"), this);
+  deleteAct_->setShortcut(QKeySequence::Delete);
+  connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelected);
+
   zoomInAct_ = new QAction(tr("Zoom &In"), this);
   zoomInAct_->setShortcut(QKeySequence::ZoomIn);
   connect(zoomInAct_, &QAction::triggered, viewport_, &Viewport::zoomIn);
@@ -222,6 +235,10 @@ void MainWindow::createMenus() {
   QMenu* edit = menuBar()->addMenu(tr("&Edit"));
   edit->addAction(undoAct_);
   edit->addAction(redoAct_);
+  edit->addSeparator();
+  edit->addAction(insertSphereAct_);
+  edit->addAction(insertCubeAct_);
+  edit->addAction(deleteAct_);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(zoomInAct_);
@@ -308,6 +325,9 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   }
   const bool ready = document_->isReady();
   exportAct_->setEnabled(ready);
+  insertSphereAct_->setEnabled(ready);
+  insertCubeAct_->setEnabled(ready);
+  deleteAct_->setEnabled(ready && document_->selectedObject() >= 0);
   saveAct_->setEnabled(document_->state() != Document::State::Empty ||
                        !document_->scene().photo.empty());
   saveAsAct_->setEnabled(saveAct_->isEnabled());
@@ -505,6 +525,30 @@ void MainWindow::about() {
          "is fitted to the photo, its lights and reflectance are estimated, and a path tracer "
          "renders the objects into it (after Karsch et al., 2011).</p>")
           .arg(QString::fromLatin1(versionString())));
+}
+
+bool MainWindow::insertBuiltin(const QString& mesh) {
+  const std::optional<Vec2> at = document_->freeStandingPointPx();
+  if (!at) {
+    statusBar()->showMessage(tr("There is no floor in the middle of the photo to stand an object on."), 5000);
+    return false;
+  }
+  ObjectKeys keys;
+  keys.mesh = mesh.toStdString();
+  keys.basePx = *at;
+  keys.heightM = 0.5;
+  QString reason;
+  if (!document_->insertObject(keys, &reason)) {
+    statusBar()->showMessage(reason, 5000);
+    return false;
+  }
+  return true;
+}
+
+void MainWindow::deleteSelected() {
+  QString reason;
+  if (!document_->removeObject(document_->selectedObject(), &reason))
+    statusBar()->showMessage(reason, 5000);
 }
 
 void MainWindow::addRecentFile(const QString& path) {

@@ -60,6 +60,10 @@ class MainWindow : public QMainWindow {
   bool saveAsDialog();
   void exportCompositeDialog();
   void about();
+  // Inserts a builtin mesh ("builtin:sphere", "builtin:cube") standing in the middle of the
+  // visible floor; false (with the reason in the status bar) when there is no such place.
+  bool insertBuiltin(const QString& mesh);
+  void deleteSelected();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -98,6 +102,9 @@ class MainWindow : public QMainWindow {
   QAction* quitAct_ = nullptr;
   QAction* undoAct_ = nullptr;
   QAction* redoAct_ = nullptr;
+  QAction* insertSphereAct_ = nullptr;
+  QAction* insertCubeAct_ = nullptr;
+  QAction* deleteAct_ = nullptr;
   QAction* zoomInAct_ = nullptr;
   QAction* zoomOutAct_ = nullptr;
   QAction* fitAct_ = nullptr;

@@ -63,6 +63,10 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
     }
   }
   const PreparedScene* prepared = document_->prepared();
+  if (session_ && prepared && event.has(ChangeEvent::ObjectsAddedOrRemoved)) {
+    request(session_->setScene(prepared->renderScene));
+    return;
+  }
   if (!session_ || !prepared || event.objectIndex < 0 ||
       size_t(event.objectIndex) >= prepared->renderScene.objects.size())
     return;

@@ -3,7 +3,8 @@
 //
 // Threads: a RenderController lives on the GUI thread. It owns the RenderSession (whose render
 // thread calls the CompositeSink) and reacts to Document::changed: a new prepared scene ->
-// setScene, a moved object -> setObjectTransform (an instance update), a material -> setScene.
+// setScene, a moved object -> setObjectTransform (an instance update), a material or an
+// inserted / deleted object -> setScene.
 // Each call returns a new scene version; frames of older versions are dropped by the sink and
 // again here. Images arrive by queued call; nothing here ever waits for the renderer.
 // Destruction stops the session (joins its thread) before the sink is destroyed.

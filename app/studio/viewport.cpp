@@ -66,9 +66,9 @@ Viewport::Viewport(Document* document, RenderController* renderer, QWidget* pare
     update();
   };
   connect(document_, &Document::changed, this, [this, repaint](const ChangeEvent& e) {
-    if (e.has(ChangeEvent::SceneReplaced)) {
-      fit_ = true;
-      dragObject_ = -1;
+    if (e.has(ChangeEvent::SceneReplaced)) fit_ = true;
+    if (e.has(ChangeEvent::SceneReplaced) || e.has(ChangeEvent::ObjectsAddedOrRemoved)) {
+      dragObject_ = -1;  // indices may have shifted
       hoverObject_ = -1;
     }
     repaint();
