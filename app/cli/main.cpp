@@ -312,18 +312,6 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   // What the user already fixed in the scene is kept; the rest re-estimated around it.
   EstimateCorrection fix;
   bool anyFix = false;
-  if (fixed.camera.focalPx) fix.lockedFocalPx = fixed.camera.focalPx, anyFix = true;
-  if (fixed.layout.backWallPx) {
-    for (int i = 0; i < 4; ++i) fix.backWallCornersPx[i] = (*fixed.layout.backWallPx)[i];
-    anyFix = true;
-  }
-  if (anyFix) {
-    auto c = correctEstimate(*est, fix, eo);
-    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
-    est = std::move(c);
-  }
-  Camera cam = est->camera;
-  std::array<Vec2, 3> vps = est->vanishingPointsPx;
   if (fixed.camera.vanishingPointsPx) {
     VanishingInput in;
     in.vanishingPointsPx = *fixed.camera.vanishingPointsPx;
@@ -334,9 +322,23 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
     in.heightM = eo.cameraHeightM;
     auto c = cameraFromVanishingPoints(in);
     if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
-    cam = *c;
-    vps = *fixed.camera.vanishingPointsPx;
+    fix.fixedCamera = *c;
+    anyFix = true;
+  } else if (fixed.camera.focalPx) {
+    fix.lockedFocalPx = fixed.camera.focalPx, anyFix = true;
   }
+  if (fixed.layout.backWallPx) {
+    for (int i = 0; i < 4; ++i) fix.backWallCornersPx[size_t(i)] = (*fixed.layout.backWallPx)[size_t(i)];
+    anyFix = true;
+  }
+  if (anyFix) {
+    auto c = correctEstimate(*est, fix, eo);
+    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
+    est = std::move(c);
+  }
+  const Camera cam = est->camera;
+  const std::array<Vec2, 3> vps = fixed.camera.vanishingPointsPx ? *fixed.camera.vanishingPointsPx
+                                                                 : est->vanishingPointsPx;
   using nlohmann::json;
   auto pt = [](const Vec2& p) { return json::array({p.x(), p.y()}); };
   json j;

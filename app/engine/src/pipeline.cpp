@@ -156,9 +156,30 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     eo.cancel = opt.cancel;
     auto e = estimateCamera(ps.photo.linearRgb, eo);
     if (!e) return e.error();
-    if (doc.camera.focalPx && !doc.camera.vanishingPointsPx) {
-      EstimateCorrection fix;
-      fix.lockedFocalPx = doc.camera.focalPx;
+    // What the user gave is kept and the rest estimated around it: a given camera keeps the
+    // layout search on that camera; given corners pull the camera to the user's box.
+    EstimateCorrection fix;
+    bool anyFix = false;
+    if (doc.camera.vanishingPointsPx) {
+      VanishingInput in;
+      in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
+      in.focalPx = doc.camera.focalPx;
+      in.principalPx = doc.camera.principalPx;
+      in.widthPx = W;
+      in.heightPx = H;
+      in.heightM = heightM;
+      auto cam = cameraFromVanishingPoints(in);
+      if (!cam) return cam.error();
+      fix.fixedCamera = *cam;
+      anyFix = true;
+    } else {
+      if (doc.camera.focalPx) fix.lockedFocalPx = doc.camera.focalPx, anyFix = true;
+      if (doc.layout.backWallPx) {
+        for (int i = 0; i < 4; ++i) fix.backWallCornersPx[size_t(i)] = (*doc.layout.backWallPx)[size_t(i)];
+        anyFix = true;
+      }
+    }
+    if (anyFix) {
       auto fixed = correctEstimate(*e, fix, eo);
       if (!fixed) return fixed.error();
       e = std::move(fixed);
@@ -166,8 +187,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     for (const auto& w : e->warnings) ps.warnings.push_back("estimate: " + w);
     if (!e->manhattan)
       ps.warnings.push_back("estimate: the photo shows no clear room structure; the camera is a "
-                            "fallback (level, " + std::string(e->focalFromPrior ? "prior" : "default") +
-                            " focal length): give camera.vanishing_points_px for a reliable result");
+                            "fallback (" + std::string(e->focalFromPrior ? "prior" : "default") +
+                            " focal length, upright): give camera.vanishing_points_px for a reliable result");
     estimate = std::move(*e);
   }
   if (doc.camera.vanishingPointsPx) {

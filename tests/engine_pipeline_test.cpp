@@ -1,0 +1,91 @@
+// The engine pipeline on the bundled example (needs nothing from ../shared): the whole chain
+// with no inserted object returns the photo bit for bit; moving an object re-places it exactly
+// as a fresh placement would; the composite is finite and differs from the photo only where
+// paths met the object.
+#include "inlay/engine/pipeline.h"
+#include "inlay/render/composite.h"
+#include "inlay/render/path_tracer.h"
+#include "test_support.h"
+
+#include <cmath>
+
+namespace inlay {
+namespace {
+
+SceneDoc exampleDoc() {
+  const std::string path = std::string(INLAY_SOURCE_DIR) + "/resources/example/scene.json";
+  auto loaded = loadSceneFile(path);
+  EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message());
+  return loaded->doc;
+}
+
+RenderFrame renderFrame(const PreparedScene& ps, int spp) {
+  PathTracer tracer(ps.renderScene);
+  DifferentialBuffers buf(ps.photo.linearRgb.width, ps.photo.linearRgb.height);
+  EXPECT_TRUE(tracer.render(buf, 0, spp, 1));
+  RenderFrame f;
+  f.width = buf.width, f.height = buf.height, f.spp = spp;
+  f.withObjects = buf.meanWith();
+  f.withoutObjects = buf.meanWithout();
+  f.mask = buf.meanMask();
+  return f;
+}
+
+TEST(Engine, NoObjectGivesThePhotoBitForBit) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  const ImageF composite = compositeOf(*ps, renderFrame(*ps, 2));
+  ASSERT_EQ(composite.data.size(), ps->photo.linearRgb.data.size());
+  size_t differing = 0;
+  for (size_t i = 0; i < composite.data.size(); ++i) differing += composite.data[i] != ps->photo.linearRgb.data[i];
+  EXPECT_EQ(differing, 0u);
+}
+
+TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
+  auto ps = prepareScene(exampleDoc());
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  ASSERT_EQ(ps->renderScene.objects.size(), 1u);
+  const RenderFrame f = renderFrame(*ps, 4);
+  const ImageF composite = compositeOf(*ps, f);
+  const auto base = ps->camera.project(ps->placements[0].baseWorld);
+  ASSERT_TRUE(base.has_value());
+  double maskSum = 0;
+  size_t changed = 0;
+  for (int y = 0; y < composite.height; ++y)
+    for (int x = 0; x < composite.width; ++x) {
+      for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(composite.at(x, y, c)));
+      maskSum += f.mask.at(x, y);
+      changed += composite.rgb(x, y) != ps->photo.linearRgb.rgb(x, y);
+    }
+  // The sphere (0.6 m across, about 4000 px in the truth) covers a few thousand pixels.
+  EXPECT_GT(maskSum, 2000);
+  EXPECT_LT(maskSum, 8000);
+  EXPECT_GT(changed, size_t(maskSum));
+  // The object sits where base_px says: its mask is around the base pixel.
+  const int bx = int(base->x()), by = int(base->y()) - 20;
+  EXPECT_GT(f.mask.at(bx, by), 0.5f);
+}
+
+TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
+  auto ps = prepareScene(exampleDoc());
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  ps->doc.objects[0].basePx += Vec2(60, -10);
+  ps->doc.objects[0].yawDeg = 30;
+  const auto moved = placeObjectAt(*ps, 0);
+  ASSERT_TRUE(moved.ok()) << moved.error().message();
+  const auto fresh = placeObject(*ps->renderScene.objects[0].meshObject, ps->geometry, ps->camera,
+                                 ps->doc.objects[0].basePx, ps->doc.objects[0].heightM, 30, "objects[0]");
+  ASSERT_TRUE(fresh.ok());
+  EXPECT_TRUE(moved->worldFromObject.isApprox(fresh->worldFromObject, 1e-12));
+  EXPECT_NEAR(moved->baseWorld.y(), 0.0, 1e-9);  // still on the floor
+  // Onto the ceiling: refused with the key named.
+  ps->doc.objects[0].basePx = Vec2(200, 20);
+  const auto bad = placeObjectAt(*ps, 0);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message().find("objects[0].base_px"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace inlay
