@@ -160,8 +160,9 @@ void Viewport::paintEvent(QPaintEvent*) {
   const QSize imgSize = imageSize();
   if (!image.isNull()) {
     const QRectF target(offset_, QSizeF(imgSize.width() * scale_, imgSize.height() * scale_));
-    const QSize screenSize = target.size().toSize();
-    if (scale_ < 1.0 && !screenSize.isEmpty()) {
+    const qreal dpr = devicePixelRatioF();
+    const QSize screenSize = (target.size() * dpr).toSize();  // device pixels
+    if (scale_ * dpr < 1.0 && !screenSize.isEmpty()) {
       if (image.cacheKey() != scaledKey_ || scaledImage_.size() != screenSize) {
         scaledImage_ = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
         scaledKey_ = image.cacheKey();
