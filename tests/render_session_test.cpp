@@ -227,6 +227,23 @@ TEST(Session, TimeLimitEndsWithAFinalFrame) {
   EXPECT_GT(frames.back().frame->spp, 0);
 }
 
+// A time limit shorter than the preview still ends with a final frame (the last preview).
+TEST(Session, TinyTimeLimitStillEndsWithAFinalFrame) {
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 1 << 20;
+  opt.seconds = 1e-4;
+  RenderSession session(&sink, opt);
+  session.setScene(sessionScene(96, 72));
+  ASSERT_TRUE(session.waitUntilDone(10));
+  const auto frames = sink.frames();
+  ASSERT_FALSE(frames.empty());
+  EXPECT_TRUE(frames.back().frame->final);
+  int finals = 0;
+  for (const auto& e : frames) finals += e.frame->final ? 1 : 0;
+  EXPECT_EQ(finals, 1);
+}
+
 TEST(Session, DestructorStopsARunningRender) {
   Collector sink;
   SessionOptions opt;

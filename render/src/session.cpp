@@ -151,8 +151,11 @@ struct RenderSession::Impl {
 
   void run();
   // Renders version v; returns when done, out of time or cancelled.
-  void renderVersion(uint64_t v, const SessionOptions& opt, const PathTracer& tracer);
-  void publish(uint64_t v, std::shared_ptr<RenderFrame> frame) {
+  // The time limit counts from `pickedUp`; the first wave always completes (unless cancelled),
+  // so a version always gets a frame.
+  void renderVersion(uint64_t v, const SessionOptions& opt, const PathTracer& tracer,
+                     std::chrono::steady_clock::time_point pickedUp);
+  void publish(uint64_t v, std::shared_ptr<const RenderFrame> frame) {
     {
       std::lock_guard<std::mutex> lock(mutex);
       if (version != v) return;  // stale: a newer version is on its way
@@ -179,14 +182,15 @@ void RenderSession::Impl::run() {
     const std::shared_ptr<const RenderScene> sceneNow = scene;
     const SessionOptions opt = options;
     token.reset();
-    token.setDeadlineFromNow(opt.seconds);
+    token.setDeadlineFromNow(0);  // the time limit starts to apply after the first frame
+    const auto pickedUp = Clock::now();
     working = true;
     lock.unlock();
 
     // The safe point: no wave is running, so the tracer may change.
     if (rebuildNow) tracer = std::make_unique<PathTracer>(*sceneNow, opt.tracer);
     for (const auto& [index, m] : moves) tracer->setObjectTransform(index, m);
-    renderVersion(v, opt, *tracer);
+    renderVersion(v, opt, *tracer, pickedUp);
 
     lock.lock();
     working = false;
@@ -196,7 +200,7 @@ void RenderSession::Impl::run() {
 }
 
 void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
-                                        const PathTracer& tracer) {
+                                        const PathTracer& tracer, Clock::time_point pickedUp) {
   const auto start = Clock::now();
   const Camera& cam = tracer.scene().camera;
   const int w = cam.widthPx, h = cam.heightPx;
@@ -206,6 +210,15 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   DifferentialBuffers preview;
   int spp = 0;
   int fullWaves = 0;
+  std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
+  auto send = [&](std::shared_ptr<const RenderFrame> frame) {
+    if (!last && opt.seconds > 0) {
+      const double left = opt.seconds - std::chrono::duration<double>(Clock::now() - pickedUp).count();
+      token.setDeadlineFromNow(std::max(1e-9, left));
+    }
+    last = frame;
+    publish(v, std::move(frame));
+  };
   for (const RenderWork& work : makeRenderSchedule(opt.targetSpp, opt.startDivider)) {
     if (token.shouldStop()) break;
     if (work.resolutionDivider > 1) {
@@ -249,7 +262,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
         }
       frame->estimatedError = estimateError(preview);
       frame->seconds = seconds();
-      publish(v, std::move(frame));
+      send(std::move(frame));
       continue;
     }
     const bool complete =
@@ -258,8 +271,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
             : tracer.render(full, work.firstSample, work.sampleCount, opt.seed, opt.threads, &token);
     ++fullWaves;
     if (complete) spp += work.sampleCount;
-    const bool outOfTime = !complete && !token.cancelled();
-    if (!complete && !outOfTime) return;  // cancelled: an edit or cancel(); publish nothing
+    if (!complete && token.cancelled()) return;  // an edit or cancel(): publish nothing
+    const bool outOfTime = !complete;
     auto frame = std::make_shared<RenderFrame>();
     frame->sceneVersion = v;
     frame->width = w, frame->height = h;
@@ -271,8 +284,15 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     frame->estimatedError = estimateError(full);
     frame->final = outOfTime || spp >= opt.targetSpp;
     frame->seconds = seconds();
-    publish(v, std::move(frame));
+    send(std::move(frame));
     if (outOfTime) return;
+  }
+  // Out of time between waves or during the preview: the last frame becomes the final one.
+  if (!token.cancelled() && last && !last->final) {
+    auto frame = std::make_shared<RenderFrame>(*last);
+    frame->final = true;
+    frame->seconds = seconds();
+    send(std::move(frame));
   }
 }
 

@@ -62,7 +62,8 @@ class FrameSink {
 
 struct SessionOptions {
   int targetSpp = 256;
-  double seconds = 0;   // 0 = no time limit (per scene version)
+  double seconds = 0;   // 0 = no time limit (per scene version; the first wave always
+                        // completes, so every version gets a frame)
   uint32_t seed = 1;
   int threads = 0;      // 0 = all cores
   int startDivider = 8;
