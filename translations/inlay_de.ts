@@ -25,6 +25,7 @@
     <message>
         <location filename="../app/studio/document.cpp" line="275"/>
         <location filename="../app/studio/document.cpp" line="342"/>
+        <location filename="../app/studio/document.cpp" line="365"/>
         <source>The scene could not be prepared.</source>
         <translation>Die Szene konnte nicht vorbereitet werden.</translation>
     </message>
@@ -65,7 +66,7 @@
         <translation>Objekt %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="367"/>
+        <location filename="../app/studio/document.cpp" line="368"/>
         <source>Delete object %1</source>
         <translation>Objekt %1 löschen</translation>
     </message>
@@ -522,92 +523,92 @@
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="121"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="133"/>
+        <location filename="../app/studio/docks.cpp" line="134"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="141"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="145"/>
+        <location filename="../app/studio/docks.cpp" line="146"/>
         <source>Diffuse</source>
         <translation>Matt (diffus)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="146"/>
+        <location filename="../app/studio/docks.cpp" line="147"/>
         <source>Glossy</source>
         <translation>Glänzend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="147"/>
+        <location filename="../app/studio/docks.cpp" line="148"/>
         <source>Mirror</source>
         <translation>Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="148"/>
+        <location filename="../app/studio/docks.cpp" line="149"/>
         <source>Glass</source>
         <translation>Glas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="149"/>
+        <location filename="../app/studio/docks.cpp" line="150"/>
         <source>Emissive</source>
         <translation>Leuchtend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="150"/>
+        <location filename="../app/studio/docks.cpp" line="151"/>
         <source>From the file</source>
         <translation>Aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="153"/>
+        <location filename="../app/studio/docks.cpp" line="154"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Reflexionsgrad der Objektoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="156"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Base (px):</source>
         <translation>Fußpunkt (px):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="157"/>
+        <location filename="../app/studio/docks.cpp" line="158"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="158"/>
+        <location filename="../app/studio/docks.cpp" line="159"/>
         <source>Turn:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="159"/>
+        <location filename="../app/studio/docks.cpp" line="160"/>
         <source>Material:</source>
         <translation>Material:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="160"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Colour:</source>
         <translation>Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="179"/>
+        <location filename="../app/studio/docks.cpp" line="180"/>
         <source>No object selected</source>
         <translation>Kein Objekt ausgewählt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="184"/>
+        <location filename="../app/studio/docks.cpp" line="185"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="229"/>
+        <location filename="../app/studio/docks.cpp" line="230"/>
         <source>Object colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -698,33 +699,33 @@
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="224"/>
+        <location filename="../app/studio/viewport.cpp" line="225"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="275"/>
+        <location filename="../app/studio/viewport.cpp" line="276"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="278"/>
+        <location filename="../app/studio/viewport.cpp" line="279"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="282"/>
+        <location filename="../app/studio/viewport.cpp" line="283"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="285"/>
+        <location filename="../app/studio/viewport.cpp" line="286"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="337"/>
-        <location filename="../app/studio/viewport.cpp" line="380"/>
+        <location filename="../app/studio/viewport.cpp" line="338"/>
+        <location filename="../app/studio/viewport.cpp" line="381"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>

@@ -98,6 +98,7 @@ void SceneTreeDock::rebuild() {
       return QIcon(swatch);
     }());
   }
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it) (*it)->setToolTip(1, (*it)->text(1));
   tree_->expandAll();
   updating_ = false;
   syncSelection();

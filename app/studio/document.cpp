@@ -361,7 +361,8 @@ bool Document::removeObject(int index, QString* reason) {
     return false;
   };
   if (index < 0 || index >= objectCount()) return fail(tr("There is no object %1.").arg(index + 1));
-  if (state_ != State::Ready || !prepared_) return fail(tr("The scene is still being prepared."));
+  if (state_ == State::Preparing) return fail(tr("The scene is still being prepared."));
+  if (state_ != State::Ready || !prepared_) return fail(tr("The scene could not be prepared."));
   undo_.push(new ObjectListCommand(this, false, index, doc_.objects[size_t(index)],
                                    prepared_->renderScene.objects[size_t(index)].meshObject,
                                    tr("Delete object %1").arg(index + 1)));
