@@ -1,5 +1,7 @@
-// Path tracer tests with known answers: a uniform-radiance enclosure (furnace), a diffuse plane
-// under a rectangle light (closed-form form factor), a mirror, the exact zero difference of the
+// Path tracer and RoomTracer tests with known answers: a uniform-radiance enclosure (furnace;
+// the room's own surfaces cannot emit, so the field comes from emitters lining every wall),
+// diffuse planes and a sphere under rectangle and trapezoid lights (closed-form form factors),
+// a mirror, a glass slab, suns and the photo's radiance, the exact zero difference of the
 // differential render, determinism, and stiff inputs.
 #include "render_test_scenes.h"
 #include "test_support.h"
@@ -15,7 +17,8 @@ namespace {
 
 using test::kPi;
 
-// Unit-radiance enclosure: every face of the room is lined with an inward light of radiance le.
+// Uniform-radiance enclosure: every face of the room is lined with an inward light of radiance
+// le (black-backed, so no room surface is ever seen or lit).
 RenderScene furnaceScene(int w, int h, double le) {
   const RoomBox box;
   RenderScene s = test::roomScene(test::testCamera(w, h, 50), box, 0.5);
