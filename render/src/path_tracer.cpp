@@ -29,7 +29,14 @@
 // camera ray) that lands on room the camera sees takes the photo's radiance there and ends.
 //
 // Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0-1 light point, 2-3
-// direction, 4 light pick, 5 lobe or Fresnel choice, 6 roulette} (pairs are 2D-stratified).
+// direction, 4 light pick, 5 lobe or Fresnel choice, 6 roulette, 7 occluder-card alpha test}
+// (pairs are 2D-stratified).
+//
+// Occluder cards (SurfaceKind::OccluderCard, a matte standing in the room): a camera or bounce
+// ray that meets one passes on with probability 1 - alpha there (stochastic alpha test with
+// the dimension of the vertex it looks for; with- and without-paths draw the same number), and
+// is otherwise room. Shadow rays have no number to draw: an Embree occlusion filter lets them
+// through where alpha < 0.5.
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
@@ -284,6 +291,20 @@ struct PathTracer::Impl {
 
   const TriangleMesh& scene_surface(unsigned id) const { return scene.room.surfaces[id].meshWorld; }
 
+  // intersect(), passing through occluder cards with probability 1 - alpha (u in [0, 1)).
+  // Several cards on one ray share u (their passes are correlated, not independent).
+  Hit intersectThroughCards(RTCScene s, const Vec3& origin, const Vec3& dir, double tNear,
+                            double u) const {
+    Hit hit = intersect(s, origin, dir, tNear);
+    for (int crossed = 0; crossed < 16 && hit.kind == Hit::Kind::Room; ++crossed) {
+      const Surface& surf = scene.room.surfaces[size_t(hit.index)];
+      if (surf.kind != SurfaceKind::OccluderCard || !surf.cardAlpha) break;
+      if (u < surf.cardAlpha->alphaAt(hit.point)) break;
+      hit = intersect(s, origin, dir, hit.t + rayEpsilon(hit.point));
+    }
+    return hit;
+  }
+
   static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
     const double len = n.norm();
     return len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3(-dir);
@@ -391,7 +412,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
   Vec3& dir = st.dir;
   for (;; ++st.depth) {
     const int depth = st.depth;
-    const Hit hit = intersect(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir, st.tNear);
+    const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
+                                          st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
     ++out.rays;
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
@@ -614,9 +636,36 @@ ImageF DifferentialBuffers::meanMask() const { return meanOf(sumMask, samples); 
 
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+// Shadow rays pass an occluder card where its matte covers less than half.
+void cardShadowFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] != -1) continue;
+    const Vec3 o(RTCRayN_org_x(args->ray, args->N, k), RTCRayN_org_y(args->ray, args->N, k),
+                 RTCRayN_org_z(args->ray, args->N, k));
+    const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
+                   RTCRayN_dir_z(args->ray, args->N, k));
+    const double t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
+    if (card->alphaAt(o + t * dir) < 0.5) args->valid[k] = 0;
+  }
+}
+}  // namespace
+
 PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& d = *impl_;
+  auto attachCardShadowFilters = [&](RTCScene s) {
+    for (unsigned i = 0; i < d.surfaceCount; ++i) {
+      const Surface& surf = d.scene.room.surfaces[i];
+      if (surf.kind != SurfaceKind::OccluderCard || !surf.cardAlpha) continue;
+      RTCGeometry g = rtcGetGeometry(s, i);
+      if (!g) continue;
+      rtcSetGeometryUserData(g, const_cast<CardAlpha*>(surf.cardAlpha.get()));
+      rtcSetGeometryOccludedFilterFunction(g, cardShadowFilter);
+      rtcCommitGeometry(g);
+    }
+  };
   d.scene = scene;
   d.options = options;
   d.device = newDevice();
@@ -669,6 +718,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     d.setTransform(o, src.worldFromObject);
     if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
   }
+  attachCardShadowFilters(d.withScene);
+  attachCardShadowFilters(d.withoutScene);
   rtcCommitScene(d.withScene);
   rtcCommitScene(d.withoutScene);
 
@@ -691,6 +742,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     for (size_t i = 0; i < d.objects.size(); ++i)
       if (d.objects[i].sunInstance)
         rtcAttachGeometryByID(d.sunWithScene, d.objects[i].sunInstance, d.objectGeomId(i));
+    attachCardShadowFilters(d.sunWithScene);
+    attachCardShadowFilters(d.sunWithoutScene);
     rtcCommitScene(d.sunWithScene);
     rtcCommitScene(d.sunWithoutScene);
   }

@@ -206,8 +206,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   const int w = cam.widthPx, h = cam.heightPx;
   if (w <= 0 || h <= 0) return;
   auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-  DifferentialBuffers full(w, h);
-  DifferentialBuffers preview;
+  DifferentialBuffers full;  // allocated at the first full-resolution wave (previews stay cheap)
   int spp = 0;
   int fullWaves = 0;
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
@@ -222,28 +221,14 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   for (const RenderWork& work : makeRenderSchedule(opt.targetSpp, opt.startDivider)) {
     if (token.shouldStop()) break;
     if (work.resolutionDivider > 1) {
-      // Coarse preview: only the centre pixel of each d x d cell, shown nearest-upsampled.
+      // Coarse preview: a grid d times coarser (each coarse pixel samples its d x d cell),
+      // shown nearest-upsampled at full size.
       const int d = work.resolutionDivider;
       const int cw = (w + d - 1) / d, ch = (h + d - 1) / d;
-      if (preview.width != w) preview = DifferentialBuffers(w, h);
-      preview.clear();
-      auto centre = [&](int c, int size, int limit) { return std::min(limit - 1, c * d + size / 2); };
-      std::atomic<bool> stopped{false};
-      tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-      arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, ch), [&](const tbb::blocked_range<int>& r) {
-          for (int cy = r.begin(); cy != r.end() && !stopped; ++cy)
-            for (int cx = 0; cx < cw; ++cx) {
-              const int px = centre(cx, d, w), py = centre(cy, d, h);
-              if (!tracer.renderRect(preview, px, py, px + 1, py + 1, work.firstSample,
-                                     work.sampleCount, opt.seed ^ 0x9E3779B9u, &token)) {
-                stopped = true;
-                break;
-              }
-            }
-        });
-      });
-      if (stopped) break;
+      DifferentialBuffers preview(cw, ch);
+      if (!tracer.render(preview, work.firstSample, work.sampleCount, opt.seed ^ 0x9E3779B9u, opt.threads,
+                         &token))
+        break;
       auto frame = std::make_shared<RenderFrame>();
       frame->sceneVersion = v;
       frame->width = w, frame->height = h;
@@ -255,7 +240,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       frame->mask = ImageF(w, h, 1);
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-          const int sx = centre(x / d, d, w), sy = centre(y / d, d, h);
+          const int sx = std::min(cw - 1, x / d), sy = std::min(ch - 1, y / d);
           frame->withObjects.setRgb(x, y, mw.rgb(sx, sy));
           frame->withoutObjects.setRgb(x, y, mwo.rgb(sx, sy));
           frame->mask.at(x, y) = mm.at(sx, sy);
@@ -265,6 +250,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       send(std::move(frame));
       continue;
     }
+    if (full.width != w) full = DifferentialBuffers(w, h);
     const bool complete =
         opt.focusOnChanges && fullWaves >= 2
             ? renderFocused(tracer, full, work.sampleCount, fullWaves % 4 == 0, opt, token)
