@@ -224,7 +224,9 @@ TEST(Session, TimeLimitEndsWithAFinalFrame) {
   const auto frames = sink.frames();
   ASSERT_FALSE(frames.empty());
   EXPECT_TRUE(frames.back().frame->final);
-  EXPECT_GT(frames.back().frame->spp, 0);
+  // On a slow machine the time may run out before the first full-resolution wave: then the
+  // final frame is the last preview.
+  EXPECT_TRUE(frames.back().frame->spp > 0 || frames.back().frame->resolutionDivider > 1);
 }
 
 // A time limit shorter than the preview still ends with a final frame (the last preview).
