@@ -30,8 +30,10 @@ using namespace inlay;
 constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
-  inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours]
-                                                     the room's albedo and direct light
+  inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
+            [--seconds S] [--progress-csv F]         the room's albedo and direct light; S: the
+                                                     solver's time limit, F: objective and
+                                                     residuals against time
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
@@ -56,7 +58,7 @@ Exit status: 0 success, 2 bad input or usage, 1 internal failure or interrupted.
 A scene file without camera.vanishing_points_px or layout.back_wall_px gets them estimated from
 the photo (as 'estimate' does), with a warning when the photo shows no clear room structure.
 
-Not in this version: sun shafts, occluders, '--method retinex'.
+Not in this version: sun shafts, occluders.
 )";
 
 CancelToken gCancel;
@@ -372,18 +374,55 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
 
 int commandDecompose(const std::string& scenePath, const Args& a) {
   if (a.albedo.empty()) return usageError("decompose needs --albedo ALBEDO.exr");
-  if (a.method != "ours")
-    return usageError("--method " + a.method +
-                      ": only 'ours' is available in this version (retinex is not yet)");
+  if (a.method != "ours" && a.method != "retinex")
+    return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
   Progress progress(a.quiet);
   auto prepared = loadAndPrepare(scenePath, a, progress);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
   if (!prepared) return inputError(prepared.error());
-  if (auto st = saveImage(a.albedo, prepared->lighting.albedo, SaveOptions{false}); !st)
+  const LightingEstimate& le = prepared->lighting;
+  const bool retinex = a.method == "retinex";
+  // --seconds S: re-run the solver from its start with that time limit (error against time).
+  std::optional<Decomposition> rerun;
+  if (!retinex && a.seconds && !le.decomposeStart.empty()) {
+    DecomposeOptions o;
+    o.timeLimitSeconds = std::max(1e-6, *a.seconds);
+    o.maxIterations = 100000;
+    o.cancel = &gCancel;
+    auto d = decomposeIntrinsic(prepared->photo.linearRgb, le.gathered, le.decomposeStart,
+                                le.decomposeValid, le.decomposeClipped, o);
+    if (!d) return inputError(d.error());
+    rerun = std::move(*d);
+  }
+  const std::vector<DecomposeSample>& history = rerun ? rerun->history : le.decomposeHistory;
+  if (!a.progressCsv.empty() && !retinex) {
+    std::string csv = "seconds,iteration,objective,primal_residual,dual_residual\n";
+    char row[160];
+    for (const auto& h : history) {
+      std::snprintf(row, sizeof row, "%.6f,%d,%.9g,%.6g,%.6g\n", h.seconds, h.iteration, h.objective,
+                    h.primalResidual, h.dualResidual);
+      csv += row;
+    }
+    if (auto st = writeFileAtomically(a.progressCsv, csv); !st) return inputError(st.error());
+  }
+  ImageF albedo = retinex ? le.retinexAlbedo : le.albedo;
+  if (rerun)  // the room's pixels from the re-run
+    for (size_t i = 0; i < albedo.data.size(); ++i)
+      if (albedo.data[i] > 0 || le.decomposeValid[i / 3]) albedo.data[i] = rerun->albedo.data[i];
+  if (auto st = saveImage(a.albedo, albedo, SaveOptions{false}); !st)
     return inputError(st.error());
-  if (!a.direct.empty())
-    if (auto st = saveImage(a.direct, prepared->lighting.direct, SaveOptions{false}); !st)
+  if (!a.direct.empty()) {
+    ImageF direct = rerun ? rerun->direct : le.direct;
+    if (retinex)  // D = B - rho Gamma for Retinex's rho
+      for (size_t i = 0; i < direct.data.size() && i < le.gathered.data.size(); ++i)
+        direct.data[i] = std::max(0.f, prepared->photo.linearRgb.data[i] -
+                                           albedo.data[i] * le.gathered.data[i]);
+    if (auto st = saveImage(a.direct, direct, SaveOptions{false}); !st)
       return inputError(st.error());
+  }
+  if (!a.quiet && !retinex && !le.decomposeReport.empty())
+    std::fprintf(stderr, "inlay-cli: decomposition %s\n",
+                 (rerun ? rerun->report : le.decomposeReport).c_str());
   return 0;
 }
 

@@ -1,5 +1,7 @@
 #include "inlay/lighting/estimate.h"
 
+#include "inlay/lighting/gather.h"
+
 #include "inlay/render/path_tracer.h"
 
 #include <ceres/ceres.h>
@@ -18,25 +20,6 @@
 namespace inlay {
 
 namespace {
-
-// A stateless hash to [0,1): deterministic sampling independent of thread scheduling.
-inline uint32_t hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-inline double uniform(uint32_t a, uint32_t b, uint32_t c) {
-  return (hash32(a ^ hash32(b ^ hash32(c))) >> 8) * (1.0 / 16777216.0);
-}
-
-// An orthonormal frame around n.
-void frameAround(const Vec3& n, Vec3& t, Vec3& b) {
-  t = (std::abs(n.x()) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)).cross(n).normalized();
-  b = n.cross(t);
-}
 
 struct PixelSurface {
   int surface = -1;
@@ -256,24 +239,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
   std::vector<int> gridSurface(size_t(GW) * GH, -1);
   std::vector<Vec2> gridPixel(size_t(GW) * GH);
-  const int nSide = std::max(1, int(std::lround(std::sqrt(double(opt.gatherSamples)))));
+  int gatherSamples = opt.gatherSamples;
   auto gatherAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
-    Vec3 t, b;
-    frameAround(p.normal, t, b);
-    Vec3 sum = Vec3::Zero();
-    int n = 0;
-    for (int i = 0; i < nSide; ++i)
-      for (int k = 0; k < nSide; ++k) {
-        const double u1 = (i + uniform(pixelId, opt.seed, 2 * (i * nSide + k))) / nSide;
-        const double u2 = (k + uniform(pixelId, opt.seed, 2 * (i * nSide + k) + 1)) / nSide;
-        const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
-        const Vec3 d = (r * std::cos(phi) * t + r * std::sin(phi) * b +
-                        std::sqrt(std::max(0.0, 1 - u1)) * p.normal).normalized();
-        const auto h = tracer.intersect(Ray{p.point + 1e-5 * p.normal, d}, 1e-5);
-        ++n;
-        if (h) sum += radianceAt(*h, pixelId * 1024u + uint32_t(i * nSide + k));
-      }
-    return sum / std::max(n, 1);
+    return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, pixelId, opt.seed,
+                                  radianceAt)
+        .mean;
   };
   auto lightE = [&](const PixelSurface& p, size_t j, uint32_t id) {
     return tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
@@ -481,6 +451,23 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
 
   // Pass 1 guesses what the camera does not see from the mean of what it sees; pass 2 predicts
   // it from the fitted albedo and lights.
+  if (gatherSamples <= 0) {
+    // The sample count for the noise it leaves, from a pilot on up to 64 grid points.
+    std::vector<std::pair<Vec3, Vec3>> pilot;
+    std::vector<size_t> onRoom;
+    for (size_t g = 0; g < gridSurface.size(); ++g)
+      if (gridSurface[g] >= 0) onRoom.push_back(g);
+    const size_t step = std::max<size_t>(1, onRoom.size() / 64);
+    for (size_t i = 0; i < onRoom.size(); i += step) {
+      const Vec2& px = gridPixel[onRoom[i]];
+      const auto& p = ps[size_t(px.y()) * W + size_t(px.x())];
+      pilot.emplace_back(p.point, p.normal);
+    }
+    GatherSampleCountOptions go;
+    go.relativeNoise = opt.gatherNoise;
+    gatherSamples = gatherSamplesForNoise(tracer, pilot, opt.seed, radianceAt, go);
+  }
+  out.gatherSamples = gatherSamples;
   for (int pass = 0; pass < 2; ++pass) {
     gatherAll();
     if (stop() || !fit()) return cancelled();
@@ -515,6 +502,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
   out.albedo = ImageF(W, H, 3, 0.f);
   out.direct = ImageF(W, H, 3, 0.f);
+  ImageF shadingFree(W, H, 3, 0.f);  // B / (sum L_j E_j + Gamma), unclamped
   std::vector<Vec3> albedoSum(S, Vec3::Zero());
   std::vector<double> albedoCount(S, 0);
   for (int y = 0; y < H; ++y)
@@ -530,6 +518,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         for (size_t k = 0; k < K; ++k) shading += out.suns[k].irradianceOverPi[c] * E[idx * C + J + k];
         const double b = photo.at(x, y, c);
         double r = shading > 1e-9 ? b / shading : rho[p.surface][c];
+        shadingFree.at(x, y, c) = float(std::isfinite(r) ? std::max(r, 0.0) : rho[p.surface][c]);
         if (isLight(x, y) || saturated(x, y)) r = rho[p.surface][c];
         a[c] = std::clamp(std::isfinite(r) ? r : rho[p.surface][c], 0.0, 1.0);
       }
@@ -541,6 +530,86 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         albedoCount[p.surface] += 1;
       }
     }
+  out.physicalAlbedo = out.albedo;
+
+  // 6. Decomposition: colour Retinex from the photo alone, scaled per channel so that its
+  // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then
+  // the geometry-aware objective, whose data terms tie rho * Gamma to the photo.
+  {
+    std::vector<uint8_t> valid(size_t(W) * H, 0), clipped(size_t(W) * H, 0);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const size_t idx = size_t(y) * W + x;
+        clipped[idx] = saturated(x, y) ? 1 : 0;
+        valid[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
+                     luminance(photo.rgb(x, y)) > 1e-5;
+      }
+    // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
+    auto anchoredRetinex = [&](const ImageF& image) {
+      const ImageF rel = retinexReflectance(image, valid, opt.retinex);
+      Vec3 scale(1, 1, 1);
+      for (int c = 0; c < 3; ++c) {
+        std::vector<float> ratio;
+        for (int y = 0; y < H; ++y)
+          for (int x = 0; x < W; ++x)
+            if (valid[size_t(y) * W + x] && rel.at(x, y, c) > 1e-4f &&
+                out.albedo.at(x, y, c) > 0 && out.albedo.at(x, y, c) < 1)
+              ratio.push_back(out.albedo.at(x, y, c) / rel.at(x, y, c));
+        if (!ratio.empty()) {
+          std::nth_element(ratio.begin(), ratio.begin() + long(ratio.size() / 2), ratio.end());
+          scale[c] = ratio[ratio.size() / 2];
+        }
+      }
+      ImageF a(W, H, 3, 0.f);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          const size_t idx = size_t(y) * W + x;
+          if (ps[idx].surface < 0) continue;
+          for (int c = 0; c < 3; ++c) {
+            // Lamps and clipped pixels carry no reflectance: the physical fallback stands.
+            const float r = valid[idx] ? float(scale[c] * rel.at(x, y, c)) : out.albedo.at(x, y, c);
+            a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
+          }
+        }
+      return a;
+    };
+    // The baseline: Retinex of the photo alone.
+    out.retinexAlbedo = anchoredRetinex(photo);
+    if (opt.objective) {
+      // The start: Retinex of the photo with the geometry's shading divided out (what is left
+      // of shading there is noise and model error, which the thresholds remove).
+      const ImageF rho0 = anchoredRetinex(shadingFree);
+      DecomposeOptions dopt = opt.decompose;
+      if (!dopt.cancel) dopt.cancel = opt.cancel;
+      auto dec = decomposeIntrinsic(photo, out.gathered, rho0, valid, clipped, dopt);
+      out.decomposeStart = rho0;
+      out.decomposeValid = valid;
+      out.decomposeClipped = clipped;
+      if (!dec) return dec.error().underKey("decomposition");
+      out.decomposeHistory = dec->history;
+      out.decomposeReport = dec->report;
+      if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+          const size_t idx = size_t(y) * W + x;
+          if (ps[idx].surface < 0) continue;
+          out.albedo.setRgb(x, y, dec->albedo.rgb(x, y));
+          out.direct.setRgb(x, y, dec->direct.rgb(x, y));
+        }
+    } else {
+      out.albedo = out.retinexAlbedo;
+    }
+    std::fill(albedoSum.begin(), albedoSum.end(), Vec3::Zero());
+    std::fill(albedoCount.begin(), albedoCount.end(), 0.0);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const size_t idx = size_t(y) * W + x;
+        if (!valid[idx]) continue;
+        albedoSum[ps[idx].surface] += out.albedo.rgb(x, y);
+        albedoCount[ps[idx].surface] += 1;
+      }
+  }
+
   // Surfaces the camera does not see take the mean of the walls it sees (or of the room).
   Vec3 wallSum = Vec3::Zero(), roomSum = Vec3::Zero();
   double wallN = 0, roomN = 0;

@@ -10,6 +10,7 @@
 // each surface; rho(x) then follows per pixel. Saturated pixels and light outlines are left out.
 #pragma once
 
+#include "inlay/lighting/decompose.h"
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/core.h"
 #include "inlay/modeling/geometry.h"
@@ -22,24 +23,41 @@
 namespace inlay {
 
 struct LightingOptions {
-  int gatherSamples = 64;       // cosine-weighted rays per gathered pixel
+  // Cosine-weighted rays per gathered pixel (gather.h); 0: chosen from a pilot so that Gamma's
+  // relative standard error per gathered pixel is about gatherNoise.
+  int gatherSamples = 0;
+  double gatherNoise = 0.05;
   int gatherStride = 4;         // gather on every n-th pixel, interpolate between
   int directSamples = 16;       // points per light for E_j
   int fitPixels = 6000;         // pixels sampled for the fit
   double saturatedAbove = 0.98; // linear value treated as clipped
   uint32_t seed = 7;
   int threads = 0;
+  // The albedo: Retinex anchored to the fitted lights (the start), then the geometry-aware
+  // objective (decompose.h) unless `objective` is false.
+  RetinexOptions retinex;
+  DecomposeOptions decompose;
+  bool objective = true;
   const CancelToken* cancel = nullptr;
 };
 
 struct LightingEstimate {
-  ImageF albedo;        // W x H x 3, reflectance in [0,1]
+  ImageF albedo;        // W x H x 3, reflectance in [0,1] (the decomposition's)
+  ImageF retinexAlbedo; // W x H x 3, colour Retinex scaled per channel to the fitted lights
+  ImageF physicalAlbedo;  // W x H x 3, B / (sum L_j E_j + Gamma) per pixel (the light fit's)
+  // The decomposition's inputs besides the photo and `gathered` (to re-run it with other
+  // options): its start rho0 (W x H x 3) and masks (W x H: data terms apply / B is clipped).
+  ImageF decomposeStart;
+  std::vector<uint8_t> decomposeValid, decomposeClipped;
+  std::vector<DecomposeSample> decomposeHistory;  // objective and residuals against time
+  std::string decomposeReport;                    // converged, or why the solver stopped
   ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
   ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
   std::vector<AreaLight> lights;      // with fitted radiance
   std::vector<SunLight> suns;         // with fitted strength
   std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
   double fitRmsLog = 0;  // robust fit residual (log space)
+  int gatherSamples = 0; // rays per gathered pixel used
   double seconds = 0;
   std::vector<std::string> notes;
 };

@@ -1,0 +1,95 @@
+// Intrinsic decomposition of a photo into albedo and light layers: colour Retinex (Grosse et al.
+// 2009) as the baseline and starting point, and the geometry-aware objective of Karsch et al.
+// 2011 (Sec. 4) solved by a primal-dual method.
+//
+// Model per pixel and channel (linear photo units): B = D + rho * Gamma, where Gamma is the
+// indirect irradiance / pi gathered from the photo (gather.h), rho the albedo in [0,1] and D the
+// direct layer (>= 0). The objective, with D eliminated through the equality:
+//   sum |Lap rho|_1 + g1 * m * |grad rho|^2 + g2 * (Gamma (rho - rho0))^2
+//       + g3 * |grad (B - rho Gamma)|^2,        0 <= rho <= min(1, B / Gamma)
+// (g2 (D - D0)^2 with D0 = B - rho0 Gamma is g2 Gamma^2 (rho - rho0)^2). The mask
+// m = 1 - 1/(1 + exp(-s(|grad B|^2 - c))) frees rho to change where the photo has an edge.
+// The absolute scale of rho is anchored by Gamma: the data terms tie rho * Gamma to the photo,
+// and D >= 0 caps rho at B / Gamma.
+//
+// All functions are pure and thread-safe; they use TBB for the per-row loops.
+#pragma once
+
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+struct RetinexOptions {
+  // A log-intensity step between neighbours larger than this is a reflectance edge (shading
+  // varies slowly on a diffuse room except at shadow boundaries). Natural-log units per pixel.
+  double intensityThreshold = 0.12;
+  // A step in chromaticity (r, g, b) / (r + g + b) larger than this is a reflectance edge
+  // whatever the intensity does (white light does not change chromaticity).
+  double chromaThreshold = 0.012;
+};
+
+// Colour Retinex: reflectance up to one scale per channel. `linearRgb`: W x H x 3 (photo units).
+// `valid`: W x H, nonzero where the pixel may be used (room, not a lamp, not clipped); gradients
+// touching an invalid pixel are zero, so invalid pixels take the value reconstructed around them.
+// Returns W x H x 3, positive, geometric mean 1 over valid pixels (per channel up to
+// chromaticity). Poisson reconstruction by a DCT (Neumann boundary).
+ImageF retinexReflectance(const ImageF& linearRgb, const std::vector<uint8_t>& valid,
+                          const RetinexOptions& options = {});
+
+struct DecomposeOptions {
+  double g1 = 0.2;   // weight of the masked smoothness of rho
+  double g2 = 0.9;   // weight of (D - D0)^2
+  double g3 = 0.1;   // weight of |grad D|^2
+  double s = 10;     // mask steepness
+  double c = 0.15;   // mask threshold on |grad B|^2, B in the photo's linear units (white 1)
+  // Units of B and Gamma in the objective: the L1 term is scale-free in rho, the quadratic ones
+  // grow with the square of the photo's units, so the units set how much the prior may
+  // override the data. Default: 8-bit code units of the linear photo (white = 255), where the
+  // prior acts at the photo's quantisation level and keeps real reflectance edges.
+  // normaliseByMeanGamma: divide by the mean gathered irradiance first (exposure-invariant).
+  double unitsPerWhite = 255;
+  bool normaliseByMeanGamma = false;
+  int maxIterations = 400;
+  int minIterations = 10;
+  double timeLimitSeconds = 0.8;  // <= 0: none
+  // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
+  // each times its step (so in units of rho and of the dual variable in [-1,1]), both fall
+  // below this.
+  double tolerance = 1e-4;
+  int historyEvery = 5;  // record objective and residuals every n iterations (and the last)
+  const CancelToken* cancel = nullptr;
+};
+
+struct DecomposeSample {
+  double seconds = 0;
+  int iteration = 0;
+  double objective = 0;
+  double primalResidual = 0;  // RMS per pixel and channel
+  double dualResidual = 0;
+};
+
+struct Decomposition {
+  ImageF albedo;  // W x H x 3, reflectance in [0,1] and <= B / Gamma where B is not clipped
+  ImageF direct;  // W x H x 3, D = B - rho * Gamma, >= 0 (clipped pixels: clamped at 0)
+  std::vector<DecomposeSample> history;
+  int iterations = 0;
+  bool converged = false;
+  std::string report;  // one line: converged or why it stopped, with the residuals reached
+  double seconds = 0;
+};
+
+// Minimises the objective above from `rho0` (W x H x 3, typically anchored Retinex). `photo`:
+// B, W x H x 3 linear; `gathered`: Gamma, W x H x 3 >= 0. `valid`: W x H, nonzero where the
+// data terms apply; `clipped`: W x H (may be empty), nonzero where B is only a lower bound (the
+// cap B / Gamma is lifted there). Bad input (sizes, non-finite weights) is an error.
+Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& gathered,
+                                           const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                           const std::vector<uint8_t>& clipped,
+                                           const DecomposeOptions& options = {});
+
+}  // namespace inlay

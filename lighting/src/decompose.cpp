@@ -1,0 +1,371 @@
+#include "inlay/lighting/decompose.h"
+
+#include <opencv2/core.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+namespace inlay {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+void forRows(int H, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
+    for (int y = r.begin(); y < r.end(); ++y) f(y);
+  });
+}
+
+// Solves Lap(u) = div on a W x H grid with Neumann boundaries (5-point Laplacian, the adjoint of
+// forward differences) by a DCT-II; the free constant is chosen so u has mean zero. Odd sizes
+// are padded by one row/column whose gradients are zero (cv::dct takes even sizes only).
+std::vector<float> poissonNeumann(const std::vector<float>& div, int W, int H) {
+  const int PW = W + (W & 1), PH = H + (H & 1);
+  cv::Mat d(PH, PW, CV_32F, cv::Scalar(0));
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) d.at<float>(y, x) = div[size_t(y) * W + x];
+  cv::Mat f;
+  cv::dct(d, f);
+  std::vector<double> cx(static_cast<size_t>(PW)), cy(static_cast<size_t>(PH));
+  for (int k = 0; k < PW; ++k) cx[size_t(k)] = 2 * std::cos(M_PI * k / PW) - 2;
+  for (int l = 0; l < PH; ++l) cy[size_t(l)] = 2 * std::cos(M_PI * l / PH) - 2;
+  for (int l = 0; l < PH; ++l)
+    for (int k = 0; k < PW; ++k) {
+      const double lam = cx[size_t(k)] + cy[size_t(l)];
+      f.at<float>(l, k) = (k == 0 && l == 0) ? 0.f : float(f.at<float>(l, k) / lam);
+    }
+  cv::dct(f, d, cv::DCT_INVERSE);
+  std::vector<float> u(size_t(W) * H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) u[size_t(y) * W + x] = d.at<float>(y, x);
+  return u;
+}
+
+}  // namespace
+
+ImageF retinexReflectance(const ImageF& img, const std::vector<uint8_t>& valid,
+                          const RetinexOptions& opt) {
+  const int W = img.width, H = img.height;
+  INLAY_CHECK(img.channels >= 3 && valid.size() == img.pixelCount());
+  const size_t N = img.pixelCount();
+  std::vector<float> logI(N, 0.f);
+  std::vector<std::array<float, 3>> chroma(N, {1.f / 3, 1.f / 3, 1.f / 3});
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      if (!valid[i]) continue;
+      const float* p = img.pixel(x, y);
+      const float r = std::max(p[0], 0.f), g = std::max(p[1], 0.f), b = std::max(p[2], 0.f);
+      const float sum = r + g + b;
+      logI[i] = std::log(std::max(sum / 3.f, 1e-6f));
+      if (sum > 1e-9f) chroma[i] = {r / sum, g / sum, b / sum};
+    }
+  });
+  // A derivative is kept (reflectance) when the chromaticity or the intensity jumps.
+  auto keep = [&](size_t a, size_t b) -> float {
+    if (!valid[a] || !valid[b]) return 0.f;
+    const float dl = logI[b] - logI[a];
+    const float dc = std::sqrt(std::pow(chroma[b][0] - chroma[a][0], 2.f) +
+                               std::pow(chroma[b][1] - chroma[a][1], 2.f) +
+                               std::pow(chroma[b][2] - chroma[a][2], 2.f));
+    return (std::abs(dl) > opt.intensityThreshold || dc > opt.chromaThreshold) ? dl : 0.f;
+  };
+  std::vector<float> div(N, 0.f);
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      float d = 0;
+      if (x + 1 < W) d += keep(i, i + 1);
+      if (x > 0) d -= keep(i - 1, i);
+      if (y + 1 < H) d += keep(i, i + size_t(W));
+      if (y > 0) d -= keep(i - size_t(W), i);
+      div[i] = d;
+    }
+  });
+  std::vector<float> r = poissonNeumann(div, W, H);
+  double mean = 0, n = 0;
+  for (size_t i = 0; i < N; ++i)
+    if (valid[i]) mean += r[i], n += 1;
+  mean = n > 0 ? mean / n : 0;
+  ImageF out(W, H, 3, 0.f);
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      const float e = std::exp(std::clamp(float(r[i] - mean), -30.f, 30.f));
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = e * 3.f * chroma[i][size_t(c)];
+    }
+  });
+  return out;
+}
+
+Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& gathered,
+                                           const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                           const std::vector<uint8_t>& clipped,
+                                           const DecomposeOptions& opt) {
+  const auto t0 = Clock::now();
+  const int W = photo.width, H = photo.height;
+  if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
+  if (gathered.width != W || gathered.height != H || gathered.channels < 3)
+    return Error{"", "gathered", "Gamma must be W x H x 3 like the photo"};
+  if (rho0.width != W || rho0.height != H || rho0.channels < 3)
+    return Error{"", "rho0", "the starting albedo must be W x H x 3 like the photo"};
+  const size_t N = photo.pixelCount();
+  if (valid.size() != N) return Error{"", "valid", "the mask must have one entry per pixel"};
+  if (!clipped.empty() && clipped.size() != N)
+    return Error{"", "clipped", "the mask must be empty or have one entry per pixel"};
+  for (double w : {opt.g1, opt.g2, opt.g3, opt.s, opt.c})
+    if (!std::isfinite(w) || w < 0) return Error{"", "options", "weights must be finite and >= 0"};
+
+  // Units: B and Gamma over the mean gathered irradiance of the valid pixels.
+  double kappa = 1;
+  if (opt.normaliseByMeanGamma) {
+    double sum = 0, n = 0;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (valid[size_t(y) * W + x])
+          for (int c = 0; c < 3; ++c) {
+            const float g = gathered.at(x, y, c);
+            if (std::isfinite(g) && g > 0) sum += g;
+            n += 1;
+          }
+    if (n > 0 && sum / n > 1e-12) kappa = sum / n;
+  }
+  if (!(opt.unitsPerWhite > 0) || !std::isfinite(opt.unitsPerWhite))
+    return Error{"", "options.unitsPerWhite", "must be a positive number"};
+  kappa /= opt.unitsPerWhite;
+  const float invK = float(1 / kappa);
+
+  // Per channel planes (row-major, W x H).
+  struct Plane {
+    std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn;
+  };
+  std::vector<Plane> P(3);
+  std::vector<float> mx(N, 0.f), my(N, 0.f);  // mask on the edge to the right / below
+  float gammaMax = 0;
+  for (int c = 0; c < 3; ++c) {
+    Plane& p = P[size_t(c)];
+    p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        float b = photo.at(x, y, c), g = gathered.at(x, y, c), r0 = rho0.at(x, y, c);
+        const bool finite = std::isfinite(b) && std::isfinite(g);
+        if (!std::isfinite(b)) b = 0;
+        if (!std::isfinite(g)) g = 0;
+        if (!std::isfinite(r0)) r0 = 0.5f;
+        b = std::max(b, 0.f) * invK;
+        g = std::max(g, 0.f) * invK;
+        p.B[i] = b;
+        p.G[i] = g;
+        gammaMax = std::max(gammaMax, g);
+        const bool lower = !finite || (!clipped.empty() && clipped[i]);
+        float hi = 1;
+        if (!lower && g > 0) hi = std::min(1.f, b / g);
+        p.hi[i] = std::max(hi, 0.f);
+        p.x0[i] = std::clamp(r0, 0.f, p.hi[i]);
+        p.wg2[i] = (valid[i] && finite) ? float(2 * opt.g2) * g * g : 0.f;
+      }
+    p.x = p.x0;
+    p.y.assign(N, 0.f);
+    p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.q.assign(N, 0.f), p.ly.assign(N, 0.f);
+    p.gf.assign(N, 0.f), p.gfn.assign(N, 0.f);
+  }
+  // |grad B|^2 over the three channels, per edge.
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      auto mask = [&](size_t j) {
+        double g2 = 0;
+        for (int c = 0; c < 3; ++c)
+          g2 += std::pow(double(P[size_t(c)].B[j] - P[size_t(c)].B[i]) * kappa, 2);
+        return float(1 - 1 / (1 + std::exp(-opt.s * (g2 - opt.c))));
+      };
+      if (x + 1 < W) mx[i] = mask(i + 1);
+      if (y + 1 < H) my[i] = mask(i + size_t(W));
+    }
+  });
+
+  // Steps (Condat-Vu): tau Lf / 2 + tau sigma |Lap|^2 <= 0.95 with |Lap|^2 <= 64 and
+  // Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal step takes what the smooth part allows, the
+  // dual step the rest.
+  const double Lf = 16 * opt.g1 + 16 * opt.g3 * double(gammaMax) * gammaMax;
+  const double tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
+  const double sigma = 0.5 / (64 * tau);
+  const float tauF = float(tau), sigmaF = float(sigma);
+  const float g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
+
+  auto lap = [&](const std::vector<float>& u, size_t i, int x, int y) {
+    float s = 0;
+    if (x > 0) s += u[i - 1] - u[i];
+    if (x + 1 < W) s += u[i + 1] - u[i];
+    if (y > 0) s += u[i - size_t(W)] - u[i];
+    if (y + 1 < H) s += u[i + size_t(W)] - u[i];
+    return s;
+  };
+  // Gradient of the smooth part at `xs` into `out` (q: scratch for Gamma x - B).
+  auto gradF = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
+    forRows(H, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        p.q[i] = p.G[i] * xs[i] - p.B[i];
+      }
+    });
+    forRows(H, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        float sm = 0;
+        if (x > 0) sm += mx[i - 1] * (xs[i] - xs[i - 1]);
+        if (x + 1 < W) sm += mx[i] * (xs[i] - xs[i + 1]);
+        if (y > 0) sm += my[i - size_t(W)] * (xs[i] - xs[i - size_t(W)]);
+        if (y + 1 < H) sm += my[i] * (xs[i] - xs[i + size_t(W)]);
+        out[i] = g1x2 * sm - g3x2 * p.G[i] * lap(p.q, i, x, y);
+      }
+    });
+  };
+  auto objective = [&]() {
+    double f = 0;
+    for (int c = 0; c < 3; ++c) {
+      Plane& p = P[size_t(c)];
+      std::vector<double> rows(size_t(H), 0.0);
+      forRows(H, [&](int y) {
+        double s = 0;
+        for (int x = 0; x < W; ++x) {
+          const size_t i = size_t(y) * W + x;
+          s += std::abs(lap(p.x, i, x, y));
+          const double d = p.x[i] - p.x0[i];
+          s += 0.5 * p.wg2[i] * d * d;
+          const double Di = p.B[i] - p.G[i] * p.x[i];
+          if (x + 1 < W) {
+            const double gx = p.x[i + 1] - p.x[i];
+            const double dD = (p.B[i + 1] - p.G[i + 1] * p.x[i + 1]) - Di;
+            s += opt.g1 * mx[i] * gx * gx + opt.g3 * dD * dD;
+          }
+          if (y + 1 < H) {
+            const size_t j = i + size_t(W);
+            const double gy = p.x[j] - p.x[i];
+            const double dD = (p.B[j] - p.G[j] * p.x[j]) - Di;
+            s += opt.g1 * my[i] * gy * gy + opt.g3 * dD * dD;
+          }
+        }
+        rows[size_t(y)] = s;
+      });
+      for (double r : rows) f += r;
+    }
+    return f;
+  };
+
+  Decomposition out;
+  auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+  for (auto& p : P) gradF(p, p.x, p.gf);
+  const int every = std::max(1, opt.historyEvery);
+  double primal = INFINITY, dual = INFINITY;
+  int it = 0;
+  std::string stopReason = "the iteration limit";
+  for (it = 1; it <= std::max(1, opt.maxIterations); ++it) {
+    const bool record = (it % every == 0) || it == opt.maxIterations;
+    double pSum = 0, dSum = 0;
+    for (auto& p : P) {
+      // Primal: x+ = prox_{tau g}(x - tau (grad f + Lap^T y)), g = box + g2 term.
+      forRows(H, [&](int y) {
+        for (int x = 0; x < W; ++x) {
+          const size_t i = size_t(y) * W + x;
+          p.ly[i] = lap(p.y, i, x, y);
+          const float v = p.x[i] - tauF * (p.gf[i] + p.ly[i]);
+          const float w = tauF * p.wg2[i];
+          p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), 0.f, p.hi[i]);
+        }
+      });
+      // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
+      forRows(H, [&](int y) {
+        for (int x = 0; x < W; ++x) {
+          const size_t i = size_t(y) * W + x;
+          const float lb = 2 * lap(p.xn, i, x, y) - lap(p.x, i, x, y);
+          p.yn[i] = std::clamp(p.y[i] + sigmaF * lb, -1.f, 1.f);
+        }
+      });
+      gradF(p, p.xn, p.gfn);
+      if (record) {
+        // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
+        // term's gradient change (Condat-Vu).
+        std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
+        forRows(H, [&](int y) {
+          double sp = 0, sd = 0;
+          for (int x = 0; x < W; ++x) {
+            const size_t i = size_t(y) * W + x;
+            const double dly = p.ly[i] - lap(p.yn, i, x, y);
+            const double rp = (p.x[i] - p.xn[i]) / tau - dly - (p.gf[i] - p.gfn[i]);
+            const double rd = (p.y[i] - p.yn[i]) / sigma - (lap(p.x, i, x, y) - lap(p.xn, i, x, y));
+            sp += rp * rp, sd += rd * rd;
+          }
+          ps[size_t(y)] = sp, ds[size_t(y)] = sd;
+        });
+        for (int y = 0; y < H; ++y) pSum += ps[size_t(y)], dSum += ds[size_t(y)];
+      }
+      std::swap(p.x, p.xn);
+      std::swap(p.y, p.yn);
+      std::swap(p.gf, p.gfn);
+    }
+    out.iterations = it;
+    if (record) {
+      primal = tau * std::sqrt(pSum / (3.0 * N));
+      dual = sigma * std::sqrt(dSum / (3.0 * N));
+      out.history.push_back({seconds(), it, objective(), primal, dual});
+      if (!std::isfinite(primal) || !std::isfinite(dual)) {
+        stopReason = "non-finite residuals";
+        break;
+      }
+      if (it >= opt.minIterations && primal < opt.tolerance && dual < opt.tolerance) {
+        out.converged = true;
+        break;
+      }
+    }
+    if (opt.timeLimitSeconds > 0 && seconds() > opt.timeLimitSeconds) {
+      stopReason = "the time limit";
+      break;
+    }
+    if (opt.cancel && opt.cancel->shouldStop()) {
+      stopReason = "cancellation";
+      break;
+    }
+  }
+  if (out.history.empty() || out.history.back().iteration != out.iterations) {
+    // The last state is always in the history (residuals from the last recorded step).
+    out.history.push_back({seconds(), out.iterations, objective(), primal, dual});
+  }
+  char buf[256];
+  if (out.converged)
+    std::snprintf(buf, sizeof buf,
+                  "converged after %d iterations (%.2f s): primal residual %.2e, dual %.2e <= %.1e",
+                  out.iterations, seconds(), primal, dual, opt.tolerance);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "not converged: stopped by %s after %d iterations (%.2f s): primal residual "
+                  "%.2e, dual %.2e, tolerance %.1e",
+                  stopReason.c_str(), out.iterations, seconds(), primal, dual, opt.tolerance);
+  out.report = buf;
+
+  out.albedo = ImageF(W, H, 3, 0.f);
+  out.direct = ImageF(W, H, 3, 0.f);
+  for (int c = 0; c < 3; ++c) {
+    const Plane& p = P[size_t(c)];
+    forRows(H, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        const float r = std::isfinite(p.x[i]) ? p.x[i] : p.x0[i];
+        out.albedo.at(x, y, c) = r;
+        out.direct.at(x, y, c) = std::max(0.f, float((p.B[i] - p.G[i] * r) * kappa));
+      }
+    });
+  }
+  out.seconds = seconds();
+  return out;
+}
+
+}  // namespace inlay

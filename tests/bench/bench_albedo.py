@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""Albedo against the true reflectance on every room of ../shared/scenes, ours and Retinex.
+
+For each room the harness writes the assisted scene file; `inlay-cli decompose` writes the albedo
+with --method ours and --method retinex; ../shared/tools/score_albedo.py scores it (MAE, RMSE
+over room pixels, and after the best single scale). Then ours again with a series of solver time
+limits (--seconds) for the error against the solver's run time, with the solver's objective and
+residuals (--progress-csv).
+
+Writes OUT/albedo_scenes.csv (scene, method, mae, rmse, mae_scaled, scale, wall seconds),
+OUT/albedo_error_vs_time.csv (scene, budget, solver seconds, iterations, mae, rmse),
+OUT/albedo_history_<scene>.csv (the solver's history at the largest budget) and
+OUT/albedo_error_vs_time.png; prints a Markdown table.
+
+usage: bench_albedo.py INLAY_CLI [--out DIR] [--budgets 0.000001,0.05,0.1,0.2,0.4,0.8,1.6]
+                       [--scenes d1,d3]
+"""
+import csv, json, os, subprocess, sys, time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PY = "/usr/bin/python3"
+
+
+def run(cmd):
+    t = time.monotonic()
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        raise SystemExit("failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), p.stderr))
+    return time.monotonic() - t, p.stdout, p.stderr
+
+
+def main():
+    a = sys.argv[1:]
+    if not a:
+        print(__doc__)
+        return 2
+    cli = os.path.abspath(a[0])
+    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    budgets = [float(x) for x in opt("--budgets", "0.000001,0.05,0.1,0.2,0.4,0.8,1.6").split(",")]
+    shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
+    sdir = os.path.join(shared, "scenes")
+    tools = os.path.join(shared, "tools")
+    if not os.path.isdir(sdir):
+        print("skipped: no ../shared/scenes")
+        return 0
+    only = [s for s in opt("--scenes", "").split(",") if s]
+    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
+    if only:
+        names = [n for n in names if any(n.startswith(o) for o in only)]
+    os.makedirs(out, exist_ok=True)
+    score = lambda s, exr: json.loads(run([PY, os.path.join(tools, "score_albedo.py"),
+                                           os.path.join(sdir, s), exr])[1])
+    rows, curve = [], []
+    for s in names:
+        scene = os.path.join(out, s + ".json")
+        run([PY, os.path.join(tools, "harness.py"), "scene", os.path.join(sdir, s), scene])
+        for m in ("ours", "retinex"):
+            exr = os.path.join(out, "%s_%s.exr" % (s, m))
+            secs, _, _ = run([cli, "decompose", scene, "--albedo", exr, "--method", m, "--quiet"])
+            r = score(s, exr)
+            rows.append(dict(scene=s, method=m, mae=r["mae"], rmse=r["rmse"],
+                             mae_scaled=r["mae_scaled"], scale=r["scale"], seconds=secs))
+            print("%s %-7s mae %.4f rmse %.4f mae_scaled %.4f scale %.3f (%.1f s)"
+                  % (s, m, r["mae"], r["rmse"], r["mae_scaled"], r["scale"], secs), flush=True)
+        for b in budgets:
+            exr = os.path.join(out, "%s_ours_%g.exr" % (s, b))
+            hist = os.path.join(out, "albedo_history_%s.csv" % s)
+            run([cli, "decompose", scene, "--albedo", exr, "--seconds", repr(b), "--progress-csv",
+                 hist, "--quiet"])
+            with open(hist) as f:
+                h = list(csv.DictReader(f))
+            r = score(s, exr)
+            curve.append(dict(scene=s, budget=b, solver_seconds=float(h[-1]["seconds"]),
+                              iterations=int(h[-1]["iteration"]), mae=r["mae"], rmse=r["rmse"]))
+            os.remove(exr)
+    with open(os.path.join(out, "albedo_scenes.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    with open(os.path.join(out, "albedo_error_vs_time.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(curve[0]))
+        w.writeheader()
+        w.writerows(curve)
+
+    print("\n| scene | ours MAE | ours RMSE | Retinex MAE | Retinex RMSE | ours MAE scaled | ours s |")
+    print("|---|---|---|---|---|---|---|")
+    mean = lambda m, k: sum(r[k] for r in rows if r["method"] == m) / len(names)
+    for s in names:
+        o = next(r for r in rows if r["scene"] == s and r["method"] == "ours")
+        t = next(r for r in rows if r["scene"] == s and r["method"] == "retinex")
+        print("| %s | %.4f | %.4f | %.4f | %.4f | %.4f | %.1f |" % (
+            s, o["mae"], o["rmse"], t["mae"], t["rmse"], o["mae_scaled"], o["seconds"]))
+    print("| mean | %.4f | %.4f | %.4f | %.4f | %.4f | |" % (
+        mean("ours", "mae"), mean("ours", "rmse"), mean("retinex", "mae"), mean("retinex", "rmse"),
+        mean("ours", "mae_scaled")))
+
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("no matplotlib: plots skipped")
+        return 0
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.5))
+    for s in names:
+        c = [r for r in curve if r["scene"] == s]
+        ax[0].plot([max(r["solver_seconds"], 1e-3) for r in c], [r["mae"] for r in c], "o-", label=s)
+        with open(os.path.join(out, "albedo_history_%s.csv" % s)) as f:
+            h = list(csv.DictReader(f))
+        ax[1].semilogy([float(r["seconds"]) for r in h],
+                       [max(float(r["primal_residual"]), float(r["dual_residual"])) for r in h],
+                       label=s)
+    ax[0].set_xscale("log")
+    ax[0].set_xlabel("solver seconds (2 threads)")
+    ax[0].set_ylabel("albedo MAE vs albedo.exr")
+    ax[0].set_title("error against solver time (ours)")
+    ax[0].legend(fontsize=7)
+    ax[1].set_xlabel("seconds")
+    ax[1].set_ylabel("max(primal, dual) residual")
+    ax[1].set_title("primal-dual residuals")
+    ax[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "albedo_error_vs_time.png"), dpi=110)
+    print("wrote", out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
