@@ -93,43 +93,6 @@ class ObjectListCommand : public QUndoCommand {
   std::shared_ptr<const TriangleMesh> mesh_;
 };
 
-Material renderMaterialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
-  Material m;
-  m.albedo = keys.albedo;
-  m.roughness = keys.roughness;
-  m.ior = keys.ior;
-  if (keys.preset == "glossy") {
-    m.kind = Material::Kind::Glossy;
-  } else if (keys.preset == "mirror") {
-    m.kind = Material::Kind::Mirror;
-  } else if (keys.preset == "glass") {
-    m.kind = Material::Kind::Glass;
-  } else if (keys.preset == "emissive") {
-    m.kind = Material::Kind::Emissive;
-    m.emission = keys.rgb;
-    m.albedo = Vec3::Zero();
-  } else if (keys.preset == "asset" && meshObject && !meshObject->materials.empty()) {
-    // One material per object in the renderer: the file's first material, mapped to the
-    // nearest model.
-    const AssetMaterial& a = meshObject->materials.front();
-    m.albedo = a.baseColor;
-    m.roughness = a.roughness;
-    m.ior = a.ior;
-    if (a.emission.maxCoeff() > 0) {
-      m.kind = Material::Kind::Emissive;
-      m.emission = a.emission;
-    } else if (a.transmission > 0.5) {
-      m.kind = Material::Kind::Glass;
-    } else if (a.metallic > 0.5) {
-      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
-    } else {
-      m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
-    }
-  } else {
-    m.kind = Material::Kind::Diffuse;
-  }
-  return m;
-}
 
 Document::Document(QObject* parent) : QObject(parent) {
   qRegisterMetaType<PrepareResult>();
@@ -378,7 +341,7 @@ void Document::insertObjectAt(int index, const ObjectKeys& keys,
   doc_.objects.insert(at(doc_.objects), keys);
   prepared_->doc.objects.insert(at(prepared_->doc.objects), keys);
   InsertedObject object;
-  object.material = renderMaterialFromKeys(keys.material, mesh.get());
+  object.material = materialFromKeys(keys.material, mesh.get());
   object.meshObject = std::move(mesh);
   prepared_->renderScene.objects.insert(at(prepared_->renderScene.objects), object);
   // Validated before the command was pushed, against the same mesh and geometry.
@@ -423,7 +386,7 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
   if (event.has(ChangeEvent::ObjectMaterial) &&
       size_t(index) < prepared_->renderScene.objects.size()) {
     InsertedObject& o = prepared_->renderScene.objects[size_t(index)];
-    o.material = renderMaterialFromKeys(keys.material, o.meshObject.get());
+    o.material = materialFromKeys(keys.material, o.meshObject.get());
   }
   if (event.what) Q_EMIT changed(event);
 }

@@ -142,9 +142,6 @@ class Document : public QObject {
   std::shared_ptr<CancelToken> cancel_;
 };
 
-// The renderer's material for the scene file's material keys. `meshObject` supplies the
-// file's own material for preset "asset".
-Material renderMaterialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);
 
 }  // namespace inlay::studio
 

@@ -1,6 +1,7 @@
 #include "inlay/engine/pipeline.h"
 
 #include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
 
@@ -54,49 +55,53 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
   return mask;
 }
 
-Material materialOf(const MaterialKeys& m, const TriangleMesh& mesh) {
-  Material out;
-  if (m.preset == "diffuse") {
-    out.kind = Material::Kind::Diffuse;
-    out.albedo = m.albedo;
-  } else if (m.preset == "glossy") {
-    out.kind = Material::Kind::Glossy;
-    out.albedo = m.albedo;
-    out.roughness = m.roughness;
-  } else if (m.preset == "mirror") {
-    out.kind = Material::Kind::Mirror;
-    out.albedo = m.albedo;
-  } else if (m.preset == "glass") {
-    out.kind = Material::Kind::Glass;
-    out.ior = m.ior;
-  } else if (m.preset == "emissive") {
-    out.kind = Material::Kind::Emissive;
-    out.emission = m.rgb;
-    out.albedo = Vec3::Zero();
-  } else {  // "asset": the file's first material, mapped onto the renderer's models
-    if (!mesh.materials.empty()) {
-      const AssetMaterial& a = mesh.materials.front();
-      out.albedo = a.baseColor;
-      out.roughness = a.roughness;
-      out.ior = a.ior;
-      if (a.emission.maxCoeff() > 0) {
-        out.kind = Material::Kind::Emissive;
-        out.emission = a.emission;
-      } else if (a.transmission > 0.5) {
-        out.kind = Material::Kind::Glass;
-      } else if (a.metallic > 0.5) {
-        out.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
-      } else {
-        out.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
+
+Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
+  Material m;
+  m.albedo = keys.albedo;
+  m.roughness = keys.roughness;
+  m.ior = keys.ior;
+  if (keys.preset == "glossy") {
+    m.kind = Material::Kind::Glossy;
+  } else if (keys.preset == "mirror") {
+    m.kind = Material::Kind::Mirror;
+  } else if (keys.preset == "glass") {
+    m.kind = Material::Kind::Glass;
+  } else if (keys.preset == "emissive") {
+    m.kind = Material::Kind::Emissive;
+    m.emission = keys.rgb;
+    m.albedo = Vec3::Zero();
+  } else if (keys.preset == "asset" && meshObject && !meshObject->materials.empty()) {
+    // One material per object in the renderer: the file's first material, mapped onto the
+    // nearest of the renderer's models.
+    const AssetMaterial& a = meshObject->materials.front();
+    m.albedo = a.baseColor;
+    m.roughness = a.roughness;
+    m.ior = a.ior;
+    if (a.emission.maxCoeff() > 0) {
+      m.kind = Material::Kind::Emissive;
+      m.emission = a.emission;
+    } else if (a.transmission > 0.5) {
+      m.kind = Material::Kind::Glass;
+    } else if (a.metallic > 0.5) {
+      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
+    } else {
+      m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
+    }
+  } else {
+    m.kind = Material::Kind::Diffuse;
+  }
+  return m;
+}
+
+ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame) {
+  ImageF c = differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask);
+  applyExposure(c, exposureStops);
+  return c;
+}
 
 std::string exampleScenePath() {
   namespace fs = std::filesystem;
@@ -227,18 +232,41 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     }
   }
   for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+    const SurfaceKeys& sk = doc.surfaces[i];
     const std::string key = "surfaces[" + std::to_string(i) + "]";
-    if (doc.surfaces[i].kind != "extrusion") {
-      ps.warnings.push_back(key + ": kind '" + doc.surfaces[i].kind + "' is not supported yet; ignored");
-      continue;
+    ExtrusionOptions eo;
+    eo.thicknessM = sk.thicknessM.value_or(0.0);
+    Expected<Extrusion> ex = Error{"", key + ".kind", "unknown surface kind '" + sk.kind + "'"};
+    if (sk.kind == "extrusion") {
+      ex = extrusionFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
+    } else if (sk.kind == "box") {
+      ex = boxFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
+    } else if (sk.kind == "stairs") {
+      StairsSpec st;
+      st.basePx = sk.basePx;
+      st.steps = sk.steps;
+      st.riseM = sk.riseM;
+      st.runM = sk.runM;
+      st.widthM = sk.widthM;
+      const double sign = sk.climbAxis.size() == 2 && sk.climbAxis[0] == '-' ? -1.0 : 1.0;
+      st.climbWorld = sk.climbAxis.size() == 2 && sk.climbAxis[1] == 'x' ? Vec3(sign, 0, 0) : Vec3(0, 0, sign);
+      ex = stairsFromSpec(ps.camera, st, key);
     }
-    auto ex = extrusionFromOutline(ps.camera, doc.surfaces[i].outlinePx, doc.surfaces[i].heightClickPx, key);
     if (!ex) return ex.error();
     ps.extrusions.push_back(*ex);
   }
   ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  if (!doc.occluders.empty())
-    ps.warnings.push_back("occluders: occluder mattes are not in this version; ignored");
+  // Occluders: a matte from the scribbles, standing as a card (kind OccluderCard) in the room.
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const std::string key = "occluders[" + std::to_string(i) + "]";
+    auto matte = matteFromScribbles(ps.photo.linearRgb, doc.occluders[i].foregroundScribblesPx,
+                                    doc.occluders[i].backgroundScribblesPx, key);
+    if (!matte) return matte.error();
+    auto card = occluderCard(ps.camera, *matte, int(i), key);
+    if (!card) return card.error();
+    ps.geometry.surfaces.push_back(std::move(*card));
+    if (cancelled()) return Error{"", "", "cancelled"};
+  }
   ps.stageSeconds.emplace_back("room", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
 
@@ -324,7 +352,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     InsertedObject obj;
     obj.meshObject = cached;
     obj.worldFromObject = place->worldFromObject;
-    obj.material = materialOf(o.material, *cached);
+    obj.material = materialFromKeys(o.material, cached.get());
     rs.objects.push_back(obj);
     ps.placements.push_back(*place);
   }
@@ -334,10 +362,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 }
 
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame) {
-  ImageF c = differentialComposite(scene.photo.linearRgb, frame.withObjects, frame.withoutObjects,
-                                   frame.mask);
-  applyExposure(c, scene.doc.render.exposure);
-  return c;
+  return compositeOf(scene.photo.linearRgb, scene.doc.render.exposure, frame);
 }
 
 }  // namespace inlay

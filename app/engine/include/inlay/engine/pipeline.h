@@ -52,6 +52,12 @@ Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index);
 // The 8-bit-ready linear composite of a frame: differential composite over the photo, then the
 // scene's exposure.
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame);
+// The same from just what it needs (for a render thread that holds no PreparedScene).
+ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame);
+
+// The renderer's material for the scene file's material keys; `meshObject` (may be null)
+// supplies the file's own material for preset "asset" (its first material).
+Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);
 
 // Path of the bundled example scene (resources/example/scene.json) in the source tree or the
 // install prefix; empty when not found.
