@@ -1,7 +1,6 @@
 #include "inlay/engine/pipeline.h"
 
 #include "inlay/modeling/estimate_camera.h"
-#include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
 
@@ -256,17 +255,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     ps.extrusions.push_back(*ex);
   }
   ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  // Occluders: a matte from the scribbles, standing as a card (kind OccluderCard) in the room.
-  for (size_t i = 0; i < doc.occluders.size(); ++i) {
-    const std::string key = "occluders[" + std::to_string(i) + "]";
-    auto matte = matteFromScribbles(ps.photo.linearRgb, doc.occluders[i].foregroundScribblesPx,
-                                    doc.occluders[i].backgroundScribblesPx, key);
-    if (!matte) return matte.error();
-    auto card = occluderCard(ps.camera, *matte, int(i), key);
-    if (!card) return card.error();
-    ps.geometry.surfaces.push_back(std::move(*card));
-    if (cancelled()) return Error{"", "", "cancelled"};
-  }
+  if (!doc.occluders.empty())
+    ps.warnings.push_back("occluders: occluder mattes are not in this version; ignored");
   ps.stageSeconds.emplace_back("room", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
 
