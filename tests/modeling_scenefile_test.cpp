@@ -367,7 +367,7 @@ INSTANTIATE_TEST_SUITE_P(
                 R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[5,0],[5,5]], "height_click_px": [0, 20]}])",
                 "surfaces[0].outline_px", "self-intersecting"},
         BadCase{"surface_kind",
-                R"(, "surfaces": [{"kind": "stairs", "outline_px": [[0,0],[1,0],[1,1]], "height_click_px": [0, 2]}])",
+                R"(, "surfaces": [{"kind": "ramp", "outline_px": [[0,0],[1,0],[1,1]], "height_click_px": [0, 2]}])",
                 "surfaces[0].kind", "unknown surface kind"},
         BadCase{"surface_no_click",
                 R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[10,10]]}])",

@@ -1,5 +1,7 @@
 #include "inlay/modeling/geometry.h"
 
+#include "extrude_cgal.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,13 +73,6 @@ double signedAreaTop(const std::vector<Vec3>& poly) {
 }
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-bool segmentsCross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a);
-  const double d3 = cross2(d - c, a - c), d4 = cross2(d - c, b - c);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
-         d4 != 0;
-}
 
 bool pointInTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
   const double d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
@@ -218,25 +213,53 @@ std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box) 
   return out;
 }
 
+double CardAlpha::alphaAt(const Vec3& pointWorld) const {
+  if (alphaPx.empty()) return 0.0;
+  const auto px = camera.project(pointWorld);
+  if (!px || !px->allFinite()) return 0.0;
+  // Pixel centres sit at +0.5; bilinear between the four around the point.
+  const double fx = px->x() - 0.5, fy = px->y() - 0.5;
+  if (fx < -0.5 || fy < -0.5 || fx > alphaPx.width - 0.5 || fy > alphaPx.height - 0.5) return 0.0;
+  const int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
+  const double ax = fx - x0, ay = fy - y0;
+  auto at = [&](int x, int y) {
+    x = std::clamp(x, 0, alphaPx.width - 1);
+    y = std::clamp(y, 0, alphaPx.height - 1);
+    return double(alphaPx.at(x, y));
+  };
+  const double a = (1 - ax) * (1 - ay) * at(x0, y0) + ax * (1 - ay) * at(x0 + 1, y0) +
+                   (1 - ax) * ay * at(x0, y0 + 1) + ax * ay * at(x0 + 1, y0 + 1);
+  return std::clamp(a, 0.0, 1.0);
+}
+
+namespace {
+
+// Fills ex.upWorld / ex.otherWorld: the prism of topOutlineWorld from yBottom up to heightM.
+Status buildExtrusionSolid(Extrusion& ex, double yBottom, const std::string& key) {
+  std::vector<Vec2> q;
+  for (const Vec3& p : ex.topOutlineWorld) q.emplace_back(p.x(), -p.z());
+  auto ccw = detail::counterClockwiseSimplePolygon(q, key + ".outline_px");
+  if (!ccw) return ccw.error();
+  auto prism = detail::buildPrism(*ccw, Vec3(0, yBottom, 0), Vec3(1, 0, 0), Vec3(0, 0, -1),
+                                  Vec3(0, ex.heightM - yBottom, 0), key);
+  if (!prism) return prism.error();
+  ex.upWorld = std::move(prism->upWorld);
+  ex.otherWorld = std::move(prism->otherWorld);
+  return Status{};
+}
+
+}  // namespace
+
 Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
-                                         const Vec2& clickPx, const std::string& key) {
-  if (outlinePx.size() < 3)
-    return Error{"", key + ".outline_px", "needs at least 3 points, has " +
-                                              std::to_string(outlinePx.size())};
-  for (size_t i = 0; i < outlinePx.size(); ++i)
-    if (!outlinePx[i].allFinite())
-      return Error{"", key + ".outline_px[" + std::to_string(i) + "]", "is not a finite number"};
+                                         const Vec2& clickPx, const std::string& key,
+                                         const ExtrusionOptions& options) {
+  // Simple, at least 3 distinct points, not collinear (CGAL); either orientation.
+  auto outline = detail::counterClockwiseSimplePolygon(outlinePx, key + ".outline_px");
+  if (!outline) return outline.error();
   if (!clickPx.allFinite()) return Error{"", key + ".height_click_px", "is not a finite number"};
+  if (!(options.thicknessM >= 0) || !std::isfinite(options.thicknessM))
+    return Error{"", key + ".thickness_m", "must be a positive number (or missing)"};
   const size_t n = outlinePx.size();
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = i + 1; j < n; ++j) {
-      if (j == i + 1 || (i == 0 && j == n - 1)) continue;
-      if (segmentsCross(outlinePx[i], outlinePx[(i + 1) % n], outlinePx[j],
-                        outlinePx[(j + 1) % n]))
-        return Error{"", key + ".outline_px",
-                     "the outline crosses itself (edges " + std::to_string(i) + " and " +
-                         std::to_string(j) + ")"};
-    }
   // Height by single-view metrology: the click is on the floor straight below outline point 0;
   // the height is where point 0's ray passes closest to the vertical line through the click.
   const auto floorPt = hitHorizontal(camera.rayThroughPixel(clickPx), 0.0);
@@ -244,6 +267,21 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
     return Error{"", key + ".height_click_px",
                  "the click " + pxText(clickPx) + " is at or above the horizon, so it cannot be "
                  "on the floor"};
+  {
+    // Point 0 must lie on the image of the vertical through the click: the line from the click
+    // toward the vertical vanishing point (possibly at infinity).
+    const Vec3 vp = camera.vanishingPointOf(Vec3(0, 1, 0));
+    const Vec3 line = Vec3(clickPx.x(), clickPx.y(), 1.0).cross(vp);
+    const double norm2 = std::hypot(line.x(), line.y());
+    if (norm2 > 0) {
+      const double off = std::abs(line.dot(Vec3(outlinePx[0].x(), outlinePx[0].y(), 1.0))) / norm2;
+      if (off > options.maxClickOffsetPx)
+        return Error{"", key + ".height_click_px",
+                     "the click " + pxText(clickPx) + " is not straight below outline point 0 " +
+                         pxText(outlinePx[0]) + " (" + std::to_string(int(std::lround(off))) +
+                         " px off the vertical through it)"};
+    }
+  }
   const Ray r0 = camera.rayThroughPixel(outlinePx[0]);
   // Closest points of r0.origin + t d and floorPt + s up.
   const Vec3 up(0, 1, 0);
@@ -261,13 +299,18 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   if (!(h > 0.01))
     return Error{"", key + ".height_click_px",
                  "the click " + pxText(clickPx) + " is not below the outline's first point "
-                 "(the height would be " + std::to_string(h) + " m)"};
+                 "(the height would be " + std::to_string(h) + " m): click the floor under it"};
   if (std::abs(h - camera.heightM) < 0.01)
     return Error{"", key + ".height_click_px",
                  "the top would be at the camera's height, seen edge-on: its outline cannot be "
                  "placed"};
+  if (options.thicknessM >= h)
+    return Error{"", key + ".thickness_m",
+                 "the slab (" + std::to_string(options.thicknessM) + " m) is thicker than the top "
+                 "is high (" + std::to_string(h) + " m)"};
   Extrusion ex;
   ex.heightM = h;
+  ex.thicknessM = options.thicknessM;
   for (size_t i = 0; i < n; ++i) {
     const auto p = hitHorizontal(camera.rayThroughPixel(outlinePx[i]), h);
     if (!p)
@@ -279,6 +322,70 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   const double area = signedAreaTop(ex.topOutlineWorld);
   if (std::abs(area) < 1e-6) return Error{"", key + ".outline_px", "the outline has no area"};
   if (area < 0) std::reverse(ex.topOutlineWorld.begin(), ex.topOutlineWorld.end());
+  const Status built = buildExtrusionSolid(ex, ex.thicknessM > 0 ? h - ex.thicknessM : 0.0, key);
+  if (!built) return built.error();
+  return ex;
+}
+
+Expected<Extrusion> boxFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
+                                   const Vec2& clickPx, const std::string& key,
+                                   const ExtrusionOptions& options) {
+  auto ex = extrusionFromOutline(camera, outlinePx, clickPx, key, options);
+  if (!ex) return ex;
+  double x0 = 1e300, x1 = -1e300, z0 = 1e300, z1 = -1e300;
+  for (const Vec3& p : ex->topOutlineWorld) {
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+    z0 = std::min(z0, p.z()), z1 = std::max(z1, p.z());
+  }
+  const double h = ex->heightM;
+  // Counter-clockwise seen from above (x right, -z up).
+  ex->topOutlineWorld = {{x0, h, z1}, {x1, h, z1}, {x1, h, z0}, {x0, h, z0}};
+  const Status built = buildExtrusionSolid(*ex, ex->thicknessM > 0 ? h - ex->thicknessM : 0.0, key);
+  if (!built) return built.error();
+  return ex;
+}
+
+Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& st,
+                                   const std::string& key) {
+  if (!st.basePx.allFinite()) return Error{"", key + ".base_px", "is not a finite number"};
+  if (st.steps < 1 || st.steps > 1000)
+    return Error{"", key + ".steps", "must be a whole number from 1 to 1000"};
+  auto positive = [](double v) { return v > 0 && std::isfinite(v); };
+  if (!positive(st.riseM)) return Error{"", key + ".rise_m", "must be a positive number"};
+  if (!positive(st.runM)) return Error{"", key + ".run_m", "must be a positive number"};
+  if (!positive(st.widthM)) return Error{"", key + ".width_m", "must be a positive number"};
+  const Vec3 c = st.climbWorld;
+  const bool axis = std::abs(c.y()) < 1e-9 && std::abs(std::abs(c.x()) + std::abs(c.z()) - 1) < 1e-9 &&
+                    (std::abs(c.x()) < 1e-9 || std::abs(c.z()) < 1e-9);
+  if (!axis) return Error{"", key + ".climb_axis", "must be one of +x, -x, +z, -z"};
+  const auto base = hitHorizontal(camera.rayThroughPixel(st.basePx), 0.0);
+  if (!base)
+    return Error{"", key + ".base_px",
+                 "the point " + pxText(st.basePx) + " is at or above the horizon, so it cannot be "
+                 "on the floor"};
+  // Side profile in (along the climb, up), counter-clockwise: the floor line, the back, then
+  // down the staircase edge: nosing of step k at ((k) run, (k + 1) rise).
+  std::vector<Vec2> profile = {{0, 0}, {st.steps * st.runM, 0}};
+  for (int k = st.steps - 1; k >= 0; --k) {
+    profile.emplace_back((k + 1) * st.runM, (k + 1) * st.riseM);
+    profile.emplace_back(k * st.runM, (k + 1) * st.riseM);
+  }
+  auto ccw = detail::counterClockwiseSimplePolygon(profile, key);
+  if (!ccw) return ccw.error();
+  const Vec3 across = Vec3(0, 1, 0).cross(c).normalized();
+  const Vec3 origin = *base - 0.5 * st.widthM * across;
+  auto prism = detail::buildPrism(*ccw, origin, c, Vec3(0, 1, 0), st.widthM * across, key);
+  if (!prism) return prism.error();
+  Extrusion ex;
+  ex.heightM = st.steps * st.riseM;
+  const Vec3 far = *base + st.steps * st.runM * c;
+  const Vec3 hw = 0.5 * st.widthM * across;
+  ex.topOutlineWorld = {*base - hw, *base + hw, far + hw, far - hw};
+  for (Vec3& p : ex.topOutlineWorld) p.y() = ex.heightM;
+  if (signedAreaTop(ex.topOutlineWorld) < 0)
+    std::reverse(ex.topOutlineWorld.begin(), ex.topOutlineWorld.end());
+  ex.upWorld = std::move(prism->upWorld);
+  ex.otherWorld = std::move(prism->otherWorld);
   return ex;
 }
 
@@ -319,6 +426,15 @@ SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>&
   for (size_t e = 0; e < extrusions.size(); ++e) {
     const auto& ex = extrusions[e];
     const std::string base = "surface_" + std::to_string(e);
+    if (!ex.upWorld.empty()) {  // the CGAL solid
+      Surface top = makeSurface(SurfaceKind::ExtrusionTop, base + "_top", true, int(e));
+      top.meshWorld = ex.upWorld;
+      g.surfaces.push_back(std::move(top));
+      Surface side = makeSurface(SurfaceKind::ExtrusionSide, base + "_side", false, int(e));
+      side.meshWorld = ex.otherWorld;
+      g.surfaces.push_back(std::move(side));
+      continue;
+    }
     Surface top = makeSurface(SurfaceKind::ExtrusionTop, base + "_top", true, int(e));
     std::vector<Vec2> pts2;
     for (const Vec3& p : ex.topOutlineWorld) {

@@ -479,16 +479,37 @@ class Reader {
 
   SurfaceKeys readSurface(const json& j, const std::string& p) {
     object(j, p);
-    knownKeys(j, p, {"kind", "outline_px", "height_click_px"});
     SurfaceKeys s;
     if (j.contains("kind")) s.kind = string(j["kind"], child(p, "kind"));
-    if (s.kind != "extrusion")
-      fail(child(p, "kind"), "unknown surface kind '" + s.kind + "' (expected extrusion)");
+    if (s.kind == "stairs") {
+      knownKeys(j, p, {"kind", "base_px", "steps", "rise_m", "run_m", "width_m", "climb_axis"});
+      for (const char* k : {"base_px", "steps", "rise_m", "run_m", "width_m"})
+        if (!j.contains(k)) fail(child(p, k), "missing");
+      s.basePx = vec<2>(j["base_px"], child(p, "base_px"));
+      const long long steps = integer(j["steps"], child(p, "steps"));
+      if (steps < 1 || steps > 1000) fail(child(p, "steps"), "must be from 1 to 1000");
+      s.steps = int(steps);
+      s.riseM = positive(j["rise_m"], child(p, "rise_m"));
+      s.runM = positive(j["run_m"], child(p, "run_m"));
+      s.widthM = positive(j["width_m"], child(p, "width_m"));
+      if (j.contains("climb_axis")) {
+        s.climbAxis = string(j["climb_axis"], child(p, "climb_axis"));
+        if (s.climbAxis != "+x" && s.climbAxis != "-x" && s.climbAxis != "+z" && s.climbAxis != "-z")
+          fail(child(p, "climb_axis"), "must be one of \"+x\", \"-x\", \"+z\", \"-z\"");
+      }
+      return s;
+    }
+    if (s.kind != "extrusion" && s.kind != "box")
+      fail(child(p, "kind"),
+           "unknown surface kind '" + s.kind + "' (expected extrusion, box or stairs)");
+    knownKeys(j, p, {"kind", "outline_px", "height_click_px", "thickness_m"});
     if (!j.contains("outline_px")) fail(child(p, "outline_px"), "missing");
     s.outlinePx = polyline(j["outline_px"], child(p, "outline_px"), 0, limits_);
     checkSimplePolygon(s.outlinePx, child(p, "outline_px"));
     if (!j.contains("height_click_px")) fail(child(p, "height_click_px"), "missing");
     s.heightClickPx = vec<2>(j["height_click_px"], child(p, "height_click_px"));
+    if (j.contains("thickness_m") && !j["thickness_m"].is_null())
+      s.thicknessM = positive(j["thickness_m"], child(p, "thickness_m"));
     return s;
   }
 
@@ -710,10 +731,20 @@ ojson buildJson(const SceneDoc& doc) {
   }
   if (!doc.surfaces.empty()) {
     ojson a = ojson::array();
-    for (const SurfaceKeys& s : doc.surfaces)
-      a.push_back(ojson{{"kind", s.kind},
-                        {"outline_px", toJson(s.outlinePx)},
-                        {"height_click_px", toJson(s.heightClickPx)}});
+    for (const SurfaceKeys& s : doc.surfaces) {
+      if (s.kind == "stairs") {
+        a.push_back(ojson{{"kind", s.kind},         {"base_px", toJson(s.basePx)},
+                          {"steps", s.steps},       {"rise_m", s.riseM},
+                          {"run_m", s.runM},        {"width_m", s.widthM},
+                          {"climb_axis", s.climbAxis}});
+        continue;
+      }
+      ojson o{{"kind", s.kind},
+              {"outline_px", toJson(s.outlinePx)},
+              {"height_click_px", toJson(s.heightClickPx)}};
+      if (s.thicknessM) o["thickness_m"] = *s.thicknessM;
+      a.push_back(o);
+    }
     j["surfaces"] = a;
   }
   if (!doc.occluders.empty()) {

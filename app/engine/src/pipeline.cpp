@@ -1,6 +1,7 @@
 #include "inlay/engine/pipeline.h"
 
 #include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
 
@@ -255,8 +256,17 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     ps.extrusions.push_back(*ex);
   }
   ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  if (!doc.occluders.empty())
-    ps.warnings.push_back("occluders: occluder mattes are not in this version; ignored");
+  // Occluders: a matte from the scribbles, standing as a card (kind OccluderCard) in the room.
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const std::string key = "occluders[" + std::to_string(i) + "]";
+    auto matte = matteFromScribbles(ps.photo.linearRgb, doc.occluders[i].foregroundScribblesPx,
+                                    doc.occluders[i].backgroundScribblesPx, key);
+    if (!matte) return matte.error();
+    auto card = occluderCard(ps.camera, *matte, int(i), key);
+    if (!card) return card.error();
+    ps.geometry.surfaces.push_back(std::move(*card));
+    if (cancelled()) return Error{"", "", "cancelled"};
+  }
   ps.stageSeconds.emplace_back("room", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
 

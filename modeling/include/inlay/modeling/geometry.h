@@ -10,9 +10,11 @@
 
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
 #include "inlay/modeling/mesh.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,12 +41,25 @@ struct RoomBox {
   double ceilingM = 2.6;
 };
 
+// The soft coverage of an occluder card (occluder.h makes it): the matte in photo pixels, looked
+// up for a world point through the photo's camera. Immutable once built; any thread may read.
+struct CardAlpha {
+  Camera camera;   // the photo's camera
+  ImageF alphaPx;  // H x W x 1, coverage in [0, 1], the photo's pixel frame
+  // Bilinear coverage at the pixel a world point projects to; 0 outside the photo or behind
+  // the camera.
+  double alphaAt(const Vec3& pointWorld) const;
+};
+
 struct Surface {
   SurfaceKind kind = SurfaceKind::Floor;
   std::string name;          // "floor", "wall_left", "table_1_top", ...
   TriangleMesh meshWorld;    // world metres, normals facing into the room / up for tops
   bool supportsObjects = false;  // objects may stand on it (floor, tops)
   int groupIndex = -1;       // index of the extrusion / occluder it belongs to, -1 for the box
+  // OccluderCard only: its matte. A ray crossing the card at p is stopped with probability
+  // cardAlpha->alphaAt(p) and passes otherwise (a stochastic alpha test in the renderer).
+  std::shared_ptr<const CardAlpha> cardAlpha;
 };
 
 struct SurfaceHit {
@@ -77,17 +92,57 @@ Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 
 std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
 
 // An extruded horizontal surface (a table top) from an outline and a floor click below
-// outline point 0. Height by single-view metrology; the top is triangulated and extruded down
-// to the floor. Errors name `keyForMessages` (e.g. "surfaces[0]").
+// outline point 0. Height by single-view metrology; the outline (either orientation) must be
+// simple (CGAL), its top is triangulated (constrained Delaunay) and extruded down to the floor,
+// or into a slab of `thicknessM` below the top; the solid is checked closed and bounding a
+// volume. Errors name `keyForMessages` (e.g. "surfaces[0].outline_px"): fewer than 3 distinct
+// points, collinear points, a crossing outline, a point or click at or above the horizon, a
+// click above the top or not straight below outline point 0. On error nothing is built.
 struct Extrusion {
   std::vector<Vec3> topOutlineWorld;  // counter-clockwise seen from above, at y = heightM
   double heightM = 0;
+  double thicknessM = 0;              // 0: solid down to the floor; > 0: a slab this thick
+  // The closed solid, flat-shaded with outward normals: the faces looking up (the top, stair
+  // treads: objects stand on them) and all the others. Empty for a hand-made Extrusion:
+  // buildSceneGeometry then prisms topOutlineWorld down to the floor itself.
+  TriangleMesh upWorld;
+  TriangleMesh otherWorld;
+};
+struct ExtrusionOptions {
+  double thicknessM = 0;  // 0 (default): down to the floor; > 0: a slab, at most heightM
+  // How far (pixels) outline point 0 may lie from the vertical through the click (the line
+  // from the click toward the vertical vanishing point) before the click is refused as not
+  // below it. Default 12 px: a careful click is within a few pixels.
+  double maxClickOffsetPx = 12.0;
 };
 Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
                                          const Vec2& heightClickPx,
-                                         const std::string& keyForMessages);
+                                         const std::string& keyForMessages,
+                                         const ExtrusionOptions& options = {});
 
-// The room's six faces plus the given extrusions (top and sides each a surface).
+// An axis-aligned box (a cabinet, a bed) by the same metrology: the outline is the top's outline
+// as drawn, the click is on the floor below outline point 0; the box is the smallest rectangle
+// aligned with the room's x and z axes around the lifted outline. Errors as extrusionFromOutline.
+Expected<Extrusion> boxFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
+                                   const Vec2& heightClickPx, const std::string& keyForMessages,
+                                   const ExtrusionOptions& options = {});
+
+// A straight flight of stairs standing on the floor: `steps` steps of `riseM` and `runM`,
+// `widthM` wide, climbing along one room axis. The profile polygon (in the climb / up plane) is
+// extruded across the width with CGAL; every tread is a surface objects stand on.
+struct StairsSpec {
+  Vec2 basePx{0, 0};        // floor pixel at the middle of the bottom step's front edge
+  int steps = 0;            // >= 1
+  double riseM = 0;         // height of one step, > 0
+  double runM = 0;          // depth of one tread, > 0
+  double widthM = 0;        // across the flight, > 0
+  Vec3 climbWorld{0, 0, -1};  // unit room axis the stairs climb along (+-x or +-z)
+};
+Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& spec,
+                                   const std::string& keyForMessages);
+
+// The room's six faces plus the given extrusions (the up-looking faces and the rest each a
+// surface: "surface_<i>_top" supports objects, "surface_<i>_side").
 SceneGeometry buildSceneGeometry(const RoomBox& box, const std::vector<Extrusion>& extrusions);
 
 // Where an object stands: cast the pixel's ray onto the surfaces that support objects.

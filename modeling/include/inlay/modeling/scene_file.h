@@ -43,9 +43,19 @@ struct ShaftKeys {
 };
 
 struct SurfaceKeys {
-  std::string kind = "extrusion";
+  std::string kind = "extrusion";    // "extrusion" | "box" | "stairs"
+  // extrusion, box:
   std::vector<Vec2> outlinePx;       // closed outline around a horizontal top
   Vec2 heightClickPx{0, 0};          // a floor click straight below outlinePx[0]
+  std::optional<double> thicknessM;  // "thickness_m": a slab this thick; missing = to the floor
+  // stairs (a straight flight standing on the floor):
+  Vec2 basePx{0, 0};                 // "base_px": floor pixel, middle of the bottom step's front edge
+  int steps = 0;                     // "steps": >= 1
+  double riseM = 0;                  // "rise_m": height of one step
+  double runM = 0;                   // "run_m": depth of one tread
+  double widthM = 0;                 // "width_m": across the flight
+  std::string climbAxis = "-z";      // "climb_axis": "+x" | "-x" | "+z" | "-z" (default -z: away
+                                     // from the camera)
 };
 
 struct OccluderKeys {

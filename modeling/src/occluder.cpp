@@ -1,0 +1,266 @@
+#include "inlay/modeling/occluder.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+// After core.hpp: alphamat.hpp uses CV_EXPORTS_W without including what defines it.
+#include <opencv2/alphamat.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace inlay {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Rasterises strokes (pixel coordinates, centres at +0.5) into `mask` with value `v`.
+void drawStrokes(cv::Mat& mask, const std::vector<std::vector<Vec2>>& strokes, int radius,
+                 uchar v) {
+  auto toPt = [](const Vec2& p) {
+    return cv::Point(int(std::floor(p.x())), int(std::floor(p.y())));
+  };
+  for (const auto& s : strokes) {
+    if (s.size() == 1) cv::circle(mask, toPt(s[0]), radius, cv::Scalar(v), cv::FILLED);
+    for (size_t i = 1; i < s.size(); ++i)
+      cv::line(mask, toPt(s[i - 1]), toPt(s[i]), cv::Scalar(v), 2 * radius + 1, cv::LINE_8);
+  }
+}
+
+bool finiteStrokes(const std::vector<std::vector<Vec2>>& strokes) {
+  for (const auto& s : strokes)
+    for (const Vec2& p : s)
+      if (!p.allFinite() || std::abs(p.x()) > 1e7 || std::abs(p.y()) > 1e7) return false;
+  return true;
+}
+
+}  // namespace
+
+Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
+                                           const std::vector<std::vector<Vec2>>& fg,
+                                           const std::vector<std::vector<Vec2>>& bg,
+                                           const std::string& key, const MatteOptions& opt) {
+  const std::string fgKey = key + ".foreground_scribbles_px";
+  const std::string bgKey = key + ".background_scribbles_px";
+  INLAY_CHECK(photo.channels >= 3 && photo.width > 0 && photo.height > 0);
+  auto hasPoints = [](const std::vector<std::vector<Vec2>>& s) {
+    for (const auto& stroke : s)
+      if (!stroke.empty()) return true;
+    return false;
+  };
+  if (!hasPoints(fg)) return Error{"", fgKey, "is empty: scribble at least one stroke inside the object"};
+  if (!hasPoints(bg)) return Error{"", bgKey, "is empty: scribble at least one stroke around the object"};
+  if (!finiteStrokes(fg)) return Error{"", fgKey, "holds a point that is not a finite number"};
+  if (!finiteStrokes(bg)) return Error{"", bgKey, "holds a point that is not a finite number"};
+  const int W = photo.width, H = photo.height;
+  const int radius = std::max(0, opt.strokeRadiusPx);
+  cv::Mat fgMask(H, W, CV_8U, cv::Scalar(0)), bgMask(H, W, CV_8U, cv::Scalar(0));
+  drawStrokes(fgMask, fg, radius, 255);
+  drawStrokes(bgMask, bg, radius, 255);
+  const int fgCount = cv::countNonZero(fgMask), bgCount = cv::countNonZero(bgMask);
+  const int total = W * H;
+  if (fgCount == 0) return Error{"", fgKey, "no stroke falls inside the photo"};
+  if (bgCount == 0) return Error{"", bgKey, "no stroke falls inside the photo"};
+  cv::Mat both;
+  cv::bitwise_and(fgMask, bgMask, both);
+  const int overlap = cv::countNonZero(both);
+  if (fgCount >= total)
+    return Error{"", fgKey, "covers the whole photo: nothing is left for the background"};
+  if (bgCount >= total)
+    return Error{"", bgKey, "covers the whole photo: nothing is left for the object"};
+  if (fgCount - overlap == 0)
+    return Error{"", fgKey, "every foreground stroke is covered by background strokes"};
+  if (bgCount - overlap == 0)
+    return Error{"", bgKey, "every background stroke is covered by foreground strokes"};
+
+  // Work region: the strokes' bounding box, grown.
+  cv::Mat any;
+  cv::bitwise_or(fgMask, bgMask, any);
+  const cv::Rect strokesBox = cv::boundingRect(any);
+  const int mx = std::max(16, int(opt.marginFraction * strokesBox.width));
+  const int my = std::max(16, int(opt.marginFraction * strokesBox.height));
+  const cv::Rect roi = cv::Rect(strokesBox.x - mx, strokesBox.y - my, strokesBox.width + 2 * mx,
+                                strokesBox.height + 2 * my) &
+                       cv::Rect(0, 0, W, H);
+
+  // 8-bit sRGB BGR of the region (what grabCut's colour models and alphamat expect).
+  cv::Mat img(roi.height, roi.width, CV_8UC3);
+  for (int y = 0; y < roi.height; ++y)
+    for (int x = 0; x < roi.width; ++x) {
+      const float* p = photo.pixel(roi.x + x, roi.y + y);
+      auto enc = [](float v) { return cv::saturate_cast<uchar>(std::lround(255.f * linearToSrgb(v))); };
+      img.at<cv::Vec3b>(y, x) = cv::Vec3b(enc(p[2]), enc(p[1]), enc(p[0]));
+    }
+
+  const auto t0 = Clock::now();
+  cv::Mat gc(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
+  const cv::Mat fgR = fgMask(roi), bgR = bgMask(roi);
+  gc.setTo(cv::GC_FGD, fgR);
+  gc.setTo(cv::GC_BGD, bgR);
+  gc.setTo(cv::GC_PR_BGD, both(roi));  // contradicting strokes: left to the cut
+  // Undecided pixels: a background stroke that closes on itself is a loop around the object
+  // (GrabCut's rectangle): inside it "probably foreground", outside it sure background. Without
+  // a loop, "probably foreground" inside the foreground strokes' convex hull.
+  {
+    cv::Mat inside(roi.size(), CV_8U, cv::Scalar(0));
+    bool loop = false;
+    for (const auto& stroke : bg) {
+      if (stroke.size() < 3) continue;
+      const double closeGap = std::max(8.0, 4.0 * radius + 2.0);
+      if ((stroke.front() - stroke.back()).norm() > closeGap) continue;
+      std::vector<cv::Point> poly;
+      for (const Vec2& q : stroke)
+        poly.emplace_back(int(std::floor(q.x())) - roi.x, int(std::floor(q.y())) - roi.y);
+      cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));
+      loop = true;
+    }
+    if (!loop) {
+      std::vector<cv::Point> pts;
+      cv::findNonZero(fgR, pts);
+      if (pts.size() >= 3) {
+        std::vector<cv::Point> hull;
+        cv::convexHull(pts, hull);
+        cv::fillConvexPoly(inside, hull, cv::Scalar(255));
+      }
+    }
+    cv::Mat undecided = gc == cv::GC_PR_BGD;
+    gc.setTo(cv::GC_PR_FGD, undecided & inside);
+    if (loop) gc.setTo(cv::GC_BGD, undecided & ~inside);
+  }
+  // A foreground stroke drawn across a gap (between table legs) crosses background: its pixels
+  // whose colour the background strokes show too are left to the cut instead of forced.
+  {
+    std::vector<cv::Vec3b> bgColours;
+    for (int y = 0; y < roi.height; ++y)
+      for (int x = 0; x < roi.width; ++x)
+        if (bgR.at<uchar>(y, x) && !both(roi).at<uchar>(y, x)) bgColours.push_back(img.at<cv::Vec3b>(y, x));
+    const size_t stride = std::max<size_t>(1, bgColours.size() / 2000);
+    const int maxDist2 = opt.ambiguousColourDistance * opt.ambiguousColourDistance;
+    for (int y = 0; y < roi.height; ++y)
+      for (int x = 0; x < roi.width; ++x) {
+        if (gc.at<uchar>(y, x) != cv::GC_FGD) continue;
+        const cv::Vec3b c = img.at<cv::Vec3b>(y, x);
+        for (size_t k = 0; k < bgColours.size(); k += stride) {
+          const cv::Vec3b& b = bgColours[k];
+          const int d0 = c[0] - b[0], d1 = c[1] - b[1], d2 = c[2] - b[2];
+          if (d0 * d0 + d1 * d1 + d2 * d2 <= maxDist2) {
+            gc.at<uchar>(y, x) = cv::GC_PR_FGD;
+            break;
+          }
+        }
+      }
+  }
+  cv::Mat bgdModel, fgdModel;
+  cv::grabCut(img, gc, cv::Rect(), bgdModel, fgdModel, std::max(1, opt.grabCutIterations),
+              cv::GC_INIT_WITH_MASK);
+  cv::Mat seg = (gc == cv::GC_FGD) | (gc == cv::GC_PR_FGD);
+  OccluderMatte out;
+  out.segmentSeconds = secondsSince(t0);
+  if (cv::countNonZero(seg) == 0)
+    return Error{"", fgKey, "the segmentation keeps nothing of the object"};
+
+  // Trimap: sure inside (eroded cut and strokes), sure outside (beyond the dilated cut and the
+  // background strokes), unknown in the band between.
+  const auto t1 = Clock::now();
+  const int band = std::max(1, opt.bandPx);
+  const cv::Mat kernel =
+      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * band + 1, 2 * band + 1));
+  cv::Mat inner, outer;
+  cv::erode(seg, inner, kernel);
+  cv::dilate(seg, outer, kernel);
+  cv::Mat trimap(roi.size(), CV_8U, cv::Scalar(128));
+  trimap.setTo(0, outer == 0);
+  trimap.setTo(255, inner);
+  // Background strokes stay sure; foreground strokes only where the cut's core holds them (a
+  // stroke drawn across a gap, e.g. between table legs, is left to the matting there).
+  trimap.setTo(0, bgR & ~both(roi));
+  cv::Mat alpha8;
+  if (cv::countNonZero(trimap == 128) > 0 && cv::countNonZero(trimap == 255) > 0 &&
+      cv::countNonZero(trimap == 0) > 0) {
+    cv::alphamat::infoFlow(img, trimap, alpha8);
+  } else {
+    alpha8 = seg.clone();
+  }
+  out.matteSeconds = secondsSince(t1);
+
+  out.alphaPx = ImageF(W, H, 1, 0.f);
+  int x0 = W, y0 = H, x1 = -1, y1 = -1;
+  for (int y = 0; y < roi.height; ++y)
+    for (int x = 0; x < roi.width; ++x) {
+      float a = alpha8.at<uchar>(y, x) / 255.f;
+      const uchar t = trimap.at<uchar>(y, x);
+      if (t == 0) a = 0.f;
+      if (t == 255) a = 1.f;
+      out.alphaPx.at(roi.x + x, roi.y + y) = a;
+      if (a > 0.02f) {
+        x0 = std::min(x0, roi.x + x), x1 = std::max(x1, roi.x + x);
+        y0 = std::min(y0, roi.y + y), y1 = std::max(y1, roi.y + y);
+      }
+    }
+  if (x1 < 0) return Error{"", fgKey, "the matte keeps nothing of the object"};
+  out.boxPx = {x0, y0, x1 + 1, y1 + 1};
+  // Lowest point: the lowest row with coverage >= 0.5, its middle such pixel; the edge crosses
+  // that pixel about `alpha` below its top (a horizontal edge covering it that much).
+  for (int y = y1; y >= y0; --y) {
+    std::vector<int> xs;
+    for (int x = x0; x <= x1; ++x)
+      if (out.alphaPx.at(x, y) >= 0.5f) xs.push_back(x);
+    if (xs.empty()) continue;
+    const int x = xs[xs.size() / 2];
+    out.lowestPx = Vec2(x + 0.5, y + double(out.alphaPx.at(x, y)));
+    return out;
+  }
+  return Error{"", fgKey, "the matte has no pixel at least half covered"};
+}
+
+Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte, int groupIndex,
+                               const std::string& key) {
+  const Ray r = camera.rayThroughPixel(matte.lowestPx);
+  if (!(r.direction.y() < -1e-9))
+    return Error{"", key,
+                 "the matte's lowest point is at or above the horizon: it cannot stand on the "
+                 "floor (scribble the object down to where it meets the floor)"};
+  const Vec3 foot = r.at(-r.origin.y() / r.direction.y());
+  const Vec3 forward = camera.worldFromCamera * Vec3(0, 0, -1);
+  Vec3 normal(-forward.x(), 0, -forward.z());
+  if (!(normal.norm() > 1e-6))
+    return Error{"", key, "the camera looks straight down: a vertical card cannot face it"};
+  normal.normalize();
+  const auto& b = matte.boxPx;
+  const Vec2 corners[4] = {{double(b[0]), double(b[3])}, {double(b[2]), double(b[3])},
+                           {double(b[2]), double(b[1])}, {double(b[0]), double(b[1])}};
+  Surface s;
+  s.kind = SurfaceKind::OccluderCard;
+  s.name = "occluder_" + std::to_string(groupIndex) + "_card";
+  s.supportsObjects = false;
+  s.groupIndex = groupIndex;
+  const uint32_t base = 0;
+  for (const Vec2& c : corners) {
+    const Ray rc = camera.rayThroughPixel(c);
+    const double den = rc.direction.dot(normal);
+    const double t = std::abs(den) > 1e-12 ? (foot - rc.origin).dot(normal) / den : -1.0;
+    if (!(t > 0) || !std::isfinite(t))
+      return Error{"", key, "a corner of the matte's box does not meet the card's plane"};
+    s.meshWorld.positions.push_back(rc.at(t).cast<float>());
+    s.meshWorld.normals.push_back(normal.cast<float>());
+  }
+  // Bottom-left, bottom-right, top-right, top-left as seen: counter-clockwise seen from the
+  // camera side, so the winding's normal faces the camera.
+  s.meshWorld.triangles.push_back({base, base + 1, base + 2});
+  s.meshWorld.triangles.push_back({base, base + 2, base + 3});
+  const Vec3 p0 = s.meshWorld.positions[0].cast<double>(), p1 = s.meshWorld.positions[1].cast<double>(),
+             p2 = s.meshWorld.positions[2].cast<double>();
+  if ((p1 - p0).cross(p2 - p0).dot(normal) < 0)
+    for (auto& tri : s.meshWorld.triangles) std::swap(tri[1], tri[2]);
+  auto alpha = std::make_shared<CardAlpha>();
+  alpha->camera = camera;
+  alpha->alphaPx = matte.alphaPx;
+  s.cardAlpha = std::move(alpha);
+  return s;
+}
+
+}  // namespace inlay

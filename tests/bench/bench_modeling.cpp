@@ -1,0 +1,137 @@
+// Extra geometry of a scene file, timed: every surface (extrusion, box, stairs) built `repeat`
+// times (best time), every occluder matted once (grabCut and matting seconds, the alpha written
+// as an 8-bit PGM). Needs the scene's camera keys (focal_px and vanishing_points_px, as the
+// harness's assisted mode writes them). One JSON object per line on stdout; bench_modeling.py
+// turns them into CSV against the ground truth.
+//
+// usage: bench_modeling SCENE.json OUT_DIR [repeat]
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image_io.h"
+#include "inlay/modeling/occluder.h"
+#include "inlay/modeling/scene_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+using namespace inlay;
+using json = nlohmann::json;
+
+namespace {
+double msSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: bench_modeling SCENE.json OUT_DIR [repeat]\n");
+    return 2;
+  }
+  const std::string outDir = argv[2];
+  const int repeat = argc > 3 ? std::max(1, std::atoi(argv[3])) : 20;
+  auto loaded = loadSceneFile(argv[1]);
+  if (!loaded) {
+    std::fprintf(stderr, "%s\n", loaded.error().message().c_str());
+    return 1;
+  }
+  const SceneDoc& doc = loaded->doc;
+  auto photo = loadImage(doc.photoResolved);
+  if (!photo) {
+    std::fprintf(stderr, "%s\n", photo.error().message().c_str());
+    return 1;
+  }
+  if (!doc.camera.vanishingPointsPx) {
+    std::fprintf(stderr, "the scene needs camera.vanishing_points_px\n");
+    return 1;
+  }
+  VanishingInput in;
+  in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
+  in.focalPx = doc.camera.focalPx;
+  in.principalPx = doc.camera.principalPx;
+  in.widthPx = photo->linearRgb.width;
+  in.heightPx = photo->linearRgb.height;
+  in.heightM = doc.camera.heightM.value_or(1.6);
+  auto camera = cameraFromVanishingPoints(in);
+  if (!camera) {
+    std::fprintf(stderr, "%s\n", camera.error().message().c_str());
+    return 1;
+  }
+  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+    const SurfaceKeys& s = doc.surfaces[i];
+    const std::string key = "surfaces[" + std::to_string(i) + "]";
+    ExtrusionOptions eo;
+    eo.thicknessM = s.thicknessM.value_or(0.0);
+    double best = 1e300;
+    Expected<Extrusion> ex = Error{"", key, "not built"};
+    for (int r = 0; r < repeat; ++r) {
+      const auto t = std::chrono::steady_clock::now();
+      if (s.kind == "box") {
+        ex = boxFromOutline(*camera, s.outlinePx, s.heightClickPx, key, eo);
+      } else if (s.kind == "stairs") {
+        StairsSpec st;
+        st.basePx = s.basePx, st.steps = s.steps, st.riseM = s.riseM, st.runM = s.runM,
+        st.widthM = s.widthM;
+        const double sign = s.climbAxis[0] == '-' ? -1.0 : 1.0;
+        st.climbWorld = s.climbAxis[1] == 'x' ? Vec3(sign, 0, 0) : Vec3(0, 0, sign);
+        ex = stairsFromSpec(*camera, st, key);
+      } else {
+        ex = extrusionFromOutline(*camera, s.outlinePx, s.heightClickPx, key, eo);
+      }
+      best = std::min(best, msSince(t));
+    }
+    json line{{"what", "surface"}, {"index", i}, {"kind", s.kind}, {"ms", best}};
+    if (!ex) {
+      line["error"] = ex.error().message();
+    } else {
+      line["height_m"] = ex->heightM;
+      json top = json::array(), floorPx = json::array();
+      for (const Vec3& p : ex->topOutlineWorld) {
+        top.push_back({p.x(), p.y(), p.z()});
+        const auto px = camera->project(Vec3(p.x(), 0, p.z()));
+        floorPx.push_back(px ? json{px->x(), px->y()} : json(nullptr));
+      }
+      line["top_world"] = top;  // Inlay's world: camera at (0, h, 0)
+      line["floor_corners_px"] = floorPx;
+      line["up_triangles"] = ex->upWorld.triangles.size();
+    }
+    std::cout << line.dump() << std::endl;
+  }
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const std::string key = "occluders[" + std::to_string(i) + "]";
+    const auto t = std::chrono::steady_clock::now();
+    auto m = matteFromScribbles(photo->linearRgb, doc.occluders[i].foregroundScribblesPx,
+                                doc.occluders[i].backgroundScribblesPx, key);
+    const double ms = msSince(t);
+    json line{{"what", "occluder"}, {"index", i}, {"ms", ms}};
+    if (!m) {
+      line["error"] = m.error().message();
+      std::cout << line.dump() << std::endl;
+      continue;
+    }
+    line["segment_ms"] = 1e3 * m->segmentSeconds;
+    line["matte_ms"] = 1e3 * m->matteSeconds;
+    line["lowest_px"] = {m->lowestPx.x(), m->lowestPx.y()};
+    line["box_px"] = m->boxPx;
+    auto card = occluderCard(*camera, *m, int(i), key);
+    if (card) {
+      json corners = json::array();
+      for (const auto& p : card->meshWorld.positions) corners.push_back({p.x(), p.y(), p.z()});
+      line["card_world"] = corners;
+    } else {
+      line["card_error"] = card.error().message();
+    }
+    const std::string pgm = outDir + "/occluder_" + std::to_string(i) + "_alpha.pgm";
+    std::ofstream f(pgm, std::ios::binary);
+    f << "P5\n" << m->alphaPx.width << " " << m->alphaPx.height << "\n255\n";
+    for (float a : m->alphaPx.data) f.put(char(uint8_t(std::lround(255.f * std::clamp(a, 0.f, 1.f)))));
+    line["alpha_pgm"] = pgm;
+    std::cout << line.dump() << std::endl;
+  }
+  return 0;
+}

@@ -1,0 +1,187 @@
+// Occluder mattes from scribbles (grabCut + alphamat) and the cards they stand as.
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/image_io.h"
+#include "inlay/modeling/occluder.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <random>
+
+namespace inlay {
+namespace {
+
+// A known matte: an ellipse with a 3 px soft edge; foreground orange with texture, background a
+// blue-green gradient with noise. photo = alpha F + (1 - alpha) B in linear RGB.
+struct Synthetic {
+  ImageF photo{160, 120, 3};
+  ImageF alpha{160, 120, 1};
+  Synthetic() {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> noise(-0.03f, 0.03f);
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 160; ++x) {
+        const double dx = (x + 0.5 - 80) / 40.0, dy = (y + 0.5 - 62) / 30.0;
+        const double r = std::sqrt(dx * dx + dy * dy);
+        const double distPx = (r - 1.0) * 35.0;  // roughly pixels outside the rim
+        const float a = float(std::clamp(0.5 - distPx / 3.0, 0.0, 1.0));
+        alpha.at(x, y) = a;
+        const Vec3 f(0.7 + noise(rng), 0.35 + noise(rng), 0.08);
+        const Vec3 b(0.05 + 0.001 * x + noise(rng), 0.2 + 0.001 * y, 0.45 + noise(rng));
+        photo.setRgb(x, y, a * f + (1 - a) * b);
+      }
+  }
+  std::vector<std::vector<Vec2>> fg() const { return {{{60, 62}, {100, 62}}, {{80, 45}, {80, 80}}}; }
+  std::vector<std::vector<Vec2>> bg() const {
+    return {{{20, 15}, {140, 15}, {140, 110}, {20, 110}, {20, 15}}};
+  }
+};
+
+TEST(Occluder, RecoversAKnownSoftMatte) {
+  const Synthetic s;
+  const auto m = matteFromScribbles(s.photo, s.fg(), s.bg(), "occluders[0]");
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  double inter = 0, uni = 0, absErr = 0, edgeErr = 0;
+  int edge = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 160; ++x) {
+      const float a = m->alphaPx.at(x, y), t = s.alpha.at(x, y);
+      inter += (a >= 0.5f && t >= 0.5f);
+      uni += (a >= 0.5f || t >= 0.5f);
+      absErr += std::abs(a - t);
+      if (t > 0.02f && t < 0.98f) edgeErr += std::abs(a - t), ++edge;
+    }
+  EXPECT_GT(inter / uni, 0.97);
+  EXPECT_LT(absErr / (160 * 120), 0.02);
+  ASSERT_GT(edge, 0);
+  EXPECT_LT(edgeErr / edge, 0.25);  // soft edge pixels: close to the truth, not a hard cut
+  // The box and lowest point follow the ellipse (bottom at y = 62 + 30 = 92).
+  EXPECT_NEAR(m->lowestPx.y(), 92.0, 1.5);
+  EXPECT_NEAR(m->lowestPx.x(), 80.0, 3.0);
+  EXPECT_NEAR(m->boxPx[0], 40, 5);
+  EXPECT_NEAR(m->boxPx[2], 120, 5);
+}
+
+TEST(Occluder, BadScribblesAreRefusedWithTheKey) {
+  const Synthetic s;
+  auto expectError = [](const Expected<OccluderMatte>& e, const std::string& key, const std::string& words) {
+    ASSERT_FALSE(e.ok());
+    EXPECT_NE(e.error().message().find(key), std::string::npos) << e.error().message();
+    EXPECT_NE(e.error().message().find(words), std::string::npos) << e.error().message();
+  };
+  expectError(matteFromScribbles(s.photo, {}, s.bg(), "occluders[1]"),
+              "occluders[1].foreground_scribbles_px", "empty");
+  expectError(matteFromScribbles(s.photo, {{}}, s.bg(), "occluders[1]"),
+              "occluders[1].foreground_scribbles_px", "empty");
+  expectError(matteFromScribbles(s.photo, s.fg(), {}, "occluders[0]"),
+              "occluders[0].background_scribbles_px", "empty");
+  // Strokes entirely outside the photo.
+  expectError(matteFromScribbles(s.photo, {{{-50, -50}, {-40, -60}}}, s.bg(), "occluders[0]"),
+              "occluders[0].foreground_scribbles_px", "inside the photo");
+  // Foreground strokes covering the whole photo.
+  MatteOptions wide;
+  wide.strokeRadiusPx = 200;
+  expectError(matteFromScribbles(s.photo, {{{80, 60}}}, {{{10, 10}}}, "occluders[0]", wide),
+              "occluders[0].foreground_scribbles_px", "whole photo");
+  std::vector<std::vector<Vec2>> rows;  // background strokes 5 px thick every 4 rows
+  for (int y = 0; y <= 124; y += 4) rows.push_back({{-5.0, y + 0.5}, {165.0, y + 0.5}});
+  expectError(matteFromScribbles(s.photo, {{{10, 10}}}, rows, "occluders[0]"),
+              "occluders[0].background_scribbles_px", "whole photo");
+  expectError(matteFromScribbles(s.photo, s.fg(), {{{std::nan(""), 3}}}, "occluders[0]"),
+              "occluders[0].background_scribbles_px", "finite");
+}
+
+Camera pitchedCamera() {
+  Camera c = levelCamera(160, 120, 130, 1.5);
+  c.worldFromCamera = Eigen::AngleAxisd(-15 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  return c;
+}
+
+TEST(Occluder, CardStandsAtTheFloorDepthOfTheLowestPoint) {
+  const Camera c = pitchedCamera();
+  // A matte whose lowest point projects from the floor point (0.1, 0, -3).
+  const Vec3 foot(0.1, 0, -3.0);
+  const Vec2 footPx = *c.project(foot);
+  OccluderMatte m;
+  m.alphaPx = ImageF(160, 120, 1, 0.f);
+  const int x0 = int(footPx.x()) - 15, x1 = int(footPx.x()) + 15, y1 = int(footPx.y());
+  for (int y = y1 - 40; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) m.alphaPx.at(x, y) = 1.f;
+  m.boxPx = {x0, y1 - 40, x1 + 1, y1 + 1};
+  m.lowestPx = footPx;
+  const auto card = occluderCard(c, m, 2, "occluders[2]");
+  ASSERT_TRUE(card.ok()) << card.error().message();
+  EXPECT_EQ(card->kind, SurfaceKind::OccluderCard);
+  EXPECT_EQ(card->name, "occluder_2_card");
+  EXPECT_FALSE(card->supportsObjects);
+  ASSERT_EQ(card->meshWorld.positions.size(), 4u);
+  // Vertical, facing the camera (which looks along -z here): every corner at the foot's depth.
+  for (const auto& p : card->meshWorld.positions) EXPECT_NEAR(p.z(), -3.0, 1e-4);
+  const auto& P = card->meshWorld.positions;
+  const auto& t0 = card->meshWorld.triangles[0];
+  const Vec3 n = (P[t0[1]] - P[t0[0]]).cross(P[t0[2]] - P[t0[0]]).cast<double>().normalized();
+  EXPECT_GT(n.z(), 0.999);
+  // The card's bottom edge is near the floor, its alpha is the matte's.
+  double lowY = 1e9;
+  for (const auto& p : P) lowY = std::min(lowY, double(p.y()));
+  EXPECT_NEAR(lowY, 0.0, 0.03);
+  ASSERT_TRUE(card->cardAlpha);
+  EXPECT_NEAR(card->cardAlpha->alphaAt(Vec3(0.1, 0.2, -3.0)), 1.0, 1e-6);
+  EXPECT_NEAR(card->cardAlpha->alphaAt(Vec3(1.5, 0.2, -3.0)), 0.0, 1e-6);
+  // A matte whose lowest point is above the horizon cannot stand on the floor.
+  OccluderMatte sky = m;
+  sky.lowestPx = Vec2(80, 5);
+  const auto bad = occluderCard(c, sky, 0, "occluders[0]");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message().find("horizon"), std::string::npos);
+}
+
+// d6_behind_table: the table's matte from the harness's scribbles against labels.png == 7.
+TEST(Occluder, TableMatteOfTheOcclusionScene) {
+  INLAY_REQUIRE_SHARED();
+  const std::string dir = test::sharedDir() + "/scenes/d6_behind_table/";
+  const auto photoFile = loadImage(dir + "photo.png");
+  ASSERT_TRUE(photoFile.ok()) << photoFile.error().message();
+  const ImageF* photo = &photoFile->linearRgb;
+
+  const auto labels = loadImage(dir + "labels.png");
+  ASSERT_TRUE(labels.ok());
+  const ImageF& L = labels->linearRgb;
+  // Scribbles as the harness makes them: three strokes across the table (at 25, 50 and 80% of
+  // its height, crossing the gaps between the legs), one loop 20 px around it.
+  int x0 = L.width, x1 = 0, y0 = L.height, y1 = 0;
+  auto isTable = [&](int x, int y) { return std::lround(linearToSrgb(L.at(x, y, 0)) * 255) == 7; };
+  for (int y = 0; y < L.height; ++y)
+    for (int x = 0; x < L.width; ++x)
+      if (isTable(x, y)) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  ASSERT_LT(x0, x1);
+  std::vector<std::vector<Vec2>> fg;
+  for (double q : {0.25, 0.5, 0.8}) {
+    const int y = y0 + int(q * (y1 - y0));
+    int a = -1, b = -1;
+    for (int x = x0; x <= x1; ++x)
+      if (isTable(x, y)) b = x, a = a < 0 ? x : a;
+    if (a >= 0 && b - a > 10) fg.push_back({{a + 4.5, y + 0.5}, {b - 3.5, y + 0.5}});
+  }
+  ASSERT_FALSE(fg.empty());
+  const std::vector<std::vector<Vec2>> bg = {{{x0 - 20.0, y0 - 20.0}, {x1 + 20.0, y0 - 20.0},
+                                              {x1 + 20.0, y1 + 20.0}, {x0 - 20.0, y1 + 20.0},
+                                              {x0 - 20.0, y0 - 20.0}}};
+  const auto m = matteFromScribbles(*photo, fg, bg, "occluders[0]");
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  double inter = 0, uni = 0, table = 0;
+  for (int y = 0; y < L.height; ++y)
+    for (int x = 0; x < L.width; ++x) {
+      const bool a = m->alphaPx.at(x, y) >= 0.5f, t = isTable(x, y);
+      inter += a && t;
+      uni += a || t;
+      table += t;
+    }
+  // What hides objects must cover the table (recall); the floor seen between the legs is still
+  // taken in (IoU 0.39 with these strokes, 0.51 with the harness's: see the bench).
+  EXPECT_GT(inter / table, 0.97);
+  EXPECT_GT(inter / uni, 0.35);
+  EXPECT_NEAR(m->lowestPx.y(), y1 + 1.0, 4.0);
+}
+
+}  // namespace
+}  // namespace inlay
