@@ -120,6 +120,35 @@ TEST(Session, FramesFollowTheScheduleAndMatchTheTracer) {
   }
 }
 
+// Edits applied by the render thread at a safe point: after a scene and two quick moves, the
+// final frame is the tracer's render of the object at its last position.
+TEST(Session, MovesEndAtTheLastTransform) {
+  const int w = 48, h = 36;
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 8;
+  opt.seed = 5;
+  RenderScene scene = sessionScene(w, h);
+  RenderSession session(&sink, opt);
+  session.setScene(scene);
+  session.setObjectTransform(0, test::translation(Vec3(-0.6, 0.4, -2.2)));
+  const Mat4 last = test::translation(Vec3(0.5, 0.5, -2.8));
+  const uint64_t v = session.setObjectTransform(0, last);
+  ASSERT_TRUE(session.waitUntilDone(60));
+  const auto frames = sink.frames();
+  ASSERT_FALSE(frames.empty());
+  const RenderFrame& fin = *frames.back().frame;
+  EXPECT_EQ(fin.sceneVersion, v);
+  EXPECT_TRUE(fin.final);
+  scene.objects[0].worldFromObject = last;
+  PathTracer tracer(scene, opt.tracer);
+  DifferentialBuffers b(w, h);
+  ASSERT_TRUE(tracer.render(b, 0, 8, opt.seed));
+  const ImageF ref = b.meanWith();
+  for (size_t i = 0; i < ref.data.size(); ++i)
+    ASSERT_NEAR(fin.withObjects.data[i], ref.data[i], 1e-4 * (1 + std::abs(ref.data[i])));
+}
+
 // Focused sampling: pixels an object has not touched take part in every 4th wave only. Pixels
 // the object covers render exactly as without focus (same samples); quiet ones get fewer.
 TEST(Session, FocusOnChangesKeepsTheObjectPixelsAndSavesTime) {

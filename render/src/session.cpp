@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <map>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -138,9 +139,10 @@ struct RenderSession::Impl {
   std::condition_variable wake;    // the render thread waits on it
   std::condition_variable doneCv;  // waitUntilDone waits on it
   SessionOptions options;
-  std::shared_ptr<const RenderScene> scene;  // as last set (transforms: see `moves`)
-  std::vector<std::pair<size_t, Mat4>> movesSinceScene;  // applied after every rebuild
-  std::vector<std::pair<size_t, Mat4>> pendingMoves;     // not yet given to the tracer
+  std::shared_ptr<const RenderScene> scene;  // as last set (transforms: see the moves)
+  // Latest transform per object index (a drag sends many; only the last one matters).
+  std::map<size_t, Mat4> movesSinceScene;  // applied after every rebuild
+  std::map<size_t, Mat4> pendingMoves;     // not yet given to the tracer
   bool rebuild = false;
   uint64_t version = 0;
   uint64_t doneVersion = 0;  // last version finished (target, time limit or cancel())
@@ -173,7 +175,7 @@ void RenderSession::Impl::run() {
     const uint64_t v = version;
     const bool rebuildNow = rebuild || !tracer;
     rebuild = false;
-    std::vector<std::pair<size_t, Mat4>> moves;
+    std::map<size_t, Mat4> moves;
     if (rebuildNow)
       moves = movesSinceScene;
     else
@@ -314,8 +316,8 @@ uint64_t RenderSession::setScene(const RenderScene& scene) {
 
 uint64_t RenderSession::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  impl_->movesSinceScene.emplace_back(index, worldFromObject);
-  impl_->pendingMoves.emplace_back(index, worldFromObject);
+  impl_->movesSinceScene[index] = worldFromObject;
+  impl_->pendingMoves[index] = worldFromObject;
   impl_->token.cancel();
   const uint64_t v = ++impl_->version;
   impl_->wake.notify_all();
