@@ -144,7 +144,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
 
   // Per channel planes (row-major, W x H).
   struct Plane {
-    std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn;
+    std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn;
   };
   std::vector<Plane> P(3);
   std::vector<float> mx(N, 0.f), my(N, 0.f);  // mask on the edge to the right / below
@@ -175,7 +175,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
     p.x = p.x0;
     p.y.assign(N, 0.f);
     p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.q.assign(N, 0.f), p.ly.assign(N, 0.f);
-    p.gf.assign(N, 0.f), p.gfn.assign(N, 0.f);
+    p.gf.assign(N, 0.f), p.gfn.assign(N, 0.f), p.lx.assign(N, 0.f), p.lxn.assign(N, 0.f);
   }
   // |grad B|^2 over the three channels, per edge.
   forRows(H, [&](int y) {
@@ -209,14 +209,8 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
     if (y + 1 < H) s += u[i + size_t(W)] - u[i];
     return s;
   };
-  // Gradient of the smooth part at `xs` into `out` (q: scratch for Gamma x - B).
-  auto gradF = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
-    forRows(H, [&](int y) {
-      for (int x = 0; x < W; ++x) {
-        const size_t i = size_t(y) * W + x;
-        p.q[i] = p.G[i] * xs[i] - p.B[i];
-      }
-    });
+  // Gradient of the smooth part at `xs` into `out`, given p.q = Gamma xs - B.
+  auto gradFfromQ = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
     forRows(H, [&](int y) {
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
@@ -228,6 +222,10 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
         out[i] = g1x2 * sm - g3x2 * p.G[i] * lap(p.q, i, x, y);
       }
     });
+  };
+  auto gradF = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
+    for (size_t i = 0; i < N; ++i) p.q[i] = p.G[i] * xs[i] - p.B[i];
+    gradFfromQ(p, xs, out);
   };
   auto objective = [&]() {
     double f = 0;
@@ -263,7 +261,12 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
 
   Decomposition out;
   auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
-  for (auto& p : P) gradF(p, p.x, p.gf);
+  for (auto& p : P) {
+    gradF(p, p.x, p.gf);
+    forRows(H, [&](int y) {
+      for (int x = 0; x < W; ++x) p.lx[size_t(y) * W + x] = lap(p.x, size_t(y) * W + x, x, y);
+    });
+  }
   const int every = std::max(1, opt.historyEvery);
   double primal = INFINITY, dual = INFINITY;
   int it = 0;
@@ -286,11 +289,12 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
       forRows(H, [&](int y) {
         for (int x = 0; x < W; ++x) {
           const size_t i = size_t(y) * W + x;
-          const float lb = 2 * lap(p.xn, i, x, y) - lap(p.x, i, x, y);
-          p.yn[i] = std::clamp(p.y[i] + sigmaF * lb, -1.f, 1.f);
+          p.lxn[i] = lap(p.xn, i, x, y);
+          p.yn[i] = std::clamp(p.y[i] + sigmaF * (2 * p.lxn[i] - p.lx[i]), -1.f, 1.f);
+          p.q[i] = p.G[i] * p.xn[i] - p.B[i];
         }
       });
-      gradF(p, p.xn, p.gfn);
+      gradFfromQ(p, p.xn, p.gfn);
       if (record) {
         // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
         // term's gradient change (Condat-Vu).
@@ -301,7 +305,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
             const size_t i = size_t(y) * W + x;
             const double dly = p.ly[i] - lap(p.yn, i, x, y);
             const double rp = (p.x[i] - p.xn[i]) / tau - dly - (p.gf[i] - p.gfn[i]);
-            const double rd = (p.y[i] - p.yn[i]) / sigma - (lap(p.x, i, x, y) - lap(p.xn, i, x, y));
+            const double rd = (p.y[i] - p.yn[i]) / sigma - (p.lx[i] - p.lxn[i]);
             sp += rp * rp, sd += rd * rd;
           }
           ps[size_t(y)] = sp, ds[size_t(y)] = sd;
@@ -311,6 +315,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
       std::swap(p.x, p.xn);
       std::swap(p.y, p.yn);
       std::swap(p.gf, p.gfn);
+      std::swap(p.lx, p.lxn);
     }
     out.iterations = it;
     if (record) {

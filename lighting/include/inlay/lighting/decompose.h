@@ -61,7 +61,7 @@ struct DecomposeOptions {
   // each times its step (so in units of rho and of the dual variable in [-1,1]), both fall
   // below this.
   double tolerance = 1e-4;
-  int historyEvery = 5;  // record objective and residuals every n iterations (and the last)
+  int historyEvery = 10;  // record objective and residuals every n iterations (and the last)
   const CancelToken* cancel = nullptr;
 };
 
