@@ -47,6 +47,8 @@ Render options:
   --threads T             threads (default: all cores)
   --layers FILE.exr       also write linear layers: composite, with_objects, without_objects, mask
   --progress-csv FILE     one row per progressive update: seconds, spp, estimated error
+  --no-focus              sample every pixel equally (default: pixels the objects do not
+                          change are revisited only every fourth wave)
   --quiet                 no progress on stderr
 
 The scene file format is described in README.md (keys: photo, camera, layout, lights, surfaces,
@@ -86,6 +88,7 @@ struct Args {
   std::optional<int> spp, seed, threads;
   std::optional<double> seconds;
   bool quiet = false;
+  bool noFocus = false;
 };
 
 template <class T>
@@ -141,6 +144,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       }
     } else if (s == "--quiet" || s == "-q") {
       a.quiet = true;
+    } else if (s == "--no-focus") {
+      a.noFocus = true;
     } else if (!s.empty() && s[0] == '-' && s != "-") {
       return "unknown option '" + s + "'";
     } else if (a.command.empty()) {
@@ -250,6 +255,9 @@ int commandRender(const std::string& scenePath, const Args& a) {
   so.seed = uint32_t(a.seed.value_or(int(ps.doc.render.seed)));
   so.threads = a.threads.value_or(0);
   so.startDivider = 1;  // no preview in batch mode
+  // Samples go where the objects change the photo; untouched pixels are revisited every fourth
+  // wave (render/session.h).
+  so.focusOnChanges = !a.noFocus;
   std::ofstream csv;
   if (!a.progressCsv.empty()) {
     csv.open(a.progressCsv);
