@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""Extra geometry against the ground truth: table tops and occluder mattes.
+
+For each room with a table (d3_table_cube, d6_behind_table, ...) the harness writes the assisted
+scene file (table outline and height click; occluder scribbles where the object stands behind the
+table); build/tests/bench/bench_modeling times the extrusion (best of N) and the matting and
+reports the table top and the matte; this script compares them with truth.json and labels.png
+(== 7, the table) and writes OUT/bench_modeling.csv. With --render INLAY_CLI_DIR it also renders
+each scene with `harness.py run` and adds the harness's scores plus the composite's RMSE in a
+band of 4 px around the table's outline inside the object's neighbourhood (the occlusion edge).
+
+usage: bench_modeling.py BUILD_DIR [--out DIR] [--repeat N] [--render] [--seconds S]
+"""
+import csv, glob, json, os, subprocess, sys
+
+import cv2
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def main():
+    a = sys.argv[1:]
+    if not a:
+        print(__doc__)
+        return 2
+    build = os.path.abspath(a[0])
+    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    repeat = opt("--repeat", "50")
+    seconds = opt("--seconds", "40")
+    shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
+    sdir = os.path.join(shared, "scenes")
+    harness = os.path.join(shared, "tools", "harness.py")
+    if not os.path.isdir(sdir):
+        print("skipped: no ../shared/scenes")
+        return 0
+    os.makedirs(out, exist_ok=True)
+    tool = os.path.join(build, "tests", "bench", "bench_modeling")
+    rows = []
+    for name in sorted(os.listdir(sdir)):
+        tpath = os.path.join(sdir, name, "truth.json")
+        if not os.path.isfile(tpath):
+            continue
+        t = json.load(open(tpath))
+        if not t.get("table"):
+            continue
+        scene = os.path.join(sdir, name)
+        sj = os.path.join(out, name + ".json")
+        subprocess.run([sys.executable, harness, "scene", scene, sj, "--mode", "assisted"], check=True)
+        work = os.path.join(out, name)
+        os.makedirs(work, exist_ok=True)
+        lines = subprocess.run([tool, sj, work, repeat], check=True, capture_output=True, text=True).stdout
+        cam = t["camera"]
+        pos = np.array([cam["position"][0], 0.0, cam["position"][2]])
+        tb = t["table"]
+        for line in lines.splitlines():
+            r = json.loads(line)
+            row = {"scene": name, "what": r["what"], "index": r["index"], "ms": round(r["ms"], 4)}
+            if "error" in r:
+                row["error"] = r["error"]
+            elif r["what"] == "surface":
+                h = r["height_m"]
+                row["height_m"] = round(h, 4)
+                row["height_true_m"] = tb["top_height"]
+                row["height_rel_err"] = round(abs(h / tb["top_height"] - 1), 5)
+                truth_floor = [np.array(b["pixel"]) for b in tb["bbox_corners"] if b["world"][1] == 0.0]
+                truth_top = [np.array(c["world"]) - pos for c in tb["top_surface"]["corners"]]
+                px = [min(np.linalg.norm(np.array(p) - q) for q in truth_floor) for p in r["floor_corners_px"]]
+                wm = [min(np.linalg.norm(np.array(p) - q) for q in truth_top) for p in r["top_world"]]
+                row["floor_corner_px_err_max"] = round(max(px), 3)
+                row["top_corner_m_err_max"] = round(max(wm), 4)
+            else:
+                alpha = cv2.imread(r["alpha_pgm"], cv2.IMREAD_UNCHANGED).astype(np.float64) / 255.0
+                lab = cv2.imread(os.path.join(scene, "labels.png"), cv2.IMREAD_GRAYSCALE) == 7
+                p = alpha >= 0.5
+                band = cv2.dilate(lab.astype(np.uint8), np.ones((9, 9), np.uint8)) != \
+                    cv2.erode(lab.astype(np.uint8), np.ones((9, 9), np.uint8))
+                row.update({"segment_ms": round(r["segment_ms"], 1), "matte_ms": round(r["matte_ms"], 1),
+                            "iou": round(float((p & lab).sum() / max(1, (p | lab).sum())), 4),
+                            "recall": round(float((p & lab).sum() / max(1, lab.sum())), 4),
+                            "alpha_mae": round(float(np.abs(alpha - lab).mean()), 5),
+                            "alpha_mae_edge_band": round(float(np.abs(alpha - lab)[band].mean()), 4),
+                            "lowest_px_y": round(r["lowest_px"][1], 2),
+                            "table_lowest_px_y": int(np.nonzero(lab)[0].max()) + 1})
+            rows.append(row)
+        if "--render" in a:
+            rdir = os.path.join(out, name + "_render")
+            res = subprocess.run([sys.executable, harness, "run", scene, os.path.join(build, "app"), rdir,
+                                  "--mode", "assisted", "--seconds", seconds], capture_output=True, text=True)
+            row = {"scene": name, "what": "render", "index": 0}
+            try:
+                row.update(json.loads(res.stdout))
+            except ValueError:
+                row["error"] = (res.stdout + res.stderr)[-300:]
+            comps = sorted(glob.glob(os.path.join(rdir, "*.png")), key=os.path.getmtime)
+            if comps:
+                comp = cv2.imread(comps[-1]).astype(np.float64) / 255
+                truth = cv2.imread(os.path.join(scene, "truth.png")).astype(np.float64) / 255
+                photo = cv2.imread(os.path.join(scene, "photo.png")).astype(np.float64) / 255
+                lab = (cv2.imread(os.path.join(scene, "labels.png"), cv2.IMREAD_GRAYSCALE) == 7).astype(np.uint8)
+                obj = cv2.imread(os.path.join(scene, "object_mask.png"), cv2.IMREAD_GRAYSCALE) > 0
+                near = cv2.dilate(obj.astype(np.uint8), np.ones((31, 31), np.uint8)) > 0
+                edge = (cv2.dilate(lab, np.ones((9, 9), np.uint8)) != cv2.erode(lab, np.ones((9, 9), np.uint8))) & near
+                if edge.sum():
+                    row["edge_pixels"] = int(edge.sum())
+                    row["edge_rmse"] = round(float(np.sqrt(((comp - truth)[edge] ** 2).mean())), 5)
+                    row["edge_rmse_do_nothing"] = round(float(np.sqrt(((photo - truth)[edge] ** 2).mean())), 5)
+            rows.append(row)
+    keys = []
+    for r in rows:
+        keys += [k for k in r if k not in keys]
+    path = os.path.join(out, "bench_modeling.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
+    for r in rows:
+        print(json.dumps(r))
+    print("wrote", path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
