@@ -51,29 +51,46 @@ def main():
     os.makedirs(out, exist_ok=True)
     score = lambda s, exr: json.loads(run([PY, os.path.join(tools, "score_albedo.py"),
                                            os.path.join(sdir, s), exr])[1])
-    rows, curve = [], []
-    for s in names:
-        scene = os.path.join(out, s + ".json")
-        run([PY, os.path.join(tools, "harness.py"), "scene", os.path.join(sdir, s), scene])
-        for m in ("ours", "retinex"):
-            exr = os.path.join(out, "%s_%s.exr" % (s, m))
-            secs, _, _ = run([cli, "decompose", scene, "--albedo", exr, "--method", m, "--quiet"])
-            r = score(s, exr)
-            rows.append(dict(scene=s, method=m, mae=r["mae"], rmse=r["rmse"],
-                             mae_scaled=r["mae_scaled"], scale=r["scale"], seconds=secs))
-            print("%s %-7s mae %.4f rmse %.4f mae_scaled %.4f scale %.3f (%.1f s)"
-                  % (s, m, r["mae"], r["rmse"], r["mae_scaled"], r["scale"], secs), flush=True)
-        for b in budgets:
-            exr = os.path.join(out, "%s_ours_%g.exr" % (s, b))
-            hist = os.path.join(out, "albedo_history_%s.csv" % s)
-            run([cli, "decompose", scene, "--albedo", exr, "--seconds", repr(b), "--progress-csv",
-                 hist, "--quiet"])
-            with open(hist) as f:
-                h = list(csv.DictReader(f))
-            r = score(s, exr)
-            curve.append(dict(scene=s, budget=b, solver_seconds=float(h[-1]["seconds"]),
-                              iterations=int(h[-1]["iteration"]), mae=r["mae"], rmse=r["rmse"]))
-            os.remove(exr)
+    rows, curve, failed = [], [], []
+    for s in list(names):
+        try:
+            measure(s, cli, out, sdir, tools, budgets, score, rows, curve)
+        except SystemExit as e:
+            print("FAILED %s: %s" % (s, e), flush=True)
+            failed.append(s)
+            names.remove(s)
+    if not names:
+        print("every scene failed")
+        return 1
+    write(out, names, rows, curve, failed)
+    return 0
+
+
+def measure(s, cli, out, sdir, tools, budgets, score, rows, curve):
+    scene = os.path.join(out, s + ".json")
+    run([PY, os.path.join(tools, "harness.py"), "scene", os.path.join(sdir, s), scene])
+    for m in ("ours", "retinex"):
+        exr = os.path.join(out, "%s_%s.exr" % (s, m))
+        secs, _, _ = run([cli, "decompose", scene, "--albedo", exr, "--method", m, "--quiet"])
+        r = score(s, exr)
+        rows.append(dict(scene=s, method=m, mae=r["mae"], rmse=r["rmse"],
+                         mae_scaled=r["mae_scaled"], scale=r["scale"], seconds=secs))
+        print("%s %-7s mae %.4f rmse %.4f mae_scaled %.4f scale %.3f (%.1f s)"
+              % (s, m, r["mae"], r["rmse"], r["mae_scaled"], r["scale"], secs), flush=True)
+    for b in budgets:
+        exr = os.path.join(out, "%s_ours_%g.exr" % (s, b))
+        hist = os.path.join(out, "albedo_history_%s.csv" % s)
+        run([cli, "decompose", scene, "--albedo", exr, "--seconds", repr(b), "--progress-csv",
+             hist, "--quiet"])
+        with open(hist) as f:
+            h = list(csv.DictReader(f))
+        r = score(s, exr)
+        curve.append(dict(scene=s, budget=b, solver_seconds=float(h[-1]["seconds"]),
+                          iterations=int(h[-1]["iteration"]), mae=r["mae"], rmse=r["rmse"]))
+        os.remove(exr)
+
+
+def write(out, names, rows, curve, failed):
     with open(os.path.join(out, "albedo_scenes.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
@@ -94,6 +111,8 @@ def main():
     print("| mean | %.4f | %.4f | %.4f | %.4f | %.4f | |" % (
         mean("ours", "mae"), mean("ours", "rmse"), mean("retinex", "mae"), mean("retinex", "rmse"),
         mean("ours", "mae_scaled")))
+    if failed:
+        print("failed (not in the table): " + ", ".join(failed))
 
     try:
         import matplotlib
