@@ -31,6 +31,8 @@ void RenderController::startScene() {
   options.targetSpp = std::max(1, prepared->doc.render.spp);
   options.seconds = prepared->doc.render.seconds.value_or(0.0);
   options.seed = prepared->doc.render.seed;
+  // Samples go where the objects change the photo (the part a user watches while dragging).
+  options.focusOnChanges = true;
   if (!session_) {
     session_ = std::make_unique<RenderSession>(sink_.get(), options);
   } else {
