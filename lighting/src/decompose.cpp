@@ -202,6 +202,8 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   const float g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
 
   auto lap = [&](const std::vector<float>& u, size_t i, int x, int y) {
+    if (x > 0 && x + 1 < W && y > 0 && y + 1 < H)  // interior: no boundary tests
+      return (u[i - 1] + u[i + 1]) + (u[i - size_t(W)] + u[i + size_t(W)]) - 4 * u[i];
     float s = 0;
     if (x > 0) s += u[i - 1] - u[i];
     if (x + 1 < W) s += u[i + 1] - u[i];
