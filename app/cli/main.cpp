@@ -304,78 +304,48 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   progress.stage("photo", 0);
   auto photo = loadImage(photoPath);
   if (!photo) return inputError(photo.error());
-  const int W = photo->linearRgb.width, H = photo->linearRgb.height;
   SceneDoc fixed;
   if (!a.sceneForEstimate.empty()) {
     auto loaded = loadSceneFile(a.sceneForEstimate);
     if (!loaded) return inputError(loaded.error());
     fixed = loaded->doc;
   }
-  EstimateOptions eo;
-  eo.priorFocalPx = fixed.camera.focalPx ? fixed.camera.focalPx : photo->exif.focalPx(W, H);
-  eo.cameraHeightM = fixed.camera.heightM.value_or(1.6);
-  eo.cancel = &gCancel;
   progress.stage("estimate", 0);
-  auto est = estimateCamera(photo->linearRgb, eo);
+  // What the user already fixed in the scene is kept; the rest is estimated around it.
+  auto cl = cameraAndLayoutOf(fixed.camera, fixed.layout, *photo, true, &gCancel);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted; nothing written\n"), 1;
-  if (!est) return inputError(est.error().inFile(photoPath));
-  // What the user already fixed in the scene is kept; the rest re-estimated around it.
-  EstimateCorrection fix;
-  bool anyFix = false;
-  if (fixed.camera.vanishingPointsPx) {
-    VanishingInput in;
-    in.vanishingPointsPx = *fixed.camera.vanishingPointsPx;
-    in.focalPx = fixed.camera.focalPx;
-    in.principalPx = fixed.camera.principalPx;
-    in.widthPx = W;
-    in.heightPx = H;
-    in.heightM = eo.cameraHeightM;
-    auto c = cameraFromVanishingPoints(in);
-    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
-    fix.fixedCamera = *c;
-    anyFix = true;
-  } else if (fixed.camera.focalPx) {
-    fix.lockedFocalPx = fixed.camera.focalPx, anyFix = true;
-  }
-  if (fixed.layout.backWallPx) {
-    for (int i = 0; i < 4; ++i) fix.backWallCornersPx[size_t(i)] = (*fixed.layout.backWallPx)[size_t(i)];
-    anyFix = true;
-  }
-  if (anyFix) {
-    auto c = correctEstimate(*est, fix, eo);
-    if (!c) return inputError(c.error().inFile(a.sceneForEstimate));
-    est = std::move(c);
-  }
-  const Camera cam = est->camera;
+  if (!cl) return inputError(cl.error().inFile(a.sceneForEstimate.empty() ? photoPath : a.sceneForEstimate));
+  const CameraEstimate& est = *cl->estimate;
+  const Camera& cam = cl->camera;
   const std::array<Vec2, 3> vps = fixed.camera.vanishingPointsPx ? *fixed.camera.vanishingPointsPx
-                                                                 : est->vanishingPointsPx;
+                                                                 : est.vanishingPointsPx;
   using nlohmann::json;
   auto pt = [](const Vec2& p) { return json::array({p.x(), p.y()}); };
   json j;
   j["camera"] = {{"height_m", cam.heightM}, {"focal_px", cam.focalPx},
                  {"principal_px", pt(cam.principalPx)},
                  {"vanishing_points_px", json::array({pt(vps[0]), pt(vps[1]), pt(vps[2])})}};
-  j["layout"] = {{"back_wall_px", json::array({pt(est->backWallPx[0]), pt(est->backWallPx[1]),
-                                               pt(est->backWallPx[2]), pt(est->backWallPx[3])})}};
+  j["layout"] = {{"back_wall_px", json::array({pt(cl->backWallPx[0]), pt(cl->backWallPx[1]),
+                                               pt(cl->backWallPx[2]), pt(cl->backWallPx[3])})}};
   json rot = json::array();
   for (int r = 0; r < 3; ++r)
     rot.push_back(json::array({cam.worldFromCamera(r, 0), cam.worldFromCamera(r, 1), cam.worldFromCamera(r, 2)}));
   j["rotation"] = rot;
-  j["confidence"] = {{"vanishing_points", json::array({est->confidence[0], est->confidence[1], est->confidence[2]})},
-                     {"overall", est->overallConfidence}, {"manhattan", est->manhattan},
-                     {"layout", est->layoutScore}};
-  j["focal_interval_px"] = json::array({est->focalMinPx, est->focalMaxPx});
-  j["focal_from_prior"] = est->focalFromPrior;
-  j["warnings"] = est->warnings;
-  j["timings_ms"] = {{"lines", est->timings.linesMs}, {"vanishing", est->timings.vanishingMs},
-                     {"refine", est->timings.refineMs}, {"layout", est->timings.layoutMs},
-                     {"total", est->timings.totalMs}};
-  j["segments"] = est->segments.size();
+  j["confidence"] = {{"vanishing_points", json::array({est.confidence[0], est.confidence[1], est.confidence[2]})},
+                     {"overall", est.overallConfidence}, {"manhattan", est.manhattan},
+                     {"layout", est.layoutScore}};
+  j["focal_interval_px"] = json::array({est.focalMinPx, est.focalMaxPx});
+  j["focal_from_prior"] = est.focalFromPrior;
+  j["warnings"] = est.warnings;
+  j["timings_ms"] = {{"lines", est.timings.linesMs}, {"vanishing", est.timings.vanishingMs},
+                     {"refine", est.timings.refineMs}, {"layout", est.timings.layoutMs},
+                     {"total", est.timings.totalMs}};
+  j["segments"] = est.segments.size();
   if (auto st = writeFileAtomically(a.output, j.dump(2) + "\n"); !st) return inputError(st.error());
   if (!a.quiet) {
-    for (const auto& w : est->warnings) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+    for (const auto& w : cl->warnings) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
     std::fprintf(stderr, "inlay-cli: wrote %s (focal %.1f px, confidence %.2f, %.0f ms)\n",
-                 a.output.c_str(), cam.focalPx, est->overallConfidence, est->timings.totalMs);
+                 a.output.c_str(), cam.focalPx, est.overallConfidence, est.timings.totalMs);
   }
   return 0;
 }
@@ -414,6 +384,7 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     if (auto st = writeFileAtomically(a.progressCsv, csv); !st) return inputError(st.error());
   }
   ImageF albedo = retinex ? le.retinexAlbedo : le.albedo;
+  if (getenv("ALB_PHYS")) albedo = le.physicalAlbedo;
   if (rerun)  // the room's pixels from the re-run
     for (size_t i = 0; i < albedo.data.size(); ++i)
       if (albedo.data[i] > 0 || le.decomposeValid[i / 3]) albedo.data[i] = rerun->albedo.data[i];

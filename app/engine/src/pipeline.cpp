@@ -119,6 +119,75 @@ std::string exampleScenePath() {
   return {};
 }
 
+Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const LayoutKeys& layout,
+                                            const LoadedImage& photo, bool alwaysEstimate,
+                                            const CancelToken* cancel) {
+  const int W = photo.linearRgb.width, H = photo.linearRgb.height;
+  const double heightM = camera.heightM.value_or(1.6);
+  if (!(heightM > 0 && std::isfinite(heightM)))
+    return Error{"", "camera.height_m", "must be a positive number of metres"};
+  CameraAndLayout out;
+  std::optional<Camera> given;
+  if (camera.vanishingPointsPx) {
+    VanishingInput in;
+    in.vanishingPointsPx = *camera.vanishingPointsPx;
+    in.focalPx = camera.focalPx;
+    in.principalPx = camera.principalPx;
+    in.widthPx = W;
+    in.heightPx = H;
+    in.heightM = heightM;
+    auto cam = cameraFromVanishingPoints(in);
+    if (!cam) return cam.error();
+    given = *cam;
+  }
+  if (given && layout.backWallPx && !alwaysEstimate) {
+    out.camera = *given;
+    out.backWallPx = *layout.backWallPx;
+    return out;
+  }
+  EstimateOptions eo;
+  eo.priorFocalPx = camera.focalPx ? camera.focalPx : photo.exif.focalPx(W, H);
+  eo.cameraHeightM = heightM;
+  eo.cancel = cancel;
+  auto e = estimateCamera(photo.linearRgb, eo);
+  if (!e) return e.error();
+  // What the user gave is kept and the rest estimated around it: a given camera keeps the
+  // layout search on that camera; given corners pull the camera to the user's box.
+  EstimateCorrection fix;
+  bool anyFix = false;
+  if (given) {
+    fix.fixedCamera = *given;
+    anyFix = true;
+  } else if (camera.focalPx) {
+    fix.lockedFocalPx = camera.focalPx;
+    anyFix = true;
+  }
+  if (layout.backWallPx) {
+    for (size_t i = 0; i < 4; ++i) fix.backWallCornersPx[i] = (*layout.backWallPx)[i];
+    anyFix = true;
+  }
+  if (anyFix) {
+    auto fixed = correctEstimate(*e, fix, eo);
+    if (!fixed) return fixed.error();
+    e = std::move(fixed);
+  }
+  for (const auto& w : e->warnings) out.warnings.push_back("estimate: " + w);
+  if (!e->manhattan)
+    out.warnings.push_back("estimate: the photo shows no clear room structure; the camera is a "
+                           "fallback (" + std::string(e->focalFromPrior ? "prior" : "default") +
+                           " focal length, upright): give camera.vanishing_points_px for a reliable result");
+  if (given) {
+    out.camera = *given;
+  } else {
+    out.camera = e->camera;
+    out.camera.heightM = heightM;
+    if (camera.principalPx) out.camera.principalPx = *camera.principalPx;
+  }
+  out.backWallPx = layout.backWallPx ? *layout.backWallPx : e->backWallPx;
+  out.estimate = std::move(*e);
+  return out;
+}
+
 Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index) {
   INLAY_CHECK(index < scene.doc.objects.size() && index < scene.renderScene.objects.size());
   const ObjectKeys& o = scene.doc.objects[index];
@@ -149,76 +218,17 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   progress("camera", 0);
   t = Clock::now();
   const double heightM = doc.camera.heightM.value_or(1.6);
-  if (!(heightM > 0 && std::isfinite(heightM)))
-    return Error{"", "camera.height_m", "must be a positive number of metres"};
-  // What the scene file leaves out (vanishing points, layout) is estimated from the photo;
-  // what it gives is kept.
-  std::optional<CameraEstimate> estimate;
-  if (!doc.camera.vanishingPointsPx || !doc.layout.backWallPx) {
-    EstimateOptions eo;
-    eo.priorFocalPx = doc.camera.focalPx ? doc.camera.focalPx : ps.photo.exif.focalPx(W, H);
-    eo.cameraHeightM = heightM;
-    eo.cancel = opt.cancel;
-    auto e = estimateCamera(ps.photo.linearRgb, eo);
-    if (!e) return e.error();
-    // What the user gave is kept and the rest estimated around it: a given camera keeps the
-    // layout search on that camera; given corners pull the camera to the user's box.
-    EstimateCorrection fix;
-    bool anyFix = false;
-    if (doc.camera.vanishingPointsPx) {
-      VanishingInput in;
-      in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
-      in.focalPx = doc.camera.focalPx;
-      in.principalPx = doc.camera.principalPx;
-      in.widthPx = W;
-      in.heightPx = H;
-      in.heightM = heightM;
-      auto cam = cameraFromVanishingPoints(in);
-      if (!cam) return cam.error();
-      fix.fixedCamera = *cam;
-      anyFix = true;
-    } else {
-      if (doc.camera.focalPx) fix.lockedFocalPx = doc.camera.focalPx, anyFix = true;
-      if (doc.layout.backWallPx) {
-        for (int i = 0; i < 4; ++i) fix.backWallCornersPx[size_t(i)] = (*doc.layout.backWallPx)[size_t(i)];
-        anyFix = true;
-      }
-    }
-    if (anyFix) {
-      auto fixed = correctEstimate(*e, fix, eo);
-      if (!fixed) return fixed.error();
-      e = std::move(fixed);
-    }
-    for (const auto& w : e->warnings) ps.warnings.push_back("estimate: " + w);
-    if (!e->manhattan)
-      ps.warnings.push_back("estimate: the photo shows no clear room structure; the camera is a "
-                            "fallback (" + std::string(e->focalFromPrior ? "prior" : "default") +
-                            " focal length, upright): give camera.vanishing_points_px for a reliable result");
-    estimate = std::move(*e);
-  }
-  if (doc.camera.vanishingPointsPx) {
-    VanishingInput in;
-    in.vanishingPointsPx = *doc.camera.vanishingPointsPx;
-    in.focalPx = doc.camera.focalPx;
-    in.principalPx = doc.camera.principalPx;
-    in.widthPx = W;
-    in.heightPx = H;
-    in.heightM = heightM;
-    auto cam = cameraFromVanishingPoints(in);
-    if (!cam) return cam.error();
-    ps.camera = *cam;
-  } else {
-    ps.camera = estimate->camera;
-    ps.camera.heightM = heightM;
-    if (doc.camera.principalPx) ps.camera.principalPx = *doc.camera.principalPx;
-  }
+  auto cl = cameraAndLayoutOf(doc.camera, doc.layout, ps.photo, false, opt.cancel);
+  if (!cl) return cl.error();
+  ps.camera = cl->camera;
+  for (const auto& w : cl->warnings) ps.warnings.push_back(w);
   ps.stageSeconds.emplace_back("camera", secondsSince(t));
 
   // Room and supporting surfaces.
   progress("room", 0);
   t = Clock::now();
   {
-    const std::array<Vec2, 4> corners = doc.layout.backWallPx ? *doc.layout.backWallPx : estimate->backWallPx;
+    const std::array<Vec2, 4> corners = cl->backWallPx;
     auto box = roomFromBackWall(ps.camera, corners);
     if (!box && doc.layout.backWallPx) return box.error();
     if (box) {

@@ -7,6 +7,7 @@
 
 #include "inlay/lighting/estimate.h"
 #include "inlay/modeling/camera.h"
+#include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
@@ -41,6 +42,20 @@ struct PrepareOptions {
   std::function<void(const std::string& stage, double fraction)> progress;
   int threads = 0;
 };
+
+// The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
+// photo (EXIF focal length as a prior) around it. `alwaysEstimate` runs the estimate even when
+// the file gives everything (inlay-cli estimate reports its confidences). Warnings are lines for
+// the user.
+struct CameraAndLayout {
+  Camera camera;
+  std::array<Vec2, 4> backWallPx{};
+  std::optional<CameraEstimate> estimate;  // when one was run
+  std::vector<std::string> warnings;
+};
+Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const LayoutKeys& layout,
+                                            const LoadedImage& photo, bool alwaysEstimate,
+                                            const CancelToken* cancel = nullptr);
 
 // Everything needed to render `doc`. Errors name the scene file's key and the reason.
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});
