@@ -131,28 +131,51 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
     gc.setTo(cv::GC_PR_FGD, undecided & inside);
     if (loop) gc.setTo(cv::GC_BGD, undecided & ~inside);
   }
-  // A foreground stroke drawn across a gap (between table legs) crosses background: its pixels
-  // whose colour the background strokes show too are left to the cut instead of forced.
+  // A foreground stroke drawn across a gap (between table legs) crosses background. A stroke
+  // starts and ends on the object: a stroke pixel whose colour is nearer the background strokes'
+  // colours than its own stroke's end colours (by a margin) is a gap pixel, a background seed;
+  // one merely close to a background colour is left to the cut instead of forced.
   {
     std::vector<cv::Vec3b> bgColours;
     for (int y = 0; y < roi.height; ++y)
       for (int x = 0; x < roi.width; ++x)
         if (bgR.at<uchar>(y, x) && !both(roi).at<uchar>(y, x)) bgColours.push_back(img.at<cv::Vec3b>(y, x));
-    const size_t stride = std::max<size_t>(1, bgColours.size() / 2000);
+    auto nearest2 = [](const cv::Vec3b& c, const std::vector<cv::Vec3b>& set) {
+      const size_t stride = std::max<size_t>(1, set.size() / 2000);
+      int best = 1 << 30;
+      for (size_t k = 0; k < set.size(); k += stride) {
+        const int d0 = c[0] - set[k][0], d1 = c[1] - set[k][1], d2 = c[2] - set[k][2];
+        best = std::min(best, d0 * d0 + d1 * d1 + d2 * d2);
+      }
+      return best;
+    };
     const int maxDist2 = opt.ambiguousColourDistance * opt.ambiguousColourDistance;
-    for (int y = 0; y < roi.height; ++y)
-      for (int x = 0; x < roi.width; ++x) {
-        if (gc.at<uchar>(y, x) != cv::GC_FGD) continue;
-        const cv::Vec3b c = img.at<cv::Vec3b>(y, x);
-        for (size_t k = 0; k < bgColours.size(); k += stride) {
-          const cv::Vec3b& b = bgColours[k];
-          const int d0 = c[0] - b[0], d1 = c[1] - b[1], d2 = c[2] - b[2];
-          if (d0 * d0 + d1 * d1 + d2 * d2 <= maxDist2) {
+    for (const auto& stroke : fg) {
+      if (stroke.size() < 2) continue;
+      cv::Mat one(H, W, CV_8U, cv::Scalar(0));
+      drawStrokes(one, {stroke}, radius, 255);
+      cv::Mat ends(H, W, CV_8U, cv::Scalar(0));
+      for (const Vec2& e : {stroke.front(), stroke.back()})
+        cv::circle(ends, cv::Point(int(std::floor(e.x())), int(std::floor(e.y()))), radius + 2,
+                   cv::Scalar(255), cv::FILLED);
+      ends &= one;
+      std::vector<cv::Vec3b> endColours;
+      for (int y = 0; y < roi.height; ++y)
+        for (int x = 0; x < roi.width; ++x)
+          if (ends.at<uchar>(roi.y + y, roi.x + x)) endColours.push_back(img.at<cv::Vec3b>(y, x));
+      for (int y = 0; y < roi.height; ++y)
+        for (int x = 0; x < roi.width; ++x) {
+          if (!one.at<uchar>(roi.y + y, roi.x + x) || gc.at<uchar>(y, x) != cv::GC_FGD) continue;
+          const cv::Vec3b c = img.at<cv::Vec3b>(y, x);
+          const int dBg = nearest2(c, bgColours);
+          const int dEnd = endColours.empty() ? (1 << 30) : nearest2(c, endColours);
+          if (4 * dBg + 4 * maxDist2 < dEnd) {  // |c - bg| well below |c - ends|
+            gc.at<uchar>(y, x) = cv::GC_BGD;
+          } else if (dBg <= maxDist2) {
             gc.at<uchar>(y, x) = cv::GC_PR_FGD;
-            break;
           }
         }
-      }
+    }
   }
   cv::Mat bgdModel, fgdModel;
   cv::grabCut(img, gc, cv::Rect(), bgdModel, fgdModel, std::max(1, opt.grabCutIterations),
