@@ -384,7 +384,6 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     if (auto st = writeFileAtomically(a.progressCsv, csv); !st) return inputError(st.error());
   }
   ImageF albedo = retinex ? le.retinexAlbedo : le.albedo;
-  if (getenv("ALB_PHYS")) albedo = le.physicalAlbedo;
   if (rerun)  // the room's pixels from the re-run
     for (size_t i = 0; i < albedo.data.size(); ++i)
       if (albedo.data[i] > 0 || le.decomposeValid[i / 3]) albedo.data[i] = rerun->albedo.data[i];
