@@ -127,6 +127,23 @@ TEST(Occluder, CardStandsAtTheFloorDepthOfTheLowestPoint) {
   ASSERT_TRUE(card->cardAlpha);
   EXPECT_NEAR(card->cardAlpha->alphaAt(Vec3(0.1, 0.2, -3.0)), 1.0, 1e-6);
   EXPECT_NEAR(card->cardAlpha->alphaAt(Vec3(1.5, 0.2, -3.0)), 0.0, 1e-6);
+  // In the scene geometry the card counts where the matte covers it, not through its clear parts.
+  RoomBox box;
+  box.xLeftM = -3, box.xRightM = 3, box.zBackM = -6, box.zRearM = 0.5, box.ceilingM = 2.7;
+  SceneGeometry g = buildSceneGeometry(box, {});
+  g.surfaces.push_back(*card);
+  const auto covered = g.intersect(c.rayThroughPixel(*c.project(Vec3(0.1, 0.2, -3.0))));
+  ASSERT_TRUE(covered.has_value());
+  EXPECT_EQ(g.surfaces[size_t(covered->surfaceId)].kind, SurfaceKind::OccluderCard);
+  const Vec2 clearPx(x1 + 5.5, y1 - 30.5);  // right of the matte
+  ASSERT_LT(m.alphaPx.at(int(clearPx.x()), int(clearPx.y())), 0.5f);
+  m.boxPx[2] = x1 + 10;  // widen the card so that pixel falls on it
+  const auto wide = occluderCard(c, m, 2, "occluders[2]");
+  ASSERT_TRUE(wide.ok());
+  g.surfaces.back() = *wide;
+  const auto clear = g.intersect(c.rayThroughPixel(clearPx));
+  ASSERT_TRUE(clear.has_value());
+  EXPECT_NE(g.surfaces[size_t(clear->surfaceId)].kind, SurfaceKind::OccluderCard);
   // A matte whose lowest point is above the horizon cannot stand on the floor.
   OccluderMatte sky = m;
   sky.lowestPx = Vec2(80, 5);

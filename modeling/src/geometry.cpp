@@ -136,6 +136,8 @@ std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray, bool supports
       const double v = ray.direction.dot(qv) * inv;
       if (v < -1e-9 || u + v > 1 + 1e-9) continue;
       const double t = e2.dot(qv) * inv;
+      if (t > tMin && t < bestT && surf.cardAlpha && surf.cardAlpha->alphaAt(ray.at(t)) < 0.5)
+        continue;  // an occluder card where its matte is mostly clear
       if (t > tMin && t < bestT) {
         bestT = t;
         Vec3 n = e1.cross(e2).normalized();

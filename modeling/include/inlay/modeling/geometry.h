@@ -74,6 +74,8 @@ struct SceneGeometry {
   std::vector<Surface> surfaces;  // id = index
 
   // Nearest hit along the ray (t > tMin). `supportsOnly`: only surfaces objects may stand on.
+  // Occluder cards count where their matte covers at least half (as for the renderer's shadow
+  // rays), so what is seen through a card's clear parts is the surface behind it.
   std::optional<SurfaceHit> intersect(const Ray& ray, bool supportsOnly = false,
                                       double tMin = 1e-6) const;
 };

@@ -28,9 +28,11 @@ struct MatteOptions {
   // The work is confined to the scribbles' bounding box grown by this fraction of its size on
   // each side (at least 16 px); outside it is background. Default 0.25.
   double marginFraction = 0.25;
-  // A foreground-stroke pixel within this RGB distance (8-bit sRGB units) of a colour on the
-  // background strokes is only "probably foreground": strokes drawn across gaps in the object
-  // (between table legs) must not force the gap in. Default 12.
+  // Strokes drawn across gaps in the object (between table legs) must not force the gap in. A
+  // foreground-stroke pixel within this RGB distance (8-bit sRGB units) of a colour on the
+  // background strokes is only "probably foreground"; one whose distance to the background's
+  // colours is well below (2 x, plus this) its distance to the colours at its own stroke's ends
+  // (strokes start and end on the object) is a background seed. Default 12.
   int ambiguousColourDistance = 12;
 };
 
