@@ -204,7 +204,16 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
   cv::Mat alpha8;
   if (cv::countNonZero(trimap == 128) > 0 && cv::countNonZero(trimap == 255) > 0 &&
       cv::countNonZero(trimap == 0) > 0) {
-    cv::alphamat::infoFlow(img, trimap, alpha8);
+    // Matting costs with the pixels it sees: only the box around what is not sure background,
+    // plus a margin of background for its colour samples.
+    const int m = 3 * band + 4;
+    const cv::Rect r = cv::boundingRect(trimap != 0);
+    const cv::Rect crop = cv::Rect(r.x - m, r.y - m, r.width + 2 * m, r.height + 2 * m) &
+                          cv::Rect(0, 0, roi.width, roi.height);
+    cv::Mat cropAlpha;
+    cv::alphamat::infoFlow(img(crop).clone(), trimap(crop).clone(), cropAlpha);
+    alpha8 = cv::Mat(roi.size(), CV_8U, cv::Scalar(0));
+    cropAlpha.copyTo(alpha8(crop));
   } else {
     alpha8 = seg.clone();
   }

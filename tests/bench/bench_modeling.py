@@ -84,6 +84,32 @@ def main():
                             "lowest_px_y": round(r["lowest_px"][1], 2),
                             "table_lowest_px_y": int(np.nonzero(lab)[0].max()) + 1})
             rows.append(row)
+        sd = json.load(open(sj))
+        if sd.get("occluders"):
+            # The matting time at 640 x 480: the photo and the strokes scaled to that size.
+            ph = cv2.imread(sd["photo"], cv2.IMREAD_COLOR)
+            sx, sy = 640.0 / ph.shape[1], 480.0 / ph.shape[0]
+            big = os.path.join(work, "photo_640x480.png")
+            cv2.imwrite(big, cv2.resize(ph, (640, 480), interpolation=cv2.INTER_LINEAR))
+            scale = lambda strokes: [[[p[0] * sx, p[1] * sy] for p in st] for st in strokes]
+            sd640 = dict(sd, photo=big, surfaces=[], objects=[])
+            sd640["camera"] = dict(sd["camera"], focal_px=sd["camera"]["focal_px"] * sx,
+                                   principal_px=[sd["camera"]["principal_px"][0] * sx, sd["camera"]["principal_px"][1] * sy],
+                                   vanishing_points_px=[[v[0] * sx, v[1] * sy] for v in sd["camera"]["vanishing_points_px"]])
+            sd640.pop("layout", None)
+            sd640["lights"] = []
+            sd640["occluders"] = [{"foreground_scribbles_px": scale(o["foreground_scribbles_px"]),
+                                   "background_scribbles_px": scale(o["background_scribbles_px"])} for o in sd["occluders"]]
+            sj640 = os.path.join(work, "scene_640x480.json")
+            json.dump(sd640, open(sj640, "w"))
+            w640 = os.path.join(work, "640x480")
+            os.makedirs(w640, exist_ok=True)
+            for line in subprocess.run([tool, sj640, w640, "1"], check=True, capture_output=True, text=True).stdout.splitlines():
+                r = json.loads(line)
+                if r["what"] == "occluder":
+                    rows.append({"scene": name + "@640x480", "what": "occluder", "index": r["index"],
+                                 "ms": round(r["ms"], 1), "segment_ms": round(r.get("segment_ms", -1), 1),
+                                 "matte_ms": round(r.get("matte_ms", -1), 1), "error": r.get("error", "")})
         if "--render" in a:
             rdir = os.path.join(out, name + "_render")
             res = subprocess.run([sys.executable, harness, "run", scene, os.path.join(build, "app"), rdir,
