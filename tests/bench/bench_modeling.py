@@ -59,6 +59,9 @@ def main():
             row = {"scene": name, "what": r["what"], "index": r["index"], "ms": round(r["ms"], 4)}
             if "error" in r:
                 row["error"] = r["error"]
+            elif r["what"] == "surface" and r["index"] < 0:
+                row.update({"kind": r["kind"], "height_m": round(r["height_m"], 4),
+                            "up_triangles": r["up_triangles"]})
             elif r["what"] == "surface":
                 h = r["height_m"]
                 row["height_m"] = round(h, 4)
