@@ -88,6 +88,31 @@ def main():
                             "table_lowest_px_y": int(np.nonzero(lab)[0].max()) + 1})
             rows.append(row)
         sd = json.load(open(sj))
+        if sd.get("surfaces"):
+            # A user's clicks are off by a pixel or so: the outline and the click jittered
+            # uniformly in [-J, J] px (default 1), `trials` times (default 20).
+            jit = float(opt("--jitter", "1.0"))
+            rng = np.random.default_rng(7)
+            herr, perr = [], []
+            truth_floor = [np.array(b["pixel"]) for b in tb["bbox_corners"] if b["world"][1] == 0.0]
+            for k in range(int(opt("--trials", "20"))):
+                sdj = dict(sd, occluders=[], surfaces=[dict(x) for x in sd["surfaces"]])
+                s0 = sdj["surfaces"][0]
+                s0["outline_px"] = [[p[0] + rng.uniform(-jit, jit), p[1] + rng.uniform(-jit, jit)] for p in s0["outline_px"]]
+                s0["height_click_px"] = [s0["height_click_px"][0] + rng.uniform(-jit, jit),
+                                         s0["height_click_px"][1] + rng.uniform(-jit, jit)]
+                sjj = os.path.join(work, "jitter.json")
+                json.dump(sdj, open(sjj, "w"))
+                for line in subprocess.run([tool, sjj, work, "1"], check=True, capture_output=True, text=True).stdout.splitlines():
+                    r = json.loads(line)
+                    if r["what"] == "surface" and r["index"] == 0 and "height_m" in r:
+                        herr.append(abs(r["height_m"] / tb["top_height"] - 1))
+                        perr.append(max(min(np.linalg.norm(np.array(p) - q) for q in truth_floor) for p in r["floor_corners_px"]))
+            if herr:
+                rows.append({"scene": name, "what": "surface_jitter_%gpx" % jit, "index": 0, "trials": len(herr),
+                             "height_rel_err": round(float(np.mean(herr)), 5), "height_rel_err_max": round(float(np.max(herr)), 5),
+                             "floor_corner_px_err_max": round(float(np.max(perr)), 3),
+                             "floor_corner_px_err_mean_of_max": round(float(np.mean(perr)), 3)})
         if sd.get("occluders"):
             # The matting time at 640 x 480: the photo and the strokes scaled to that size.
             ph = cv2.imread(sd["photo"], cv2.IMREAD_COLOR)
