@@ -7,7 +7,10 @@
 // gather ray's hit point is projected into the photo; unseen surfaces take their mean
 // radiance), and rho the albedo. Light radiances L_j and per-surface reference albedos are
 // found by a bounded robust least-squares fit (Ceres) that asks the albedo to be smooth within
-// each surface; rho(x) then follows per pixel. Saturated pixels and light outlines are left out.
+// each surface; rho(x) = B / (sum L_j E_j + Gamma) then follows per pixel (physicalAlbedo).
+// The albedo itself comes from the intrinsic decomposition (decompose.h): colour Retinex of that
+// shading-free image, scaled per channel to it, minimised under the paper's objective with
+// B = D + rho * Gamma. Saturated pixels and light outlines are left out of fit and data terms.
 #pragma once
 
 #include "inlay/lighting/decompose.h"
