@@ -503,6 +503,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   out.albedo = ImageF(W, H, 3, 0.f);
   out.direct = ImageF(W, H, 3, 0.f);
   ImageF shadingFree(W, H, 3, 0.f);  // B / (sum L_j E_j + Gamma), unclamped
+  std::vector<float> directShare(size_t(W) * H, 1.f);  // sum L_j E_j / shading (green)
   std::vector<Vec3> albedoSum(S, Vec3::Zero());
   std::vector<double> albedoCount(S, 0);
   for (int y = 0; y < H; ++y)
@@ -519,6 +520,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         const double b = photo.at(x, y, c);
         double r = shading > 1e-9 ? b / shading : rho[p.surface][c];
         shadingFree.at(x, y, c) = float(std::isfinite(r) ? std::max(r, 0.0) : rho[p.surface][c]);
+        if (c == 1 && shading > 1e-9) directShare[idx] = float((shading - g[c]) / shading);
         if (isLight(x, y) || saturated(x, y)) r = rho[p.surface][c];
         a[c] = std::clamp(std::isfinite(r) ? r : rho[p.surface][c], 0.0, 1.0);
       }
@@ -545,20 +547,31 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                      luminance(photo.rgb(x, y)) > 1e-5;
       }
     // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
-    auto anchoredRetinex = [&](const ImageF& image) {
+    // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
+    // rho = B / Gamma does not depend on the fitted lights (the flat direction rho / k, L * k);
+    // the scale is the geometric mean of the two anchors when there are enough such pixels.
+    size_t nValid = 0, nIndirect = 0;
+    for (size_t i = 0; i < valid.size(); ++i)
+      if (valid[i]) ++nValid, nIndirect += directShare[i] < 0.25f;
+    const bool haveIndirect = nIndirect >= std::max<size_t>(200, nValid / 50);
+    auto anchoredRetinex = [&](const ImageF& image, bool gammaAnchor) {
       const ImageF rel = retinexReflectance(image, valid, opt.retinex);
-      Vec3 scale(1, 1, 1);
-      for (int c = 0; c < 3; ++c) {
+      auto medianRatio = [&](int c, bool indirectOnly) {
         std::vector<float> ratio;
         for (int y = 0; y < H; ++y)
           for (int x = 0; x < W; ++x)
             if (valid[size_t(y) * W + x] && rel.at(x, y, c) > 1e-4f &&
-                out.albedo.at(x, y, c) > 0 && out.albedo.at(x, y, c) < 1)
+                out.albedo.at(x, y, c) > 0 && out.albedo.at(x, y, c) < 1 &&
+                (!indirectOnly || directShare[size_t(y) * W + x] < 0.25f))
               ratio.push_back(out.albedo.at(x, y, c) / rel.at(x, y, c));
-        if (!ratio.empty()) {
-          std::nth_element(ratio.begin(), ratio.begin() + long(ratio.size() / 2), ratio.end());
-          scale[c] = ratio[ratio.size() / 2];
-        }
+        if (ratio.empty()) return 1.0;
+        std::nth_element(ratio.begin(), ratio.begin() + long(ratio.size() / 2), ratio.end());
+        return double(ratio[ratio.size() / 2]);
+      };
+      Vec3 scale(1, 1, 1);
+      for (int c = 0; c < 3; ++c) {
+        scale[c] = medianRatio(c, false);
+        if (gammaAnchor && haveIndirect) scale[c] = std::sqrt(scale[c] * medianRatio(c, true));
       }
       ImageF a(W, H, 3, 0.f);
       for (int y = 0; y < H; ++y)
@@ -574,11 +587,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       return a;
     };
     // The baseline: Retinex of the photo alone.
-    out.retinexAlbedo = anchoredRetinex(photo);
+    out.retinexAlbedo = anchoredRetinex(photo, false);
     if (opt.objective) {
       // The start: Retinex of the photo with the geometry's shading divided out (what is left
       // of shading there is noise and model error, which the thresholds remove).
-      const ImageF rho0 = anchoredRetinex(shadingFree);
+      const ImageF rho0 = anchoredRetinex(shadingFree, true);
       DecomposeOptions dopt = opt.decompose;
       if (!dopt.cancel) dopt.cancel = opt.cancel;
       auto dec = decomposeIntrinsic(photo, out.gathered, rho0, valid, clipped, dopt);
