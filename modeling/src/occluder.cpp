@@ -163,6 +163,8 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
       for (int y = 0; y < roi.height; ++y)
         for (int x = 0; x < roi.width; ++x)
           if (ends.at<uchar>(roi.y + y, roi.x + x)) endColours.push_back(img.at<cv::Vec3b>(y, x));
+      std::vector<std::pair<cv::Point, uchar>> relabel;
+      int kept = 0;
       for (int y = 0; y < roi.height; ++y)
         for (int x = 0; x < roi.width; ++x) {
           if (!one.at<uchar>(roi.y + y, roi.x + x) || gc.at<uchar>(y, x) != cv::GC_FGD) continue;
@@ -170,16 +172,30 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
           const int dBg = nearest2(c, bgColours);
           const int dEnd = endColours.empty() ? (1 << 30) : nearest2(c, endColours);
           if (4 * dBg + 4 * maxDist2 < dEnd) {  // |c - bg| well below |c - ends|
-            gc.at<uchar>(y, x) = cv::GC_BGD;
+            relabel.push_back({cv::Point(x, y), uchar(cv::GC_BGD)});
           } else if (dBg <= maxDist2) {
-            gc.at<uchar>(y, x) = cv::GC_PR_FGD;
+            relabel.push_back({cv::Point(x, y), uchar(cv::GC_PR_FGD)});
+          } else {
+            ++kept;
           }
         }
+      // A stroke that would keep no sure pixel (an object coloured like its surroundings) is the
+      // user's word against the colours: only its gap pixels go, the rest stays sure.
+      for (const auto& [pt, label] : relabel)
+        if (kept > 0 || label == cv::GC_BGD) gc.at<uchar>(pt) = label;
     }
   }
   cv::Mat bgdModel, fgdModel;
-  cv::grabCut(img, gc, cv::Rect(), bgdModel, fgdModel, std::max(1, opt.grabCutIterations),
-              cv::GC_INIT_WITH_MASK);
+  if (cv::countNonZero((gc == cv::GC_FGD) | (gc == cv::GC_PR_FGD)) == 0)
+    return Error{"", fgKey, "no stroke pixel is left for the object"};
+  if (cv::countNonZero((gc == cv::GC_BGD) | (gc == cv::GC_PR_BGD)) == 0)
+    return Error{"", bgKey, "no pixel is left for the background"};
+  try {
+    cv::grabCut(img, gc, cv::Rect(), bgdModel, fgdModel, std::max(1, opt.grabCutIterations),
+                cv::GC_INIT_WITH_MASK);
+  } catch (const cv::Exception& e) {
+    return Error{"", key, std::string("the segmentation failed: ") + e.what()};
+  }
   cv::Mat seg = (gc == cv::GC_FGD) | (gc == cv::GC_PR_FGD);
   OccluderMatte out;
   out.segmentSeconds = secondsSince(t0);
@@ -211,7 +227,11 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
     const cv::Rect crop = cv::Rect(r.x - m, r.y - m, r.width + 2 * m, r.height + 2 * m) &
                           cv::Rect(0, 0, roi.width, roi.height);
     cv::Mat cropAlpha;
-    cv::alphamat::infoFlow(img(crop).clone(), trimap(crop).clone(), cropAlpha);
+    try {
+      cv::alphamat::infoFlow(img(crop).clone(), trimap(crop).clone(), cropAlpha);
+    } catch (const cv::Exception& e) {
+      return Error{"", key, std::string("the matting failed: ") + e.what()};
+    }
     alpha8 = cv::Mat(roi.size(), CV_8U, cv::Scalar(0));
     cropAlpha.copyTo(alpha8(crop));
   } else {
