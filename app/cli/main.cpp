@@ -51,16 +51,14 @@ Render options:
                           change are revisited only every fourth wave)
   --quiet                 no progress on stderr
 
-The scene file format is described in README.md (keys: photo, camera, layout, lights, surfaces,
-objects, render). Outputs are written to a temporary file and renamed, so an interrupted run
+The scene file format is described in README.md (keys: photo, camera, layout, lights, shafts,
+surfaces, occluders, objects, render). Outputs are written to a temporary file and renamed, so an interrupted run
 never leaves a half-written file. Ctrl-C stops within a second.
 
 Exit status: 0 success, 2 bad input or usage, 1 internal failure or interrupted.
 
 A scene file without camera.vanishing_points_px or layout.back_wall_px gets them estimated from
 the photo (as 'estimate' does), with a warning when the photo shows no clear room structure.
-
-Not in this version: sun shafts, occluders.
 )";
 
 CancelToken gCancel;
