@@ -233,9 +233,7 @@ bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, const 
     if (reason) *reason = why;
     return false;
   };
-  if (index < 0 || index >= objectCount()) return fail(tr("There is no object %1.").arg(index + 1));
-  if (state_ == State::Preparing) return fail(tr("The scene is still being prepared."));
-  if (state_ != State::Ready || !prepared_) return fail(tr("The scene could not be prepared."));
+  if (const QString why = whyObjectsCannotChange(index); !why.isEmpty()) return fail(why);
   if (!std::isfinite(keys.basePx.x()) || !std::isfinite(keys.basePx.y()))
     return fail(tr("The position is not a number."));
   if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
@@ -296,13 +294,19 @@ std::optional<Vec2> Document::freeStandingPointPx() const {
   return std::nullopt;
 }
 
+QString Document::whyObjectsCannotChange(int index) const {
+  if (index != -1 && (index < 0 || index >= objectCount())) return tr("There is no object %1.").arg(index + 1);
+  if (state_ == State::Preparing) return tr("The scene is still being prepared.");
+  if (state_ != State::Ready || !prepared_) return tr("The scene could not be prepared.");
+  return {};
+}
+
 bool Document::insertObject(const ObjectKeys& keys, QString* reason) {
   auto fail = [&](const QString& why) {
     if (reason) *reason = why;
     return false;
   };
-  if (state_ == State::Preparing) return fail(tr("The scene is still being prepared."));
-  if (state_ != State::Ready || !prepared_) return fail(tr("The scene could not be prepared."));
+  if (const QString why = whyObjectsCannotChange(-1); !why.isEmpty()) return fail(why);
   if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
     return fail(tr("The height must be greater than zero."));
   const std::string key = "objects[" + std::to_string(doc_.objects.size()) + "]";
@@ -323,9 +327,7 @@ bool Document::removeObject(int index, QString* reason) {
     if (reason) *reason = why;
     return false;
   };
-  if (index < 0 || index >= objectCount()) return fail(tr("There is no object %1.").arg(index + 1));
-  if (state_ == State::Preparing) return fail(tr("The scene is still being prepared."));
-  if (state_ != State::Ready || !prepared_) return fail(tr("The scene could not be prepared."));
+  if (const QString why = whyObjectsCannotChange(index); !why.isEmpty()) return fail(why);
   undo_.push(new ObjectListCommand(this, false, index, doc_.objects[size_t(index)],
                                    prepared_->renderScene.objects[size_t(index)].meshObject,
                                    tr("Delete object %1").arg(index + 1)));

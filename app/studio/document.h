@@ -114,6 +114,8 @@ class Document : public QObject {
   void prepareProgress(const QString& stage, double fraction);
 
  private:
+  // Why objects cannot be edited now (index -1: any object, e.g. inserting); empty when they can.
+  QString whyObjectsCannotChange(int index) const;
   friend class ObjectEditCommand;
   friend class ObjectListCommand;
   // Validates `keys` for object `index` and pushes the command (see the edit functions).
