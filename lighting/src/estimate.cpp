@@ -162,6 +162,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         p.depth = camera.depthOf(h->pointWorld);
       }
   });
+  out.firstSurfacePerPixel.resize(ps.size());
+  for (size_t i = 0; i < ps.size(); ++i) out.firstSurfacePerPixel[i] = ps[i].surface;
   if (stop()) return cancelled();
 
   auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
@@ -629,8 +631,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   for (size_t s = 0; s < S; ++s) {
     if (albedoCount[s] <= 0) continue;
     const SurfaceKind k = geometry.surfaces[s].kind;
-    const bool wall = k == SurfaceKind::WallLeft || k == SurfaceKind::WallRight ||
-                      k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
+    const bool wall = isWall(k);
     if (wall) wallSum += albedoSum[s], wallN += albedoCount[s];
     roomSum += albedoSum[s], roomN += albedoCount[s];
   }
@@ -639,8 +640,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   out.surfaceMeanAlbedo.resize(S);
   for (size_t s = 0; s < S; ++s) {
     const SurfaceKind k = geometry.surfaces[s].kind;
-    const bool wall = k == SurfaceKind::WallLeft || k == SurfaceKind::WallRight ||
-                      k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
+    const bool wall = isWall(k);
     out.surfaceMeanAlbedo[s] = albedoCount[s] > 0 ? Vec3(albedoSum[s] / albedoCount[s])
                                                   : (wall ? wallMean : roomMean);
   }

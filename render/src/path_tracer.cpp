@@ -112,11 +112,6 @@ struct BsdfSample {
   bool valid = false;
 };
 
-bool isBoxSurface(SurfaceKind k) {
-  return k == SurfaceKind::Floor || k == SurfaceKind::Ceiling || k == SurfaceKind::WallLeft ||
-         k == SurfaceKind::WallRight || k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
-}
-
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
   return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;

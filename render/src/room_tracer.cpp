@@ -117,18 +117,25 @@ Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {
   const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean.size();
   // No mean for this id (the host gave none): a neutral grey rather than black or white.
   const Vec3 fallback = haveMean ? surfaceMean[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
+  if (albedo.channels < 1) return fallback;
+  const auto i = pixelShowing(surfaceId, pointWorld);
+  if (!i) return fallback;
+  return albedo.rgb(int(*i % size_t(albedo.width)), int(*i / size_t(albedo.width)));
+}
+
+std::optional<size_t> ProjectedAlbedo::pixelShowing(int surfaceId, const Vec3& pointWorld) const {
   const int w = albedo.width, h = albedo.height;
-  if (albedo.empty() || albedo.channels < 1 || firstSurfacePerPixel.size() != size_t(w) * h ||
-      camera.widthPx <= 0 || camera.heightPx <= 0)
-    return fallback;
+  if (albedo.empty() || firstSurfacePerPixel.size() != size_t(w) * h || camera.widthPx <= 0 ||
+      camera.heightPx <= 0)
+    return std::nullopt;
   const auto px = camera.project(pointWorld);
-  if (!px) return fallback;
+  if (!px) return std::nullopt;
   // The albedo image may differ in size from the camera's pixel frame: scale.
   const double x = px->x() * double(w) / camera.widthPx, y = px->y() * double(h) / camera.heightPx;
-  if (!(x >= 0 && y >= 0 && x < w && y < h)) return fallback;
-  const int ix = std::min(w - 1, int(x)), iy = std::min(h - 1, int(y));
-  if (firstSurfacePerPixel[size_t(iy) * w + ix] != surfaceId) return fallback;
-  return albedo.rgb(ix, iy);
+  if (!(x >= 0 && y >= 0 && x < w && y < h)) return std::nullopt;
+  const size_t i = size_t(std::min(h - 1, int(y))) * w + size_t(std::min(w - 1, int(x)));
+  if (firstSurfacePerPixel[i] != surfaceId) return std::nullopt;
+  return i;
 }
 
 void ProjectedAlbedo::computeFirstSurfaces(const SceneGeometry& geometry) {

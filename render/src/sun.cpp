@@ -8,11 +8,6 @@ namespace inlay {
 
 namespace {
 
-bool isBoxSurface(SurfaceKind k) {
-  return k == SurfaceKind::Floor || k == SurfaceKind::Ceiling || k == SurfaceKind::WallLeft ||
-         k == SurfaceKind::WallRight || k == SurfaceKind::WallBack || k == SurfaceKind::WallRear;
-}
-
 // Bilinear read of a one-channel image at a pixel position (pixel centres at +0.5); 0 outside.
 double bilinear(const ImageF& img, const Vec2& px) {
   const double x = px.x() - 0.5, y = px.y() - 0.5;
@@ -45,18 +40,14 @@ double SunLight::beamAt(const Vec3& p) const {
 }
 
 bool ProjectedAlbedo::radianceAt(int surfaceId, const Vec3& pointWorld, Vec3* radiance) const {
+  // The photo shares the albedo's pixel grid.
   const int w = photoRadiance.width, h = photoRadiance.height;
-  if (photoRadiance.empty() || photoRadiance.channels < 3 || w != albedo.width || h != albedo.height ||
-      firstSurfacePerPixel.size() != size_t(w) * h || photoRadianceUsable.size() != size_t(w) * h)
+  if (photoRadiance.channels < 3 || w != albedo.width || h != albedo.height ||
+      photoRadianceUsable.size() != size_t(w) * h)
     return false;
-  const auto px = camera.project(pointWorld);
-  if (!px) return false;
-  const double x = px->x() * double(w) / camera.widthPx, y = px->y() * double(h) / camera.heightPx;
-  if (!(x >= 0 && y >= 0 && x < w && y < h)) return false;
-  const int ix = std::min(w - 1, int(x)), iy = std::min(h - 1, int(y));
-  const size_t i = size_t(iy) * w + ix;
-  if (firstSurfacePerPixel[i] != surfaceId || !photoRadianceUsable[i]) return false;
-  const Vec3 r = photoRadiance.rgb(ix, iy);
+  const auto i = pixelShowing(surfaceId, pointWorld);
+  if (!i || !photoRadianceUsable[*i]) return false;
+  const Vec3 r = photoRadiance.rgb(int(*i % size_t(w)), int(*i / size_t(w)));
   if (!r.allFinite()) return false;
   *radiance = r.cwiseMax(0.0);
   return true;

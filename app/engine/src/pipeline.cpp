@@ -338,7 +338,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   rs.roomAlbedo.camera = ps.camera;
   rs.roomAlbedo.albedo = ps.lighting.albedo;
   rs.roomAlbedo.surfaceMean = ps.lighting.surfaceMeanAlbedo;
-  rs.roomAlbedo.computeFirstSurfaces(ps.geometry);
+  // The surface each pixel shows: the lighting stage cast those rays already.
+  rs.roomAlbedo.firstSurfacePerPixel = ps.lighting.firstSurfacePerPixel;
   // Bounces that reach a room point the photo shows take the photo's radiance there (not the
   // light outlines: their light is the lights' own).
   rs.roomAlbedo.photoRadiance = ps.photo.linearRgb;

@@ -59,6 +59,7 @@ struct LightingEstimate {
   std::vector<AreaLight> lights;      // with fitted radiance
   std::vector<SunLight> suns;         // with fitted strength
   std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
+  std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
   double fitRmsLog = 0;  // robust fit residual (log space)
   int gatherSamples = 0; // rays per gathered pixel used
   double seconds = 0;

@@ -33,6 +33,15 @@ enum class SurfaceKind {
   OccluderCard,
 };
 const char* surfaceKindName(SurfaceKind kind);
+// The four walls of the box (not floor or ceiling).
+inline bool isWall(SurfaceKind k) {
+  return k == SurfaceKind::WallLeft || k == SurfaceKind::WallRight || k == SurfaceKind::WallBack ||
+         k == SurfaceKind::WallRear;
+}
+// The six faces of the room's box (what an opening such as a window is cut into).
+inline bool isBoxSurface(SurfaceKind k) {
+  return k == SurfaceKind::Floor || k == SurfaceKind::Ceiling || isWall(k);
+}
 
 // Axis-aligned box of the room, world metres.
 struct RoomBox {

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace inlay {
@@ -34,6 +35,9 @@ struct ProjectedAlbedo {
   std::vector<Vec3> surfaceMean;       // per surface id
 
   Vec3 lookup(int surfaceId, const Vec3& pointWorld) const;
+  // The index (y * albedo.width + x) of the albedo pixel that shows `pointWorld` on surface
+  // `surfaceId`; nullopt when the point is out of frame, behind the camera or hidden.
+  std::optional<size_t> pixelShowing(int surfaceId, const Vec3& pointWorld) const;
 
   // The photo's own radiance (linear, W x H x 3, the photo's size) and where it may stand for a
   // room point's outgoing radiance (W x H, 1 = usable; light outlines are 0). Empty: every
