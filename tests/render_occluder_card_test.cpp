@@ -1,7 +1,9 @@
-// Occluder cards in the path tracer: camera rays pass with probability 1 - alpha.
+// Occluder cards in the path tracer: camera and shadow rays pass with probability 1 - alpha.
 #include "render_test_scenes.h"
 
 #include <gtest/gtest.h>
+
+#include <optional>
 
 namespace inlay {
 namespace {
@@ -64,6 +66,46 @@ TEST(OccluderCard, HidesTheObjectWhereTheMatteCoversIt) {
   ImageF soft(kW, kH, 1, 0.3f);
   const auto [left2, right2] = maskHalves(sceneWithCard(&soft), 64);
   EXPECT_NEAR((left2 + right2) / (left0 + right0), 0.7, 0.05);
+}
+
+
+// A horizontal card between a small ceiling light and the floor, above the camera (out of its
+// view); its matte is given in a second camera looking straight down, uniform `alpha` there.
+// Returns the mean radiance of the floor the camera sees (all of it in the card's shadow).
+double floorUnderCard(std::optional<float> alpha) {
+  const Camera cam = test::testCamera(kW, kH, 40, 1.0, -70);
+  RenderScene s = test::roomScene(cam, RoomBox{}, 0.3);
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.5, -0.6), Vec3(0.05, 0, 0), Vec3(0, 0, 0.05), Vec3::Constant(200)));
+  if (alpha) {
+    Surface card;
+    card.kind = SurfaceKind::OccluderCard;
+    card.name = "occluder_0_card";
+    card.meshWorld = test::quadMesh(test::rectCorners(Vec3(0, 1.6, -0.5), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4)));
+    auto a = std::make_shared<CardAlpha>();
+    a->camera = test::testCamera(kW, kH, 120, 2.5, -90);
+    a->alphaPx = ImageF(kW, kH, 1, *alpha);
+    card.cardAlpha = a;
+    s.room.surfaces.push_back(card);
+    s.roomAlbedo.surfaceMean.push_back(Vec3::Constant(0.3));
+  }
+  PathTracer tracer(s);
+  DifferentialBuffers b(kW, kH);
+  EXPECT_TRUE(tracer.render(b, 0, 64, 3));
+  const ImageF im = b.meanWithout();
+  double sum = 0;
+  for (float v : im.data) sum += v;
+  return sum / double(im.data.size());
+}
+
+TEST(OccluderCard, SoftMatteCastsAShadowOfItsStrength) {
+  const double open = floorUnderCard(std::nullopt), solid = floorUnderCard(1.f);
+  ASSERT_GT(open, 2.0 * solid);  // the light reaches the floor only through the card
+  // The shadow's strength (share of the direct light removed) follows the matte's alpha.
+  for (float alpha : {0.25f, 0.5f, 0.75f}) {
+    const double strength = (open - floorUnderCard(alpha)) / (open - solid);
+    EXPECT_NEAR(strength, alpha, 0.06) << "alpha " << alpha;
+  }
 }
 
 }  // namespace

@@ -35,8 +35,10 @@
 // Occluder cards (SurfaceKind::OccluderCard, a matte standing in the room): a camera or bounce
 // ray that meets one passes on with probability 1 - alpha there (stochastic alpha test with
 // the dimension of the vertex it looks for; with- and without-paths draw the same number), and
-// is otherwise room. Shadow rays have no number to draw: an Embree occlusion filter lets them
-// through where alpha < 0.5.
+// is otherwise room. Shadow rays get the same stochastic test inside an Embree occlusion filter,
+// whose number is a hash of the ray and the hit distance (the filter has no sampler): shadows
+// behind a matte's soft edge are soft, and the with- and without-scene tests of one shadow ray
+// agree.
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
@@ -50,6 +52,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <bit>
 #include <atomic>
 #include <cmath>
 
@@ -632,7 +635,19 @@ ImageF DifferentialBuffers::meanMask() const { return meanOf(sumMask, samples); 
 // ---------------------------------------------------------------------------------------------
 
 namespace {
-// Shadow rays pass an occluder card where its matte covers less than half.
+// A number in [0, 1) fixed by a shadow ray and its candidate hit on a card: a pure function of
+// the ray (so of pixel, sample and seed), the same in the with- and without-object scenes, and
+// independent between two cards on one ray (their distances differ).
+double shadowAlphaNumber(const float org[3], const float dir[3], float t) {
+  uint32_t h = 0x9e3779b9u;
+  auto mix = [&h](float f) { h = pcgHash(h ^ std::bit_cast<uint32_t>(f)); };
+  for (int i = 0; i < 3; ++i) mix(org[i]), mix(dir[i]);
+  mix(t);
+  return double(h >> 8) * (1.0 / 16777216.0);
+}
+
+// Shadow rays pass an occluder card with probability 1 - alpha (a stochastic alpha test): in
+// expectation the card's shadow has the matte's strength, soft edge included.
 void cardShadowFilter(const RTCFilterFunctionNArguments* args) {
   const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
   for (unsigned k = 0; k < args->N; ++k) {
@@ -641,8 +656,10 @@ void cardShadowFilter(const RTCFilterFunctionNArguments* args) {
                  RTCRayN_org_z(args->ray, args->N, k));
     const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
                    RTCRayN_dir_z(args->ray, args->N, k));
-    const double t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
-    if (card->alphaAt(o + t * dir) < 0.5) args->valid[k] = 0;
+    const float t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
+    const float org[3] = {float(o.x()), float(o.y()), float(o.z())};
+    const float dirf[3] = {float(dir.x()), float(dir.y()), float(dir.z())};
+    if (shadowAlphaNumber(org, dirf, t) >= card->alphaAt(o + double(t) * dir)) args->valid[k] = 0;
   }
 }
 }  // namespace
