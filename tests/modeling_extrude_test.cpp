@@ -111,6 +111,49 @@ TEST(Extrude, EitherOrientationGivesTheSameClosedSolid) {
   EXPECT_NEAR(closedVolume(l->upWorld, l->otherWorld), (0.3 + 0.15) * h, 1e-4);
 }
 
+// The solid is kept as an OpenMesh mesh whose topology says closed, manifold, a sphere
+// (V - E + F = 2) and outward; its volume agrees with the renderer's meshes converted from it.
+void expectClosedSolid(const Extrusion& e, size_t outlinePoints, double volumeM3) {
+  ASSERT_TRUE(e.solid) << "no OpenMesh solid";
+  const SolidSummary s = summarizeSolid(*e.solid);
+  EXPECT_TRUE(s.closed);
+  EXPECT_TRUE(s.manifold);
+  EXPECT_EQ(s.eulerCharacteristic, 2);
+  EXPECT_EQ(s.vertices, 2 * outlinePoints);  // the two caps share the side walls' vertices
+  EXPECT_EQ(s.faces, 2 * (outlinePoints - 2) + 2 * outlinePoints);
+  EXPECT_NEAR(s.volumeM3, volumeM3, 1e-4);
+  EXPECT_NEAR(closedVolume(e.upWorld, e.otherWorld), s.volumeM3, 1e-4);
+}
+
+TEST(Extrude, SolidsAreClosedOpenMeshMeshes) {
+  const Camera c = pitchedCamera();
+  const Table t(c);
+  const auto table = extrusionFromOutline(c, t.outline, t.click, "surfaces[0]");
+  ASSERT_TRUE(table.ok()) << table.error().message();
+  expectClosedSolid(*table, 4, 1.0 * 0.6 * t.h);
+  ExtrusionOptions o;
+  o.thicknessM = 0.04;
+  const auto slab = extrusionFromOutline(c, t.outline, t.click, "surfaces[0]", o);
+  ASSERT_TRUE(slab.ok()) << slab.error().message();
+  expectClosedSolid(*slab, 4, 0.6 * 0.04);
+  // Stairs sweep their profile across the width, against the profile plane's normal: still
+  // outward.
+  StairsSpec st;
+  st.basePx = *c.project(Vec3(0.2, 0, -2.5));
+  st.steps = 3;
+  st.riseM = 0.2;
+  st.runM = 0.25;
+  st.widthM = 0.8;
+  for (const Vec3& climb : {Vec3(0, 0, -1), Vec3(1, 0, 0), Vec3(-1, 0, 0)}) {
+    st.climbWorld = climb;
+    const auto s = stairsFromSpec(c, st, "surfaces[0]");
+    ASSERT_TRUE(s.ok()) << s.error().message();
+    expectClosedSolid(*s, 2 + 2 * 3, 0.25 * 0.2 * (1 + 2 + 3) * 0.8);
+  }
+  // A hand-made extrusion has no solid.
+  EXPECT_FALSE(Extrusion{}.solid);
+}
+
 TEST(Extrude, AboveTheHorizonAndWrongClicksAreRefused) {
   const Camera c = pitchedCamera();
   const Table t(c);
@@ -201,6 +244,102 @@ TEST(Stairs, ObjectsStandOnAnyStep) {
   expectError(stairsFromSpec(c, bad, "surfaces[1]"), "surfaces[1].climb_axis", "+x");
 }
 
+// Three steps (rise 0.25, run 0.4) drawn on the left wall (x = -3), climbing toward -z from
+// z = -4.2, as a user clicks them: each corner projected, off by up to a pixel.
+std::vector<Vec2> drawnLeftWallProfile(const Camera& c) {
+  const std::vector<Vec2> zy = {{-4.2, 0},    {-4.2, 0.25}, {-4.6, 0.25}, {-4.6, 0.5},
+                                {-5.0, 0.5},  {-5.0, 0.75}, {-5.4, 0.75}, {-5.4, 0}};
+  const Vec2 jitter[8] = {{0.6, -0.8}, {-0.9, 0.4}, {0.3, 0.9}, {-0.5, -0.7},
+                          {0.8, 0.2},  {-0.2, -0.9}, {0.7, 0.6}, {-0.6, 0.3}};
+  std::vector<Vec2> px;
+  for (size_t i = 0; i < zy.size(); ++i) px.push_back(*c.project(Vec3(-3, zy[i].y(), zy[i].x())) + jitter[i]);
+  return px;
+}
+
+TEST(Stairs, FromAProfileDrawnOnASideWall) {
+  const Camera c = pitchedCamera();
+  StairsProfileSpec sp;
+  sp.profilePx = drawnLeftWallProfile(c);
+  sp.widthM = 1.0;  // the wall is found from the points
+  const auto st = stairsFromProfile(c, roomBox(), sp, "surfaces[0]");
+  ASSERT_TRUE(st.ok()) << st.error().message();
+  EXPECT_NEAR(st->heightM, 0.75, 0.01);
+  ASSERT_TRUE(st->solid);
+  const SolidSummary s = summarizeSolid(*st->solid);
+  EXPECT_TRUE(s.closed && s.manifold);
+  EXPECT_EQ(s.eulerCharacteristic, 2);
+  EXPECT_NEAR(s.volumeM3, 0.4 * 0.25 * (1 + 2 + 3) * 1.0, 0.02);
+  // The drawn treads were snapped level: every up face is exactly horizontal, three treads.
+  EXPECT_EQ(st->upWorld.triangles.size(), 6u);
+  for (const auto& n : st->upWorld.normals) EXPECT_NEAR(n.y(), 1.0f, 1e-6f);
+  const SceneGeometry g = buildSceneGeometry(roomBox(), {*st});
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 tread(-2.5, (k + 1) * 0.25, -4.2 - (k + 0.5) * 0.4);
+    const auto p = placeObject(makeCube(), g, c, *c.project(tread), 0.1, 0, "objects[0]");
+    ASSERT_TRUE(p.ok()) << p.error().message();
+    EXPECT_NEAR(p->baseWorld.y(), (k + 1) * 0.25, 0.01) << "step " << k;
+    EXPECT_NEAR(p->baseWorld.x(), -2.5, 0.02) << "step " << k;
+    EXPECT_EQ(g.surfaces[size_t(p->supportSurfaceId)].kind, SurfaceKind::ExtrusionTop);
+  }
+  // No width: across the room to the opposite wall.
+  sp.widthM = 0;
+  sp.wall = SurfaceKind::WallLeft;
+  const auto full = stairsFromProfile(c, roomBox(), sp, "surfaces[0]");
+  ASSERT_TRUE(full.ok()) << full.error().message();
+  EXPECT_NEAR(summarizeSolid(*full->solid).volumeM3, 0.4 * 0.25 * 6 * 6.0, 0.1);
+}
+
+void expectProfileError(const Camera& c, const StairsProfileSpec& sp, const std::string& key,
+                        const std::string& words) {
+  expectError(stairsFromProfile(c, roomBox(), sp, "surfaces[0]"), key, words);
+}
+
+TEST(Stairs, BadProfilesAreRefusedWithTheKey) {
+  const Camera c = pitchedCamera();
+  const std::vector<Vec2> good = drawnLeftWallProfile(c);
+  StairsProfileSpec sp;
+  sp.widthM = 1.0;
+  sp.profilePx = {good[0], good[1]};
+  expectProfileError(c, sp, "surfaces[0].profile_px", "at least 3 points");
+  // Drawn on the floor, not on a wall.
+  sp.profilePx.clear();
+  for (const Vec3& p : {Vec3(0, 0, -3), Vec3(0.5, 0, -3), Vec3(0.5, 0, -3.5)}) sp.profilePx.push_back(*c.project(p));
+  expectProfileError(c, sp, "surfaces[0].profile_px", "not on a wall");
+  // High on the wall: above the horizon (the camera is 1.5 m up), it cannot reach the floor.
+  sp.profilePx.clear();
+  for (const Vec2& zy : {Vec2(-4.4, 1.8), Vec2(-4.4, 2.2), Vec2(-5.0, 2.2), Vec2(-5.0, 1.8)})
+    sp.profilePx.push_back(*c.project(Vec3(-3, zy.y(), zy.x())));
+  expectProfileError(c, sp, "surfaces[0].profile_px[", "horizon");
+  // Below the horizon but floating above the floor.
+  sp.profilePx.clear();
+  for (const Vec2& zy : {Vec2(-4.4, 0.3), Vec2(-4.4, 0.8), Vec2(-5.0, 0.8), Vec2(-5.0, 0.3)})
+    sp.profilePx.push_back(*c.project(Vec3(-3, zy.y(), zy.x())));
+  expectProfileError(c, sp, "surfaces[0].profile_px", "does not reach the floor");
+  // Crossing edges (the tread corners swapped).
+  sp.profilePx = good;
+  std::swap(sp.profilePx[2], sp.profilePx[5]);
+  expectProfileError(c, sp, "surfaces[0].profile_px", "crosses itself");
+  // Said to be on the back wall, where these points do not land.
+  sp.profilePx = good;
+  sp.wall = SurfaceKind::WallBack;
+  expectProfileError(c, sp, "surfaces[0].profile_px[", "back wall");
+  sp.wall = SurfaceKind::Floor;
+  expectProfileError(c, sp, "surfaces[0].wall", "left");
+  sp.wall.reset();
+  sp.widthM = 7.0;
+  expectProfileError(c, sp, "surfaces[0].width_m", "wider than the room");
+  // A tall flight on the back wall swept all the way to the rear would enclose the camera.
+  sp.profilePx.clear();
+  for (const Vec2& xy : {Vec2(-1, 0), Vec2(1, 0), Vec2(1, 2.0), Vec2(-1, 2.0)})
+    sp.profilePx.push_back(*c.project(Vec3(xy.x(), xy.y(), -6)));
+  sp.widthM = 6.4;
+  expectProfileError(c, sp, "surfaces[0].width_m", "enclose the camera");
+  sp.widthM = 0;
+  expectProfileError(c, sp, "surfaces[0].width_m", "required");
+  sp.widthM = 1.0;
+  EXPECT_TRUE(stairsFromProfile(c, roomBox(), sp, "surfaces[0]").ok());
+}
+
 TEST(Extrude, SceneFileKeysRoundTrip) {
   const std::string text = R"({"format": "inlay-scene", "version": 1, "photo": "p.png",
     "surfaces": [
@@ -208,14 +347,18 @@ TEST(Extrude, SceneFileKeysRoundTrip) {
        "thickness_m": 0.05},
       {"kind": "box", "outline_px": [[10, 10], [50, 10], [50, 40]], "height_click_px": [10, 90]},
       {"kind": "stairs", "base_px": [100, 300], "steps": 3, "rise_m": 0.2, "run_m": 0.25,
-       "width_m": 0.9, "climb_axis": "+x"}]})";
+       "width_m": 0.9, "climb_axis": "+x"},
+      {"kind": "stairs", "profile_px": [[10, 300], [10, 250], [60, 250], [60, 300]], "wall": "left"}]})";
   const auto dir = test::tempDir("extrude_keys");
   std::ofstream(dir / "p.png") << "x";  // the parser only checks that the photo exists
   const auto r = parseSceneJson(text, dir.string(), "s.json");
   ASSERT_TRUE(r.ok()) << r.error().message();
   const auto& s = r->doc.surfaces;
-  ASSERT_EQ(s.size(), 3u);
+  ASSERT_EQ(s.size(), 4u);
   EXPECT_DOUBLE_EQ(*s[0].thicknessM, 0.05);
+  EXPECT_EQ(s[3].profilePx.size(), 4u);
+  EXPECT_EQ(s[3].wall, "left");
+  EXPECT_EQ(s[3].widthM, 0.0);  // to the opposite wall
   EXPECT_EQ(s[1].kind, "box");
   EXPECT_FALSE(s[1].thicknessM.has_value());
   EXPECT_EQ(s[2].steps, 3);
@@ -224,6 +367,19 @@ TEST(Extrude, SceneFileKeysRoundTrip) {
   ASSERT_TRUE(back.ok()) << back.error().message();
   EXPECT_EQ(back->doc.surfaces[2].widthM, 0.9);
   EXPECT_EQ(*back->doc.surfaces[0].thicknessM, 0.05);
+  EXPECT_EQ(back->doc.surfaces[3].profilePx, s[3].profilePx);
+  EXPECT_EQ(back->doc.surfaces[3].wall, "left");
+  EXPECT_FALSE(parseSceneJson(
+                   R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
+         {"kind": "stairs", "profile_px": [[1, 2], [3, 4], [5, 1]], "steps": 3}]})",
+                   dir.string(), "s.json")
+                   .ok());
+  const auto badWall = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
+         {"kind": "stairs", "profile_px": [[1, 2], [3, 4], [5, 1]], "wall": "ceiling"}]})",
+      dir.string(), "s.json");
+  ASSERT_FALSE(badWall.ok());
+  EXPECT_NE(badWall.error().message().find("surfaces[0].wall"), std::string::npos);
   const auto bad = parseSceneJson(
       R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
          {"kind": "stairs", "base_px": [1, 2], "steps": 3, "rise_m": 0.2, "run_m": 0.25}]})",

@@ -1,16 +1,13 @@
 // The one translation unit of modeling that includes CGAL's polygon, triangulation and mesh
 // headers (about 20 s and 1.1 GB to compile): keep other CGAL work here or in one more file.
+// The solids themselves are assembled and checked in OpenMesh (solid_mesh.cpp).
 #include "extrude_cgal.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
 
@@ -26,9 +23,6 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<uint32_t, K>;
 using Fb = CGAL::Constrained_triangulation_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
-using Point3 = K::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 Point2 toCgal(const Vec2& p) { return Point2(p.x(), p.y()); }
 
@@ -113,70 +107,6 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec2>&
     tris.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
   }
   return tris;
-}
-
-Expected<PrismMeshes> buildPrism(const std::vector<Vec2>& polygonCcw, const Vec3& origin,
-                                 const Vec3& u, const Vec3& v, const Vec3& sweep,
-                                 const std::string& key) {
-  INLAY_CHECK(polygonCcw.size() >= 3);
-  if (!(sweep.norm() > 1e-6) || !sweep.allFinite())
-    return Error{"", key, "the solid would have no thickness"};
-  if (!(std::abs(u.cross(v).normalized().dot(sweep.normalized())) > 1e-3))
-    return Error{"", key, "the sweep lies in the outline's plane: the solid would be flat"};
-  const auto tris = triangulatePolygon(polygonCcw);
-  const size_t n = polygonCcw.size();
-  SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> bottom(n), top(n);
-  auto place = [&](const Vec2& q, const Vec3& offset) {
-    const Vec3 p = origin + q.x() * u + q.y() * v + offset;
-    return Point3(p.x(), p.y(), p.z());
-  };
-  for (size_t i = 0; i < n; ++i) {
-    bottom[i] = sm.add_vertex(place(polygonCcw[i], Vec3::Zero()));
-    top[i] = sm.add_vertex(place(polygonCcw[i], sweep));
-  }
-  bool facesOk = true;
-  auto face = [&](SurfaceMesh::Vertex_index a, SurfaceMesh::Vertex_index b,
-                  SurfaceMesh::Vertex_index c) {
-    facesOk = facesOk && sm.add_face(a, b, c) != SurfaceMesh::null_face();
-  };
-  for (const auto& t : tris) {
-    face(top[t[0]], top[t[1]], top[t[2]]);
-    face(bottom[t[0]], bottom[t[2]], bottom[t[1]]);
-  }
-  for (size_t i = 0; i < n; ++i) {
-    const size_t j = (i + 1) % n;
-    face(bottom[i], bottom[j], top[j]);
-    face(bottom[i], top[j], top[i]);
-  }
-  if (!facesOk || !CGAL::is_closed(sm) || !PMP::does_bound_a_volume(sm))
-    return Error{"", key, "the solid is not a closed mesh bounding a volume"};
-  double volume = PMP::volume(sm);
-  if (volume < 0) {
-    PMP::reverse_face_orientations(sm);
-    volume = -volume;
-  }
-  PrismMeshes out;
-  out.volumeM3 = volume;
-  for (auto f : sm.faces()) {
-    Vec3 p[3];
-    int k = 0;
-    for (auto vtx : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      const Point3& q = sm.point(vtx);
-      p[k++] = Vec3(q.x(), q.y(), q.z());
-    }
-    const Vec3 nrm = (p[1] - p[0]).cross(p[2] - p[0]);
-    if (!(nrm.norm() > 0)) continue;  // a sliver from collinear outline points carries no area
-    const Vec3 nUnit = nrm.normalized();
-    TriangleMesh& m = nUnit.y() > 0.99 ? out.upWorld : out.otherWorld;
-    const uint32_t base = uint32_t(m.positions.size());
-    for (const Vec3& q : p) {
-      m.positions.push_back(q.cast<float>());
-      m.normals.push_back(nUnit.cast<float>());
-    }
-    m.triangles.push_back({base, base + 1, base + 2});
-  }
-  return out;
 }
 
 }  // namespace inlay::detail

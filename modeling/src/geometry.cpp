@@ -1,6 +1,8 @@
 #include "inlay/modeling/geometry.h"
 
 #include "extrude_cgal.h"
+#include "geometry_internal.h"
+#include "solid_mesh.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +25,7 @@ const char* surfaceKindName(SurfaceKind kind) {
   return "surface";
 }
 
-namespace {
+namespace detail {
 
 std::string pxText(const Vec2& p) {
   char buf[64];
@@ -31,13 +33,30 @@ std::string pxText(const Vec2& p) {
   return buf;
 }
 
-// Ray / horizontal plane y = h; nullopt when parallel or behind.
 std::optional<Vec3> hitHorizontal(const Ray& ray, double h) {
   if (std::abs(ray.direction.y()) < 1e-12) return std::nullopt;
   const double t = (h - ray.origin.y()) / ray.direction.y();
   if (!(t > 1e-9) || !std::isfinite(t)) return std::nullopt;
   return ray.at(t);
 }
+
+double signedAreaTop(const std::vector<Vec3>& poly) {
+  double a = 0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec3& p = poly[i];
+    const Vec3& q = poly[(i + 1) % poly.size()];
+    a += p.x() * (-q.z()) - q.x() * (-p.z());
+  }
+  return 0.5 * a;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::hitHorizontal;
+using detail::pxText;
+using detail::signedAreaTop;
 
 // Adds quad a b c d (counter-clockwise seen from the side its normal n points to).
 void addQuad(TriangleMesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
@@ -58,18 +77,6 @@ Surface makeSurface(SurfaceKind kind, std::string name, bool supports, int group
   s.supportsObjects = supports;
   s.groupIndex = group;
   return s;
-}
-
-// Signed area of a polygon in the (x, -z) plane: positive when counter-clockwise seen from
-// above with x to the right and -z (away from the camera) up.
-double signedAreaTop(const std::vector<Vec3>& poly) {
-  double a = 0;
-  for (size_t i = 0; i < poly.size(); ++i) {
-    const Vec3& p = poly[i];
-    const Vec3& q = poly[(i + 1) % poly.size()];
-    a += p.x() * (-q.z()) - q.x() * (-p.z());
-  }
-  return 0.5 * a;
 }
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -247,6 +254,7 @@ Status buildExtrusionSolid(Extrusion& ex, double yBottom, const std::string& key
   if (!prism) return prism.error();
   ex.upWorld = std::move(prism->upWorld);
   ex.otherWorld = std::move(prism->otherWorld);
+  ex.solid = std::move(prism->solid);
   return Status{};
 }
 
@@ -347,50 +355,6 @@ Expected<Extrusion> boxFromOutline(const Camera& camera, const std::vector<Vec2>
   return ex;
 }
 
-Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& st,
-                                   const std::string& key) {
-  if (!st.basePx.allFinite()) return Error{"", key + ".base_px", "is not a finite number"};
-  if (st.steps < 1 || st.steps > 1000)
-    return Error{"", key + ".steps", "must be a whole number from 1 to 1000"};
-  auto positive = [](double v) { return v > 0 && std::isfinite(v); };
-  if (!positive(st.riseM)) return Error{"", key + ".rise_m", "must be a positive number"};
-  if (!positive(st.runM)) return Error{"", key + ".run_m", "must be a positive number"};
-  if (!positive(st.widthM)) return Error{"", key + ".width_m", "must be a positive number"};
-  const Vec3 c = st.climbWorld;
-  const bool axis = std::abs(c.y()) < 1e-9 && std::abs(std::abs(c.x()) + std::abs(c.z()) - 1) < 1e-9 &&
-                    (std::abs(c.x()) < 1e-9 || std::abs(c.z()) < 1e-9);
-  if (!axis) return Error{"", key + ".climb_axis", "must be one of +x, -x, +z, -z"};
-  const auto base = hitHorizontal(camera.rayThroughPixel(st.basePx), 0.0);
-  if (!base)
-    return Error{"", key + ".base_px",
-                 "the point " + pxText(st.basePx) + " is at or above the horizon, so it cannot be "
-                 "on the floor"};
-  // Side profile in (along the climb, up), counter-clockwise: the floor line, the back, then
-  // down the staircase edge: nosing of step k at ((k) run, (k + 1) rise).
-  std::vector<Vec2> profile = {{0, 0}, {st.steps * st.runM, 0}};
-  for (int k = st.steps - 1; k >= 0; --k) {
-    profile.emplace_back((k + 1) * st.runM, (k + 1) * st.riseM);
-    profile.emplace_back(k * st.runM, (k + 1) * st.riseM);
-  }
-  auto ccw = detail::counterClockwiseSimplePolygon(profile, key);
-  if (!ccw) return ccw.error();
-  const Vec3 across = Vec3(0, 1, 0).cross(c).normalized();
-  const Vec3 origin = *base - 0.5 * st.widthM * across;
-  auto prism = detail::buildPrism(*ccw, origin, c, Vec3(0, 1, 0), st.widthM * across, key);
-  if (!prism) return prism.error();
-  Extrusion ex;
-  ex.heightM = st.steps * st.riseM;
-  const Vec3 far = *base + st.steps * st.runM * c;
-  const Vec3 hw = 0.5 * st.widthM * across;
-  ex.topOutlineWorld = {*base - hw, *base + hw, far + hw, far - hw};
-  for (Vec3& p : ex.topOutlineWorld) p.y() = ex.heightM;
-  if (signedAreaTop(ex.topOutlineWorld) < 0)
-    std::reverse(ex.topOutlineWorld.begin(), ex.topOutlineWorld.end());
-  ex.upWorld = std::move(prism->upWorld);
-  ex.otherWorld = std::move(prism->otherWorld);
-  return ex;
-}
-
 SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>& extrusions) {
   SceneGeometry g;
   g.box = b;
@@ -428,7 +392,7 @@ SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>&
   for (size_t e = 0; e < extrusions.size(); ++e) {
     const auto& ex = extrusions[e];
     const std::string base = "surface_" + std::to_string(e);
-    if (!ex.upWorld.empty()) {  // the CGAL solid
+    if (!ex.upWorld.empty()) {  // the solid built in OpenMesh, converted
       Surface top = makeSurface(SurfaceKind::ExtrusionTop, base + "_top", true, int(e));
       top.meshWorld = ex.upWorld;
       g.surfaces.push_back(std::move(top));

@@ -477,10 +477,29 @@ class Reader {
     return s;
   }
 
+  // Stairs drawn as a side profile on a wall: the polygon, the wall (optional), the width
+  // (optional: to the opposite wall).
+  SurfaceKeys readStairsProfile(const json& j, const std::string& p, SurfaceKeys s) {
+    knownKeys(j, p, {"kind", "profile_px", "wall", "width_m"});
+    for (const char* k : {"base_px", "steps", "rise_m", "run_m", "climb_axis"})
+      if (j.contains(k)) fail(child(p, k), "not used with profile_px (give one or the other)");
+    s.profilePx = polyline(j["profile_px"], child(p, "profile_px"), 3, limits_);
+    checkSimplePolygon(s.profilePx, child(p, "profile_px"));
+    if (j.contains("wall")) {
+      s.wall = string(j["wall"], child(p, "wall"));
+      if (s.wall != "left" && s.wall != "right" && s.wall != "back")
+        fail(child(p, "wall"), "must be one of \"left\", \"right\", \"back\"");
+    }
+    if (j.contains("width_m") && !j["width_m"].is_null())
+      s.widthM = positive(j["width_m"], child(p, "width_m"));
+    return s;
+  }
+
   SurfaceKeys readSurface(const json& j, const std::string& p) {
     object(j, p);
     SurfaceKeys s;
     if (j.contains("kind")) s.kind = string(j["kind"], child(p, "kind"));
+    if (s.kind == "stairs" && j.contains("profile_px")) return readStairsProfile(j, p, s);
     if (s.kind == "stairs") {
       knownKeys(j, p, {"kind", "base_px", "steps", "rise_m", "run_m", "width_m", "climb_axis"});
       for (const char* k : {"base_px", "steps", "rise_m", "run_m", "width_m"})
@@ -732,6 +751,13 @@ ojson buildJson(const SceneDoc& doc) {
   if (!doc.surfaces.empty()) {
     ojson a = ojson::array();
     for (const SurfaceKeys& s : doc.surfaces) {
+      if (s.kind == "stairs" && !s.profilePx.empty()) {
+        ojson o{{"kind", s.kind}, {"profile_px", toJson(s.profilePx)}};
+        if (!s.wall.empty()) o["wall"] = s.wall;
+        if (s.widthM > 0) o["width_m"] = s.widthM;
+        a.push_back(o);
+        continue;
+      }
       if (s.kind == "stairs") {
         a.push_back(ojson{{"kind", s.kind},         {"base_px", toJson(s.basePx)},
                           {"steps", s.steps},       {"rise_m", s.riseM},

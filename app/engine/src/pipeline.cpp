@@ -251,6 +251,14 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       ex = extrusionFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
     } else if (sk.kind == "box") {
       ex = boxFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
+    } else if (sk.kind == "stairs" && !sk.profilePx.empty()) {
+      StairsProfileSpec sp;
+      sp.profilePx = sk.profilePx;
+      if (sk.wall == "left") sp.wall = SurfaceKind::WallLeft;
+      if (sk.wall == "right") sp.wall = SurfaceKind::WallRight;
+      if (sk.wall == "back") sp.wall = SurfaceKind::WallBack;
+      sp.widthM = sk.widthM;
+      ex = stairsFromProfile(ps.camera, ps.box, sp, key);
     } else if (sk.kind == "stairs") {
       StairsSpec st;
       st.basePx = sk.basePx;

@@ -109,13 +109,31 @@ std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
 // volume. Errors name `keyForMessages` (e.g. "surfaces[0].outline_px"): fewer than 3 distinct
 // points, collinear points, a crossing outline, a point or click at or above the horizon, a
 // click above the top or not straight below outline point 0. On error nothing is built.
+// The closed solid as built: an OpenMesh triangle mesh (defined inside modeling, in
+// src/solid_mesh.h, so OpenMesh stays out of this header). Immutable once built.
+struct SolidMesh;
+// What OpenMesh's topology says about a solid: closed (no boundary halfedge), manifold (one
+// fan per vertex, consistent halfedge pairs), V - E + F (2 for a solid without holes), and the
+// signed volume (positive: faces outward).
+struct SolidSummary {
+  size_t vertices = 0, edges = 0, faces = 0;
+  bool closed = false;
+  bool manifold = false;
+  long eulerCharacteristic = 0;
+  double volumeM3 = 0;
+};
+SolidSummary summarizeSolid(const SolidMesh& solid);
+
 struct Extrusion {
   std::vector<Vec3> topOutlineWorld;  // counter-clockwise seen from above, at y = heightM
   double heightM = 0;
   double thicknessM = 0;              // 0: solid down to the floor; > 0: a slab this thick
-  // The closed solid, flat-shaded with outward normals: the faces looking up (the top, stair
-  // treads: objects stand on them) and all the others. Empty for a hand-made Extrusion:
-  // buildSceneGeometry then prisms topOutlineWorld down to the floor itself.
+  // The closed solid (OpenMesh), checked closed, manifold and outward when it was built. Null
+  // for a hand-made Extrusion.
+  std::shared_ptr<const SolidMesh> solid;
+  // The solid converted for the renderer, flat-shaded with outward normals: the faces looking
+  // up (the top, stair treads: objects stand on them) and all the others. Empty for a hand-made
+  // Extrusion: buildSceneGeometry then prisms topOutlineWorld down to the floor itself.
   TriangleMesh upWorld;
   TriangleMesh otherWorld;
 };
@@ -151,6 +169,30 @@ struct StairsSpec {
 };
 Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& spec,
                                    const std::string& keyForMessages);
+
+// Stairs from their side profile as drawn on a wall of the room: a closed polygon in photo
+// pixels around the flight's side (treads, risers, the back and the floor line), lifted onto the
+// wall's plane and extruded straight across the room from that wall, `widthM` wide or to the
+// opposite wall. Drawn edges within `snapDeg` of level become exactly level (treads objects stand
+// on), those within `snapDeg` of vertical exactly vertical, and points within `floorSnapM` of the
+// floor rest on it; the result must be simple (CGAL), a crossing is refused with the two edges.
+// Errors name `keyForMessages` + ".profile_px" (fewer than 3 points, collinear, crossing, a point
+// whose ray misses the wall or lands off it, a profile not reaching the floor or whose lowest
+// point is at or above the horizon), ".wall" or ".width_m" (stairs enclosing the camera, no
+// opposite wall in front of the camera).
+struct StairsProfileSpec {
+  std::vector<Vec2> profilePx;  // closed polygon on the wall, >= 3 points, either orientation
+  // The wall drawn on: WallLeft, WallRight or WallBack; nullopt: the wall most of the points'
+  // rays meet first.
+  std::optional<SurfaceKind> wall;
+  double widthM = 0;            // > 0: across the flight from the wall; 0: to the opposite wall
+                                // (left and right walls only)
+  double snapDeg = 10.0;        // default 10 deg: a hand-drawn step is within a few degrees
+  double floorSnapM = 0.05;     // default 5 cm: the floor line as drawn, give or take a pixel
+};
+Expected<Extrusion> stairsFromProfile(const Camera& camera, const RoomBox& box,
+                                      const StairsProfileSpec& spec,
+                                      const std::string& keyForMessages);
 
 // The room's six faces plus the given extrusions (the up-looking faces and the rest each a
 // surface: "surface_<i>_top" supports objects, "surface_<i>_side").

@@ -56,6 +56,10 @@ struct SurfaceKeys {
   double widthM = 0;                 // "width_m": across the flight
   std::string climbAxis = "-z";      // "climb_axis": "+x" | "-x" | "+z" | "-z" (default -z: away
                                      // from the camera)
+  // stairs from a side profile drawn on a wall (instead of base_px, steps, rise_m, run_m):
+  std::vector<Vec2> profilePx;       // "profile_px": closed polygon on the wall, >= 3 points
+  std::string wall;                  // "wall": "left" | "right" | "back"; "" = the wall it is on
+                                     // (widthM 0 = "width_m" missing: to the opposite wall)
 };
 
 struct OccluderKeys {
