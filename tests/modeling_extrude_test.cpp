@@ -1,6 +1,7 @@
 // Extrusions, boxes and stairs (CGAL): bad outlines, metrology, solids, the table scene.
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/geometry.h"
+#include "inlay/modeling/occluder.h"
 #include "inlay/modeling/scene_file.h"
 #include "test_support.h"
 
@@ -340,6 +341,56 @@ TEST(Stairs, BadProfilesAreRefusedWithTheKey) {
   EXPECT_TRUE(stairsFromProfile(c, roomBox(), sp, "surfaces[0]").ok());
 }
 
+// A matte as a user's segmentation would give it: 1 where the pixel's ray meets one of the
+// boxes (min corner, max corner), 0 elsewhere.
+ImageF matteOfBoxes(const Camera& c, const std::vector<std::pair<Vec3, Vec3>>& boxes) {
+  ImageF a(c.widthPx, c.heightPx, 1, 0.f);
+  for (int y = 0; y < c.heightPx; ++y)
+    for (int x = 0; x < c.widthPx; ++x) {
+      const Ray r = c.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+      for (const auto& [lo, hi] : boxes) {
+        double t0 = 0, t1 = 1e9;
+        for (int k = 0; k < 3; ++k) {
+          const double inv = 1.0 / r.direction[k];
+          double ta = (lo[k] - r.origin[k]) * inv, tb = (hi[k] - r.origin[k]) * inv;
+          if (ta > tb) std::swap(ta, tb);
+          t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+        }
+        if (t0 <= t1) a.at(x, y) = 1.f;
+      }
+    }
+  return a;
+}
+
+TEST(Extrude, TheOccluderMatteTellsASlabFromASolid) {
+  const Camera c = pitchedCamera();
+  const Table t(c);
+  const auto ex = extrusionFromOutline(c, t.outline, t.click, "surfaces[0]");
+  ASSERT_TRUE(ex.ok()) << ex.error().message();
+  // A 5 cm top on four 4 cm legs: the floor shows under the top between the legs.
+  const double th = 0.05, leg = 0.04;
+  std::vector<std::pair<Vec3, Vec3>> table = {{Vec3(-0.5, t.h - th, -3.3), Vec3(0.5, t.h, -2.7)}};
+  for (double x : {-0.5, 0.5 - leg})
+    for (double z : {-3.3, -2.7 - leg}) table.push_back({Vec3(x, 0, z), Vec3(x + leg, t.h, z + leg)});
+  const SlabEvidence open = slabFromMatte(c, *ex, matteOfBoxes(c, table));
+  EXPECT_TRUE(open.open);
+  EXPECT_GT(open.coveredSamples, 60);
+  EXPECT_GT(open.openSamples, 0.8 * open.coveredSamples);  // all but the legs
+  EXPECT_NEAR(open.thicknessM, th, 0.006);
+  // A cabinet: the matte covers the front down to the floor: solid.
+  const SlabEvidence block =
+      slabFromMatte(c, *ex, matteOfBoxes(c, {{Vec3(-0.5, 0, -3.3), Vec3(0.5, t.h, -2.7)}}));
+  EXPECT_GT(block.coveredSamples, 60);
+  EXPECT_EQ(block.openSamples, 0);
+  EXPECT_FALSE(block.open);
+  // A matte of something else (a box 1.5 m to the right): no evidence about this top.
+  const SlabEvidence other =
+      slabFromMatte(c, *ex, matteOfBoxes(c, {{Vec3(1.0, 0, -3.3), Vec3(1.6, t.h, -2.7)}}));
+  EXPECT_EQ(other.coveredSamples, 0);
+  EXPECT_FALSE(other.open);
+  EXPECT_FALSE(slabFromMatte(c, *ex, ImageF()).open);
+}
+
 TEST(Extrude, SceneFileKeysRoundTrip) {
   const std::string text = R"({"format": "inlay-scene", "version": 1, "photo": "p.png",
     "surfaces": [
@@ -380,6 +431,21 @@ TEST(Extrude, SceneFileKeysRoundTrip) {
       dir.string(), "s.json");
   ASSERT_FALSE(badWall.ok());
   EXPECT_NE(badWall.error().message().find("surfaces[0].wall"), std::string::npos);
+  // thickness_m 0: a solid to the floor, said explicitly; below 0 refused.
+  const auto zero = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
+         {"kind": "extrusion", "outline_px": [[10, 10], [50, 10], [50, 40]], "height_click_px": [10, 90],
+          "thickness_m": 0}]})",
+      dir.string(), "s.json");
+  ASSERT_TRUE(zero.ok()) << zero.error().message();
+  EXPECT_EQ(zero->doc.surfaces[0].thicknessM, 0.0);
+  const auto negative = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
+         {"kind": "extrusion", "outline_px": [[10, 10], [50, 10], [50, 40]], "height_click_px": [10, 90],
+          "thickness_m": -0.1}]})",
+      dir.string(), "s.json");
+  ASSERT_FALSE(negative.ok());
+  EXPECT_NE(negative.error().message().find("surfaces[0].thickness_m"), std::string::npos);
   const auto bad = parseSceneJson(
       R"({"format": "inlay-scene", "version": 1, "photo": "p.png", "surfaces": [
          {"kind": "stairs", "base_px": [1, 2], "steps": 3, "rise_m": 0.2, "run_m": 0.25}]})",

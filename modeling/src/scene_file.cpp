@@ -527,8 +527,10 @@ class Reader {
     checkSimplePolygon(s.outlinePx, child(p, "outline_px"));
     if (!j.contains("height_click_px")) fail(child(p, "height_click_px"), "missing");
     s.heightClickPx = vec<2>(j["height_click_px"], child(p, "height_click_px"));
-    if (j.contains("thickness_m") && !j["thickness_m"].is_null())
-      s.thicknessM = positive(j["thickness_m"], child(p, "thickness_m"));
+    if (j.contains("thickness_m") && !j["thickness_m"].is_null()) {
+      s.thicknessM = number(j["thickness_m"], child(p, "thickness_m"));
+      if (*s.thicknessM < 0) fail(child(p, "thickness_m"), "must be >= 0 (0: solid to the floor)");
+    }
     return s;
   }
 

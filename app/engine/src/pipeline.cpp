@@ -55,6 +55,60 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
   return mask;
 }
 
+
+// One scene-file surface built with the camera and room: an extrusion or box (`thicknessM`:
+// 0 down to the floor, > 0 a slab), or stairs by steps or from a drawn profile.
+Expected<Extrusion> surfaceOf(const Camera& camera, const RoomBox& box, const SurfaceKeys& sk,
+                              double thicknessM, const std::string& key) {
+  ExtrusionOptions eo;
+  eo.thicknessM = thicknessM;
+  if (sk.kind == "extrusion") return extrusionFromOutline(camera, sk.outlinePx, sk.heightClickPx, key, eo);
+  if (sk.kind == "box") return boxFromOutline(camera, sk.outlinePx, sk.heightClickPx, key, eo);
+  if (sk.kind == "stairs" && !sk.profilePx.empty()) {
+    StairsProfileSpec sp;
+    sp.profilePx = sk.profilePx;
+    if (sk.wall == "left") sp.wall = SurfaceKind::WallLeft;
+    if (sk.wall == "right") sp.wall = SurfaceKind::WallRight;
+    if (sk.wall == "back") sp.wall = SurfaceKind::WallBack;
+    sp.widthM = sk.widthM;
+    return stairsFromProfile(camera, box, sp, key);
+  }
+  if (sk.kind == "stairs") {
+    StairsSpec st;
+    st.basePx = sk.basePx;
+    st.steps = sk.steps;
+    st.riseM = sk.riseM;
+    st.runM = sk.runM;
+    st.widthM = sk.widthM;
+    const double sign = sk.climbAxis.size() == 2 && sk.climbAxis[0] == '-' ? -1.0 : 1.0;
+    st.climbWorld = sk.climbAxis.size() == 2 && sk.climbAxis[1] == 'x' ? Vec3(sign, 0, 0) : Vec3(0, 0, sign);
+    return stairsFromSpec(camera, st, key);
+  }
+  return Error{"", key + ".kind", "unknown surface kind '" + sk.kind + "'"};
+}
+
+// A surface; an extrusion or box drawn without "thickness_m" becomes a slab when an occluder's
+// matte (the user's segmentation of the same object) shows the floor or wall under its top
+// (slabFromMatte), with a warning saying so.
+Expected<Extrusion> extrusionOf(PreparedScene& ps, const SurfaceKeys& sk,
+                                const std::vector<OccluderMatte>& mattes, const std::string& key) {
+  auto ex = surfaceOf(ps.camera, ps.box, sk, sk.thicknessM.value_or(0.0), key);
+  if (!ex || sk.thicknessM || (sk.kind != "extrusion" && sk.kind != "box")) return ex;
+  for (size_t m = 0; m < mattes.size(); ++m) {
+    const SlabEvidence e = slabFromMatte(ps.camera, *ex, mattes[m].alphaPx);
+    if (!e.open) continue;
+    auto slab = surfaceOf(ps.camera, ps.box, sk, e.thicknessM, key);
+    if (!slab) return ex;  // the solid stands
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  ": occluders[%zu]'s matte shows the floor under the top at %d of %d points, so "
+                  "it is a slab %.3f m thick (give thickness_m to choose; 0: solid)",
+                  m, e.openSamples, e.coveredSamples, e.thicknessM);
+    ps.warnings.push_back(key + buf);
+    return slab;
+  }
+  return ex;
+}
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
@@ -241,49 +295,27 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
                             "); using a 5 x 5.5 m room: give layout.back_wall_px");
     }
   }
-  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
-    const SurfaceKeys& sk = doc.surfaces[i];
-    const std::string key = "surfaces[" + std::to_string(i) + "]";
-    ExtrusionOptions eo;
-    eo.thicknessM = sk.thicknessM.value_or(0.0);
-    Expected<Extrusion> ex = Error{"", key + ".kind", "unknown surface kind '" + sk.kind + "'"};
-    if (sk.kind == "extrusion") {
-      ex = extrusionFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
-    } else if (sk.kind == "box") {
-      ex = boxFromOutline(ps.camera, sk.outlinePx, sk.heightClickPx, key, eo);
-    } else if (sk.kind == "stairs" && !sk.profilePx.empty()) {
-      StairsProfileSpec sp;
-      sp.profilePx = sk.profilePx;
-      if (sk.wall == "left") sp.wall = SurfaceKind::WallLeft;
-      if (sk.wall == "right") sp.wall = SurfaceKind::WallRight;
-      if (sk.wall == "back") sp.wall = SurfaceKind::WallBack;
-      sp.widthM = sk.widthM;
-      ex = stairsFromProfile(ps.camera, ps.box, sp, key);
-    } else if (sk.kind == "stairs") {
-      StairsSpec st;
-      st.basePx = sk.basePx;
-      st.steps = sk.steps;
-      st.riseM = sk.riseM;
-      st.runM = sk.runM;
-      st.widthM = sk.widthM;
-      const double sign = sk.climbAxis.size() == 2 && sk.climbAxis[0] == '-' ? -1.0 : 1.0;
-      st.climbWorld = sk.climbAxis.size() == 2 && sk.climbAxis[1] == 'x' ? Vec3(sign, 0, 0) : Vec3(0, 0, sign);
-      ex = stairsFromSpec(ps.camera, st, key);
-    }
-    if (!ex) return ex.error();
-    ps.extrusions.push_back(*ex);
-  }
-  ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  // Occluders: a matte from the scribbles, standing as a card (kind OccluderCard) in the room.
+  // Occluder mattes first: one may show that a top drawn without a thickness is open below.
+  std::vector<OccluderMatte> mattes;
   for (size_t i = 0; i < doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     auto matte = matteFromScribbles(ps.photo.linearRgb, doc.occluders[i].foregroundScribblesPx,
                                     doc.occluders[i].backgroundScribblesPx, key);
     if (!matte) return matte.error();
-    auto card = occluderCard(ps.camera, *matte, int(i), key);
+    mattes.push_back(std::move(*matte));
+    if (cancelled()) return Error{"", "", "cancelled"};
+  }
+  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+    auto ex = extrusionOf(ps, doc.surfaces[i], mattes, "surfaces[" + std::to_string(i) + "]");
+    if (!ex) return ex.error();
+    ps.extrusions.push_back(*ex);
+  }
+  ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
+  // Occluders: each matte stands as a card (kind OccluderCard) in the room.
+  for (size_t i = 0; i < mattes.size(); ++i) {
+    auto card = occluderCard(ps.camera, mattes[i], int(i), "occluders[" + std::to_string(i) + "]");
     if (!card) return card.error();
     ps.geometry.surfaces.push_back(std::move(*card));
-    if (cancelled()) return Error{"", "", "cancelled"};
   }
   ps.stageSeconds.emplace_back("room", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};

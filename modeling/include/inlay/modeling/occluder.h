@@ -63,4 +63,26 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photoLinearRgb,
 Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte, int groupIndex,
                                const std::string& keyForMessages);
 
+// What an occluder's matte says about an extrusion built down to the floor (a table top drawn
+// without a thickness): below each top edge the camera sees, the matte is followed straight
+// down (in the world, 2 mm steps) from just under the edge to the floor. Where the matte covers
+// the edge and then gives way (floor or wall seen under the top: the user's own segmentation of
+// the object says it is open there), the covered band is the slab's thickness at that sample;
+// where it covers all the way down to the bottom tenth (a leg, a cabinet's front) the sample
+// is solid. The top is judged open when the matte covers the edge at >= `minSamples` samples
+// and at least `openShare` of them give way; then the thickness is their median. Pure; any
+// thread.
+struct SlabEvidence {
+  int coveredSamples = 0;    // samples whose top edge the matte covers (alpha >= 0.5)
+  int openSamples = 0;       // of those, where the matte gives way before the floor
+  bool open = false;         // the rule's verdict: build a slab, not a solid
+  double thicknessM = 0;     // the median covered band under the edge, when open
+};
+struct SlabOptions {
+  int minSamples = 12;       // default 12: a few pixels of edge are no evidence
+  double openShare = 0.5;    // default 0.5: most of the visible front is open
+};
+SlabEvidence slabFromMatte(const Camera& camera, const Extrusion& extrusion,
+                           const ImageF& alphaPx, const SlabOptions& options = {});
+
 }  // namespace inlay

@@ -47,7 +47,9 @@ struct SurfaceKeys {
   // extrusion, box:
   std::vector<Vec2> outlinePx;       // closed outline around a horizontal top
   Vec2 heightClickPx{0, 0};          // a floor click straight below outlinePx[0]
-  std::optional<double> thicknessM;  // "thickness_m": a slab this thick; missing = to the floor
+  // "thickness_m": > 0 a slab this thick; 0 a solid to the floor; missing: a solid to the floor
+  // unless an occluder's matte shows the floor under the top (then a slab, see slabFromMatte)
+  std::optional<double> thicknessM;
   // stairs (a straight flight standing on the floor):
   Vec2 basePx{0, 0};                 // "base_px": floor pixel, middle of the bottom step's front edge
   int steps = 0;                     // "steps": >= 1
