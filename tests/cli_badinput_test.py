@@ -68,6 +68,17 @@ def main():
         ("floor corner above horizon", lambda s: s["layout"]["back_wall_px"].__setitem__(3, [17.0, 100.0]), "layout.back_wall_px"),
         ("unknown preset", lambda s: s["objects"][0]["material"].update(preset="velvet"), "objects[0].material"),
         ("missing mesh file", lambda s: s["objects"][0].update(mesh="no_such_mesh.obj"), "objects[0].mesh"),
+        ("two-point outline", lambda s: s.update(surfaces=[{"kind": "extrusion", "outline_px": [[200, 300], [260, 300]],
+                                                            "height_click_px": [200, 350]}]), "surfaces[0].outline_px"),
+        ("height click above horizon", lambda s: s.update(surfaces=[{"kind": "extrusion",
+                                                                     "outline_px": [[200, 300], [260, 300], [260, 320], [200, 320]],
+                                                                     "height_click_px": [200, 100]}]), "surfaces[0].height_click_px"),
+        ("stairs profile on the floor", lambda s: s.update(surfaces=[{"kind": "stairs",
+                                                                      "profile_px": [[200, 330], [260, 330], [260, 370]]}]),
+         "surfaces[0].profile_px"),
+        ("empty scribbles", lambda s: s.update(occluders=[{"foreground_scribbles_px": [],
+                                                           "background_scribbles_px": [[[10, 10], [50, 10]]]}]),
+         "occluders[0].foreground_scribbles_px"),
     ]
     out = os.path.join(tmp, "keep.png")
     for name, mutate, key in cases:
