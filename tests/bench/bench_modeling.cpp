@@ -1,6 +1,7 @@
 // Extra geometry of a scene file, timed: every surface (extrusion, box, stairs) built `repeat`
 // times (best time), every occluder matted once (grabCut and matting seconds, the alpha written
-// as an 8-bit PGM). Needs the scene's camera keys (focal_px and vanishing_points_px, as the
+// as an 8-bit PGM) and asked whether it shows each top drawn without a thickness open below
+// (slabFromMatte: the slab's thickness). Needs the scene's camera keys (focal_px and vanishing_points_px, as the
 // harness's assisted mode writes them). One JSON object per line on stdout; bench_modeling.py
 // turns them into CSV against the ground truth.
 //
@@ -16,9 +17,13 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <utility>
+#include <vector>
 
 using namespace inlay;
 using json = nlohmann::json;
@@ -26,6 +31,13 @@ using json = nlohmann::json;
 namespace {
 double msSince(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+// The process's CPU time (all threads), ms: with the machine shared by other jobs the wall time
+// of one run swings several times over; the CPU time much less.
+double cpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return 1e3 * double(ts.tv_sec) + 1e-6 * double(ts.tv_nsec);
 }
 }  // namespace
 
@@ -63,6 +75,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", camera.error().message().c_str());
     return 1;
   }
+  std::optional<RoomBox> room;
+  if (doc.layout.backWallPx) {
+    auto box = roomFromBackWall(*camera, *doc.layout.backWallPx);
+    if (box) room = *box;
+  }
+  // Extrusions built to the floor (no thickness_m), for the matte's slab evidence below.
+  std::vector<std::pair<size_t, Extrusion>> solids;
   for (size_t i = 0; i < doc.surfaces.size(); ++i) {
     const SurfaceKeys& s = doc.surfaces[i];
     const std::string key = "surfaces[" + std::to_string(i) + "]";
@@ -74,6 +93,18 @@ int main(int argc, char** argv) {
       const auto t = std::chrono::steady_clock::now();
       if (s.kind == "box") {
         ex = boxFromOutline(*camera, s.outlinePx, s.heightClickPx, key, eo);
+      } else if (s.kind == "stairs" && !s.profilePx.empty()) {
+        StairsProfileSpec sp;
+        sp.profilePx = s.profilePx;
+        sp.widthM = s.widthM;
+        if (s.wall == "left") sp.wall = SurfaceKind::WallLeft;
+        if (s.wall == "right") sp.wall = SurfaceKind::WallRight;
+        if (s.wall == "back") sp.wall = SurfaceKind::WallBack;
+        if (!room) {
+          ex = Error{"", key, "stairs from a profile need layout.back_wall_px"};
+        } else {
+          ex = stairsFromProfile(*camera, *room, sp, key);
+        }
       } else if (s.kind == "stairs") {
         StairsSpec st;
         st.basePx = s.basePx, st.steps = s.steps, st.riseM = s.riseM, st.runM = s.runM,
@@ -100,6 +131,7 @@ int main(int argc, char** argv) {
       line["top_world"] = top;  // Inlay's world: camera at (0, h, 0)
       line["floor_corners_px"] = floorPx;
       line["up_triangles"] = ex->upWorld.triangles.size();
+      if (!s.thicknessM && s.kind != "stairs") solids.emplace_back(i, *ex);
     }
     std::cout << line.dump() << std::endl;
   }
@@ -131,10 +163,11 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     const auto t = std::chrono::steady_clock::now();
+    const double cpu0 = cpuMs();
     auto m = matteFromScribbles(photo->linearRgb, doc.occluders[i].foregroundScribblesPx,
                                 doc.occluders[i].backgroundScribblesPx, key);
     const double ms = msSince(t);
-    json line{{"what", "occluder"}, {"index", i}, {"ms", ms}};
+    json line{{"what", "occluder"}, {"index", i}, {"ms", ms}, {"cpu_ms", cpuMs() - cpu0}};
     if (!m) {
       line["error"] = m.error().message();
       std::cout << line.dump() << std::endl;
@@ -158,6 +191,16 @@ int main(int argc, char** argv) {
     for (float a : m->alphaPx.data) f.put(char(uint8_t(std::lround(255.f * std::clamp(a, 0.f, 1.f)))));
     line["alpha_pgm"] = pgm;
     std::cout << line.dump() << std::endl;
+    for (const auto& [index, solid] : solids) {
+      // What this matte says about each top drawn without a thickness (slabFromMatte).
+      const auto t0 = std::chrono::steady_clock::now();
+      const SlabEvidence e = slabFromMatte(*camera, solid, m->alphaPx);
+      std::cout << json{{"what", "slab"}, {"index", index}, {"occluder", i}, {"ms", msSince(t0)},
+                        {"covered", e.coveredSamples}, {"open_points", e.openSamples},
+                        {"open", e.open}, {"thickness_m", e.thicknessM}}
+                       .dump()
+                << std::endl;
+    }
   }
   return 0;
 }

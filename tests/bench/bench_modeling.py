@@ -5,7 +5,9 @@ For each room with a table (d3_table_cube, d6_behind_table, ...) the harness wri
 scene file (table outline and height click; occluder scribbles where the object stands behind the
 table); build/tests/bench/bench_modeling times the extrusion (best of N) and the matting and
 reports the table top and the matte; this script compares them with truth.json and labels.png
-(== 7, the table) and writes OUT/bench_modeling.csv. With --render INLAY_CLI_DIR it also renders
+(== 7, the table) and writes OUT/bench_modeling.csv and OUT/bench_modeling.png (error against
+run time). Where an occluder's matte shows a top drawn without a thickness open below, the
+slab thickness it gives (slabFromMatte) is listed against the truth's top_thickness. With --render INLAY_CLI_DIR it also renders
 each scene with `harness.py run` and adds the harness's scores plus the composite's RMSE in a
 band of 4 px around the table's outline inside the object's neighbourhood (the occlusion edge).
 
@@ -73,6 +75,10 @@ def main():
                 wm = [min(np.linalg.norm(np.array(p) - q) for q in truth_top) for p in r["top_world"]]
                 row["floor_corner_px_err_max"] = round(max(px), 3)
                 row["top_corner_m_err_max"] = round(max(wm), 4)
+            elif r["what"] == "slab":
+                row.update({"occluder": r["occluder"], "covered": r["covered"], "open_points": r["open_points"],
+                            "open": r["open"], "thickness_m": round(r["thickness_m"], 4),
+                            "thickness_true_m": tb.get("top_thickness")})
             else:
                 alpha = cv2.imread(r["alpha_pgm"], cv2.IMREAD_UNCHANGED).astype(np.float64) / 255.0
                 lab = cv2.imread(os.path.join(scene, "labels.png"), cv2.IMREAD_GRAYSCALE) == 7
@@ -136,13 +142,15 @@ def main():
                 r = json.loads(line)
                 if r["what"] == "occluder":
                     rows.append({"scene": name + "@640x480", "what": "occluder", "index": r["index"],
-                                 "ms": round(r["ms"], 1), "segment_ms": round(r.get("segment_ms", -1), 1),
+                                 "ms": round(r["ms"], 1), "cpu_ms": round(r.get("cpu_ms", -1), 1),
+                                 "load_avg_1min": round(os.getloadavg()[0], 1),
+                                 "segment_ms": round(r.get("segment_ms", -1), 1),
                                  "matte_ms": round(r.get("matte_ms", -1), 1), "error": r.get("error", "")})
         if "--render" in a:
             rdir = os.path.join(out, name + "_render")
             res = subprocess.run([sys.executable, harness, "run", scene, os.path.join(build, "app"), rdir,
                                   "--mode", "assisted", "--seconds", seconds], capture_output=True, text=True)
-            row = {"scene": name, "what": "render", "index": 0}
+            row = {"scene": name, "what": "render", "index": 0, "render_s": float(seconds)}
             try:
                 row.update(json.loads(res.stdout))
             except ValueError:
@@ -172,7 +180,38 @@ def main():
     for r in rows:
         print(json.dumps(r))
     print("wrote", path)
+    plot(rows, os.path.join(out, "bench_modeling.png"))
     return 0
+
+
+def plot(rows, path):
+    """Error against run time: table tops (height error vs extrusion ms), mattes (alpha MAE vs
+    matting ms), renders (object RMSE vs the render's seconds)."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot")
+        return
+    fig, ax = plt.subplots(1, 3, figsize=(13, 4))
+    panels = [(ax[0], lambda r: r["what"] == "surface" and "height_rel_err" in r, "ms", "height_rel_err",
+               "extrusion (ms, best of N)", "table height, relative error"),
+              (ax[1], lambda r: r["what"] == "occluder" and "alpha_mae" in r, "matte_ms", "alpha_mae",
+               "grabCut + alphamat (ms)", "matte MAE vs true mask"),
+              (ax[2], lambda r: r["what"] == "render" and "object_rmse" in r, "render_s", "object_rmse",
+               "render budget (s)", "object RMSE (sRGB)")]
+    for a, keep, xk, yk, xl, yl in panels:
+        for r in rows:
+            if keep(r) and xk in r and yk in r:
+                a.scatter([r[xk]], [r[yk]])
+                a.annotate(r["scene"], (r[xk], r[yk]), fontsize=7)
+        a.set_xlabel(xl)
+        a.set_ylabel(yl)
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    print("wrote", path)
 
 
 if __name__ == "__main__":
