@@ -5,6 +5,8 @@
 #include "inlay/modeling/scene_file.h"
 #include "test_support.h"
 
+#include "../modeling/src/solid_mesh.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -124,6 +126,32 @@ void expectClosedSolid(const Extrusion& e, size_t outlinePoints, double volumeM3
   EXPECT_EQ(s.faces, 2 * (outlinePoints - 2) + 2 * outlinePoints);
   EXPECT_NEAR(s.volumeM3, volumeM3, 1e-4);
   EXPECT_NEAR(closedVolume(e.upWorld, e.otherWorld), s.volumeM3, 1e-4);
+}
+
+// The checks themselves: a tetrahedron is closed, manifold and outward; without a face it is
+// open; wound inside out its volume is negative.
+TEST(Extrude, SolidChecksSeeOpenAndInsideOutMeshes) {
+  auto tetra = [](bool withLastFace, bool inverted) {
+    SolidMesh s;
+    detail::SolidTriMesh::VertexHandle v[4] = {
+        s.mesh.add_vertex({0, 0, 0}), s.mesh.add_vertex({1, 0, 0}), s.mesh.add_vertex({0, 1, 0}),
+        s.mesh.add_vertex({0, 0, 1})};
+    const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    for (int f = 0; f < (withLastFace ? 4 : 3); ++f) {
+      const auto& i = faces[f];
+      if (inverted) s.mesh.add_face(v[i[0]], v[i[2]], v[i[1]]);
+      else s.mesh.add_face(v[i[0]], v[i[1]], v[i[2]]);
+    }
+    return summarizeSolid(s);
+  };
+  const SolidSummary closed = tetra(true, false);
+  EXPECT_TRUE(closed.closed && closed.manifold);
+  EXPECT_EQ(closed.eulerCharacteristic, 2);
+  EXPECT_NEAR(closed.volumeM3, 1.0 / 6.0, 1e-12);
+  const SolidSummary open = tetra(false, false);
+  EXPECT_FALSE(open.closed);
+  EXPECT_FALSE(open.manifold);
+  EXPECT_NEAR(tetra(true, true).volumeM3, -1.0 / 6.0, 1e-12);
 }
 
 TEST(Extrude, SolidsAreClosedOpenMeshMeshes) {

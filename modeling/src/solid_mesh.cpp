@@ -36,14 +36,11 @@ SolidSummary summarizeSolid(const SolidMesh& solid) {
   s.closed = s.faces > 0;
   for (const auto h : m.halfedges())
     if (h.is_boundary()) s.closed = false;  // an edge with a face on one side only
+  // Consistent orientation needs no loop here: OpenMesh's add_face refuses a face that would
+  // run an edge the same way as its neighbour (buildPrism reports that as a failed face).
   s.manifold = true;
   for (const auto v : m.vertices())
     if (!m.is_manifold(v) || v.is_boundary()) s.manifold = false;
-  // Halfedge consistency: each edge's two halves run opposite ways between the same vertices.
-  for (const auto e : m.edges()) {
-    const auto h0 = e.h0(), h1 = e.h1();
-    if (h0.from() != h1.to() || h0.to() != h1.from()) s.manifold = false;
-  }
   s.eulerCharacteristic = long(s.vertices) - long(s.edges) + long(s.faces);
   s.volumeM3 = signedVolume(m);
   return s;

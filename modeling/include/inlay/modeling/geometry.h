@@ -113,7 +113,7 @@ std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
 // src/solid_mesh.h, so OpenMesh stays out of this header). Immutable once built.
 struct SolidMesh;
 // What OpenMesh's topology says about a solid: closed (no boundary halfedge), manifold (one
-// fan per vertex, consistent halfedge pairs), V - E + F (2 for a solid without holes), and the
+// closed fan of faces around every vertex), V - E + F (2 for a solid without holes), and the
 // signed volume (positive: faces outward).
 struct SolidSummary {
   size_t vertices = 0, edges = 0, faces = 0;
