@@ -105,10 +105,11 @@ std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
 // An extruded horizontal surface (a table top) from an outline and a floor click below
 // outline point 0. Height by single-view metrology; the outline (either orientation) must be
 // simple (CGAL), its top is triangulated (constrained Delaunay) and extruded down to the floor,
-// or into a slab of `thicknessM` below the top; the solid is checked closed and bounding a
-// volume. Errors name `keyForMessages` (e.g. "surfaces[0].outline_px"): fewer than 3 distinct
-// points, collinear points, a crossing outline, a point or click at or above the horizon, a
-// click above the top or not straight below outline point 0. On error nothing is built.
+// or into a slab of `thicknessM` below the top; the solid, built in OpenMesh, is checked closed,
+// manifold and bounding a volume. Errors name `keyForMessages` (e.g. "surfaces[0].outline_px"):
+// fewer than 3 distinct points, collinear points, a crossing outline, a point or click at or
+// above the horizon, a click above the top or not straight below outline point 0. On error
+// nothing is built.
 // The closed solid as built: an OpenMesh triangle mesh (defined inside modeling, in
 // src/solid_mesh.h, so OpenMesh stays out of this header). Immutable once built.
 struct SolidMesh;
@@ -158,7 +159,8 @@ Expected<Extrusion> boxFromOutline(const Camera& camera, const std::vector<Vec2>
 
 // A straight flight of stairs standing on the floor: `steps` steps of `riseM` and `runM`,
 // `widthM` wide, climbing along one room axis. The profile polygon (in the climb / up plane) is
-// extruded across the width with CGAL; every tread is a surface objects stand on.
+// checked simple with CGAL and extruded across the width (OpenMesh); every tread is a surface
+// objects stand on.
 struct StairsSpec {
   Vec2 basePx{0, 0};        // floor pixel at the middle of the bottom step's front edge
   int steps = 0;            // >= 1
