@@ -2,13 +2,19 @@
 // it announces a change, and edit it only through its API (undoable commands).
 //   SceneTreeDock: the room, the lights and the objects; selecting an object selects it in the
 //     document (and so in the viewport).
+//   LayersDock: which image the viewport shows (composite, photo, albedo, direct light, with and
+//     without objects, mask, difference).
 //   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object.
 // GUI thread only.
 #pragma once
 
 #include <QDockWidget>
 
+#include <optional>
+#include <utility>
+
 class QComboBox;
+class QListWidget;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -17,7 +23,9 @@ class QTreeWidget;
 namespace inlay::studio {
 
 class Document;
+class Viewport;
 struct ChangeEvent;
+enum class MarkKind;
 
 class SceneTreeDock : public QDockWidget {
   Q_OBJECT
@@ -25,6 +33,8 @@ class SceneTreeDock : public QDockWidget {
  public:
   explicit SceneTreeDock(Document* document, QWidget* parent = nullptr);
   QTreeWidget* tree() const { return tree_; }
+  // The light, shaft, surface or occluder whose item is current, if one is.
+  std::optional<std::pair<MarkKind, int>> currentMark() const;
 
  private:
   void rebuild();
@@ -34,6 +44,17 @@ class SceneTreeDock : public QDockWidget {
   Document* document_;
   QTreeWidget* tree_;
   bool updating_ = false;
+};
+
+class LayersDock : public QDockWidget {
+  Q_OBJECT
+
+ public:
+  explicit LayersDock(Viewport* viewport, QWidget* parent = nullptr);
+  QListWidget* list() const { return list_; }
+
+ private:
+  QListWidget* list_;
 };
 
 class PropertiesDock : public QDockWidget {

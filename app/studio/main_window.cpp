@@ -1,6 +1,8 @@
 #include "main_window.h"
 
+#include "autosave.h"
 #include "docks.h"
+#include "i18n.h"
 #include "document.h"
 #include "render_controller.h"
 #include "viewport.h"
@@ -18,6 +20,8 @@
 #include <QFileInfo>
 #include <QImageReader>
 #include <QLabel>
+#include <QLocale>
+#include <QPushButton>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
@@ -95,16 +99,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   propertiesDock_ = new PropertiesDock(document_, this);
   addDockWidget(Qt::LeftDockWidgetArea, sceneDock_);
   addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
+  layersDock_ = new LayersDock(viewport_, this);
+  addDockWidget(Qt::RightDockWidgetArea, layersDock_);
+  autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);
+  rateLabel_ = new QLabel(this);
   errorLabel_ = new QLabel(this);
   timeLabel_ = new QLabel(this);
   zoomLabel_ = new QLabel(this);
-  for (QLabel* l : {sppLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
+  for (QLabel* l : {sppLabel_, rateLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
     l->setMinimumWidth(90);
     statusBar()->addPermanentWidget(l);
   }
   sppLabel_->setToolTip(tr("Samples per pixel of the shown composite"));
+  rateLabel_->setToolTip(tr("Samples per second of the renderer (millions)"));
   errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
   timeLabel_->setToolTip(tr("Render time since the last change"));
   zoomLabel_->setToolTip(tr("Zoom"));
@@ -213,6 +222,39 @@ void MainWindow::createActions() {
   beforeAct_->setStatusTip(tr("Toggle between the photo and the composite with the objects"));
   connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
 
+  acceptBoxAct_ = new QAction(tr("&Accept Estimated Box"), this);
+  acceptBoxAct_->setStatusTip(tr("Keep the estimated back wall as yours"));
+  connect(acceptBoxAct_, &QAction::triggered, this, [this] {
+    QString reason;
+    if (!document_->acceptEstimatedBox(&reason)) statusBar()->showMessage(reason, 5000);
+  });
+  resetBoxAct_ = new QAction(tr("Estimate the &Box Again"), this);
+  resetBoxAct_->setStatusTip(tr("Forget your corners of the back wall"));
+  connect(resetBoxAct_, &QAction::triggered, this, [this] {
+    QString reason;
+    if (!document_->resetBackWall(&reason)) statusBar()->showMessage(reason, 5000);
+  });
+  vanishingAct_ = new QAction(tr("&Vanishing Lines and Confidence"), this);
+  vanishingAct_->setCheckable(true);
+  vanishingAct_->setChecked(viewport_->showsVanishingLines());
+  connect(vanishingAct_, &QAction::toggled, viewport_, &Viewport::setShowVanishingLines);
+
+  auto* tools = new QActionGroup(this);
+  const std::pair<QString, QKeySequence> toolNames[] = {
+      {tr("&Select and Move"), QKeySequence(Qt::Key_V)},
+      {tr("Outline a &Light"), QKeySequence(Qt::Key_L)},
+      {tr("Sun &Shaft"), QKeySequence(Qt::Key_H)},
+      {tr("&Table Top or Step"), QKeySequence(Qt::Key_T)},
+      {tr("&Occluder Strokes"), QKeySequence(Qt::Key_O)}};
+  for (int i = 0; i < 5; ++i) {
+    QAction* a = tools->addAction(toolNames[i].first);
+    a->setCheckable(true);
+    a->setShortcut(toolNames[i].second);
+    a->setChecked(i == 0);
+    connect(a, &QAction::triggered, this, [this, i] { viewport_->setTool(Viewport::Tool(i)); });
+    toolActs_ << a;
+  }
+
   aboutAct_ = new QAction(tr("&About Inlay"), this);
   connect(aboutAct_, &QAction::triggered, this, &MainWindow::about);
 }
@@ -239,6 +281,12 @@ void MainWindow::createMenus() {
   edit->addAction(insertSphereAct_);
   edit->addAction(insertCubeAct_);
   edit->addAction(deleteAct_);
+  edit->addSeparator();
+  edit->addAction(acceptBoxAct_);
+  edit->addAction(resetBoxAct_);
+
+  toolsMenu_ = menuBar()->addMenu(tr("&Tools"));
+  toolsMenu_->addActions(toolActs_);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(zoomInAct_);
@@ -246,16 +294,19 @@ void MainWindow::createMenus() {
   view->addAction(fitAct_);
   view->addSeparator();
   view->addAction(beforeAct_);
+  view->addAction(vanishingAct_);
   view->addSeparator();
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
+  view->addAction(layersDock_->toggleViewAction());
   view->addSeparator();
   QMenu* language = view->addMenu(tr("&Language"));
   auto* group = new QActionGroup(language);
   const QString current = QSettings().value(QStringLiteral("language")).toString();
   const std::pair<QString, QString> languages[] = {
       {QString(), tr("System Default")}, {QStringLiteral("en"), QStringLiteral("English")},
-      {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+      {QStringLiteral("de"), QStringLiteral("Deutsch")},
+      {QStringLiteral("fr"), QStringLiteral("Français")}};
   for (const auto& [code, name] : languages) {
     QAction* a = language->addAction(name);
     a->setCheckable(true);
@@ -274,6 +325,8 @@ void MainWindow::createMenus() {
   tools->addSeparator();
   tools->addAction(undoAct_);
   tools->addAction(redoAct_);
+  tools->addSeparator();
+  tools->addActions(toolActs_);
   tools->addSeparator();
   tools->addAction(zoomInAct_);
   tools->addAction(zoomOutAct_);
@@ -297,6 +350,8 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->showMessage(tr("Preparing the scene…"));
     statusBar()->setToolTip(QString());
   }
+  if (event.has(ChangeEvent::SceneReplaced)) reportFailure_ = true;
+  if (event.has(ChangeEvent::Marks)) reportFailure_ = false;
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (progress_) {
       progress_->hide();
@@ -306,7 +361,11 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->clearMessage();
     switch (document_->state()) {
       case Document::State::Failed:
-        showError(tr("The scene could not be prepared"), document_->prepareError());
+        // After an open: a dialog. After an edit of the marks: the viewport's banner says it.
+        if (reportFailure_)
+          showError(tr("The scene could not be prepared"), document_->prepareError());
+        else
+          statusBar()->showMessage(document_->prepareError(), 10000);
         break;
       case Document::State::Ready:
         if (!document_->warnings().isEmpty()) {
@@ -327,7 +386,9 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   exportAct_->setEnabled(ready);
   insertSphereAct_->setEnabled(ready);
   insertCubeAct_->setEnabled(ready);
-  deleteAct_->setEnabled(ready && document_->selectedObject() >= 0);
+  deleteAct_->setEnabled(!document_->scene().photo.empty());
+  acceptBoxAct_->setEnabled(document_->shownBackWallPx().has_value() && !document_->backWallIsUsers());
+  resetBoxAct_->setEnabled(document_->backWallIsUsers());
   saveAct_->setEnabled(document_->state() != Document::State::Empty ||
                        !document_->scene().photo.empty());
   saveAsAct_->setEnabled(saveAct_->isEnabled());
@@ -336,6 +397,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
 void MainWindow::onFrame() {
   if (!renderer_->hasFrame()) {
     sppLabel_->setText(tr("– spp"));
+    rateLabel_->setText(tr("– samples/s"));
     errorLabel_->setText(tr("error –"));
     timeLabel_->setText(tr("– s"));
     return;
@@ -345,6 +407,9 @@ void MainWindow::onFrame() {
                      : f.final                ? tr("%1 spp, done").arg(f.spp)
                                               : tr("%1 spp").arg(f.spp));
   errorLabel_->setText(tr("error %1").arg(f.estimatedError, 0, 'f', 4));
+  const double pixels = double(renderer_->compositeImage().width()) * renderer_->compositeImage().height();
+  rateLabel_->setText(f.seconds > 0 ? tr("%1 M samples/s").arg(f.spp * pixels / f.seconds * 1e-6, 0, 'f', 2)
+                                    : tr("– samples/s"));
   timeLabel_->setText(tr("%1 s").arg(f.seconds, 0, 'f', 1));
   exportAct_->setEnabled(true);
 }
@@ -547,8 +612,11 @@ bool MainWindow::insertBuiltin(const QString& mesh) {
 
 void MainWindow::deleteSelected() {
   QString reason;
-  if (!document_->removeObject(document_->selectedObject(), &reason))
-    statusBar()->showMessage(reason, 5000);
+  // A mark chosen in the scene tree, else the selected object.
+  const auto mark = sceneDock_->currentMark();
+  const bool ok = mark ? document_->removeMark(mark->first, mark->second, &reason)
+                       : document_->removeObject(document_->selectedObject(), &reason);
+  if (!ok) statusBar()->showMessage(reason, 5000);
 }
 
 void MainWindow::addRecentFile(const QString& path) {
@@ -578,7 +646,51 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::setLanguage(const QString& code) {
   QSettings().setValue(QStringLiteral("language"), code);
+  installTranslators();
   statusBar()->showMessage(tr("The language changes when Inlay is started again."), 6000);
+}
+
+QAction* MainWindow::toolAction(int tool) const {
+  return tool >= 0 && tool < toolActs_.size() ? toolActs_[tool] : nullptr;
+}
+
+bool MainWindow::offerRecovery() {
+  const std::optional<Autosaver::Recovery> r = Autosaver::pending();
+  if (!r) return false;
+  if (!interactive_) return true;
+  const QString what = r->originalPath.isEmpty() ? tr("a new scene")
+                                                 : QDir::toNativeSeparators(r->originalPath);
+  auto* box = new QMessageBox(
+      QMessageBox::Question, tr("Restore unsaved work?"),
+      tr("Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?")
+          .arg(what, QLocale().toString(r->saved.toLocalTime(), QLocale::ShortFormat)),
+      QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("recoveryQuestion"));
+  QPushButton* restore = box->addButton(tr("&Restore"), QMessageBox::AcceptRole);
+  box->addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+  box->setDefaultButton(restore);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::buttonClicked, this, [this, restore](QAbstractButton* b) {
+    if (b == restore)
+      restoreRecovery();
+    else
+      Autosaver::discard();
+  });
+  box->open();
+  return true;
+}
+
+bool MainWindow::restoreRecovery() {
+  const std::optional<Autosaver::Recovery> r = Autosaver::pending();
+  if (!r) return false;
+  QString error;
+  if (!document_->restoreRecovery(r->scenePath, r->originalPath, &error)) {
+    showError(tr("Cannot restore the unsaved work"), error);
+    return false;
+  }
+  autosaver_->markDirty();
+  statusBar()->showMessage(tr("Restored the unsaved work."), 6000);
+  return true;
 }
 
 bool MainWindow::maybeSave() {
@@ -595,6 +707,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
+  Autosaver::discard();  // saved, or the user chose to discard
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());
