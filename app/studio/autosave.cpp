@@ -2,6 +2,7 @@
 
 #include "document.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -44,11 +45,13 @@ Autosaver::Autosaver(Document* document, QObject* parent) : QObject(parent), doc
 }
 
 QString Autosaver::recoveryScenePath() {
-  return settingsFolder() + QStringLiteral("/inlay-recovery.json");
+  return settingsFolder() + QLatin1Char('/') + QCoreApplication::applicationName() +
+         QStringLiteral("-recovery.json");
 }
 
 QString Autosaver::recoveryInfoPath() {
-  return settingsFolder() + QStringLiteral("/inlay-recovery.info");
+  return settingsFolder() + QLatin1Char('/') + QCoreApplication::applicationName() +
+         QStringLiteral("-recovery.info");
 }
 
 bool Autosaver::saveNow() {

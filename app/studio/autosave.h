@@ -4,8 +4,8 @@
 // loss): the window offers to restore it.
 //
 // Files (both written atomically, so a kill mid-write leaves the previous pair):
-//   <settings folder>/inlay-recovery.json  the scene file, paths absolute
-//   <settings folder>/inlay-recovery.info  JSON: {"original": the document's file or "", "saved": ISO time}
+//   <settings folder>/<application>-recovery.json  the scene file, paths absolute
+//   <settings folder>/<application>-recovery.info  JSON: {"original": the document's file or "", "saved": ISO time}
 // One studio per user is assumed: a second running studio shares the files.
 //
 // GUI thread only.
@@ -26,8 +26,8 @@ class Autosaver : public QObject {
   Q_OBJECT
 
  public:
-  // The interval: the setting "autosaveSeconds" (default 30), or the environment variable
-  // INLAY_AUTOSAVE_MS (tests).
+  // The interval: the setting "autosaveSeconds" (default 30, at least 5), or the environment
+  // variable INLAY_AUTOSAVE_MS (tests).
   explicit Autosaver(Document* document, QObject* parent = nullptr);
 
   static QString recoveryScenePath();
