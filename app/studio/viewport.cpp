@@ -25,9 +25,36 @@ QColor srgbColour(const Vec3& linear) {
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
 }
 
+// The part of segment ab inside `r` (Liang-Barsky); false when none is. A line toward a
+// vanishing point far outside the widget would otherwise be dashed along its whole length on
+// every paint.
+bool clipToRect(QPointF& a, QPointF& b, const QRectF& r) {
+  double t0 = 0, t1 = 1;
+  const QPointF d = b - a;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double q[4] = {a.x() - r.left(), r.right() - a.x(), a.y() - r.top(), r.bottom() - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  const QPointF a0 = a;
+  a = a0 + d * t0;
+  b = a0 + d * t1;
+  return true;
+}
+
 // A line with a dark halo so it reads on any photo.
-void haloLine(QPainter& p, const QPointF& a, const QPointF& b, const QColor& colour,
-              double width = 1.5, Qt::PenStyle style = Qt::SolidLine) {
+void haloLine(QPainter& p, QPointF a, QPointF b, const QColor& colour, double width = 1.5,
+              Qt::PenStyle style = Qt::SolidLine) {
+  if (!clipToRect(a, b, QRectF(p.viewport()).adjusted(-8, -8, 8, 8))) return;
   p.setPen(QPen(QColor(0, 0, 0, 150), width + 2.0, Qt::SolidLine, Qt::RoundCap));
   p.drawLine(a, b);
   p.setPen(QPen(colour, width, style, Qt::RoundCap));
