@@ -12,6 +12,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QUndoStack>
 #include <QtTest>
@@ -56,6 +57,7 @@ class StudioToolsTest : public QObject {
   void outlineKeysAndDeletingAMark();
   void undoingAnObjectEditWhilePreparing();
   void zoomAndPanKeepTheImageUnderTheCursor();
+  void exportShownLayer();
 
  private:
   std::unique_ptr<MainWindow> window_;
@@ -221,6 +223,19 @@ void StudioToolsTest::zoomAndPanKeepTheImageUnderTheCursor() {
   QVERIFY(std::abs(moved.x() - 40) < 1e-6 && std::abs(moved.y() + 25) < 1e-6);
   view_->zoomToFit();
   QVERIFY(std::abs(view_->zoom() - zoom0) < 1e-9);
+}
+
+void StudioToolsTest::exportShownLayer() {
+  QTemporaryDir dir;
+  view_->setLayer(Layer::Albedo);
+  const QString path = dir.filePath(QStringLiteral("albedo.png"));
+  QVERIFY(window_->exportShownLayer(path));
+  const QImage back(path);
+  QCOMPARE(back.width(), doc_->prepared()->photo.linearRgb.width);
+  QCOMPARE(back.convertToFormat(QImage::Format_RGB32),
+           window_->renderer()->layerImage(Layer::Albedo).convertToFormat(QImage::Format_RGB32));
+  // A folder that does not exist: refused, nothing half-written.
+  QVERIFY(!window_->exportShownLayer(dir.filePath(QStringLiteral("no/such/albedo.png"))));
 }
 
 QTEST_MAIN(StudioToolsTest)

@@ -26,6 +26,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressDialog>
+#include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -184,6 +185,10 @@ void MainWindow::createActions() {
   exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
   connect(exportAct_, &QAction::triggered, this, &MainWindow::exportCompositeDialog);
 
+  exportLayerAct_ = new QAction(tr("Export Shown &Layer…"), this);
+  exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
+  connect(exportLayerAct_, &QAction::triggered, this, &MainWindow::exportLayerDialog);
+
   quitAct_ = new QAction(tr("&Quit"), this);
   quitAct_->setShortcut(QKeySequence::Quit);
   connect(quitAct_, &QAction::triggered, this, &QWidget::close);
@@ -271,6 +276,7 @@ void MainWindow::createMenus() {
   fileMenu_->addAction(saveAct_);
   fileMenu_->addAction(saveAsAct_);
   fileMenu_->addAction(exportAct_);
+  fileMenu_->addAction(exportLayerAct_);
   fileMenu_->addSeparator();
   fileMenu_->addAction(quitAct_);
 
@@ -565,6 +571,35 @@ bool MainWindow::exportComposite(const QString& path) {
                                .arg(QDir::toNativeSeparators(path))
                                .arg(renderer_->frameInfo().spp),
                            5000);
+  return true;
+}
+
+void MainWindow::exportLayerDialog() {
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Shown Layer"), QString(),
+      tr("PNG image (*.png)") + QStringLiteral(";;") + tr("JPEG image (*.jpg *.jpeg)") +
+          QStringLiteral(";;") + tr("TIFF image (*.tif *.tiff)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".png");
+  exportShownLayer(path);
+}
+
+bool MainWindow::exportShownLayer(const QString& path) {
+  const QImage image = viewport_->showsBefore() ? renderer_->photoImage()
+                                                : renderer_->layerImage(viewport_->layer());
+  if (image.isNull()) {
+    showError(tr("Nothing to export"), tr("This layer has not been made yet."));
+    return false;
+  }
+  // Atomic: a failed write leaves any earlier file as it was.
+  QSaveFile file(path);
+  const QByteArray format = QFileInfo(path).suffix().toLower().toLatin1();
+  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, format.constData()) || !file.commit()) {
+    showError(tr("Cannot export the layer"),
+              tr("%1: cannot write (%2)").arg(QDir::toNativeSeparators(path), file.errorString()));
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
   return true;
 }
 

@@ -64,6 +64,9 @@ class MainWindow : public QMainWindow {
   // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear);
   // returns false (after telling the user) on failure.
   bool exportComposite(const QString& path);
+  // Writes the layer the viewport shows (8-bit sRGB: .png, .jpg, .tif) atomically; returns
+  // false (after telling the user) when it does not exist yet or cannot be written.
+  bool exportShownLayer(const QString& path);
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -76,6 +79,7 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAsDialog();
   void exportCompositeDialog();
+  void exportLayerDialog();
   void about();
   // Inserts a builtin mesh ("builtin:sphere", "builtin:cube") standing in the middle of the
   // visible floor; false (with the reason in the status bar) when there is no such place.
@@ -123,6 +127,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAct_ = nullptr;
   QAction* saveAsAct_ = nullptr;
   QAction* exportAct_ = nullptr;
+  QAction* exportLayerAct_ = nullptr;
   QAction* quitAct_ = nullptr;
   QAction* undoAct_ = nullptr;
   QAction* redoAct_ = nullptr;
