@@ -297,7 +297,9 @@ void Document::onPrepared(const PrepareResult& result) {
     prepared_ = std::make_unique<PreparedScene>(std::move(*result.scene));
     // The engine may have filled in estimated keys; the objects are the user's.
     prepared_->doc.objects = doc_.objects;
-    estimatedBackWallPx_ = prepared_->backWallPx;
+    // The estimate's own corners only: with the user's corners the box is theirs, and undoing
+    // back to the estimate must show the estimate, not their last fix.
+    if (!prepared_->doc.layout.backWallPx) estimatedBackWallPx_ = prepared_->backWallPx;
     if (prepared_->cameraEstimate) lastEstimate_ = prepared_->cameraEstimate;
     state_ = State::Ready;
   } else if (result.cancelled) {

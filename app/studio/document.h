@@ -197,7 +197,7 @@ class Document : public QObject {
   QStringList loadWarnings_;
   QUndoStack undo_;
   int selected_ = -1;
-  std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest prepared scene
+  std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest automatic estimate
   std::optional<CameraEstimate> lastEstimate_;
 
   QThread thread_;
