@@ -1,1149 +1,1188 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
-    <context>
-        <name>inlay::studio::Autosaver</name>
-        <message>
-            <location filename="../app/studio/autosave.cpp" line="74" />
-            <source>%1: cannot write (%2)</source>
-            <translation>%1: kann nicht geschrieben werden (%2)</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::Document</name>
-        <message>
-            <location filename="../app/studio/document.cpp" line="289" />
-            <location filename="../app/studio/document.cpp" line="305" />
-            <source>Preparation was cancelled.</source>
-            <translation>Die Vorbereitung wurde abgebrochen.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="388" />
-            <source>There is no object %1.</source>
-            <translation>Es gibt kein Objekt %1.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="389" />
-            <source>The scene is still being prepared.</source>
-            <translation>Die Szene wird noch vorbereitet.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="390" />
-            <source>The scene could not be prepared.</source>
-            <translation>Die Szene konnte nicht vorbereitet werden.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="328" />
-            <location filename="../app/studio/document.cpp" line="553" />
-            <source>The position is not a number.</source>
-            <translation>Die Position ist keine Zahl.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="330" />
-            <location filename="../app/studio/document.cpp" line="401" />
-            <source>The height must be greater than zero.</source>
-            <translation>Die Höhe muss größer als null sein.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="352" />
-            <source>Move object %1</source>
-            <translation>Objekt %1 verschieben</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="359" />
-            <source>Change height of object %1</source>
-            <translation>Höhe von Objekt %1 ändern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="366" />
-            <source>Turn object %1</source>
-            <translation>Objekt %1 drehen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="373" />
-            <source>Change material of object %1</source>
-            <translation>Material von Objekt %1 ändern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="411" />
-            <source>Insert object %1</source>
-            <translation>Objekt %1 einfügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="423" />
-            <source>Delete object %1</source>
-            <translation>Objekt %1 löschen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="520" />
-            <source>Open a photo first.</source>
-            <translation>Öffnen Sie zuerst ein Foto.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="538" />
-            <source>There is no estimated box yet.</source>
-            <translation>Es gibt noch keinen geschätzten Raum.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="543" />
-            <source>Accept the estimated box</source>
-            <translation>Geschätzten Raum übernehmen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="549" />
-            <source>There is no such corner of the back wall.</source>
-            <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="559" />
-            <source>Move a corner of the back wall</source>
-            <translation>Ecke der Rückwand verschieben</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="565" />
-            <source>Estimate the box again</source>
-            <translation>Raum neu schätzen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="570" />
-            <source>A light's outline needs at least three points around an area.</source>
-            <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="578" />
-            <source>Outline light %1</source>
-            <translation>Lampe %1 umreißen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="584" />
-            <source>Each box of a shaft must be at least two pixels wide and high.</source>
-            <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="592" />
-            <source>Add shaft %1</source>
-            <translation>Sonnenstrahl %1 hinzufügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="599" />
-            <source>A surface's outline needs at least three points around an area.</source>
-            <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="608" />
-            <source>Add surface %1</source>
-            <translation>Fläche %1 hinzufügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="619" />
-            <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
-            <translation>Ein Verdecker braucht einen Strich über dem, was davor ist, und einen über dem, was dahinter ist.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="624" />
-            <source>Add occluder %1</source>
-            <translation>Verdecker %1 hinzufügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="631" />
-            <source>There is no such occluder, or the stroke is empty.</source>
-            <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="637" />
-            <source>Add a stroke to occluder %1</source>
-            <translation>Strich zu Verdecker %1 hinzufügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="644" />
-            <source>There is no such mark.</source>
-            <translation>Diese Markierung gibt es nicht.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="651" />
-            <source>Delete light %1</source>
-            <translation>Lampe %1 löschen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="652" />
-            <source>Delete shaft %1</source>
-            <translation>Sonnenstrahl %1 löschen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="653" />
-            <source>Delete surface %1</source>
-            <translation>Fläche %1 löschen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/document.cpp" line="654" />
-            <source>Delete occluder %1</source>
-            <translation>Verdecker %1 löschen</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::LayersDock</name>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="144" />
-            <source>Layers</source>
-            <translation>Ebenen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="146" />
-            <source>Composite</source>
-            <translation>Komposit</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="146" />
-            <source>Photo</source>
-            <translation>Foto</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="147" />
-            <source>Albedo</source>
-            <translation>Albedo</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="147" />
-            <source>Direct light</source>
-            <translation>Direktes Licht</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="148" />
-            <source>With objects</source>
-            <translation>Mit Objekten</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="148" />
-            <source>Without objects</source>
-            <translation>Ohne Objekte</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="149" />
-            <source>Mask</source>
-            <translation>Maske</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="149" />
-            <source>Difference</source>
-            <translation>Differenz</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::MainWindow</name>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="79" />
-            <source>Reading the photo</source>
-            <translation>Foto wird gelesen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="80" />
-            <source>Estimating the camera</source>
-            <translation>Kamera wird geschätzt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="81" />
-            <source>Fitting the room</source>
-            <translation>Raum wird angepasst</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="82" />
-            <source>Estimating the lighting</source>
-            <translation>Beleuchtung wird geschätzt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="83" />
-            <source>Placing the objects</source>
-            <translation>Objekte werden platziert</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="115" />
-            <source>Samples per pixel of the shown composite</source>
-            <translation>Samples pro Pixel des angezeigten Komposits</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="116" />
-            <source>Samples per second of the renderer (millions)</source>
-            <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="117" />
-            <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
-            <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="118" />
-            <source>Render time since the last change</source>
-            <translation>Renderzeit seit der letzten Änderung</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="119" />
-            <source>Zoom</source>
-            <translation>Zoom</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="120" />
-            <source>%1 %</source>
-            <translation>%1 %</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="131" />
-            <source>Preparing the scene: %1…</source>
-            <translation>Szene wird vorbereitet: %1 …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="161" />
-            <source>&amp;Open Scene…</source>
-            <translation>Szene &amp;öffnen …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="163" />
-            <source>Open a scene file (.json)</source>
-            <translation>Eine Szenendatei (.json) öffnen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="166" />
-            <source>Open &amp;Photo…</source>
-            <translation>&amp;Foto öffnen …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="168" />
-            <source>Start a new scene from a photo</source>
-            <translation>Eine neue Szene aus einem Foto beginnen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="171" />
-            <source>Open &amp;Example</source>
-            <translation>&amp;Beispiel öffnen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="174" />
-            <source>&amp;Save</source>
-            <translation>&amp;Speichern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="178" />
-            <source>Save &amp;As…</source>
-            <translation>Speichern &amp;unter …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="182" />
-            <source>&amp;Export Composite…</source>
-            <translation>Komposit &amp;exportieren …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="184" />
-            <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
-            <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="187" />
-            <source>&amp;Quit</source>
-            <translation>&amp;Beenden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="191" />
-            <source>&amp;Undo</source>
-            <translation>&amp;Rückgängig</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="194" />
-            <source>&amp;Redo</source>
-            <translation>Wi&amp;ederholen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="198" />
-            <source>Insert &amp;Sphere</source>
-            <translation>&amp;Kugel einfügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="199" />
-            <source>Stand a sphere on the floor in the middle of the photo</source>
-            <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="202" />
-            <source>Insert &amp;Cube</source>
-            <translation>&amp;Würfel einfügen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="203" />
-            <source>Stand a cube on the floor in the middle of the photo</source>
-            <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="206" />
-            <source>&amp;Delete Object</source>
-            <translation>Objekt &amp;löschen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="210" />
-            <source>Zoom &amp;In</source>
-            <translation>Ver&amp;größern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="213" />
-            <source>Zoom &amp;Out</source>
-            <translation>Ver&amp;kleinern</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="216" />
-            <source>&amp;Fit to Window</source>
-            <translation>An &amp;Fenster anpassen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="219" />
-            <source>&amp;Before (Photo Only)</source>
-            <translation>&amp;Vorher (nur Foto)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="222" />
-            <source>Toggle between the photo and the composite with the objects</source>
-            <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="225" />
-            <source>&amp;Accept Estimated Box</source>
-            <translation>Geschätzten &amp;Raum übernehmen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="226" />
-            <source>Keep the estimated back wall as yours</source>
-            <translation>Die geschätzte Rückwand als Ihre behalten</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="231" />
-            <source>Estimate the &amp;Box Again</source>
-            <translation>Raum &amp;neu schätzen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="232" />
-            <source>Forget your corners of the back wall</source>
-            <translation>Ihre Ecken der Rückwand verwerfen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="237" />
-            <source>&amp;Vanishing Lines and Confidence</source>
-            <translation>&amp;Fluchtlinien und Konfidenz</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="244" />
-            <source>&amp;Select and Move</source>
-            <translation>&amp;Auswählen und verschieben</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="245" />
-            <source>Outline a &amp;Light</source>
-            <translation>&amp;Lampe umreißen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="246" />
-            <source>Sun &amp;Shaft</source>
-            <translation>&amp;Sonnenstrahl</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="247" />
-            <source>&amp;Table Top or Step</source>
-            <translation>&amp;Tischplatte oder Stufe</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="248" />
-            <source>&amp;Occluder Strokes</source>
-            <translation>&amp;Verdecker-Striche</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="258" />
-            <source>&amp;About Inlay</source>
-            <translation>&amp;Über Inlay</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="263" />
-            <source>&amp;File</source>
-            <translation>&amp;Datei</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="267" />
-            <source>Open &amp;Recent</source>
-            <translation>&amp;Zuletzt geöffnet</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="277" />
-            <source>&amp;Edit</source>
-            <translation>&amp;Bearbeiten</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="288" />
-            <source>&amp;Tools</source>
-            <translation>&amp;Werkzeuge</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="291" />
-            <source>&amp;View</source>
-            <translation>&amp;Ansicht</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="303" />
-            <source>&amp;Language</source>
-            <translation>&amp;Sprache</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="307" />
-            <source>System Default</source>
-            <translation>Systemvorgabe</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="318" />
-            <source>&amp;Help</source>
-            <translation>&amp;Hilfe</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="321" />
-            <source>Main</source>
-            <translation>Haupt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="341" />
-            <location filename="../app/studio/main_window.cpp" line="350" />
-            <source>Preparing the scene…</source>
-            <translation>Szene wird vorbereitet …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="341" />
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="342" />
-            <location filename="../app/studio/main_window.cpp" line="699" />
-            <source>Inlay</source>
-            <translation>Inlay</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="366" />
-            <source>The scene could not be prepared</source>
-            <translation>Die Szene konnte nicht vorbereitet werden</translation>
-        </message>
-        <message numerus="yes">
-            <location filename="../app/studio/main_window.cpp" line="375" />
-            <source>%1 (and %n more)</source>
-            <translation>
-                <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
-                <numerusform>%1 (und %n weitere Hinweise)</numerusform>
-            </translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="399" />
-            <source>– spp</source>
-            <translation>– spp</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="400" />
-            <location filename="../app/studio/main_window.cpp" line="412" />
-            <source>– samples/s</source>
-            <translation>– Samples/s</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="401" />
-            <source>error –</source>
-            <translation>Fehler –</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="402" />
-            <source>– s</source>
-            <translation>– s</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="406" />
-            <source>preview 1/%1</source>
-            <translation>Vorschau 1/%1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="407" />
-            <source>%1 spp, done</source>
-            <translation>%1 spp, fertig</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="408" />
-            <source>%1 spp</source>
-            <translation>%1 spp</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="409" />
-            <source>error %1</source>
-            <translation>Fehler %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="411" />
-            <source>%1 M samples/s</source>
-            <translation>%1 Mio. Samples/s</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="413" />
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="423" />
-            <source>%1 (new scene)</source>
-            <translation>%1 (neue Szene)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="426" />
-            <source>Untitled</source>
-            <translation>Unbenannt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="427" />
-            <source>%1[*] — Inlay</source>
-            <translation>%1[*] — Inlay</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="446" />
-            <source>Cannot open</source>
-            <translation>Öffnen nicht möglich</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="446" />
-            <source>%1: no such file</source>
-            <translation>%1: Datei nicht vorhanden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="452" />
-            <source>Cannot open the scene</source>
-            <translation>Die Szene kann nicht geöffnet werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="471" />
-            <location filename="../app/studio/main_window.cpp" line="481" />
-            <source>Cannot open the example</source>
-            <translation>Das Beispiel kann nicht geöffnet werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="471" />
-            <source>The example scene is not installed.</source>
-            <translation>Die Beispielszene ist nicht installiert.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="481" />
-            <source>Cannot write %1</source>
-            <translation>%1 kann nicht geschrieben werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="491" />
-            <source>Open Scene</source>
-            <translation>Szene öffnen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="492" />
-            <source>Inlay scenes (*.json);;All files (*)</source>
-            <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="499" />
-            <source>Open Photo</source>
-            <translation>Foto öffnen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="500" />
-            <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
-            <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="507" />
-            <source>Cannot save the scene</source>
-            <translation>Die Szene kann nicht gespeichert werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="511" />
-            <source>Saved %1</source>
-            <translation>%1 gespeichert</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="526" />
-            <source>Save Scene As</source>
-            <translation>Szene speichern unter</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="527" />
-            <source>Inlay scenes (*.json)</source>
-            <translation>Inlay-Szenen (*.json)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="535" />
-            <location filename="../app/studio/main_window.cpp" line="556" />
-            <source>Nothing to export</source>
-            <translation>Nichts zu exportieren</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="535" />
-            <location filename="../app/studio/main_window.cpp" line="556" />
-            <source>The composite has not been rendered yet.</source>
-            <translation>Das Komposit wurde noch nicht gerendert.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="539" />
-            <source>PNG image (*.png)</source>
-            <translation>PNG-Bild (*.png)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="539" />
-            <source>JPEG image (*.jpg *.jpeg)</source>
-            <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="540" />
-            <source>TIFF image (*.tif *.tiff)</source>
-            <translation>TIFF-Bild (*.tif *.tiff)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="540" />
-            <source>OpenEXR, linear (*.exr)</source>
-            <translation>OpenEXR, linear (*.exr)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="541" />
-            <source>Export Composite</source>
-            <translation>Komposit exportieren</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="561" />
-            <source>Cannot export the composite</source>
-            <translation>Das Komposit kann nicht exportiert werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="564" />
-            <source>Exported %1 (%2 spp)</source>
-            <translation>%1 exportiert (%2 spp)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="588" />
-            <source>About Inlay</source>
-            <translation>Über Inlay</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="589" />
-            <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="598" />
-            <source>There is no floor in the middle of the photo to stand an object on.</source>
-            <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="650" />
-            <source>The language changes when Inlay is started again.</source>
-            <translation>Die Sprache wechselt beim nächsten Start von Inlay.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="661" />
-            <source>a new scene</source>
-            <translation>einer neuen Szene</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="664" />
-            <source>Restore unsaved work?</source>
-            <translation>Ungesicherte Arbeit wiederherstellen?</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="665" />
-            <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
-            <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="669" />
-            <source>&amp;Restore</source>
-            <translation>&amp;Wiederherstellen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="670" />
-            <source>&amp;Discard</source>
-            <translation>&amp;Verwerfen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="688" />
-            <source>Cannot restore the unsaved work</source>
-            <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="692" />
-            <source>Restored the unsaved work.</source>
-            <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main_window.cpp" line="699" />
-            <source>The scene has unsaved changes. Save them?</source>
-            <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::PrepareWorker</name>
-        <message>
-            <location filename="../app/studio/prepare_worker.cpp" line="43" />
-            <source>Internal error while preparing the scene.</source>
-            <translation>Interner Fehler beim Vorbereiten der Szene.</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::PropertiesDock</name>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="173" />
-            <source>Properties</source>
-            <translation>Eigenschaften</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="185" />
-            <source> m</source>
-            <translation> m</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="193" />
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="197" />
-            <source>Diffuse</source>
-            <translation>Matt (diffus)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="198" />
-            <source>Glossy</source>
-            <translation>Glänzend</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="199" />
-            <source>Mirror</source>
-            <translation>Spiegel</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="200" />
-            <source>Glass</source>
-            <translation>Glas</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="201" />
-            <source>Emissive</source>
-            <translation>Leuchtend</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="202" />
-            <source>From the file</source>
-            <translation>Aus der Datei</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="205" />
-            <source>Reflectance of the object's surface</source>
-            <translation>Reflexionsgrad der Objektoberfläche</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="208" />
-            <source>Base (px):</source>
-            <translation>Fußpunkt (px):</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="209" />
-            <source>Height:</source>
-            <translation>Höhe:</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="210" />
-            <source>Turn:</source>
-            <translation>Drehung:</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="211" />
-            <source>Material:</source>
-            <translation>Material:</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="212" />
-            <source>Colour:</source>
-            <translation>Farbe:</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="231" />
-            <source>No object selected</source>
-            <translation>Kein Objekt ausgewählt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="236" />
-            <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
-            <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="281" />
-            <source>Object colour</source>
-            <translation>Objektfarbe</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::SceneTreeDock</name>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="30" />
-            <source>sphere</source>
-            <translation>Kugel</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="31" />
-            <source>cube</source>
-            <translation>Würfel</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="45" />
-            <source>Scene</source>
-            <translation>Szene</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="47" />
-            <source>Item</source>
-            <translation>Element</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="47" />
-            <source>Details</source>
-            <translation>Details</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="74" />
-            <source>Room</source>
-            <translation>Raum</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="77" />
-            <source>%1 × %2 m, %3 m high</source>
-            <translation>%1 × %2 m, %3 m hoch</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="82" />
-            <source>back wall given</source>
-            <translation>Rückwand vorgegeben</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="82" />
-            <source>estimated</source>
-            <translation>geschätzt</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="85" />
-            <source>Lights</source>
-            <translation>Lichter</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="88" />
-            <source>Light %1</source>
-            <translation>Licht %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="89" />
-            <source>outline on the photo</source>
-            <translation>Umriss im Foto</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="90" />
-            <source>rectangle in 3D</source>
-            <translation>Rechteck im Raum</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="104" />
-            <source>Shafts</source>
-            <translation>Sonnenstrahlen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="104" />
-            <source>Shaft %1</source>
-            <translation>Sonnenstrahl %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="105" />
-            <source>sunlit patch and its window</source>
-            <translation>Sonnenfleck und sein Fenster</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="106" />
-            <source>Surfaces</source>
-            <translation>Flächen</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="106" />
-            <source>Surface %1</source>
-            <translation>Fläche %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="108" />
-            <source>Occluders</source>
-            <translation>Verdecker</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="108" />
-            <source>Occluder %1</source>
-            <translation>Verdecker %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="110" />
-            <source>%1 strokes in front, %2 behind</source>
-            <translation>%1 Striche davor, %2 dahinter</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="115" />
-            <source>Objects</source>
-            <translation>Objekte</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="119" />
-            <source>Object %1</source>
-            <translation>Objekt %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/docks.cpp" line="120" />
-            <source>%1, %2 m</source>
-            <translation>%1, %2 m</translation>
-        </message>
-    </context>
-    <context>
-        <name>inlay::studio::Viewport</name>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="196" />
-            <source>Drag an object or a corner of the back wall.</source>
-            <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="198" />
-            <source>Click around a light; click the first point (or press Enter) to close.</source>
-            <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="200" />
-            <source>Now drag a box around the window the sunlight comes through.</source>
-            <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="201" />
-            <source>Drag a box around the patch of sunlight.</source>
-            <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="204" />
-            <source>Click the floor straight below the first point of the outline.</source>
-            <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="205" />
-            <source>Click around the top of a table or step; click the first point to close.</source>
-            <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="207" />
-            <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
-            <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="278" />
-            <source>Back wall (yours)</source>
-            <translation>Rückwand (Ihre)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="278" />
-            <source>Back wall (estimated)</source>
-            <translation>Rückwand (geschätzt)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="334" />
-            <source>%1 px</source>
-            <translation>%1 px</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="357" />
-            <source>Light %1</source>
-            <translation>Licht %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="371" />
-            <source>Shaft %1</source>
-            <translation>Sonnenstrahl %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="386" />
-            <source>Surface %1</source>
-            <translation>Fläche %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="533" />
-            <source>Preparing the scene…</source>
-            <translation>Szene wird vorbereitet …</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="536" />
-            <source>The scene could not be prepared: %1</source>
-            <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="540" />
-            <source>Open a scene or a photo (File menu).</source>
-            <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="543" />
-            <source>Before: the photo without objects</source>
-            <translation>Vorher: das Foto ohne Objekte</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="561" />
-            <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
-            <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="565" />
-            <source>Focal length %1 px (%2–%3 px)</source>
-            <translation>Brennweite %1 px (%2–%3 px)</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="605" />
-            <source>An outline needs at least three points.</source>
-            <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/viewport.cpp" line="734" />
-            <location filename="../app/studio/viewport.cpp" line="836" />
-            <source>Cannot place the object here: %1</source>
-            <translation>Das Objekt kann hier nicht stehen: %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>main</name>
-        <message>
-            <location filename="../app/studio/main.cpp" line="47" />
-            <source>Insert synthetic objects into a photograph.</source>
-            <translation>Synthetische Objekte in ein Foto einfügen.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="52" />
-            <source>A scene file (.json) or a photo; none: the example.</source>
-            <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="56" />
-            <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
-            <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="60" />
-            <source>Samples per pixel to wait for (default 4).</source>
-            <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="64" />
-            <source>Restore unsaved work left by a crash without asking.</source>
-            <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="79" />
-            <source>Give at most one file.</source>
-            <translation>Geben Sie höchstens eine Datei an.</translation>
-        </message>
-        <message>
-            <location filename="../app/studio/main.cpp" line="86" />
-            <source>expected a number &gt;= 0</source>
-            <translation>eine Zahl &gt;= 0 erwartet</translation>
-        </message>
-    </context>
+<context>
+    <name>inlay::studio::Autosaver</name>
+    <message>
+        <location filename="../app/studio/autosave.cpp" line="77"/>
+        <source>%1: cannot write (%2)</source>
+        <translation>%1: kann nicht geschrieben werden (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::Document</name>
+    <message>
+        <location filename="../app/studio/document.cpp" line="289"/>
+        <location filename="../app/studio/document.cpp" line="307"/>
+        <source>Preparation was cancelled.</source>
+        <translation>Die Vorbereitung wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="390"/>
+        <source>There is no object %1.</source>
+        <translation>Es gibt kein Objekt %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="391"/>
+        <source>The scene is still being prepared.</source>
+        <translation>Die Szene wird noch vorbereitet.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="392"/>
+        <source>The scene could not be prepared.</source>
+        <translation>Die Szene konnte nicht vorbereitet werden.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="330"/>
+        <location filename="../app/studio/document.cpp" line="555"/>
+        <source>The position is not a number.</source>
+        <translation>Die Position ist keine Zahl.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="332"/>
+        <location filename="../app/studio/document.cpp" line="403"/>
+        <source>The height must be greater than zero.</source>
+        <translation>Die Höhe muss größer als null sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="354"/>
+        <source>Move object %1</source>
+        <translation>Objekt %1 verschieben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="361"/>
+        <source>Change height of object %1</source>
+        <translation>Höhe von Objekt %1 ändern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="368"/>
+        <source>Turn object %1</source>
+        <translation>Objekt %1 drehen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="375"/>
+        <source>Change material of object %1</source>
+        <translation>Material von Objekt %1 ändern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="413"/>
+        <source>Insert object %1</source>
+        <translation>Objekt %1 einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="425"/>
+        <source>Delete object %1</source>
+        <translation>Objekt %1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="522"/>
+        <source>Open a photo first.</source>
+        <translation>Öffnen Sie zuerst ein Foto.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="540"/>
+        <source>There is no estimated box yet.</source>
+        <translation>Es gibt noch keinen geschätzten Raum.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="545"/>
+        <source>Accept the estimated box</source>
+        <translation>Geschätzten Raum übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="551"/>
+        <source>There is no such corner of the back wall.</source>
+        <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="561"/>
+        <source>Move a corner of the back wall</source>
+        <translation>Ecke der Rückwand verschieben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="567"/>
+        <source>Estimate the box again</source>
+        <translation>Raum neu schätzen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="572"/>
+        <source>A light&apos;s outline needs at least three points around an area.</source>
+        <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="580"/>
+        <source>Outline light %1</source>
+        <translation>Lampe %1 umreißen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="586"/>
+        <source>Each box of a shaft must be at least two pixels wide and high.</source>
+        <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="594"/>
+        <source>Add shaft %1</source>
+        <translation>Sonnenstrahl %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="601"/>
+        <source>A surface&apos;s outline needs at least three points around an area.</source>
+        <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="610"/>
+        <source>Add surface %1</source>
+        <translation>Fläche %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="621"/>
+        <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
+        <translation>Ein Verdecker braucht einen Strich über dem, was davor ist, und einen über dem, was dahinter ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="626"/>
+        <source>Add occluder %1</source>
+        <translation>Verdecker %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="633"/>
+        <source>There is no such occluder, or the stroke is empty.</source>
+        <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="639"/>
+        <source>Add a stroke to occluder %1</source>
+        <translation>Strich zu Verdecker %1 hinzufügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="646"/>
+        <source>There is no such mark.</source>
+        <translation>Diese Markierung gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="653"/>
+        <source>Delete light %1</source>
+        <translation>Lampe %1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="654"/>
+        <source>Delete shaft %1</source>
+        <translation>Sonnenstrahl %1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="655"/>
+        <source>Delete surface %1</source>
+        <translation>Fläche %1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="656"/>
+        <source>Delete occluder %1</source>
+        <translation>Verdecker %1 löschen</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::LayersDock</name>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="144"/>
+        <source>Layers</source>
+        <translation>Ebenen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="146"/>
+        <source>Composite</source>
+        <translation>Komposit</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="146"/>
+        <source>Photo</source>
+        <translation>Foto</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="147"/>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="147"/>
+        <source>Direct light</source>
+        <translation>Direktes Licht</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="148"/>
+        <source>With objects</source>
+        <translation>Mit Objekten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="148"/>
+        <source>Without objects</source>
+        <translation>Ohne Objekte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="149"/>
+        <source>Mask</source>
+        <translation>Maske</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="149"/>
+        <source>Difference</source>
+        <translation>Differenz</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::MainWindow</name>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="80"/>
+        <source>Reading the photo</source>
+        <translation>Foto wird gelesen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="81"/>
+        <source>Estimating the camera</source>
+        <translation>Kamera wird geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="82"/>
+        <source>Fitting the room</source>
+        <translation>Raum wird angepasst</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="83"/>
+        <source>Estimating the lighting</source>
+        <translation>Beleuchtung wird geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="84"/>
+        <source>Placing the objects</source>
+        <translation>Objekte werden platziert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="116"/>
+        <source>Samples per pixel of the shown composite</source>
+        <translation>Samples pro Pixel des angezeigten Komposits</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="117"/>
+        <source>Samples per second of the renderer (millions)</source>
+        <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="118"/>
+        <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
+        <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="119"/>
+        <source>Render time since the last change</source>
+        <translation>Renderzeit seit der letzten Änderung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="120"/>
+        <source>Zoom</source>
+        <translation>Zoom</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="121"/>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="132"/>
+        <source>Preparing the scene: %1…</source>
+        <translation>Szene wird vorbereitet: %1 …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="162"/>
+        <source>&amp;Open Scene…</source>
+        <translation>Szene &amp;öffnen …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="164"/>
+        <source>Open a scene file (.json)</source>
+        <translation>Eine Szenendatei (.json) öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="167"/>
+        <source>Open &amp;Photo…</source>
+        <translation>&amp;Foto öffnen …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="169"/>
+        <source>Start a new scene from a photo</source>
+        <translation>Eine neue Szene aus einem Foto beginnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="172"/>
+        <source>Open &amp;Example</source>
+        <translation>&amp;Beispiel öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="175"/>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="179"/>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="183"/>
+        <source>&amp;Export Composite…</source>
+        <translation>Komposit &amp;exportieren …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="185"/>
+        <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
+        <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="188"/>
+        <source>Export Shown &amp;Layer…</source>
+        <translation>Angezeigte &amp;Ebene exportieren…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="189"/>
+        <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
+        <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="192"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="196"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="199"/>
+        <source>&amp;Redo</source>
+        <translation>Wi&amp;ederholen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="203"/>
+        <source>Insert &amp;Sphere</source>
+        <translation>&amp;Kugel einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="204"/>
+        <source>Stand a sphere on the floor in the middle of the photo</source>
+        <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="207"/>
+        <source>Insert &amp;Cube</source>
+        <translation>&amp;Würfel einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="208"/>
+        <source>Stand a cube on the floor in the middle of the photo</source>
+        <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="211"/>
+        <source>&amp;Delete Object</source>
+        <translation>Objekt &amp;löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="215"/>
+        <source>Zoom &amp;In</source>
+        <translation>Ver&amp;größern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="218"/>
+        <source>Zoom &amp;Out</source>
+        <translation>Ver&amp;kleinern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="221"/>
+        <source>&amp;Fit to Window</source>
+        <translation>An &amp;Fenster anpassen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="224"/>
+        <source>&amp;Before (Photo Only)</source>
+        <translation>&amp;Vorher (nur Foto)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="227"/>
+        <source>Toggle between the photo and the composite with the objects</source>
+        <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="230"/>
+        <source>&amp;Accept Estimated Box</source>
+        <translation>Geschätzten &amp;Raum übernehmen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="231"/>
+        <source>Keep the estimated back wall as yours</source>
+        <translation>Die geschätzte Rückwand als Ihre behalten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="236"/>
+        <source>Estimate the &amp;Box Again</source>
+        <translation>Raum &amp;neu schätzen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="237"/>
+        <source>Forget your corners of the back wall</source>
+        <translation>Ihre Ecken der Rückwand verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="242"/>
+        <source>&amp;Vanishing Lines and Confidence</source>
+        <translation>&amp;Fluchtlinien und Konfidenz</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="249"/>
+        <source>&amp;Select and Move</source>
+        <translation>&amp;Auswählen und verschieben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="250"/>
+        <source>Outline a &amp;Light</source>
+        <translation>&amp;Lampe umreißen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="251"/>
+        <source>Sun &amp;Shaft</source>
+        <translation>&amp;Sonnenstrahl</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="252"/>
+        <source>&amp;Table Top or Step</source>
+        <translation>&amp;Tischplatte oder Stufe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="253"/>
+        <source>&amp;Occluder Strokes</source>
+        <translation>&amp;Verdecker-Striche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="263"/>
+        <source>&amp;About Inlay</source>
+        <translation>&amp;Über Inlay</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="268"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="272"/>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="283"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="294"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Werkzeuge</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="297"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="309"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="313"/>
+        <source>System Default</source>
+        <translation>Systemvorgabe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="324"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="327"/>
+        <source>Main</source>
+        <translation>Haupt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="347"/>
+        <location filename="../app/studio/main_window.cpp" line="356"/>
+        <source>Preparing the scene…</source>
+        <translation>Szene wird vorbereitet …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="347"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="348"/>
+        <location filename="../app/studio/main_window.cpp" line="734"/>
+        <source>Inlay</source>
+        <translation>Inlay</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="372"/>
+        <source>The scene could not be prepared</source>
+        <translation>Die Szene konnte nicht vorbereitet werden</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/studio/main_window.cpp" line="381"/>
+        <source>%1 (and %n more)</source>
+        <translation>
+            <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
+            <numerusform>%1 (und %n weitere Hinweise)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="405"/>
+        <source>– spp</source>
+        <translation>– spp</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <source>– samples/s</source>
+        <translation>– Samples/s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <source>error –</source>
+        <translation>Fehler –</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <source>– s</source>
+        <translation>– s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="412"/>
+        <source>preview 1/%1</source>
+        <translation>Vorschau 1/%1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
+        <source>%1 spp, done</source>
+        <translation>%1 spp, fertig</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <source>%1 spp</source>
+        <translation>%1 spp</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <source>error %1</source>
+        <translation>Fehler %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="417"/>
+        <source>%1 M samples/s</source>
+        <translation>%1 Mio. Samples/s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="429"/>
+        <source>%1 (new scene)</source>
+        <translation>%1 (neue Szene)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="433"/>
+        <source>%1[*] — Inlay</source>
+        <translation>%1[*] — Inlay</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <source>Cannot open</source>
+        <translation>Öffnen nicht möglich</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <source>%1: no such file</source>
+        <translation>%1: Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <source>Cannot open the scene</source>
+        <translation>Die Szene kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <source>Cannot open the example</source>
+        <translation>Das Beispiel kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <source>The example scene is not installed.</source>
+        <translation>Die Beispielszene ist nicht installiert.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <source>Cannot write %1</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <source>Open Scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <source>Inlay scenes (*.json);;All files (*)</source>
+        <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <source>Open Photo</source>
+        <translation>Foto öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
+        <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <source>Cannot save the scene</source>
+        <translation>Die Szene kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="517"/>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <source>Save Scene As</source>
+        <translation>Szene speichern unter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <source>Inlay scenes (*.json)</source>
+        <translation>Inlay-Szenen (*.json)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
+        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <source>Nothing to export</source>
+        <translation>Nichts zu exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
+        <source>The composite has not been rendered yet.</source>
+        <translation>Das Komposit wurde noch nicht gerendert.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="545"/>
+        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="545"/>
+        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <source>JPEG image (*.jpg *.jpeg)</source>
+        <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <source>TIFF image (*.tif *.tiff)</source>
+        <translation>TIFF-Bild (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <source>OpenEXR, linear (*.exr)</source>
+        <translation>OpenEXR, linear (*.exr)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <source>Export Composite</source>
+        <translation>Komposit exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="567"/>
+        <source>Cannot export the composite</source>
+        <translation>Das Komposit kann nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="570"/>
+        <source>Exported %1 (%2 spp)</source>
+        <translation>%1 exportiert (%2 spp)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="579"/>
+        <source>Export Shown Layer</source>
+        <translation>Angezeigte Ebene exportieren</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <source>This layer has not been made yet.</source>
+        <translation>Diese Ebene wurde noch nicht berechnet.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="598"/>
+        <source>Cannot export the layer</source>
+        <translation>Die Ebene kann nicht exportiert werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
+        <source>%1: cannot write (%2)</source>
+        <translation>%1: kann nicht geschrieben werden (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="602"/>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="623"/>
+        <source>About Inlay</source>
+        <translation>Über Inlay</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="633"/>
+        <source>There is no floor in the middle of the photo to stand an object on.</source>
+        <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="685"/>
+        <source>The language changes when Inlay is started again.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von Inlay.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="696"/>
+        <source>a new scene</source>
+        <translation>einer neuen Szene</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="699"/>
+        <source>Restore unsaved work?</source>
+        <translation>Ungesicherte Arbeit wiederherstellen?</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="700"/>
+        <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
+        <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="704"/>
+        <source>&amp;Restore</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="723"/>
+        <source>Cannot restore the unsaved work</source>
+        <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="727"/>
+        <source>Restored the unsaved work.</source>
+        <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="734"/>
+        <source>The scene has unsaved changes. Save them?</source>
+        <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::PrepareWorker</name>
+    <message>
+        <location filename="../app/studio/prepare_worker.cpp" line="49"/>
+        <source>Internal error while preparing the scene.</source>
+        <translation>Interner Fehler beim Vorbereiten der Szene.</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::PropertiesDock</name>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="173"/>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="185"/>
+        <source> m</source>
+        <translation> m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="193"/>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="197"/>
+        <source>Diffuse</source>
+        <translation>Matt (diffus)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="198"/>
+        <source>Glossy</source>
+        <translation>Glänzend</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="199"/>
+        <source>Mirror</source>
+        <translation>Spiegel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="200"/>
+        <source>Glass</source>
+        <translation>Glas</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="201"/>
+        <source>Emissive</source>
+        <translation>Leuchtend</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="202"/>
+        <source>From the file</source>
+        <translation>Aus der Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="205"/>
+        <source>Reflectance of the object&apos;s surface</source>
+        <translation>Reflexionsgrad der Objektoberfläche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="208"/>
+        <source>Base (px):</source>
+        <translation>Fußpunkt (px):</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="209"/>
+        <source>Height:</source>
+        <translation>Höhe:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="210"/>
+        <source>Turn:</source>
+        <translation>Drehung:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="211"/>
+        <source>Material:</source>
+        <translation>Material:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="212"/>
+        <source>Colour:</source>
+        <translation>Farbe:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="231"/>
+        <source>No object selected</source>
+        <translation>Kein Objekt ausgewählt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="236"/>
+        <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
+        <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="281"/>
+        <source>Object colour</source>
+        <translation>Objektfarbe</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::SceneTreeDock</name>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="30"/>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="31"/>
+        <source>cube</source>
+        <translation>Würfel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="45"/>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="47"/>
+        <source>Item</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="47"/>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="74"/>
+        <source>Room</source>
+        <translation>Raum</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="77"/>
+        <source>%1 × %2 m, %3 m high</source>
+        <translation>%1 × %2 m, %3 m hoch</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="82"/>
+        <source>back wall given</source>
+        <translation>Rückwand vorgegeben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="82"/>
+        <source>estimated</source>
+        <translation>geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="85"/>
+        <source>Lights</source>
+        <translation>Lichter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="88"/>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="89"/>
+        <source>outline on the photo</source>
+        <translation>Umriss im Foto</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="90"/>
+        <source>rectangle in 3D</source>
+        <translation>Rechteck im Raum</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="104"/>
+        <source>Shafts</source>
+        <translation>Sonnenstrahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="104"/>
+        <source>Shaft %1</source>
+        <translation>Sonnenstrahl %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="105"/>
+        <source>sunlit patch and its window</source>
+        <translation>Sonnenfleck und sein Fenster</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="106"/>
+        <source>Surfaces</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="106"/>
+        <source>Surface %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="108"/>
+        <source>Occluders</source>
+        <translation>Verdecker</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="108"/>
+        <source>Occluder %1</source>
+        <translation>Verdecker %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="110"/>
+        <source>%1 strokes in front, %2 behind</source>
+        <translation>%1 Striche davor, %2 dahinter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="115"/>
+        <source>Objects</source>
+        <translation>Objekte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="119"/>
+        <source>Object %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="120"/>
+        <source>%1, %2 m</source>
+        <translation>%1, %2 m</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::Viewport</name>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="223"/>
+        <source>Drag an object or a corner of the back wall.</source>
+        <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="225"/>
+        <source>Click around a light; click the first point (or press Enter) to close.</source>
+        <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="227"/>
+        <source>Now drag a box around the window the sunlight comes through.</source>
+        <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="228"/>
+        <source>Drag a box around the patch of sunlight.</source>
+        <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="231"/>
+        <source>Click the floor straight below the first point of the outline.</source>
+        <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="232"/>
+        <source>Click around the top of a table or step; click the first point to close.</source>
+        <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="234"/>
+        <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
+        <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <source>Back wall (yours)</source>
+        <translation>Rückwand (Ihre)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <source>Back wall (estimated)</source>
+        <translation>Rückwand (geschätzt)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="361"/>
+        <source>%1 px</source>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="384"/>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="398"/>
+        <source>Shaft %1</source>
+        <translation>Sonnenstrahl %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="413"/>
+        <source>Surface %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="560"/>
+        <source>Preparing the scene…</source>
+        <translation>Szene wird vorbereitet …</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="563"/>
+        <source>The scene could not be prepared: %1</source>
+        <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="567"/>
+        <source>Open a scene or a photo (File menu).</source>
+        <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="570"/>
+        <source>Before: the photo without objects</source>
+        <translation>Vorher: das Foto ohne Objekte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="588"/>
+        <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
+        <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="592"/>
+        <source>Focal length %1 px (%2–%3 px)</source>
+        <translation>Brennweite %1 px (%2–%3 px)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="632"/>
+        <source>An outline needs at least three points.</source>
+        <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="761"/>
+        <location filename="../app/studio/viewport.cpp" line="863"/>
+        <source>Cannot place the object here: %1</source>
+        <translation>Das Objekt kann hier nicht stehen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <location filename="../app/studio/main.cpp" line="47"/>
+        <source>Insert synthetic objects into a photograph.</source>
+        <translation>Synthetische Objekte in ein Foto einfügen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="52"/>
+        <source>A scene file (.json) or a photo; none: the example.</source>
+        <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="56"/>
+        <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
+        <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="60"/>
+        <source>Samples per pixel to wait for (default 4).</source>
+        <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="64"/>
+        <source>Restore unsaved work left by a crash without asking.</source>
+        <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="79"/>
+        <source>Give at most one file.</source>
+        <translation>Geben Sie höchstens eine Datei an.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="86"/>
+        <source>expected a number &gt;= 0</source>
+        <translation>eine Zahl &gt;= 0 erwartet</translation>
+    </message>
+</context>
 </TS>
