@@ -165,6 +165,23 @@ void StudioToolsTest::outlineKeysAndDeletingAMark() {
   QVERIFY(view_->pendingPoints().empty());
   waitPrepared(doc_);
 
+  // A click inside a light's outline selects it (and its scene tree item); Delete removes it.
+  window_->toolAction(int(Viewport::Tool::Select))->trigger();
+  const QPoint inside = view_->widgetFromImage(Vec2(400, 26)).toPoint();
+  QVERIFY(view_->markAt(inside) == (MarkRef{MarkKind::Light, 2}));
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, inside);
+  QVERIFY(doc_->selectedMark() == (MarkRef{MarkKind::Light, 2}));
+  QCOMPARE(doc_->selectedObject(), -1);
+  QCOMPARE(window_->sceneDock()->tree()->currentItem()->text(0), QStringLiteral("Light 3"));
+  window_->deleteSelected();
+  QCOMPARE(int(doc_->scene().lights.size()), 2);
+  QVERIFY(!doc_->selectedMark());
+  doc_->undoStack()->undo();
+  QCOMPARE(int(doc_->scene().lights.size()), 3);
+  // A click on nothing deselects.
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(250, 200)).toPoint());
+  QVERIFY(!doc_->selectedMark());
+
   // Delete light 1 from the scene tree: undoable.
   QTreeWidget* tree = window_->sceneDock()->tree();
   QTreeWidgetItem* light1 = nullptr;
@@ -172,6 +189,7 @@ void StudioToolsTest::outlineKeysAndDeletingAMark() {
     if ((*it)->text(0) == QStringLiteral("Light 1")) light1 = *it;
   QVERIFY(light1);
   tree->setCurrentItem(light1);
+  QVERIFY(doc_->selectedMark() == (MarkRef{MarkKind::Light, 0}));
   const std::vector<Vec2> second = doc_->scene().lights[1].pointsPx;
   window_->deleteSelected();
   QCOMPARE(int(doc_->scene().lights.size()), 2);

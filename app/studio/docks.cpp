@@ -53,6 +53,9 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
     if (updating_ || !item) return;
     const QVariant v = item->data(0, kRoleObject);
     if (v.isValid()) document_->setSelectedObject(v.toInt());
+    if (item->data(0, kRoleMarkKind).isValid())
+      document_->setSelectedMark(MarkRef{MarkKind(item->data(0, kRoleMarkKind).toInt()),
+                                         item->data(0, kRoleMarkIndex).toInt()});
   });
   rebuild();
 }
@@ -131,13 +134,6 @@ void SceneTreeDock::rebuild() {
   syncSelection();
 }
 
-std::optional<std::pair<MarkKind, int>> SceneTreeDock::currentMark() const {
-  const QTreeWidgetItem* item = tree_->currentItem();
-  if (!item || !item->data(0, kRoleMarkKind).isValid()) return std::nullopt;
-  return std::make_pair(MarkKind(item->data(0, kRoleMarkKind).toInt()),
-                        item->data(0, kRoleMarkIndex).toInt());
-}
-
 // ---------------------------------------------------------------- LayersDock
 
 LayersDock::LayersDock(Viewport* viewport, QWidget* parent)
@@ -158,10 +154,15 @@ LayersDock::LayersDock(Viewport* viewport, QWidget* parent)
 void SceneTreeDock::syncSelection() {
   updating_ = true;
   const int selected = document_->selectedObject();
+  const std::optional<MarkRef> mark = document_->selectedMark();
   QTreeWidgetItem* found = nullptr;
-  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
     if ((*it)->data(0, kRoleObject).isValid() && (*it)->data(0, kRoleObject).toInt() == selected)
       found = *it;
+    if (mark && (*it)->data(0, kRoleMarkKind).isValid() &&
+        MarkRef{MarkKind((*it)->data(0, kRoleMarkKind).toInt()), (*it)->data(0, kRoleMarkIndex).toInt()} == *mark)
+      found = *it;
+  }
   tree_->setCurrentItem(found);
   if (!found) tree_->clearSelection();
   updating_ = false;

@@ -1,7 +1,7 @@
 // The two docks beside the viewport. Both rebuild their contents from the Document's state when
 // it announces a change, and edit it only through its API (undoable commands).
-//   SceneTreeDock: the room, the lights and the objects; selecting an object selects it in the
-//     document (and so in the viewport).
+//   SceneTreeDock: the room, the marks (lights, shafts, surfaces, occluders) and the objects;
+//     choosing an object or a mark selects it in the document (and so in the viewport).
 //   LayersDock: which image the viewport shows (composite, photo, albedo, direct light, with and
 //     without objects, mask, difference).
 //   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object.
@@ -25,7 +25,6 @@ namespace inlay::studio {
 class Document;
 class Viewport;
 struct ChangeEvent;
-enum class MarkKind;
 
 class SceneTreeDock : public QDockWidget {
   Q_OBJECT
@@ -33,8 +32,6 @@ class SceneTreeDock : public QDockWidget {
  public:
   explicit SceneTreeDock(Document* document, QWidget* parent = nullptr);
   QTreeWidget* tree() const { return tree_; }
-  // The light, shaft, surface or occluder whose item is current, if one is.
-  std::optional<std::pair<MarkKind, int>> currentMark() const;
 
  private:
   void rebuild();

@@ -201,6 +201,7 @@ void Document::resetTo(SceneDoc doc, const QString& filePath) {
   loadWarnings_.clear();
   estimatedBackWallPx_.reset();
   lastEstimate_.reset();
+  selectedMark_.reset();
   state_ = State::Empty;
   selected_ = doc_.objects.empty() ? -1 : 0;
   Q_EMIT changed({ChangeEvent::SceneReplaced | ChangeEvent::FilePath | ChangeEvent::Selection});
@@ -314,8 +315,21 @@ void Document::onPrepared(const PrepareResult& result) {
 
 void Document::setSelectedObject(int index) {
   if (index < -1 || index >= objectCount()) index = -1;
-  if (index == selected_) return;
+  if (index == selected_ && (index < 0 || !selectedMark_)) return;
   selected_ = index;
+  if (index >= 0) selectedMark_.reset();
+  Q_EMIT changed({ChangeEvent::Selection});
+}
+
+void Document::setSelectedMark(std::optional<MarkRef> mark) {
+  if (mark) {
+    const size_t counts[4] = {doc_.lights.size(), doc_.shafts.size(), doc_.surfaces.size(),
+                              doc_.occluders.size()};
+    if (mark->index < 0 || size_t(mark->index) >= counts[int(mark->kind)]) mark.reset();
+  }
+  if (mark == selectedMark_ && (!mark || selected_ < 0)) return;
+  selectedMark_ = mark;
+  if (mark) selected_ = -1;
   Q_EMIT changed({ChangeEvent::Selection});
 }
 
@@ -530,7 +544,9 @@ bool Document::editMarks(const SceneMarks& after, int mergeId, const QString& te
 
 void Document::applyMarks(const SceneMarks& m) {
   putMarks(doc_, m);
-  Q_EMIT changed({ChangeEvent::Marks});
+  const bool wasSelected = selectedMark_.has_value();
+  selectedMark_.reset();  // indices may have shifted
+  Q_EMIT changed({ChangeEvent::Marks | (wasSelected ? ChangeEvent::Selection : 0u)});
   prepare();
 }
 
@@ -637,6 +653,10 @@ bool Document::addOccluderStroke(int index, bool foreground, const std::vector<V
   OccluderKeys& o = m.occluders[size_t(index)];
   (foreground ? o.foregroundScribblesPx : o.backgroundScribblesPx).push_back(strokePx);
   return editMarks(m, 0, tr("Add a stroke to occluder %1").arg(index + 1), reason);
+}
+
+bool Document::removeMark(MarkRef mark, QString* reason) {
+  return removeMark(mark.kind, mark.index, reason);
 }
 
 bool Document::removeMark(MarkKind kind, int index, QString* reason) {

@@ -64,6 +64,12 @@ bool operator==(const SceneMarks& a, const SceneMarks& b);
 
 // Which list of marks (for removeMark).
 enum class MarkKind { Light, Shaft, Surface, Occluder };
+// One mark: its list and its index there.
+struct MarkRef {
+  MarkKind kind = MarkKind::Light;
+  int index = -1;
+  bool operator==(const MarkRef&) const = default;
+};
 
 class Document : public QObject {
   Q_OBJECT
@@ -106,7 +112,11 @@ class Document : public QObject {
   QString filePath() const { return filePath_; }
   QUndoStack* undoStack() { return &undo_; }
   int selectedObject() const { return selected_; }
-  void setSelectedObject(int index);  // -1: none; not undoable
+  void setSelectedObject(int index);  // -1: none; not undoable; deselects the mark
+  // The selected mark (a light, shaft, surface or occluder), if any; selecting one deselects
+  // the object. Not undoable; cleared when the marks change.
+  std::optional<MarkRef> selectedMark() const { return selectedMark_; }
+  void setSelectedMark(std::optional<MarkRef> mark);
   int objectCount() const { return int(doc_.objects.size()); }
 
   // --- Edits (undoable). Each returns false, changes nothing and sets `reason` (one
@@ -152,6 +162,7 @@ class Document : public QObject {
   bool addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
                          QString* reason = nullptr);
   bool removeMark(MarkKind kind, int index, QString* reason = nullptr);
+  bool removeMark(MarkRef mark, QString* reason = nullptr);
   SceneMarks marks() const;
   // The newest camera estimate (kept while the scene is re-prepared), or null.
   const CameraEstimate* lastEstimate() const { return lastEstimate_ ? &*lastEstimate_ : nullptr; }
@@ -197,6 +208,7 @@ class Document : public QObject {
   QStringList loadWarnings_;
   QUndoStack undo_;
   int selected_ = -1;
+  std::optional<MarkRef> selectedMark_;
   std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest automatic estimate
   std::optional<CameraEstimate> lastEstimate_;
 

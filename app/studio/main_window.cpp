@@ -208,7 +208,8 @@ void MainWindow::createActions() {
   insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
   connect(insertCubeAct_, &QAction::triggered, this,
           [this] { insertBuiltin(QStringLiteral("builtin:cube")); });
-  deleteAct_ = new QAction(tr("&Delete Object"), this);
+  deleteAct_ = new QAction(tr("&Delete"), this);
+  deleteAct_->setStatusTip(tr("Delete the selected object or mark"));
   deleteAct_->setShortcut(QKeySequence::Delete);
   connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelected);
 
@@ -647,9 +648,9 @@ bool MainWindow::insertBuiltin(const QString& mesh) {
 
 void MainWindow::deleteSelected() {
   QString reason;
-  // A mark chosen in the scene tree, else the selected object.
-  const auto mark = sceneDock_->currentMark();
-  const bool ok = mark ? document_->removeMark(mark->first, mark->second, &reason)
+  // The selected mark, else the selected object.
+  const std::optional<MarkRef> mark = document_->selectedMark();
+  const bool ok = mark ? document_->removeMark(*mark, &reason)
                        : document_->removeObject(document_->selectedObject(), &reason);
   if (!ok) statusBar()->showMessage(reason, 5000);
 }

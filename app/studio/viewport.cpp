@@ -80,6 +80,23 @@ void labelAt(QPainter& p, const QPointF& at, const QString& text, const QColor& 
   p.drawText(placed, Qt::AlignCenter, text);
 }
 
+// Distance from p to the segment ab.
+double distanceToSegment(const QPointF& p, const QPointF& a, const QPointF& b) {
+  const QPointF d = b - a;
+  const double len2 = d.x() * d.x() + d.y() * d.y();
+  const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  const QPointF q = a + d * t - p;
+  return std::hypot(q.x(), q.y());
+}
+
+// Whether p is inside `poly` (closed) or within `radius` of its edges (open: of its polyline).
+bool nearPolygon(const QPolygonF& poly, const QPointF& p, double radius, bool closed) {
+  if (closed && poly.size() >= 3 && poly.containsPoint(p, Qt::OddEvenFill)) return true;
+  for (int i = 0; i + 1 < poly.size() + (closed ? 1 : 0); ++i)
+    if (distanceToSegment(p, poly[i], poly[(i + 1) % poly.size()]) <= radius) return true;
+  return poly.size() == 1 && distanceToSegment(p, poly[0], poly[0]) <= radius;
+}
+
 }  // namespace
 
 Viewport::Viewport(Document* document, RenderController* renderer, QWidget* parent)
@@ -194,6 +211,39 @@ int Viewport::cornerAt(const QPointF& widgetPos) const {
     }
   }
   return best;
+}
+
+std::optional<MarkRef> Viewport::markAt(const QPointF& widgetPos) const {
+  const SceneDoc& doc = document_->scene();
+  auto polygonOf = [this](const std::vector<Vec2>& points) {
+    QPolygonF poly;
+    for (const Vec2& q : points) poly << widgetFromImage(q);
+    return poly;
+  };
+  auto rectOf = [this](const std::array<double, 4>& b) {
+    return QRectF(widgetFromImage(Vec2(b[0], b[1])), widgetFromImage(Vec2(b[2], b[3]))).normalized();
+  };
+  for (size_t i = 0; i < doc.lights.size(); ++i)
+    if (doc.lights[i].kind == LightKeys::Kind::PolygonPx &&
+        nearPolygon(polygonOf(doc.lights[i].pointsPx), widgetPos, kPickRadiusPx, true))
+      return MarkRef{MarkKind::Light, int(i)};
+  for (size_t i = 0; i < doc.shafts.size(); ++i) {
+    const ShaftKeys& s = doc.shafts[i];
+    if ((s.shaftBoxPx && rectOf(*s.shaftBoxPx).contains(widgetPos)) ||
+        (s.sourceBoxPx && rectOf(*s.sourceBoxPx).contains(widgetPos)))
+      return MarkRef{MarkKind::Shaft, int(i)};
+  }
+  for (size_t i = 0; i < doc.surfaces.size(); ++i)
+    if (nearPolygon(polygonOf(doc.surfaces[i].outlinePx), widgetPos, kPickRadiusPx, true))
+      return MarkRef{MarkKind::Surface, int(i)};
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const OccluderKeys& o = doc.occluders[i];
+    for (const auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
+      for (const auto& stroke : *strokes)
+        if (nearPolygon(polygonOf(stroke), widgetPos, kPickRadiusPx, false))
+          return MarkRef{MarkKind::Occluder, int(i)};
+  }
+  return std::nullopt;
 }
 
 void Viewport::setLayer(Layer layer) {
@@ -366,6 +416,11 @@ void Viewport::paintVanishingLines(QPainter& p) {
 void Viewport::paintMarks(QPainter& p) {
   const SceneDoc& doc = document_->scene();
   const PreparedScene* prepared = document_->prepared();
+  const std::optional<MarkRef> selected = document_->selectedMark();
+  // The selected mark is drawn wider.
+  auto width = [&](MarkKind kind, size_t i) {
+    return selected && *selected == MarkRef{kind, int(i)} ? 3.5 : 1.5;
+  };
   // Lights.
   const QColor lightColour(255, 220, 80);
   for (size_t i = 0; i < doc.lights.size(); ++i) {
@@ -379,7 +434,7 @@ void Viewport::paintMarks(QPainter& p) {
       if (poly.size() != 4) poly.clear();  // partly behind the camera: not drawn
     }
     if (poly.size() < 2) continue;
-    haloPolygon(p, poly, lightColour, 1.5,
+    haloPolygon(p, poly, lightColour, width(MarkKind::Light, i),
                 light.kind == LightKeys::Kind::PolygonPx ? Qt::SolidLine : Qt::DashLine);
     labelAt(p, poly.boundingRect().topRight(), tr("Light %1").arg(i + 1), lightColour);
   }
@@ -392,8 +447,8 @@ void Viewport::paintMarks(QPainter& p) {
     const ShaftKeys& s = doc.shafts[i];
     if (!s.shaftBoxPx || !s.sourceBoxPx) continue;
     const QRectF patch = boxRect(*s.shaftBoxPx), source = boxRect(*s.sourceBoxPx);
-    haloPolygon(p, QPolygonF(patch), shaftColour, 1.5);
-    haloPolygon(p, QPolygonF(source), shaftColour, 1.5, Qt::DashLine);
+    haloPolygon(p, QPolygonF(patch), shaftColour, width(MarkKind::Shaft, i));
+    haloPolygon(p, QPolygonF(source), shaftColour, width(MarkKind::Shaft, i), Qt::DashLine);
     haloLine(p, source.center(), patch.center(), shaftColour, 1.0, Qt::DotLine);
     labelAt(p, patch.topRight(), tr("Shaft %1").arg(i + 1), shaftColour);
   }
@@ -404,7 +459,7 @@ void Viewport::paintMarks(QPainter& p) {
     if (s.outlinePx.empty()) continue;
     QPolygonF poly;
     for (const Vec2& q : s.outlinePx) poly << widgetFromImage(q);
-    haloPolygon(p, poly, surfaceColour, 1.5);
+    haloPolygon(p, poly, surfaceColour, width(MarkKind::Surface, i));
     const QPointF click = widgetFromImage(s.heightClickPx);
     haloLine(p, poly[0], click, surfaceColour, 1.0, Qt::DashLine);
     p.setPen(QPen(QColor(0, 0, 0, 180), 3.0));
@@ -413,19 +468,18 @@ void Viewport::paintMarks(QPainter& p) {
     labelAt(p, poly.boundingRect().topRight(), tr("Surface %1").arg(i + 1), surfaceColour);
   }
   // Occluders: foreground strokes green, background strokes red.
-  for (const OccluderKeys& o : doc.occluders) {
-    for (const auto& stroke : o.foregroundScribblesPx) {
-      QPolygonF line;
-      for (const Vec2& q : stroke) line << widgetFromImage(q);
-      p.setPen(QPen(QColor(60, 230, 90, 220), 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-      p.drawPolyline(line);
-    }
-    for (const auto& stroke : o.backgroundScribblesPx) {
-      QPolygonF line;
-      for (const Vec2& q : stroke) line << widgetFromImage(q);
-      p.setPen(QPen(QColor(240, 70, 70, 220), 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-      p.drawPolyline(line);
-    }
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const double w = 1.5 + width(MarkKind::Occluder, i);
+    const OccluderKeys& o = doc.occluders[i];
+    for (const auto& [strokes, colour] :
+         {std::pair{&o.foregroundScribblesPx, QColor(60, 230, 90, 220)},
+          std::pair{&o.backgroundScribblesPx, QColor(240, 70, 70, 220)}})
+      for (const auto& stroke : *strokes) {
+        QPolygonF line;
+        for (const Vec2& q : stroke) line << widgetFromImage(q);
+        p.setPen(QPen(colour, w, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolyline(line);
+      }
   }
 }
 
@@ -703,7 +757,9 @@ void Viewport::pressSelect(QMouseEvent* event) {
     dragId_ = Document::newDragId();
     dragGrabPx_ = (*document_->shownBackWallPx())[size_t(corner)] - imageFromWidget(event->position());
     setCursor(Qt::BlankCursor);  // the loupe's crosshair shows the point
+    return;
   }
+  document_->setSelectedMark(markAt(event->position()));
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -8,11 +8,12 @@
 // the two longest of each family extended toward it and their residuals, the estimate's
 // confidences and warnings, light outlines, shaft boxes, extrusion outlines with their height
 // clicks, occluder scribbles, and each object's base marker with its height and facing gizmo.
-// Hit-testing reads the same state. No overlay object is kept between paints, so nothing can
+// Hit-testing (objects, corners, marks) reads the same state. No overlay object is kept between paints, so nothing can
 // fall out of sync with the document. The only state kept here is the input of the tool in use
 // (the points of an outline not yet closed, a stroke being drawn), drawn the same way.
 //
-// Mouse, Select tool: left press on an object's marker (within kPickRadiusPx) selects it and a
+// Mouse, Select tool: a left click on a mark selects it (Edit > Delete removes it); a left press
+// on an object's marker (within kPickRadiusPx) selects it and a
 // drag moves its base (Document::moveObject, one undo step per drag; a pixel not on a supporting
 // surface keeps the last valid position and reports the reason through statusMessage()); on a
 // back-wall corner a drag moves that corner (Document::setBackWallCorner, one undo step) with a
@@ -28,6 +29,7 @@
 
 #include "inlay/modeling/core.h"
 #include "inlay/modeling/scene_file.h"
+#include "document.h"
 #include "render_controller.h"
 
 #include <QElapsedTimer>
@@ -69,6 +71,9 @@ class Viewport : public QWidget {
   int objectAt(const QPointF& widgetPos) const;
   // The back-wall corner (0 TL, 1 TR, 2 BR, 3 BL) within kPickRadiusPx of `widgetPos`, or -1.
   int cornerAt(const QPointF& widgetPos) const;
+  // The light, shaft, surface or occluder drawn under `widgetPos` (inside its outline or box,
+  // or within kPickRadiusPx of its lines), or nullopt.
+  std::optional<MarkRef> markAt(const QPointF& widgetPos) const;
   // True while the loupe is drawn (a corner drag).
   bool loupeShown() const { return dragCorner_ >= 0; }
   // The outline points of the Light / Surface tool not yet committed (image pixels).
