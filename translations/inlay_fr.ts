@@ -12,170 +12,170 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="289"/>
-        <location filename="../app/studio/document.cpp" line="307"/>
+        <location filename="../app/studio/document.cpp" line="290"/>
+        <location filename="../app/studio/document.cpp" line="308"/>
         <source>Preparation was cancelled.</source>
         <translation>La préparation a été annulée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="330"/>
-        <location filename="../app/studio/document.cpp" line="555"/>
+        <location filename="../app/studio/document.cpp" line="344"/>
+        <location filename="../app/studio/document.cpp" line="571"/>
         <source>The position is not a number.</source>
         <translation>La position n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="332"/>
-        <location filename="../app/studio/document.cpp" line="403"/>
+        <location filename="../app/studio/document.cpp" line="346"/>
+        <location filename="../app/studio/document.cpp" line="417"/>
         <source>The height must be greater than zero.</source>
         <translation>La hauteur doit être supérieure à zéro.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="354"/>
+        <location filename="../app/studio/document.cpp" line="368"/>
         <source>Move object %1</source>
         <translation>Déplacer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="361"/>
+        <location filename="../app/studio/document.cpp" line="375"/>
         <source>Change height of object %1</source>
         <translation>Changer la hauteur de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="368"/>
+        <location filename="../app/studio/document.cpp" line="382"/>
         <source>Turn object %1</source>
         <translation>Tourner l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="375"/>
+        <location filename="../app/studio/document.cpp" line="389"/>
         <source>Change material of object %1</source>
         <translation>Changer le matériau de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="390"/>
+        <location filename="../app/studio/document.cpp" line="404"/>
         <source>There is no object %1.</source>
         <translation>Il n&apos;y a pas d&apos;objet %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="391"/>
+        <location filename="../app/studio/document.cpp" line="405"/>
         <source>The scene is still being prepared.</source>
         <translation>La scène est encore en préparation.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="392"/>
+        <location filename="../app/studio/document.cpp" line="406"/>
         <source>The scene could not be prepared.</source>
         <translation>La scène n&apos;a pas pu être préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="413"/>
+        <location filename="../app/studio/document.cpp" line="427"/>
         <source>Insert object %1</source>
         <translation>Insérer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="425"/>
+        <location filename="../app/studio/document.cpp" line="439"/>
         <source>Delete object %1</source>
         <translation>Supprimer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="522"/>
+        <location filename="../app/studio/document.cpp" line="536"/>
         <source>Open a photo first.</source>
         <translation>Ouvrez d&apos;abord une photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="540"/>
+        <location filename="../app/studio/document.cpp" line="556"/>
         <source>There is no estimated box yet.</source>
         <translation>Il n&apos;y a pas encore de pièce estimée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="545"/>
+        <location filename="../app/studio/document.cpp" line="561"/>
         <source>Accept the estimated box</source>
         <translation>Accepter la pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="551"/>
+        <location filename="../app/studio/document.cpp" line="567"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Ce coin du mur du fond n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="561"/>
+        <location filename="../app/studio/document.cpp" line="577"/>
         <source>Move a corner of the back wall</source>
         <translation>Déplacer un coin du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="567"/>
+        <location filename="../app/studio/document.cpp" line="583"/>
         <source>Estimate the box again</source>
         <translation>Estimer à nouveau la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="572"/>
+        <location filename="../app/studio/document.cpp" line="588"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une lampe doit compter au moins trois points entourant une surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="580"/>
+        <location filename="../app/studio/document.cpp" line="596"/>
         <source>Outline light %1</source>
         <translation>Détourer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="586"/>
+        <location filename="../app/studio/document.cpp" line="602"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Chaque cadre d&apos;un rayon de soleil doit mesurer au moins deux pixels de large et de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="594"/>
+        <location filename="../app/studio/document.cpp" line="610"/>
         <source>Add shaft %1</source>
         <translation>Ajouter le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="601"/>
+        <location filename="../app/studio/document.cpp" line="617"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une surface doit compter au moins trois points entourant une aire.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="610"/>
+        <location filename="../app/studio/document.cpp" line="626"/>
         <source>Add surface %1</source>
         <translation>Ajouter la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="621"/>
+        <location filename="../app/studio/document.cpp" line="637"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Un masque d&apos;avant-plan demande un trait sur ce qui est devant et un sur ce qui est derrière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="626"/>
+        <location filename="../app/studio/document.cpp" line="642"/>
         <source>Add occluder %1</source>
         <translation>Ajouter le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="633"/>
+        <location filename="../app/studio/document.cpp" line="649"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Ce masque d&apos;avant-plan n&apos;existe pas, ou le trait est vide.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="639"/>
+        <location filename="../app/studio/document.cpp" line="655"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Ajouter un trait au masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="646"/>
+        <location filename="../app/studio/document.cpp" line="666"/>
         <source>There is no such mark.</source>
         <translation>Ce repère n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="653"/>
+        <location filename="../app/studio/document.cpp" line="673"/>
         <source>Delete light %1</source>
         <translation>Supprimer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="654"/>
+        <location filename="../app/studio/document.cpp" line="674"/>
         <source>Delete shaft %1</source>
         <translation>Supprimer le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="655"/>
+        <location filename="../app/studio/document.cpp" line="675"/>
         <source>Delete surface %1</source>
         <translation>Supprimer la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="656"/>
+        <location filename="../app/studio/document.cpp" line="676"/>
         <source>Delete occluder %1</source>
         <translation>Supprimer le masque d&apos;avant-plan %1</translation>
     </message>
@@ -183,47 +183,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="144"/>
+        <location filename="../app/studio/docks.cpp" line="140"/>
         <source>Layers</source>
         <translation>Calques</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="146"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Composite</source>
         <translation>Composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="146"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Photo</source>
         <translation>Photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="147"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>Albedo</source>
         <translation>Albédo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="147"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>Direct light</source>
         <translation>Lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="148"/>
+        <location filename="../app/studio/docks.cpp" line="144"/>
         <source>With objects</source>
         <translation>Avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="148"/>
+        <location filename="../app/studio/docks.cpp" line="144"/>
         <source>Without objects</source>
         <translation>Sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="149"/>
+        <location filename="../app/studio/docks.cpp" line="145"/>
         <source>Mask</source>
         <translation>Masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="149"/>
+        <location filename="../app/studio/docks.cpp" line="145"/>
         <source>Difference</source>
         <translation>Différence</translation>
     </message>
@@ -382,158 +382,163 @@
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="211"/>
-        <source>&amp;Delete Object</source>
-        <translation>&amp;Supprimer l&apos;objet</translation>
+        <source>&amp;Delete</source>
+        <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="215"/>
+        <location filename="../app/studio/main_window.cpp" line="212"/>
+        <source>Delete the selected object or mark</source>
+        <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="216"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="218"/>
+        <location filename="../app/studio/main_window.cpp" line="219"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="221"/>
+        <location filename="../app/studio/main_window.cpp" line="222"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="224"/>
+        <location filename="../app/studio/main_window.cpp" line="225"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="227"/>
+        <location filename="../app/studio/main_window.cpp" line="228"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="230"/>
+        <location filename="../app/studio/main_window.cpp" line="231"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="231"/>
+        <location filename="../app/studio/main_window.cpp" line="232"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="236"/>
+        <location filename="../app/studio/main_window.cpp" line="237"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="237"/>
+        <location filename="../app/studio/main_window.cpp" line="238"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="242"/>
+        <location filename="../app/studio/main_window.cpp" line="243"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="249"/>
+        <location filename="../app/studio/main_window.cpp" line="250"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="250"/>
+        <location filename="../app/studio/main_window.cpp" line="251"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="251"/>
+        <location filename="../app/studio/main_window.cpp" line="252"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="252"/>
+        <location filename="../app/studio/main_window.cpp" line="253"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="253"/>
+        <location filename="../app/studio/main_window.cpp" line="254"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="263"/>
+        <location filename="../app/studio/main_window.cpp" line="264"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="268"/>
+        <location filename="../app/studio/main_window.cpp" line="269"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="272"/>
+        <location filename="../app/studio/main_window.cpp" line="273"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="283"/>
+        <location filename="../app/studio/main_window.cpp" line="284"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="294"/>
+        <location filename="../app/studio/main_window.cpp" line="295"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="297"/>
+        <location filename="../app/studio/main_window.cpp" line="298"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="309"/>
+        <location filename="../app/studio/main_window.cpp" line="310"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="313"/>
+        <location filename="../app/studio/main_window.cpp" line="314"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="324"/>
+        <location filename="../app/studio/main_window.cpp" line="325"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="327"/>
+        <location filename="../app/studio/main_window.cpp" line="328"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="347"/>
-        <location filename="../app/studio/main_window.cpp" line="356"/>
+        <location filename="../app/studio/main_window.cpp" line="348"/>
+        <location filename="../app/studio/main_window.cpp" line="357"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="347"/>
+        <location filename="../app/studio/main_window.cpp" line="348"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="348"/>
-        <location filename="../app/studio/main_window.cpp" line="734"/>
+        <location filename="../app/studio/main_window.cpp" line="349"/>
+        <location filename="../app/studio/main_window.cpp" line="735"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="372"/>
+        <location filename="../app/studio/main_window.cpp" line="373"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="381"/>
+        <location filename="../app/studio/main_window.cpp" line="382"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -541,275 +546,275 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="405"/>
+        <location filename="../app/studio/main_window.cpp" line="406"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="406"/>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <location filename="../app/studio/main_window.cpp" line="419"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <location filename="../app/studio/main_window.cpp" line="408"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <location filename="../app/studio/main_window.cpp" line="409"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="412"/>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="413"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="417"/>
+        <location filename="../app/studio/main_window.cpp" line="418"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="429"/>
+        <location filename="../app/studio/main_window.cpp" line="430"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <location filename="../app/studio/main_window.cpp" line="433"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="433"/>
+        <location filename="../app/studio/main_window.cpp" line="434"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
-        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="517"/>
+        <location filename="../app/studio/main_window.cpp" line="518"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
-        <location filename="../app/studio/main_window.cpp" line="562"/>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="592"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
-        <location filename="../app/studio/main_window.cpp" line="562"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="545"/>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <location filename="../app/studio/main_window.cpp" line="581"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="545"/>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <location filename="../app/studio/main_window.cpp" line="581"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="582"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <location filename="../app/studio/main_window.cpp" line="547"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="548"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="567"/>
+        <location filename="../app/studio/main_window.cpp" line="568"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="570"/>
+        <location filename="../app/studio/main_window.cpp" line="571"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="579"/>
+        <location filename="../app/studio/main_window.cpp" line="580"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="592"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="598"/>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="599"/>
+        <location filename="../app/studio/main_window.cpp" line="600"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="602"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="625"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="633"/>
+        <location filename="../app/studio/main_window.cpp" line="634"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="685"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
         <source>The language changes when Inlay is started again.</source>
         <translation>La langue change au prochain démarrage d’Inlay.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="696"/>
+        <location filename="../app/studio/main_window.cpp" line="697"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="699"/>
+        <location filename="../app/studio/main_window.cpp" line="700"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="700"/>
+        <location filename="../app/studio/main_window.cpp" line="701"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="704"/>
+        <location filename="../app/studio/main_window.cpp" line="705"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <location filename="../app/studio/main_window.cpp" line="706"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="723"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="727"/>
+        <location filename="../app/studio/main_window.cpp" line="728"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="734"/>
+        <location filename="../app/studio/main_window.cpp" line="735"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -825,92 +830,92 @@
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="173"/>
+        <location filename="../app/studio/docks.cpp" line="174"/>
         <source>Properties</source>
         <translation>Propriétés</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="185"/>
+        <location filename="../app/studio/docks.cpp" line="186"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="193"/>
+        <location filename="../app/studio/docks.cpp" line="194"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="197"/>
+        <location filename="../app/studio/docks.cpp" line="198"/>
         <source>Diffuse</source>
         <translation>Diffus</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="199"/>
         <source>Glossy</source>
         <translation>Brillant</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="200"/>
         <source>Mirror</source>
         <translation>Miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="200"/>
+        <location filename="../app/studio/docks.cpp" line="201"/>
         <source>Glass</source>
         <translation>Verre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="201"/>
+        <location filename="../app/studio/docks.cpp" line="202"/>
         <source>Emissive</source>
         <translation>Émissif</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="202"/>
+        <location filename="../app/studio/docks.cpp" line="203"/>
         <source>From the file</source>
         <translation>Celui du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="205"/>
+        <location filename="../app/studio/docks.cpp" line="206"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Réflectance de la surface de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="208"/>
+        <location filename="../app/studio/docks.cpp" line="209"/>
         <source>Base (px):</source>
         <translation>Base (px) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="209"/>
+        <location filename="../app/studio/docks.cpp" line="210"/>
         <source>Height:</source>
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="210"/>
+        <location filename="../app/studio/docks.cpp" line="211"/>
         <source>Turn:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="211"/>
+        <location filename="../app/studio/docks.cpp" line="212"/>
         <source>Material:</source>
         <translation>Matériau :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="212"/>
+        <location filename="../app/studio/docks.cpp" line="213"/>
         <source>Colour:</source>
         <translation>Couleur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="231"/>
+        <location filename="../app/studio/docks.cpp" line="232"/>
         <source>No object selected</source>
         <translation>Aucun objet sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="236"/>
+        <location filename="../app/studio/docks.cpp" line="237"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objet %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="281"/>
+        <location filename="../app/studio/docks.cpp" line="282"/>
         <source>Object colour</source>
         <translation>Couleur de l&apos;objet</translation>
     </message>
@@ -943,97 +948,97 @@
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="74"/>
+        <location filename="../app/studio/docks.cpp" line="77"/>
         <source>Room</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="77"/>
+        <location filename="../app/studio/docks.cpp" line="80"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="82"/>
+        <location filename="../app/studio/docks.cpp" line="85"/>
         <source>back wall given</source>
         <translation>mur du fond donné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="82"/>
+        <location filename="../app/studio/docks.cpp" line="85"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="85"/>
+        <location filename="../app/studio/docks.cpp" line="88"/>
         <source>Lights</source>
         <translation>Lampes</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="88"/>
+        <location filename="../app/studio/docks.cpp" line="91"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="89"/>
+        <location filename="../app/studio/docks.cpp" line="92"/>
         <source>outline on the photo</source>
         <translation>contour sur la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="90"/>
+        <location filename="../app/studio/docks.cpp" line="93"/>
         <source>rectangle in 3D</source>
         <translation>rectangle en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="104"/>
+        <location filename="../app/studio/docks.cpp" line="107"/>
         <source>Shafts</source>
         <translation>Rayons de soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="104"/>
+        <location filename="../app/studio/docks.cpp" line="107"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="105"/>
+        <location filename="../app/studio/docks.cpp" line="108"/>
         <source>sunlit patch and its window</source>
         <translation>tache de soleil et sa fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="106"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>Surfaces</source>
         <translation>Surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="106"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="108"/>
+        <location filename="../app/studio/docks.cpp" line="111"/>
         <source>Occluders</source>
         <translation>Masques d&apos;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="108"/>
+        <location filename="../app/studio/docks.cpp" line="111"/>
         <source>Occluder %1</source>
         <translation>Masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="110"/>
+        <location filename="../app/studio/docks.cpp" line="113"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 traits devant, %2 derrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="115"/>
+        <location filename="../app/studio/docks.cpp" line="118"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="119"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Object %1</source>
         <translation>Objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="120"/>
+        <location filename="../app/studio/docks.cpp" line="123"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1041,108 +1046,108 @@
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="223"/>
+        <location filename="../app/studio/viewport.cpp" line="273"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="225"/>
+        <location filename="../app/studio/viewport.cpp" line="275"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="227"/>
+        <location filename="../app/studio/viewport.cpp" line="277"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="228"/>
+        <location filename="../app/studio/viewport.cpp" line="278"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="231"/>
+        <location filename="../app/studio/viewport.cpp" line="281"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="232"/>
+        <location filename="../app/studio/viewport.cpp" line="282"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="234"/>
+        <location filename="../app/studio/viewport.cpp" line="284"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <location filename="../app/studio/viewport.cpp" line="355"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <location filename="../app/studio/viewport.cpp" line="355"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="361"/>
+        <location filename="../app/studio/viewport.cpp" line="411"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="384"/>
+        <location filename="../app/studio/viewport.cpp" line="439"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="398"/>
+        <location filename="../app/studio/viewport.cpp" line="453"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="413"/>
+        <location filename="../app/studio/viewport.cpp" line="468"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="560"/>
+        <location filename="../app/studio/viewport.cpp" line="614"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="563"/>
+        <location filename="../app/studio/viewport.cpp" line="617"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="567"/>
+        <location filename="../app/studio/viewport.cpp" line="621"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="570"/>
+        <location filename="../app/studio/viewport.cpp" line="624"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="588"/>
+        <location filename="../app/studio/viewport.cpp" line="642"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="592"/>
+        <location filename="../app/studio/viewport.cpp" line="646"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="632"/>
+        <location filename="../app/studio/viewport.cpp" line="686"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="761"/>
-        <location filename="../app/studio/viewport.cpp" line="863"/>
+        <location filename="../app/studio/viewport.cpp" line="817"/>
+        <location filename="../app/studio/viewport.cpp" line="919"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
