@@ -159,6 +159,19 @@ void StudioToolsTest::outlineKeysAndDeletingAMark() {
   QTest::keyClick(view_, Qt::Key_Return);
   QCOMPARE(int(doc_->scene().lights.size()), 3);
   QVERIFY(view_->pendingPoints().empty());
+  // A double click on the last point closes the outline (the point stays).
+  for (const Vec2& q : {Vec2(440, 20), Vec2(480, 24), Vec2(490, 30)})
+    QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(q).toPoint());
+  const QPoint last = view_->widgetFromImage(Vec2(470, 34)).toPoint();
+  // As Qt delivers a double click: press, release, double click, release.
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, last);
+  QMouseEvent dbl(QEvent::MouseButtonDblClick, QPointF(last), view_->mapToGlobal(QPointF(last)),
+                  Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(view_, &dbl);
+  QTest::mouseRelease(view_, Qt::LeftButton, Qt::NoModifier, last);
+  QCOMPARE(int(doc_->scene().lights.size()), 4);
+  QCOMPARE(int(doc_->scene().lights[3].pointsPx.size()), 4);
+  doc_->undoStack()->undo();
   // Escape drops an outline half drawn.
   QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(10, 10)).toPoint());
   QTest::keyClick(view_, Qt::Key_Escape);

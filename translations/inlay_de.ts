@@ -437,108 +437,118 @@
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="243"/>
+        <source>&amp;Prepare the Scene Again</source>
+        <translation>Szene erneut &amp;vorbereiten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="245"/>
+        <source>Estimate the camera, room and lighting again (after a cancel)</source>
+        <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="247"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="250"/>
+        <location filename="../app/studio/main_window.cpp" line="254"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="251"/>
+        <location filename="../app/studio/main_window.cpp" line="255"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="252"/>
+        <location filename="../app/studio/main_window.cpp" line="256"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="253"/>
+        <location filename="../app/studio/main_window.cpp" line="257"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="254"/>
+        <location filename="../app/studio/main_window.cpp" line="258"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="264"/>
+        <location filename="../app/studio/main_window.cpp" line="268"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="269"/>
+        <location filename="../app/studio/main_window.cpp" line="273"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="273"/>
+        <location filename="../app/studio/main_window.cpp" line="277"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="284"/>
+        <location filename="../app/studio/main_window.cpp" line="288"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="295"/>
+        <location filename="../app/studio/main_window.cpp" line="300"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="298"/>
+        <location filename="../app/studio/main_window.cpp" line="303"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="310"/>
+        <location filename="../app/studio/main_window.cpp" line="315"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="314"/>
+        <location filename="../app/studio/main_window.cpp" line="319"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="325"/>
+        <location filename="../app/studio/main_window.cpp" line="330"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="328"/>
+        <location filename="../app/studio/main_window.cpp" line="333"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="348"/>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
+        <location filename="../app/studio/main_window.cpp" line="353"/>
+        <location filename="../app/studio/main_window.cpp" line="362"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="348"/>
+        <location filename="../app/studio/main_window.cpp" line="353"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="349"/>
-        <location filename="../app/studio/main_window.cpp" line="735"/>
+        <location filename="../app/studio/main_window.cpp" line="354"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="373"/>
+        <location filename="../app/studio/main_window.cpp" line="378"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="382"/>
+        <location filename="../app/studio/main_window.cpp" line="387"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -546,275 +556,275 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="407"/>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="426"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="409"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="413"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="421"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="416"/>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="425"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="427"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="437"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="433"/>
+        <location filename="../app/studio/main_window.cpp" line="440"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="434"/>
+        <location filename="../app/studio/main_window.cpp" line="441"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="521"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="518"/>
+        <location filename="../app/studio/main_window.cpp" line="525"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="570"/>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="570"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="588"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="588"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
-        <location filename="../app/studio/main_window.cpp" line="582"/>
+        <location filename="../app/studio/main_window.cpp" line="554"/>
+        <location filename="../app/studio/main_window.cpp" line="589"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="554"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="548"/>
+        <location filename="../app/studio/main_window.cpp" line="555"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="568"/>
+        <location filename="../app/studio/main_window.cpp" line="575"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="571"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="587"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="599"/>
+        <location filename="../app/studio/main_window.cpp" line="606"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="600"/>
+        <location filename="../app/studio/main_window.cpp" line="607"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="603"/>
+        <location filename="../app/studio/main_window.cpp" line="610"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="631"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="625"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="634"/>
+        <location filename="../app/studio/main_window.cpp" line="641"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="693"/>
         <source>The language changes when Inlay is started again.</source>
         <translation>Die Sprache wechselt beim nächsten Start von Inlay.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="697"/>
+        <location filename="../app/studio/main_window.cpp" line="704"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="700"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="701"/>
+        <location filename="../app/studio/main_window.cpp" line="708"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="713"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="724"/>
+        <location filename="../app/studio/main_window.cpp" line="731"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="728"/>
+        <location filename="../app/studio/main_window.cpp" line="735"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="735"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>

@@ -437,108 +437,118 @@
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="243"/>
+        <source>&amp;Prepare the Scene Again</source>
+        <translation>P&amp;réparer à nouveau la scène</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="245"/>
+        <source>Estimate the camera, room and lighting again (after a cancel)</source>
+        <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="247"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="250"/>
+        <location filename="../app/studio/main_window.cpp" line="254"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="251"/>
+        <location filename="../app/studio/main_window.cpp" line="255"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="252"/>
+        <location filename="../app/studio/main_window.cpp" line="256"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="253"/>
+        <location filename="../app/studio/main_window.cpp" line="257"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="254"/>
+        <location filename="../app/studio/main_window.cpp" line="258"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="264"/>
+        <location filename="../app/studio/main_window.cpp" line="268"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="269"/>
+        <location filename="../app/studio/main_window.cpp" line="273"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="273"/>
+        <location filename="../app/studio/main_window.cpp" line="277"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="284"/>
+        <location filename="../app/studio/main_window.cpp" line="288"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="295"/>
+        <location filename="../app/studio/main_window.cpp" line="300"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="298"/>
+        <location filename="../app/studio/main_window.cpp" line="303"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="310"/>
+        <location filename="../app/studio/main_window.cpp" line="315"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="314"/>
+        <location filename="../app/studio/main_window.cpp" line="319"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="325"/>
+        <location filename="../app/studio/main_window.cpp" line="330"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="328"/>
+        <location filename="../app/studio/main_window.cpp" line="333"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="348"/>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
+        <location filename="../app/studio/main_window.cpp" line="353"/>
+        <location filename="../app/studio/main_window.cpp" line="362"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="348"/>
+        <location filename="../app/studio/main_window.cpp" line="353"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="349"/>
-        <location filename="../app/studio/main_window.cpp" line="735"/>
+        <location filename="../app/studio/main_window.cpp" line="354"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="373"/>
+        <location filename="../app/studio/main_window.cpp" line="378"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="382"/>
+        <location filename="../app/studio/main_window.cpp" line="387"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -546,275 +556,275 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="407"/>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="426"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="409"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="413"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="421"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="416"/>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="425"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="427"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="437"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="433"/>
+        <location filename="../app/studio/main_window.cpp" line="440"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="434"/>
+        <location filename="../app/studio/main_window.cpp" line="441"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="521"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="518"/>
+        <location filename="../app/studio/main_window.cpp" line="525"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="570"/>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="570"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="588"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="588"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
-        <location filename="../app/studio/main_window.cpp" line="582"/>
+        <location filename="../app/studio/main_window.cpp" line="554"/>
+        <location filename="../app/studio/main_window.cpp" line="589"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="554"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="548"/>
+        <location filename="../app/studio/main_window.cpp" line="555"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="568"/>
+        <location filename="../app/studio/main_window.cpp" line="575"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="571"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="587"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="599"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="599"/>
+        <location filename="../app/studio/main_window.cpp" line="606"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="600"/>
+        <location filename="../app/studio/main_window.cpp" line="607"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="603"/>
+        <location filename="../app/studio/main_window.cpp" line="610"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="631"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="625"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="634"/>
+        <location filename="../app/studio/main_window.cpp" line="641"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="693"/>
         <source>The language changes when Inlay is started again.</source>
         <translation>La langue change au prochain démarrage d’Inlay.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="697"/>
+        <location filename="../app/studio/main_window.cpp" line="704"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="700"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="701"/>
+        <location filename="../app/studio/main_window.cpp" line="708"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="713"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="724"/>
+        <location filename="../app/studio/main_window.cpp" line="731"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="728"/>
+        <location filename="../app/studio/main_window.cpp" line="735"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="735"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>

@@ -240,6 +240,10 @@ void MainWindow::createActions() {
     QString reason;
     if (!document_->resetBackWall(&reason)) statusBar()->showMessage(reason, 5000);
   });
+  prepareAct_ = new QAction(tr("&Prepare the Scene Again"), this);
+  prepareAct_->setShortcut(QKeySequence::Refresh);
+  prepareAct_->setStatusTip(tr("Estimate the camera, room and lighting again (after a cancel)"));
+  connect(prepareAct_, &QAction::triggered, document_, &Document::prepare);
   vanishingAct_ = new QAction(tr("&Vanishing Lines and Confidence"), this);
   vanishingAct_->setCheckable(true);
   vanishingAct_->setChecked(viewport_->showsVanishingLines());
@@ -291,6 +295,7 @@ void MainWindow::createMenus() {
   edit->addSeparator();
   edit->addAction(acceptBoxAct_);
   edit->addAction(resetBoxAct_);
+  edit->addAction(prepareAct_);
 
   toolsMenu_ = menuBar()->addMenu(tr("&Tools"));
   toolsMenu_->addActions(toolActs_);
@@ -396,6 +401,8 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   deleteAct_->setEnabled(!document_->scene().photo.empty());
   acceptBoxAct_->setEnabled(document_->shownBackWallPx().has_value() && !document_->backWallIsUsers());
   resetBoxAct_->setEnabled(document_->backWallIsUsers());
+  prepareAct_->setEnabled(!document_->scene().photo.empty() &&
+                          document_->state() != Document::State::Preparing);
   saveAct_->setEnabled(document_->state() != Document::State::Empty ||
                        !document_->scene().photo.empty());
   saveAsAct_->setEnabled(saveAct_->isEnabled());

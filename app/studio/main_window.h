@@ -120,6 +120,7 @@ class MainWindow : public QMainWindow {
   QList<QAction*> toolActs_;
   QAction* acceptBoxAct_ = nullptr;
   QAction* resetBoxAct_ = nullptr;
+  QAction* prepareAct_ = nullptr;
   QAction* vanishingAct_ = nullptr;
   QAction* openSceneAct_ = nullptr;
   QAction* openPhotoAct_ = nullptr;

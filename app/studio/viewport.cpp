@@ -874,10 +874,10 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseDoubleClickEvent(QMouseEvent* event) {
-  // The press of the double click already added a point at the same place: drop it, close.
+  // Qt sends press, release, double click, release: the first press added the point; the
+  // double click closes the outline there.
   if ((tool_ == Tool::Light || tool_ == Tool::Surface) && !awaitingHeightClick_ &&
       event->button() == Qt::LeftButton) {
-    if (toolPoints_.size() > 3) toolPoints_.pop_back();
     closeOutline();
     return;
   }
