@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <limits>
+
 using namespace inlay;
 using namespace inlay::studio;
 
@@ -56,6 +58,7 @@ class StudioDocumentTest : public QObject {
   void rendererKeepsUpWithManyMoves();
   void sinkContextCompositesLikeTheFullScene();
   void insertAndDeleteAreUndoable();
+  void markEditsValidateMergeAndRestartPreparation();
 };
 
 void StudioDocumentTest::srgbEncodingHasKnownValues() {
@@ -169,6 +172,86 @@ void StudioDocumentTest::dragMergesAndReturningIsObsolete() {
   doc.undoStack()->undo();
   QVERIFY(doc.scene().objects[0].basePx == start);
   QVERIFY(doc.undoStack()->isClean());
+}
+
+void StudioDocumentTest::markEditsValidateMergeAndRestartPreparation() {
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  QString reason;
+  // Nothing open: every mark edit is refused with a reason.
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {20, 20}}, &reason));
+  QVERIFY(!reason.isEmpty());
+  QVERIFY(!doc.acceptEstimatedBox(&reason));
+
+  doc.newFromPhoto(dir + QStringLiteral("/photo.png"));
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 120000);
+  QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
+  QVERIFY(!doc.backWallIsUsers());
+  const std::array<Vec2, 4> estimated = *doc.shownBackWallPx();
+  QVERIFY(doc.lastEstimate() != nullptr);
+
+  // One drag of a corner: one undo step; each move restarts preparation, only the last job's
+  // result is kept.
+  QSignalSpy changes(&doc, &Document::changed);
+  const int drag = Document::newDragId();
+  for (int k = 1; k <= 4; ++k)
+    QVERIFY(doc.setBackWallCorner(1, estimated[1] + Vec2(-2.0 * k, 1.0 * k), drag, &reason));
+  QCOMPARE(doc.undoStack()->count(), 1);
+  QVERIFY(doc.backWallIsUsers());
+  QCOMPARE(doc.state(), Document::State::Preparing);
+  int marks = 0, started = 0;
+  for (const QList<QVariant>& c : changes) {
+    const auto e = c.at(0).value<ChangeEvent>();
+    marks += e.has(ChangeEvent::Marks);
+    started += e.has(ChangeEvent::PrepareStarted);
+  }
+  QCOMPARE(marks, 4);
+  QCOMPARE(started, 4);
+  // The other corners kept the estimate's place.
+  QVERIFY((*doc.scene().layout.backWallPx)[0] == estimated[0]);
+  QVERIFY((*doc.scene().layout.backWallPx)[1] == estimated[1] + Vec2(-8, 4));
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 120000);
+  QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
+  QVERIFY(doc.prepared()->backWallPx == *doc.scene().layout.backWallPx);
+  // Back to where the drag began within the same drag: still one step, for the corners became
+  // the user's (the estimate, now kept); a second drag that returns leaves no step of its own.
+  QVERIFY(doc.setBackWallCorner(1, estimated[1], drag));
+  QCOMPARE(doc.undoStack()->count(), 1);
+  QVERIFY(*doc.scene().layout.backWallPx == estimated);
+  const int drag2 = Document::newDragId();
+  QVERIFY(doc.setBackWallCorner(2, estimated[2] + Vec2(3, 3), drag2));
+  QVERIFY(doc.setBackWallCorner(2, estimated[2], drag2));
+  QCOMPARE(doc.undoStack()->count(), 1);
+  doc.undoStack()->undo();
+  QVERIFY(!doc.backWallIsUsers());
+  QCOMPARE(doc.undoStack()->count(), 1);  // undone, not gone (redo is possible)
+  QVERIFY(doc.undoStack()->isClean());
+
+  // Bad input: refused, nothing pushed.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  QVERIFY(!doc.setBackWallCorner(4, Vec2(1, 1), 0, &reason));
+  QVERIFY(!doc.setBackWallCorner(0, Vec2(nan, 1), 0, &reason));
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}}, &reason));                 // two points
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {40, 1}}, &reason));         // no area
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {nan, 20}}, &reason));       // NaN
+  QVERIFY(!doc.addExtrusion({{1, 1}, {20, 1}}, Vec2(1, 30), &reason));
+  QVERIFY(!doc.addShaft({10, 10, 10.5, 40}, {0, 0, 20, 20}, &reason));  // too thin
+  QVERIFY(!doc.addOccluder(OccluderKeys{{{{5, 5}}}, {}}, &reason));     // no background stroke
+  QVERIFY(!doc.addOccluderStroke(0, true, {{5, 5}}, &reason));          // no occluder 0
+  QVERIFY(!doc.removeMark(MarkKind::Light, 0, &reason));
+  QCOMPARE(doc.undoStack()->index(), 0);
+
+  // Accept, then reset: the estimate comes back.
+  QVERIFY(doc.acceptEstimatedBox(&reason));
+  QVERIFY(*doc.scene().layout.backWallPx == estimated);
+  QVERIFY(doc.resetBackWall(&reason));
+  QVERIFY(!doc.backWallIsUsers());
+  QCOMPARE(doc.undoStack()->count(), 2);  // the undone drag was dropped by the new pushes
+  doc.undoStack()->undo();
+  doc.undoStack()->undo();
+  QVERIFY(doc.undoStack()->isClean());
+  QVERIFY(!doc.scene().layout.backWallPx);
 }
 
 void StudioDocumentTest::cancelDropsTheResult() {

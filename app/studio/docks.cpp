@@ -1,6 +1,8 @@
 #include "docks.h"
 
 #include "document.h"
+#include "render_controller.h"
+#include "viewport.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -9,6 +11,7 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTreeWidget>
@@ -20,6 +23,8 @@ namespace inlay::studio {
 namespace {
 
 constexpr int kRoleObject = Qt::UserRole + 1;  // object index, or -1
+constexpr int kRoleMarkKind = Qt::UserRole + 2;  // MarkKind as int
+constexpr int kRoleMarkIndex = Qt::UserRole + 3;
 
 QString meshName(const ObjectKeys& o) {
   if (o.mesh == "builtin:sphere") return SceneTreeDock::tr("sphere");
@@ -48,6 +53,9 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
     if (updating_ || !item) return;
     const QVariant v = item->data(0, kRoleObject);
     if (v.isValid()) document_->setSelectedObject(v.toInt());
+    if (item->data(0, kRoleMarkKind).isValid())
+      document_->setSelectedMark(MarkRef{MarkKind(item->data(0, kRoleMarkKind).toInt()),
+                                         item->data(0, kRoleMarkIndex).toInt()});
   });
   rebuild();
 }
@@ -55,7 +63,7 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
 void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
       event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement) ||
-      event.has(ChangeEvent::ObjectsAddedOrRemoved))
+      event.has(ChangeEvent::ObjectsAddedOrRemoved) || event.has(ChangeEvent::Marks))
     rebuild();
   else if (event.has(ChangeEvent::Selection))
     syncSelection();
@@ -80,10 +88,32 @@ void SceneTreeDock::rebuild() {
   auto* lights = new QTreeWidgetItem(tree_, {tr("Lights"), QString::number(doc.lights.size())});
   for (size_t i = 0; i < doc.lights.size(); ++i) {
     const LightKeys& l = doc.lights[i];
-    new QTreeWidgetItem(lights, {tr("Light %1").arg(i + 1),
+    auto* item = new QTreeWidgetItem(lights, {tr("Light %1").arg(i + 1),
                                  l.kind == LightKeys::Kind::PolygonPx ? tr("outline on the photo")
                                                                       : tr("rectangle in 3D")});
+    item->setData(0, kRoleMarkKind, int(MarkKind::Light));
+    item->setData(0, kRoleMarkIndex, int(i));
   }
+  // The other marks: one item each, deletable from the Edit menu.
+  auto addMarks = [&](const QString& group, size_t count, MarkKind kind, const QString& name,
+                      auto details) {
+    auto* parent = new QTreeWidgetItem(tree_, {group, QString::number(count)});
+    for (size_t i = 0; i < count; ++i) {
+      auto* item = new QTreeWidgetItem(parent, {name.arg(i + 1), details(i)});
+      item->setData(0, kRoleMarkKind, int(kind));
+      item->setData(0, kRoleMarkIndex, int(i));
+    }
+  };
+  addMarks(tr("Shafts"), doc.shafts.size(), MarkKind::Shaft, tr("Shaft %1"),
+           [](size_t) { return tr("sunlit patch and its window"); });
+  addMarks(tr("Surfaces"), doc.surfaces.size(), MarkKind::Surface, tr("Surface %1"),
+           [&](size_t i) { return QString::fromStdString(doc.surfaces[i].kind); });
+  addMarks(tr("Occluders"), doc.occluders.size(), MarkKind::Occluder, tr("Occluder %1"),
+           [&](size_t i) {
+             return tr("%1 strokes in front, %2 behind")
+                 .arg(doc.occluders[i].foregroundScribblesPx.size())
+                 .arg(doc.occluders[i].backgroundScribblesPx.size());
+           });
   auto* objects =
       new QTreeWidgetItem(tree_, {tr("Objects"), QString::number(doc.objects.size())});
   for (size_t i = 0; i < doc.objects.size(); ++i) {
@@ -104,13 +134,35 @@ void SceneTreeDock::rebuild() {
   syncSelection();
 }
 
+// ---------------------------------------------------------------- LayersDock
+
+LayersDock::LayersDock(Viewport* viewport, QWidget* parent)
+    : QDockWidget(tr("Layers"), parent), list_(new QListWidget(this)) {
+  setObjectName(QStringLiteral("layersDock"));
+  const QString names[kLayerCount] = {tr("Composite"),    tr("Photo"),
+                                      tr("Albedo"),       tr("Direct light"),
+                                      tr("With objects"), tr("Without objects"),
+                                      tr("Mask"),         tr("Difference")};
+  for (const QString& n : names) list_->addItem(n);
+  list_->setCurrentRow(int(viewport->layer()));
+  setWidget(list_);
+  connect(list_, &QListWidget::currentRowChanged, viewport, [viewport](int row) {
+    if (row >= 0 && row < kLayerCount) viewport->setLayer(Layer(row));
+  });
+}
+
 void SceneTreeDock::syncSelection() {
   updating_ = true;
   const int selected = document_->selectedObject();
+  const std::optional<MarkRef> mark = document_->selectedMark();
   QTreeWidgetItem* found = nullptr;
-  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
     if ((*it)->data(0, kRoleObject).isValid() && (*it)->data(0, kRoleObject).toInt() == selected)
       found = *it;
+    if (mark && (*it)->data(0, kRoleMarkKind).isValid() &&
+        MarkRef{MarkKind((*it)->data(0, kRoleMarkKind).toInt()), (*it)->data(0, kRoleMarkIndex).toInt()} == *mark)
+      found = *it;
+  }
   tree_->setCurrentItem(found);
   if (!found) tree_->clearSelection();
   updating_ = false;

@@ -1,14 +1,20 @@
 // The two docks beside the viewport. Both rebuild their contents from the Document's state when
 // it announces a change, and edit it only through its API (undoable commands).
-//   SceneTreeDock: the room, the lights and the objects; selecting an object selects it in the
-//     document (and so in the viewport).
+//   SceneTreeDock: the room, the marks (lights, shafts, surfaces, occluders) and the objects;
+//     choosing an object or a mark selects it in the document (and so in the viewport).
+//   LayersDock: which image the viewport shows (composite, photo, albedo, direct light, with and
+//     without objects, mask, difference).
 //   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object.
 // GUI thread only.
 #pragma once
 
 #include <QDockWidget>
 
+#include <optional>
+#include <utility>
+
 class QComboBox;
+class QListWidget;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -17,6 +23,7 @@ class QTreeWidget;
 namespace inlay::studio {
 
 class Document;
+class Viewport;
 struct ChangeEvent;
 
 class SceneTreeDock : public QDockWidget {
@@ -34,6 +41,17 @@ class SceneTreeDock : public QDockWidget {
   Document* document_;
   QTreeWidget* tree_;
   bool updating_ = false;
+};
+
+class LayersDock : public QDockWidget {
+  Q_OBJECT
+
+ public:
+  explicit LayersDock(Viewport* viewport, QWidget* parent = nullptr);
+  QListWidget* list() const { return list_; }
+
+ private:
+  QListWidget* list_;
 };
 
 class PropertiesDock : public QDockWidget {

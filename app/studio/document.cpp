@@ -7,6 +7,7 @@
 #include <QFileInfo>
 #include <QUndoCommand>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -32,7 +33,75 @@ std::string pathForFolder(const std::string& resolved, const std::string& asWrit
   return rel.toStdString();
 }
 
+void putMarks(SceneDoc& doc, const SceneMarks& m) {
+  doc.camera = m.camera;
+  doc.layout = m.layout;
+  doc.lights = m.lights;
+  doc.shafts = m.shafts;
+  doc.surfaces = m.surfaces;
+  doc.occluders = m.occluders;
+}
+
+bool finitePoints(const std::vector<Vec2>& points) {
+  return std::all_of(points.begin(), points.end(),
+                     [](const Vec2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); });
+}
+
+// Twice the signed area of a polygon (shoelace).
+double doubleArea(const std::vector<Vec2>& poly) {
+  double a = 0;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec2& p = poly[i];
+    const Vec2& q = poly[(i + 1) % poly.size()];
+    a += p.x() * q.y() - q.x() * p.y();
+  }
+  return a;
+}
+
+bool validBox(const std::array<double, 4>& b) {
+  return std::all_of(b.begin(), b.end(), [](double v) { return std::isfinite(v); }) &&
+         b[2] - b[0] >= 2 && b[3] - b[1] >= 2;
+}
+
 }  // namespace
+
+bool operator==(const SceneMarks& a, const SceneMarks& b) {
+  // The scene file's serialisation compares every key, present or not.
+  SceneDoc x, y;
+  putMarks(x, a);
+  putMarks(y, b);
+  return sceneToJson(x) == sceneToJson(y);
+}
+
+// One undoable change of the scene's marks (a corner, a light, a shaft, ...). Moves of one drag
+// share a merge id and collapse into one command; one that ends where it started is obsolete.
+class MarksCommand : public QUndoCommand {
+ public:
+  MarksCommand(Document* doc, SceneMarks before, SceneMarks after, int mergeId, const QString& text)
+      : QUndoCommand(text),
+        doc_(doc),
+        before_(std::move(before)),
+        after_(std::move(after)),
+        mergeId_(mergeId) {
+    setObsolete(before_ == after_);
+  }
+
+  void undo() override { doc_->applyMarks(before_); }
+  void redo() override { doc_->applyMarks(after_); }
+  int id() const override { return mergeId_ > 0 ? 2 : -1; }
+  bool mergeWith(const QUndoCommand* other) override {
+    const auto* o = dynamic_cast<const MarksCommand*>(other);
+    if (!o || o->mergeId_ != mergeId_) return false;
+    after_ = o->after_;
+    setObsolete(before_ == after_);
+    return true;
+  }
+
+ private:
+  Document* doc_;
+  SceneMarks before_, after_;
+  int mergeId_;
+};
 
 // One undoable change of one object's keys (placement and/or material). Moves of one drag share
 // a merge id and collapse into one command; a command whose before equals its after is
@@ -129,6 +198,10 @@ void Document::resetTo(SceneDoc doc, const QString& filePath) {
   prepared_.reset();
   prepareError_.clear();
   warnings_.clear();
+  loadWarnings_.clear();
+  estimatedBackWallPx_.reset();
+  lastEstimate_.reset();
+  selectedMark_.reset();
   state_ = State::Empty;
   selected_ = doc_.objects.empty() ? -1 : 0;
   Q_EMIT changed({ChangeEvent::SceneReplaced | ChangeEvent::FilePath | ChangeEvent::Selection});
@@ -141,7 +214,23 @@ bool Document::openSceneFile(const QString& path, QString* error) {
     return false;
   }
   resetTo(std::move(loaded->doc), QFileInfo(path).absoluteFilePath());
-  for (const std::string& w : loaded->warnings) warnings_ << QString::fromStdString(w);
+  for (const std::string& w : loaded->warnings) loadWarnings_ << QString::fromStdString(w);
+  warnings_ = loadWarnings_;
+  prepare();
+  return true;
+}
+
+bool Document::restoreRecovery(const QString& recoveryPath, const QString& originalPath,
+                               QString* error) {
+  Expected<SceneLoadResult> loaded =
+      loadSceneFile(QDir::toNativeSeparators(recoveryPath).toStdString());
+  if (!loaded.ok()) {
+    if (error) *error = QString::fromStdString(loaded.error().message());
+    return false;
+  }
+  resetTo(std::move(loaded->doc),
+          originalPath.isEmpty() ? QString() : QFileInfo(originalPath).absoluteFilePath());
+  undo_.resetClean();  // the restored work is in no file yet
   prepare();
   return true;
 }
@@ -204,11 +293,15 @@ void Document::cancelPrepare() {
 
 void Document::onPrepared(const PrepareResult& result) {
   if (result.jobId != jobId_) return;  // superseded or cancelled
-  for (const QString& w : result.warnings) warnings_ << w;
+  warnings_ = loadWarnings_ + result.warnings;
   if (result.scene) {
     prepared_ = std::make_unique<PreparedScene>(std::move(*result.scene));
     // The engine may have filled in estimated keys; the objects are the user's.
     prepared_->doc.objects = doc_.objects;
+    // The estimate's own corners only: with the user's corners the box is theirs, and undoing
+    // back to the estimate must show the estimate, not their last fix.
+    if (!prepared_->doc.layout.backWallPx) estimatedBackWallPx_ = prepared_->backWallPx;
+    if (prepared_->cameraEstimate) lastEstimate_ = prepared_->cameraEstimate;
     state_ = State::Ready;
   } else if (result.cancelled) {
     state_ = State::Empty;
@@ -222,8 +315,21 @@ void Document::onPrepared(const PrepareResult& result) {
 
 void Document::setSelectedObject(int index) {
   if (index < -1 || index >= objectCount()) index = -1;
-  if (index == selected_) return;
+  if (index == selected_ && (index < 0 || !selectedMark_)) return;
   selected_ = index;
+  if (index >= 0) selectedMark_.reset();
+  Q_EMIT changed({ChangeEvent::Selection});
+}
+
+void Document::setSelectedMark(std::optional<MarkRef> mark) {
+  if (mark) {
+    const size_t counts[4] = {doc_.lights.size(), doc_.shafts.size(), doc_.surfaces.size(),
+                              doc_.occluders.size()};
+    if (mark->index < 0 || size_t(mark->index) >= counts[int(mark->kind)]) mark.reset();
+  }
+  if (mark == selectedMark_ && (!mark || selected_ < 0)) return;
+  selectedMark_ = mark;
+  if (mark) selected_ = -1;
   Q_EMIT changed({ChangeEvent::Selection});
 }
 
@@ -336,7 +442,12 @@ bool Document::removeObject(int index, QString* reason) {
 
 void Document::insertObjectAt(int index, const ObjectKeys& keys,
                               std::shared_ptr<const TriangleMesh> mesh) {
-  INLAY_CHECK(prepared_ && index >= 0 && index <= objectCount() && mesh);
+  INLAY_CHECK(index >= 0 && index <= objectCount() && mesh);
+  if (!prepared_) {  // undone / redone while the marks are being re-prepared
+    std::vector<ObjectKeys> objects = doc_.objects;
+    objects.insert(objects.begin() + index, keys);
+    return changeObjectsUnprepared(std::move(objects), index);
+  }
   INLAY_CHECK(prepared_->renderScene.objects.size() == doc_.objects.size() &&
               prepared_->placements.size() == doc_.objects.size());
   const auto at = [index](auto& v) { return v.begin() + index; };
@@ -356,7 +467,13 @@ void Document::insertObjectAt(int index, const ObjectKeys& keys,
 }
 
 void Document::removeObjectAt(int index) {
-  INLAY_CHECK(prepared_ && index >= 0 && index < objectCount());
+  INLAY_CHECK(index >= 0 && index < objectCount());
+  if (!prepared_) {
+    std::vector<ObjectKeys> objects = doc_.objects;
+    objects.erase(objects.begin() + index);
+    const int selected = std::min(selected_, int(objects.size()) - 1);
+    return changeObjectsUnprepared(std::move(objects), selected);
+  }
   const auto at = [index](auto& v) { return v.begin() + index; };
   doc_.objects.erase(at(doc_.objects));
   prepared_->doc.objects.erase(at(prepared_->doc.objects));
@@ -367,7 +484,12 @@ void Document::removeObjectAt(int index) {
 }
 
 void Document::applyObject(int index, const ObjectKeys& keys) {
-  INLAY_CHECK(index >= 0 && index < objectCount() && prepared_);
+  INLAY_CHECK(index >= 0 && index < objectCount());
+  if (!prepared_) {
+    std::vector<ObjectKeys> objects = doc_.objects;
+    objects[size_t(index)] = keys;
+    return changeObjectsUnprepared(std::move(objects), selected_);
+  }
   ObjectKeys& current = doc_.objects[size_t(index)];
   ChangeEvent event;
   event.objectIndex = index;
@@ -391,6 +513,176 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
     o.material = materialFromKeys(keys.material, o.meshObject.get());
   }
   if (event.what) Q_EMIT changed(event);
+}
+
+}  // namespace inlay::studio
+
+namespace inlay::studio {
+
+// --- The scene's marks ---
+
+SceneMarks Document::marks() const {
+  return {doc_.camera, doc_.layout, doc_.lights, doc_.shafts, doc_.surfaces, doc_.occluders};
+}
+
+std::optional<std::array<Vec2, 4>> Document::shownBackWallPx() const {
+  if (doc_.layout.backWallPx) return doc_.layout.backWallPx;
+  return estimatedBackWallPx_;
+}
+
+bool Document::editMarks(const SceneMarks& after, int mergeId, const QString& text,
+                         QString* reason) {
+  if (doc_.photo.empty()) {
+    if (reason) *reason = tr("Open a photo first.");
+    return false;
+  }
+  SceneMarks before = marks();
+  if (before == after) return true;
+  undo_.push(new MarksCommand(this, std::move(before), after, mergeId, text));
+  return true;
+}
+
+void Document::applyMarks(const SceneMarks& m) {
+  putMarks(doc_, m);
+  const bool wasSelected = selectedMark_.has_value();
+  selectedMark_.reset();  // indices may have shifted
+  Q_EMIT changed({ChangeEvent::Marks | (wasSelected ? ChangeEvent::Selection : 0u)});
+  prepare();
+}
+
+bool Document::acceptEstimatedBox(QString* reason) {
+  const std::optional<std::array<Vec2, 4>> shown = shownBackWallPx();
+  if (!shown) {
+    if (reason) *reason = tr("There is no estimated box yet.");
+    return false;
+  }
+  SceneMarks m = marks();
+  m.layout.backWallPx = *shown;
+  return editMarks(m, 0, tr("Accept the estimated box"), reason);
+}
+
+bool Document::setBackWallCorner(int corner, const Vec2& px, int dragId, QString* reason) {
+  std::optional<std::array<Vec2, 4>> corners = shownBackWallPx();
+  if (corner < 0 || corner > 3 || !corners) {
+    if (reason) *reason = tr("There is no such corner of the back wall.");
+    return false;
+  }
+  if (!std::isfinite(px.x()) || !std::isfinite(px.y())) {
+    if (reason) *reason = tr("The position is not a number.");
+    return false;
+  }
+  (*corners)[size_t(corner)] = px;
+  SceneMarks m = marks();
+  m.layout.backWallPx = *corners;
+  return editMarks(m, dragId, tr("Move a corner of the back wall"), reason);
+}
+
+bool Document::resetBackWall(QString* reason) {
+  SceneMarks m = marks();
+  m.layout.backWallPx.reset();
+  return editMarks(m, 0, tr("Estimate the box again"), reason);
+}
+
+bool Document::addLight(const std::vector<Vec2>& outlinePx, QString* reason) {
+  if (outlinePx.size() < 3 || !finitePoints(outlinePx) || std::abs(doubleArea(outlinePx)) < 4.0) {
+    if (reason) *reason = tr("A light's outline needs at least three points around an area.");
+    return false;
+  }
+  SceneMarks m = marks();
+  LightKeys light;
+  light.kind = LightKeys::Kind::PolygonPx;
+  light.pointsPx = outlinePx;
+  m.lights.push_back(light);
+  return editMarks(m, 0, tr("Outline light %1").arg(m.lights.size()), reason);
+}
+
+bool Document::addShaft(const std::array<double, 4>& shaftBoxPx,
+                        const std::array<double, 4>& sourceBoxPx, QString* reason) {
+  if (!validBox(shaftBoxPx) || !validBox(sourceBoxPx)) {
+    if (reason) *reason = tr("Each box of a shaft must be at least two pixels wide and high.");
+    return false;
+  }
+  SceneMarks m = marks();
+  ShaftKeys shaft;
+  shaft.shaftBoxPx = shaftBoxPx;
+  shaft.sourceBoxPx = sourceBoxPx;
+  m.shafts.push_back(shaft);
+  return editMarks(m, 0, tr("Add shaft %1").arg(m.shafts.size()), reason);
+}
+
+bool Document::addExtrusion(const std::vector<Vec2>& outlinePx, const Vec2& heightClickPx,
+                            QString* reason) {
+  if (outlinePx.size() < 3 || !finitePoints(outlinePx) || std::abs(doubleArea(outlinePx)) < 4.0 ||
+      !finitePoints({heightClickPx})) {
+    if (reason) *reason = tr("A surface's outline needs at least three points around an area.");
+    return false;
+  }
+  SceneMarks m = marks();
+  SurfaceKeys surface;
+  surface.kind = "extrusion";
+  surface.outlinePx = outlinePx;
+  surface.heightClickPx = heightClickPx;
+  m.surfaces.push_back(surface);
+  return editMarks(m, 0, tr("Add surface %1").arg(m.surfaces.size()), reason);
+}
+
+bool Document::addOccluder(const OccluderKeys& occluder, QString* reason) {
+  auto usable = [](const std::vector<std::vector<Vec2>>& strokes) {
+    return !strokes.empty() && std::all_of(strokes.begin(), strokes.end(), [](const auto& s) {
+      return !s.empty() && finitePoints(s);
+    });
+  };
+  if (!usable(occluder.foregroundScribblesPx) || !usable(occluder.backgroundScribblesPx)) {
+    if (reason)
+      *reason = tr("An occluder needs a stroke over the thing in front and one over what is behind it.");
+    return false;
+  }
+  SceneMarks m = marks();
+  m.occluders.push_back(occluder);
+  return editMarks(m, 0, tr("Add occluder %1").arg(m.occluders.size()), reason);
+}
+
+bool Document::addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
+                                 QString* reason) {
+  if (index < 0 || index >= int(doc_.occluders.size()) || strokePx.empty() ||
+      !finitePoints(strokePx)) {
+    if (reason) *reason = tr("There is no such occluder, or the stroke is empty.");
+    return false;
+  }
+  SceneMarks m = marks();
+  OccluderKeys& o = m.occluders[size_t(index)];
+  (foreground ? o.foregroundScribblesPx : o.backgroundScribblesPx).push_back(strokePx);
+  return editMarks(m, 0, tr("Add a stroke to occluder %1").arg(index + 1), reason);
+}
+
+bool Document::removeMark(MarkRef mark, QString* reason) {
+  return removeMark(mark.kind, mark.index, reason);
+}
+
+bool Document::removeMark(MarkKind kind, int index, QString* reason) {
+  SceneMarks m = marks();
+  auto erase = [&](auto& list, const QString& text) {
+    if (index < 0 || index >= int(list.size())) {
+      if (reason) *reason = tr("There is no such mark.");
+      return false;
+    }
+    list.erase(list.begin() + index);
+    return editMarks(m, 0, text.arg(index + 1), reason);
+  };
+  switch (kind) {
+    case MarkKind::Light: return erase(m.lights, tr("Delete light %1"));
+    case MarkKind::Shaft: return erase(m.shafts, tr("Delete shaft %1"));
+    case MarkKind::Surface: return erase(m.surfaces, tr("Delete surface %1"));
+    case MarkKind::Occluder: return erase(m.occluders, tr("Delete occluder %1"));
+  }
+  return false;
+}
+
+void Document::changeObjectsUnprepared(std::vector<ObjectKeys> objects, int selected) {
+  doc_.objects = std::move(objects);
+  selected_ = std::clamp(selected, -1, objectCount() - 1);
+  Q_EMIT changed({ChangeEvent::ObjectsAddedOrRemoved | ChangeEvent::Selection});
+  prepare();
 }
 
 }  // namespace inlay::studio

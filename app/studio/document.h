@@ -43,10 +43,32 @@ struct ChangeEvent {
     Selection = 1u << 5,
     FilePath = 1u << 6,         // filePath() changed (open, save as)
     ObjectsAddedOrRemoved = 1u << 7,  // objects inserted or deleted; indices may have shifted
+    Marks = 1u << 8,            // the scene's marks changed (SceneMarks); preparation restarted
   };
   unsigned what = 0;
   int objectIndex = -1;  // for ObjectPlacement / ObjectMaterial
   bool has(Kind k) const { return (what & k) != 0; }
+};
+
+// The marks a user draws on the photo: everything of the SceneDoc but the photo, the objects
+// and the render keys. A change of any of them needs a new prepareScene().
+struct SceneMarks {
+  CameraKeys camera;
+  LayoutKeys layout;
+  std::vector<LightKeys> lights;
+  std::vector<ShaftKeys> shafts;
+  std::vector<SurfaceKeys> surfaces;
+  std::vector<OccluderKeys> occluders;
+};
+bool operator==(const SceneMarks& a, const SceneMarks& b);
+
+// Which list of marks (for removeMark).
+enum class MarkKind { Light, Shaft, Surface, Occluder };
+// One mark: its list and its index there.
+struct MarkRef {
+  MarkKind kind = MarkKind::Light;
+  int index = -1;
+  bool operator==(const MarkRef&) const = default;
 };
 
 class Document : public QObject {
@@ -67,6 +89,9 @@ class Document : public QObject {
   // Parses a scene file and starts preparing it. On a parse error returns false, leaves the
   // document unchanged and sets `error` to one user-facing line.
   bool openSceneFile(const QString& path, QString* error);
+  // Restores work from a recovery file (Autosaver): the scene as it was, belonging to
+  // `originalPath` ("" for a new scene), with unsaved changes (not clean, no undo history).
+  bool restoreRecovery(const QString& recoveryPath, const QString& originalPath, QString* error);
   // A new document holding only the photo (camera, room and lights are estimated).
   void newFromPhoto(const QString& photoPath);
   // Writes the scene file atomically. Relative paths (photo, meshes) are rewritten against the
@@ -87,7 +112,11 @@ class Document : public QObject {
   QString filePath() const { return filePath_; }
   QUndoStack* undoStack() { return &undo_; }
   int selectedObject() const { return selected_; }
-  void setSelectedObject(int index);  // -1: none; not undoable
+  void setSelectedObject(int index);  // -1: none; not undoable; deselects the mark
+  // The selected mark (a light, shaft, surface or occluder), if any; selecting one deselects
+  // the object. Not undoable; cleared when the marks change.
+  std::optional<MarkRef> selectedMark() const { return selectedMark_; }
+  void setSelectedMark(std::optional<MarkRef> mark);
   int objectCount() const { return int(doc_.objects.size()); }
 
   // --- Edits (undoable). Each returns false, changes nothing and sets `reason` (one
@@ -105,6 +134,39 @@ class Document : public QObject {
   // scene is not prepared).
   std::optional<Vec2> freeStandingPointPx() const;
 
+  // --- Edits of the scene's marks (undoable). Each pushes one command whose redo and undo
+  // replace the marks and restart preparation on the worker (cancelling a running one); they
+  // are possible whenever a photo is loaded, also when preparation failed (a fix may cure it).
+  // The corners of the back wall as shown: the user's (layout.back_wall_px) when given, else
+  // the newest estimate's; nullopt before the first estimate.
+  std::optional<std::array<Vec2, 4>> shownBackWallPx() const;
+  bool backWallIsUsers() const { return doc_.layout.backWallPx.has_value(); }
+  // Keeps the estimated box as the user's (writes layout.back_wall_px).
+  bool acceptEstimatedBox(QString* reason = nullptr);
+  // Moves one corner (0 TL, 1 TR, 2 BR, 3 BL); the others keep their shown place. A drag passes
+  // one dragId for all its moves: one undo step.
+  bool setBackWallCorner(int corner, const Vec2& px, int dragId = 0, QString* reason = nullptr);
+  // Forgets the user's corners: the box is estimated again.
+  bool resetBackWall(QString* reason = nullptr);
+  // A light outlined on the photo (>= 3 points, a polygon with area).
+  bool addLight(const std::vector<Vec2>& outlinePx, QString* reason = nullptr);
+  // A shaft of sunlight: a box around the lit patch and one around its source (window).
+  bool addShaft(const std::array<double, 4>& shaftBoxPx, const std::array<double, 4>& sourceBoxPx,
+                QString* reason = nullptr);
+  // An extrusion (a table top): its outline and a floor click straight below outlinePx[0].
+  bool addExtrusion(const std::vector<Vec2>& outlinePx, const Vec2& heightClickPx,
+                    QString* reason = nullptr);
+  // An occluder from its first strokes (at least one of each kind).
+  bool addOccluder(const OccluderKeys& occluder, QString* reason = nullptr);
+  // One more stroke for occluder `index` (foreground: over the thing in front).
+  bool addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
+                         QString* reason = nullptr);
+  bool removeMark(MarkKind kind, int index, QString* reason = nullptr);
+  bool removeMark(MarkRef mark, QString* reason = nullptr);
+  SceneMarks marks() const;
+  // The newest camera estimate (kept while the scene is re-prepared), or null.
+  const CameraEstimate* lastEstimate() const { return lastEstimate_ ? &*lastEstimate_ : nullptr; }
+
   // A unique id for a new drag (for moveObject's dragId).
   static int newDragId();
 
@@ -118,6 +180,14 @@ class Document : public QObject {
   QString whyObjectsCannotChange(int index) const;
   friend class ObjectEditCommand;
   friend class ObjectListCommand;
+  friend class MarksCommand;
+  // Validates and pushes a change of the marks (see the mark edits).
+  bool editMarks(const SceneMarks& after, int mergeId, const QString& text, QString* reason);
+  // Replaces the marks and restarts preparation (from an undo command).
+  void applyMarks(const SceneMarks& marks);
+  // An object edit while nothing is prepared (undo during preparation): the keys are the
+  // document's, so preparation restarts with them.
+  void changeObjectsUnprepared(std::vector<ObjectKeys> objects, int selected);
   // Validates `keys` for object `index` and pushes the command (see the edit functions).
   bool editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text,
                   QString* reason);
@@ -134,9 +204,13 @@ class Document : public QObject {
   State state_ = State::Empty;
   std::unique_ptr<PreparedScene> prepared_;
   QString prepareError_;
-  QStringList warnings_;
+  QStringList warnings_;      // of the file (loadWarnings_) and of the newest preparation
+  QStringList loadWarnings_;
   QUndoStack undo_;
   int selected_ = -1;
+  std::optional<MarkRef> selectedMark_;
+  std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest automatic estimate
+  std::optional<CameraEstimate> lastEstimate_;
 
   QThread thread_;
   PrepareWorker* worker_ = nullptr;  // lives on thread_

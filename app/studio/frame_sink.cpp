@@ -55,6 +55,7 @@ void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   image.seconds = frame->seconds;
   image.estimatedError = frame->estimatedError;
   image.final = frame->final;
+  image.frame = frame;
   auto linear = std::make_shared<ImageF>(compositeOf(*context, *frame));
   // compositeOf already applied the scene's exposure.
   image.srgb8 = srgb8FromLinear(*linear, 0.0);

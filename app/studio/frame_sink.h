@@ -31,6 +31,7 @@ struct CompositeImage {
   bool final = false;
   QImage srgb8;                                // the composite, 8-bit sRGB
   std::shared_ptr<const ImageF> linear;        // the composite, linear (for export)
+  std::shared_ptr<const RenderFrame> frame;     // the renderer's frame (the layers' source)
 };
 
 class CompositeSink : public FrameSink {

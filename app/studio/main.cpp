@@ -1,5 +1,6 @@
 // inlay: the studio. See ../../../shared/spec/cli.md ("inlay [SCENE.json | PHOTO]").
 //
+// --recover restores the work a crash left (Autosaver) without asking; without it the window asks.
 // Test hook: inlay --screenshot OUT.png [--wait-spp N] [SCENE | PHOTO] opens the scene, waits
 // until the composite reaches N samples per pixel (default 4; or its render ends, or 60 s
 // pass), grabs the main window to OUT.png and exits: 0 when the screenshot shows the rendered
@@ -58,6 +59,10 @@ int main(int argc, char** argv) {
       QStringLiteral("wait-spp"),
       QCoreApplication::translate("main", "Samples per pixel to wait for (default 4)."),
       QStringLiteral("n"), QStringLiteral("4"));
+  const QCommandLineOption recoverOpt(
+      QStringLiteral("recover"),
+      QCoreApplication::translate("main", "Restore unsaved work left by a crash without asking."));
+  parser.addOption(recoverOpt);
   parser.addOption(screenshotOpt);
   parser.addOption(waitSppOpt);
   // Not process(): a usage error exits with 2, as cli.md asks.
@@ -87,7 +92,12 @@ int main(int argc, char** argv) {
   window.setInteractive(!screenshot);
   if (screenshot) window.resize(1280, 800);
   window.show();
-  const bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
+  bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
+  // Work a crash left behind replaces what was opened (after asking, unless --recover).
+  if (parser.isSet(recoverOpt))
+    opened = window.restoreRecovery() || opened;
+  else if (!screenshot)
+    window.offerRecovery();
   if (!screenshot) return app.exec();
 
   // --- Screenshot mode ---

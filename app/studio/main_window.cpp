@@ -1,6 +1,8 @@
 #include "main_window.h"
 
+#include "autosave.h"
 #include "docks.h"
+#include "i18n.h"
 #include "document.h"
 #include "render_controller.h"
 #include "viewport.h"
@@ -18,10 +20,13 @@
 #include <QFileInfo>
 #include <QImageReader>
 #include <QLabel>
+#include <QLocale>
+#include <QPushButton>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressDialog>
+#include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -95,16 +100,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   propertiesDock_ = new PropertiesDock(document_, this);
   addDockWidget(Qt::LeftDockWidgetArea, sceneDock_);
   addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
+  layersDock_ = new LayersDock(viewport_, this);
+  addDockWidget(Qt::RightDockWidgetArea, layersDock_);
+  autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);
+  rateLabel_ = new QLabel(this);
   errorLabel_ = new QLabel(this);
   timeLabel_ = new QLabel(this);
   zoomLabel_ = new QLabel(this);
-  for (QLabel* l : {sppLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
+  for (QLabel* l : {sppLabel_, rateLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
     l->setMinimumWidth(90);
     statusBar()->addPermanentWidget(l);
   }
   sppLabel_->setToolTip(tr("Samples per pixel of the shown composite"));
+  rateLabel_->setToolTip(tr("Samples per second of the renderer (millions)"));
   errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
   timeLabel_->setToolTip(tr("Render time since the last change"));
   zoomLabel_->setToolTip(tr("Zoom"));
@@ -175,6 +185,10 @@ void MainWindow::createActions() {
   exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
   connect(exportAct_, &QAction::triggered, this, &MainWindow::exportCompositeDialog);
 
+  exportLayerAct_ = new QAction(tr("Export Shown &Layer…"), this);
+  exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
+  connect(exportLayerAct_, &QAction::triggered, this, &MainWindow::exportLayerDialog);
+
   quitAct_ = new QAction(tr("&Quit"), this);
   quitAct_->setShortcut(QKeySequence::Quit);
   connect(quitAct_, &QAction::triggered, this, &QWidget::close);
@@ -194,7 +208,8 @@ void MainWindow::createActions() {
   insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
   connect(insertCubeAct_, &QAction::triggered, this,
           [this] { insertBuiltin(QStringLiteral("builtin:cube")); });
-  deleteAct_ = new QAction(tr("&Delete Object"), this);
+  deleteAct_ = new QAction(tr("&Delete"), this);
+  deleteAct_->setStatusTip(tr("Delete the selected object or mark"));
   deleteAct_->setShortcut(QKeySequence::Delete);
   connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelected);
 
@@ -213,6 +228,43 @@ void MainWindow::createActions() {
   beforeAct_->setStatusTip(tr("Toggle between the photo and the composite with the objects"));
   connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
 
+  acceptBoxAct_ = new QAction(tr("&Accept Estimated Box"), this);
+  acceptBoxAct_->setStatusTip(tr("Keep the estimated back wall as yours"));
+  connect(acceptBoxAct_, &QAction::triggered, this, [this] {
+    QString reason;
+    if (!document_->acceptEstimatedBox(&reason)) statusBar()->showMessage(reason, 5000);
+  });
+  resetBoxAct_ = new QAction(tr("Estimate the &Box Again"), this);
+  resetBoxAct_->setStatusTip(tr("Forget your corners of the back wall"));
+  connect(resetBoxAct_, &QAction::triggered, this, [this] {
+    QString reason;
+    if (!document_->resetBackWall(&reason)) statusBar()->showMessage(reason, 5000);
+  });
+  prepareAct_ = new QAction(tr("&Prepare the Scene Again"), this);
+  prepareAct_->setShortcut(QKeySequence::Refresh);
+  prepareAct_->setStatusTip(tr("Estimate the camera, room and lighting again (after a cancel)"));
+  connect(prepareAct_, &QAction::triggered, document_, &Document::prepare);
+  vanishingAct_ = new QAction(tr("&Vanishing Lines and Confidence"), this);
+  vanishingAct_->setCheckable(true);
+  vanishingAct_->setChecked(viewport_->showsVanishingLines());
+  connect(vanishingAct_, &QAction::toggled, viewport_, &Viewport::setShowVanishingLines);
+
+  auto* tools = new QActionGroup(this);
+  const std::pair<QString, QKeySequence> toolNames[] = {
+      {tr("&Select and Move"), QKeySequence(Qt::Key_V)},
+      {tr("Outline a &Light"), QKeySequence(Qt::Key_L)},
+      {tr("Sun &Shaft"), QKeySequence(Qt::Key_H)},
+      {tr("&Table Top or Step"), QKeySequence(Qt::Key_T)},
+      {tr("&Occluder Strokes"), QKeySequence(Qt::Key_O)}};
+  for (int i = 0; i < 5; ++i) {
+    QAction* a = tools->addAction(toolNames[i].first);
+    a->setCheckable(true);
+    a->setShortcut(toolNames[i].second);
+    a->setChecked(i == 0);
+    connect(a, &QAction::triggered, this, [this, i] { viewport_->setTool(Viewport::Tool(i)); });
+    toolActs_ << a;
+  }
+
   aboutAct_ = new QAction(tr("&About Inlay"), this);
   connect(aboutAct_, &QAction::triggered, this, &MainWindow::about);
 }
@@ -229,6 +281,7 @@ void MainWindow::createMenus() {
   fileMenu_->addAction(saveAct_);
   fileMenu_->addAction(saveAsAct_);
   fileMenu_->addAction(exportAct_);
+  fileMenu_->addAction(exportLayerAct_);
   fileMenu_->addSeparator();
   fileMenu_->addAction(quitAct_);
 
@@ -239,6 +292,13 @@ void MainWindow::createMenus() {
   edit->addAction(insertSphereAct_);
   edit->addAction(insertCubeAct_);
   edit->addAction(deleteAct_);
+  edit->addSeparator();
+  edit->addAction(acceptBoxAct_);
+  edit->addAction(resetBoxAct_);
+  edit->addAction(prepareAct_);
+
+  toolsMenu_ = menuBar()->addMenu(tr("&Tools"));
+  toolsMenu_->addActions(toolActs_);
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
   view->addAction(zoomInAct_);
@@ -246,16 +306,19 @@ void MainWindow::createMenus() {
   view->addAction(fitAct_);
   view->addSeparator();
   view->addAction(beforeAct_);
+  view->addAction(vanishingAct_);
   view->addSeparator();
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
+  view->addAction(layersDock_->toggleViewAction());
   view->addSeparator();
   QMenu* language = view->addMenu(tr("&Language"));
   auto* group = new QActionGroup(language);
   const QString current = QSettings().value(QStringLiteral("language")).toString();
   const std::pair<QString, QString> languages[] = {
       {QString(), tr("System Default")}, {QStringLiteral("en"), QStringLiteral("English")},
-      {QStringLiteral("de"), QStringLiteral("Deutsch")}};
+      {QStringLiteral("de"), QStringLiteral("Deutsch")},
+      {QStringLiteral("fr"), QStringLiteral("Français")}};
   for (const auto& [code, name] : languages) {
     QAction* a = language->addAction(name);
     a->setCheckable(true);
@@ -274,6 +337,8 @@ void MainWindow::createMenus() {
   tools->addSeparator();
   tools->addAction(undoAct_);
   tools->addAction(redoAct_);
+  tools->addSeparator();
+  tools->addActions(toolActs_);
   tools->addSeparator();
   tools->addAction(zoomInAct_);
   tools->addAction(zoomOutAct_);
@@ -297,6 +362,8 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->showMessage(tr("Preparing the scene…"));
     statusBar()->setToolTip(QString());
   }
+  if (event.has(ChangeEvent::SceneReplaced)) reportFailure_ = true;
+  if (event.has(ChangeEvent::Marks)) reportFailure_ = false;
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (progress_) {
       progress_->hide();
@@ -306,7 +373,11 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->clearMessage();
     switch (document_->state()) {
       case Document::State::Failed:
-        showError(tr("The scene could not be prepared"), document_->prepareError());
+        // After an open: a dialog. After an edit of the marks: the viewport's banner says it.
+        if (reportFailure_)
+          showError(tr("The scene could not be prepared"), document_->prepareError());
+        else
+          statusBar()->showMessage(document_->prepareError(), 10000);
         break;
       case Document::State::Ready:
         if (!document_->warnings().isEmpty()) {
@@ -327,7 +398,11 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   exportAct_->setEnabled(ready);
   insertSphereAct_->setEnabled(ready);
   insertCubeAct_->setEnabled(ready);
-  deleteAct_->setEnabled(ready && document_->selectedObject() >= 0);
+  deleteAct_->setEnabled(!document_->scene().photo.empty());
+  acceptBoxAct_->setEnabled(document_->shownBackWallPx().has_value() && !document_->backWallIsUsers());
+  resetBoxAct_->setEnabled(document_->backWallIsUsers());
+  prepareAct_->setEnabled(!document_->scene().photo.empty() &&
+                          document_->state() != Document::State::Preparing);
   saveAct_->setEnabled(document_->state() != Document::State::Empty ||
                        !document_->scene().photo.empty());
   saveAsAct_->setEnabled(saveAct_->isEnabled());
@@ -336,6 +411,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
 void MainWindow::onFrame() {
   if (!renderer_->hasFrame()) {
     sppLabel_->setText(tr("– spp"));
+    rateLabel_->setText(tr("– samples/s"));
     errorLabel_->setText(tr("error –"));
     timeLabel_->setText(tr("– s"));
     return;
@@ -345,6 +421,9 @@ void MainWindow::onFrame() {
                      : f.final                ? tr("%1 spp, done").arg(f.spp)
                                               : tr("%1 spp").arg(f.spp));
   errorLabel_->setText(tr("error %1").arg(f.estimatedError, 0, 'f', 4));
+  const double pixels = double(renderer_->compositeImage().width()) * renderer_->compositeImage().height();
+  rateLabel_->setText(f.seconds > 0 ? tr("%1 M samples/s").arg(f.spp * pixels / f.seconds * 1e-6, 0, 'f', 2)
+                                    : tr("– samples/s"));
   timeLabel_->setText(tr("%1 s").arg(f.seconds, 0, 'f', 1));
   exportAct_->setEnabled(true);
 }
@@ -503,6 +582,35 @@ bool MainWindow::exportComposite(const QString& path) {
   return true;
 }
 
+void MainWindow::exportLayerDialog() {
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Shown Layer"), QString(),
+      tr("PNG image (*.png)") + QStringLiteral(";;") + tr("JPEG image (*.jpg *.jpeg)") +
+          QStringLiteral(";;") + tr("TIFF image (*.tif *.tiff)"));
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".png");
+  exportShownLayer(path);
+}
+
+bool MainWindow::exportShownLayer(const QString& path) {
+  const QImage image = viewport_->showsBefore() ? renderer_->photoImage()
+                                                : renderer_->layerImage(viewport_->layer());
+  if (image.isNull()) {
+    showError(tr("Nothing to export"), tr("This layer has not been made yet."));
+    return false;
+  }
+  // Atomic: a failed write leaves any earlier file as it was.
+  QSaveFile file(path);
+  const QByteArray format = QFileInfo(path).suffix().toLower().toLatin1();
+  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, format.constData()) || !file.commit()) {
+    showError(tr("Cannot export the layer"),
+              tr("%1: cannot write (%2)").arg(QDir::toNativeSeparators(path), file.errorString()));
+    return false;
+  }
+  statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);
+  return true;
+}
+
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
   const QList<QUrl> urls = event->mimeData()->urls();
   if (urls.size() == 1 && urls.first().isLocalFile()) event->acceptProposedAction();
@@ -547,8 +655,11 @@ bool MainWindow::insertBuiltin(const QString& mesh) {
 
 void MainWindow::deleteSelected() {
   QString reason;
-  if (!document_->removeObject(document_->selectedObject(), &reason))
-    statusBar()->showMessage(reason, 5000);
+  // The selected mark, else the selected object.
+  const std::optional<MarkRef> mark = document_->selectedMark();
+  const bool ok = mark ? document_->removeMark(*mark, &reason)
+                       : document_->removeObject(document_->selectedObject(), &reason);
+  if (!ok) statusBar()->showMessage(reason, 5000);
 }
 
 void MainWindow::addRecentFile(const QString& path) {
@@ -578,7 +689,51 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::setLanguage(const QString& code) {
   QSettings().setValue(QStringLiteral("language"), code);
+  installTranslators();
   statusBar()->showMessage(tr("The language changes when Inlay is started again."), 6000);
+}
+
+QAction* MainWindow::toolAction(int tool) const {
+  return tool >= 0 && tool < toolActs_.size() ? toolActs_[tool] : nullptr;
+}
+
+bool MainWindow::offerRecovery() {
+  const std::optional<Autosaver::Recovery> r = Autosaver::pending();
+  if (!r) return false;
+  if (!interactive_) return true;
+  const QString what = r->originalPath.isEmpty() ? tr("a new scene")
+                                                 : QDir::toNativeSeparators(r->originalPath);
+  auto* box = new QMessageBox(
+      QMessageBox::Question, tr("Restore unsaved work?"),
+      tr("Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?")
+          .arg(what, QLocale().toString(r->saved.toLocalTime(), QLocale::ShortFormat)),
+      QMessageBox::NoButton, this);
+  box->setObjectName(QStringLiteral("recoveryQuestion"));
+  QPushButton* restore = box->addButton(tr("&Restore"), QMessageBox::AcceptRole);
+  box->addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+  box->setDefaultButton(restore);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::buttonClicked, this, [this, restore](QAbstractButton* b) {
+    if (b == restore)
+      restoreRecovery();
+    else
+      Autosaver::discard();
+  });
+  box->open();
+  return true;
+}
+
+bool MainWindow::restoreRecovery() {
+  const std::optional<Autosaver::Recovery> r = Autosaver::pending();
+  if (!r) return false;
+  QString error;
+  if (!document_->restoreRecovery(r->scenePath, r->originalPath, &error)) {
+    showError(tr("Cannot restore the unsaved work"), error);
+    return false;
+  }
+  autosaver_->markDirty();
+  statusBar()->showMessage(tr("Restored the unsaved work."), 6000);
+  return true;
 }
 
 bool MainWindow::maybeSave() {
@@ -595,6 +750,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
+  Autosaver::discard();  // saved, or the user chose to discard
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());

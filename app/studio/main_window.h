@@ -16,7 +16,9 @@ class QProgressDialog;
 
 namespace inlay::studio {
 
+class Autosaver;
 class Document;
+class LayersDock;
 class PropertiesDock;
 class RenderController;
 class SceneTreeDock;
@@ -35,7 +37,19 @@ class MainWindow : public QMainWindow {
   Viewport* viewport() const { return viewport_; }
   SceneTreeDock* sceneDock() const { return sceneDock_; }
   PropertiesDock* propertiesDock() const { return propertiesDock_; }
+  LayersDock* layersDock() const { return layersDock_; }
+  Autosaver* autosaver() const { return autosaver_; }
   QMenu* fileMenu() const { return fileMenu_; }
+  QMenu* toolsMenu() const { return toolsMenu_; }
+  // The action that picks a tool of the viewport (Viewport::Tool as int).
+  QAction* toolAction(int tool) const;
+  QAction* acceptBoxAction() const { return acceptBoxAct_; }
+
+  // If a previous run left a recovery file: interactive, asks (non-blocking) whether to
+  // restore it; returns true when there was one. Non-interactive: only returns whether.
+  bool offerRecovery();
+  // Restores the recovery file now (see Autosaver); false when there is none or it is unreadable.
+  bool restoreRecovery();
 
   // Opens a scene file (.json) or a bare photo (anything else). Problems are shown in a
   // (non-blocking) message box; returns false when nothing was opened.
@@ -50,15 +64,22 @@ class MainWindow : public QMainWindow {
   // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear);
   // returns false (after telling the user) on failure.
   bool exportComposite(const QString& path);
+  // Writes the layer the viewport shows (8-bit sRGB: .png, .jpg, .tif) atomically; returns
+  // false (after telling the user) when it does not exist yet or cannot be written.
+  bool exportShownLayer(const QString& path);
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
  public Q_SLOTS:
+  // Stores the language ("" = the system's, "en", "de", "fr") and installs its translators;
+  // windows created from now on use it.
+  void setLanguage(const QString& code);
   void openSceneDialog();
   void openPhotoDialog();
   bool save();
   bool saveAsDialog();
   void exportCompositeDialog();
+  void exportLayerDialog();
   void about();
   // Inserts a builtin mesh ("builtin:sphere", "builtin:cube") standing in the middle of the
   // visible floor; false (with the reason in the status bar) when there is no such place.
@@ -79,7 +100,6 @@ class MainWindow : public QMainWindow {
   void showError(const QString& title, const QString& text);
   void addRecentFile(const QString& path);
   void rebuildRecentMenu();
-  void setLanguage(const QString& code);
   bool maybeSave();
 
   Document* document_;
@@ -87,18 +107,28 @@ class MainWindow : public QMainWindow {
   Viewport* viewport_;
   SceneTreeDock* sceneDock_;
   PropertiesDock* propertiesDock_;
+  LayersDock* layersDock_;
+  Autosaver* autosaver_;
+  bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;
   std::unique_ptr<QTemporaryDir> exampleCopy_;  // the embedded example, unpacked
   bool interactive_ = true;
 
   QMenu* fileMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
+  QMenu* toolsMenu_ = nullptr;
+  QList<QAction*> toolActs_;
+  QAction* acceptBoxAct_ = nullptr;
+  QAction* resetBoxAct_ = nullptr;
+  QAction* prepareAct_ = nullptr;
+  QAction* vanishingAct_ = nullptr;
   QAction* openSceneAct_ = nullptr;
   QAction* openPhotoAct_ = nullptr;
   QAction* openExampleAct_ = nullptr;
   QAction* saveAct_ = nullptr;
   QAction* saveAsAct_ = nullptr;
   QAction* exportAct_ = nullptr;
+  QAction* exportLayerAct_ = nullptr;
   QAction* quitAct_ = nullptr;
   QAction* undoAct_ = nullptr;
   QAction* redoAct_ = nullptr;
@@ -112,6 +142,7 @@ class MainWindow : public QMainWindow {
   QAction* aboutAct_ = nullptr;
 
   QLabel* sppLabel_ = nullptr;
+  QLabel* rateLabel_ = nullptr;
   QLabel* errorLabel_ = nullptr;
   QLabel* timeLabel_ = nullptr;
   QLabel* zoomLabel_ = nullptr;

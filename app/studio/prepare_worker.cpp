@@ -10,6 +10,12 @@ namespace inlay::studio {
 void PrepareWorker::run(quint64 jobId, const SceneDoc& doc, std::shared_ptr<CancelToken> cancel) {
   PrepareResult result;
   result.jobId = jobId;
+  if (cancel->cancelled()) {
+    // Superseded before it started (a drag queues one job per move): no photo loaded for it.
+    result.cancelled = true;
+    Q_EMIT finished(result);
+    return;
+  }
   QElapsedTimer clock;
   clock.start();
 

@@ -4,6 +4,9 @@
 
 #include <QImageReader>
 
+#include <algorithm>
+#include <cstdlib>
+
 namespace inlay::studio {
 
 RenderController::RenderController(Document* document, QObject* parent)
@@ -45,6 +48,9 @@ void RenderController::startScene() {
 }
 
 void RenderController::onDocumentChanged(const ChangeEvent& event) {
+  if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareStarted) ||
+      event.has(ChangeEvent::PrepareFinished))
+    for (CachedLayer& c : layerCache_) c = {};
   if (event.has(ChangeEvent::SceneReplaced)) {
     if (session_) session_->cancel();
     sink_->setContext(nullptr, requestedVersion_ + 1);
@@ -81,10 +87,73 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   }
 }
 
+namespace {
+
+// |a - b| per channel, times `gain`, of two images of one size (8-bit).
+QImage differenceOf(const QImage& a, const QImage& b, int gain) {
+  if (a.size() != b.size() || a.isNull()) return {};
+  const QImage x = a.convertToFormat(QImage::Format_RGB32);
+  const QImage y = b.convertToFormat(QImage::Format_RGB32);
+  QImage out(x.size(), QImage::Format_RGB32);
+  for (int r = 0; r < x.height(); ++r) {
+    const auto* p = reinterpret_cast<const QRgb*>(x.constScanLine(r));
+    const auto* q = reinterpret_cast<const QRgb*>(y.constScanLine(r));
+    auto* o = reinterpret_cast<QRgb*>(out.scanLine(r));
+    for (int c = 0; c < x.width(); ++c) {
+      auto d = [&](int u, int v) { return std::min(255, gain * std::abs(u - v)); };
+      o[c] = qRgb(d(qRed(p[c]), qRed(q[c])), d(qGreen(p[c]), qGreen(q[c])),
+                  d(qBlue(p[c]), qBlue(q[c])));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+QImage RenderController::layerImage(Layer layer) {
+  const PreparedScene* prepared = document_->prepared();
+  const RenderFrame* frame = composite_.frame.get();
+  const double exposure = prepared ? prepared->doc.render.exposure : 0.0;
+  // The source each layer is made from; its address is the cache key (a new prepared scene
+  // or frame is a new object).
+  const void* source = nullptr;
+  switch (layer) {
+    case Layer::Composite: return compositeImage();
+    case Layer::Photo: return photoImage();
+    case Layer::Albedo:
+    case Layer::DirectLight: source = prepared ? &prepared->lighting : nullptr; break;
+    case Layer::WithObjects:
+    case Layer::WithoutObjects:
+    case Layer::Mask:
+    case Layer::Difference: source = frame; break;
+  }
+  if (!source) return {};
+  CachedLayer& cached = layerCache_[int(layer)];
+  if (cached.source == source && !cached.image.isNull()) return cached.image;
+  QImage image;
+  switch (layer) {
+    case Layer::Albedo:
+      // Reflectance is shown as is (exposure does not apply to it).
+      image = srgb8FromLinear(prepared->lighting.albedo, 0.0);
+      break;
+    case Layer::DirectLight: image = srgb8FromLinear(prepared->lighting.direct, exposure); break;
+    case Layer::WithObjects: image = srgb8FromLinear(frame->withObjects, exposure); break;
+    case Layer::WithoutObjects: image = srgb8FromLinear(frame->withoutObjects, exposure); break;
+    case Layer::Mask: image = srgb8FromLinear(frame->mask, 0.0); break;
+    case Layer::Difference: image = differenceOf(compositeImage(), photoImage(), 4); break;
+    default: break;
+  }
+  cached = {source, image};
+  return image;
+}
+
 void RenderController::takeFrame() {
   std::optional<CompositeImage> image = sink_->take();
   if (!image || image->sceneVersion < requestedVersion_) return;
   composite_ = std::move(*image);
+  // A freed frame's address may come back for a new one: the cache forgets frame layers here.
+  for (Layer l : {Layer::WithObjects, Layer::WithoutObjects, Layer::Mask, Layer::Difference})
+    layerCache_[int(l)] = {};
   Q_EMIT frameUpdated();
 }
 

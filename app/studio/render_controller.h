@@ -20,6 +20,20 @@
 
 namespace inlay::studio {
 
+// What the viewport can show (the Layers dock). Each is a view of the document's prepared scene
+// or of the newest render frame.
+enum class Layer {
+  Composite,       // the differential composite (the result)
+  Photo,           // the photo alone (also the "before" view)
+  Albedo,          // the reflectance the lighting stage decomposed the photo into
+  DirectLight,     // the direct light of that decomposition
+  WithObjects,     // the render of the room with the objects
+  WithoutObjects,  // the render of the room alone
+  Mask,            // where the objects cover the photo
+  Difference,      // |composite - photo|, amplified 4x
+};
+constexpr int kLayerCount = 8;
+
 class RenderController : public QObject {
   Q_OBJECT
 
@@ -41,6 +55,10 @@ class RenderController : public QObject {
   quint64 requestedVersion() const { return requestedVersion_; }
   // True when the shown composite belongs to the newest request.
   bool isCurrent() const { return hasFrame() && composite_.sceneVersion >= requestedVersion_; }
+  // The image of `layer` (8-bit sRGB, the photo's size), null when its source does not exist
+  // yet (nothing prepared, or no frame). Converted on the GUI thread on first use and cached
+  // until its source changes.
+  QImage layerImage(Layer layer);
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -56,6 +74,12 @@ class RenderController : public QObject {
   CompositeImage composite_;
   QImage photo_;
   quint64 requestedVersion_ = 0;
+  // layerImage()'s cache: per layer, the source it was made from.
+  struct CachedLayer {
+    const void* source = nullptr;
+    QImage image;
+  };
+  CachedLayer layerCache_[kLayerCount];
   // Declared before session_: the session (and its thread) must go first.
   std::unique_ptr<CompositeSink> sink_;
   std::unique_ptr<RenderSession> session_;

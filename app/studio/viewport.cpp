@@ -1,8 +1,8 @@
 #include "viewport.h"
 
 #include "document.h"
-#include "render_controller.h"
 
+#include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -25,9 +25,36 @@ QColor srgbColour(const Vec3& linear) {
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
 }
 
+// The part of segment ab inside `r` (Liang-Barsky); false when none is. A line toward a
+// vanishing point far outside the widget would otherwise be dashed along its whole length on
+// every paint.
+bool clipToRect(QPointF& a, QPointF& b, const QRectF& r) {
+  double t0 = 0, t1 = 1;
+  const QPointF d = b - a;
+  const double p[4] = {-d.x(), d.x(), -d.y(), d.y()};
+  const double q[4] = {a.x() - r.left(), r.right() - a.x(), a.y() - r.top(), r.bottom() - a.y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  const QPointF a0 = a;
+  a = a0 + d * t0;
+  b = a0 + d * t1;
+  return true;
+}
+
 // A line with a dark halo so it reads on any photo.
-void haloLine(QPainter& p, const QPointF& a, const QPointF& b, const QColor& colour,
-              double width = 1.5, Qt::PenStyle style = Qt::SolidLine) {
+void haloLine(QPainter& p, QPointF a, QPointF b, const QColor& colour, double width = 1.5,
+              Qt::PenStyle style = Qt::SolidLine) {
+  if (!clipToRect(a, b, QRectF(p.viewport()).adjusted(-8, -8, 8, 8))) return;
   p.setPen(QPen(QColor(0, 0, 0, 150), width + 2.0, Qt::SolidLine, Qt::RoundCap));
   p.drawLine(a, b);
   p.setPen(QPen(colour, width, style, Qt::RoundCap));
@@ -53,6 +80,23 @@ void labelAt(QPainter& p, const QPointF& at, const QString& text, const QColor& 
   p.drawText(placed, Qt::AlignCenter, text);
 }
 
+// Distance from p to the segment ab.
+double distanceToSegment(const QPointF& p, const QPointF& a, const QPointF& b) {
+  const QPointF d = b - a;
+  const double len2 = d.x() * d.x() + d.y() * d.y();
+  const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(p - a, d) / len2, 0.0, 1.0) : 0.0;
+  const QPointF q = a + d * t - p;
+  return std::hypot(q.x(), q.y());
+}
+
+// Whether p is inside `poly` (closed) or within `radius` of its edges (open: of its polyline).
+bool nearPolygon(const QPolygonF& poly, const QPointF& p, double radius, bool closed) {
+  if (closed && poly.size() >= 3 && poly.containsPoint(p, Qt::OddEvenFill)) return true;
+  for (int i = 0; i + 1 < poly.size() + (closed ? 1 : 0); ++i)
+    if (distanceToSegment(p, poly[i], poly[(i + 1) % poly.size()]) <= radius) return true;
+  return poly.size() == 1 && distanceToSegment(p, poly[0], poly[0]) <= radius;
+}
+
 }  // namespace
 
 Viewport::Viewport(Document* document, RenderController* renderer, QWidget* parent)
@@ -70,6 +114,11 @@ Viewport::Viewport(Document* document, RenderController* renderer, QWidget* pare
     if (e.has(ChangeEvent::SceneReplaced) || e.has(ChangeEvent::ObjectsAddedOrRemoved)) {
       dragObject_ = -1;  // indices may have shifted
       hoverObject_ = -1;
+    }
+    if (e.has(ChangeEvent::SceneReplaced)) {
+      dragCorner_ = -1;
+      currentOccluder_ = -1;
+      cancelToolInput();
     }
     repaint();
   });
@@ -148,66 +197,231 @@ int Viewport::objectAt(const QPointF& widgetPos) const {
   return best;
 }
 
-void Viewport::paintEvent(QPaintEvent*) {
-  QPainter p(this);
-  p.fillRect(rect(), QColor(45, 45, 48));
-  const SceneDoc& doc = document_->scene();
-  const PreparedScene* prepared = document_->prepared();
-
-  // --- The image ---
-  const QImage& image = (showBefore_ || !renderer_->hasFrame()) ? renderer_->photoImage()
-                                                                 : renderer_->compositeImage();
-  const QSize imgSize = imageSize();
-  if (!image.isNull()) {
-    const QRectF target(offset_, QSizeF(imgSize.width() * scale_, imgSize.height() * scale_));
-    const qreal dpr = devicePixelRatioF();
-    const QSize screenSize = (target.size() * dpr).toSize();  // device pixels
-    if (scale_ * dpr < 1.0 && !screenSize.isEmpty()) {
-      if (image.cacheKey() != scaledKey_ || scaledImage_.size() != screenSize) {
-        scaledImage_ = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-        scaledKey_ = image.cacheKey();
-      }
-      p.drawImage(target, scaledImage_, QRectF(scaledImage_.rect()));
-    } else {
-      p.drawImage(target, image, QRectF(image.rect()));  // magnified: nearest, pixels visible
+int Viewport::cornerAt(const QPointF& widgetPos) const {
+  const std::optional<std::array<Vec2, 4>> corners = document_->shownBackWallPx();
+  if (!corners) return -1;
+  int best = -1;
+  double bestDist = kPickRadiusPx;
+  for (int i = 0; i < 4; ++i) {
+    const QPointF d = widgetFromImage((*corners)[size_t(i)]) - widgetPos;
+    const double dist = std::hypot(d.x(), d.y());
+    if (dist <= bestDist) {
+      bestDist = dist;
+      best = i;
     }
   }
-  p.setRenderHint(QPainter::Antialiasing);
+  return best;
+}
 
-  // --- The room: back wall quad and the edges receding toward the camera ---
+std::optional<MarkRef> Viewport::markAt(const QPointF& widgetPos) const {
+  const SceneDoc& doc = document_->scene();
+  auto polygonOf = [this](const std::vector<Vec2>& points) {
+    QPolygonF poly;
+    for (const Vec2& q : points) poly << widgetFromImage(q);
+    return poly;
+  };
+  auto rectOf = [this](const std::array<double, 4>& b) {
+    return QRectF(widgetFromImage(Vec2(b[0], b[1])), widgetFromImage(Vec2(b[2], b[3]))).normalized();
+  };
+  for (size_t i = 0; i < doc.lights.size(); ++i)
+    if (doc.lights[i].kind == LightKeys::Kind::PolygonPx &&
+        nearPolygon(polygonOf(doc.lights[i].pointsPx), widgetPos, kPickRadiusPx, true))
+      return MarkRef{MarkKind::Light, int(i)};
+  for (size_t i = 0; i < doc.shafts.size(); ++i) {
+    const ShaftKeys& s = doc.shafts[i];
+    if ((s.shaftBoxPx && rectOf(*s.shaftBoxPx).contains(widgetPos)) ||
+        (s.sourceBoxPx && rectOf(*s.sourceBoxPx).contains(widgetPos)))
+      return MarkRef{MarkKind::Shaft, int(i)};
+  }
+  for (size_t i = 0; i < doc.surfaces.size(); ++i)
+    if (nearPolygon(polygonOf(doc.surfaces[i].outlinePx), widgetPos, kPickRadiusPx, true))
+      return MarkRef{MarkKind::Surface, int(i)};
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const OccluderKeys& o = doc.occluders[i];
+    for (const auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
+      for (const auto& stroke : *strokes)
+        if (nearPolygon(polygonOf(stroke), widgetPos, kPickRadiusPx, false))
+          return MarkRef{MarkKind::Occluder, int(i)};
+  }
+  return std::nullopt;
+}
+
+void Viewport::setLayer(Layer layer) {
+  if (layer_ == layer) return;
+  layer_ = layer;
+  update();
+}
+
+void Viewport::setShowVanishingLines(bool show) {
+  if (showVanishing_ == show) return;
+  showVanishing_ = show;
+  update();
+}
+
+void Viewport::setTool(Tool tool) {
+  cancelToolInput();
+  currentOccluder_ = -1;
+  tool_ = tool;
+  setCursor(tool == Tool::Select ? Qt::ArrowCursor : Qt::CrossCursor);
+  Q_EMIT statusMessage(toolHint());
+  update();
+}
+
+QString Viewport::toolHint() const {
+  switch (tool_) {
+    case Tool::Select:
+      return tr("Drag an object or a corner of the back wall.");
+    case Tool::Light:
+      return tr("Click around a light; click the first point (or press Enter) to close.");
+    case Tool::Shaft:
+      return shaftBox_ ? tr("Now drag a box around the window the sunlight comes through.")
+                       : tr("Drag a box around the patch of sunlight.");
+    case Tool::Surface:
+      return awaitingHeightClick_
+                 ? tr("Click the floor straight below the first point of the outline.")
+                 : tr("Click around the top of a table or step; click the first point to close.");
+    case Tool::Occluder:
+      return tr("Left drag over the thing in front, right drag over what is behind it; Enter "
+                "starts another occluder.");
+  }
+  return {};
+}
+
+const QImage& Viewport::shownImage() {
+  if (showBefore_ || (layer_ == Layer::Composite && !renderer_->hasFrame()) ||
+      layer_ == Layer::Photo)
+    return renderer_->photoImage();
+  if (layer_ == Layer::Composite) return renderer_->compositeImage();
+  layerImage_ = renderer_->layerImage(layer_);
+  return layerImage_.isNull() ? renderer_->photoImage() : layerImage_;
+}
+
+void Viewport::paintEvent(QPaintEvent*) {
+  QElapsedTimer clock;
+  clock.start();
+  QPainter p(this);
+  p.fillRect(rect(), QColor(45, 45, 48));
+  paintImage(p);
+  p.setRenderHint(QPainter::Antialiasing);
+  paintRoom(p);
+  if (showVanishing_) paintVanishingLines(p);
+  paintMarks(p);
+  paintObjects(p);
+  paintToolInput(p);
+  if (loupeShown()) paintLoupe(p);
+  paintStatus(p);
+  paintTimesMs_.push_back(double(clock.nsecsElapsed()) * 1e-6);
+  if (paintTimesMs_.size() > 10000) paintTimesMs_.erase(paintTimesMs_.begin());
+}
+
+void Viewport::paintImage(QPainter& p) {
+  const QImage& image = shownImage();
+  const QSize imgSize = imageSize();
+  if (image.isNull()) return;
+  const QRectF target(offset_, QSizeF(imgSize.width() * scale_, imgSize.height() * scale_));
+  const qreal dpr = devicePixelRatioF();
+  const QSize screenSize = (target.size() * dpr).toSize();  // device pixels
+  if (scale_ * dpr < 1.0 && !screenSize.isEmpty()) {
+    if (image.cacheKey() != scaledKey_ || scaledImage_.size() != screenSize) {
+      scaledImage_ = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+      scaledKey_ = image.cacheKey();
+    }
+    p.drawImage(target, scaledImage_, QRectF(scaledImage_.rect()));
+  } else {
+    p.drawImage(target, image, QRectF(image.rect()));  // magnified: nearest, pixels visible
+  }
+}
+
+void Viewport::paintRoom(QPainter& p) {
+  const PreparedScene* prepared = document_->prepared();
   const QColor roomColour(90, 200, 255);
-  std::optional<std::array<Vec2, 4>> wall;
-  if (prepared)
-    wall = backWallCornersPx(prepared->camera, prepared->box);
-  else
-    wall = doc.layout.backWallPx;
-  if (wall) {
+  // The corners as the document has them (the user's fix or the estimate); the edges receding
+  // toward the camera only once the box is prepared.
+  if (const std::optional<std::array<Vec2, 4>> wall = document_->shownBackWallPx()) {
+    const bool users = document_->backWallIsUsers();
     QPolygonF quad;
     for (const Vec2& c : *wall) quad << widgetFromImage(c);
-    haloPolygon(p, quad, roomColour, 1.5);
+    haloPolygon(p, quad, roomColour, 1.5, users ? Qt::SolidLine : Qt::DashLine);
+    for (int i = 0; i < 4; ++i) {
+      const bool hot = i == hoverCorner_ || i == dragCorner_;
+      const double r = hot ? 6.0 : 4.5;
+      p.setPen(QPen(QColor(0, 0, 0, 180), 3.0));
+      p.setBrush(Qt::NoBrush);
+      p.drawRect(QRectF(quad[i] - QPointF(r, r), QSizeF(2 * r, 2 * r)));
+      p.setPen(QPen(roomColour, 1.5));
+      p.setBrush(users ? roomColour : QColor(0, 0, 0, 120));
+      p.drawRect(QRectF(quad[i] - QPointF(r, r), QSizeF(2 * r, 2 * r)));
+    }
+    labelAt(p, quad[0], users ? tr("Back wall (yours)") : tr("Back wall (estimated)"), roomColour);
   }
-  if (prepared) {
-    const Camera& cam = prepared->camera;
-    const RoomBox& box = prepared->box;
-    const double xs[2] = {box.xLeftM, box.xRightM};
-    const double ys[2] = {0.0, box.ceilingM};
-    for (double x : xs)
-      for (double y : ys) {
-        const Vec3 back(x, y, box.zBackM);
-        const std::optional<Vec2> a = cam.project(back);
-        if (!a) continue;
-        // Walk toward the camera while the point stays well in front of it.
-        std::optional<Vec2> b;
-        for (int k = 1; k <= 32; ++k) {
-          const Vec3 q(x, y, box.zBackM + (box.zRearM - box.zBackM) * k / 32.0);
-          if (cam.depthOf(q) < 0.2) break;
-          b = cam.project(q);
-        }
-        if (b) haloLine(p, widgetFromImage(*a), widgetFromImage(*b), roomColour, 1.0, Qt::DashLine);
+  if (!prepared) return;
+  const Camera& cam = prepared->camera;
+  const RoomBox& box = prepared->box;
+  const double xs[2] = {box.xLeftM, box.xRightM};
+  const double ys[2] = {0.0, box.ceilingM};
+  for (double x : xs)
+    for (double y : ys) {
+      const Vec3 back(x, y, box.zBackM);
+      const std::optional<Vec2> a = cam.project(back);
+      if (!a) continue;
+      // Walk toward the camera while the point stays well in front of it.
+      std::optional<Vec2> b;
+      for (int k = 1; k <= 32; ++k) {
+        const Vec3 q(x, y, box.zBackM + (box.zRearM - box.zBackM) * k / 32.0);
+        if (cam.depthOf(q) < 0.2) break;
+        b = cam.project(q);
       }
-  }
+      if (b) haloLine(p, widgetFromImage(*a), widgetFromImage(*b), roomColour, 1.0, Qt::DashLine);
+    }
+}
 
-  // --- Lights ---
+void Viewport::paintVanishingLines(QPainter& p) {
+  const CameraEstimate* e = document_->lastEstimate();
+  if (!e) return;
+  const QColor family[3] = {QColor(255, 90, 90), QColor(90, 230, 90), QColor(110, 150, 255)};
+  // Every supporting segment in its family's colour, thin.
+  std::array<std::vector<const LineSegment*>, 3> byFamily;
+  for (const LineSegment& s : e->segments) {
+    if (s.family < 0 || s.family > 2) continue;
+    byFamily[size_t(s.family)].push_back(&s);
+    p.setPen(QPen(family[s.family], 1.2));
+    p.drawLine(widgetFromImage(s.aPx), widgetFromImage(s.bPx));
+  }
+  // The two longest of each family extended toward their vanishing point: the pair that shows
+  // where it is, with each one's residual.
+  for (int f = 0; f < 3; ++f) {
+    auto& list = byFamily[size_t(f)];
+    std::partial_sort(list.begin(), list.begin() + std::min<size_t>(2, list.size()), list.end(),
+                      [](const LineSegment* a, const LineSegment* b) {
+                        return a->lengthPx() > b->lengthPx();
+                      });
+    const Vec3& h = e->vanishingPoints[size_t(f)].homogeneousPx;
+    for (size_t k = 0; k < std::min<size_t>(2, list.size()); ++k) {
+      const LineSegment& s = *list[k];
+      const Vec2 mid = 0.5 * (s.aPx + s.bPx);
+      Vec2 toward;
+      if (std::abs(h.z()) > 1e-9) {
+        toward = Vec2(h.x() / h.z(), h.y() / h.z());
+      } else {  // at infinity: a long way along its direction
+        Vec2 d(h.x(), h.y());
+        if (d.norm() < 1e-12) continue;
+        toward = mid + d.normalized() * 4.0 * (imageSize().width() + imageSize().height());
+      }
+      haloLine(p, widgetFromImage(mid), widgetFromImage(toward), family[f], 1.0, Qt::DashLine);
+      labelAt(p, widgetFromImage(s.bPx), tr("%1 px").arg(s.residualPx, 0, 'f', 2), family[f]);
+    }
+  }
+}
+
+void Viewport::paintMarks(QPainter& p) {
+  const SceneDoc& doc = document_->scene();
+  const PreparedScene* prepared = document_->prepared();
+  const std::optional<MarkRef> selected = document_->selectedMark();
+  // The selected mark is drawn wider.
+  auto width = [&](MarkKind kind, size_t i) {
+    return selected && *selected == MarkRef{kind, int(i)} ? 3.5 : 1.5;
+  };
+  // Lights.
   const QColor lightColour(255, 220, 80);
   for (size_t i = 0; i < doc.lights.size(); ++i) {
     const LightKeys& light = doc.lights[i];
@@ -220,12 +434,58 @@ void Viewport::paintEvent(QPaintEvent*) {
       if (poly.size() != 4) poly.clear();  // partly behind the camera: not drawn
     }
     if (poly.size() < 2) continue;
-    haloPolygon(p, poly, lightColour, 1.5,
+    haloPolygon(p, poly, lightColour, width(MarkKind::Light, i),
                 light.kind == LightKeys::Kind::PolygonPx ? Qt::SolidLine : Qt::DashLine);
     labelAt(p, poly.boundingRect().topRight(), tr("Light %1").arg(i + 1), lightColour);
   }
+  // Shafts: the lit patch's box, the source's box, an arrow from the source to the patch.
+  const QColor shaftColour(255, 170, 60);
+  auto boxRect = [this](const std::array<double, 4>& b) {
+    return QRectF(widgetFromImage(Vec2(b[0], b[1])), widgetFromImage(Vec2(b[2], b[3])));
+  };
+  for (size_t i = 0; i < doc.shafts.size(); ++i) {
+    const ShaftKeys& s = doc.shafts[i];
+    if (!s.shaftBoxPx || !s.sourceBoxPx) continue;
+    const QRectF patch = boxRect(*s.shaftBoxPx), source = boxRect(*s.sourceBoxPx);
+    haloPolygon(p, QPolygonF(patch), shaftColour, width(MarkKind::Shaft, i));
+    haloPolygon(p, QPolygonF(source), shaftColour, width(MarkKind::Shaft, i), Qt::DashLine);
+    haloLine(p, source.center(), patch.center(), shaftColour, 1.0, Qt::DotLine);
+    labelAt(p, patch.topRight(), tr("Shaft %1").arg(i + 1), shaftColour);
+  }
+  // Surfaces: the top's outline and the height click below its first point.
+  const QColor surfaceColour(120, 255, 200);
+  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+    const SurfaceKeys& s = doc.surfaces[i];
+    if (s.outlinePx.empty()) continue;
+    QPolygonF poly;
+    for (const Vec2& q : s.outlinePx) poly << widgetFromImage(q);
+    haloPolygon(p, poly, surfaceColour, width(MarkKind::Surface, i));
+    const QPointF click = widgetFromImage(s.heightClickPx);
+    haloLine(p, poly[0], click, surfaceColour, 1.0, Qt::DashLine);
+    p.setPen(QPen(QColor(0, 0, 0, 180), 3.0));
+    p.setBrush(surfaceColour);
+    p.drawEllipse(click, 3.5, 3.5);
+    labelAt(p, poly.boundingRect().topRight(), tr("Surface %1").arg(i + 1), surfaceColour);
+  }
+  // Occluders: foreground strokes green, background strokes red.
+  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+    const double w = 1.5 + width(MarkKind::Occluder, i);
+    const OccluderKeys& o = doc.occluders[i];
+    for (const auto& [strokes, colour] :
+         {std::pair{&o.foregroundScribblesPx, QColor(60, 230, 90, 220)},
+          std::pair{&o.backgroundScribblesPx, QColor(240, 70, 70, 220)}})
+      for (const auto& stroke : *strokes) {
+        QPolygonF line;
+        for (const Vec2& q : stroke) line << widgetFromImage(q);
+        p.setPen(QPen(colour, w, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolyline(line);
+      }
+  }
+}
 
-  // --- Objects: base marker, height line, facing arrow ---
+void Viewport::paintObjects(QPainter& p) {
+  const SceneDoc& doc = document_->scene();
+  const PreparedScene* prepared = document_->prepared();
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];
     const QPointF base = widgetFromImage(o.basePx);
@@ -267,8 +527,86 @@ void Viewport::paintEvent(QPaintEvent*) {
     p.drawLine(base + QPointF(0, r), base + QPointF(0, r + 4));
     labelAt(p, base, QString::number(i + 1), accent);
   }
+}
 
-  // --- State of the document ---
+void Viewport::paintToolInput(QPainter& p) {
+  const QColor colour(255, 255, 255);
+  if (!toolPoints_.empty()) {
+    QPolygonF line;
+    for (const Vec2& q : toolPoints_) line << widgetFromImage(q);
+    if (awaitingHeightClick_) {
+      haloPolygon(p, line, colour, 1.5);
+      haloLine(p, line[0], cursorPos_, colour, 1.0, Qt::DashLine);
+    } else {
+      line << cursorPos_;
+      p.setBrush(Qt::NoBrush);
+      p.setPen(QPen(QColor(0, 0, 0, 150), 3.5));
+      p.drawPolyline(line);
+      p.setPen(QPen(colour, 1.5, Qt::DashLine));
+      p.drawPolyline(line);
+    }
+    for (const Vec2& q : toolPoints_) {
+      p.setPen(QPen(QColor(0, 0, 0, 180), 3.0));
+      p.setBrush(colour);
+      p.drawEllipse(widgetFromImage(q), 3.0, 3.0);
+    }
+  }
+  auto rectOf = [this](const Vec2& a, const Vec2& b) {
+    return QRectF(widgetFromImage(a), widgetFromImage(b)).normalized();
+  };
+  if (shaftBox_)
+    haloPolygon(p, QPolygonF(QRectF(widgetFromImage(Vec2(shaftBox_->left(), shaftBox_->top())),
+                                    widgetFromImage(Vec2(shaftBox_->right(), shaftBox_->bottom())))),
+                QColor(255, 170, 60), 1.5);
+  if (rubberFrom_) haloPolygon(p, QPolygonF(rectOf(*rubberFrom_, rubberTo_)), colour, 1.0, Qt::DashLine);
+  auto drawStrokes = [&](const std::vector<std::vector<Vec2>>& strokes, const QColor& c) {
+    for (const auto& s : strokes) {
+      QPolygonF line;
+      for (const Vec2& q : s) line << widgetFromImage(q);
+      p.setPen(QPen(c, 3.0, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
+      p.drawPolyline(line);
+    }
+  };
+  drawStrokes(pendingOccluder_.foregroundScribblesPx, QColor(60, 230, 90));
+  drawStrokes(pendingOccluder_.backgroundScribblesPx, QColor(240, 70, 70));
+  if (stroking_) drawStrokes({stroke_}, strokeForeground_ ? QColor(60, 230, 90) : QColor(240, 70, 70));
+}
+
+void Viewport::paintLoupe(QPainter& p) {
+  // The photo (not the composite: the corner goes where the photo's edges meet) around the
+  // cursor, magnified, with the corner's crosshair.
+  const QImage& photo = renderer_->photoImage();
+  if (photo.isNull()) return;
+  const double r = kLoupeRadiusPx;
+  const double zoom = std::max(2.0, scale_ * kLoupeZoom);  // widget px per image px in the loupe
+  const std::optional<std::array<Vec2, 4>> corners = document_->shownBackWallPx();
+  const Vec2 centre = corners && dragCorner_ >= 0 ? (*corners)[size_t(dragCorner_)]
+                                                  : imageFromWidget(cursorPos_);
+  // Placed above-left of the cursor, or below-right when that leaves the widget.
+  QPointF at = cursorPos_ + QPointF(-r - 30, -r - 30);
+  if (at.x() - r < 0 || at.y() - r < 0) at = cursorPos_ + QPointF(r + 30, r + 30);
+  const QRectF circle(at - QPointF(r, r), QSizeF(2 * r, 2 * r));
+  const double half = r / zoom;  // image pixels from the centre to the loupe's edge
+  const QRectF source(centre.x() - half, centre.y() - half, 2 * half, 2 * half);
+  p.save();
+  QPainterPath clip;
+  clip.addEllipse(circle);
+  p.setClipPath(clip);
+  p.fillRect(circle, QColor(30, 30, 30));
+  p.setRenderHint(QPainter::SmoothPixmapTransform, false);
+  p.drawImage(circle, photo, source);
+  p.setClipping(false);
+  p.setPen(QPen(QColor(0, 0, 0, 200), 4.0));
+  p.setBrush(Qt::NoBrush);
+  p.drawEllipse(circle);
+  p.setPen(QPen(QColor(90, 200, 255), 2.0));
+  p.drawEllipse(circle);
+  haloLine(p, at - QPointF(12, 0), at + QPointF(12, 0), QColor(255, 255, 255), 1.0);
+  haloLine(p, at - QPointF(0, 12), at + QPointF(0, 12), QColor(255, 255, 255), 1.0);
+  p.restore();
+}
+
+void Viewport::paintStatus(QPainter& p) {
   QString banner;
   QColor bannerColour(255, 255, 255);
   switch (document_->state()) {
@@ -280,32 +618,130 @@ void Viewport::paintEvent(QPaintEvent*) {
       bannerColour = QColor(255, 140, 140);
       break;
     case Document::State::Empty:
-      if (imgSize.isEmpty()) banner = tr("Open a scene or a photo (File menu).");
+      if (imageSize().isEmpty()) banner = tr("Open a scene or a photo (File menu).");
       break;
     case Document::State::Ready:
       if (showBefore_) banner = tr("Before: the photo without objects");
       break;
   }
-  if (!banner.isEmpty()) {
-    const QRectF area = QRectF(rect()).adjusted(10, 10, -10, -10);
-    const QRectF box =
-        p.fontMetrics().boundingRect(area.toRect(), Qt::TextWordWrap, banner).adjusted(-6, -4, 6, 4);
+  auto box = [&](const QRectF& area, const QString& text, const QColor& colour, int flags) {
+    const QRectF r =
+        p.fontMetrics().boundingRect(area.toRect(), flags | Qt::TextWordWrap, text).adjusted(-6, -4, 6, 4);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 170));
-    p.drawRoundedRect(box.translated(6, 4), 4, 4);
-    p.setPen(bannerColour);
-    p.drawText(area, Qt::TextWordWrap, banner);
-  }
+    p.drawRoundedRect(r, 4, 4);
+    p.setPen(colour);
+    p.drawText(area, flags | Qt::TextWordWrap, text);
+  };
+  const QRectF area = QRectF(rect()).adjusted(10, 10, -10, -10);
+  if (!banner.isEmpty()) box(area, banner, bannerColour, Qt::AlignLeft | Qt::AlignTop);
+  // The estimate's confidences and warnings, bottom left.
+  const CameraEstimate* e = showVanishing_ ? document_->lastEstimate() : nullptr;
+  if (!e) return;
+  QStringList lines;
+  lines << tr("Vanishing points: x %1, y %2, z %3 (confidence)")
+               .arg(e->confidence[0], 0, 'f', 2)
+               .arg(e->confidence[1], 0, 'f', 2)
+               .arg(e->confidence[2], 0, 'f', 2);
+  lines << tr("Focal length %1 px (%2–%3 px)")
+               .arg(e->camera.focalPx, 0, 'f', 0)
+               .arg(e->focalMinPx, 0, 'f', 0)
+               .arg(e->focalMaxPx, 0, 'f', 0);
+  for (const std::string& w : e->warnings) lines << QString::fromStdString(w);
+  const bool weak = e->overallConfidence < 0.5 || !e->manhattan;
+  box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
+      Qt::AlignLeft | Qt::AlignBottom);
 }
 
-void Viewport::mousePressEvent(QMouseEvent* event) {
-  if (event->button() == Qt::MiddleButton) {
-    panning_ = true;
-    lastPanPos_ = event->position();
-    setCursor(Qt::ClosedHandCursor);
+// ---------------------------------------------------------------- input
+
+void Viewport::report(bool ok, const QString& reason) {
+  Q_EMIT statusMessage(ok ? toolHint() : reason);
+}
+
+void Viewport::cancelToolInput() {
+  toolPoints_.clear();
+  awaitingHeightClick_ = false;
+  shaftBox_.reset();
+  rubberFrom_.reset();
+  stroke_.clear();
+  stroking_ = false;
+  pendingOccluder_ = {};
+  update();
+}
+
+void Viewport::commitToolInput() {
+  if ((tool_ == Tool::Light || tool_ == Tool::Surface) && !awaitingHeightClick_)
+    closeOutline();
+  else if (tool_ == Tool::Occluder) {
+    currentOccluder_ = -1;
+    pendingOccluder_ = {};
+    Q_EMIT statusMessage(toolHint());
+  }
+  update();
+}
+
+void Viewport::closeOutline() {
+  if (toolPoints_.size() < 3) {
+    Q_EMIT statusMessage(tr("An outline needs at least three points."));
     return;
   }
-  if (event->button() != Qt::LeftButton) return;
+  if (tool_ == Tool::Light) {
+    QString reason;
+    const bool ok = document_->addLight(toolPoints_, &reason);
+    toolPoints_.clear();
+    report(ok, reason);
+  } else {
+    awaitingHeightClick_ = true;
+    Q_EMIT statusMessage(toolHint());
+  }
+  update();
+}
+
+void Viewport::addOutlinePoint(const QPointF& widgetPos) {
+  const Vec2 px = imageFromWidget(widgetPos);
+  if (awaitingHeightClick_) {
+    QString reason;
+    const bool ok = document_->addExtrusion(toolPoints_, px, &reason);
+    toolPoints_.clear();
+    awaitingHeightClick_ = false;
+    report(ok, reason);
+    update();
+    return;
+  }
+  if (toolPoints_.size() >= 3) {
+    const QPointF d = widgetFromImage(toolPoints_.front()) - widgetPos;
+    if (std::hypot(d.x(), d.y()) <= kPickRadiusPx) return closeOutline();
+  }
+  toolPoints_.push_back(px);
+  update();
+}
+
+void Viewport::finishStroke() {
+  stroking_ = false;
+  if (stroke_.empty()) return;
+  std::vector<Vec2> stroke = std::move(stroke_);
+  stroke_.clear();
+  QString reason;
+  bool ok = true;
+  if (currentOccluder_ >= 0 && currentOccluder_ < int(document_->scene().occluders.size())) {
+    ok = document_->addOccluderStroke(currentOccluder_, strokeForeground_, stroke, &reason);
+  } else {
+    (strokeForeground_ ? pendingOccluder_.foregroundScribblesPx
+                       : pendingOccluder_.backgroundScribblesPx)
+        .push_back(std::move(stroke));
+    if (!pendingOccluder_.foregroundScribblesPx.empty() &&
+        !pendingOccluder_.backgroundScribblesPx.empty()) {
+      ok = document_->addOccluder(pendingOccluder_, &reason);
+      if (ok) currentOccluder_ = int(document_->scene().occluders.size()) - 1;
+      pendingOccluder_ = {};
+    }
+  }
+  report(ok, reason);
+  update();
+}
+
+void Viewport::pressSelect(QMouseEvent* event) {
   const int hit = objectAt(event->position());
   document_->setSelectedObject(hit);
   if (hit >= 0) {
@@ -313,11 +749,54 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     dragId_ = Document::newDragId();
     dragGrabPx_ = document_->scene().objects[size_t(hit)].basePx - imageFromWidget(event->position());
     setCursor(Qt::SizeAllCursor);
+    return;
+  }
+  const int corner = cornerAt(event->position());
+  if (corner >= 0) {
+    dragCorner_ = corner;
+    dragId_ = Document::newDragId();
+    dragGrabPx_ = (*document_->shownBackWallPx())[size_t(corner)] - imageFromWidget(event->position());
+    setCursor(Qt::BlankCursor);  // the loupe's crosshair shows the point
+    return;
+  }
+  document_->setSelectedMark(markAt(event->position()));
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+  cursorPos_ = event->position();
+  if (event->button() == Qt::MiddleButton) {
+    panning_ = true;
+    lastPanPos_ = event->position();
+    setCursor(Qt::ClosedHandCursor);
+    return;
+  }
+  switch (tool_) {
+    case Tool::Select:
+      if (event->button() == Qt::LeftButton) pressSelect(event);
+      break;
+    case Tool::Light:
+    case Tool::Surface:
+      if (event->button() == Qt::LeftButton) addOutlinePoint(event->position());
+      break;
+    case Tool::Shaft:
+      if (event->button() == Qt::LeftButton) {
+        rubberFrom_ = imageFromWidget(event->position());
+        rubberTo_ = *rubberFrom_;
+      }
+      break;
+    case Tool::Occluder:
+      if (event->button() == Qt::LeftButton || event->button() == Qt::RightButton) {
+        stroking_ = true;
+        strokeForeground_ = event->button() == Qt::LeftButton;
+        stroke_ = {imageFromWidget(event->position())};
+      }
+      break;
   }
   update();
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
+  cursorPos_ = event->position();
   if (panning_) {
     offset_ += event->position() - lastPanPos_;
     lastPanPos_ = event->position();
@@ -325,41 +804,100 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     update();
     return;
   }
+  const Vec2 px = imageFromWidget(event->position());
   if (dragObject_ >= 0) {
     if (dragObject_ >= document_->objectCount()) {
       dragObject_ = -1;
       return;
     }
-    const Vec2 target = imageFromWidget(event->position()) + dragGrabPx_;
     QString reason;
-    if (document_->moveObject(dragObject_, target, dragId_, &reason))
+    if (document_->moveObject(dragObject_, px + dragGrabPx_, dragId_, &reason))
       Q_EMIT statusMessage(QString());
     else
       Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
     return;
   }
-  const int hover = objectAt(event->position());
-  if (hover != hoverObject_) {
-    hoverObject_ = hover;
-    setCursor(hover >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
-    update();
+  if (dragCorner_ >= 0) {
+    QString reason;
+    if (!document_->setBackWallCorner(dragCorner_, px + dragGrabPx_, dragId_, &reason))
+      Q_EMIT statusMessage(reason);
+    update();  // the loupe follows even when the corner did not move
+    return;
   }
+  if (rubberFrom_) rubberTo_ = px;
+  if (stroking_ && (stroke_.empty() || (stroke_.back() - px).norm() >= 1.0)) stroke_.push_back(px);
+  if (tool_ == Tool::Select) {
+    const int hover = objectAt(event->position());
+    const int corner = hover >= 0 ? -1 : cornerAt(event->position());
+    if (hover != hoverObject_ || corner != hoverCorner_) {
+      hoverObject_ = hover;
+      hoverCorner_ = corner;
+      setCursor(hover >= 0 || corner >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+    }
+  }
+  update();  // the tool's rubber band follows the cursor
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+  cursorPos_ = event->position();
   if (event->button() == Qt::MiddleButton && panning_) {
     panning_ = false;
     unsetCursor();
     return;
   }
-  if (event->button() == Qt::LeftButton && dragObject_ >= 0) {
+  if (event->button() == Qt::LeftButton && (dragObject_ >= 0 || dragCorner_ >= 0)) {
     dragObject_ = -1;
-    setCursor(objectAt(event->position()) >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
-    update();
+    dragCorner_ = -1;
+    const bool over = objectAt(event->position()) >= 0 || cornerAt(event->position()) >= 0;
+    setCursor(over ? Qt::OpenHandCursor : Qt::ArrowCursor);
   }
+  if (tool_ == Tool::Shaft && rubberFrom_ && event->button() == Qt::LeftButton) {
+    const Vec2 a = *rubberFrom_, b = imageFromWidget(event->position());
+    rubberFrom_.reset();
+    const QRectF box = QRectF(QPointF(a.x(), a.y()), QPointF(b.x(), b.y())).normalized();
+    if (!shaftBox_) {
+      shaftBox_ = box;
+      Q_EMIT statusMessage(toolHint());
+    } else {
+      QString reason;
+      const bool ok = document_->addShaft({shaftBox_->left(), shaftBox_->top(), shaftBox_->right(), shaftBox_->bottom()},
+                                          {box.left(), box.top(), box.right(), box.bottom()}, &reason);
+      shaftBox_.reset();
+      report(ok, reason);
+    }
+  }
+  if (tool_ == Tool::Occluder && stroking_) {
+    stroke_.push_back(imageFromWidget(event->position()));
+    finishStroke();
+  }
+  update();
+}
+
+void Viewport::mouseDoubleClickEvent(QMouseEvent* event) {
+  // Qt sends press, release, double click, release: the first press added the point; the
+  // double click closes the outline there.
+  if ((tool_ == Tool::Light || tool_ == Tool::Surface) && !awaitingHeightClick_ &&
+      event->button() == Qt::LeftButton) {
+    closeOutline();
+    return;
+  }
+  mousePressEvent(event);
 }
 
 void Viewport::keyPressEvent(QKeyEvent* event) {
+  switch (event->key()) {
+    case Qt::Key_Escape: cancelToolInput(); return;
+    case Qt::Key_Return:
+    case Qt::Key_Enter: commitToolInput(); return;
+    case Qt::Key_Backspace:
+      if (!toolPoints_.empty() && !awaitingHeightClick_) {
+        toolPoints_.pop_back();
+        update();
+        return;
+      }
+      break;
+    default: break;
+  }
   const int i = document_->selectedObject();
   Vec2 step(0, 0);
   switch (event->key()) {

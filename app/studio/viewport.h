@@ -1,34 +1,61 @@
-// The photo / composite view with its overlays, drawn in immediate mode.
+// The photo / composite view with its overlays and the tools that draw the scene's marks, all in
+// immediate mode.
 //
-// paintEvent() draws, from the Document's state and nothing else: the composite (or the photo
-// in "before" mode) scaled by zoom and pan, the back wall's quad and the room's receding edges,
-// the outlines of the lights, and each object's base marker with its height and facing gizmo.
-// Hit-testing reads the same state. No overlay object is kept between paints, so nothing can
-// fall out of sync with the document.
+// paintEvent() draws, from the Document's state and nothing else: the chosen layer (composite,
+// photo, albedo, ...; the photo in "before" mode) scaled by zoom and pan, the back wall with its
+// four draggable corners (dashed while it is the automatic estimate, solid once it is the
+// user's) and the room's receding edges, the estimate's line segments by vanishing point with
+// the two longest of each family extended toward it and their residuals, the estimate's
+// confidences and warnings, light outlines, shaft boxes, extrusion outlines with their height
+// clicks, occluder scribbles, and each object's base marker with its height and facing gizmo.
+// Hit-testing (objects, corners, marks) reads the same state. No overlay object is kept between paints, so nothing can
+// fall out of sync with the document. The only state kept here is the input of the tool in use
+// (the points of an outline not yet closed, a stroke being drawn), drawn the same way.
 //
-// Mouse: left press on an object's marker (within kPickRadiusPx) selects it and a drag moves its
-// base (Document::moveObject, one undo step per drag; a pixel not on a supporting surface keeps
-// the last valid position and reports the reason through statusMessage()). Arrow keys nudge
-// the selected object by one image pixel (ten with Shift), one undo step each. Wheel zooms
-// about the cursor; middle drag pans. GUI thread only.
+// Mouse, Select tool: a left click on a mark selects it (Edit > Delete removes it); a left press
+// on an object's marker (within kPickRadiusPx) selects it and a
+// drag moves its base (Document::moveObject, one undo step per drag; a pixel not on a supporting
+// surface keeps the last valid position and reports the reason through statusMessage()); on a
+// back-wall corner a drag moves that corner (Document::setBackWallCorner, one undo step) with a
+// loupe magnifying the photo under the cursor. Light and Surface tools: clicks add outline points;
+// a click on the first point, a double click or Enter closes it (Surface then asks for the height
+// click on the floor below the first point); Backspace removes the last point, Escape drops the
+// input. Shaft tool: drag a box around the lit patch, then one around its source. Occluder tool:
+// left drags draw strokes over the thing in front, right drags over what is behind; the occluder
+// is added once it has both, later strokes go to it until Enter starts a new one.
+// Arrow keys nudge the selected object by one image pixel (ten with Shift), one undo step each.
+// Wheel zooms about the cursor; middle drag pans. GUI thread only.
 #pragma once
 
 #include "inlay/modeling/core.h"
+#include "inlay/modeling/scene_file.h"
+#include "document.h"
+#include "render_controller.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QPointF>
+#include <QRectF>
 #include <QWidget>
+
+#include <optional>
+#include <vector>
+
+class QPainter;
 
 namespace inlay::studio {
 
 class Document;
-class RenderController;
 
 class Viewport : public QWidget {
   Q_OBJECT
 
  public:
   static constexpr double kPickRadiusPx = 10.0;  // widget pixels
+  static constexpr int kLoupeRadiusPx = 70;      // widget pixels
+  static constexpr double kLoupeZoom = 4.0;      // magnification over the current zoom
+
+  enum class Tool { Select, Light, Shaft, Surface, Occluder };
 
   Viewport(Document* document, RenderController* renderer, QWidget* parent = nullptr);
 
@@ -37,15 +64,37 @@ class Viewport : public QWidget {
   Vec2 imageFromWidget(const QPointF& widgetPos) const;
   double zoom() const { return scale_; }
   bool showsBefore() const { return showBefore_; }
+  Layer layer() const { return layer_; }
+  Tool tool() const { return tool_; }
+  bool showsVanishingLines() const { return showVanishing_; }
   // The object whose marker is within kPickRadiusPx of `widgetPos` (nearest), or -1.
   int objectAt(const QPointF& widgetPos) const;
+  // The back-wall corner (0 TL, 1 TR, 2 BR, 3 BL) within kPickRadiusPx of `widgetPos`, or -1.
+  int cornerAt(const QPointF& widgetPos) const;
+  // The light, shaft, surface or occluder drawn under `widgetPos` (inside its outline or box,
+  // or within kPickRadiusPx of its lines), or nullopt.
+  std::optional<MarkRef> markAt(const QPointF& widgetPos) const;
+  // True while the loupe is drawn (a corner drag).
+  bool loupeShown() const { return dragCorner_ >= 0; }
+  // The outline points of the Light / Surface tool not yet committed (image pixels).
+  const std::vector<Vec2>& pendingPoints() const { return toolPoints_; }
   QSize sizeHint() const override;
+
+  // Paint durations (ms) since the last clear, for the benchmark and the status figures.
+  const std::vector<double>& paintTimesMs() const { return paintTimesMs_; }
+  void clearPaintTimes() { paintTimesMs_.clear(); }
 
  public Q_SLOTS:
   void zoomIn();
   void zoomOut();
   void zoomToFit();
   void setShowBefore(bool before);
+  void setLayer(inlay::studio::Layer layer);
+  void setTool(inlay::studio::Viewport::Tool tool);
+  void setShowVanishingLines(bool show);
+  // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
+  void commitToolInput();
+  void cancelToolInput();
 
  Q_SIGNALS:
   // A transient message for the status bar (empty: clear it).
@@ -58,6 +107,7 @@ class Viewport : public QWidget {
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
   void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
 
@@ -65,6 +115,23 @@ class Viewport : public QWidget {
   QSize imageSize() const;
   void zoomAbout(double factor, const QPointF& widgetPos);
   void updateFit();
+  const QImage& shownImage();
+  // Paint steps, in drawing order.
+  void paintImage(QPainter& p);
+  void paintRoom(QPainter& p);
+  void paintVanishingLines(QPainter& p);
+  void paintMarks(QPainter& p);
+  void paintObjects(QPainter& p);
+  void paintToolInput(QPainter& p);
+  void paintLoupe(QPainter& p);
+  void paintStatus(QPainter& p);
+  // Tool input.
+  void pressSelect(QMouseEvent* event);
+  void addOutlinePoint(const QPointF& widgetPos);
+  void closeOutline();
+  void finishStroke();
+  void report(bool ok, const QString& reason);
+  QString toolHint() const;
 
   Document* document_;
   RenderController* renderer_;
@@ -72,18 +139,38 @@ class Viewport : public QWidget {
   QPointF offset_;      // widget position of the image's top-left corner
   bool fit_ = true;     // keep fitting on resize until the user zooms or pans
   bool showBefore_ = false;
+  bool showVanishing_ = true;
+  Layer layer_ = Layer::Composite;
+  Tool tool_ = Tool::Select;
 
   int dragObject_ = -1;
+  int dragCorner_ = -1;
   int dragId_ = 0;
-  Vec2 dragGrabPx_{0, 0};  // base_px minus the image point under the cursor at the press
+  Vec2 dragGrabPx_{0, 0};  // the dragged point minus the image point under the cursor
   bool panning_ = false;
   QPointF lastPanPos_;
+  QPointF cursorPos_;
   int hoverObject_ = -1;
+  int hoverCorner_ = -1;
+
+  // Input of the tool in use (image pixels).
+  std::vector<Vec2> toolPoints_;      // Light / Surface outline
+  bool awaitingHeightClick_ = false;  // Surface: outline closed, the floor click comes next
+  std::optional<QRectF> shaftBox_;    // Shaft: the lit patch's box, drawn first
+  std::optional<Vec2> rubberFrom_;    // Shaft: the corner where the box drag started
+  Vec2 rubberTo_{0, 0};
+  std::vector<Vec2> stroke_;          // Occluder: the stroke being drawn
+  bool strokeForeground_ = true;
+  bool stroking_ = false;
+  OccluderKeys pendingOccluder_;      // strokes before the occluder has both kinds
+  int currentOccluder_ = -1;          // the occluder later strokes go to
 
   // The shown image resampled to the screen size when zoomed out (smooth resampling of a large
   // photo on every paint would make drags stutter). A cache of pixels, not of overlay state.
   QImage scaledImage_;
   qint64 scaledKey_ = 0;
+  QImage layerImage_;  // keeps the image of a non-composite layer alive during a paint
+  std::vector<double> paintTimesMs_;
 };
 
 }  // namespace inlay::studio

@@ -275,6 +275,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   auto cl = cameraAndLayoutOf(doc.camera, doc.layout, ps.photo, false, opt.cancel);
   if (!cl) return cl.error();
   ps.camera = cl->camera;
+  ps.cameraEstimate = std::move(cl->estimate);
   for (const auto& w : cl->warnings) ps.warnings.push_back(w);
   ps.stageSeconds.emplace_back("camera", secondsSince(t));
 

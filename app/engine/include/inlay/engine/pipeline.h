@@ -26,6 +26,9 @@ struct PreparedScene {
   Camera camera;
   RoomBox box;
   std::array<Vec2, 4> backWallPx{};  // the corners the box was made from
+  // The automatic estimate, when one ran (the scene file did not give both the vanishing points
+  // and the back wall): its line segments, vanishing points and confidences, for display.
+  std::optional<CameraEstimate> cameraEstimate;
   std::vector<Extrusion> extrusions;
   SceneGeometry geometry;
   LightingEstimate lighting;

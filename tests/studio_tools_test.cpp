@@ -1,0 +1,273 @@
+// The tools for the scene's marks through the mouse and keys, offscreen: shaft boxes, occluder
+// strokes, outline editing keys, deleting a mark from the scene tree, undoing an object edit
+// while the marks are being re-prepared, and zoom and pan keeping the image under the cursor.
+#include "docks.h"
+#include "document.h"
+#include "main_window.h"
+#include "render_controller.h"
+#include "viewport.h"
+
+#include "inlay/engine/pipeline.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace inlay;
+using namespace inlay::studio;
+
+namespace {
+
+QString exampleScene() {
+  const QString src = qEnvironmentVariable("INLAY_SOURCE_DIR");
+  if (!src.isEmpty() && QFile::exists(src + QStringLiteral("/resources/example/scene.json")))
+    return src + QStringLiteral("/resources/example/scene.json");
+  return QString::fromStdString(exampleScenePath());
+}
+
+void waitPrepared(Document* doc) {
+  QElapsedTimer t;
+  t.start();
+  while (doc->state() == Document::State::Preparing && t.elapsed() < 180000) QTest::qWait(20);
+}
+
+// A drag with `button` between two image points.
+void dragImage(Viewport* view, Qt::MouseButton button, const Vec2& a, const Vec2& b, int steps = 6) {
+  const QPoint from = view->widgetFromImage(a).toPoint(), to = view->widgetFromImage(b).toPoint();
+  QTest::mousePress(view, button, Qt::NoModifier, from);
+  for (int k = 1; k <= steps; ++k) QTest::mouseMove(view, from + (to - from) * k / steps);
+  QTest::mouseRelease(view, button, Qt::NoModifier, to);
+}
+
+}  // namespace
+
+class StudioToolsTest : public QObject {
+  Q_OBJECT
+
+ private Q_SLOTS:
+  void initTestCase();
+  void init();
+  void cleanup();
+  void shaftToolDrawsTwoBoxes();
+  void occluderStrokesBecomeOneOccluderThenAppend();
+  void outlineKeysAndDeletingAMark();
+  void undoingAnObjectEditWhilePreparing();
+  void zoomAndPanKeepTheImageUnderTheCursor();
+  void exportShownLayer();
+
+ private:
+  std::unique_ptr<MainWindow> window_;
+  Document* doc_ = nullptr;
+  Viewport* view_ = nullptr;
+};
+
+void StudioToolsTest::initTestCase() {
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName(QStringLiteral("InlayTest"));
+  QCoreApplication::setApplicationName(QStringLiteral("studio_tools_test"));
+  qunsetenv("INLAY_LANG");
+}
+
+void StudioToolsTest::init() {
+  const QString scene = exampleScene();
+  if (scene.isEmpty() || !QFile::exists(scene)) QSKIP("resources/example/scene.json absent");
+  window_ = std::make_unique<MainWindow>();
+  window_->setInteractive(false);
+  window_->resize(1100, 750);
+  window_->show();
+  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  doc_ = window_->document();
+  view_ = window_->viewport();
+  QVERIFY(window_->openPath(scene));
+  waitPrepared(doc_);
+  QVERIFY2(doc_->isReady(), qPrintable(doc_->prepareError()));
+}
+
+void StudioToolsTest::cleanup() { window_.reset(); }
+
+void StudioToolsTest::shaftToolDrawsTwoBoxes() {
+  window_->toolAction(int(Viewport::Tool::Shaft))->trigger();
+  dragImage(view_, Qt::LeftButton, Vec2(120, 300), Vec2(200, 340));
+  QCOMPARE(int(doc_->scene().shafts.size()), 0);  // the source's box comes next
+  dragImage(view_, Qt::LeftButton, Vec2(300, 90), Vec2(340, 150));
+  QCOMPARE(int(doc_->scene().shafts.size()), 1);
+  const ShaftKeys& s = doc_->scene().shafts[0];
+  QVERIFY(s.shaftBoxPx && s.sourceBoxPx);
+  QVERIFY(std::abs((*s.shaftBoxPx)[0] - 120) < 1.5 && std::abs((*s.shaftBoxPx)[3] - 340) < 1.5);
+  QVERIFY(std::abs((*s.sourceBoxPx)[1] - 90) < 1.5 && std::abs((*s.sourceBoxPx)[2] - 340) < 1.5);
+  QCOMPARE(doc_->undoStack()->count(), 1);
+  QCOMPARE(doc_->state(), Document::State::Preparing);  // re-prepared with the shaft
+  waitPrepared(doc_);
+  // This photo has no sunlit patch there: the failure names the shaft, nothing crashes.
+  if (doc_->state() == Document::State::Failed)
+    QVERIFY2(doc_->prepareError().contains(QStringLiteral("shafts[0]")), qPrintable(doc_->prepareError()));
+  doc_->undoStack()->undo();
+  QCOMPARE(int(doc_->scene().shafts.size()), 0);
+  waitPrepared(doc_);
+  QVERIFY(doc_->isReady());
+  // A box too small to mean anything is refused with a reason.
+  dragImage(view_, Qt::LeftButton, Vec2(50, 300), Vec2(50.2, 300.2), 1);
+  dragImage(view_, Qt::LeftButton, Vec2(300, 90), Vec2(340, 150));
+  QCOMPARE(int(doc_->scene().shafts.size()), 0);
+}
+
+void StudioToolsTest::occluderStrokesBecomeOneOccluderThenAppend() {
+  window_->toolAction(int(Viewport::Tool::Occluder))->trigger();
+  const int steps0 = doc_->undoStack()->count();
+  dragImage(view_, Qt::LeftButton, Vec2(180, 320), Vec2(230, 330));
+  QCOMPARE(int(doc_->scene().occluders.size()), 0);  // no background stroke yet
+  dragImage(view_, Qt::RightButton, Vec2(300, 200), Vec2(360, 210));
+  QCOMPARE(int(doc_->scene().occluders.size()), 1);
+  QCOMPARE(doc_->undoStack()->count(), steps0 + 1);
+  const OccluderKeys& o = doc_->scene().occluders[0];
+  QCOMPARE(int(o.foregroundScribblesPx.size()), 1);
+  QCOMPARE(int(o.backgroundScribblesPx.size()), 1);
+  QVERIFY(o.foregroundScribblesPx[0].size() >= 3);
+  QVERIFY((o.foregroundScribblesPx[0].front() - Vec2(180, 320)).norm() < 1.5);
+  // Another stroke goes to the same occluder, one undo step.
+  dragImage(view_, Qt::LeftButton, Vec2(190, 340), Vec2(220, 345));
+  QCOMPARE(int(doc_->scene().occluders.size()), 1);
+  QCOMPARE(int(doc_->scene().occluders[0].foregroundScribblesPx.size()), 2);
+  QCOMPARE(doc_->undoStack()->count(), steps0 + 2);
+  // Enter: the next strokes start a new occluder.
+  QTest::keyClick(view_, Qt::Key_Return);
+  dragImage(view_, Qt::LeftButton, Vec2(60, 320), Vec2(80, 330));
+  QCOMPARE(int(doc_->scene().occluders.size()), 1);
+  waitPrepared(doc_);
+  if (doc_->state() == Document::State::Failed)
+    QVERIFY2(doc_->prepareError().contains(QStringLiteral("occluders[0]")), qPrintable(doc_->prepareError()));
+  doc_->undoStack()->undo();
+  doc_->undoStack()->undo();
+  QCOMPARE(int(doc_->scene().occluders.size()), 0);
+}
+
+void StudioToolsTest::outlineKeysAndDeletingAMark() {
+  window_->toolAction(int(Viewport::Tool::Light))->trigger();
+  for (const Vec2& q : {Vec2(380, 20), Vec2(420, 22), Vec2(500, 200)})
+    QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(q).toPoint());
+  QCOMPARE(int(view_->pendingPoints().size()), 3);
+  QTest::keyClick(view_, Qt::Key_Backspace);  // the stray point goes
+  QCOMPARE(int(view_->pendingPoints().size()), 2);
+  QTest::keyClick(view_, Qt::Key_Return);  // two points: refused, kept for more
+  QCOMPARE(int(doc_->scene().lights.size()), 2);
+  for (const Vec2& q : {Vec2(420, 32), Vec2(380, 30)})
+    QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(q).toPoint());
+  QTest::keyClick(view_, Qt::Key_Return);
+  QCOMPARE(int(doc_->scene().lights.size()), 3);
+  QVERIFY(view_->pendingPoints().empty());
+  // A double click on the last point closes the outline (the point stays).
+  for (const Vec2& q : {Vec2(440, 20), Vec2(480, 24), Vec2(490, 30)})
+    QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(q).toPoint());
+  const QPoint last = view_->widgetFromImage(Vec2(470, 34)).toPoint();
+  // As Qt delivers a double click: press, release, double click, release.
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, last);
+  QMouseEvent dbl(QEvent::MouseButtonDblClick, QPointF(last), view_->mapToGlobal(QPointF(last)),
+                  Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(view_, &dbl);
+  QTest::mouseRelease(view_, Qt::LeftButton, Qt::NoModifier, last);
+  QCOMPARE(int(doc_->scene().lights.size()), 4);
+  QCOMPARE(int(doc_->scene().lights[3].pointsPx.size()), 4);
+  doc_->undoStack()->undo();
+  // Escape drops an outline half drawn.
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(10, 10)).toPoint());
+  QTest::keyClick(view_, Qt::Key_Escape);
+  QVERIFY(view_->pendingPoints().empty());
+  waitPrepared(doc_);
+
+  // A click inside a light's outline selects it (and its scene tree item); Delete removes it.
+  window_->toolAction(int(Viewport::Tool::Select))->trigger();
+  const QPoint inside = view_->widgetFromImage(Vec2(400, 26)).toPoint();
+  QVERIFY(view_->markAt(inside) == (MarkRef{MarkKind::Light, 2}));
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, inside);
+  QVERIFY(doc_->selectedMark() == (MarkRef{MarkKind::Light, 2}));
+  QCOMPARE(doc_->selectedObject(), -1);
+  QCOMPARE(window_->sceneDock()->tree()->currentItem()->text(0), QStringLiteral("Light 3"));
+  window_->deleteSelected();
+  QCOMPARE(int(doc_->scene().lights.size()), 2);
+  QVERIFY(!doc_->selectedMark());
+  doc_->undoStack()->undo();
+  QCOMPARE(int(doc_->scene().lights.size()), 3);
+  // A click on nothing deselects.
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(250, 200)).toPoint());
+  QVERIFY(!doc_->selectedMark());
+
+  // Delete light 1 from the scene tree: undoable.
+  QTreeWidget* tree = window_->sceneDock()->tree();
+  QTreeWidgetItem* light1 = nullptr;
+  for (QTreeWidgetItemIterator it(tree); *it; ++it)
+    if ((*it)->text(0) == QStringLiteral("Light 1")) light1 = *it;
+  QVERIFY(light1);
+  tree->setCurrentItem(light1);
+  QVERIFY(doc_->selectedMark() == (MarkRef{MarkKind::Light, 0}));
+  const std::vector<Vec2> second = doc_->scene().lights[1].pointsPx;
+  window_->deleteSelected();
+  QCOMPARE(int(doc_->scene().lights.size()), 2);
+  QVERIFY(doc_->scene().lights[0].pointsPx == second);
+  doc_->undoStack()->undo();
+  QCOMPARE(int(doc_->scene().lights.size()), 3);
+}
+
+void StudioToolsTest::undoingAnObjectEditWhilePreparing() {
+  const Vec2 base0 = doc_->scene().objects[0].basePx;
+  QVERIFY(doc_->moveObject(0, base0 + Vec2(-30, 4)));
+  QVERIFY(doc_->addLight({{380, 20}, {420, 22}, {420, 32}, {380, 30}}));
+  QCOMPARE(doc_->state(), Document::State::Preparing);
+  doc_->undoStack()->undo();  // the light (re-prepares)
+  QCOMPARE(doc_->state(), Document::State::Preparing);
+  doc_->undoStack()->undo();  // the move, with nothing prepared
+  QVERIFY(doc_->scene().objects[0].basePx == base0);
+  QVERIFY(doc_->undoStack()->isClean());
+  waitPrepared(doc_);
+  QVERIFY2(doc_->isReady(), qPrintable(doc_->prepareError()));
+  // The prepared scene is of the undone document.
+  const Placement& pl = doc_->prepared()->placements[0];
+  QVERIFY((*doc_->prepared()->camera.project(pl.baseWorld) - base0).norm() < 1e-3);
+  doc_->undoStack()->redo();
+  doc_->undoStack()->redo();
+  QCOMPARE(int(doc_->scene().lights.size()), 3);
+  QVERIFY(doc_->scene().objects[0].basePx == base0 + Vec2(-30, 4));
+  waitPrepared(doc_);
+  QVERIFY(doc_->isReady());
+  QVERIFY((*doc_->prepared()->camera.project(doc_->prepared()->placements[0].baseWorld) -
+           (base0 + Vec2(-30, 4))).norm() < 1e-3);
+}
+
+void StudioToolsTest::zoomAndPanKeepTheImageUnderTheCursor() {
+  const QPoint at(view_->width() / 3, view_->height() / 2);
+  const Vec2 under = view_->imageFromWidget(at);
+  const double zoom0 = view_->zoom();
+  QWheelEvent wheel(at, view_->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::NoButton,
+                    Qt::NoModifier, Qt::NoScrollPhase, false);
+  QCoreApplication::sendEvent(view_, &wheel);
+  QVERIFY(view_->zoom() > zoom0 * 1.2);
+  QVERIFY((view_->imageFromWidget(at) - under).norm() < 1e-6);
+  // Middle drag pans by the drag.
+  const QPointF before = view_->widgetFromImage(Vec2(100, 100));
+  QTest::mousePress(view_, Qt::MiddleButton, Qt::NoModifier, at);
+  QTest::mouseMove(view_, at + QPoint(40, -25));
+  QTest::mouseRelease(view_, Qt::MiddleButton, Qt::NoModifier, at + QPoint(40, -25));
+  const QPointF moved = view_->widgetFromImage(Vec2(100, 100)) - before;
+  QVERIFY(std::abs(moved.x() - 40) < 1e-6 && std::abs(moved.y() + 25) < 1e-6);
+  view_->zoomToFit();
+  QVERIFY(std::abs(view_->zoom() - zoom0) < 1e-9);
+}
+
+void StudioToolsTest::exportShownLayer() {
+  QTemporaryDir dir;
+  view_->setLayer(Layer::Albedo);
+  const QString path = dir.filePath(QStringLiteral("albedo.png"));
+  QVERIFY(window_->exportShownLayer(path));
+  const QImage back(path);
+  QCOMPARE(back.width(), doc_->prepared()->photo.linearRgb.width);
+  QCOMPARE(back.convertToFormat(QImage::Format_RGB32),
+           window_->renderer()->layerImage(Layer::Albedo).convertToFormat(QImage::Format_RGB32));
+  // A folder that does not exist: refused, nothing half-written.
+  QVERIFY(!window_->exportShownLayer(dir.filePath(QStringLiteral("no/such/albedo.png"))));
+}
+
+QTEST_MAIN(StudioToolsTest)
+#include "studio_tools_test.moc"
