@@ -334,22 +334,54 @@ class LayoutSearch {
     return (s.aPx - vz_).norm() < (s.bPx - vz_).norm() ? s.aPx : s.bPx;
   }
   double diag() const { return diag_; }
+  bool bordersBright(size_t i) const { return bright_[i]; }
 
  private:
+  // Segments along a saturated patch (a window, a lamp, a sunlit floor patch: the photo is
+  // clipped on one side of them over most of their length) are the patch's outline, not the
+  // room's edges: they vote for no box edge (they still count where they lie, for the faces).
+  void markBright() {
+    bright_.assign(in_.segments->size(), false);
+    if (!in_.edges || in_.edges->clipped.empty()) return;
+    const cv::Mat& m = in_.edges->clipped;
+    for (size_t i = 0; i < in_.segments->size(); ++i) {
+      const LineSegment& s = (*in_.segments)[i];
+      const Vec2 a = s.aPx * ws_, b = s.bPx * ws_;
+      const double len = (b - a).norm();
+      if (len < 1) continue;
+      const Vec2 n = Vec2(a.y() - b.y(), b.x() - a.x()) / len;
+      const int count = std::max(3, int(len / 2));
+      int side[2] = {0, 0};
+      for (int k = 0; k < count; ++k) {
+        const Vec2 p = a + (b - a) * ((k + 0.5) / count);
+        for (int j = 0; j < 2; ++j) {
+          const Vec2 q = p + (j ? 2.0 : -2.0) * n;
+          const int x = int(q.x()), y = int(q.y());
+          if (x >= 0 && y >= 0 && x < m.cols && y < m.rows && m.at<unsigned char>(y, x)) ++side[j];
+        }
+      }
+      bright_[i] = std::max(side[0], side[1]) * 2 > count;
+    }
+  }
+
   void buildEvidence() {
+    markBright();
     const int w = std::max(1, int(std::lround(W_ * ws_))), h = std::max(1, int(std::lround(H_ * ws_)));
     for (int f = 0; f < 3; ++f) {
       cv::Mat mask(h, w, CV_8U, cv::Scalar(255));
-      for (const LineSegment& s : *in_.segments)
-        if (s.family == f && !s.userGiven)
+      for (size_t i = 0; i < in_.segments->size(); ++i) {
+        const LineSegment& s = (*in_.segments)[i];
+        if (s.family == f && !s.userGiven && !bright_[i])
           cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
                    cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
+      }
       // Receding (z) lines of a floor, ceiling or side wall end where the back wall begins:
       // their far ends mark the back wall's edges, drawn as short x strokes (top and bottom
       // edges) and y strokes (side edges).
       if (f == 0 || f == 1)
-        for (const LineSegment& s : *in_.segments) {
-          if (s.family != 2 || s.userGiven) continue;
+        for (size_t i = 0; i < in_.segments->size(); ++i) {
+          const LineSegment& s = (*in_.segments)[i];
+          if (s.family != 2 || s.userGiven || bright_[i]) continue;
           const Vec2 far = farEnd(s);
           const Vec3& hv = f == 0 ? hx_ : hy_;
           Vec2 dir(hv.x() - far.x() * hv.z(), hv.y() - far.y() * hv.z());
@@ -439,6 +471,7 @@ class LayoutSearch {
   EvidenceMap evidence_[3];
   cv::Mat across_[3];  // per family: the gradient across that family's line through each pixel
   mutable std::vector<float> scratch_;
+  std::vector<bool> bright_;  // per segment: outlines a saturated patch (markBright)
   std::vector<Sample> samples_;
 };
 
@@ -456,6 +489,11 @@ std::shared_ptr<const PhotoEdges> photoEdgesOf(const cv::Mat& grey8, int photoW,
   auto pe = std::make_shared<PhotoEdges>();
   cv::Sobel(r, pe->gx, CV_32F, 1, 0, 3, 1.0 / 8.0);
   cv::Sobel(r, pe->gy, CV_32F, 0, 1, 3, 1.0 / 8.0);
+  // Saturated patches (windows, lamps, sunlit floor): their outlines are not the room's edges.
+  cv::Mat clipped = r >= 0.97f;
+  cv::dilate(clipped, pe->clipped, cv::Mat::ones(5, 5, CV_8U));
+  pe->gx.setTo(0.f, pe->clipped);
+  pe->gy.setTo(0.f, pe->clipped);
   cv::Mat mag;
   cv::magnitude(pe->gx, pe->gy, mag);
   std::vector<float> v(mag.begin<float>(), mag.end<float>());
@@ -533,8 +571,9 @@ LayoutResult estimateLayout(const LayoutInput& in) {
       // meets the back wall): the best 5 and 2 clusters.
       for (const bool receding : {false, true}) {
         std::vector<std::pair<double, double>> votes;  // (param, weight)
-        for (const LineSegment& sg : *in.segments) {
-          if (sg.userGiven) continue;
+        for (size_t k = 0; k < in.segments->size(); ++k) {
+          const LineSegment& sg = (*in.segments)[k];
+          if (sg.userGiven || search.bordersBright(k)) continue;
           const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
           if (receding ? sg.family != 2 : !mine) continue;
           const double v = search.paramOfCorner(
@@ -560,7 +599,7 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         const size_t keep = receding ? 2 : 4;
         for (size_t k = 0; k < std::min(keep, merged.size()); ++k) cand[i].push_back(merged[k].second);
       }
-      for (double v : search.contrastCandidates(i, 2)) cand[i].push_back(v);
+      for (double v : search.contrastCandidates(i, 3)) cand[i].push_back(v);
       cand[i].push_back(search.outside()[i]);
       cand[i].push_back(t[i]);
       // Candidates closer than half a percent of the diagonal are one.

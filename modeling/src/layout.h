@@ -24,6 +24,8 @@ constexpr double kLayoutSidePx = 400;
 struct PhotoEdges {
   cv::Mat gx, gy;      // CV_32F, d(sRGB grey in [0, 1]) per layout pixel
   double noise = 0;    // median gradient magnitude (texture and noise level)
+  cv::Mat clipped;     // CV_8U, non-zero within 2 pixels of a (nearly) saturated pixel; the
+                       // gradient is 0 there
 };
 
 // From the working grey image (sRGB-encoded, [0, 255], already lightly blurred) of a photo of
