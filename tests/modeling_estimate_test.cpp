@@ -358,6 +358,141 @@ TEST(EstimateCamera, HugePhotoIsDownscaledFirst) {
   EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
 }
 
+// A shaded box room (one grey per face, linear, plus noise) with lines drawn on it: face
+// boundaries are steps in brightness, as in a photo, so the back wall's right edge can be made a
+// faint crease by giving the right wall almost the back wall's grey.
+ImageF shadedRoom(const Camera& cam, const std::vector<Seg3>& lines, float rightWallGrey) {
+  ImageF im(cam.widthPx, cam.heightPx, 1, 0.f);
+  const double lo[3] = {-2.5, 0, -5}, hi[3] = {2.5, 2.7, 0.5};
+  // Faces by the axis and side the ray leaves through: x-, x+, y-, y+, z-, z+.
+  const float grey[6] = {0.22f, rightWallGrey, 0.16f, 0.45f, 0.30f, 0.30f};
+  std::mt19937 rng(3);
+  std::normal_distribution<float> noise(0.f, 0.004f);
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x) {
+      const Ray r = cam.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+      double tBest = 1e300;
+      int face = 4;
+      for (int k = 0; k < 3; ++k) {
+        if (std::abs(r.direction[k]) < 1e-12) continue;
+        const bool up = r.direction[k] > 0;
+        const double t = ((up ? hi[k] : lo[k]) - r.origin[k]) / r.direction[k];
+        if (t > 0 && t < tBest) {
+          tBest = t;
+          face = 2 * k + (up ? 1 : 0);
+        }
+      }
+      im.at(x, y, 0) = std::max(0.f, grey[face] + noise(rng));
+    }
+  for (const Seg3& s : lines) {
+    Vec2 a, b;
+    if (projectSegment(cam, s, a, b)) drawLine(im, a, b, 1.5, 0.05f);
+  }
+  return im;
+}
+
+TEST(EstimateCamera, FaintWallCornerIsFoundFromThePhotosContrast) {
+  // A longer lens turned toward the right wall: the back wall's right edge is in view but its
+  // floor and ceiling corners are not, no line is drawn on it and the right wall is almost the
+  // back wall's grey (about 6 levels in sRGB, below the line detector's threshold). A rail on the
+  // right wall ends 1 m short of the corner (like d4's window). The layout finds the edge from
+  // the photo's contrast.
+  const Camera truth = makeCamera(640, 480, 1000, -18, -3, 0);
+  std::vector<Seg3> lines;
+  for (double x = -1.8; x <= 1.81; x += 0.3) lines.push_back({{x, 0.5, -5}, {x, 2.3, -5}});
+  for (double y = 0.5; y <= 2.31; y += 0.3) lines.push_back({{-2.0, y, -5}, {1.9, y, -5}});
+  for (double y : {0.3, 1.0, 2.2}) lines.push_back({{2.5, y, -4.0}, {2.5, y, -0.5}});
+  const auto e = estimateCamera(shadedRoom(truth, lines, 0.33f));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  ASSERT_TRUE(e->photoEdges);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
+  const auto want = trueBackWall(truth);
+  // Where the right edge crosses the middle row.
+  auto rightEdgeX = [](const std::array<Vec2, 4>& c) {
+    const Vec2 d = c[2] - c[1];
+    return c[1].x() + d.x() * (240 - c[1].y()) / d.y();
+  };
+  const double wantX = rightEdgeX(want);
+  ASSERT_GT(wantX, 300);
+  ASSERT_LT(wantX, 560);  // in view, with the right wall beside it
+  EXPECT_NEAR(rightEdgeX(e->backWallPx), wantX, 3.0);
+  // The premise: the same segments without the photo do not show that edge.
+  const auto segsOnly = estimateCameraFromSegments(640, 480, e->segments);
+  ASSERT_TRUE(segsOnly.ok());
+  EXPECT_GT(std::abs(rightEdgeX(segsOnly->backWallPx) - wantX), 8.0);
+  // A correction keeps the same evidence without the photo.
+  EstimateCorrection fix;
+  fix.backWallCornersPx[0] = e->backWallPx[0];
+  const auto c = correctEstimate(*e, fix);
+  ASSERT_TRUE(c.ok()) << c.error().message();
+  EXPECT_EQ(c->photoEdges, e->photoEdges);
+  EXPECT_NEAR(rightEdgeX(c->backWallPx), wantX, 3.0);
+}
+
+TEST(EstimateCamera, SupportersAreIndexedPerVanishingPoint) {
+  const Camera truth = makeCamera(640, 480, 560, 15, -8, 0);
+  const auto e = estimateCamera(drawRoom(truth, roomLines()));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  ASSERT_TRUE(e->manhattan);
+  size_t supported = 0;
+  for (int k = 0; k < 3; ++k) {
+    const auto& v = e->vanishingPoints[k];
+    EXPECT_EQ(int(v.segmentIndices.size()), v.segmentCount);
+    EXPECT_GE(v.segmentCount, 3) << "axis " << k;
+    for (int i : v.segmentIndices) {
+      ASSERT_GE(i, 0);
+      ASSERT_LT(size_t(i), e->segments.size());
+      EXPECT_EQ(e->segments[i].family, k);
+      EXPECT_TRUE(std::isfinite(e->segments[i].residualPx));
+      EXPECT_LT(e->segments[i].residualPx, 3.0);
+    }
+    supported += v.segmentIndices.size();
+  }
+  size_t withFamily = 0;
+  for (const auto& s : e->segments) withFamily += s.family >= 0;
+  EXPECT_EQ(supported, withFamily);
+  // A fallback's points are not the lines': nothing claims to support them.
+  ImageF noise(320, 240, 1);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  for (float& v : noise.data) v = u(rng);
+  const auto f = estimateCamera(noise);
+  ASSERT_TRUE(f.ok());
+  ASSERT_FALSE(f->manhattan);
+  EXPECT_TRUE(f->vanishingPoints[0].segmentIndices.empty());
+  EXPECT_TRUE(f->vanishingPoints[2].segmentIndices.empty());
+  for (const auto& s : f->segments) EXPECT_TRUE(s.family == -1 || s.family == 1);
+}
+
+TEST(EstimateCamera, PrincipalPointKnownOrRefined) {
+  // A camera 30 px right of and 20 px above the centre, three finite vanishing points.
+  Camera truth = makeCamera(640, 480, 420, 30, -18, 0);
+  truth.principalPx = Vec2(350, 220);
+  const ImageF im = drawRoom(truth, roomLines());
+  // Given: held exactly, and the rotation fits it.
+  EstimateOptions known;
+  known.principalPx = truth.principalPx;
+  const auto k = estimateCamera(im, known);
+  ASSERT_TRUE(k.ok()) << k.error().message();
+  expectSane(*k);
+  EXPECT_EQ(k->camera.principalPx, truth.principalPx);
+  EXPECT_LT(rotationErrorDeg(k->camera, truth), 0.5);
+  EXPECT_NEAR(k->camera.focalPx / truth.focalPx, 1.0, 0.02);
+  // Refined under its prior: moves toward the truth and stays finite.
+  EstimateOptions free;
+  free.principalSigma = 0.2;
+  const auto r = estimateCamera(im, free);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  expectSane(*r);
+  EXPECT_LT((r->camera.principalPx - truth.principalPx).norm(), 12.0)
+      << r->camera.principalPx.transpose();
+  // Default: held at the centre.
+  const auto d = estimateCamera(im);
+  ASSERT_TRUE(d.ok());
+  EXPECT_EQ(d->camera.principalPx, Vec2(320, 240));
+}
+
 TEST(EstimateCamera, BadInputAndCancellation) {
   const auto empty = estimateCamera(ImageF());
   ASSERT_FALSE(empty.ok());

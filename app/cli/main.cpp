@@ -332,6 +332,15 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   j["confidence"] = {{"vanishing_points", json::array({est.confidence[0], est.confidence[1], est.confidence[2]})},
                      {"overall", est.overallConfidence}, {"manhattan", est.manhattan},
                      {"layout", est.layoutScore}};
+  // What each vanishing point rests on (the studio shows the same from CameraEstimate).
+  json vpInfo = json::array();
+  for (const VanishingPointInfo& v : est.vanishingPoints)
+    vpInfo.push_back({{"homogeneous_px", {v.homogeneousPx.x(), v.homogeneousPx.y(), v.homogeneousPx.z()}},
+                      {"at_infinity", v.atInfinity}, {"segments", v.segmentCount},
+                      {"support_length_px", v.supportLengthPx}, {"rms_residual_px", v.rmsResidualPx},
+                      {"angular_sigma_deg", v.angularSigmaDeg}, {"confidence", v.confidence},
+                      {"nearly_parallel", v.nearlyParallel}});
+  j["vanishing_point_support"] = vpInfo;
   j["focal_interval_px"] = json::array({est.focalMinPx, est.focalMaxPx});
   j["focal_from_prior"] = est.focalFromPrior;
   j["warnings"] = est.warnings;

@@ -48,8 +48,11 @@ struct Seg {
   int source = -1;       // index into the caller's segment list
 };
 
-// Image (normalised, homogeneous) of a camera-frame (OpenGL) direction for focal phi.
-Vec3 vpOf(const Vec3& d, double phi) { return Vec3(phi * d.x(), -phi * d.y(), -d.z()); }
+// Image (normalised, homogeneous) of a camera-frame (OpenGL) direction for focal phi and
+// principal point pp (normalised, relative to the frame's centre).
+Vec3 vpOf(const Vec3& d, double phi, const Vec2& pp = Vec2::Zero()) {
+  return Vec3(phi * d.x() - pp.x() * d.z(), -phi * d.y() - pp.y() * d.z(), -d.z());
+}
 
 // |sin| of the angle between a segment and the line from its midpoint to h (any w, so a point
 // at infinity is ordinary). A segment aimed exactly at h's midpoint position counts as aligned.
@@ -63,12 +66,13 @@ double sinTo(const Seg& g, const Vec3& h) {
 struct Triplet {
   std::array<Vec3, 3> d{Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};  // camera frame, unit
   double phi = 1;
+  Vec2 pp{0, 0};  // principal point, normalised, relative to Frame::centre
 };
 
 // The robust score of a triplet: length-weighted truncated quadratic of each segment's best fit.
 double dataScore(const std::vector<Seg>& segs, const Triplet& tr, size_t limit = SIZE_MAX) {
   Vec3 h[3];
-  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi);
+  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi, tr.pp);
   double sum = 0;
   const size_t n = std::min(limit, segs.size());
   for (size_t i = 0; i < n; ++i) {
@@ -99,21 +103,21 @@ struct Prior {
 };
 
 // ---------------------------------------------------------------------------------------------
-// Refinement: rotation (angle-axis applied on the camera side to the starting directions) and
-// log focal length. Residual: the distance in pixels of a segment's endpoints to the line
-// through its midpoint and its vanishing point, over the pixel noise.
+// Refinement: rotation (angle-axis applied on the camera side to the starting directions), log
+// focal length and principal point. Residual: the distance in pixels of a segment's endpoints to
+// the line through its midpoint and its vanishing point, over the pixel noise.
 struct SegmentCost {
   Vec2 m, t;
   double halfLenOverSigma;  // half length (px) / noise (px) * sqrt(weight)
   Vec3 d0;
 
   template <typename T>
-  bool operator()(const T* omega, const T* logPhi, T* r) const {
+  bool operator()(const T* omega, const T* logPhi, const T* pp, T* r) const {
     const T p0[3] = {T(d0.x()), T(d0.y()), T(d0.z())};
     T d[3];
     ceres::AngleAxisRotatePoint(omega, p0, d);
     const T phi = ceres::exp(logPhi[0]);
-    const T hx = phi * d[0], hy = -phi * d[1], hz = -d[2];
+    const T hx = phi * d[0] - pp[0] * d[2], hy = -phi * d[1] - pp[1] * d[2], hz = -d[2];
     const T qx = hx - T(m.x()) * hz, qy = hy - T(m.y()) * hz;
     const T cross = T(t.x()) * qy - T(t.y()) * qx;
     const T qn = ceres::sqrt(qx * qx + qy * qy + T(1e-24));
@@ -127,6 +131,17 @@ struct PriorCost {
   template <typename T>
   bool operator()(const T* logPhi, T* r) const {
     r[0] = (logPhi[0] - T(logPhi0)) * T(invSigma);
+    return true;
+  }
+};
+
+// The principal point's prior: the frame's centre, isotropic.
+struct PrincipalPriorCost {
+  double invSigma;
+  template <typename T>
+  bool operator()(const T* pp, T* r) const {
+    r[0] = pp[0] * T(invSigma);
+    r[1] = pp[1] * T(invSigma);
     return true;
   }
 };
@@ -150,7 +165,7 @@ Assignment assign(const std::vector<Seg>& segs, const Triplet& tr) {
   Assignment a;
   a.family.assign(segs.size(), -1);
   Vec3 h[3];
-  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi);
+  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi, tr.pp);
   for (size_t i = 0; i < segs.size(); ++i) {
     if (segs[i].fixedFamily >= 0) {
       a.family[i] = segs[i].fixedFamily;
@@ -173,6 +188,7 @@ struct RefineSettings {
   double userWeight = 100;     // user lines count as this many detected ones
   Prior prior;
   bool lockPhi = false;
+  double principalSigma = 0;  // normalised; 0: the principal point is held where it starts
   const CancelToken* cancel = nullptr;
 };
 
@@ -186,15 +202,16 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
                   const RefineSettings& rs) {
   double omega[3] = {0, 0, 0};
   double logPhi = std::log(start.phi);
+  double pp[2] = {start.pp.x(), start.pp.y()};
   ceres::Problem::Options po;
   ceres::Problem problem(po);
   int n = 0;
   for (size_t i = 0; i < segs.size(); ++i) {
     const int k = as.family[i];
     if (k < 0) continue;
-    auto* cost = new ceres::AutoDiffCostFunction<SegmentCost, 1, 3, 1>(
+    auto* cost = new ceres::AutoDiffCostFunction<SegmentCost, 1, 3, 1, 2>(
         new SegmentCost(costOf(segs[i], start.d[k], rs)));
-    problem.AddResidualBlock(cost, new ceres::CauchyLoss(2.0), omega, &logPhi);
+    problem.AddResidualBlock(cost, new ceres::CauchyLoss(2.0), omega, &logPhi, pp);
     ++n;
   }
   if (n == 0) return start;
@@ -202,6 +219,12 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
                                new PriorCost{rs.prior.logPhi0, 1.0 / rs.prior.sigma}),
                            nullptr, &logPhi);
   if (rs.lockPhi) problem.SetParameterBlockConstant(&logPhi);
+  if (rs.principalSigma > 0)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PrincipalPriorCost, 2, 2>(
+                                 new PrincipalPriorCost{1.0 / rs.principalSigma}),
+                             nullptr, pp);
+  else
+    problem.SetParameterBlockConstant(pp);
   problem.SetParameterLowerBound(&logPhi, 0, std::log(0.05));
   problem.SetParameterUpperBound(&logPhi, 0, std::log(200.0));
   ceres::Solver::Options opt;
@@ -215,8 +238,11 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
   ceres::Solver::Summary summary;
   ceres::Solve(opt, &problem, &summary);
   Triplet out = start;
-  if (!std::isfinite(logPhi) || !std::isfinite(omega[0] + omega[1] + omega[2])) return start;
+  if (!std::isfinite(logPhi) || !std::isfinite(omega[0] + omega[1] + omega[2]) ||
+      !std::isfinite(pp[0] + pp[1]))
+    return start;
   out.phi = std::exp(logPhi);
+  out.pp = Vec2(pp[0], pp[1]);
   for (int k = 0; k < 3; ++k) {
     double p[3] = {start.d[k].x(), start.d[k].y(), start.d[k].z()}, q[3];
     ceres::AngleAxisRotatePoint(omega, p, q);
@@ -225,9 +251,12 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
   return out;
 }
 
-// Covariance of (omega, log phi) at the solution, Cauchy weights, noise scale from the data.
+// Covariance of (omega, log phi, principal point) at the solution, Cauchy weights, noise scale
+// from the data.
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
 struct Uncertainty {
-  Eigen::Matrix4d cov = Eigen::Matrix4d::Identity() * 1e6;
+  Mat6 cov = Mat6::Identity() * 1e6;
   double logPhiSigma = 10;
   double dataInfoLogPhi = 0;   // information on log phi from the segments alone
   std::array<double, 3> angularSigmaRad{M_PI, M_PI, M_PI};
@@ -236,26 +265,26 @@ struct Uncertainty {
 Uncertainty uncertaintyOf(const std::vector<Seg>& segs, const Assignment& as, const Triplet& tr,
                           const RefineSettings& rs) {
   Uncertainty u;
-  Eigen::Matrix4d info = Eigen::Matrix4d::Zero();
+  Mat6 info = Mat6::Zero();
   double sumWr2 = 0;
   int n = 0;
   for (size_t i = 0; i < segs.size(); ++i) {
     const int k = as.family[i];
     if (k < 0) continue;
     const SegmentCost c = costOf(segs[i], tr.d[k], rs);
-    double x[4] = {0, 0, 0, std::log(tr.phi)};
+    double x[6] = {0, 0, 0, std::log(tr.phi), tr.pp.x(), tr.pp.y()};
     double r0;
-    c(x, x + 3, &r0);
-    Eigen::Vector4d g;
-    for (int j = 0; j < 4; ++j) {
+    c(x, x + 3, x + 4, &r0);
+    Vec6 g;
+    for (int j = 0; j < 6; ++j) {
       const double hstep = 1e-6;
-      double xp[4], xm[4], rp, rm;
-      std::copy(x, x + 4, xp);
-      std::copy(x, x + 4, xm);
+      double xp[6], xm[6], rp, rm;
+      std::copy(x, x + 6, xp);
+      std::copy(x, x + 6, xm);
       xp[j] += hstep;
       xm[j] -= hstep;
-      c(xp, xp + 3, &rp);
-      c(xm, xm + 3, &rm);
+      c(xp, xp + 3, xp + 4, &rp);
+      c(xm, xm + 3, xm + 4, &rm);
       g[j] = (rp - rm) / (2 * hstep);
     }
     const double w = 1.0 / (1.0 + (r0 / 2.0) * (r0 / 2.0));  // Cauchy(2) weight
@@ -264,13 +293,16 @@ Uncertainty uncertaintyOf(const std::vector<Seg>& segs, const Assignment& as, co
     ++n;
   }
   u.dataInfoLogPhi = info(3, 3);
-  const double scale2 = std::max(1.0, n > 4 ? sumWr2 / (n - 4) : 1.0);
-  Eigen::Matrix4d full = info / scale2;
+  const double scale2 = std::max(1.0, n > 6 ? sumWr2 / (n - 6) : 1.0);
+  Mat6 full = info / scale2;
   full(3, 3) += 1.0 / (rs.prior.sigma * rs.prior.sigma);
   if (rs.lockPhi) full(3, 3) += 1e12;
-  full += Eigen::Matrix4d::Identity() * 1e-9;
+  const double ppInfo = rs.principalSigma > 0 ? 1.0 / (rs.principalSigma * rs.principalSigma) : 1e12;
+  full(4, 4) += ppInfo;
+  full(5, 5) += ppInfo;
+  full += Mat6::Identity() * 1e-9;
   u.cov = full.inverse();
-  if (!u.cov.allFinite()) u.cov = Eigen::Matrix4d::Identity() * 1e6;
+  if (!u.cov.allFinite()) u.cov = Mat6::Identity() * 1e6;
   u.logPhiSigma = std::sqrt(std::max(0.0, u.cov(3, 3)));
   const Eigen::Matrix3d covOmega = u.cov.topLeftCorner<3, 3>();
   for (int k = 0; k < 3; ++k) {
@@ -393,6 +425,7 @@ std::array<int, 3> axisOrder(const Triplet& tr) {
 Triplet ordered(const Triplet& tr, const std::array<int, 3>& order) {
   Triplet o;
   o.phi = tr.phi;
+  o.pp = tr.pp;
   Vec3 x = tr.d[order[0]], y = tr.d[order[1]];
   if (x.x() < 0) x = -x;
   if (y.y() < 0) y = -y;
@@ -484,7 +517,7 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   Camera cam;
   cam.widthPx = c.W;
   cam.heightPx = c.H;
-  cam.principalPx = c.frame.centre;
+  cam.principalPx = c.frame.centre + c.frame.s * tr.pp;
   cam.focalPx = tr.phi * c.frame.s;
   cam.heightM = o.cameraHeightM;
   Mat3 cameraFromWorld;
@@ -502,7 +535,7 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
     s.residualPx = 0;
   }
   Vec3 h[3];
-  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi);
+  for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi, tr.pp);
   // Chance model (a contrario, as LSD itself): a segment fits a given vanishing point within
   // half its inlier tolerance by accident with probability p_i = 2 asin(sinTol / 2) / pi. Real
   // structure fits far tighter than the tolerance, noise does not.
@@ -609,10 +642,28 @@ void addVpWarnings(CameraEstimate& e) {
   }
 }
 
+// Each vanishing point's supporters, from the segments' families (the last step of every path,
+// so indices and families always agree).
+void indexSupporters(CameraEstimate& e) {
+  for (auto& v : e.vanishingPoints) v.segmentIndices.clear();
+  for (size_t i = 0; i < e.segments.size(); ++i) {
+    const int k = e.segments[i].family;
+    if (k >= 0 && k < 3) e.vanishingPoints[k].segmentIndices.push_back(int(i));
+  }
+}
+
 void fallbackCamera(CameraEstimate& e, const Core& c, const Prior& prior, const EstimateOptions& o,
                     const std::optional<Vec3>& upCamera, double upConfidence) {
+  // The fallback's points are not the segments' (only the vertical, when it was kept): the
+  // others support nothing.
+  for (auto& s : e.segments)
+    if (!(upCamera && s.family == 1)) {
+      s.family = -1;
+      s.residualPx = 0;
+    }
   const double f = std::exp(prior.logPhi0) * c.frame.s;
   e.camera = levelCamera(c.W, c.H, f, o.cameraHeightM);
+  e.camera.principalPx = c.frame.centre;
   if (upCamera) {
     // Vertical lines only: tilt so that world up is the measured vertical, no yaw.
     Vec3 y = *upCamera;
@@ -635,6 +686,13 @@ void fallbackCamera(CameraEstimate& e, const Core& c, const Prior& prior, const 
     v.atInfinity = std::abs(v.homogeneousPx.z()) * 1000 * diag < xyn;
     v.confidence = (k == 1 && upCamera) ? upConfidence : 0.0;
     e.confidence[k] = v.confidence;
+    if (!(k == 1 && upCamera)) {
+      v.segmentCount = 0;
+      v.supportLengthPx = 0;
+      v.rmsResidualPx = 0;
+      v.angularSigmaDeg = 180;
+      v.nearlyParallel = false;
+    }
     e.vanishingPointsPx[k] = scenePixel(v.homogeneousPx, e.camera.principalPx);
   }
   e.overallConfidence = 0;
@@ -657,6 +715,7 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   li.segments = &e.segments;
   li.fixedCornersPx = fixed;
   li.startCornersPx = start;
+  li.edges = e.photoEdges.get();
   li.cancel = o.cancel;
   const auto lr = detail::estimateLayout(li);
   e.backWallPx = lr.cornersPx;
@@ -699,6 +758,7 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
   RefineSettings rs;
   rs.pixelSigma = workPx;
   rs.prior = prior;
+  rs.principalSigma = o.principalPx ? 0.0 : std::max(0.0, o.principalSigma);
   rs.cancel = o.cancel;
   bool have = false;
   double bestScore = -1e300;
@@ -761,15 +821,18 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
                        Vec2(0.75 * c.W, 0.75 * c.H), Vec2(0.25 * c.W, 0.75 * c.H)};
   e.timings.layoutMs = msSince(ts);
   if (cancelled()) return Error{"", "estimate", "cancelled"};
+  indexSupporters(e);
   e.timings.totalMs = msSince(t0);
   return e;
 }
 
-Core makeCore(int W, int H) {
+// The normalisation frame: centred on the known principal point if there is one (the refinement
+// holds it there), else on the image centre (where the principal point's prior lies).
+Core makeCore(int W, int H, const std::optional<Vec2>& principalPx = std::nullopt) {
   Core c;
   c.W = W;
   c.H = H;
-  c.frame.centre = Vec2(0.5 * W, 0.5 * H);
+  c.frame.centre = principalPx && principalPx->allFinite() ? *principalPx : Vec2(0.5 * W, 0.5 * H);
   c.frame.s = 0.5 * std::max(W, H);
   return c;
 }
@@ -781,7 +844,7 @@ Expected<CameraEstimate> estimateCameraFromSegments(int widthPx, int heightPx,
                                                     const EstimateOptions& options) {
   const auto t0 = Clock::now();
   if (widthPx <= 0 || heightPx <= 0) return Error{"", "photo", "the image has no pixels"};
-  Core c = makeCore(widthPx, heightPx);
+  Core c = makeCore(widthPx, heightPx, options.principalPx);
   for (const auto& s : segments) {
     if (!s.aPx.allFinite() || !s.bPx.allFinite()) continue;
     LineSegment t = s;
@@ -806,7 +869,7 @@ Expected<CameraEstimate> estimateCamera(const ImageF& linearRgb, const EstimateO
                  "has " + std::to_string(linearRgb.channels) + " channels (1, 3 or 4 expected)"};
   if (linearRgb.data.size() != linearRgb.pixelCount() * size_t(linearRgb.channels))
     return Error{"", "photo", "the pixel buffer does not match its size"};
-  Core c = makeCore(linearRgb.width, linearRgb.height);
+  Core c = makeCore(linearRgb.width, linearRgb.height, options.principalPx);
   const auto dl = detail::detectLineSegments(linearRgb, std::max(16, options.maxWorkingSidePx),
                                              std::max(0, options.maxSegments), options.cancel);
   if (options.cancel && options.cancel->shouldStop()) return Error{"", "estimate", "cancelled"};
@@ -814,6 +877,7 @@ Expected<CameraEstimate> estimateCamera(const ImageF& linearRgb, const EstimateO
   c.workingScale = dl.workingScale;
   CameraEstimate e;
   e.workingScale = dl.workingScale;
+  e.photoEdges = dl.edges;
   e.timings.linesMs = msSince(t0);
   return estimateCore(c, options, t0, e);
 }
@@ -858,9 +922,11 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
 
   CameraEstimate e;
   e.workingScale = previous.workingScale;
+  e.photoEdges = previous.photoEdges;
   Core c = makeCore(pc.widthPx, pc.heightPx);
-  // A fixed camera's principal point is the normalisation origin (vanishing points assume it).
-  if (corr.fixedCamera) c.frame.centre = corr.fixedCamera->principalPx;
+  // The principal point is held: a fixed camera's, else the previous estimate's. It is the
+  // normalisation origin (vanishing points assume it).
+  c.frame.centre = corr.fixedCamera ? corr.fixedCamera->principalPx : pc.principalPx;
   c.workingScale = previous.workingScale;
   for (const auto& s : previous.segments)
     if (!s.userGiven) c.segments.push_back(s);
@@ -1004,6 +1070,7 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
     const auto room = roomFromBackWall(e.camera, e.backWallPx);
     if (!room.ok()) return room.error().underKey("correction");
   }
+  indexSupporters(e);
   e.timings.totalMs = msSince(t0);
   return e;
 }
@@ -1011,13 +1078,13 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
 namespace detail {
 
 double segmentResidualGradientError() {
-  struct Case { Vec2 a, b; Vec3 d0; double logPhi; double omega[3]; };
+  struct Case { Vec2 a, b; Vec3 d0; double logPhi; double omega[3]; double pp[2]; };
   const Case cases[] = {
-      {{-0.3, 0.2}, {0.4, 0.25}, Vec3(1, 0.05, 0.3).normalized(), std::log(1.2), {0.01, -0.02, 0.03}},
-      {{0.1, -0.5}, {0.12, 0.5}, Vec3(0, 1, 0), std::log(0.8), {0, 0, 0}},          // VP at infinity
-      {{-0.5, 0.0}, {0.5, 0.0}, Vec3(1, 0, 0), std::log(2.0), {0.0, 0.0, 0.0}},     // both at infinity
-      {{0.2, 0.1}, {-0.3, -0.2}, Vec3(0.1, -0.2, -1).normalized(), std::log(5.0), {0.2, -0.1, 0.05}},
-      {{0.0, 0.0}, {0.3, 0.1}, Vec3(0.3, -0.1, -1).normalized(), std::log(1.0), {0, 0, 0}},  // aimed at its VP
+      {{-0.3, 0.2}, {0.4, 0.25}, Vec3(1, 0.05, 0.3).normalized(), std::log(1.2), {0.01, -0.02, 0.03}, {0.02, -0.03}},
+      {{0.1, -0.5}, {0.12, 0.5}, Vec3(0, 1, 0), std::log(0.8), {0, 0, 0}, {0, 0}},          // VP at infinity
+      {{-0.5, 0.0}, {0.5, 0.0}, Vec3(1, 0, 0), std::log(2.0), {0.0, 0.0, 0.0}, {0.05, 0.0}},     // both at infinity
+      {{0.2, 0.1}, {-0.3, -0.2}, Vec3(0.1, -0.2, -1).normalized(), std::log(5.0), {0.2, -0.1, 0.05}, {-0.04, 0.01}},
+      {{0.0, 0.0}, {0.3, 0.1}, Vec3(0.3, -0.1, -1).normalized(), std::log(1.0), {0, 0, 0}, {0, 0}},  // aimed at its VP
   };
   double worst = 0;
   for (const Case& k : cases) {
@@ -1029,22 +1096,23 @@ double segmentResidualGradientError() {
     g.halfLenPx = 0.5 * (k.b - k.a).norm() * 400;
     RefineSettings rs;
     const SegmentCost cost = costOf(g, k.d0, rs);
-    ceres::AutoDiffCostFunction<SegmentCost, 1, 3, 1> ad(new SegmentCost(cost));
+    ceres::AutoDiffCostFunction<SegmentCost, 1, 3, 1, 2> ad(new SegmentCost(cost));
     double omega[3] = {k.omega[0], k.omega[1], k.omega[2]}, logPhi = k.logPhi;
-    const double* params[2] = {omega, &logPhi};
-    double r, j0[3], j1[1];
-    double* jac[2] = {j0, j1};
+    double pp[2] = {k.pp[0], k.pp[1]};
+    const double* params[3] = {omega, &logPhi, pp};
+    double r, j0[3], j1[1], j2[2];
+    double* jac[3] = {j0, j1, j2};
     ad.Evaluate(params, &r, jac);
-    const double analytic[4] = {j0[0], j0[1], j0[2], j1[0]};
-    for (int j = 0; j < 4; ++j) {
-      double x[4] = {omega[0], omega[1], omega[2], logPhi}, xp[4], xm[4], rp, rm;
+    const double analytic[6] = {j0[0], j0[1], j0[2], j1[0], j2[0], j2[1]};
+    for (int j = 0; j < 6; ++j) {
+      double x[6] = {omega[0], omega[1], omega[2], logPhi, pp[0], pp[1]}, xp[6], xm[6], rp, rm;
       const double h = 1e-6;
-      std::copy(x, x + 4, xp);
-      std::copy(x, x + 4, xm);
+      std::copy(x, x + 6, xp);
+      std::copy(x, x + 6, xm);
       xp[j] += h;
       xm[j] -= h;
-      cost(xp, xp + 3, &rp);
-      cost(xm, xm + 3, &rm);
+      cost(xp, xp + 3, xp + 4, &rp);
+      cost(xm, xm + 3, xm + 4, &rm);
       const double numeric = (rp - rm) / (2 * h);
       const double err = std::abs(numeric - analytic[j]) / std::max(1.0, std::abs(numeric));
       worst = std::max(worst, err);

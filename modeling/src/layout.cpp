@@ -66,6 +66,67 @@ bool dehom(const Vec3& h, Vec2& out) {
   return out.allFinite();
 }
 
+// A crease seen only as contrast counts a little less than a detected segment.
+constexpr double kContrastWeight = 0.8;
+
+// Contrast is read every kContrastStepPx layout pixels along a line, averaged over kRun reads.
+constexpr double kContrastStepPx = 2;
+constexpr int kRun = 8;
+
+// A visible step: about 1.5 grey levels per pixel, more on textured or noisy photos.
+double edgeThreshold(double noise) { return std::max(1.5 / 255.0, 1.5 * noise); }
+
+// How much of a line in the photo is an edge, from the brightness gradient across it (`across`:
+// every kContrastStepPx along the line, the gradient's component normal to it, signed). A real edge
+// keeps one sign along its length; noise averages out along it; a bright patch crossed over
+// part of the line (a window's frame) is not an edge along the rest. So: running means over
+// kRun reads, and the weaker tail (20th percentile) of them for the better polarity, against a
+// threshold of about 1.5 grey levels per pixel (more on textured photos).
+double lineContrast(std::vector<float>& across, double noise) {
+  const int n = int(across.size());
+  if (n < kRun) return 0;
+  std::vector<float> pos, neg;
+  pos.reserve(n);
+  neg.reserve(n);
+  double run = 0;
+  for (int k = 0; k < n; ++k) {
+    run += across[k];
+    if (k >= kRun) run -= across[k - kRun];
+    if (k >= kRun - 1) {
+      pos.push_back(float(run / kRun));
+      neg.push_back(float(-run / kRun));
+    }
+  }
+  auto tail = [](std::vector<float>& v) {
+    const size_t q = v.size() / 5;
+    std::nth_element(v.begin(), v.begin() + q, v.end());
+    return double(v[q]);
+  };
+  const double q = std::max({0.0, tail(pos), tail(neg)});
+  const double g1 = edgeThreshold(noise);
+  return q * q / (q * q + g1 * g1);
+}
+
+// The longest stretch (reads) of `across` whose running means keep one sign above the
+// threshold.
+double longestEdgeRun(const std::vector<float>& across, double noise) {
+  const int n = int(across.size());
+  const double g1 = edgeThreshold(noise);
+  double run = 0;
+  int best = 0, cur = 0, sign = 0;
+  for (int k = 0; k < n; ++k) {
+    run += across[k];
+    if (k >= kRun) run -= across[k - kRun];
+    if (k < kRun - 1) continue;
+    const double m = run / kRun;
+    const int s = m > g1 ? 1 : m < -g1 ? -1 : 0;
+    cur = s != 0 && s == sign ? cur + 1 : (s != 0 ? 1 : 0);
+    sign = s;
+    best = std::max(best, cur);
+  }
+  return best > 0 ? best + kRun - 1 : 0;
+}
+
 // Everything about one photo's layout search that does not depend on the hypothesis.
 class LayoutSearch {
  public:
@@ -75,7 +136,7 @@ class LayoutSearch {
     const Camera& cam = *in_.camera;
     W_ = cam.widthPx;
     H_ = cam.heightPx;
-    ws_ = std::min(1.0, 400.0 / std::max(W_, H_));
+    ws_ = std::min(1.0, kLayoutSidePx / std::max(W_, H_));
     diag_ = std::hypot(double(W_), double(H_));
     hx_ = cam.vanishingPointOf(Vec3::UnitX());
     hy_ = cam.vanishingPointOf(Vec3::UnitY());
@@ -142,7 +203,8 @@ class LayoutSearch {
     double edgeSupported = 0, edgeVisible = 0, regionSigned = 0, regionTotal = 0;
   };
 
-  Score score(const std::array<double, 4>& t) const {
+  // full: also the photo's contrast along the edges (slower; the search's final stages).
+  Score score(const std::array<double, 4>& t, bool full = true) const {
     Score s;
     std::array<Vec2, 4> c;
     if (!corners(t, c)) return s;
@@ -164,8 +226,10 @@ class LayoutSearch {
       const double len = (b - a).norm();
       if (len < 1) continue;
       const int n = std::max(2, int(len / 4.0));
+      const double floor = full ? kContrastWeight * contrastAlong(edgeFamily[i], a, b) : 0.0;
       double sum = 0;
-      for (int k = 0; k < n; ++k) sum += evidence_[edgeFamily[i]].at(a + (b - a) * ((k + 0.5) / n));
+      for (int k = 0; k < n; ++k)
+        sum += std::max(floor, double(evidence_[edgeFamily[i]].at(a + (b - a) * ((k + 0.5) / n))));
       s.edgeSupported += sum / n * len;
       s.edgeVisible += len;
     }
@@ -209,6 +273,58 @@ class LayoutSearch {
     return s;
   }
 
+  // Where the photo shows an edge along line i (0 top, 1 bottom: x lines; 2 left, 3 right: y
+  // lines) with no segment found: the strongest local maxima of the summed contrast along the
+  // line, swept over its parameter range in steps of about a layout pixel.
+  std::vector<double> contrastCandidates(int i, size_t keep) const {
+    std::vector<double> out;
+    if (!in_.edges) return out;
+    const Vec2& u = i < 2 ? uY_ : uX_;
+    const Vec3& h = i < 2 ? hx_ : hy_;
+    const double step = 1.0 / ws_;
+    const double t0 = std::max(lo_[i], outside_[i < 2 ? 0 : 2]), t1 = std::min(hi_[i], outside_[i < 2 ? 1 : 3]);
+    std::vector<std::pair<double, double>> prof;  // (param, summed contrast)
+    for (double t = t0; t <= t1; t += step) {
+      const Vec3 l = h.cross(hom(vz_ + t * u));
+      // The line's visible part: intersect with the photo through two far points on it.
+      const Vec2 dir(l.y(), -l.x());
+      if (dir.norm() < 1e-12) continue;
+      const Vec2 base = vz_ + t * u;
+      Vec2 a = (base - 4 * diag_ * dir.normalized()) * ws_, b = (base + 4 * diag_ * dir.normalized()) * ws_;
+      double sum = 0;
+      if (clipToRect(a, b, W_ * ws_, H_ * ws_)) sum = contrastAlong(i < 2 ? 0 : 1, a, b, true);
+      prof.push_back({t, sum});
+    }
+    std::vector<std::pair<double, double>> peaks;  // (sum, param)
+    for (size_t k = 1; k + 1 < prof.size(); ++k)
+      if (prof[k].second > prof[k - 1].second && prof[k].second >= prof[k + 1].second &&
+          prof[k].second > 15.0)
+        peaks.push_back({prof[k].second, prof[k].first});
+    std::sort(peaks.begin(), peaks.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (size_t k = 0; k < std::min(keep, peaks.size()); ++k) out.push_back(peaks[k].second);
+    return out;
+  }
+
+  // lineContrast of the segment a-b (layout pixels) of a family-f line.
+  // longestRun: instead, the length (layout pixels) of its longest stretch that is an edge (a
+  // line through the photo crosses other surfaces beyond the back wall's corners).
+  double contrastAlong(int f, const Vec2& a, const Vec2& b, bool longestRun = false) const {
+    if (across_[f].empty()) return 0;
+    const double len = (b - a).norm();
+    const int n = int(len / kContrastStepPx);
+    if (n < 2) return 0;
+    std::vector<float>& v = scratch_;
+    v.clear();
+    const cv::Mat& m = across_[f];
+    for (int k = 0; k < n; ++k) {
+      const Vec2 q = a + (b - a) * ((k + 0.5) / n);
+      const int x = std::clamp(int(q.x()), 0, m.cols - 1), y = std::clamp(int(q.y()), 0, m.rows - 1);
+      v.push_back(m.at<float>(y, x));
+    }
+    return longestRun ? kContrastStepPx * longestEdgeRun(v, in_.edges->noise)
+                      : lineContrast(v, in_.edges->noise);
+  }
+
   const std::array<double, 4>& lo() const { return lo_; }
   const std::array<double, 4>& hi() const { return hi_; }
   const std::array<double, 4>& defaults() const { return default_; }
@@ -218,22 +334,54 @@ class LayoutSearch {
     return (s.aPx - vz_).norm() < (s.bPx - vz_).norm() ? s.aPx : s.bPx;
   }
   double diag() const { return diag_; }
+  bool bordersBright(size_t i) const { return bright_[i]; }
 
  private:
+  // Segments along a saturated patch (a window, a lamp, a sunlit floor patch: the photo is
+  // clipped on one side of them over most of their length) are the patch's outline, not the
+  // room's edges: they vote for no box edge (they still count where they lie, for the faces).
+  void markBright() {
+    bright_.assign(in_.segments->size(), false);
+    if (!in_.edges || in_.edges->clipped.empty()) return;
+    const cv::Mat& m = in_.edges->clipped;
+    for (size_t i = 0; i < in_.segments->size(); ++i) {
+      const LineSegment& s = (*in_.segments)[i];
+      const Vec2 a = s.aPx * ws_, b = s.bPx * ws_;
+      const double len = (b - a).norm();
+      if (len < 1) continue;
+      const Vec2 n = Vec2(a.y() - b.y(), b.x() - a.x()) / len;
+      const int count = std::max(3, int(len / 2));
+      int side[2] = {0, 0};
+      for (int k = 0; k < count; ++k) {
+        const Vec2 p = a + (b - a) * ((k + 0.5) / count);
+        for (int j = 0; j < 2; ++j) {
+          const Vec2 q = p + (j ? 2.0 : -2.0) * n;
+          const int x = int(q.x()), y = int(q.y());
+          if (x >= 0 && y >= 0 && x < m.cols && y < m.rows && m.at<unsigned char>(y, x)) ++side[j];
+        }
+      }
+      bright_[i] = std::max(side[0], side[1]) * 2 > count;
+    }
+  }
+
   void buildEvidence() {
+    markBright();
     const int w = std::max(1, int(std::lround(W_ * ws_))), h = std::max(1, int(std::lround(H_ * ws_)));
     for (int f = 0; f < 3; ++f) {
       cv::Mat mask(h, w, CV_8U, cv::Scalar(255));
-      for (const LineSegment& s : *in_.segments)
-        if (s.family == f && !s.userGiven)
+      for (size_t i = 0; i < in_.segments->size(); ++i) {
+        const LineSegment& s = (*in_.segments)[i];
+        if (s.family == f && !s.userGiven && !bright_[i])
           cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
                    cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
+      }
       // Receding (z) lines of a floor, ceiling or side wall end where the back wall begins:
       // their far ends mark the back wall's edges, drawn as short x strokes (top and bottom
       // edges) and y strokes (side edges).
       if (f == 0 || f == 1)
-        for (const LineSegment& s : *in_.segments) {
-          if (s.family != 2 || s.userGiven) continue;
+        for (size_t i = 0; i < in_.segments->size(); ++i) {
+          const LineSegment& s = (*in_.segments)[i];
+          if (s.family != 2 || s.userGiven || bright_[i]) continue;
           const Vec2 far = farEnd(s);
           const Vec3& hv = f == 0 ? hx_ : hy_;
           Vec2 dir(hv.x() - far.x() * hv.z(), hv.y() - far.y() * hv.z());
@@ -250,6 +398,8 @@ class LayoutSearch {
       cv::multiply(dist, dist, e, -1.0 / (2 * kSigma * kSigma));
       cv::exp(e, evidence_[f].e);
     }
+    if (in_.edges && in_.edges->gx.cols == w && in_.edges->gx.rows == h)
+      for (int f = 0; f < 3; ++f) buildAcross(f);
     // Samples every 4 working pixels, at most about 400 in all.
     double total = 0;
     for (const LineSegment& s : *in_.segments)
@@ -266,6 +416,27 @@ class LayoutSearch {
       }
     }
   }
+
+  // The gradient's component across the family-f line through each pixel (the line from the
+  // pixel to that family's vanishing point), with a sign that is the same along any such line
+  // on one side of the vanishing point.
+  void buildAcross(int f) {
+    const Vec3 h = cam().vanishingPointOf(Vec3::Unit(f));
+    const PhotoEdges& pe = *in_.edges;
+    cv::Mat& m = across_[f];
+    m.create(pe.gx.rows, pe.gx.cols, CV_32F);
+    for (int y = 0; y < m.rows; ++y)
+      for (int x = 0; x < m.cols; ++x) {
+        const double px = (x + 0.5) / ws_, py = (y + 0.5) / ws_;
+        Vec2 d(h.x() - px * h.z(), h.y() - py * h.z());
+        const double dn = d.norm();
+        if (h.z() < 0) d = -d;  // the same image direction whatever the point's sign
+        m.at<float>(y, x) = dn > 1e-12 ? float((pe.gx.at<float>(y, x) * -d.y() +
+                                                pe.gy.at<float>(y, x) * d.x()) / dn)
+                                       : 0.f;
+      }
+  }
+  const Camera& cam() const { return *in_.camera; }
 
   // An ordinary room: 5 m wide, the back wall 5 m ahead, the ceiling 1.1 m above a 1.6 m eye.
   void defaultParams() {
@@ -298,10 +469,38 @@ class LayoutSearch {
   Vec2 vz_, uX_, uY_;
   std::array<double, 4> lo_{}, hi_{}, default_{}, outside_{};
   EvidenceMap evidence_[3];
+  cv::Mat across_[3];  // per family: the gradient across that family's line through each pixel
+  mutable std::vector<float> scratch_;
+  std::vector<bool> bright_;  // per segment: outlines a saturated patch (markBright)
   std::vector<Sample> samples_;
 };
 
 }  // namespace
+
+std::shared_ptr<const PhotoEdges> photoEdgesOf(const cv::Mat& grey8, int photoW, int photoH) {
+  if (grey8.empty() || photoW <= 0 || photoH <= 0) return nullptr;
+  const double ws = std::min(1.0, kLayoutSidePx / std::max(photoW, photoH));
+  const int w = std::max(1, int(std::lround(photoW * ws))), h = std::max(1, int(std::lround(photoH * ws)));
+  if (w < 8 || h < 8) return nullptr;
+  cv::Mat g;
+  grey8.convertTo(g, CV_32F, 1.0 / 255.0);
+  cv::Mat r;
+  cv::resize(g, r, cv::Size(w, h), 0, 0, cv::INTER_AREA);
+  auto pe = std::make_shared<PhotoEdges>();
+  cv::Sobel(r, pe->gx, CV_32F, 1, 0, 3, 1.0 / 8.0);
+  cv::Sobel(r, pe->gy, CV_32F, 0, 1, 3, 1.0 / 8.0);
+  // Saturated patches (windows, lamps, sunlit floor): their outlines are not the room's edges.
+  cv::Mat clipped = r >= 0.97f;
+  cv::dilate(clipped, pe->clipped, cv::Mat::ones(5, 5, CV_8U));
+  pe->gx.setTo(0.f, pe->clipped);
+  pe->gy.setTo(0.f, pe->clipped);
+  cv::Mat mag;
+  cv::magnitude(pe->gx, pe->gy, mag);
+  std::vector<float> v(mag.begin<float>(), mag.end<float>());
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  pe->noise = v[v.size() / 2];
+  return pe;
+}
 
 LayoutResult estimateLayout(const LayoutInput& in) {
   LayoutResult out;
@@ -372,8 +571,9 @@ LayoutResult estimateLayout(const LayoutInput& in) {
       // meets the back wall): the best 5 and 2 clusters.
       for (const bool receding : {false, true}) {
         std::vector<std::pair<double, double>> votes;  // (param, weight)
-        for (const LineSegment& sg : *in.segments) {
-          if (sg.userGiven) continue;
+        for (size_t k = 0; k < in.segments->size(); ++k) {
+          const LineSegment& sg = (*in.segments)[k];
+          if (sg.userGiven || search.bordersBright(k)) continue;
           const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
           if (receding ? sg.family != 2 : !mine) continue;
           const double v = search.paramOfCorner(
@@ -396,11 +596,17 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         }
         std::sort(merged.begin(), merged.end(),
                   [](const auto& x, const auto& y) { return x.first > y.first; });
-        const size_t keep = receding ? 2 : 5;
+        const size_t keep = receding ? 2 : 4;
         for (size_t k = 0; k < std::min(keep, merged.size()); ++k) cand[i].push_back(merged[k].second);
       }
+      for (double v : search.contrastCandidates(i, 3)) cand[i].push_back(v);
       cand[i].push_back(search.outside()[i]);
       cand[i].push_back(t[i]);
+      // Candidates closer than half a percent of the diagonal are one.
+      std::sort(cand[i].begin(), cand[i].end());
+      cand[i].erase(std::unique(cand[i].begin(), cand[i].end(),
+                                [&](double x, double y) { return y - x < 0.005 * search.diag(); }),
+                    cand[i].end());
     }
     struct Cand { double score; std::array<double, 4> t; };
     std::vector<Cand> cands;
@@ -411,12 +617,17 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         for (double c : cand[2])
           for (double d : cand[3]) {
             p = {a, b, c, d};
-            cands.push_back({search.score(p).total, p});
+            cands.push_back({search.score(p, false).total, p});
           }
       }
     std::sort(cands.begin(), cands.end(),
               [](const Cand& x, const Cand& y) { return x.score > y.score; });
-    for (size_t i = 0; i < std::min<size_t>(3, cands.size()); ++i) starts.push_back(cands[i].t);
+    // The segments' best few, re-scored with the photo's contrast (a crease no segment found).
+    cands.resize(std::min<size_t>(12, cands.size()));
+    for (Cand& c : cands) c.score = search.score(c.t).total;
+    std::sort(cands.begin(), cands.end(),
+              [](const Cand& x, const Cand& y) { return x.score > y.score; });
+    for (size_t i = 0; i < std::min<size_t>(2, cands.size()); ++i) starts.push_back(cands[i].t);
     starts.push_back(t);  // the ordinary room
   }
 
@@ -425,7 +636,7 @@ LayoutResult estimateLayout(const LayoutInput& in) {
     // Coordinate ascent, coarse to fine: a window around the current value, shrinking.
     LayoutSearch::Score cur = search.score(s);
     double window = in.startCornersPx ? 0.05 : 0.25;
-    for (int round = 0; round < 12 && window * search.diag() > 0.5; ++round) {
+    for (int round = 0; round < 30 && window * search.diag() > 0.5; ++round) {
       if (stop()) break;
       bool improved = false;
       for (int i = 0; i < 4; ++i) {

@@ -1,5 +1,7 @@
 #include "lines.h"
 
+#include "layout.h"
+
 #include <opencv2/imgproc.hpp>
 #include <opencv2/ximgproc/fast_line_detector.hpp>
 
@@ -71,6 +73,7 @@ DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, 
   if (lum.cols < 8 || lum.rows < 8) return out;
   // Rendered and high-ISO photos are noisy: a light blur keeps edges, drops noise segments.
   cv::GaussianBlur(grey8, grey8, cv::Size(0, 0), 1.0);
+  out.edges = photoEdgesOf(grey8, linearRgb.width, linearRgb.height);
   const double diag = std::hypot(double(lum.cols), double(lum.rows));
   const int minLength = std::max(6, int(std::lround(0.025 * diag)));
   auto fld = cv::ximgproc::createFastLineDetector(minLength, 1.414f, 20.0, 40.0, 3, false);

@@ -5,14 +5,18 @@
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image.h"
 
+#include <memory>
 #include <vector>
 
 namespace inlay::detail {
+
+struct PhotoEdges;
 
 struct DetectedLines {
   std::vector<LineSegment> segments;  // photo pixels, longest first, family -1
   double workingScale = 1;            // working image size / photo size
   int workingWidth = 0, workingHeight = 0;
+  std::shared_ptr<const PhotoEdges> edges;  // for the layout; null when too small
 };
 
 // Grey (luminance, sRGB-encoded) at a long side of at most maxWorkingSidePx, area-averaged

@@ -1,9 +1,12 @@
 // Camera and layout benchmark: York Urban (real photos) and the ground-truth rooms.
 //
 // usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets 5,15,30,60,120,240,480]
-//                     [--default-budget 120] [--gt-segments] [--no-exif]
-// Writes OUT/york.csv, OUT/scenes.csv (one row per image and search budget), OUT/summary.json;
-// plot with bench_camera_plot.py. Scores exactly as ../shared/tools/score_york.py does
+//                     [--default-budget 120] [--gt-segments] [--no-exif] [--principal-sigma S]
+//                     [--known-principal] [--reps N] [--dump DIR]
+// Writes OUT/camera_bench.csv (one row per image and search budget) and
+// OUT/camera_bench_summary.json; plot with bench_camera_plot.py. --known-principal gives the
+// estimator the truth's principal point (a diagnosis, not a photo-alone figure); --dump writes
+// each estimate's segments, families, residuals and camera as JSON for looking at failures. Scores exactly as ../shared/tools/score_york.py does
 // (orthogonalised truth, closest estimated axis per true direction, horizon error at the left and
 // right borders over the image height, AUC up to 0.25). Photos are read with loadImage and the
 // EXIF focal length is the prior, as `inlay-cli estimate` does (--no-exif: the 60 degree prior).
@@ -133,9 +136,33 @@ struct Row {
   double ms = 0;
   Scores s;
   double conf = 0, layoutScore = 0;
+  Vec2 principal{0, 0};
   bool manhattan = false;
   int segments = 0;
 };
+
+// For looking at failures (tests/bench/bench_camera_plot.py --overlay draws them).
+void dumpEstimate(const std::string& dir, const std::string& name, int budget, const CameraEstimate& e) {
+  json j;
+  j["focal_px"] = e.camera.focalPx;
+  j["principal_px"] = {e.camera.principalPx.x(), e.camera.principalPx.y()};
+  json rot = json::array();
+  for (int r = 0; r < 3; ++r)
+    rot.push_back({e.camera.worldFromCamera(r, 0), e.camera.worldFromCamera(r, 1), e.camera.worldFromCamera(r, 2)});
+  j["rotation"] = rot;
+  json segs = json::array();
+  for (const auto& s : e.segments)
+    segs.push_back({s.aPx.x(), s.aPx.y(), s.bPx.x(), s.bPx.y(), s.family, s.residualPx});
+  j["segments"] = segs;
+  json bw = json::array();
+  for (const auto& p : e.backWallPx) bw.push_back({p.x(), p.y()});
+  j["back_wall_px"] = bw;
+  j["confidence"] = {e.confidence[0], e.confidence[1], e.confidence[2]};
+  j["warnings"] = e.warnings;
+  fs::create_directories(dir);
+  std::ofstream(fs::path(dir) / (fs::path(name).stem().string() + "_" + std::to_string(budget) + ".json"))
+      << j.dump() << "\n";
+}
 
 }  // namespace
 
@@ -144,6 +171,10 @@ int main(int argc, char** argv) {
   std::vector<int> budgets = {5, 15, 30, 60, 120, 240, 480};
   int defaultBudget = EstimateOptions{}.searchIterations;
   bool gtSegments = false, useExif = true;
+  double principalSigma = EstimateOptions{}.principalSigma;
+  bool knownPrincipal = false;  // diagnosis only: the truth's principal point given
+  int reps = 3;
+  std::string dumpDir;  // per image and budget: the estimate's segments and camera (JSON)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto next = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -154,9 +185,13 @@ int main(int argc, char** argv) {
     else if (a == "--default-budget") defaultBudget = std::stoi(next());
     else if (a == "--gt-segments") gtSegments = true;
     else if (a == "--no-exif") useExif = false;
+    else if (a == "--principal-sigma") principalSigma = std::stod(next());
+    else if (a == "--known-principal") knownPrincipal = true;
+    else if (a == "--reps") reps = std::max(1, std::stoi(next()));
+    else if (a == "--dump") dumpDir = next();
     else {
       std::cerr << "usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets a,b,c] "
-                   "[--default-budget N] [--gt-segments] [--no-exif]\n";
+                   "[--default-budget N] [--gt-segments] [--no-exif] [--principal-sigma S]\n";
       return 2;
     }
   }
@@ -172,11 +207,13 @@ int main(int argc, char** argv) {
     for (int b : budgets) {
       EstimateOptions o;
       o.searchIterations = b;
+      o.principalSigma = principalSigma;
+      if (knownPrincipal) o.principalPx = t.pp;
       if (useExif) o.priorFocalPx = li.exif.focalPx(im.width, im.height);
       // Best of 3 runs for the time (the machine is shared); results are deterministic.
       double bestMs = 1e300;
       std::optional<CameraEstimate> est;
-      for (int rep = 0; rep < 3; ++rep) {
+      for (int rep = 0; rep < reps; ++rep) {
         const auto t0 = std::chrono::steady_clock::now();
         auto e = segs ? estimateCameraFromSegments(im.width, im.height, *segs, o) : estimateCamera(im, o);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -188,6 +225,7 @@ int main(int argc, char** argv) {
         est = *e;
       }
       if (!est) continue;
+      if (!dumpDir.empty()) dumpEstimate(dumpDir, name, b, *est);
       Row r;
       r.set = set;
       r.image = name;
@@ -195,6 +233,7 @@ int main(int argc, char** argv) {
       r.ms = bestMs;
       r.s = score(t, *est);
       r.conf = est->overallConfidence;
+      r.principal = est->camera.principalPx;
       r.layoutScore = est->layoutScore;
       r.manhattan = est->manhattan;
       r.segments = int(est->segments.size());
@@ -275,12 +314,13 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(fs::path(out) / "camera_bench.csv");
     csv << "set,image,budget,ms,focal_rel_err,vp_angle_deg_max,vp_angle_deg_mean,horizon_err,"
-           "corner_err_px_max,corner_err_px_mean,confidence,manhattan,layout_score,segments\n";
+           "corner_err_px_max,corner_err_px_mean,confidence,manhattan,layout_score,segments,principal_x,principal_y\n";
     for (const Row& r : rows)
       csv << r.set << "," << r.image << "," << r.budget << "," << r.ms << "," << r.s.focalRel
           << "," << r.s.angMax << "," << r.s.angMean << "," << r.s.horizon << "," << r.s.cornerMax
           << "," << r.s.cornerMean << "," << r.conf << "," << r.manhattan << ","
-          << r.layoutScore << "," << r.segments << "\n";
+          << r.layoutScore << "," << r.segments << "," << r.principal.x() << ","
+          << r.principal.y() << "\n";
   }
   json summary;
   for (const std::string set : {"york", "scenes"})

@@ -71,6 +71,27 @@ for set_ in ("york", "scenes"):
     fig.savefig(os.path.join(out, f"camera_{set_}_budget.png"), dpi=110)
     plt.close(fig)
 
+    # The same per photo: one line per image through its budgets (a budget that helps one photo
+    # and hurts another shows here, not in the medians).
+    keys = [("vp_angle_deg_max", "worst-direction error (deg)"), ("horizon_err", "horizon error / height")]
+    if set_ == "scenes":
+        keys.append(("corner_err_px_max", "back-wall corner error, max (px)"))
+    fig, ax = plt.subplots(1, len(keys), figsize=(5 * len(keys), 4.2))
+    for name in sorted({r["image"] for r in rows if r["set"] == set_}):
+        rr = sorted((r for r in rows if r["set"] == set_ and r["image"] == name), key=lambda r: int(r["budget"]))
+        for k, (key, lab) in enumerate(keys):
+            ax[k].plot([float(r["ms"]) for r in rr], [max(1e-4, float(r[key])) for r in rr], "-",
+                       lw=0.8, alpha=0.6, label=name if set_ == "scenes" else None)
+    for k, (key, lab) in enumerate(keys):
+        ax[k].set(xscale="log", yscale="log", xlabel="ms per photo (one core)", ylabel=lab)
+        ax[k].grid(alpha=0.3)
+    if set_ == "scenes":
+        ax[0].legend(fontsize=7)
+    fig.suptitle(f"{set_}: error against run time per photo (budgets {budgets})")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"camera_{set_}_budget_per_image.png"), dpi=110)
+    plt.close(fig)
+
 scene = [r for r in rows if r["set"] == "scenes" and int(r["budget"]) == default]
 if scene:
     fig, ax = plt.subplots(figsize=(8, 4))

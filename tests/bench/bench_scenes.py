@@ -7,6 +7,9 @@ object, sRGB [0,1]; the same after removing the mean; the surroundings). Writes
 OUT/scenes_error_vs_time.csv and OUT/scenes_error_vs_time.png.
 
 usage: bench_scenes.py INLAY_CLI [--out DIR] [--budgets 2,4,8,16] [--scenes d1,d3] [--repeat N]
+                       [--mode assisted|auto]
+--mode auto: the harness's automatic scene (no camera, layout or table keys: inlay-cli
+estimates them); the CSV and PNG names then end in _auto.
 """
 import csv, json, os, statistics, subprocess, sys, time
 
@@ -20,6 +23,8 @@ def main():
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     budgets = [float(x) for x in opt("--budgets", "2,4,8,16,32").split(",")]
     repeat = int(opt("--repeat", "1"))
+    mode = opt("--mode", "assisted")
+    tag = "" if mode == "assisted" else "_" + mode
     shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
     sdir = os.path.join(shared, "scenes")
     harness = os.path.join(shared, "tools", "harness.py")
@@ -43,7 +48,7 @@ def main():
                 sf = os.path.join(out, "%s.json" % name)
                 comp = os.path.join(out, "%s_%g.png" % (name, budget))
                 prog = os.path.join(out, "%s_%g.csv" % (name, budget))
-                subprocess.run([py, harness, "scene", sd, sf, "--seconds", str(budget)], check=True)
+                subprocess.run([py, harness, "scene", sd, sf, "--seconds", str(budget), "--mode", mode], check=True)
                 t0 = time.time()
                 p = subprocess.run([cli, "render", sf, "-o", comp, "--quiet", "--progress-csv", prog], capture_output=True, text=True)
                 walls.append(time.time() - t0)
@@ -65,7 +70,7 @@ def main():
             print(json.dumps(row), flush=True)
     if not rows:
         return 1
-    csvp = os.path.join(out, "scenes_error_vs_time.csv")
+    csvp = os.path.join(out, "scenes_error_vs_time%s.csv" % tag)
     with open(csvp, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
@@ -85,7 +90,7 @@ def main():
         ax[1].set(xscale="log", xlabel="wall seconds", ylabel="surroundings RMSE vs truth", title="shadows and bounce")
         ax[0].legend(fontsize=7)
         fig.tight_layout()
-        fig.savefig(os.path.join(out, "scenes_error_vs_time.png"), dpi=110)
+        fig.savefig(os.path.join(out, "scenes_error_vs_time%s.png" % tag), dpi=110)
     except ImportError:
         print("matplotlib missing: no plot")
     print("wrote", csvp)

@@ -202,6 +202,7 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
   EstimateOptions eo;
   eo.priorFocalPx = camera.focalPx ? camera.focalPx : photo.exif.focalPx(W, H);
   eo.cameraHeightM = heightM;
+  eo.principalPx = camera.principalPx;  // the rotation is fitted about the given point
   eo.cancel = cancel;
   auto e = estimateCamera(photo.linearRgb, eo);
   if (!e) return e.error();

@@ -30,11 +30,16 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace inlay {
+
+namespace detail {
+struct PhotoEdges;  // the photo's gradient at the layout's scale (layout.h)
+}
 
 // One straight line segment of the photo. `family`: the world axis (0 x, 1 y, 2 z) whose
 // vanishing point it supports, -1 when it supports none. `residualPx`: the distance of its
@@ -53,6 +58,8 @@ struct VanishingPointInfo {
   Vec3 homogeneousPx{0, 0, 1};      // unit norm (x, y, w); w ~ 0 at infinity
   Vec3 directionCamera{0, 0, -1};    // the world axis in the camera frame (OpenGL), unit
   bool atInfinity = false;           // farther than 1000 image diagonals from the centre
+  std::vector<int> segmentIndices;   // its supporting segments: indices into CameraEstimate::
+                                     // segments (their residualPx are the residuals)
   int segmentCount = 0;              // supporting segments (detected and user-given)
   double supportLengthPx = 0;        // their total length
   double rmsResidualPx = 0;          // root-mean-square endpoint residual of the supporters
@@ -81,7 +88,7 @@ struct SearchProgress {
 // no Manhattan structure it is the fallback (prior focal length, level or vertical-aligned
 // rotation) and `manhattan` is false, the confidences are low and `warnings` say why.
 struct CameraEstimate {
-  Camera camera;                                 // principal point at the image centre
+  Camera camera;                                 // principal point: see principalSigma
   std::array<Vec2, 3> vanishingPointsPx;         // x, y, z: scene file form (huge when at infinity)
   std::array<VanishingPointInfo, 3> vanishingPoints;
   std::array<double, 3> confidence{0, 0, 0};     // = vanishingPoints[i].confidence
@@ -96,6 +103,10 @@ struct CameraEstimate {
   EstimateTimings timings;
   std::vector<SearchProgress> progress;
   double workingScale = 1;                       // working image size / photo size
+  // Opaque, shared between copies: the photo's brightness gradient at the layout's scale (at
+  // most 400 px, about 1 MB), so correctEstimate re-searches the box with the same evidence
+  // without the photo. Null for estimateCameraFromSegments.
+  std::shared_ptr<const detail::PhotoEdges> photoEdges;
 };
 
 // Defaults are what `inlay-cli estimate` uses.
@@ -117,6 +128,16 @@ struct EstimateOptions {
   int maxSegments = 300;
   // Inlier threshold: angle between a segment and the line from its midpoint to the VP.
   double inlierAngleDeg = 2.0;
+  // Principal point: > 0 refines it with the focal length and rotation under a Gaussian prior
+  // at the image centre, 1-sigma this fraction of half the long side. Default 0: held at the
+  // centre, because a photo's lines do not locate it: on York (true point 17 px off-centre) the
+  // orthocentres of the hand-labelled vanishing points scatter by +-30 px, and refining it (0.05)
+  // left the horizon AUC as it was (0.912 vs 0.913) while the rendered rooms got 0.1-0.3 degrees
+  // worse (bench_camera --principal-sigma).
+  double principalSigma = 0;
+  // A known principal point (photo pixels; the scene file's camera.principal_px, a calibration):
+  // held exactly, principalSigma ignored.
+  std::optional<Vec2> principalPx;
   double cameraHeightM = 1.6;  // Camera::heightM of the result (the scene's camera.height_m)
   bool estimateLayout = true;
   uint32_t seed = 1;            // hypothesis sampling; same seed, same result
