@@ -75,6 +75,7 @@ struct ObjectData {
   bool mirrored = false;         // negative determinant: winding flips
   bool shadingNormals = false;   // per-vertex normals usable
   Material material;
+  int meshLight = -1;            // index into Impl::meshLights when emissive
 };
 
 struct LightData {
@@ -87,6 +88,19 @@ struct LightData {
   Vec3 radiance;
   Vec3 centre;
   double power = 0;  // area x mean radiance; 0: never picked
+};
+
+// An emissive object as a light: its triangles in world space (refreshed when it moves), picked
+// by area (one radiance per object, so by power too). Two-sided, as its hits are.
+struct MeshLightData {
+  size_t object = 0;
+  std::vector<Vec3> corner, edge1, edge2;  // triangle k = corner + b1 edge1 + b2 edge2
+  std::vector<double> cumulativeArea;      // running sum; back() = area
+  double area = 0;
+  Vec3 radiance = Vec3::Zero();
+  Vec3 centre = Vec3::Zero();
+  std::array<Vec3, 8> boxCorners;          // world bounding box
+  double power = 0;                        // area x mean radiance; 0: never picked
 };
 
 struct SunData {
@@ -189,6 +203,7 @@ struct PathTracer::Impl {
   std::vector<SunData> suns;
   unsigned surfaceCount = 0;
   std::vector<LightData> lights;
+  std::vector<MeshLightData> meshLights;  // NEE sources lights.size() + k
   std::vector<ObjectData> objects;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
   mutable std::atomic<uint64_t> rays{0};
@@ -309,10 +324,14 @@ struct PathTracer::Impl {
   // precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
 
-  // How much NEE from point p (facing normal n) favours light j: power over squared distance
-  // (capped next to the light), 0 when p is behind the light or the light lies wholly below
-  // p's tangent plane (it cannot contribute there: such directions are rejected).
+  // NEE sources: area lights 0 .. lights.size() - 1, then the emissive objects.
+  size_t sourceCount() const { return lights.size() + meshLights.size(); }
+
+  // How much NEE from point p (facing normal n) favours source j: power over squared distance
+  // (capped next to the light), 0 when p is behind an area light or the source lies wholly
+  // below p's tangent plane (it cannot contribute there: such directions are rejected).
   double selectionWeight(size_t j, const Vec3& p, const Vec3& n) const {
+    if (j >= lights.size()) return meshSelectionWeight(meshLights[j - lights.size()], p, n);
     const LightData& l = lights[j];
     if (!(l.power > 0) || (p - l.emitter[0]).dot(l.normal) <= 0) return 0;
     bool above = false;
@@ -320,19 +339,26 @@ struct PathTracer::Impl {
     if (!above) return 0;
     return l.power / std::max((l.centre - p).squaredNorm(), 0.25 * l.area);
   }
+  static double meshSelectionWeight(const MeshLightData& m, const Vec3& p, const Vec3& n) {
+    if (!(m.power > 0)) return 0;
+    bool above = false;
+    for (const Vec3& c : m.boxCorners) above = above || (c - p).dot(n) > 0;
+    if (!above) return 0;
+    return m.power / std::max((m.centre - p).squaredNorm(), 0.25 * m.area);
+  }
   double selectionTotal(const Vec3& p, const Vec3& n) const {
     double total = 0;
-    for (size_t j = 0; j < lights.size(); ++j) total += selectionWeight(j, p, n);
+    for (size_t j = 0; j < sourceCount(); ++j) total += selectionWeight(j, p, n);
     return total;
   }
-  // The light NEE picks with u in [0, 1); lights.size() when none can contribute.
+  // The source NEE picks with u in [0, 1); sourceCount() when none can contribute.
   size_t pickLight(const Vec3& p, const Vec3& n, double u, double* prob) const {
     const double total = selectionTotal(p, n);
-    if (!(total > 0)) return lights.size();
+    if (!(total > 0)) return sourceCount();
     const double target = u * total;
     double run = 0;
-    size_t last = lights.size();
-    for (size_t j = 0; j < lights.size(); ++j) {
+    size_t last = sourceCount();
+    for (size_t j = 0; j < sourceCount(); ++j) {
       const double w = selectionWeight(j, p, n);
       if (!(w > 0)) continue;
       last = j;
@@ -344,6 +370,25 @@ struct PathTracer::Impl {
     }
     *prob = selectionWeight(last, p, n) / total;  // round-off at u close to 1
     return last;
+  }
+
+  // Refreshes the world triangles of object i's mesh light (if it is one).
+  void updateMeshLight(size_t i);
+  // A point on mesh light k uniform by area (u picks the triangle and is reused inside it);
+  // its unit geometric normal into *normal.
+  Vec3 sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const;
+  // Solid-angle pdf with which NEE from `from` picks the point `onLight` (geometric normal
+  // lightNormal) on mesh light k; NEE and the MIS weight of BSDF hits both use it.
+  double meshLightPdf(size_t k, const Vec3& from, const Vec3& fromNormal, const Vec3& onLight,
+                      const Vec3& lightNormal) const {
+    const MeshLightData& m = meshLights[k];
+    const double total = selectionTotal(from, fromNormal);
+    const double selectProb = total > 0 ? meshSelectionWeight(m, from, fromNormal) / total : 0.0;
+    const Vec3 w = onLight - from;
+    const double d2 = w.squaredNorm();
+    const double cosL = std::abs(lightNormal.dot(w)) / std::sqrt(d2);
+    if (!(selectProb > 0) || !(cosL > 0) || !(m.area > 0)) return 0;
+    return selectProb * d2 / (m.area * cosL);
   }
 
   // Solid-angle pdf with which NEE from `from` (facing normal fromNormal) picks the direction
@@ -396,6 +441,51 @@ struct PathTracer::Impl {
                  bool* firstHitIsObject) const;
 };
 
+void PathTracer::Impl::updateMeshLight(size_t i) {
+  const ObjectData& o = objects[i];
+  if (o.meshLight < 0) return;
+  MeshLightData& m = meshLights[size_t(o.meshLight)];
+  const Mat3 linear = o.worldFromObject.topLeftCorner<3, 3>();
+  const Vec3 shift = o.worldFromObject.topRightCorner<3, 1>();
+  m.corner.clear(), m.edge1.clear(), m.edge2.clear(), m.cumulativeArea.clear();
+  m.area = 0;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300), weighted = Vec3::Zero();
+  const TriangleMesh& mesh = *o.mesh;
+  for (const auto& tri : mesh.triangles) {
+    if (tri[0] >= mesh.positions.size() || tri[1] >= mesh.positions.size() || tri[2] >= mesh.positions.size())
+      continue;
+    const Vec3 a = linear * mesh.positions[tri[0]].cast<double>() + shift;
+    const Vec3 b = linear * mesh.positions[tri[1]].cast<double>() + shift;
+    const Vec3 c = linear * mesh.positions[tri[2]].cast<double>() + shift;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    if (!(area > 0) || !std::isfinite(area)) continue;  // needles and NaNs are never sampled
+    m.corner.push_back(a), m.edge1.push_back(b - a), m.edge2.push_back(c - a);
+    m.area += area;
+    m.cumulativeArea.push_back(m.area);
+    weighted += area * (a + b + c) / 3.0;
+    for (const Vec3& p : {a, b, c}) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  const double power = m.area * meanComponent(m.radiance);
+  m.power = m.area > 0 && std::isfinite(power) ? power : 0.0;
+  if (!(m.power > 0)) return;
+  m.centre = weighted / m.area;
+  for (int k = 0; k < 8; ++k)
+    m.boxCorners[size_t(k)] = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+}
+
+Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const {
+  const double target = u * m.area;
+  const size_t k = std::min(size_t(std::upper_bound(m.cumulativeArea.begin(), m.cumulativeArea.end(), target) -
+                                   m.cumulativeArea.begin()),
+                            m.cumulativeArea.size() - 1);
+  const double before = k > 0 ? m.cumulativeArea[k - 1] : 0.0;
+  const double span = m.cumulativeArea[k] - before;
+  const double uu = std::clamp(span > 0 ? (target - before) / span : 0.0, 0.0, 1.0);
+  const double su = std::sqrt(uu);
+  *normal = m.edge1[k].cross(m.edge2[k]).normalized();
+  return m.corner[k] + su * (1.0 - v) * m.edge1[k] + su * v * m.edge2[k];
+}
+
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  bool* firstHitIsObject) const {
   auto add = [&](const Vec3& c) {
@@ -446,8 +536,13 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     } else {
       const Material& m = objects[size_t(hit.index)].material;
       if (m.kind == Material::Kind::Emissive) {
-        // Emissive objects are not sampled by NEE: every hit counts in full (both sides).
-        add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission)), indirectHit));
+        // Both sides emit. After a non-specular bounce NEE could have found this point too.
+        const int k = objects[size_t(hit.index)].meshLight;
+        const double w = st.lastSpecular || k < 0
+                             ? 1.0
+                             : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal,
+                                                                       hit.point, hit.geometricNormal));
+        if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission) * w), indirectHit));
         return;
       }
       bsdf.kind = m.kind;
@@ -470,38 +565,51 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (bsdf.nonSpecular()) {
       const Frame frame(ns);
       const Vec3 woLocal = frame.toLocal(wo);
-      // Next-event estimation: one light picked by power over squared distance, one point
-      // uniform in its solid angle (rectangles) or area.
+      // Next-event estimation: one source picked by power over squared distance; on an area
+      // light one point uniform in its solid angle (rectangles) or area, on an emissive object
+      // one point uniform by area.
       double selectProb = 0;
-      const size_t li = lights.empty() ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
-      if (li < lights.size() && selectProb > 0) {
-        const LightData& l = lights[li];
+      const size_t li = sourceCount() == 0 ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
+      if (li < sourceCount() && selectProb > 0) {
         const auto uLight = rng.get2(dim / 2);
-        Vec3 y;
+        const bool meshLight = li >= lights.size();
+        Vec3 y, lightNormal, radiance;
         double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
-        if (l.rectangle) {
-          const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
-          if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+        if (meshLight) {
+          const MeshLightData& m = meshLights[li - lights.size()];
+          y = sampleMeshLight(m, uLight[0], uLight[1], &lightNormal);
+          radiance = m.radiance;
         } else {
-          const SphericalQuad sq(l.emitter, hit.point);
-          if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
+          const LightData& l = lights[li];
+          if (l.rectangle) {
+            const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
+            if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+          } else {
+            const SphericalQuad sq(l.emitter, hit.point);
+            if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
+          }
+          if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
+          lightNormal = l.normal;
+          radiance = l.radiance;
         }
-        if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
         Vec3 w = y - hit.point;
         const double d2 = w.squaredNorm();
         const double d = std::sqrt(d2);
         if (d > 0) w /= d;
-        const double cosL = -l.normal.dot(w);
+        // Area lights emit on their front only; emissive objects on both sides.
+        const double cosL = meshLight ? std::abs(lightNormal.dot(w)) : -lightNormal.dot(w);
         if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0) {
           double pdfBsdf = 0;
           const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
           if (fcos.maxCoeff() > 0) {
             const double pdfLight =
-                solidAngle > 0 ? selectProb / solidAngle : lightPdf(int(li), hit.point, ngFacing, y);
-            const Vec3 c = clampIndirect(
-                Vec3(throughput.cwiseProduct(fcos).cwiseProduct(l.radiance) *
-                     (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
-                depth >= 1);
+                meshLight ? meshLightPdf(li - lights.size(), hit.point, ngFacing, y, lightNormal)
+                : solidAngle > 0 ? selectProb / solidAngle
+                                 : lightPdf(int(li), hit.point, ngFacing, y);
+            const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(throughput.cwiseProduct(fcos).cwiseProduct(radiance) *
+                                                             (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                                                        depth >= 1)
+                                        : Vec3(Vec3::Zero());
             // The shadow ray runs from the offset origin to the sampled point itself, stopping
             // just short of the emitter (which would otherwise block its own light).
             const Vec3 o = hit.point + eps * ngFacing;
@@ -509,13 +617,17 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
             const double ds = ws.norm();
             ws /= ds;
             const double tFar = ds * (1.0 - 1e-4);
-            ++out.rays;
-            if (mode == Mode::Shared) {
+            if (meshLight) {
+              // An emissive object exists in the with-scene only.
+              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && (++out.rays, !occluded(withScene, o, ws, 0, tFar)))
+                out.with += c;
+            } else if (mode == Mode::Shared) {
+              ++out.rays;
               if (!occluded(withScene, o, ws, 0, tFar))
                 add(c);
               else if (++out.rays, !occluded(withoutScene, o, ws, 0, tFar))
                 out.without += c;  // only an object blocks it
-            } else if (!occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
+            } else if (++out.rays, !occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
               add(c);
             }
           }
@@ -710,7 +822,18 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       o.sunInstance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(o.sunInstance, o.scene);
     }
+    if (o.material.kind == Material::Kind::Emissive) {
+      const Vec3& e = o.material.emission;
+      o.material.emission = e.allFinite() ? Vec3(e.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+      if (o.instance && o.material.emission.maxCoeff() > 0) {
+        o.meshLight = int(d.meshLights.size());
+        d.meshLights.emplace_back();
+        d.meshLights.back().object = i;
+        d.meshLights.back().radiance = o.material.emission;
+      }
+    }
     d.setTransform(o, src.worldFromObject);
+    d.updateMeshLight(i);
     if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
   }
   attachCardShadowFilters(d.withScene);
@@ -758,6 +881,7 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (index >= d.objects.size()) return;
   d.scene.objects[index].worldFromObject = worldFromObject;
   d.setTransform(d.objects[index], worldFromObject);
+  d.updateMeshLight(index);
   rtcCommitScene(d.withScene);
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
