@@ -538,11 +538,11 @@ class Reader {
     knownKeys(j, p, {"preset", "albedo", "roughness", "ior", "rgb"});
     MaterialKeys m;
     if (j.contains("preset")) m.preset = string(j["preset"], child(p, "preset"));
-    static const std::set<std::string> presets = {"diffuse", "glossy", "mirror",
-                                                  "glass", "emissive", "asset"};
+    static const std::set<std::string> presets = {"diffuse", "glossy", "mirror", "glass", "emissive",
+                                                  "asset", "metal", "rough_glass"};
     if (!presets.count(m.preset))
       fail(child(p, "preset"), "unknown material preset '" + m.preset +
-                                   "' (expected diffuse, glossy, mirror, glass, emissive or asset)");
+                                   "' (expected diffuse, glossy, metal, mirror, glass, rough_glass, emissive or asset)");
     if (j.contains("albedo")) m.albedo = albedo(j["albedo"], child(p, "albedo"));
     if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
     if (j.contains("ior")) {

@@ -16,11 +16,14 @@
 // Light transport: unidirectional path tracing with next-event estimation to the area lights
 // (one light picked by power over squared distance, a point uniform in its solid angle, by area
 // when that is tiny, a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
-// full weight. Emissive objects are not sampled by NEE; every hit on them counts in full.
-// Materials: room surfaces are Lambertian with the projected albedo; objects are Lambertian,
-// Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Mirror, clear smooth
-// Glass (Fresnel, Snell, no absorption, no eta^2 radiance scaling: it cancels on the way out),
-// or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
+// full weight. Emissive objects are lights too: NEE picks them among the area lights by the same
+// rule and samples a point uniformly by area on their triangles (MIS with BSDF hits likewise);
+// they exist in the with-scene only, so their light reaches the with-sums alone.
+// Materials (bsdf.h): room surfaces are Lambertian with the projected albedo; objects are
+// Lambertian, Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Conductor
+// (GGX metal), Mirror, clear smooth Glass (Fresnel, Snell, no absorption, no eta^2 radiance
+// scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; a specular vertex: no
+// NEE), or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
 // min(0.95, max throughput).
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
@@ -40,6 +43,7 @@
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
+#include "bsdf.h"
 #include "embree_util.h"
 #include "sampling.h"
 
@@ -118,75 +122,10 @@ struct Hit {
   Vec3 shadingNormal;    // unit, world space; equals geometricNormal without vertex normals
 };
 
-struct BsdfSample {
-  Vec3 dir;
-  Vec3 weight;        // f cos / pdf
-  double pdf = 0;     // solid angle; 0 for specular
-  bool specular = false;
-  bool valid = false;
-};
-
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
   return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
 }
-
-Vec3 reflect(const Vec3& wo, const Vec3& n) { return 2.0 * wo.dot(n) * n - wo; }
-
-// Lambertian, or the dielectric-coated glossy model: f = F(cos_o) * DG / (4 cos_i cos_o) +
-// (1 - F(cos_o)) * albedo / pi, where the GGX lobe without Fresnel has directional albedo <= 1,
-// so the total never exceeds F + (1 - F) * albedo <= 1. Not reciprocal (F of the outgoing
-// direction only); a unidirectional tracer does not need reciprocity.
-struct SurfaceBsdf {
-  Material::Kind kind = Material::Kind::Diffuse;
-  Vec3 albedo{0.5, 0.5, 0.5};
-  double alpha = 0.1;
-  double ior = 1.5;
-
-  bool nonSpecular() const {
-    return kind == Material::Kind::Diffuse || kind == Material::Kind::Glossy;
-  }
-  double coatFresnel(double cosO) const {
-    double cosT = 0;
-    return fresnelDielectric(cosO, ior, &cosT);
-  }
-  // f * cos(wi) and the sampling pdf; directions local to the shading frame (+z normal).
-  Vec3 eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
-    *pdf = 0;
-    if (wo.z() <= 0 || wi.z() <= 0) return Vec3::Zero();
-    if (kind == Material::Kind::Diffuse) {
-      *pdf = wi.z() / kPi;
-      return albedo * (wi.z() / kPi);
-    }
-    const double f = coatFresnel(wo.z());
-    Vec3 h = wo + wi;
-    const double hn = h.norm();
-    if (!(hn > 0)) return Vec3::Zero();
-    h /= hn;
-    const double d = ggxD(h, alpha);
-    const double spec = d * ggxG1(wo, alpha) * ggxG1(wi, alpha) / (4.0 * wo.z());  // * cos_i / cos_i
-    *pdf = f * d * h.z() / (4.0 * std::max(1e-12, wo.dot(h))) + (1.0 - f) * wi.z() / kPi;
-    return Vec3::Constant(f * spec) + (1.0 - f) * albedo * (wi.z() / kPi);
-  }
-  BsdfSample sample(const Vec3& wo, double uLobe, double u1, double u2) const {
-    BsdfSample s;
-    if (wo.z() <= 0) return s;
-    Vec3 wi;
-    if (kind == Material::Kind::Glossy && uLobe < coatFresnel(wo.z())) {
-      const Vec3 h = sampleGgxHalfVector(alpha, u1, u2);
-      wi = reflect(wo, h);
-    } else {
-      wi = sampleCosineHemisphere(u1, u2);
-    }
-    if (wi.z() <= 0) return s;
-    const Vec3 fcos = eval(wo, wi, &s.pdf);
-    if (!(s.pdf > 0)) return s;
-    s.dir = wi;
-    s.weight = fcos / s.pdf;
-    s.valid = true;
-    return s;
-  }
-};
 
 }  // namespace
 
@@ -674,6 +613,20 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       st.lastSpecular = true;
       st.lastPdf = 0;
       origin = hit.point + eps * ngFacing;
+    } else if (bsdf.kind == Material::Kind::RoughGlass) {
+      const Frame frame(wo.dot(ns) > 0 ? ns : ngFacing);
+      const auto uDir = rng.get2(dim / 2 + 1);
+      const BsdfSample s = sampleRoughGlass(frame.toLocal(wo), bsdf.alpha, frontSide ? bsdf.ior : 1.0 / bsdf.ior,
+                                            pickAndLobe[1], uDir[0], uDir[1]);
+      if (!s.valid) return;
+      dir = frame.toWorld(s.dir).normalized();
+      const bool reflected = s.dir.z() > 0;
+      // A shading normal may send it to the wrong side of the real surface: end the path.
+      if ((dir.dot(ngFacing) > 0) != reflected) return;
+      origin = hit.point + (reflected ? eps : -eps) * ngFacing;
+      throughput = throughput.cwiseProduct(s.weight);
+      st.lastSpecular = true;
+      st.lastPdf = 0;
     } else {  // Glass: smooth dielectric, clear (no absorption)
       // Entering when the ray comes from the outward side.
       const bool entering = frontSide;

@@ -70,6 +70,10 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
     m.kind = Material::Kind::Mirror;
   } else if (keys.preset == "glass") {
     m.kind = Material::Kind::Glass;
+  } else if (keys.preset == "metal") {
+    m.kind = Material::Kind::Conductor;
+  } else if (keys.preset == "rough_glass") {
+    m.kind = Material::Kind::RoughGlass;
   } else if (keys.preset == "emissive") {
     m.kind = Material::Kind::Emissive;
     m.emission = keys.rgb;
@@ -85,9 +89,9 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
       m.kind = Material::Kind::Emissive;
       m.emission = a.emission;
     } else if (a.transmission > 0.5) {
-      m.kind = Material::Kind::Glass;
+      m.kind = a.roughness < 0.05 ? Material::Kind::Glass : Material::Kind::RoughGlass;
     } else if (a.metallic > 0.5) {
-      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
+      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Conductor;
     } else {
       m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
     }

@@ -64,7 +64,7 @@ struct OccluderKeys {
 };
 
 struct MaterialKeys {
-  // "diffuse" | "glossy" | "mirror" | "glass" | "emissive" | "asset"
+  // "diffuse" | "glossy" | "metal" | "mirror" | "glass" | "rough_glass" | "emissive" | "asset"
   std::string preset = "diffuse";
   Vec3 albedo{0.8, 0.8, 0.8};
   double roughness = 0.3;
