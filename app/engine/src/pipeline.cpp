@@ -4,6 +4,7 @@
 #include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
+#include "inlay/render/gltf_export.h"
 
 #include <chrono>
 #include <cmath>
@@ -58,6 +59,10 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
+
+Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
+  return exportGltf(scene.renderScene, path, {}, warnings);
+}
 
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
   Material m;
