@@ -555,7 +555,7 @@ class Reader {
 
   ObjectKeys readObject(const json& j, const std::string& p) {
     object(j, p);
-    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "material"});
+    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material"});
     ObjectKeys o;
     const std::string mp = child(p, "mesh");
     if (!j.contains("mesh")) fail(mp, "missing (builtin:sphere, builtin:cube or a mesh file)");
@@ -578,6 +578,12 @@ class Reader {
     o.basePx = vec<2>(j["base_px"], child(p, "base_px"));
     if (j.contains("height_m")) o.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("yaw_deg")) o.yawDeg = number(j["yaw_deg"], child(p, "yaw_deg"));
+    if (j.contains("subdivide")) {
+      const double levels = number(j["subdivide"], child(p, "subdivide"));
+      if (!(levels >= 0 && levels <= 5 && levels == std::floor(levels)))
+        fail(child(p, "subdivide"), "must be a whole number of levels in [0, 5]");
+      o.subdivideLevels = int(levels);
+    }
     if (j.contains("material")) o.material = readMaterial(j["material"], child(p, "material"));
     return o;
   }
@@ -763,11 +769,13 @@ ojson buildJson(const SceneDoc& doc) {
       const MaterialKeys& m = o.material;
       ojson mat{{"preset", m.preset},   {"albedo", toJson(m.albedo)}, {"roughness", m.roughness},
                 {"ior", m.ior},         {"rgb", toJson(m.rgb)}};
-      a.push_back(ojson{{"mesh", o.mesh},
-                        {"base_px", toJson(o.basePx)},
-                        {"height_m", o.heightM},
-                        {"yaw_deg", o.yawDeg},
-                        {"material", mat}});
+      ojson obj{{"mesh", o.mesh},
+                {"base_px", toJson(o.basePx)},
+                {"height_m", o.heightM},
+                {"yaw_deg", o.yawDeg},
+                {"material", mat}};
+      if (o.subdivideLevels > 0) obj["subdivide"] = o.subdivideLevels;
+      a.push_back(obj);
     }
     j["objects"] = a;
   }

@@ -83,7 +83,9 @@ def main():
         layers = read_layers(os.path.join(work, "ours.exr"))
         ours, region = layers["with_objects"][..., :3], layers["region"][..., 0]
         cyc = list(read_layers(os.path.join(work, "cycles.exr")).values())[0][..., :3]
-        emitter = (cyc.max(axis=2) > 2.0) | (ours.max(axis=2) > 2.0)  # lights seen directly
+        # Lights seen directly, and 2 px around them (edge pixels mix emitter and room).
+        emitter = cv2.dilate(((cyc.max(axis=2) > 2.0) | (ours.max(axis=2) > 2.0)).astype(np.uint8),
+                             np.ones((5, 5), np.uint8)) > 0
         for r in sorted(set(np.unique(region).astype(int)) - {-1}):
             sel = (region == r) & ~emitter
             if sel.sum() < 30:

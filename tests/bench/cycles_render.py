@@ -2,8 +2,8 @@
 # imports Inlay's glTF export and renders it with Cycles under the same model as Inlay's path
 # tracer: Lambertian room and diffuse objects (a Diffuse BSDF instead of the Principled BSDF,
 # whose Disney diffuse and 0.5 specular are not Lambertian), emitters as exported, the exported
-# camera with its principal point, 8 bounces, no clamping, no denoising, a box-like pixel
-# filter, linear float EXR.
+# camera with its principal point, 8 bounces, no clamping, no denoising, the same pixel
+# filter (box, 1 px: Inlay's), linear float EXR.
 import json
 import sys
 
@@ -52,7 +52,10 @@ def to_lambert(mat):
         p.inputs["Base Color"].default_value = (0, 0, 0, 1)
         p.inputs["Specular"].default_value = 0.0
         return "emitter %.4g" % emission
-    if p.inputs["Metallic"].default_value > 0.5 or p.inputs["Transmission"].default_value > 0.5:
+    # Inlay's diffuse exports roughness 1 and no metal or transmission; anything else (glossy,
+    # metal, glass) keeps the Principled BSDF, the nearest Cycles has to Inlay's models.
+    if (p.inputs["Metallic"].default_value > 0.5 or p.inputs["Transmission"].default_value > 0.5
+            or p.inputs["Roughness"].default_value < 0.999):
         return "kept"
     out = next(n for n in nt.nodes if n.type == "OUTPUT_MATERIAL")
     d = nt.nodes.new("ShaderNodeBsdfDiffuse")
@@ -91,7 +94,8 @@ c.caustics_refractive = True
 c.sample_clamp_direct = 0.0
 c.sample_clamp_indirect = 0.0
 c.blur_glossy = 0.0
-c.filter_width = 0.01
+c.pixel_filter_type = "BOX"  # Inlay averages each pixel's square
+c.filter_width = 1.0
 c.seed = 1
 if threads > 0:
     scene.render.threads_mode = "FIXED"

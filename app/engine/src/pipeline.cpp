@@ -5,6 +5,7 @@
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/gltf_export.h"
+#include "inlay/modeling/subdivide.h"
 
 #include <chrono>
 #include <cmath>
@@ -59,6 +60,17 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
+
+Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object) {
+  auto mesh = loadMesh(object.meshResolved.empty() ? object.mesh : object.meshResolved);
+  if (!mesh) return mesh.error().underKey("mesh");
+  if (object.subdivideLevels <= 0) return mesh;
+  auto smooth = subdivide(*mesh, object.subdivideLevels);
+  if (!smooth) return smooth.error();
+  // One material per object in the renderer: keep the file's for preset "asset".
+  smooth->mesh.materials = mesh->materials;
+  return std::move(smooth->mesh);
+}
 
 Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
   return exportGltf(scene.renderScene, path, {}, warnings);
@@ -360,11 +372,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];
     const std::string key = "objects[" + std::to_string(i) + "]";
-    const std::string path = o.meshResolved.empty() ? o.mesh : o.meshResolved;
-    auto& cached = meshes[path];
+    auto& cached = meshes[(o.meshResolved.empty() ? o.mesh : o.meshResolved) + "#" +
+                          std::to_string(o.subdivideLevels)];
     if (!cached) {
-      auto mesh = loadMesh(path);
-      if (!mesh) return mesh.error().underKey(key + ".mesh");
+      auto mesh = loadObjectMesh(o);
+      if (!mesh) return mesh.error().underKey(key);
       cached = std::make_shared<const TriangleMesh>(std::move(*mesh));
     }
     auto place = placeObject(*cached, ps.geometry, ps.camera, o.basePx, o.heightM, o.yawDeg, key);

@@ -78,6 +78,7 @@ struct ObjectKeys {
   Vec2 basePx{0, 0};
   double heightM = 0.5;
   double yawDeg = 0.0;
+  int subdivideLevels = 0;           // "subdivide": smooth subdivision levels (0: none)
   MaterialKeys material;
 };
 
