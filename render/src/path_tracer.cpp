@@ -120,7 +120,15 @@ struct Hit {
   Vec3 point;
   Vec3 geometricNormal;  // unit, as the mesh winds it (outward for objects), world space
   Vec3 shadingNormal;    // unit, world space; equals geometricNormal without vertex normals
+  // Float round-off of the hit triangle's intersection, metres: it grows with the size of the
+  // triangle's coordinates (a 10 km object), so rays leave it at least this far off.
+  double roundOffM = 0;
 };
+
+// A bound on Embree's float intersection error for a triangle with these corners.
+double triangleRoundOff(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return 32.0 * 1.1920929e-7 * std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+}
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
@@ -146,6 +154,8 @@ struct PathTracer::Impl {
   std::vector<ObjectData> objects;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
   mutable std::atomic<uint64_t> rays{0};
+  mutable std::atomic<uint64_t> cameraRays{0};
+  mutable std::atomic<uint64_t> shadowRays{0};
 
   ~Impl() {
     for (auto& o : objects) {
@@ -202,6 +212,7 @@ struct PathTracer::Impl {
                  c = m.positions[tri[2]].cast<double>();
       hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
       hit.shadingNormal = hit.geometricNormal;
+      hit.roundOffM = triangleRoundOff(a, b, c);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
       hit.index = int(id - surfaceCount);
@@ -220,6 +231,7 @@ struct PathTracer::Impl {
       const Vec3 a = toWorld(m.positions[tri[0]]), b = toWorld(m.positions[tri[1]]),
                  c = toWorld(m.positions[tri[2]]);
       Vec3 ng = safeNormal((b - a).cross(c - a), dir);
+      hit.roundOffM = triangleRoundOff(a, b, c);
       if (o.mirrored) ng = -ng;
       hit.geometricNormal = ng;
       hit.shadingNormal = ng;
@@ -361,7 +373,9 @@ struct PathTracer::Impl {
   struct Sums {
     Vec3 with = Vec3::Zero();
     Vec3 without = Vec3::Zero();
-    uint32_t rays = 0;
+    uint32_t rays = 0;        // camera and bounce rays
+    uint32_t cameraRays = 0;
+    uint32_t shadowRays = 0;  // NEE and sun shadow rays
   };
 
   // Where a path stands: the next ray and what the vertices so far left it with.
@@ -439,6 +453,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
                                           st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
     ++out.rays;
+    if (depth == 0) ++out.cameraRays;
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
@@ -497,7 +512,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Vec3 ngFacing = frontSide ? ng : Vec3(-ng);
     Vec3 ns = hit.shadingNormal;
     if (ns.dot(ngFacing) < 0) ns = -ns;
-    const double eps = rayEpsilon(hit.point);
+    const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
     const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
     const auto pickAndLobe = rng.get2(dim / 2 + 2);
 
@@ -558,15 +573,15 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
             const double tFar = ds * (1.0 - 1e-4);
             if (meshLight) {
               // An emissive object exists in the with-scene only.
-              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && (++out.rays, !occluded(withScene, o, ws, 0, tFar)))
+              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && (++out.shadowRays, !occluded(withScene, o, ws, 0, tFar)))
                 out.with += c;
             } else if (mode == Mode::Shared) {
-              ++out.rays;
+              ++out.shadowRays;
               if (!occluded(withScene, o, ws, 0, tFar))
                 add(c);
-              else if (++out.rays, !occluded(withoutScene, o, ws, 0, tFar))
+              else if (++out.shadowRays, !occluded(withoutScene, o, ws, 0, tFar))
                 out.without += c;  // only an object blocks it
-            } else if (++out.rays, !occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
+            } else if (++out.shadowRays, !occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
               add(c);
             }
           }
@@ -584,11 +599,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         const Vec3 c = clampIndirect(
             Vec3(throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), depth >= 1);
         const Vec3 o = hit.point + eps * ngFacing;
-        ++out.rays;
+        ++out.shadowRays;
         if (mode == Mode::Shared) {
           if (!occluded(sunWithScene, o, sun.toSun, 0, 3.4e38))
             add(c);
-          else if (++out.rays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
+          else if (++out.shadowRays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
             out.without += c;  // only an object blocks it
         } else if (!occluded(mode == Mode::WithOnly ? sunWithScene : sunWithoutScene, o, sun.toSun, 0,
                              3.4e38)) {
@@ -825,8 +840,12 @@ PathTracer::~PathTracer() = default;
 const RenderScene& PathTracer::scene() const { return impl_->scene; }
 
 PathTracer::Stats PathTracer::stats() const {
-  return {impl_->rays.load(std::memory_order_relaxed),
-          impl_->nonFiniteSamples.load(std::memory_order_relaxed)};
+  Stats s;
+  s.rays = impl_->rays.load(std::memory_order_relaxed);
+  s.nonFiniteSamples = impl_->nonFiniteSamples.load(std::memory_order_relaxed);
+  s.cameraRays = impl_->cameraRays.load(std::memory_order_relaxed);
+  s.shadowRays = impl_->shadowRays.load(std::memory_order_relaxed);
+  return s;
 }
 
 void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
@@ -858,7 +877,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       if (cancel && cancel->shouldStop()) return false;
       Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
       double sumMask = 0, sumDiffSq = 0;
-      uint64_t rays = 0;
+      uint64_t rays = 0, cameraRays = 0, shadowRays = 0;
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
         const auto jitter = rng.get2(0);
@@ -869,7 +888,9 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
         Impl::Sums sums;
         bool objectFirst = false;
         d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-        rays += sums.rays;
+        rays += sums.rays + sums.shadowRays;
+        cameraRays += sums.cameraRays;
+        shadowRays += sums.shadowRays;
         if (!sums.with.allFinite() || !sums.without.allFinite()) {
           d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
           continue;  // dropped: counts as a sample of zero in both renders
@@ -889,6 +910,8 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
       buffers.samples[size_t(y) * buffers.width + x] += count;
       d.rays.fetch_add(rays, std::memory_order_relaxed);
+      d.cameraRays.fetch_add(cameraRays, std::memory_order_relaxed);
+      d.shadowRays.fetch_add(shadowRays, std::memory_order_relaxed);
     }
   return true;
 }
