@@ -11,7 +11,8 @@
 // - bvh.csv: object BVH build seconds, instance update (move) seconds (median of 50) and the
 //   resident memory the tracer adds, for spheres of 10k to 1M triangles.
 //
-// usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP]
+// usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP [PARTS]]
+//   PARTS: comma-separated subset of bvh,throughput,convergence (default: all)
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/render/composite.h"
@@ -155,7 +156,7 @@ std::shared_ptr<TriangleMesh> sphere(int rings) {
 }
 
 void bvh(const RenderScene& base, std::ofstream& csv) {
-  for (int rings : {71, 224, 708}) {  // ~10k, 100k, 1M triangles
+  for (int rings : {50, 158, 500}) {  // 4 rings^2 triangles: 10k, 100k, 1M
     RenderScene scene = base;
     const auto mesh = sphere(rings);
     const double meshMb = double(mesh->positions.size() * 2 * sizeof(Vec3f) + mesh->triangles.size() * 12) / (1 << 20);
@@ -191,6 +192,8 @@ int main(int argc, char** argv) {
   const std::string out = argv[2];
   const int w = argc > 4 ? std::atoi(argv[3]) : 96, h = argc > 4 ? std::atoi(argv[4]) : 72;
   const int refSpp = argc > 5 ? std::atoi(argv[5]) : 256, maxSpp = argc > 6 ? std::atoi(argv[6]) : 64;
+  const std::string parts = argc > 7 ? argv[7] : "bvh,throughput,convergence";
+  auto wanted = [&](const char* part) { return parts.find(part) != std::string::npos; };
   auto loaded = loadSceneFile(argv[1]);
   if (!loaded) return std::fprintf(stderr, "%s\n", loaded.error().message().c_str()), 2;
   auto prepared = prepareScene(loaded->doc);
@@ -198,13 +201,21 @@ int main(int argc, char** argv) {
   if (prepared->renderScene.objects.empty()) return std::fprintf(stderr, "the scene has no object\n"), 2;
   const ImageF photo = resizeImage(prepared->photo.linearRgb, w, h);
 
-  std::ofstream bvhCsv(out + "/bvh.csv"), tpCsv(out + "/throughput.csv"), convCsv(out + "/convergence.csv");
-  if (!bvhCsv || !tpCsv || !convCsv) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
-  bvhCsv << "triangles,build_s,move_s,tracer_rss_mb,mesh_mb\n";
-  bvh(prepared->renderScene, bvhCsv);
-  tpCsv << "threads,max_depth,seconds,rays,camera_rays,bounce_rays,shadow_rays,rays_per_s_per_thread\n";
-  throughput(prepared->renderScene, 160, 120, tpCsv);
-  convCsv << "material,mode,threads,spp,seconds,rmse,region_px\n";
-  convergence(prepared->renderScene, photo, w, h, refSpp, maxSpp, convCsv);
+  if (wanted("bvh")) {
+    std::ofstream csv(out + "/bvh.csv");
+    csv << "triangles,build_s,move_s,tracer_rss_mb,mesh_mb\n";
+    bvh(prepared->renderScene, csv);
+  }
+  if (wanted("throughput")) {
+    std::ofstream csv(out + "/throughput.csv");
+    csv << "threads,max_depth,seconds,rays,camera_rays,bounce_rays,shadow_rays,rays_per_s_per_thread\n";
+    throughput(prepared->renderScene, 160, 120, csv);
+  }
+  if (wanted("convergence")) {
+    std::ofstream csv(out + "/convergence.csv");
+    if (!csv) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
+    csv << "material,mode,threads,spp,seconds,rmse,region_px\n";
+    convergence(prepared->renderScene, photo, w, h, refSpp, maxSpp, csv);
+  }
   return 0;
 }
