@@ -94,6 +94,16 @@ def main():
         check(name, ok, "exit %d: %s" % (r.returncode, r.stderr.strip()))
         check(name + " leaves output", open(out, "rb").read() == b"users file")
 
+    # export: a bad extension is a usage error naming -o; a good one writes a .glb that starts
+    # with glTF's magic; a bad subdivide level names its key.
+    r = run(cli, "export", os.path.join(EXAMPLE, "scene.json"), "-o", os.path.join(tmp, "scene.txt"))
+    check("export bad extension", r.returncode == 2 and "-o" in r.stderr, r.stderr)
+    glb = os.path.join(tmp, "scene.glb")
+    r = run(cli, "export", scene(lambda s: s["objects"][0].update(subdivide=2), "subdivided"), "-o", glb, "--quiet")
+    check("export glb", r.returncode == 0 and open(glb, "rb").read(4) == b"glTF", r.stderr)
+    r = run(cli, "export", scene(lambda s: s["objects"][0].update(subdivide=7), "oversubdivided"), "-o", glb)
+    check("export bad subdivide", r.returncode == 2 and "objects[0].subdivide" in r.stderr, r.stderr)
+
     corrupt = os.path.join(tmp, "corrupt.png")
     open(corrupt, "wb").write(open(photo, "rb").read()[:2000])
     p = scene(lambda s: s.update(photo=corrupt), "corrupt")

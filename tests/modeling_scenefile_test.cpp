@@ -62,7 +62,7 @@ const char* kFullScene = R"({
       "material": { "preset": "glossy", "albedo": [0.7, 0.1, 0.05], "roughness": 0.35 } },
     { "mesh": "models/chair.obj", "base_px": [300, 280], "height_m": 0.9, "yaw_deg": -15.5,
       "material": { "preset": "glass", "ior": 1.45 } },
-    { "mesh": "builtin:cube", "base_px": [100, 290],
+    { "mesh": "builtin:cube", "base_px": [100, 290], "subdivide": 2,
       "material": { "preset": "emissive", "rgb": [3, 2, 1] } }
   ],
   "render": { "spp": 64, "seconds": 12.5, "exposure": -0.5, "seed": 7 }
@@ -120,6 +120,7 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
     EXPECT_EQ(x.basePx, y.basePx);
     EXPECT_EQ(x.heightM, y.heightM);
     EXPECT_EQ(x.yawDeg, y.yawDeg);
+    EXPECT_EQ(x.subdivideLevels, y.subdivideLevels);
     EXPECT_EQ(x.material.preset, y.material.preset);
     EXPECT_EQ(x.material.albedo, y.material.albedo);
     EXPECT_EQ(x.material.roughness, y.material.roughness);
@@ -173,6 +174,8 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_EQ(fs::path(d.objects[1].meshResolved), (dir / "models" / "chair.obj").lexically_normal());
   EXPECT_TRUE(fs::path(d.objects[1].meshResolved).is_absolute());
   EXPECT_EQ(d.objects[1].material.ior, 1.45);
+  EXPECT_EQ(d.objects[0].subdivideLevels, 0);
+  EXPECT_EQ(d.objects[2].subdivideLevels, 2);
   EXPECT_EQ(d.objects[2].heightM, 0.5);  // default
   EXPECT_EQ(d.objects[2].material.rgb, Vec3(3, 2, 1));
   EXPECT_EQ(d.render.spp, 64);
@@ -397,6 +400,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "objects[0].material.albedo[1]", "[0, 1]"},
         BadCase{"ior_range", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "glass", "ior": 0.5}}])",
                 "objects[0].material.ior", "[1, 5]"},
+        BadCase{"subdivide_fraction", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 1.5}])",
+                "objects[0].subdivide", "[0, 5]"},
+        BadCase{"subdivide_too_many", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 9}])",
+                "objects[0].subdivide", "[0, 5]"},
         BadCase{"spp_negative", R"(, "render": {"spp": -4})", "render.spp", ">= 1"},
         BadCase{"spp_fraction", R"(, "render": {"spp": 2.5})", "render.spp", "integer"},
         BadCase{"seconds_negative", R"(, "render": {"seconds": -1})", "render.seconds", "> 0"},

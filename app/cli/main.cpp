@@ -37,6 +37,10 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
+  inlay-cli export SCENE.json -o SCENE.gltf|SCENE.glb
+                                                     the reconstructed scene as glTF 2.0 (room
+                                                     with albedo textures, lights as emissive
+                                                     geometry, camera, objects and materials)
   inlay-cli --help | --version
 
 Render options:
@@ -294,6 +298,24 @@ int commandRender(const std::string& scenePath, const Args& a) {
   return 0;
 }
 
+int commandExport(const std::string& scenePath, const Args& a) {
+  if (a.output.empty()) return usageError("export needs -o SCENE.gltf or SCENE.glb");
+  const std::string ext = std::filesystem::path(a.output).extension().string();
+  if (ext != ".gltf" && ext != ".glb" && ext != ".GLTF" && ext != ".GLB")
+    return inputError(Error{a.output, "-o", "the export file must end in .gltf or .glb"});
+  Progress progress(a.quiet);
+  auto prepared = loadAndPrepare(scenePath, a, progress);
+  if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
+  if (!prepared) return inputError(prepared.error());
+  std::vector<std::string> warnings;
+  if (auto st = exportSceneGltf(*prepared, a.output, &warnings); !st) return inputError(st.error());
+  progress.done();
+  for (const auto& w : warnings)
+    if (!a.quiet) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+  if (!a.quiet) std::fprintf(stderr, "inlay-cli: wrote %s\n", a.output.c_str());
+  return 0;
+}
+
 // CAMERA.json: the scene file's `camera` and `layout` keys, plus `rotation` (world from camera,
 // camera looking down its -z, y up), per-vanishing-point confidence and timings.
 int commandEstimate(const std::string& photoPath, const Args& a) {
@@ -449,6 +471,10 @@ int main(int argc, char** argv) {
     if (a.command == "decompose") {
       if (a.positional.size() != 1) return usageError("decompose needs exactly one SCENE.json");
       return commandDecompose(a.positional[0], a);
+    }
+    if (a.command == "export") {
+      if (a.positional.size() != 1) return usageError("export needs exactly one SCENE.json");
+      return commandExport(a.positional[0], a);
     }
     if (a.command == "estimate") {
       if (a.positional.size() != 1) return usageError("estimate needs exactly one PHOTO");

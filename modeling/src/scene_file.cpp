@@ -559,11 +559,11 @@ class Reader {
     knownKeys(j, p, {"preset", "albedo", "roughness", "ior", "rgb"});
     MaterialKeys m;
     if (j.contains("preset")) m.preset = string(j["preset"], child(p, "preset"));
-    static const std::set<std::string> presets = {"diffuse", "glossy", "mirror",
-                                                  "glass", "emissive", "asset"};
+    static const std::set<std::string> presets = {"diffuse", "glossy", "mirror", "glass", "emissive",
+                                                  "asset", "metal", "rough_glass"};
     if (!presets.count(m.preset))
       fail(child(p, "preset"), "unknown material preset '" + m.preset +
-                                   "' (expected diffuse, glossy, mirror, glass, emissive or asset)");
+                                   "' (expected diffuse, glossy, metal, mirror, glass, rough_glass, emissive or asset)");
     if (j.contains("albedo")) m.albedo = albedo(j["albedo"], child(p, "albedo"));
     if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
     if (j.contains("ior")) {
@@ -576,7 +576,7 @@ class Reader {
 
   ObjectKeys readObject(const json& j, const std::string& p) {
     object(j, p);
-    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "material"});
+    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material"});
     ObjectKeys o;
     const std::string mp = child(p, "mesh");
     if (!j.contains("mesh")) fail(mp, "missing (builtin:sphere, builtin:cube or a mesh file)");
@@ -599,6 +599,12 @@ class Reader {
     o.basePx = vec<2>(j["base_px"], child(p, "base_px"));
     if (j.contains("height_m")) o.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("yaw_deg")) o.yawDeg = number(j["yaw_deg"], child(p, "yaw_deg"));
+    if (j.contains("subdivide")) {
+      const double levels = number(j["subdivide"], child(p, "subdivide"));
+      if (!(levels >= 0 && levels <= 5 && levels == std::floor(levels)))
+        fail(child(p, "subdivide"), "must be a whole number of levels in [0, 5]");
+      o.subdivideLevels = int(levels);
+    }
     if (j.contains("material")) o.material = readMaterial(j["material"], child(p, "material"));
     return o;
   }
@@ -791,11 +797,13 @@ ojson buildJson(const SceneDoc& doc) {
       const MaterialKeys& m = o.material;
       ojson mat{{"preset", m.preset},   {"albedo", toJson(m.albedo)}, {"roughness", m.roughness},
                 {"ior", m.ior},         {"rgb", toJson(m.rgb)}};
-      a.push_back(ojson{{"mesh", o.mesh},
-                        {"base_px", toJson(o.basePx)},
-                        {"height_m", o.heightM},
-                        {"yaw_deg", o.yawDeg},
-                        {"material", mat}});
+      ojson obj{{"mesh", o.mesh},
+                {"base_px", toJson(o.basePx)},
+                {"height_m", o.heightM},
+                {"yaw_deg", o.yawDeg},
+                {"material", mat}};
+      if (o.subdivideLevels > 0) obj["subdivide"] = o.subdivideLevels;
+      a.push_back(obj);
     }
     j["objects"] = a;
   }

@@ -16,11 +16,14 @@
 // Light transport: unidirectional path tracing with next-event estimation to the area lights
 // (one light picked by power over squared distance, a point uniform in its solid angle, by area
 // when that is tiny, a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
-// full weight. Emissive objects are not sampled by NEE; every hit on them counts in full.
-// Materials: room surfaces are Lambertian with the projected albedo; objects are Lambertian,
-// Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Mirror, clear smooth
-// Glass (Fresnel, Snell, no absorption, no eta^2 radiance scaling: it cancels on the way out),
-// or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
+// full weight. Emissive objects are lights too: NEE picks them among the area lights by the same
+// rule and samples a point uniformly by area on their triangles (MIS with BSDF hits likewise);
+// they exist in the with-scene only, so their light reaches the with-sums alone.
+// Materials (bsdf.h): room surfaces are Lambertian with the projected albedo; objects are
+// Lambertian, Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Conductor
+// (GGX metal), Mirror, clear smooth Glass (Fresnel, Snell, no absorption, no eta^2 radiance
+// scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; a specular vertex: no
+// NEE), or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
 // min(0.95, max throughput).
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
@@ -42,6 +45,7 @@
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
+#include "bsdf.h"
 #include "embree_util.h"
 #include "sampling.h"
 
@@ -78,6 +82,7 @@ struct ObjectData {
   bool mirrored = false;         // negative determinant: winding flips
   bool shadingNormals = false;   // per-vertex normals usable
   Material material;
+  int meshLight = -1;            // index into Impl::meshLights when emissive
 };
 
 struct LightData {
@@ -90,6 +95,19 @@ struct LightData {
   Vec3 radiance;
   Vec3 centre;
   double power = 0;  // area x mean radiance; 0: never picked
+};
+
+// An emissive object as a light: its triangles in world space (refreshed when it moves), picked
+// by area (one radiance per object, so by power too). Two-sided, as its hits are.
+struct MeshLightData {
+  size_t object = 0;
+  std::vector<Vec3> corner, edge1, edge2;  // triangle k = corner + b1 edge1 + b2 edge2
+  std::vector<double> cumulativeArea;      // running sum; back() = area
+  double area = 0;
+  Vec3 radiance = Vec3::Zero();
+  Vec3 centre = Vec3::Zero();
+  std::array<Vec3, 8> boxCorners;          // world bounding box
+  double power = 0;                        // area x mean radiance; 0: never picked
 };
 
 struct SunData {
@@ -105,77 +123,20 @@ struct Hit {
   Vec3 point;
   Vec3 geometricNormal;  // unit, as the mesh winds it (outward for objects), world space
   Vec3 shadingNormal;    // unit, world space; equals geometricNormal without vertex normals
+  // Float round-off of the hit triangle's intersection, metres: it grows with the size of the
+  // triangle's coordinates (a 10 km object), so rays leave it at least this far off.
+  double roundOffM = 0;
 };
 
-struct BsdfSample {
-  Vec3 dir;
-  Vec3 weight;        // f cos / pdf
-  double pdf = 0;     // solid angle; 0 for specular
-  bool specular = false;
-  bool valid = false;
-};
+// A bound on Embree's float intersection error for a triangle with these corners.
+double triangleRoundOff(const Vec3& a, const Vec3& b, const Vec3& c) {
+  return 32.0 * 1.1920929e-7 * std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+}
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
   return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
 }
-
-Vec3 reflect(const Vec3& wo, const Vec3& n) { return 2.0 * wo.dot(n) * n - wo; }
-
-// Lambertian, or the dielectric-coated glossy model: f = F(cos_o) * DG / (4 cos_i cos_o) +
-// (1 - F(cos_o)) * albedo / pi, where the GGX lobe without Fresnel has directional albedo <= 1,
-// so the total never exceeds F + (1 - F) * albedo <= 1. Not reciprocal (F of the outgoing
-// direction only); a unidirectional tracer does not need reciprocity.
-struct SurfaceBsdf {
-  Material::Kind kind = Material::Kind::Diffuse;
-  Vec3 albedo{0.5, 0.5, 0.5};
-  double alpha = 0.1;
-  double ior = 1.5;
-
-  bool nonSpecular() const {
-    return kind == Material::Kind::Diffuse || kind == Material::Kind::Glossy;
-  }
-  double coatFresnel(double cosO) const {
-    double cosT = 0;
-    return fresnelDielectric(cosO, ior, &cosT);
-  }
-  // f * cos(wi) and the sampling pdf; directions local to the shading frame (+z normal).
-  Vec3 eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
-    *pdf = 0;
-    if (wo.z() <= 0 || wi.z() <= 0) return Vec3::Zero();
-    if (kind == Material::Kind::Diffuse) {
-      *pdf = wi.z() / kPi;
-      return albedo * (wi.z() / kPi);
-    }
-    const double f = coatFresnel(wo.z());
-    Vec3 h = wo + wi;
-    const double hn = h.norm();
-    if (!(hn > 0)) return Vec3::Zero();
-    h /= hn;
-    const double d = ggxD(h, alpha);
-    const double spec = d * ggxG1(wo, alpha) * ggxG1(wi, alpha) / (4.0 * wo.z());  // * cos_i / cos_i
-    *pdf = f * d * h.z() / (4.0 * std::max(1e-12, wo.dot(h))) + (1.0 - f) * wi.z() / kPi;
-    return Vec3::Constant(f * spec) + (1.0 - f) * albedo * (wi.z() / kPi);
-  }
-  BsdfSample sample(const Vec3& wo, double uLobe, double u1, double u2) const {
-    BsdfSample s;
-    if (wo.z() <= 0) return s;
-    Vec3 wi;
-    if (kind == Material::Kind::Glossy && uLobe < coatFresnel(wo.z())) {
-      const Vec3 h = sampleGgxHalfVector(alpha, u1, u2);
-      wi = reflect(wo, h);
-    } else {
-      wi = sampleCosineHemisphere(u1, u2);
-    }
-    if (wi.z() <= 0) return s;
-    const Vec3 fcos = eval(wo, wi, &s.pdf);
-    if (!(s.pdf > 0)) return s;
-    s.dir = wi;
-    s.weight = fcos / s.pdf;
-    s.valid = true;
-    return s;
-  }
-};
 
 }  // namespace
 
@@ -192,9 +153,12 @@ struct PathTracer::Impl {
   std::vector<SunData> suns;
   unsigned surfaceCount = 0;
   std::vector<LightData> lights;
+  std::vector<MeshLightData> meshLights;  // NEE sources lights.size() + k
   std::vector<ObjectData> objects;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
   mutable std::atomic<uint64_t> rays{0};
+  mutable std::atomic<uint64_t> cameraRays{0};
+  mutable std::atomic<uint64_t> shadowRays{0};
 
   ~Impl() {
     for (auto& o : objects) {
@@ -251,6 +215,7 @@ struct PathTracer::Impl {
                  c = m.positions[tri[2]].cast<double>();
       hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
       hit.shadingNormal = hit.geometricNormal;
+      hit.roundOffM = triangleRoundOff(a, b, c);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
       hit.index = int(id - surfaceCount);
@@ -269,6 +234,7 @@ struct PathTracer::Impl {
       const Vec3 a = toWorld(m.positions[tri[0]]), b = toWorld(m.positions[tri[1]]),
                  c = toWorld(m.positions[tri[2]]);
       Vec3 ng = safeNormal((b - a).cross(c - a), dir);
+      hit.roundOffM = triangleRoundOff(a, b, c);
       if (o.mirrored) ng = -ng;
       hit.geometricNormal = ng;
       hit.shadingNormal = ng;
@@ -312,10 +278,14 @@ struct PathTracer::Impl {
   // precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
 
-  // How much NEE from point p (facing normal n) favours light j: power over squared distance
-  // (capped next to the light), 0 when p is behind the light or the light lies wholly below
-  // p's tangent plane (it cannot contribute there: such directions are rejected).
+  // NEE sources: area lights 0 .. lights.size() - 1, then the emissive objects.
+  size_t sourceCount() const { return lights.size() + meshLights.size(); }
+
+  // How much NEE from point p (facing normal n) favours source j: power over squared distance
+  // (capped next to the light), 0 when p is behind an area light or the source lies wholly
+  // below p's tangent plane (it cannot contribute there: such directions are rejected).
   double selectionWeight(size_t j, const Vec3& p, const Vec3& n) const {
+    if (j >= lights.size()) return meshSelectionWeight(meshLights[j - lights.size()], p, n);
     const LightData& l = lights[j];
     if (!(l.power > 0) || (p - l.emitter[0]).dot(l.normal) <= 0) return 0;
     bool above = false;
@@ -323,19 +293,26 @@ struct PathTracer::Impl {
     if (!above) return 0;
     return l.power / std::max((l.centre - p).squaredNorm(), 0.25 * l.area);
   }
+  static double meshSelectionWeight(const MeshLightData& m, const Vec3& p, const Vec3& n) {
+    if (!(m.power > 0)) return 0;
+    bool above = false;
+    for (const Vec3& c : m.boxCorners) above = above || (c - p).dot(n) > 0;
+    if (!above) return 0;
+    return m.power / std::max((m.centre - p).squaredNorm(), 0.25 * m.area);
+  }
   double selectionTotal(const Vec3& p, const Vec3& n) const {
     double total = 0;
-    for (size_t j = 0; j < lights.size(); ++j) total += selectionWeight(j, p, n);
+    for (size_t j = 0; j < sourceCount(); ++j) total += selectionWeight(j, p, n);
     return total;
   }
-  // The light NEE picks with u in [0, 1); lights.size() when none can contribute.
+  // The source NEE picks with u in [0, 1); sourceCount() when none can contribute.
   size_t pickLight(const Vec3& p, const Vec3& n, double u, double* prob) const {
     const double total = selectionTotal(p, n);
-    if (!(total > 0)) return lights.size();
+    if (!(total > 0)) return sourceCount();
     const double target = u * total;
     double run = 0;
-    size_t last = lights.size();
-    for (size_t j = 0; j < lights.size(); ++j) {
+    size_t last = sourceCount();
+    for (size_t j = 0; j < sourceCount(); ++j) {
       const double w = selectionWeight(j, p, n);
       if (!(w > 0)) continue;
       last = j;
@@ -347,6 +324,25 @@ struct PathTracer::Impl {
     }
     *prob = selectionWeight(last, p, n) / total;  // round-off at u close to 1
     return last;
+  }
+
+  // Refreshes the world triangles of object i's mesh light (if it is one).
+  void updateMeshLight(size_t i);
+  // A point on mesh light k uniform by area (u picks the triangle and is reused inside it);
+  // its unit geometric normal into *normal.
+  Vec3 sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const;
+  // Solid-angle pdf with which NEE from `from` picks the point `onLight` (geometric normal
+  // lightNormal) on mesh light k; NEE and the MIS weight of BSDF hits both use it.
+  double meshLightPdf(size_t k, const Vec3& from, const Vec3& fromNormal, const Vec3& onLight,
+                      const Vec3& lightNormal) const {
+    const MeshLightData& m = meshLights[k];
+    const double total = selectionTotal(from, fromNormal);
+    const double selectProb = total > 0 ? meshSelectionWeight(m, from, fromNormal) / total : 0.0;
+    const Vec3 w = onLight - from;
+    const double d2 = w.squaredNorm();
+    const double cosL = std::abs(lightNormal.dot(w)) / std::sqrt(d2);
+    if (!(selectProb > 0) || !(cosL > 0) || !(m.area > 0)) return 0;
+    return selectProb * d2 / (m.area * cosL);
   }
 
   // Solid-angle pdf with which NEE from `from` (facing normal fromNormal) picks the direction
@@ -380,7 +376,9 @@ struct PathTracer::Impl {
   struct Sums {
     Vec3 with = Vec3::Zero();
     Vec3 without = Vec3::Zero();
-    uint32_t rays = 0;
+    uint32_t rays = 0;        // camera and bounce rays
+    uint32_t cameraRays = 0;
+    uint32_t shadowRays = 0;  // NEE and sun shadow rays
   };
 
   // Where a path stands: the next ray and what the vertices so far left it with.
@@ -399,6 +397,51 @@ struct PathTracer::Impl {
                  bool* firstHitIsObject) const;
 };
 
+void PathTracer::Impl::updateMeshLight(size_t i) {
+  const ObjectData& o = objects[i];
+  if (o.meshLight < 0) return;
+  MeshLightData& m = meshLights[size_t(o.meshLight)];
+  const Mat3 linear = o.worldFromObject.topLeftCorner<3, 3>();
+  const Vec3 shift = o.worldFromObject.topRightCorner<3, 1>();
+  m.corner.clear(), m.edge1.clear(), m.edge2.clear(), m.cumulativeArea.clear();
+  m.area = 0;
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300), weighted = Vec3::Zero();
+  const TriangleMesh& mesh = *o.mesh;
+  for (const auto& tri : mesh.triangles) {
+    if (tri[0] >= mesh.positions.size() || tri[1] >= mesh.positions.size() || tri[2] >= mesh.positions.size())
+      continue;
+    const Vec3 a = linear * mesh.positions[tri[0]].cast<double>() + shift;
+    const Vec3 b = linear * mesh.positions[tri[1]].cast<double>() + shift;
+    const Vec3 c = linear * mesh.positions[tri[2]].cast<double>() + shift;
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    if (!(area > 0) || !std::isfinite(area)) continue;  // needles and NaNs are never sampled
+    m.corner.push_back(a), m.edge1.push_back(b - a), m.edge2.push_back(c - a);
+    m.area += area;
+    m.cumulativeArea.push_back(m.area);
+    weighted += area * (a + b + c) / 3.0;
+    for (const Vec3& p : {a, b, c}) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  }
+  const double power = m.area * meanComponent(m.radiance);
+  m.power = m.area > 0 && std::isfinite(power) ? power : 0.0;
+  if (!(m.power > 0)) return;
+  m.centre = weighted / m.area;
+  for (int k = 0; k < 8; ++k)
+    m.boxCorners[size_t(k)] = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+}
+
+Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const {
+  const double target = u * m.area;
+  const size_t k = std::min(size_t(std::upper_bound(m.cumulativeArea.begin(), m.cumulativeArea.end(), target) -
+                                   m.cumulativeArea.begin()),
+                            m.cumulativeArea.size() - 1);
+  const double before = k > 0 ? m.cumulativeArea[k - 1] : 0.0;
+  const double span = m.cumulativeArea[k] - before;
+  const double uu = std::clamp(span > 0 ? (target - before) / span : 0.0, 0.0, 1.0);
+  const double su = std::sqrt(uu);
+  *normal = m.edge1[k].cross(m.edge2[k]).normalized();
+  return m.corner[k] + su * (1.0 - v) * m.edge1[k] + su * v * m.edge2[k];
+}
+
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  bool* firstHitIsObject) const {
   auto add = [&](const Vec3& c) {
@@ -413,6 +456,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
                                           st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
     ++out.rays;
+    if (depth == 0) ++out.cameraRays;
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
@@ -449,8 +493,13 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     } else {
       const Material& m = objects[size_t(hit.index)].material;
       if (m.kind == Material::Kind::Emissive) {
-        // Emissive objects are not sampled by NEE: every hit counts in full (both sides).
-        add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission)), indirectHit));
+        // Both sides emit. After a non-specular bounce NEE could have found this point too.
+        const int k = objects[size_t(hit.index)].meshLight;
+        const double w = st.lastSpecular || k < 0
+                             ? 1.0
+                             : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal,
+                                                                       hit.point, hit.geometricNormal));
+        if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission) * w), indirectHit));
         return;
       }
       bsdf.kind = m.kind;
@@ -466,45 +515,58 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Vec3 ngFacing = frontSide ? ng : Vec3(-ng);
     Vec3 ns = hit.shadingNormal;
     if (ns.dot(ngFacing) < 0) ns = -ns;
-    const double eps = rayEpsilon(hit.point);
+    const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
     const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
     const auto pickAndLobe = rng.get2(dim / 2 + 2);
 
     if (bsdf.nonSpecular()) {
       const Frame frame(ns);
       const Vec3 woLocal = frame.toLocal(wo);
-      // Next-event estimation: one light picked by power over squared distance, one point
-      // uniform in its solid angle (rectangles) or area.
+      // Next-event estimation: one source picked by power over squared distance; on an area
+      // light one point uniform in its solid angle (rectangles) or area, on an emissive object
+      // one point uniform by area.
       double selectProb = 0;
-      const size_t li = lights.empty() ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
-      if (li < lights.size() && selectProb > 0) {
-        const LightData& l = lights[li];
+      const size_t li = sourceCount() == 0 ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
+      if (li < sourceCount() && selectProb > 0) {
         const auto uLight = rng.get2(dim / 2);
-        Vec3 y;
+        const bool meshLight = li >= lights.size();
+        Vec3 y, lightNormal, radiance;
         double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
-        if (l.rectangle) {
-          const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
-          if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+        if (meshLight) {
+          const MeshLightData& m = meshLights[li - lights.size()];
+          y = sampleMeshLight(m, uLight[0], uLight[1], &lightNormal);
+          radiance = m.radiance;
         } else {
-          const SphericalQuad sq(l.emitter, hit.point);
-          if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
+          const LightData& l = lights[li];
+          if (l.rectangle) {
+            const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
+            if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
+          } else {
+            const SphericalQuad sq(l.emitter, hit.point);
+            if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
+          }
+          if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
+          lightNormal = l.normal;
+          radiance = l.radiance;
         }
-        if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
         Vec3 w = y - hit.point;
         const double d2 = w.squaredNorm();
         const double d = std::sqrt(d2);
         if (d > 0) w /= d;
-        const double cosL = -l.normal.dot(w);
+        // Area lights emit on their front only; emissive objects on both sides.
+        const double cosL = meshLight ? std::abs(lightNormal.dot(w)) : -lightNormal.dot(w);
         if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0) {
           double pdfBsdf = 0;
           const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
           if (fcos.maxCoeff() > 0) {
             const double pdfLight =
-                solidAngle > 0 ? selectProb / solidAngle : lightPdf(int(li), hit.point, ngFacing, y);
-            const Vec3 c = clampIndirect(
-                Vec3(throughput.cwiseProduct(fcos).cwiseProduct(l.radiance) *
-                     (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
-                depth >= 1);
+                meshLight ? meshLightPdf(li - lights.size(), hit.point, ngFacing, y, lightNormal)
+                : solidAngle > 0 ? selectProb / solidAngle
+                                 : lightPdf(int(li), hit.point, ngFacing, y);
+            const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(throughput.cwiseProduct(fcos).cwiseProduct(radiance) *
+                                                             (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                                                        depth >= 1)
+                                        : Vec3(Vec3::Zero());
             // The shadow ray runs from the offset origin to the sampled point itself, stopping
             // just short of the emitter (which would otherwise block its own light).
             const Vec3 o = hit.point + eps * ngFacing;
@@ -512,13 +574,17 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
             const double ds = ws.norm();
             ws /= ds;
             const double tFar = ds * (1.0 - 1e-4);
-            ++out.rays;
-            if (mode == Mode::Shared) {
+            if (meshLight) {
+              // An emissive object exists in the with-scene only.
+              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && (++out.shadowRays, !occluded(withScene, o, ws, 0, tFar)))
+                out.with += c;
+            } else if (mode == Mode::Shared) {
+              ++out.shadowRays;
               if (!occluded(withScene, o, ws, 0, tFar))
                 add(c);
-              else if (++out.rays, !occluded(withoutScene, o, ws, 0, tFar))
+              else if (++out.shadowRays, !occluded(withoutScene, o, ws, 0, tFar))
                 out.without += c;  // only an object blocks it
-            } else if (!occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
+            } else if (++out.shadowRays, !occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
               add(c);
             }
           }
@@ -536,11 +602,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         const Vec3 c = clampIndirect(
             Vec3(throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), depth >= 1);
         const Vec3 o = hit.point + eps * ngFacing;
-        ++out.rays;
+        ++out.shadowRays;
         if (mode == Mode::Shared) {
           if (!occluded(sunWithScene, o, sun.toSun, 0, 3.4e38))
             add(c);
-          else if (++out.rays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
+          else if (++out.shadowRays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
             out.without += c;  // only an object blocks it
         } else if (!occluded(mode == Mode::WithOnly ? sunWithScene : sunWithoutScene, o, sun.toSun, 0,
                              3.4e38)) {
@@ -565,6 +631,20 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       st.lastSpecular = true;
       st.lastPdf = 0;
       origin = hit.point + eps * ngFacing;
+    } else if (bsdf.kind == Material::Kind::RoughGlass) {
+      const Frame frame(wo.dot(ns) > 0 ? ns : ngFacing);
+      const auto uDir = rng.get2(dim / 2 + 1);
+      const BsdfSample s = sampleRoughGlass(frame.toLocal(wo), bsdf.alpha, frontSide ? bsdf.ior : 1.0 / bsdf.ior,
+                                            pickAndLobe[1], uDir[0], uDir[1]);
+      if (!s.valid) return;
+      dir = frame.toWorld(s.dir).normalized();
+      const bool reflected = s.dir.z() > 0;
+      // A shading normal may send it to the wrong side of the real surface: end the path.
+      if ((dir.dot(ngFacing) > 0) != reflected) return;
+      origin = hit.point + (reflected ? eps : -eps) * ngFacing;
+      throughput = throughput.cwiseProduct(s.weight);
+      st.lastSpecular = true;
+      st.lastPdf = 0;
     } else {  // Glass: smooth dielectric, clear (no absorption)
       // Entering when the ray comes from the outward side.
       const bool entering = frontSide;
@@ -727,7 +807,18 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       o.sunInstance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(o.sunInstance, o.scene);
     }
+    if (o.material.kind == Material::Kind::Emissive) {
+      const Vec3& e = o.material.emission;
+      o.material.emission = e.allFinite() ? Vec3(e.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+      if (o.instance && o.material.emission.maxCoeff() > 0) {
+        o.meshLight = int(d.meshLights.size());
+        d.meshLights.emplace_back();
+        d.meshLights.back().object = i;
+        d.meshLights.back().radiance = o.material.emission;
+      }
+    }
     d.setTransform(o, src.worldFromObject);
+    d.updateMeshLight(i);
     if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
   }
   attachCardShadowFilters(d.withScene);
@@ -766,8 +857,12 @@ PathTracer::~PathTracer() = default;
 const RenderScene& PathTracer::scene() const { return impl_->scene; }
 
 PathTracer::Stats PathTracer::stats() const {
-  return {impl_->rays.load(std::memory_order_relaxed),
-          impl_->nonFiniteSamples.load(std::memory_order_relaxed)};
+  Stats s;
+  s.rays = impl_->rays.load(std::memory_order_relaxed);
+  s.nonFiniteSamples = impl_->nonFiniteSamples.load(std::memory_order_relaxed);
+  s.cameraRays = impl_->cameraRays.load(std::memory_order_relaxed);
+  s.shadowRays = impl_->shadowRays.load(std::memory_order_relaxed);
+  return s;
 }
 
 void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
@@ -775,6 +870,7 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (index >= d.objects.size()) return;
   d.scene.objects[index].worldFromObject = worldFromObject;
   d.setTransform(d.objects[index], worldFromObject);
+  d.updateMeshLight(index);
   rtcCommitScene(d.withScene);
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
@@ -798,7 +894,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       if (cancel && cancel->shouldStop()) return false;
       Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
       double sumMask = 0, sumDiffSq = 0;
-      uint64_t rays = 0;
+      uint64_t rays = 0, cameraRays = 0, shadowRays = 0;
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
         const auto jitter = rng.get2(0);
@@ -809,7 +905,9 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
         Impl::Sums sums;
         bool objectFirst = false;
         d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-        rays += sums.rays;
+        rays += sums.rays + sums.shadowRays;
+        cameraRays += sums.cameraRays;
+        shadowRays += sums.shadowRays;
         if (!sums.with.allFinite() || !sums.without.allFinite()) {
           d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
           continue;  // dropped: counts as a sample of zero in both renders
@@ -829,6 +927,8 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
       buffers.samples[size_t(y) * buffers.width + x] += count;
       d.rays.fetch_add(rays, std::memory_order_relaxed);
+      d.cameraRays.fetch_add(cameraRays, std::memory_order_relaxed);
+      d.shadowRays.fetch_add(shadowRays, std::memory_order_relaxed);
     }
   return true;
 }

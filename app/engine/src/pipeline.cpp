@@ -4,6 +4,8 @@
 #include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/render/composite.h"
+#include "inlay/render/gltf_export.h"
+#include "inlay/modeling/subdivide.h"
 
 #include <chrono>
 #include <cmath>
@@ -113,6 +115,21 @@ Expected<Extrusion> extrusionOf(PreparedScene& ps, const SurfaceKeys& sk,
 
 const char* versionString() { return INLAY_VERSION; }
 
+Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object) {
+  auto mesh = loadMesh(object.meshResolved.empty() ? object.mesh : object.meshResolved);
+  if (!mesh) return mesh.error().underKey("mesh");
+  if (object.subdivideLevels <= 0) return mesh;
+  auto smooth = subdivide(*mesh, object.subdivideLevels);
+  if (!smooth) return smooth.error();
+  // One material per object in the renderer: keep the file's for preset "asset".
+  smooth->mesh.materials = mesh->materials;
+  return std::move(smooth->mesh);
+}
+
+Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
+  return exportGltf(scene.renderScene, path, {}, warnings);
+}
+
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
   Material m;
   m.albedo = keys.albedo;
@@ -124,6 +141,10 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
     m.kind = Material::Kind::Mirror;
   } else if (keys.preset == "glass") {
     m.kind = Material::Kind::Glass;
+  } else if (keys.preset == "metal") {
+    m.kind = Material::Kind::Conductor;
+  } else if (keys.preset == "rough_glass") {
+    m.kind = Material::Kind::RoughGlass;
   } else if (keys.preset == "emissive") {
     m.kind = Material::Kind::Emissive;
     m.emission = keys.rgb;
@@ -139,9 +160,9 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
       m.kind = Material::Kind::Emissive;
       m.emission = a.emission;
     } else if (a.transmission > 0.5) {
-      m.kind = Material::Kind::Glass;
+      m.kind = a.roughness < 0.05 ? Material::Kind::Glass : Material::Kind::RoughGlass;
     } else if (a.metallic > 0.5) {
-      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Glossy;
+      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Conductor;
     } else {
       m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
     }
@@ -393,11 +414,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];
     const std::string key = "objects[" + std::to_string(i) + "]";
-    const std::string path = o.meshResolved.empty() ? o.mesh : o.meshResolved;
-    auto& cached = meshes[path];
+    auto& cached = meshes[(o.meshResolved.empty() ? o.mesh : o.meshResolved) + "#" +
+                          std::to_string(o.subdivideLevels)];
     if (!cached) {
-      auto mesh = loadMesh(path);
-      if (!mesh) return mesh.error().underKey(key + ".mesh");
+      auto mesh = loadObjectMesh(o);
+      if (!mesh) return mesh.error().underKey(key);
       cached = std::make_shared<const TriangleMesh>(std::move(*mesh));
     }
     auto place = placeObject(*cached, ps.geometry, ps.camera, o.basePx, o.heightM, o.yawDeg, key);

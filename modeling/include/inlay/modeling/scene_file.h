@@ -70,7 +70,7 @@ struct OccluderKeys {
 };
 
 struct MaterialKeys {
-  // "diffuse" | "glossy" | "mirror" | "glass" | "emissive" | "asset"
+  // "diffuse" | "glossy" | "metal" | "mirror" | "glass" | "rough_glass" | "emissive" | "asset"
   std::string preset = "diffuse";
   Vec3 albedo{0.8, 0.8, 0.8};
   double roughness = 0.3;
@@ -84,6 +84,7 @@ struct ObjectKeys {
   Vec2 basePx{0, 0};
   double heightM = 0.5;
   double yawDeg = 0.0;
+  int subdivideLevels = 0;           // "subdivide": smooth subdivision levels (0: none)
   MaterialKeys material;
 };
 

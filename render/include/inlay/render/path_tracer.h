@@ -70,6 +70,8 @@ class PathTracer {
   struct Stats {
     uint64_t rays = 0;
     uint64_t nonFiniteSamples = 0;
+    uint64_t cameraRays = 0;  // of `rays`: camera rays, and shadow rays (NEE, suns); the rest
+    uint64_t shadowRays = 0;  // are bounce rays
   };
   Stats stats() const;
 

@@ -16,12 +16,15 @@
 
 namespace inlay {
 
+// Glossy is a dielectric-coated base (plastic); Conductor a GGX metal; RoughGlass a GGX
+// dielectric (frosted glass); Glass and Mirror are smooth.
 struct Material {
-  enum class Kind { Diffuse, Glossy, Mirror, Glass, Emissive };
+  enum class Kind { Diffuse, Glossy, Mirror, Glass, Emissive, Conductor, RoughGlass };
   Kind kind = Kind::Diffuse;
-  Vec3 albedo{0.8, 0.8, 0.8};  // Diffuse/Glossy: base colour; Mirror: reflectance
-  double roughness = 0.3;      // Glossy (GGX alpha = roughness^2)
-  double ior = 1.5;            // Glass
+  Vec3 albedo{0.8, 0.8, 0.8};  // Diffuse/Glossy: base colour; Mirror: reflectance;
+                               // Conductor: reflectance at normal incidence (Schlick F0)
+  double roughness = 0.3;      // Glossy, Conductor, RoughGlass (GGX alpha = roughness^2)
+  double ior = 1.5;            // Glass, RoughGlass; Glossy's coat
   Vec3 emission{0, 0, 0};      // Emissive: radiance
 };
 

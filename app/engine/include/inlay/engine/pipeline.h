@@ -73,6 +73,18 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame);
 // The same from just what it needs (for a render thread that holds no PreparedScene).
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame);
 
+// An object's mesh as the scene file asks for it: loaded (mesh key), then smoothly subdivided
+// by its `subdivide` levels (Catmull-Clark for quad meshes, Loop for triangles). Errors are keyed
+// "mesh" or "subdivide" (prefix them with the object's key).
+Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object);
+
+// Writes the prepared scene as glTF 2.0 for Blender and other tools (render/gltf_export.h): the
+// room with its albedo baked into PNG textures, lights as emissive quads, the camera, and the
+// objects where renderScene places them, with their materials. `path` ends in .gltf (with .bin
+// and PNGs beside it) or .glb (one file). Warnings (what glTF cannot hold) go to `warnings`.
+Status exportSceneGltf(const PreparedScene& scene, const std::string& path,
+                       std::vector<std::string>* warnings = nullptr);
+
 // The renderer's material for the scene file's material keys; `meshObject` (may be null)
 // supplies the file's own material for preset "asset" (its first material).
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);

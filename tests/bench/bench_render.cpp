@@ -1,0 +1,221 @@
+// Renderer benchmarks on a ../shared room (a scene file from harness.py), CSV on stdout-chosen
+// files in OUT_DIR; bench_render.py plots them and derives the summary figures.
+//
+// - convergence.csv: composite RMSE in the objects' region (pixels where a converged
+//   reference composite differs from the photo) against render seconds, per material (diffuse,
+//   glossy, mirror, glass, glowing), thread count (1, 2) and mode: correlated (one differential
+//   render) or independent (the scene with objects and the empty room rendered separately,
+//   other seeds).
+// - throughput.csv: rays per second per thread by kind (camera rays alone with maxDepth 0; all
+//   rays of full paths, split into camera, bounce and shadow counts).
+// - bvh.csv: object BVH build seconds, instance update (move) seconds (median of 50) and the
+//   resident memory the tracer adds, for spheres of 10k to 1M triangles.
+//
+// usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP [PARTS]]
+//   PARTS: comma-separated subset of bvh,throughput,convergence (default: all)
+#include "inlay/engine/pipeline.h"
+#include "inlay/modeling/image_io.h"
+#include "inlay/render/composite.h"
+#include "inlay/render/path_tracer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <unistd.h>
+
+using namespace inlay;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double residentMb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+struct MaterialCase {
+  const char* name;
+  Material material;
+};
+
+std::vector<MaterialCase> materialCases() {
+  auto make = [](Material::Kind k, Vec3 albedo, double roughness = 0.3) {
+    Material m;
+    m.kind = k;
+    m.albedo = albedo;
+    m.roughness = roughness;
+    return m;
+  };
+  Material glow = make(Material::Kind::Emissive, Vec3::Zero());
+  glow.emission = Vec3(3.0, 2.4, 1.6);
+  return {{"diffuse", make(Material::Kind::Diffuse, Vec3(0.7, 0.7, 0.7))},
+          {"glossy", make(Material::Kind::Glossy, Vec3(0.6, 0.1, 0.1), 0.3)},
+          {"mirror", make(Material::Kind::Mirror, Vec3(0.9, 0.9, 0.9))},
+          {"glass", make(Material::Kind::Glass, Vec3(1, 1, 1))},
+          {"glowing", glow}};
+}
+
+ImageF compositeFrom(const ImageF& photo, const DifferentialBuffers& withBuf, const DifferentialBuffers& withoutBuf,
+                     bool correlated) {
+  return differentialComposite(photo, withBuf.meanWith(), correlated ? withBuf.meanWithout() : withoutBuf.meanWith(),
+                               withBuf.meanMask());
+}
+
+double regionRmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& region) {
+  double s = 0;
+  for (size_t i : region)
+    for (int c = 0; c < 3; ++c) {
+      const double d = a.data[i * 3 + c] - b.data[i * 3 + c];
+      s += d * d;
+    }
+  return std::sqrt(s / (3.0 * std::max<size_t>(1, region.size())));
+}
+
+void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int refSpp, int maxSpp, std::ofstream& csv) {
+  for (const MaterialCase& mc : materialCases()) {
+    RenderScene scene = base;
+    for (auto& o : scene.objects) o.material = mc.material;
+    RenderScene empty = scene;
+    empty.objects.clear();
+    PathTracer tracer(scene), emptyTracer(empty);
+    DifferentialBuffers ref(w, h);
+    tracer.render(ref, 1 << 20, refSpp, 999);
+    const ImageF reference = compositeFrom(photo, ref, ref, true);
+    std::vector<size_t> region;
+    for (size_t i = 0; i < reference.pixelCount(); ++i) {
+      double d = 0;
+      for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
+      if (d > 2e-3) region.push_back(i);
+    }
+    std::fprintf(stderr, "%s: region %zu px\n", mc.name, region.size());
+    for (int threads : {1, 2})
+      for (bool correlated : {true, false}) {
+        DifferentialBuffers with(w, h), without(w, h);
+        double seconds = 0;
+        int spp = 0;
+        for (int step = 1; spp < maxSpp; step = spp) {  // doubling: 1, 2, 4, ...
+          const auto t0 = Clock::now();
+          tracer.render(with, spp, step, correlated ? 1 : 2, threads);
+          if (!correlated) emptyTracer.render(without, spp, step, 3, threads);
+          seconds += secondsSince(t0);
+          spp += step;
+          const double e = regionRmse(compositeFrom(photo, with, without, correlated), reference, region);
+          csv << mc.name << ',' << (correlated ? "correlated" : "independent") << ',' << threads << ',' << spp << ','
+              << seconds << ',' << e << ',' << region.size() << '\n';
+        }
+        csv.flush();
+      }
+  }
+}
+
+void throughput(const RenderScene& scene, int w, int h, std::ofstream& csv) {
+  for (int threads : {1, 2}) {
+    for (int maxDepth : {0, 8}) {
+      TracerOptions opt;
+      opt.maxDepth = maxDepth;
+      PathTracer tracer(scene, opt);
+      DifferentialBuffers b(w, h);
+      tracer.render(b, 0, 1, 7, threads);  // warm-up
+      const PathTracer::Stats s0 = tracer.stats();
+      const auto t0 = Clock::now();
+      tracer.render(b, 1, 8, 7, threads);
+      const double sec = secondsSince(t0);
+      const PathTracer::Stats s1 = tracer.stats();
+      const double rays = double(s1.rays - s0.rays), cam = double(s1.cameraRays - s0.cameraRays),
+                   shadow = double(s1.shadowRays - s0.shadowRays);
+      csv << threads << ',' << maxDepth << ',' << sec << ',' << rays << ',' << cam << ',' << rays - cam - shadow << ','
+          << shadow << ',' << rays / sec / threads << '\n';
+    }
+  }
+}
+
+std::shared_ptr<TriangleMesh> sphere(int rings) {
+  auto m = std::make_shared<TriangleMesh>();
+  const int segments = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
+      const Vec3 n(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
+      m->positions.push_back((0.3 * n).cast<float>());
+      m->normals.push_back(n.cast<float>());
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
+      m->triangles.push_back({a, b, c});
+      m->triangles.push_back({b, d, c});
+    }
+  return m;
+}
+
+void bvh(const RenderScene& base, std::ofstream& csv) {
+  for (int rings : {50, 158, 500}) {  // 4 rings^2 triangles: 10k, 100k, 1M
+    RenderScene scene = base;
+    const auto mesh = sphere(rings);
+    const double meshMb = double(mesh->positions.size() * 2 * sizeof(Vec3f) + mesh->triangles.size() * 12) / (1 << 20);
+    InsertedObject o = scene.objects.at(0);
+    o.meshObject = mesh;
+    scene.objects = {o};
+    const double before = residentMb();
+    const auto t0 = Clock::now();
+    auto tracer = std::make_unique<PathTracer>(scene);
+    const double build = secondsSince(t0);
+    const double after = residentMb();
+    std::vector<double> moves;
+    for (int k = 0; k < 50; ++k) {
+      Mat4 m = o.worldFromObject;
+      m(0, 3) += 0.001 * (k + 1);
+      const auto t1 = Clock::now();
+      tracer->setObjectTransform(0, m);
+      moves.push_back(secondsSince(t1));
+    }
+    std::nth_element(moves.begin(), moves.begin() + 25, moves.end());
+    csv << mesh->triangles.size() << ',' << build << ',' << moves[25] << ',' << after - before << ',' << meshMb << '\n';
+    csv.flush();
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP]\n");
+    return 2;
+  }
+  const std::string out = argv[2];
+  const int w = argc > 4 ? std::atoi(argv[3]) : 96, h = argc > 4 ? std::atoi(argv[4]) : 72;
+  const int refSpp = argc > 5 ? std::atoi(argv[5]) : 256, maxSpp = argc > 6 ? std::atoi(argv[6]) : 64;
+  const std::string parts = argc > 7 ? argv[7] : "bvh,throughput,convergence";
+  auto wanted = [&](const char* part) { return parts.find(part) != std::string::npos; };
+  auto loaded = loadSceneFile(argv[1]);
+  if (!loaded) return std::fprintf(stderr, "%s\n", loaded.error().message().c_str()), 2;
+  auto prepared = prepareScene(loaded->doc);
+  if (!prepared) return std::fprintf(stderr, "%s\n", prepared.error().message().c_str()), 2;
+  if (prepared->renderScene.objects.empty()) return std::fprintf(stderr, "the scene has no object\n"), 2;
+  const ImageF photo = resizeImage(prepared->photo.linearRgb, w, h);
+
+  if (wanted("bvh")) {
+    std::ofstream csv(out + "/bvh.csv");
+    csv << "triangles,build_s,move_s,tracer_rss_mb,mesh_mb\n";
+    bvh(prepared->renderScene, csv);
+  }
+  if (wanted("throughput")) {
+    std::ofstream csv(out + "/throughput.csv");
+    csv << "threads,max_depth,seconds,rays,camera_rays,bounce_rays,shadow_rays,rays_per_s_per_thread\n";
+    throughput(prepared->renderScene, 160, 120, csv);
+  }
+  if (wanted("convergence")) {
+    std::ofstream csv(out + "/convergence.csv");
+    if (!csv) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
+    csv << "material,mode,threads,spp,seconds,rmse,region_px\n";
+    convergence(prepared->renderScene, photo, w, h, refSpp, maxSpp, csv);
+  }
+  return 0;
+}
