@@ -12,6 +12,9 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QStandardPaths>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -58,6 +61,7 @@ class StudioToolsTest : public QObject {
   void undoingAnObjectEditWhilePreparing();
   void zoomAndPanKeepTheImageUnderTheCursor();
   void exportShownLayer();
+  void exportSceneAsGltf();
 
  private:
   std::unique_ptr<MainWindow> window_;
@@ -267,6 +271,23 @@ void StudioToolsTest::exportShownLayer() {
            window_->renderer()->layerImage(Layer::Albedo).convertToFormat(QImage::Format_RGB32));
   // A folder that does not exist: refused, nothing half-written.
   QVERIFY(!window_->exportShownLayer(dir.filePath(QStringLiteral("no/such/albedo.png"))));
+}
+
+void StudioToolsTest::exportSceneAsGltf() {
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("room.gltf"));
+  QVERIFY(window_->exportSceneGltf(path));
+  QFile file(path);
+  QVERIFY(file.open(QIODevice::ReadOnly));
+  const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+  QCOMPARE(root.value(QStringLiteral("asset")).toObject().value(QStringLiteral("version")).toString(),
+           QStringLiteral("2.0"));
+  QVERIFY(root.value(QStringLiteral("cameras")).toArray().size() == 1);
+  // Room surfaces, lights as emissive quads, and the example's objects.
+  QVERIFY(root.value(QStringLiteral("meshes")).toArray().size() >
+          int(doc_->prepared()->renderScene.objects.size()));
+  // A folder that does not exist: refused with a message, nothing written.
+  QVERIFY(!window_->exportSceneGltf(dir.filePath(QStringLiteral("no/such/room.gltf"))));
 }
 
 QTEST_MAIN(StudioToolsTest)

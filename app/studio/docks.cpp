@@ -198,7 +198,9 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   preset_->addItem(tr("Diffuse"), QStringLiteral("diffuse"));
   preset_->addItem(tr("Glossy"), QStringLiteral("glossy"));
   preset_->addItem(tr("Mirror"), QStringLiteral("mirror"));
+  preset_->addItem(tr("Metal"), QStringLiteral("metal"));
   preset_->addItem(tr("Glass"), QStringLiteral("glass"));
+  preset_->addItem(tr("Frosted glass"), QStringLiteral("rough_glass"));
   preset_->addItem(tr("Emissive"), QStringLiteral("emissive"));
   preset_->addItem(tr("From the file"), QStringLiteral("asset"));
 

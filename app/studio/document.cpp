@@ -416,8 +416,9 @@ bool Document::insertObject(const ObjectKeys& keys, QString* reason) {
   if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
     return fail(tr("The height must be greater than zero."));
   const std::string key = "objects[" + std::to_string(doc_.objects.size()) + "]";
-  Expected<TriangleMesh> mesh = loadMesh(keys.meshResolved.empty() ? keys.mesh : keys.meshResolved);
-  if (!mesh.ok()) return fail(QString::fromStdString(mesh.error().underKey(key + ".mesh").message()));
+  // The engine's loader, so the studio honours `subdivide` as render does.
+  Expected<TriangleMesh> mesh = loadObjectMesh(keys);
+  if (!mesh.ok()) return fail(QString::fromStdString(mesh.error().underKey(key).message()));
   auto shared = std::make_shared<const TriangleMesh>(std::move(mesh.value()));
   const Expected<Placement> placed = placeObject(*shared, prepared_->geometry, prepared_->camera,
                                                  keys.basePx, keys.heightM, keys.yawDeg, key);

@@ -188,6 +188,9 @@ void MainWindow::createActions() {
   exportLayerAct_ = new QAction(tr("Export Shown &Layer…"), this);
   exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
   connect(exportLayerAct_, &QAction::triggered, this, &MainWindow::exportLayerDialog);
+  exportGltfAct_ = new QAction(tr("Export Scene as &glTF…"), this);
+  exportGltfAct_->setStatusTip(tr("Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender"));
+  connect(exportGltfAct_, &QAction::triggered, this, &MainWindow::exportSceneGltfDialog);
 
   quitAct_ = new QAction(tr("&Quit"), this);
   quitAct_->setShortcut(QKeySequence::Quit);
@@ -282,6 +285,7 @@ void MainWindow::createMenus() {
   fileMenu_->addAction(saveAsAct_);
   fileMenu_->addAction(exportAct_);
   fileMenu_->addAction(exportLayerAct_);
+  fileMenu_->addAction(exportGltfAct_);
   fileMenu_->addSeparator();
   fileMenu_->addAction(quitAct_);
 
@@ -396,6 +400,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   }
   const bool ready = document_->isReady();
   exportAct_->setEnabled(ready);
+  exportGltfAct_->setEnabled(ready);
   insertSphereAct_->setEnabled(ready);
   insertCubeAct_->setEnabled(ready);
   deleteAct_->setEnabled(!document_->scene().photo.empty());
@@ -579,6 +584,35 @@ bool MainWindow::exportComposite(const QString& path) {
                                .arg(QDir::toNativeSeparators(path))
                                .arg(renderer_->frameInfo().spp),
                            5000);
+  return true;
+}
+
+void MainWindow::exportSceneGltfDialog() {
+  QString selected;
+  const QString gltf = tr("glTF 2.0, separate files (*.gltf)"), glb = tr("glTF 2.0, binary (*.glb)");
+  QString path = QFileDialog::getSaveFileName(this, tr("Export Scene as glTF"), QString(),
+                                              gltf + QStringLiteral(";;") + glb, &selected);
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty())
+    path += selected == glb ? QStringLiteral(".glb") : QStringLiteral(".gltf");
+  exportSceneGltf(path);
+}
+
+bool MainWindow::exportSceneGltf(const QString& path) {
+  const PreparedScene* prepared = document_->prepared();
+  if (!document_->isReady() || !prepared) {
+    showError(tr("Nothing to export"), tr("The scene is not prepared yet."));
+    return false;
+  }
+  std::vector<std::string> warnings;
+  const Status written = inlay::exportSceneGltf(*prepared, QDir::toNativeSeparators(path).toStdString(), &warnings);
+  if (!written.ok()) {
+    showError(tr("Cannot export the scene"), QString::fromStdString(written.error().message()));
+    return false;
+  }
+  QString message = tr("Exported %1").arg(QDir::toNativeSeparators(path));
+  if (!warnings.empty()) message += QStringLiteral(" (") + QString::fromStdString(warnings.front()) + QStringLiteral(")");
+  statusBar()->showMessage(message, 8000);
   return true;
 }
 

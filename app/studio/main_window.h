@@ -67,6 +67,10 @@ class MainWindow : public QMainWindow {
   // Writes the layer the viewport shows (8-bit sRGB: .png, .jpg, .tif) atomically; returns
   // false (after telling the user) when it does not exist yet or cannot be written.
   bool exportShownLayer(const QString& path);
+  // Writes the reconstructed scene (room with its albedo textures, lights, camera, objects where
+  // they stand now) as glTF 2.0 (.gltf with its .bin and textures beside it, or one .glb);
+  // returns false (after telling the user) when the scene is not prepared or cannot be written.
+  bool exportSceneGltf(const QString& path);
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -80,6 +84,7 @@ class MainWindow : public QMainWindow {
   bool saveAsDialog();
   void exportCompositeDialog();
   void exportLayerDialog();
+  void exportSceneGltfDialog();
   void about();
   // Inserts a builtin mesh ("builtin:sphere", "builtin:cube") standing in the middle of the
   // visible floor; false (with the reason in the status bar) when there is no such place.
@@ -129,6 +134,7 @@ class MainWindow : public QMainWindow {
   QAction* saveAsAct_ = nullptr;
   QAction* exportAct_ = nullptr;
   QAction* exportLayerAct_ = nullptr;
+  QAction* exportGltfAct_ = nullptr;
   QAction* quitAct_ = nullptr;
   QAction* undoAct_ = nullptr;
   QAction* redoAct_ = nullptr;
