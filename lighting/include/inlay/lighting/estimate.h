@@ -31,6 +31,12 @@ struct LightingOptions {
   int gatherSamples = 0;
   double gatherNoise = 0.05;
   int gatherStride = 4;         // gather on every n-th pixel, interpolate between
+  // What the photo does not show radiates its albedo times the light gathered at its patch:
+  // patches about room size / patchesAcrossRoom wide, patchSamples rays each, patchSweeps
+  // radiosity sweeps (gather.h, SurfacePatches).
+  double patchesAcrossRoom = 20;
+  int patchSamples = 64;
+  int patchSweeps = 3;
   int directSamples = 16;       // points per light for E_j
   int fitPixels = 6000;         // pixels sampled for the fit
   double saturatedAbove = 0.98; // linear value treated as clipped
@@ -54,6 +60,7 @@ struct LightingEstimate {
   std::vector<uint8_t> decomposeValid, decomposeClipped;
   std::vector<DecomposeSample> decomposeHistory;  // objective and residuals against time
   std::string decomposeReport;                    // converged, or why the solver stopped
+  bool decomposeConverged = true;                 // false: stopped at its iteration cap
   ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
   ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
   std::vector<AreaLight> lights;      // with fitted radiance
