@@ -589,13 +589,20 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then
   // the geometry-aware objective, whose data terms tie rho * Gamma to the photo.
   {
-    std::vector<uint8_t> valid(size_t(W) * H, 0), clipped(size_t(W) * H, 0);
+    std::vector<uint8_t> valid(size_t(W) * H, 0), validPhoto(size_t(W) * H, 0),
+        clipped(size_t(W) * H, 0);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const size_t idx = size_t(y) * W + x;
         clipped[idx] = saturated(x, y) ? 1 : 0;
-        valid[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
-                     luminance(photo.rgb(x, y)) > 1e-5;
+        validPhoto[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
+                          luminance(photo.rgb(x, y)) > 1e-5;
+        // A pixel brighter than any reflectance could make it under the modelled light is one
+        // the model does not explain (a light or an opening it lacks, a surface that is not
+        // where the geometry says, such as the floor seen between a table's legs): its albedo
+        // comes from the photo's own Retinex, and the data terms leave it alone.
+        const Vec3 sf = shadingFree.rgb(x, y);
+        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove;
       }
     // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
     // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
@@ -605,8 +612,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     for (size_t i = 0; i < valid.size(); ++i)
       if (valid[i]) ++nValid, nIndirect += directShare[i] < 0.25f;
     const bool haveIndirect = nIndirect >= std::max<size_t>(200, nValid / 50);
-    auto anchoredRetinex = [&](const ImageF& image, bool gammaAnchor) {
-      const ImageF rel = retinexReflectance(image, valid, opt.retinex);
+    // `fallback`: the albedo of pixels not in `use` (default: the physical one).
+    auto anchoredRetinex = [&](const ImageF& image, const std::vector<uint8_t>& use,
+                               bool gammaAnchor, const ImageF* fallback) {
+      const ImageF rel = retinexReflectance(image, use, opt.retinex);
       auto medianRatio = [&](int c, bool indirectOnly) {
         std::vector<float> ratio;
         for (int y = 0; y < H; ++y)
@@ -630,19 +639,20 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
           const size_t idx = size_t(y) * W + x;
           if (ps[idx].surface < 0) continue;
           for (int c = 0; c < 3; ++c) {
-            // Lamps and clipped pixels carry no reflectance: the physical fallback stands.
-            const float r = valid[idx] ? float(scale[c] * rel.at(x, y, c)) : out.albedo.at(x, y, c);
+            // Lamps and clipped pixels carry no reflectance: the fallback stands.
+            const float r = use[idx] ? float(scale[c] * rel.at(x, y, c))
+                                     : (fallback ? *fallback : out.albedo).at(x, y, c);
             a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
           }
         }
       return a;
     };
     // The baseline: Retinex of the photo alone.
-    out.retinexAlbedo = anchoredRetinex(photo, false);
+    out.retinexAlbedo = anchoredRetinex(photo, validPhoto, false, nullptr);
     if (opt.objective) {
       // The start: Retinex of the photo with the geometry's shading divided out (what is left
       // of shading there is noise and model error, which the thresholds remove).
-      const ImageF rho0 = anchoredRetinex(shadingFree, true);
+      const ImageF rho0 = anchoredRetinex(shadingFree, valid, true, &out.retinexAlbedo);
       DecomposeOptions dopt = opt.decompose;
       if (!dopt.cancel) dopt.cancel = opt.cancel;
       auto dec = decomposeIntrinsic(photo, out.gathered, rho0, valid, clipped, dopt);

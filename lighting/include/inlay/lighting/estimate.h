@@ -40,6 +40,10 @@ struct LightingOptions {
   int directSamples = 16;       // points per light for E_j
   int fitPixels = 6000;         // pixels sampled for the fit
   double saturatedAbove = 0.98; // linear value treated as clipped
+  // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
+  // the model (a light or opening it lacks, wrong geometry): its albedo comes from the photo's
+  // Retinex and the decomposition's data terms leave it out.
+  double unexplainedAbove = 1.25;
   uint32_t seed = 7;
   int threads = 0;
   // The albedo: Retinex anchored to the fitted lights (the start), then the geometry-aware
