@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -430,10 +431,15 @@ std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f
 
 }  // namespace
 
+std::atomic<uint64_t> gDecompositionRuns{0};
+
+uint64_t decompositionRuns() { return gDecompositionRuns.load(); }
+
 Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& gathered,
                                            const ImageF& rho0, const std::vector<uint8_t>& valid,
                                            const std::vector<uint8_t>& clipped,
                                            const DecomposeOptions& opt) {
+  gDecompositionRuns.fetch_add(1);
   const int W = photo.width, H = photo.height;
   const size_t N = photo.pixelCount();
   const int f = opt.maxSolvePixels > 0 && N > size_t(opt.maxSolvePixels)

@@ -56,7 +56,7 @@ struct DecomposeOptions {
   bool normaliseByMeanGamma = false;
   // The solver stops on convergence or at the iteration cap, never on the clock, so a photo
   // and geometry give the same albedo bit for bit on every run and machine load.
-  int maxIterations = 200;
+  int maxIterations = 100;
   int minIterations = 10;
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
   // each times its step (so in units of rho and of the dual variable in [-1,1]), both fall
@@ -89,6 +89,10 @@ struct Decomposition {
   std::string report;  // one line: converged or why it stopped, with the residuals reached
   double seconds = 0;
 };
+
+// How many times decomposeIntrinsic has run in this process (all threads): tests use it to show
+// that moving an object never redoes the decomposition.
+uint64_t decompositionRuns();
 
 // Minimises the objective above from `rho0` (W x H x 3, typically anchored Retinex). `photo`:
 // B, W x H x 3 linear; `gathered`: Gamma, W x H x 3 >= 0. `valid`: W x H, nonzero where the
