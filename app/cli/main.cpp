@@ -357,6 +357,8 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
 
 int commandDecompose(const std::string& scenePath, const Args& a) {
   if (a.albedo.empty()) return usageError("decompose needs --albedo ALBEDO.exr");
+  if (a.seconds)  // the solver stops on convergence or an iteration cap, never on the clock
+    return usageError("--seconds applies to render; decompose takes --iterations N");
   if (a.method != "ours" && a.method != "retinex")
     return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
   Progress progress(a.quiet);
