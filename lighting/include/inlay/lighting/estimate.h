@@ -6,8 +6,8 @@
 // the room geometry), Gamma the indirect irradiance / pi gathered from the photo itself (each
 // gather ray's hit point is projected into the photo; what the photo does not show radiates
 // its surface's fitted albedo times the fitted lights' direct light plus the light gathered at
-// its patch, by radiosity sweeps over surface patches, gather.h), and rho the albedo. Light radiances L_j and per-surface reference albedos are
-// found by a bounded robust least-squares fit (Ceres) that asks the albedo to be smooth within
+// its patch, by radiosity sweeps over surface patches, gather.h), and rho the albedo. Light
+// radiances L_j and per-surface reference albedos are found by a bounded robust least-squares fit (Ceres) that asks the albedo to be smooth within
 // each surface; rho(x) = B / (sum L_j E_j + Gamma) then follows per pixel (physicalAlbedo).
 // The albedo itself comes from the intrinsic decomposition (decompose.h): colour Retinex of that
 // shading-free image, scaled per channel to it, minimised under the paper's objective with
