@@ -8,7 +8,8 @@
 // its surface's fitted albedo times the fitted lights' direct light plus the light gathered at
 // its patch, by radiosity sweeps over surface patches, gather.h), and rho the albedo. Light
 // radiances L_j and per-surface reference albedos are found by a bounded robust least-squares
-// fit (Ceres) that asks the albedo to be smooth within each surface; rho(x) = B / (sum L_j E_j + Gamma) then follows per pixel (physicalAlbedo).
+// fit (Ceres) that asks the albedo to be smooth within each surface; rho(x) = B / (sum L_j E_j
+// + Gamma) then follows per pixel (physicalAlbedo).
 // The albedo itself comes from the intrinsic decomposition (decompose.h): colour Retinex of that
 // shading-free image, scaled per channel to it, minimised under the paper's objective with
 // B = D + rho * Gamma. Saturated pixels and light outlines are left out of fit and data terms.
