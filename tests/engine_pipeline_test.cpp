@@ -68,6 +68,27 @@ TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
   EXPECT_GT(f.mask.at(bx, by), 0.5f);
 }
 
+// The decomposition is once-per-photo-and-geometry work: prepareScene runs it once, and moving
+// an object (placeObjectAt and the object's new transform) never runs it again nor
+// changes the room's albedo.
+TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
+  const uint64_t before = decompositionRuns();
+  auto ps = prepareScene(exampleDoc());
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  EXPECT_EQ(decompositionRuns(), before + 1);
+  ASSERT_FALSE(ps->lighting.albedo.empty());
+  ASSERT_FALSE(ps->lighting.direct.empty());
+  const std::vector<float> albedo = ps->renderScene.roomAlbedo.albedo.data;
+  for (int k = 1; k <= 5; ++k) {
+    ps->doc.objects[0].basePx += Vec2(-6, -2);
+    const auto moved = placeObjectAt(*ps, 0);
+    ASSERT_TRUE(moved.ok()) << moved.error().message();
+    ps->renderScene.objects[0].worldFromObject = moved->worldFromObject;
+  }
+  EXPECT_EQ(decompositionRuns(), before + 1);
+  EXPECT_EQ(ps->renderScene.roomAlbedo.albedo.data, albedo);
+}
+
 TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
   auto ps = prepareScene(exampleDoc());
   ASSERT_TRUE(ps.ok()) << ps.error().message();

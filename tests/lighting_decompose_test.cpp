@@ -96,7 +96,6 @@ TEST(Decompose, LowersTheObjectiveAndKeepsTheConstraints) {
   ImageF rho0 = anchoredRetinex(l);
   DecomposeOptions o;
   o.maxIterations = 200;
-  o.timeLimitSeconds = 0;
   auto d = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
   ASSERT_TRUE(d) << d.error().message();
   expectFeasible(l, *d);
@@ -115,12 +114,11 @@ TEST(Decompose, ConvergesOnASmallProblemAndSaysSo) {
   const Layers l = makeLayers(24, 20, 6);
   DecomposeOptions o;
   o.maxIterations = 20000;
-  o.timeLimitSeconds = 0;
   o.tolerance = 1e-3;
   auto d = decomposeIntrinsic(l.B, l.gamma, anchoredRetinex(l), l.valid, l.clipped, o);
   ASSERT_TRUE(d);
   EXPECT_TRUE(d->converged) << d->report;
-  EXPECT_NE(d->report.find("converged after"), std::string::npos);
+  EXPECT_EQ(d->report.rfind("converged (", 0), 0u) << d->report;
   EXPECT_LT(d->history.back().primalResidual, 1e-3);
   EXPECT_LT(d->history.back().dualResidual, 1e-3);
   expectFeasible(l, *d);
@@ -135,7 +133,7 @@ TEST(Decompose, ReportsWhenStoppedBeforeConvergence) {
   ASSERT_TRUE(d);
   EXPECT_FALSE(d->converged);
   EXPECT_NE(d->report.find("not converged"), std::string::npos) << d->report;
-  EXPECT_NE(d->report.find("iteration limit"), std::string::npos) << d->report;
+  EXPECT_NE(d->report.find("iteration cap"), std::string::npos) << d->report;
   EXPECT_EQ(d->iterations, 3);
   expectFeasible(l, *d);
 }
@@ -190,7 +188,6 @@ TEST(Decompose, ConstantImageGivesAConstantAlbedo) {
   for (float v : rho0.data) ASSERT_NEAR(v, 1.0, 1e-4);  // flat reflectance, geometric mean 1
   ImageF start(20, 20, 3, 0.6f);
   DecomposeOptions o;
-  o.timeLimitSeconds = 0;
   auto d = decomposeIntrinsic(l.B, l.gamma, start, l.valid, l.clipped, o);
   ASSERT_TRUE(d);
   expectFeasible(l, *d);
@@ -205,8 +202,7 @@ TEST(Decompose, WeightsSweptOverTwelveDecades) {
       DecomposeOptions o;
       (which == 0 ? o.g1 : which == 1 ? o.g2 : o.g3) = w;
       o.maxIterations = 300;
-      o.timeLimitSeconds = 0;
-      auto d = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
+          auto d = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
       ASSERT_TRUE(d) << which << " " << w;
       SCOPED_TRACE(::testing::Message() << "weight " << which << " = " << w << ": " << d->report);
       expectFeasible(l, *d);
@@ -234,21 +230,88 @@ TEST(Decompose, TinyPhotoAndBadSizes) {
   expectFeasible(one, *d1);
 }
 
-TEST(Decompose, LargePhotoStaysFiniteAndStopsOnTime) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const Layers l = makeLayers(4000, 3000, 40);
-  const ImageF rho0 = retinexReflectance(l.B, l.valid);
-  ImageF start = rho0;
-  for (float& v : start.data) v = std::clamp(v * 0.45f, 0.f, 1.f);
+// The solver stops on convergence or its iteration cap, never on the clock: the same input gives
+// the same albedo bit for bit, whatever the machine's load.
+TEST(Decompose, RepeatRunsAreBitIdentical) {
+  const Layers l = makeLayers(64, 48);
+  const ImageF rho0 = anchoredRetinex(l);
   DecomposeOptions o;
-  o.maxIterations = 1000;
-  o.timeLimitSeconds = 2.0;
+  o.maxIterations = 60;
+  o.tolerance = 0;
+  o.objectiveTolerance = 0;
+  auto a = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
+  auto b = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->iterations, 60);
+  EXPECT_EQ(b->iterations, 60);
+  EXPECT_EQ(a->albedo.data, b->albedo.data);
+  EXPECT_EQ(a->direct.data, b->direct.data);
+  ASSERT_EQ(a->history.size(), b->history.size());
+  for (size_t i = 0; i < a->history.size(); ++i)
+    EXPECT_EQ(a->history[i].objective, b->history[i].objective);
+  // The solver did move (the test could fail): the albedo differs from its start.
+  EXPECT_GT(mae(a->albedo, rho0), 1e-5);
+}
+
+TEST(Decompose, StopsWhenTheObjectiveIsFlat) {
+  const Layers l = makeLayers(24, 20, 6);
+  DecomposeOptions o;
+  o.maxIterations = 20000;
+  o.tolerance = 0;  // residuals alone never stop it
+  o.objectiveTolerance = 1e-7;
+  auto d = decomposeIntrinsic(l.B, l.gamma, anchoredRetinex(l), l.valid, l.clipped, o);
+  ASSERT_TRUE(d);
+  EXPECT_TRUE(d->converged) << d->report;
+  EXPECT_NE(d->report.find("(objective)"), std::string::npos) << d->report;
+  EXPECT_LT(d->iterations, 20000);
+  const auto& h = d->history;
+  ASSERT_GE(h.size(), 2u);
+  EXPECT_LE(std::abs(h[h.size() - 2].objective - h.back().objective), 1e-7 * h.back().objective);
+}
+
+// 12 MP: solved on block means (maxSolvePixels), the change carried back; the constraints hold
+// at full resolution and the albedo moves toward the truth from a start that is off.
+TEST(Decompose, LargePhotoIsSolvedOnBlocksAndStaysFeasible) {
+  const Layers l = makeLayers(4000, 3000, 40);
+  ImageF start = l.rhoTrue;
+  for (float& v : start.data) v = std::clamp(v * 1.3f, 0.f, 1.f);
+  DecomposeOptions o;
+  o.maxIterations = 40;
   auto d = decomposeIntrinsic(l.B, l.gamma, start, l.valid, l.clipped, o);
   ASSERT_TRUE(d);
-  EXPECT_FALSE(d->converged);
-  EXPECT_NE(d->report.find("time limit"), std::string::npos) << d->report;
+  EXPECT_NE(d->report.find("blocks of the 4000x3000 photo"), std::string::npos) << d->report;
+  EXPECT_EQ(d->converged, d->report.rfind("converged", 0) == 0);
+  if (!d->converged) EXPECT_NE(d->report.find("iteration cap"), std::string::npos) << d->report;
   expectFeasible(l, *d);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 20);
+  // The cap rho <= B / Gamma alone pulls the too-bright start toward the truth.
+  EXPECT_LT(mae(d->albedo, l.rhoTrue), mae(start, l.rhoTrue));
+}
+
+// 50 MP with black, clipped and Gamma ~ 0 patches: finite, feasible, bounded work.
+TEST(Decompose, FiftyMegapixelPhotoStaysFeasible) {
+  const int W = 8660, H = 5780;  // 50.05 MP
+  Layers l{ImageF(W, H, 3), ImageF(W, H, 3), ImageF(), std::vector<uint8_t>(size_t(W) * H, 1),
+           std::vector<uint8_t>(size_t(W) * H, 0)};
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const float r = ((x / 200 + y / 200) & 1) ? 0.7f : 0.3f, g = 0.2f + 0.1f * x / W;
+      for (int c = 0; c < 3; ++c) {
+        l.gamma.at(x, y, c) = y < 100 ? 1e-12f : g;
+        l.B.at(x, y, c) = x < 100 ? 0.f : r * (0.5f + g);
+      }
+      if (y > H - 100) {
+        l.clipped[size_t(y) * W + x] = 1;
+        l.B.setRgb(x, y, Vec3::Ones());
+      }
+    }
+  DecomposeOptions o;
+  o.maxIterations = 5;
+  auto d = decomposeIntrinsic(l.B, l.gamma, ImageF(W, H, 3, 0.5f), l.valid, l.clipped, o);
+  ASSERT_TRUE(d);
+  EXPECT_FALSE(d->converged);
+  EXPECT_NE(d->report.find("not converged"), std::string::npos) << d->report;
+  EXPECT_EQ(d->iterations, 5);
+  expectFeasible(l, *d);
 }
 
 }  // namespace

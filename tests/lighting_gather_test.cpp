@@ -68,3 +68,56 @@ TEST(Gather, CeilingViewFactorFromTheFloorCentre) {
 
 }  // namespace
 }  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// Every gather ray from inside the room lands in a patch of the surface it hit, near the hit.
+TEST(SurfacePatches, CoverTheRoomAndAreFoundFromTheirHits) {
+  const SceneGeometry g = cubeRoom(2, 2.5);
+  const SurfacePatches P = makeSurfacePatches(g, 0.3);
+  ASSERT_GT(P.point.size(), 200u);
+  RoomTracer tracer(g);
+  int hits = 0;
+  const RadianceAt check = [&](const SurfaceHit& h, uint32_t) -> Vec3 {
+    const int p = P.find(h);
+    EXPECT_GE(p, 0) << h.pointWorld.transpose();
+    if (p < 0) return Vec3(0, 0, 0);
+    EXPECT_EQ(P.surface[size_t(p)], h.surfaceId);
+    EXPECT_LT((P.point[size_t(p)] - h.pointWorld).norm(), 0.3 * std::sqrt(2.0) + 1e-9);
+    EXPECT_GT(P.normal[size_t(p)].dot(h.normalWorld), 0.99);
+    ++hits;
+    return Vec3(1, 1, 1);
+  };
+  for (const Vec3& o : {Vec3(0, 1, 0), Vec3(1.9, 0.01, -1.9), Vec3(-1.2, 2.4, 0.5)})
+    gatherIrradianceOverPi(tracer, o, Vec3(0, 1, 0), 256, 5, 3, check);
+  EXPECT_EQ(hits, 3 * 256);
+}
+
+// Radiosity in a closed room that the photo does not show at all: every surface emits Le and
+// reflects rho of what it gathers, so k Jacobi sweeps from Gamma = 0 give exactly
+// Le (1 - rho^k) / (1 - rho) (the fixed point Le / (1 - rho)), at every patch.
+TEST(SurfacePatches, RadiositySweepsMatchTheFurnace) {
+  const SceneGeometry g = cubeRoom(1.5, 2.5);
+  SurfacePatches P = makeSurfacePatches(g, 0.5);
+  RoomTracer tracer(g);
+  const double rho = 0.6, Le = 1.0;
+  const RadianceAt radiance = [&](const SurfaceHit& h, uint32_t) -> Vec3 {
+    const int p = P.find(h);
+    EXPECT_GE(p, 0) << h.pointWorld.transpose();
+    return Vec3::Constant(Le) + rho * (p >= 0 ? P.gamma[size_t(p)] : Vec3(NAN, NAN, NAN));
+  };
+  for (int sweep = 1; sweep <= 4; ++sweep) {
+    std::vector<Vec3> next(P.point.size());
+    for (size_t i = 0; i < P.point.size(); ++i)
+      next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i], 16,
+                                       uint32_t(i), 1, radiance).mean;
+    P.gamma = next;
+    const double expect = Le * (1 - std::pow(rho, sweep)) / (1 - rho);
+    for (size_t i = 0; i < P.gamma.size(); ++i)
+      ASSERT_NEAR(P.gamma[i].x(), expect, 1e-9) << "sweep " << sweep << " patch " << i;
+  }
+}
+
+}  // namespace
+}  // namespace inlay

@@ -31,9 +31,11 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
-            [--seconds S] [--progress-csv F]         the room's albedo and direct light; S: the
-                                                     solver's time limit, F: objective and
-                                                     residuals against time
+            [--gathered G.exr] [--iterations N] [--progress-csv F]
+                                                     the room's albedo and direct light; G: the
+                                                     gathered indirect light (irradiance / pi),
+                                                     N: the solver's iteration cap, F: objective
+                                                     and residuals against time
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
@@ -86,8 +88,8 @@ int inputError(const Error& e) {
 struct Args {
   std::string command;
   std::vector<std::string> positional;
-  std::string output, layers, progressCsv, albedo, direct, method = "ours", sceneForEstimate;
-  std::optional<int> spp, seed, threads;
+  std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
+  std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds;
   bool quiet = false;
   bool noFocus = false;
@@ -121,8 +123,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       return std::string(argv[++i]);
     };
     if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" ||
-        s == "--albedo" || s == "--direct" || s == "--method" || s == "--scene" || s == "--spp" ||
-        s == "--seconds" || s == "--seed" || s == "--threads") {
+        s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
+        s == "--scene" || s == "--spp" || s == "--seconds" || s == "--seed" || s == "--threads" ||
+        s == "--iterations") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -130,6 +133,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--progress-csv") a.progressCsv = *v;
       else if (s == "--albedo") a.albedo = *v;
       else if (s == "--direct") a.direct = *v;
+      else if (s == "--gathered") a.gathered = *v;
       else if (s == "--method") a.method = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
       else if (s == "--seconds") {
@@ -142,7 +146,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
           if (*n < 1) return "--spp must be at least 1";
           a.spp = n;
         } else if (s == "--seed") a.seed = n;
-        else a.threads = n;
+        else if (s == "--iterations") {
+          if (*n < 1) return "--iterations must be at least 1";
+          a.iterations = n;
+        } else a.threads = n;
       }
     } else if (s == "--quiet" || s == "-q") {
       a.quiet = true;
@@ -381,6 +388,8 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
 
 int commandDecompose(const std::string& scenePath, const Args& a) {
   if (a.albedo.empty()) return usageError("decompose needs --albedo ALBEDO.exr");
+  if (a.seconds)  // the solver stops on convergence or an iteration cap, never on the clock
+    return usageError("--seconds applies to render; decompose takes --iterations N");
   if (a.method != "ours" && a.method != "retinex")
     return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
   Progress progress(a.quiet);
@@ -389,12 +398,12 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   if (!prepared) return inputError(prepared.error());
   const LightingEstimate& le = prepared->lighting;
   const bool retinex = a.method == "retinex";
-  // --seconds S: re-run the solver from its start with that time limit (error against time).
+  // --iterations N: re-run the solver from its start with that iteration cap (error against
+  // solver time at a reproducible budget).
   std::optional<Decomposition> rerun;
-  if (!retinex && a.seconds && !le.decomposeStart.empty()) {
+  if (!retinex && a.iterations && !le.decomposeStart.empty()) {
     DecomposeOptions o;
-    o.timeLimitSeconds = std::max(1e-6, *a.seconds);
-    o.maxIterations = 100000;
+    o.maxIterations = *a.iterations;
     o.cancel = &gCancel;
     auto d = decomposeIntrinsic(prepared->photo.linearRgb, le.gathered, le.decomposeStart,
                                 le.decomposeValid, le.decomposeClipped, o);
@@ -427,7 +436,15 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     if (auto st = saveImage(a.direct, direct, SaveOptions{false}); !st)
       return inputError(st.error());
   }
-  if (!a.quiet && !retinex && !le.decomposeReport.empty())
+  if (!a.gathered.empty())
+    if (auto st = saveImage(a.gathered, le.gathered, SaveOptions{false}); !st)
+      return inputError(st.error());
+  // The solver's report goes to stderr even with --quiet when it stopped before converging.
+  const bool converged = rerun ? rerun->converged : le.decomposeConverged;
+  if (!retinex && !converged)
+    std::fprintf(stderr, "inlay-cli: warning: decomposition %s\n",
+                 (rerun ? rerun->report : le.decomposeReport).c_str());
+  else if (!a.quiet && !retinex && !le.decomposeReport.empty())
     std::fprintf(stderr, "inlay-cli: decomposition %s\n",
                  (rerun ? rerun->report : le.decomposeReport).c_str());
   return 0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -105,10 +106,13 @@ ImageF retinexReflectance(const ImageF& img, const std::vector<uint8_t>& valid,
   return out;
 }
 
-Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& gathered,
-                                           const ImageF& rho0, const std::vector<uint8_t>& valid,
-                                           const std::vector<uint8_t>& clipped,
-                                           const DecomposeOptions& opt) {
+namespace {
+
+// The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
+Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF& gathered,
+                                              const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                              const std::vector<uint8_t>& clipped,
+                                              const DecomposeOptions& opt) {
   const auto t0 = Clock::now();
   const int W = photo.width, H = photo.height;
   if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
@@ -120,7 +124,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   if (valid.size() != N) return Error{"", "valid", "the mask must have one entry per pixel"};
   if (!clipped.empty() && clipped.size() != N)
     return Error{"", "clipped", "the mask must be empty or have one entry per pixel"};
-  for (double w : {opt.g1, opt.g2, opt.g3, opt.s, opt.c})
+  for (double w : {opt.g1, opt.g2, opt.g3, opt.s, opt.c, opt.tolerance, opt.objectiveTolerance})
     if (!std::isfinite(w) || w < 0) return Error{"", "options", "weights must be finite and >= 0"};
 
   // Units: B and Gamma over the mean gathered irradiance of the valid pixels.
@@ -272,7 +276,8 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   const int every = std::max(1, opt.historyEvery);
   double primal = INFINITY, dual = INFINITY;
   int it = 0;
-  std::string stopReason = "the iteration limit";
+  std::string stopReason = "the iteration cap";
+  const char* convergedBy = "";
   for (it = 1; it <= std::max(1, opt.maxIterations); ++it) {
     const bool record = (it % every == 0) || it == opt.maxIterations;
     double pSum = 0, dSum = 0;
@@ -323,19 +328,20 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
     if (record) {
       primal = tau * std::sqrt(pSum / (3.0 * N));
       dual = sigma * std::sqrt(dSum / (3.0 * N));
-      out.history.push_back({seconds(), it, objective(), primal, dual});
-      if (!std::isfinite(primal) || !std::isfinite(dual)) {
+      const double f = objective();
+      const double fPrev = out.history.empty() ? INFINITY : out.history.back().objective;
+      out.history.push_back({seconds(), it, f, primal, dual});
+      if (!std::isfinite(primal) || !std::isfinite(dual) || !std::isfinite(f)) {
         stopReason = "non-finite residuals";
         break;
       }
-      if (it >= opt.minIterations && primal < opt.tolerance && dual < opt.tolerance) {
+      const bool residualsSmall = primal < opt.tolerance && dual < opt.tolerance;
+      const bool objectiveFlat = std::abs(fPrev - f) <= opt.objectiveTolerance * std::abs(f);
+      if (it >= opt.minIterations && (residualsSmall || objectiveFlat)) {
         out.converged = true;
+        convergedBy = residualsSmall ? "residuals" : "objective";
         break;
       }
-    }
-    if (opt.timeLimitSeconds > 0 && seconds() > opt.timeLimitSeconds) {
-      stopReason = "the time limit";
-      break;
     }
     if (opt.cancel && opt.cancel->shouldStop()) {
       stopReason = "cancellation";
@@ -349,8 +355,10 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   char buf[256];
   if (out.converged)
     std::snprintf(buf, sizeof buf,
-                  "converged after %d iterations (%.2f s): primal residual %.2e, dual %.2e <= %.1e",
-                  out.iterations, seconds(), primal, dual, opt.tolerance);
+                  "converged (%s) after %d iterations (%.2f s): primal residual %.2e, dual %.2e, "
+                  "tolerance %.1e, objective change tolerance %.1e",
+                  convergedBy, out.iterations, seconds(), primal, dual, opt.tolerance,
+                  opt.objectiveTolerance);
   else
     std::snprintf(buf, sizeof buf,
                   "not converged: stopped by %s after %d iterations (%.2f s): primal residual "
@@ -372,6 +380,126 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
     });
   }
   out.seconds = seconds();
+  return out;
+}
+
+
+// Largest albedo a pixel allows: 1, and rho * Gamma <= B where B is a measurement (not clipped).
+float albedoCap(float b, float g, bool clippedPixel) {
+  if (clippedPixel || !std::isfinite(b) || !std::isfinite(g) || !(g > 0)) return 1.f;
+  return std::clamp(b / g, 0.f, 1.f);
+}
+
+// Box average of f x f blocks; `use` (may be empty) picks the samples, all when none is used.
+ImageF boxDown(const ImageF& img, int f, const std::vector<uint8_t>& use) {
+  const int W = img.width, H = img.height, w = (W + f - 1) / f, h = (H + f - 1) / f;
+  ImageF out(w, h, 3, 0.f);
+  forRows(h, [&](int by) {
+    for (int bx = 0; bx < w; ++bx)
+      for (int pass = 0; pass < 2; ++pass) {
+        double sum[3] = {0, 0, 0}, n = 0;
+        for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
+          for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) {
+            if (pass == 0 && !use.empty() && !use[size_t(y) * W + x]) continue;
+            const float* p = img.pixel(x, y);
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+            for (int c = 0; c < 3; ++c) sum[c] += std::max(p[c], 0.f);
+            n += 1;
+          }
+        if (n == 0) continue;
+        for (int c = 0; c < 3; ++c) out.at(bx, by, c) = float(sum[c] / n);
+        break;
+      }
+  });
+  return out;
+}
+
+// Mask of f x f blocks: set where at least half the block's pixels are.
+std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f) {
+  const int w = (W + f - 1) / f, h = (H + f - 1) / f;
+  std::vector<uint8_t> out(size_t(w) * h, 0);
+  if (m.empty()) return {};
+  for (int by = 0; by < h; ++by)
+    for (int bx = 0; bx < w; ++bx) {
+      int on = 0, n = 0;
+      for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
+        for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) on += m[size_t(y) * W + x] != 0, ++n;
+      out[size_t(by) * w + bx] = 2 * on >= n;
+    }
+  return out;
+}
+
+}  // namespace
+
+std::atomic<uint64_t> gDecompositionRuns{0};
+
+uint64_t decompositionRuns() { return gDecompositionRuns.load(); }
+
+Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& gathered,
+                                           const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                           const std::vector<uint8_t>& clipped,
+                                           const DecomposeOptions& opt) {
+  gDecompositionRuns.fetch_add(1);
+  const int W = photo.width, H = photo.height;
+  const size_t N = photo.pixelCount();
+  const int f = opt.maxSolvePixels > 0 && N > size_t(opt.maxSolvePixels)
+                    ? int(std::ceil(std::sqrt(double(N) / double(opt.maxSolvePixels))))
+                    : 1;
+  if (f <= 1 || gathered.width != W || gathered.height != H || rho0.width != W ||
+      rho0.height != H || valid.size() != N || (!clipped.empty() && clipped.size() != N) ||
+      photo.channels < 3 || gathered.channels < 3 || rho0.channels < 3)
+    return solveAtFullResolution(photo, gathered, rho0, valid, clipped, opt);
+  // A large photo: the solver runs on f x f block means, and its change to the start is carried
+  // back bilinearly onto the full-resolution start (which keeps the photo's fine texture), then
+  // held to the full-resolution constraints.
+  const auto t0 = Clock::now();
+  const ImageF Bs = boxDown(photo, f, valid), Gs = boxDown(gathered, f, valid);
+  const ImageF r0s = boxDown(rho0, f, {});
+  const std::vector<uint8_t> validS = maskDown(valid, W, H, f), clippedS = maskDown(clipped, W, H, f);
+  auto small = solveAtFullResolution(Bs, Gs, r0s, validS, clippedS, opt);
+  if (!small) return small;
+  const int w = Bs.width, h = Bs.height;
+  // The change the solver made, per block (against the start as the solver clamped it).
+  ImageF change(w, h, 3, 0.f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const bool lower = !clippedS.empty() && clippedS[size_t(y) * w + x];
+        const float start = std::clamp(r0s.at(x, y, c), 0.f, albedoCap(Bs.at(x, y, c), Gs.at(x, y, c), lower));
+        change.at(x, y, c) = small->albedo.at(x, y, c) - start;
+      }
+  Decomposition out;
+  out.history = std::move(small->history);
+  out.iterations = small->iterations;
+  out.converged = small->converged;
+  out.albedo = ImageF(W, H, 3, 0.f);
+  out.direct = ImageF(W, H, 3, 0.f);
+  forRows(H, [&](int y) {
+    const double fy = std::clamp((y + 0.5) / f - 0.5, 0.0, double(h - 1));
+    const int y0 = int(fy), y1 = std::min(y0 + 1, h - 1);
+    const float ay = float(fy - y0);
+    for (int x = 0; x < W; ++x) {
+      const double fx = std::clamp((x + 0.5) / f - 0.5, 0.0, double(w - 1));
+      const int x0 = int(fx), x1 = std::min(x0 + 1, w - 1);
+      const float ax = float(fx - x0);
+      const bool lower = !clipped.empty() && clipped[size_t(y) * W + x];
+      for (int c = 0; c < 3; ++c) {
+        const float d = (1 - ay) * ((1 - ax) * change.at(x0, y0, c) + ax * change.at(x1, y0, c)) +
+                        ay * ((1 - ax) * change.at(x0, y1, c) + ax * change.at(x1, y1, c));
+        float b = photo.at(x, y, c), g = gathered.at(x, y, c), r = rho0.at(x, y, c);
+        const float cap = albedoCap(b, g, lower);
+        r = std::clamp((std::isfinite(r) ? r : 0.5f) + d, 0.f, cap);
+        b = std::isfinite(b) ? std::max(b, 0.f) : 0.f;
+        g = std::isfinite(g) ? std::max(g, 0.f) : 0.f;
+        out.albedo.at(x, y, c) = r;
+        out.direct.at(x, y, c) = std::max(0.f, b - g * r);
+      }
+    }
+  });
+  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  char buf[96];
+  std::snprintf(buf, sizeof buf, " (solved on %dx%d blocks of the %dx%d photo)", f, f, W, H);
+  out.report = small->report + buf;
   return out;
 }
 

@@ -49,6 +49,29 @@ struct LogResidual {
   bool lowerBoundOnly;
 };
 
+// Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls and
+// the ceiling (painted, usually alike) the weighted mean of the seen walls, anything else the
+// mean of every seen surface; mid grey when nothing is seen.
+std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
+                                 const std::vector<double>& weight) {
+  Vec3 wallSum = Vec3::Zero(), roomSum = Vec3::Zero();
+  double wallN = 0, roomN = 0;
+  for (size_t s = 0; s < albedo.size(); ++s) {
+    if (!(weight[s] > 0)) continue;
+    if (isWall(geometry.surfaces[s].kind)) wallSum += weight[s] * albedo[s], wallN += weight[s];
+    roomSum += weight[s] * albedo[s], roomN += weight[s];
+  }
+  const Vec3 roomMean = roomN > 0 ? Vec3(roomSum / roomN) : Vec3(0.5, 0.5, 0.5);
+  const Vec3 wallMean = wallN > 0 ? Vec3(wallSum / wallN) : roomMean;
+  std::vector<Vec3> out(albedo.size());
+  for (size_t s = 0; s < albedo.size(); ++s) {
+    const SurfaceKind k = geometry.surfaces[s].kind;
+    out[s] = weight[s] > 0 ? albedo[s]
+                           : (isWall(k) || k == SurfaceKind::Ceiling ? wallMean : roomMean);
+  }
+  return out;
+}
+
 }  // namespace
 
 Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
@@ -204,6 +227,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     std::vector<Vec3> rho;        // per surface
     std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
     std::vector<Vec3> lights;     // radiance per light
+    SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
   } model;
 
   // Radiance leaving a room point toward another, read from the photo where the camera sees it.
@@ -221,8 +245,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       }
     }
     if (!model.active) return surfaceRadiance[h.surfaceId];
-    // Unseen: albedo times (direct light from the fitted lights + the surface's mean indirect).
-    Vec3 irradiance = model.gammaMean[h.surfaceId];
+    // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
+    // patch, or the surface's mean where no patch was made).
+    const int patch = model.patches.find(h);
+    Vec3 irradiance = patch >= 0 ? model.patches.gamma[size_t(patch)] : model.gammaMean[h.surfaceId];
     for (size_t j = 0; j < J; ++j)
       irradiance += model.lights[j] *
                     tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
@@ -338,6 +364,27 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
              const Vec3 g = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
              v[0] = g[0], v[1] = g[1], v[2] = g[2];
            });
+  };
+
+  // The light gathered at every patch of the room (radiosity by Jacobi sweeps from the surface
+  // means): what the photo shows is read from it, the rest predicted from the previous sweep.
+  auto gatherUnseenPatches = [&] {
+    const double roomSize = std::max({geometry.box.xRightM - geometry.box.xLeftM,
+                                      geometry.box.zRearM - geometry.box.zBackM, geometry.box.ceilingM});
+    model.patches = makeSurfacePatches(geometry, std::max(0.05, roomSize / opt.patchesAcrossRoom));
+    SurfacePatches& P = model.patches;
+    for (size_t i = 0; i < P.point.size(); ++i) P.gamma[i] = model.gammaMean[size_t(P.surface[i])];
+    std::vector<Vec3> next(P.point.size());
+    for (int sweep = 0; sweep < opt.patchSweeps; ++sweep) {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i)
+          next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i],
+                                           opt.patchSamples, uint32_t(i) * 2654435761u + uint32_t(sweep),
+                                           opt.seed + 101u, radianceAt)
+                        .mean;
+      });
+      std::swap(P.gamma, next);
+    }
   };
 
   // 4. Fit light radiances (per channel) and one reference albedo per surface: the albedo
@@ -484,21 +531,23 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       model.gammaMean[s] += out.gathered.rgb(int(idx % W), int(idx / W));
       n[s] += 1;
     }
-    Vec3 gammaAll = Vec3::Zero(), rhoAll = Vec3::Zero();
-    double nAll = 0, nRho = 0;
+    Vec3 gammaAll = Vec3::Zero();
+    double nAll = 0;
     for (size_t s = 0; s < S; ++s)
       if (n[s] > 0) gammaAll += model.gammaMean[s], nAll += n[s];
     gammaAll /= std::max(1.0, nAll);
+    std::vector<Vec3> fitted(S);
+    std::vector<double> weight(S);
     for (size_t s = 0; s < S; ++s) {
       model.gammaMean[s] = n[s] > 0 ? Vec3(model.gammaMean[s] / n[s]) : gammaAll;
-      if (n[s] > 0) rhoAll += Vec3(rho[s][0], rho[s][1], rho[s][2]), nRho += 1;
+      fitted[s] = Vec3(rho[s][0], rho[s][1], rho[s][2]);
+      weight[s] = n[s] > 0 ? 1.0 : 0.0;
     }
-    rhoAll /= std::max(1.0, nRho);
-    for (size_t s = 0; s < S; ++s)
-      model.rho[s] = n[s] > 0 ? Vec3(rho[s][0], rho[s][1], rho[s][2]) : rhoAll;
+    model.rho = albedoOfUnseen(geometry, fitted, weight);
     model.lights.clear();
     for (const auto& l : out.lights) model.lights.push_back(l.radiance);
     for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
+    gatherUnseenPatches();
   }
 
   // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
@@ -540,13 +589,20 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then
   // the geometry-aware objective, whose data terms tie rho * Gamma to the photo.
   {
-    std::vector<uint8_t> valid(size_t(W) * H, 0), clipped(size_t(W) * H, 0);
+    std::vector<uint8_t> valid(size_t(W) * H, 0), validPhoto(size_t(W) * H, 0),
+        clipped(size_t(W) * H, 0);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const size_t idx = size_t(y) * W + x;
         clipped[idx] = saturated(x, y) ? 1 : 0;
-        valid[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
-                     luminance(photo.rgb(x, y)) > 1e-5;
+        validPhoto[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
+                          luminance(photo.rgb(x, y)) > 1e-5;
+        // A pixel brighter than any reflectance could make it under the modelled light is one
+        // the model does not explain (a light or an opening it lacks, a surface that is not
+        // where the geometry says, such as the floor seen between a table's legs): its albedo
+        // comes from the photo's own Retinex, and the data terms leave it alone.
+        const Vec3 sf = shadingFree.rgb(x, y);
+        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove;
       }
     // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
     // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
@@ -556,8 +612,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     for (size_t i = 0; i < valid.size(); ++i)
       if (valid[i]) ++nValid, nIndirect += directShare[i] < 0.25f;
     const bool haveIndirect = nIndirect >= std::max<size_t>(200, nValid / 50);
-    auto anchoredRetinex = [&](const ImageF& image, bool gammaAnchor) {
-      const ImageF rel = retinexReflectance(image, valid, opt.retinex);
+    // `fallback`: the albedo of pixels not in `use` (default: the physical one).
+    auto anchoredRetinex = [&](const ImageF& image, const std::vector<uint8_t>& use,
+                               bool gammaAnchor, const ImageF* fallback) {
+      const ImageF rel = retinexReflectance(image, use, opt.retinex);
       auto medianRatio = [&](int c, bool indirectOnly) {
         std::vector<float> ratio;
         for (int y = 0; y < H; ++y)
@@ -581,19 +639,20 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
           const size_t idx = size_t(y) * W + x;
           if (ps[idx].surface < 0) continue;
           for (int c = 0; c < 3; ++c) {
-            // Lamps and clipped pixels carry no reflectance: the physical fallback stands.
-            const float r = valid[idx] ? float(scale[c] * rel.at(x, y, c)) : out.albedo.at(x, y, c);
+            // Lamps and clipped pixels carry no reflectance: the fallback stands.
+            const float r = use[idx] ? float(scale[c] * rel.at(x, y, c))
+                                     : (fallback ? *fallback : out.albedo).at(x, y, c);
             a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
           }
         }
       return a;
     };
     // The baseline: Retinex of the photo alone.
-    out.retinexAlbedo = anchoredRetinex(photo, false);
+    out.retinexAlbedo = anchoredRetinex(photo, validPhoto, false, nullptr);
     if (opt.objective) {
       // The start: Retinex of the photo with the geometry's shading divided out (what is left
       // of shading there is noise and model error, which the thresholds remove).
-      const ImageF rho0 = anchoredRetinex(shadingFree, true);
+      const ImageF rho0 = anchoredRetinex(shadingFree, valid, true, &out.retinexAlbedo);
       DecomposeOptions dopt = opt.decompose;
       if (!dopt.cancel) dopt.cancel = opt.cancel;
       auto dec = decomposeIntrinsic(photo, out.gathered, rho0, valid, clipped, dopt);
@@ -603,6 +662,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       if (!dec) return dec.error().underKey("decomposition");
       out.decomposeHistory = dec->history;
       out.decomposeReport = dec->report;
+      out.decomposeConverged = dec->converged;
       if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
       for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x) {
@@ -625,25 +685,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       }
   }
 
-  // Surfaces the camera does not see take the mean of the walls it sees (or of the room).
-  Vec3 wallSum = Vec3::Zero(), roomSum = Vec3::Zero();
-  double wallN = 0, roomN = 0;
-  for (size_t s = 0; s < S; ++s) {
-    if (albedoCount[s] <= 0) continue;
-    const SurfaceKind k = geometry.surfaces[s].kind;
-    const bool wall = isWall(k);
-    if (wall) wallSum += albedoSum[s], wallN += albedoCount[s];
-    roomSum += albedoSum[s], roomN += albedoCount[s];
-  }
-  const Vec3 roomMean = roomN > 0 ? Vec3(roomSum / roomN) : Vec3(0.5, 0.5, 0.5);
-  const Vec3 wallMean = wallN > 0 ? Vec3(wallSum / wallN) : roomMean;
-  out.surfaceMeanAlbedo.resize(S);
-  for (size_t s = 0; s < S; ++s) {
-    const SurfaceKind k = geometry.surfaces[s].kind;
-    const bool wall = isWall(k);
-    out.surfaceMeanAlbedo[s] = albedoCount[s] > 0 ? Vec3(albedoSum[s] / albedoCount[s])
-                                                  : (wall ? wallMean : roomMean);
-  }
+  // Surfaces the camera does not see: walls and ceiling take the mean of the walls it sees.
+  std::vector<Vec3> meanSeen(S, Vec3::Zero());
+  for (size_t s = 0; s < S; ++s)
+    if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
+  out.surfaceMeanAlbedo = albedoOfUnseen(geometry, meanSeen, albedoCount);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

@@ -54,13 +54,22 @@ struct DecomposeOptions {
   // normaliseByMeanGamma: divide by the mean gathered irradiance first (exposure-invariant).
   double unitsPerWhite = 255;
   bool normaliseByMeanGamma = false;
-  int maxIterations = 400;
+  // The solver stops on convergence or at the iteration cap, never on the clock, so a photo
+  // and geometry give the same albedo bit for bit on every run and machine load. The cap keeps
+  // a 640 x 480 photo near a second on 2 threads (bench_decompose); on the rooms more
+  // iterations do not lower the albedo error (bench_albedo.py's error against iterations).
+  int maxIterations = 30;
   int minIterations = 10;
-  double timeLimitSeconds = 0.8;  // <= 0: none
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
   // each times its step (so in units of rho and of the dual variable in [-1,1]), both fall
-  // below this.
+  // below `tolerance`, or when the objective changed by less than `objectiveTolerance`
+  // (relative) over the last `historyEvery` iterations.
   double tolerance = 1e-4;
+  double objectiveTolerance = 1e-6;
+  // Photos with more pixels are solved on block means of at most this many pixels; the
+  // solver's change to the start is carried back to full resolution (memory and time bounded
+  // for 50 MP photos). <= 0: always full resolution.
+  long maxSolvePixels = 2'000'000;
   int historyEvery = 10;  // record objective and residuals every n iterations (and the last)
   const CancelToken* cancel = nullptr;
 };
@@ -78,10 +87,14 @@ struct Decomposition {
   ImageF direct;  // W x H x 3, D = B - rho * Gamma, >= 0 (clipped pixels: clamped at 0)
   std::vector<DecomposeSample> history;
   int iterations = 0;
-  bool converged = false;
+  bool converged = false;  // false: stopped at the iteration cap, by cancellation or NaN
   std::string report;  // one line: converged or why it stopped, with the residuals reached
   double seconds = 0;
 };
+
+// How many times decomposeIntrinsic has run in this process (all threads): tests use it to show
+// that moving an object never redoes the decomposition.
+uint64_t decompositionRuns();
 
 // Minimises the objective above from `rho0` (W x H x 3, typically anchored Retinex). `photo`:
 // B, W x H x 3 linear; `gathered`: Gamma, W x H x 3 >= 0. `valid`: W x H, nonzero where the

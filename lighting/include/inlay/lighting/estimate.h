@@ -4,10 +4,12 @@
 //   B(x) = rho(x) * ( sum_j L_j * E_j(x) + Gamma(x) )
 // where E_j is the irradiance / pi that light j would give with unit radiance (shadowed, from
 // the room geometry), Gamma the indirect irradiance / pi gathered from the photo itself (each
-// gather ray's hit point is projected into the photo; unseen surfaces take their mean
-// radiance), and rho the albedo. Light radiances L_j and per-surface reference albedos are
-// found by a bounded robust least-squares fit (Ceres) that asks the albedo to be smooth within
-// each surface; rho(x) = B / (sum L_j E_j + Gamma) then follows per pixel (physicalAlbedo).
+// gather ray's hit point is projected into the photo; what the photo does not show radiates
+// its surface's fitted albedo times the fitted lights' direct light plus the light gathered at
+// its patch, by radiosity sweeps over surface patches, gather.h), and rho the albedo. Light
+// radiances L_j and per-surface reference albedos are found by a bounded robust least-squares
+// fit (Ceres) that asks the albedo to be smooth within each surface; rho(x) = B / (sum L_j E_j
+// + Gamma) then follows per pixel (physicalAlbedo).
 // The albedo itself comes from the intrinsic decomposition (decompose.h): colour Retinex of that
 // shading-free image, scaled per channel to it, minimised under the paper's objective with
 // B = D + rho * Gamma. Saturated pixels and light outlines are left out of fit and data terms.
@@ -31,9 +33,19 @@ struct LightingOptions {
   int gatherSamples = 0;
   double gatherNoise = 0.05;
   int gatherStride = 4;         // gather on every n-th pixel, interpolate between
+  // What the photo does not show radiates its albedo times the light gathered at its patch:
+  // patches about room size / patchesAcrossRoom wide, patchSamples rays each, patchSweeps
+  // radiosity sweeps (gather.h, SurfacePatches).
+  double patchesAcrossRoom = 20;
+  int patchSamples = 64;
+  int patchSweeps = 3;
   int directSamples = 16;       // points per light for E_j
   int fitPixels = 6000;         // pixels sampled for the fit
   double saturatedAbove = 0.98; // linear value treated as clipped
+  // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
+  // the model (a light or opening it lacks, wrong geometry): its albedo comes from the photo's
+  // Retinex and the decomposition's data terms leave it out.
+  double unexplainedAbove = 1.25;
   uint32_t seed = 7;
   int threads = 0;
   // The albedo: Retinex anchored to the fitted lights (the start), then the geometry-aware
@@ -54,6 +66,7 @@ struct LightingEstimate {
   std::vector<uint8_t> decomposeValid, decomposeClipped;
   std::vector<DecomposeSample> decomposeHistory;  // objective and residuals against time
   std::string decomposeReport;                    // converged, or why the solver stopped
+  bool decomposeConverged = true;                 // false: stopped at its iteration cap
   ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
   ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
   std::vector<AreaLight> lights;      // with fitted radiance

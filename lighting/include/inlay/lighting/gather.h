@@ -10,6 +10,7 @@
 #pragma once
 
 #include "inlay/modeling/core.h"
+#include "inlay/modeling/geometry.h"
 #include "inlay/render/path_tracer.h"
 
 #include <cstdint>
@@ -47,5 +48,29 @@ struct GatherSampleCountOptions {
 int gatherSamplesForNoise(const RoomTracer& tracer,
                           const std::vector<std::pair<Vec3, Vec3>>& points, uint32_t seed,
                           const RadianceAt& radianceAt, const GatherSampleCountOptions& options = {});
+
+}  // namespace inlay
+
+namespace inlay {
+
+// The room's surfaces cut into square patches of about `sizeM` (keyed by surface, facing and
+// position in the surface's plane), so that light gathered at points the photo does not show
+// can vary over a surface: the ceiling above the camera sees a darker floor than the ceiling
+// above the lamps, and one mean per surface would carry the bright part's light to the dark one.
+// Immutable after construction except `gamma`, which the caller fills.
+struct SurfacePatches {
+  double sizeM = 0.3;
+  std::vector<Vec3> point, normal;  // per patch: centroid of its samples, normal into the room
+  std::vector<int> surface;         // per patch: surface id
+  std::vector<Vec3> gamma;          // per patch: gathered irradiance / pi (caller's)
+  // The patch a surface hit falls in, or -1 (a corner the sampling missed).
+  int find(const SurfaceHit& hit) const;
+
+  std::vector<std::pair<uint64_t, int>> keys;  // sorted (key, patch) for find()
+  uint64_t keyOf(int surfaceId, const Vec3& p, const Vec3& n) const;
+};
+
+// Patches over every surface of `geometry` (sampled from its triangles at sizeM / 3).
+SurfacePatches makeSurfacePatches(const SceneGeometry& geometry, double sizeM);
 
 }  // namespace inlay
