@@ -339,7 +339,9 @@ class RefineCallback : public ceres::IterationCallback {
   RefineCallback(Clock::time_point t0, const CancelToken* cancel, std::vector<LightRefineSample>* history)
       : t0_(t0), cancel_(cancel), history_(history) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    history_->push_back({std::chrono::duration<double>(Clock::now() - t0_).count(), 2 * s.cost});
+    // An unsuccessful step reports its rejected candidate's cost: only accepted points count.
+    if (s.iteration == 0 || s.step_is_successful)
+      history_->push_back({std::chrono::duration<double>(Clock::now() - t0_).count(), 2 * s.cost});
     return cancel_ && cancel_->shouldStop() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
   }
 
@@ -422,7 +424,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     Vec3 cLo, cHi;
     boundsInRoom(L, lo, hi, opt.marginM, &cLo, &cHi, &f.fixedAxes);
     const Vec3 c = L.centre(), moved = c.cwiseMax(cLo).cwiseMin(cHi);
-    if ((moved - c).norm() > 1e-3)
+    if ((moved - c).norm() > 5e-3)  // millimetres of round-off are not news
       out.notes.push_back(key + ": outside the room; moved " + std::to_string((moved - c).norm()) +
                           " m to fit inside it");
     if (f.fixedAxes.size() == 3)

@@ -45,7 +45,7 @@ struct LightRefineOptions {
   double prior = 0.02;         // scale of the priors against the relative data term
   double intensityRange = 8;   // normalised intensity 1 = this many times the start's largest channel
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
-  double marginM = 2e-3;       // lights keep this far inside the room's walls
+  double marginM = 1e-3;       // lights keep this far inside the room's walls
   uint32_t seed = 11;
   const CancelToken* cancel = nullptr;
 };
