@@ -2,6 +2,7 @@
 // lights go back toward the truth; locked lights stay; stiff input (lights outside the room or
 // touching a wall, intensities from 1e-4 to 1e4, a black photo, a light that lights nothing)
 // gives finite lights inside the room and a note.
+#include "inlay/lighting/estimate.h"
 #include "inlay/lighting/refine.h"
 #include "refine_room.h"
 #include "test_support.h"
@@ -174,6 +175,43 @@ TEST(LightRefine, BadInputIsNamed) {
   res = refineLights(r.camera, r.geometry, ImageF(3, 3, 3), r.direct, {}, r.truth, {});
   ASSERT_FALSE(res.ok());
   EXPECT_EQ(res.error().key, "albedo");
+}
+
+}  // namespace
+}  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// A light outlined where the room has no surface (a window to the sky: here the room without
+// its back wall and ceiling) is refused with the outline point named; a light outline partly on
+// the wall and partly on the ceiling is placed on the ceiling, inside the room.
+TEST(LightRefine, AnOutlineOnNothingIsNamedAndOneAcrossAnEdgeLandsInTheRoom) {
+  const auto& r = room();
+  SceneGeometry open = r.geometry;
+  open.surfaces.erase(std::remove_if(open.surfaces.begin(), open.surfaces.end(),
+                                     [](const Surface& s) {
+                                       return s.kind == SurfaceKind::Ceiling || s.kind == SurfaceKind::WallBack;
+                                     }),
+                      open.surfaces.end());
+  std::vector<Vec2> sky;
+  for (const AreaLight& L : r.truth)
+    for (const Vec3& c : L.cornersWorld) sky.push_back(*r.camera.project(c));
+  sky.resize(4);
+  auto l = lightFromOutline(r.camera, open, sky, "lights[0].points");
+  ASSERT_FALSE(l.ok());
+  EXPECT_EQ(l.error().key.rfind("lights[0].points[", 0), 0u) << l.error().key;
+  // Across the ceiling's back edge: most points on the ceiling.
+  const Vec2 edge = *r.camera.project(Vec3(0, 2.7, -5.5));
+  const std::vector<Vec2> across = {edge + Vec2(-20, -30), edge + Vec2(20, -30), edge + Vec2(20, 3),
+                                    edge + Vec2(-20, -12)};
+  auto a = lightFromOutline(r.camera, r.geometry, across, "lights[1].points");
+  ASSERT_TRUE(a.ok()) << a.error().message();
+  EXPECT_TRUE(insideRoom(*a, r.geometry.box));
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, {*a}, {});
+  ASSERT_TRUE(res.ok());
+  EXPECT_TRUE(finiteLights(*res));
+  EXPECT_TRUE(insideRoom(res->lights[0], r.geometry.box));
 }
 
 }  // namespace
