@@ -46,19 +46,18 @@ class Refinement {
     const size_t J = lights_.size();
     cache_.resize(J);
     for (size_t j = 0; j < J; ++j) {
-      // Intensities: unknown unless locked; suns always unknown.
+      // Intensities: unknown unless locked.
       if (!specs_[j].lock) unknownLights_.push_back(int(j));
       Vec3 s = lights_[j].radiance.cwiseMax(0.0);
       scale_.push_back(std::max(s.maxCoeff(), 1e-9) * opt_.intensityRange);
       start_.push_back(s);
     }
-    for (const auto& sun : suns_) {
-      const Vec3 s = sun.irradianceOverPi.cwiseMax(0.0);
-      scale_.push_back(std::max(s.maxCoeff(), 1e-9) * opt_.intensityRange);
-      start_.push_back(s);
-    }
-    // Locked lights do not move: their light is a constant part of the render.
+    // Locked lights do not move: their light is a constant part of the render. So are the
+    // suns: their patches are mostly clipped in the photo, which says little about them in
+    // linear terms (the estimate's log fit takes clipped pixels as lower bounds).
     fixed_.assign(px_.size(), Vec3::Zero());
+    for (size_t k = 0; k < suns_.size(); ++k)
+      for (size_t i = 0; i < px_.size(); ++i) fixed_[i] += sunE_[k][i] * suns_[k].irradianceOverPi.cwiseMax(0.0);
     for (size_t j = 0; j < J; ++j)
       if (specs_[j].lock) {
         const auto& e = irradiance(int(j), lights_[j].centre());
@@ -66,7 +65,7 @@ class Refinement {
       }
   }
 
-  size_t unknownCount() const { return unknownLights_.size() + suns_.size(); }
+  size_t unknownCount() const { return unknownLights_.size(); }
   size_t residualCount(size_t movable) const { return 3 * px_.size() + 3 * movable + 3 * unknownCount(); }
   int evaluations() const { return evaluations_; }
   size_t lightCount() const { return lights_.size(); }
@@ -86,10 +85,8 @@ class Refinement {
     return z;
   }
   Vec3 startCentre(int j) const { return lights_[size_t(j)].centre(); }
-  // The solved intensity of unknown u: which light (or sun, index >= lightCount()) it is.
-  size_t unknownTarget(size_t u) const {
-    return u < unknownLights_.size() ? size_t(unknownLights_[u]) : lights_.size() + u - unknownLights_.size();
-  }
+  // The light whose intensity is unknown u.
+  size_t unknownTarget(size_t u) const { return size_t(unknownLights_[u]); }
 
   Vec3 centreOf(const Vec3& normalised) const { return boxLo_ + normalised.cwiseProduct(boxSize_); }
   Vec3 normalisedOf(const Vec3& centre) const { return (centre - boxLo_).cwiseQuotient(boxSize_); }
@@ -125,14 +122,12 @@ class Refinement {
 
   // Residuals for the given irradiance of each moving light (others from the cache):
   // intensities by NNLS, then the weighted data residuals and the priors. `radiance` receives
-  // the solved intensities (unknown lights, then suns) when not null.
+  // the solved intensities of the unlocked lights when not null.
   void residuals(const std::vector<const std::vector<double>*>& lightE,
                  const std::vector<Vec3>& normalisedCentres, double* r,
                  std::vector<Vec3>* radiance = nullptr) const {
     const size_t U = unknownCount(), N = px_.size();
-    auto column = [&](size_t u) -> const std::vector<double>& {
-      return u < unknownLights_.size() ? *lightE[size_t(unknownLights_[u])] : sunE_[u - unknownLights_.size()];
-    };
+    auto column = [&](size_t u) -> const std::vector<double>& { return *lightE[size_t(unknownLights_[u])]; };
     std::vector<Vec3> L(U, Vec3::Zero());
     for (int c = 0; c < 3; ++c) {
       std::vector<double> M(U * U, 0.0), q(U, 0.0);
@@ -178,11 +173,9 @@ class Refinement {
   std::vector<FreeLight> free_;  // lights whose positions are parameters (set by the caller)
 
  private:
-  double intensityWeight(size_t u) const {
-    return u < unknownLights_.size() ? specs_[size_t(unknownLights_[u])].intensityWeight : 1.0;
-  }
+  double intensityWeight(size_t u) const { return specs_[unknownTarget(u)].intensityWeight; }
   const Vec3& startOf(size_t u) const { return start_[unknownTarget(u)]; }
-  // scale_ and start_ are indexed by light then sun; unknown u maps through unknownTarget.
+  // scale_ and start_ are indexed by light; unknown u maps through unknownTarget.
   double scaleOf(size_t u) const { return scale_[unknownTarget(u)]; }
 
   const RoomTracer& tracer_;
@@ -567,8 +560,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   for (size_t u = 0; u < radiance.size(); ++u) {
     const size_t t = problem.unknownTarget(u);
     const Vec3 v = radiance[u].allFinite() ? radiance[u] : Vec3::Zero();
-    if (t < out.lights.size()) out.lights[t].radiance = v;
-    else out.suns[t - out.lights.size()].irradianceOverPi = v;
+    out.lights[t].radiance = v;
   }
   out.evaluations = problem.evaluations();
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -5,8 +5,9 @@
 //                                                                + wInt_j |l_j - l0_j|^2 )
 //
 // over pixels i of a reduced grid, where R_i = rho_i * (sum_j L_j E_j(x_i; p_j) + sum_k S_k E_k)
-// is the room's albedo times the direct irradiance / pi from the area lights (and suns, whose
-// strength is fitted but which do not move), D the photo's direct component (decomposition), Z
+// is the room's albedo times the direct irradiance / pi from the area lights (and the suns, at
+// the strength the estimate fitted: their patches are mostly clipped, which a linear fit cannot
+// use), D the photo's direct component (decomposition), Z
 // = sum_i alpha_i |D_i|^2 (so the data term is a relative error), alpha_i = 1 above the image's
 // vertical midpoint falling quadratically to 0 at its bottom row. Positions p are the lights'
 // centres normalised to the room box ([0,1] per axis), bounded so that the whole light stays
@@ -57,7 +58,7 @@ struct LightRefineSample {
 
 struct LightRefineResult {
   std::vector<AreaLight> lights;  // refined (locked ones as given)
-  std::vector<SunLight> suns;     // strengths refitted, directions and masks as given
+  std::vector<SunLight> suns;     // as given (their light is a fixed part of the render)
   double initialObjective = 0;    // at the start positions, intensities solved
   double finalObjective = 0;
   double initialDataTerm = 0, finalDataTerm = 0;  // the relative data term alone
