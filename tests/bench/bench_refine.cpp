@@ -2,7 +2,7 @@
 // light position and intensity error before and after, and the objective against time.
 // Writes OUT/refine_time.csv and OUT/refine_objective.csv; bench_refine_plot.py plots them.
 //
-// usage: bench_refine [OUT_DIR] [RUNS]
+// usage: bench_refine [OUT_DIR] [RUNS] [PRIOR]   (PRIOR: LightRefineOptions::prior)
 #include "../refine_room.h"
 
 #include <algorithm>
@@ -17,6 +17,8 @@ using namespace inlay;
 int main(int argc, char** argv) {
   const std::string out = argc > 1 ? argv[1] : "bench_out";
   const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
+  LightRefineOptions options;
+  if (argc > 3) options.prior = std::atof(argv[3]);
   std::filesystem::create_directories(out);
   const auto t0 = std::chrono::steady_clock::now();
   const test::RefineRoom room = test::makeRefineRoom(640, 480, 16);
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
     const auto start = test::perturbed(room.truth, shift, 1.3);
     std::vector<double> seconds;
     for (int run = 0; run < runs; ++run) {
-      auto r = refineLights(room.camera, room.geometry, room.albedo, room.direct, {}, start, {});
+      auto r = refineLights(room.camera, room.geometry, room.albedo, room.direct, {}, start, {}, {}, options);
       if (!r) {
         std::fprintf(stderr, "refinement failed: %s\n", r.error().message().c_str());
         return 1;
@@ -55,9 +57,9 @@ int main(int argc, char** argv) {
                     r->initialObjective, r->finalObjective);
     }
     std::nth_element(seconds.begin(), seconds.begin() + long(seconds.size() / 2), seconds.end());
-    std::printf("shift %.2f m: refinement of two lights at 640x480, median of %d runs: %.3f s "
+    std::printf("shift %.2f m, prior %g: refinement of two lights at 640x480, median of %d runs: %.3f s "
                 "(the 16-sample truth render of the whole frame took %.2f s)\n",
-                shift, runs, seconds[seconds.size() / 2], makeSeconds);
+                shift, options.prior, runs, seconds[seconds.size() / 2], makeSeconds);
   }
   std::printf("wrote %s/refine_time.csv and %s/refine_objective.csv\n", out.c_str(), out.c_str());
   return 0;

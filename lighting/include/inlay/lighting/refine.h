@@ -43,7 +43,7 @@ struct LightRefineOptions {
   int samplesPerLight = 9;     // fixed stratified points per light and pixel
   int maxIterations = 25;      // Ceres trust-region iterations
   double maxSeconds = 10;      // wall-clock limit of the solve
-  double prior = 0.02;         // scale of the priors against the relative data term
+  double prior = 2e-3;         // scale of the priors against the relative data term
   double intensityRange = 8;   // normalised intensity 1 = this many times the start's largest channel
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
   double marginM = 1e-3;       // lights keep this far inside the room's walls
