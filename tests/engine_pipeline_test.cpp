@@ -110,3 +110,43 @@ TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
 
 }  // namespace
 }  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// The render uses the refined lights; a locked light keeps the estimate's position and
+// intensity while the other is refined; --initial-lights (refineLights = false) renders the
+// estimate's.
+TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
+  SceneDoc doc = exampleDoc();
+  ASSERT_GE(doc.lights.size(), 2u);
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  ASSERT_FALSE(ps->refinement.history.empty());
+  EXPECT_LE(ps->refinement.finalObjective, ps->refinement.initialObjective);
+  ASSERT_EQ(ps->renderScene.lights.size(), ps->initialLights.size());
+  bool anyChanged = false;
+  for (size_t j = 0; j < ps->initialLights.size(); ++j) {
+    EXPECT_EQ(ps->renderScene.lights[j].radiance, ps->refinement.lights[j].radiance);
+    anyChanged = anyChanged || ps->renderScene.lights[j].radiance != ps->initialLights[j].radiance;
+  }
+  EXPECT_TRUE(anyChanged);
+
+  doc.lights[0].lock = true;
+  auto locked = prepareScene(doc);
+  ASSERT_TRUE(locked.ok());
+  EXPECT_EQ(locked->renderScene.lights[0].radiance, locked->initialLights[0].radiance);
+  EXPECT_EQ(locked->renderScene.lights[0].centre(), locked->initialLights[0].centre());
+  EXPECT_NE(locked->renderScene.lights[1].radiance, locked->initialLights[1].radiance);
+
+  PrepareOptions initial;
+  initial.refineLights = false;
+  auto unrefined = prepareScene(doc, initial);
+  ASSERT_TRUE(unrefined.ok());
+  EXPECT_TRUE(unrefined->refinement.history.empty());
+  for (size_t j = 0; j < unrefined->initialLights.size(); ++j)
+    EXPECT_EQ(unrefined->renderScene.lights[j].radiance, unrefined->initialLights[j].radiance);
+}
+
+}  // namespace
+}  // namespace inlay

@@ -41,7 +41,8 @@ const char* kFullScene = R"({
   },
   "layout": { "back_wall_px": [[100, 50], [400, 52], [398, 300], [102, 298]] },
   "lights": [
-    { "kind": "polygon_px", "points": [[200, 10], [300, 10], [300, 40], [200, 40]] },
+    { "kind": "polygon_px", "points": [[200, 10], [300, 10], [300, 40], [200, 40]],
+      "lock": true, "weights": { "position": 50, "intensity": 0.5 } },
     { "kind": "rect_m", "corners": [[-1, 2.5, -3], [1, 2.5, -3], [1, 2.5, -2], [-1, 2.5, -2]],
       "rgb": [5, 4.5, 4], "refine": false }
   ],
@@ -92,6 +93,9 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
     EXPECT_EQ(a.lights[i].rgb.has_value(), b.lights[i].rgb.has_value());
     if (a.lights[i].rgb && b.lights[i].rgb) EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb);
     EXPECT_EQ(a.lights[i].refine, b.lights[i].refine);
+    EXPECT_EQ(a.lights[i].lock, b.lights[i].lock);
+    EXPECT_EQ(a.lights[i].positionWeight, b.lights[i].positionWeight);
+    EXPECT_EQ(a.lights[i].intensityWeight, b.lights[i].intensityWeight);
   }
   ASSERT_EQ(a.shafts.size(), b.shafts.size());
   for (size_t i = 0; i < a.shafts.size(); ++i) {
@@ -156,6 +160,12 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_EQ(d.lights[1].cornersM[3], Vec3(-1, 2.5, -2));
   EXPECT_EQ(*d.lights[1].rgb, Vec3(5, 4.5, 4));
   EXPECT_FALSE(d.lights[1].refine);
+  EXPECT_TRUE(d.lights[0].lock);
+  EXPECT_EQ(d.lights[0].positionWeight, 50);
+  EXPECT_EQ(d.lights[0].intensityWeight, 0.5);
+  EXPECT_FALSE(d.lights[1].lock);
+  EXPECT_EQ(d.lights[1].positionWeight, 10);
+  EXPECT_EQ(d.lights[1].intensityWeight, 1);
   ASSERT_EQ(d.shafts.size(), 2u);
   EXPECT_EQ(d.shafts[0].sourceBoxPx, (std::array<double, 4>{0, 20, 60, 150}));
   EXPECT_FALSE(d.shafts[0].direction.has_value());
@@ -354,6 +364,14 @@ INSTANTIATE_TEST_SUITE_P(
                 "lights[0].corners", "zero area"},
         BadCase{"light_refine_type", ", \"lights\": [{" + kPolygon + R"(, "refine": "yes"}])",
                 "lights[0].refine", "expected true or false"},
+        BadCase{"light_lock_type", ", \"lights\": [{" + kPolygon + R"(, "lock": 1}])",
+                "lights[0].lock", "expected true or false"},
+        BadCase{"light_weight_negative", ", \"lights\": [{" + kPolygon + R"(, "weights": {"position": -1}}])",
+                "lights[0].weights.position", ">= 0"},
+        BadCase{"light_weight_nan", ", \"lights\": [{" + kPolygon + R"(, "weights": {"intensity": "a"}}])",
+                "lights[0].weights.intensity", "expected a number"},
+        BadCase{"light_weights_not_object", ", \"lights\": [{" + kPolygon + R"(, "weights": [1, 2]}])",
+                "lights[0].weights", "object"},
         BadCase{"light_rgb_negative", ", \"lights\": [{" + kPolygon + R"(, "rgb": [1, -1, 1]}])",
                 "lights[0].rgb[1]", ">= 0"},
         BadCase{"shaft_no_direction", R"(, "shafts": [{"shaft_box_px": [0, 0, 10, 10]}])",

@@ -55,6 +55,13 @@ Render options:
   --progress-csv FILE     one row per progressive update: seconds, spp, estimated error
   --no-focus              sample every pixel equally (default: pixels the objects do not
                           change are revisited only every fourth wave)
+  --initial-lights        render with the lights as estimated, before their refinement
+  --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
+                          the photo's linear units) and the refinement's objective against time
+  --replace-lights FILE   diagnostics: render with the area lights of FILE (its "refined" list,
+                          or "lights"; the format --lights-json writes) instead of the estimate's
+  --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
+                          photo's size) instead of the estimate's
   --quiet                 no progress on stderr
 
 The scene file format is described in README.md (keys: photo, camera, layout, lights, shafts,
@@ -89,6 +96,8 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
+  std::string lightsJson, replaceLights, replaceAlbedo;
+  bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds;
   bool quiet = false;
@@ -125,7 +134,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" ||
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
         s == "--scene" || s == "--spp" || s == "--seconds" || s == "--seed" || s == "--threads" ||
-        s == "--iterations") {
+        s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
+        s == "--replace-albedo") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -136,6 +146,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--gathered") a.gathered = *v;
       else if (s == "--method") a.method = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
+      else if (s == "--lights-json") a.lightsJson = *v;
+      else if (s == "--replace-lights") a.replaceLights = *v;
+      else if (s == "--replace-albedo") a.replaceAlbedo = *v;
       else if (s == "--seconds") {
         a.seconds = parseNumber<double>(*v);
         if (!a.seconds) return "--seconds: '" + *v + "' is not a non-negative number";
@@ -155,6 +168,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       a.quiet = true;
     } else if (s == "--no-focus") {
       a.noFocus = true;
+    } else if (s == "--initial-lights") {
+      a.initialLights = true;
     } else if (!s.empty() && s[0] == '-' && s != "-") {
       return "unknown option '" + s + "'";
     } else if (a.command.empty()) {
@@ -239,6 +254,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.cancel = &gCancel;
   po.threads = a.threads.value_or(0);
   po.progress = [&](const std::string& stage, double f) { progress.stage(stage, f); };
+  po.refineLights = !a.initialLights;
   auto prepared = prepareScene(loaded->doc, po);
   if (!prepared) {
     Error e = prepared.error();
@@ -250,6 +266,86 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   return prepared;
 }
 
+nlohmann::json lightsJsonOf(const std::vector<AreaLight>& lights) {
+  using nlohmann::json;
+  json a = json::array();
+  for (const AreaLight& L : lights) {
+    json corners = json::array();
+    for (const Vec3& c : L.cornersWorld) corners.push_back({c.x(), c.y(), c.z()});
+    const Vec3 c = L.centre();
+    a.push_back({{"corners", corners}, {"centre", {c.x(), c.y(), c.z()}},
+                 {"rgb", {L.radiance.x(), L.radiance.y(), L.radiance.z()}}});
+  }
+  return a;
+}
+
+// --lights-json: the lights before and after refinement and what the refinement did.
+nlohmann::json lightsReport(const PreparedScene& ps) {
+  using nlohmann::json;
+  const LightRefineResult& r = ps.refinement;
+  json history = json::array();
+  for (const auto& h : r.history) history.push_back({h.seconds, h.objective});
+  auto sunsJson = [](const std::vector<SunLight>& suns) {
+    json a = json::array();
+    for (const auto& s : suns) a.push_back({{"rgb", {s.irradianceOverPi.x(), s.irradianceOverPi.y(), s.irradianceOverPi.z()}}});
+    return a;
+  };
+  return {{"initial", lightsJsonOf(ps.initialLights)}, {"refined", lightsJsonOf(ps.lighting.lights)},
+          {"suns_initial", sunsJson(ps.initialSuns)}, {"suns_refined", sunsJson(ps.lighting.suns)},
+          {"refinement", {{"ran", !r.history.empty()}, {"seconds", r.seconds}, {"pixels", r.pixels},
+                          {"evaluations", r.evaluations}, {"initial_objective", r.initialObjective},
+                          {"final_objective", r.finalObjective}, {"initial_data_term", r.initialDataTerm},
+                          {"final_data_term", r.finalDataTerm}, {"history", history},
+                          {"report", r.report}, {"notes", r.notes}}}};
+}
+
+// --replace-lights / --replace-albedo (diagnostics: which of lights and albedo limits the error).
+Status applyReplacements(PreparedScene& ps, const Args& a) {
+  RenderScene& rs = ps.renderScene;
+  if (!a.replaceLights.empty()) {
+    std::ifstream in(a.replaceLights);
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    const char* list = j.is_object() && j.contains("refined") ? "refined" : "lights";
+    if (!j.is_object() || !j.contains(list) || !j[list].is_array())
+      return Error{a.replaceLights, "--replace-lights", "expected a JSON object with a \"lights\" array"};
+    rs.lights.clear();
+    for (size_t i = 0; i < j[list].size(); ++i) {
+      const auto& l = j[list][i];
+      const std::string key = std::string(list) + "[" + std::to_string(i) + "]";
+      AreaLight L;
+      try {
+        for (size_t k = 0; k < 4; ++k)
+          L.cornersWorld[k] = Vec3(l.at("corners").at(k).at(0), l.at("corners").at(k).at(1), l.at("corners").at(k).at(2));
+        L.radiance = Vec3(l.at("rgb").at(0), l.at("rgb").at(1), l.at("rgb").at(2));
+      } catch (const std::exception&) {
+        return Error{a.replaceLights, key, "expected \"corners\" (4 x 3 numbers) and \"rgb\" (3 numbers)"};
+      }
+      if (!L.radiance.allFinite() || !(L.area() > 0)) return Error{a.replaceLights, key, "not a finite light with an area"};
+      rs.lights.push_back(L);
+    }
+  }
+  if (!a.replaceAlbedo.empty()) {
+    auto img = loadImage(a.replaceAlbedo);
+    if (!img) return img.error().underKey("--replace-albedo");
+    const ImageF& alb = img->linearRgb;
+    if (alb.width != rs.roomAlbedo.albedo.width || alb.height != rs.roomAlbedo.albedo.height)
+      return Error{a.replaceAlbedo, "--replace-albedo", "not the photo's size"};
+    rs.roomAlbedo.albedo = alb;
+    // The surfaces' means (for what the camera does not see) from the new albedo.
+    std::vector<Vec3> sum(rs.roomAlbedo.surfaceMean.size(), Vec3::Zero());
+    std::vector<double> n(sum.size(), 0);
+    for (size_t i = 0; i < rs.roomAlbedo.firstSurfacePerPixel.size(); ++i) {
+      const int s = rs.roomAlbedo.firstSurfacePerPixel[i];
+      if (s < 0 || size_t(s) >= sum.size()) continue;
+      sum[size_t(s)] += alb.rgb(int(i % size_t(alb.width)), int(i / size_t(alb.width)));
+      n[size_t(s)] += 1;
+    }
+    for (size_t s = 0; s < sum.size(); ++s)
+      if (n[s] > 0) rs.roomAlbedo.surfaceMean[s] = sum[s] / n[s];
+  }
+  return {};
+}
+
 int commandRender(const std::string& scenePath, const Args& a) {
   if (a.output.empty()) return usageError("render needs -o OUT.png");
   Progress progress(a.quiet);
@@ -257,6 +353,11 @@ int commandRender(const std::string& scenePath, const Args& a) {
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
   if (!prepared) return inputError(prepared.error());
   PreparedScene& ps = *prepared;
+
+  if (auto st = applyReplacements(ps, a); !st) return inputError(st.error());
+  if (!a.lightsJson.empty())
+    if (auto st = writeFileAtomically(a.lightsJson, lightsReport(ps).dump(1) + "\n"); !st)
+      return inputError(st.error());
 
   SessionOptions so;
   so.targetSpp = a.spp.value_or(ps.doc.render.spp);

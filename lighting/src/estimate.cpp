@@ -138,7 +138,12 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
     L.cornersWorld = {c + u0 * u + v0 * v, c + u1 * u + v0 * v, c + u1 * u + v1 * v,
                       c + u0 * u + v1 * v};
   }
-  if (!(L.area() > 1e-6)) return Error{"", key, "the light outline has no area"};
+  // Points beyond the surface's edge (on a neighbouring wall) were carried past it by the
+  // projection onto the plane: the light is clipped to the room's box.
+  const RoomBox& b = geometry.box;
+  const Vec3 lo(b.xLeftM, 0.0, b.zBackM), hi(b.xRightM, b.ceilingM, b.zRearM);
+  for (auto& p : L.cornersWorld) p = p.cwiseMax(lo).cwiseMin(hi);
+  if (!(L.area() > 1e-6)) return Error{"", key, "the light outline has no area inside the room"};
   // Face into the room (the hit normal faces the camera side), 1 mm off the surface.
   if (L.normal().dot(n) < 0) std::swap(L.cornersWorld[1], L.cornersWorld[3]);
   for (auto& p : L.cornersWorld) p += 1e-3 * n;

@@ -111,6 +111,17 @@ Expected<Extrusion> extrusionOf(PreparedScene& ps, const SurfaceKeys& sk,
   }
   return ex;
 }
+// Where the decomposition's direct light is data: its own mask when it ran, else every pixel on
+// the room outside the light outlines.
+std::vector<uint8_t> usableDirect(const LightingEstimate& l, const ImageF& lightMask) {
+  const size_t n = size_t(l.direct.width) * l.direct.height;
+  if (l.decomposeValid.size() == n) return l.decomposeValid;
+  std::vector<uint8_t> u(n, 0);
+  for (size_t i = 0; i < n && i < l.firstSurfacePerPixel.size(); ++i)
+    u[i] = l.firstSurfacePerPixel[i] >= 0 && (lightMask.empty() || lightMask.data[i] <= 0.5f);
+  return u;
+}
+
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
@@ -389,6 +400,34 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
   ps.stageSeconds.emplace_back("lighting", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
+
+  // Refinement: positions and intensities against the photo's direct light.
+  ps.initialLights = ps.lighting.lights;
+  ps.initialSuns = ps.lighting.suns;
+  if (opt.refineLights && !ps.lighting.lights.empty()) {
+    progress("refine", 0);
+    t = Clock::now();
+    std::vector<LightRefineSpec> specs(doc.lights.size());
+    for (size_t i = 0; i < doc.lights.size(); ++i) {
+      specs[i].lock = doc.lights[i].lock || !refine[i];
+      specs[i].positionWeight = doc.lights[i].positionWeight;
+      specs[i].intensityWeight = doc.lights[i].intensityWeight;
+    }
+    LightRefineOptions ro = opt.refine;
+    if (!ro.cancel) ro.cancel = opt.cancel;
+    auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
+                                usableDirect(ps.lighting, lightMask), ps.lighting.lights, specs,
+                                ps.lighting.suns, ro);
+    if (!refined) {
+      if (cancelled()) return Error{"", "", "cancelled"};
+      return refined.error();
+    }
+    ps.refinement = std::move(*refined);
+    ps.lighting.lights = ps.refinement.lights;
+    ps.lighting.suns = ps.refinement.suns;
+    for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
+    ps.stageSeconds.emplace_back("refine", secondsSince(t));
+  }
 
   // The render scene: room with its projected albedo, lights, objects placed.
   progress("objects", 0);

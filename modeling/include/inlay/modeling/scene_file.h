@@ -34,6 +34,12 @@ struct LightKeys {
   std::array<Vec3, 4> cornersM{};    // RectM: corners in the world frame (metres)
   std::optional<Vec3> rgb;           // starting intensity (RectM), linear photo units
   bool refine = true;                // "refine": false keeps the light as given
+  // The refinement against the photo (lighting/refine.h): "lock": true keeps the light where
+  // the estimate put it (position and intensity); "weights": {"position", "intensity"} are the
+  // priors' weights toward that start (>= 0; larger holds the light closer).
+  bool lock = false;
+  double positionWeight = 10;
+  double intensityWeight = 1;
 };
 
 struct ShaftKeys {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "inlay/lighting/estimate.h"
+#include "inlay/lighting/refine.h"
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
@@ -31,7 +32,12 @@ struct PreparedScene {
   std::optional<CameraEstimate> cameraEstimate;
   std::vector<Extrusion> extrusions;
   SceneGeometry geometry;
-  LightingEstimate lighting;
+  LightingEstimate lighting;   // lights and suns: refined when the refinement ran
+  // The lights and suns before the refinement (the estimate's radiance fit at the outlined or
+  // placed positions), and what the refinement did (empty history when it did not run).
+  std::vector<AreaLight> initialLights;
+  std::vector<SunLight> initialSuns;
+  LightRefineResult refinement;
   RenderScene renderScene;      // lights and objects placed; roomAlbedo filled
   std::vector<Placement> placements;  // per object
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
@@ -44,6 +50,10 @@ struct PrepareOptions {
   // called on the calling thread.
   std::function<void(const std::string& stage, double fraction)> progress;
   int threads = 0;
+  // Refine the lights' positions and intensities against the photo (lighting/refine.h); false
+  // renders with the initial lights.
+  bool refineLights = true;
+  LightRefineOptions refine;
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the

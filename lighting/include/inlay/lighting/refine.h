@@ -1,0 +1,94 @@
+// Light refinement: move the area lights and set their RGB intensities so that a direct-light
+// render of the room matches the direct light the photo shows (Karsch et al. 2011, eq. 2).
+//
+//   minimise  sum_i alpha_i |R_i(L) - D_i|^2 / Z  +  prior * sum_j ( wPos_j |p_j - p0_j|^2
+//                                                                + wInt_j |l_j - l0_j|^2 )
+//
+// over pixels i of a reduced grid, where R_i = rho_i * (sum_j L_j E_j(x_i; p_j) + sum_k S_k E_k)
+// is the room's albedo times the direct irradiance / pi from the area lights (and the suns, at
+// the strength the estimate fitted: their patches are mostly clipped, which a linear fit cannot
+// use), D the photo's direct component (decomposition), Z
+// = sum_i alpha_i |D_i|^2 (so the data term is a relative error), alpha_i = 1 above the image's
+// vertical midpoint falling quadratically to 0 at its bottom row. Positions p are the lights'
+// centres normalised to the room box ([0,1] per axis), bounded so that the whole light stays
+// inside the room; intensities l = L / (intensityRange * L0max) are in [0,1].
+//
+// E_j uses a fixed set of stratified points per light and pixel, so the objective is a smooth,
+// deterministic function of the positions. Since R is linear in the intensities, they are
+// solved in closed form (non-negative least squares) for every set of positions (variable
+// projection); Ceres' bounded trust region moves the positions with forward-difference
+// derivatives that recompute only the moved light's E.
+#pragma once
+
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/image.h"
+#include "inlay/render/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+// Per area light: what the user fixed. Defaults are the weights.
+struct LightRefineSpec {
+  bool lock = false;            // keep position and intensity as they come in
+  double positionWeight = 10;   // w of the position prior (normalised room units)
+  double intensityWeight = 1;   // w of the intensity prior (normalised intensity)
+};
+
+struct LightRefineOptions {
+  int gridPixels = 3000;       // the render's reduced resolution: at most about this many pixels
+  int samplesPerLight = 9;     // fixed stratified points per light and pixel
+  int maxIterations = 25;      // Ceres trust-region iterations
+  double maxSeconds = 10;      // wall-clock limit of the solve
+  double prior = 2e-3;         // scale of the priors against the relative data term
+  double intensityRange = 8;   // normalised intensity 1 = this many times the start's largest channel
+  double stepNormalised = 2e-3;  // finite-difference step on the normalised position
+  double marginM = 1e-3;       // lights keep this far inside the room's walls
+  uint32_t seed = 11;
+  const CancelToken* cancel = nullptr;
+};
+
+struct LightRefineSample {
+  double seconds = 0;
+  double objective = 0;  // the full objective (data + priors) after that iteration
+};
+
+struct LightRefineResult {
+  std::vector<AreaLight> lights;  // refined (locked ones as given)
+  std::vector<SunLight> suns;     // as given (their light is a fixed part of the render)
+  double initialObjective = 0;    // at the start positions, intensities solved
+  double finalObjective = 0;
+  double initialDataTerm = 0, finalDataTerm = 0;  // the relative data term alone
+  std::vector<LightRefineSample> history;
+  int pixels = 0;                 // grid pixels that took part
+  int evaluations = 0;            // direct-light renders of one light
+  double seconds = 0;
+  std::string report;             // why the solver stopped
+  std::vector<std::string> notes; // lights moved into the room, lights that light nothing, ...
+};
+
+// `albedo` and `direct`: W x H x 3, linear, the photo's pixel frame (the decomposition's rho
+// and D); `usable`: W x H, 1 where D is data (not a light outline, not clipped, on the room),
+// empty = every pixel on the room. `specs` has one entry per light (missing: defaults).
+// Errors: empty or mismatched images, non-finite light corners or specs (keys "lights[j]").
+Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeometry& geometry,
+                                         const ImageF& albedo, const ImageF& direct,
+                                         const std::vector<uint8_t>& usable,
+                                         const std::vector<AreaLight>& lights,
+                                         const std::vector<LightRefineSpec>& specs,
+                                         const std::vector<SunLight>& suns = {},
+                                         const LightRefineOptions& options = {});
+
+// The weight alpha of image row y (pixel centre y + 0.5) in an image of `height` rows.
+double refineRowWeight(double y, int height);
+
+// Non-negative least squares of a small dense problem: x >= 0 minimising |A x - b|^2 given as
+// its normal equations (M = A^T A, symmetric positive semi-definite, q = A^T b). Lawson-Hanson
+// active set; returns zeros when nothing positive helps.
+std::vector<double> nonNegativeLeastSquares(const std::vector<double>& M, const std::vector<double>& q,
+                                            int n);
+
+}  // namespace inlay

@@ -1,0 +1,570 @@
+#include "inlay/lighting/refine.h"
+
+#include "inlay/render/path_tracer.h"
+
+#include <Eigen/Dense>
+#include <ceres/ceres.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+namespace inlay {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One pixel of the reduced grid: the room point it shows and what the photo says there.
+struct GridPixel {
+  Vec3 point, normal;
+  Vec3 rho, target;
+  double weight = 0;  // alpha_i / Z
+  uint32_t seed = 0;
+};
+
+// A light free to move: its box bounds in normalised room units and which axes can move.
+struct FreeLight {
+  int index = 0;
+  Vec3 lo, hi;            // bounds of the normalised centre
+  Vec3 start;             // normalised centre at the start (after moving it into the room)
+  std::vector<int> fixedAxes;
+};
+
+// The refinement problem: positions in, residuals out (intensities solved inside).
+class Refinement {
+ public:
+  Refinement(const RoomTracer& tracer, std::vector<GridPixel> px, std::vector<AreaLight> lights,
+             const std::vector<LightRefineSpec>& specs, std::vector<SunLight> suns,
+             std::vector<std::vector<double>> sunE, const LightRefineOptions& opt, Vec3 boxLo,
+             Vec3 boxSize)
+      : tracer_(tracer), px_(std::move(px)), lights_(std::move(lights)), specs_(specs),
+        suns_(std::move(suns)), sunE_(std::move(sunE)), opt_(opt), boxLo_(boxLo), boxSize_(boxSize) {
+    const size_t J = lights_.size();
+    cache_.resize(J);
+    for (size_t j = 0; j < J; ++j) {
+      // Intensities: unknown unless locked.
+      if (!specs_[j].lock) unknownLights_.push_back(int(j));
+      Vec3 s = lights_[j].radiance.cwiseMax(0.0);
+      scale_.push_back(std::max(s.maxCoeff(), 1e-9) * opt_.intensityRange);
+      start_.push_back(s);
+    }
+    // Locked lights do not move: their light is a constant part of the render. So are the
+    // suns: their patches are mostly clipped in the photo, which says little about them in
+    // linear terms (the estimate's log fit takes clipped pixels as lower bounds).
+    fixed_.assign(px_.size(), Vec3::Zero());
+    for (size_t k = 0; k < suns_.size(); ++k)
+      for (size_t i = 0; i < px_.size(); ++i) fixed_[i] += sunE_[k][i] * suns_[k].irradianceOverPi.cwiseMax(0.0);
+    for (size_t j = 0; j < J; ++j)
+      if (specs_[j].lock) {
+        const auto& e = irradiance(int(j), lights_[j].centre());
+        for (size_t i = 0; i < px_.size(); ++i) fixed_[i] += e[i] * lights_[j].radiance;
+      }
+  }
+
+  size_t unknownCount() const { return unknownLights_.size(); }
+  size_t residualCount(size_t movable) const { return 3 * px_.size() + 3 * movable + 3 * unknownCount(); }
+  int evaluations() const { return evaluations_; }
+  size_t lightCount() const { return lights_.size(); }
+  // Data weights become alpha_i / Z.
+  void normaliseData(double Z) {
+    for (auto& p : px_) p.weight /= Z;
+  }
+  // sum_i alpha_i |R_i|^2 of the lights as they come in.
+  double startRenderEnergy() {
+    std::vector<Vec3> shading(px_.size(), Vec3::Zero());
+    for (size_t j = 0; j < lights_.size(); ++j) {
+      const auto& e = irradiance(int(j), lights_[j].centre());
+      for (size_t i = 0; i < px_.size(); ++i) shading[i] += e[i] * lights_[j].radiance;
+    }
+    double z = 0;
+    for (size_t i = 0; i < px_.size(); ++i) z += px_[i].weight * px_[i].rho.cwiseProduct(shading[i]).squaredNorm();
+    return z;
+  }
+  Vec3 startCentre(int j) const { return lights_[size_t(j)].centre(); }
+  // The light whose intensity is unknown u.
+  size_t unknownTarget(size_t u) const { return size_t(unknownLights_[u]); }
+
+  Vec3 centreOf(const Vec3& normalised) const { return boxLo_ + normalised.cwiseProduct(boxSize_); }
+  Vec3 normalisedOf(const Vec3& centre) const { return (centre - boxLo_).cwiseQuotient(boxSize_); }
+
+  // E of light j (unit radiance) at every grid pixel with its centre at `centre`; the last
+  // position per light is cached (Ceres asks for the Jacobian where it evaluated last).
+  // Two positions per light are kept: a rejected trial step does not evict the current point.
+  const std::vector<double>& irradiance(int j, const Vec3& centre) {
+    auto& slots = cache_[size_t(j)];
+    for (auto& s : slots)
+      if (s.centre == centre) return s.E;
+    slots[1] = std::move(slots[0]);
+    slots[0].E = irradianceUncached(j, centre);
+    slots[0].centre = centre;
+    return slots[0].E;
+  }
+
+  std::vector<double> irradianceUncached(int j, const Vec3& centre) {
+    AreaLight L = lights_[size_t(j)];
+    const Vec3 shift = centre - L.centre();
+    for (auto& c : L.cornersWorld) c += shift;
+    std::vector<double> e(px_.size(), 0.0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, px_.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i) {
+        const GridPixel& p = px_[i];
+        e[i] = tracer_.unitLightIrradianceOverPi(L, p.point + 1e-5 * p.normal, p.normal,
+                                                 opt_.samplesPerLight, p.seed * 131u + uint32_t(j));
+      }
+    });
+    ++evaluations_;
+    return e;
+  }
+
+  // Residuals for the given irradiance of each moving light (others from the cache):
+  // intensities by NNLS, then the weighted data residuals and the priors. `radiance` receives
+  // the solved intensities of the unlocked lights when not null.
+  void residuals(const std::vector<const std::vector<double>*>& lightE,
+                 const std::vector<Vec3>& normalisedCentres, double* r,
+                 std::vector<Vec3>* radiance = nullptr) const {
+    const size_t U = unknownCount(), N = px_.size();
+    auto column = [&](size_t u) -> const std::vector<double>& { return *lightE[size_t(unknownLights_[u])]; };
+    std::vector<Vec3> L(U, Vec3::Zero());
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> M(U * U, 0.0), q(U, 0.0);
+      for (size_t i = 0; i < N; ++i) {
+        const GridPixel& p = px_[i];
+        const double b = p.target[c] - p.rho[c] * fixed_[i][c];
+        for (size_t u = 0; u < U; ++u) {
+          const double au = p.rho[c] * column(u)[i];
+          if (au == 0) continue;
+          q[u] += p.weight * au * b;
+          for (size_t v = u; v < U; ++v) M[u * U + v] += p.weight * au * p.rho[c] * column(v)[i];
+        }
+      }
+      for (size_t u = 0; u < U; ++u) {
+        for (size_t v = 0; v < u; ++v) M[u * U + v] = M[v * U + u];
+        // The intensity prior: w / scale^2 (L - L0)^2.
+        const double w = opt_.prior * intensityWeight(u) / (scaleOf(u) * scaleOf(u));
+        M[u * U + u] += w;
+        q[u] += w * startOf(u)[c];
+      }
+      const auto x = nonNegativeLeastSquares(M, q, int(U));
+      for (size_t u = 0; u < U; ++u) L[u][c] = std::clamp(x[u], 0.0, scaleOf(u));
+    }
+    size_t k = 0;
+    for (size_t i = 0; i < N; ++i) {
+      const GridPixel& p = px_[i];
+      Vec3 shading = fixed_[i];
+      for (size_t u = 0; u < U; ++u) shading += column(u)[i] * L[u];
+      const double sw = std::sqrt(p.weight);
+      for (int c = 0; c < 3; ++c) r[k++] = sw * (p.rho[c] * shading[c] - p.target[c]);
+    }
+    for (size_t m = 0; m < free_.size(); ++m) {
+      const double sw = std::sqrt(opt_.prior * specs_[size_t(free_[m].index)].positionWeight);
+      for (int a = 0; a < 3; ++a) r[k++] = sw * (normalisedCentres[m][a] - free_[m].start[a]);
+    }
+    for (size_t u = 0; u < U; ++u) {
+      const double sw = std::sqrt(opt_.prior * intensityWeight(u)) / scaleOf(u);
+      for (int c = 0; c < 3; ++c) r[k++] = sw * (L[u][c] - startOf(u)[c]);
+    }
+    if (radiance) *radiance = L;
+  }
+
+  std::vector<FreeLight> free_;  // lights whose positions are parameters (set by the caller)
+
+ private:
+  double intensityWeight(size_t u) const { return specs_[unknownTarget(u)].intensityWeight; }
+  const Vec3& startOf(size_t u) const { return start_[unknownTarget(u)]; }
+  // scale_ and start_ are indexed by light; unknown u maps through unknownTarget.
+  double scaleOf(size_t u) const { return scale_[unknownTarget(u)]; }
+
+  const RoomTracer& tracer_;
+  std::vector<GridPixel> px_;
+  std::vector<AreaLight> lights_;
+  const std::vector<LightRefineSpec>& specs_;
+  std::vector<SunLight> suns_;
+  std::vector<std::vector<double>> sunE_;
+  const LightRefineOptions& opt_;
+  Vec3 boxLo_, boxSize_;
+  struct Cached {
+    Vec3 centre = Vec3::Constant(std::nan(""));
+    std::vector<double> E;
+  };
+  std::vector<std::array<Cached, 2>> cache_;
+  std::vector<int> unknownLights_;
+  std::vector<double> scale_;
+  std::vector<Vec3> start_;
+  std::vector<Vec3> fixed_;
+  int evaluations_ = 0;
+};
+
+}  // namespace
+
+double refineRowWeight(double y, int height) {
+  if (height <= 0) return 0;
+  const double mid = 0.5 * height;
+  if (y <= mid) return 1;
+  const double t = std::clamp((double(height) - y) / mid, 0.0, 1.0);
+  return t * t;
+}
+
+std::vector<double> nonNegativeLeastSquares(const std::vector<double>& Min, const std::vector<double>& qin,
+                                            int n) {
+  std::vector<double> x(size_t(std::max(n, 0)), 0.0);
+  if (n <= 0) return x;
+  const Eigen::Map<const Eigen::MatrixXd> M(Min.data(), n, n);
+  const Eigen::Map<const Eigen::VectorXd> q(qin.data(), n);
+  if (!M.allFinite() || !q.allFinite()) return x;
+  const double maxDiag = M.diagonal().cwiseAbs().maxCoeff();
+  const double tol = 1e-12 * (maxDiag > 0 ? maxDiag : 1.0);
+  Eigen::VectorXd xs = Eigen::VectorXd::Zero(n);
+  std::vector<bool> passive(size_t(n), false);
+  // Solve the unconstrained problem on the passive set (others held at 0).
+  auto solvePassive = [&]() {
+    std::vector<int> P;
+    for (int i = 0; i < n; ++i)
+      if (passive[size_t(i)]) P.push_back(i);
+    Eigen::MatrixXd A(P.size(), P.size());
+    Eigen::VectorXd b(P.size());
+    for (size_t a = 0; a < P.size(); ++a) {
+      b[long(a)] = q[P[a]];
+      for (size_t c = 0; c < P.size(); ++c) A(long(a), long(c)) = M(P[a], P[c]);
+      A(long(a), long(a)) += tol;  // slop for a singular passive set
+    }
+    const Eigen::VectorXd s = A.ldlt().solve(b);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
+    for (size_t a = 0; a < P.size(); ++a) z[P[a]] = s[long(a)];
+    return z;
+  };
+  for (int outer = 0; outer < 3 * n + 3; ++outer) {
+    const Eigen::VectorXd w = q - M * xs;
+    int best = -1;
+    for (int i = 0; i < n; ++i)
+      if (!passive[size_t(i)] && w[i] > tol && (best < 0 || w[i] > w[best])) best = i;
+    if (best < 0) break;
+    passive[size_t(best)] = true;
+    for (int inner = 0; inner < 3 * n + 3; ++inner) {
+      const Eigen::VectorXd z = solvePassive();
+      bool allPositive = z.allFinite();
+      for (int i = 0; i < n && allPositive; ++i)
+        if (passive[size_t(i)] && z[i] <= 0) allPositive = false;
+      if (allPositive) {
+        xs = z;
+        break;
+      }
+      // Step toward z until the first passive variable reaches 0; drop those at 0.
+      double step = 1;
+      for (int i = 0; i < n; ++i)
+        if (passive[size_t(i)] && !(z[i] > 0)) {
+          const double den = xs[i] - z[i];
+          if (den > 0 && std::isfinite(den)) step = std::min(step, xs[i] / den);
+        }
+      if (z.allFinite()) xs += step * (z - xs);
+      for (int i = 0; i < n; ++i)
+        if (passive[size_t(i)] && xs[i] <= tol) passive[size_t(i)] = false, xs[i] = 0;
+    }
+  }
+  for (int i = 0; i < n; ++i) x[size_t(i)] = std::isfinite(xs[i]) ? std::max(0.0, xs[i]) : 0.0;
+  return x;
+}
+
+namespace {
+
+// Ceres' view: one 3-vector block per moving light; derivatives by forward differences that
+// recompute only the moved light's irradiance.
+class RefineCost : public ceres::CostFunction {
+ public:
+  RefineCost(Refinement& r, double step) : r_(r), step_(step) {
+    for (size_t m = 0; m < r_.free_.size(); ++m) mutable_parameter_block_sizes()->push_back(3);
+    set_num_residuals(int(r_.residualCount(r_.free_.size())));
+  }
+
+  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override {
+    const size_t F = r_.free_.size(), R = size_t(num_residuals());
+    std::vector<Vec3> centres(F);
+    for (size_t m = 0; m < F; ++m) centres[m] = Vec3(params[m][0], params[m][1], params[m][2]);
+    std::vector<const std::vector<double>*> E(r_.lightCount());
+    for (size_t m = 0; m < F; ++m)
+      E[size_t(r_.free_[m].index)] = &r_.irradiance(r_.free_[m].index, r_.centreOf(centres[m]));
+    for (size_t j = 0; j < E.size(); ++j)
+      if (!E[j]) E[j] = &r_.irradiance(int(j), r_.startCentre(int(j)));
+    r_.residuals(E, centres, residuals);
+    if (!jacobians) return true;
+    std::vector<double> plus(R);
+    for (size_t m = 0; m < F; ++m) {
+      if (!jacobians[m]) continue;
+      const int j = r_.free_[m].index;
+      const std::vector<double>* keep = E[size_t(j)];
+      for (int a = 0; a < 3; ++a) {
+        const bool fixed = std::find(r_.free_[m].fixedAxes.begin(), r_.free_[m].fixedAxes.end(), a) !=
+                           r_.free_[m].fixedAxes.end();
+        if (fixed) {
+          for (size_t k = 0; k < R; ++k) jacobians[m][k * 3 + size_t(a)] = 0;
+          continue;
+        }
+        // Forward differences (the fixed samples make E smooth; half the renders of central
+        // ones), stepping inward at the upper bound: past a wall the light is hidden.
+        const double h = centres[m][a] + step_ > r_.free_[m].hi[a] ? -step_ : step_;
+        std::vector<Vec3> moved = centres;
+        moved[m][a] += h;
+        const std::vector<double> e = r_.irradianceUncached(j, r_.centreOf(moved[m]));
+        E[size_t(j)] = &e;
+        r_.residuals(E, moved, plus.data());
+        E[size_t(j)] = keep;
+        for (size_t k = 0; k < R; ++k) jacobians[m][k * 3 + size_t(a)] = (plus[k] - residuals[k]) / h;
+      }
+    }
+    return true;
+  }
+
+ private:
+  Refinement& r_;
+  double step_;
+};
+
+}  // namespace
+
+namespace {
+
+// Records the objective per iteration and stops on cancel.
+class RefineCallback : public ceres::IterationCallback {
+ public:
+  RefineCallback(Clock::time_point t0, const CancelToken* cancel, std::vector<LightRefineSample>* history)
+      : t0_(t0), cancel_(cancel), history_(history) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    // An unsuccessful step reports its rejected candidate's cost: only accepted points count.
+    if (s.iteration == 0 || s.step_is_successful)
+      history_->push_back({std::chrono::duration<double>(Clock::now() - t0_).count(), 2 * s.cost});
+    return cancel_ && cancel_->shouldStop() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  Clock::time_point t0_;
+  const CancelToken* cancel_;
+  std::vector<LightRefineSample>* history_;
+};
+
+double sumSquares(const std::vector<double>& r, size_t from, size_t to) {
+  double s = 0;
+  for (size_t k = from; k < to; ++k) s += r[k] * r[k];
+  return s;
+}
+
+// The light's centre interval along each axis that keeps its corners `margin` inside the box
+// [lo, hi]; an axis where the light does not fit is pinned at its centre.
+void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double margin, Vec3* cLo, Vec3* cHi,
+                  std::vector<int>* pinned) {
+  const Vec3 c = L.centre();
+  Vec3 mn = c, mx = c;
+  for (const Vec3& p : L.cornersWorld) mn = mn.cwiseMin(p), mx = mx.cwiseMax(p);
+  for (int a = 0; a < 3; ++a) {
+    (*cLo)[a] = lo[a] + margin + (c[a] - mn[a]);
+    (*cHi)[a] = hi[a] - margin - (mx[a] - c[a]);
+    if (!((*cHi)[a] - (*cLo)[a] > 1e-6)) {
+      (*cLo)[a] = (*cHi)[a] = std::clamp(c[a], lo[a], hi[a]);
+      pinned->push_back(a);
+    }
+  }
+}
+
+}  // namespace
+
+Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeometry& geometry,
+                                         const ImageF& albedo, const ImageF& direct,
+                                         const std::vector<uint8_t>& usable,
+                                         const std::vector<AreaLight>& lightsIn,
+                                         const std::vector<LightRefineSpec>& specsIn,
+                                         const std::vector<SunLight>& suns,
+                                         const LightRefineOptions& opt) {
+  const auto t0 = Clock::now();
+  const int W = direct.width, H = direct.height;
+  if (direct.empty() || direct.channels < 3) return Error{"", "direct", "the direct-light image is empty"};
+  if (albedo.width != W || albedo.height != H || albedo.channels < 3)
+    return Error{"", "albedo", "the albedo image does not match the direct-light image"};
+  if (!usable.empty() && usable.size() != size_t(W) * H)
+    return Error{"", "usable", "the mask does not match the direct-light image"};
+  if (!(opt.gridPixels > 0 && opt.samplesPerLight > 0 && opt.prior >= 0 && opt.intensityRange > 0 &&
+        opt.stepNormalised > 0 && std::isfinite(opt.prior) && std::isfinite(opt.intensityRange)))
+    return Error{"", "options", "refinement options out of range"};
+  std::vector<LightRefineSpec> specs = specsIn;
+  specs.resize(lightsIn.size());
+  LightRefineResult out;
+  out.suns = suns;
+  std::vector<AreaLight> lights = lightsIn;
+  const RoomBox& b = geometry.box;
+  const Vec3 lo(b.xLeftM, 0.0, b.zBackM), hi(b.xRightM, b.ceilingM, b.zRearM);
+  if (!((hi - lo).minCoeff() > 1e-3) || !lo.allFinite() || !hi.allFinite())
+    return Error{"", "room", "the room box has no volume"};
+  const Vec3 boxSize = hi - lo;
+
+  // Check the lights; move each into the room (bounds hold from the start).
+  std::vector<FreeLight> free;
+  for (size_t j = 0; j < lights.size(); ++j) {
+    const std::string key = "lights[" + std::to_string(j) + "]";
+    AreaLight& L = lights[j];
+    bool finite = L.radiance.allFinite();
+    for (const Vec3& p : L.cornersWorld) finite = finite && p.allFinite();
+    if (!finite) return Error{"", key, "the light's corners or intensity are not finite numbers"};
+    if (!(L.area() > 0)) return Error{"", key, "the light has no area"};
+    const LightRefineSpec& s = specs[j];
+    if (!(s.positionWeight >= 0 && s.intensityWeight >= 0 && std::isfinite(s.positionWeight) &&
+          std::isfinite(s.intensityWeight)))
+      return Error{"", key + ".weights", "weights must be finite and non-negative"};
+    L.radiance = L.radiance.cwiseMax(0.0);
+    if (s.lock) continue;
+    FreeLight f;
+    f.index = int(j);
+    Vec3 cLo, cHi;
+    boundsInRoom(L, lo, hi, opt.marginM, &cLo, &cHi, &f.fixedAxes);
+    const Vec3 c = L.centre(), moved = c.cwiseMax(cLo).cwiseMin(cHi);
+    if ((moved - c).norm() > 5e-3)  // millimetres of round-off are not news
+      out.notes.push_back(key + ": outside the room; moved " + std::to_string((moved - c).norm()) +
+                          " m to fit inside it");
+    if (f.fixedAxes.size() == 3)
+      out.notes.push_back(key + ": larger than the room in every direction; its position is kept");
+    for (auto& p : L.cornersWorld) p += moved - c;
+    f.lo = (cLo - lo).cwiseQuotient(boxSize);
+    f.hi = (cHi - lo).cwiseQuotient(boxSize);
+    f.start = (moved - lo).cwiseQuotient(boxSize);
+    if (f.fixedAxes.size() < 3) free.push_back(f);
+  }
+
+  // The reduced grid: pixel centres every `stride` pixels that show the room and carry data.
+  const RoomTracer tracer(geometry);
+  const int stride = std::max(1, int(std::lround(std::sqrt(double(W) * H / opt.gridPixels))));
+  std::vector<GridPixel> px;
+  double Z = 0;
+  for (int y = stride / 2; y < H; y += stride)
+    for (int x = stride / 2; x < W; x += stride) {
+      const size_t idx = size_t(y) * W + x;
+      if (!usable.empty() && !usable[idx]) continue;
+      const double alpha = refineRowWeight(y + 0.5, H);
+      const Vec3 rho = albedo.rgb(x, y), d = direct.rgb(x, y);
+      if (!(alpha > 0) || !rho.allFinite() || !d.allFinite()) continue;
+      const Vec2 pc((x + 0.5) * camera.widthPx / W, (y + 0.5) * camera.heightPx / H);
+      const auto hit = tracer.intersect(camera.rayThroughPixel(pc), 1e-6);
+      if (!hit) continue;
+      GridPixel g;
+      g.point = hit->pointWorld;
+      g.normal = hit->normalWorld;
+      g.rho = rho.cwiseMax(0.0);
+      g.target = d.cwiseMax(0.0);
+      g.weight = alpha;
+      g.seed = uint32_t(idx);
+      Z += alpha * g.target.squaredNorm();
+      px.push_back(g);
+    }
+  if (px.empty()) return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
+  out.pixels = int(px.size());
+  std::vector<std::vector<double>> sunE(suns.size(), std::vector<double>(px.size(), 0.0));
+  for (size_t k = 0; k < suns.size(); ++k)
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i)
+        sunE[k][i] = unitSunIrradianceOverPi(tracer, geometry, suns[k], px[i].point + 1e-5 * px[i].normal,
+                                             px[i].normal);
+    });
+
+  Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, lo, boxSize);
+  problem.free_ = free;
+  if (!(Z > 1e-20)) {
+    // A black photo: the data term is relative to the start's render instead.
+    out.notes.push_back("the photo's direct light is black: the lights are fitted to darkness");
+    Z = problem.startRenderEnergy();
+  }
+  problem.normaliseData(Z > 1e-30 ? Z : 1.0);
+  for (size_t j = 0; j < lights.size(); ++j) {
+    if (specs[j].lock) continue;
+    const auto& e = problem.irradiance(int(j), lights[j].centre());
+    if (std::all_of(e.begin(), e.end(), [](double v) { return v <= 0; }))
+      out.notes.push_back("lights[" + std::to_string(j) +
+                          "] lights none of the room the photo shows: its intensity stays at its start");
+  }
+  RefineCost* cost = new RefineCost(problem, opt.stepNormalised);
+  std::vector<std::array<double, 3>> params(free.size());
+  for (size_t m = 0; m < free.size(); ++m) params[m] = {free[m].start[0], free[m].start[1], free[m].start[2]};
+  // The objective and intensities at given parameters.
+  const size_t R = size_t(cost->num_residuals()), dataEnd = 3 * size_t(out.pixels);
+  std::vector<double> r(R);
+  auto evaluate = [&](std::vector<Vec3>* radiance) {
+    std::vector<const std::vector<double>*> E(lights.size(), nullptr);
+    std::vector<Vec3> centres(free.size());
+    for (size_t m = 0; m < free.size(); ++m) {
+      centres[m] = Vec3(params[m][0], params[m][1], params[m][2]);
+      E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(centres[m]));
+    }
+    for (size_t j = 0; j < E.size(); ++j)
+      if (!E[j]) E[j] = &problem.irradiance(int(j), lights[j].centre());
+    problem.residuals(E, centres, r.data(), radiance);
+  };
+  evaluate(nullptr);
+  out.initialObjective = sumSquares(r, 0, R);
+  out.initialDataTerm = sumSquares(r, 0, dataEnd);
+  out.history.push_back({std::chrono::duration<double>(Clock::now() - t0).count(), out.initialObjective});
+
+  if (!free.empty()) {
+    ceres::Problem cp;
+    std::vector<double*> blocks;
+    for (auto& p : params) blocks.push_back(p.data());
+    cp.AddResidualBlock(cost, nullptr, blocks);
+    for (size_t m = 0; m < free.size(); ++m) {
+      if (!free[m].fixedAxes.empty()) cp.SetManifold(params[m].data(), new ceres::SubsetManifold(3, free[m].fixedAxes));
+      for (int a = 0; a < 3; ++a) {
+        if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end()) continue;
+        cp.SetParameterLowerBound(params[m].data(), a, free[m].lo[a]);
+        cp.SetParameterUpperBound(params[m].data(), a, free[m].hi[a]);
+      }
+    }
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = opt.maxIterations;
+    so.max_solver_time_in_seconds = opt.maxSeconds;
+    so.num_threads = 1;
+    so.logging_type = ceres::SILENT;
+    so.function_tolerance = 1e-4;
+    so.parameter_tolerance = 1e-4;  // of the normalised position: about half a millimetre
+    RefineCallback callback(t0, opt.cancel, &out.history);
+    so.callbacks.push_back(&callback);
+    // No projected line search at the bounds: each of its steps costs a full Jacobian.
+    so.max_num_line_search_step_size_iterations = 0;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &cp, &summary);
+    out.report = summary.message + " (" + std::to_string(summary.iterations.size()) + " iterations)";
+    if (!summary.IsSolutionUsable()) {
+      out.notes.push_back("light refinement failed (" + summary.message + "): the start is kept");
+      for (size_t m = 0; m < free.size(); ++m) params[m] = {free[m].start[0], free[m].start[1], free[m].start[2]};
+    }
+    // Bounds hold even if the solver stepped on them with round-off.
+    for (size_t m = 0; m < free.size(); ++m)
+      for (int a = 0; a < 3; ++a) {
+        double& v = params[m][size_t(a)];
+        v = std::isfinite(v) ? std::clamp(v, free[m].lo[a], free[m].hi[a]) : free[m].start[a];
+      }
+  } else {
+    delete cost;
+    cost = nullptr;
+    out.report = "no light free to move: intensities solved in closed form";
+  }
+  if (opt.cancel && opt.cancel->shouldStop()) return Error{"", "", "cancelled"};
+
+  std::vector<Vec3> radiance;
+  evaluate(&radiance);
+  out.finalObjective = sumSquares(r, 0, R);
+  out.finalDataTerm = sumSquares(r, 0, dataEnd);
+  out.history.push_back({std::chrono::duration<double>(Clock::now() - t0).count(), out.finalObjective});
+  out.lights = lights;
+  for (size_t m = 0; m < free.size(); ++m) {
+    AreaLight& L = out.lights[size_t(free[m].index)];
+    const Vec3 shift = problem.centreOf(Vec3(params[m][0], params[m][1], params[m][2])) - L.centre();
+    for (auto& p : L.cornersWorld) p += shift;
+  }
+  for (size_t u = 0; u < radiance.size(); ++u) {
+    const size_t t = problem.unknownTarget(u);
+    const Vec3 v = radiance[u].allFinite() ? radiance[u] : Vec3::Zero();
+    out.lights[t].radiance = v;
+  }
+  out.evaluations = problem.evaluations();
+  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace inlay

@@ -1,0 +1,218 @@
+// Light refinement (refine.h): on a room whose direct light is known, moved and mis-scaled
+// lights go back toward the truth; locked lights stay; stiff input (lights outside the room or
+// touching a wall, intensities from 1e-4 to 1e4, a black photo, a light that lights nothing)
+// gives finite lights inside the room and a note.
+#include "inlay/lighting/estimate.h"
+#include "inlay/lighting/refine.h"
+#include "refine_room.h"
+#include "test_support.h"
+
+namespace inlay {
+namespace {
+
+using test::makeRefineRoom;
+using test::perturbed;
+
+const test::RefineRoom& room() {
+  static const test::RefineRoom r = makeRefineRoom(160, 120, 64);
+  return r;
+}
+
+bool insideRoom(const AreaLight& L, const RoomBox& b) {
+  for (const Vec3& p : L.cornersWorld)
+    if (!(p.x() >= b.xLeftM && p.x() <= b.xRightM && p.y() >= 0 && p.y() <= b.ceilingM && p.z() >= b.zBackM &&
+          p.z() <= b.zRearM))
+      return false;
+  return true;
+}
+
+bool finiteLights(const LightRefineResult& r) {
+  for (const auto& L : r.lights) {
+    if (!L.radiance.allFinite()) return false;
+    for (const Vec3& p : L.cornersWorld)
+      if (!p.allFinite()) return false;
+  }
+  return std::isfinite(r.finalObjective) && std::isfinite(r.initialObjective);
+}
+
+TEST(LightRefine, NonNegativeLeastSquaresSolvesSmallSystems) {
+  // Unconstrained optimum (1, 2) is feasible: found exactly.
+  const std::vector<double> M = {2, 1, 1, 3}, q = {4, 7};
+  auto x = nonNegativeLeastSquares(M, q, 2);
+  EXPECT_NEAR(x[0], 1, 1e-9);
+  EXPECT_NEAR(x[1], 2, 1e-9);
+  // Optimum (-1, 3) is not: x0 = 0 and x1 minimises 3 x1^2 - 2*8 x1 -> 8/3.
+  x = nonNegativeLeastSquares({2, 1, 1, 3}, {1, 8}, 2);
+  EXPECT_EQ(x[0], 0);
+  EXPECT_NEAR(x[1], 8.0 / 3, 1e-9);
+  // Singular and non-finite input: finite, non-negative.
+  x = nonNegativeLeastSquares({0, 0, 0, 0}, {1, -1}, 2);
+  EXPECT_TRUE(std::isfinite(x[0]) && x[0] >= 0 && x[1] == 0);
+  x = nonNegativeLeastSquares({NAN, 0, 0, 1}, {1, 1}, 2);
+  EXPECT_EQ(x[0], 0);
+}
+
+TEST(LightRefine, RowWeightFallsQuadraticallyBelowTheMiddle) {
+  EXPECT_EQ(refineRowWeight(10, 100), 1);
+  EXPECT_EQ(refineRowWeight(50, 100), 1);
+  EXPECT_NEAR(refineRowWeight(75, 100), 0.25, 1e-12);
+  EXPECT_EQ(refineRowWeight(100, 100), 0);
+}
+
+TEST(LightRefine, MovedLightsGoBackTowardTheTruth) {
+  const auto& r = room();
+  const auto start = perturbed(r.truth, 0.3, 1.4);
+  LightRefineOptions o;
+  o.prior = 1e-4;  // the data decide (the prior's pull is tested below)
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, {}, {}, o);
+  ASSERT_TRUE(res.ok()) << res.error().message();
+  ASSERT_TRUE(finiteLights(*res));
+  EXPECT_LT(res->finalObjective, 0.2 * res->initialObjective);
+  for (size_t j = 0; j < 2; ++j) {
+    const double before = (start[j].centre() - r.truth[j].centre()).norm();
+    const double after = (res->lights[j].centre() - r.truth[j].centre()).norm();
+    EXPECT_LT(after, 0.3 * before) << "light " << j;
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(res->lights[j].radiance[c] / r.truth[j].radiance[c], 1.0, 0.1) << "light " << j;
+    EXPECT_TRUE(insideRoom(res->lights[j], r.geometry.box));
+  }
+  ASSERT_GE(res->history.size(), 2u);
+  EXPECT_LE(res->history.back().objective, res->history.front().objective);
+}
+
+TEST(LightRefine, ThePositionPriorHoldsLightsBack) {
+  const auto& r = room();
+  const auto start = perturbed(r.truth, 0.3, 1.0);
+  LightRefineOptions o;
+  o.prior = 1e-4;
+  auto weak = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, {}, {}, o);
+  std::vector<LightRefineSpec> stiff(2);
+  for (auto& s : stiff) s.positionWeight = 1e6;
+  auto held = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, stiff, {}, o);
+  ASSERT_TRUE(weak.ok() && held.ok());
+  for (size_t j = 0; j < 2; ++j) {
+    const double movedWeak = (weak->lights[j].centre() - start[j].centre()).norm();
+    const double movedHeld = (held->lights[j].centre() - start[j].centre()).norm();
+    EXPECT_LT(movedHeld, 0.2 * movedWeak) << "light " << j;
+  }
+}
+
+TEST(LightRefine, ALockedLightKeepsPositionAndIntensity) {
+  const auto& r = room();
+  const auto start = perturbed(r.truth, 0.3, 1.4);
+  std::vector<LightRefineSpec> specs(2);
+  specs[0].lock = true;
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, specs);
+  ASSERT_TRUE(res.ok());
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(res->lights[0].cornersWorld[size_t(k)], start[0].cornersWorld[size_t(k)]);
+  EXPECT_EQ(res->lights[0].radiance, start[0].radiance);
+  EXPECT_GT((res->lights[1].centre() - start[1].centre()).norm(), 1e-3);
+}
+
+TEST(LightRefine, LightsOutsideOrAgainstTheWallsEndInsideTheRoom) {
+  const auto& r = room();
+  auto start = r.truth;
+  for (auto& c : start[0].cornersWorld) c += Vec3(-3.0, 1.0, 0);  // through the left wall and ceiling
+  for (auto& c : start[1].cornersWorld) c.x() += 2.5 - 1.45 - 1e-4;  // its edge on the right wall
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, {});
+  ASSERT_TRUE(res.ok()) << res.error().message();
+  ASSERT_TRUE(finiteLights(*res));
+  for (const auto& L : res->lights) EXPECT_TRUE(insideRoom(L, r.geometry.box));
+  ASSERT_FALSE(res->notes.empty());
+  EXPECT_NE(res->notes[0].find("lights[0]: outside the room"), std::string::npos) << res->notes[0];
+}
+
+TEST(LightRefine, ExtremeIntensitiesStayFiniteAndBounded) {
+  const auto& r = room();
+  for (double scale : {1e-4, 1e4}) {
+    ImageF d = r.direct;
+    for (float& v : d.data) v = float(v * scale);
+    auto start = perturbed(r.truth, 0.2, scale);
+    auto res = refineLights(r.camera, r.geometry, r.albedo, d, {}, start, {});
+    ASSERT_TRUE(res.ok()) << scale;
+    ASSERT_TRUE(finiteLights(*res)) << scale;
+    for (size_t j = 0; j < 2; ++j) {
+      EXPECT_TRUE(insideRoom(res->lights[j], r.geometry.box));
+      EXPECT_NEAR(res->lights[j].radiance[0] / (scale * r.truth[j].radiance[0]), 1.0, 0.25) << scale;
+    }
+  }
+}
+
+TEST(LightRefine, ABlackPhotoOrALightThatLightsNothingGivesFiniteLightsAndANote) {
+  const auto& r = room();
+  ImageF black(r.direct.width, r.direct.height, 3, 0.f);
+  auto res = refineLights(r.camera, r.geometry, r.albedo, black, {}, r.truth, {});
+  ASSERT_TRUE(res.ok());
+  ASSERT_TRUE(finiteLights(*res));
+  for (size_t j = 0; j < 2; ++j) EXPECT_LT(res->lights[j].radiance.maxCoeff(), 1e-2 * r.truth[j].radiance.maxCoeff());
+  EXPECT_FALSE(res->notes.empty());
+  // Against the wall behind the camera, facing it: no pixel of the photo sees its light.
+  auto up = r.truth;
+  up[0] = test::ceilingPanel(Vec3(0, 0, 0), 0.5, 0.5, 2.7, Vec3(6, 5, 3.5));
+  for (auto& c : up[0].cornersWorld) c = Vec3(c.x(), c.z() + 1.5, 0.5 - 2e-3);
+  if (up[0].normal().z() < 0) std::swap(up[0].cornersWorld[1], up[0].cornersWorld[3]);
+  res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, up, {});
+  ASSERT_TRUE(res.ok());
+  ASSERT_TRUE(finiteLights(*res));
+  bool noted = false;
+  for (const auto& n : res->notes) noted = noted || n.find("lights[0] lights none") != std::string::npos;
+  EXPECT_TRUE(noted);
+  EXPECT_LT((res->lights[0].radiance - up[0].radiance).norm(), 1e-6 * up[0].radiance.norm());
+}
+
+TEST(LightRefine, BadInputIsNamed) {
+  const auto& r = room();
+  auto bad = r.truth;
+  bad[1].cornersWorld[2].x() = NAN;
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, bad, {});
+  ASSERT_FALSE(res.ok());
+  EXPECT_EQ(res.error().key, "lights[1]");
+  std::vector<LightRefineSpec> specs(2);
+  specs[0].positionWeight = -1;
+  res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, r.truth, specs);
+  ASSERT_FALSE(res.ok());
+  EXPECT_EQ(res.error().key, "lights[0].weights");
+  res = refineLights(r.camera, r.geometry, ImageF(3, 3, 3), r.direct, {}, r.truth, {});
+  ASSERT_FALSE(res.ok());
+  EXPECT_EQ(res.error().key, "albedo");
+}
+
+}  // namespace
+}  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// A light outlined where the room has no surface (a window to the sky: here the room without
+// its back wall and ceiling) is refused with the outline point named; a light outline partly on
+// the wall and partly on the ceiling is placed on the ceiling, inside the room.
+TEST(LightRefine, AnOutlineOnNothingIsNamedAndOneAcrossAnEdgeLandsInTheRoom) {
+  const auto& r = room();
+  SceneGeometry open = r.geometry;
+  open.surfaces.erase(std::remove_if(open.surfaces.begin(), open.surfaces.end(),
+                                     [](const Surface& s) {
+                                       return s.kind == SurfaceKind::Ceiling || s.kind == SurfaceKind::WallBack;
+                                     }),
+                      open.surfaces.end());
+  std::vector<Vec2> sky;
+  for (const AreaLight& L : r.truth)
+    for (const Vec3& c : L.cornersWorld) sky.push_back(*r.camera.project(c));
+  sky.resize(4);
+  auto l = lightFromOutline(r.camera, open, sky, "lights[0].points");
+  ASSERT_FALSE(l.ok());
+  EXPECT_EQ(l.error().key.rfind("lights[0].points[", 0), 0u) << l.error().key;
+  // Across the ceiling's back edge: most points on the ceiling.
+  const Vec2 edge = *r.camera.project(Vec3(0, 2.7, -5.5));
+  const std::vector<Vec2> across = {edge + Vec2(-20, -30), edge + Vec2(20, -30), edge + Vec2(20, 3),
+                                    edge + Vec2(-20, -12)};
+  auto a = lightFromOutline(r.camera, r.geometry, across, "lights[1].points");
+  ASSERT_TRUE(a.ok()) << a.error().message();
+  EXPECT_TRUE(insideRoom(*a, r.geometry.box));
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, {*a}, {});
+  ASSERT_TRUE(res.ok());
+  EXPECT_TRUE(finiteLights(*res));
+  EXPECT_TRUE(insideRoom(res->lights[0], r.geometry.box));
+}
+
+}  // namespace
+}  // namespace inlay
