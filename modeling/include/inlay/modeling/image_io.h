@@ -21,6 +21,9 @@ namespace inlay {
 struct ImageLimits {
   long long maxPixels = 300'000'000LL;  // decompression-bomb guard (about 17k x 17k)
   int maxDimension = 65'536;            // either side
+  int minDimension = 1;                 // either side
+  // What a photo to insert objects into must satisfy: a room needs more than a few pixels.
+  static ImageLimits photo() { return {.minDimension = 32}; }
 };
 
 // What the file says about the camera (a prior for the focal length, never a truth).
