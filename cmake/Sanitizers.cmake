@@ -21,7 +21,7 @@ if(INLAY_SANITIZE)
   endif()
   list(JOIN INLAY_SANITIZE "," _inlay_sanitizers)
   add_compile_options(-fsanitize=${_inlay_sanitizers} -fno-sanitize-recover=all
-                      -fno-omit-frame-pointer -g)
+                      -fno-omit-frame-pointer -g1)
   add_link_options(-fsanitize=${_inlay_sanitizers})
   # The environment every test runs with: findings are fatal and print a stack.
   set(INLAY_SANITIZER_ENV

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <zlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -43,6 +44,26 @@ fs::path tempPathBeside(const std::string& path) {
        << std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000 << '-'
        << counter.fetch_add(1) << target.extension().string();
   return target.parent_path() / name.str();
+}
+
+// Temporaries of processes that died between write and rename (a crash, kill -9, power loss)
+// would pile up beside the file: remove those whose process no longer exists. A live process
+// that reused the pid keeps them (the safe side).
+void removeStaleTemps(const std::string& path) {
+  const fs::path target(path);
+  const std::string prefix = '.' + target.stem().string() + ".inlay-tmp-";
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid <= 0 || pid == long(::getpid())) continue;
+    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
 }
 
 // Renames `temp` over `path`; removes `temp` on failure.
@@ -136,6 +157,7 @@ Status checkImage(const std::string& path, const ImageF& img) {
 // decode error), then renames it over `path`.
 Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec,
                             OIIO::TypeDesc bufType, const void* pixels) {
+  removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   std::error_code ec;
   auto failWith = [&](const std::string& msg) {
@@ -491,6 +513,7 @@ Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& lay
 }
 
 Status writeFileAtomically(const std::string& path, const std::string& bytes) {
+  removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0)

@@ -63,7 +63,8 @@ struct NamedLayer {
 Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers,
                      bool half = true);
 
-// Write `bytes` to `path` through a temporary file in the same folder and a rename.
+// Write `bytes` to `path` through a temporary file in the same folder and a rename (fsync
+// before it). Temporaries left beside `path` by processes that died mid-save are removed.
 Status writeFileAtomically(const std::string& path, const std::string& bytes);
 
 // Resample (area average when shrinking, bilinear when enlarging).
