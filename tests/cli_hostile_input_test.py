@@ -152,6 +152,11 @@ def bad_deflate_png(path, ctx):
     open(path, "wb").write(png_with_header(512, 384, b"\x78\x9c" + bytes(range(7, 250))))
 
 
+def huge_chunk_png(path, ctx):
+    # Found by fuzz_image: a chunk header claiming 1.2 GB in a 40-byte file (was allocated).
+    open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 0x492A0008) + b"IHDR" + b"\0" * 24)
+
+
 def one_pixel(path, ctx):
     cv2.imwrite(path, np.full((1, 1, 3), 128, np.uint8))
 
@@ -203,6 +208,7 @@ CASES = [
     photo_case("png wrong crc", wrong_crc_png, [r"badcrc\.png", r"photo", r"corrupt PNG: chunk 'IDAT' at byte \d+ fails its CRC check"], "badcrc.png"),
     photo_case("truncated png", truncated_png, [r"cut\.png", r"photo", r"truncated PNG: the file ends inside chunk 'IDAT'"], "cut.png"),
     photo_case("png with garbage pixels", bad_deflate_png, [r"garbage\.png", r"photo", r"corrupt PNG: the compressed pixel data is invalid"], "garbage.png"),
+    photo_case("png chunk claiming 1.2 GB", huge_chunk_png, [r"liar\.png", r"photo", r"truncated PNG: the file ends inside chunk 'IHDR' at byte 8"], "liar.png"),
     photo_case("1x1 image", one_pixel, [r"tiny\.png", r"photo", r"1 x 1 pixels is too small \(at least 32 per side\)"], "tiny.png"),
     photo_case("60000x60000 header", bomb_header, [r"bomb\.png", r"photo", r"60000 x 60000.*exceeds the limit"], "bomb.png"),
     photo_case("16-bit png", sixteen_bit, None, "deep.png"),
