@@ -221,17 +221,17 @@ CASES = [
     mesh_case("obj index out of range", "range.obj", OBJ_TRIANGLE + "f 1 2 7\n",
               [r"range\.obj", r"objects\[0\]\.mesh", r"line 4", r"out of range"]),
     mesh_case("obj negative index out of range", "negative.obj", OBJ_TRIANGLE + "f -1 -2 -9\n",
-              [r"negative\.obj", r"objects\[0\]\.mesh", r"line 4", r"out of range"]),
+              [r"negative\.obj", r"objects\[0\]\.mesh", r"line 4", r"vertex index -9 refers before the first vertex"]),
     mesh_case("ply lies about vertex count", "lying.ply",
               "ply\nformat ascii 1.0\nelement vertex 100\nproperty float x\nproperty float y\n"
               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-              [r"lying\.ply", r"objects\[0\]\.mesh", r"vertex|face", r"truncated|ends|missing|expected|fewer"]),
+              [r"lying\.ply", r"objects\[0\]\.mesh\.header", r"element counts promise more data than the file holds"]),
     mesh_case("binary ply lies about face count", "lying_bin.ply",
               "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
               "property float y\nproperty float z\nelement face 5000000\n"
               "property list uchar int vertex_indices\nend_header\n" + "\0" * 36,
-              [r"lying_bin\.ply", r"objects\[0\]\.mesh", r"face", r"truncated|ends|missing|expected|fewer"]),
+              [r"lying_bin\.ply", r"objects\[0\]\.mesh\.header", r"element counts promise more data than the file holds"]),
     mesh_case("gltf view past its buffer", "past.gltf", gltf(36, 24, 36),
               [r"past\.gltf", r"objects\[0\]\.mesh", r"bufferViews\[0\]", r"past|beyond|exceeds|outside"]),
     mesh_case("gltf buffer shorter than declared", "short.gltf", gltf(4096, 0, 36),
