@@ -7,8 +7,9 @@ PKGS=(
   qt6-base-dev libqt6opengl6-dev qt6-tools-dev qt6-l10n-tools qt6-tools-dev-tools qt6-translations-l10n
   libopenmesh-dev libcgal-dev libembree-dev libopencv-dev libopencv-contrib-dev libceres-dev
   libopenimageio-dev openimageio-tools libosd-dev libeigen3-dev libtbb-dev libassimp-dev
-  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  clang libclang-rt-14-dev   # tests/fuzz/run_fuzzers.sh (libFuzzer)
   python3 python3-numpy python3-opencv python3-openimageio python3-scipy python3-matplotlib
 )
 SUDO=""

@@ -9,6 +9,7 @@ find_package(OpenCV 4 REQUIRED COMPONENTS core imgproc imgcodecs ximgproc alpham
 find_package(Ceres 2.1 CONFIG REQUIRED)
 find_package(OpenMesh CONFIG REQUIRED)
 find_package(assimp 5.2 CONFIG REQUIRED)
+find_package(ZLIB REQUIRED)  # image_io: a PNG's pixel stream checked before libpng sees it
 find_package(CGAL 5.5 CONFIG REQUIRED)
 # OpenSubdiv: Debian 12's shipped config references a missing static library.
 find_path(OSD_INCLUDE_DIR opensubdiv/version.h REQUIRED)

@@ -18,20 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readBytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::countFiles;
+using test::FileSizeCap;
+using test::readBytes;
+
 void writeBytes(const fs::path& p, const std::string& bytes) {
   std::ofstream out(p, std::ios::binary);
   out.write(bytes.data(), std::streamsize(bytes.size()));
-}
-size_t countFiles(const fs::path& dir) {
-  size_t n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
-  return n;
 }
 
 uint32_t crc32(const std::string& data) {
@@ -479,27 +472,6 @@ TEST(ImageIo, UnknownExtensionAndBadImagesAreRefused) {
   ASSERT_TRUE(saveImage((dir / "UPPER.PNG").string(), ImageF(2, 2, 3, 0.5f)).ok());
   EXPECT_TRUE(loadImage((dir / "UPPER.PNG").string()).ok());
 }
-
-// Caps the size of files this process may write, so a write fails part-way (works as root,
-// unlike a read-only folder).
-class FileSizeCap {
- public:
-  explicit FileSizeCap(rlim_t bytes) {
-    getrlimit(RLIMIT_FSIZE, &old_);
-    previous_ = std::signal(SIGXFSZ, SIG_IGN);
-    rlimit r = old_;
-    r.rlim_cur = bytes;
-    setrlimit(RLIMIT_FSIZE, &r);
-  }
-  ~FileSizeCap() {
-    setrlimit(RLIMIT_FSIZE, &old_);
-    std::signal(SIGXFSZ, previous_);
-  }
-
- private:
-  rlimit old_{};
-  void (*previous_)(int) = nullptr;
-};
 
 TEST(ImageIo, FailedWriteLeavesTheOldFile) {
   const auto dir = test::tempDir("atomic");

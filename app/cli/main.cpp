@@ -430,7 +430,7 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   if (a.output.empty()) return usageError("estimate needs -o CAMERA.json");
   Progress progress(a.quiet);
   progress.stage("photo", 0);
-  auto photo = loadImage(photoPath);
+  auto photo = loadImage(photoPath, ImageLimits::photo());
   if (!photo) return inputError(photo.error());
   SceneDoc fixed;
   if (!a.sceneForEstimate.empty()) {

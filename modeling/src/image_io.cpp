@@ -5,16 +5,20 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 #include <thread>
 
 #include <fcntl.h>
+#include <signal.h>
+#include <zlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -40,6 +44,26 @@ fs::path tempPathBeside(const std::string& path) {
        << std::hash<std::thread::id>{}(std::this_thread::get_id()) % 100000 << '-'
        << counter.fetch_add(1) << target.extension().string();
   return target.parent_path() / name.str();
+}
+
+// Temporaries of processes that died between write and rename (a crash, kill -9, power loss)
+// would pile up beside the file: remove those whose process no longer exists. A live process
+// that reused the pid keeps them (the safe side).
+void removeStaleTemps(const std::string& path) {
+  const fs::path target(path);
+  const std::string prefix = '.' + target.stem().string() + ".inlay-tmp-";
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const long pid = std::strtol(name.c_str() + prefix.size(), nullptr, 10);
+    if (pid <= 0 || pid == long(::getpid())) continue;
+    if (::kill(pid_t(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
 }
 
 // Renames `temp` over `path`; removes `temp` on failure.
@@ -133,6 +157,7 @@ Status checkImage(const std::string& path, const ImageF& img) {
 // decode error), then renames it over `path`.
 Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec,
                             OIIO::TypeDesc bufType, const void* pixels) {
+  removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   std::error_code ec;
   auto failWith = [&](const std::string& msg) {
@@ -186,6 +211,138 @@ Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
   return writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));
 }
 
+uint32_t crc32Png(const unsigned char* data, size_t n, uint32_t crc) {
+  static const auto table = [] {
+    std::array<uint32_t, 256> t{};
+    for (uint32_t i = 0; i < 256; ++i) {
+      uint32_t c = i;
+      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      t[i] = c;
+    }
+    return t;
+  }();
+  for (size_t i = 0; i < n; ++i) crc = table[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
+  return crc;
+}
+
+uint32_t bigEndian32(const unsigned char* p) {
+  return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
+}
+
+// What IHDR says, and the concatenated IDAT bytes.
+struct PngStream {
+  uint32_t width = 0, height = 0;
+  int bitDepth = 0, colorType = 0, interlace = 0;
+  std::vector<unsigned char> idat;
+};
+
+// Bytes per row (without the filter byte) of a non-interlaced PNG; 0 for an invalid header.
+uint64_t pngRowBytes(const PngStream& png) {
+  int channels = 0;
+  switch (png.colorType) {
+    case 0: case 3: channels = 1; break;
+    case 2: channels = 3; break;
+    case 4: channels = 2; break;
+    case 6: channels = 4; break;
+    default: return 0;
+  }
+  return (uint64_t(png.width) * uint64_t(channels) * uint64_t(png.bitDepth) + 7) / 8;
+}
+
+// Inflates the pixel stream without keeping it: every row must start with a filter type 0..4
+// and the stream must hold exactly the rows IHDR promises (interlaced: must inflate cleanly).
+Status checkPngPixels(const std::string& path, const PngStream& png) {
+  const uint64_t row = pngRowBytes(png) + 1;
+  if (row == 1) return Error{path, "", "corrupt PNG: invalid IHDR colour type or bit depth"};
+  const uint64_t expected = row * png.height;
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK) return Error{path, "", "cannot inflate the PNG pixel stream"};
+  z.next_in = const_cast<unsigned char*>(png.idat.data());
+  z.avail_in = uInt(png.idat.size());
+  std::vector<unsigned char> buf(1 << 16);
+  uint64_t total = 0;
+  int rc = Z_OK;
+  bool badFilter = false;
+  while (rc == Z_OK && !badFilter) {
+    z.next_out = buf.data();
+    z.avail_out = uInt(buf.size());
+    rc = inflate(&z, Z_NO_FLUSH);
+    const uint64_t produced = buf.size() - z.avail_out;
+    for (uint64_t i = 0; png.interlace == 0 && i < produced; ++i)
+      if ((total + i) % row == 0 && buf[i] > 4) badFilter = true;
+    total += produced;
+    if (rc == Z_BUF_ERROR && produced > 0) rc = Z_OK;  // output buffer was full: go on
+  }
+  inflateEnd(&z);
+  if (badFilter) return Error{path, "", "corrupt PNG: a row has an invalid filter type"};
+  if (rc != Z_STREAM_END)
+    return Error{path, "", rc == Z_BUF_ERROR ? "truncated PNG: the pixel data ends early"
+                                             : "corrupt PNG: the compressed pixel data is invalid"};
+  if (png.interlace == 0 && total != expected)
+    return Error{path, "", "corrupt PNG: " + std::to_string(total) + " bytes of pixel data, " +
+                               std::to_string(expected) + " expected"};
+  return {};
+}
+
+// A PNG's chunk structure (lengths, CRCs, IEND) and its pixel stream, checked before libpng
+// sees the file: libpng reports corrupt data by printing to stderr itself, which would break
+// the one clear line a user gets. Files that are not PNG pass unchecked, and so do headers
+// beyond `limits` (loadImage refuses them without decoding).
+Status checkPng(const std::string& path, const ImageLimits& limits) {
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return Error{path, "", std::string("cannot open: ") + std::strerror(errno)};
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> closer(f, std::fclose);
+  unsigned char head[8];
+  if (std::fread(head, 1, 8, f) != 8 || std::memcmp(head, kSignature, 8) != 0) return {};
+  std::error_code ec;
+  const unsigned long long fileSize = fs::file_size(path, ec);
+  if (ec) return Error{path, "", "cannot read: " + ec.message()};
+  PngStream png;
+  std::vector<unsigned char> data;
+  long long at = 8;
+  for (;;) {
+    unsigned char h[8], crc[4];
+    if (std::fread(h, 1, 8, f) != 8)
+      return Error{path, "", "truncated PNG: the file ends at byte " + std::to_string(at) +
+                                 " before its IEND chunk"};
+    const uint32_t length = bigEndian32(h);
+    const std::string type(reinterpret_cast<const char*>(h + 4), 4);
+    const std::string where = "chunk '" + type + "' at byte " + std::to_string(at);
+    if (length > 0x7FFFFFFFu) return Error{path, "", "corrupt PNG: " + where + " has an invalid length"};
+    // A length beyond the file's end is refused before allocating it (the fuzzer's 1.2 GB chunk).
+    if ((unsigned long long)at + 12 + length > fileSize)
+      return Error{path, "", "truncated PNG: the file ends inside " + where};
+    try {
+      data.resize(length);
+    } catch (const std::bad_alloc&) {
+      return Error{path, "", "not enough memory for PNG " + where};
+    }
+    if (std::fread(data.data(), 1, length, f) != length || std::fread(crc, 1, 4, f) != 4)
+      return Error{path, "", "truncated PNG: the file ends inside " + where};
+    uint32_t c = crc32Png(h + 4, 4, 0xFFFFFFFFu);
+    c = crc32Png(data.data(), data.size(), c) ^ 0xFFFFFFFFu;
+    if (c != bigEndian32(crc))
+      return Error{path, "", "corrupt PNG: " + where + " fails its CRC check"};
+    if (type == "IHDR" && length == 13) {
+      png.width = bigEndian32(data.data());
+      png.height = bigEndian32(data.data() + 4);
+      png.bitDepth = data[8];
+      png.colorType = data[9];
+      png.interlace = data[12];
+    } else if (type == "IDAT") {
+      png.idat.insert(png.idat.end(), data.begin(), data.end());
+    } else if (type == "IEND") {
+      break;
+    }
+    at += 12 + (long long)length;
+  }
+  if (png.width == 0 || png.height == 0 || (long long)png.width * png.height > limits.maxPixels ||
+      png.width > uint32_t(limits.maxDimension) || png.height > uint32_t(limits.maxDimension))
+    return {};
+  return checkPngPixels(path, png);
+}
+
 }  // namespace
 
 std::optional<double> ExifInfo::focalPx(int width, int height) const {
@@ -211,6 +368,7 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
   if (!fs::exists(path, ec)) return Error{path, "", "file not found"};
   if (!fs::is_regular_file(path, ec)) return Error{path, "", "not a regular file"};
   if (fs::file_size(path, ec) == 0) return Error{path, "", "empty file"};
+  if (Status s = checkPng(path, limits); !s) return s.error();
 
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // colour as stored, not premultiplied
@@ -227,6 +385,11 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
                  "image of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
                      " pixels exceeds the limit (" + std::to_string(limits.maxPixels) +
                      " pixels, " + std::to_string(limits.maxDimension) + " per side)"};
+  if (spec.width < limits.minDimension || spec.height < limits.minDimension)
+    return Error{path, "",
+                 "image of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
+                     " pixels is too small (at least " + std::to_string(limits.minDimension) +
+                     " per side)"};
   if (spec.nchannels < 1 || spec.nchannels > 64)
     return Error{path, "", "unsupported channel count " + std::to_string(spec.nchannels)};
 
@@ -356,6 +519,7 @@ Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& lay
 }
 
 Status writeFileAtomically(const std::string& path, const std::string& bytes) {
+  removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0)

@@ -638,7 +638,7 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
             vals[k] = body.read(p.type, where);
           }
         }
-        const Vec3f pos(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
+        const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
         if (!pos.allFinite()) fail(where, "non-finite coordinate");
         m.positions[i] = pos;
         if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),

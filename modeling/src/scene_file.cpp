@@ -332,6 +332,14 @@ class Reader {
     }
   }
 
+  // Paths may lead anywhere (absolute, or out of the scene's folder: scripts write them), but
+  // they must name a regular file: never a folder, a device or a pipe.
+  static std::string whyNotAFile(const std::string& resolved) {
+    std::error_code ec;
+    if (!fs::exists(resolved, ec)) return "file not found: " + resolved;
+    return "not a regular file: " + resolved;
+  }
+
   std::string resolve(const std::string& p) const {
     fs::path q(p);
     if (q.is_relative()) q = base_ / q;
@@ -358,8 +366,7 @@ class Reader {
     if (doc.photo.empty()) fail("photo", "empty path");
     doc.photoResolved = resolve(doc.photo);
     std::error_code ec;
-    if (!fs::is_regular_file(doc.photoResolved, ec))
-      fail("photo", "file not found: " + doc.photoResolved);
+    if (!fs::is_regular_file(doc.photoResolved, ec)) fail("photo", whyNotAFile(doc.photoResolved));
 
     if (root.contains("camera")) readCamera(root["camera"], doc.camera);
     if (root.contains("layout")) readLayout(root["layout"], doc.layout);
@@ -606,7 +613,7 @@ class Reader {
         fail(mp, "unsupported mesh format '" + ext + "' (expected .obj, .ply, .gltf or .glb)");
       o.meshResolved = resolve(o.mesh);
       std::error_code ec;
-      if (!fs::is_regular_file(o.meshResolved, ec)) fail(mp, "file not found: " + o.meshResolved);
+      if (!fs::is_regular_file(o.meshResolved, ec)) fail(mp, whyNotAFile(o.meshResolved));
     }
     if (!j.contains("base_px")) fail(child(p, "base_px"), "missing");
     o.basePx = vec<2>(j["base_px"], child(p, "base_px"));

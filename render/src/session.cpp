@@ -261,6 +261,9 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     if (complete) spp += work.sampleCount;
     if (!complete && token.cancelled()) return;  // an edit or cancel(): publish nothing
     const bool outOfTime = !complete;
+    // Out of time inside the first full-resolution wave: its buffer holds no whole sample
+    // (some tiles none at all), so the last preview stays the final frame (below).
+    if (outOfTime && spp == 0 && last) break;
     auto frame = std::make_shared<RenderFrame>();
     frame->sceneVersion = v;
     frame->width = w, frame->height = h;

@@ -294,7 +294,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 
   // Photo.
   progress("photo", 0);
-  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved);
+  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved, ImageLimits::photo());
   if (!photo) return photo.error().underKey("photo");
   ps.photo = std::move(*photo);
   const int W = ps.photo.linearRgb.width, H = ps.photo.linearRgb.height;

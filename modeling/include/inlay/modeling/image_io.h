@@ -21,6 +21,9 @@ namespace inlay {
 struct ImageLimits {
   long long maxPixels = 300'000'000LL;  // decompression-bomb guard (about 17k x 17k)
   int maxDimension = 65'536;            // either side
+  int minDimension = 1;                 // either side
+  // What a photo to insert objects into must satisfy: a room needs more than a few pixels.
+  static ImageLimits photo() { return {.minDimension = 32}; }
 };
 
 // What the file says about the camera (a prior for the focal length, never a truth).
@@ -60,7 +63,8 @@ struct NamedLayer {
 Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers,
                      bool half = true);
 
-// Write `bytes` to `path` through a temporary file in the same folder and a rename.
+// Write `bytes` to `path` through a temporary file in the same folder and a rename (fsync
+// before it). Temporaries left beside `path` by processes that died mid-save are removed.
 Status writeFileAtomically(const std::string& path, const std::string& bytes);
 
 // Resample (area average when shrinking, bilinear when enlarging).

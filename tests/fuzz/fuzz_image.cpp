@@ -1,0 +1,36 @@
+// Fuzz target: loadImage (OpenImageIO behind our checks: PNG structure, header limits,
+// orientation, channel handling). The file is named by its signature, as a user's would be.
+#include "fuzz_support.h"
+#include "inlay/modeling/image_io.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace {
+
+const char* extensionFor(const uint8_t* d, size_t n) {
+  auto starts = [&](const char* magic, size_t len) { return n >= len && std::memcmp(d, magic, len) == 0; };
+  if (starts("\xFF\xD8", 2)) return ".jpg";
+  if (starts("II*\0", 4) || starts("MM\0*", 4)) return ".tif";
+  if (starts("\x76\x2F\x31\x01", 4)) return ".exr";
+  if (starts("#?", 2)) return ".hdr";
+  return ".png";
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string path =
+      inlay::fuzz::writeInput(std::string("input") + extensionFor(data, size), data, size);
+  inlay::ImageLimits limits;
+  limits.maxPixels = 1 << 22;
+  limits.maxDimension = 1 << 14;
+  auto loaded = inlay::loadImage(path, limits);
+  if (loaded) {  // success: a finite, non-negative, 3-channel image
+    const inlay::ImageF& img = loaded->linearRgb;
+    if (img.channels != 3 || img.empty()) __builtin_trap();
+    for (float v : img.data)
+      if (!std::isfinite(v) || v < 0) __builtin_trap();
+  }
+  return 0;
+}
