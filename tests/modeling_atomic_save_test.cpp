@@ -120,16 +120,18 @@ TEST(AtomicSave, WriteFailingAtEveryPointLeavesOldOrNew) {
 
 const char* kChildEnv = "INLAY_ATOMIC_SAVE_CHILD";
 
-// Run only as the child of KilledMidSaveLeavesOldOrNew: saves the new contents over and over
-// until killed.
-TEST(AtomicSave, ChildSavesUntilKilled) {
-  const char* arg = std::getenv(kChildEnv);  // "SIZE:PATH"
-  if (!arg) GTEST_SKIP() << "helper of KilledMidSaveLeavesOldOrNew";
+// The saver of KilledMidSaveLeavesOldOrNew: this same binary started with kChildEnv set
+// ("SIZE:PATH") saves the new contents over and over, before any test runs, until it is killed.
+// (A static initialiser rather than a test, so ctest lists no helper that always skips.)
+[[maybe_unused]] const bool kIsSaverChild = [] {
+  const char* arg = std::getenv(kChildEnv);
+  if (!arg) return false;
   const std::string spec(arg);
   const std::string path = spec.substr(spec.find(':') + 1);
   const std::string bytes(std::stoul(spec), 'n');
-  for (;;) ASSERT_TRUE(writeFileAtomically(path, bytes).ok());
-}
+  for (;;)
+    if (!writeFileAtomically(path, bytes).ok()) std::_Exit(3);
+}();
 
 pid_t spawnSaver(const fs::path& dest, size_t bytes) {
   const std::string env = std::string(kChildEnv) + "=" + std::to_string(bytes) + ":" + dest.string();
@@ -138,8 +140,7 @@ pid_t spawnSaver(const fs::path& dest, size_t bytes) {
   envp.push_back(const_cast<char*>(env.c_str()));
   envp.push_back(nullptr);
   std::string exe = fs::read_symlink("/proc/self/exe").string();
-  std::string filter = "--gtest_filter=AtomicSave.ChildSavesUntilKilled";
-  char* argv[] = {exe.data(), filter.data(), nullptr};
+  char* argv[] = {exe.data(), nullptr};
   pid_t pid = -1;
   if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv, envp.data()) != 0) return -1;
   return pid;
