@@ -150,10 +150,7 @@ TEST(RoomMaterial, GlossyFloorBlursTheReflection) {
   for (const auto& [x, y] : farPixels(mirror.camera)) ASSERT_EQ(glossy.diff.at(x, y), 0.f) << x << ", " << y;
 }
 
-bool sameBits(const ImageF& a, const ImageF& b) {
-  return a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
+using test::sameBits;
 
 // A lit room with a mirror floor and a glossy back wall, and an object outside it: every sum
 // with the object equals the one without it, bit for bit, and the composite is the photo.
