@@ -43,6 +43,40 @@ TEST(Engine, NoObjectGivesThePhotoBitForBit) {
   EXPECT_EQ(differing, 0u);
 }
 
+// "room.materials": the floor marked as a mirror reaches the render scene; with no object the
+// composite is still the photo bit for bit; a surface this room lacks is refused by its key.
+TEST(Engine, RoomMaterialsReachTheRenderSceneAndKeepThePhoto) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  RoomMaterialKeys mirror;
+  mirror.preset = "mirror";
+  doc.room.materials["floor"] = mirror;
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  const auto& surfaces = ps->renderScene.room.surfaces;
+  const auto& materials = ps->renderScene.roomMaterials;
+  ASSERT_EQ(materials.size(), surfaces.size());
+  size_t marked = 0;
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    marked += materials[i].has_value();
+    if (surfaces[i].name == "floor") {
+      ASSERT_TRUE(materials[i].has_value());
+      EXPECT_EQ(materials[i]->kind, Material::Kind::Mirror);
+    }
+  }
+  EXPECT_EQ(marked, 1u);
+  const ImageF composite = compositeOf(*ps, renderFrame(*ps, 2));
+  size_t differing = 0;
+  for (size_t i = 0; i < composite.data.size(); ++i) differing += composite.data[i] != ps->photo.linearRgb.data[i];
+  EXPECT_EQ(differing, 0u);
+
+  doc.room.materials["surface_99_top"] = mirror;
+  auto refused = prepareScene(doc);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().key, "room.materials.surface_99_top");
+  EXPECT_NE(refused.error().reason.find("no surface"), std::string::npos);
+}
+
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
   auto ps = prepareScene(exampleDoc());
   ASSERT_TRUE(ps.ok()) << ps.error().message();

@@ -219,6 +219,31 @@ TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
   EXPECT_LT(text.find("\"objects\""), text.find("\"render\""));
 }
 
+// "room.materials": surfaces marked as a real mirror or a glossy floor, by surface name.
+TEST(SceneFile, RoomMaterialsParseAndRoundTrip) {
+  const fs::path dir = sceneDir("room_materials");
+  auto r = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "room": {"materials": {
+            "floor": {"preset": "glossy", "roughness": 0.1, "ior": 1.4},
+            "wall_left": {"preset": "mirror", "reflectance": [0.8, 0.85, 0.9]},
+            "surface_2_top": {}}}})",
+      dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_TRUE(r->warnings.empty());
+  const auto& m = r->doc.room.materials;
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m.at("floor").preset, "glossy");
+  EXPECT_EQ(m.at("floor").roughness, 0.1);
+  EXPECT_EQ(m.at("floor").ior, 1.4);
+  EXPECT_EQ(m.at("wall_left").preset, "mirror");
+  EXPECT_EQ(m.at("wall_left").reflectance, Vec3(0.8, 0.85, 0.9));
+  EXPECT_EQ(m.at("surface_2_top").preset, "glossy");  // the default preset
+  auto again = parseSceneJson(sceneToJson(r->doc), dir.string(), "scene.json");
+  ASSERT_TRUE(again.ok()) << again.error().message();
+  EXPECT_EQ(sceneToJson(again->doc), sceneToJson(r->doc));
+  EXPECT_EQ(again->doc.room.materials.at("wall_left").reflectance, Vec3(0.8, 0.85, 0.9));
+}
+
 TEST(SceneFile, SaveRefusesWhatCouldNotBeReadBack) {
   const fs::path dir = sceneDir("save_refuses");
   writeText(dir / "scene.json", kFullScene);
@@ -422,6 +447,13 @@ INSTANTIATE_TEST_SUITE_P(
                 "objects[0].subdivide", "[0, 5]"},
         BadCase{"subdivide_too_many", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 9}])",
                 "objects[0].subdivide", "[0, 5]"},
+        BadCase{"room_surface_name", R"(, "room": {"materials": {"flor": {"preset": "mirror"}}})",
+                "room.materials.flor", "unknown room surface"},
+        BadCase{"room_preset", R"(, "room": {"materials": {"floor": {"preset": "glass"}}})",
+                "room.materials.floor.preset", "unknown room material preset"},
+        BadCase{"room_roughness", R"(, "room": {"materials": {"wall_left": {"roughness": 2}}})",
+                "room.materials.wall_left.roughness", "[0, 1]"},
+        BadCase{"room_materials_type", R"(, "room": {"materials": [1]})", "room.materials", "object"},
         BadCase{"spp_negative", R"(, "render": {"spp": -4})", "render.spp", ">= 1"},
         BadCase{"spp_fraction", R"(, "render": {"spp": 2.5})", "render.spp", "integer"},
         BadCase{"seconds_negative", R"(, "render": {"seconds": -1})", "render.seconds", "> 0"},

@@ -514,10 +514,7 @@ RenderScene closedRoomScene(int w, int h, bool objectInside) {
   return s;
 }
 
-bool sameBits(const ImageF& a, const ImageF& b) {
-  return a.data.size() == b.data.size() &&
-         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
-}
+using test::sameBits;
 
 ImageF randomPhoto(int w, int h) {
   ImageF photo(w, h, 3);

@@ -6,6 +6,7 @@
 #include "inlay/render/scene.h"
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 namespace inlay::test {
@@ -111,6 +112,12 @@ inline Mat4 translation(const Vec3& t) {
   Mat4 m = Mat4::Identity();
   m.topRightCorner<3, 1>() = t;
   return m;
+}
+
+// Bit-for-bit equality of two images (the differential render's zero-difference tests).
+inline bool sameBits(const ImageF& a, const ImageF& b) {
+  return a.data.size() == b.data.size() &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
 }
 
 inline bool allFinite(const ImageF& im) {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -161,6 +162,11 @@ double number(const json& j, const std::string& path) {
 double positive(const json& j, const std::string& path) {
   const double v = number(j, path);
   if (!(v > 0)) fail(path, "must be > 0 (got " + j.dump() + ")");
+  return v;
+}
+double indexOfRefraction(const json& j, const std::string& path) {
+  const double v = number(j, path);
+  if (!(v >= 1.0 && v <= 5.0)) fail(path, "must be in [1, 5] (got " + j.dump() + ")");
   return v;
 }
 double inUnitRange(const json& j, const std::string& path) {
@@ -351,7 +357,7 @@ class Reader {
   SceneDoc read(const json& root) {
     object(root, "");
     knownKeys(root, "", {"format", "version", "photo", "camera", "layout", "lights", "shafts",
-                         "surfaces", "occluders", "objects", "render"});
+                         "surfaces", "occluders", "objects", "room", "render"});
     SceneDoc doc;
     if (!root.contains("format")) fail("format", "missing (expected \"inlay-scene\")");
     if (string(root["format"], "format") != "inlay-scene")
@@ -397,6 +403,7 @@ class Reader {
       for (size_t i = 0; i < a.size(); ++i)
         doc.objects.push_back(readObject(a[i], child("objects", i)));
     }
+    if (root.contains("room")) readRoom(root["room"], doc.room);
     if (root.contains("render")) readRender(root["render"], doc.render);
     return doc;
   }
@@ -586,11 +593,41 @@ class Reader {
                                    "' (expected diffuse, glossy, metal, mirror, glass, rough_glass, emissive or asset)");
     if (j.contains("albedo")) m.albedo = albedo(j["albedo"], child(p, "albedo"));
     if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
-    if (j.contains("ior")) {
-      m.ior = number(j["ior"], child(p, "ior"));
-      if (!(m.ior >= 1.0 && m.ior <= 5.0)) fail(child(p, "ior"), "must be in [1, 5]");
-    }
+    if (j.contains("ior")) m.ior = indexOfRefraction(j["ior"], child(p, "ior"));
     if (j.contains("rgb")) m.rgb = nonNegativeRgb(j["rgb"], child(p, "rgb"));
+    return m;
+  }
+
+  void readRoom(const json& j, RoomKeys& room) {
+    object(j, "room");
+    knownKeys(j, "room", {"materials"});
+    if (!j.contains("materials")) return;
+    const std::string p = "room.materials";
+    object(j["materials"], p);
+    // The spelling of every name SceneGeometry gives a surface; whether this room has it is
+    // the engine's check (it knows how many surfaces and occluders there are).
+    static const std::regex names(
+        "floor|ceiling|wall_left|wall_right|wall_back|wall_rear|surface_[0-9]+_(top|side)|occluder_[0-9]+_card");
+    for (auto it = j["materials"].begin(); it != j["materials"].end(); ++it) {
+      const std::string key = child(p, it.key());
+      if (!std::regex_match(it.key(), names))
+        fail(key, "unknown room surface '" + it.key() +
+                      "' (expected floor, ceiling, wall_left, wall_right, wall_back, wall_rear, "
+                      "surface_<i>_top, surface_<i>_side or occluder_<i>_card)");
+      room.materials[it.key()] = readRoomMaterial(it.value(), key);
+    }
+  }
+
+  RoomMaterialKeys readRoomMaterial(const json& j, const std::string& p) {
+    object(j, p);
+    knownKeys(j, p, {"preset", "roughness", "ior", "reflectance"});
+    RoomMaterialKeys m;
+    if (j.contains("preset")) m.preset = string(j["preset"], child(p, "preset"));
+    if (m.preset != "glossy" && m.preset != "mirror" && m.preset != "diffuse")
+      fail(child(p, "preset"), "unknown room material preset '" + m.preset + "' (expected glossy, mirror or diffuse)");
+    if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
+    if (j.contains("ior")) m.ior = indexOfRefraction(j["ior"], child(p, "ior"));
+    if (j.contains("reflectance")) m.reflectance = albedo(j["reflectance"], child(p, "reflectance"));
     return m;
   }
 
@@ -829,6 +866,13 @@ ojson buildJson(const SceneDoc& doc) {
       a.push_back(obj);
     }
     j["objects"] = a;
+  }
+  if (!doc.room.materials.empty()) {
+    ojson mats = ojson::object();
+    for (const auto& [name, m] : doc.room.materials)
+      mats[name] = ojson{{"preset", m.preset}, {"roughness", m.roughness}, {"ior", m.ior},
+                         {"reflectance", toJson(m.reflectance)}};
+    j["room"] = ojson{{"materials", mats}};
   }
   ojson r;
   r["spp"] = doc.render.spp;

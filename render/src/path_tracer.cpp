@@ -19,7 +19,8 @@
 // full weight. Emissive objects are lights too: NEE picks them among the area lights by the same
 // rule and samples a point uniformly by area on their triangles (MIS with BSDF hits likewise);
 // they exist in the with-scene only, so their light reaches the with-sums alone.
-// Materials (bsdf.h): room surfaces are Lambertian with the projected albedo; objects are
+// Materials (bsdf.h): room surfaces are Lambertian with the projected albedo, or Glossy over it
+// or Mirror where the user marked them (RenderScene::roomMaterials, in both images); objects are
 // Lambertian, Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Conductor
 // (GGX metal), Mirror, clear smooth Glass (Fresnel, Snell, no absorption, no eta^2 radiance
 // scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; a specular vertex: no
@@ -367,6 +368,23 @@ struct PathTracer::Impl {
     return selectProb * d2 / (l.area * cosL);
   }
 
+  // The material the user gave room surface `id` (Glossy or Mirror), or null: Lambertian.
+  const Material* roomMaterial(int id) const {
+    if (id < 0 || size_t(id) >= scene.roomMaterials.size() || !scene.roomMaterials[size_t(id)]) return nullptr;
+    const Material& m = *scene.roomMaterials[size_t(id)];
+    return m.kind == Material::Kind::Glossy || m.kind == Material::Kind::Mirror ? &m : nullptr;
+  }
+  // A marked room surface's BSDF; a glossy one keeps the projected albedo already in `bsdf`.
+  static void setRoomBsdf(const Material& m, SurfaceBsdf& bsdf) {
+    bsdf.kind = m.kind;
+    if (m.kind == Material::Kind::Mirror) bsdf.albedo = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
+    setLobeParameters(m, bsdf);
+  }
+  static void setLobeParameters(const Material& m, SurfaceBsdf& bsdf) {
+    bsdf.alpha = std::max(1e-4, m.roughness * m.roughness);
+    bsdf.ior = m.ior > 1e-3 && std::isfinite(m.ior) ? m.ior : 1.5;
+  }
+
   Vec3 clampIndirect(const Vec3& c, bool indirect) const {
     if (!indirect || options.clampRadiance <= 0) return c;
     const double m = maxComponent(c);
@@ -476,10 +494,20 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
       return;
     }
-    if (hit.kind == Hit::Kind::Room && depth >= 1) {
+    const Material* reassigned = hit.kind == Hit::Kind::Room ? roomMaterial(hit.index) : nullptr;
+    if (hit.kind == Hit::Kind::Room && depth >= 1 && !reassigned) {
       // A bounce that lands on room the camera sees takes the photo's radiance there (all the
       // light that point sends, so the path ends). Camera rays never do: with and without must
       // both be rendered there, or an object's shadow would vanish from the difference.
+      //
+      // Never on a surface marked mirror or glossy: the photo shows the radiance it sends toward
+      // the camera only, and its specular part depends on the direction (a mirror pixel shows
+      // whatever lies in the camera's mirror direction, not this bounce's). Taking it would
+      // give the bounce the wrong reflection and, where the path's own specular continuation is
+      // traced too, count the reflected light twice. Such a surface is path traced at every
+      // depth with its BSDF (NEE for its lobes, a bounce on), and its bounce ends on Lambertian
+      // room where the photo's radiance does hold for every direction. A Lambertian point the
+      // real mirror lights is unaffected: the photo there already holds that light.
       Vec3 photo;
       if (scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) {
         add(clampIndirect(Vec3(throughput.cwiseProduct(photo)), indirectHit));
@@ -490,6 +518,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (hit.kind == Hit::Kind::Room) {
       bsdf.kind = Material::Kind::Diffuse;
       bsdf.albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
+      if (reassigned) setRoomBsdf(*reassigned, bsdf);
     } else {
       const Material& m = objects[size_t(hit.index)].material;
       if (m.kind == Material::Kind::Emissive) {
@@ -504,8 +533,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       }
       bsdf.kind = m.kind;
       bsdf.albedo = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
-      bsdf.alpha = std::max(1e-4, m.roughness * m.roughness);
-      bsdf.ior = m.ior > 1e-3 && std::isfinite(m.ior) ? m.ior : 1.5;
+      setLobeParameters(m, bsdf);
     }
     if (depth >= options.maxDepth) return;
 

@@ -7,6 +7,7 @@
 #include "inlay/render/gltf_export.h"
 #include "inlay/modeling/subdivide.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -139,6 +140,24 @@ Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object) {
 
 Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
   return exportGltf(scene.renderScene, path, {}, warnings);
+}
+
+Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys, const SceneGeometry& room) {
+  std::vector<std::optional<Material>> out(room.surfaces.size());
+  for (const auto& [name, k] : keys.materials) {
+    const auto it = std::find_if(room.surfaces.begin(), room.surfaces.end(),
+                                 [&](const Surface& s) { return s.name == name; });
+    if (it == room.surfaces.end())
+      return Error{"", "room.materials." + name, "this room has no surface '" + name + "'"};
+    if (k.preset == "diffuse") continue;
+    Material m;
+    m.kind = k.preset == "mirror" ? Material::Kind::Mirror : Material::Kind::Glossy;
+    m.albedo = k.reflectance;  // the mirror's; a glossy surface keeps the projected albedo
+    m.roughness = k.roughness;
+    m.ior = k.ior;
+    out[size_t(it - room.surfaces.begin())] = m;
+  }
+  return out;
 }
 
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
@@ -351,6 +370,9 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     if (!card) return card.error();
     ps.geometry.surfaces.push_back(std::move(*card));
   }
+  // Marked surfaces are checked against this room now, before the costly lighting stage.
+  auto roomMaterials = roomMaterialsOf(doc.room, ps.geometry);
+  if (!roomMaterials) return roomMaterials.error();
   ps.stageSeconds.emplace_back("room", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
 
@@ -435,6 +457,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   RenderScene& rs = ps.renderScene;
   rs.camera = ps.camera;
   rs.room = ps.geometry;
+  rs.roomMaterials = std::move(*roomMaterials);
   rs.lights = ps.lighting.lights;
   rs.suns = ps.lighting.suns;
   rs.roomAlbedo.camera = ps.camera;

@@ -9,6 +9,7 @@
 #include "inlay/modeling/core.h"
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -94,6 +95,22 @@ struct ObjectKeys {
   MaterialKeys material;
 };
 
+// "room": {"materials": {"<surface name>": {...}}}: a real surface of the photo marked as
+// reflective. Names are the room's surface names (floor, ceiling, wall_left, wall_right,
+// wall_back, wall_rear, surface_<i>_top, surface_<i>_side, occluder_<i>_card); the parser checks
+// their spelling, the engine that the room has them.
+struct RoomMaterialKeys {
+  std::string preset = "glossy";     // "glossy" (the projected albedo under a dielectric coat)
+                                     // | "mirror" | "diffuse" (as if unmarked)
+  double roughness = 0.2;            // glossy
+  double ior = 1.5;                  // glossy: the coat
+  Vec3 reflectance{0.9, 0.9, 0.9};   // mirror
+};
+
+struct RoomKeys {
+  std::map<std::string, RoomMaterialKeys> materials;  // by surface name
+};
+
 struct RenderKeys {
   int spp = 256;
   std::optional<double> seconds;     // null / missing: no time limit
@@ -111,6 +128,7 @@ struct SceneDoc {
   std::vector<SurfaceKeys> surfaces;
   std::vector<OccluderKeys> occluders;
   std::vector<ObjectKeys> objects;
+  RoomKeys room;
   RenderKeys render;
 };
 

@@ -93,6 +93,11 @@ struct RenderScene {
   Camera camera;
   SceneGeometry room;
   ProjectedAlbedo roomAlbedo;
+  // Room surfaces the user marked as a real mirror or a glossy floor, by surface id (shorter
+  // than room.surfaces or nullopt: Lambertian with the projected albedo). Glossy takes the
+  // projected albedo as its base colour (its `albedo` is ignored); Mirror reflects `albedo`.
+  // Only Glossy and Mirror are meant here; any other kind renders as the Lambertian default.
+  std::vector<std::optional<Material>> roomMaterials;
   std::vector<AreaLight> lights;
   std::vector<SunLight> suns;
   std::vector<InsertedObject> objects;

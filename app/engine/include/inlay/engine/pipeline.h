@@ -98,6 +98,10 @@ Status exportSceneGltf(const PreparedScene& scene, const std::string& path,
 // The renderer's material for the scene file's material keys; `meshObject` (may be null)
 // supplies the file's own material for preset "asset" (its first material).
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);
+// RenderScene::roomMaterials from the scene file's "room.materials": one entry per surface of
+// `room`, nullopt where unmarked (or "diffuse"). A name this room does not have is an error
+// naming "room.materials.<name>".
+Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys, const SceneGeometry& room);
 
 // Path of the bundled example scene (resources/example/scene.json) in the source tree or the
 // install prefix; empty when not found.
