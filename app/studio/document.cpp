@@ -164,17 +164,15 @@ class ObjectListCommand : public QUndoCommand {
 
 
 Document::Document(QObject* parent) : QObject(parent) {
-  qRegisterMetaType<PrepareResult>();
   thread_.setObjectName(QStringLiteral("inlay-prepare"));
   worker_ = new PrepareWorker;
   worker_->moveToThread(&thread_);
   connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
-  connect(worker_, &PrepareWorker::progress, this,
-          [this](quint64 jobId, const QString& stage, double fraction) {
-            if (jobId == jobId_ && state_ == State::Preparing)
-              Q_EMIT prepareProgress(stage, fraction);
-          });
-  connect(worker_, &PrepareWorker::finished, this, &Document::onPrepared);
+  connect(worker_, &PrepareWorker::progressed, this, [this] {
+    const PrepareWorker::Progress p = worker_->latestProgress();
+    if (p.jobId == jobId_ && state_ == State::Preparing) Q_EMIT prepareProgress(p.stage, p.fraction);
+  });
+  connect(worker_, &PrepareWorker::finished, this, [this] { onPrepared(worker_->takeResult()); });
   thread_.start();
 }
 
@@ -277,9 +275,7 @@ void Document::prepare() {
   prepareError_.clear();
   state_ = State::Preparing;
   Q_EMIT changed({ChangeEvent::PrepareStarted});
-  QMetaObject::invokeMethod(
-      worker_, [w = worker_, id = jobId_, doc = doc_, token = cancel_] { w->run(id, doc, token); },
-      Qt::QueuedConnection);
+  worker_->submit(jobId_, doc_, cancel_);
 }
 
 void Document::cancelPrepare() {

@@ -66,7 +66,7 @@ class RenderController : public QObject {
 
  private:
   void onDocumentChanged(const ChangeEvent& event);
-  void takeFrame();
+  Q_INVOKABLE void takeFrame();  // by name from the render thread (see the constructor)
   void startScene();
   void request(uint64_t version);
 

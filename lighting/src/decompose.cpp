@@ -2,7 +2,7 @@
 
 #include <opencv2/core.hpp>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -19,7 +19,7 @@ using Clock = std::chrono::steady_clock;
 
 template <class F>
 void forRows(int H, F&& f) {
-  tbb::parallel_for(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
+  parallelFor(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
     for (int y = r.begin(); y < r.end(); ++y) f(y);
   });
 }

@@ -7,7 +7,7 @@
 #include <ceres/ceres.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -177,7 +177,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
 
   // 1. The first surface behind every pixel.
   std::vector<PixelSurface> ps(size_t(W) * H);
-  tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < W; ++x) {
         const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
@@ -283,7 +283,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                                             opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
   };
   // Grid samples: E_j once.
-  tbb::parallel_for(tbb::blocked_range<int>(0, GH), [&](const tbb::blocked_range<int>& rows) {
+  parallelFor(tbb::blocked_range<int>(0, GH), [&](const tbb::blocked_range<int>& rows) {
     for (int gy = rows.begin(); gy < rows.end(); ++gy) {
       if (stop()) return;
       for (int gx = 0; gx < GW; ++gx) {
@@ -304,7 +304,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   auto spread = [&](int dims, const std::function<double(size_t g, int d)>& gridValue,
                     const std::function<void(int x, int y, const double* v)>& store,
                     const std::function<void(int x, int y, double* v)>& compute) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
       std::vector<double> v(size_t(std::max(dims, 1)));
       for (int y = rows.begin(); y < rows.end(); ++y)
         for (int x = 0; x < W; ++x) {
@@ -341,7 +341,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
            });
   // Suns at every pixel: one ray each, and the shaft's edge stays sharp.
   if (K > 0)
-    tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
       for (int y = rows.begin(); y < rows.end(); ++y)
         for (int x = 0; x < W; ++x) {
           const auto& p = ps[size_t(y) * W + x];
@@ -354,7 +354,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (stop()) return cancelled();
 
   auto gatherAll = [&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
+    parallelFor(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t g = r.begin(); g < r.end(); ++g) {
         if (stop()) return;
         if (gridSurface[g] < 0) continue;
@@ -381,7 +381,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     for (size_t i = 0; i < P.point.size(); ++i) P.gamma[i] = model.gammaMean[size_t(P.surface[i])];
     std::vector<Vec3> next(P.point.size());
     for (int sweep = 0; sweep < opt.patchSweeps; ++sweep) {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
+      parallelFor(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t i = r.begin(); i < r.end(); ++i)
           next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i],
                                            opt.patchSamples, uint32_t(i) * 2654435761u + uint32_t(sweep),

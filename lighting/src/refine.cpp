@@ -5,7 +5,7 @@
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -109,7 +109,7 @@ class Refinement {
     const Vec3 shift = centre - L.centre();
     for (auto& c : L.cornersWorld) c += shift;
     std::vector<double> e(px_.size(), 0.0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, px_.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+    parallelFor(tbb::blocked_range<size_t>(0, px_.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i < r.end(); ++i) {
         const GridPixel& p = px_[i];
         e[i] = tracer_.unitLightIrradianceOverPi(L, p.point + 1e-5 * p.normal, p.normal,
@@ -458,7 +458,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   out.pixels = int(px.size());
   std::vector<std::vector<double>> sunE(suns.size(), std::vector<double>(px.size(), 0.0));
   for (size_t k = 0; k < suns.size(); ++k)
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+    parallelFor(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i < r.end(); ++i)
         sunE[k][i] = unitSunIrradianceOverPi(tracer, geometry, suns[k], px[i].point + 1e-5 * px[i].normal,
                                              px[i].normal);

@@ -53,7 +53,7 @@
 #include "inlay/render/path_tracer.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -968,7 +968,7 @@ bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count
   std::atomic<bool> stopped{false};
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& r) {
+    parallelFor(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& r) {
       for (int t = r.begin(); t != r.end(); ++t) {
         if (stopped.load(std::memory_order_relaxed) || (cancel && cancel->shouldStop())) {
           stopped = true;

@@ -7,7 +7,7 @@
 #include "inlay/render/scene.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 
 #include <cmath>
 
@@ -144,7 +144,7 @@ void ProjectedAlbedo::computeFirstSurfaces(const SceneGeometry& geometry) {
   firstSurfacePerPixel.assign(size_t(std::max(0, w)) * std::max(0, h), -1);
   if (w <= 0 || h <= 0 || camera.widthPx <= 0 || camera.heightPx <= 0) return;
   const RoomTracer tracer(geometry);
-  tbb::parallel_for(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+  parallelFor(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < w; ++x) {
         const Vec2 px((x + 0.5) * camera.widthPx / w, (y + 0.5) * camera.heightPx / h);

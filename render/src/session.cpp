@@ -6,7 +6,7 @@
 #include "inlay/render/session.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -113,7 +113,7 @@ bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, int count, 
   std::atomic<bool> stopped{false};
   tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
+    parallelFor(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
       for (int t = r.begin(); t != r.end() && !stopped; ++t) {
         const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
         for (int y = y0; y < std::min(b.height, y0 + kTile) && !stopped; ++y)
