@@ -28,6 +28,8 @@ import cv2
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import benchlib  # noqa: E402
 RUNS = ["refined", "initial", "true_lights", "true_albedo", "true_both"]
 
 
@@ -61,24 +63,17 @@ def centre(corners):
 def main():
     a = sys.argv[1:]
     cli = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     spp = int(opt("--spp", "32"))
     runs = opt("--runs", ",".join(RUNS)).split(",")
-    shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
-    sdir = os.path.join(shared, "scenes")
-    harness = os.path.join(shared, "tools", "harness.py")
-    if not os.path.isdir(sdir):
+    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
+    if sdir is None:
         print("skipped: no ../shared/scenes")
         return 0
-    only = opt("--scenes", "")
-    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
-    if only:
-        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
     os.makedirs(out, exist_ok=True)
     py = sys.executable
-    base = {json.loads(l)["scene"]: json.loads(l) for l in
-            subprocess.run([py, harness, "baselines", sdir], capture_output=True, text=True, check=True).stdout.splitlines()}
+    base = benchlib.harness_baselines(harness, sdir)
     rows, objective_rows = [], []
     for name in names:
         sd = os.path.join(sdir, name)
@@ -132,14 +127,8 @@ def main():
         print(json.dumps(row), flush=True)
     if not rows:
         return 1
-    keys = []
-    for r in rows:
-        keys += [k for k in r if k not in keys]
     csvp = os.path.join(out, "lights.csv")
-    with open(csvp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=keys)
-        w.writeheader()
-        w.writerows(rows)
+    benchlib.write_csv(csvp, rows)
     with open(os.path.join(out, "lights_objective.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=["scene", "seconds", "objective"])
         w.writeheader()

@@ -13,12 +13,14 @@ band of 4 px around the table's outline inside the object's neighbourhood (the o
 
 usage: bench_modeling.py BUILD_DIR [--out DIR] [--repeat N] [--render] [--seconds S]
 """
-import csv, glob, json, os, subprocess, sys
+import glob, json, os, subprocess, sys
 
 import cv2
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import benchlib  # noqa: E402
 
 
 def main():
@@ -169,14 +171,8 @@ def main():
                     row["edge_rmse"] = round(float(np.sqrt(((comp - truth)[edge] ** 2).mean())), 5)
                     row["edge_rmse_do_nothing"] = round(float(np.sqrt(((photo - truth)[edge] ** 2).mean())), 5)
             rows.append(row)
-    keys = []
-    for r in rows:
-        keys += [k for k in r if k not in keys]
     path = os.path.join(out, "bench_modeling.csv")
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=keys)
-        w.writeheader()
-        w.writerows(rows)
+    benchlib.write_csv(path, rows)
     for r in rows:
         print(json.dumps(r))
     print("wrote", path)

@@ -14,31 +14,26 @@ estimates them); the CSV and PNG names then end in _auto.
 import csv, json, os, statistics, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import benchlib  # noqa: E402
 
 
 def main():
     a = sys.argv[1:]
     cli = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     budgets = [float(x) for x in opt("--budgets", "2,4,8,16,32").split(",")]
     repeat = int(opt("--repeat", "1"))
     mode = opt("--mode", "assisted")
     tag = "" if mode == "assisted" else "_" + mode
-    shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
-    sdir = os.path.join(shared, "scenes")
-    harness = os.path.join(shared, "tools", "harness.py")
-    if not os.path.isdir(sdir):
+    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
+    if sdir is None:
         print("skipped: no ../shared/scenes")
         return 0
-    only = opt("--scenes", "")
-    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
-    if only:
-        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
     os.makedirs(out, exist_ok=True)
     py = sys.executable
-    base = {json.loads(l)["scene"]: json.loads(l) for l in
-            subprocess.run([py, harness, "baselines", sdir], capture_output=True, text=True, check=True).stdout.splitlines()}
+    base = benchlib.harness_baselines(harness, sdir)
     rows = []
     for name in names:
         sd = os.path.join(sdir, name)

@@ -1,0 +1,46 @@
+"""What the benchmark scripts share: their options, the ../shared rooms and the harness's
+baselines, and CSV output. Imported by the scripts beside it (run them with /usr/bin/python3)."""
+import csv, json, os, subprocess, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def option(argv, key, default):
+    """The value after `key` in argv, or `default`."""
+    return argv[argv.index(key) + 1] if key in argv else default
+
+
+def shared_dir():
+    return os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
+
+
+def scene_rooms(only=""):
+    """(scenes folder, harness.py, room names with a truth.json, filtered by the comma-separated
+    prefixes in `only`); the folder is None when ../shared/scenes is absent."""
+    shared = shared_dir()
+    sdir = os.path.join(shared, "scenes")
+    harness = os.path.join(shared, "tools", "harness.py")
+    if not os.path.isdir(sdir):
+        return None, harness, []
+    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
+    if only:
+        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
+    return sdir, harness, names
+
+
+def harness_baselines(harness, sdir):
+    """The harness's uniform-object baseline scores, by room name."""
+    out = subprocess.run([sys.executable, harness, "baselines", sdir], capture_output=True, text=True,
+                         check=True).stdout.splitlines()
+    return {json.loads(l)["scene"]: json.loads(l) for l in out}
+
+
+def write_csv(path, rows):
+    """Rows (dicts) to CSV; the columns are every key in the order first seen."""
+    keys = []
+    for r in rows:
+        keys += [k for k in r if k not in keys]
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(rows)
