@@ -17,6 +17,87 @@ struct BsdfSample {
 
 inline Vec3 reflect(const Vec3& wo, const Vec3& n) { return 2.0 * wo.dot(n) * n - wo; }
 
+// A GGX microfacet normal sampled in proportion to its visible area from wo (Heitz 2018,
+// "Sampling the GGX Distribution of Visible Normals"): pdf G1(wo) max(0, wo.h) D(h) / wo.z.
+inline Vec3 sampleGgxVisibleNormal(const Vec3& wo, double alpha, double u1, double u2) {
+  const Vec3 v = Vec3(alpha * wo.x(), alpha * wo.y(), wo.z()).normalized();  // the stretched view
+  const double lenSq = v.x() * v.x() + v.y() * v.y();
+  const Vec3 t1 = lenSq > 0 ? Vec3(Vec3(-v.y(), v.x(), 0) / std::sqrt(lenSq)) : Vec3(1, 0, 0);
+  const Vec3 t2 = v.cross(t1);
+  const double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
+  const double p1 = r * std::cos(phi), s = 0.5 * (1.0 + v.z());
+  const double p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * r * std::sin(phi);
+  const Vec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * v;
+  return Vec3(alpha * nh.x(), alpha * nh.y(), std::max(0.0, nh.z())).normalized();
+}
+
+// Directional albedo E(mu, alpha) of the GGX reflection lobe with Fresnel 1 (single
+// scattering, Smith G1 G1), and its cosine-weighted mean E_avg(alpha) = 2 int E mu dmu: the
+// energy that multiple scattering between microfacets would return (Kulla & Conty 2017,
+// "Revisiting Physically Based Shading at Imageworks"). Computed once, on first use, by
+// sampling the visible normals (128 Sobol' points per node, each weighing G1(wi): low variance
+// even at grazing angles, where D(h) cos(h) sampling is noisy): a pure function of the code.
+// Nodes are uniform in sqrt(mu) and in roughness = sqrt(alpha) (E changes fastest at grazing
+// mu and small alpha); lookups interpolate bilinearly in those, and E_avg integrates that
+// interpolant, so the compensated lobe's albedo is 1 for the table's own E.
+class GgxAlbedoTable {
+ public:
+  static constexpr int kSize = 32;  // nodes per axis, ends included
+  static const GgxAlbedoTable& instance() {
+    static const GgxAlbedoTable table;
+    return table;
+  }
+  double albedo(double mu, double alpha) const {
+    const double x = std::sqrt(std::clamp(mu, 0.0, 1.0)) * (kSize - 1);
+    const double y = std::clamp(std::sqrt(std::max(alpha, 0.0)), 0.0, 1.0) * (kSize - 1);
+    const int i = std::min(int(x), kSize - 2), j = std::min(int(y), kSize - 2);
+    const double fx = x - i, fy = y - j;
+    auto at = [&](int a, int b) { return e_[size_t(b) * kSize + size_t(a)]; };
+    return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) + fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+  }
+  double average(double alpha) const {
+    const double y = std::clamp(std::sqrt(std::max(alpha, 0.0)), 0.0, 1.0) * (kSize - 1);
+    const int j = std::min(int(y), kSize - 2);
+    return eAvg_[size_t(j)] + (y - j) * (eAvg_[size_t(j) + 1] - eAvg_[size_t(j)]);
+  }
+
+ private:
+  GgxAlbedoTable();
+  std::array<double, kSize * kSize> e_{};  // [roughness node][mu node]
+  std::array<double, kSize> eAvg_{};
+};
+
+inline GgxAlbedoTable::GgxAlbedoTable() {
+  constexpr int kSamples = 128;
+  for (int j = 0; j < kSize; ++j) {
+    const double r = double(j) / (kSize - 1), alpha = std::max(1e-4, r * r);
+    for (int i = 0; i < kSize; ++i) {
+      const double s = double(i) / (kSize - 1), mu = std::max(1e-4, s * s);  // grazing: the limit's neighbour
+      const Vec3 wo(std::sqrt(1 - mu * mu), 0, mu);
+      double sum = 0;
+      for (int k = 0; k < kSamples; ++k) {
+        const SampleRng rng(uint32_t(i), uint32_t(j), uint32_t(k), 0x6a09e667u);
+        const auto u = rng.get2(0);
+        const Vec3 wi = reflect(wo, sampleGgxVisibleNormal(wo, alpha, u[0], u[1]));
+        if (wi.z() > 0) sum += ggxG1(wi, alpha);  // f cos / pdf = G1 G1 / G1(wo)
+      }
+      e_[size_t(j) * kSize + size_t(i)] = std::min(1.0, sum / kSamples);
+    }
+  }
+  // E_avg of the interpolant along mu at each roughness node (linear in between, as albedo()
+  // interpolates): the midpoint rule on 4096 steps.
+  constexpr int kSteps = 4096;
+  for (int j = 0; j < kSize; ++j) {
+    const double r = double(j) / (kSize - 1), alpha = r * r;  // exactly on the node
+    double avg = 0;
+    for (int k = 0; k < kSteps; ++k) {
+      const double mu = (k + 0.5) / kSteps;
+      avg += 2.0 * albedo(mu, alpha) * mu / kSteps;
+    }
+    eAvg_[size_t(j)] = std::min(avg, 1.0);
+  }
+}
+
 // Schlick's Fresnel for a conductor of normal-incidence reflectance f0 (RGB).
 inline Vec3 fresnelSchlick(const Vec3& f0, double cosTheta) {
   const double m = std::pow(std::clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
@@ -30,23 +111,30 @@ inline Vec3 fresnelSchlick(const Vec3& f0, double cosTheta) {
 //   F + (1 - F) albedo <= 1. Not reciprocal (F of the outgoing direction only); a
 //   unidirectional tracer does not need reciprocity.
 // - Conductor: GGX with Schlick Fresnel of F0 = albedo, f = F(wi.h) D G1(wo) G1(wi) /
-//   (4 cos_i cos_o): reciprocal, energy <= 1 (single scattering: rough metal loses a little).
+//   (4 cos_i cos_o), plus Kulla-Conty's multiple-scattering lobe f_ms = F_ms (1 - E(cos_o))
+//   (1 - E(cos_i)) / (pi (1 - E_avg)), which returns what single scattering loses at high
+//   roughness (a white rough metal keeps its energy). Reciprocal, energy <= 1. Sampled by
+//   GGX half vectors with probability E(cos_o), else cosine-weighted.
+// - RoughGlass (two-sided: wi may lie below, transmitted): see roughGlassEval().
 struct SurfaceBsdf {
   Material::Kind kind = Material::Kind::Diffuse;
   Vec3 albedo{0.5, 0.5, 0.5};
   double alpha = 0.1;
   double ior = 1.5;
+  double eta = 1.5;  // RoughGlass: n on wi's far side / n on wo's side (ior or 1 / ior)
 
   bool nonSpecular() const {
     return kind == Material::Kind::Diffuse || kind == Material::Kind::Glossy ||
-           kind == Material::Kind::Conductor;
+           kind == Material::Kind::Conductor || kind == Material::Kind::RoughGlass;
   }
+  bool transmits() const { return kind == Material::Kind::RoughGlass; }
   double coatFresnel(double cosO) const {
     double cosT = 0;
     return fresnelDielectric(cosO, ior, &cosT);
   }
   // f * cos(wi) and the sampling pdf.
-  Vec3 eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
+  Vec3 eval(const Vec3& wo, const Vec3& wi, double* pdf) const;
+  Vec3 evalReflecting(const Vec3& wo, const Vec3& wi, double* pdf) const {
     *pdf = 0;
     if (wo.z() <= 0 || wi.z() <= 0) return Vec3::Zero();
     if (kind == Material::Kind::Diffuse) {
@@ -61,19 +149,35 @@ struct SurfaceBsdf {
     const double spec = d * ggxG1(wo, alpha) * ggxG1(wi, alpha) / (4.0 * wo.z());  // * cos_i / cos_i
     const double specPdf = d * h.z() / (4.0 * std::max(1e-12, wo.dot(h)));
     if (kind == Material::Kind::Conductor) {
-      *pdf = specPdf;
-      return fresnelSchlick(albedo, wi.dot(h)) * spec;
+      const GgxAlbedoTable& table = GgxAlbedoTable::instance();
+      const double eo = table.albedo(wo.z(), alpha), pickSpec = std::max(eo, 0.05);
+      *pdf = pickSpec * specPdf + (1.0 - pickSpec) * wi.z() / kPi;
+      return fresnelSchlick(albedo, wi.dot(h)) * spec + multipleScattering(eo, wi.z()) * wi.z();
     }
     const double f = coatFresnel(wo.z());
     *pdf = f * specPdf + (1.0 - f) * wi.z() / kPi;
     return Vec3::Constant(f * spec) + (1.0 - f) * albedo * (wi.z() / kPi);
   }
-  BsdfSample sample(const Vec3& wo, double uLobe, double u1, double u2) const {
+  // Kulla-Conty's f_ms (per colour channel) for outgoing albedo eo = E(cos_o) and cos_i.
+  // F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), with Schlick's hemispherical average
+  // F_avg = F0 + (1 - F0) / 21 (2 int (1 - mu)^5 mu dmu = 1/21).
+  Vec3 multipleScattering(double eo, double cosI) const {
+    const GgxAlbedoTable& table = GgxAlbedoTable::instance();
+    const double eAvg = table.average(alpha);
+    if (!(eAvg < 1.0 - 1e-6)) return Vec3::Zero();
+    const Vec3 fAvg = albedo + (Vec3::Ones() - albedo) / 21.0;
+    const Vec3 fms = (fAvg.cwiseProduct(fAvg) * eAvg).cwiseQuotient(Vec3::Ones() - fAvg * (1.0 - eAvg));
+    return fms * ((1.0 - eo) * (1.0 - table.albedo(cosI, alpha)) / (kPi * (1.0 - eAvg)));
+  }
+  BsdfSample sample(const Vec3& wo, double uLobe, double u1, double u2) const;
+  BsdfSample sampleReflecting(const Vec3& wo, double uLobe, double u1, double u2) const {
     BsdfSample s;
     if (wo.z() <= 0) return s;
     Vec3 wi;
-    if (kind == Material::Kind::Conductor ||
-        (kind == Material::Kind::Glossy && uLobe < coatFresnel(wo.z()))) {
+    const bool specLobe = kind == Material::Kind::Conductor
+                              ? uLobe < std::max(GgxAlbedoTable::instance().albedo(wo.z(), alpha), 0.05)
+                              : kind == Material::Kind::Glossy && uLobe < coatFresnel(wo.z());
+    if (specLobe) {
       const Vec3 h = sampleGgxHalfVector(alpha, u1, u2);
       wi = reflect(wo, h);
     } else {
@@ -94,8 +198,42 @@ struct SurfaceBsdf {
 // dielectric Fresnel F(wo.h) and refraction otherwise. wo.z > 0; eta = n_inside_of_wi /
 // n_side_of_wo. As for smooth glass, radiance is not scaled by eta^2 (it cancels on the way
 // out), which makes the transmission weight G1(wo) G1(wi) |wo.h| / (wo.z h.z), the same
-// expression as reflection's. Treated as a specular vertex by the tracer (no NEE: lights
-// behind the glass are reached by the sampled direction), which keeps it unbiased.
+// expression as reflection's. roughGlassEval() is the f |cos_i| and pdf this sampler follows
+// (so NEE through it and BSDF sampling combine by MIS without bias):
+//   reflection   f|cos_i| = F D G1 G1 / (4 wo.z),   pdf = F D h.z / (4 wo.h),  h ~ wo + wi;
+//   transmission f|cos_i| = (1 - F) D G1 G1 eta^2 |wo.h| |wi.h| / (wo.z (wo.h + eta wi.h)^2),
+//                pdf = (1 - F) D h.z eta^2 |wi.h| / (wo.h + eta wi.h)^2,  h ~ -(wo + eta wi).
+inline Vec3 roughGlassEval(const Vec3& wo, const Vec3& wi, double alpha, double eta, double* pdf) {
+  *pdf = 0;
+  if (wo.z() <= 0 || wi.z() == 0) return Vec3::Zero();
+  const bool reflected = wi.z() > 0;
+  Vec3 h = reflected ? Vec3(wo + wi) : Vec3(-(wo + eta * wi));
+  const double hn = h.norm();
+  if (!(hn > 0)) return Vec3::Zero();
+  h /= hn;
+  if (h.z() < 0) h = -h;
+  const double cosO = wo.dot(h), cosI = wi.dot(h);
+  // The microfacet must face wo, and wi must leave on the side the lobe says.
+  if (!(cosO > 0) || (reflected ? cosI <= 0 : cosI >= 0)) return Vec3::Zero();
+  double cosT = 0;
+  const double f = fresnelDielectric(cosO, eta, &cosT);
+  const double d = ggxD(h, alpha);
+  const double g = ggxG1(wo, alpha) * ggxG1(wi, alpha);
+  double value = 0;
+  if (reflected) {
+    value = f * d * g / (4.0 * wo.z());
+    *pdf = f * d * h.z() / (4.0 * cosO);
+  } else {
+    const double denom = cosO + eta * cosI;
+    if (!(std::abs(denom) > 1e-12)) return Vec3::Zero();
+    const double jacobian = eta * eta * std::abs(cosI) / (denom * denom);  // dh / dwi
+    value = (1.0 - f) * d * g * cosO * jacobian / wo.z();
+    *pdf = (1.0 - f) * d * h.z() * jacobian;
+  }
+  if (!std::isfinite(value) || !std::isfinite(*pdf)) return *pdf = 0, Vec3::Zero();
+  return Vec3::Constant(value);
+}
+
 inline BsdfSample sampleRoughGlass(const Vec3& wo, double alpha, double eta, double uLobe, double u1, double u2) {
   BsdfSample s;
   if (wo.z() <= 0) return s;
@@ -114,11 +252,22 @@ inline BsdfSample sampleRoughGlass(const Vec3& wo, double alpha, double eta, dou
   }
   const double w = ggxG1(wo, alpha) * ggxG1(wi, alpha) * cosI / (wo.z() * h.z());
   if (!std::isfinite(w)) return s;
+  roughGlassEval(wo, wi, alpha, eta, &s.pdf);
+  if (!(s.pdf > 0)) return s;
   s.dir = wi;
   s.weight = Vec3::Constant(w);
-  s.specular = true;
   s.valid = true;
   return s;
+}
+
+inline Vec3 SurfaceBsdf::eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
+  if (kind == Material::Kind::RoughGlass) return roughGlassEval(wo, wi, alpha, eta, pdf);
+  return evalReflecting(wo, wi, pdf);
+}
+
+inline BsdfSample SurfaceBsdf::sample(const Vec3& wo, double uLobe, double u1, double u2) const {
+  if (kind == Material::Kind::RoughGlass) return sampleRoughGlass(wo, alpha, eta, uLobe, u1, u2);
+  return sampleReflecting(wo, uLobe, u1, u2);
 }
 
 }  // namespace inlay::detail

@@ -23,8 +23,8 @@
 // or Mirror where the user marked them (RenderScene::roomMaterials, in both images); objects are
 // Lambertian, Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Conductor
 // (GGX metal), Mirror, clear smooth Glass (Fresnel, Snell, no absorption, no eta^2 radiance
-// scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; a specular vertex: no
-// NEE), or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
+// scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; NEE and MIS on both
+// sides: lights behind the interface are reached through transmission), or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
 // min(0.95, max throughput).
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
@@ -59,6 +59,7 @@
 #include <algorithm>
 #include <bit>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 
 namespace inlay {
@@ -157,9 +158,21 @@ struct PathTracer::Impl {
   std::vector<MeshLightData> meshLights;  // NEE sources lights.size() + k
   std::vector<ObjectData> objects;
   mutable std::atomic<uint64_t> nonFiniteSamples{0};
-  mutable std::atomic<uint64_t> rays{0};
-  mutable std::atomic<uint64_t> cameraRays{0};
-  mutable std::atomic<uint64_t> shadowRays{0};
+  // Ray counts and times, summed per tile by renderRect (never per ray: no shared cache line
+  // in the hot loop).
+  struct AtomicCounters {
+    std::atomic<uint64_t> cameraRays{0}, bounceRays{0}, shadowRays{0};
+    std::atomic<int64_t> cameraNs{0}, bounceNs{0}, shadowNs{0};
+    void add(const RayCounters& c) {
+      cameraRays.fetch_add(c.cameraRays, std::memory_order_relaxed);
+      bounceRays.fetch_add(c.bounceRays, std::memory_order_relaxed);
+      shadowRays.fetch_add(c.shadowRays, std::memory_order_relaxed);
+      cameraNs.fetch_add(c.cameraNs, std::memory_order_relaxed);
+      bounceNs.fetch_add(c.bounceNs, std::memory_order_relaxed);
+      shadowNs.fetch_add(c.shadowNs, std::memory_order_relaxed);
+    }
+  };
+  mutable AtomicCounters counters;
 
   ~Impl() {
     for (auto& o : objects) {
@@ -289,14 +302,14 @@ struct PathTracer::Impl {
     if (j >= lights.size()) return meshSelectionWeight(meshLights[j - lights.size()], p, n);
     const LightData& l = lights[j];
     if (!(l.power > 0) || (p - l.emitter[0]).dot(l.normal) <= 0) return 0;
-    bool above = false;
+    bool above = n.squaredNorm() == 0;  // a zero normal: a two-sided (transmitting) BSDF
     for (const Vec3& c : l.emitter) above = above || (c - p).dot(n) > 0;
     if (!above) return 0;
     return l.power / std::max((l.centre - p).squaredNorm(), 0.25 * l.area);
   }
   static double meshSelectionWeight(const MeshLightData& m, const Vec3& p, const Vec3& n) {
     if (!(m.power > 0)) return 0;
-    bool above = false;
+    bool above = n.squaredNorm() == 0;
     for (const Vec3& c : m.boxCorners) above = above || (c - p).dot(n) > 0;
     if (!above) return 0;
     return m.power / std::max((m.centre - p).squaredNorm(), 0.25 * m.area);
@@ -394,10 +407,37 @@ struct PathTracer::Impl {
   struct Sums {
     Vec3 with = Vec3::Zero();
     Vec3 without = Vec3::Zero();
-    uint32_t rays = 0;        // camera and bounce rays
-    uint32_t cameraRays = 0;
-    uint32_t shadowRays = 0;  // NEE and sun shadow rays
+    RayCounters counters;
   };
+
+  // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
+  int64_t rayClockNs() const {
+    if (!options.timeRays) return 0;
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+  // A counted (and, if asked, timed) shadow ray: true when (0, tFar) is blocked in `s`.
+  bool blocked(Sums& out, RTCScene s, const Vec3& o, const Vec3& dir, double tFar) const {
+    const int64_t t0 = rayClockNs();
+    const bool hit = occluded(s, o, dir, 0, tFar);
+    ++out.counters.shadowRays;
+    out.counters.shadowNs += rayClockNs() - t0;
+    return hit;
+  }
+  // Adds light c reaching o from direction dir (up to tFar) to the sums of `mode`: with the
+  // paths still shared, a ray the objects block is retried without them (only then do the
+  // two sums differ).
+  void addUnlessBlocked(Mode mode, RTCScene with, RTCScene without, const Vec3& o, const Vec3& dir, double tFar,
+                        const Vec3& c, Sums& out) const {
+    if (mode == Mode::Shared) {
+      if (!blocked(out, with, o, dir, tFar))
+        out.with += c, out.without += c;
+      else if (!blocked(out, without, o, dir, tFar))
+        out.without += c;  // only an object blocks it
+    } else if (!blocked(out, mode == Mode::WithOnly ? with : without, o, dir, tFar)) {
+      (mode == Mode::WithOnly ? out.with : out.without) += c;
+    }
+  }
 
   // Where a path stands: the next ray and what the vertices so far left it with.
   struct PathState {
@@ -408,7 +448,8 @@ struct PathTracer::Impl {
     bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
     double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
     Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
-    Vec3 lastNormal;           // its geometric normal on the side the path left from
+    Vec3 lastNormal;           // its geometric normal on the side the path left from; zero
+                               // after a transmitting BSDF (light selection saw every side)
   };
 
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
@@ -471,10 +512,14 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
   Vec3& dir = st.dir;
   for (;; ++st.depth) {
     const int depth = st.depth;
+    const int64_t t0 = rayClockNs();
     const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
                                           st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
-    ++out.rays;
-    if (depth == 0) ++out.cameraRays;
+    const int64_t spentNs = rayClockNs() - t0;
+    if (depth == 0)
+      ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
+    else
+      ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
@@ -543,18 +588,24 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Vec3 ngFacing = frontSide ? ng : Vec3(-ng);
     Vec3 ns = hit.shadingNormal;
     if (ns.dot(ngFacing) < 0) ns = -ns;
+    if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
     const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
     const auto pickAndLobe = rng.get2(dim / 2 + 2);
 
     if (bsdf.nonSpecular()) {
-      const Frame frame(ns);
+      const Frame frame(bsdf.transmits() && wo.dot(ns) <= 0 ? ngFacing : ns);
       const Vec3 woLocal = frame.toLocal(wo);
+      // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
+      // transmits (rough glass): then every side counts (a zero normal says so).
+      const Vec3 selectNormal = bsdf.transmits() ? Vec3(Vec3::Zero()) : ngFacing;
+      const bool nee = !bsdf.transmits() || options.roughGlassNee;
       // Next-event estimation: one source picked by power over squared distance; on an area
       // light one point uniform in its solid angle (rectangles) or area, on an emissive object
       // one point uniform by area.
       double selectProb = 0;
-      const size_t li = sourceCount() == 0 ? 0 : pickLight(hit.point, ngFacing, pickAndLobe[0], &selectProb);
+      const size_t li =
+          sourceCount() == 0 || !nee ? sourceCount() : pickLight(hit.point, selectNormal, pickAndLobe[0], &selectProb);
       if (li < sourceCount() && selectProb > 0) {
         const auto uLight = rng.get2(dim / 2);
         const bool meshLight = li >= lights.size();
@@ -583,75 +634,68 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         if (d > 0) w /= d;
         // Area lights emit on their front only; emissive objects on both sides.
         const double cosL = meshLight ? std::abs(lightNormal.dot(w)) : -lightNormal.dot(w);
-        if (d > 2 * eps && cosL > 0 && w.dot(ngFacing) > 0) {
+        const bool above = w.dot(ngFacing) > 0;
+        const Vec3 wLocal = frame.toLocal(w);
+        if (d > 2 * eps && cosL > 0 && (above || bsdf.transmits()) && (wLocal.z() > 0) == above) {
           double pdfBsdf = 0;
-          const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(w), &pdfBsdf);
+          const Vec3 fcos = bsdf.eval(woLocal, wLocal, &pdfBsdf);
           if (fcos.maxCoeff() > 0) {
             const double pdfLight =
-                meshLight ? meshLightPdf(li - lights.size(), hit.point, ngFacing, y, lightNormal)
+                meshLight ? meshLightPdf(li - lights.size(), hit.point, selectNormal, y, lightNormal)
                 : solidAngle > 0 ? selectProb / solidAngle
-                                 : lightPdf(int(li), hit.point, ngFacing, y);
+                                 : lightPdf(int(li), hit.point, selectNormal, y);
             const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(throughput.cwiseProduct(fcos).cwiseProduct(radiance) *
                                                              (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
                                                         depth >= 1)
                                         : Vec3(Vec3::Zero());
             // The shadow ray runs from the offset origin to the sampled point itself, stopping
             // just short of the emitter (which would otherwise block its own light).
-            const Vec3 o = hit.point + eps * ngFacing;
+            const Vec3 o = hit.point + (above ? eps : -eps) * ngFacing;
             Vec3 ws = y - o;
             const double ds = ws.norm();
             ws /= ds;
             const double tFar = ds * (1.0 - 1e-4);
             if (meshLight) {
               // An emissive object exists in the with-scene only.
-              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && (++out.shadowRays, !occluded(withScene, o, ws, 0, tFar)))
+              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
                 out.with += c;
-            } else if (mode == Mode::Shared) {
-              ++out.shadowRays;
-              if (!occluded(withScene, o, ws, 0, tFar))
-                add(c);
-              else if (++out.shadowRays, !occluded(withoutScene, o, ws, 0, tFar))
-                out.without += c;  // only an object blocks it
-            } else if (++out.shadowRays, !occluded(mode == Mode::WithOnly ? withScene : withoutScene, o, ws, 0, tFar)) {
-              add(c);
+            } else {
+              addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
             }
           }
         }
       }
       // Suns: parallel light, a delta direction (never found by BSDF sampling, so no MIS).
       for (const SunData& sun : suns) {
-        if (!(sun.toSun.dot(ngFacing) > 0)) continue;
+        if (!nee) break;
+        const bool sunAbove = sun.toSun.dot(ngFacing) > 0;
+        if (!sunAbove && !(bsdf.transmits() && sun.toSun.dot(ngFacing) < 0)) continue;
         const double beam = sun.sun->beamAt(hit.point);
         if (!(beam > 0)) continue;
         double pdfBsdf = 0;
-        const Vec3 fcos = bsdf.eval(woLocal, frame.toLocal(sun.toSun), &pdfBsdf);
+        const Vec3 sunLocal = frame.toLocal(sun.toSun);
+        if ((sunLocal.z() > 0) != sunAbove) continue;
+        const Vec3 fcos = bsdf.eval(woLocal, sunLocal, &pdfBsdf);
         if (!(fcos.maxCoeff() > 0)) continue;
         // L = f cos E_perp with E_perp = pi * irradianceOverPi.
         const Vec3 c = clampIndirect(
             Vec3(throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), depth >= 1);
-        const Vec3 o = hit.point + eps * ngFacing;
-        ++out.shadowRays;
-        if (mode == Mode::Shared) {
-          if (!occluded(sunWithScene, o, sun.toSun, 0, 3.4e38))
-            add(c);
-          else if (++out.shadowRays, !occluded(sunWithoutScene, o, sun.toSun, 0, 3.4e38))
-            out.without += c;  // only an object blocks it
-        } else if (!occluded(mode == Mode::WithOnly ? sunWithScene : sunWithoutScene, o, sun.toSun, 0,
-                             3.4e38)) {
-          add(c);
-        }
+        const Vec3 o = hit.point + (sunAbove ? eps : -eps) * ngFacing;
+        addUnlessBlocked(mode, sunWithScene, sunWithoutScene, o, sun.toSun, 3.4e38, c, out);
       }
       const auto uDir = rng.get2(dim / 2 + 1);
       const BsdfSample s = bsdf.sample(woLocal, pickAndLobe[1], uDir[0], uDir[1]);
       if (!s.valid) return;
       dir = frame.toWorld(s.dir).normalized();
-      if (dir.dot(ngFacing) <= 0) return;  // shading normal sent it below the surface
+      const bool reflected = s.dir.z() > 0;
+      // A shading normal may send it to the wrong side of the real surface: end the path.
+      if ((dir.dot(ngFacing) > 0) != reflected) return;
       throughput = throughput.cwiseProduct(s.weight);
-      st.lastSpecular = false;
+      st.lastSpecular = !nee;  // without NEE here, a light the bounce finds counts in full
       st.lastPdf = s.pdf;
       st.lastPoint = hit.point;
-      st.lastNormal = ngFacing;
-      origin = hit.point + eps * ngFacing;
+      st.lastNormal = selectNormal;
+      origin = hit.point + (reflected ? eps : -eps) * ngFacing;
     } else if (bsdf.kind == Material::Kind::Mirror) {
       dir = reflect(wo, ns).normalized();
       if (dir.dot(ngFacing) <= 0) dir = reflect(wo, ngFacing).normalized();
@@ -659,20 +703,6 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       st.lastSpecular = true;
       st.lastPdf = 0;
       origin = hit.point + eps * ngFacing;
-    } else if (bsdf.kind == Material::Kind::RoughGlass) {
-      const Frame frame(wo.dot(ns) > 0 ? ns : ngFacing);
-      const auto uDir = rng.get2(dim / 2 + 1);
-      const BsdfSample s = sampleRoughGlass(frame.toLocal(wo), bsdf.alpha, frontSide ? bsdf.ior : 1.0 / bsdf.ior,
-                                            pickAndLobe[1], uDir[0], uDir[1]);
-      if (!s.valid) return;
-      dir = frame.toWorld(s.dir).normalized();
-      const bool reflected = s.dir.z() > 0;
-      // A shading normal may send it to the wrong side of the real surface: end the path.
-      if ((dir.dot(ngFacing) > 0) != reflected) return;
-      origin = hit.point + (reflected ? eps : -eps) * ngFacing;
-      throughput = throughput.cwiseProduct(s.weight);
-      st.lastSpecular = true;
-      st.lastPdf = 0;
     } else {  // Glass: smooth dielectric, clear (no absorption)
       // Entering when the ray comes from the outward side.
       const bool entering = frontSide;
@@ -788,6 +818,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   };
   d.scene = scene;
   d.options = options;
+  GgxAlbedoTable::instance();  // built here (~30 ms, once per process), never mid-frame
   d.device = newDevice();
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
@@ -886,10 +917,17 @@ const RenderScene& PathTracer::scene() const { return impl_->scene; }
 
 PathTracer::Stats PathTracer::stats() const {
   Stats s;
-  s.rays = impl_->rays.load(std::memory_order_relaxed);
+  const Impl::AtomicCounters& c = impl_->counters;
   s.nonFiniteSamples = impl_->nonFiniteSamples.load(std::memory_order_relaxed);
-  s.cameraRays = impl_->cameraRays.load(std::memory_order_relaxed);
-  s.shadowRays = impl_->shadowRays.load(std::memory_order_relaxed);
+  s.byType.cameraRays = c.cameraRays.load(std::memory_order_relaxed);
+  s.byType.bounceRays = c.bounceRays.load(std::memory_order_relaxed);
+  s.byType.shadowRays = c.shadowRays.load(std::memory_order_relaxed);
+  s.byType.cameraNs = c.cameraNs.load(std::memory_order_relaxed);
+  s.byType.bounceNs = c.bounceNs.load(std::memory_order_relaxed);
+  s.byType.shadowNs = c.shadowNs.load(std::memory_order_relaxed);
+  s.rays = s.byType.cameraRays + s.byType.bounceRays + s.byType.shadowRays;
+  s.cameraRays = s.byType.cameraRays;
+  s.shadowRays = s.byType.shadowRays;
   return s;
 }
 
@@ -917,12 +955,17 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
   const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
   const Vec3 eye = cam.centreWorld();
   DenormalsOffScope ftz;
+  RayCounters rectCounters;  // published once, when the rect ends or is cancelled
+  struct Publish {
+    const Impl& d;
+    const RayCounters& c;
+    ~Publish() { d.counters.add(c); }
+  } publish{d, rectCounters};
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       if (cancel && cancel->shouldStop()) return false;
       Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
       double sumMask = 0, sumDiffSq = 0;
-      uint64_t rays = 0, cameraRays = 0, shadowRays = 0;
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
         const auto jitter = rng.get2(0);
@@ -933,9 +976,7 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
         Impl::Sums sums;
         bool objectFirst = false;
         d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-        rays += sums.rays + sums.shadowRays;
-        cameraRays += sums.cameraRays;
-        shadowRays += sums.shadowRays;
+        rectCounters += sums.counters;
         if (!sums.with.allFinite() || !sums.without.allFinite()) {
           d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
           continue;  // dropped: counts as a sample of zero in both renders
@@ -954,9 +995,6 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
       buffers.sumMask.at(x, y) += float(sumMask);
       buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
       buffers.samples[size_t(y) * buffers.width + x] += count;
-      d.rays.fetch_add(rays, std::memory_order_relaxed);
-      d.cameraRays.fetch_add(cameraRays, std::memory_order_relaxed);
-      d.shadowRays.fetch_add(shadowRays, std::memory_order_relaxed);
     }
   return true;
 }

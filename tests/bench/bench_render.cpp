@@ -6,8 +6,10 @@
 //   glossy, mirror, glass, glowing), thread count (1, 2) and mode: correlated (one differential
 //   render) or independent (the scene with objects and the empty room rendered separately,
 //   other seeds).
-// - throughput.csv: rays per second per thread by kind (camera rays alone with maxDepth 0; all
-//   rays of full paths, split into camera, bounce and shadow counts).
+// - throughput.csv: rays per second per thread by type (camera, bounce, shadow: each type's
+//   count over the thread time spent tracing it, TracerOptions::timeRays), and all rays over
+//   wall time, for camera rays alone (maxDepth 0) and full paths, 1 and 2 threads (medians of
+//   5 renders at 160 x 120, 4 spp), with the wall-time overhead of the timing.
 // - bvh.csv: object BVH build seconds, instance update (move) seconds (median of 50) and the
 //   resident memory the tracer adds, for spheres of 10k to 1M triangles.
 //
@@ -115,23 +117,48 @@ void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int
   }
 }
 
+// Rays per second per thread by type: each type's count over the thread time spent tracing it
+// (TracerOptions::timeRays), the median of kRuns renders; plus all rays over wall time x
+// threads, and the wall-time cost of the timing itself (timed / untimed render, medians).
 void throughput(const RenderScene& scene, int w, int h, std::ofstream& csv) {
+  constexpr int kRuns = 5;
+  auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  auto perSecond = [](uint64_t n, int64_t ns) { return ns > 0 ? double(n) / (double(ns) * 1e-9) : 0.0; };
   for (int threads : {1, 2}) {
     for (int maxDepth : {0, 8}) {
-      TracerOptions opt;
-      opt.maxDepth = maxDepth;
-      PathTracer tracer(scene, opt);
+      TracerOptions timed, untimed;
+      timed.maxDepth = untimed.maxDepth = maxDepth;
+      timed.timeRays = true;
+      PathTracer tracer(scene, timed), plain(scene, untimed);
       DifferentialBuffers b(w, h);
       tracer.render(b, 0, 1, 7, threads);  // warm-up
-      const PathTracer::Stats s0 = tracer.stats();
-      const auto t0 = Clock::now();
-      tracer.render(b, 1, 8, 7, threads);
-      const double sec = secondsSince(t0);
-      const PathTracer::Stats s1 = tracer.stats();
-      const double rays = double(s1.rays - s0.rays), cam = double(s1.cameraRays - s0.cameraRays),
-                   shadow = double(s1.shadowRays - s0.shadowRays);
-      csv << threads << ',' << maxDepth << ',' << sec << ',' << rays << ',' << cam << ',' << rays - cam - shadow << ','
-          << shadow << ',' << rays / sec / threads << '\n';
+      plain.render(b, 0, 1, 7, threads);
+      std::vector<double> cam, bounce, shadow, all, wall, wallPlain;
+      RayCounters n;
+      for (int run = 0; run < kRuns; ++run) {
+        const RayCounters c0 = tracer.stats().byType;
+        auto t0 = Clock::now();
+        tracer.render(b, 1 + 4 * run, 4, 7, threads);
+        wall.push_back(secondsSince(t0));
+        RayCounters c = tracer.stats().byType;
+        c.cameraRays -= c0.cameraRays, c.bounceRays -= c0.bounceRays, c.shadowRays -= c0.shadowRays;
+        c.cameraNs -= c0.cameraNs, c.bounceNs -= c0.bounceNs, c.shadowNs -= c0.shadowNs;
+        cam.push_back(perSecond(c.cameraRays, c.cameraNs));
+        bounce.push_back(perSecond(c.bounceRays, c.bounceNs));
+        shadow.push_back(perSecond(c.shadowRays, c.shadowNs));
+        n = c;
+        t0 = Clock::now();
+        plain.render(b, 1 + 4 * run, 4, 7, threads);
+        wallPlain.push_back(secondsSince(t0));
+        all.push_back(double(c.cameraRays + c.bounceRays + c.shadowRays) / wallPlain.back() / threads);
+      }
+      csv << threads << ',' << maxDepth << ',' << median(wallPlain) << ',' << n.cameraRays << ',' << n.bounceRays << ','
+          << n.shadowRays << ',' << median(cam) << ',' << median(bounce) << ',' << median(shadow) << ','
+          << median(all) << ',' << median(wall) / median(wallPlain) << '\n';
+      csv.flush();
     }
   }
 }
@@ -208,7 +235,8 @@ int main(int argc, char** argv) {
   }
   if (wanted("throughput")) {
     std::ofstream csv(out + "/throughput.csv");
-    csv << "threads,max_depth,seconds,rays,camera_rays,bounce_rays,shadow_rays,rays_per_s_per_thread\n";
+    csv << "threads,max_depth,seconds,camera_rays,bounce_rays,shadow_rays,camera_per_s_per_thread,"
+           "bounce_per_s_per_thread,shadow_per_s_per_thread,rays_per_s_per_thread,timing_overhead\n";
     throughput(prepared->renderScene, 160, 120, csv);
   }
   if (wanted("convergence")) {

@@ -25,6 +25,24 @@ struct TracerOptions {
   int maxDepth = 8;          // path vertices after the camera (bounces)
   int russianRouletteDepth = 3;  // roulette starts at this depth
   double clampRadiance = 0;  // per-sample clamp of indirect radiance; 0 = off (unbiased)
+  bool timeRays = false;     // time every ray by type (benchmarks: two clock reads per ray)
+  bool roughGlassNee = true;  // next-event estimation (with MIS) at rough glass; false: found
+                              // by BSDF sampling alone (for comparison; suns then miss it)
+};
+
+// Rays traced by type, and the thread time spent in them (nanoseconds, summed over threads;
+// 0 unless TracerOptions::timeRays). count / (ns * 1e-9) is rays per second per thread.
+struct RayCounters {
+  uint64_t cameraRays = 0;  // the first ray of a path (again without the objects, once it
+                            // met one)
+  uint64_t bounceRays = 0;  // every later path segment
+  uint64_t shadowRays = 0;  // NEE and sun shadow rays
+  int64_t cameraNs = 0, bounceNs = 0, shadowNs = 0;
+  RayCounters& operator+=(const RayCounters& o) {
+    cameraRays += o.cameraRays, bounceRays += o.bounceRays, shadowRays += o.shadowRays;
+    cameraNs += o.cameraNs, bounceNs += o.bounceNs, shadowNs += o.shadowNs;
+    return *this;
+  }
 };
 
 // Running sums of a differential render at full resolution. mean = sum / samples[pixel].
@@ -72,6 +90,7 @@ class PathTracer {
     uint64_t nonFiniteSamples = 0;
     uint64_t cameraRays = 0;  // of `rays`: camera rays, and shadow rays (NEE, suns); the rest
     uint64_t shadowRays = 0;  // are bounce rays
+    RayCounters byType;       // the same counts by type, with their times
   };
   Stats stats() const;
 
