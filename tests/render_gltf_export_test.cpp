@@ -140,6 +140,60 @@ TEST(GltfExport, AssimpReadsBackRoomLightsCameraAndObjects) {
   }
 }
 
+// Room surfaces the user marked (room.materials.<surface>) export as the renderer sees them: a
+// mirror as a smooth metal of its reflectance, a glossy floor with its roughness over the
+// baked albedo; unmarked surfaces stay matte.
+TEST(GltfExport, MarkedRoomSurfacesKeepTheirMaterials) {
+  RenderScene s = exportScene();
+  s.roomMaterials.assign(s.room.surfaces.size(), std::nullopt);
+  Material mirror, glossy;
+  mirror.kind = Material::Kind::Mirror;
+  mirror.albedo = Vec3(0.9, 0.85, 0.8);
+  glossy.kind = Material::Kind::Glossy;
+  glossy.roughness = 0.25;
+  glossy.ior = 1.6;
+  size_t back = 0, floor = 0;
+  for (size_t i = 0; i < s.room.surfaces.size(); ++i) {
+    if (s.room.surfaces[i].name == "wall_back") back = i;
+    if (s.room.surfaces[i].name == "floor") floor = i;
+  }
+  ASSERT_NE(back, floor);
+  s.roomMaterials[back] = mirror;
+  s.roomMaterials[floor] = glossy;
+  const auto dir = test::tempDir("gltf_export_marked");
+  const std::string path = (dir / "room.glb").string();
+  ASSERT_TRUE(exportGltf(s, path).ok());
+  Assimp::Importer importer;
+  const aiScene* sc = importer.ReadFile(path, 0);
+  ASSERT_NE(sc, nullptr) << importer.GetErrorString();
+  auto materialOf = [&](const std::string& node) {
+    const aiNode* n = findNode(sc->mRootNode, node);
+    return n ? sc->mMaterials[sc->mMeshes[n->mMeshes[0]]->mMaterialIndex] : nullptr;
+  };
+  float metallic = -1, roughness = -1;
+  const aiMaterial* m = materialOf("wall_back");
+  ASSERT_NE(m, nullptr);
+  ASSERT_EQ(m->Get(AI_MATKEY_METALLIC_FACTOR, metallic), AI_SUCCESS);
+  ASSERT_EQ(m->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness), AI_SUCCESS);
+  EXPECT_EQ(metallic, 1.f);
+  EXPECT_EQ(roughness, 0.f);
+  aiColor4D base;
+  ASSERT_EQ(m->Get(AI_MATKEY_BASE_COLOR, base), AI_SUCCESS);
+  EXPECT_NEAR(base.g, 0.85, 1e-6);
+  const aiMaterial* g = materialOf("floor");
+  ASSERT_NE(g, nullptr);
+  ASSERT_EQ(g->Get(AI_MATKEY_METALLIC_FACTOR, metallic), AI_SUCCESS);
+  ASSERT_EQ(g->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness), AI_SUCCESS);
+  EXPECT_EQ(metallic, 0.f);
+  EXPECT_NEAR(roughness, 0.25, 1e-6);
+  aiString tex;
+  EXPECT_EQ(g->GetTexture(aiTextureType_DIFFUSE, 0, &tex), AI_SUCCESS);  // the albedo stays
+  const aiMaterial* wall = materialOf("wall_left");
+  ASSERT_NE(wall, nullptr);
+  ASSERT_EQ(wall->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness), AI_SUCCESS);
+  EXPECT_EQ(roughness, 1.f);  // unmarked: matte
+}
+
 TEST(GltfExport, GlbHoldsEverythingAndBadPathsAreErrors) {
   const RenderScene s = exportScene();
   const auto dir = test::tempDir("gltf_glb");

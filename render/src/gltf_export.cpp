@@ -214,6 +214,30 @@ struct Writer {
     return b.push("textures", {{"sampler", 0}, {"source", image_}});
   }
 
+  // A room surface's material: its baked albedo, matte; or as the user marked it (the
+  // renderer's room BSDFs): a mirror is a smooth metal of its reflectance (metallic 1,
+  // roughness 0, no albedo texture: a mirror shows no albedo of its own), a glossy surface
+  // keeps the albedo under a dielectric coat of its roughness and ior.
+  json roomSurfaceMaterial(const std::string& surfaceName, int albedoTexture, const Material* marked) {
+    using K = Material::Kind;
+    if (marked && marked->kind == K::Mirror) {
+      const Vec3 r = marked->albedo.cwiseMax(0.0).cwiseMin(1.0);
+      return {{"name", surfaceName + "_mirror"},
+              {"pbrMetallicRoughness",
+               {{"baseColorFactor", {r.x(), r.y(), r.z(), 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}};
+    }
+    json mat = {{"name", surfaceName + "_albedo"},
+                {"pbrMetallicRoughness",
+                 {{"baseColorTexture", {{"index", albedoTexture}}}, {"metallicFactor", 0}, {"roughnessFactor", 1}}}};
+    if (marked && marked->kind == K::Glossy) {
+      mat["name"] = surfaceName + "_glossy";
+      mat["pbrMetallicRoughness"]["roughnessFactor"] = std::clamp(marked->roughness, 0.0, 1.0);
+      b.useExtension("KHR_materials_ior");
+      mat["extensions"]["KHR_materials_ior"] = {{"ior", marked->ior}};
+    }
+    return mat;
+  }
+
   Status room(const RenderScene& scene, const GltfExportOptions& options, json& children) {
     for (size_t id = 0; id < scene.room.surfaces.size(); ++id) {
       const Surface& surf = scene.room.surfaces[id];
@@ -235,10 +259,9 @@ struct Writer {
         Expected<int> tex =
             texture(bakeGroup(scene.roomAlbedo, int(id), g, lo, size, frame, w, h, fill.cwiseMax(0.0).cwiseMin(1.0)));
         if (!tex.ok()) return tex.error();
-        const int material = b.push(
-            "materials", {{"name", surf.name + "_albedo"},
-                          {"pbrMetallicRoughness",
-                           {{"baseColorTexture", {{"index", *tex}}}, {"metallicFactor", 0}, {"roughnessFactor", 1}}}});
+        const Material* marked =
+            id < scene.roomMaterials.size() && scene.roomMaterials[id] ? &*scene.roomMaterials[id] : nullptr;
+        const int material = b.push("materials", roomSurfaceMaterial(surf.name, *tex, marked));
         std::vector<Vec3f> pos, nrm;
         std::vector<Vec2f> uv;
         std::vector<uint32_t> idx;

@@ -7,7 +7,11 @@ objects' region, correlated and independent, and the equal-time error ratio inde
 correlated at the correlated run's last time) and OUT/render_<room>/convergence.png (RMSE
 against seconds, log-log); prints Markdown tables.
 
+Also OUT/render_<room>/throughput.png: rays per second per thread by type (camera, bounce, shadow,
+each over the thread time spent tracing it), 1 and 2 threads.
+
 usage: bench_render.py BUILD_DIR [--out DIR] [--room d1] [--size 96x72] [--ref-spp 256] [--max-spp 64]
+                       [--parts bvh,throughput,convergence]
 """
 import csv, math, os, subprocess, sys
 from collections import defaultdict
@@ -63,9 +67,57 @@ def main():
     scene = os.path.join(out, "scene.json")
     subprocess.run([PY, os.path.join(SHARED, "tools", "harness.py"), "scene", os.path.join(SHARED, "scenes", dirs[room]),
                     scene, "--seconds", "30"], check=True)
+    parts = opt("--parts", "bvh,throughput,convergence")
     subprocess.run([os.path.join(build, "tests", "bench", "bench_render"), scene, out, w, h, opt("--ref-spp", "256"),
-                    opt("--max-spp", "64")], check=True)
+                    opt("--max-spp", "64"), parts], check=True)
+    if "throughput" in parts:
+        report_throughput(out)
+    if "bvh" in parts:
+        report_bvh(out)
+    if "convergence" in parts:
+        report_convergence(out, room)
+    return 0
 
+
+def report_throughput(out):
+    rows = list(csv.DictReader(open(os.path.join(out, "throughput.csv"))))
+    print("\n| threads | max depth | camera M rays/s/thread | bounce | shadow | all (wall) | rays camera / bounce / shadow | timing overhead |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        m = lambda k: float(r[k]) / 1e6
+        print("| %s | %s | %.2f | %.2f | %.2f | %.2f | %s / %s / %s | %.2fx |" % (
+            r["threads"], r["max_depth"], m("camera_per_s_per_thread"), m("bounce_per_s_per_thread"),
+            m("shadow_per_s_per_thread"), m("rays_per_s_per_thread"), r["camera_rays"], r["bounce_rays"],
+            r["shadow_rays"], float(r["timing_overhead"])))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        full = [r for r in rows if r["max_depth"] != "0"]
+        kinds = ["camera", "bounce", "shadow"]
+        fig, ax = plt.subplots(figsize=(5, 3.5))
+        for k, r in enumerate(full):
+            ax.bar([i + 0.38 * k for i in range(3)], [float(r[c + "_per_s_per_thread"]) / 1e6 for c in kinds], 0.36,
+                   label="%s thread%s" % (r["threads"], "s" if r["threads"] != "1" else ""))
+        ax.set_xticks([i + 0.19 for i in range(3)])
+        ax.set_xticklabels(kinds)
+        ax.set_ylabel("M rays / s / thread")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "throughput.png"), dpi=110)
+    except ImportError:
+        pass
+
+
+def report_bvh(out):
+    print("\n| triangles | BVH build s | instance move s (median) | tracer RSS MB | mesh MB |")
+    print("|---|---|---|---|---|")
+    for r in csv.DictReader(open(os.path.join(out, "bvh.csv"))):
+        print("| %s | %.3f | %.2e | %.1f | %.1f |" % (r["triangles"], float(r["build_s"]), float(r["move_s"]),
+                                                   float(r["tracer_rss_mb"]), float(r["mesh_mb"])))
+
+
+def report_convergence(out, room):
     runs = defaultdict(list)
     for r in csv.DictReader(open(os.path.join(out, "convergence.csv"))):
         for k in ("seconds", "rmse"):
@@ -93,16 +145,6 @@ def main():
     for r in rows:
         print("| %s | %d | %s | %s | %.1fx | %.2f |" % (r["material"], r["threads"], r["correlated_s_to_0.01"],
                                                      r["independent_s_to_0.01"], r["speedup"], r["equal_time_error_ratio"]))
-    print("\n| threads | max depth | rays/s per thread | camera | bounce | shadow |")
-    print("|---|---|---|---|---|---|")
-    for r in csv.DictReader(open(os.path.join(out, "throughput.csv"))):
-        print("| %s | %s | %.2f M | %s | %s | %s |" % (r["threads"], r["max_depth"], float(r["rays_per_s_per_thread"]) / 1e6,
-                                                  r["camera_rays"], r["bounce_rays"], r["shadow_rays"]))
-    print("\n| triangles | BVH build s | instance move s (median) | tracer RSS MB | mesh MB |")
-    print("|---|---|---|---|---|")
-    for r in csv.DictReader(open(os.path.join(out, "bvh.csv"))):
-        print("| %s | %.3f | %.2e | %.1f | %.1f |" % (r["triangles"], float(r["build_s"]), float(r["move_s"]),
-                                                   float(r["tracer_rss_mb"]), float(r["mesh_mb"])))
     try:
         import matplotlib
         matplotlib.use("Agg")
@@ -123,7 +165,6 @@ def main():
         fig.savefig(os.path.join(out, "convergence.png"), dpi=110)
     except ImportError:
         pass
-    return 0
 
 
 if __name__ == "__main__":
