@@ -13,19 +13,29 @@
 // - bvh.csv: object BVH build seconds, instance update (move) seconds (median of 50) and the
 //   resident memory the tracer adds, for spheres of 10k to 1M triangles.
 //
+// - session.csv: the progressive session at the photo's resolution (the studio's settings:
+//   focus on changes, all cores): per object move, the milliseconds until the first frame of
+//   the new version reaches the sink, its resolution divider, and the ratio to a baseline
+//   measured in the same process (one 1-spp full-resolution render of the frame), for start
+//   dividers 8 and 16; 15 moves each, 150 ms apart (landing mid-wave).
+//
 // usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP [PARTS]]
-//   PARTS: comma-separated subset of bvh,throughput,convergence (default: all)
+//   PARTS: comma-separated subset of bvh,throughput,convergence,session (default: all)
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/path_tracer.h"
+#include "inlay/render/session.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <unistd.h>
 
 using namespace inlay;
@@ -209,6 +219,70 @@ void bvh(const RenderScene& base, std::ofstream& csv) {
   }
 }
 
+// Records when the first frame of each scene version arrives.
+class FirstFrameSink : public FrameSink {
+ public:
+  void onFrame(std::shared_ptr<const RenderFrame> frame) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    first_.try_emplace(frame->sceneVersion, Clock::now(), frame->resolutionDivider);
+  }
+  bool firstOf(uint64_t version, Clock::time_point* at, int* divider) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = first_.find(version);
+    if (it == first_.end()) return false;
+    *at = it->second.first, *divider = it->second.second;
+    return true;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<uint64_t, std::pair<Clock::time_point, int>> first_;
+};
+
+void sessionLatency(const RenderScene& scene, std::ofstream& csv) {
+  const int w = scene.camera.widthPx, h = scene.camera.heightPx;
+  double baseline = 0;
+  {
+    PathTracer tracer(scene);
+    DifferentialBuffers b(w, h);
+    tracer.render(b, 0, 1, 5);  // warm-up
+    std::vector<double> t;
+    for (int k = 0; k < 3; ++k) {
+      const auto t0 = Clock::now();
+      tracer.render(b, 1 + k, 1, 5);
+      t.push_back(secondsSince(t0) * 1e3);
+    }
+    std::sort(t.begin(), t.end());
+    baseline = t[1];
+  }
+  for (int startDivider : {8, 16}) {
+    FirstFrameSink sink;
+    SessionOptions opt;
+    opt.targetSpp = 1 << 20;
+    opt.focusOnChanges = true;
+    opt.startDivider = startDivider;
+    RenderSession session(&sink, opt);
+    session.setScene(scene);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // long waves are running
+    const Mat4 start = scene.objects.at(0).worldFromObject;
+    for (int k = 0; k < 15; ++k) {
+      Mat4 m = start;
+      m(0, 3) += 0.02 * ((k % 5) - 2);
+      const auto t0 = Clock::now();
+      const uint64_t v = session.setObjectTransform(0, m);
+      Clock::time_point at;
+      int divider = 0;
+      while (!sink.firstOf(v, &at, &divider) && secondsSince(t0) < 10)
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      const double ms = std::chrono::duration<double, std::milli>(at - t0).count();
+      csv << w << 'x' << h << ',' << startDivider << ',' << k << ',' << ms << ',' << divider << ',' << baseline << ','
+          << ms / baseline << '\n';
+      std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    }
+    csv.flush();
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -219,7 +293,7 @@ int main(int argc, char** argv) {
   const std::string out = argv[2];
   const int w = argc > 4 ? std::atoi(argv[3]) : 96, h = argc > 4 ? std::atoi(argv[4]) : 72;
   const int refSpp = argc > 5 ? std::atoi(argv[5]) : 256, maxSpp = argc > 6 ? std::atoi(argv[6]) : 64;
-  const std::string parts = argc > 7 ? argv[7] : "bvh,throughput,convergence";
+  const std::string parts = argc > 7 ? argv[7] : "bvh,throughput,convergence,session";
   auto wanted = [&](const char* part) { return parts.find(part) != std::string::npos; };
   auto loaded = loadSceneFile(argv[1]);
   if (!loaded) return std::fprintf(stderr, "%s\n", loaded.error().message().c_str()), 2;
@@ -238,6 +312,11 @@ int main(int argc, char** argv) {
     csv << "threads,max_depth,seconds,camera_rays,bounce_rays,shadow_rays,camera_per_s_per_thread,"
            "bounce_per_s_per_thread,shadow_per_s_per_thread,rays_per_s_per_thread,timing_overhead\n";
     throughput(prepared->renderScene, 160, 120, csv);
+  }
+  if (wanted("session")) {
+    std::ofstream csv(out + "/session.csv");
+    csv << "frame,start_divider,edit,first_frame_ms,first_frame_divider,baseline_1spp_ms,ratio_to_baseline\n";
+    sessionLatency(prepared->renderScene, csv);
   }
   if (wanted("convergence")) {
     std::ofstream csv(out + "/convergence.csv");

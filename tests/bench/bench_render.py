@@ -67,13 +67,15 @@ def main():
     scene = os.path.join(out, "scene.json")
     subprocess.run([PY, os.path.join(SHARED, "tools", "harness.py"), "scene", os.path.join(SHARED, "scenes", dirs[room]),
                     scene, "--seconds", "30"], check=True)
-    parts = opt("--parts", "bvh,throughput,convergence")
+    parts = opt("--parts", "bvh,throughput,convergence,session")
     subprocess.run([os.path.join(build, "tests", "bench", "bench_render"), scene, out, w, h, opt("--ref-spp", "256"),
                     opt("--max-spp", "64"), parts], check=True)
     if "throughput" in parts:
         report_throughput(out)
     if "bvh" in parts:
         report_bvh(out)
+    if "session" in parts:
+        report_session(out)
     if "convergence" in parts:
         report_convergence(out, room)
     return 0
@@ -105,6 +107,34 @@ def report_throughput(out):
         ax.legend(fontsize=8)
         fig.tight_layout()
         fig.savefig(os.path.join(out, "throughput.png"), dpi=110)
+    except ImportError:
+        pass
+
+
+def report_session(out):
+    runs = defaultdict(list)
+    for r in csv.DictReader(open(os.path.join(out, "session.csv"))):
+        runs[int(r["start_divider"])].append(r)
+    print("\n| frame | start divider | first frame after a move, median ms | min / max ms | divider | baseline 1 spp ms | median ratio |")
+    print("|---|---|---|---|---|---|---|")
+    for d, rs in sorted(runs.items()):
+        ms = sorted(float(r["first_frame_ms"]) for r in rs)
+        ratio = sorted(float(r["ratio_to_baseline"]) for r in rs)
+        print("| %s | %d | %.1f | %.1f / %.1f | %s | %.1f | %.3f |" % (rs[0]["frame"], d, ms[len(ms) // 2], ms[0], ms[-1],
+              rs[0]["first_frame_divider"], float(rs[0]["baseline_1spp_ms"]), ratio[len(ratio) // 2]))
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(5, 3.5))
+        for d, rs in sorted(runs.items()):
+            ax.plot([int(r["edit"]) for r in rs], [float(r["first_frame_ms"]) for r in rs], "o-", label="start divider %d" % d)
+        ax.axhline(50, color="gray", lw=0.7)
+        ax.set_xlabel("move")
+        ax.set_ylabel("ms to the first frame")
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, "session.png"), dpi=110)
     except ImportError:
         pass
 
