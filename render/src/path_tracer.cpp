@@ -24,8 +24,9 @@
 // Lambertian, Glossy (Fresnel-weighted GGX over a Lambertian base, energy <= 1), Conductor
 // (GGX metal), Mirror, clear smooth Glass (Fresnel, Snell, no absorption, no eta^2 radiance
 // scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; NEE and MIS on both
-// sides: lights behind the interface are reached through transmission), or Emissive (black otherwise). Russian roulette from russianRouletteDepth with survival
-// min(0.95, max throughput).
+// sides: lights behind the interface are reached through transmission), or Emissive (black
+// otherwise). Russian roulette from russianRouletteDepth with survival min(0.95, max
+// throughput).
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
 // non-specular vertex with a shadow ray against what stands inside the room (extrusions, cards,
