@@ -857,6 +857,9 @@ bool Document::setVanishingLines(int axis, const std::optional<std::array<Vec2, 
   }
   SceneMarks m = marks();
   m.camera.vanishingLinesPx[size_t(axis)] = segmentsPx;
+  // Given vanishing points fix the whole camera and would override the lines: drawing lines
+  // asks for the camera to be re-estimated around them.
+  if (segmentsPx) m.camera.vanishingPointsPx.reset();
   const char* const names[3] = {"x", "y", "z"};
   return editMarks(m, 0,
                    segmentsPx ? tr("Draw the %1 vanishing lines").arg(QLatin1String(names[axis]))

@@ -181,7 +181,8 @@ class Document : public QObject {
                      QString* reason = nullptr);
   // Two segments {a0, b0, a1, b1} the user drew along world axis `axis` (0 x, 1 y, 2 z): the
   // camera is re-estimated with that vanishing point fixed (camera.vanishing_lines_px). nullopt
-  // forgets them. Refused for degenerate segments or two segments on one line.
+  // forgets them. Refused for degenerate segments or two segments on one line. Drawing lines
+  // drops camera.vanishing_points_px (a fixed camera would override them).
   bool setVanishingLines(int axis, const std::optional<std::array<Vec2, 4>>& segmentsPx,
                          QString* reason = nullptr);
   // The material of a real surface of the room (room.materials.<surface>, a name from

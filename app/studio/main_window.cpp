@@ -817,8 +817,8 @@ bool MainWindow::offerRecovery() {
   connect(box, &QMessageBox::buttonClicked, this, [this, restore](QAbstractButton* b) {
     if (b == restore)
       restoreRecovery();
-    else
-      Autosaver::discard();
+    else if (const std::optional<Autosaver::Recovery> offered = Autosaver::pending())
+      Autosaver::discard(*offered);
   });
   box->open();
   return true;
@@ -832,7 +832,9 @@ bool MainWindow::restoreRecovery() {
     showError(tr("Cannot restore the unsaved work"), error);
     return false;
   }
+  // The work is this studio's now: written to its own files before the old ones go.
   autosaver_->markDirty();
+  if (autosaver_->saveNow()) Autosaver::discard(*r);
   statusBar()->showMessage(tr("Restored the unsaved work."), 6000);
   return true;
 }
@@ -851,7 +853,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
-  Autosaver::discard();  // saved, or the user chose to discard
+  autosaver_->discardOwn();  // saved, or the user chose to discard
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());

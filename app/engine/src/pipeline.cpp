@@ -289,7 +289,6 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
     auto fixed = correctEstimate(*e, fix, eo);
     if (!fixed) return inFileKeys(fixed.error());
     e = std::move(fixed);
-    e = std::move(fixed);
   }
   for (const auto& w : e->warnings) out.warnings.push_back("estimate: " + w);
   if (!e->manhattan)
