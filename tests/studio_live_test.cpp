@@ -19,7 +19,10 @@
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QApplication>
 #include <QLabel>
+#include <QLockFile>
+#include <QProcess>
 #include <QListWidget>
 #include <QMenu>
 #include <QSettings>
@@ -27,6 +30,8 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+
+#include <cstdlib>
 
 using namespace inlay;
 using namespace inlay::studio;
@@ -166,7 +171,7 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   const QImage shown = view->grab().toImage();
   const QPoint mid = view->widgetFromImage(0.5 * (drawn[0] + drawn[1])).toPoint();
   const QColor c = shown.pixelColor(mid);
-  QVERIFY2(c.blue() > 200 && c.red() < 170, qPrintable(c.name()));
+  QVERIFY2(c.blue() > c.red() + 40 && c.blue() > c.green() + 25, qPrintable(c.name()));
 
   // Saved under camera.vanishing_lines_px and read back.
   QTemporaryDir dir;
@@ -177,6 +182,9 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   // Undoable; a degenerate pair is refused with a reason.
   doc->undoStack()->undo();
   QVERIFY(!doc->scene().camera.vanishingLinesPx[2]);
+  view->setTool(Viewport::Tool::Select);
+  const QColor without = view->grab().toImage().pixelColor(mid);
+  QVERIFY2(std::abs(without.blue() - c.blue()) > 30, qPrintable(without.name()));
   QString reason;
   QVERIFY(!doc->setVanishingLines(0, std::array<Vec2, 4>{Vec2(0, 0), Vec2(10, 10), Vec2(20, 20), Vec2(30, 30)}, &reason));
   QVERIFY(!reason.isEmpty());
@@ -260,7 +268,11 @@ void StudioLiveTest::languageSwitchAppliesAtOnce() {
   QCOMPARE(plainTitle(window_->fileMenu()), QStringLiteral("File"));
   auto choose = [&](const QString& name) {
     for (QAction* a : window_->findChildren<QAction*>())
-      if (a->text() == name) return a->trigger(), true;
+      if (a->text() == name) {
+        a->trigger();
+        QCoreApplication::processEvents();  // QEvent::LanguageChange is posted
+        return true;
+      }
     return false;
   };
   struct Step {
@@ -283,8 +295,13 @@ void StudioLiveTest::languageSwitchAppliesAtOnce() {
     QCOMPARE(plainTitle(window_->toolsMenu()), s.tools);
     QCOMPARE(window_->layersDock()->windowTitle(), s.layers);
     QCOMPARE(window_->undoAction()->text().remove(QLatin1Char('&')), s.undo);
+    // The status bar's figures: their tooltips in the new language.
+    const QString tip = QCoreApplication::translate("inlay::studio::MainWindow",
+                                                    "Samples per pixel of the shown composite");
+    if (s.menuItem != QLatin1String("English"))
+      QVERIFY(tip != QLatin1String("Samples per pixel of the shown composite"));
     const QList<QLabel*> labels = window_->findChildren<QLabel*>();
-    QVERIFY(std::any_of(labels.begin(), labels.end(), [](QLabel* l) { return l->text().contains(QStringLiteral("spp")); }));
+    QVERIFY(std::any_of(labels.begin(), labels.end(), [&](QLabel* l) { return l->toolTip() == tip; }));
   }
   const QString germanTool = [&] {
     choose(QStringLiteral("Deutsch"));
@@ -317,21 +334,31 @@ void StudioLiveTest::twoStudiosKeepTheirOwnRecovery() {
   QVERIFY(sa->doc.objects[0].basePx != sb->doc.objects[0].basePx);
   // Both studios run: nothing is offered to a third.
   QVERIFY(Autosaver::pendingAll().empty());
-  // One goes away without saving (its lock is released, as a dead process's goes stale): only
-  // its work is offered, the living studio's is not.
-  const QString aPath = a->autosaver()->scenePath();
-  a.reset();
+  // A studio that died (its process is gone, its lock stale) left work behind: only that is
+  // offered, never the living studios' files.
+  QString prefix = a->autosaver()->scenePath();
+  prefix.truncate(prefix.lastIndexOf(QStringLiteral("-recovery-")) + int(qstrlen("-recovery-")));
+  const QString deadPath = prefix + QStringLiteral("dead-0.json");
+  QVERIFY(QFile::copy(a->autosaver()->scenePath(), deadPath));
+  QProcess dying;
+  dying.start(QCoreApplication::applicationFilePath(),
+              {QStringLiteral("--lock-and-die"), prefix + QStringLiteral("dead-0.lock")});
+  QVERIFY(dying.waitForFinished(30000));
+  QCOMPARE(dying.exitCode(), 0);
+  QVERIFY(QFile::exists(prefix + QStringLiteral("dead-0.lock")));
   const std::vector<Autosaver::Recovery> offered = Autosaver::pendingAll();
   QCOMPARE(int(offered.size()), 1);
-  QCOMPARE(offered[0].scenePath, aPath);
+  QCOMPARE(offered[0].scenePath, deadPath);
   // A third studio restores it into its own files; the dead studio's files go.
   auto c = std::make_unique<MainWindow>();
   c->setInteractive(false);
   QVERIFY(c->restoreRecovery());
-  QVERIFY(!QFile::exists(aPath));
+  QVERIFY(!QFile::exists(deadPath));
   QVERIFY(QFile::exists(c->autosaver()->scenePath()));
   QCOMPARE(c->document()->scene().lights.size(), sa->doc.lights.size());
   QVERIFY(Autosaver::pendingAll().empty());
+  QVERIFY(QFile::exists(a->autosaver()->scenePath()) && QFile::exists(b->autosaver()->scenePath()));
+  a.reset();
   c.reset();
   b.reset();
 }
@@ -426,5 +453,16 @@ void StudioLiveTest::roomSurfaceMaterial() {
   QVERIFY(!reason.isEmpty());
 }
 
-QTEST_MAIN(StudioLiveTest)
+int main(int argc, char** argv) {
+  // A studio that dies holding its lock: takes the lock at argv[2] and exits without unlocking.
+  if (argc >= 3 && qstrcmp(argv[1], "--lock-and-die") == 0) {
+    QCoreApplication app(argc, argv);
+    auto* lock = new QLockFile(QString::fromLocal8Bit(argv[2]));
+    if (!lock->tryLock(0)) return 1;
+    std::_Exit(0);
+  }
+  QApplication app(argc, argv);
+  StudioLiveTest test;
+  return QTest::qExec(&test, argc, argv);
+}
 #include "studio_live_test.moc"

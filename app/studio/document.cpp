@@ -200,6 +200,7 @@ void Document::resetTo(SceneDoc doc, const QString& filePath) {
   loadWarnings_.clear();
   estimatedBackWallPx_.reset();
   lastEstimate_.reset();
+  roomSurfaceNames_.clear();
   selectedMark_.reset();
   state_ = State::Empty;
   selected_ = doc_.objects.empty() ? -1 : 0;
@@ -308,6 +309,9 @@ void Document::onPrepared(const PrepareResult& result) {
     // back to the estimate must show the estimate, not their last fix.
     if (!prepared_->doc.layout.backWallPx) estimatedBackWallPx_ = prepared_->backWallPx;
     if (prepared_->cameraEstimate) lastEstimate_ = prepared_->cameraEstimate;
+    roomSurfaceNames_.clear();
+    for (const Surface& s : prepared_->geometry.surfaces)
+      if (s.kind != SurfaceKind::OccluderCard) roomSurfaceNames_.push_back(s.name);
     state_ = State::Ready;
   } else if (result.cancelled) {
     state_ = State::Empty;
@@ -867,13 +871,7 @@ bool Document::setVanishingLines(int axis, const std::optional<std::array<Vec2, 
                    reason);
 }
 
-std::vector<std::string> Document::roomSurfaceNames() const {
-  std::vector<std::string> out;
-  if (!prepared_) return out;
-  for (const Surface& s : prepared_->geometry.surfaces)
-    if (s.kind != SurfaceKind::OccluderCard) out.push_back(s.name);
-  return out;
-}
+std::vector<std::string> Document::roomSurfaceNames() const { return roomSurfaceNames_; }
 
 bool Document::setRoomMaterial(const std::string& surface,
                                const std::optional<RoomMaterialKeys>& material, QString* reason) {

@@ -190,7 +190,7 @@ class Document : public QObject {
   bool setRoomMaterial(const std::string& surface, const std::optional<RoomMaterialKeys>& material,
                        QString* reason = nullptr);
   // The names of the room's surfaces that can take a material (floor, walls, ceiling, the
-  // surfaces' tops and sides), from the scene's marks.
+  // surfaces' tops and sides), of the newest prepared scene (kept while it re-prepares).
   std::vector<std::string> roomSurfaceNames() const;
   bool removeMark(MarkRef mark, QString* reason = nullptr);
   SceneMarks marks() const;
@@ -246,6 +246,7 @@ class Document : public QObject {
   std::optional<MarkRef> selectedMark_;
   std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest automatic estimate
   std::optional<CameraEstimate> lastEstimate_;
+  std::vector<std::string> roomSurfaceNames_;  // of the newest prepared scene
 
   QThread thread_;
   PrepareWorker* worker_ = nullptr;  // lives on thread_
