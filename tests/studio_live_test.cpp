@@ -16,6 +16,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFile>
@@ -70,6 +71,14 @@ std::optional<Vec2> vanishingPoint(const CameraEstimate& e, int k) {
 }
 
 QString plainTitle(const QMenu* menu) { return menu->title().remove(QLatin1Char('&')); }
+
+// A screenshot beside the workflow test's (build tree, studio_workflow_artifacts/live_<name>.png).
+void shot(QWidget* w, const QString& name) {
+  QDir dir(QCoreApplication::applicationDirPath());
+  dir.mkpath(QStringLiteral("studio_workflow_artifacts"));
+  const QString path = dir.filePath(QStringLiteral("studio_workflow_artifacts/live_%1.png").arg(name));
+  QVERIFY2(w->grab().save(path), qPrintable(path));
+}
 
 }  // namespace
 
@@ -172,6 +181,7 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   const QPoint mid = view->widgetFromImage(0.5 * (drawn[0] + drawn[1])).toPoint();
   const QColor c = shown.pixelColor(mid);
   QVERIFY2(c.blue() > c.red() + 40 && c.blue() > c.green() + 25, qPrintable(c.name()));
+  shot(window_.get(), QStringLiteral("vanishing_lines"));
 
   // Saved under camera.vanishing_lines_px and read back.
   QTemporaryDir dir;
@@ -252,6 +262,8 @@ void StudioLiveTest::marksReshapePointByPoint() {
     QVERIFY(doc->marks() == before);
     doc->undoStack()->redo();
   }
+  doc->setSelectedMark(MarkRef{MarkKind::Surface, int(doc->scene().surfaces.size()) - 1});
+  shot(window_.get(), QStringLiteral("reshaped_marks"));
   // A box that would collapse is refused with a reason.
   QString reason;
   QVERIFY(!doc->moveMarkPoint({MarkKind::Shaft, 0}, 0, Vec2(395, 342), 0, &reason));  // box collapses
@@ -428,6 +440,7 @@ void StudioLiveTest::roomSurfaceMaterial() {
   QVERIFY(p->renderScene.roomMaterials[floorId].has_value());
   QCOMPARE(p->renderScene.roomMaterials[floorId]->kind, Material::Kind::Glossy);
   QCOMPARE(p->renderScene.roomMaterials[floorId]->roughness, 0.35);
+  shot(window_.get(), QStringLiteral("glossy_floor"));
   // Saved under room.materials.
   QTemporaryDir dir;
   QVERIFY(window_->saveTo(dir.filePath(QStringLiteral("glossy.json"))));
