@@ -22,7 +22,10 @@ namespace {
 // camera.vanishing_lines_px, so an error about them names that key.
 Error inFileKeys(Error e) {
   const std::string lines = "correction.vanishing_lines_px";
-  if (e.key.rfind(lines, 0) == 0) e.key = "camera.vanishing_lines_px" + e.key.substr(lines.size());
+  if (e.key.rfind(lines, 0) != 0) return e;
+  std::string rest = e.key.substr(lines.size());  // "[z]": the file writes the axis as ".z"
+  if (rest.size() >= 3 && rest[0] == '[' && rest[2] == ']') rest = "." + rest.substr(1, 1) + rest.substr(3);
+  e.key = "camera.vanishing_lines_px" + rest;
   return e;
 }
 
