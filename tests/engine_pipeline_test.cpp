@@ -184,3 +184,55 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
 
 }  // namespace
 }  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// "camera.vanishing_lines_px": the camera is re-estimated with that vanishing point where the
+// user's two lines meet (render and estimate both go through cameraAndLayoutOf); lines that
+// cannot be used fail naming the file's key.
+TEST(Engine, UserVanishingLinesFixTheirVanishingPoint) {
+  SceneDoc doc = exampleDoc();
+  doc.camera.vanishingPointsPx.reset();
+  doc.camera.focalPx.reset();
+  doc.layout.backWallPx.reset();
+  auto photo = loadImage(doc.photoResolved, ImageLimits::photo());
+  ASSERT_TRUE(photo.ok());
+  auto plain = cameraAndLayoutOf(doc.camera, doc.layout, *photo, true);
+  ASSERT_TRUE(plain.ok()) << plain.error().message();
+  const Vec3 h0 = plain->estimate->vanishingPoints[2].homogeneousPx;
+  ASSERT_GT(std::abs(h0.z()), 1e-9);
+  const Vec2 vp0(h0.x() / h0.z(), h0.y() / h0.z());
+  const Vec2 wanted = vp0 + Vec2(25, -12);
+  const Vec2 p0(40, 330), p1(470, 350);
+  doc.camera.vanishingLinesPx[2] =
+      std::array<Vec2, 4>{p0, p0 + 0.45 * (wanted - p0), p1, p1 + 0.45 * (wanted - p1)};
+  auto fixed = cameraAndLayoutOf(doc.camera, doc.layout, *photo, true);
+  ASSERT_TRUE(fixed.ok()) << fixed.error().message();
+  const Vec3 h1 = fixed->estimate->vanishingPoints[2].homogeneousPx;
+  const Vec2 vp1(h1.x() / h1.z(), h1.y() / h1.z());
+  EXPECT_LT((vp1 - wanted).norm(), 0.2 * (vp0 - wanted).norm()) << vp1.transpose();
+  int user = 0;
+  for (const LineSegment& s : fixed->estimate->segments)
+    if (s.userGiven) {
+      ++user;
+      EXPECT_EQ(s.family, 2);
+      EXPECT_TRUE(std::isfinite(s.residualPx));
+    }
+  EXPECT_EQ(user, 2);
+  // Through the whole preparation as `render` runs it.
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  const Vec3 h2 = ps->camera.vanishingPointOf(Vec3::UnitZ());
+  EXPECT_LT((Vec2(h2.x() / h2.z(), h2.y() / h2.z()) - vp1).norm(), 1.0);
+
+  // Two lines through one vanishing point that no camera can have with the others: the error
+  // names the file's key, not the solver's.
+  doc.camera.vanishingLinesPx[2] = std::array<Vec2, 4>{Vec2(10, 10), Vec2(10.5, 10), Vec2(0, 50), Vec2(100, 60)};
+  auto bad = cameraAndLayoutOf(doc.camera, doc.layout, *photo, true);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.error().key, "camera.vanishing_lines_px.z") << bad.error().message();
+}
+
+}  // namespace
+}  // namespace inlay

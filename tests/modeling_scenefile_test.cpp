@@ -244,6 +244,26 @@ TEST(SceneFile, RoomMaterialsParseAndRoundTrip) {
   EXPECT_EQ(again->doc.room.materials.at("wall_left").reflectance, Vec3(0.8, 0.85, 0.9));
 }
 
+TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
+  const fs::path dir = sceneDir("vanishing_lines");
+  auto r = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {
+            "vanishing_lines_px": {"z": [[[10, 300], [200, 200]], [[10, 20], [200, 120.5]]],
+                                   "x": [[[0, 0], [100, 1]], [[0, 50], [100, 52]]]}}})",
+      dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_TRUE(r->warnings.empty());
+  const auto& l = r->doc.camera.vanishingLinesPx;
+  ASSERT_TRUE(l[0] && l[2]);
+  EXPECT_FALSE(l[1]);
+  EXPECT_EQ((*l[2])[3], Vec2(200, 120.5));
+  EXPECT_EQ((*l[0])[1], Vec2(100, 1));
+  auto again = parseSceneJson(sceneToJson(r->doc), dir.string(), "scene.json");
+  ASSERT_TRUE(again.ok()) << again.error().message();
+  EXPECT_EQ(sceneToJson(again->doc), sceneToJson(r->doc));
+  EXPECT_EQ(again->doc.camera.vanishingLinesPx, l);
+}
+
 TEST(SceneFile, SaveRefusesWhatCouldNotBeReadBack) {
   const fs::path dir = sceneDir("save_refuses");
   writeText(dir / "scene.json", kFullScene);
@@ -359,6 +379,18 @@ INSTANTIATE_TEST_SUITE_P(
                 "camera.vanishing_points_px", "expected 3 elements"},
         BadCase{"vp_type", R"(, "camera": {"vanishing_points_px": [[1,2],[3,4],[5,null]]})",
                 "camera.vanishing_points_px[2][1]", "expected a number, got null"},
+        BadCase{"vlines_nan", R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[9,"NaN"]], [[0,5],[9,9]]]}})",
+                "camera.vanishing_lines_px.z[0][1][1]", "expected a number"},
+        BadCase{"vlines_overflow", R"(, "camera": {"vanishing_lines_px": {"y": [[[0,0],[9,9]], [[1e999,5],[9,9]]]}})",
+                "camera.vanishing_lines_px.y[1][0][0]", "out of range"},
+        BadCase{"vlines_degenerate", R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[90,9]], [[5,5],[5.5,5]]]}})",
+                "camera.vanishing_lines_px.z[1]", "degenerate segment"},
+        BadCase{"vlines_one_line", R"(, "camera": {"vanishing_lines_px": {"x": [[[0,0],[10,10]], [[20,20],[30,30]]]}})",
+                "camera.vanishing_lines_px.x", "lie on one line"},
+        BadCase{"vlines_count", R"(, "camera": {"vanishing_lines_px": {"x": [[[0,0],[10,10]]]}})",
+                "camera.vanishing_lines_px.x", "expected 2 elements"},
+        BadCase{"vlines_type", R"(, "camera": {"vanishing_lines_px": [1, 2]})",
+                "camera.vanishing_lines_px", "expected an object"},
         BadCase{"principal_type", R"(, "camera": {"principal_px": "centre"})",
                 "camera.principal_px", "expected an array"},
         BadCase{"back_wall", R"(, "layout": {"back_wall_px": [[1,2],[3,4],[5,6]]})",

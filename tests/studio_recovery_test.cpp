@@ -81,7 +81,7 @@ class StudioRecoveryTest : public QObject {
 void StudioRecoveryTest::killedStudioIsRestored() {
   const QString scene = exampleScene();
   if (scene.isEmpty() || !QFile::exists(scene)) QSKIP("resources/example/scene.json absent");
-  Autosaver::discard();
+  Autosaver::discardAll();
   QVERIFY(!Autosaver::pending());
 
   QProcess child;

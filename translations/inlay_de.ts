@@ -4,7 +4,12 @@
 <context>
     <name>inlay::studio::Autosaver</name>
     <message>
-        <location filename="../app/studio/autosave.cpp" line="77"/>
+        <location filename="../app/studio/autosave.cpp" line="60"/>
+        <source>%1: cannot take the lock</source>
+        <translation>%1: die Sperre lässt sich nicht setzen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/autosave.cpp" line="102"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
@@ -12,218 +17,297 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="290"/>
-        <location filename="../app/studio/document.cpp" line="308"/>
+        <location filename="../app/studio/document.cpp" line="288"/>
+        <location filename="../app/studio/document.cpp" line="318"/>
         <source>Preparation was cancelled.</source>
         <translation>Die Vorbereitung wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="404"/>
+        <location filename="../app/studio/document.cpp" line="434"/>
         <source>There is no object %1.</source>
         <translation>Es gibt kein Objekt %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="405"/>
+        <location filename="../app/studio/document.cpp" line="435"/>
         <source>The scene is still being prepared.</source>
         <translation>Die Szene wird noch vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="406"/>
+        <location filename="../app/studio/document.cpp" line="436"/>
         <source>The scene could not be prepared.</source>
         <translation>Die Szene konnte nicht vorbereitet werden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="344"/>
-        <location filename="../app/studio/document.cpp" line="572"/>
+        <location filename="../app/studio/document.cpp" line="374"/>
+        <location filename="../app/studio/document.cpp" line="615"/>
+        <location filename="../app/studio/document.cpp" line="797"/>
+        <location filename="../app/studio/document.cpp" line="854"/>
         <source>The position is not a number.</source>
         <translation>Die Position ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="346"/>
-        <location filename="../app/studio/document.cpp" line="417"/>
+        <location filename="../app/studio/document.cpp" line="376"/>
+        <location filename="../app/studio/document.cpp" line="447"/>
         <source>The height must be greater than zero.</source>
         <translation>Die Höhe muss größer als null sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="368"/>
+        <location filename="../app/studio/document.cpp" line="398"/>
         <source>Move object %1</source>
         <translation>Objekt %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="375"/>
+        <location filename="../app/studio/document.cpp" line="405"/>
         <source>Change height of object %1</source>
         <translation>Höhe von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="382"/>
+        <location filename="../app/studio/document.cpp" line="412"/>
         <source>Turn object %1</source>
         <translation>Objekt %1 drehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="389"/>
+        <location filename="../app/studio/document.cpp" line="419"/>
         <source>Change material of object %1</source>
         <translation>Material von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="428"/>
+        <location filename="../app/studio/document.cpp" line="458"/>
         <source>Insert object %1</source>
         <translation>Objekt %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="440"/>
+        <location filename="../app/studio/document.cpp" line="470"/>
         <source>Delete object %1</source>
         <translation>Objekt %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="537"/>
+        <location filename="../app/studio/document.cpp" line="580"/>
         <source>Open a photo first.</source>
         <translation>Öffnen Sie zuerst ein Foto.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="557"/>
+        <location filename="../app/studio/document.cpp" line="600"/>
         <source>There is no estimated box yet.</source>
         <translation>Es gibt noch keinen geschätzten Raum.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="562"/>
+        <location filename="../app/studio/document.cpp" line="605"/>
         <source>Accept the estimated box</source>
         <translation>Geschätzten Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="568"/>
+        <location filename="../app/studio/document.cpp" line="611"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="578"/>
+        <location filename="../app/studio/document.cpp" line="621"/>
         <source>Move a corner of the back wall</source>
         <translation>Ecke der Rückwand verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="584"/>
+        <location filename="../app/studio/document.cpp" line="627"/>
         <source>Estimate the box again</source>
         <translation>Raum neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="589"/>
+        <location filename="../app/studio/document.cpp" line="632"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="597"/>
+        <location filename="../app/studio/document.cpp" line="640"/>
         <source>Outline light %1</source>
         <translation>Lampe %1 umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="603"/>
+        <location filename="../app/studio/document.cpp" line="646"/>
+        <location filename="../app/studio/document.cpp" line="817"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="611"/>
+        <location filename="../app/studio/document.cpp" line="654"/>
         <source>Add shaft %1</source>
         <translation>Sonnenstrahl %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="618"/>
+        <location filename="../app/studio/document.cpp" line="661"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="627"/>
+        <location filename="../app/studio/document.cpp" line="670"/>
         <source>Add surface %1</source>
         <translation>Fläche %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="638"/>
+        <location filename="../app/studio/document.cpp" line="681"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Ein Verdecker braucht einen Strich über dem, was davor ist, und einen über dem, was dahinter ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="643"/>
+        <location filename="../app/studio/document.cpp" line="686"/>
         <source>Add occluder %1</source>
         <translation>Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="650"/>
+        <location filename="../app/studio/document.cpp" line="693"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="656"/>
+        <location filename="../app/studio/document.cpp" line="699"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Strich zu Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="667"/>
+        <location filename="../app/studio/document.cpp" line="710"/>
         <source>There is no such mark.</source>
         <translation>Diese Markierung gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="674"/>
+        <location filename="../app/studio/document.cpp" line="717"/>
         <source>Delete light %1</source>
         <translation>Lampe %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="675"/>
+        <location filename="../app/studio/document.cpp" line="718"/>
         <source>Delete shaft %1</source>
         <translation>Sonnenstrahl %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="676"/>
+        <location filename="../app/studio/document.cpp" line="719"/>
         <source>Delete surface %1</source>
         <translation>Fläche %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="677"/>
+        <location filename="../app/studio/document.cpp" line="720"/>
         <source>Delete occluder %1</source>
         <translation>Verdecker %1 löschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="800"/>
+        <source>There is no such point.</source>
+        <translation>Diesen Punkt gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="808"/>
+        <location filename="../app/studio/document.cpp" line="826"/>
+        <source>The outline would lose its area.</source>
+        <translation>Der Umriss würde seine Fläche verlieren.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="809"/>
+        <source>Reshape light %1</source>
+        <translation>Licht %1 umformen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="818"/>
+        <source>Reshape shaft %1</source>
+        <translation>Lichtschacht %1 umformen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="827"/>
+        <source>Reshape surface %1</source>
+        <translation>Fläche %1 umformen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="835"/>
+        <source>Reshape occluder %1</source>
+        <translation>Verdecker %1 umformen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="851"/>
+        <source>There is no such axis.</source>
+        <translation>Diese Achse gibt es nicht.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="856"/>
+        <source>Each line must be at least two pixels long.</source>
+        <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="860"/>
+        <source>The two lines lie on one line: draw two different edges.</source>
+        <translation>Die beiden Linien liegen auf einer Geraden: Zeichnen Sie zwei verschiedene Kanten.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="869"/>
+        <source>Draw the %1 vanishing lines</source>
+        <translation>Fluchtlinien für %1 zeichnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="870"/>
+        <source>Forget the %1 vanishing lines</source>
+        <translation>Fluchtlinien für %1 verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="884"/>
+        <source>The room has no surface %1.</source>
+        <translation>Der Raum hat keine Fläche %1.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="887"/>
+        <source>Unknown material.</source>
+        <translation>Unbekanntes Material.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="890"/>
+        <source>The roughness must lie between 0 and 1.</source>
+        <translation>Die Rauheit muss zwischen 0 und 1 liegen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="896"/>
+        <source>Change the material of %1</source>
+        <translation>Material von %1 ändern</translation>
     </message>
 </context>
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="140"/>
+        <location filename="../app/studio/docks.cpp" line="164"/>
         <source>Layers</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="165"/>
         <source>Composite</source>
         <translation>Komposit</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="165"/>
         <source>Photo</source>
         <translation>Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="166"/>
         <source>Albedo</source>
         <translation>Albedo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="166"/>
         <source>Direct light</source>
         <translation>Direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="144"/>
+        <location filename="../app/studio/docks.cpp" line="167"/>
         <source>With objects</source>
         <translation>Mit Objekten</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="144"/>
+        <location filename="../app/studio/docks.cpp" line="167"/>
         <source>Without objects</source>
         <translation>Ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="145"/>
+        <location filename="../app/studio/docks.cpp" line="168"/>
         <source>Mask</source>
         <translation>Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="145"/>
+        <location filename="../app/studio/docks.cpp" line="168"/>
         <source>Difference</source>
         <translation>Differenz</translation>
     </message>
@@ -256,309 +340,324 @@
         <translation>Objekte werden platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="116"/>
+        <location filename="../app/studio/main_window.cpp" line="387"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Samples pro Pixel des angezeigten Komposits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="117"/>
+        <location filename="../app/studio/main_window.cpp" line="388"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="118"/>
+        <location filename="../app/studio/main_window.cpp" line="389"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="119"/>
+        <location filename="../app/studio/main_window.cpp" line="390"/>
         <source>Render time since the last change</source>
         <translation>Renderzeit seit der letzten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="120"/>
+        <location filename="../app/studio/main_window.cpp" line="391"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="121"/>
+        <location filename="../app/studio/main_window.cpp" line="116"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="132"/>
+        <location filename="../app/studio/main_window.cpp" line="128"/>
         <source>Preparing the scene: %1…</source>
         <translation>Szene wird vorbereitet: %1 …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="162"/>
+        <location filename="../app/studio/main_window.cpp" line="354"/>
         <source>&amp;Open Scene…</source>
         <translation>Szene &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="164"/>
+        <location filename="../app/studio/main_window.cpp" line="375"/>
         <source>Open a scene file (.json)</source>
         <translation>Eine Szenendatei (.json) öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="167"/>
+        <location filename="../app/studio/main_window.cpp" line="355"/>
         <source>Open &amp;Photo…</source>
         <translation>&amp;Foto öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="169"/>
+        <location filename="../app/studio/main_window.cpp" line="376"/>
         <source>Start a new scene from a photo</source>
         <translation>Eine neue Szene aus einem Foto beginnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="172"/>
+        <location filename="../app/studio/main_window.cpp" line="356"/>
         <source>Open &amp;Example</source>
         <translation>&amp;Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="175"/>
+        <location filename="../app/studio/main_window.cpp" line="357"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="179"/>
+        <location filename="../app/studio/main_window.cpp" line="358"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="183"/>
+        <location filename="../app/studio/main_window.cpp" line="359"/>
         <source>&amp;Export Composite…</source>
         <translation>Komposit &amp;exportieren …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="185"/>
+        <location filename="../app/studio/main_window.cpp" line="377"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="188"/>
+        <location filename="../app/studio/main_window.cpp" line="360"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Angezeigte &amp;Ebene exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="189"/>
+        <location filename="../app/studio/main_window.cpp" line="378"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="191"/>
+        <location filename="../app/studio/main_window.cpp" line="361"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Szene als &amp;glTF exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="192"/>
+        <location filename="../app/studio/main_window.cpp" line="379"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Raum, Lichter, Kamera und Objekte als glTF 2.0 schreiben, um in Blender weiterzuarbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="195"/>
+        <location filename="../app/studio/main_window.cpp" line="362"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="199"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="202"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>&amp;Redo</source>
         <translation>Wi&amp;ederholen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="206"/>
+        <location filename="../app/studio/main_window.cpp" line="363"/>
         <source>Insert &amp;Sphere</source>
         <translation>&amp;Kugel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="207"/>
+        <location filename="../app/studio/main_window.cpp" line="380"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="210"/>
+        <location filename="../app/studio/main_window.cpp" line="364"/>
         <source>Insert &amp;Cube</source>
         <translation>&amp;Würfel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="211"/>
+        <location filename="../app/studio/main_window.cpp" line="381"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="214"/>
+        <location filename="../app/studio/main_window.cpp" line="365"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="215"/>
+        <location filename="../app/studio/main_window.cpp" line="382"/>
         <source>Delete the selected object or mark</source>
         <translation>Das ausgewählte Objekt oder die ausgewählte Markierung löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="219"/>
+        <location filename="../app/studio/main_window.cpp" line="366"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="222"/>
+        <location filename="../app/studio/main_window.cpp" line="367"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="225"/>
+        <location filename="../app/studio/main_window.cpp" line="368"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="228"/>
+        <location filename="../app/studio/main_window.cpp" line="369"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Vorher (nur Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="231"/>
+        <location filename="../app/studio/main_window.cpp" line="383"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="234"/>
+        <location filename="../app/studio/main_window.cpp" line="370"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Geschätzten &amp;Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="235"/>
+        <location filename="../app/studio/main_window.cpp" line="384"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Die geschätzte Rückwand als Ihre behalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="240"/>
+        <location filename="../app/studio/main_window.cpp" line="371"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Raum &amp;neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="241"/>
+        <location filename="../app/studio/main_window.cpp" line="385"/>
         <source>Forget your corners of the back wall</source>
         <translation>Ihre Ecken der Rückwand verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="246"/>
+        <location filename="../app/studio/main_window.cpp" line="372"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>Szene erneut &amp;vorbereiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="248"/>
+        <location filename="../app/studio/main_window.cpp" line="386"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="250"/>
+        <location filename="../app/studio/main_window.cpp" line="373"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="257"/>
+        <location filename="../app/studio/main_window.cpp" line="392"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="258"/>
+        <location filename="../app/studio/main_window.cpp" line="392"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="259"/>
+        <location filename="../app/studio/main_window.cpp" line="392"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="260"/>
+        <location filename="../app/studio/main_window.cpp" line="393"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="261"/>
+        <location filename="../app/studio/main_window.cpp" line="393"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="271"/>
+        <location filename="../app/studio/main_window.cpp" line="374"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="276"/>
+        <location filename="../app/studio/main_window.cpp" line="394"/>
+        <source>&amp;Vanishing Lines (X, Y, Z)</source>
+        <translation>&amp;Fluchtlinien (X, Y, Z)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="396"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="280"/>
+        <location filename="../app/studio/main_window.cpp" line="397"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="292"/>
+        <location filename="../app/studio/main_window.cpp" line="398"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="304"/>
+        <location filename="../app/studio/main_window.cpp" line="399"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="307"/>
+        <location filename="../app/studio/main_window.cpp" line="400"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="319"/>
+        <location filename="../app/studio/main_window.cpp" line="401"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="323"/>
+        <location filename="../app/studio/main_window.cpp" line="402"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="334"/>
+        <location filename="../app/studio/main_window.cpp" line="403"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="337"/>
+        <location filename="../app/studio/main_window.cpp" line="404"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
-        <location filename="../app/studio/main_window.cpp" line="366"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="431"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="358"/>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
+        <location filename="../app/studio/main_window.cpp" line="845"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="382"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="391"/>
+        <location filename="../app/studio/main_window.cpp" line="456"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -566,302 +665,297 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="483"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="421"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="425"/>
+        <location filename="../app/studio/main_window.cpp" line="490"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="426"/>
+        <location filename="../app/studio/main_window.cpp" line="491"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="427"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="428"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="442"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="536"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="555"/>
+        <location filename="../app/studio/main_window.cpp" line="565"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
+        <location filename="../app/studio/main_window.cpp" line="555"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="565"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="575"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="576"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="518"/>
+        <location filename="../app/studio/main_window.cpp" line="583"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="519"/>
+        <location filename="../app/studio/main_window.cpp" line="584"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="526"/>
+        <location filename="../app/studio/main_window.cpp" line="591"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="595"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="545"/>
+        <location filename="../app/studio/main_window.cpp" line="610"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="546"/>
+        <location filename="../app/studio/main_window.cpp" line="611"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="554"/>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
-        <location filename="../app/studio/main_window.cpp" line="604"/>
-        <location filename="../app/studio/main_window.cpp" line="633"/>
+        <location filename="../app/studio/main_window.cpp" line="619"/>
+        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="669"/>
+        <location filename="../app/studio/main_window.cpp" line="698"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="554"/>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
+        <location filename="../app/studio/main_window.cpp" line="619"/>
+        <location filename="../app/studio/main_window.cpp" line="640"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="558"/>
-        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="623"/>
+        <location filename="../app/studio/main_window.cpp" line="687"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="558"/>
-        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="623"/>
+        <location filename="../app/studio/main_window.cpp" line="687"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="559"/>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="688"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="559"/>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="560"/>
+        <location filename="../app/studio/main_window.cpp" line="625"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="645"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="583"/>
+        <location filename="../app/studio/main_window.cpp" line="648"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="593"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="604"/>
+        <location filename="../app/studio/main_window.cpp" line="669"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="610"/>
+        <location filename="../app/studio/main_window.cpp" line="675"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="621"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="633"/>
+        <location filename="../app/studio/main_window.cpp" line="698"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="705"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="641"/>
+        <location filename="../app/studio/main_window.cpp" line="706"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="613"/>
-        <location filename="../app/studio/main_window.cpp" line="644"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
+        <location filename="../app/studio/main_window.cpp" line="709"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="665"/>
+        <location filename="../app/studio/main_window.cpp" line="730"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="666"/>
+        <location filename="../app/studio/main_window.cpp" line="731"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="740"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="727"/>
-        <source>The language changes when Inlay is started again.</source>
-        <translation>Die Sprache wechselt beim nächsten Start von Inlay.</translation>
-    </message>
-    <message>
-        <location filename="../app/studio/main_window.cpp" line="738"/>
+        <location filename="../app/studio/main_window.cpp" line="805"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="741"/>
+        <location filename="../app/studio/main_window.cpp" line="808"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="809"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="746"/>
+        <location filename="../app/studio/main_window.cpp" line="813"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="747"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="765"/>
+        <location filename="../app/studio/main_window.cpp" line="832"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="769"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
+        <location filename="../app/studio/main_window.cpp" line="845"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -869,7 +963,7 @@
 <context>
     <name>inlay::studio::PrepareWorker</name>
     <message>
-        <location filename="../app/studio/prepare_worker.cpp" line="49"/>
+        <location filename="../app/studio/prepare_worker.cpp" line="98"/>
         <source>Internal error while preparing the scene.</source>
         <translation>Interner Fehler beim Vorbereiten der Szene.</translation>
     </message>
@@ -877,102 +971,134 @@
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="174"/>
+        <location filename="../app/studio/docks.cpp" line="263"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="186"/>
+        <location filename="../app/studio/docks.cpp" line="273"/>
+        <source>Surface:</source>
+        <translation>Fläche:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="274"/>
+        <source>Finish:</source>
+        <translation>Oberfläche:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="275"/>
+        <source>Roughness:</source>
+        <translation>Rauheit:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="276"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="194"/>
+        <location filename="../app/studio/docks.cpp" line="277"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="278"/>
         <source>Diffuse</source>
         <translation>Matt (diffus)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="283"/>
         <source>Glossy</source>
         <translation>Glänzend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="200"/>
+        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="283"/>
         <source>Mirror</source>
         <translation>Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="201"/>
+        <location filename="../app/studio/docks.cpp" line="278"/>
         <source>Metal</source>
         <translation>Metall</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="202"/>
+        <location filename="../app/studio/docks.cpp" line="279"/>
         <source>Glass</source>
         <translation>Glas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="203"/>
+        <location filename="../app/studio/docks.cpp" line="279"/>
         <source>Frosted glass</source>
         <translation>Milchglas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="204"/>
+        <location filename="../app/studio/docks.cpp" line="279"/>
         <source>Emissive</source>
         <translation>Leuchtend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="205"/>
+        <location filename="../app/studio/docks.cpp" line="279"/>
         <source>From the file</source>
         <translation>Aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="208"/>
+        <location filename="../app/studio/docks.cpp" line="281"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Reflexionsgrad der Objektoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="211"/>
+        <location filename="../app/studio/docks.cpp" line="268"/>
         <source>Base (px):</source>
         <translation>Fußpunkt (px):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="212"/>
+        <location filename="../app/studio/docks.cpp" line="269"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="213"/>
+        <location filename="../app/studio/docks.cpp" line="270"/>
         <source>Turn:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="214"/>
+        <location filename="../app/studio/docks.cpp" line="271"/>
         <source>Material:</source>
         <translation>Material:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="215"/>
+        <location filename="../app/studio/docks.cpp" line="272"/>
         <source>Colour:</source>
         <translation>Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="234"/>
+        <location filename="../app/studio/docks.cpp" line="282"/>
+        <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Raumfläche&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="283"/>
+        <source>Matte</source>
+        <translation>Matt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="285"/>
+        <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
+        <translation>Eine echte Fläche im Foto, die spiegelt: ein glänzender Boden, ein Spiegel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="337"/>
         <source>No object selected</source>
         <translation>Kein Objekt ausgewählt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="239"/>
+        <location filename="../app/studio/docks.cpp" line="342"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="284"/>
+        <location filename="../app/studio/docks.cpp" line="387"/>
         <source>Object colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -980,122 +1106,122 @@
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="30"/>
+        <location filename="../app/studio/docks.cpp" line="31"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="31"/>
+        <location filename="../app/studio/docks.cpp" line="32"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="45"/>
+        <location filename="../app/studio/docks.cpp" line="79"/>
         <source>Scene</source>
         <translation>Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="47"/>
+        <location filename="../app/studio/docks.cpp" line="80"/>
         <source>Item</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="47"/>
+        <location filename="../app/studio/docks.cpp" line="80"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="77"/>
+        <location filename="../app/studio/docks.cpp" line="84"/>
         <source>Room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="80"/>
+        <location filename="../app/studio/docks.cpp" line="87"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="85"/>
+        <location filename="../app/studio/docks.cpp" line="92"/>
         <source>back wall given</source>
         <translation>Rückwand vorgegeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="85"/>
+        <location filename="../app/studio/docks.cpp" line="92"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="88"/>
+        <location filename="../app/studio/docks.cpp" line="95"/>
         <source>Lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="91"/>
+        <location filename="../app/studio/docks.cpp" line="98"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="92"/>
+        <location filename="../app/studio/docks.cpp" line="99"/>
         <source>outline on the photo</source>
         <translation>Umriss im Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="93"/>
+        <location filename="../app/studio/docks.cpp" line="100"/>
         <source>rectangle in 3D</source>
         <translation>Rechteck im Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="107"/>
+        <location filename="../app/studio/docks.cpp" line="114"/>
         <source>Shafts</source>
         <translation>Sonnenstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="107"/>
+        <location filename="../app/studio/docks.cpp" line="114"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="108"/>
+        <location filename="../app/studio/docks.cpp" line="115"/>
         <source>sunlit patch and its window</source>
         <translation>Sonnenfleck und sein Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="116"/>
         <source>Surfaces</source>
         <translation>Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="116"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="111"/>
+        <location filename="../app/studio/docks.cpp" line="118"/>
         <source>Occluders</source>
         <translation>Verdecker</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="111"/>
+        <location filename="../app/studio/docks.cpp" line="118"/>
         <source>Occluder %1</source>
         <translation>Verdecker %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="113"/>
+        <location filename="../app/studio/docks.cpp" line="120"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 Striche davor, %2 dahinter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="118"/>
+        <location filename="../app/studio/docks.cpp" line="125"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="122"/>
+        <location filename="../app/studio/docks.cpp" line="129"/>
         <source>Object %1</source>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="123"/>
+        <location filename="../app/studio/docks.cpp" line="130"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1103,110 +1229,130 @@
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="273"/>
+        <location filename="../app/studio/viewport.cpp" line="303"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="275"/>
+        <location filename="../app/studio/viewport.cpp" line="305"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="277"/>
+        <location filename="../app/studio/viewport.cpp" line="307"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="278"/>
+        <location filename="../app/studio/viewport.cpp" line="308"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="281"/>
+        <location filename="../app/studio/viewport.cpp" line="311"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="282"/>
+        <location filename="../app/studio/viewport.cpp" line="312"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="284"/>
+        <location filename="../app/studio/viewport.cpp" line="314"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="355"/>
+        <location filename="../app/studio/viewport.cpp" line="319"/>
+        <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
+        <translation>Ziehen Sie entlang einer Kante in %1-Richtung (die Tasten X, Y, Z wählen sie).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="320"/>
+        <source>Now drag along a second edge in the %1 direction.</source>
+        <translation>Ziehen Sie nun entlang einer zweiten Kante in %1-Richtung.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="392"/>
         <source>Back wall (yours)</source>
         <translation>Rückwand (Ihre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="355"/>
+        <location filename="../app/studio/viewport.cpp" line="392"/>
         <source>Back wall (estimated)</source>
         <translation>Rückwand (geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="411"/>
+        <location filename="../app/studio/viewport.cpp" line="448"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="439"/>
+        <location filename="../app/studio/viewport.cpp" line="486"/>
+        <source>%1: %2 px</source>
+        <translation>%1: %2 px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="515"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="453"/>
+        <location filename="../app/studio/viewport.cpp" line="529"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="468"/>
+        <location filename="../app/studio/viewport.cpp" line="544"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="614"/>
+        <location filename="../app/studio/viewport.cpp" line="696"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="617"/>
+        <location filename="../app/studio/viewport.cpp" line="699"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="621"/>
+        <location filename="../app/studio/viewport.cpp" line="703"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="624"/>
+        <location filename="../app/studio/viewport.cpp" line="706"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="642"/>
+        <location filename="../app/studio/viewport.cpp" line="724"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="646"/>
+        <location filename="../app/studio/viewport.cpp" line="728"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="686"/>
+        <location filename="../app/studio/viewport.cpp" line="769"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="817"/>
-        <location filename="../app/studio/viewport.cpp" line="919"/>
+        <location filename="../app/studio/viewport.cpp" line="909"/>
+        <location filename="../app/studio/viewport.cpp" line="1051"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="983"/>
+        <source>Each line must be at least two pixels long.</source>
+        <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
 </context>
 <context>

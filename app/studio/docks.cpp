@@ -7,6 +7,7 @@
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHeaderView>
@@ -42,9 +43,8 @@ QColor displayColour(const Vec3& linear) {
 // ---------------------------------------------------------------- SceneTreeDock
 
 SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
-    : QDockWidget(tr("Scene"), parent), document_(document), tree_(new QTreeWidget(this)) {
+    : QDockWidget(parent), document_(document), tree_(new QTreeWidget(this)) {
   setObjectName(QStringLiteral("sceneDock"));
-  tree_->setHeaderLabels({tr("Item"), tr("Details")});
   tree_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
   tree_->setRootIsDecorated(true);
   setWidget(tree_);
@@ -60,6 +60,11 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
   rebuild();
 }
 
+void SceneTreeDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) rebuild();
+  QDockWidget::changeEvent(event);
+}
+
 void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
       event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement) ||
@@ -71,6 +76,8 @@ void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
 
 void SceneTreeDock::rebuild() {
   updating_ = true;
+  setWindowTitle(tr("Scene"));
+  tree_->setHeaderLabels({tr("Item"), tr("Details")});
   tree_->clear();
   const SceneDoc& doc = document_->scene();
 
@@ -137,18 +144,29 @@ void SceneTreeDock::rebuild() {
 // ---------------------------------------------------------------- LayersDock
 
 LayersDock::LayersDock(Viewport* viewport, QWidget* parent)
-    : QDockWidget(tr("Layers"), parent), list_(new QListWidget(this)) {
+    : QDockWidget(parent), list_(new QListWidget(this)) {
   setObjectName(QStringLiteral("layersDock"));
-  const QString names[kLayerCount] = {tr("Composite"),    tr("Photo"),
-                                      tr("Albedo"),       tr("Direct light"),
-                                      tr("With objects"), tr("Without objects"),
-                                      tr("Mask"),         tr("Difference")};
-  for (const QString& n : names) list_->addItem(n);
+  for (int i = 0; i < kLayerCount; ++i) list_->addItem(QString());
+  retranslate();
   list_->setCurrentRow(int(viewport->layer()));
   setWidget(list_);
   connect(list_, &QListWidget::currentRowChanged, viewport, [viewport](int row) {
     if (row >= 0 && row < kLayerCount) viewport->setLayer(Layer(row));
   });
+}
+
+void LayersDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDockWidget::changeEvent(event);
+}
+
+void LayersDock::retranslate() {
+  setWindowTitle(tr("Layers"));
+  const QString names[kLayerCount] = {tr("Composite"),    tr("Photo"),
+                                      tr("Albedo"),       tr("Direct light"),
+                                      tr("With objects"), tr("Without objects"),
+                                      tr("Mask"),         tr("Difference")};
+  for (int i = 0; i < kLayerCount; ++i) list_->item(i)->setText(names[i]);
 }
 
 void SceneTreeDock::syncSelection() {
@@ -171,7 +189,7 @@ void SceneTreeDock::syncSelection() {
 // ---------------------------------------------------------------- PropertiesDock
 
 PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
-    : QDockWidget(tr("Properties"), parent), document_(document) {
+    : QDockWidget(parent), document_(document) {
   setObjectName(QStringLiteral("propertiesDock"));
   auto* panel = new QWidget(this);
   auto* form = new QFormLayout(panel);
@@ -183,7 +201,6 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   height_->setRange(0.01, 100.0);
   height_->setDecimals(3);
   height_->setSingleStep(0.05);
-  height_->setSuffix(tr(" m"));
   height_->setKeyboardTracking(false);
 
   yaw_ = new QDoubleSpinBox(panel);
@@ -191,30 +208,41 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   yaw_->setDecimals(1);
   yaw_->setSingleStep(5.0);
   yaw_->setWrapping(true);
-  yaw_->setSuffix(tr(" °"));
   yaw_->setKeyboardTracking(false);
 
   preset_ = new QComboBox(panel);
-  preset_->addItem(tr("Diffuse"), QStringLiteral("diffuse"));
-  preset_->addItem(tr("Glossy"), QStringLiteral("glossy"));
-  preset_->addItem(tr("Mirror"), QStringLiteral("mirror"));
-  preset_->addItem(tr("Metal"), QStringLiteral("metal"));
-  preset_->addItem(tr("Glass"), QStringLiteral("glass"));
-  preset_->addItem(tr("Frosted glass"), QStringLiteral("rough_glass"));
-  preset_->addItem(tr("Emissive"), QStringLiteral("emissive"));
-  preset_->addItem(tr("From the file"), QStringLiteral("asset"));
-
+  for (const char* preset : {"diffuse", "glossy", "mirror", "metal", "glass", "rough_glass",
+                             "emissive", "asset"})
+    preset_->addItem(QString(), QString::fromLatin1(preset));
   albedo_ = new QPushButton(panel);
-  albedo_->setToolTip(tr("Reflectance of the object's surface"));
+
+  roomTitle_ = new QLabel(panel);
+  roomSurface_ = new QComboBox(panel);
+  roomPreset_ = new QComboBox(panel);
+  for (const char* preset : {"diffuse", "glossy", "mirror"})
+    roomPreset_->addItem(QString(), QString::fromLatin1(preset));
+  roomRoughness_ = new QDoubleSpinBox(panel);
+  roomRoughness_->setRange(0.0, 1.0);
+  roomRoughness_->setDecimals(2);
+  roomRoughness_->setSingleStep(0.05);
+  roomRoughness_->setKeyboardTracking(false);
 
   form->addRow(title_);
-  form->addRow(tr("Base (px):"), base_);
-  form->addRow(tr("Height:"), height_);
-  form->addRow(tr("Turn:"), yaw_);
-  form->addRow(tr("Material:"), preset_);
-  form->addRow(tr("Colour:"), albedo_);
+  form->addRow(QString(), base_);
+  form->addRow(QString(), height_);
+  form->addRow(QString(), yaw_);
+  form->addRow(QString(), preset_);
+  form->addRow(QString(), albedo_);
+  form->addRow(roomTitle_);
+  form->addRow(QString(), roomSurface_);
+  form->addRow(QString(), roomPreset_);
+  form->addRow(QString(), roomRoughness_);
   setWidget(panel);
+  retranslate();
 
+  connect(roomSurface_, &QComboBox::currentIndexChanged, this, [this] { refreshRoom(); });
+  connect(roomPreset_, &QComboBox::activated, this, [this] { editRoomMaterial(); });
+  connect(roomRoughness_, &QDoubleSpinBox::valueChanged, this, [this] { editRoomMaterial(); });
   connect(height_, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::editHeight);
   connect(yaw_, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::editYaw);
   connect(preset_, &QComboBox::activated, this, &PropertiesDock::editPreset);
@@ -223,10 +251,85 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   refresh();
 }
 
+void PropertiesDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) {
+    retranslate();
+    refresh();
+  }
+  QDockWidget::changeEvent(event);
+}
+
+void PropertiesDock::retranslate() {
+  setWindowTitle(tr("Properties"));
+  auto* form = static_cast<QFormLayout*>(widget()->layout());
+  auto label = [form](QWidget* field, const QString& text) {
+    if (auto* l = qobject_cast<QLabel*>(form->labelForField(field))) l->setText(text);
+  };
+  label(base_, tr("Base (px):"));
+  label(height_, tr("Height:"));
+  label(yaw_, tr("Turn:"));
+  label(preset_, tr("Material:"));
+  label(albedo_, tr("Colour:"));
+  label(roomSurface_, tr("Surface:"));
+  label(roomPreset_, tr("Finish:"));
+  label(roomRoughness_, tr("Roughness:"));
+  height_->setSuffix(tr(" m"));
+  yaw_->setSuffix(tr(" °"));
+  const QString presets[] = {tr("Diffuse"), tr("Glossy"), tr("Mirror"), tr("Metal"),
+                             tr("Glass"), tr("Frosted glass"), tr("Emissive"), tr("From the file")};
+  for (int i = 0; i < preset_->count(); ++i) preset_->setItemText(i, presets[i]);
+  albedo_->setToolTip(tr("Reflectance of the object's surface"));
+  roomTitle_->setText(tr("<b>Room surface</b>"));
+  const QString finishes[] = {tr("Matte"), tr("Glossy"), tr("Mirror")};
+  for (int i = 0; i < roomPreset_->count(); ++i) roomPreset_->setItemText(i, finishes[i]);
+  roomPreset_->setToolTip(tr("A real surface of the photo that reflects: a glossy floor, a mirror"));
+}
+
+void PropertiesDock::refreshRoom() {
+  const std::vector<std::string> names = document_->roomSurfaceNames();
+  const QString current = roomSurface_->currentText();
+  {
+    const QSignalBlocker block(roomSurface_);
+    roomSurface_->clear();
+    for (const std::string& n : names) roomSurface_->addItem(QString::fromStdString(n));
+    roomSurface_->setCurrentIndex(std::max(0, roomSurface_->findText(current.isEmpty() ? QStringLiteral("floor") : current)));
+  }
+  const bool editable = !names.empty();
+  for (QWidget* w : {static_cast<QWidget*>(roomSurface_), static_cast<QWidget*>(roomPreset_),
+                     static_cast<QWidget*>(roomRoughness_)})
+    w->setEnabled(editable);
+  const auto& materials = document_->scene().room.materials;
+  const auto it = materials.find(roomSurface_->currentText().toStdString());
+  const QSignalBlocker b1(roomPreset_), b2(roomRoughness_);
+  const QString preset = it == materials.end() ? QStringLiteral("diffuse")
+                                               : QString::fromStdString(it->second.preset);
+  roomPreset_->setCurrentIndex(std::max(0, roomPreset_->findData(preset)));
+  roomRoughness_->setValue(it == materials.end() ? RoomMaterialKeys{}.roughness : it->second.roughness);
+  roomRoughness_->setEnabled(editable && preset == QLatin1String("glossy"));
+}
+
+void PropertiesDock::editRoomMaterial() {
+  const std::string surface = roomSurface_->currentText().toStdString();
+  const QString preset = roomPreset_->currentData().toString();
+  std::optional<RoomMaterialKeys> material;
+  if (preset != QLatin1String("diffuse")) {
+    const auto& materials = document_->scene().room.materials;
+    const auto it = materials.find(surface);
+    material = it == materials.end() ? RoomMaterialKeys{} : it->second;
+    material->preset = preset.toStdString();
+    material->roughness = roomRoughness_->value();
+  }
+  QString reason;
+  report(document_->setRoomMaterial(surface, material, &reason), reason);
+}
+
 void PropertiesDock::refresh() {
   const int i = document_->selectedObject();
   const bool valid = i >= 0 && i < document_->objectCount();
-  const bool editable = valid && document_->isReady();
+  refreshRoom();
+  // Edits are taken while the scene re-prepares too (the document is the truth).
+  const bool editable =
+      valid && (document_->isReady() || document_->state() == Document::State::Preparing);
   for (QWidget* w : {static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
                      static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
     w->setEnabled(editable);

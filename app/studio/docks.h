@@ -4,7 +4,10 @@
 //     choosing an object or a mark selects it in the document (and so in the viewport).
 //   LayersDock: which image the viewport shows (composite, photo, albedo, direct light, with and
 //     without objects, mask, difference).
-//   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object.
+//   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object;
+//     below, a real surface of the room (floor, walls, ceiling, table tops) and its material
+//     (matte, glossy with a roughness, mirror: room.materials).
+// Each retranslates its texts on QEvent::LanguageChange.
 // GUI thread only.
 #pragma once
 
@@ -33,6 +36,9 @@ class SceneTreeDock : public QDockWidget {
   explicit SceneTreeDock(Document* document, QWidget* parent = nullptr);
   QTreeWidget* tree() const { return tree_; }
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void rebuild();
   void syncSelection();
@@ -50,7 +56,11 @@ class LayersDock : public QDockWidget {
   explicit LayersDock(Viewport* viewport, QWidget* parent = nullptr);
   QListWidget* list() const { return list_; }
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslate();
   QListWidget* list_;
 };
 
@@ -62,12 +72,22 @@ class PropertiesDock : public QDockWidget {
   QDoubleSpinBox* heightBox() const { return height_; }
   QDoubleSpinBox* yawBox() const { return yaw_; }
   QComboBox* presetBox() const { return preset_; }
+  // The room surface shown and its material: index 0 matte, 1 glossy, 2 mirror.
+  QComboBox* roomSurfaceBox() const { return roomSurface_; }
+  QComboBox* roomPresetBox() const { return roomPreset_; }
+  QDoubleSpinBox* roomRoughnessBox() const { return roomRoughness_; }
 
  Q_SIGNALS:
   void statusMessage(const QString& message);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslate();
   void refresh();
+  void refreshRoom();
+  void editRoomMaterial();
   void editHeight(double heightM);
   void editYaw(double yawDeg);
   void editPreset(int comboIndex);
@@ -81,6 +101,10 @@ class PropertiesDock : public QDockWidget {
   QDoubleSpinBox* yaw_;
   QComboBox* preset_;
   QPushButton* albedo_;
+  QLabel* roomTitle_;
+  QComboBox* roomSurface_;
+  QComboBox* roomPreset_;
+  QDoubleSpinBox* roomRoughness_;
 };
 
 }  // namespace inlay::studio

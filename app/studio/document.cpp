@@ -40,6 +40,7 @@ void putMarks(SceneDoc& doc, const SceneMarks& m) {
   doc.shafts = m.shafts;
   doc.surfaces = m.surfaces;
   doc.occluders = m.occluders;
+  doc.room = m.room;
 }
 
 bool finitePoints(const std::vector<Vec2>& points) {
@@ -199,6 +200,7 @@ void Document::resetTo(SceneDoc doc, const QString& filePath) {
   loadWarnings_.clear();
   estimatedBackWallPx_.reset();
   lastEstimate_.reset();
+  roomSurfaceNames_.clear();
   selectedMark_.reset();
   state_ = State::Empty;
   selected_ = doc_.objects.empty() ? -1 : 0;
@@ -292,12 +294,24 @@ void Document::onPrepared(const PrepareResult& result) {
   warnings_ = loadWarnings_ + result.warnings;
   if (result.scene) {
     prepared_ = std::make_unique<PreparedScene>(std::move(*result.scene));
-    // The engine may have filled in estimated keys; the objects are the user's.
+    // The engine may have filled in estimated keys; the objects are the user's, edited perhaps
+    // while this scene was prepared.
+    const std::vector<ObjectKeys> preparedWith = std::move(prepared_->doc.objects);
     prepared_->doc.objects = doc_.objects;
+    if (const QString why = catchUpObjects(preparedWith); !why.isEmpty()) {
+      prepared_.reset();
+      state_ = State::Failed;
+      prepareError_ = why;
+      Q_EMIT changed({ChangeEvent::PrepareFinished});
+      return;
+    }
     // The estimate's own corners only: with the user's corners the box is theirs, and undoing
     // back to the estimate must show the estimate, not their last fix.
     if (!prepared_->doc.layout.backWallPx) estimatedBackWallPx_ = prepared_->backWallPx;
     if (prepared_->cameraEstimate) lastEstimate_ = prepared_->cameraEstimate;
+    roomSurfaceNames_.clear();
+    for (const Surface& s : prepared_->geometry.surfaces)
+      if (s.kind != SurfaceKind::OccluderCard) roomSurfaceNames_.push_back(s.name);
     state_ = State::Ready;
   } else if (result.cancelled) {
     state_ = State::Empty;
@@ -307,6 +321,26 @@ void Document::onPrepared(const PrepareResult& result) {
     prepareError_ = result.error;
   }
   Q_EMIT changed({ChangeEvent::PrepareFinished});
+}
+
+QString Document::catchUpObjects(const std::vector<ObjectKeys>& preparedWith) {
+  // Edits while preparing change keys only (inserting and removing restart preparation).
+  INLAY_CHECK(preparedWith.size() == doc_.objects.size() &&
+              prepared_->placements.size() == doc_.objects.size());
+  for (size_t i = 0; i < doc_.objects.size(); ++i) {
+    const ObjectKeys& now = doc_.objects[i];
+    if (!samePlacement(preparedWith[i], now)) {
+      const Expected<Placement> placed = placeObjectAt(*prepared_, i);
+      if (!placed.ok()) return QString::fromStdString(placed.error().message());
+      prepared_->placements[i] = placed.value();
+      prepared_->renderScene.objects[i].worldFromObject = placed->worldFromObject;
+    }
+    if (!sameMaterial(preparedWith[i].material, now.material)) {
+      InsertedObject& o = prepared_->renderScene.objects[i];
+      o.material = materialFromKeys(now.material, o.meshObject.get());
+    }
+  }
+  return {};
 }
 
 void Document::setSelectedObject(int index) {
@@ -335,14 +369,14 @@ bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, const 
     if (reason) *reason = why;
     return false;
   };
-  if (const QString why = whyObjectsCannotChange(index); !why.isEmpty()) return fail(why);
+  if (const QString why = whyObjectsCannotChange(index, true); !why.isEmpty()) return fail(why);
   if (!std::isfinite(keys.basePx.x()) || !std::isfinite(keys.basePx.y()))
     return fail(tr("The position is not a number."));
   if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
     return fail(tr("The height must be greater than zero."));
 
   const ObjectKeys& current = doc_.objects[size_t(index)];
-  if (!samePlacement(current, keys)) {
+  if (!samePlacement(current, keys) && prepared_) {
     // Try the placement on the prepared scene, then put the old keys back.
     ObjectKeys& slot = prepared_->doc.objects[size_t(index)];
     const ObjectKeys saved = slot;
@@ -396,9 +430,9 @@ std::optional<Vec2> Document::freeStandingPointPx() const {
   return std::nullopt;
 }
 
-QString Document::whyObjectsCannotChange(int index) const {
+QString Document::whyObjectsCannotChange(int index, bool whilePreparing) const {
   if (index != -1 && (index < 0 || index >= objectCount())) return tr("There is no object %1.").arg(index + 1);
-  if (state_ == State::Preparing) return tr("The scene is still being prepared.");
+  if (state_ == State::Preparing) return whilePreparing ? QString() : tr("The scene is still being prepared.");
   if (state_ != State::Ready || !prepared_) return tr("The scene could not be prepared.");
   return {};
 }
@@ -482,6 +516,18 @@ void Document::removeObjectAt(int index) {
 
 void Document::applyObject(int index, const ObjectKeys& keys) {
   INLAY_CHECK(index >= 0 && index < objectCount());
+  if (!prepared_ && state_ == State::Preparing) {
+    // The document takes the edit now (the viewport draws it); the scene being prepared
+    // catches up when it arrives (catchUpObjects).
+    ChangeEvent event;
+    event.objectIndex = index;
+    if (!samePlacement(doc_.objects[size_t(index)], keys)) event.what |= ChangeEvent::ObjectPlacement;
+    if (!sameMaterial(doc_.objects[size_t(index)].material, keys.material))
+      event.what |= ChangeEvent::ObjectMaterial;
+    doc_.objects[size_t(index)] = keys;
+    if (event.what) Q_EMIT changed(event);
+    return;
+  }
   if (!prepared_) {
     std::vector<ObjectKeys> objects = doc_.objects;
     objects[size_t(index)] = keys;
@@ -519,7 +565,8 @@ namespace inlay::studio {
 // --- The scene's marks ---
 
 SceneMarks Document::marks() const {
-  return {doc_.camera, doc_.layout, doc_.lights, doc_.shafts, doc_.surfaces, doc_.occluders};
+  return {doc_.camera, doc_.layout, doc_.lights,   doc_.shafts,
+          doc_.surfaces, doc_.occluders, doc_.room};
 }
 
 std::optional<std::array<Vec2, 4>> Document::shownBackWallPx() const {
@@ -680,6 +727,173 @@ void Document::changeObjectsUnprepared(std::vector<ObjectKeys> objects, int sele
   selected_ = std::clamp(selected, -1, objectCount() - 1);
   Q_EMIT changed({ChangeEvent::ObjectsAddedOrRemoved | ChangeEvent::Selection});
   prepare();
+}
+
+}  // namespace inlay::studio
+
+namespace inlay::studio {
+
+// --- Reshaping marks point by point, vanishing lines, room materials ---
+namespace {
+
+// The corners of a box {x0, y0, x1, y1} in MarkPoint order: x0y0, x1y0, x1y1, x0y1.
+std::array<Vec2, 4> boxCorners(const std::array<double, 4>& b) {
+  return {Vec2(b[0], b[1]), Vec2(b[2], b[1]), Vec2(b[2], b[3]), Vec2(b[0], b[3])};
+}
+
+// Moves corner `c` of a box; the opposite corner stays. The result is normalised (x0 <= x1).
+std::array<double, 4> boxWithCorner(const std::array<double, 4>& b, int c, const Vec2& px) {
+  const Vec2 opposite = boxCorners(b)[size_t((c + 2) % 4)];
+  return {std::min(px.x(), opposite.x()), std::min(px.y(), opposite.y()),
+          std::max(px.x(), opposite.x()), std::max(px.y(), opposite.y())};
+}
+
+// The occluder's points in MarkPoint order, as pointers into `o`.
+std::vector<Vec2*> occluderPoints(OccluderKeys& o) {
+  std::vector<Vec2*> out;
+  for (auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
+    for (auto& stroke : *strokes)
+      for (Vec2& q : stroke) out.push_back(&q);
+  return out;
+}
+
+}  // namespace
+
+std::vector<MarkPoint> Document::markPoints() const {
+  std::vector<MarkPoint> out;
+  auto add = [&](MarkKind kind, size_t i, int point, const Vec2& px) {
+    out.push_back({MarkRef{kind, int(i)}, point, px});
+  };
+  for (size_t i = 0; i < doc_.lights.size(); ++i)
+    if (doc_.lights[i].kind == LightKeys::Kind::PolygonPx)
+      for (size_t k = 0; k < doc_.lights[i].pointsPx.size(); ++k)
+        add(MarkKind::Light, i, int(k), doc_.lights[i].pointsPx[k]);
+  for (size_t i = 0; i < doc_.shafts.size(); ++i) {
+    const ShaftKeys& s = doc_.shafts[i];
+    if (s.shaftBoxPx)
+      for (int c = 0; c < 4; ++c) add(MarkKind::Shaft, i, c, boxCorners(*s.shaftBoxPx)[size_t(c)]);
+    if (s.sourceBoxPx)
+      for (int c = 0; c < 4; ++c) add(MarkKind::Shaft, i, 4 + c, boxCorners(*s.sourceBoxPx)[size_t(c)]);
+  }
+  for (size_t i = 0; i < doc_.surfaces.size(); ++i) {
+    const SurfaceKeys& s = doc_.surfaces[i];
+    if (s.outlinePx.empty()) continue;  // stairs from base_px or a profile: not reshaped here
+    for (size_t k = 0; k < s.outlinePx.size(); ++k) add(MarkKind::Surface, i, int(k), s.outlinePx[k]);
+    add(MarkKind::Surface, i, int(s.outlinePx.size()), s.heightClickPx);
+  }
+  for (size_t i = 0; i < doc_.occluders.size(); ++i) {
+    OccluderKeys copy = doc_.occluders[i];
+    const std::vector<Vec2*> points = occluderPoints(copy);
+    for (size_t k = 0; k < points.size(); ++k) add(MarkKind::Occluder, i, int(k), *points[k]);
+  }
+  return out;
+}
+
+bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId, QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (!std::isfinite(px.x()) || !std::isfinite(px.y())) return fail(tr("The position is not a number."));
+  SceneMarks m = marks();
+  const size_t i = size_t(mark.index);
+  const QString noPoint = tr("There is no such point.");
+  QString text;
+  switch (mark.kind) {
+    case MarkKind::Light: {
+      if (mark.index < 0 || i >= m.lights.size()) return fail(noPoint);
+      std::vector<Vec2>& pts = m.lights[i].pointsPx;
+      if (point < 0 || size_t(point) >= pts.size()) return fail(noPoint);
+      pts[size_t(point)] = px;
+      if (std::abs(doubleArea(pts)) < 4.0) return fail(tr("The outline would lose its area."));
+      text = tr("Reshape light %1").arg(mark.index + 1);
+      break;
+    }
+    case MarkKind::Shaft: {
+      if (mark.index < 0 || i >= m.shafts.size() || point < 0 || point > 7) return fail(noPoint);
+      auto& box = point < 4 ? m.shafts[i].shaftBoxPx : m.shafts[i].sourceBoxPx;
+      if (!box) return fail(noPoint);
+      box = boxWithCorner(*box, point % 4, px);
+      if (!validBox(*box)) return fail(tr("Each box of a shaft must be at least two pixels wide and high."));
+      text = tr("Reshape shaft %1").arg(mark.index + 1);
+      break;
+    }
+    case MarkKind::Surface: {
+      if (mark.index < 0 || i >= m.surfaces.size()) return fail(noPoint);
+      SurfaceKeys& s = m.surfaces[i];
+      if (point < 0 || size_t(point) > s.outlinePx.size() || s.outlinePx.empty()) return fail(noPoint);
+      (size_t(point) == s.outlinePx.size() ? s.heightClickPx : s.outlinePx[size_t(point)]) = px;
+      if (std::abs(doubleArea(s.outlinePx)) < 4.0) return fail(tr("The outline would lose its area."));
+      text = tr("Reshape surface %1").arg(mark.index + 1);
+      break;
+    }
+    case MarkKind::Occluder: {
+      if (mark.index < 0 || i >= m.occluders.size()) return fail(noPoint);
+      const std::vector<Vec2*> points = occluderPoints(m.occluders[i]);
+      if (point < 0 || size_t(point) >= points.size()) return fail(noPoint);
+      *points[size_t(point)] = px;
+      text = tr("Reshape occluder %1").arg(mark.index + 1);
+      break;
+    }
+  }
+  const std::optional<MarkRef> keep = selectedMark_;
+  const bool ok = editMarks(m, dragId, text, reason);
+  if (ok && keep == mark) setSelectedMark(mark);  // reshaping keeps the mark selected
+  return ok;
+}
+
+bool Document::setVanishingLines(int axis, const std::optional<std::array<Vec2, 4>>& segmentsPx,
+                                 QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (axis < 0 || axis > 2) return fail(tr("There is no such axis."));
+  if (segmentsPx) {
+    const auto& q = *segmentsPx;
+    if (!finitePoints({q.begin(), q.end()})) return fail(tr("The position is not a number."));
+    if ((q[1] - q[0]).norm() < 2 || (q[3] - q[2]).norm() < 2)
+      return fail(tr("Each line must be at least two pixels long."));
+    const Vec2 d = (q[1] - q[0]).normalized();
+    auto offLine = [&](const Vec2& r) { return std::abs(d.x() * (r - q[0]).y() - d.y() * (r - q[0]).x()); };
+    if (offLine(q[2]) < 1 && offLine(q[3]) < 1)
+      return fail(tr("The two lines lie on one line: draw two different edges."));
+  }
+  SceneMarks m = marks();
+  m.camera.vanishingLinesPx[size_t(axis)] = segmentsPx;
+  // Given vanishing points fix the whole camera and would override the lines: drawing lines
+  // asks for the camera to be re-estimated around them.
+  if (segmentsPx) m.camera.vanishingPointsPx.reset();
+  const char* const names[3] = {"x", "y", "z"};
+  return editMarks(m, 0,
+                   segmentsPx ? tr("Draw the %1 vanishing lines").arg(QLatin1String(names[axis]))
+                              : tr("Forget the %1 vanishing lines").arg(QLatin1String(names[axis])),
+                   reason);
+}
+
+std::vector<std::string> Document::roomSurfaceNames() const { return roomSurfaceNames_; }
+
+bool Document::setRoomMaterial(const std::string& surface,
+                               const std::optional<RoomMaterialKeys>& material, QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  const std::vector<std::string> names = roomSurfaceNames();
+  if (std::find(names.begin(), names.end(), surface) == names.end())
+    return fail(tr("The room has no surface %1.").arg(QString::fromStdString(surface)));
+  if (material && (material->preset != "glossy" && material->preset != "mirror" &&
+                   material->preset != "diffuse"))
+    return fail(tr("Unknown material."));
+  if (material && (!(material->roughness >= 0 && material->roughness <= 1) ||
+                   !material->reflectance.allFinite()))
+    return fail(tr("The roughness must lie between 0 and 1."));
+  SceneMarks m = marks();
+  if (material)
+    m.room.materials[surface] = *material;
+  else
+    m.room.materials.erase(surface);
+  return editMarks(m, 0, tr("Change the material of %1").arg(QString::fromStdString(surface)), reason);
 }
 
 }  // namespace inlay::studio

@@ -59,6 +59,7 @@ struct SceneMarks {
   std::vector<ShaftKeys> shafts;
   std::vector<SurfaceKeys> surfaces;
   std::vector<OccluderKeys> occluders;
+  RoomKeys room;  // room.materials: real surfaces marked glossy or mirror
 };
 bool operator==(const SceneMarks& a, const SceneMarks& b);
 
@@ -69,6 +70,15 @@ struct MarkRef {
   MarkKind kind = MarkKind::Light;
   int index = -1;
   bool operator==(const MarkRef&) const = default;
+};
+// One point of a mark that can be dragged on its own. `point` numbers the mark's points:
+//   light: its outline's points; surface: its outline's points, then its height click;
+//   shaft: the lit patch box's corners (x0y0, x1y0, x1y1, x0y1), then the source box's;
+//   occluder: the points of its foreground strokes, then of its background strokes, in order.
+struct MarkPoint {
+  MarkRef mark;
+  int point = -1;
+  Vec2 px{0, 0};  // where it is now (image pixels)
 };
 
 class Document : public QObject {
@@ -162,6 +172,26 @@ class Document : public QObject {
   bool addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
                          QString* reason = nullptr);
   bool removeMark(MarkKind kind, int index, QString* reason = nullptr);
+  // Every draggable point of every mark (see MarkPoint), from the document's state: the
+  // viewport draws and hit-tests these.
+  std::vector<MarkPoint> markPoints() const;
+  // Moves one point of a mark (MarkPoint numbering). A drag passes one dragId: one undo step.
+  // Refused when the mark would lose its area (a light or a surface) or a box its size.
+  bool moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId = 0,
+                     QString* reason = nullptr);
+  // Two segments {a0, b0, a1, b1} the user drew along world axis `axis` (0 x, 1 y, 2 z): the
+  // camera is re-estimated with that vanishing point fixed (camera.vanishing_lines_px). nullopt
+  // forgets them. Refused for degenerate segments or two segments on one line. Drawing lines
+  // drops camera.vanishing_points_px (a fixed camera would override them).
+  bool setVanishingLines(int axis, const std::optional<std::array<Vec2, 4>>& segmentsPx,
+                         QString* reason = nullptr);
+  // The material of a real surface of the room (room.materials.<surface>, a name from
+  // roomSurfaceNames()); nullopt makes it matte again.
+  bool setRoomMaterial(const std::string& surface, const std::optional<RoomMaterialKeys>& material,
+                       QString* reason = nullptr);
+  // The names of the room's surfaces that can take a material (floor, walls, ceiling, the
+  // surfaces' tops and sides), of the newest prepared scene (kept while it re-prepares).
+  std::vector<std::string> roomSurfaceNames() const;
   bool removeMark(MarkRef mark, QString* reason = nullptr);
   SceneMarks marks() const;
   // The newest camera estimate (kept while the scene is re-prepared), or null.
@@ -177,7 +207,9 @@ class Document : public QObject {
 
  private:
   // Why objects cannot be edited now (index -1: any object, e.g. inserting); empty when they can.
-  QString whyObjectsCannotChange(int index) const;
+  // `whilePreparing`: an edit of an existing object's keys, which the document takes at once
+  // and the new PreparedScene catches up with (catchUpObjects).
+  QString whyObjectsCannotChange(int index, bool whilePreparing = false) const;
   friend class ObjectEditCommand;
   friend class ObjectListCommand;
   friend class MarksCommand;
@@ -197,6 +229,9 @@ class Document : public QObject {
   void insertObjectAt(int index, const ObjectKeys& keys, std::shared_ptr<const TriangleMesh> mesh);
   void removeObjectAt(int index);
   void onPrepared(const PrepareResult& result);
+  // Applies the object edits made while the scene was being prepared to the new PreparedScene;
+  // returns the reason when one cannot stand where the user put it.
+  QString catchUpObjects(const std::vector<ObjectKeys>& preparedWith);
   void resetTo(SceneDoc doc, const QString& filePath);
 
   SceneDoc doc_;
@@ -211,6 +246,7 @@ class Document : public QObject {
   std::optional<MarkRef> selectedMark_;
   std::optional<std::array<Vec2, 4>> estimatedBackWallPx_;  // of the newest automatic estimate
   std::optional<CameraEstimate> lastEstimate_;
+  std::vector<std::string> roomSurfaceNames_;  // of the newest prepared scene
 
   QThread thread_;
   PrepareWorker* worker_ = nullptr;  // lives on thread_

@@ -113,17 +113,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     l->setMinimumWidth(90);
     statusBar()->addPermanentWidget(l);
   }
-  sppLabel_->setToolTip(tr("Samples per pixel of the shown composite"));
-  rateLabel_->setToolTip(tr("Samples per second of the renderer (millions)"));
-  errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
-  timeLabel_->setToolTip(tr("Render time since the last change"));
-  zoomLabel_->setToolTip(tr("Zoom"));
   auto showZoom = [this](double zoom) { zoomLabel_->setText(tr("%1 %").arg(qRound(zoom * 100))); };
   connect(viewport_, &Viewport::zoomChanged, this, showZoom);
   showZoom(viewport_->zoom());
 
   createActions();
   createMenus();
+  retranslate();
 
   connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
   connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
@@ -159,125 +155,115 @@ MainWindow::~MainWindow() {
 
 void MainWindow::createActions() {
   QStyle* s = style();
-  openSceneAct_ = new QAction(s->standardIcon(QStyle::SP_DialogOpenButton), tr("&Open Scene…"), this);
+  openSceneAct_ = new QAction(s->standardIcon(QStyle::SP_DialogOpenButton), QString(), this);
   openSceneAct_->setShortcut(QKeySequence::Open);
-  openSceneAct_->setStatusTip(tr("Open a scene file (.json)"));
   connect(openSceneAct_, &QAction::triggered, this, &MainWindow::openSceneDialog);
 
-  openPhotoAct_ = new QAction(tr("Open &Photo…"), this);
+  openPhotoAct_ = new QAction(this);
   openPhotoAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
-  openPhotoAct_->setStatusTip(tr("Start a new scene from a photo"));
   connect(openPhotoAct_, &QAction::triggered, this, &MainWindow::openPhotoDialog);
 
-  openExampleAct_ = new QAction(tr("Open &Example"), this);
+  openExampleAct_ = new QAction(this);
   connect(openExampleAct_, &QAction::triggered, this, [this] { openExample(); });
 
-  saveAct_ = new QAction(s->standardIcon(QStyle::SP_DialogSaveButton), tr("&Save"), this);
+  saveAct_ = new QAction(s->standardIcon(QStyle::SP_DialogSaveButton), QString(), this);
   saveAct_->setShortcut(QKeySequence::Save);
   connect(saveAct_, &QAction::triggered, this, &MainWindow::save);
 
-  saveAsAct_ = new QAction(tr("Save &As…"), this);
+  saveAsAct_ = new QAction(this);
   saveAsAct_->setShortcut(QKeySequence::SaveAs);
   connect(saveAsAct_, &QAction::triggered, this, &MainWindow::saveAsDialog);
 
-  exportAct_ = new QAction(tr("&Export Composite…"), this);
+  exportAct_ = new QAction(this);
   exportAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-  exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
   connect(exportAct_, &QAction::triggered, this, &MainWindow::exportCompositeDialog);
 
-  exportLayerAct_ = new QAction(tr("Export Shown &Layer…"), this);
-  exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
+  exportLayerAct_ = new QAction(this);
   connect(exportLayerAct_, &QAction::triggered, this, &MainWindow::exportLayerDialog);
-  exportGltfAct_ = new QAction(tr("Export Scene as &glTF…"), this);
-  exportGltfAct_->setStatusTip(tr("Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender"));
+  exportGltfAct_ = new QAction(this);
   connect(exportGltfAct_, &QAction::triggered, this, &MainWindow::exportSceneGltfDialog);
 
-  quitAct_ = new QAction(tr("&Quit"), this);
+  quitAct_ = new QAction(this);
   quitAct_->setShortcut(QKeySequence::Quit);
   connect(quitAct_, &QAction::triggered, this, &QWidget::close);
 
-  undoAct_ = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  // Our own undo / redo actions rather than QUndoStack's: those keep the prefix they were made
+  // with, and a language switch must change it.
+  QUndoStack* stack = document_->undoStack();
+  undoAct_ = new QAction(s->standardIcon(QStyle::SP_ArrowBack), QString(), this);
   undoAct_->setShortcut(QKeySequence::Undo);
-  undoAct_->setIcon(s->standardIcon(QStyle::SP_ArrowBack));
-  redoAct_ = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  connect(undoAct_, &QAction::triggered, stack, &QUndoStack::undo);
+  redoAct_ = new QAction(s->standardIcon(QStyle::SP_ArrowForward), QString(), this);
   redoAct_->setShortcut(QKeySequence::Redo);
-  redoAct_->setIcon(s->standardIcon(QStyle::SP_ArrowForward));
+  connect(redoAct_, &QAction::triggered, stack, &QUndoStack::redo);
+  connect(stack, &QUndoStack::indexChanged, this, [this] { updateUndoActions(); });
+  connect(stack, &QUndoStack::cleanChanged, this, [this] { updateUndoActions(); });
 
-  insertSphereAct_ = new QAction(tr("Insert &Sphere"), this);
-  insertSphereAct_->setStatusTip(tr("Stand a sphere on the floor in the middle of the photo"));
+  insertSphereAct_ = new QAction(this);
   connect(insertSphereAct_, &QAction::triggered, this,
           [this] { insertBuiltin(QStringLiteral("builtin:sphere")); });
-  insertCubeAct_ = new QAction(tr("Insert &Cube"), this);
-  insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
+  insertCubeAct_ = new QAction(this);
   connect(insertCubeAct_, &QAction::triggered, this,
           [this] { insertBuiltin(QStringLiteral("builtin:cube")); });
-  deleteAct_ = new QAction(tr("&Delete"), this);
-  deleteAct_->setStatusTip(tr("Delete the selected object or mark"));
+  deleteAct_ = new QAction(this);
   deleteAct_->setShortcut(QKeySequence::Delete);
   connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelected);
 
-  zoomInAct_ = new QAction(tr("Zoom &In"), this);
+  zoomInAct_ = new QAction(this);
   zoomInAct_->setShortcut(QKeySequence::ZoomIn);
   connect(zoomInAct_, &QAction::triggered, viewport_, &Viewport::zoomIn);
-  zoomOutAct_ = new QAction(tr("Zoom &Out"), this);
+  zoomOutAct_ = new QAction(this);
   zoomOutAct_->setShortcut(QKeySequence::ZoomOut);
   connect(zoomOutAct_, &QAction::triggered, viewport_, &Viewport::zoomOut);
-  fitAct_ = new QAction(tr("&Fit to Window"), this);
+  fitAct_ = new QAction(this);
   fitAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
   connect(fitAct_, &QAction::triggered, viewport_, &Viewport::zoomToFit);
-  beforeAct_ = new QAction(tr("&Before (Photo Only)"), this);
+  beforeAct_ = new QAction(this);
   beforeAct_->setCheckable(true);
   beforeAct_->setShortcut(QKeySequence(Qt::Key_B));
-  beforeAct_->setStatusTip(tr("Toggle between the photo and the composite with the objects"));
   connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
 
-  acceptBoxAct_ = new QAction(tr("&Accept Estimated Box"), this);
-  acceptBoxAct_->setStatusTip(tr("Keep the estimated back wall as yours"));
+  acceptBoxAct_ = new QAction(this);
   connect(acceptBoxAct_, &QAction::triggered, this, [this] {
     QString reason;
     if (!document_->acceptEstimatedBox(&reason)) statusBar()->showMessage(reason, 5000);
   });
-  resetBoxAct_ = new QAction(tr("Estimate the &Box Again"), this);
-  resetBoxAct_->setStatusTip(tr("Forget your corners of the back wall"));
+  resetBoxAct_ = new QAction(this);
   connect(resetBoxAct_, &QAction::triggered, this, [this] {
     QString reason;
     if (!document_->resetBackWall(&reason)) statusBar()->showMessage(reason, 5000);
   });
-  prepareAct_ = new QAction(tr("&Prepare the Scene Again"), this);
+  prepareAct_ = new QAction(this);
   prepareAct_->setShortcut(QKeySequence::Refresh);
-  prepareAct_->setStatusTip(tr("Estimate the camera, room and lighting again (after a cancel)"));
   connect(prepareAct_, &QAction::triggered, document_, &Document::prepare);
-  vanishingAct_ = new QAction(tr("&Vanishing Lines and Confidence"), this);
+  vanishingAct_ = new QAction(this);
   vanishingAct_->setCheckable(true);
   vanishingAct_->setChecked(viewport_->showsVanishingLines());
   connect(vanishingAct_, &QAction::toggled, viewport_, &Viewport::setShowVanishingLines);
 
   auto* tools = new QActionGroup(this);
-  const std::pair<QString, QKeySequence> toolNames[] = {
-      {tr("&Select and Move"), QKeySequence(Qt::Key_V)},
-      {tr("Outline a &Light"), QKeySequence(Qt::Key_L)},
-      {tr("Sun &Shaft"), QKeySequence(Qt::Key_H)},
-      {tr("&Table Top or Step"), QKeySequence(Qt::Key_T)},
-      {tr("&Occluder Strokes"), QKeySequence(Qt::Key_O)}};
-  for (int i = 0; i < 5; ++i) {
-    QAction* a = tools->addAction(toolNames[i].first);
+  const QKeySequence toolKeys[] = {QKeySequence(Qt::Key_V), QKeySequence(Qt::Key_L),
+                                   QKeySequence(Qt::Key_H), QKeySequence(Qt::Key_T),
+                                   QKeySequence(Qt::Key_O), QKeySequence(Qt::Key_P)};
+  for (int i = 0; i < 6; ++i) {
+    QAction* a = tools->addAction(QString());
     a->setCheckable(true);
-    a->setShortcut(toolNames[i].second);
+    a->setShortcut(toolKeys[i]);
     a->setChecked(i == 0);
     connect(a, &QAction::triggered, this, [this, i] { viewport_->setTool(Viewport::Tool(i)); });
     toolActs_ << a;
   }
 
-  aboutAct_ = new QAction(tr("&About Inlay"), this);
+  aboutAct_ = new QAction(this);
   connect(aboutAct_, &QAction::triggered, this, &MainWindow::about);
 }
 
 void MainWindow::createMenus() {
-  fileMenu_ = menuBar()->addMenu(tr("&File"));
+  fileMenu_ = menuBar()->addMenu(QString());
   fileMenu_->addAction(openSceneAct_);
   fileMenu_->addAction(openPhotoAct_);
   fileMenu_->addAction(openExampleAct_);
-  recentMenu_ = fileMenu_->addMenu(tr("Open &Recent"));
+  recentMenu_ = fileMenu_->addMenu(QString());
   connect(recentMenu_, &QMenu::aboutToShow, this, &MainWindow::rebuildRecentMenu);
   rebuildRecentMenu();
   fileMenu_->addSeparator();
@@ -289,7 +275,8 @@ void MainWindow::createMenus() {
   fileMenu_->addSeparator();
   fileMenu_->addAction(quitAct_);
 
-  QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+  editMenu_ = menuBar()->addMenu(QString());
+  QMenu* edit = editMenu_;
   edit->addAction(undoAct_);
   edit->addAction(redoAct_);
   edit->addSeparator();
@@ -301,10 +288,11 @@ void MainWindow::createMenus() {
   edit->addAction(resetBoxAct_);
   edit->addAction(prepareAct_);
 
-  toolsMenu_ = menuBar()->addMenu(tr("&Tools"));
+  toolsMenu_ = menuBar()->addMenu(QString());
   toolsMenu_->addActions(toolActs_);
 
-  QMenu* view = menuBar()->addMenu(tr("&View"));
+  viewMenu_ = menuBar()->addMenu(QString());
+  QMenu* view = viewMenu_;
   view->addAction(zoomInAct_);
   view->addAction(zoomOutAct_);
   view->addAction(fitAct_);
@@ -316,25 +304,29 @@ void MainWindow::createMenus() {
   view->addAction(propertiesDock_->toggleViewAction());
   view->addAction(layersDock_->toggleViewAction());
   view->addSeparator();
-  QMenu* language = view->addMenu(tr("&Language"));
+  languageMenu_ = view->addMenu(QString());
+  QMenu* language = languageMenu_;
   auto* group = new QActionGroup(language);
   const QString current = QSettings().value(QStringLiteral("language")).toString();
   const std::pair<QString, QString> languages[] = {
-      {QString(), tr("System Default")}, {QStringLiteral("en"), QStringLiteral("English")},
+      {QString(), QString()}, {QStringLiteral("en"), QStringLiteral("English")},
       {QStringLiteral("de"), QStringLiteral("Deutsch")},
       {QStringLiteral("fr"), QStringLiteral("Français")}};
   for (const auto& [code, name] : languages) {
     QAction* a = language->addAction(name);
+    if (code.isEmpty()) systemLanguageAct_ = a;
     a->setCheckable(true);
     a->setChecked(code == current);
     group->addAction(a);
     connect(a, &QAction::triggered, this, [this, code = code] { setLanguage(code); });
   }
 
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  helpMenu_ = menuBar()->addMenu(QString());
+  QMenu* help = helpMenu_;
   help->addAction(aboutAct_);
 
-  QToolBar* tools = addToolBar(tr("Main"));
+  mainToolBar_ = addToolBar(QString());
+  QToolBar* tools = mainToolBar_;
   tools->setObjectName(QStringLiteral("mainToolBar"));
   tools->addAction(openSceneAct_);
   tools->addAction(saveAct_);
@@ -348,6 +340,79 @@ void MainWindow::createMenus() {
   tools->addAction(zoomOutAct_);
   tools->addAction(fitAct_);
   tools->addAction(beforeAct_);
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QMainWindow::changeEvent(event);
+}
+
+// Every text of the window's own menus, actions, toolbar and status bar, in the current
+// language (called at creation and on each QEvent::LanguageChange; the docks and the viewport
+// retranslate themselves).
+void MainWindow::retranslate() {
+  openSceneAct_->setText(tr("&Open Scene…"));
+  openPhotoAct_->setText(tr("Open &Photo…"));
+  openExampleAct_->setText(tr("Open &Example"));
+  saveAct_->setText(tr("&Save"));
+  saveAsAct_->setText(tr("Save &As…"));
+  exportAct_->setText(tr("&Export Composite…"));
+  exportLayerAct_->setText(tr("Export Shown &Layer…"));
+  exportGltfAct_->setText(tr("Export Scene as &glTF…"));
+  quitAct_->setText(tr("&Quit"));
+  insertSphereAct_->setText(tr("Insert &Sphere"));
+  insertCubeAct_->setText(tr("Insert &Cube"));
+  deleteAct_->setText(tr("&Delete"));
+  zoomInAct_->setText(tr("Zoom &In"));
+  zoomOutAct_->setText(tr("Zoom &Out"));
+  fitAct_->setText(tr("&Fit to Window"));
+  beforeAct_->setText(tr("&Before (Photo Only)"));
+  acceptBoxAct_->setText(tr("&Accept Estimated Box"));
+  resetBoxAct_->setText(tr("Estimate the &Box Again"));
+  prepareAct_->setText(tr("&Prepare the Scene Again"));
+  vanishingAct_->setText(tr("&Vanishing Lines and Confidence"));
+  aboutAct_->setText(tr("&About Inlay"));
+  openSceneAct_->setStatusTip(tr("Open a scene file (.json)"));
+  openPhotoAct_->setStatusTip(tr("Start a new scene from a photo"));
+  exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
+  exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
+  exportGltfAct_->setStatusTip(tr("Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender"));
+  insertSphereAct_->setStatusTip(tr("Stand a sphere on the floor in the middle of the photo"));
+  insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
+  deleteAct_->setStatusTip(tr("Delete the selected object or mark"));
+  beforeAct_->setStatusTip(tr("Toggle between the photo and the composite with the objects"));
+  acceptBoxAct_->setStatusTip(tr("Keep the estimated back wall as yours"));
+  resetBoxAct_->setStatusTip(tr("Forget your corners of the back wall"));
+  prepareAct_->setStatusTip(tr("Estimate the camera, room and lighting again (after a cancel)"));
+  sppLabel_->setToolTip(tr("Samples per pixel of the shown composite"));
+  rateLabel_->setToolTip(tr("Samples per second of the renderer (millions)"));
+  errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
+  timeLabel_->setToolTip(tr("Render time since the last change"));
+  zoomLabel_->setToolTip(tr("Zoom"));
+  const QString toolNames[] = {tr("&Select and Move"), tr("Outline a &Light"), tr("Sun &Shaft"),
+                               tr("&Table Top or Step"), tr("&Occluder Strokes"),
+                               tr("&Vanishing Lines (X, Y, Z)")};
+  for (int i = 0; i < toolActs_.size(); ++i) toolActs_[i]->setText(toolNames[i]);
+  fileMenu_->setTitle(tr("&File"));
+  recentMenu_->setTitle(tr("Open &Recent"));
+  editMenu_->setTitle(tr("&Edit"));
+  toolsMenu_->setTitle(tr("&Tools"));
+  viewMenu_->setTitle(tr("&View"));
+  languageMenu_->setTitle(tr("&Language"));
+  systemLanguageAct_->setText(tr("System Default"));
+  helpMenu_->setTitle(tr("&Help"));
+  mainToolBar_->setWindowTitle(tr("Main"));
+  updateUndoActions();
+  updateTitle();
+  onFrame();
+}
+
+void MainWindow::updateUndoActions() {
+  const QUndoStack* stack = document_->undoStack();
+  undoAct_->setEnabled(stack->canUndo());
+  redoAct_->setEnabled(stack->canRedo());
+  undoAct_->setText(stack->canUndo() ? tr("&Undo %1").arg(stack->undoText()) : tr("&Undo"));
+  redoAct_->setText(stack->canRedo() ? tr("&Redo %1").arg(stack->redoText()) : tr("&Redo"));
 }
 
 void MainWindow::onDocumentChanged(const ChangeEvent& event) {
@@ -723,8 +788,10 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::setLanguage(const QString& code) {
   QSettings().setValue(QStringLiteral("language"), code);
-  installTranslators();
-  statusBar()->showMessage(tr("The language changes when Inlay is started again."), 6000);
+  // The choice made here wins over INLAY_LANG and the system's; installing sends every widget a
+  // QEvent::LanguageChange, and each retranslates itself.
+  installTranslators(code.isEmpty() ? QLocale::system().name().section(QLatin1Char('_'), 0, 0)
+                                    : code);
 }
 
 QAction* MainWindow::toolAction(int tool) const {
@@ -750,8 +817,8 @@ bool MainWindow::offerRecovery() {
   connect(box, &QMessageBox::buttonClicked, this, [this, restore](QAbstractButton* b) {
     if (b == restore)
       restoreRecovery();
-    else
-      Autosaver::discard();
+    else if (const std::optional<Autosaver::Recovery> offered = Autosaver::pending())
+      Autosaver::discard(*offered);
   });
   box->open();
   return true;
@@ -765,7 +832,9 @@ bool MainWindow::restoreRecovery() {
     showError(tr("Cannot restore the unsaved work"), error);
     return false;
   }
+  // The work is this studio's now: written to its own files before the old ones go.
   autosaver_->markDirty();
+  if (autosaver_->saveNow()) Autosaver::discard(*r);
   statusBar()->showMessage(tr("Restored the unsaved work."), 6000);
   return true;
 }
@@ -784,7 +853,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
-  Autosaver::discard();  // saved, or the user chose to discard
+  autosaver_->discardOwn();  // saved, or the user chose to discard
   QSettings settings;
   settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
   settings.setValue(QStringLiteral("window/state"), saveState());

@@ -13,6 +13,7 @@ class QAction;
 class QLabel;
 class QMenu;
 class QProgressDialog;
+class QToolBar;
 
 namespace inlay::studio {
 
@@ -41,6 +42,8 @@ class MainWindow : public QMainWindow {
   Autosaver* autosaver() const { return autosaver_; }
   QMenu* fileMenu() const { return fileMenu_; }
   QMenu* toolsMenu() const { return toolsMenu_; }
+  QMenu* editMenu() const { return editMenu_; }
+  QAction* undoAction() const { return undoAct_; }
   // The action that picks a tool of the viewport (Viewport::Tool as int).
   QAction* toolAction(int tool) const;
   QAction* acceptBoxAction() const { return acceptBoxAct_; }
@@ -76,7 +79,7 @@ class MainWindow : public QMainWindow {
 
  public Q_SLOTS:
   // Stores the language ("" = the system's, "en", "de", "fr") and installs its translators;
-  // windows created from now on use it.
+  // every open window retranslates at once (QEvent::LanguageChange).
   void setLanguage(const QString& code);
   void openSceneDialog();
   void openPhotoDialog();
@@ -93,12 +96,15 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void changeEvent(QEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
  private:
   void createActions();
   void createMenus();
+  void retranslate();
+  void updateUndoActions();
   void onDocumentChanged(const ChangeEvent& event);
   void onFrame();
   void updateTitle();
@@ -122,6 +128,12 @@ class MainWindow : public QMainWindow {
   QMenu* fileMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QMenu* toolsMenu_ = nullptr;
+  QMenu* editMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
+  QMenu* languageMenu_ = nullptr;
+  QMenu* helpMenu_ = nullptr;
+  QToolBar* mainToolBar_ = nullptr;
+  QAction* systemLanguageAct_ = nullptr;
   QList<QAction*> toolActs_;
   QAction* acceptBoxAct_ = nullptr;
   QAction* resetBoxAct_ = nullptr;

@@ -18,6 +18,9 @@
 namespace inlay::studio {
 namespace {
 
+// The colour of each world axis's vanishing lines (x, y, z).
+const QColor kAxisColour[3] = {QColor(255, 90, 90), QColor(90, 230, 90), QColor(110, 150, 255)};
+
 constexpr double kMinZoom = 0.02, kMaxZoom = 32.0;
 
 QColor srgbColour(const Vec3& linear) {
@@ -246,6 +249,33 @@ std::optional<MarkRef> Viewport::markAt(const QPointF& widgetPos) const {
   return std::nullopt;
 }
 
+std::optional<MarkPoint> Viewport::markPointAt(const QPointF& widgetPos) const {
+  const std::optional<MarkRef> selected = document_->selectedMark();
+  std::optional<MarkPoint> best;
+  double bestDist = kPickRadiusPx;
+  bool bestSelected = false;
+  for (const MarkPoint& m : document_->markPoints()) {
+    const QPointF d = widgetFromImage(m.px) - widgetPos;
+    const double dist = std::hypot(d.x(), d.y());
+    const bool isSelected = selected && *selected == m.mark;
+    if (dist > kPickRadiusPx || (bestSelected && !isSelected)) continue;
+    if (dist <= bestDist || (isSelected && !bestSelected)) {
+      best = m;
+      bestDist = dist;
+      bestSelected = isSelected;
+    }
+  }
+  return best;
+}
+
+void Viewport::setVanishingAxis(int axis) {
+  if (axis < 0 || axis > 2) return;
+  vanishingAxis_ = axis;
+  vanishingInput_.clear();
+  Q_EMIT statusMessage(toolHint());
+  update();
+}
+
 void Viewport::setLayer(Layer layer) {
   if (layer_ == layer) return;
   layer_ = layer;
@@ -283,6 +313,12 @@ QString Viewport::toolHint() const {
     case Tool::Occluder:
       return tr("Left drag over the thing in front, right drag over what is behind it; Enter "
                 "starts another occluder.");
+    case Tool::VanishingLines: {
+      const QString axis = QLatin1String(vanishingAxis_ == 0 ? "x" : vanishingAxis_ == 1 ? "y" : "z");
+      return vanishingInput_.empty()
+                 ? tr("Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).").arg(axis)
+                 : tr("Now drag along a second edge in the %1 direction.").arg(axis);
+    }
   }
   return {};
 }
@@ -306,6 +342,7 @@ void Viewport::paintEvent(QPaintEvent*) {
   paintRoom(p);
   if (showVanishing_) paintVanishingLines(p);
   paintMarks(p);
+  paintMarkHandles(p);
   paintObjects(p);
   paintToolInput(p);
   if (loupeShown()) paintLoupe(p);
@@ -378,7 +415,7 @@ void Viewport::paintRoom(QPainter& p) {
 void Viewport::paintVanishingLines(QPainter& p) {
   const CameraEstimate* e = document_->lastEstimate();
   if (!e) return;
-  const QColor family[3] = {QColor(255, 90, 90), QColor(90, 230, 90), QColor(110, 150, 255)};
+  const QColor* family = kAxisColour;
   // Every supporting segment in its family's colour, thin.
   std::array<std::vector<const LineSegment*>, 3> byFamily;
   for (const LineSegment& s : e->segments) {
@@ -409,6 +446,45 @@ void Viewport::paintVanishingLines(QPainter& p) {
       }
       haloLine(p, widgetFromImage(mid), widgetFromImage(toward), family[f], 1.0, Qt::DashLine);
       labelAt(p, widgetFromImage(s.bPx), tr("%1 px").arg(s.residualPx, 0, 'f', 2), family[f]);
+    }
+  }
+}
+
+void Viewport::paintMarkHandles(QPainter& p) {
+  // The selected mark's points, each draggable on its own.
+  const std::optional<MarkRef> selected = document_->selectedMark();
+  if (selected)
+    for (const MarkPoint& m : document_->markPoints()) {
+      if (!(m.mark == *selected)) continue;
+      const bool hot = dragPoint_ && dragPoint_->point == m.point;
+      const QPointF c = widgetFromImage(m.px);
+      p.setPen(QPen(QColor(0, 0, 0, 200), 1.0));
+      p.setBrush(hot ? QColor(255, 150, 40) : QColor(255, 255, 255));
+      p.drawRect(QRectF(c - QPointF(3.5, 3.5), QSizeF(7, 7)));
+    }
+  // The user's vanishing lines: each pair extended toward the vanishing point it fixes, with
+  // the residual the re-estimated camera leaves on it.
+  const CameraEstimate* e = document_->lastEstimate();
+  const auto& lines = document_->scene().camera.vanishingLinesPx;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!lines[size_t(axis)]) continue;
+    const auto& q = *lines[size_t(axis)];
+    for (int k = 0; k < 2; ++k) {
+      const Vec2 a = q[size_t(2 * k)], b = q[size_t(2 * k + 1)];
+      haloLine(p, widgetFromImage(a), widgetFromImage(b), kAxisColour[axis], 3.0);
+      if (!e) continue;
+      const Vec3& h = e->vanishingPoints[size_t(axis)].homogeneousPx;
+      const Vec2 mid = 0.5 * (a + b);
+      const Vec2 toward = std::abs(h.z()) > 1e-9
+                              ? Vec2(h.x() / h.z(), h.y() / h.z())
+                              : mid + Vec2(h.x(), h.y()).normalized() * 4.0 *
+                                          (imageSize().width() + imageSize().height());
+      if (toward.allFinite())
+        haloLine(p, widgetFromImage(mid), widgetFromImage(toward), kAxisColour[axis], 1.0, Qt::DashLine);
+      for (const LineSegment& s : e->segments)
+        if (s.userGiven && s.family == axis && (s.aPx - a).norm() < 1e-6 && (s.bPx - b).norm() < 1e-6)
+          labelAt(p, widgetFromImage(b), tr("%1: %2 px").arg(QLatin1String(axis == 0 ? "x" : axis == 1 ? "y" : "z"))
+                                             .arg(s.residualPx, 0, 'f', 2), kAxisColour[axis]);
     }
   }
 }
@@ -558,7 +634,13 @@ void Viewport::paintToolInput(QPainter& p) {
     haloPolygon(p, QPolygonF(QRectF(widgetFromImage(Vec2(shaftBox_->left(), shaftBox_->top())),
                                     widgetFromImage(Vec2(shaftBox_->right(), shaftBox_->bottom())))),
                 QColor(255, 170, 60), 1.5);
-  if (rubberFrom_) haloPolygon(p, QPolygonF(rectOf(*rubberFrom_, rubberTo_)), colour, 1.0, Qt::DashLine);
+  if (rubberFrom_ && tool_ == Tool::VanishingLines)
+    haloLine(p, widgetFromImage(*rubberFrom_), widgetFromImage(rubberTo_), kAxisColour[vanishingAxis_], 2.0);
+  else if (rubberFrom_)
+    haloPolygon(p, QPolygonF(rectOf(*rubberFrom_, rubberTo_)), colour, 1.0, Qt::DashLine);
+  if (vanishingInput_.size() >= 2)
+    haloLine(p, widgetFromImage(vanishingInput_[0]), widgetFromImage(vanishingInput_[1]),
+             kAxisColour[vanishingAxis_], 2.0);
   auto drawStrokes = [&](const std::vector<std::vector<Vec2>>& strokes, const QColor& c) {
     for (const auto& s : strokes) {
       QPolygonF line;
@@ -667,6 +749,7 @@ void Viewport::cancelToolInput() {
   stroke_.clear();
   stroking_ = false;
   pendingOccluder_ = {};
+  vanishingInput_.clear();
   update();
 }
 
@@ -759,6 +842,14 @@ void Viewport::pressSelect(QMouseEvent* event) {
     setCursor(Qt::BlankCursor);  // the loupe's crosshair shows the point
     return;
   }
+  if (const std::optional<MarkPoint> point = markPointAt(event->position())) {
+    document_->setSelectedMark(point->mark);
+    dragPoint_ = point;
+    dragId_ = Document::newDragId();
+    dragGrabPx_ = point->px - imageFromWidget(event->position());
+    setCursor(Qt::CrossCursor);
+    return;
+  }
   document_->setSelectedMark(markAt(event->position()));
 }
 
@@ -779,6 +870,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
       if (event->button() == Qt::LeftButton) addOutlinePoint(event->position());
       break;
     case Tool::Shaft:
+    case Tool::VanishingLines:
       if (event->button() == Qt::LeftButton) {
         rubberFrom_ = imageFromWidget(event->position());
         rubberTo_ = *rubberFrom_;
@@ -817,6 +909,15 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
       Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
     return;
   }
+  if (dragPoint_) {
+    QString reason;
+    if (document_->moveMarkPoint(dragPoint_->mark, dragPoint_->point, px + dragGrabPx_, dragId_, &reason))
+      Q_EMIT statusMessage(QString());
+    else
+      Q_EMIT statusMessage(reason);
+    update();
+    return;
+  }
   if (dragCorner_ >= 0) {
     QString reason;
     if (!document_->setBackWallCorner(dragCorner_, px + dragGrabPx_, dragId_, &reason))
@@ -845,7 +946,8 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     unsetCursor();
     return;
   }
-  if (event->button() == Qt::LeftButton && (dragObject_ >= 0 || dragCorner_ >= 0)) {
+  if (event->button() == Qt::LeftButton && (dragObject_ >= 0 || dragCorner_ >= 0 || dragPoint_)) {
+    dragPoint_.reset();
     dragObject_ = -1;
     dragCorner_ = -1;
     const bool over = objectAt(event->position()) >= 0 || cornerAt(event->position()) >= 0;
@@ -866,6 +968,23 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
       report(ok, reason);
     }
   }
+  if (tool_ == Tool::VanishingLines && rubberFrom_ && event->button() == Qt::LeftButton) {
+    vanishingInput_.push_back(*rubberFrom_);
+    vanishingInput_.push_back(imageFromWidget(event->position()));
+    rubberFrom_.reset();
+    if (vanishingInput_.size() == 4) {
+      QString reason;
+      const std::array<Vec2, 4> lines{vanishingInput_[0], vanishingInput_[1], vanishingInput_[2],
+                                      vanishingInput_[3]};
+      vanishingInput_.clear();
+      report(document_->setVanishingLines(vanishingAxis_, lines, &reason), reason);
+    } else if ((vanishingInput_[1] - vanishingInput_[0]).norm() < 2) {
+      vanishingInput_.clear();
+      Q_EMIT statusMessage(tr("Each line must be at least two pixels long."));
+    } else {
+      Q_EMIT statusMessage(toolHint());
+    }
+  }
   if (tool_ == Tool::Occluder && stroking_) {
     stroke_.push_back(imageFromWidget(event->position()));
     finishStroke();
@@ -884,9 +1003,22 @@ void Viewport::mouseDoubleClickEvent(QMouseEvent* event) {
   mousePressEvent(event);
 }
 
+void Viewport::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) update();  // every label is drawn with tr()
+  QWidget::changeEvent(event);
+}
+
 void Viewport::keyPressEvent(QKeyEvent* event) {
   switch (event->key()) {
     case Qt::Key_Escape: cancelToolInput(); return;
+    case Qt::Key_X:
+    case Qt::Key_Y:
+    case Qt::Key_Z:
+      if (tool_ == Tool::VanishingLines) {
+        setVanishingAxis(event->key() - Qt::Key_X);
+        return;
+      }
+      break;
     case Qt::Key_Return:
     case Qt::Key_Enter: commitToolInput(); return;
     case Qt::Key_Backspace:

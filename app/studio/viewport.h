@@ -23,6 +23,10 @@
 // input. Shaft tool: drag a box around the lit patch, then one around its source. Occluder tool:
 // left drags draw strokes over the thing in front, right drags over what is behind; the occluder
 // is added once it has both, later strokes go to it until Enter starts a new one.
+// A drag on a point of a mark (a light's or a table top's outline point, a shaft box's corner,
+// an occluder stroke's point) moves that point alone (Document::moveMarkPoint, one undo step).
+// Vanishing Lines tool: drag two segments along edges that run in one world direction (X, Y, Z
+// keys choose it; z by default); the camera is re-estimated with that vanishing point fixed.
 // Arrow keys nudge the selected object by one image pixel (ten with Shift), one undo step each.
 // Wheel zooms about the cursor; middle drag pans. GUI thread only.
 #pragma once
@@ -55,7 +59,7 @@ class Viewport : public QWidget {
   static constexpr int kLoupeRadiusPx = 70;      // widget pixels
   static constexpr double kLoupeZoom = 4.0;      // magnification over the current zoom
 
-  enum class Tool { Select, Light, Shaft, Surface, Occluder };
+  enum class Tool { Select, Light, Shaft, Surface, Occluder, VanishingLines };
 
   Viewport(Document* document, RenderController* renderer, QWidget* parent = nullptr);
 
@@ -74,6 +78,12 @@ class Viewport : public QWidget {
   // The light, shaft, surface or occluder drawn under `widgetPos` (inside its outline or box,
   // or within kPickRadiusPx of its lines), or nullopt.
   std::optional<MarkRef> markAt(const QPointF& widgetPos) const;
+  // The point of a mark (Document::markPoints) within kPickRadiusPx of `widgetPos` (nearest;
+  // the selected mark's points first), or nullopt.
+  std::optional<MarkPoint> markPointAt(const QPointF& widgetPos) const;
+  // The world axis (0 x, 1 y, 2 z) the Vanishing Lines tool draws for; keys X, Y, Z choose it.
+  int vanishingAxis() const { return vanishingAxis_; }
+  void setVanishingAxis(int axis);
   // True while the loupe is drawn (a corner drag).
   bool loupeShown() const { return dragCorner_ >= 0; }
   // The outline points of the Light / Surface tool not yet committed (image pixels).
@@ -110,6 +120,7 @@ class Viewport : public QWidget {
   void mouseDoubleClickEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
+  void changeEvent(QEvent* event) override;  // a language switch: the hint and labels again
 
  private:
   QSize imageSize() const;
@@ -122,6 +133,7 @@ class Viewport : public QWidget {
   void paintVanishingLines(QPainter& p);
   void paintMarks(QPainter& p);
   void paintObjects(QPainter& p);
+  void paintMarkHandles(QPainter& p);
   void paintToolInput(QPainter& p);
   void paintLoupe(QPainter& p);
   void paintStatus(QPainter& p);
@@ -143,6 +155,7 @@ class Viewport : public QWidget {
   Layer layer_ = Layer::Composite;
   Tool tool_ = Tool::Select;
 
+  std::optional<MarkPoint> dragPoint_;  // a mark's point being dragged (Select tool)
   int dragObject_ = -1;
   int dragCorner_ = -1;
   int dragId_ = 0;
@@ -164,6 +177,8 @@ class Viewport : public QWidget {
   bool stroking_ = false;
   OccluderKeys pendingOccluder_;      // strokes before the occluder has both kinds
   int currentOccluder_ = -1;          // the occluder later strokes go to
+  int vanishingAxis_ = 2;             // Vanishing Lines: the axis drawn for
+  std::vector<Vec2> vanishingInput_;  // Vanishing Lines: the first segment's ends, once drawn
 
   // The shown image resampled to the screen size when zoomed out (smooth resampling of a large
   // photo on every paint would make drags stutter). A cache of pixels, not of overlay state.

@@ -412,7 +412,8 @@ class Reader {
   void readCamera(const json& j, CameraKeys& c) {
     const std::string p = "camera";
     object(j, p);
-    knownKeys(j, p, {"height_m", "focal_px", "principal_px", "vanishing_points_px"});
+    knownKeys(j, p, {"height_m", "focal_px", "principal_px", "vanishing_points_px",
+                     "vanishing_lines_px"});
     if (j.contains("height_m")) c.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("focal_px")) c.focalPx = positive(j["focal_px"], child(p, "focal_px"));
     if (j.contains("principal_px")) c.principalPx = vec<2>(j["principal_px"], child(p, "principal_px"));
@@ -422,6 +423,38 @@ class Reader {
       std::array<Vec2, 3> v;
       for (size_t i = 0; i < 3; ++i) v[i] = vec<2>(a[i], child(vp, i));  // huge values allowed
       c.vanishingPointsPx = v;
+    }
+    if (j.contains("vanishing_lines_px")) readVanishingLines(j["vanishing_lines_px"], c);
+  }
+
+  // camera.vanishing_lines_px: {"x": [[a0, b0], [a1, b1]], ...}, any of the three axes.
+  void readVanishingLines(const json& j, CameraKeys& c) {
+    const std::string p = "camera.vanishing_lines_px";
+    object(j, p);
+    knownKeys(j, p, {"x", "y", "z"});
+    static const char* const kAxes[3] = {"x", "y", "z"};
+    for (size_t k = 0; k < 3; ++k) {
+      if (!j.contains(kAxes[k])) continue;
+      const std::string ap = child(p, kAxes[k]);
+      const json& pair = array(j[kAxes[k]], ap, 2, 2);
+      std::array<Vec2, 4> pts;
+      for (size_t s = 0; s < 2; ++s) {
+        const std::string sp = child(ap, s);
+        const json& seg = array(pair[s], sp, 2, 2);
+        pts[2 * s] = vec<2>(seg[0], child(sp, 0));
+        pts[2 * s + 1] = vec<2>(seg[1], child(sp, 1));
+        if ((pts[2 * s + 1] - pts[2 * s]).norm() < 2)
+          fail(sp, "a degenerate segment (its ends are less than 2 pixels apart)");
+      }
+      // The second segment's ends both on the first one's line: no direction can be read.
+      const Vec2 d = (pts[1] - pts[0]).normalized();
+      auto offLine = [&](const Vec2& q) {
+        const Vec2 r = q - pts[0];
+        return std::abs(d.x() * r.y() - d.y() * r.x());
+      };
+      if (offLine(pts[2]) < 1 && offLine(pts[3]) < 1)
+        fail(ap, "the two segments lie on one line (draw two different edges)");
+      c.vanishingLinesPx[k] = pts;
     }
   }
 
@@ -766,7 +799,9 @@ ojson buildJson(const SceneDoc& doc) {
   j["photo"] = doc.photo;
 
   const CameraKeys& c = doc.camera;
-  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx) {
+  const bool anyLines = std::any_of(c.vanishingLinesPx.begin(), c.vanishingLinesPx.end(),
+                                    [](const auto& l) { return l.has_value(); });
+  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines) {
     ojson cam = ojson::object();
     if (c.heightM) cam["height_m"] = *c.heightM;
     if (c.focalPx) cam["focal_px"] = *c.focalPx;
@@ -775,6 +810,17 @@ ojson buildJson(const SceneDoc& doc) {
       ojson a = ojson::array();
       for (const Vec2& v : *c.vanishingPointsPx) a.push_back(toJson(v));
       cam["vanishing_points_px"] = a;
+    }
+    if (anyLines) {
+      ojson lines = ojson::object();
+      static const char* const kAxes[3] = {"x", "y", "z"};
+      for (size_t k = 0; k < 3; ++k) {
+        if (!c.vanishingLinesPx[k]) continue;
+        const auto& q = *c.vanishingLinesPx[k];
+        lines[kAxes[k]] = ojson::array({ojson::array({toJson(q[0]), toJson(q[1])}),
+                                        ojson::array({toJson(q[2]), toJson(q[3])})});
+      }
+      cam["vanishing_lines_px"] = lines;
     }
     j["camera"] = cam;
   }

@@ -18,6 +18,17 @@ namespace inlay {
 
 namespace {
 
+// correctEstimate names its keys "correction.*"; the user lines come from the file's
+// camera.vanishing_lines_px, so an error about them names that key.
+Error inFileKeys(Error e) {
+  const std::string lines = "correction.vanishing_lines_px";
+  if (e.key.rfind(lines, 0) != 0) return e;
+  std::string rest = e.key.substr(lines.size());  // "[z]": the file writes the axis as ".z"
+  if (rest.size() >= 3 && rest[0] == '[' && rest[2] == ']') rest = "." + rest.substr(1, 1) + rest.substr(3);
+  e.key = "camera.vanishing_lines_px" + rest;
+  return e;
+}
+
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point t) {
@@ -272,9 +283,14 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
     for (size_t i = 0; i < 4; ++i) fix.backWallCornersPx[i] = (*layout.backWallPx)[i];
     anyFix = true;
   }
+  for (size_t k = 0; k < 3; ++k)
+    if (camera.vanishingLinesPx[k]) {
+      fix.vanishingLinesPx[k] = camera.vanishingLinesPx[k];
+      anyFix = true;
+    }
   if (anyFix) {
     auto fixed = correctEstimate(*e, fix, eo);
-    if (!fixed) return fixed.error();
+    if (!fixed) return inFileKeys(fixed.error());
     e = std::move(fixed);
   }
   for (const auto& w : e->warnings) out.warnings.push_back("estimate: " + w);

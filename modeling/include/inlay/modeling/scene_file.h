@@ -21,6 +21,10 @@ struct CameraKeys {
   std::optional<double> focalPx;
   std::optional<Vec2> principalPx;
   std::optional<std::array<Vec2, 3>> vanishingPointsPx;  // world x, y, z axes, in that order
+  // "vanishing_lines_px": {"x"|"y"|"z": [[a0, b0], [a1, b1]]}: per world axis, two line
+  // segments the user drew along that direction ({a0, b0, a1, b1} here); their lines meet at the
+  // axis's vanishing point. Each segment is >= 2 px long and the two are not one line.
+  std::array<std::optional<std::array<Vec2, 4>>, 3> vanishingLinesPx;
 };
 
 struct LayoutKeys {
