@@ -2,10 +2,11 @@
 //
 // usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets 5,15,30,60,120,240,480]
 //                     [--default-budget 120] [--gt-segments] [--no-exif] [--principal-sigma S]
-//                     [--known-principal] [--reps N] [--dump DIR]
+//                     [--known-principal] [--known-focal] [--reps N] [--dump DIR]
 // Writes OUT/camera_bench.csv (one row per image and search budget) and
 // OUT/camera_bench_summary.json; plot with bench_camera_plot.py. --known-principal gives the
-// estimator the truth's principal point (a diagnosis, not a photo-alone figure); --dump writes
+// estimator the truth's principal point, --known-focal its focal length as a prior of 1e-4 log-sigma
+// (diagnoses, not photo-alone figures: the horizon ceilings); --dump writes
 // each estimate's segments, families, residuals and camera as JSON for looking at failures. Scores exactly as ../shared/tools/score_york.py does
 // (orthogonalised truth, closest estimated axis per true direction, horizon error at the left and
 // right borders over the image height, AUC up to 0.25). Photos are read with loadImage and the
@@ -173,6 +174,7 @@ int main(int argc, char** argv) {
   bool gtSegments = false, useExif = true;
   double principalSigma = EstimateOptions{}.principalSigma;
   bool knownPrincipal = false;  // diagnosis only: the truth's principal point given
+  bool knownFocal = false;      // diagnosis only: the truth's focal length as a tight prior
   int reps = 3;
   std::string dumpDir;  // per image and budget: the estimate's segments and camera (JSON)
   for (int i = 1; i < argc; ++i) {
@@ -187,6 +189,7 @@ int main(int argc, char** argv) {
     else if (a == "--no-exif") useExif = false;
     else if (a == "--principal-sigma") principalSigma = std::stod(next());
     else if (a == "--known-principal") knownPrincipal = true;
+    else if (a == "--known-focal") knownFocal = true;
     else if (a == "--reps") reps = std::max(1, std::stoi(next()));
     else if (a == "--dump") dumpDir = next();
     else {
@@ -210,6 +213,10 @@ int main(int argc, char** argv) {
       o.principalSigma = principalSigma;
       if (knownPrincipal) o.principalPx = t.pp;
       if (useExif) o.priorFocalPx = li.exif.focalPx(im.width, im.height);
+      if (knownFocal) {
+        o.priorFocalPx = t.f;
+        o.priorLogSigmaExif = 1e-4;
+      }
       // Best of 3 runs for the time (the machine is shared); results are deterministic.
       double bestMs = 1e300;
       std::optional<CameraEstimate> est;
