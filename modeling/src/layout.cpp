@@ -85,26 +85,29 @@ double edgeThreshold(double noise) { return std::max(1.5 / 255.0, 1.5 * noise); 
 double lineContrast(std::vector<float>& across, double noise) {
   const int n = int(across.size());
   if (n < kRun) return 0;
-  std::vector<float> pos, neg;
-  pos.reserve(n);
-  neg.reserve(n);
+  // Running means in place: a mean overwrites a read that the running sum has already dropped
+  // (the last kRun reads are kept aside for that).
+  float ring[kRun];
   double run = 0;
+  int m = 0;
   for (int k = 0; k < n; ++k) {
-    run += across[k];
-    if (k >= kRun) run -= across[k - kRun];
-    if (k >= kRun - 1) {
-      pos.push_back(float(run / kRun));
-      neg.push_back(float(-run / kRun));
-    }
+    const float v = across[k];
+    run += v;
+    if (k >= kRun) run -= ring[k % kRun];
+    ring[k % kRun] = v;
+    if (k >= kRun - 1) across[m++] = float(run / kRun);
   }
-  auto tail = [](std::vector<float>& v) {
-    const size_t q = v.size() / 5;
-    std::nth_element(v.begin(), v.begin() + q, v.end());
-    return double(v[q]);
-  };
-  const double q = std::max({0.0, tail(pos), tail(neg)});
+  // The weaker tail of either polarity: the 20th percentile of the means, and of their
+  // negatives (the 80th percentile of the means, negated).
+  const size_t q = size_t(m) / 5;
+  auto first = across.begin(), last = across.begin() + m;
+  std::nth_element(first, first + q, last);
+  const double lowTail = *(first + q);
+  std::nth_element(first, first + (m - 1 - q), last);
+  const double highTail = *(first + (m - 1 - q));
+  const double t = std::max({0.0, lowTail, -highTail});
   const double g1 = edgeThreshold(noise);
-  return q * q / (q * q + g1 * g1);
+  return t * t / (t * t + g1 * g1);
 }
 
 // The longest stretch (reads) of `across` whose running means keep one sign above the
@@ -643,9 +646,13 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         if (isFixed[i]) continue;
         const double span = window * search.diag();
         constexpr int kSteps = 8;
+        double tried = std::numeric_limits<double>::quiet_NaN();
         for (int k = -kSteps; k <= kSteps; ++k) {
           auto q = s;
           q[i] = std::clamp(s[i] + span * k / kSteps, lo[i], hi[i]);
+          // The current value, or the bound again: the same score, never an improvement.
+          if (q[i] == s[i] || q[i] == tried) continue;
+          tried = q[i];
           const auto sc = search.score(q);
           if (sc.total > cur.total + 1e-9) {
             cur = sc;
