@@ -228,12 +228,7 @@ class LayoutSearch {
       if (!clipToRect(a, b, W_ * ws_, H_ * ws_)) continue;
       const double len = (b - a).norm();
       if (len < 1) continue;
-      const int n = std::max(2, int(len / 4.0));
-      const double floor = full ? kContrastWeight * contrastAlong(edgeFamily[i], a, b) : 0.0;
-      double sum = 0;
-      for (int k = 0; k < n; ++k)
-        sum += std::max(floor, double(evidence_[edgeFamily[i]].at(a + (b - a) * ((k + 0.5) / n))));
-      s.edgeSupported += sum / n * len;
+      s.edgeSupported += edgeSupport(i, edgeFamily[i], a, b, full);
       s.edgeVisible += len;
     }
     // Faces: inside the quad is the back wall, else the sector around vz between corner rays.
@@ -274,6 +269,23 @@ class LayoutSearch {
     for (int i = 0; i < 4; ++i) prior += std::abs(t[i] - default_[i]) / diag_;
     s.total -= 0.5 * ws_ * prior;
     return s;
+  }
+
+  // The support of box edge `slot` (family f, visible part a-b in layout pixels): the evidence
+  // along it, floored by the photo's contrast (full). The coordinate ascent moves one line at a
+  // time, which leaves three of the eight edges where they were: the last value per slot is
+  // kept.
+  double edgeSupport(int slot, int f, const Vec2& a, const Vec2& b, bool full) const {
+    EdgeMemo& memo = memo_[slot];
+    if (memo.valid && memo.full == full && memo.a == a && memo.b == b) return memo.value;
+    const double len = (b - a).norm();
+    const int n = std::max(2, int(len / 4.0));
+    const double floor = full ? kContrastWeight * contrastAlong(f, a, b) : 0.0;
+    double sum = 0;
+    for (int k = 0; k < n; ++k)
+      sum += std::max(floor, double(evidence_[f].at(a + (b - a) * ((k + 0.5) / n))));
+    memo = {true, full, a, b, sum / n * len};
+    return memo.value;
   }
 
   // Where the photo shows an edge along line i (0 top, 1 bottom: x lines; 2 left, 3 right: y
@@ -474,6 +486,12 @@ class LayoutSearch {
   EvidenceMap evidence_[3];
   cv::Mat across_[3];  // per family: the gradient across that family's line through each pixel
   mutable std::vector<float> scratch_;
+  struct EdgeMemo {
+    bool valid = false, full = false;
+    Vec2 a{0, 0}, b{0, 0};
+    double value = 0;
+  };
+  mutable std::array<EdgeMemo, 8> memo_;  // edgeSupport's last value per edge slot
   std::vector<bool> bright_;  // per segment: outlines a saturated patch (markBright)
   std::vector<Sample> samples_;
 };
