@@ -6,6 +6,7 @@
 #include "inlay/modeling/geometry.h"
 #include "inlay/modeling/image_io.h"
 #include "../modeling/src/estimate_camera_internal.h"
+#include "../modeling/src/lines.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -175,6 +176,29 @@ std::array<Vec2, 4> trueBackWall(const Camera& cam) {
   box.zBackM = -5;
   box.ceilingM = 2.7;
   return backWallCornersPx(cam, box);
+}
+
+TEST(EstimateCamera, SrgbCodeTableMatchesTheCurveEverywhere) {
+  // Every float bit pattern of [0, 1] would take seconds: a dense sweep plus both neighbours of
+  // every code boundary (where a table is wrong if it is wrong at all), and non-finite input.
+  int boundaries = 0;
+  float prev = 0.f;
+  for (int i = 0; i <= 1 << 20; ++i) {
+    const float v = float(i) / float(1 << 20);
+    const int want = int(std::lround(255.f * linearToSrgb(v)));
+    ASSERT_EQ(int(detail::srgbCode8(v)), want) << v;
+    if (i > 0 && want != int(std::lround(255.f * linearToSrgb(prev)))) {
+      ++boundaries;
+      for (float w = prev; w <= v; w = std::nextafter(w, 2.f))
+        ASSERT_EQ(int(detail::srgbCode8(w)), int(std::lround(255.f * linearToSrgb(w)))) << w;
+    }
+    prev = v;
+  }
+  EXPECT_EQ(boundaries, 255);
+  EXPECT_EQ(detail::srgbCode8(-1.f), 0);
+  EXPECT_EQ(detail::srgbCode8(std::nanf("")), 0);
+  EXPECT_EQ(detail::srgbCode8(2.f), 255);
+  EXPECT_EQ(detail::srgbCode8(INFINITY), 255);
 }
 
 TEST(EstimateCamera, CeresFunctorDerivativesMatchCentralDifferences) {

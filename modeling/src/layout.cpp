@@ -85,26 +85,29 @@ double edgeThreshold(double noise) { return std::max(1.5 / 255.0, 1.5 * noise); 
 double lineContrast(std::vector<float>& across, double noise) {
   const int n = int(across.size());
   if (n < kRun) return 0;
-  std::vector<float> pos, neg;
-  pos.reserve(n);
-  neg.reserve(n);
+  // Running means in place: a mean overwrites a read that the running sum has already dropped
+  // (the last kRun reads are kept aside for that).
+  float ring[kRun];
   double run = 0;
+  int m = 0;
   for (int k = 0; k < n; ++k) {
-    run += across[k];
-    if (k >= kRun) run -= across[k - kRun];
-    if (k >= kRun - 1) {
-      pos.push_back(float(run / kRun));
-      neg.push_back(float(-run / kRun));
-    }
+    const float v = across[k];
+    run += v;
+    if (k >= kRun) run -= ring[k % kRun];
+    ring[k % kRun] = v;
+    if (k >= kRun - 1) across[m++] = float(run / kRun);
   }
-  auto tail = [](std::vector<float>& v) {
-    const size_t q = v.size() / 5;
-    std::nth_element(v.begin(), v.begin() + q, v.end());
-    return double(v[q]);
-  };
-  const double q = std::max({0.0, tail(pos), tail(neg)});
+  // The weaker tail of either polarity: the 20th percentile of the means, and of their
+  // negatives (the 80th percentile of the means, negated).
+  const size_t q = size_t(m) / 5;
+  auto first = across.begin(), last = across.begin() + m;
+  std::nth_element(first, first + q, last);
+  const double lowTail = *(first + q);
+  std::nth_element(first, first + (m - 1 - q), last);
+  const double highTail = *(first + (m - 1 - q));
+  const double t = std::max({0.0, lowTail, -highTail});
   const double g1 = edgeThreshold(noise);
-  return q * q / (q * q + g1 * g1);
+  return t * t / (t * t + g1 * g1);
 }
 
 // The longest stretch (reads) of `across` whose running means keep one sign above the
@@ -225,12 +228,7 @@ class LayoutSearch {
       if (!clipToRect(a, b, W_ * ws_, H_ * ws_)) continue;
       const double len = (b - a).norm();
       if (len < 1) continue;
-      const int n = std::max(2, int(len / 4.0));
-      const double floor = full ? kContrastWeight * contrastAlong(edgeFamily[i], a, b) : 0.0;
-      double sum = 0;
-      for (int k = 0; k < n; ++k)
-        sum += std::max(floor, double(evidence_[edgeFamily[i]].at(a + (b - a) * ((k + 0.5) / n))));
-      s.edgeSupported += sum / n * len;
+      s.edgeSupported += edgeSupport(i, edgeFamily[i], a, b, full);
       s.edgeVisible += len;
     }
     // Faces: inside the quad is the back wall, else the sector around vz between corner rays.
@@ -271,6 +269,23 @@ class LayoutSearch {
     for (int i = 0; i < 4; ++i) prior += std::abs(t[i] - default_[i]) / diag_;
     s.total -= 0.5 * ws_ * prior;
     return s;
+  }
+
+  // The support of box edge `slot` (family f, visible part a-b in layout pixels): the evidence
+  // along it, floored by the photo's contrast (full). The coordinate ascent moves one line at a
+  // time, which leaves three of the eight edges where they were: the last value per slot is
+  // kept.
+  double edgeSupport(int slot, int f, const Vec2& a, const Vec2& b, bool full) const {
+    EdgeMemo& memo = memo_[slot];
+    if (memo.valid && memo.full == full && memo.a == a && memo.b == b) return memo.value;
+    const double len = (b - a).norm();
+    const int n = std::max(2, int(len / 4.0));
+    const double floor = full ? kContrastWeight * contrastAlong(f, a, b) : 0.0;
+    double sum = 0;
+    for (int k = 0; k < n; ++k)
+      sum += std::max(floor, double(evidence_[f].at(a + (b - a) * ((k + 0.5) / n))));
+    memo = {true, full, a, b, sum / n * len};
+    return memo.value;
   }
 
   // Where the photo shows an edge along line i (0 top, 1 bottom: x lines; 2 left, 3 right: y
@@ -471,6 +486,12 @@ class LayoutSearch {
   EvidenceMap evidence_[3];
   cv::Mat across_[3];  // per family: the gradient across that family's line through each pixel
   mutable std::vector<float> scratch_;
+  struct EdgeMemo {
+    bool valid = false, full = false;
+    Vec2 a{0, 0}, b{0, 0};
+    double value = 0;
+  };
+  mutable std::array<EdgeMemo, 8> memo_;  // edgeSupport's last value per edge slot
   std::vector<bool> bright_;  // per segment: outlines a saturated patch (markBright)
   std::vector<Sample> samples_;
 };
@@ -643,9 +664,13 @@ LayoutResult estimateLayout(const LayoutInput& in) {
         if (isFixed[i]) continue;
         const double span = window * search.diag();
         constexpr int kSteps = 8;
+        double tried = std::numeric_limits<double>::quiet_NaN();
         for (int k = -kSteps; k <= kSteps; ++k) {
           auto q = s;
           q[i] = std::clamp(s[i] + span * k / kSteps, lo[i], hi[i]);
+          // The current value, or the bound again: the same score, never an improvement.
+          if (q[i] == s[i] || q[i] == tried) continue;
+          tried = q[i];
           const auto sc = search.score(q);
           if (sc.total > cur.total + 1e-9) {
             cur = sc;

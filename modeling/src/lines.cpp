@@ -6,6 +6,7 @@
 #include <opencv2/ximgproc/fast_line_detector.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace inlay::detail {
@@ -35,7 +36,39 @@ cv::Mat binnedLuminance(const ImageF& im, int k) {
   return out;
 }
 
+// The 8-bit sRGB code of a linear value, as lround(255 * linearToSrgb(v)) but without a pow per
+// pixel: the code is the number of code boundaries at or below v (linearToSrgb is monotone), each
+// boundary found once by bisection on floats.
+class SrgbEncoder {
+ public:
+  SrgbEncoder() {
+    for (int code = 1; code < 256; ++code) {
+      float lo = 0.f, hi = 1.f;  // code(lo) < code <= code(hi)
+      while (std::nextafter(lo, hi) < hi) {
+        const float mid = 0.5f * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (codeOf(mid) >= code ? hi : lo) = mid;
+      }
+      boundary_[code - 1] = hi;
+    }
+  }
+  unsigned char operator()(float v) const {
+    if (!(v > 0.f)) return 0;
+    return static_cast<unsigned char>(std::upper_bound(boundary_.begin(), boundary_.end(), v) -
+                                      boundary_.begin());
+  }
+  static int codeOf(float v) { return int(std::lround(255.f * linearToSrgb(v))); }
+
+ private:
+  std::array<float, 255> boundary_{};  // boundary_[c - 1]: the least v of code c
+};
+
 }  // namespace
+
+unsigned char srgbCode8(float linear) {
+  static const SrgbEncoder encode;
+  return encode(linear);
+}
 
 DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, int maxSegments,
                                  const CancelToken* cancel) {
@@ -68,7 +101,7 @@ DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, 
     const float* s = lum.ptr<float>(y);
     unsigned char* d = grey8.ptr<unsigned char>(y);
     for (int x = 0; x < lum.cols; ++x)
-      d[x] = static_cast<unsigned char>(std::lround(255.f * linearToSrgb(s[x])));
+      d[x] = srgbCode8(s[x]);
   }
   if (lum.cols < 8 || lum.rows < 8) return out;
   // Rendered and high-ISO photos are noisy: a light blur keeps edges, drops noise segments.

@@ -2,16 +2,18 @@
 //
 // usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets 5,15,30,60,120,240,480]
 //                     [--default-budget 120] [--gt-segments] [--no-exif] [--principal-sigma S]
-//                     [--known-principal] [--reps N] [--dump DIR]
+//                     [--known-principal] [--known-focal] [--reps N] [--dump DIR]
 // Writes OUT/camera_bench.csv (one row per image and search budget) and
 // OUT/camera_bench_summary.json; plot with bench_camera_plot.py. --known-principal gives the
-// estimator the truth's principal point (a diagnosis, not a photo-alone figure); --dump writes
+// estimator the truth's principal point, --known-focal its focal length as a prior of 1e-4 log-sigma
+// (diagnoses, not photo-alone figures: the horizon ceilings); --dump writes
 // each estimate's segments, families, residuals and camera as JSON for looking at failures. Scores exactly as ../shared/tools/score_york.py does
 // (orthogonalised truth, closest estimated axis per true direction, horizon error at the left and
 // right borders over the image height, AUC up to 0.25). Photos are read with loadImage and the
 // EXIF focal length is the prior, as `inlay-cli estimate` does (--no-exif: the 60 degree prior).
-// Times: the estimator alone (not the JPEG decode), best of 3 runs per budget; run with
-// OPENCV_FOR_THREADS_NUM=1 (or taskset -c 0) for one core.
+// Times: the estimator alone (not the JPEG decode), wall time of the fastest of --reps runs per
+// budget (ms) and that run's CPU time (cpu_ms: what one idle core would take, however loaded the
+// machine is); run with OPENCV_FOR_THREADS_NUM=1 (and taskset -c 0) for one core.
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image.h"
 #include "inlay/modeling/image_io.h"
@@ -21,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +38,14 @@ using nlohmann::json;
 namespace fs = std::filesystem;
 
 namespace {
+
+// This thread's CPU time: what the estimator costs one idle core, whatever else loads the
+// machine (wall time counts the waits for a core too).
+double threadCpuMs() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+}
 
 double median(std::vector<double> v) {
   v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
@@ -134,6 +145,8 @@ struct Row {
   std::string set, image;
   int budget = 0;
   double ms = 0;
+  double cpuMs = 0;  // the same run's CPU time (threadCpuMs)
+  EstimateTimings stages;  // of the fastest run
   Scores s;
   double conf = 0, layoutScore = 0;
   Vec2 principal{0, 0};
@@ -173,6 +186,7 @@ int main(int argc, char** argv) {
   bool gtSegments = false, useExif = true;
   double principalSigma = EstimateOptions{}.principalSigma;
   bool knownPrincipal = false;  // diagnosis only: the truth's principal point given
+  bool knownFocal = false;      // diagnosis only: the truth's focal length as a tight prior
   int reps = 3;
   std::string dumpDir;  // per image and budget: the estimate's segments and camera (JSON)
   for (int i = 1; i < argc; ++i) {
@@ -187,6 +201,7 @@ int main(int argc, char** argv) {
     else if (a == "--no-exif") useExif = false;
     else if (a == "--principal-sigma") principalSigma = std::stod(next());
     else if (a == "--known-principal") knownPrincipal = true;
+    else if (a == "--known-focal") knownFocal = true;
     else if (a == "--reps") reps = std::max(1, std::stoi(next()));
     else if (a == "--dump") dumpDir = next();
     else {
@@ -210,16 +225,27 @@ int main(int argc, char** argv) {
       o.principalSigma = principalSigma;
       if (knownPrincipal) o.principalPx = t.pp;
       if (useExif) o.priorFocalPx = li.exif.focalPx(im.width, im.height);
+      if (knownFocal) {
+        o.priorFocalPx = t.f;
+        o.priorLogSigmaExif = 1e-4;
+      }
       // Best of 3 runs for the time (the machine is shared); results are deterministic.
-      double bestMs = 1e300;
+      double bestMs = 1e300, bestCpuMs = 0;
+      EstimateTimings bestStages;
       std::optional<CameraEstimate> est;
       for (int rep = 0; rep < reps; ++rep) {
+        const double c0 = threadCpuMs();
         const auto t0 = std::chrono::steady_clock::now();
         auto e = segs ? estimateCameraFromSegments(im.width, im.height, *segs, o) : estimateCamera(im, o);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        const double cpuMs = threadCpuMs() - c0;
         if (!e.ok()) {
           std::cerr << name << ": " << e.error().message() << "\n";
           break;
+        }
+        if (ms < bestMs) {
+          bestStages = e->timings;
+          bestCpuMs = cpuMs;
         }
         bestMs = std::min(bestMs, ms);
         est = *e;
@@ -231,6 +257,8 @@ int main(int argc, char** argv) {
       r.image = name;
       r.budget = b;
       r.ms = bestMs;
+      r.stages = bestStages;
+      r.cpuMs = bestCpuMs;
       r.s = score(t, *est);
       r.conf = est->overallConfidence;
       r.principal = est->camera.principalPx;
@@ -314,18 +342,20 @@ int main(int argc, char** argv) {
   {
     std::ofstream csv(fs::path(out) / "camera_bench.csv");
     csv << "set,image,budget,ms,focal_rel_err,vp_angle_deg_max,vp_angle_deg_mean,horizon_err,"
-           "corner_err_px_max,corner_err_px_mean,confidence,manhattan,layout_score,segments,principal_x,principal_y\n";
+           "corner_err_px_max,corner_err_px_mean,confidence,manhattan,layout_score,segments,principal_x,principal_y,"
+           "lines_ms,vanishing_ms,refine_ms,layout_ms,cpu_ms\n";
     for (const Row& r : rows)
       csv << r.set << "," << r.image << "," << r.budget << "," << r.ms << "," << r.s.focalRel
           << "," << r.s.angMax << "," << r.s.angMean << "," << r.s.horizon << "," << r.s.cornerMax
           << "," << r.s.cornerMean << "," << r.conf << "," << r.manhattan << ","
           << r.layoutScore << "," << r.segments << "," << r.principal.x() << ","
-          << r.principal.y() << "\n";
+          << r.principal.y() << "," << r.stages.linesMs << "," << r.stages.vanishingMs << ","
+          << r.stages.refineMs << "," << r.stages.layoutMs << "," << r.cpuMs << "\n";
   }
   json summary;
   for (const std::string set : {"york", "scenes"})
     for (int b : budgets) {
-      std::vector<double> fr, am, hz, ms, cm;
+      std::vector<double> fr, am, hz, ms, cm, st[4], cpu;
       for (const Row& r : rows)
         if (r.set == set && r.budget == b) {
           fr.push_back(r.s.focalRel);
@@ -333,13 +363,21 @@ int main(int argc, char** argv) {
           hz.push_back(r.s.horizon);
           ms.push_back(r.ms);
           cm.push_back(r.s.cornerMax);
+          st[0].push_back(r.stages.linesMs);
+          st[1].push_back(r.stages.vanishingMs);
+          st[2].push_back(r.stages.refineMs);
+          st[3].push_back(r.stages.layoutMs);
+          cpu.push_back(r.cpuMs);
         }
       if (fr.empty()) continue;
       json s = {{"images", fr.size()},
                 {"focal_rel_err_median", median(fr)},
                 {"vp_angle_deg_max_median", median(am)},
                 {"horizon_auc", horizonAuc(hz)},
-                {"ms_median", median(ms)}};
+                {"ms_median", median(ms)},
+                {"cpu_ms_median", median(cpu)},
+                {"stage_ms_median", {{"lines", median(st[0])}, {"vanishing", median(st[1])},
+                                     {"refine", median(st[2])}, {"layout", median(st[3])}}}};
       if (set == "scenes") s["corner_err_px_max_median"] = median(cm);
       summary[set][std::to_string(b)] = s;
     }
