@@ -407,6 +407,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       const size_t idx = size_t(y) * W + x;
       const auto& p = ps[idx];
       if (p.surface < 0 || isLight(x, y) || !photo.rgb(x, y).allFinite()) continue;
+      if (isNonMatte(opt.nonMatteSurfaces, p.surface)) continue;
       if (saturated(x, y) && !inSunBeam(idx)) continue;
       if (luminance(photo.rgb(x, y)) < 1e-4) continue;
       candidates.push_back(idx);

@@ -1,5 +1,7 @@
 #include "inlay/lighting/refine.h"
 
+#include "inlay/lighting/estimate.h"
+
 #include "inlay/render/path_tracer.h"
 
 #include <Eigen/Dense>
@@ -443,7 +445,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
       if (!(alpha > 0) || !rho.allFinite() || !d.allFinite()) continue;
       const Vec2 pc((x + 0.5) * camera.widthPx / W, (y + 0.5) * camera.heightPx / H);
       const auto hit = tracer.intersect(camera.rayThroughPixel(pc), 1e-6);
-      if (!hit) continue;
+      if (!hit || isNonMatte(opt.nonMatteSurfaces, hit->surfaceId)) continue;
       GridPixel g;
       g.point = hit->pointWorld;
       g.normal = hit->normalWorld;

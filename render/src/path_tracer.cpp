@@ -31,7 +31,8 @@
 // Suns (parallel light through an opening, masked to their beam) are added at every
 // non-specular vertex with a shadow ray against what stands inside the room (extrusions, cards,
 // objects), never the box walls. When the host gives the photo's radiance, a bounce (never a
-// camera ray) that lands on room the camera sees takes the photo's radiance there and ends.
+// camera ray) that lands on room the camera sees takes the photo's radiance there and ends; a
+// with-only path adds what the objects change at that point (addObjectsEffect: their shadow).
 //
 // Random dimensions: 0, 1 the pixel jitter; vertex d uses 2 + 8 d + {0-1 light point, 2-3
 // direction, 4 light pick, 5 lobe or Fresnel choice, 6 roulette, 7 occluder-card alpha test}
@@ -62,6 +63,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace inlay {
 
@@ -451,10 +453,12 @@ struct PathTracer::Impl {
     Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
     Vec3 lastNormal;           // its geometric normal on the side the path left from; zero
                                // after a transmitting BSDF (light selection saw every side)
+    bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
 
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                  bool* firstHitIsObject) const;
+  void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
 };
 
 void PathTracer::Impl::updateMeshLight(size_t i) {
@@ -541,7 +545,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       return;
     }
     const Material* reassigned = hit.kind == Hit::Kind::Room ? roomMaterial(hit.index) : nullptr;
-    if (hit.kind == Hit::Kind::Room && depth >= 1 && !reassigned) {
+    const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
+    if (hit.kind == Hit::Kind::Room && depth >= 1 && !reassigned && photoAllowed) {
       // A bounce that lands on room the camera sees takes the photo's radiance there (all the
       // light that point sends, so the path ends). Camera rays never do: with and without must
       // both be rendered there, or an object's shadow would vanish from the difference.
@@ -557,6 +562,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       Vec3 photo;
       if (scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) {
         add(clampIndirect(Vec3(throughput.cwiseProduct(photo)), indirectHit));
+        if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
         return;
       }
     }
@@ -733,6 +739,24 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       throughput /= q;
     }
   }
+}
+
+// The photo shows the room without the objects. A path that left an object and lands on room
+// the camera sees needs that point's radiance in the scene WITH the objects: the photo's, plus
+// what the objects change there (the shadow they cast on it, the light they bounce onto it).
+// That change is what a Shared path from the point estimates as with - without: it is path
+// traced from there (NEE with the with/without shadow test, a bounce that parts at an object)
+// and only the difference is kept, so it is exactly zero where the objects play no part. Without
+// it the bottom of an object standing on the floor saw the floor's unshadowed photo radiance.
+// Only with-only paths do it (they are few: an object pixel's or a ray's that met an object); a
+// Shared path landing on room in an object's shadow misses that second-order darkening.
+void PathTracer::Impl::addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const {
+  Sums change;
+  st.noPhotoAtFirstHit = true;
+  tracePath(Mode::Shared, st, rng, change, nullptr);
+  out.with += change.with - change.without;
+  out.rays += change.rays;
+  out.shadowRays += change.shadowRays;
 }
 
 // ---------------------------------------------------------------------------------------------

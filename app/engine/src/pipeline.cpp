@@ -428,7 +428,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     if (!shaft) return shaft.error();
     suns.push_back(shaft->sun);
   }
+  // Marked glossy or mirror surfaces show reflections: the light fits leave them out.
+  std::vector<bool> nonMatte(roomMaterials->size());
+  for (size_t i = 0; i < nonMatte.size(); ++i) nonMatte[i] = (*roomMaterials)[i].has_value();
   LightingOptions lo;
+  lo.nonMatteSurfaces = nonMatte;
   lo.cancel = opt.cancel;
   lo.threads = opt.threads;
   auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine,
@@ -453,6 +457,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     }
     LightRefineOptions ro = opt.refine;
     if (!ro.cancel) ro.cancel = opt.cancel;
+    ro.nonMatteSurfaces = nonMatte;
     auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
                                 usableDirect(ps.lighting, lightMask), ps.lighting.lights, specs,
                                 ps.lighting.suns, ro);

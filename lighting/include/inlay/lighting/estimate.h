@@ -53,6 +53,9 @@ struct LightingOptions {
   RetinexOptions retinex;
   DecomposeOptions decompose;
   bool objective = true;
+  // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
+  // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
+  std::vector<bool> nonMatteSurfaces;
   const CancelToken* cancel = nullptr;
 };
 
@@ -78,6 +81,11 @@ struct LightingEstimate {
   double seconds = 0;
   std::vector<std::string> notes;
 };
+
+// Whether surface `id` is flagged in `nonMatte` (LightingOptions::nonMatteSurfaces).
+inline bool isNonMatte(const std::vector<bool>& nonMatte, int id) {
+  return id >= 0 && size_t(id) < nonMatte.size() && nonMatte[size_t(id)];
+}
 
 // An area light for a light the user outlined on the photo: the outline's pixels are cast onto
 // the room; the light is the best-fitting rectangle on the surface they land on (usually the

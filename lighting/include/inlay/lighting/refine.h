@@ -48,6 +48,9 @@ struct LightRefineOptions {
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
   double marginM = 1e-3;       // lights keep this far inside the room's walls
   uint32_t seed = 11;
+  // Room surfaces (by surface id) marked glossy or mirror: they do not follow rho * E, so their
+  // pixels are left out of the data term (LightingOptions::nonMatteSurfaces likewise).
+  std::vector<bool> nonMatteSurfaces;
   const CancelToken* cancel = nullptr;
 };
 
