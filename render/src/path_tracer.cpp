@@ -755,8 +755,7 @@ void PathTracer::Impl::addObjectsEffect(PathState st, const SampleRng& rng, Sums
   st.noPhotoAtFirstHit = true;
   tracePath(Mode::Shared, st, rng, change, nullptr);
   out.with += change.with - change.without;
-  out.rays += change.rays;
-  out.shadowRays += change.shadowRays;
+  out.counters += change.counters;
 }
 
 // ---------------------------------------------------------------------------------------------
