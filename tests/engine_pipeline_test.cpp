@@ -19,6 +19,15 @@ SceneDoc exampleDoc() {
   return loaded->doc;
 }
 
+// The unchanged example prepared once, for the tests that only read it or edit their own copy:
+// preparing (decomposition, light estimate and refinement) is most of this suite's time, the
+// more so under the sanitizers. prepareScene is deterministic, so a copy is what a fresh call
+// would return.
+Expected<PreparedScene> preparedExample() {
+  static const Expected<PreparedScene> prepared = prepareScene(exampleDoc());
+  return prepared;
+}
+
 RenderFrame renderFrame(const PreparedScene& ps, int spp) {
   PathTracer tracer(ps.renderScene);
   DifferentialBuffers buf(ps.photo.linearRgb.width, ps.photo.linearRgb.height);
@@ -78,7 +87,7 @@ TEST(Engine, RoomMaterialsReachTheRenderSceneAndKeepThePhoto) {
 }
 
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
-  auto ps = prepareScene(exampleDoc());
+  auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ASSERT_EQ(ps->renderScene.objects.size(), 1u);
   const RenderFrame f = renderFrame(*ps, 4);
@@ -124,7 +133,7 @@ TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
 }
 
 TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
-  auto ps = prepareScene(exampleDoc());
+  auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ps->doc.objects[0].basePx += Vec2(60, -10);
   ps->doc.objects[0].yawDeg = 30;
