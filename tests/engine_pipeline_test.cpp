@@ -163,7 +163,7 @@ namespace {
 TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   SceneDoc doc = exampleDoc();
   ASSERT_GE(doc.lights.size(), 2u);
-  auto ps = prepareScene(doc);
+  auto ps = preparedExample();  // the unchanged doc
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ASSERT_FALSE(ps->refinement.history.empty());
   EXPECT_LE(ps->refinement.finalObjective, ps->refinement.initialObjective);
