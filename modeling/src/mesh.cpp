@@ -530,7 +530,9 @@ class PlyBody {
   }
 
  private:
-  std::string endOfData() const { return "unexpected end of data: the file ends here, but " + claim_; }
+  std::string endOfData() const {
+    return "unexpected end of data: the file ends here, but " + claim_;
+  }
 
   const std::string& d_;
   size_t pos_;
@@ -546,7 +548,8 @@ void checkPlyCounts(const std::vector<PlyElement>& elements, PlyBody::Format for
   for (const PlyElement& e : elements) {
     size_t per = 0;
     for (const PlyProperty& p : e.props)
-      per += format == PlyBody::Format::Ascii ? 2 : (p.isList ? plySize(p.countType) : plySize(p.type));
+      per += format == PlyBody::Format::Ascii ? 2
+                                              : (p.isList ? plySize(p.countType) : plySize(p.type));
     minBytes += (long double)e.count * per;
     if (minBytes <= (long double)bodyBytes + 1) continue;
     fail("header line " + std::to_string(e.headerLine),

@@ -19,7 +19,8 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TEST
 cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
 
 summary=build-fuzz/fuzz_summary.csv
-echo "target,seconds,executions,exec_per_s,coverage_edges,features,corpus_files,findings" > "$summary"
+echo "target,seconds,executions,exec_per_s,coverage_edges,features,corpus_files,findings" \
+  > "$summary"
 for t in "${targets[@]}"; do
   corpus=build-fuzz/corpus/$t findings=build-fuzz/findings/$t log=build-fuzz/fuzz_$t.log
   mkdir -p "$corpus" "$findings"
