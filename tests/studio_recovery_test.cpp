@@ -99,7 +99,8 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   QByteArray said;
   QElapsedTimer t;
   t.start();
-  while (!said.contains('\n') && t.elapsed() < 180000 && child.state() == QProcess::Running) {
+  while (!said.contains('\n') && t.elapsed() < waitMs(180000) &&
+         child.state() == QProcess::Running) {
     child.waitForReadyRead(200);
     said += child.readAllStandardOutput();
   }

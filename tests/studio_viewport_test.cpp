@@ -294,7 +294,7 @@ void StudioViewportTest::progressDialogCancels() {
   cancelButton->click();  // as the user does
   QCOMPARE(window.document()->state(), Document::State::Empty);
   QTRY_VERIFY_WITH_TIMEOUT(window.findChild<QProgressDialog*>() == nullptr, waitMs(5000));
-  QTest::qWait(500);
+  QTest::qWait(waitMs(500));
   QCOMPARE(window.document()->state(), Document::State::Empty);  // the late result is dropped
   QVERIFY(!window.renderer()->hasFrame());
 }
