@@ -31,3 +31,14 @@ if(INLAY_SANITIZE)
       "TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=${CMAKE_SOURCE_DIR}/tests/sanitizers/tsan.supp")
   message(STATUS "Sanitizers: ${_inlay_sanitizers}")
 endif()
+
+# How much longer a test may wait for a worker, a frame or a child process (studio QtTests get it
+# as INLAY_TEST_WAIT_SCALE; ctest timeouts of the slow labels use it too). TSan slows our
+# threaded code 5-15x, ASan+UBSan about 2-3x.
+if("thread" IN_LIST INLAY_SANITIZE)
+  set(INLAY_TEST_WAIT_SCALE 10)
+elseif(INLAY_SANITIZE)
+  set(INLAY_TEST_WAIT_SCALE 3)
+else()
+  set(INLAY_TEST_WAIT_SCALE 1)
+endif()

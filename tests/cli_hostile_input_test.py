@@ -226,12 +226,16 @@ CASES = [
               "ply\nformat ascii 1.0\nelement vertex 100\nproperty float x\nproperty float y\n"
               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
               "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
-              [r"lying\.ply", r"objects\[0\]\.mesh\.header", r"element counts promise more data than the file holds"]),
+              [r"lying\.ply", r"objects\[0\]\.mesh\.header line 3",
+               r"more data than the file holds: 'vertex' claims 100 entries, so the data after "
+               r"end_header needs at least 600 bytes, but the file holds 26"]),
     mesh_case("binary ply lies about face count", "lying_bin.ply",
               "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
               "property float y\nproperty float z\nelement face 5000000\n"
               "property list uchar int vertex_indices\nend_header\n" + "\0" * 36,
-              [r"lying_bin\.ply", r"objects\[0\]\.mesh\.header", r"element counts promise more data than the file holds"]),
+              [r"lying_bin\.ply", r"objects\[0\]\.mesh\.header line 7",
+               r"more data than the file holds: 'face' claims 5000000 entries, so the data after "
+               r"end_header needs at least 5000036 bytes, but the file holds 36"]),
     mesh_case("gltf view past its buffer", "past.gltf", gltf(36, 24, 36),
               [r"past\.gltf", r"objects\[0\]\.mesh", r"bufferViews\[0\]", r"past|beyond|exceeds|outside"]),
     mesh_case("gltf buffer shorter than declared", "short.gltf", gltf(4096, 0, 36),

@@ -19,6 +19,15 @@ SceneDoc exampleDoc() {
   return loaded->doc;
 }
 
+// The unchanged example prepared once, for the tests that only read it or edit their own copy:
+// preparing (decomposition, light estimate and refinement) is most of this suite's time, the
+// more so under the sanitizers. prepareScene is deterministic, so a copy is what a fresh call
+// would return.
+Expected<PreparedScene> preparedExample() {
+  static const Expected<PreparedScene> prepared = prepareScene(exampleDoc());
+  return prepared;
+}
+
 RenderFrame renderFrame(const PreparedScene& ps, int spp) {
   PathTracer tracer(ps.renderScene);
   DifferentialBuffers buf(ps.photo.linearRgb.width, ps.photo.linearRgb.height);
@@ -78,7 +87,7 @@ TEST(Engine, RoomMaterialsReachTheRenderSceneAndKeepThePhoto) {
 }
 
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
-  auto ps = prepareScene(exampleDoc());
+  auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ASSERT_EQ(ps->renderScene.objects.size(), 1u);
   const RenderFrame f = renderFrame(*ps, 4);
@@ -124,7 +133,7 @@ TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
 }
 
 TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
-  auto ps = prepareScene(exampleDoc());
+  auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ps->doc.objects[0].basePx += Vec2(60, -10);
   ps->doc.objects[0].yawDeg = 30;
@@ -154,7 +163,7 @@ namespace {
 TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   SceneDoc doc = exampleDoc();
   ASSERT_GE(doc.lights.size(), 2u);
-  auto ps = prepareScene(doc);
+  auto ps = preparedExample();  // the unchanged doc
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   ASSERT_FALSE(ps->refinement.history.empty());
   EXPECT_LE(ps->refinement.finalObjective, ps->refinement.initialObjective);

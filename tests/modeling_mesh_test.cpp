@@ -254,10 +254,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadMesh{"ply_ascii_short", "s.ply", plyHeader("ascii", 5, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                 "", ""},
         BadMesh{"ply_binary_lies", "l.ply", plyHeader("binary_little_endian", 3, 2) + binaryTriangle(),
-                "face 1", "unexpected end"},
+                "face 1", "unexpected end of data: the file ends here, but header line 8 claims 2 "
+                          "'face' entries"},
         BadMesh{"ply_huge_count", "u.ply", plyHeader("binary_little_endian", 2000000000, 1) +
                                               binaryTriangle(),
-                "header", "more data than the file holds"},
+                "header line 4",
+                "more data than the file holds: 'vertex' claims 2000000000 entries, so the data "
+                "after end_header needs at least 24000000000 bytes, but the file holds 49"},
         BadMesh{"ply_bad_index", "i.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
                 "face 0", "out of range"},
         BadMesh{"ply_negative_index", "n.ply",

@@ -17,7 +17,10 @@
 
 #include <limits>
 
+#include "studio_test_support.h"
+
 using namespace inlay;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -146,12 +149,12 @@ void StudioDocumentTest::dragMergesAndReturningIsObsolete() {
   const Vec2 opened = doc.scene().objects[0].basePx;
   QVERIFY(doc.moveObject(0, Vec2(1, 1), 0, &reason));
   QVERIFY(doc.scene().objects[0].basePx == Vec2(1, 1));
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(60000));
   QCOMPARE(doc.state(), Document::State::Failed);
   QVERIFY2(doc.prepareError().contains(QStringLiteral("objects[0]")), qPrintable(doc.prepareError()));
   doc.undoStack()->undo();
   QVERIFY(doc.scene().objects[0].basePx == opened);
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(60000));
   QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
   doc.undoStack()->clear();
 
@@ -194,7 +197,7 @@ void StudioDocumentTest::markEditsValidateMergeAndRestartPreparation() {
   QVERIFY(!doc.acceptEstimatedBox(&reason));
 
   doc.newFromPhoto(dir + QStringLiteral("/photo.png"));
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 120000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(120000));
   QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
   QVERIFY(!doc.backWallIsUsers());
   const std::array<Vec2, 4> estimated = *doc.shownBackWallPx();
@@ -220,7 +223,7 @@ void StudioDocumentTest::markEditsValidateMergeAndRestartPreparation() {
   // The other corners kept the estimate's place.
   QVERIFY((*doc.scene().layout.backWallPx)[0] == estimated[0]);
   QVERIFY((*doc.scene().layout.backWallPx)[1] == estimated[1] + Vec2(-8, 4));
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 120000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(120000));
   QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
   QVERIFY(doc.prepared()->backWallPx == *doc.scene().layout.backWallPx);
   // Back to where the drag began within the same drag: still one step, for the corners became
@@ -273,12 +276,12 @@ void StudioDocumentTest::cancelDropsTheResult() {
   doc.cancelPrepare();
   QCOMPARE(doc.state(), Document::State::Empty);
   QVERIFY(!doc.prepareError().isEmpty());
-  QTest::qWait(1500);  // whatever the worker still delivers is dropped
+  QTest::qWait(waitMs(1500));  // whatever the worker still delivers is dropped
   QCOMPARE(doc.state(), Document::State::Empty);
   QVERIFY(!doc.prepared());
   // Prepared again on request.
   doc.prepare();
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(60000));
   QVERIFY(doc.isReady());
 }
 
@@ -323,9 +326,9 @@ void StudioDocumentTest::rendererKeepsUpWithManyMoves() {
   RenderController renderer(&doc);
   QString error;
   QVERIFY(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error));
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(60000));
   QVERIFY(doc.isReady());
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.hasFrame(), 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.hasFrame(), waitMs(30000));
   QVERIFY(!renderer.photoImage().isNull());
   QCOMPARE(renderer.compositeImage().size(), renderer.photoImage().size());
 
@@ -343,10 +346,11 @@ void StudioDocumentTest::rendererKeepsUpWithManyMoves() {
   }
   QCOMPARE(doc.undoStack()->count(), 1);
   const quint64 wanted = renderer.requestedVersion();
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), waitMs(30000));
   QCOMPARE(quint64(renderer.frameInfo().sceneVersion), wanted);
   doc.undoStack()->undo();
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted,
+                           waitMs(30000));
 }
 
 // The sink composites with a slim copy of the prepared scene; it must give what compositeOf
@@ -383,7 +387,7 @@ void StudioDocumentTest::insertAndDeleteAreUndoable() {
   RenderController renderer(&doc);
   QString error;
   QVERIFY(doc.openSceneFile(dir + QStringLiteral("/scene.json"), &error));
-  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(60000));
   QVERIFY(doc.isReady());
   const ObjectKeys sphere = doc.scene().objects[0];
 
@@ -398,7 +402,7 @@ void StudioDocumentTest::insertAndDeleteAreUndoable() {
   QCOMPARE(doc.selectedObject(), 1);
   QCOMPARE(doc.prepared()->renderScene.objects.size(), size_t(2));
   QCOMPARE(doc.prepared()->placements.size(), size_t(2));
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), waitMs(30000));
 
   QString reason;
   ObjectKeys unknown = cube;
@@ -427,7 +431,7 @@ void StudioDocumentTest::insertAndDeleteAreUndoable() {
   doc.undoStack()->undo();  // the insert
   QCOMPARE(doc.objectCount(), 1);
   QVERIFY(doc.undoStack()->isClean());
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), waitMs(30000));
   doc.undoStack()->redo();
   doc.undoStack()->redo();
   QCOMPARE(doc.objectCount(), 1);

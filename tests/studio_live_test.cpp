@@ -10,6 +10,7 @@
 #include "main_window.h"
 #include "render_controller.h"
 #include "viewport.h"
+#include "studio_test_support.h"
 
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/scene_file.h"
@@ -51,7 +52,7 @@ QString exampleFile(const QString& name) {
 bool waitPrepared(Document* doc) {
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < 180000) QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < inlay::test::waitMs(180000)) QTest::qWait(20);
   return doc->state() != Document::State::Preparing;
 }
 

@@ -22,7 +22,10 @@
 #include <csignal>
 #include <cstdio>
 
+#include "studio_test_support.h"
+
 using namespace inlay;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -55,12 +58,13 @@ int runChild(int argc, char** argv, const QString& scene) {
   Document* doc = window.document();
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < 120000) QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(120000))
+    QTest::qWait(20);
   if (!doc->isReady()) return 4;
   if (!doc->moveObject(0, doc->scene().objects[0].basePx + kMove)) return 5;
   if (!doc->addLight(kLight)) return 6;
   const int before = window.autosaver()->writes();
-  while (window.autosaver()->writes() == before && t.elapsed() < 120000) QTest::qWait(20);
+  while (window.autosaver()->writes() == before && t.elapsed() < waitMs(120000)) QTest::qWait(20);
   if (window.autosaver()->writes() == before) return 7;
   std::printf("AUTOSAVED %.6f %.6f\n", doc->scene().objects[0].basePx.x(),
               doc->scene().objects[0].basePx.y());
@@ -95,7 +99,8 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   QByteArray said;
   QElapsedTimer t;
   t.start();
-  while (!said.contains('\n') && t.elapsed() < 180000 && child.state() == QProcess::Running) {
+  while (!said.contains('\n') && t.elapsed() < waitMs(180000) &&
+         child.state() == QProcess::Running) {
     child.waitForReadyRead(200);
     said += child.readAllStandardOutput();
   }
@@ -107,7 +112,7 @@ void StudioRecoveryTest::killedStudioIsRestored() {
 
   // --- Kill it hard: no close event, no cleanup ---
   QVERIFY(::kill(pid_t(child.processId()), SIGKILL) == 0);
-  QVERIFY(child.waitForFinished(10000));
+  QVERIFY(child.waitForFinished(waitMs(10000)));
   QCOMPARE(child.exitStatus(), QProcess::CrashExit);
 
   // --- A new studio finds the work and offers it ---
@@ -118,8 +123,10 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   window.show();
   QVERIFY(window.offerRecovery());
   QMessageBox* box = nullptr;
-  QTRY_VERIFY((box = window.findChild<QMessageBox*>(QStringLiteral("recoveryQuestion"))) != nullptr &&
-              box->isVisible());
+  QTRY_VERIFY_WITH_TIMEOUT(
+      (box = window.findChild<QMessageBox*>(QStringLiteral("recoveryQuestion"))) != nullptr &&
+          box->isVisible(),
+      waitMs(5000));
   QAbstractButton* restore = nullptr;
   for (QAbstractButton* b : box->buttons())
     if (box->buttonRole(b) == QMessageBox::AcceptRole) restore = b;
@@ -134,7 +141,7 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   QVERIFY((doc->scene().objects[0].basePx - movedTo).norm() < 1e-4);
   QCOMPARE(int(doc->scene().lights.size()), 3);  // the example's two and the child's
   QVERIFY(doc->scene().lights[2].pointsPx == kLight);
-  QTRY_VERIFY_WITH_TIMEOUT(doc->state() != Document::State::Preparing, 120000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc->state() != Document::State::Preparing, waitMs(120000));
   QVERIFY2(doc->isReady(), qPrintable(doc->prepareError()));
 
   // --- Saving puts the work in a file: the recovery file goes ---

@@ -20,7 +20,10 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "studio_test_support.h"
+
 using namespace inlay;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -35,7 +38,8 @@ QString exampleScene() {
 void waitPrepared(Document* doc) {
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < 180000) QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(180000))
+    QTest::qWait(20);
 }
 
 // A drag with `button` between two image points.

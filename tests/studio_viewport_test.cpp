@@ -25,7 +25,10 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "studio_test_support.h"
+
 using namespace inlay;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -99,10 +102,10 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   Viewport* view = window.viewport();
 
   QVERIFY(window.openPath(example));
-  QTRY_VERIFY_WITH_TIMEOUT(doc->state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(doc->state() != Document::State::Preparing, waitMs(60000));
   QVERIFY2(doc->state() == Document::State::Ready, qPrintable(doc->prepareError()));
   QVERIFY(doc->objectCount() >= 1);
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, waitMs(30000));
   const QImage before = view->grab().toImage();
 
   // --- Drag the marker of object 0 by (-60, -12) image pixels (staying on the floor) ---
@@ -129,7 +132,7 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   QVERIFY(reprojected && (*reprojected - moved).norm() < 1e-3);
 
   // --- The composite is re-rendered for the new position and differs ---
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, waitMs(30000));
   const QImage after = view->grab().toImage();
   QCOMPARE(after.size(), before.size());
   const int changed = differingPixels(before, after);
@@ -184,7 +187,7 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   QCOMPARE(doc->undoStack()->count(), 3);
   QVERIFY(doc->prepared()->renderScene.objects[0].material.kind == Material::Kind::Glossy);
   // A material change re-sends the scene; the renderer catches up with it.
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, waitMs(30000));
   doc->undoStack()->undo();
   doc->undoStack()->undo();
   QCOMPARE(doc->scene().objects[0].heightM, height0);
@@ -194,7 +197,7 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   // --- Export the composite (8-bit PNG and linear EXR) ---
   QTemporaryDir dir;
   QVERIFY(dir.isValid());
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, waitMs(30000));
   for (const char* name : {"composite.png", "composite.exr"}) {
     const QString out = dir.filePath(QString::fromLatin1(name));
     QVERIFY(window.exportComposite(out));
@@ -246,12 +249,13 @@ void StudioViewportTest::badPhotoReportsErrorWithoutCrash() {
   window.show();
   QVERIFY(QTest::qWaitForWindowExposed(&window));
   QVERIFY(window.openPath(bogus));
-  QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, waitMs(30000));
   QCOMPARE(window.document()->state(), Document::State::Failed);
   QVERIFY(!window.document()->prepareError().isEmpty());
   // The error is shown in a dialog that does not block.
   QMessageBox* box = nullptr;
-  QTRY_VERIFY((box = window.findChild<QMessageBox*>()) != nullptr && box->isVisible());
+  QTRY_VERIFY_WITH_TIMEOUT((box = window.findChild<QMessageBox*>()) != nullptr && box->isVisible(),
+                           waitMs(5000));
   QVERIFY(box->text().contains(QStringLiteral("not-a-photo.jpg")));
   box->close();
   // Edits are refused with a reason instead of crashing.
@@ -270,7 +274,7 @@ void StudioViewportTest::embeddedExampleOpens() {
   const QString path = window.document()->filePath();
   QVERIFY(!path.startsWith(QLatin1String(":")));
   QVERIFY(QFile::exists(path));
-  QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing, waitMs(60000));
   QVERIFY2(window.document()->isReady(), qPrintable(window.document()->prepareError()));
   QCOMPARE(window.document()->objectCount(), 1);
 }
@@ -289,8 +293,8 @@ void StudioViewportTest::progressDialogCancels() {
   QVERIFY(cancelButton);
   cancelButton->click();  // as the user does
   QCOMPARE(window.document()->state(), Document::State::Empty);
-  QTRY_VERIFY(window.findChild<QProgressDialog*>() == nullptr);
-  QTest::qWait(500);
+  QTRY_VERIFY_WITH_TIMEOUT(window.findChild<QProgressDialog*>() == nullptr, waitMs(5000));
+  QTest::qWait(waitMs(500));
   QCOMPARE(window.document()->state(), Document::State::Empty);  // the late result is dropped
   QVERIFY(!window.renderer()->hasFrame());
 }

@@ -33,7 +33,10 @@
 
 #include <algorithm>
 
+#include "studio_test_support.h"
+
 using namespace inlay;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -65,7 +68,7 @@ class StudioWorkflowTest : public QObject {
 
  private:
   void shot(QWidget* w, const QString& name);
-  bool waitReady(Document* doc, int timeoutMs = 180000);
+  bool waitReady(Document* doc, int timeoutMs = waitMs(180000));
   QDir artifacts_;
   int shotNumber_ = 0;
 };
@@ -125,7 +128,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   QVERIFY(doc->shownBackWallPx().has_value());
   QVERIFY(doc->lastEstimate() && !doc->lastEstimate()->segments.empty());
   QVERIFY(view->showsVanishingLines());
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->hasFrame(), 30000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->hasFrame(), waitMs(30000));
   step(QStringLiteral("estimate_shown"));
 
   // --- 2. Accept the estimated box: it becomes the user's, unchanged ---
@@ -181,7 +184,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   QVERIFY(window.insertBuiltin(QStringLiteral("builtin:sphere")));
   QCOMPARE(doc->objectCount(), 1);
   QCOMPARE(undo->count(), 4);
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 1, waitMs(60000));
   step(QStringLiteral("object_inserted"));
 
   // --- 6. Drag it across the floor (one undo step), measuring the first frame after each move ---
@@ -196,7 +199,7 @@ void StudioWorkflowTest::newUserWorkflow() {
     QTest::mouseMove(view, view->widgetFromImage(at).toPoint());
     const quint64 wanted = renderer->requestedVersion();
     while (!(renderer->isCurrent() && renderer->frameInfo().sceneVersion >= wanted) &&
-           sinceEdit.elapsed() < 10000)
+           sinceEdit.elapsed() < waitMs(10000))
       QTest::qWait(1);
     firstFrameMs.push_back(double(sinceEdit.nsecsElapsed()) * 1e-6);
   }
@@ -204,7 +207,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   QCOMPARE(undo->count(), 5);
   QVERIFY((doc->scene().objects[0].basePx - floorTarget).norm() < 1.0);
   QVERIFY(std::abs(doc->prepared()->placements[0].baseWorld.y()) < 1e-6);  // on the floor
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, waitMs(60000));
   step(QStringLiteral("object_on_floor"));
 
   // --- Viewport paint time while the renderer works (after an edit, so it renders) ---
@@ -253,7 +256,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   const double standsAt = doc->prepared()->placements[0].baseWorld.y();
   QVERIFY2(std::abs(standsAt - doc->prepared()->extrusions[0].heightM) < 1e-3,
            qPrintable(QStringLiteral("stands at y = %1 m").arg(standsAt)));
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, waitMs(60000));
   // The status bar shows the render's figures.
   QStringList figures;
   for (QLabel* l : window.statusBar()->findChildren<QLabel*>()) figures << l->text();
@@ -286,7 +289,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   QCOMPARE(sceneToJson(doc->scene()), finalJson);
   QVERIFY2(waitReady(doc), qPrintable(doc->prepareError()));
   QVERIFY(std::abs(doc->prepared()->placements[0].baseWorld.y() - topM) < 0.05);
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= 2, waitMs(60000));
   step(QStringLiteral("redone_to_end"));
 
   // --- 10. Save, reopen in a new window, compare ---
@@ -303,7 +306,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   QCOMPARE(sceneToJson(reopened.document()->scene()), sceneToJson(doc->scene()));
   QVERIFY((reopened.document()->prepared()->placements[0].baseWorld -
            doc->prepared()->placements[0].baseWorld).norm() < 1e-9);
-  QTRY_VERIFY_WITH_TIMEOUT(reopened.renderer()->hasFrame(), 60000);
+  QTRY_VERIFY_WITH_TIMEOUT(reopened.renderer()->hasFrame(), waitMs(60000));
   step(QStringLiteral("reopened"));
 
   // --- Figures ---

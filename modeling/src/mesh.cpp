@@ -483,6 +483,7 @@ struct PlyProperty {
 struct PlyElement {
   std::string name;
   uint64_t count = 0;
+  int headerLine = 0;  // where the header declares it (for messages about lying counts)
   std::vector<PlyProperty> props;
 };
 
@@ -497,7 +498,7 @@ class PlyBody {
       while (pos_ < d_.size() && std::isspace((unsigned char)d_[pos_])) ++pos_;
       size_t e = pos_;
       while (e < d_.size() && !std::isspace((unsigned char)d_[e])) ++e;
-      if (e == pos_) fail(where, "unexpected end of data (the header promises more)");
+      if (e == pos_) fail(where, endOfData());
       double v;
       const std::string_view tok(d_.data() + pos_, e - pos_);
       if (!parseDouble(tok, v)) fail(where, "malformed number '" + std::string(tok) + "'");
@@ -505,7 +506,7 @@ class PlyBody {
       return v;
     }
     const size_t n = plySize(t);
-    if (pos_ + n > d_.size()) fail(where, "unexpected end of data (the header promises more)");
+    if (pos_ + n > d_.size()) fail(where, endOfData());
     unsigned char b[8];
     std::memcpy(b, d_.data() + pos_, n);
     pos_ += n;
@@ -522,12 +523,42 @@ class PlyBody {
     }
   }
   size_t remaining() const { return d_.size() - std::min(pos_, d_.size()); }
+  // The element being read, so that running out of data says what the header claimed.
+  void reading(const PlyElement& e) {
+    claim_ = "header line " + std::to_string(e.headerLine) + " claims " + std::to_string(e.count) +
+             " '" + e.name + "' entries";
+  }
 
  private:
+  std::string endOfData() const {
+    return "unexpected end of data: the file ends here, but " + claim_;
+  }
+
   const std::string& d_;
   size_t pos_;
   Format f_;
+  std::string claim_ = "the header claims more";
 };
+
+// Lying headers: every element instance needs at least this many bytes; refuse counts the file
+// cannot hold before allocating anything, naming the element line that claims too much.
+void checkPlyCounts(const std::vector<PlyElement>& elements, PlyBody::Format format,
+                    size_t bodyBytes) {
+  long double minBytes = 0;
+  for (const PlyElement& e : elements) {
+    size_t per = 0;
+    for (const PlyProperty& p : e.props)
+      per += format == PlyBody::Format::Ascii ? 2
+                                              : (p.isList ? plySize(p.countType) : plySize(p.type));
+    minBytes += (long double)e.count * per;
+    if (minBytes <= (long double)bodyBytes + 1) continue;
+    fail("header line " + std::to_string(e.headerLine),
+         "element counts promise more data than the file holds: '" + e.name + "' claims " +
+             std::to_string(e.count) + " entries, so the data after end_header needs at least " +
+             std::to_string((unsigned long long)std::min(minBytes, 1e19L)) +
+             " bytes, but the file holds " + std::to_string(bodyBytes));
+  }
+}
 
 TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
   // Header.
@@ -566,6 +597,7 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
       int64_t c;
       if (e.name.empty() || !parseInt(count, c) || c < 0) fail(where, "malformed element line");
       e.count = uint64_t(c);
+      e.headerLine = lineNo;
       elements.push_back(e);
     } else if (kw == "property") {
       if (elements.empty()) fail(where, "property before any element");
@@ -589,23 +621,12 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
   if (!haveFormat) fail("header", "no 'format' line");
 
   PlyBody body(data, bodyPos, format);
-  // Lying headers: every element instance needs at least this many bytes; refuse counts the
-  // file cannot hold before allocating anything.
-  {
-    long double minBytes = 0;
-    for (const PlyElement& e : elements) {
-      size_t per = 0;
-      for (const PlyProperty& p : e.props)
-        per += format == PlyBody::Format::Ascii ? 2 : (p.isList ? plySize(p.countType) : plySize(p.type));
-      minBytes += (long double)e.count * per;
-    }
-    if (minBytes > (long double)body.remaining() + 1)
-      fail("header", "element counts promise more data than the file holds");
-  }
+  checkPlyCounts(elements, format, body.remaining());
 
   TriangleMesh m;
   bool haveVertices = false;
   for (const PlyElement& e : elements) {
+    body.reading(e);
     const std::string ename = "element '" + e.name + "'";
     if (e.name == "vertex") {
       if (e.count > limits.maxVertices)
