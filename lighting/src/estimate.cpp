@@ -195,6 +195,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (stop()) return cancelled();
 
   auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
+  // The sides of an extrusion's prism stand in for the legs and the open space under a table
+  // top: the photo there shows the floor and walls behind, lit as the prism is not.
+  auto isProxy = [&](int surface) {
+    return geometry.surfaces[size_t(surface)].kind == SurfaceKind::ExtrusionSide;
+  };
   // Clipped (or non-finite) pixels say nothing about albedo and light.
   auto saturated = [&](int x, int y) {
     const float* p = photo.pixel(x, y);
@@ -407,6 +412,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       const size_t idx = size_t(y) * W + x;
       const auto& p = ps[idx];
       if (p.surface < 0 || isLight(x, y) || !photo.rgb(x, y).allFinite()) continue;
+      if (isProxy(p.surface)) continue;
       if (saturated(x, y) && !inSunBeam(idx)) continue;
       if (luminance(photo.rgb(x, y)) < 1e-4) continue;
       candidates.push_back(idx);
