@@ -613,7 +613,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         // where the geometry says, such as the floor seen between a table's legs): its albedo
         // comes from the photo's own Retinex, and the data terms leave it alone.
         const Vec3 sf = shadingFree.rgb(x, y);
-        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove;
+        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove &&
+                     !isProxy(ps[idx].surface);
       }
     // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
     // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
