@@ -464,8 +464,12 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       // the refined positions, the radiances, Gamma and the albedo are estimated again.
       progress("lighting", 0);
       t = Clock::now();
+      // A locked light keeps its intensity too.
+      std::vector<bool> fitAgain(refine);
+      for (size_t i = 0; i < fitAgain.size() && i < doc.lights.size(); ++i)
+        fitAgain[i] = refine[i] && !doc.lights[i].lock;
       auto again = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry,
-                                    ps.lighting.lights, refine, lightMask, ps.lighting.suns, lo);
+                                    ps.lighting.lights, fitAgain, lightMask, ps.lighting.suns, lo);
       if (!again) {
         if (cancelled()) return Error{"", "", "cancelled"};
         return again.error();
