@@ -5,6 +5,7 @@
 #include "inlay/render/path_tracer.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace inlay {
@@ -108,6 +109,48 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   std::printf("fitted radiance %.3f %.3f %.3f (true 6 5 4), fit rms(log) %.4f, %.2f s\n",
               est->lights[0].radiance[0], est->lights[0].radiance[1], est->lights[0].radiance[2],
               est->fitRmsLog, est->seconds);
+}
+
+// Over-exposed: a tenth of the room clips at 1 (a bright wall by the lamp). The clipped pixels
+// are only a lower bound of their radiance, so the light they send gets a fitted extra gain
+// (never below 1 overall, bounded by what was clipped) and the albedo stays right.
+TEST(Lighting, ClippedPixelsSendMoreLightThanTheyShow) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 64);
+  const ImageF mask = lightMaskOf(r);
+  std::vector<float> room;
+  for (int y = 0; y < r.photo.height; ++y)
+    for (int x = 0; x < r.photo.width; ++x)
+      if (mask.at(x, y) < 0.5f) room.push_back(r.photo.at(x, y, 1));
+  std::nth_element(room.begin(), room.begin() + long(room.size() * 9 / 10), room.end());
+  const float exposure = 1.f / room[room.size() * 9 / 10];
+  ImageF photo = r.photo;
+  double excess = 0, clipped = 0;  // the clipped pixels' true radiance over what they show
+  for (float& v : photo.data) {
+    if (v * exposure >= 1.f) excess += v * exposure, clipped += 1;
+    v = std::min(1.f, v * exposure);
+  }
+  excess = excess / std::max(1.0, clipped) - 1;
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok());
+  LightingOptions opt;
+  opt.gatherSamples = 64;
+  opt.gatherStride = 2;
+  const auto est = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
+  ASSERT_TRUE(est.ok()) << est.error().message();
+  std::printf("clipped gain %.3f %.3f %.3f, true mean excess %.3f\n", est->clippedGain[0],
+              est->clippedGain[1], est->clippedGain[2], excess);
+  // The total factor 1 + gain is at least 1 and not beyond the largest plausible excess.
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GE(est->clippedGain[c], -1e-9);
+    EXPECT_LT(est->clippedGain[c], 4 * excess + 0.1);
+  }
+  for (size_t s = 0; s < r.albedo.size(); ++s) {
+    if (r.geometry.surfaces[s].kind == SurfaceKind::WallRear) continue;  // not seen
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(est->surfaceMeanAlbedo[s][c], r.albedo[s][c], 0.08)
+          << r.geometry.surfaces[s].name << " channel " << c;
+  }
+  for (float v : est->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
 }
 
 TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {

@@ -1,6 +1,7 @@
 #include "inlay/lighting/decompose.h"
 
-#include <opencv2/core.hpp>
+#include "inlay/lighting/poisson.h"
+
 #include <tbb/blocked_range.h>
 #include "inlay/modeling/parallel.h"
 
@@ -22,31 +23,6 @@ void forRows(int H, F&& f) {
   parallelFor(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
     for (int y = r.begin(); y < r.end(); ++y) f(y);
   });
-}
-
-// Solves Lap(u) = div on a W x H grid with Neumann boundaries (5-point Laplacian, the adjoint of
-// forward differences) by a DCT-II; the free constant is chosen so u has mean zero. Odd sizes
-// are padded by one row/column whose gradients are zero (cv::dct takes even sizes only).
-std::vector<float> poissonNeumann(const std::vector<float>& div, int W, int H) {
-  const int PW = W + (W & 1), PH = H + (H & 1);
-  cv::Mat d(PH, PW, CV_32F, cv::Scalar(0));
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) d.at<float>(y, x) = div[size_t(y) * W + x];
-  cv::Mat f;
-  cv::dct(d, f);
-  std::vector<double> cx(static_cast<size_t>(PW)), cy(static_cast<size_t>(PH));
-  for (int k = 0; k < PW; ++k) cx[size_t(k)] = 2 * std::cos(M_PI * k / PW) - 2;
-  for (int l = 0; l < PH; ++l) cy[size_t(l)] = 2 * std::cos(M_PI * l / PH) - 2;
-  for (int l = 0; l < PH; ++l)
-    for (int k = 0; k < PW; ++k) {
-      const double lam = cx[size_t(k)] + cy[size_t(l)];
-      f.at<float>(l, k) = (k == 0 && l == 0) ? 0.f : float(f.at<float>(l, k) / lam);
-    }
-  cv::dct(f, d, cv::DCT_INVERSE);
-  std::vector<float> u(size_t(W) * H);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) u[size_t(y) * W + x] = d.at<float>(y, x);
-  return u;
 }
 
 }  // namespace
@@ -73,24 +49,34 @@ ImageF retinexReflectance(const ImageF& img, const std::vector<uint8_t>& valid,
   auto keep = [&](size_t a, size_t b) -> float {
     if (!valid[a] || !valid[b]) return 0.f;
     const float dl = logI[b] - logI[a];
-    const float dc = std::sqrt(std::pow(chroma[b][0] - chroma[a][0], 2.f) +
-                               std::pow(chroma[b][1] - chroma[a][1], 2.f) +
-                               std::pow(chroma[b][2] - chroma[a][2], 2.f));
-    return (std::abs(dl) > opt.intensityThreshold || dc > opt.chromaThreshold) ? dl : 0.f;
+    const float d0 = chroma[b][0] - chroma[a][0], d1 = chroma[b][1] - chroma[a][1],
+                d2 = chroma[b][2] - chroma[a][2];
+    const float dc2 = d0 * d0 + d1 * d1 + d2 * d2;
+    const float ct = float(opt.chromaThreshold);
+    return (std::abs(dl) > opt.intensityThreshold || dc2 > ct * ct) ? dl : 0.f;
   };
+  // Kept derivative on the edge to the right (kx) and below (ky) of each pixel, then their
+  // divergence (each edge evaluated once).
+  std::vector<float> kx(N, 0.f), ky(N, 0.f);
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      if (x + 1 < W) kx[i] = keep(i, i + 1);
+      if (y + 1 < H) ky[i] = keep(i, i + size_t(W));
+    }
+  });
   std::vector<float> div(N, 0.f);
   forRows(H, [&](int y) {
     for (int x = 0; x < W; ++x) {
       const size_t i = size_t(y) * W + x;
-      float d = 0;
-      if (x + 1 < W) d += keep(i, i + 1);
-      if (x > 0) d -= keep(i - 1, i);
-      if (y + 1 < H) d += keep(i, i + size_t(W));
-      if (y > 0) d -= keep(i - size_t(W), i);
+      float d = kx[i] + ky[i];
+      if (x > 0) d -= kx[i - 1];
+      if (y > 0) d -= ky[i - size_t(W)];
       div[i] = d;
     }
   });
-  std::vector<float> r = poissonNeumann(div, W, H);
+  kx = {}, ky = {};
+  std::vector<float> r = poissonNeumannMultigrid(div, W, H, 1e-4);
   double mean = 0, n = 0;
   for (size_t i = 0; i < N; ++i)
     if (valid[i]) mean += r[i], n += 1;

@@ -11,6 +11,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <cmath>
@@ -33,13 +34,17 @@ double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.072
 // The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
 // A clipped pixel (lowerBoundOnly) only says the prediction reaches the clip level.
 struct LogResidual {
-  LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false)
-      : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly) {}
+  LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false,
+              double gammaClipped = -1)
+      : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly),
+        gammaClipped(gammaClipped) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
-    // params[0]: rho (1), params[1..]: light radiance channel (1 each).
+    // params[0]: rho (1), params[1..]: light radiance channel (1 each), then (when
+    // gammaClipped >= 0) the extra gain of the light gathered from clipped pixels.
     T shading = T(gamma);
     for (size_t j = 0; j < e.size(); ++j) shading += params[1 + j][0] * T(e[j]);
+    if (gammaClipped >= 0) shading += params[1 + e.size()][0] * T(gammaClipped);
     residual[0] = T(logB) - log(params[0][0]) - log(shading + T(1e-9));
     if (lowerBoundOnly && residual[0] < T(0)) residual[0] = T(0);
     return true;
@@ -47,6 +52,7 @@ struct LogResidual {
   double logB, gamma;
   std::vector<double> e;
   bool lowerBoundOnly;
+  double gammaClipped;
 };
 
 // Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls and
@@ -195,6 +201,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (stop()) return cancelled();
 
   auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
+  // The sides of an extrusion's prism stand in for the legs and the open space under a table
+  // top: the photo there shows the floor and walls behind, lit as the prism is not.
+  auto isProxy = [&](int surface) {
+    return geometry.surfaces[size_t(surface)].kind == SurfaceKind::ExtrusionSide;
+  };
   // Clipped (or non-finite) pixels say nothing about albedo and light.
   auto saturated = [&](int x, int y) {
     const float* p = photo.pixel(x, y);
@@ -234,6 +245,9 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     std::vector<Vec3> lights;     // radiance per light
     SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
   } model;
+  // Gain already given to clipped pixels' radiance (after the first fit): radianceAt returns
+  // b (1 + gain) there, so the second pass predicts the unseen parts with the fitted light.
+  std::array<double, 3> clippedGainApplied = {0, 0, 0};
 
   // Radiance leaving a room point toward another, read from the photo where the camera sees it.
   auto radianceAt = [&](const SurfaceHit& h, uint32_t sampleId) -> Vec3 {
@@ -245,7 +259,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
                                             0.02 * p.depth + 1e-3) {
           const Vec3 b = photo.rgb(x, y);
-          if (!isLight(x, y) && b.allFinite()) return b;
+          if (!isLight(x, y) && b.allFinite())
+            return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0],
+                                                              1 + clippedGainApplied[1],
+                                                              1 + clippedGainApplied[2])))
+                                   : b;
         }
       }
     }
@@ -265,10 +283,36 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     return model.rho[h.surfaceId].cwiseProduct(irradiance);
   };
 
+  // The part of radianceAt that comes from clipped photo pixels (a window, an over-exposed wall
+  // by a lamp): there the photo gives only a lower bound of the radiance, so the light they send
+  // is gathered apart and the fit gives it an extra gain k (Gamma + k Gamma_clipped), with the
+  // clipped radiance's total factor 1 + k at least 1. The second pass starts from the first's.
+  auto clippedRadianceAt = [&](const SurfaceHit& h, uint32_t) -> Vec3 {
+    const auto px = camera.project(h.pointWorld);
+    if (!px) return Vec3::Zero();
+    const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
+    if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y) || !saturated(x, y)) return Vec3::Zero();
+    const auto& p = ps[size_t(y) * W + x];
+    if (p.surface != h.surfaceId ||
+        !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3))
+      return Vec3::Zero();
+    const Vec3 b = photo.rgb(x, y);
+    return b.allFinite() ? b : Vec3::Zero();
+  };
+  size_t clippedRoomPixels = 0, roomPixels = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      if (ps[size_t(y) * W + x].surface >= 0 && !isLight(x, y))
+        ++roomPixels, clippedRoomPixels += saturated(x, y) ? 1 : 0;
+  // A few clipped pixels send too little light to tell their gain.
+  const bool fitClipped = clippedRoomPixels > std::max<size_t>(50, roomPixels / 200);
+  ImageF gatheredClipped;
+  std::array<double, 3> clippedGain = {0, 0, 0};
+
   // 3. Gamma and E_j on a coarse grid, then spread to every pixel of the same surface.
   const int stride = std::max(1, opt.gatherStride);
   const int GW = (W + stride - 1) / stride, GH = (H + stride - 1) / stride;
-  std::vector<Vec3> gridGamma(size_t(GW) * GH, Vec3::Zero());
+  std::vector<Vec3> gridGamma(size_t(GW) * GH, Vec3::Zero()), gridClipped(gridGamma);
   std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
   std::vector<int> gridSurface(size_t(GW) * GH, -1);
   std::vector<Vec2> gridPixel(size_t(GW) * GH);
@@ -276,6 +320,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   auto gatherAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
     return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, pixelId, opt.seed,
                                   radianceAt)
+        .mean;
+  };
+  auto gatherClippedAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
+    return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, pixelId, opt.seed,
+                                  clippedRadianceAt)
         .mean;
   };
   auto lightE = [&](const PixelSurface& p, size_t j, uint32_t id) {
@@ -360,6 +409,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         if (gridSurface[g] < 0) continue;
         const int x = int(gridPixel[g].x()), y = int(gridPixel[g].y());
         gridGamma[g] = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+        if (fitClipped) gridClipped[g] = gatherClippedAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
       }
     });
     out.gathered = ImageF(W, H, 3, 0.f);
@@ -367,6 +417,14 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
            [&](int x, int y, const double* v) { out.gathered.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
            [&](int x, int y, double* v) {
              const Vec3 g = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+             v[0] = g[0], v[1] = g[1], v[2] = g[2];
+           });
+    if (!fitClipped) return;
+    gatheredClipped = ImageF(W, H, 3, 0.f);
+    spread(3, [&](size_t g, int d) { return gridClipped[g][d]; },
+           [&](int x, int y, const double* v) { gatheredClipped.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
+           [&](int x, int y, double* v) {
+             const Vec3 g = gatherClippedAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
              v[0] = g[0], v[1] = g[1], v[2] = g[2];
            });
   };
@@ -408,6 +466,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       const auto& p = ps[idx];
       if (p.surface < 0 || isLight(x, y) || !photo.rgb(x, y).allFinite()) continue;
       if (isNonMatte(opt.nonMatteSurfaces, p.surface)) continue;
+      if (isProxy(p.surface)) continue;
       if (saturated(x, y) && !inSunBeam(idx)) continue;
       if (luminance(photo.rgb(x, y)) < 1e-4) continue;
       candidates.push_back(idx);
@@ -446,6 +505,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       for (int c = 0; c < 3; ++c)
         L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
     for (auto& r : rho) r = {0.5, 0.5, 0.5};
+    clippedGain = {0, 0, 0};
     double cost = 0, count = 0;
     for (int c = 0; c < 3; ++c) {
       if (stop()) return false;
@@ -457,12 +517,17 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
         const double b = photo.at(x, y, c);
         auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
-            std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove));
+            std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove,
+            fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0));
         std::vector<double*> blocks{&rho[s][c]};
         f->AddParameterBlock(1);
         for (size_t j = 0; j < C; ++j) {
           f->AddParameterBlock(1);
           blocks.push_back(&L[j][c]);
+        }
+        if (fitClipped) {
+          f->AddParameterBlock(1);
+          blocks.push_back(&clippedGain[size_t(c)]);
         }
         f->SetNumResiduals(1);
         problem.AddResidualBlock(f, new ceres::CauchyLoss(0.15), blocks);
@@ -472,6 +537,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
           problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
           problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
         }
+      if (problem.HasParameterBlock(&clippedGain[size_t(c)])) {
+        problem.SetParameterLowerBound(&clippedGain[size_t(c)], 0, -clippedGainApplied[size_t(c)]);
+        problem.SetParameterUpperBound(&clippedGain[size_t(c)], 0, 1e3);
+      }
       for (size_t j = 0; j < C; ++j)
         if (problem.HasParameterBlock(&L[j][c])) {
           problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
@@ -501,6 +570,13 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       if (!r.allFinite()) r = Vec3::Zero();
       out.suns[k].irradianceOverPi = r.cwiseMax(0.0);
     }
+    if (fitClipped) {
+      for (size_t c = 0; c < 3; ++c)
+        if (!std::isfinite(clippedGain[c])) clippedGain[c] = 0;
+      for (size_t i = 0; i < out.gathered.data.size(); ++i)
+        out.gathered.data[i] += float(clippedGain[i % 3]) * gatheredClipped.data[i];
+      for (size_t c = 0; c < 3; ++c) out.clippedGain[int(c)] = clippedGainApplied[c] + clippedGain[c];
+    }
     return true;
   };
 
@@ -528,6 +604,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     if (stop() || !fit()) return cancelled();
     if (pass == 1) break;
     model.active = true;
+    for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
     model.rho.assign(S, Vec3::Zero());
     model.gammaMean.assign(S, Vec3::Zero());
     std::vector<double> n(S, 0.0);
@@ -608,7 +685,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         // where the geometry says, such as the floor seen between a table's legs): its albedo
         // comes from the photo's own Retinex, and the data terms leave it alone.
         const Vec3 sf = shadingFree.rgb(x, y);
-        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove;
+        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove &&
+                     !isProxy(ps[idx].surface);
       }
     // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
     // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there

@@ -134,6 +134,15 @@ std::vector<uint8_t> usableDirect(const LightingEstimate& l, const ImageF& light
   return u;
 }
 
+// Whether the refinement moved a light's corners by more than a millimetre.
+bool lightsMoved(const std::vector<AreaLight>& before, const std::vector<AreaLight>& after) {
+  if (before.size() != after.size()) return true;
+  for (size_t j = 0; j < before.size(); ++j)
+    for (size_t k = 0; k < 4; ++k)
+      if ((before[j].cornersWorld[k] - after[j].cornersWorld[k]).norm() > 1e-3) return true;
+  return false;
+}
+
 }  // namespace
 
 const char* versionString() { return INLAY_VERSION; }
@@ -470,6 +479,26 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     ps.lighting.suns = ps.refinement.suns;
     for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
     ps.stageSeconds.emplace_back("refine", secondsSince(t));
+    if (lightsMoved(ps.initialLights, ps.lighting.lights)) {
+      // The albedo-intensity split rests on the shape of each light's irradiance over the room
+      // (B = rho (L E + Gamma) is flat along rho / k, L k where E and Gamma look alike): with
+      // the refined positions, the radiances, Gamma and the albedo are estimated again.
+      progress("lighting", 0);
+      t = Clock::now();
+      // A locked light keeps its intensity too.
+      std::vector<bool> fitAgain(refine);
+      for (size_t i = 0; i < fitAgain.size() && i < doc.lights.size(); ++i)
+        fitAgain[i] = refine[i] && !doc.lights[i].lock;
+      auto again = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry,
+                                    ps.lighting.lights, fitAgain, lightMask, ps.lighting.suns, lo);
+      if (!again) {
+        if (cancelled()) return Error{"", "", "cancelled"};
+        return again.error();
+      }
+      ps.lighting = std::move(*again);
+      for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
+      ps.stageSeconds.emplace_back("lighting refit", secondsSince(t));
+    }
   }
 
   // The render scene: room with its projected albedo, lights, objects placed.

@@ -78,6 +78,9 @@ struct LightingEstimate {
   std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
   double fitRmsLog = 0;  // robust fit residual (log space)
   int gatherSamples = 0; // rays per gathered pixel used
+  // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
+  // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
+  Vec3 clippedGain = Vec3::Zero();
   double seconds = 0;
   std::vector<std::string> notes;
 };
