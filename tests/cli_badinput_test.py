@@ -5,7 +5,7 @@ input named by file and key, atomic outputs, progress CSV, layers, Ctrl-C. Needs
 
 usage: cli_badinput_test.py INLAY_CLI
 """
-import json, os, shutil, signal, subprocess, sys, tempfile, time
+import json, os, shutil, signal, subprocess, sys, tempfile, threading, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "resources", "example")
@@ -120,16 +120,27 @@ def main():
     check("layers", os.path.exists(exr) and os.path.getsize(exr) > 1000)
     check("no temp files left", not [f for f in os.listdir(tmp) if f.startswith(".") or ".tmp" in f], str(os.listdir(tmp)))
 
-    # Ctrl-C stops within a second or two and writes nothing.
+    # Ctrl-C stops within a second or two and writes nothing. It is sent once the render is
+    # under way (its first progress line): a fixed sleep raced the program's start under load,
+    # when the signal could arrive before main() installed its handler.
     stop = os.path.join(tmp, "stopped.png")
-    proc = subprocess.Popen([cli, "render", p, "-o", stop, "--spp", "100000", "--quiet"], stderr=subprocess.PIPE, text=True)
-    time.sleep(4.0)
+    proc = subprocess.Popen([cli, "render", p, "-o", stop, "--spp", "100000"], stderr=subprocess.PIPE, text=True)
+    started = threading.Event()
+
+    def watch():
+        for line in proc.stderr:
+            if line.startswith("inlay-cli: render "):
+                started.set()
+    reader = threading.Thread(target=watch, daemon=True)
+    reader.start()
+    check("render started", started.wait(timeout=300), "no progress line within 300 s")
     t0 = time.time()
     proc.send_signal(signal.SIGINT)
     try:
         proc.wait(timeout=10)
     except subprocess.TimeoutExpired:
         proc.kill()
+        proc.wait()
     dt = time.time() - t0
     check("ctrl-c", proc.returncode == 1 and dt < 2.5 and not os.path.exists(stop), "exit %s after %.2f s" % (proc.returncode, dt))
     print("ctrl-c stopped after %.2f s" % dt)
