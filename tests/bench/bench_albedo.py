@@ -17,6 +17,8 @@ usage: bench_albedo.py INLAY_CLI [--out DIR] [--budgets 1,10,30,100,200,400]
                        [--scenes d1,d3]
 """
 import csv, json, os, subprocess, sys, time
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PY = "/usr/bin/python3"
@@ -31,7 +33,7 @@ def run(cmd):
 
 
 def main():
-    a = sys.argv[1:]
+    a = benchlib.args(__doc__)
     if not a:
         print(__doc__)
         return 2

@@ -24,6 +24,9 @@ import csv, glob, json, os, sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
+
 
 def auc(err):
     err = np.asarray(err)
@@ -63,7 +66,7 @@ def svd_horizon(segs, K, length_power):
 
 
 def main():
-    york = sys.argv[1]
+    york = benchlib.args(__doc__)[0]
     rows = []
     for jf in sorted(glob.glob(os.path.join(york, "*.json"))):
         t = json.load(open(jf))

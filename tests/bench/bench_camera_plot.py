@@ -11,7 +11,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-out = sys.argv[1]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
+
+out = benchlib.args(__doc__)[0]
 rows = list(csv.DictReader(open(os.path.join(out, "camera_bench.csv"))))
 summary = json.load(open(os.path.join(out, "camera_bench_summary.json")))
 default = summary["default_budget"]

@@ -19,6 +19,8 @@ import csv, json, os, subprocess, sys, time
 import cv2
 import numpy as np
 import OpenImageIO as oiio
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SHARED = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
@@ -52,7 +54,7 @@ def tonemap(x):
 
 
 def main():
-    a = sys.argv[1:]
+    a = benchlib.args(__doc__)
     if not a:
         print(__doc__)
         return 2

@@ -61,7 +61,7 @@ def centre(corners):
 
 
 def main():
-    a = sys.argv[1:]
+    a = benchlib.args(__doc__)
     cli = os.path.abspath(a[0])
     opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))

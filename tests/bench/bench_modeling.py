@@ -24,7 +24,7 @@ import benchlib  # noqa: E402
 
 
 def main():
-    a = sys.argv[1:]
+    a = benchlib.args(__doc__)
     if not a:
         print(__doc__)
         return 2

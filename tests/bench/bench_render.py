@@ -15,6 +15,8 @@ usage: bench_render.py BUILD_DIR [--out DIR] [--room d1] [--size 96x72] [--ref-s
 """
 import csv, math, os, subprocess, sys
 from collections import defaultdict
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SHARED = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
@@ -50,7 +52,7 @@ def time_to(points, target):
 
 
 def main():
-    a = sys.argv[1:]
+    a = benchlib.args(__doc__)
     if not a:
         print(__doc__)
         return 2

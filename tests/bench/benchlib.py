@@ -5,6 +5,19 @@ import csv, json, os, subprocess, sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
+def args(doc, positional=1):
+    """The script's arguments; prints its docstring and exits 0 on -h/--help, and exits 2 with
+    it when fewer than `positional` arguments are given."""
+    a = sys.argv[1:]
+    if "-h" in a or "--help" in a:
+        print(doc.strip())
+        sys.exit(0)
+    if len(a) < positional:
+        sys.stderr.write(doc.strip() + "\n")
+        sys.exit(2)
+    return a
+
+
 def option(argv, key, default):
     """The value after `key` in argv, or `default`."""
     return argv[argv.index(key) + 1] if key in argv else default
