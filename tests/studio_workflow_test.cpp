@@ -32,11 +32,14 @@
 #include <QtTest>
 
 #include <algorithm>
+#include <memory>
 
 #include "studio_test_support.h"
+#include "studio_workflow_steps.h"
 
 using namespace inlay;
 using inlay::test::waitMs;
+using inlay::test::StepLog;
 using namespace inlay::studio;
 
 namespace {
@@ -67,10 +70,8 @@ class StudioWorkflowTest : public QObject {
   void frenchFromTheLanguageMenu();
 
  private:
-  void shot(QWidget* w, const QString& name);
-  bool waitReady(Document* doc, int timeoutMs = waitMs(180000));
-  QDir artifacts_;
-  int shotNumber_ = 0;
+  static bool waitReady(Document* doc) { return inlay::test::waitReady(doc, waitMs(180000)); }
+  std::unique_ptr<StepLog> log_;  // the screenshots and figures of both test functions
 };
 
 void StudioWorkflowTest::initTestCase() {
@@ -80,23 +81,7 @@ void StudioWorkflowTest::initTestCase() {
   qunsetenv("INLAY_LANG");
   QSettings().remove(QStringLiteral("language"));
   removeTranslators();
-  // The build tree (the test runs from tests/ of the build folder).
-  artifacts_ = QDir(QCoreApplication::applicationDirPath());
-  artifacts_.mkpath(QStringLiteral("studio_workflow_artifacts"));
-  artifacts_.cd(QStringLiteral("studio_workflow_artifacts"));
-}
-
-void StudioWorkflowTest::shot(QWidget* w, const QString& name) {
-  const QString path =
-      artifacts_.filePath(QStringLiteral("%1_%2.png").arg(++shotNumber_, 2, 10, QLatin1Char('0')).arg(name));
-  QVERIFY2(w->grab().save(path), qPrintable(path));
-}
-
-bool StudioWorkflowTest::waitReady(Document* doc, int timeoutMs) {
-  QElapsedTimer t;
-  t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < timeoutMs) QTest::qWait(20);
-  return doc->state() == Document::State::Ready;
+  log_ = std::make_unique<StepLog>(QStringLiteral("studio_workflow_artifacts"));
 }
 
 void StudioWorkflowTest::newUserWorkflow() {
@@ -104,21 +89,13 @@ void StudioWorkflowTest::newUserWorkflow() {
   if (photo.isEmpty() || !QFile::exists(photo)) QSKIP("resources/example/photo.png absent");
 
   MainWindow window;
-  window.setInteractive(false);
-  window.resize(1280, 800);
-  window.show();
-  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(inlay::test::showForWorkflow(window));
   Document* doc = window.document();
   Viewport* view = window.viewport();
   RenderController* renderer = window.renderer();
   QUndoStack* undo = doc->undoStack();
-  QElapsedTimer clock;
-  clock.start();
-  QStringList steps;  // step, seconds since the start
-  auto step = [&](const QString& name) {
-    steps << QStringLiteral("%1,%2").arg(name).arg(clock.elapsed() / 1000.0, 0, 'f', 2);
-    shot(&window, name);
-  };
+  log_->restart();
+  auto step = [&](const QString& name) { QVERIFY(log_->step(&window, name)); };
 
   // --- 1. Open the photo: the automatic estimate is shown first ---
   QVERIFY(window.openPath(photo));
@@ -274,7 +251,7 @@ void StudioWorkflowTest::newUserWorkflow() {
     QVERIFY2(!img.isNull(), qPrintable(QStringLiteral("layer %1 is empty").arg(l)));
     QCOMPARE(img.width(), doc->prepared()->photo.linearRgb.width);
   }
-  shot(&window, QStringLiteral("layer_difference"));
+  QVERIFY(log_->shot(&window, QStringLiteral("layer_difference")));
   window.layersDock()->list()->setCurrentRow(int(Layer::Composite));
 
   // --- 9. Undo back to the start, then redo to the end ---
@@ -310,21 +287,19 @@ void StudioWorkflowTest::newUserWorkflow() {
   step(QStringLiteral("reopened"));
 
   // --- Figures ---
-  QFile csv(artifacts_.filePath(QStringLiteral("figures.csv")));
-  QVERIFY(csv.open(QIODevice::WriteOnly | QIODevice::Text));
-  QTextStream out(&csv);
-  out << "figure,value\n";
-  out << "viewport_paint_ms_median," << median(paintMs) << "\n";
-  out << "viewport_paint_ms_max," << *std::max_element(paintMs.begin(), paintMs.end()) << "\n";
-  out << "first_frame_after_edit_ms_median," << median(firstFrameMs) << "\n";
-  out << "first_frame_after_edit_ms_max," << *std::max_element(firstFrameMs.begin(), firstFrameMs.end()) << "\n";
-  for (const QString& s : steps) out << "step_seconds_" << s << "\n";
+  QVERIFY(log_->writeFigures(
+      QStringLiteral("figures.csv"),
+      {QStringLiteral("viewport_paint_ms_median,%1").arg(median(paintMs)),
+       QStringLiteral("viewport_paint_ms_max,%1").arg(*std::max_element(paintMs.begin(), paintMs.end())),
+       QStringLiteral("first_frame_after_edit_ms_median,%1").arg(median(firstFrameMs)),
+       QStringLiteral("first_frame_after_edit_ms_max,%1")
+           .arg(*std::max_element(firstFrameMs.begin(), firstFrameMs.end()))}));
   qInfo("viewport paint while rendering: median %.2f ms, max %.2f ms (%zu paints)", median(paintMs),
         *std::max_element(paintMs.begin(), paintMs.end()), paintMs.size());
   qInfo("first updated frame after an object move: median %.1f ms, max %.1f ms (%zu moves)",
         median(firstFrameMs), *std::max_element(firstFrameMs.begin(), firstFrameMs.end()),
         firstFrameMs.size());
-  qInfo("steps (name, seconds since start): %s", qPrintable(steps.join(QStringLiteral("; "))));
+  qInfo("steps (name, seconds since start): %s", qPrintable(log_->steps().join(QStringLiteral("; "))));
 }
 
 void StudioWorkflowTest::frenchFromTheLanguageMenu() {
@@ -350,7 +325,7 @@ void StudioWorkflowTest::frenchFromTheLanguageMenu() {
     // Qt's own strings come from qtbase_fr (when the system has it).
     if (QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath) + QStringLiteral("/qtbase_fr.qm")))
       QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), QStringLiteral("Annuler"));
-    shot(&window, QStringLiteral("french"));
+    QVERIFY(log_->shot(&window, QStringLiteral("french")));
   }
   // Back to the system's language (English here).
   QSettings().remove(QStringLiteral("language"));
