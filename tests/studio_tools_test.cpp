@@ -28,13 +28,6 @@ using namespace inlay::studio;
 
 namespace {
 
-QString exampleScene() {
-  const QString src = qEnvironmentVariable("INLAY_SOURCE_DIR");
-  if (!src.isEmpty() && QFile::exists(src + QStringLiteral("/resources/example/scene.json")))
-    return src + QStringLiteral("/resources/example/scene.json");
-  return QString::fromStdString(exampleScenePath());
-}
-
 void waitPrepared(Document* doc) {
   QElapsedTimer t;
   t.start();
@@ -81,16 +74,12 @@ void StudioToolsTest::initTestCase() {
 }
 
 void StudioToolsTest::init() {
-  const QString scene = exampleScene();
+  const QString scene = inlay::test::exampleScene();
   if (scene.isEmpty() || !QFile::exists(scene)) QSKIP("resources/example/scene.json absent");
-  window_ = std::make_unique<MainWindow>();
-  window_->setInteractive(false);
-  window_->resize(1100, 750);
-  window_->show();
-  QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  window_ = inlay::test::openStudio(scene);
+  QVERIFY(window_);
   doc_ = window_->document();
   view_ = window_->viewport();
-  QVERIFY(window_->openPath(scene));
   waitPrepared(doc_);
   QVERIFY2(doc_->isReady(), qPrintable(doc_->prepareError()));
 }

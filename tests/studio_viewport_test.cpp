@@ -59,13 +59,6 @@ int differingPixels(const QImage& a, const QImage& b, int tolerance = 8) {
   return n;
 }
 
-// A drag with the left button along a straight line, in `steps` moves.
-void drag(QWidget* w, QPoint from, QPoint to, int steps = 10) {
-  QTest::mousePress(w, Qt::LeftButton, Qt::NoModifier, from);
-  for (int k = 1; k <= steps; ++k) QTest::mouseMove(w, from + (to - from) * k / steps);
-  QTest::mouseRelease(w, Qt::LeftButton, Qt::NoModifier, to);
-}
-
 }  // namespace
 
 class StudioViewportTest : public QObject {
@@ -115,7 +108,7 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   const QPoint to = view->widgetFromImage(target).toPoint();
   QCOMPARE(view->objectAt(from), 0);
   QCOMPARE(doc->undoStack()->count(), 0);
-  drag(view, from, to);
+  inlay::test::dragLeft(view, from, to);
 
   const Vec2 moved = doc->scene().objects[0].basePx;
   QVERIFY2((moved - base0).norm() > 50, "the drag did not move the object");
@@ -159,7 +152,8 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
 
   // --- A pixel on no supporting surface (the ceiling) keeps the last valid position ---
   const Vec2 ceiling(256.0, 8.0);
-  drag(view, view->widgetFromImage(settled).toPoint(), view->widgetFromImage(ceiling).toPoint(), 1);
+  inlay::test::dragLeft(view, view->widgetFromImage(settled).toPoint(),
+                        view->widgetFromImage(ceiling).toPoint(), 1);
   QVERIFY(doc->scene().objects[0].basePx == settled);
   QCOMPARE(doc->undoStack()->count(), 1);
   QVERIFY2(!window.statusBar()->currentMessage().isEmpty(), "no reason shown");
