@@ -34,11 +34,8 @@ def run(cmd):
 
 def main():
     a = benchlib.args(__doc__)
-    if not a:
-        print(__doc__)
-        return 2
     cli = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     budgets = [int(x) for x in opt("--budgets", "1,10,30,100,200,400").split(",")]
     shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))

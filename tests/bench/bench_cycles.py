@@ -55,11 +55,8 @@ def tonemap(x):
 
 def main():
     a = benchlib.args(__doc__)
-    if not a:
-        print(__doc__)
-        return 2
     build = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     scenes = opt("--scenes", "d1,d2,d3,d5").split(",")
     w, h = [int(v) for v in opt("--size", "160x120").split("x")]

@@ -25,11 +25,8 @@ import benchlib  # noqa: E402
 
 def main():
     a = benchlib.args(__doc__)
-    if not a:
-        print(__doc__)
-        return 2
     build = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     repeat = opt("--repeat", "50")
     seconds = opt("--seconds", "40")

@@ -53,11 +53,8 @@ def time_to(points, target):
 
 def main():
     a = benchlib.args(__doc__)
-    if not a:
-        print(__doc__)
-        return 2
     build = os.path.abspath(a[0])
-    opt = lambda k, d: a[a.index(k) + 1] if k in a else d
+    opt = lambda k, d: benchlib.option(a, k, d)
     room = opt("--room", "d1")
     out = os.path.join(os.path.abspath(opt("--out", os.path.join(HERE, "out"))), "render_" + room)
     w, h = opt("--size", "96x72").split("x")
