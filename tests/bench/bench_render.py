@@ -90,13 +90,11 @@ def report_throughput(out):
             r["threads"], r["max_depth"], m("camera_per_s_per_thread"), m("bounce_per_s_per_thread"),
             m("shadow_per_s_per_thread"), m("rays_per_s_per_thread"), r["camera_rays"], r["bounce_rays"],
             r["shadow_rays"], float(r["timing_overhead"])))
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+    with benchlib.figure(os.path.join(out, "throughput.png"), figsize=(5, 3.5)) as ax:
+        if ax is None:
+            return
         full = [r for r in rows if r["max_depth"] != "0"]
         kinds = ["camera", "bounce", "shadow"]
-        fig, ax = plt.subplots(figsize=(5, 3.5))
         for k, r in enumerate(full):
             ax.bar([i + 0.38 * k for i in range(3)], [float(r[c + "_per_s_per_thread"]) / 1e6 for c in kinds], 0.36,
                    label="%s thread%s" % (r["threads"], "s" if r["threads"] != "1" else ""))
@@ -104,10 +102,6 @@ def report_throughput(out):
         ax.set_xticklabels(kinds)
         ax.set_ylabel("M rays / s / thread")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, "throughput.png"), dpi=110)
-    except ImportError:
-        pass
 
 
 def report_session(out):
@@ -121,21 +115,15 @@ def report_session(out):
         ratio = sorted(float(r["ratio_to_baseline"]) for r in rs)
         print("| %s | %d | %.1f | %.1f / %.1f | %s | %.1f | %.3f |" % (rs[0]["frame"], d, ms[len(ms) // 2], ms[0], ms[-1],
               rs[0]["first_frame_divider"], float(rs[0]["baseline_1spp_ms"]), ratio[len(ratio) // 2]))
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(5, 3.5))
+    with benchlib.figure(os.path.join(out, "session.png"), figsize=(5, 3.5)) as ax:
+        if ax is None:
+            return
         for d, rs in sorted(runs.items()):
             ax.plot([int(r["edit"]) for r in rs], [float(r["first_frame_ms"]) for r in rs], "o-", label="start divider %d" % d)
         ax.axhline(50, color="gray", lw=0.7)
         ax.set_xlabel("move")
         ax.set_ylabel("ms to the first frame")
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, "session.png"), dpi=110)
-    except ImportError:
-        pass
 
 
 def report_bvh(out):
@@ -174,11 +162,10 @@ def report_convergence(out, room):
     for r in rows:
         print("| %s | %d | %s | %s | %.1fx | %.2f |" % (r["material"], r["threads"], r["correlated_s_to_0.01"],
                                                      r["independent_s_to_0.01"], r["speedup"], r["equal_time_error_ratio"]))
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, len(materials), figsize=(4 * len(materials), 3.5), squeeze=False)
+    with benchlib.figure(os.path.join(out, "convergence.png"), 1, len(materials), figsize=(4 * len(materials), 3.5),
+                         squeeze=False) as axes:
+        if axes is None:
+            return
         for ax, m in zip(axes[0], materials):
             for (mm, th, mode), pts in sorted(runs.items()):
                 if mm != m:
@@ -190,10 +177,6 @@ def report_convergence(out, room):
             ax.set_xlabel("render seconds")
         axes[0][0].set_ylabel("composite RMSE, objects' region")
         axes[0][0].legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, "convergence.png"), dpi=110)
-    except ImportError:
-        pass
 
 
 if __name__ == "__main__":

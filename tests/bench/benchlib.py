@@ -1,6 +1,6 @@
 """What the benchmark scripts share: their options, the ../shared rooms and the harness's
 baselines, and CSV output. Imported by the scripts beside it (run them with /usr/bin/python3)."""
-import csv, json, os, subprocess, sys
+import contextlib, csv, json, os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -16,6 +16,25 @@ def args(doc, positional=1):
         sys.stderr.write(doc.strip() + "\n")
         sys.exit(2)
     return a
+
+
+@contextlib.contextmanager
+def figure(path, *grid, **kw):
+    """The axes of a figure (plt.subplots(*grid, **kw)) written to `path` when the block ends;
+    None, and no file, when matplotlib is missing."""
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no", os.path.basename(path))
+        yield None
+        return
+    fig, ax = plt.subplots(*grid, **kw)
+    yield ax
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def option(argv, key, default):
