@@ -14,7 +14,7 @@ OUT/cycles_<scene>.png (ours | Cycles | difference) and OUT/cycles_rel_diff.png;
 usage: bench_cycles.py BUILD_DIR [--out DIR] [--scenes d1,d2,d3,d5] [--size 160x120] [--spp 256]
                        [--threads 2] [--blender blender]
 """
-import csv, json, os, subprocess, sys, time
+import json, os, subprocess, sys, time
 
 import cv2
 import numpy as np
@@ -100,29 +100,19 @@ def main():
         diff = np.abs(ours - cyc)
         strip = np.hstack([tonemap(ours), tonemap(cyc), tonemap(4 * diff)])
         cv2.imwrite(os.path.join(out, "cycles_%s.png" % key), strip[..., ::-1])
-    with open(os.path.join(out, "cycles_regions.csv"), "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        wr.writeheader()
-        wr.writerows(rows)
+    benchlib.write_csv(os.path.join(out, "cycles_regions.csv"), rows)
     print("| scene | region | pixels | ours | Cycles | ours/Cycles - 1 |")
     print("|---|---|---|---|---|---|")
     for r in rows:
         print("| %s | %s | %d | %.4f | %.4f | %+.2f%% |" % (r["scene"], r["region"], r["pixels"], r["ours"], r["cycles"],
                                                         100 * r["rel_diff"]))
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(10, 4))
-        labels = ["%s %s" % (r["scene"], r["region"]) for r in rows]
-        ax.bar(range(len(rows)), [100 * r["rel_diff"] for r in rows])
-        ax.axhline(2, color="r", lw=0.8), ax.axhline(-2, color="r", lw=0.8)
-        ax.set_xticks(range(len(rows)), labels, rotation=90, fontsize=7)
-        ax.set_ylabel("mean radiance, ours / Cycles - 1 (%)")
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, "cycles_rel_diff.png"), dpi=120)
-    except ImportError:
-        pass
+    with benchlib.figure(os.path.join(out, "cycles_rel_diff.png"), figsize=(10, 4)) as ax:
+        if ax is not None:
+            labels = ["%s %s" % (r["scene"], r["region"]) for r in rows]
+            ax.bar(range(len(rows)), [100 * r["rel_diff"] for r in rows])
+            ax.axhline(2, color="r", lw=0.8), ax.axhline(-2, color="r", lw=0.8)
+            ax.set_xticks(range(len(rows)), labels, rotation=90, fontsize=7)
+            ax.set_ylabel("mean radiance, ours / Cycles - 1 (%)")
     return 0
 
 

@@ -180,14 +180,13 @@ def main():
 def plot(rows, path):
     """Error against run time: table tops (height error vs extrusion ms), mattes (alpha MAE vs
     matting ms), renders (object RMSE vs the render's seconds)."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib missing: no plot")
-        return
-    fig, ax = plt.subplots(1, 3, figsize=(13, 4))
+    with benchlib.figure(path, 1, 3, figsize=(13, 4)) as ax:
+        if ax is not None:
+            scatter_panels(ax, rows)
+            print("wrote", path)
+
+
+def scatter_panels(ax, rows):
     panels = [(ax[0], lambda r: r["what"] == "surface" and "height_rel_err" in r, "ms", "height_rel_err",
                "extrusion (ms, best of N)", "table height, relative error"),
               (ax[1], lambda r: r["what"] == "occluder" and "alpha_mae" in r, "matte_ms", "alpha_mae",
@@ -202,9 +201,6 @@ def plot(rows, path):
         a.set_xlabel(xl)
         a.set_ylabel(yl)
         a.grid(alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    print("wrote", path)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@ usage: bench_scenes.py INLAY_CLI [--out DIR] [--budgets 2,4,8,16] [--scenes d1,d
 --mode auto: the harness's automatic scene (no camera, layout or table keys: inlay-cli
 estimates them); the CSV and PNG names then end in _auto.
 """
-import csv, json, os, statistics, subprocess, sys, time
+import json, os, statistics, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -66,30 +66,25 @@ def main():
     if not rows:
         return 1
     csvp = os.path.join(out, "scenes_error_vs_time%s.csv" % tag)
-    with open(csvp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-        for name in names:
-            rr = [r for r in rows if r["scene"] == name]
-            if not rr:
-                continue
-            ax[0].plot([r["wall_s"] for r in rr], [r["object_rmse"] for r in rr], "o-", label=name)
-            ax[1].plot([r["wall_s"] for r in rr], [r["around_rmse"] for r in rr], "o-", label=name)
-        ax[0].set(xscale="log", xlabel="wall seconds (prepare + render)", ylabel="object RMSE vs truth (sRGB)", title="object")
-        ax[1].set(xscale="log", xlabel="wall seconds", ylabel="surroundings RMSE vs truth", title="shadows and bounce")
-        ax[0].legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, "scenes_error_vs_time%s.png" % tag), dpi=110)
-    except ImportError:
-        print("matplotlib missing: no plot")
+    benchlib.write_csv(csvp, rows)
+    with benchlib.figure(os.path.join(out, "scenes_error_vs_time%s.png" % tag), 1, 2, figsize=(11, 4)) as ax:
+        if ax is not None:
+            plot(ax, rows, names)
     print("wrote", csvp)
     return 0
+
+
+def plot(ax, rows, names):
+    """Object and surroundings RMSE against wall time, a line per room."""
+    for name in names:
+        rr = [r for r in rows if r["scene"] == name]
+        if not rr:
+            continue
+        ax[0].plot([r["wall_s"] for r in rr], [r["object_rmse"] for r in rr], "o-", label=name)
+        ax[1].plot([r["wall_s"] for r in rr], [r["around_rmse"] for r in rr], "o-", label=name)
+    ax[0].set(xscale="log", xlabel="wall seconds (prepare + render)", ylabel="object RMSE vs truth (sRGB)", title="object")
+    ax[1].set(xscale="log", xlabel="wall seconds", ylabel="surroundings RMSE vs truth", title="shadows and bounce")
+    ax[0].legend(fontsize=7)
 
 
 if __name__ == "__main__":
