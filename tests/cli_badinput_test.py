@@ -9,16 +9,7 @@ import json, os, shutil, signal, subprocess, sys, tempfile, threading, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "resources", "example")
-passed, failed = 0, []
-
-
-def check(name, cond, detail=""):
-    global passed
-    if cond:
-        passed += 1
-    else:
-        failed.append("%s %s" % (name, detail))
-        print("FAIL", name, detail)
+from checks import check, summary  # noqa: E402
 
 
 def run(cli, *args, timeout=300):
@@ -146,8 +137,7 @@ def main():
     print("ctrl-c stopped after %.2f s" % dt)
 
     shutil.rmtree(tmp, ignore_errors=True)
-    print("%d passed, %d failed" % (passed, len(failed)))
-    return 1 if failed else 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -10,13 +10,7 @@ import json, math, os, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "resources", "example")
-failed = []
-
-
-def check(name, cond, detail=""):
-    if not cond:
-        failed.append(name)
-        print("FAIL", name, detail)
+from checks import check, summary  # noqa: E402
 
 
 def finite(x):
@@ -68,8 +62,7 @@ def main():
     check("output untouched", open(keep).read() == "{}")
     p = subprocess.run([cli, "estimate", photo, "--quiet"], capture_output=True, text=True, timeout=60)
     check("missing -o exit 2", p.returncode == 2, p.stderr)
-    print("failed:" if failed else "ok", ", ".join(failed))
-    return 1 if failed else 0
+    return summary()
 
 
 if __name__ == "__main__":

@@ -20,16 +20,7 @@ EXAMPLE = os.path.join(HERE, "..", "resources", "example")
 CASE_TIMEOUT = 120  # seconds; a hang fails the case instead of the whole suite
 USERS_FILE = b"the user's own file"
 
-passed, failed = 0, []
-
-
-def check(name, cond, detail=""):
-    global passed
-    if cond:
-        passed += 1
-    else:
-        failed.append("%s %s" % (name, detail))
-        print("FAIL", name, detail)
+from checks import check, summary  # noqa: E402
 
 
 # ---------------------------------------------------------------- files the cases are made of
@@ -347,8 +338,7 @@ def main():
             run_case(cli, case, ctx, reference)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
-    print("%d passed, %d failed" % (passed, len(failed)))
-    return 1 if failed else 0
+    return summary()
 
 
 if __name__ == "__main__":
