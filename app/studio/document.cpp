@@ -33,15 +33,7 @@ std::string pathForFolder(const std::string& resolved, const std::string& asWrit
   return rel.toStdString();
 }
 
-void putMarks(SceneDoc& doc, const SceneMarks& m) {
-  doc.camera = m.camera;
-  doc.layout = m.layout;
-  doc.lights = m.lights;
-  doc.shafts = m.shafts;
-  doc.surfaces = m.surfaces;
-  doc.occluders = m.occluders;
-  doc.room = m.room;
-}
+void putMarks(SceneDoc& doc, const SceneMarks& m) { static_cast<SceneMarks&>(doc) = m; }
 
 bool finitePoints(const std::vector<Vec2>& points) {
   return std::all_of(points.begin(), points.end(),
@@ -565,8 +557,7 @@ namespace inlay::studio {
 // --- The scene's marks ---
 
 SceneMarks Document::marks() const {
-  return {doc_.camera, doc_.layout, doc_.lights,   doc_.shafts,
-          doc_.surfaces, doc_.occluders, doc_.room};
+  return doc_;  // its SceneMarks part
 }
 
 std::optional<std::array<Vec2, 4>> Document::shownBackWallPx() const {

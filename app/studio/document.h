@@ -50,17 +50,6 @@ struct ChangeEvent {
   bool has(Kind k) const { return (what & k) != 0; }
 };
 
-// The marks a user draws on the photo: everything of the SceneDoc but the photo, the objects
-// and the render keys. A change of any of them needs a new prepareScene().
-struct SceneMarks {
-  CameraKeys camera;
-  LayoutKeys layout;
-  std::vector<LightKeys> lights;
-  std::vector<ShaftKeys> shafts;
-  std::vector<SurfaceKeys> surfaces;
-  std::vector<OccluderKeys> occluders;
-  RoomKeys room;  // room.materials: real surfaces marked glossy or mirror
-};
 bool operator==(const SceneMarks& a, const SceneMarks& b);
 
 // Which list of marks (for removeMark).

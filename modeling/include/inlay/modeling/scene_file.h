@@ -122,17 +122,22 @@ struct RenderKeys {
   unsigned seed = 1;
 };
 
-struct SceneDoc {
-  std::string photo;                 // as written in the file
-  std::string photoResolved;         // absolute path, filled by the parser
+// What the user marks on the photo: every key but the photo, the objects and the render
+// settings. A change of any of them needs a new scene preparation (the studio's undo unit).
+struct SceneMarks {
   CameraKeys camera;
   LayoutKeys layout;
   std::vector<LightKeys> lights;
   std::vector<ShaftKeys> shafts;
   std::vector<SurfaceKeys> surfaces;
   std::vector<OccluderKeys> occluders;
+  RoomKeys room;  // room.materials: real surfaces marked glossy or mirror
+};
+
+struct SceneDoc : SceneMarks {
+  std::string photo;                 // as written in the file
+  std::string photoResolved;         // absolute path, filled by the parser
   std::vector<ObjectKeys> objects;
-  RoomKeys room;
   RenderKeys render;
 };
 
