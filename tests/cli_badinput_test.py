@@ -43,6 +43,23 @@ def main():
     r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
     check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
 
+    # The README's first command: `demo` renders the bundled example wherever it is run from.
+    demo = os.path.join(tmp, "example.png")
+    r = subprocess.run([cli, "demo", "-o", demo, "--spp", "4", "--quiet"], capture_output=True, text=True,
+                       timeout=300, cwd=tmp)
+    check("demo renders", r.returncode == 0 and os.path.isfile(demo), r.stderr)
+    if r.returncode == 0:
+        import cv2
+        import numpy as np
+        got = cv2.imread(demo, cv2.IMREAD_COLOR).astype(float)
+        ref = cv2.imread(photo, cv2.IMREAD_COLOR).astype(float)
+        check("demo has the photo's size", got.shape == ref.shape, "%s against %s" % (got.shape, ref.shape))
+        if got.shape == ref.shape:
+            changed = np.abs(got - ref).max(axis=2) > 24
+            check("demo inserts the object", 200 < changed.sum() < 0.5 * changed.size, "%d pixels changed" % changed.sum())
+    r = run(cli, "demo", "scene.json", "-o", demo)
+    check("demo takes no scene", r.returncode == 2 and "demo" in r.stderr, r.stderr)
+
     bad = os.path.join(tmp, "broken.json")
     open(bad, "w").write('{"format": "inlay-scene", "version": 1, "photo": ')
     r = run(cli, "render", bad, "-o", os.path.join(tmp, "o.png"))
