@@ -517,6 +517,79 @@ TEST(EstimateCamera, PrincipalPointKnownOrRefined) {
   EXPECT_EQ(d->camera.principalPx, Vec2(320, 240));
 }
 
+// The room's lines as exact segments of `cam` (the estimator's input without a line detector).
+std::vector<LineSegment> projectedRoom(const Camera& cam) {
+  std::vector<LineSegment> segs;
+  for (const Seg3& s : roomLines()) {
+    Vec2 a, b;
+    if (projectSegment(cam, s, a, b) && (b - a).norm() > 5) segs.push_back({a, b});
+  }
+  return segs;
+}
+
+TEST(EstimateCamera, ThreeFiniteVanishingPointsLocateAnOffCentrePrincipalPoint) {
+  // Turned and tilted: all three vanishing points finite and spread around the photo, so their
+  // orthocentre (the principal point) is determined; the prior (64 px) is far looser than that
+  // and the posterior a quarter of it at most.
+  Camera truth = makeCamera(640, 480, 450, 35, -22, 0);
+  truth.principalPx = Vec2(347, 221);
+  EstimateOptions o;
+  o.principalSigma = 0.2;
+  const auto e = estimateCameraFromSegments(640, 480, projectedRoom(truth), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  for (int k = 0; k < 3; ++k) EXPECT_FALSE(e->vanishingPoints[k].atInfinity);
+  EXPECT_LT((e->camera.principalPx - truth.principalPx).norm(), 2.0)
+      << e->camera.principalPx.transpose();
+  EXPECT_FALSE(e->principalFromPrior);
+  EXPECT_GT(e->principalSigmaPx.minCoeff(), 0.0);
+  EXPECT_LT(e->principalSigmaPx.maxCoeff(), 0.25 * 0.2 * 320) << e->principalSigmaPx.transpose();
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.005);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 0.2);
+  // Held (the default prior strength 0 or a given point): sigma 0, an assumption.
+  EstimateOptions held;
+  held.principalSigma = 0;
+  const auto h = estimateCameraFromSegments(640, 480, projectedRoom(truth), held);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(h->camera.principalPx, Vec2(320, 240));
+  EXPECT_EQ(h->principalSigmaPx, Vec2(0, 0));
+  EXPECT_TRUE(h->principalFromPrior);
+}
+
+TEST(EstimateCamera, VanishingPointAtInfinityLeavesThePrincipalPointAtItsPrior) {
+  // Level camera: the vertical vanishing point is at infinity. The principal point then lies on
+  // the horizon (the line through the two finite points, which the lines do locate), but where
+  // along it trades exactly against the focal length ((x_vp - p)(z_vp - p) = -f^2 along the
+  // horizon): the orthocentre is undefined. Along the horizon it must stay at the prior's centre
+  // (not wander to fit noise), say so, and keep the prior's uncertainty.
+  Camera truth = makeCamera(640, 480, 520, 30, 0, 0);
+  truth.principalPx = Vec2(347, 221);
+  EstimateOptions o;
+  o.principalSigma = 0.05;  // 16 px
+  const double priorPx = 0.05 * 320;
+  const auto e = estimateCameraFromSegments(640, 480, projectedRoom(truth), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_TRUE(e->vanishingPoints[1].atInfinity);
+  EXPECT_TRUE(e->camera.principalPx.allFinite());
+  EXPECT_TRUE(e->principalFromPrior);
+  EXPECT_NEAR(e->camera.principalPx.x(), 320.0, 0.25 * priorPx) << e->camera.principalPx.transpose();
+  EXPECT_GT(e->principalSigmaPx.x(), 0.9 * priorPx) << e->principalSigmaPx.transpose();
+  EXPECT_LE(e->principalSigmaPx.x(), priorPx * 1.001);
+  // Across the horizon the lines do place it.
+  EXPECT_NEAR(e->camera.principalPx.y(), truth.principalPx.y(), 2.0);
+  EXPECT_LT(e->principalSigmaPx.y(), 0.25 * priorPx);
+  // Honest: the truth lies within three of the reported sigmas on each axis.
+  for (int a = 0; a < 2; ++a)
+    EXPECT_LT(std::abs(e->camera.principalPx[a] - truth.principalPx[a]), 3 * e->principalSigmaPx[a])
+        << a;
+  for (int k : {0, 2}) {
+    const Vec3 th = truth.vanishingPointOf(Vec3::Unit(k));
+    const Vec2 tp(th.x() / th.z(), th.y() / th.z());
+    EXPECT_LT((e->vanishingPointsPx[k] - tp).norm(), 0.01 * (tp - truth.principalPx).norm()) << k;
+  }
+}
+
 TEST(EstimateCamera, BadInputAndCancellation) {
   const auto empty = estimateCamera(ImageF());
   ASSERT_FALSE(empty.ok());
