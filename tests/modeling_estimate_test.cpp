@@ -72,8 +72,8 @@ struct Seg3 { Vec3 a, b; };
 
 // A 5 m x 2.7 m room, back wall 5 m ahead (camera at x = z = 0), with floor tiles, a door on
 // the back wall and a window on the left wall: lines in all three directions.
-std::vector<Seg3> roomLines(bool xAndYOnly = false) {
-  const double xl = -2.5, xr = 2.5, zb = -5, zf = 0.5, hc = 2.7;
+std::vector<Seg3> roomLines(bool xAndYOnly = false, double zb = -5, double hc = 2.7) {
+  const double xl = -2.5, xr = 2.5, zf = 0.5;
   std::vector<Seg3> s;
   // Back wall: edges and a door; horizontal x lines (a dado rail).
   s.push_back({{xl, 0, zb}, {xr, 0, zb}});
@@ -90,13 +90,14 @@ std::vector<Seg3> roomLines(bool xAndYOnly = false) {
   for (double x : {xl, xr})
     for (double y : {0.0, hc}) s.push_back({{x, y, zb}, {x, y, zf}});
   // Floor tiles.
-  for (double z = -4; z <= -1; z += 1) s.push_back({{xl, 0, z}, {xr, 0, z}});
+  for (double z = zb + 1; z <= -1; z += 1) s.push_back({{xl, 0, z}, {xr, 0, z}});
   for (double x = -1.5; x <= 1.5; x += 1) s.push_back({{x, 0, zb}, {x, 0, zf}});
   // Window on the left wall.
-  s.push_back({{xl, 1.0, -3.5}, {xl, 1.0, -1.5}});
-  s.push_back({{xl, 2.1, -3.5}, {xl, 2.1, -1.5}});
-  s.push_back({{xl, 1.0, -3.5}, {xl, 2.1, -3.5}});
-  s.push_back({{xl, 1.0, -1.5}, {xl, 2.1, -1.5}});
+  const double w0 = zb + 1.5, w1 = zb + 3.5;
+  s.push_back({{xl, 1.0, w0}, {xl, 1.0, w1}});
+  s.push_back({{xl, 2.1, w0}, {xl, 2.1, w1}});
+  s.push_back({{xl, 1.0, w0}, {xl, 2.1, w0}});
+  s.push_back({{xl, 1.0, w1}, {xl, 2.1, w1}});
   return s;
 }
 
@@ -169,12 +170,12 @@ ImageF drawRoom(const Camera& cam, const std::vector<Seg3>& lines, double widthP
   return im;
 }
 
-std::array<Vec2, 4> trueBackWall(const Camera& cam) {
+std::array<Vec2, 4> trueBackWall(const Camera& cam, double zb = -5, double hc = 2.7) {
   RoomBox box;
   box.xLeftM = -2.5;
   box.xRightM = 2.5;
-  box.zBackM = -5;
-  box.ceilingM = 2.7;
+  box.zBackM = zb;
+  box.ceilingM = hc;
   return backWallCornersPx(cam, box);
 }
 
@@ -588,6 +589,27 @@ TEST(EstimateCamera, VanishingPointAtInfinityLeavesThePrincipalPointAtItsPrior) 
     const Vec2 tp(th.x() / th.z(), th.y() / th.z());
     EXPECT_LT((e->vanishingPointsPx[k] - tp).norm(), 0.01 * (tp - truth.principalPx).norm()) << k;
   }
+}
+
+TEST(EstimateCamera, CeilingOutOfViewFollowsTheVisibleFloorCrease) {
+  // A 3.2 m deep room seen from 1.5 m, tilted down so the back wall's top edge is above the
+  // photo. The floor crease fixes the wall's distance; the ceiling then comes from the height
+  // prior (2.7 m over a 1.6 m eye, scaled to the camera's height), not from a 5 m-deep wall.
+  const double zb = -3.2, hc = 2.7 * 1.5 / 1.6;
+  const Camera truth = makeCamera(640, 480, 350, 3, -24, 0);
+  const auto wall = trueBackWall(truth, zb, hc);
+  ASSERT_LT(std::max(wall[0].y(), wall[1].y()), -20.0);  // the top edge is out of view
+  for (int i = 2; i < 4; ++i)                             // the floor crease in view
+    ASSERT_TRUE(wall[i].x() > 0 && wall[i].x() < 640 && wall[i].y() > 0 && wall[i].y() < 480);
+  EstimateOptions o;
+  o.cameraHeightM = truth.heightM;
+  const auto e = estimateCamera(drawRoom(truth, roomLines(false, zb, hc)), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  for (int i = 2; i < 4; ++i) EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 3.0) << i;
+  for (int i = 0; i < 2; ++i)
+    EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 8.0) << i << ": " << e->backWallPx[i].transpose()
+                                                        << " vs " << wall[i].transpose();
 }
 
 TEST(EstimateCamera, BadInputAndCancellation) {
