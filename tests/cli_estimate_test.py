@@ -28,7 +28,7 @@ def main():
     check("exit 0", p.returncode == 0, p.stderr)
     e = json.load(open(out))
     for k in ("camera", "layout", "rotation", "confidence", "focal_interval_px", "warnings", "timings_ms",
-              "vanishing_point_support"):
+              "vanishing_point_support", "principal_sigma_px", "principal_from_prior"):
         check("key " + k, k in e)
     cam = e["camera"]
     check("focal finite", finite(cam["focal_px"]) and cam["focal_px"] > 0)
@@ -36,6 +36,8 @@ def main():
           str(e["focal_interval_px"]))
     check("vanishing points finite", finite(cam["vanishing_points_px"]))
     check("rotation finite", finite(e["rotation"]))
+    check("principal sigma finite, >= 0", finite(e["principal_sigma_px"]) and min(e["principal_sigma_px"]) >= 0,
+          str(e["principal_sigma_px"]))
     sup = e["vanishing_point_support"]
     check("three supports", len(sup) == 3)
     for k, v in enumerate(sup):

@@ -72,8 +72,8 @@ struct Seg3 { Vec3 a, b; };
 
 // A 5 m x 2.7 m room, back wall 5 m ahead (camera at x = z = 0), with floor tiles, a door on
 // the back wall and a window on the left wall: lines in all three directions.
-std::vector<Seg3> roomLines(bool xAndYOnly = false) {
-  const double xl = -2.5, xr = 2.5, zb = -5, zf = 0.5, hc = 2.7;
+std::vector<Seg3> roomLines(bool xAndYOnly = false, double zb = -5, double hc = 2.7) {
+  const double xl = -2.5, xr = 2.5, zf = 0.5;
   std::vector<Seg3> s;
   // Back wall: edges and a door; horizontal x lines (a dado rail).
   s.push_back({{xl, 0, zb}, {xr, 0, zb}});
@@ -90,13 +90,14 @@ std::vector<Seg3> roomLines(bool xAndYOnly = false) {
   for (double x : {xl, xr})
     for (double y : {0.0, hc}) s.push_back({{x, y, zb}, {x, y, zf}});
   // Floor tiles.
-  for (double z = -4; z <= -1; z += 1) s.push_back({{xl, 0, z}, {xr, 0, z}});
+  for (double z = zb + 1; z <= -1; z += 1) s.push_back({{xl, 0, z}, {xr, 0, z}});
   for (double x = -1.5; x <= 1.5; x += 1) s.push_back({{x, 0, zb}, {x, 0, zf}});
   // Window on the left wall.
-  s.push_back({{xl, 1.0, -3.5}, {xl, 1.0, -1.5}});
-  s.push_back({{xl, 2.1, -3.5}, {xl, 2.1, -1.5}});
-  s.push_back({{xl, 1.0, -3.5}, {xl, 2.1, -3.5}});
-  s.push_back({{xl, 1.0, -1.5}, {xl, 2.1, -1.5}});
+  const double w0 = zb + 1.5, w1 = zb + 3.5;
+  s.push_back({{xl, 1.0, w0}, {xl, 1.0, w1}});
+  s.push_back({{xl, 2.1, w0}, {xl, 2.1, w1}});
+  s.push_back({{xl, 1.0, w0}, {xl, 2.1, w0}});
+  s.push_back({{xl, 1.0, w1}, {xl, 2.1, w1}});
   return s;
 }
 
@@ -169,12 +170,12 @@ ImageF drawRoom(const Camera& cam, const std::vector<Seg3>& lines, double widthP
   return im;
 }
 
-std::array<Vec2, 4> trueBackWall(const Camera& cam) {
+std::array<Vec2, 4> trueBackWall(const Camera& cam, double zb = -5, double hc = 2.7) {
   RoomBox box;
   box.xLeftM = -2.5;
   box.xRightM = 2.5;
-  box.zBackM = -5;
-  box.ceilingM = 2.7;
+  box.zBackM = zb;
+  box.ceilingM = hc;
   return backWallCornersPx(cam, box);
 }
 
@@ -515,6 +516,100 @@ TEST(EstimateCamera, PrincipalPointKnownOrRefined) {
   const auto d = estimateCamera(im);
   ASSERT_TRUE(d.ok());
   EXPECT_EQ(d->camera.principalPx, Vec2(320, 240));
+}
+
+// The room's lines as exact segments of `cam` (the estimator's input without a line detector).
+std::vector<LineSegment> projectedRoom(const Camera& cam) {
+  std::vector<LineSegment> segs;
+  for (const Seg3& s : roomLines()) {
+    Vec2 a, b;
+    if (projectSegment(cam, s, a, b) && (b - a).norm() > 5) segs.push_back({a, b});
+  }
+  return segs;
+}
+
+TEST(EstimateCamera, ThreeFiniteVanishingPointsLocateAnOffCentrePrincipalPoint) {
+  // Turned and tilted: all three vanishing points finite and spread around the photo, so their
+  // orthocentre (the principal point) is determined; the prior (64 px) is far looser than that
+  // and the posterior a quarter of it at most.
+  Camera truth = makeCamera(640, 480, 450, 35, -22, 0);
+  truth.principalPx = Vec2(347, 221);
+  EstimateOptions o;
+  o.principalSigma = 0.2;
+  const auto e = estimateCameraFromSegments(640, 480, projectedRoom(truth), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  for (int k = 0; k < 3; ++k) EXPECT_FALSE(e->vanishingPoints[k].atInfinity);
+  EXPECT_LT((e->camera.principalPx - truth.principalPx).norm(), 2.0)
+      << e->camera.principalPx.transpose();
+  EXPECT_FALSE(e->principalFromPrior);
+  EXPECT_GT(e->principalSigmaPx.minCoeff(), 0.0);
+  EXPECT_LT(e->principalSigmaPx.maxCoeff(), 0.25 * 0.2 * 320) << e->principalSigmaPx.transpose();
+  EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.005);
+  EXPECT_LT(rotationErrorDeg(e->camera, truth), 0.2);
+  // Held (the default prior strength 0 or a given point): sigma 0, an assumption.
+  EstimateOptions held;
+  held.principalSigma = 0;
+  const auto h = estimateCameraFromSegments(640, 480, projectedRoom(truth), held);
+  ASSERT_TRUE(h.ok());
+  EXPECT_EQ(h->camera.principalPx, Vec2(320, 240));
+  EXPECT_EQ(h->principalSigmaPx, Vec2(0, 0));
+  EXPECT_TRUE(h->principalFromPrior);
+}
+
+TEST(EstimateCamera, VanishingPointAtInfinityLeavesThePrincipalPointAtItsPrior) {
+  // Level camera: the vertical vanishing point is at infinity. The principal point then lies on
+  // the horizon (the line through the two finite points, which the lines do locate), but where
+  // along it trades exactly against the focal length ((x_vp - p)(z_vp - p) = -f^2 along the
+  // horizon): the orthocentre is undefined. Along the horizon it must stay at the prior's centre
+  // (not wander to fit noise), say so, and keep the prior's uncertainty.
+  Camera truth = makeCamera(640, 480, 520, 30, 0, 0);
+  truth.principalPx = Vec2(347, 221);
+  EstimateOptions o;
+  o.principalSigma = 0.05;  // 16 px
+  const double priorPx = 0.05 * 320;
+  const auto e = estimateCameraFromSegments(640, 480, projectedRoom(truth), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  EXPECT_TRUE(e->vanishingPoints[1].atInfinity);
+  EXPECT_TRUE(e->camera.principalPx.allFinite());
+  EXPECT_TRUE(e->principalFromPrior);
+  EXPECT_NEAR(e->camera.principalPx.x(), 320.0, 0.25 * priorPx) << e->camera.principalPx.transpose();
+  EXPECT_GT(e->principalSigmaPx.x(), 0.9 * priorPx) << e->principalSigmaPx.transpose();
+  EXPECT_LE(e->principalSigmaPx.x(), priorPx * 1.001);
+  // Across the horizon the lines do place it.
+  EXPECT_NEAR(e->camera.principalPx.y(), truth.principalPx.y(), 2.0);
+  EXPECT_LT(e->principalSigmaPx.y(), 0.25 * priorPx);
+  // Honest: the truth lies within three of the reported sigmas on each axis.
+  for (int a = 0; a < 2; ++a)
+    EXPECT_LT(std::abs(e->camera.principalPx[a] - truth.principalPx[a]), 3 * e->principalSigmaPx[a])
+        << a;
+  for (int k : {0, 2}) {
+    const Vec3 th = truth.vanishingPointOf(Vec3::Unit(k));
+    const Vec2 tp(th.x() / th.z(), th.y() / th.z());
+    EXPECT_LT((e->vanishingPointsPx[k] - tp).norm(), 0.01 * (tp - truth.principalPx).norm()) << k;
+  }
+}
+
+TEST(EstimateCamera, CeilingOutOfViewFollowsTheVisibleFloorCrease) {
+  // A 3.2 m deep room seen from 1.5 m, tilted down so the back wall's top edge is above the
+  // photo. The floor crease fixes the wall's distance; the ceiling then comes from the height
+  // prior (2.7 m over a 1.6 m eye, scaled to the camera's height), not from a 5 m-deep wall.
+  const double zb = -3.2, hc = 2.7 * 1.5 / 1.6;
+  const Camera truth = makeCamera(640, 480, 350, 3, -24, 0);
+  const auto wall = trueBackWall(truth, zb, hc);
+  ASSERT_LT(std::max(wall[0].y(), wall[1].y()), -20.0);  // the top edge is out of view
+  for (int i = 2; i < 4; ++i)                             // the floor crease in view
+    ASSERT_TRUE(wall[i].x() > 0 && wall[i].x() < 640 && wall[i].y() > 0 && wall[i].y() < 480);
+  EstimateOptions o;
+  o.cameraHeightM = truth.heightM;
+  const auto e = estimateCamera(drawRoom(truth, roomLines(false, zb, hc)), o);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  expectSane(*e);
+  for (int i = 2; i < 4; ++i) EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 3.0) << i;
+  for (int i = 0; i < 2; ++i)
+    EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 8.0) << i << ": " << e->backWallPx[i].transpose()
+                                                        << " vs " << wall[i].transpose();
 }
 
 TEST(EstimateCamera, BadInputAndCancellation) {

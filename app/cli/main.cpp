@@ -473,6 +473,8 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   j["vanishing_point_support"] = vpInfo;
   j["focal_interval_px"] = json::array({est.focalMinPx, est.focalMaxPx});
   j["focal_from_prior"] = est.focalFromPrior;
+  j["principal_sigma_px"] = pt(est.principalSigmaPx);
+  j["principal_from_prior"] = est.principalFromPrior;
   j["warnings"] = est.warnings;
   j["timings_ms"] = {{"lines", est.timings.linesMs}, {"vanishing", est.timings.vanishingMs},
                      {"refine", est.timings.refineMs}, {"layout", est.timings.layoutMs},

@@ -508,6 +508,22 @@ Prior makePrior(const Core& c, const EstimateOptions& o, double totalWeight) {
   return p;
 }
 
+// The principal point's posterior spread: held (sigma 0) it is an assumption, not a measurement;
+// refined, the data locate it where the posterior variance is under half the prior's, i.e. the
+// lines carry more information than the prior in every direction.
+void setPrincipalUncertainty(CameraEstimate& e, const Uncertainty& u, const RefineSettings& rs,
+                             double scalePx) {
+  e.principalSigmaPx = Vec2::Zero();
+  e.principalFromPrior = true;
+  if (!(rs.principalSigma > 0)) return;
+  const Eigen::Matrix2d cov = u.cov.block<2, 2>(4, 4);
+  if (!cov.allFinite()) return;
+  e.principalSigmaPx = scalePx * Vec2(std::sqrt(std::max(0.0, cov(0, 0))),
+                                      std::sqrt(std::max(0.0, cov(1, 1))));
+  const double worst = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov).eigenvalues().maxCoeff();
+  e.principalFromPrior = !(worst < 0.5 * rs.principalSigma * rs.principalSigma);
+}
+
 // Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
 // families and residuals, confidences, focal interval. zScore (out): per axis the family's
 // meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
@@ -625,6 +641,7 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   e.focalMaxPx = cam.focalPx * std::exp(2 * fs);
   // The photo determines f when its information beats the prior's.
   e.focalFromPrior = !lockedFocal && u.dataInfoLogPhi < 1.0 / (rs.prior.sigma * rs.prior.sigma);
+  setPrincipalUncertainty(e, u, rs, c.frame.s);
   e.segments = c.segments;
 }
 
@@ -700,6 +717,10 @@ void fallbackCamera(CameraEstimate& e, const Core& c, const Prior& prior, const 
   e.focalMinPx = f * std::exp(-2 * prior.sigma);
   e.focalMaxPx = f * std::exp(2 * prior.sigma);
   e.focalFromPrior = true;
+  // At the prior's centre, as uncertain as the prior says (0 when held).
+  const double ppSigma = o.principalPx ? 0.0 : std::max(0.0, o.principalSigma) * c.frame.s;
+  e.principalSigmaPx = Vec2(ppSigma, ppSigma);
+  e.principalFromPrior = true;
   e.warnings.push_back(
       std::string("no Manhattan structure found (too few lines in three orthogonal "
                   "directions): the camera is a fallback: ") +
@@ -1041,6 +1062,9 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
   const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
   std::array<double, 3> z{};
   finish(e, c, w, as, u, rs, o, rs.lockPhi, z);
+  // Held where the previous estimate put it (or the fixed camera's, exact).
+  e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
+  e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
   if (corr.fixedCamera) {
     e.camera = *corr.fixedCamera;
     for (int k = 0; k < 3; ++k) {

@@ -264,11 +264,29 @@ class LayoutSearch {
     constexpr double kEdgeBias = 0.15;   // evidence below this along an edge counts against it
     constexpr double kRegionWeight = 0.2;
     s.total = s.edgeSupported - kEdgeBias * s.edgeVisible + kRegionWeight * s.regionSigned;
-    // Tie-break toward an ordinary room where the photo says nothing (a wall out of view).
+    // Tie-break toward an ordinary room where the photo says nothing (a wall out of view); the
+    // top edge toward the one the bottom edge implies (ceilingFromFloor).
     double prior = 0;
-    for (int i = 0; i < 4; ++i) prior += std::abs(t[i] - default_[i]) / diag_;
+    for (int i = 0; i < 4; ++i) {
+      const double paired = i == 0 ? ceilingFromFloor(t[1]) : std::numeric_limits<double>::quiet_NaN();
+      prior += std::abs(t[i] - (std::isfinite(paired) ? paired : default_[i])) / diag_;
+    }
     s.total -= 0.5 * ws_ * prior;
     return s;
+  }
+
+  // The top edge (line 0's parameter) that a bottom edge at parameter tBottom implies: the floor
+  // crease fixes the back wall's distance (the camera stands heightM above the floor), and the
+  // ceiling is the ordinary room's, 2.7 m over a 1.6 m eye (scaled with heightM, as
+  // defaultParams). So a ceiling out of view sits where the visible floor says, not at a
+  // 5 m-deep wall's. NaN when the bottom edge is not below the horizon.
+  double ceilingFromFloor(double tBottom) const {
+    const Camera& c = cam();
+    const Vec3 d = c.directionThroughPixel(vz_ + tBottom * uY_);
+    if (!(d.y() < -1e-9) || !d.allFinite()) return std::numeric_limits<double>::quiet_NaN();
+    const Vec3 floorPoint = c.centreWorld() + d * (c.heightM / -d.y());
+    const auto top = c.project(floorPoint + Vec3(0, c.heightM * 2.7 / 1.6, 0));
+    return top ? paramOfCorner(0, *top) : std::numeric_limits<double>::quiet_NaN();
   }
 
   // The support of box edge `slot` (family f, visible part a-b in layout pixels): the evidence
@@ -648,7 +666,15 @@ LayoutResult estimateLayout(const LayoutInput& in) {
     for (Cand& c : cands) c.score = search.score(c.t).total;
     std::sort(cands.begin(), cands.end(),
               [](const Cand& x, const Cand& y) { return x.score > y.score; });
-    for (size_t i = 0; i < std::min<size_t>(2, cands.size()); ++i) starts.push_back(cands[i].t);
+    for (size_t i = 0; i < std::min<size_t>(2, cands.size()); ++i) {
+      starts.push_back(cands[i].t);
+      // The same with the top edge the bottom one implies (a ceiling out of view).
+      const double top = search.ceilingFromFloor(cands[i].t[1]);
+      if (!isFixed[0] && std::isfinite(top) && top >= lo[0] && top <= hi[0]) {
+        starts.push_back(cands[i].t);
+        starts.back()[0] = top;
+      }
+    }
     starts.push_back(t);  // the ordinary room
   }
 
