@@ -406,9 +406,10 @@ int commandRender(const std::string& scenePath, const Args& a) {
   if (auto st = saveImage(a.output, composite); !st) return inputError(st.error());
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;
-    const std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
-                                            {"without_objects", &without}, {"mask", &frame->mask},
-                                            {"samples", &frame->samples}, {"noise", &frame->noise}};
+    std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
+                                      {"without_objects", &without}, {"mask", &frame->mask}};
+    if (!frame->samples.empty()) layers.push_back({"samples", &frame->samples});
+    if (!frame->noise.empty()) layers.push_back({"noise", &frame->noise});
     if (auto st = saveLayersExr(a.layers, layers); !st) return inputError(st.error());
   }
   if (!a.quiet)

@@ -77,6 +77,14 @@ bool changed(const DifferentialBuffers& b, size_t i) {
   return b.sumChangeSq.data[i] > 0 || b.sumMask.data[i] > 0 || w[0] != wo[0] || w[1] != wo[1] || w[2] != wo[2];
 }
 
+// RenderFrame::samples and ::noise from the buffers.
+void addSampleLayers(RenderFrame& frame, const DifferentialBuffers& b) {
+  frame.samples = ImageF(b.width, b.height, 1);
+  std::copy(b.samples.begin(), b.samples.end(), frame.samples.data.begin());
+  frame.noise = ImageF(b.width, b.height, 1);
+  for (size_t i = 0; i < b.samples.size(); ++i) frame.noise.data[i] = float(pixelError(b, i));
+}
+
 double meanSamples(const DifferentialBuffers& b) {
   double sum = 0;
   for (int n : b.samples) sum += n;
@@ -303,10 +311,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     frame->mask = full.meanMask();
     frame->estimatedError = estimateError(full);
     frame->meanSpp = meanSamples(full);
-    frame->samples = ImageF(w, h, 1);
-    std::copy(full.samples.begin(), full.samples.end(), frame->samples.data.begin());
-    frame->noise = ImageF(w, h, 1);
-    for (size_t i = 0; i < full.samples.size(); ++i) frame->noise.data[i] = float(pixelError(full, i));
+    // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
+    if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
     frame->final = final;
     frame->seconds = seconds();
     pendingFrame = false;
@@ -395,6 +401,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     auto frame = std::make_shared<RenderFrame>(*last);
     frame->final = true;
     frame->converged = converged;
+    if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w) addSampleLayers(*frame, full);
     frame->seconds = seconds();
     send(std::move(frame));
   }

@@ -47,8 +47,11 @@ struct RenderFrame {
   ImageF withObjects;           // W x H x 3 means
   ImageF withoutObjects;        // W x H x 3
   ImageF mask;                  // W x H x 1
-  ImageF samples;               // W x H x 1, samples per pixel (full-resolution frames only)
-  ImageF noise;                 // W x H x 1, each pixel's estimated standard error (sRGB [0,1]; full-resolution only)
+  // W x H x 1: samples per pixel and each pixel's estimated standard error (sRGB [0,1]) in
+  // final full-resolution frames, and in every full-resolution frame under a noise target;
+  // empty otherwise.
+  ImageF samples;
+  ImageF noise;
   // Estimated RMSE (sRGB [0,1]) of the composite over the pixels it changes: per pixel the
   // variance of the mean of each sample's change to the composite (with - photo where the
   // camera ray meets an object, with - without elsewhere; so the mask's noise is included)
