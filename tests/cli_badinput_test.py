@@ -40,6 +40,9 @@ def main():
     check("unknown command", r.returncode == 2 and "frobnicate" in r.stderr, r.stderr)
     r = run(cli, "render", "x.json", "--spp", "-3", "-o", "a.png")
     check("bad flag value", r.returncode == 2 and "--spp" in r.stderr, r.stderr)
+    for v in ("-0.1", "1.5", "nan", "low"):
+        r = run(cli, "render", "x.json", "--noise", v, "-o", "a.png")
+        check("bad --noise " + v, r.returncode == 2 and "--noise" in r.stderr, r.stderr)
     r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
     check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
 

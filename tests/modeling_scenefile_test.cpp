@@ -66,7 +66,7 @@ const char* kFullScene = R"({
     { "mesh": "builtin:cube", "base_px": [100, 290], "subdivide": 2,
       "material": { "preset": "emissive", "rgb": [3, 2, 1] } }
   ],
-  "render": { "spp": 64, "seconds": 12.5, "exposure": -0.5, "seed": 7 }
+  "render": { "spp": 64, "seconds": 12.5, "noise": 0.01, "exposure": -0.5, "seed": 7 }
 })";
 
 void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
@@ -134,6 +134,7 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
   EXPECT_EQ(a.render.spp, b.render.spp);
   EXPECT_EQ(a.render.seconds, b.render.seconds);
   EXPECT_EQ(a.render.exposure, b.render.exposure);
+  EXPECT_EQ(a.render.noise, b.render.noise);
   EXPECT_EQ(a.render.seed, b.render.seed);
 }
 
@@ -191,6 +192,7 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_EQ(d.render.spp, 64);
   EXPECT_EQ(d.render.seconds, 12.5);
   EXPECT_EQ(d.render.exposure, -0.5);
+  EXPECT_EQ(d.render.noise, 0.01);
   EXPECT_EQ(d.render.seed, 7u);
 }
 
@@ -310,6 +312,7 @@ TEST(SceneFile, MinimalSceneGetsDefaults) {
   EXPECT_FALSE(d.layout.backWallPx.has_value());
   EXPECT_TRUE(d.lights.empty() && d.objects.empty() && d.shafts.empty());
   EXPECT_EQ(d.render.spp, 256);
+  EXPECT_EQ(d.render.noise, 0.004);
   EXPECT_EQ(d.render.seed, 1u);
   EXPECT_EQ(d.render.exposure, 0.0);
   EXPECT_FALSE(d.render.seconds.has_value());
@@ -488,6 +491,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"room_materials_type", R"(, "room": {"materials": [1]})", "room.materials", "object"},
         BadCase{"spp_negative", R"(, "render": {"spp": -4})", "render.spp", ">= 1"},
         BadCase{"spp_fraction", R"(, "render": {"spp": 2.5})", "render.spp", "integer"},
+        BadCase{"noise_negative", R"(, "render": {"noise": -0.01})", "render.noise", "[0, 1)"},
+        BadCase{"noise_string", R"(, "render": {"noise": "low"})", "render.noise", "number"},
         BadCase{"seconds_negative", R"(, "render": {"seconds": -1})", "render.seconds", "> 0"},
         BadCase{"seed_string", R"(, "render": {"seed": "abc"})", "render.seed", "integer"},
         BadCase{"exposure_bool", R"(, "render": {"exposure": true})", "render.exposure",

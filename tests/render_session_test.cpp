@@ -3,6 +3,7 @@
 #include "render_test_scenes.h"
 #include "test_support.h"
 
+#include "inlay/render/composite.h"
 #include "inlay/render/session.h"
 
 #include <chrono>
@@ -193,6 +194,75 @@ TEST(Session, FocusOnChangesKeepsTheObjectPixelsAndSavesTime) {
   EXPECT_GT(objectPx, 5);
   EXPECT_GT(differentPx, w * h / 2);
   EXPECT_LT(seconds[1], seconds[0]);  // about 2.5x faster here (most pixels never meet the object)
+}
+
+// Adaptive sampling to a noise target: the samples go to the object (and what it changes),
+// every changed pixel ends at or below the target, the per-pixel estimate is honest against a
+// converged reference, and wherever a uniform render shows no change (no path met the object)
+// the adaptive one shows none either, bit for bit: with and without share their samples.
+TEST(Session, AdaptiveSamplingMeetsTheNoiseTargetWhereTheObjectChangesThePhoto) {
+  const int w = 64, h = 48;
+  RenderScene scene = sessionScene(w, h);
+  Mat4 small = test::translation(Vec3(0.8, 0.15, -3.0));  // a small object: most of the room untouched
+  small.topLeftCorner<3, 3>() *= 0.7;
+  scene.objects[0].worldFromObject = small;
+  Collector sink;
+  SessionOptions opt;
+  opt.targetSpp = 1 << 14;
+  opt.startDivider = 1;
+  opt.noiseTarget = 0.02;
+  opt.seed = 3;
+  RenderSession session(&sink, opt);
+  session.setScene(scene);
+  ASSERT_TRUE(session.waitUntilDone(300));
+  const auto frames = sink.frames();
+  ASSERT_FALSE(frames.empty());
+  const RenderFrame& f = *frames.back().frame;
+  ASSERT_TRUE(f.final);
+  EXPECT_TRUE(f.converged);
+  ASSERT_EQ(f.samples.width, w);
+  ASSERT_EQ(f.noise.width, w);
+  // A uniform reference with many samples (another seed), and a uniform render with the
+  // session's seed: where none of its samples meets the object, the adaptive render's (its
+  // first samples) cannot either.
+  PathTracer tracer(scene, opt.tracer);
+  DifferentialBuffers ref(w, h), quiet(w, h);
+  ASSERT_TRUE(tracer.render(ref, 0, 512, 99));
+  ASSERT_TRUE(tracer.render(quiet, 0, 64, opt.seed));
+  const ImageF rw = ref.meanWith(), rwo = ref.meanWithout(), rm = ref.meanMask();
+  const ImageF photo(w, h, 3);  // the composite's photo: black (the change is what is tested)
+  const ImageF compRef = differentialComposite(photo, rw, rwo, rm);
+  const ImageF comp = differentialComposite(photo, f.withObjects, f.withoutObjects, f.mask);
+  auto srgb = [](double v) { return v <= 0.0031308 ? 12.92 * std::max(0.0, v) : 1.055 * std::pow(std::min(v, 1.0), 1 / 2.4) - 0.055; };
+  double objSamples = 0, quietSamples = 0, errSq = 0, estSq = 0;
+  int objPx = 0, quietPx = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      const bool untouched = quiet.sumWith.rgb(x, y) == quiet.sumWithout.rgb(x, y) && quiet.sumMask.at(x, y) == 0;
+      if (untouched && f.samples.data[i] <= 64) {
+        ASSERT_EQ(f.withObjects.rgb(x, y), f.withoutObjects.rgb(x, y)) << x << "," << y;
+        quietSamples += f.samples.data[i];
+        ++quietPx;
+      }
+      EXPECT_LE(f.noise.data[i], opt.noiseTarget * (1 + 1e-6)) << x << "," << y;
+      if (rm.at(x, y) == 1.f && f.mask.at(x, y) == 1.f) {
+        objSamples += f.samples.data[i];
+        ++objPx;
+        for (int c = 0; c < 3; ++c) errSq += std::pow(srgb(comp.at(x, y, c)) - srgb(compRef.at(x, y, c)), 2) / 3;
+        estSq += double(f.noise.data[i]) * f.noise.data[i];
+      }
+    }
+  ASSERT_GT(objPx, 10);
+  ASSERT_GT(quietPx, 20);
+  const double rmse = std::sqrt(errSq / objPx), est = std::sqrt(estSq / objPx);
+  std::printf("[ session ] adaptive, target %.3f: object %.0f spp (%d px), untouched %.1f spp (%d px), "
+              "%.2f s; object RMSE vs 512 spp %.4f, estimated %.4f\n",
+              opt.noiseTarget, objSamples / objPx, objPx, quietSamples / quietPx, quietPx, f.seconds, rmse, est);
+  EXPECT_GT(objSamples / objPx, 4 * quietSamples / quietPx);
+  // The estimate is honest: the true error (its reference's own noise included) within 2x.
+  EXPECT_LT(rmse, 2 * est + 0.005);
+  EXPECT_GT(rmse, 0.5 * est);
 }
 
 TEST(Session, EditCancelsTheRunningWaveQuickly) {

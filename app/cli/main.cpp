@@ -53,8 +53,12 @@ Render options:
   --threads T             threads (default: all cores)
   --layers FILE.exr       also write linear layers: composite, with_objects, without_objects, mask
   --progress-csv FILE     one row per progressive update: seconds, spp, estimated error
-  --no-focus              sample every pixel equally (default: pixels the objects do not
-                          change are revisited only every fourth wave)
+  --noise E               adaptive sampling: stop sampling a pixel once its composite's
+                          estimated standard error (sRGB [0,1]) is below E, and the render
+                          once every pixel is (default: the scene's render.noise, 0.004;
+                          0: sample until --spp or --seconds)
+  --no-focus              sample every pixel equally (with --noise 0; default: pixels the
+                          objects do not change are revisited only every fourth wave)
   --initial-lights        render with the lights as estimated, before their refinement
   --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
                           the photo's linear units) and the refinement's objective against time
@@ -99,7 +103,7 @@ struct Args {
   std::string lightsJson, replaceLights, replaceAlbedo;
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
-  std::optional<double> seconds;
+  std::optional<double> seconds, noise;
   bool quiet = false;
   bool noFocus = false;
 };
@@ -133,7 +137,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
     };
     if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" ||
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
-        s == "--scene" || s == "--spp" || s == "--seconds" || s == "--seed" || s == "--threads" ||
+        s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
         s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
         s == "--replace-albedo") {
       const auto v = value(s.c_str());
@@ -152,6 +156,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--seconds") {
         a.seconds = parseNumber<double>(*v);
         if (!a.seconds) return "--seconds: '" + *v + "' is not a non-negative number";
+      } else if (s == "--noise") {
+        a.noise = parseNumber<double>(*v);
+        if (!a.noise || *a.noise >= 1) return "--noise: '" + *v + "' is not a number in [0, 1)";
       } else {
         const auto n = parseNumber<int>(*v);
         if (!n) return s + ": '" + *v + "' is not a non-negative whole number";
@@ -368,6 +375,9 @@ int commandRender(const std::string& scenePath, const Args& a) {
   // Samples go where the objects change the photo; untouched pixels are revisited every fourth
   // wave (render/session.h).
   so.focusOnChanges = !a.noFocus;
+  // Adaptive sampling to the scene's noise target (render/session.h); --no-focus alone keeps
+  // the uniform schedule it always meant.
+  so.noiseTarget = a.noise.value_or(a.noFocus ? 0.0 : ps.doc.render.noise);
   std::ofstream csv;
   if (!a.progressCsv.empty()) {
     csv.open(a.progressCsv);
@@ -396,13 +406,16 @@ int commandRender(const std::string& scenePath, const Args& a) {
   if (auto st = saveImage(a.output, composite); !st) return inputError(st.error());
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;
-    const std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
-                                            {"without_objects", &without}, {"mask", &frame->mask}};
+    std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
+                                      {"without_objects", &without}, {"mask", &frame->mask}};
+    if (!frame->samples.empty()) layers.push_back({"samples", &frame->samples});
+    if (!frame->noise.empty()) layers.push_back({"noise", &frame->noise});
     if (auto st = saveLayersExr(a.layers, layers); !st) return inputError(st.error());
   }
   if (!a.quiet)
-    std::fprintf(stderr, "inlay-cli: wrote %s (%d spp, %.1f s render, estimated error %.4f)\n",
-                 a.output.c_str(), frame->spp, frame->seconds, frame->estimatedError);
+    std::fprintf(stderr, "inlay-cli: wrote %s (%d spp at most, %.1f on average, %.1f s render, estimated error %.4f%s)\n",
+                 a.output.c_str(), frame->spp, frame->meanSpp, frame->seconds, frame->estimatedError,
+                 frame->converged ? ", converged" : "");
   return 0;
 }
 

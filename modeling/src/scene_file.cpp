@@ -702,7 +702,7 @@ class Reader {
   void readRender(const json& j, RenderKeys& r) {
     const std::string p = "render";
     object(j, p);
-    knownKeys(j, p, {"spp", "seconds", "exposure", "seed"});
+    knownKeys(j, p, {"spp", "seconds", "noise", "exposure", "seed"});
     if (j.contains("spp")) {
       const long long spp = integer(j["spp"], child(p, "spp"));
       if (spp < 1) fail(child(p, "spp"), "must be >= 1 (got " + std::to_string(spp) + ")");
@@ -711,6 +711,10 @@ class Reader {
     }
     if (j.contains("seconds") && !j["seconds"].is_null())
       r.seconds = positive(j["seconds"], child(p, "seconds"));
+    if (j.contains("noise")) {
+      r.noise = number(j["noise"], child(p, "noise"));
+      if (!(r.noise >= 0 && r.noise < 1)) fail(child(p, "noise"), "must be in [0, 1) (sRGB standard error)");
+    }
     if (j.contains("exposure")) {
       r.exposure = number(j["exposure"], child(p, "exposure"));
       if (std::fabs(r.exposure) > 64) fail(child(p, "exposure"), "must be in [-64, 64] stops");
@@ -923,6 +927,7 @@ ojson buildJson(const SceneDoc& doc) {
   ojson r;
   r["spp"] = doc.render.spp;
   r["seconds"] = doc.render.seconds ? ojson(*doc.render.seconds) : ojson(nullptr);
+  r["noise"] = doc.render.noise;
   r["exposure"] = doc.render.exposure;
   r["seed"] = doc.render.seed;
   j["render"] = r;

@@ -192,6 +192,15 @@ struct PathTracer::Impl {
 
   unsigned objectGeomId(size_t i) const { return surfaceCount + unsigned(lights.size()) + unsigned(i); }
 
+  // The photo's linear pixel (x, y) of the camera's frame, for the composite's variance; zero
+  // when the scene carries no photo (or not one of the camera's size) or the value is not finite.
+  Vec3 photoAt(int x, int y) const {
+    const ImageF& p = scene.roomAlbedo.photoRadiance;
+    if (p.channels < 3 || p.width != scene.camera.widthPx || p.height != scene.camera.heightPx) return Vec3::Zero();
+    const Vec3 v = p.rgb(std::clamp(x, 0, p.width - 1), std::clamp(y, 0, p.height - 1));
+    return v.allFinite() ? v : Vec3::Zero();
+  }
+
   void setTransform(ObjectData& o, const Mat4& worldFromObject) {
     o.worldFromObject = worldFromObject;
     const Mat3 linear = worldFromObject.topLeftCorner<3, 3>();
@@ -767,6 +776,8 @@ DifferentialBuffers::DifferentialBuffers(int w, int h)
       sumWithout(w, h, 3),
       sumMask(w, h, 1),
       sumDiffSq(w, h, 1),
+      sumChange(w, h, 3),
+      sumChangeSq(w, h, 1),
       samples(size_t(w) * size_t(h), 0) {}
 
 void DifferentialBuffers::clear() {
@@ -774,6 +785,8 @@ void DifferentialBuffers::clear() {
   std::fill(sumWithout.data.begin(), sumWithout.data.end(), 0.f);
   std::fill(sumMask.data.begin(), sumMask.data.end(), 0.f);
   std::fill(sumDiffSq.data.begin(), sumDiffSq.data.end(), 0.f);
+  std::fill(sumChange.data.begin(), sumChange.data.end(), 0.f);
+  std::fill(sumChangeSq.data.begin(), sumChangeSq.data.end(), 0.f);
   std::fill(samples.begin(), samples.end(), 0);
 }
 
@@ -988,8 +1001,9 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       if (cancel && cancel->shouldStop()) return false;
-      Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero();
-      double sumMask = 0, sumDiffSq = 0;
+      Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
+      double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
+      const Vec3 photo = d.photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
       for (int k = 0; k < count; ++k) {
         const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
         const auto jitter = rng.get2(0);
@@ -1009,13 +1023,19 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
         sumWo += sums.without;
         sumMask += objectFirst ? 1.0 : 0.0;
         sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
+        const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
+        sumC += change;
+        sumCSq += change.squaredNorm() / 3.0;
       }
       float* w = buffers.sumWith.pixel(x, y);
       float* wo = buffers.sumWithout.pixel(x, y);
+      float* ch = buffers.sumChange.pixel(x, y);
       for (int c = 0; c < 3; ++c) {
         w[c] += float(sumW[c]);
         wo[c] += float(sumWo[c]);
+        ch[c] += float(sumC[c]);
       }
+      buffers.sumChangeSq.at(x, y) += float(sumCSq);
       buffers.sumMask.at(x, y) += float(sumMask);
       buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
       buffers.samples[size_t(y) * buffers.width + x] += count;

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -47,32 +48,58 @@ double srgbSlope(double v) {
   return 1.055 / 2.4 * std::pow(v, 1.0 / 2.4 - 1.0);
 }
 
-// Estimated RMSE, in sRGB [0,1], of the composite over the pixels where with != without.
-// Per pixel: the variance of the mean of the per-sample difference D = with - without (the
-// photo is fixed, so the composite's noise is D's, ignoring the mask's), from the running sums
-// (sumDiffSq is the second moment of D averaged over RGB; unbiased with n >= 2, the raw
-// second moment with n = 1), mapped to sRGB by the slope at the pixel's mean with-object value
-// (the composite's value where the render matches the photo).
+// Standard error, in sRGB [0,1], of pixel i's composite from its own samples: the variance of
+// the mean of the per-sample change (DifferentialBuffers::sumChange: the photo is a constant,
+// so the composite's noise is the change's, the mask's included), averaged over RGB (unbiased
+// with n >= 2, the raw second moment with n = 1), mapped to sRGB by the slope at the pixel's
+// mean with-object value (the composite's value where the render matches the photo).
+// Unsampled pixels: 0.
+double pixelError(const DifferentialBuffers& b, size_t i) {
+  const int n = b.samples[i];
+  if (n <= 0) return 0;
+  const float* ch = &b.sumChange.data[i * 3];
+  const float* w = &b.sumWith.data[i * 3];
+  const double m2 = b.sumChangeSq.data[i] / n;
+  double meanSq = 0, meanWith = 0;
+  for (int c = 0; c < 3; ++c) {
+    const double mc = double(ch[c]) / n;
+    meanSq += mc * mc / 3.0;
+    meanWith += w[c] / (3.0 * n);
+  }
+  const double var = n >= 2 ? std::max(0.0, m2 - meanSq) * n / (n - 1.0) : m2;
+  return srgbSlope(meanWith) * std::sqrt(var / n);
+}
+
+// Pixel i's composite differs from the photo in some sample (an object seen, or with != without).
+bool changed(const DifferentialBuffers& b, size_t i) {
+  const float* w = &b.sumWith.data[i * 3];
+  const float* wo = &b.sumWithout.data[i * 3];
+  return b.sumChangeSq.data[i] > 0 || b.sumMask.data[i] > 0 || w[0] != wo[0] || w[1] != wo[1] || w[2] != wo[2];
+}
+
+// RenderFrame::samples and ::noise from the buffers.
+void addSampleLayers(RenderFrame& frame, const DifferentialBuffers& b) {
+  frame.samples = ImageF(b.width, b.height, 1);
+  std::copy(b.samples.begin(), b.samples.end(), frame.samples.data.begin());
+  frame.noise = ImageF(b.width, b.height, 1);
+  for (size_t i = 0; i < b.samples.size(); ++i) frame.noise.data[i] = float(pixelError(b, i));
+}
+
+double meanSamples(const DifferentialBuffers& b) {
+  double sum = 0;
+  for (int n : b.samples) sum += n;
+  return b.samples.empty() ? 0.0 : sum / double(b.samples.size());
+}
+
+// Estimated RMSE, in sRGB [0,1], of the composite over the pixels it changes (pixelError's
+// root mean square over them).
 double estimateError(const DifferentialBuffers& b) {
   double sum = 0;
   size_t count = 0;
-  for (int y = 0; y < b.height; ++y)
-    for (int x = 0; x < b.width; ++x) {
-      const int n = b.samples[size_t(y) * b.width + x];
-      if (n <= 0) continue;
-      const float* w = b.sumWith.pixel(x, y);
-      const float* wo = b.sumWithout.pixel(x, y);
-      const double m2 = b.sumDiffSq.at(x, y) / n;
-      if (w[0] == wo[0] && w[1] == wo[1] && w[2] == wo[2] && m2 == 0) continue;
-      double meanSq = 0, meanWith = 0;
-      for (int c = 0; c < 3; ++c) {
-        const double md = (double(w[c]) - wo[c]) / n;
-        meanSq += md * md / 3.0;
-        meanWith += w[c] / (3.0 * n);
-      }
-      const double var = n >= 2 ? std::max(0.0, m2 - meanSq) * n / (n - 1.0) : m2;
-      const double s = srgbSlope(meanWith);
-      sum += s * s * var / n;
+  for (size_t i = 0; i < b.samples.size(); ++i)
+    if (b.samples[i] > 0 && changed(b, i)) {
+      const double e = pixelError(b, i);
+      sum += e * e;
       ++count;
     }
   return count ? std::sqrt(sum / double(count)) : 0.0;
@@ -102,12 +129,10 @@ std::vector<uint8_t> activePixels(const DifferentialBuffers& b) {
   return active;
 }
 
-// One focused wave: `count` more samples (each pixel continuing its own sample sequence) in the
-// active pixels, and in the quiet ones too when `quietTurn`. Tiles in parallel; false when
-// stopped.
-bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, int count, bool quietTurn,
+// One focused wave: count[i] more samples in pixel i (each pixel continuing its own sample
+// sequence). Tiles in parallel; false when stopped.
+bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, const std::vector<int>& count,
                    const SessionOptions& opt, const CancelToken& token) {
-  const std::vector<uint8_t> active = activePixels(b);
   constexpr int kTile = 16;
   const int tilesX = (b.width + kTile - 1) / kTile, tilesY = (b.height + kTile - 1) / kTile;
   std::atomic<bool> stopped{false};
@@ -119,8 +144,8 @@ bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, int count, 
         for (int y = y0; y < std::min(b.height, y0 + kTile) && !stopped; ++y)
           for (int x = x0; x < std::min(b.width, x0 + kTile); ++x) {
             const size_t i = size_t(y) * b.width + x;
-            if (!active[i] && !quietTurn) continue;
-            if (!tracer.renderRect(b, x, y, x + 1, y + 1, b.samples[i], count, opt.seed, &token)) {
+            if (count[i] <= 0) continue;
+            if (!tracer.renderRect(b, x, y, x + 1, y + 1, b.samples[i], count[i], opt.seed, &token)) {
               stopped = true;
               break;
             }
@@ -129,6 +154,58 @@ bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, int count, 
     });
   });
   return !stopped;
+}
+
+// focusOnChanges without a noise target: after two waves, `count` samples in the active pixels
+// only, and in every pixel every 4th wave. Empty: the whole frame (all pixels have one count).
+std::vector<int> focusedCounts(const DifferentialBuffers& b, int fullWaves, int count, const SessionOptions& opt) {
+  if (!opt.focusOnChanges || fullWaves < 2) return {};
+  std::vector<int> counts(b.samples.size(), count);
+  if (fullWaves % 4 == 0) return counts;
+  const std::vector<uint8_t> active = activePixels(b);
+  for (size_t i = 0; i < counts.size(); ++i) counts[i] = active[i] ? count : 0;
+  return counts;
+}
+
+// Adaptive sampling toward the error `level` (sRGB standard error): the samples each pixel takes
+// next. A pixel no sample has changed (the photo as it is) takes up to `quietSamples` (a few
+// tell the room away from the objects apart from their shadows and bounce light), a changed
+// one up to `minSamples` (enough for a variance); then a pixel whose error e, or a neighbour's
+// (a converged pixel beside a noisy one may just not have been lucky yet; Cycles dilates the
+// same way), is above the level takes what its variance says reaches it, n ((e / level)^2 - 1),
+// at most doubling its samples (the estimate is rough) and never beyond targetSpp.
+std::vector<int> adaptiveCounts(const DifferentialBuffers& b, double level, const SessionOptions& opt) {
+  const int w = b.width, h = b.height;
+  std::vector<double> ratio(b.samples.size(), 0.0);  // (e / level)^2 of changed pixels
+  std::vector<uint8_t> isChanged(b.samples.size(), 0);
+  for (size_t i = 0; i < ratio.size(); ++i) {
+    isChanged[i] = changed(b, i);
+    if (isChanged[i]) ratio[i] = std::pow(pixelError(b, i) / level, 2);
+  }
+  std::vector<int> counts(ratio.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      const int n = b.samples[i];
+      double r = 0;
+      for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1); ++yy)
+        for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx) r = std::max(r, ratio[size_t(yy) * w + xx]);
+      int c = std::max(0, (isChanged[i] ? opt.minSamples : opt.quietSamples) - n);
+      if (r > 1 && n > 0) c = std::max(c, int(std::min(double(n), std::ceil(n * (r - 1)))));
+      counts[i] = std::clamp(c, 0, std::max(0, opt.targetSpp - n));
+    }
+  return counts;
+}
+
+// The q-quantile (q in [0, 1]) of the changed pixels' errors; 0 when none changed.
+double errorQuantile(const DifferentialBuffers& b, double q) {
+  std::vector<double> e;
+  for (size_t i = 0; i < b.samples.size(); ++i)
+    if (changed(b, i)) e.push_back(pixelError(b, i));
+  if (e.empty()) return 0;
+  const size_t k = std::min(e.size() - 1, size_t(q * double(e.size() - 1) + 0.5));
+  std::nth_element(e.begin(), e.begin() + std::ptrdiff_t(k), e.end());
+  return e[k];
 }
 
 }  // namespace
@@ -211,6 +288,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   DifferentialBuffers full;  // allocated at the first full-resolution wave (previews stay cheap)
   int spp = 0;
   int fullWaves = 0;
+  bool converged = false;  // every pixel met the noise target before the sample cap
+  bool pendingFrame = false;  // samples added since the last frame published
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
   auto send = [&](std::shared_ptr<const RenderFrame> frame) {
     if (!last && opt.seconds > 0) {
@@ -219,6 +298,52 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     }
     last = frame;
     publish(v, std::move(frame));
+  };
+  // The full-resolution buffers as a frame (final: the version's last).
+  auto publishFull = [&](bool final) {
+    auto frame = std::make_shared<RenderFrame>();
+    frame->sceneVersion = v;
+    frame->width = w, frame->height = h;
+    frame->spp = spp;
+    frame->resolutionDivider = 1;
+    frame->withObjects = full.meanWith();
+    frame->withoutObjects = full.meanWithout();
+    frame->mask = full.meanMask();
+    frame->estimatedError = estimateError(full);
+    frame->meanSpp = meanSamples(full);
+    // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
+    if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
+    frame->final = final;
+    frame->seconds = seconds();
+    pendingFrame = false;
+    send(std::move(frame));
+  };
+  // Adaptive sampling after the first uniform waves: error levels falling by sqrt(2) from the
+  // noisiest pixel's down to the target, each wave bringing the pixels above the level to it
+  // (so a time limit leaves the errors even, not the samples). False when cancelled.
+  auto renderAdaptive = [&] {
+    double level = std::numeric_limits<double>::infinity();  // first: the minimum samples only
+    for (;;) {
+      if (token.shouldStop()) return true;
+      const std::vector<int> counts = adaptiveCounts(full, level, opt);
+      if (std::none_of(counts.begin(), counts.end(), [](int c) { return c > 0; })) {
+        if (level <= opt.noiseTarget) {
+          converged = errorQuantile(full, 1.0) <= opt.noiseTarget;  // else some pixel is at targetSpp
+          return true;
+        }
+        // The first level: the 99th percentile (the few pixels above it double their samples
+        // in every wave anyway; starting at the largest would spend waves on fireflies alone).
+        level = std::max(opt.noiseTarget, std::isinf(level) ? errorQuantile(full, 0.99) : level / std::sqrt(2.0));
+        continue;
+      }
+      const bool complete = renderFocused(tracer, full, counts, opt, token);
+      if (!complete && token.cancelled()) return false;
+      spp = *std::max_element(full.samples.begin(), full.samples.end());
+      // Waves get short near the end; a frame at most every 0.25 s (and the last one).
+      if (!complete || !last || seconds() - last->seconds >= 0.25) publishFull(!complete);
+      else pendingFrame = true;
+      if (!complete) return true;
+    }
   };
   for (const RenderWork& work : makeRenderSchedule(opt.targetSpp, opt.startDivider)) {
     if (token.shouldStop()) break;
@@ -253,10 +378,12 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       continue;
     }
     if (full.width != w) full = DifferentialBuffers(w, h);
-    const bool complete =
-        opt.focusOnChanges && fullWaves >= 2
-            ? renderFocused(tracer, full, work.sampleCount, fullWaves % 4 == 0, opt, token)
-            : tracer.render(full, work.firstSample, work.sampleCount, opt.seed, opt.threads, &token);
+    if (opt.noiseTarget > 0 && spp >= std::min(opt.quietSamples, opt.targetSpp)) break;  // adaptive from here
+    const std::vector<int> counts = focusedCounts(full, fullWaves, work.sampleCount, opt);
+    // With no counts every pixel has the same count: the wave's first sample is each pixel's next.
+    const bool complete = counts.empty()
+                              ? tracer.render(full, work.firstSample, work.sampleCount, opt.seed, opt.threads, &token)
+                              : renderFocused(tracer, full, counts, opt, token);
     ++fullWaves;
     if (complete) spp += work.sampleCount;
     if (!complete && token.cancelled()) return;  // an edit or cancel(): publish nothing
@@ -264,24 +391,17 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     // Out of time inside the first full-resolution wave: its buffer holds no whole sample
     // (some tiles none at all), so the last preview stays the final frame (below).
     if (outOfTime && spp == 0 && last) break;
-    auto frame = std::make_shared<RenderFrame>();
-    frame->sceneVersion = v;
-    frame->width = w, frame->height = h;
-    frame->spp = spp;
-    frame->resolutionDivider = 1;
-    frame->withObjects = full.meanWith();
-    frame->withoutObjects = full.meanWithout();
-    frame->mask = full.meanMask();
-    frame->estimatedError = estimateError(full);
-    frame->final = outOfTime || spp >= opt.targetSpp;
-    frame->seconds = seconds();
-    send(std::move(frame));
+    publishFull(outOfTime || spp >= opt.targetSpp);
     if (outOfTime) return;
   }
+  if (opt.noiseTarget > 0 && spp > 0 && last && !last->final && !renderAdaptive()) return;
+  if (pendingFrame && !token.cancelled()) publishFull(false);  // the adaptive waves' latest
   // Out of time between waves or during the preview: the last frame becomes the final one.
   if (!token.cancelled() && last && !last->final) {
     auto frame = std::make_shared<RenderFrame>(*last);
     frame->final = true;
+    frame->converged = converged;
+    if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w) addSampleLayers(*frame, full);
     frame->seconds = seconds();
     send(std::move(frame));
   }

@@ -12,7 +12,8 @@ seed) with
 and the harness scores each composite (object RMSE, mean-adjusted RMSE, sRGB [0,1]) next to
 the paper's uniform baseline. Every run renders the same number of samples with the same seed
 (--spp, default 32: the machine's load does not change the noise, and the runs share their
-noise pattern). The `_bias` columns are the object RMSE after a Gaussian blur (sigma 2 px,
+noise pattern), uniformly (--noise 0) unless --noise E asks for the CLI's adaptive sampling to
+that noise target (then --spp is each pixel's cap: give a large one to converge). The `_bias` columns are the object RMSE after a Gaussian blur (sigma 2 px,
 normalised inside the object's mask) of both images: the render noise mostly gone, the
 lighting's bias left; they are what attributes the error. Light position error: distance of each light's centre to its true
 light's (same order as truth.json), initial and refined; intensity error: relative error of the
@@ -20,7 +21,7 @@ RGB radiance. The refinement's objective against time goes to lights_objective.c
 
 Writes OUT/lights.csv, OUT/lights_objective.csv, OUT/lights.png.
 
-usage: bench_lights.py INLAY_CLI [--out DIR] [--spp N] [--scenes d1,d3] [--runs refined,initial,...]
+usage: bench_lights.py INLAY_CLI [--out DIR] [--spp N] [--noise E] [--scenes d1,d3] [--runs refined,initial,...]
 """
 import csv, json, os, statistics, subprocess, sys
 
@@ -66,6 +67,7 @@ def main():
     opt = lambda k, d: benchlib.option(a, k, d)
     out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
     spp = int(opt("--spp", "32"))
+    noise = opt("--noise", "0")
     runs = opt("--runs", ",".join(RUNS)).split(",")
     sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
     if sdir is None:
@@ -88,7 +90,7 @@ def main():
                "uniform_adjusted": round(base[name]["uniform_adjusted_rmse"], 4)}
         for run in runs:
             comp = os.path.join(out, "%s_%s.png" % (name, run))
-            cmd = [cli, "render", sf, "-o", comp, "--quiet", "--spp", str(spp), "--seed", "1"]
+            cmd = [cli, "render", sf, "-o", comp, "--quiet", "--spp", str(spp), "--noise", noise, "--seed", "1"]
             if run == "refined":
                 cmd += ["--lights-json", lj]
             if run == "initial":

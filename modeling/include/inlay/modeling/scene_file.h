@@ -118,6 +118,9 @@ struct RoomKeys {
 struct RenderKeys {
   int spp = 256;
   std::optional<double> seconds;     // null / missing: no time limit
+  // Adaptive sampling's target: each pixel's composite is sampled until its estimated standard
+  // error (sRGB [0,1]) is below this (0: until spp or seconds). 0.004 is about one 8-bit step.
+  double noise = 0.004;
   double exposure = 0.0;             // stops applied to the composite before encoding
   unsigned seed = 1;
 };

@@ -52,6 +52,12 @@ struct DifferentialBuffers {
   ImageF sumWithout;   // W x H x 3, radiance of the scene without objects
   ImageF sumMask;      // W x H x 1, fraction of camera samples whose first hit is an object
   ImageF sumDiffSq;    // W x H x 1, sum over samples of |with - without|^2 (mean over RGB)
+  // What each sample makes of the composite, less the photo: with - photo where the camera
+  // ray's first hit is an object, with - without elsewhere (the photo pixel is a constant, so
+  // these sums give the composite's per-pixel variance, mask noise included; with no photo in
+  // the scene, photo = 0).
+  ImageF sumChange;    // W x H x 3
+  ImageF sumChangeSq;  // W x H x 1, sum of |change|^2 (mean over RGB)
   std::vector<int> samples;  // per pixel
 
   DifferentialBuffers() = default;

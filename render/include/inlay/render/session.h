@@ -39,17 +39,27 @@ std::vector<RenderWork> makeRenderSchedule(int targetSpp, int startDivider = 8, 
 struct RenderFrame {
   uint64_t sceneVersion = 0;
   int width = 0, height = 0;
-  int spp = 0;                  // full-resolution samples per pixel (0 during the preview)
+  int spp = 0;                  // full-resolution samples per pixel (0 during the preview);
+                                // under a noise target the most any pixel has
+  double meanSpp = 0;           // full-resolution samples per pixel, averaged over the frame
   int resolutionDivider = 1;    // > 1 for preview frames (upsampled to full size)
   double seconds = 0;           // since the version's render began
   ImageF withObjects;           // W x H x 3 means
   ImageF withoutObjects;        // W x H x 3
   ImageF mask;                  // W x H x 1
-  // Estimated RMSE (sRGB [0,1]) of the composite over the pixels where with != without: per
-  // pixel the variance of the mean of (with - without) from the running sums, times the sRGB
-  // slope at the pixel's with-object value; mask noise and exposure are not included.
+  // W x H x 1: samples per pixel and each pixel's estimated standard error (sRGB [0,1]) in
+  // final full-resolution frames, and in every full-resolution frame under a noise target;
+  // empty otherwise.
+  ImageF samples;
+  ImageF noise;
+  // Estimated RMSE (sRGB [0,1]) of the composite over the pixels it changes: per pixel the
+  // variance of the mean of each sample's change to the composite (with - photo where the
+  // camera ray meets an object, with - without elsewhere; so the mask's noise is included)
+  // from the running sums, times the sRGB slope at the pixel's with-object value; exposure is
+  // not included.
   double estimatedError = 0;
   bool final = false;           // target reached for this version
+  bool converged = false;       // final because every pixel met SessionOptions::noiseTarget
 };
 
 // Implemented by the host (the CLI writes files, the studio converts to a QImage).
@@ -73,6 +83,17 @@ struct SessionOptions {
   // composite changes. Each pixel still averages its own samples (no bias); quiet pixels just have
   // fewer of them, and a quiet pixel that meets an object becomes active again.
   bool focusOnChanges = false;
+  // Adaptive sampling: > 0 samples a pixel only while the standard error of its composite
+  // (sRGB [0,1], estimated from its own samples as in RenderFrame::estimatedError) is above
+  // this, or a neighbour's is, or it has fewer than `minSamples`; the version ends (converged)
+  // when no pixel needs more, else at targetSpp (per pixel) or the time limit. Pixels no
+  // sample has changed (the photo as it is) stop at `quietSamples`, so the work goes to the
+  // objects, their shadows and bounce light. Replaces focusOnChanges' schedule. Each pixel
+  // still averages its own samples, and with == without stays exact wherever no path met an
+  // object.
+  double noiseTarget = 0;
+  int minSamples = 16;
+  int quietSamples = 4;
   TracerOptions tracer;
 };
 
