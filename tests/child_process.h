@@ -54,12 +54,10 @@ class ChildProcess {
     envp.push_back(nullptr);
 
     int pipeFds[2] = {-1, -1};
+    if (captureStdout && ::pipe2(pipeFds, O_CLOEXEC) != 0) return false;
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    if (captureStdout) {
-      if (::pipe2(pipeFds, O_CLOEXEC) != 0) return false;
-      posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDOUT_FILENO);
-    }
+    if (captureStdout) posix_spawn_file_actions_adddup2(&actions, pipeFds[1], STDOUT_FILENO);
     const int rc = posix_spawn(&pid_, exe.c_str(), &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (captureStdout) {
