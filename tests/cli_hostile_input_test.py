@@ -148,6 +148,13 @@ def huge_chunk_png(path, ctx):
     open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 0x492A0008) + b"IHDR" + b"\0" * 24)
 
 
+def huge_attribute_exr(path, ctx):
+    # Found by fuzz_image: an EXR header attribute claiming 1.6 GB in a tiny file (OpenEXR
+    # allocated and cleared it before reading).
+    open(path, "wb").write(b"\x76\x2f\x31\x01" + struct.pack("<i", 2) + b"channels\0chlist\0" +
+                           struct.pack("<i", 0x61626364) + b"\0" * 40)
+
+
 def one_pixel(path, ctx):
     cv2.imwrite(path, np.full((1, 1, 3), 128, np.uint8))
 
@@ -200,6 +207,7 @@ CASES = [
     photo_case("truncated png", truncated_png, [r"cut\.png", r"photo", r"truncated PNG: the file ends inside chunk 'IDAT'"], "cut.png"),
     photo_case("png with garbage pixels", bad_deflate_png, [r"garbage\.png", r"photo", r"corrupt PNG: the compressed pixel data is invalid"], "garbage.png"),
     photo_case("png chunk claiming 1.2 GB", huge_chunk_png, [r"liar\.png", r"photo", r"truncated PNG: the file ends inside chunk 'IHDR' at byte 8"], "liar.png"),
+    photo_case("exr attribute claiming 1.6 GB", huge_attribute_exr, [r"liar\.exr", r"photo", r"corrupt EXR: attribute 'channels' at byte 8 claims 1633837924 bytes, the file has 40 left"], "liar.exr"),
     photo_case("1x1 image", one_pixel, [r"tiny\.png", r"photo", r"1 x 1 pixels is too small \(at least 32 per side\)"], "tiny.png"),
     photo_case("60000x60000 header", bomb_header, [r"bomb\.png", r"photo", r"60000 x 60000.*exceeds the limit"], "bomb.png"),
     photo_case("16-bit png", sixteen_bit, None, "deep.png"),

@@ -6,6 +6,7 @@
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
 
+#include "child_process.h"
 #include "test_support.h"
 
 #include <chrono>
@@ -15,11 +16,7 @@
 #include <thread>
 
 #include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char** environ;
 
 namespace inlay {
 namespace {
@@ -133,19 +130,6 @@ const char* kChildEnv = "INLAY_ATOMIC_SAVE_CHILD";
     if (!writeFileAtomically(path, bytes).ok()) std::_Exit(3);
 }();
 
-pid_t spawnSaver(const fs::path& dest, size_t bytes) {
-  const std::string env = std::string(kChildEnv) + "=" + std::to_string(bytes) + ":" + dest.string();
-  std::vector<char*> envp;
-  for (char** e = environ; *e; ++e) envp.push_back(*e);
-  envp.push_back(const_cast<char*>(env.c_str()));
-  envp.push_back(nullptr);
-  std::string exe = fs::read_symlink("/proc/self/exe").string();
-  char* argv[] = {exe.data(), nullptr};
-  pid_t pid = -1;
-  if (posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv, envp.data()) != 0) return -1;
-  return pid;
-}
-
 // Polls until pred() or `seconds` pass; returns pred()'s last value.
 template <class Pred>
 bool waitUntil(Pred pred, double seconds) {
@@ -169,9 +153,10 @@ TEST(AtomicSave, KilledMidSaveLeavesOldOrNew) {
   const int rounds = 16;
   for (int round = 0; round < rounds; ++round) {
     ASSERT_TRUE(writeFileAtomically(dest.string(), oldBytes).ok());
-    const pid_t child = spawnSaver(dest, newBytes.size());
-    ASSERT_GT(child, 0);
-    const std::string tempPrefix = ".user.inlay-tmp-" + std::to_string(child) + "-";
+    test::ChildProcess child;
+    ASSERT_TRUE(child.start({}, {std::string(kChildEnv) + "=" + std::to_string(newBytes.size()) +
+                                 ":" + dest.string()}, false));
+    const std::string tempPrefix = ".user.inlay-tmp-" + std::to_string(child.pid()) + "-";
     auto childSaving = [&] {
       std::error_code ec;
       for (const auto& e : fs::directory_iterator(dir, ec))
@@ -185,9 +170,8 @@ TEST(AtomicSave, KilledMidSaveLeavesOldOrNew) {
     const bool started = waitUntil(childSaving, 60) && (round % 2 == 0 || waitUntil(replaced, 60));
     if (round % 2) waitUntil(childSaving, 60);
     std::this_thread::sleep_for(std::chrono::microseconds(delayUs(rng)));
-    ::kill(child, SIGKILL);
-    int status = 0;
-    ::waitpid(child, &status, 0);
+    child.kill(SIGKILL);
+    child.waitFor(std::chrono::seconds(30));
     ASSERT_TRUE(started) << "round " << round << ": the child never started saving";
     const std::string now = readBytes(dest);
     const bool isOld = now == oldBytes, isNew = now == newBytes;

@@ -460,6 +460,55 @@ TEST(ImageIo, HugeHeaderIsRefusedFastWithoutReadingPixels) {
   EXPECT_FALSE(loadImage((dir / "s.png").string(), ImageLimits{.maxDimension = 4}).ok());
 }
 
+// An EXR whose header lies (the OpenEXR reader believes it and allocates first): found by
+// fuzz_image, a 517-byte file claiming a 1.6 GB attribute took seconds and that much memory.
+TEST(ImageIo, ExrHeaderThatLiesIsRefusedBeforeOpenExrReadsIt) {
+  const auto dir = test::tempDir("exr_lies");
+  const auto good = dir / "good.exr";
+  ASSERT_TRUE(saveImage(good.string(), ImageF(6, 4, 3, 0.25f)).ok());
+  const std::string bytes = readBytes(good);
+  ASSERT_TRUE(loadImage(good.string()).ok());
+  // The file with the int32 `value` written `offset` bytes after the end of `attribute`.
+  auto patched = [](std::string b, const std::string& attribute, size_t offset, int32_t value) {
+    const size_t at = b.find(attribute);
+    EXPECT_NE(at, std::string::npos) << attribute;
+    for (int i = 0; i < 4; ++i) b[at + attribute.size() + offset + i] = char(value >> (8 * i));
+    return b;
+  };
+  const std::string channels("channels\0chlist\0", 16);
+  // Then the size (4 bytes) and the box xMin, yMin, xMax, yMax: xMax is at 12, yMax at 16.
+  const std::string dataWindow("dataWindow\0box2i\0", 17);
+  const std::string channelsAt =
+      "attribute 'channels' at byte " + std::to_string(bytes.find(channels));
+  struct Case {
+    std::string name, bytes, reason;
+  } cases[] = {
+      {"huge_attribute.exr", patched(bytes, channels, 0, 0x61626364),
+       "corrupt EXR: " + channelsAt + " claims 1633837924 bytes, the file has"},
+      {"negative_attribute.exr", patched(bytes, channels, 0, -5),
+       "corrupt EXR: " + channelsAt + " claims -5 bytes"},
+      {"bomb.exr", patched(patched(bytes, dataWindow, 12, 59999), dataWindow, 16, 59999),
+       "image of 60000 x 60000 pixels exceeds the limit"},
+      {"empty_window.exr", patched(bytes, dataWindow, 12, -3), "corrupt EXR: empty data window"},
+      {"cut_value.exr", bytes.substr(0, bytes.find(dataWindow) + 30),
+       "attribute 'dataWindow' at byte"},  // ... claims 16 bytes, the file has 9 left
+      {"cut_name.exr", bytes.substr(0, bytes.find(dataWindow) + 5),
+       "truncated or corrupt EXR: no complete attribute name at byte"},
+  };
+  for (const Case& c : cases) {
+    writeBytes(dir / c.name, c.bytes);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto loaded = loadImage((dir / c.name).string());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_FALSE(loaded.ok()) << c.name;
+    EXPECT_EQ(loaded.error().file, (dir / c.name).string());
+    EXPECT_NE(loaded.error().reason.find(c.reason), std::string::npos)
+        << c.name << ": " << loaded.error().message();
+    EXPECT_LT(seconds, 1.0) << c.name;
+  }
+}
+
 TEST(ImageIo, UnknownExtensionAndBadImagesAreRefused) {
   const auto dir = test::tempDir("badext");
   EXPECT_FALSE(saveImage((dir / "a.bmpx").string(), ImageF(2, 2, 3)).ok());

@@ -207,11 +207,12 @@ TEST_P(MeshBadInput, IsRefusedWithElementAndReason) {
   EXPECT_NE(m.error().reason.find(c.reasonPart), std::string::npos) << m.error().message();
 }
 
-std::string plyHeader(const std::string& format, int vertices, int faces) {
+std::string plyHeader(const std::string& format, int vertices, int faces,
+                      const std::string& indexType = "int") {
   return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " +
          std::to_string(vertices) + "\nproperty float x\nproperty float y\nproperty float z\n" +
-         "element face " + std::to_string(faces) +
-         "\nproperty list uchar int vertex_indices\nend_header\n";
+         "element face " + std::to_string(faces) + "\nproperty list uchar " + indexType +
+         " vertex_indices\nend_header\n";
 }
 std::string binaryTriangle() {
   std::string s;
@@ -268,6 +269,19 @@ INSTANTIATE_TEST_SUITE_P(
                 "out of range"},
         BadMesh{"ply_nan", "f.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",
                 "vertex 1", "non-finite"},
+        // List lengths read as float (fuzz_mesh_ply: a NaN count was converted to an integer).
+        BadMesh{"ply_nan_list_count", "c.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "property float z\nelement extra 1\nproperty list float int junk\nend_header\n"
+                "0 0 0\n1 0 0\n0 1 0\nnan 1 2\n",
+                "extra 0", "bad list length"},
+        BadMesh{"ply_fractional_list_count", "v.ply",
+                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                "property float z\nproperty list float int junk\nend_header\n0 0 0 2.5 1 2\n",
+                "vertex 0", "bad list length"},
+        BadMesh{"ply_nan_index", "x.ply",
+                plyHeader("ascii", 3, 1, "float") + "0 0 0\n1 0 0\n0 1 0\n3 0 nan 2\n", "face 0",
+                "vertex index nan out of range"},
         BadMesh{"unknown_ext", "a.stl", "solid\n", "", "unsupported mesh format"},
         BadMesh{"gltf_not_json", "a.gltf", "{ this is not json", "JSON", "invalid"},
         // A 12-byte buffer whose view claims 36 bytes.
@@ -344,6 +358,19 @@ TEST(Mesh, PlyAsciiAndBinaryAndTristrips) {
   EXPECT_EQ(s->triangles[1], (std::array<uint32_t, 3>{2, 1, 3}));
   // Consistent winding: every triangle faces +z.
   for (size_t t = 0; t < s->triangles.size(); ++t) EXPECT_GT(faceNormal(*s, t).z(), 0.f) << t;
+}
+
+// fuzz_mesh_ply's timeout: an element with no properties and a count of 6e18 was "read" entry by
+// entry. It holds no bytes, so it is skipped whatever it claims.
+TEST(Mesh, PlyElementWithoutPropertiesIsSkipped) {
+  const auto dir = test::tempDir("ply_empty_element");
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement junk 6304763018308164717\nelement vertex 3\n"
+      "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  auto m = loadMesh(writeFile(dir, "e.ply", ply).string());
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  EXPECT_EQ(m->triangles.size(), 1u);
 }
 
 TEST(Mesh, LimitsAreEnforced) {

@@ -10,6 +10,7 @@
 #include "main_window.h"
 #include "render_controller.h"
 #include "viewport.h"
+#include "child_process.h"
 #include "studio_test_support.h"
 
 #include "inlay/engine/pipeline.h"
@@ -24,7 +25,6 @@
 #include <QApplication>
 #include <QLabel>
 #include <QLockFile>
-#include <QProcess>
 #include <QListWidget>
 #include <QMenu>
 #include <QSettings>
@@ -353,11 +353,12 @@ void StudioLiveTest::twoStudiosKeepTheirOwnRecovery() {
   prefix.truncate(prefix.lastIndexOf(QStringLiteral("-recovery-")) + int(qstrlen("-recovery-")));
   const QString deadPath = prefix + QStringLiteral("dead-0.json");
   QVERIFY(QFile::copy(a->autosaver()->scenePath(), deadPath));
-  QProcess dying;
-  dying.start(QCoreApplication::applicationFilePath(),
-              {QStringLiteral("--lock-and-die"), prefix + QStringLiteral("dead-0.lock")});
-  QVERIFY(dying.waitForFinished(30000));
-  QCOMPARE(dying.exitCode(), 0);
+  test::ChildProcess dying;  // a real process (posix_spawn), so under ThreadSanitizer too
+  QVERIFY(dying.start({"--lock-and-die", (prefix + QStringLiteral("dead-0.lock")).toStdString()},
+                      {}, false));
+  QCOMPARE(QString::fromStdString(test::ChildProcess::describe(
+               dying.waitFor(std::chrono::milliseconds(test::waitMs(30000))))),
+           QStringLiteral("exit code 0"));
   QVERIFY(QFile::exists(prefix + QStringLiteral("dead-0.lock")));
   const std::vector<Autosaver::Recovery> offered = Autosaver::pendingAll();
   QCOMPARE(int(offered.size()), 1);

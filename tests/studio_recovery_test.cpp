@@ -1,6 +1,7 @@
 // Never lose work: the studio runs as a child process (this executable with --studio-child,
-// offscreen, the real MainWindow), makes edits, autosaves, and is killed with SIGKILL; then a
-// new window finds the recovery file, offers it, and restores the edits.
+// started with posix_spawn, offscreen, the real MainWindow), makes edits, autosaves, and is
+// killed with SIGKILL while it holds its lock; then a new window finds the recovery file, offers
+// it, and restores the edits.
 #include "autosave.h"
 #include "document.h"
 #include "main_window.h"
@@ -13,7 +14,6 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QMessageBox>
-#include <QProcess>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -22,9 +22,12 @@
 #include <csignal>
 #include <cstdio>
 
+#include "child_process.h"
+
 #include "studio_test_support.h"
 
 using namespace inlay;
+using inlay::test::exampleScene;
 using inlay::test::waitMs;
 using namespace inlay::studio;
 
@@ -34,13 +37,6 @@ void sameSettingsAsTheChild() {
   QStandardPaths::setTestModeEnabled(true);
   QCoreApplication::setOrganizationName(QStringLiteral("InlayTest"));
   QCoreApplication::setApplicationName(QStringLiteral("studio_recovery_test"));
-}
-
-QString exampleScene() {
-  const QString src = qEnvironmentVariable("INLAY_SOURCE_DIR");
-  if (!src.isEmpty() && QFile::exists(src + QStringLiteral("/resources/example/scene.json")))
-    return src + QStringLiteral("/resources/example/scene.json");
-  return QString::fromStdString(exampleScenePath());
 }
 
 // The edits the child makes, so the parent knows what to expect.
@@ -88,32 +84,25 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   Autosaver::discardAll();
   QVERIFY(!Autosaver::pending());
 
-  QProcess child;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-  env.insert(QStringLiteral("INLAY_AUTOSAVE_MS"), QStringLiteral("200"));
-  child.setProcessEnvironment(env);
-  child.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-  child.start(QCoreApplication::applicationFilePath(), {QStringLiteral("--studio-child"), scene});
-  QVERIFY(child.waitForStarted());
-  QByteArray said;
-  QElapsedTimer t;
-  t.start();
-  while (!said.contains('\n') && t.elapsed() < waitMs(180000) &&
-         child.state() == QProcess::Running) {
-    child.waitForReadyRead(200);
-    said += child.readAllStandardOutput();
-  }
+  // The child is a separate process (posix_spawn: fork and exec), so under ThreadSanitizer too.
+  test::ChildProcess child;
+  QVERIFY(child.start({"--studio-child", scene.toStdString()},
+                      {"QT_QPA_PLATFORM=offscreen", "INLAY_AUTOSAVE_MS=200"}, true));
+  const QByteArray said =
+      QByteArray::fromStdString(child.readLine(std::chrono::milliseconds(waitMs(180000))));
   QVERIFY2(said.startsWith("AUTOSAVED"),
-           qPrintable(QStringLiteral("child said '%1', exit code %2")
-                          .arg(QString::fromUtf8(said)).arg(child.exitCode())));
+           qPrintable(QStringLiteral("child said '%1', %2")
+                          .arg(QString::fromUtf8(said),
+                               QString::fromStdString(test::ChildProcess::describe(
+                                   child.waitFor(std::chrono::milliseconds(2000)))))));
   const QList<QByteArray> words = said.trimmed().split(' ');
   const Vec2 movedTo(words[1].toDouble(), words[2].toDouble());
 
-  // --- Kill it hard: no close event, no cleanup ---
-  QVERIFY(::kill(pid_t(child.processId()), SIGKILL) == 0);
-  QVERIFY(child.waitForFinished(waitMs(10000)));
-  QCOMPARE(child.exitStatus(), QProcess::CrashExit);
+  // --- Kill it hard: no close event, no cleanup, its lock still held ---
+  QVERIFY(child.kill(SIGKILL));
+  const std::optional<int> status = child.waitFor(std::chrono::milliseconds(waitMs(10000)));
+  QVERIFY(status.has_value());
+  QVERIFY(WIFSIGNALED(*status) && WTERMSIG(*status) == SIGKILL);
 
   // --- A new studio finds the work and offers it ---
   const std::optional<Autosaver::Recovery> pending = Autosaver::pending();

@@ -151,6 +151,11 @@ MainWindow::~MainWindow() {
   // Stop the render thread before the document it renders goes away.
   delete renderer_;
   renderer_ = nullptr;
+  // The document is deleted with the children, after this destructor: its undo stack's clear()
+  // then emits indexChanged, and a slot of this half-destroyed window would run (UBSan: member
+  // call on an object that is only a QWidget any more). Nothing of the document reaches us now.
+  QObject::disconnect(document_->undoStack(), nullptr, this, nullptr);
+  QObject::disconnect(document_, nullptr, this, nullptr);
 }
 
 void MainWindow::createActions() {

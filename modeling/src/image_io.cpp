@@ -343,6 +343,100 @@ Status checkPng(const std::string& path, const ImageLimits& limits) {
   return checkPngPixels(path, png);
 }
 
+
+// The header's claimed size against the limits: the one message for every format, given before
+// anything is decoded (from the file's own header when we parse it, else from OpenImageIO's).
+Status checkImageSize(const std::string& path, long long width, long long height,
+                      const ImageLimits& limits) {
+  if (width > limits.maxDimension || height > limits.maxDimension ||
+      width * height > limits.maxPixels)
+    return Error{path, "",
+                 "image of " + std::to_string(width) + " x " + std::to_string(height) +
+                     " pixels exceeds the limit (" + std::to_string(limits.maxPixels) +
+                     " pixels, " + std::to_string(limits.maxDimension) + " per side)"};
+  return {};
+}
+
+int32_t littleEndian32(const unsigned char* p) {
+  return int32_t(uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
+                 uint32_t(p[3]) << 24);
+}
+
+// An EXR header's NUL-terminated name (at most 255 bytes); nullopt at the file's end or when no
+// NUL comes. Bytes outside printable ASCII show as '?' (the name goes into a message).
+std::optional<std::string> readExrName(std::FILE* f) {
+  std::string name;
+  for (int c = std::fgetc(f); c != EOF; c = std::fgetc(f)) {
+    if (c == 0) return name;
+    if (name.size() == 255) return std::nullopt;
+    name += (c >= 0x20 && c < 0x7F) ? char(c) : '?';
+  }
+  return std::nullopt;
+}
+
+// An EXR data window (box2i: xMin, yMin, xMax, yMax, inclusive), the next 16 bytes of `f`.
+Status checkExrDataWindow(const std::string& path, std::FILE* f, const ImageLimits& limits) {
+  unsigned char box[16];
+  if (std::fread(box, 1, 16, f) != 16)  // its size was checked against the file's: a disk error
+    return Error{path, "", "cannot read: " + std::string(std::strerror(errno))};
+  const long long w = (long long)littleEndian32(box + 8) - littleEndian32(box) + 1;
+  const long long h = (long long)littleEndian32(box + 12) - littleEndian32(box + 4) + 1;
+  if (w <= 0 || h <= 0) return Error{path, "", "corrupt EXR: empty data window"};
+  return checkImageSize(path, w, h, limits);
+}
+
+// One EXR header (all of it, for each part of a multi-part file): every attribute's claimed size
+// must fit in the file, and a data window must fit the limits. OpenEXR allocates and clears an
+// attribute's claimed size before reading it, so a 517-byte file claiming a 1.6 GB string took
+// seconds and that much memory per load (fuzz_image's slow unit, now in its corpus); a data
+// window sizes OpenEXR's line-offset table before OpenImageIO shows us the header.
+Status checkExrHeader(const std::string& path, std::FILE* f, unsigned long long fileSize,
+                      const ImageLimits& limits) {
+  for (;;) {
+    const long long at = std::ftell(f);
+    const std::optional<std::string> name = readExrName(f);
+    if (!name)
+      return Error{path, "", "truncated or corrupt EXR: no complete attribute name at byte " +
+                                 std::to_string(at)};
+    if (name->empty()) return {};
+    const std::optional<std::string> type = readExrName(f);
+    unsigned char sizeBytes[4];
+    if (!type || std::fread(sizeBytes, 1, 4, f) != 4)
+      return Error{path, "", "truncated or corrupt EXR: attribute '" + *name + "' at byte " +
+                                 std::to_string(at) + " has no complete type and size"};
+    const long long size = littleEndian32(sizeBytes), left = (long long)fileSize - std::ftell(f);
+    if (size < 0 || size > left)
+      return Error{path, "", "corrupt EXR: attribute '" + *name + "' at byte " +
+                                 std::to_string(at) + " claims " + std::to_string(size) +
+                                 " bytes, the file has " + std::to_string(left) + " left"};
+    if (*name == "dataWindow" && *type == "box2i" && size == 16) {
+      if (Status s = checkExrDataWindow(path, f, limits); !s) return s;
+    } else if (std::fseek(f, long(size), SEEK_CUR) != 0) {
+      return Error{path, "", "cannot read: " + std::string(std::strerror(errno))};
+    }
+  }
+}
+
+// An OpenEXR file's headers, checked before OpenEXR sees them (see checkExrHeader). Files that
+// are not EXR pass unchecked.
+Status checkExr(const std::string& path, const ImageLimits& limits) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return Error{path, "", std::string("cannot open: ") + std::strerror(errno)};
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> closer(f, std::fclose);
+  unsigned char head[8];
+  if (std::fread(head, 1, 8, f) != 8 || littleEndian32(head) != 20000630) return {};
+  std::error_code ec;
+  const unsigned long long fileSize = fs::file_size(path, ec);
+  if (ec) return Error{path, "", "cannot read: " + ec.message()};
+  const bool multiPart = (littleEndian32(head + 4) & 0x1000) != 0;
+  for (;;) {
+    if (Status s = checkExrHeader(path, f, fileSize, limits); !s) return s;
+    if (!multiPart) return {};
+    const int next = std::fgetc(f);  // a multi-part file ends its list of headers with a NUL
+    if (next == 0 || next == EOF) return {};
+    std::ungetc(next, f);
+  }
+}
 }  // namespace
 
 std::optional<double> ExifInfo::focalPx(int width, int height) const {
@@ -369,6 +463,7 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
   if (!fs::is_regular_file(path, ec)) return Error{path, "", "not a regular file"};
   if (fs::file_size(path, ec) == 0) return Error{path, "", "empty file"};
   if (Status s = checkPng(path, limits); !s) return s.error();
+  if (Status s = checkExr(path, limits); !s) return s.error();
 
   OIIO::ImageSpec config;
   config.attribute("oiio:UnassociatedAlpha", 1);  // colour as stored, not premultiplied
@@ -379,12 +474,7 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
   // Decompression-bomb guard, from the header alone.
   if (spec.width <= 0 || spec.height <= 0 || spec.depth > 1)
     return Error{path, "", "invalid image dimensions"};
-  if (spec.width > limits.maxDimension || spec.height > limits.maxDimension ||
-      (long long)spec.width * (long long)spec.height > limits.maxPixels)
-    return Error{path, "",
-                 "image of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +
-                     " pixels exceeds the limit (" + std::to_string(limits.maxPixels) +
-                     " pixels, " + std::to_string(limits.maxDimension) + " per side)"};
+  if (Status s = checkImageSize(path, spec.width, spec.height, limits); !s) return s.error();
   if (spec.width < limits.minDimension || spec.height < limits.minDimension)
     return Error{path, "",
                  "image of " + std::to_string(spec.width) + " x " + std::to_string(spec.height) +

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -560,6 +561,20 @@ void checkPlyCounts(const std::vector<PlyElement>& elements, PlyBody::Format for
   }
 }
 
+// A PLY list's length, read as its count type (which may be float): a whole number from 0 to
+// `max`. NaN fails too, before the conversion to an integer (fuzz_mesh_ply's float count).
+int64_t plyListLength(double n, double max, const std::string& where) {
+  if (!(n >= 0 && n <= max) || n != std::floor(n)) fail(where, "bad list length");
+  return int64_t(n);
+}
+
+// A number read from a PLY body, for a message (it may be NaN or beyond any integer).
+std::string plyNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
 TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
   // Header.
   if (data.compare(0, 3, "ply") != 0 || data.size() < 4 || (data[3] != '\n' && data[3] != '\r'))
@@ -627,6 +642,9 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
   bool haveVertices = false;
   for (const PlyElement& e : elements) {
     body.reading(e);
+    // An element without properties holds no bytes, whatever its count: nothing to read (a count
+    // of 6e18 looped for ever, fuzz_mesh_ply's timeout). A vertex element still fails below.
+    if (e.props.empty() && e.name != "vertex") continue;
     const std::string ename = "element '" + e.name + "'";
     if (e.name == "vertex") {
       if (e.count > limits.maxVertices)
@@ -652,9 +670,8 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
         for (size_t k = 0; k < e.props.size(); ++k) {
           const PlyProperty& p = e.props[k];
           if (p.isList) {
-            const double n = body.read(p.countType, where);
-            if (n < 0 || n > 1e6) fail(where, "bad list length");
-            for (int64_t q = 0; q < int64_t(n); ++q) body.read(p.type, where);
+            const int64_t n = plyListLength(body.read(p.countType, where), 1e6, where);
+            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
           } else {
             vals[k] = body.read(p.type, where);
           }
@@ -677,20 +694,19 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
             body.read(p.type, where);
             continue;
           }
-          const double n = body.read(p.countType, where);
-          if (n < 0 || n != std::floor(n) || n > 1e9) fail(where, "bad list length");
+          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
           const bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
           if (!isIndices) {
-            for (int64_t q = 0; q < int64_t(n); ++q) body.read(p.type, where);
+            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
             continue;
           }
           std::vector<int64_t> idx;
-          idx.reserve(size_t(std::min(n, 1e6)));
-          for (int64_t q = 0; q < int64_t(n); ++q) {
+          idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
+          for (int64_t q = 0; q < n; ++q) {
             const double x = body.read(p.type, where);
             if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
                 x >= double(m.positions.size()))
-              fail(where, "vertex index " + std::to_string(int64_t(x)) + " out of range (" +
+              fail(where, "vertex index " + plyNumber(x) + " out of range (" +
                               std::to_string(m.positions.size()) + " vertices)");
             idx.push_back(int64_t(x));
           }
@@ -724,9 +740,8 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
             body.read(p.type, where);
             continue;
           }
-          const double n = body.read(p.countType, where);
-          if (n < 0 || n > 1e9) fail(where, "bad list length");
-          for (int64_t q = 0; q < int64_t(n); ++q) body.read(p.type, where);
+          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
+          for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
         }
     }
   }
