@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <random>
 
 namespace inlay {
 namespace {
@@ -108,6 +109,55 @@ TEST(Decompose, LowersTheObjectiveAndKeepsTheConstraints) {
   EXPECT_FALSE(d->report.empty());
   // Still the checker: close to the truth.
   EXPECT_LT(mae(d->albedo, l.rhoTrue), 0.06);
+}
+
+// Gaussian noise of standard deviation `sigma` added to B (deterministic).
+void addNoise(Layers& l, double sigma, unsigned seed = 3) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> n(0.f, float(sigma));
+  for (float& v : l.B.data) v += n(rng);
+}
+
+// Mean absolute difference between horizontal neighbours of the same checker cell: the noise
+// left in an albedo that should be flat there.
+double roughness(const ImageF& a, int cell) {
+  double s = 0, n = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x + 1 < a.width; ++x)
+      if ((x + 1) % cell != 0)
+        for (int c = 0; c < 3; ++c) s += std::abs(a.at(x + 1, y, c) - a.at(x, y, c)), n += 1;
+  return s / n;
+}
+
+TEST(Decompose, PixelNoiseSigmaMeasuresTheNoiseNotTheEdges) {
+  Layers l = makeLayers(96, 80, 8);
+  // Noise-free: the checker's edges and the smooth shading are not noise.
+  EXPECT_LT(pixelNoiseSigma(l.B, l.valid), 1e-3);
+  addNoise(l, 0.02);
+  EXPECT_NEAR(pixelNoiseSigma(l.B, l.valid), 0.02, 0.003);
+  // Pixels outside `use` do not count; too few pixels give 0.
+  std::vector<uint8_t> none(l.valid.size(), 0);
+  EXPECT_EQ(pixelNoiseSigma(l.B, none), 0.0);
+  EXPECT_EQ(pixelNoiseSigma(ImageF(2, 2, 3, 0.5f), std::vector<uint8_t>(4, 1)), 0.0);
+}
+
+// A grainy photo: counted in units of its own noise, the data terms no longer push the noise
+// into rho (the smooth-D term wants rho Gamma to carry every gradient of B); in fixed 8-bit
+// units they do, and more so the longer the solver runs.
+TEST(Decompose, NoiseUnitsKeepAGrainyPhotosNoiseOutOfTheAlbedo) {
+  Layers l = makeLayers(64, 48, 8);
+  addNoise(l, 0.03);
+  const ImageF rho0 = anchoredRetinex(l);
+  DecomposeOptions fixed, noise;
+  fixed.unitsFromNoise = false;
+  fixed.maxIterations = noise.maxIterations = 200;
+  auto a = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, fixed);
+  auto b = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, noise);
+  ASSERT_TRUE(a && b);
+  expectFeasible(l, *a);
+  expectFeasible(l, *b);
+  EXPECT_LT(roughness(b->albedo, 8), 0.8 * roughness(a->albedo, 8));
+  EXPECT_LT(mae(b->albedo, l.rhoTrue), mae(a->albedo, l.rhoTrue));
 }
 
 TEST(Decompose, ConvergesOnASmallProblemAndSaysSo) {

@@ -108,5 +108,27 @@ TEST(OccluderCard, SoftMatteCastsAShadowOfItsStrength) {
   }
 }
 
+// The lighting stage's RoomTracer stops rays at a card only where its matte covers at least
+// half, as SceneGeometry::intersect does (the floor seen between a table's legs is floor).
+TEST(OccluderCard, RoomTracerFollowsTheMatte) {
+  ImageF half(kW, kH, 1, 0.f);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW / 2; ++x) half.at(x, y) = 1.f;
+  const RenderScene s = sceneWithCard(&half);
+  const Camera& cam = s.camera;
+  const int card = int(s.room.surfaces.size()) - 1;
+  const RoomTracer tracer(s.room);
+  const Ray left = cam.rayThroughPixel(Vec2(0.25 * kW, 0.5 * kH));
+  const Ray right = cam.rayThroughPixel(Vec2(0.75 * kW, 0.5 * kH));
+  const auto hitLeft = tracer.intersect(left), hitRight = tracer.intersect(right);
+  ASSERT_TRUE(hitLeft && hitRight);
+  EXPECT_EQ(hitLeft->surfaceId, card);
+  EXPECT_NE(hitRight->surfaceId, card);
+  // The same for the geometry's own intersect and for shadow (visibility) rays.
+  EXPECT_EQ(s.room.intersect(right)->surfaceId, hitRight->surfaceId);
+  EXPECT_FALSE(tracer.visible(left.origin, left.at(hitLeft->t + 0.5)));
+  EXPECT_TRUE(tracer.visible(right.origin, right.at(hitLeft->t + 0.1)));
+}
+
 }  // namespace
 }  // namespace inlay

@@ -92,6 +92,34 @@ ImageF retinexReflectance(const ImageF& img, const std::vector<uint8_t>& valid,
   return out;
 }
 
+double pixelNoiseSigma(const ImageF& img, const std::vector<uint8_t>& use) {
+  const int W = img.width, H = img.height;
+  if (W < 3 || H < 3 || img.channels < 3 || use.size() != img.pixelCount()) return 0;
+  std::vector<std::vector<float>> rows(static_cast<size_t>(H));
+  forRows(H, [&](int y) {
+    if (y == 0 || y + 1 == H) return;
+    for (int x = 1; x + 1 < W; ++x) {
+      bool all = true;
+      for (int dy = -1; dy <= 1 && all; ++dy)
+        for (int dx = -1; dx <= 1 && all; ++dx) all = use[size_t(y + dy) * W + x + dx] != 0;
+      if (!all) continue;
+      for (int c = 0; c < 3; ++c) {
+        // [1 -2 1; -2 4 -2; 1 -2 1]: zero on planes, sqrt(36) times the noise on white noise.
+        const auto v = [&](int dx, int dy) { return img.at(x + dx, y + dy, c); };
+        const float r = v(-1, -1) + v(1, -1) + v(-1, 1) + v(1, 1) -
+                        2 * (v(0, -1) + v(-1, 0) + v(1, 0) + v(0, 1)) + 4 * v(0, 0);
+        if (std::isfinite(r)) rows[size_t(y)].push_back(std::abs(r));
+      }
+    }
+  });
+  std::vector<float> all;
+  for (auto& r : rows) all.insert(all.end(), r.begin(), r.end());
+  if (all.size() < 16 * 3) return 0;
+  // The median: edges (a minority of pixels) do not count as noise.
+  std::nth_element(all.begin(), all.begin() + long(all.size() / 2), all.end());
+  return double(all[all.size() / 2]) / (0.6745 * 6);
+}
+
 namespace {
 
 // The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
@@ -129,7 +157,15 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
   }
   if (!(opt.unitsPerWhite > 0) || !std::isfinite(opt.unitsPerWhite))
     return Error{"", "options.unitsPerWhite", "must be a positive number"};
-  kappa /= opt.unitsPerWhite;
+  double units = opt.unitsPerWhite;
+  if (opt.unitsFromNoise) {
+    // Noise of the measured pixels only: clipped ones are flat at the clip level.
+    std::vector<uint8_t> measured(valid);
+    for (size_t i = 0; i < N && !clipped.empty(); ++i) measured[i] = measured[i] && !clipped[i];
+    const double sigma = pixelNoiseSigma(photo, measured) / kappa;  // in the photo's units
+    if (sigma > 0 && std::isfinite(sigma)) units = std::min(units, 1 / sigma);
+  }
+  kappa /= units;
   const float invK = float(1 / kappa);
 
   // Per channel planes (row-major, W x H).

@@ -78,6 +78,46 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
   return out;
 }
 
+// W x H: 1 where the photo is clipped (or not finite) inside a sun's beam (E of sun k at
+// E[idx * (J + K) + J + k] above 0.05, the fit's own test).
+std::vector<uint8_t> clippedPixelsInSunBeams(const ImageF& photo, const std::vector<double>& E,
+                                             size_t J, size_t K, double saturatedAbove) {
+  const size_t N = photo.pixelCount(), C = J + K;
+  std::vector<uint8_t> out(N, 0);
+  for (size_t idx = 0; idx < N; ++idx) {
+    const float* p = photo.data.data() + idx * size_t(photo.channels);
+    const bool clipped = !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) ||
+                         std::max({p[0], p[1], p[2]}) >= float(saturatedAbove);
+    if (!clipped) continue;
+    for (size_t k = 0; k < K && !out[idx]; ++k) out[idx] = E[idx * C + J + k] > 0.05;
+  }
+  return out;
+}
+
+// The radiance the fitted model gives the clipped sunlit pixels: the surface's albedo times
+// (lights + suns + the gathered light), at least the photo's clipped value.
+template <class PixelSurfaceT>
+std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<uint8_t>& inBeam,
+                                        const std::vector<PixelSurfaceT>& ps,
+                                        const std::vector<Vec3>& rho, const ImageF& gathered,
+                                        const std::vector<double>& E,
+                                        const std::vector<AreaLight>& lights,
+                                        const std::vector<SunLight>& suns) {
+  const size_t N = photo.pixelCount(), J = lights.size(), C = J + suns.size();
+  std::vector<Vec3> out(N, Vec3::Zero());
+  for (size_t idx = 0; idx < N; ++idx) {
+    if (!inBeam[idx] || ps[idx].surface < 0) continue;
+    const int x = int(idx % size_t(photo.width)), y = int(idx / size_t(photo.width));
+    Vec3 irradiance = gathered.rgb(x, y);
+    for (size_t j = 0; j < J; ++j) irradiance += lights[j].radiance * E[idx * C + j];
+    for (size_t k = 0; k < suns.size(); ++k) irradiance += suns[k].irradianceOverPi * E[idx * C + J + k];
+    const Vec3 b = photo.rgb(x, y);
+    const Vec3 predicted = rho[size_t(ps[idx].surface)].cwiseProduct(irradiance);
+    out[idx] = b.allFinite() ? Vec3(predicted.cwiseMax(b)) : predicted;
+  }
+  return out;
+}
+
 }  // namespace
 
 Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
@@ -248,6 +288,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // Gain already given to clipped pixels' radiance (after the first fit): radianceAt returns
   // b (1 + gain) there, so the second pass predicts the unseen parts with the fitted light.
   std::array<double, 3> clippedGainApplied = {0, 0, 0};
+  // Clipped pixels inside a sun's beam (a sunlit patch): the model predicts their radiance, so
+  // they take that prediction (at least the clip level) instead of the gain fitted to the
+  // clipped pixels no light explains (a window's sky, a lamp), which is far brighter.
+  std::vector<uint8_t> clippedInBeam;  // W x H, filled once the suns' E is known
+  std::vector<Vec3> beamRadiance;      // W x H, the prediction (pass 2; the photo in pass 1)
 
   // Radiance leaving a room point toward another, read from the photo where the camera sees it.
   auto radianceAt = [&](const SurfaceHit& h, uint32_t sampleId) -> Vec3 {
@@ -259,6 +304,9 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
                                             0.02 * p.depth + 1e-3) {
           const Vec3 b = photo.rgb(x, y);
+          const size_t idx = size_t(y) * W + x;
+          if (!isLight(x, y) && b.allFinite() && !clippedInBeam.empty() && clippedInBeam[idx])
+            return beamRadiance.empty() ? b : beamRadiance[idx];
           if (!isLight(x, y) && b.allFinite())
             return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0],
                                                               1 + clippedGainApplied[1],
@@ -292,6 +340,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     if (!px) return Vec3::Zero();
     const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
     if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y) || !saturated(x, y)) return Vec3::Zero();
+    if (!clippedInBeam.empty() && clippedInBeam[size_t(y) * W + x]) return Vec3::Zero();
     const auto& p = ps[size_t(y) * W + x];
     if (p.surface != h.surfaceId ||
         !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3))
@@ -401,6 +450,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         }
     });
   if (stop()) return cancelled();
+  if (K > 0) clippedInBeam = clippedPixelsInSunBeams(photo, E, J, K, opt.saturatedAbove);
 
   auto gatherAll = [&] {
     parallelFor(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
@@ -627,6 +677,9 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       weight[s] = n[s] > 0 ? 1.0 : 0.0;
     }
     model.rho = albedoOfUnseen(geometry, fitted, weight);
+    if (!clippedInBeam.empty())
+      beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
+                                           out.lights, out.suns);
     model.lights.clear();
     for (const auto& l : out.lights) model.lights.push_back(l.radiance);
     for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);

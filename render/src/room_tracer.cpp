@@ -19,6 +19,7 @@ struct RoomTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   std::vector<TriangleMesh> meshes;  // per surface id, world space (for normals)
+  std::vector<std::shared_ptr<const CardAlpha>> cards;  // the mattes the filters read
 
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
@@ -26,12 +27,42 @@ struct RoomTracer::Impl {
   }
 };
 
+namespace {
+
+// An occluder card stops a ray where its matte covers at least half (alpha >= 0.5) and lets it
+// pass elsewhere, as SceneGeometry::intersect does: the card stands for the object's silhouette,
+// not for its bounding box (the floor seen between a table's legs is floor, and lit as floor).
+// Deterministic, unlike the renderer's stochastic test: the lighting stage must give the same
+// result on every run.
+void cardMatteFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] != -1) continue;
+    const Vec3 o(RTCRayN_org_x(args->ray, args->N, k), RTCRayN_org_y(args->ray, args->N, k),
+                 RTCRayN_org_z(args->ray, args->N, k));
+    const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
+                   RTCRayN_dir_z(args->ray, args->N, k));
+    const double t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
+    if (card->alphaAt(o + t * dir) < 0.5) args->valid[k] = 0;
+  }
+}
+
+}  // namespace
+
 RoomTracer::RoomTracer(const SceneGeometry& room) : impl_(std::make_unique<Impl>()) {
   impl_->device = newDevice();
   impl_->scene = rtcNewScene(impl_->device);
   for (size_t i = 0; i < room.surfaces.size(); ++i) {
-    impl_->meshes.push_back(room.surfaces[i].meshWorld);
-    attachTriangles(impl_->device, impl_->scene, unsigned(i), room.surfaces[i].meshWorld);
+    const Surface& surf = room.surfaces[i];
+    impl_->meshes.push_back(surf.meshWorld);
+    if (!attachTriangles(impl_->device, impl_->scene, unsigned(i), surf.meshWorld)) continue;
+    if (surf.kind != SurfaceKind::OccluderCard || !surf.cardAlpha) continue;
+    impl_->cards.push_back(surf.cardAlpha);
+    RTCGeometry g = rtcGetGeometry(impl_->scene, unsigned(i));
+    rtcSetGeometryUserData(g, const_cast<CardAlpha*>(surf.cardAlpha.get()));
+    rtcSetGeometryIntersectFilterFunction(g, cardMatteFilter);
+    rtcSetGeometryOccludedFilterFunction(g, cardMatteFilter);
+    rtcCommitGeometry(g);
   }
   rtcCommitScene(impl_->scene);
 }

@@ -49,10 +49,15 @@ struct DecomposeOptions {
   double c = 0.15;   // mask threshold on |grad B|^2, B in the photo's linear units (white 1)
   // Units of B and Gamma in the objective: the L1 term is scale-free in rho, the quadratic ones
   // grow with the square of the photo's units, so the units set how much the prior may
-  // override the data. Default: 8-bit code units of the linear photo (white = 255), where the
-  // prior acts at the photo's quantisation level and keeps real reflectance edges.
+  // override the data. With `unitsFromNoise`, B is counted in standard deviations of the
+  // photo's own pixel noise (pixelNoiseSigma over the valid, unclipped pixels), at most
+  // `unitsPerWhite` per white: the data terms then weigh a change of the layers by how far it
+  // stands above the noise, so the noise of a grainy photo is not pushed into rho by the
+  // smoothness of D (what made more iterations worse), while a clean photo keeps the
+  // quantisation level as its unit. Default cap: 8-bit code units (white = 255).
   // normaliseByMeanGamma: divide by the mean gathered irradiance first (exposure-invariant).
   double unitsPerWhite = 255;
+  bool unitsFromNoise = true;
   bool normaliseByMeanGamma = false;
   // The solver stops on convergence or at the iteration cap, never on the clock, so a photo
   // and geometry give the same albedo bit for bit on every run and machine load. The cap keeps
@@ -73,6 +78,13 @@ struct DecomposeOptions {
   int historyEvery = 10;  // record objective and residuals every n iterations (and the last)
   const CancelToken* cancel = nullptr;
 };
+
+// Standard deviation of the pixel noise of `image` (linear units, its first three channels
+// pooled): the median absolute response of the 3 x 3 second-difference operator of Immerkaer
+// (1996, "Fast noise variance estimation") over pixels whose 3 x 3 neighbourhood is all in
+// `use`, as a Gaussian's (the median keeps reflectance edges, a minority, out of it). 0 when
+// fewer than 16 such pixels.
+double pixelNoiseSigma(const ImageF& image, const std::vector<uint8_t>& use);
 
 struct DecomposeSample {
   double seconds = 0;
