@@ -39,6 +39,19 @@ bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const Tr
 // Adds a two-triangle quad as geometry `geomId`.
 void attachQuad(RTCDevice device, RTCScene scene, unsigned geomId, const std::array<Vec3, 4>& c);
 
+// Ray k of a filter function's packet: its origin, direction and the candidate hit's distance.
+struct FilterRay {
+  Vec3 org, dir;
+  float t;
+  Vec3 hitPoint() const { return org + double(t) * dir; }
+};
+inline FilterRay filterRay(const RTCFilterFunctionNArguments* args, unsigned k) {
+  const unsigned n = args->N;
+  return {Vec3(RTCRayN_org_x(args->ray, n, k), RTCRayN_org_y(args->ray, n, k), RTCRayN_org_z(args->ray, n, k)),
+          Vec3(RTCRayN_dir_x(args->ray, n, k), RTCRayN_dir_y(args->ray, n, k), RTCRayN_dir_z(args->ray, n, k)),
+          RTCRayN_tfar(args->ray, n, k)};
+}
+
 inline RTCRayHit makeRayHit(const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
   RTCRayHit rh;
   rh.ray.org_x = float(origin.x());

@@ -827,14 +827,10 @@ void cardShadowFilter(const RTCFilterFunctionNArguments* args) {
   const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
   for (unsigned k = 0; k < args->N; ++k) {
     if (args->valid[k] != -1) continue;
-    const Vec3 o(RTCRayN_org_x(args->ray, args->N, k), RTCRayN_org_y(args->ray, args->N, k),
-                 RTCRayN_org_z(args->ray, args->N, k));
-    const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
-                   RTCRayN_dir_z(args->ray, args->N, k));
-    const float t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
-    const float org[3] = {float(o.x()), float(o.y()), float(o.z())};
-    const float dirf[3] = {float(dir.x()), float(dir.y()), float(dir.z())};
-    if (shadowAlphaNumber(org, dirf, t) >= card->alphaAt(o + double(t) * dir)) args->valid[k] = 0;
+    const FilterRay r = filterRay(args, k);
+    const float org[3] = {float(r.org.x()), float(r.org.y()), float(r.org.z())};
+    const float dir[3] = {float(r.dir.x()), float(r.dir.y()), float(r.dir.z())};
+    if (shadowAlphaNumber(org, dir, r.t) >= card->alphaAt(r.hitPoint())) args->valid[k] = 0;
   }
 }
 }  // namespace

@@ -38,12 +38,7 @@ void cardMatteFilter(const RTCFilterFunctionNArguments* args) {
   const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
   for (unsigned k = 0; k < args->N; ++k) {
     if (args->valid[k] != -1) continue;
-    const Vec3 o(RTCRayN_org_x(args->ray, args->N, k), RTCRayN_org_y(args->ray, args->N, k),
-                 RTCRayN_org_z(args->ray, args->N, k));
-    const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
-                   RTCRayN_dir_z(args->ray, args->N, k));
-    const double t = RTCRayN_tfar(args->ray, args->N, k);  // the candidate hit's distance
-    if (card->alphaAt(o + t * dir) < 0.5) args->valid[k] = 0;
+    if (card->alphaAt(filterRay(args, k).hitPoint()) < 0.5) args->valid[k] = 0;
   }
 }
 
