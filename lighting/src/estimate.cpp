@@ -78,22 +78,6 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
   return out;
 }
 
-// W x H: 1 where the photo is clipped (or not finite) inside a sun's beam (E of sun k at
-// E[idx * (J + K) + J + k] above 0.05, the fit's own test).
-std::vector<uint8_t> clippedPixelsInSunBeams(const ImageF& photo, const std::vector<double>& E,
-                                             size_t J, size_t K, double saturatedAbove) {
-  const size_t N = photo.pixelCount(), C = J + K;
-  std::vector<uint8_t> out(N, 0);
-  for (size_t idx = 0; idx < N; ++idx) {
-    const float* p = photo.data.data() + idx * size_t(photo.channels);
-    const bool clipped = !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) ||
-                         std::max({p[0], p[1], p[2]}) >= float(saturatedAbove);
-    if (!clipped) continue;
-    for (size_t k = 0; k < K && !out[idx]; ++k) out[idx] = E[idx * C + J + k] > 0.05;
-  }
-  return out;
-}
-
 // The radiance the fitted model gives the clipped sunlit pixels: the surface's albedo times
 // (lights + suns + the gathered light), at least the photo's clipped value.
 template <class PixelSurfaceT>
@@ -450,7 +434,20 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         }
     });
   if (stop()) return cancelled();
-  if (K > 0) clippedInBeam = clippedPixelsInSunBeams(photo, E, J, K, opt.saturatedAbove);
+  // A pixel inside a sun's beam: the sun's unit irradiance there above 0.05.
+  auto inSunBeam = [&](size_t idx) {
+    for (size_t k = 0; k < K; ++k)
+      if (E[idx * C + J + k] > 0.05) return true;
+    return false;
+  };
+  if (K > 0) {
+    clippedInBeam.assign(size_t(W) * H, 0);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const size_t idx = size_t(y) * W + x;
+        clippedInBeam[idx] = saturated(x, y) && inSunBeam(idx);
+      }
+  }
 
   auto gatherAll = [&] {
     parallelFor(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
@@ -504,11 +501,6 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // should be as flat within a surface as the lights and Gamma allow (robust to texture).
   // Clipped pixels count only inside a sun's beam (as lower bounds): elsewhere a clipped
   // pixel is a window or a lamp that no light here explains.
-  auto inSunBeam = [&](size_t idx) {
-    for (size_t k = 0; k < K; ++k)
-      if (E[idx * C + J + k] > 0.05) return true;
-    return false;
-  };
   std::vector<size_t> candidates;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
