@@ -244,8 +244,7 @@ TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {
   DifferentialBuffers b(w, h);
   ASSERT_TRUE(tracer.render(b, 0, 128, 11));
   const ImageF with = b.meanWith();
-  double sumRel = 0, sumRel2 = 0;
-  int n = 0;
+  test::RelativeError err;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       // Compare only pixels whose whole footprint lands on the floor: its four corners.
@@ -262,12 +261,11 @@ TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {
       const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
       const double expected = albedo * p.le * rectFormFactor(q.x(), q.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
       if (expected < 0.005) continue;  // the far floor: relative noise too high to compare
-      const double rel = with.at(x, y, 0) / expected - 1;
-      sumRel += rel, sumRel2 += rel * rel, ++n;
+      err.add(with.at(x, y, 0), expected);
     }
-  ASSERT_GT(n, 200);
-  const double bias = sumRel / n, rms = std::sqrt(sumRel2 / n);
-  std::printf("[ plane ] path tracer, maxDepth 1, 128 spp: %d floor px, mean rel err %+.4f, rms %.4f\n", n,
+  ASSERT_GT(err.n, 200);
+  const double bias = err.mean(), rms = err.rms();
+  std::printf("[ plane ] path tracer, maxDepth 1, 128 spp: %d floor px, mean rel err %+.4f, rms %.4f\n", err.n,
               bias, rms);
   // Pixel-footprint averaging of a smooth function: the mean over pixels stays unbiased to 1%.
   EXPECT_LT(std::abs(bias), 0.01);
@@ -315,8 +313,7 @@ TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
   DifferentialBuffers b(w, h);
   ASSERT_TRUE(tracer.render(b, 0, 64, 5));
   const ImageF with = b.meanWith();
-  double sumRel = 0, sumRel2 = 0;
-  int n = 0;
+  test::RelativeError err;
   for (int y = h / 2; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
@@ -325,14 +322,13 @@ TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
       if (!(q.x() > -1.9 && q.x() < 1.9 && q.z() > -3.9)) continue;
       const double expected = albedo * 3.0 * polygonFormFactor(q, Vec3(0, 1, 0), light.cornersWorld);
       if (expected < 0.005) continue;
-      const double rel = with.at(x, y, 0) / expected - 1;
-      sumRel += rel, sumRel2 += rel * rel, ++n;
+      err.add(with.at(x, y, 0), expected);
     }
-  ASSERT_GT(n, 200);
-  std::printf("[ plane ] trapezoid, path tracer 64 spp: %d px, mean rel err %+.4f, rms %.4f\n", n, sumRel / n,
-              std::sqrt(sumRel2 / n));
-  EXPECT_LT(std::abs(sumRel / n), 0.01);
-  EXPECT_LT(std::sqrt(sumRel2 / n), 0.05);
+  ASSERT_GT(err.n, 200);
+  std::printf("[ plane ] trapezoid, path tracer 64 spp: %d px, mean rel err %+.4f, rms %.4f\n", err.n, err.mean(),
+              err.rms());
+  EXPECT_LT(std::abs(err.mean()), 0.01);
+  EXPECT_LT(err.rms(), 0.05);
 }
 
 // A scaled diffuse sphere (instance with scale) on the floor under a ceiling light, direct
@@ -359,8 +355,7 @@ TEST(DiffuseSphere, DirectLightMatchesRoomTracerPerPixel) {
   ASSERT_TRUE(tracer.render(b, 0, 64, 4));
   const ImageF with = b.meanWith(), mask = b.meanMask();
   const RoomTracer room(s.room);
-  double sumRel = 0, sumRel2 = 0;
-  int n = 0;
+  test::RelativeError err;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       if (mask.at(x, y) != 1.f) continue;
@@ -372,14 +367,13 @@ TEST(DiffuseSphere, DirectLightMatchesRoomTracerPerPixel) {
       const double expected =
           albedo * le * room.unitLightIrradianceOverPi(s.lights[0], p + 1e-4 * nrm, nrm, 1024, 1);
       if (expected < 0.05) continue;  // the dim side: relative noise too high
-      const double rel = with.at(x, y, 0) / expected - 1;
-      sumRel += rel, sumRel2 += rel * rel, ++n;
+      err.add(with.at(x, y, 0), expected);
     }
-  ASSERT_GT(n, 30);
-  std::printf("[ sphere ] direct light on a scaled sphere: %d px, mean rel err %+.4f, rms %.4f\n", n, sumRel / n,
-              std::sqrt(sumRel2 / n));
-  EXPECT_LT(std::abs(sumRel / n), 0.02);
-  EXPECT_LT(std::sqrt(sumRel2 / n), 0.08);
+  ASSERT_GT(err.n, 30);
+  std::printf("[ sphere ] direct light on a scaled sphere: %d px, mean rel err %+.4f, rms %.4f\n", err.n,
+              err.mean(), err.rms());
+  EXPECT_LT(std::abs(err.mean()), 0.02);
+  EXPECT_LT(err.rms(), 0.08);
 }
 
 // A mirror (an object quad facing the camera) reflecting a large light behind the camera:

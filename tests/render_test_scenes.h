@@ -126,4 +126,16 @@ inline bool allFinite(const ImageF& im) {
   return true;
 }
 
+// Relative error of rendered pixels against an analytic value: its mean (the bias) and its RMS.
+struct RelativeError {
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  void add(double got, double expected) {
+    const double rel = got / expected - 1;
+    sum += rel, sum2 += rel * rel, ++n;
+  }
+  double mean() const { return sum / n; }
+  double rms() const { return std::sqrt(sum2 / n); }
+};
+
 }  // namespace inlay::test
