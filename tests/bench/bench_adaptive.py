@@ -50,10 +50,7 @@ def cpu_of_children():
 
 
 def main():
-    a = benchlib.args(__doc__)
-    cli = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    cli, opt, out = benchlib.command_line(__doc__)
     budgets = [float(b) for b in opt("--budgets", "8,24").split(",")]
     ways = opt("--ways", ",".join(WAYS)).split(",")
     noise = opt("--noise", "0.004")

@@ -33,10 +33,7 @@ def run(cmd):
 
 
 def main():
-    a = benchlib.args(__doc__)
-    cli = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    cli, opt, out = benchlib.command_line(__doc__)
     budgets = [int(x) for x in opt("--budgets", "1,10,30,100,200,400").split(",")]
     shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
     sdir = os.path.join(shared, "scenes")

@@ -54,10 +54,7 @@ def tonemap(x):
 
 
 def main():
-    a = benchlib.args(__doc__)
-    build = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    build, opt, out = benchlib.command_line(__doc__)
     scenes = opt("--scenes", "d1,d2,d3,d5").split(",")
     w, h = [int(v) for v in opt("--size", "160x120").split("x")]
     spp, threads, blender = int(opt("--spp", "256")), int(opt("--threads", "2")), opt("--blender", "blender")

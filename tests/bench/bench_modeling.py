@@ -24,10 +24,7 @@ import benchlib  # noqa: E402
 
 
 def main():
-    a = benchlib.args(__doc__)
-    build = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    build, opt, out = benchlib.command_line(__doc__)
     repeat = opt("--repeat", "50")
     seconds = opt("--seconds", "40")
     shared = os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
@@ -145,7 +142,7 @@ def main():
                                  "load_avg_1min": round(os.getloadavg()[0], 1),
                                  "segment_ms": round(r.get("segment_ms", -1), 1),
                                  "matte_ms": round(r.get("matte_ms", -1), 1), "error": r.get("error", "")})
-        if "--render" in a:
+        if "--render" in sys.argv[1:]:
             rdir = os.path.join(out, name + "_render")
             res = subprocess.run([sys.executable, harness, "run", scene, os.path.join(build, "app"), rdir,
                                   "--mode", "assisted", "--seconds", seconds], capture_output=True, text=True)

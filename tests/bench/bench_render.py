@@ -52,11 +52,9 @@ def time_to(points, target):
 
 
 def main():
-    a = benchlib.args(__doc__)
-    build = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
+    build, opt, out = benchlib.command_line(__doc__)
     room = opt("--room", "d1")
-    out = os.path.join(os.path.abspath(opt("--out", os.path.join(HERE, "out"))), "render_" + room)
+    out = os.path.join(out, "render_" + room)
     w, h = opt("--size", "96x72").split("x")
     if not os.path.isdir(os.path.join(SHARED, "scenes")):
         print("skipped: ../shared/scenes not present")

@@ -19,10 +19,7 @@ import benchlib  # noqa: E402
 
 
 def main():
-    a = benchlib.args(__doc__)
-    cli = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    cli, opt, out = benchlib.command_line(__doc__)
     budgets = [float(x) for x in opt("--budgets", "2,4,8,16,32").split(",")]
     repeat = int(opt("--repeat", "1"))
     mode = opt("--mode", "assisted")

@@ -18,6 +18,14 @@ def args(doc, positional=1):
     return a
 
 
+def command_line(doc):
+    """What most scripts start with: (their first argument as an absolute path, opt(key, default)
+    for their options, the output folder given by --out, by default out/ beside them)."""
+    a = args(doc)
+    opt = lambda key, default: option(a, key, default)
+    return os.path.abspath(a[0]), opt, os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+
+
 @contextlib.contextmanager
 def figure(path, *grid, **kw):
     """The axes of a figure (plt.subplots(*grid, **kw)) written to `path` when the block ends;
