@@ -4,6 +4,8 @@
 // report when the solver stops early.
 #include "inlay/lighting/decompose.h"
 
+#include "decompose_layers.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -13,28 +15,8 @@
 namespace inlay {
 namespace {
 
-// A checker reflectance (two colours) under smooth shading; Gamma a smooth fraction of it.
-struct Layers {
-  ImageF B, gamma, rhoTrue;
-  std::vector<uint8_t> valid, clipped;
-};
-
-Layers makeLayers(int W, int H, int cell = 8) {
-  Layers l{ImageF(W, H, 3), ImageF(W, H, 3), ImageF(W, H, 3),
-           std::vector<uint8_t>(size_t(W) * H, 1), std::vector<uint8_t>(size_t(W) * H, 0)};
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const bool odd = ((x / cell) + (y / cell)) & 1;
-      const Vec3 rho = odd ? Vec3(0.7, 0.6, 0.5) : Vec3(0.3, 0.35, 0.4);
-      const double u = double(x) / W, v = double(y) / H;
-      const double direct = 0.4 + 0.3 * std::exp(-4 * ((u - 0.4) * (u - 0.4) + (v - 0.3) * (v - 0.3)));
-      const double gamma = 0.2 + 0.1 * u;
-      l.rhoTrue.setRgb(x, y, rho);
-      l.gamma.setRgb(x, y, Vec3::Constant(gamma));
-      l.B.setRgb(x, y, rho * (direct + gamma));
-    }
-  return l;
-}
+using test::Layers;
+using test::makeLayers;
 
 // 0 <= rho <= 1; where B is not clipped rho * Gamma <= B and D = B - rho * Gamma >= 0.
 void expectFeasible(const Layers& l, const Decomposition& d, double tol = 1e-6) {

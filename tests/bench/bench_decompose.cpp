@@ -11,6 +11,8 @@
 #include "inlay/lighting/decompose.h"
 #include "inlay/lighting/poisson.h"
 
+#include "../decompose_layers.h"
+
 #include <sys/resource.h>
 #include <tbb/global_control.h>
 
@@ -68,19 +70,10 @@ int main(int argc, char** argv) {
               "peak_rss_mb,poisson_mg_s,poisson_dct_s,poisson_max_diff\n");
   for (auto [W, H] : sizes) {
     const int cell = std::max(4, W / 16);
-    ImageF B(W, H, 3), G(W, H, 3), truth(W, H, 3);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const bool odd = ((x / cell) + (y / cell)) & 1;
-        const Vec3 rho = odd ? Vec3(0.7, 0.6, 0.5) : Vec3(0.3, 0.35, 0.4);
-        const double u = double(x) / W, v = double(y) / H;
-        const double direct = 0.4 + 0.3 * std::exp(-4 * ((u - 0.4) * (u - 0.4) + (v - 0.3) * (v - 0.3)));
-        const double gamma = 0.2 + 0.1 * u;
-        truth.setRgb(x, y, rho);
-        G.setRgb(x, y, Vec3::Constant(gamma));
-        B.setRgb(x, y, rho * (direct + gamma));
-      }
-    std::vector<uint8_t> valid(size_t(W) * H, 1), clipped;
+    const test::Layers l = test::makeLayers(W, H, cell);
+    const ImageF &B = l.B, &G = l.gamma, &truth = l.rhoTrue;
+    const std::vector<uint8_t>& valid = l.valid;
+    const std::vector<uint8_t> clipped;  // none
     auto t0 = std::chrono::steady_clock::now();
     ImageF rho0 = retinexReflectance(B, valid);
     const double retinexS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
