@@ -23,8 +23,9 @@ struct DetectedLines {
 unsigned char srgbCode8(float linear);
 
 // Grey (luminance, sRGB-encoded) at a long side of at most maxWorkingSidePx, area-averaged
-// without ever holding a full-size grey copy; then OpenCV's FastLineDetector. At most
-// maxSegments segments (the longest). Returns nothing when `cancel` stops it.
+// without ever holding a full-size grey copy; then OpenCV's FastLineDetector, each segment
+// moved onto the gradient peaks across it (sub-pixel). At most maxSegments segments (the
+// longest). Returns nothing when `cancel` stops it.
 DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, int maxSegments,
                                  const CancelToken* cancel);
 

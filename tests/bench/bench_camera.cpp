@@ -2,7 +2,7 @@
 //
 // usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets 5,15,30,60,120,240,480]
 //                     [--default-budget 120] [--gt-segments] [--no-exif] [--principal-sigma S]
-//                     [--known-principal] [--known-focal] [--reps N] [--dump DIR]
+//                     [--known-principal] [--known-focal] [--reps N] [--dump DIR] [--seed K]
 // Writes OUT/camera_bench.csv (one row per image and search budget) and
 // OUT/camera_bench_summary.json; plot with bench_camera_plot.py. --known-principal gives the
 // estimator the truth's principal point, --known-focal its focal length as a prior of 1e-4 log-sigma
@@ -13,7 +13,9 @@
 // EXIF focal length is the prior, as `inlay-cli estimate` does (--no-exif: the 60 degree prior).
 // Times: the estimator alone (not the JPEG decode), wall time of the fastest of --reps runs per
 // budget (ms) and that run's CPU time (cpu_ms: what one idle core would take, however loaded the
-// machine is); run with OPENCV_FOR_THREADS_NUM=1 (and taskset -c 0) for one core.
+// machine is); run with OPENCV_FOR_THREADS_NUM=1 (and taskset -c 0) for one core. --seed K: the
+// hypothesis search's seed (EstimateOptions::seed); the York AUC moves by about +-0.005 with it,
+// so compare settings over several seeds.
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image.h"
 #include "inlay/modeling/image_io.h"
@@ -188,6 +190,7 @@ int main(int argc, char** argv) {
   bool knownPrincipal = false;  // diagnosis only: the truth's principal point given
   bool knownFocal = false;      // diagnosis only: the truth's focal length as a tight prior
   int reps = 3;
+  uint32_t seed = EstimateOptions{}.seed;
   std::string dumpDir;  // per image and budget: the estimate's segments and camera (JSON)
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -204,9 +207,11 @@ int main(int argc, char** argv) {
     else if (a == "--known-focal") knownFocal = true;
     else if (a == "--reps") reps = std::max(1, std::stoi(next()));
     else if (a == "--dump") dumpDir = next();
+    else if (a == "--seed") seed = uint32_t(std::stoul(next()));
     else {
       std::cerr << "usage: bench_camera [--york DIR] [--scenes DIR] [--out DIR] [--budgets a,b,c] "
-                   "[--default-budget N] [--gt-segments] [--no-exif] [--principal-sigma S]\n";
+                   "[--default-budget N] [--gt-segments] [--no-exif] [--principal-sigma S] "
+                   "[--known-principal] [--known-focal] [--reps N] [--dump DIR] [--seed K]\n";
       return 2;
     }
   }
@@ -222,6 +227,7 @@ int main(int argc, char** argv) {
     for (int b : budgets) {
       EstimateOptions o;
       o.searchIterations = b;
+      o.seed = seed;
       o.principalSigma = principalSigma;
       if (knownPrincipal) o.principalPx = t.pp;
       if (useExif) o.priorFocalPx = li.exif.focalPx(im.width, im.height);
@@ -384,6 +390,7 @@ int main(int argc, char** argv) {
   summary["default_budget"] = defaultBudget;
   summary["exif_prior"] = useExif;
   summary["gt_segments"] = gtSegments;
+  summary["seed"] = seed;
   std::ofstream(fs::path(out) / "camera_bench_summary.json") << summary.dump(1) << "\n";
   std::cout << summary.dump(1) << "\n";
   return 0;
