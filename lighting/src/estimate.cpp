@@ -291,9 +291,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // clipped pixels no light explains (a window's sky, a lamp), which is far brighter.
   std::vector<uint8_t> clippedInBeam;  // W x H, filled once the suns' E is known
   std::vector<Vec3> beamRadiance;      // W x H, the prediction (pass 2; the photo in pass 1)
-  // Pass 2 gathers the suns' share of those pixels apart (sunBounceAt), per unit strength, so
-  // that the fit ties the light the sunlit patch bounces onto the walls to the sun's strength:
-  // radianceAt then gives them only the rest (beamRadianceNoSun).
+  // Pass 2's fit gathers the suns' share of those pixels, and of the beam where the camera does
+  // not see it, apart (sunBounceAt), per unit strength and albedo, so that it ties the light the
+  // sunlit patch bounces onto the walls to the sun's strength: radianceAt then gives those pixels
+  // only the rest (beamRadianceNoSun) and unseen points no sunlight.
   bool sunApart = false;
   std::vector<Vec3> beamRadianceNoSun;
 
