@@ -42,7 +42,7 @@ const char* kFullScene = R"({
   "layout": { "back_wall_px": [[100, 50], [400, 52], [398, 300], [102, 298]] },
   "lights": [
     { "kind": "polygon_px", "points": [[200, 10], [300, 10], [300, 40], [200, 40]],
-      "lock": true, "weights": { "position": 50, "intensity": 0.5 } },
+      "lock": true, "refine_size": true, "weights": { "position": 50, "intensity": 0.5, "size": 3 } },
     { "kind": "rect_m", "corners": [[-1, 2.5, -3], [1, 2.5, -3], [1, 2.5, -2], [-1, 2.5, -2]],
       "rgb": [5, 4.5, 4], "refine": false }
   ],
@@ -96,6 +96,8 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
     EXPECT_EQ(a.lights[i].lock, b.lights[i].lock);
     EXPECT_EQ(a.lights[i].positionWeight, b.lights[i].positionWeight);
     EXPECT_EQ(a.lights[i].intensityWeight, b.lights[i].intensityWeight);
+    EXPECT_EQ(a.lights[i].refineSize, b.lights[i].refineSize);
+    EXPECT_EQ(a.lights[i].sizeWeight, b.lights[i].sizeWeight);
   }
   ASSERT_EQ(a.shafts.size(), b.shafts.size());
   for (size_t i = 0; i < a.shafts.size(); ++i) {
@@ -164,6 +166,10 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_TRUE(d.lights[0].lock);
   EXPECT_EQ(d.lights[0].positionWeight, 50);
   EXPECT_EQ(d.lights[0].intensityWeight, 0.5);
+  EXPECT_TRUE(d.lights[0].refineSize);
+  EXPECT_EQ(d.lights[0].sizeWeight, 3);
+  EXPECT_FALSE(d.lights[1].refineSize);
+  EXPECT_EQ(d.lights[1].sizeWeight, 10);
   EXPECT_FALSE(d.lights[1].lock);
   EXPECT_EQ(d.lights[1].positionWeight, 10);
   EXPECT_EQ(d.lights[1].intensityWeight, 1);
@@ -428,6 +434,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "lights[0].lock", "expected true or false"},
         BadCase{"light_weight_negative", ", \"lights\": [{" + kPolygon + R"(, "weights": {"position": -1}}])",
                 "lights[0].weights.position", ">= 0"},
+        BadCase{"light_size_weight_negative", ", \"lights\": [{" + kPolygon + R"(, "weights": {"size": -2}}])",
+                "lights[0].weights.size", ">= 0"},
+        BadCase{"light_refine_size_not_bool", ", \"lights\": [{" + kPolygon + R"(, "refine_size": 1}])",
+                "lights[0].refine_size", "expected true or false"},
         BadCase{"light_weight_nan", ", \"lights\": [{" + kPolygon + R"(, "weights": {"intensity": "a"}}])",
                 "lights[0].weights.intensity", "expected a number"},
         BadCase{"light_weights_not_object", ", \"lights\": [{" + kPolygon + R"(, "weights": [1, 2]}])",

@@ -31,20 +31,30 @@ struct PixelSurface {
 
 double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
 
+// The light a sun's clipped sunlit patch on one surface bounces to a pixel: sun strength x the
+// patch surface's albedo x `g` (the gathered irradiance / pi of that patch under a unit sun and
+// unit albedo). `rhoBlock` and `sunBlock` index the residual's parameter blocks.
+struct BounceTerm {
+  int rhoBlock = 0, sunBlock = 0;
+  double g = 0;
+};
+
 // The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
 // A clipped pixel (lowerBoundOnly) only says the prediction reaches the clip level.
 struct LogResidual {
   LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false,
-              double gammaClipped = -1)
+              double gammaClipped = -1, std::vector<BounceTerm> bounce = {})
       : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly),
-        gammaClipped(gammaClipped) {}
+        gammaClipped(gammaClipped), bounce(std::move(bounce)) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
     // params[0]: rho (1), params[1..]: light radiance channel (1 each), then (when
-    // gammaClipped >= 0) the extra gain of the light gathered from clipped pixels.
+    // gammaClipped >= 0) the extra gain of the light gathered from clipped pixels, then the
+    // albedos of the sunlit patches' surfaces other than this pixel's.
     T shading = T(gamma);
     for (size_t j = 0; j < e.size(); ++j) shading += params[1 + j][0] * T(e[j]);
     if (gammaClipped >= 0) shading += params[1 + e.size()][0] * T(gammaClipped);
+    for (const BounceTerm& t : bounce) shading += params[t.sunBlock][0] * params[t.rhoBlock][0] * T(t.g);
     residual[0] = T(logB) - log(params[0][0]) - log(shading + T(1e-9));
     if (lowerBoundOnly && residual[0] < T(0)) residual[0] = T(0);
     return true;
@@ -53,6 +63,7 @@ struct LogResidual {
   std::vector<double> e;
   bool lowerBoundOnly;
   double gammaClipped;
+  std::vector<BounceTerm> bounce;
 };
 
 // Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls and
@@ -79,14 +90,16 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
 }
 
 // The radiance the fitted model gives the clipped sunlit pixels: the surface's albedo times
-// (lights + suns + the gathered light), at least the photo's clipped value.
+// (lights + the gathered light [+ suns]). With the suns, at least the photo's clipped value;
+// without them, the part that does not scale with the suns' strength (the fit gathers the
+// suns' part apart, per unit strength).
 template <class PixelSurfaceT>
 std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<uint8_t>& inBeam,
                                         const std::vector<PixelSurfaceT>& ps,
                                         const std::vector<Vec3>& rho, const ImageF& gathered,
                                         const std::vector<double>& E,
                                         const std::vector<AreaLight>& lights,
-                                        const std::vector<SunLight>& suns) {
+                                        const std::vector<SunLight>& suns, bool withSuns) {
   const size_t N = photo.pixelCount(), J = lights.size(), C = J + suns.size();
   std::vector<Vec3> out(N, Vec3::Zero());
   for (size_t idx = 0; idx < N; ++idx) {
@@ -94,10 +107,11 @@ std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<u
     const int x = int(idx % size_t(photo.width)), y = int(idx / size_t(photo.width));
     Vec3 irradiance = gathered.rgb(x, y);
     for (size_t j = 0; j < J; ++j) irradiance += lights[j].radiance * E[idx * C + j];
-    for (size_t k = 0; k < suns.size(); ++k) irradiance += suns[k].irradianceOverPi * E[idx * C + J + k];
+    for (size_t k = 0; k < suns.size() && withSuns; ++k)
+      irradiance += suns[k].irradianceOverPi * E[idx * C + J + k];
     const Vec3 b = photo.rgb(x, y);
     const Vec3 predicted = rho[size_t(ps[idx].surface)].cwiseProduct(irradiance);
-    out[idx] = b.allFinite() ? Vec3(predicted.cwiseMax(b)) : predicted;
+    out[idx] = b.allFinite() && withSuns ? Vec3(predicted.cwiseMax(b)) : predicted;
   }
   return out;
 }
@@ -277,27 +291,41 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // clipped pixels no light explains (a window's sky, a lamp), which is far brighter.
   std::vector<uint8_t> clippedInBeam;  // W x H, filled once the suns' E is known
   std::vector<Vec3> beamRadiance;      // W x H, the prediction (pass 2; the photo in pass 1)
+  // Pass 2's fit gathers the suns' share of those pixels, and of the beam where the camera does
+  // not see it, apart (sunBounceAt), per unit strength and albedo, so that it ties the light the
+  // sunlit patch bounces onto the walls to the sun's strength: radianceAt then gives those pixels
+  // only the rest (beamRadianceNoSun) and unseen points no sunlight.
+  bool sunApart = false;
+  std::vector<Vec3> beamRadianceNoSun;
 
+  // The pixel showing room point `h` when the photo tells its radiance there (the camera sees
+  // that point, not a light outline, finite), else -1.
+  auto seenPixel = [&](const SurfaceHit& h) -> long {
+    const auto px = camera.project(h.pointWorld);
+    if (!px) return -1;
+    const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
+    if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y)) return -1;
+    const size_t idx = size_t(y) * W + x;
+    const auto& p = ps[idx];
+    if (p.surface != h.surfaceId ||
+        !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3) ||
+        !photo.rgb(x, y).allFinite())
+      return -1;
+    return long(idx);
+  };
   // Radiance leaving a room point toward another, read from the photo where the camera sees it.
   auto radianceAt = [&](const SurfaceHit& h, uint32_t sampleId) -> Vec3 {
-    const auto px = camera.project(h.pointWorld);
-    if (px) {
-      const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
-      if (x >= 0 && y >= 0 && x < W && y < H) {
-        const auto& p = ps[size_t(y) * W + x];
-        if (p.surface == h.surfaceId && std::abs(p.depth - camera.depthOf(h.pointWorld)) <
-                                            0.02 * p.depth + 1e-3) {
-          const Vec3 b = photo.rgb(x, y);
-          const size_t idx = size_t(y) * W + x;
-          if (!isLight(x, y) && b.allFinite() && !clippedInBeam.empty() && clippedInBeam[idx])
-            return beamRadiance.empty() ? b : beamRadiance[idx];
-          if (!isLight(x, y) && b.allFinite())
-            return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0],
-                                                              1 + clippedGainApplied[1],
-                                                              1 + clippedGainApplied[2])))
-                                   : b;
-        }
+    if (const long seen = seenPixel(h); seen >= 0) {
+      const size_t idx = size_t(seen);
+      const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
+      const Vec3 b = photo.rgb(x, y);
+      if (!clippedInBeam.empty() && clippedInBeam[idx]) {
+        if (sunApart) return beamRadianceNoSun[idx];
+        return beamRadiance.empty() ? b : beamRadiance[idx];
       }
+      return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0], 1 + clippedGainApplied[1],
+                                                        1 + clippedGainApplied[2])))
+                             : b;
     }
     if (!model.active) return surfaceRadiance[h.surfaceId];
     // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
@@ -308,7 +336,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       irradiance += model.lights[j] *
                     tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
                                                      h.normalWorld, 1, sampleId * 31u + uint32_t(j));
-    for (size_t k = 0; k < K; ++k)
+    for (size_t k = 0; k < K && !sunApart; ++k)
       irradiance += model.lights[J + k] *
                     unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
                                             h.normalWorld);
@@ -320,17 +348,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // is gathered apart and the fit gives it an extra gain k (Gamma + k Gamma_clipped), with the
   // clipped radiance's total factor 1 + k at least 1. The second pass starts from the first's.
   auto clippedRadianceAt = [&](const SurfaceHit& h, uint32_t) -> Vec3 {
-    const auto px = camera.project(h.pointWorld);
-    if (!px) return Vec3::Zero();
-    const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
-    if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y) || !saturated(x, y)) return Vec3::Zero();
-    if (!clippedInBeam.empty() && clippedInBeam[size_t(y) * W + x]) return Vec3::Zero();
-    const auto& p = ps[size_t(y) * W + x];
-    if (p.surface != h.surfaceId ||
-        !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3))
-      return Vec3::Zero();
-    const Vec3 b = photo.rgb(x, y);
-    return b.allFinite() ? b : Vec3::Zero();
+    const long seen = seenPixel(h);
+    if (seen < 0) return Vec3::Zero();
+    const int x = int(seen % W), y = int(seen / W);
+    if (!saturated(x, y) || (!clippedInBeam.empty() && clippedInBeam[size_t(seen)])) return Vec3::Zero();
+    return photo.rgb(x, y);
   };
   size_t clippedRoomPixels = 0, roomPixels = 0;
   for (int y = 0; y < H; ++y)
@@ -345,21 +367,10 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // 3. Gamma and E_j on a coarse grid, then spread to every pixel of the same surface.
   const int stride = std::max(1, opt.gatherStride);
   const int GW = (W + stride - 1) / stride, GH = (H + stride - 1) / stride;
-  std::vector<Vec3> gridGamma(size_t(GW) * GH, Vec3::Zero()), gridClipped(gridGamma);
   std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
   std::vector<int> gridSurface(size_t(GW) * GH, -1);
   std::vector<Vec2> gridPixel(size_t(GW) * GH);
   int gatherSamples = opt.gatherSamples;
-  auto gatherAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
-    return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, pixelId, opt.seed,
-                                  radianceAt)
-        .mean;
-  };
-  auto gatherClippedAt = [&](const PixelSurface& p, uint32_t pixelId) -> Vec3 {
-    return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, pixelId, opt.seed,
-                                  clippedRadianceAt)
-        .mean;
-  };
   auto lightE = [&](const PixelSurface& p, size_t j, uint32_t id) {
     return tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
                                             opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
@@ -449,31 +460,69 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       }
   }
 
-  auto gatherAll = [&] {
-    parallelFor(tbb::blocked_range<size_t>(0, gridGamma.size()), [&](const tbb::blocked_range<size_t>& r) {
+  // Radiance of `surface` under sun k at unit strength and unit albedo where the photo does not
+  // tell it: its clipped sunlit pixels (the sun's irradiance there) and what the camera does not
+  // see (the sun's irradiance at the hit). The fit multiplies in the sun and the albedo.
+  auto sunBounceAt = [&](size_t k, int surface) {
+    return [&, k, surface](const SurfaceHit& h, uint32_t) -> Vec3 {
+      if (h.surfaceId != surface) return Vec3::Zero();
+      if (const long seen = seenPixel(h); seen >= 0)
+        return clippedInBeam[size_t(seen)] ? Vec3::Constant(E[size_t(seen) * C + J + k]) : Vec3::Zero();
+      return Vec3::Constant(unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
+                                                    h.normalWorld));
+    };
+  };
+  // Pass 2's bounce terms: (sun, patch surface) pairs and their gathered g (W x H, one channel).
+  struct SunPatch {
+    size_t sun = 0;
+    int surface = 0;
+    ImageF g;
+  };
+  std::vector<SunPatch> sunPatches;
+  // The light `radiance` sends to every pixel: gathered on the grid, spread to the pixels.
+  auto gatherImage = [&](const RadianceAt& radiance) {
+    auto gatherAt = [&](int x, int y) {
+      const auto& p = ps[size_t(y) * W + x];
+      return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, uint32_t(y * W + x),
+                                    opt.seed, radiance)
+          .mean;
+    };
+    std::vector<Vec3> grid(gridSurface.size(), Vec3::Zero());
+    parallelFor(tbb::blocked_range<size_t>(0, grid.size()), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t g = r.begin(); g < r.end(); ++g) {
         if (stop()) return;
-        if (gridSurface[g] < 0) continue;
-        const int x = int(gridPixel[g].x()), y = int(gridPixel[g].y());
-        gridGamma[g] = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
-        if (fitClipped) gridClipped[g] = gatherClippedAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+        if (gridSurface[g] >= 0) grid[g] = gatherAt(int(gridPixel[g].x()), int(gridPixel[g].y()));
       }
     });
-    out.gathered = ImageF(W, H, 3, 0.f);
-    spread(3, [&](size_t g, int d) { return gridGamma[g][d]; },
-           [&](int x, int y, const double* v) { out.gathered.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
+    ImageF image(W, H, 3, 0.f);
+    spread(3, [&](size_t g, int d) { return grid[g][d]; },
+           [&](int x, int y, const double* v) { image.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
            [&](int x, int y, double* v) {
-             const Vec3 g = gatherAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
+             const Vec3 g = gatherAt(x, y);
              v[0] = g[0], v[1] = g[1], v[2] = g[2];
            });
-    if (!fitClipped) return;
-    gatheredClipped = ImageF(W, H, 3, 0.f);
-    spread(3, [&](size_t g, int d) { return gridClipped[g][d]; },
-           [&](int x, int y, const double* v) { gatheredClipped.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
-           [&](int x, int y, double* v) {
-             const Vec3 g = gatherClippedAt(ps[size_t(y) * W + x], uint32_t(y * W + x));
-             v[0] = g[0], v[1] = g[1], v[2] = g[2];
-           });
+    return image;
+  };
+  auto gatherAll = [&] {
+    out.gathered = gatherImage(radianceAt);
+    if (fitClipped) gatheredClipped = gatherImage(clippedRadianceAt);
+    sunPatches.clear();
+    if (!sunApart) return;
+    // The surfaces each sun lights: where it clips in the photo, and where its beam meets a
+    // patch of the room (seen or not).
+    std::vector<uint8_t> patchOn(S * K, 0);
+    for (size_t idx = 0; idx < clippedInBeam.size(); ++idx)
+      if (clippedInBeam[idx] && ps[idx].surface >= 0)
+        for (size_t k = 0; k < K; ++k)
+          if (E[idx * C + J + k] > 0) patchOn[size_t(ps[idx].surface) * K + k] = 1;
+    const SurfacePatches& P = model.patches;
+    for (size_t i = 0; i < P.point.size(); ++i)
+      for (size_t k = 0; k < K; ++k)
+        if (unitSunIrradianceOverPi(tracer, geometry, suns[k], P.point[i] + 1e-4 * P.normal[i], P.normal[i]) > 0)
+          patchOn[size_t(P.surface[i]) * K + k] = 1;
+    for (size_t k = 0; k < K; ++k)
+      for (size_t s = 0; s < S; ++s)
+        if (patchOn[s * K + k]) sunPatches.push_back({k, int(s), gatherImage(sunBounceAt(k, int(s)))});
   };
 
   // The light gathered at every patch of the room (radiosity by Jacobi sweeps from the surface
@@ -558,19 +607,27 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         std::vector<double> e(C);
         for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
         const double b = photo.at(x, y, c);
+        std::vector<double*> blocks{&rho[s][c]};
+        for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
+        if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
+        // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
+        std::vector<BounceTerm> bounce;
+        for (const SunPatch& sp : sunPatches) {
+          BounceTerm t;
+          t.g = sp.g.at(x, y, 0);
+          if (!(t.g > 0)) continue;
+          t.sunBlock = int(1 + J + sp.sun);
+          t.rhoBlock = 0;
+          if (sp.surface != s) {
+            t.rhoBlock = int(blocks.size());
+            blocks.push_back(&rho[size_t(sp.surface)][c]);
+          }
+          bounce.push_back(t);
+        }
         auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
             std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove,
-            fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0));
-        std::vector<double*> blocks{&rho[s][c]};
-        f->AddParameterBlock(1);
-        for (size_t j = 0; j < C; ++j) {
-          f->AddParameterBlock(1);
-          blocks.push_back(&L[j][c]);
-        }
-        if (fitClipped) {
-          f->AddParameterBlock(1);
-          blocks.push_back(&clippedGain[size_t(c)]);
-        }
+            fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)));
+        for (size_t k = 0; k < blocks.size(); ++k) f->AddParameterBlock(1);
         f->SetNumResiduals(1);
         problem.AddResidualBlock(f, new ceres::CauchyLoss(0.15), blocks);
       }
@@ -612,6 +669,15 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       if (!r.allFinite()) r = Vec3::Zero();
       out.suns[k].irradianceOverPi = r.cwiseMax(0.0);
     }
+    // The suns' bounce at the fitted strengths and albedos joins the gathered light.
+    out.sunBounce.assign(sunPatches.empty() ? 0 : K, ImageF(W, H, 3, 0.f));
+    for (const SunPatch& sp : sunPatches)
+      for (size_t i = 0; i < out.gathered.data.size(); ++i) {
+        const int c = int(i % 3);
+        const float v = float(rho[size_t(sp.surface)][size_t(c)]) * sp.g.data[i];
+        out.sunBounce[sp.sun].data[i] += v;
+        out.gathered.data[i] += float(out.suns[sp.sun].irradianceOverPi[c]) * v;
+      }
     if (fitClipped) {
       for (size_t c = 0; c < 3; ++c)
         if (!std::isfinite(clippedGain[c])) clippedGain[c] = 0;
@@ -641,10 +707,11 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     gatherSamples = gatherSamplesForNoise(tracer, pilot, opt.seed, radianceAt, go);
   }
   out.gatherSamples = gatherSamples;
-  for (int pass = 0; pass < 2; ++pass) {
+  const int passes = 2;
+  for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
     if (stop() || !fit()) return cancelled();
-    if (pass == 1) break;
+    if (pass == passes - 1) break;
     model.active = true;
     for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
     model.rho.assign(S, Vec3::Zero());
@@ -669,13 +736,19 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       weight[s] = n[s] > 0 ? 1.0 : 0.0;
     }
     model.rho = albedoOfUnseen(geometry, fitted, weight);
-    if (!clippedInBeam.empty())
+    if (!clippedInBeam.empty()) {
       beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
-                                           out.lights, out.suns);
+                                           out.lights, out.suns, true);
+      beamRadianceNoSun = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered,
+                                                E, out.lights, out.suns, false);
+    }
     model.lights.clear();
     for (const auto& l : out.lights) model.lights.push_back(l.radiance);
     for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
     gatherUnseenPatches();
+    // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun
+    // part apart.
+    sunApart = K > 0;
   }
 
   // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
@@ -820,6 +893,44 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
   out.surfaceMeanAlbedo = albedoOfUnseen(geometry, meanSeen, albedoCount);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+ImageF radianceForBounces(const ImageF& photo, const Camera& camera, const SceneGeometry& geometry,
+                          const LightingEstimate& lighting, double saturatedAbove) {
+  ImageF out = photo;
+  const int W = photo.width, H = photo.height;
+  if (lighting.suns.empty() || photo.channels < 3 || lighting.albedo.width != W || lighting.albedo.height != H ||
+      lighting.gathered.width != W || lighting.gathered.height != H)
+    return out;
+  const RoomTracer tracer(geometry);
+  // The light fit's albedo: at clipped pixels its surface's, fitted with the suns' strengths
+  // (their product is what the unclipped room determines).
+  const bool physical = lighting.physicalAlbedo.width == W && lighting.physicalAlbedo.height == H;
+  const ImageF& rho = physical ? lighting.physicalAlbedo : lighting.albedo;
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const Vec3 b = photo.rgb(x, y);
+        if (!b.allFinite() || b.maxCoeff() < saturatedAbove) continue;
+        const auto h = tracer.intersect(camera.rayThroughPixel(Vec2((x + 0.5) * camera.widthPx / W,
+                                                                    (y + 0.5) * camera.heightPx / H)),
+                                        1e-6);
+        if (!h) continue;
+        const Vec3 p = h->pointWorld + 1e-5 * h->normalWorld;
+        Vec3 sunlight = Vec3::Zero();
+        for (const SunLight& sun : lighting.suns)
+          sunlight += sun.irradianceOverPi * unitSunIrradianceOverPi(tracer, geometry, sun, p, h->normalWorld);
+        if (!(sunlight.maxCoeff() > 0)) continue;  // clipped but no sun: a window or a lamp
+        Vec3 irradiance = lighting.gathered.rgb(x, y) + sunlight;
+        for (size_t j = 0; j < lighting.lights.size(); ++j)
+          irradiance += lighting.lights[j].radiance *
+                        tracer.unitLightIrradianceOverPi(lighting.lights[j], p, h->normalWorld, 16,
+                                                         uint32_t(y * W + x) * 31u + uint32_t(j));
+        const Vec3 predicted = rho.rgb(x, y).cwiseProduct(irradiance);
+        if (predicted.allFinite()) out.setRgb(x, y, predicted.cwiseMax(b));
+      }
+  });
   return out;
 }
 

@@ -22,6 +22,7 @@ using Clock = std::chrono::steady_clock;
 
 // One pixel of the reduced grid: the room point it shows and what the photo says there.
 struct GridPixel {
+  int x = 0, y = 0;  // in the direct-light image
   Vec3 point, normal;
   Vec3 rho, target;
   double weight = 0;  // alpha_i / Z
@@ -34,14 +35,43 @@ struct FreeLight {
   Vec3 lo, hi;            // bounds of the normalised centre
   Vec3 start;             // normalised centre at the start (after moving it into the room)
   std::vector<int> fixedAxes;
+  bool size = false;      // its two edge lengths are parameters too (LightRefineSpec::refineSize)
+  double logScaleBound = 0;  // |log scale| <= this
+  int dims() const { return size ? 5 : 3; }
+  double lower(int a) const { return a < 3 ? lo[a] : -logScaleBound; }
+  double upper(int a) const { return a < 3 ? hi[a] : logScaleBound; }
+  double startOf(int a) const { return a < 3 ? start[a] : 0.0; }
 };
+
+// A free light's parameters: normalised centre, and log scale factors of its two edges (zero
+// unless its size is refined).
+struct Pose {
+  Vec3 centre = Vec3::Zero();
+  Vec2 logScale = Vec2::Zero();
+  double operator[](int a) const { return a < 3 ? centre[a] : logScale[a - 3]; }
+  double& operator[](int a) { return a < 3 ? centre[a] : logScale[a - 3]; }
+};
+
+// Light `L` moved to centre `centre` with its edges scaled by exp(logScale): the offsets of its
+// corners from its centre along its first edge by the first factor, the rest by the second.
+AreaLight posedLight(const AreaLight& L, const Vec3& centre, const Vec2& logScale) {
+  AreaLight out = L;
+  const Vec3 c = L.centre();
+  const Vec3 u = (L.cornersWorld[1] - L.cornersWorld[0]).normalized();
+  const double su = std::exp(logScale[0]), sv = std::exp(logScale[1]);
+  for (size_t i = 0; i < 4; ++i) {
+    const Vec3 d = L.cornersWorld[i] - c, du = d.dot(u) * u;
+    out.cornersWorld[i] = centre + su * du + sv * (d - du);
+  }
+  return out;
+}
 
 // The refinement problem: positions in, residuals out (intensities solved inside).
 class Refinement {
  public:
   Refinement(const RoomTracer& tracer, std::vector<GridPixel> px, std::vector<AreaLight> lights,
              const std::vector<LightRefineSpec>& specs, std::vector<SunLight> suns,
-             std::vector<std::vector<double>> sunE, const LightRefineOptions& opt, Vec3 boxLo,
+             std::vector<std::vector<Vec3>> sunE, const LightRefineOptions& opt, Vec3 boxLo,
              Vec3 boxSize)
       : tracer_(tracer), px_(std::move(px)), lights_(std::move(lights)), specs_(specs),
         suns_(std::move(suns)), sunE_(std::move(sunE)), opt_(opt), boxLo_(boxLo), boxSize_(boxSize) {
@@ -54,12 +84,22 @@ class Refinement {
       scale_.push_back(std::max(s.maxCoeff(), 1e-9) * opt_.intensityRange);
       start_.push_back(s);
     }
-    // Locked lights do not move: their light is a constant part of the render. So are the
-    // suns: their patches are mostly clipped in the photo, which says little about them in
-    // linear terms (the estimate's log fit takes clipped pixels as lower bounds).
+    unknownAreaLights_ = unknownLights_.size();
+    // Suns: their strength is unknown too (unless opt.refineSuns is off); only their direction
+    // and beam are given. Their direct patch is mostly clipped, but they light the rest of the
+    // room by that patch's bounce (sunE includes it), which the photo does show.
+    for (size_t k = 0; k < suns_.size() && opt_.refineSuns; ++k) {
+      unknownLights_.push_back(int(J + k));
+      const Vec3 s = suns_[k].irradianceOverPi.cwiseMax(0.0);
+      scale_.push_back(std::max(s.maxCoeff(), 1e-9) * opt_.intensityRange);
+      start_.push_back(s);
+    }
+    // Locked lights do not move: their light is a constant part of the render (so are the
+    // suns when their strength is kept).
     fixed_.assign(px_.size(), Vec3::Zero());
-    for (size_t k = 0; k < suns_.size(); ++k)
-      for (size_t i = 0; i < px_.size(); ++i) fixed_[i] += sunE_[k][i] * suns_[k].irradianceOverPi.cwiseMax(0.0);
+    for (size_t k = 0; k < suns_.size() && !opt_.refineSuns; ++k)
+      for (size_t i = 0; i < px_.size(); ++i)
+        fixed_[i] += sunE_[k][i].cwiseProduct(suns_[k].irradianceOverPi.cwiseMax(0.0));
     for (size_t j = 0; j < J; ++j)
       if (specs_[j].lock) {
         const auto& e = irradiance(int(j), lights_[j].centre());
@@ -68,7 +108,11 @@ class Refinement {
   }
 
   size_t unknownCount() const { return unknownLights_.size(); }
-  size_t residualCount(size_t movable) const { return 3 * px_.size() + 3 * movable + 3 * unknownCount(); }
+  size_t residualCount() const {
+    size_t n = 3 * px_.size() + 3 * unknownCount();
+    for (const FreeLight& f : free_) n += size_t(f.dims());
+    return n;
+  }
   int evaluations() const { return evaluations_; }
   size_t lightCount() const { return lights_.size(); }
   // Data weights become alpha_i / Z.
@@ -82,13 +126,17 @@ class Refinement {
       const auto& e = irradiance(int(j), lights_[j].centre());
       for (size_t i = 0; i < px_.size(); ++i) shading[i] += e[i] * lights_[j].radiance;
     }
+    for (size_t k = 0; k < suns_.size(); ++k)
+      for (size_t i = 0; i < px_.size(); ++i) shading[i] += sunE_[k][i].cwiseProduct(suns_[k].irradianceOverPi);
     double z = 0;
     for (size_t i = 0; i < px_.size(); ++i) z += px_[i].weight * px_[i].rho.cwiseProduct(shading[i]).squaredNorm();
     return z;
   }
   Vec3 startCentre(int j) const { return lights_[size_t(j)].centre(); }
-  // The light whose intensity is unknown u.
+  // The light whose intensity is unknown u: area lights 0..J-1, then suns J + k.
   size_t unknownTarget(size_t u) const { return size_t(unknownLights_[u]); }
+  // Whether unknown u is a sun's strength.
+  bool unknownIsSun(size_t u) const { return u >= unknownAreaLights_; }
 
   Vec3 centreOf(const Vec3& normalised) const { return boxLo_ + normalised.cwiseProduct(boxSize_); }
   Vec3 normalisedOf(const Vec3& centre) const { return (centre - boxLo_).cwiseQuotient(boxSize_); }
@@ -96,20 +144,19 @@ class Refinement {
   // E of light j (unit radiance) at every grid pixel with its centre at `centre`; the last
   // position per light is cached (Ceres asks for the Jacobian where it evaluated last).
   // Two positions per light are kept: a rejected trial step does not evict the current point.
-  const std::vector<double>& irradiance(int j, const Vec3& centre) {
+  const std::vector<double>& irradiance(int j, const Vec3& centre, const Vec2& logScale = Vec2::Zero()) {
     auto& slots = cache_[size_t(j)];
     for (auto& s : slots)
-      if (s.centre == centre) return s.E;
+      if (s.centre == centre && s.logScale == logScale) return s.E;
     slots[1] = std::move(slots[0]);
-    slots[0].E = irradianceUncached(j, centre);
+    slots[0].E = irradianceUncached(j, centre, logScale);
     slots[0].centre = centre;
+    slots[0].logScale = logScale;
     return slots[0].E;
   }
 
-  std::vector<double> irradianceUncached(int j, const Vec3& centre) {
-    AreaLight L = lights_[size_t(j)];
-    const Vec3 shift = centre - L.centre();
-    for (auto& c : L.cornersWorld) c += shift;
+  std::vector<double> irradianceUncached(int j, const Vec3& centre, const Vec2& logScale = Vec2::Zero()) {
+    const AreaLight L = posedLight(lights_[size_t(j)], centre, logScale);
     std::vector<double> e(px_.size(), 0.0);
     parallelFor(tbb::blocked_range<size_t>(0, px_.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t i = r.begin(); i < r.end(); ++i) {
@@ -126,10 +173,14 @@ class Refinement {
   // intensities by NNLS, then the weighted data residuals and the priors. `radiance` receives
   // the solved intensities of the unlocked lights when not null.
   void residuals(const std::vector<const std::vector<double>*>& lightE,
-                 const std::vector<Vec3>& normalisedCentres, double* r,
+                 const std::vector<Pose>& poses, double* r,
                  std::vector<Vec3>* radiance = nullptr) const {
     const size_t U = unknownCount(), N = px_.size();
-    auto column = [&](size_t u) -> const std::vector<double>& { return *lightE[size_t(unknownLights_[u])]; };
+    // Unit shading of unknown u at pixel i, channel c.
+    auto column = [&](size_t u, size_t i, int c) {
+      const size_t t = unknownTarget(u);
+      return unknownIsSun(u) ? sunE_[t - lights_.size()][i][c] : (*lightE[t])[i];
+    };
     std::vector<Vec3> L(U, Vec3::Zero());
     for (int c = 0; c < 3; ++c) {
       std::vector<double> M(U * U, 0.0), q(U, 0.0);
@@ -137,10 +188,10 @@ class Refinement {
         const GridPixel& p = px_[i];
         const double b = p.target[c] - p.rho[c] * fixed_[i][c];
         for (size_t u = 0; u < U; ++u) {
-          const double au = p.rho[c] * column(u)[i];
+          const double au = p.rho[c] * column(u, i, c);
           if (au == 0) continue;
           q[u] += p.weight * au * b;
-          for (size_t v = u; v < U; ++v) M[u * U + v] += p.weight * au * p.rho[c] * column(v)[i];
+          for (size_t v = u; v < U; ++v) M[u * U + v] += p.weight * au * p.rho[c] * column(v, i, c);
         }
       }
       for (size_t u = 0; u < U; ++u) {
@@ -157,13 +208,18 @@ class Refinement {
     for (size_t i = 0; i < N; ++i) {
       const GridPixel& p = px_[i];
       Vec3 shading = fixed_[i];
-      for (size_t u = 0; u < U; ++u) shading += column(u)[i] * L[u];
+      for (size_t u = 0; u < U; ++u)
+        for (int c = 0; c < 3; ++c) shading[c] += column(u, i, c) * L[u][c];
       const double sw = std::sqrt(p.weight);
       for (int c = 0; c < 3; ++c) r[k++] = sw * (p.rho[c] * shading[c] - p.target[c]);
     }
     for (size_t m = 0; m < free_.size(); ++m) {
-      const double sw = std::sqrt(opt_.prior * specs_[size_t(free_[m].index)].positionWeight);
-      for (int a = 0; a < 3; ++a) r[k++] = sw * (normalisedCentres[m][a] - free_[m].start[a]);
+      const LightRefineSpec& spec = specs_[size_t(free_[m].index)];
+      const double sw = std::sqrt(opt_.prior * spec.positionWeight);
+      for (int a = 0; a < 3; ++a) r[k++] = sw * (poses[m].centre[a] - free_[m].start[a]);
+      // The size prior: w_size |log scale|^2 (a halving costs as much as a doubling).
+      if (free_[m].size)
+        for (int a = 0; a < 2; ++a) r[k++] = std::sqrt(opt_.prior * spec.sizeWeight) * poses[m].logScale[a];
     }
     for (size_t u = 0; u < U; ++u) {
       const double sw = std::sqrt(opt_.prior * intensityWeight(u)) / scaleOf(u);
@@ -175,7 +231,9 @@ class Refinement {
   std::vector<FreeLight> free_;  // lights whose positions are parameters (set by the caller)
 
  private:
-  double intensityWeight(size_t u) const { return specs_[unknownTarget(u)].intensityWeight; }
+  double intensityWeight(size_t u) const {
+    return unknownIsSun(u) ? opt_.sunIntensityWeight : specs_[unknownTarget(u)].intensityWeight;
+  }
   const Vec3& startOf(size_t u) const { return start_[unknownTarget(u)]; }
   // scale_ and start_ are indexed by light; unknown u maps through unknownTarget.
   double scaleOf(size_t u) const { return scale_[unknownTarget(u)]; }
@@ -185,11 +243,13 @@ class Refinement {
   std::vector<AreaLight> lights_;
   const std::vector<LightRefineSpec>& specs_;
   std::vector<SunLight> suns_;
-  std::vector<std::vector<double>> sunE_;
+  std::vector<std::vector<Vec3>> sunE_;  // per sun and grid pixel: unit shading, direct + bounce
+  size_t unknownAreaLights_ = 0;
   const LightRefineOptions& opt_;
   Vec3 boxLo_, boxSize_;
   struct Cached {
     Vec3 centre = Vec3::Constant(std::nan(""));
+    Vec2 logScale = Vec2::Zero();
     std::vector<double> E;
   };
   std::vector<std::array<Cached, 2>> cache_;
@@ -272,48 +332,49 @@ std::vector<double> nonNegativeLeastSquares(const std::vector<double>& Min, cons
 
 namespace {
 
-// Ceres' view: one 3-vector block per moving light; derivatives by forward differences that
-// recompute only the moved light's irradiance.
+// Ceres' view: one block per moving light (its centre, and its log edge scales when its size is
+// refined); derivatives by forward differences that recompute only the moved light's irradiance.
 class RefineCost : public ceres::CostFunction {
  public:
   RefineCost(Refinement& r, double step) : r_(r), step_(step) {
-    for (size_t m = 0; m < r_.free_.size(); ++m) mutable_parameter_block_sizes()->push_back(3);
-    set_num_residuals(int(r_.residualCount(r_.free_.size())));
+    for (const FreeLight& f : r_.free_) mutable_parameter_block_sizes()->push_back(f.dims());
+    set_num_residuals(int(r_.residualCount()));
   }
 
   bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override {
     const size_t F = r_.free_.size(), R = size_t(num_residuals());
-    std::vector<Vec3> centres(F);
-    for (size_t m = 0; m < F; ++m) centres[m] = Vec3(params[m][0], params[m][1], params[m][2]);
+    std::vector<Pose> poses(F);
+    for (size_t m = 0; m < F; ++m)
+      for (int a = 0; a < r_.free_[m].dims(); ++a) poses[m][a] = params[m][a];
     std::vector<const std::vector<double>*> E(r_.lightCount());
     for (size_t m = 0; m < F; ++m)
-      E[size_t(r_.free_[m].index)] = &r_.irradiance(r_.free_[m].index, r_.centreOf(centres[m]));
+      E[size_t(r_.free_[m].index)] =
+          &r_.irradiance(r_.free_[m].index, r_.centreOf(poses[m].centre), poses[m].logScale);
     for (size_t j = 0; j < E.size(); ++j)
       if (!E[j]) E[j] = &r_.irradiance(int(j), r_.startCentre(int(j)));
-    r_.residuals(E, centres, residuals);
+    r_.residuals(E, poses, residuals);
     if (!jacobians) return true;
     std::vector<double> plus(R);
     for (size_t m = 0; m < F; ++m) {
       if (!jacobians[m]) continue;
-      const int j = r_.free_[m].index;
-      const std::vector<double>* keep = E[size_t(j)];
-      for (int a = 0; a < 3; ++a) {
-        const bool fixed = std::find(r_.free_[m].fixedAxes.begin(), r_.free_[m].fixedAxes.end(), a) !=
-                           r_.free_[m].fixedAxes.end();
-        if (fixed) {
-          for (size_t k = 0; k < R; ++k) jacobians[m][k * 3 + size_t(a)] = 0;
+      const FreeLight& f = r_.free_[m];
+      const size_t D = size_t(f.dims());
+      const std::vector<double>* keep = E[size_t(f.index)];
+      for (int a = 0; a < f.dims(); ++a) {
+        if (std::find(f.fixedAxes.begin(), f.fixedAxes.end(), a) != f.fixedAxes.end()) {
+          for (size_t k = 0; k < R; ++k) jacobians[m][k * D + size_t(a)] = 0;
           continue;
         }
         // Forward differences (the fixed samples make E smooth; half the renders of central
         // ones), stepping inward at the upper bound: past a wall the light is hidden.
-        const double h = centres[m][a] + step_ > r_.free_[m].hi[a] ? -step_ : step_;
-        std::vector<Vec3> moved = centres;
+        const double h = poses[m][a] + step_ > f.upper(a) ? -step_ : step_;
+        std::vector<Pose> moved = poses;
         moved[m][a] += h;
-        const std::vector<double> e = r_.irradianceUncached(j, r_.centreOf(moved[m]));
-        E[size_t(j)] = &e;
+        const std::vector<double> e = r_.irradianceUncached(f.index, r_.centreOf(moved[m].centre), moved[m].logScale);
+        E[size_t(f.index)] = &e;
         r_.residuals(E, moved, plus.data());
-        E[size_t(j)] = keep;
-        for (size_t k = 0; k < R; ++k) jacobians[m][k * 3 + size_t(a)] = (plus[k] - residuals[k]) / h;
+        E[size_t(f.index)] = keep;
+        for (size_t k = 0; k < R; ++k) jacobians[m][k * D + size_t(a)] = (plus[k] - residuals[k]) / h;
       }
     }
     return true;
@@ -386,8 +447,17 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   if (!usable.empty() && usable.size() != size_t(W) * H)
     return Error{"", "usable", "the mask does not match the direct-light image"};
   if (!(opt.gridPixels > 0 && opt.samplesPerLight > 0 && opt.prior >= 0 && opt.intensityRange > 0 &&
-        opt.stepNormalised > 0 && std::isfinite(opt.prior) && std::isfinite(opt.intensityRange)))
+        opt.stepNormalised > 0 && std::isfinite(opt.prior) && std::isfinite(opt.intensityRange) &&
+        opt.sunIntensityWeight >= 0 && std::isfinite(opt.sunIntensityWeight) && opt.sizeRange >= 1 &&
+        std::isfinite(opt.sizeRange)))
     return Error{"", "options", "refinement options out of range"};
+  for (size_t k = 0; k < suns.size(); ++k) {
+    if (!suns[k].irradianceOverPi.allFinite())
+      return Error{"", "suns[" + std::to_string(k) + "]", "the sun's strength is not a finite number"};
+    if (k < opt.sunBounce.size() && !opt.sunBounce[k].empty() &&
+        (opt.sunBounce[k].width != W || opt.sunBounce[k].height != H || opt.sunBounce[k].channels < 3))
+      return Error{"", "suns[" + std::to_string(k) + "]", "the sun's bounce image does not match the direct-light image"};
+  }
   std::vector<LightRefineSpec> specs = specsIn;
   specs.resize(lightsIn.size());
   LightRefineResult out;
@@ -409,8 +479,8 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     if (!finite) return Error{"", key, "the light's corners or intensity are not finite numbers"};
     if (!(L.area() > 0)) return Error{"", key, "the light has no area"};
     const LightRefineSpec& s = specs[j];
-    if (!(s.positionWeight >= 0 && s.intensityWeight >= 0 && std::isfinite(s.positionWeight) &&
-          std::isfinite(s.intensityWeight)))
+    if (!(s.positionWeight >= 0 && s.intensityWeight >= 0 && s.sizeWeight >= 0 && std::isfinite(s.positionWeight) &&
+          std::isfinite(s.intensityWeight) && std::isfinite(s.sizeWeight)))
       return Error{"", key + ".weights", "weights must be finite and non-negative"};
     L.radiance = L.radiance.cwiseMax(0.0);
     if (s.lock) continue;
@@ -428,6 +498,8 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     f.lo = (cLo - lo).cwiseQuotient(boxSize);
     f.hi = (cHi - lo).cwiseQuotient(boxSize);
     f.start = (moved - lo).cwiseQuotient(boxSize);
+    f.size = s.refineSize;
+    f.logScaleBound = std::log(opt.sizeRange);
     if (f.fixedAxes.size() < 3) free.push_back(f);
   }
 
@@ -447,6 +519,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
       const auto hit = tracer.intersect(camera.rayThroughPixel(pc), 1e-6);
       if (!hit || isNonMatte(opt.nonMatteSurfaces, hit->surfaceId)) continue;
       GridPixel g;
+      g.x = x, g.y = y;
       g.point = hit->pointWorld;
       g.normal = hit->normalWorld;
       g.rho = rho.cwiseMax(0.0);
@@ -458,13 +531,25 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     }
   if (px.empty()) return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
   out.pixels = int(px.size());
-  std::vector<std::vector<double>> sunE(suns.size(), std::vector<double>(px.size(), 0.0));
+  // Per sun: its unit direct light and (when given) its sunlit patch's unit bounce, which the
+  // direct component D left out (it was in the gathered light at the estimate's strength).
+  std::vector<std::vector<Vec3>> sunE(suns.size(), std::vector<Vec3>(px.size(), Vec3::Zero()));
   for (size_t k = 0; k < suns.size(); ++k)
     parallelFor(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i < r.end(); ++i)
-        sunE[k][i] = unitSunIrradianceOverPi(tracer, geometry, suns[k], px[i].point + 1e-5 * px[i].normal,
-                                             px[i].normal);
+      for (size_t i = r.begin(); i < r.end(); ++i) {
+        const double e = unitSunIrradianceOverPi(tracer, geometry, suns[k],
+                                                 px[i].point + 1e-5 * px[i].normal, px[i].normal);
+        sunE[k][i] = Vec3::Constant(e);
+        if (k >= opt.sunBounce.size() || opt.sunBounce[k].empty()) continue;
+        const Vec3 g = opt.sunBounce[k].rgb(px[i].x, px[i].y).cwiseMax(0.0);
+        if (!g.allFinite()) continue;
+        sunE[k][i] += g;
+        px[i].target += px[i].rho.cwiseProduct(g).cwiseProduct(suns[k].irradianceOverPi.cwiseMax(0.0));
+      }
     });
+  // Z counts the targets with the bounce put back.
+  Z = 0;
+  for (const GridPixel& g : px) Z += g.weight * g.target.squaredNorm();
 
   Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, lo, boxSize);
   problem.free_ = free;
@@ -482,21 +567,32 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
                           "] lights none of the room the photo shows: its intensity stays at its start");
   }
   RefineCost* cost = new RefineCost(problem, opt.stepNormalised);
-  std::vector<std::array<double, 3>> params(free.size());
-  for (size_t m = 0; m < free.size(); ++m) params[m] = {free[m].start[0], free[m].start[1], free[m].start[2]};
+  std::vector<std::vector<double>> params(free.size());
+  auto startParams = [&] {
+    for (size_t m = 0; m < free.size(); ++m) {
+      params[m].resize(size_t(free[m].dims()));
+      for (int a = 0; a < free[m].dims(); ++a) params[m][size_t(a)] = free[m].startOf(a);
+    }
+  };
+  startParams();
+  auto poseOf = [&](size_t m) {
+    Pose pose;
+    for (int a = 0; a < free[m].dims(); ++a) pose[a] = params[m][size_t(a)];
+    return pose;
+  };
   // The objective and intensities at given parameters.
   const size_t R = size_t(cost->num_residuals()), dataEnd = 3 * size_t(out.pixels);
   std::vector<double> r(R);
   auto evaluate = [&](std::vector<Vec3>* radiance) {
     std::vector<const std::vector<double>*> E(lights.size(), nullptr);
-    std::vector<Vec3> centres(free.size());
+    std::vector<Pose> poses(free.size());
     for (size_t m = 0; m < free.size(); ++m) {
-      centres[m] = Vec3(params[m][0], params[m][1], params[m][2]);
-      E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(centres[m]));
+      poses[m] = poseOf(m);
+      E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(poses[m].centre), poses[m].logScale);
     }
     for (size_t j = 0; j < E.size(); ++j)
       if (!E[j]) E[j] = &problem.irradiance(int(j), lights[j].centre());
-    problem.residuals(E, centres, r.data(), radiance);
+    problem.residuals(E, poses, r.data(), radiance);
   };
   evaluate(nullptr);
   out.initialObjective = sumSquares(r, 0, R);
@@ -509,11 +605,12 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     for (auto& p : params) blocks.push_back(p.data());
     cp.AddResidualBlock(cost, nullptr, blocks);
     for (size_t m = 0; m < free.size(); ++m) {
-      if (!free[m].fixedAxes.empty()) cp.SetManifold(params[m].data(), new ceres::SubsetManifold(3, free[m].fixedAxes));
-      for (int a = 0; a < 3; ++a) {
+      if (!free[m].fixedAxes.empty())
+        cp.SetManifold(params[m].data(), new ceres::SubsetManifold(free[m].dims(), free[m].fixedAxes));
+      for (int a = 0; a < free[m].dims(); ++a) {
         if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end()) continue;
-        cp.SetParameterLowerBound(params[m].data(), a, free[m].lo[a]);
-        cp.SetParameterUpperBound(params[m].data(), a, free[m].hi[a]);
+        cp.SetParameterLowerBound(params[m].data(), a, free[m].lower(a));
+        cp.SetParameterUpperBound(params[m].data(), a, free[m].upper(a));
       }
     }
     ceres::Solver::Options so;
@@ -533,13 +630,13 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     out.report = summary.message + " (" + std::to_string(summary.iterations.size()) + " iterations)";
     if (!summary.IsSolutionUsable()) {
       out.notes.push_back("light refinement failed (" + summary.message + "): the start is kept");
-      for (size_t m = 0; m < free.size(); ++m) params[m] = {free[m].start[0], free[m].start[1], free[m].start[2]};
+      startParams();
     }
     // Bounds hold even if the solver stepped on them with round-off.
     for (size_t m = 0; m < free.size(); ++m)
-      for (int a = 0; a < 3; ++a) {
+      for (int a = 0; a < free[m].dims(); ++a) {
         double& v = params[m][size_t(a)];
-        v = std::isfinite(v) ? std::clamp(v, free[m].lo[a], free[m].hi[a]) : free[m].start[a];
+        v = std::isfinite(v) ? std::clamp(v, free[m].lower(a), free[m].upper(a)) : free[m].startOf(a);
       }
   } else {
     delete cost;
@@ -556,13 +653,19 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   out.lights = lights;
   for (size_t m = 0; m < free.size(); ++m) {
     AreaLight& L = out.lights[size_t(free[m].index)];
-    const Vec3 shift = problem.centreOf(Vec3(params[m][0], params[m][1], params[m][2])) - L.centre();
-    for (auto& p : L.cornersWorld) p += shift;
+    const Pose pose = poseOf(m);
+    L = posedLight(L, problem.centreOf(pose.centre), pose.logScale);
+    // A grown light keeps inside the room (the position bounds hold for its start size).
+    if (free[m].size)
+      for (auto& p : L.cornersWorld) p = p.cwiseMax(lo + Vec3::Constant(opt.marginM)).cwiseMin(hi - Vec3::Constant(opt.marginM));
   }
   for (size_t u = 0; u < radiance.size(); ++u) {
     const size_t t = problem.unknownTarget(u);
     const Vec3 v = radiance[u].allFinite() ? radiance[u] : Vec3::Zero();
-    out.lights[t].radiance = v;
+    if (problem.unknownIsSun(u))
+      out.suns[t - lights.size()].irradianceOverPi = v;
+    else
+      out.lights[t].radiance = v;
   }
   out.evaluations = problem.evaluations();
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -478,7 +478,7 @@ class Reader {
     const std::string kind = string(j["kind"], child(p, "kind"));
     if (kind == "polygon_px") {
       l.kind = LightKeys::Kind::PolygonPx;
-      knownKeys(j, p, {"kind", "points", "rgb", "refine", "lock", "weights"});
+      knownKeys(j, p, {"kind", "points", "rgb", "refine", "lock", "weights", "refine_size"});
       if (!j.contains("points")) fail(child(p, "points"), "missing");
       const std::string pp = child(p, "points");
       array(j["points"], pp, 0, limits_.maxPointsPerPolyline);
@@ -489,7 +489,7 @@ class Reader {
       checkSimplePolygon(l.pointsPx, pp);
     } else if (kind == "rect_m") {
       l.kind = LightKeys::Kind::RectM;
-      knownKeys(j, p, {"kind", "corners", "rgb", "refine", "lock", "weights"});
+      knownKeys(j, p, {"kind", "corners", "rgb", "refine", "lock", "weights", "refine_size"});
       if (!j.contains("corners")) fail(child(p, "corners"), "missing");
       const std::string cp = child(p, "corners");
       const json& a = array(j["corners"], cp, 4, 4);
@@ -504,10 +504,11 @@ class Reader {
     if (j.contains("rgb")) l.rgb = nonNegativeRgb(j["rgb"], child(p, "rgb"));
     if (j.contains("refine")) l.refine = boolean(j["refine"], child(p, "refine"));
     if (j.contains("lock")) l.lock = boolean(j["lock"], child(p, "lock"));
+    if (j.contains("refine_size")) l.refineSize = boolean(j["refine_size"], child(p, "refine_size"));
     if (j.contains("weights")) {
       const std::string wp = child(p, "weights");
       object(j["weights"], wp);
-      knownKeys(j["weights"], wp, {"position", "intensity"});
+      knownKeys(j["weights"], wp, {"position", "intensity", "size"});
       auto weight = [&](const char* k, double* w) {
         if (!j["weights"].contains(k)) return;
         *w = number(j["weights"][k], child(wp, k));
@@ -515,6 +516,7 @@ class Reader {
       };
       weight("position", &l.positionWeight);
       weight("intensity", &l.intensityWeight);
+      weight("size", &l.sizeWeight);
     }
     return l;
   }
@@ -849,8 +851,10 @@ ojson buildJson(const SceneDoc& doc) {
       if (l.rgb) o["rgb"] = toJson(*l.rgb);
       o["refine"] = l.refine;
       if (l.lock) o["lock"] = true;
-      if (l.positionWeight != LightKeys{}.positionWeight || l.intensityWeight != LightKeys{}.intensityWeight)
-        o["weights"] = ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}};
+      if (l.refineSize) o["refine_size"] = true;
+      if (l.positionWeight != LightKeys{}.positionWeight || l.intensityWeight != LightKeys{}.intensityWeight ||
+          l.sizeWeight != LightKeys{}.sizeWeight)
+        o["weights"] = ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}, {"size", l.sizeWeight}};
       a.push_back(o);
     }
     j["lights"] = a;

@@ -17,11 +17,18 @@ that noise target (then --spp is each pixel's cap: give a large one to converge)
 normalised inside the object's mask) of both images: the render noise mostly gone, the
 lighting's bias left; they are what attributes the error. Light position error: distance of each light's centre to its true
 light's (same order as truth.json), initial and refined; intensity error: relative error of the
-RGB radiance. The refinement's objective against time goes to lights_objective.csv.
+RGB radiance (suns: of their RGB strength against the truth's, in the photo's units). The
+refinement's objective against time goes to lights_objective.csv. --seeds 1,2,3 renders every
+run once per render seed: the RMSE columns are then the means, `_sd` their standard deviation
+over seeds (the measurement's Monte-Carlo noise), and `refined_minus_initial` (mean, `_sd`) the
+paired difference of the object RMSE, refined minus initial, seed by seed. --refine-size sets
+"refine_size": true on every light of the scene files (the refinement also fits the lights'
+edge lengths).
 
 Writes OUT/lights.csv, OUT/lights_objective.csv, OUT/lights.png.
 
 usage: bench_lights.py INLAY_CLI [--out DIR] [--spp N] [--noise E] [--scenes d1,d3] [--runs refined,initial,...]
+                       [--seeds 1,2,3] [--refine-size]
 """
 import csv, json, os, statistics, subprocess, sys
 
@@ -69,6 +76,7 @@ def main():
     spp = int(opt("--spp", "32"))
     noise = opt("--noise", "0")
     runs = opt("--runs", ",".join(RUNS)).split(",")
+    seeds = [int(v) for v in opt("--seeds", "1").split(",")]
     sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
     if sdir is None:
         print("skipped: no ../shared/scenes")
@@ -82,33 +90,50 @@ def main():
         truth = json.load(open(os.path.join(sd, "truth.json")))
         sf = os.path.join(out, "%s.json" % name)
         subprocess.run([py, harness, "scene", sd, sf, "--seconds", "100000"], check=True)
+        if "--refine-size" in a:
+            scene = json.load(open(sf))
+            for light in scene["lights"]:
+                light["refine_size"] = True
+            json.dump(scene, open(sf, "w"), indent=1)
         tl = os.path.join(out, "%s_true_lights.json" % name)
         json.dump({"lights": true_lights(truth)}, open(tl, "w"))
         lj = os.path.join(out, "%s_lights.json" % name)
         row = {"scene": name, "material": truth["object"]["material"]["type"],
                "uniform_baseline": round(base[name]["uniform_dataset_mean_rmse"], 4),
                "uniform_adjusted": round(base[name]["uniform_adjusted_rmse"], 4)}
+        per_seed = {}
         for run in runs:
-            comp = os.path.join(out, "%s_%s.png" % (name, run))
-            cmd = [cli, "render", sf, "-o", comp, "--quiet", "--spp", str(spp), "--noise", noise, "--seed", "1"]
-            if run == "refined":
-                cmd += ["--lights-json", lj]
-            if run == "initial":
-                cmd += ["--initial-lights"]
-            if run in ("true_lights", "true_both"):
-                if not truth["lights"]:
-                    continue  # only a sun: no area light to replace
-                cmd += ["--replace-lights", tl]
-            if run in ("true_albedo", "true_both"):
-                cmd += ["--replace-albedo", os.path.join(sd, "albedo.exr")]
-            p = subprocess.run(cmd, capture_output=True, text=True)
-            if p.returncode != 0:
-                print(name, run, "failed:", p.stderr.strip()[-300:], flush=True)
-                continue
-            s = json.loads(subprocess.run([py, harness, "score", sd, comp], capture_output=True, text=True, check=True).stdout)
-            row[run + "_rmse"] = round(s["object_rmse"], 4)
-            row[run + "_adjusted"] = round(s["object_rmse_adjusted"], 4)
-            row[run + "_bias"] = round(smoothed_rmse(sd, comp), 4)
+            for seed in seeds:
+                comp = os.path.join(out, "%s_%s.png" % (name, run) if seed == seeds[0] else "%s_%s_s%d.png" % (name, run, seed))
+                cmd = [cli, "render", sf, "-o", comp, "--quiet", "--spp", str(spp), "--noise", noise, "--seed", str(seed)]
+                if run == "refined":
+                    cmd += ["--lights-json", lj]
+                if run == "initial":
+                    cmd += ["--initial-lights"]
+                if run in ("true_lights", "true_both"):
+                    if not truth["lights"]:
+                        continue  # only a sun: no area light to replace
+                    cmd += ["--replace-lights", tl]
+                if run in ("true_albedo", "true_both"):
+                    cmd += ["--replace-albedo", os.path.join(sd, "albedo.exr")]
+                p = subprocess.run(cmd, capture_output=True, text=True)
+                if p.returncode != 0:
+                    print(name, run, "failed:", p.stderr.strip()[-300:], flush=True)
+                    continue
+                s = json.loads(subprocess.run([py, harness, "score", sd, comp], capture_output=True, text=True, check=True).stdout)
+                per_seed.setdefault(run, []).append((seed, s["object_rmse"], s["object_rmse_adjusted"], smoothed_rmse(sd, comp)))
+        for run, vals in per_seed.items():
+            for k, key in ((1, "_rmse"), (2, "_adjusted"), (3, "_bias")):
+                row[run + key] = round(statistics.mean(v[k] for v in vals), 4)
+                if len(vals) > 1:
+                    row[run + key + "_sd"] = round(statistics.stdev(v[k] for v in vals), 4)
+        if "refined" in per_seed and "initial" in per_seed:
+            ini = {v[0]: v[1] for v in per_seed["initial"]}
+            diff = [v[1] - ini[v[0]] for v in per_seed["refined"] if v[0] in ini]
+            if diff:
+                row["refined_minus_initial"] = round(statistics.mean(diff), 5)
+                if len(diff) > 1:
+                    row["refined_minus_initial_sd"] = round(statistics.stdev(diff), 5)
         if os.path.exists(lj):
             L = json.load(open(lj))
             tls = true_lights(truth)
@@ -119,6 +144,14 @@ def main():
                     inten.append(float(np.linalg.norm(np.array(ours["rgb"]) - t["rgb"]) / np.linalg.norm(t["rgb"])))
                 row[which + "_position_error_m"] = round(max(pos), 4) if pos else ""
                 row[which + "_intensity_error"] = round(max(inten), 4) if inten else ""
+            ts = truth.get("sun")
+            if ts and L.get("suns_initial"):
+                t_rgb = np.array(ts["color"]) * ts["strength_W_m2"] / np.pi * truth["exposure"]["scale"]
+                for which in ("initial", "refined"):
+                    ours = np.array(L["suns_" + which][0]["rgb"])
+                    row["sun_" + which + "_rgb"] = " ".join("%.3f" % v for v in ours)
+                    row["sun_" + which + "_error"] = round(float(np.linalg.norm(ours - t_rgb) / np.linalg.norm(t_rgb)), 4)
+                row["sun_true_rgb"] = " ".join("%.3f" % v for v in t_rgb)
             r = L["refinement"]
             row["refine_s"] = round(r["seconds"], 3)
             row["objective_initial"] = round(r["initial_objective"], 6)

@@ -455,7 +455,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // Refinement: positions and intensities against the photo's direct light.
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
-  if (opt.refineLights && !ps.lighting.lights.empty()) {
+  if (opt.refineLights && (!ps.lighting.lights.empty() || (opt.refine.refineSuns && !ps.lighting.suns.empty()))) {
     progress("refine", 0);
     t = Clock::now();
     std::vector<LightRefineSpec> specs(doc.lights.size());
@@ -463,10 +463,13 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       specs[i].lock = doc.lights[i].lock || !refine[i];
       specs[i].positionWeight = doc.lights[i].positionWeight;
       specs[i].intensityWeight = doc.lights[i].intensityWeight;
+      specs[i].refineSize = doc.lights[i].refineSize;
+      specs[i].sizeWeight = doc.lights[i].sizeWeight;
     }
     LightRefineOptions ro = opt.refine;
     if (!ro.cancel) ro.cancel = opt.cancel;
     ro.nonMatteSurfaces = nonMatte;
+    ro.sunBounce = ps.lighting.sunBounce;
     auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
                                 usableDirect(ps.lighting, lightMask), ps.lighting.lights, specs,
                                 ps.lighting.suns, ro);
@@ -516,8 +519,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // The surface each pixel shows: the lighting stage cast those rays already.
   rs.roomAlbedo.firstSurfacePerPixel = ps.lighting.firstSurfacePerPixel;
   // Bounces that reach a room point the photo shows take the photo's radiance there (not the
-  // light outlines: their light is the lights' own).
-  rs.roomAlbedo.photoRadiance = ps.photo.linearRgb;
+  // light outlines: their light is the lights' own; a clipped sunlit patch takes the model's).
+  rs.roomAlbedo.photoRadiance = radianceForBounces(ps.photo.linearRgb, ps.camera, ps.geometry, ps.lighting);
   rs.roomAlbedo.photoRadianceUsable.assign(size_t(W) * H, 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)

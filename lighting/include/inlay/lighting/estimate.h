@@ -81,6 +81,11 @@ struct LightingEstimate {
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
+  // Per sun: W x H x 3, the irradiance / pi its clipped sunlit pixels (a patch too bright for
+  // the photo) send to each pixel under the sun at unit strength (irradianceOverPi = 1): their
+  // radiance is albedo times the sun's irradiance, so it scales with the sun. Already in
+  // `gathered` at the fitted strength. Empty when no sunlit pixel is clipped.
+  std::vector<ImageF> sunBounce;
   double seconds = 0;
   std::vector<std::string> notes;
 };
@@ -107,5 +112,14 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photoLinear, const Cam
                                             const ImageF& lightMaskPx,
                                             const std::vector<SunLight>& suns = {},
                                             const LightingOptions& options = {});
+
+// The photo's radiance for the render's bounces off the room (ProjectedAlbedo::photoRadiance):
+// `photoLinear` (W x H x 3) with its clipped pixels inside a sun's beam replaced by the model's
+// radiance there, albedo x (gathered light + the area lights' and suns' direct light), at least
+// the photo's value; the albedo is the light fit's (physicalAlbedo: at a clipped pixel its
+// surface's, fitted together with the suns' strengths). A sunlit patch the photo clips would otherwise light an object standing in
+// it at the clip level only. `lighting` holds the lights and suns to use (refined or not).
+ImageF radianceForBounces(const ImageF& photoLinear, const Camera& camera, const SceneGeometry& geometry,
+                          const LightingEstimate& lighting, double saturatedAbove = 0.98);
 
 }  // namespace inlay

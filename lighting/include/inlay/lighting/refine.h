@@ -2,12 +2,15 @@
 // render of the room matches the direct light the photo shows (Karsch et al. 2011, eq. 2).
 //
 //   minimise  sum_i alpha_i |R_i(L) - D_i|^2 / Z  +  prior * sum_j ( wPos_j |p_j - p0_j|^2
-//                                                                + wInt_j |l_j - l0_j|^2 )
+//                                                                + wInt_j |l_j - l0_j|^2
+//                                                                + wSize_j |log s_j|^2 )
 //
 // over pixels i of a reduced grid, where R_i = rho_i * (sum_j L_j E_j(x_i; p_j) + sum_k S_k E_k)
-// is the room's albedo times the direct irradiance / pi from the area lights (and the suns, at
-// the strength the estimate fitted: their patches are mostly clipped, which a linear fit cannot
-// use), D the photo's direct component (decomposition), Z
+// is the room's albedo times the direct irradiance / pi from the area lights and the suns (S_k:
+// their strength; E_k: their direct light plus the bounce of their clipped sunlit patch, which
+// the estimate gathered per unit strength and D left out: it is put back into the target, so
+// that the unclipped walls and ceiling the patch lights tell the sun's strength), D the photo's
+// direct component (decomposition), Z
 // = sum_i alpha_i |D_i|^2 (so the data term is a relative error), alpha_i = 1 above the image's
 // vertical midpoint falling quadratically to 0 at its bottom row. Positions p are the lights'
 // centres normalised to the room box ([0,1] per axis), bounded so that the whole light stays
@@ -17,7 +20,8 @@
 // deterministic function of the positions. Since R is linear in the intensities, they are
 // solved in closed form (non-negative least squares) for every set of positions (variable
 // projection); Ceres' bounded trust region moves the positions with forward-difference
-// derivatives that recompute only the moved light's E.
+// derivatives that recompute only the moved light's E. A light with refineSize also has its two
+// edges' scale factors s_j (log, bounded) among Ceres' parameters.
 #pragma once
 
 #include "inlay/modeling/camera.h"
@@ -36,6 +40,11 @@ struct LightRefineSpec {
   bool lock = false;            // keep position and intensity as they come in
   double positionWeight = 10;   // w of the position prior (normalised room units)
   double intensityWeight = 1;   // w of the intensity prior (normalised intensity)
+  // Also fit the light's two edge lengths (each scaled by a factor within
+  // [1 / sizeRange, sizeRange] of LightRefineOptions), pulled toward the start by
+  // sizeWeight |log factor|^2. Off by default: an outline drawn on the photo gives the size.
+  bool refineSize = false;
+  double sizeWeight = 10;
 };
 
 struct LightRefineOptions {
@@ -47,7 +56,19 @@ struct LightRefineOptions {
   double intensityRange = 8;   // normalised intensity 1 = this many times the start's largest channel
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
   double marginM = 1e-3;       // lights keep this far inside the room's walls
+  double sizeRange = 2;        // a refined size stays within [1/sizeRange, sizeRange] of the start
   uint32_t seed = 11;
+  // Suns: with refineSuns their strengths (RGB irradianceOverPi) are unknowns solved with the
+  // area lights' intensities, pulled toward the start with sunIntensityWeight (directions and
+  // beams stay as given). Off by default: against D the strength inherits the decomposition's
+  // albedo error (d4: 17% from the truth against the estimate's 13%, object RMSE +0.002; README),
+  // while the estimate's fit ties albedo, sun and its patch's bounce together. Off, the suns are
+  // a fixed part of the render.
+  bool refineSuns = false;
+  double sunIntensityWeight = 1;
+  // Per sun (may be empty or shorter): W x H x 3, its clipped sunlit patch's bounce per unit
+  // strength (LightingEstimate::sunBounce), included in the direct image's gathered light.
+  std::vector<ImageF> sunBounce;
   // Room surfaces (by surface id) marked glossy or mirror: they do not follow rho * E, so their
   // pixels are left out of the data term (LightingOptions::nonMatteSurfaces likewise).
   std::vector<bool> nonMatteSurfaces;
@@ -61,7 +82,7 @@ struct LightRefineSample {
 
 struct LightRefineResult {
   std::vector<AreaLight> lights;  // refined (locked ones as given)
-  std::vector<SunLight> suns;     // as given (their light is a fixed part of the render)
+  std::vector<SunLight> suns;     // with refined strengths (as given unless refineSuns)
   double initialObjective = 0;    // at the start positions, intensities solved
   double finalObjective = 0;
   double initialDataTerm = 0, finalDataTerm = 0;  // the relative data term alone

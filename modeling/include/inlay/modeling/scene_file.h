@@ -45,6 +45,10 @@ struct LightKeys {
   bool lock = false;
   double positionWeight = 10;
   double intensityWeight = 1;
+  // "refine_size": true also fits the light's two edge lengths (within a factor 2), pulled
+  // toward the start with "weights": {"size"}.
+  bool refineSize = false;
+  double sizeWeight = 10;
 };
 
 struct ShaftKeys {
