@@ -69,10 +69,7 @@ def centre(corners):
 
 
 def main():
-    a = benchlib.args(__doc__)
-    cli = os.path.abspath(a[0])
-    opt = lambda k, d: benchlib.option(a, k, d)
-    out = os.path.abspath(opt("--out", os.path.join(HERE, "out")))
+    cli, opt, out = benchlib.command_line(__doc__)
     spp = int(opt("--spp", "32"))
     noise = opt("--noise", "0")
     runs = opt("--runs", ",".join(RUNS)).split(",")
@@ -90,7 +87,7 @@ def main():
         truth = json.load(open(os.path.join(sd, "truth.json")))
         sf = os.path.join(out, "%s.json" % name)
         subprocess.run([py, harness, "scene", sd, sf, "--seconds", "100000"], check=True)
-        if "--refine-size" in a:
+        if "--refine-size" in sys.argv[1:]:
             scene = json.load(open(sf))
             for light in scene["lights"]:
                 light["refine_size"] = True
