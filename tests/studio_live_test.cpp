@@ -88,6 +88,7 @@ class StudioLiveTest : public QObject {
 
  private Q_SLOTS:
   void initTestCase();
+  void cleanupTestCase();
   void init();
   void cleanup();
   void vanishingLinesFixTheCamera();
@@ -105,11 +106,16 @@ class StudioLiveTest : public QObject {
 void StudioLiveTest::initTestCase() {
   QStandardPaths::setTestModeEnabled(true);
   QCoreApplication::setOrganizationName(QStringLiteral("InlayTest"));
-  QCoreApplication::setApplicationName(QStringLiteral("studio_live_test"));
+  // One settings and recovery folder a process: two runs of this test at once (two build trees
+  // of one user) must not see, offer or discard each other's recovery files.
+  QCoreApplication::setApplicationName(
+      QStringLiteral("studio_live_test-%1").arg(QCoreApplication::applicationPid()));
   qunsetenv("INLAY_LANG");
   QSettings().remove(QStringLiteral("language"));
   removeTranslators();
 }
+
+void StudioLiveTest::cleanupTestCase() { QFile::remove(QSettings().fileName()); }
 
 void StudioLiveTest::init() {
   if (!QFile::exists(exampleFile(QStringLiteral("scene.json"))))
