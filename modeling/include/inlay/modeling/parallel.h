@@ -17,7 +17,39 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cstddef>
+#include <cstdint>
+
 namespace inlay {
+
+namespace detail {
+
+#ifdef INLAY_TSAN
+// Called right after tbb::parallel_for returns, with `callerFrame` the frame address of the
+// function that called it. tbb::parallel_for keeps its wait_node (tree root: parent pointer,
+// reference count, wait_context) on the caller's stack: in its own frames below the caller's,
+// or inside the caller's frame when the compiler inlines it. The TBB worker that finishes the
+// last chunk touches the wait_node last, in header code TSan sees (fold_tree: a decrement, a
+// read, then the wait_context's seq_cst decrement, a release), after our `join` edge; the
+// caller's matching acquire is inside libtbb's uninstrumented wait. TSan then reports the
+// caller's next use of that stack slot (the next loop's wait_node, or any local of ours the
+// compiler puts there) as racing with the worker. Acquiring on every word from below
+// parallel_for's dead frames up to the caller's frame states the edge libtbb's wait really
+// provides: what the workers released there happened before parallel_for returned. Only words
+// on which some thread released carry a sync object; the others cost a lookup.
+[[gnu::noinline]] inline void acquireTbbFrames(const void* callerFrame) noexcept {
+  // parallel_for's own frames, when not inlined, take a few hundred bytes below this one.
+  constexpr std::uintptr_t kBelow = 2048;
+  const auto low = reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0)) - kBelow;
+  const auto high = reinterpret_cast<std::uintptr_t>(callerFrame);
+  for (std::uintptr_t a = low & ~std::uintptr_t{3}; a < high; a += 4)
+    __tsan_acquire(reinterpret_cast<void*>(a));
+}
+#else
+inline void acquireTbbFrames(const void*) noexcept {}
+#endif
+
+}  // namespace detail
 
 // tbb::parallel_for(range, body) with the fork and join edges annotated (see the top).
 template <class Range, class Body>
@@ -30,6 +62,7 @@ void parallelFor(const Range& range, const Body& body) {
     join.release();
   });
   join.acquire();
+  detail::acquireTbbFrames(__builtin_frame_address(0));
 }
 
 }  // namespace inlay
