@@ -131,7 +131,10 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
     const double b = photo.at(int(i % size_t(W)), int(i / size_t(W)), c);
     return b >= opt.saturatedAbove ? kClipped : b;
   };
-  static const double kQuantiles[] = {0.02, 0.03, 0.05, 0.1, 0.2, 0.3, 0.5};
+  // Quantiles as shares of the usable range: its upper part, as the lowest ranks of the
+  // shadow's noisier pixels fall below their material's (the noise widens them; the lit pixels,
+  // far brighter, are hardly affected).
+  static const double kShares[] = {0.4, 0.6, 0.8, 1.0};
   for (int c = 0; c < 3; ++c) {
     std::vector<LitSample> ls;
     int unclipped = 0;
@@ -148,8 +151,13 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
       return Error{"", "suns", "too few pixels with gathered light beside the sun's patch"};
     const double usable = opt.clippedShareUse * double(unclipped) / double(ls.size());
     std::vector<double> votes;
-    for (double q : kQuantiles)
-      if (q <= usable) votes.push_back(solveStrength(ls, q, quantile(rho, q)));
+    for (double share : kShares) {
+      const double q = share * usable;
+      if (q * double(ls.size()) < 10) continue;  // too few pixels below the quantile
+      // A shadow quantile at 0 (black or noise-dominated pixels) tells nothing.
+      const double target = quantile(rho, q);
+      if (target > 0 && std::isfinite(target)) votes.push_back(solveStrength(ls, q, target));
+    }
     if (votes.empty())
       return Error{"", "suns", "the sun's patch is clipped in channel " + std::to_string(c) +
                                    " (too few unclipped pixels to compare with its shadow)"};
