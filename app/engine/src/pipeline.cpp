@@ -479,7 +479,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // Refinement: positions and intensities against the photo's direct light.
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
-  if (opt.refineLights && opt.sunsFromShadowRatio) sunsFromShadowRatio(ps, lightMask);
+  if (opt.refineLights && opt.sunsFromShadowRatio && !ps.lighting.suns.empty()) {
+    t = Clock::now();
+    sunsFromShadowRatio(ps, lightMask);
+    ps.stageSeconds.emplace_back("sun ratio", secondsSince(t));
+  }
   if (opt.refineLights && (!ps.lighting.lights.empty() || (opt.refine.refineSuns && !ps.lighting.suns.empty()))) {
     progress("refine", 0);
     t = Clock::now();
