@@ -3,6 +3,7 @@
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
+#include "inlay/lighting/sun_ratio.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/gltf_export.h"
 #include "inlay/modeling/subdivide.h"
@@ -132,6 +133,29 @@ std::vector<uint8_t> usableDirect(const LightingEstimate& l, const ImageF& light
   for (size_t i = 0; i < n && i < l.firstSurfacePerPixel.size(); ++i)
     u[i] = l.firstSurfacePerPixel[i] >= 0 && (lightMask.empty() || lightMask.data[i] <= 0.5f);
   return u;
+}
+
+// Each sun's strength from the ratio of its lit patch to the same surface's shadow (sun_ratio.h);
+// the gathered light keeps the patch's bounce at the new strength. Light outlines are no data.
+void sunsFromShadowRatio(PreparedScene& ps, const ImageF& lightMask) {
+  LightingEstimate& L = ps.lighting;
+  ImageF photo = ps.photo.linearRgb;
+  for (int y = 0; y < photo.height && !lightMask.empty(); ++y)
+    for (int x = 0; x < photo.width; ++x)
+      if (lightMask.at(x, y) > 0.5f) photo.setRgb(x, y, Vec3::Constant(1e9));
+  for (size_t k = 0; k < L.suns.size(); ++k) {
+    auto r = sunStrengthFromShadowRatio(photo, ps.camera, ps.geometry, L.gathered, L.lights, L.suns[k]);
+    if (!r) {
+      ps.warnings.push_back("sun " + std::to_string(k) + ": strength kept as estimated: " + r.error().reason);
+      continue;
+    }
+    const Vec3 change = r->strength - L.suns[k].irradianceOverPi;
+    L.suns[k].irradianceOverPi = r->strength;
+    if (k < L.sunBounce.size() && L.sunBounce[k].width == L.gathered.width &&
+        L.sunBounce[k].height == L.gathered.height)
+      for (size_t i = 0; i < L.gathered.data.size(); ++i)
+        L.gathered.data[i] += float(change[int(i % 3)]) * L.sunBounce[k].data[i];
+  }
 }
 
 // Whether the refinement moved a light's corners by more than a millimetre.
@@ -455,6 +479,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // Refinement: positions and intensities against the photo's direct light.
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
+  if (opt.refineLights && opt.sunsFromShadowRatio && !ps.lighting.suns.empty()) {
+    t = Clock::now();
+    sunsFromShadowRatio(ps, lightMask);
+    ps.stageSeconds.emplace_back("sun ratio", secondsSince(t));
+  }
   if (opt.refineLights && (!ps.lighting.lights.empty() || (opt.refine.refineSuns && !ps.lighting.suns.empty()))) {
     progress("refine", 0);
     t = Clock::now();

@@ -54,6 +54,11 @@ struct PrepareOptions {
   // renders with the initial lights.
   bool refineLights = true;
   LightRefineOptions refine;
+  // With refineLights: each sun's strength from its lit patch against the shadowed pixels of
+  // the same surface beside it (lighting/sun_ratio.h), which cancels the albedo; the gathered
+  // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
+  // ratio cannot be measured (a note says why).
+  bool sunsFromShadowRatio = true;
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
