@@ -206,6 +206,17 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
   return out;
 }
 
+// The lighting estimate of a room lit by `sun` alone (through its window): `samples` gather
+// rays a pixel on every second pixel, two threads.
+Expected<LightingEstimate> estimateSunRoom(const ImageF& photo, const SyntheticRoom& r, const SunLight& sun,
+                                           int samples) {
+  LightingOptions opt;
+  opt.gatherSamples = samples;
+  opt.gatherStride = 2;
+  opt.threads = 2;
+  return estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+}
+
 TEST(Lighting, ClippedSunPatchDoesNotShareTheWindowsGain) {
   SyntheticRoom r = emptyRoom();
   const SunWindow sw = sunThroughWindow(r, Vec3(6, 6, 6));
@@ -219,11 +230,7 @@ TEST(Lighting, ClippedSunPatchDoesNotShareTheWindowsGain) {
   ASSERT_EQ(r.geometry.surfaces[floor].kind, SurfaceKind::Floor);
   // The window is small seen from the floor: with 64 rays its gathered light is too noisy for
   // the robust fit to tell its gain (about 0.4 of the truth, with or without the fix).
-  LightingOptions opt;
-  opt.gatherSamples = 256;
-  opt.gatherStride = 2;
-  opt.threads = 2;
-  const auto est = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  const auto est = estimateSunRoom(photo, r, sun, 256);
   ASSERT_TRUE(est.ok()) << est.error().message();
   // The floor's light-fit albedo away from the patch (no sun there, nothing clipped).
   std::vector<float> floorAlbedo[3];
@@ -279,11 +286,7 @@ TEST(Lighting, AClippedSunPatchsBounceTellsTheSunsStrength) {
     for (int x = 0; x < photo.width; ++x) farClipped += photo.rgb(x, y).maxCoeff() >= 1.5f;
   for (float& v : photo.data) v = std::min(v, 1.f);
   ASSERT_GT(farClipped, 200) << "the sunlit patch must reach 1.5 times the clip level";
-  LightingOptions opt;
-  opt.gatherSamples = 128;
-  opt.gatherStride = 2;
-  opt.threads = 2;
-  const auto est = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  const auto est = estimateSunRoom(photo, r, sun, 128);
   ASSERT_TRUE(est.ok()) << est.error().message();
   // The patch's bounce at the fitted strength is part of the gathered light, and given apart.
   ASSERT_EQ(est->sunBounce.size(), 1u);
@@ -375,11 +378,7 @@ TEST(Lighting, TheLitPatchAgainstItsShadowTellsAClippedSunsStrength) {
   ASSERT_TRUE(pt.render(buf, 0, 256, 3));
   ImageF photo = buf.meanWithout();
   for (float& v : photo.data) v = std::min(v, 1.f);
-  LightingOptions opt;
-  opt.gatherSamples = 128;
-  opt.gatherStride = 2;
-  opt.threads = 2;
-  const auto est = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  const auto est = estimateSunRoom(photo, r, sun, 128);
   ASSERT_TRUE(est.ok()) << est.error().message();
   SunRatioOptions ro;
   ro.minPixels = 60;
