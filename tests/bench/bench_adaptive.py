@@ -54,11 +54,7 @@ def main():
     budgets = [float(b) for b in opt("--budgets", "8,24").split(",")]
     ways = opt("--ways", ",".join(WAYS)).split(",")
     noise = opt("--noise", "0.004")
-    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", "d1,d6"))
-    if sdir is None:
-        print("skipped: no ../shared/scenes")
-        return 0
-    os.makedirs(out, exist_ok=True)
+    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", "d1,d6"), out)
     py = sys.executable
     rows = []
     for name in names:

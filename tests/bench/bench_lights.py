@@ -74,11 +74,7 @@ def main():
     noise = opt("--noise", "0")
     runs = opt("--runs", ",".join(RUNS)).split(",")
     seeds = [int(v) for v in opt("--seeds", "1").split(",")]
-    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
-    if sdir is None:
-        print("skipped: no ../shared/scenes")
-        return 0
-    os.makedirs(out, exist_ok=True)
+    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""), out)
     py = sys.executable
     base = benchlib.harness_baselines(harness, sdir)
     rows, objective_rows = [], []

@@ -24,11 +24,7 @@ def main():
     repeat = int(opt("--repeat", "1"))
     mode = opt("--mode", "assisted")
     tag = "" if mode == "assisted" else "_" + mode
-    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""))
-    if sdir is None:
-        print("skipped: no ../shared/scenes")
-        return 0
-    os.makedirs(out, exist_ok=True)
+    sdir, harness, names = benchlib.scene_rooms(opt("--scenes", ""), out)
     py = sys.executable
     base = benchlib.harness_baselines(harness, sdir)
     rows = []

@@ -54,14 +54,17 @@ def shared_dir():
     return os.environ.get("INLAY_SHARED_DIR", os.path.join(HERE, "..", "..", "..", "shared"))
 
 
-def scene_rooms(only=""):
+def scene_rooms(only, out):
     """(scenes folder, harness.py, room names with a truth.json, filtered by the comma-separated
-    prefixes in `only`); the folder is None when ../shared/scenes is absent."""
+    prefixes in `only`), with the output folder `out` made; prints "skipped" and exits 0 when
+    ../shared/scenes is absent (a user's clone)."""
     shared = shared_dir()
     sdir = os.path.join(shared, "scenes")
     harness = os.path.join(shared, "tools", "harness.py")
     if not os.path.isdir(sdir):
-        return None, harness, []
+        print("skipped: no ../shared/scenes")
+        sys.exit(0)
+    os.makedirs(out, exist_ok=True)
     names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
     if only:
         names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
