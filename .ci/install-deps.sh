@@ -9,6 +9,7 @@ PKGS=(
   libopenimageio-dev openimageio-tools libosd-dev libeigen3-dev libtbb-dev libassimp-dev
   nlohmann-json3-dev zlib1g-dev libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  desktop-file-utils   # desktop-file-validate: the .desktop entry (tests/install_smoke_test.sh)
   clang libclang-rt-14-dev   # tests/fuzz/run_fuzzers.sh (libFuzzer)
   python3 python3-numpy python3-opencv python3-openimageio python3-scipy python3-matplotlib
 )

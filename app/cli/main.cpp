@@ -68,9 +68,10 @@ Render options:
                           photo's size) instead of the estimate's
   --quiet                 no progress on stderr
 
-The scene file format is described in README.md (keys: photo, camera, layout, lights, shafts,
-surfaces, occluders, objects, render). Outputs are written to a temporary file and renamed, so an interrupted run
-never leaves a half-written file. Ctrl-C stops within a second.
+The scene file format is described in docs/scene-file.md (installed: PREFIX/share/doc/inlay;
+keys: photo, camera, layout, lights, shafts, surfaces, occluders, objects, render). Outputs are
+written to a temporary file and renamed, so an interrupted run never leaves a half-written file.
+Ctrl-C stops within a second.
 
 Exit status: 0 success, 2 bad input or usage, 1 internal failure or interrupted.
 

@@ -1,5 +1,7 @@
 #include "i18n.h"
 
+#include "inlay/engine/data_dirs.h"
+
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -19,6 +21,12 @@ std::unique_ptr<QTranslator>& qtTranslator() {
 std::unique_ptr<QTranslator>& ownTranslator() {
   static std::unique_ptr<QTranslator> t;
   return t;
+}
+
+// The installed catalogues (share/inlay/translations beside bin/): a language compiled into the
+// program is taken from the program; one added later (a new .qm dropped there) from this folder.
+QString installedTranslationsDir() {
+  return QString::fromStdString(findDataDir("translations"));
 }
 
 }  // namespace
@@ -53,7 +61,10 @@ bool installTranslators(const QString& language) {
     qtTranslator() = std::move(qt);
   }
   auto own = std::make_unique<QTranslator>();
-  if (own->load(QStringLiteral(":/i18n/inlay_") + lang + QStringLiteral(".qm"))) {
+  const QString installed = installedTranslationsDir();
+  if (own->load(QStringLiteral(":/i18n/inlay_") + lang + QStringLiteral(".qm")) ||
+      (!installed.isEmpty() &&
+       own->load(QStringLiteral("inlay_") + lang + QStringLiteral(".qm"), installed))) {
     QCoreApplication::installTranslator(own.get());
     ownTranslator() = std::move(own);
     return true;

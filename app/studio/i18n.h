@@ -1,5 +1,6 @@
 // Translations: Qt's own (qtbase_<lang>) and ours (:/i18n/inlay_<lang>.qm, compiled from
-// translations/inlay_<lang>.ts and embedded in the studio library).
+// translations/inlay_<lang>.ts and embedded in the studio library; a language not embedded is
+// read from the installed share/inlay/translations/inlay_<lang>.qm).
 //
 // The language comes from, in order: the environment variable INLAY_LANG (tests, "de"), the
 // setting "language" (QSettings; "" or "system" = follow the system), the system locale.

@@ -1,5 +1,7 @@
 #include "inlay/engine/pipeline.h"
 
+#include "inlay/engine/data_dirs.h"
+
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
@@ -256,13 +258,7 @@ std::string exampleScenePath() {
   namespace fs = std::filesystem;
   std::vector<fs::path> candidates;
   if (const char* env = std::getenv("INLAY_EXAMPLE_DIR")) candidates.emplace_back(env);
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    candidates.push_back(exe.parent_path() / "../share/inlay/example");
-    candidates.push_back(exe.parent_path() / "../../resources/example");
-  }
-  candidates.emplace_back(INLAY_EXAMPLE_DIR);
+  for (const std::string& dir : dataDirCandidates("example")) candidates.emplace_back(dir);
   for (const auto& c : candidates)
     if (fs::exists(c / "scene.json")) return fs::weakly_canonical(c / "scene.json").string();
   return {};
