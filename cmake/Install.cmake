@@ -9,7 +9,7 @@
 # P/share/icons/hicolor/...     the icon, SVG and PNG
 # P/share/applications/inlay.desktop
 # P/share/man/man1/inlay-cli.1.gz, inlay.1.gz   from the programs' own --help (ManPage.cmake)
-# P/share/doc/inlay/            the user documentation (README.md, docs/), copyright, changelog
+# P/share/doc/inlay/            README.md and docs/ (their links kept), copyright, changelog
 #
 # Included after the targets exist (the man pages run them).
 
@@ -60,7 +60,7 @@ endif()
 # --- Documentation ------------------------------------------------------------------------------
 install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/packaging/copyright
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
-install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR}
         PATTERN "*.py" EXCLUDE)
 # Debian wants a changelog.gz beside the copyright (gzip -9n: no timestamp).
 configure_file(${CMAKE_SOURCE_DIR}/packaging/changelog.in ${CMAKE_BINARY_DIR}/packaging/changelog @ONLY)
