@@ -14,6 +14,17 @@
 # Included after the targets exist (the man pages run them).
 
 set(INLAY_DATA_DEST ${CMAKE_INSTALL_DATADIR}/inlay)
+# The Maintainer field and the changelog's signature: example.org until the project names one.
+set(INLAY_PACKAGE_MAINTAINER "Inlay developers <inlay@example.org>" CACHE STRING
+    "The .deb's Maintainer (name <address>)")
+
+# --- The programs -------------------------------------------------------------------------------
+# Debian's hardening: full RELRO (the GOT read-only after start).
+foreach(program inlay-cli inlay)
+  if(TARGET ${program})
+    target_link_options(${program} PRIVATE -Wl,-z,relro -Wl,-z,now)
+  endif()
+endforeach()
 
 # --- Data ---------------------------------------------------------------------------------------
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/resources/example DESTINATION ${INLAY_DATA_DEST})
@@ -77,11 +88,18 @@ install(FILES ${CMAKE_BINARY_DIR}/packaging/changelog.gz DESTINATION ${CMAKE_INS
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME inlay)
 set(CPACK_PACKAGE_VENDOR "The Inlay authors")
-set(CPACK_PACKAGE_CONTACT "Inlay developers <inlay@invalid>" CACHE STRING
-    "The .deb's Maintainer field")
+set(CPACK_PACKAGE_CONTACT "${INLAY_PACKAGE_MAINTAINER}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "insert synthetic 3D objects into photographs")
-set(CPACK_PACKAGE_DESCRIPTION
-  "Inlay places 3D objects into an ordinary photograph so that they look as if they had been there: right perspective, lit by the room's own lights, casting shadows and bouncing light onto the real floor.\n\nIt fits a box room to the photo, estimates the room's albedo and its lights, renders the scene with and without the objects with a path tracer, and composites the difference into the photo.\n\nThe package holds the studio (inlay) and the command line (inlay-cli).")
+string(JOIN "\n" CPACK_PACKAGE_DESCRIPTION
+  "Inlay places 3D objects into an ordinary photograph so that they look as if"
+  "they had been there: right perspective, lit by the room's own lights, casting"
+  "shadows and bouncing light onto the real floor."
+  ""
+  "It fits a box room to the photo, estimates the room's albedo and its lights,"
+  "renders the scene with and without the objects with a path tracer, and"
+  "composites the difference into the photo."
+  ""
+  "The package holds the studio (inlay) and the command line (inlay-cli).")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
