@@ -1,6 +1,7 @@
 // inlay-cli: the Inlay engine without a window (../shared/spec/cli.md).
 // Exit status: 0 success, 2 bad input or usage (one line naming file, key and reason),
 // 1 internal failure or interruption.
+#include "batch.h"
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image_io.h"
@@ -43,6 +44,10 @@ constexpr const char* kUsage = R"(Usage:
                                                      the reconstructed scene as glTF 2.0 (room
                                                      with albedo textures, lights as emissive
                                                      geometry, camera, objects and materials)
+  inlay-cli batch MANIFEST.jsonl [--jobs N] [--shard K/N] [render options]
+                                                     one render per manifest line (a scene, its
+                                                     object overrides, an output); each scene
+                                                     prepared once; existing outputs skipped
   inlay-cli --help | --version
 
 Render options:
@@ -567,6 +572,19 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   return 0;
 }
 
+// `batch` parses its own options (app/cli/batch.h).
+int batchCommand(int argc, char** argv) {
+  try {
+    return inlay::cli::runBatch(argc, argv, gCancel, gInterrupted);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "inlay-cli: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "inlay-cli: internal error: %s\n", e.what());
+    return 1;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -587,6 +605,7 @@ int main(int argc, char** argv) {
       return 0;
     }
   }
+  if (!std::strcmp(argv[1], "batch")) return batchCommand(argc - 1, argv + 1);
   if (const std::string err = parseArgs(argc, argv, a); !err.empty()) return usageError(err);
   try {
     if (a.command == "render") {

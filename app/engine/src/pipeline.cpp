@@ -347,6 +347,34 @@ Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index) {
                      "objects[" + std::to_string(index) + "]");
 }
 
+Expected<PlacedObjects> placeObjects(const std::vector<ObjectKeys>& objects,
+                                     const SceneGeometry& geometry, const Camera& camera,
+                                     MeshCache* cache) {
+  MeshCache local;
+  MeshCache& meshes = cache ? *cache : local;
+  PlacedObjects out;
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const ObjectKeys& o = objects[i];
+    const std::string key = "objects[" + std::to_string(i) + "]";
+    auto& cached = meshes[(o.meshResolved.empty() ? o.mesh : o.meshResolved) + "#" +
+                          std::to_string(o.subdivideLevels)];
+    if (!cached) {
+      auto mesh = loadObjectMesh(o);
+      if (!mesh) return mesh.error().underKey(key);
+      cached = std::make_shared<const TriangleMesh>(std::move(*mesh));
+    }
+    auto place = placeObject(*cached, geometry, camera, o.basePx, o.heightM, o.yawDeg, key);
+    if (!place) return place.error();
+    InsertedObject obj;
+    obj.meshObject = cached;
+    obj.worldFromObject = place->worldFromObject;
+    obj.material = materialFromKeys(o.material, cached.get());
+    out.objects.push_back(obj);
+    out.placements.push_back(*place);
+  }
+  return out;
+}
+
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
   PreparedScene ps;
   ps.doc = doc;
@@ -550,26 +578,10 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
       if (lightMask.at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
-  std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes;
-  for (size_t i = 0; i < doc.objects.size(); ++i) {
-    const ObjectKeys& o = doc.objects[i];
-    const std::string key = "objects[" + std::to_string(i) + "]";
-    auto& cached = meshes[(o.meshResolved.empty() ? o.mesh : o.meshResolved) + "#" +
-                          std::to_string(o.subdivideLevels)];
-    if (!cached) {
-      auto mesh = loadObjectMesh(o);
-      if (!mesh) return mesh.error().underKey(key);
-      cached = std::make_shared<const TriangleMesh>(std::move(*mesh));
-    }
-    auto place = placeObject(*cached, ps.geometry, ps.camera, o.basePx, o.heightM, o.yawDeg, key);
-    if (!place) return place.error();
-    InsertedObject obj;
-    obj.meshObject = cached;
-    obj.worldFromObject = place->worldFromObject;
-    obj.material = materialFromKeys(o.material, cached.get());
-    rs.objects.push_back(obj);
-    ps.placements.push_back(*place);
-  }
+  auto placed = placeObjects(doc.objects, ps.geometry, ps.camera);
+  if (!placed) return placed.error();
+  rs.objects = std::move(placed->objects);
+  ps.placements = std::move(placed->placements);
   ps.stageSeconds.emplace_back("objects", secondsSince(t));
   progress("objects", 1);
   return ps;

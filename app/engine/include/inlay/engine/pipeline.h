@@ -16,6 +16,8 @@
 #include "inlay/render/session.h"
 
 #include <functional>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,20 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
 
 // Everything needed to render `doc`. Errors name the scene file's key and the reason.
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});
+
+// Meshes by file (resolved path and subdivision levels), shared between object sets.
+using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
+struct PlacedObjects {
+  std::vector<InsertedObject> objects;  // RenderScene::objects
+  std::vector<Placement> placements;    // per object
+};
+// The objects stage of prepareScene() alone: each object's mesh loaded (through `cache` when
+// given; not thread-safe), placed on the room and given its material, exactly as prepareScene()
+// does, so one prepared room serves many object sets (inlay-cli batch). Errors name
+// "objects[i]...".
+Expected<PlacedObjects> placeObjects(const std::vector<ObjectKeys>& objects,
+                                     const SceneGeometry& geometry, const Camera& camera,
+                                     MeshCache* cache = nullptr);
 
 // Placement of object `index` from the document's current base_px / height_m / yaw_deg (the
 // mesh stays loaded). Errors name "objects[index].base_px" etc.
