@@ -22,7 +22,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from checks import check, summary  # noqa: E402
 
-CLI = sys.argv[1]
+CLI = os.path.abspath(sys.argv[1])
 SOURCE = os.environ.get("INLAY_SOURCE_DIR",
                         os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLE = os.path.join(SOURCE, "resources", "example", "scene.json")
