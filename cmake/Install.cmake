@@ -61,7 +61,8 @@ function(inlay_man_page target summary)
             ${CMAKE_SOURCE_DIR}/packaging/man-see-also.roff
     COMMENT "Man page ${target}.1 from ${target} --help" VERBATIM)
   add_custom_target(${target}_man ALL DEPENDS ${page}.gz)
-  install(FILES ${page}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+  # OPTIONAL: a tree built only in part (--target inlay-cli) still installs.
+  install(FILES ${page}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 OPTIONAL)
 endfunction()
 if(CMAKE_CROSSCOMPILING)
   message(STATUS "cross-compiling: no man pages (they run the built programs)")
@@ -83,7 +84,7 @@ add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/packaging/changelog.gz
   COMMAND gzip -9nkf ${CMAKE_BINARY_DIR}/packaging/changelog
   DEPENDS ${CMAKE_BINARY_DIR}/packaging/changelog VERBATIM)
 add_custom_target(inlay_changelog ALL DEPENDS ${CMAKE_BINARY_DIR}/packaging/changelog.gz)
-install(FILES ${CMAKE_BINARY_DIR}/packaging/changelog.gz DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES ${CMAKE_BINARY_DIR}/packaging/changelog.gz DESTINATION ${CMAKE_INSTALL_DOCDIR} OPTIONAL)
 
 # --- The Debian package -------------------------------------------------------------------------
 # cpack --config build/CPackConfig.cmake -G DEB writes inlay_<version>_<arch>.deb. Its runtime
