@@ -7,11 +7,13 @@ On the bundled example (no ../shared needed), with builtin meshes:
   same objects (so the shared preparation changes nothing), and --jobs 1 and --jobs 2 agree;
 - a bad line fails alone: exit 2, the line listed, the other outputs written, no file for it;
 - resumable: an existing output is skipped; a scene whose outputs all exist is not prepared;
+- Ctrl-C stops it with exit 1 and no partial file;
 - bad manifests (not JSON, an unknown key, two lines writing one file, a bad --shard) exit 2
   with one line naming the manifest line and key; --shard splits by scene.
 """
 import json
 import os
+import signal
 import subprocess
 import sys
 import tempfile
@@ -157,6 +159,29 @@ def check_shards(tmp):
           written == ["b.png"], "%s %s" % (written, r.stderr))
 
 
+def check_interrupt(tmp):
+    """Ctrl-C while a line renders: exit 1, no file (whole or partial) for the unfinished lines."""
+    manifest = os.path.join(tmp, "int.jsonl")
+    write_manifest(manifest, [{"scene": EXAMPLE, "output": "int/a.png", "objects": [CUBE]},
+                              {"scene": EXAMPLE, "output": "int/b.png", "objects": [MOVED]}])
+    p = subprocess.Popen([CLI, "batch", manifest, "--spp", "100000", "--noise", "0"], cwd=tmp,
+                         stderr=subprocess.PIPE, text=True)
+    for line in p.stderr:   # the scene is prepared: the first line is rendering
+        if "prepared " in line:
+            break
+    p.send_signal(signal.SIGINT)
+    try:
+        rest = p.communicate(timeout=60)[1]
+    except subprocess.TimeoutExpired:
+        p.kill()
+        rest = p.communicate()[1]
+    out = os.path.join(tmp, "int")
+    left = os.listdir(out) if os.path.isdir(out) else []
+    check("Ctrl-C: exit 1 within a minute, says interrupted", p.returncode == 1 and
+          "interrupted" in rest, "exit %s: %s" % (p.returncode, rest))
+    check("Ctrl-C: no file left behind", left == [], str(left))
+
+
 def main():
     if not os.path.isfile(EXAMPLE):
         print("skipped: no bundled example at", EXAMPLE)
@@ -166,6 +191,7 @@ def main():
         check_resume(tmp, manifest1)
         check_bad_manifests(tmp)
         check_shards(tmp)
+        check_interrupt(tmp)
     return summary()
 
 
