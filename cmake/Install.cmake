@@ -43,7 +43,7 @@ foreach(size 16 32 48 64 128 256)
           DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/${size}x${size}/apps)
 endforeach()
 if(BUILD_APP)
-  install(FILES ${CMAKE_SOURCE_DIR}/packaging/inlay.desktop
+  install(FILES ${CMAKE_SOURCE_DIR}/resources/packaging/inlay.desktop
           DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 endif()
 
@@ -55,10 +55,10 @@ function(inlay_man_page target summary)
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
     COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:${target}> -DNAME=${target}
             -DSUMMARY=${summary} -DOUTPUT=${page}
-            -DSEE_ALSO_FILE=${CMAKE_SOURCE_DIR}/packaging/man-see-also.roff
+            -DSEE_ALSO_FILE=${CMAKE_SOURCE_DIR}/resources/packaging/man-see-also.roff
             -P ${CMAKE_SOURCE_DIR}/cmake/ManPage.cmake
     DEPENDS ${target} ${CMAKE_SOURCE_DIR}/cmake/ManPage.cmake
-            ${CMAKE_SOURCE_DIR}/packaging/man-see-also.roff
+            ${CMAKE_SOURCE_DIR}/resources/packaging/man-see-also.roff
     COMMENT "Man page ${target}.1 from ${target} --help" VERBATIM)
   add_custom_target(${target}_man ALL DEPENDS ${page}.gz)
   # OPTIONAL: a tree built only in part (--target inlay-cli) still installs.
@@ -74,12 +74,12 @@ else()
 endif()
 
 # --- Documentation ------------------------------------------------------------------------------
-install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/packaging/copyright
+install(FILES ${CMAKE_SOURCE_DIR}/README.md ${CMAKE_SOURCE_DIR}/resources/packaging/copyright
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs DESTINATION ${CMAKE_INSTALL_DOCDIR}
         PATTERN "*.py" EXCLUDE)
 # Debian wants a changelog.gz beside the copyright (gzip -9n: no timestamp).
-configure_file(${CMAKE_SOURCE_DIR}/packaging/changelog.in ${CMAKE_BINARY_DIR}/packaging/changelog @ONLY)
+configure_file(${CMAKE_SOURCE_DIR}/resources/packaging/changelog.in ${CMAKE_BINARY_DIR}/packaging/changelog @ONLY)
 add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/packaging/changelog.gz
   COMMAND gzip -9nkf ${CMAKE_BINARY_DIR}/packaging/changelog
   DEPENDS ${CMAKE_BINARY_DIR}/packaging/changelog VERBATIM)
