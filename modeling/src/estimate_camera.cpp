@@ -741,6 +741,7 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   // The horizon is as sure as the vertical vanishing point (a fallback's is not measured).
   const double upSigmaDeg = e.vanishingPoints[1].angularSigmaDeg;
   li.rules.horizonSigmaRad = upSigmaDeg < 90 ? upSigmaDeg * M_PI / 180 : 0.0;
+  li.refuseImplausible = o.refuseImplausibleBox;
   const auto lr = detail::estimateLayout(li);
   e.backWallPx = lr.cornersPx;
   e.layoutScore = lr.ok ? lr.score01 : 0.0;
