@@ -25,7 +25,8 @@ on the sheet (green accept, red reject) and counted. Photos without a verdict sh
 Writes DIR/york_boxes_<label>.csv (per photo: exit status, seconds, focal length, box depth,
 width and ceiling in m, layout confidence, warnings, verdict) and DIR/york_boxes_<label>.png;
 --small PNG also writes a 256-colour copy with half-size thumbnails (for the docs). Prints a JSON
-summary (photos, failures, the accepted count per scene type when verdicts are given).
+summary (photos, failures, boxes refused as implausible, the accepted count per scene type and
+per half A (even indices) and B (odd) when verdicts are given).
 """
 import csv, json, math, os, subprocess, sys, tempfile, time
 
@@ -202,14 +203,16 @@ def small_copy(path, small_path):
 def summary(rows):
     s = {"photos": len(rows), "failed": sum(1 for r in rows if r["exit"] != 0),
          "depth_m_median": float(np.median([r["depth_m"] for r in rows if r.get("depth_m") is not None] or [math.nan])),
-         "default_box": sum(1 for r in rows if r.get("warnings"))}
+         "box_refused": sum(1 for r in rows if "implausible" in (r.get("warnings") or ""))}
     judged = [r for r in rows if r.get("verdict") in ("accept", "reject")]
     if judged:
         s["judged"] = len(judged)
         s["accepted"] = sum(1 for r in judged if r["verdict"] == "accept")
+        # Per scene type, and per half (A: even indices in sorted order, B: odd).
         for scene in sorted({r["scene"] for r in judged}):
-            part = [r for r in judged if r["scene"] == scene]
-            s["accepted_" + scene] = "%d/%d" % (sum(1 for r in part if r["verdict"] == "accept"), len(part))
+            for half, parity in (("", None), ("_A", 0), ("_B", 1)):
+                part = [r for r in judged if r["scene"] == scene and (parity is None or r["index"] % 2 == parity)]
+                s["accepted_" + scene + half] = "%d/%d" % (sum(1 for r in part if r["verdict"] == "accept"), len(part))
     return s
 
 
