@@ -105,6 +105,16 @@ def main():
         check(name, ok, "exit %d: %s" % (r.returncode, r.stderr.strip()))
         check(name + " leaves output", open(out, "rb").read() == b"users file")
 
+    # A light outlined on the right wall with one point past the corner, left of the straight-ahead
+    # line (its ray never meets the right wall's plane in front of the camera): the message names
+    # the point and the corner to drag, not "the outline lies behind the camera".
+    p = scene(lambda s: s["lights"][0].update(points=[[400, 100], [480, 100], [480, 200], [170, 150]]), "across_corner")
+    r = run(cli, "render", p, "-o", out, "--spp", "1", "--quiet")
+    check("outline across a corner", r.returncode == 2 and "lights[0].points" in r.stderr
+          and "point 3 (170, 150) lies on the back wall" in r.stderr
+          and "drag the back wall's bottom-right corner at (379, 262)" in r.stderr
+          and "lies behind the camera" not in r.stderr, r.stderr.strip())
+
     # export: a bad extension is a usage error naming -o; a good one writes a .glb that starts
     # with glTF's magic; a bad subdivide level names its key.
     r = run(cli, "export", os.path.join(EXAMPLE, "scene.json"), "-o", os.path.join(tmp, "scene.txt"))

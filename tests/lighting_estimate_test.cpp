@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace inlay {
 namespace {
@@ -451,6 +452,40 @@ TEST(Lighting, OutlinesThatCannotBeLightsAreNamed) {
   EXPECT_NE(flat.error().message().find("no area"), std::string::npos);
   auto nan = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(std::nan(""), 10), Vec2(30, 20)}, "lights[0].points");
   EXPECT_FALSE(nan.ok());
+}
+
+// A window outlined on the left wall with one point on the back wall (where a box with its left
+// wall too far out puts it): the point's ray never meets the left wall's plane in front of the
+// camera. The message keeps the key, names the point, the two surfaces and the corner to drag.
+TEST(Lighting, AnOutlineOffItsWallSaysWhichPointAndWhatToDrag) {
+  const SyntheticRoom r = emptyRoom();
+  std::vector<Vec2> outline;
+  for (const Vec3& p : {Vec3(-2.5, 1.8, -4.6), Vec3(-2.5, 1.8, -5.2), Vec3(-2.5, 1.2, -5.2)})
+    outline.push_back(*r.camera.project(p));
+  for (const Vec2& p : outline) ASSERT_TRUE(p.x() > 0 && p.x() < 80 && p.y() > 0 && p.y() < 120);
+  outline.push_back(Vec2(100, 70));  // right of the centre: on the back wall
+  const auto l = lightFromOutline(r.camera, r.geometry, outline, "lights[0].points");
+  ASSERT_FALSE(l.ok());
+  const std::string m = l.error().message();
+  EXPECT_EQ(l.error().key, "lights[0].points");
+  EXPECT_EQ(m.find("the outline lies behind the camera"), std::string::npos);
+  for (const std::string& words :
+       {std::string("point 3 (100, 70) lies on the back wall"), std::string("most of the outline lies on the left wall"),
+        std::string("only behind the camera"), std::string("drag the back wall's bottom-left corner at (")})
+    EXPECT_NE(m.find(words), std::string::npos) << m;
+  const Vec2 bl = backWallCornersPx(r.camera, r.geometry.box)[3];
+  char at[64];
+  std::snprintf(at, sizeof at, "corner at (%.0f, %.0f)", bl.x(), bl.y());
+  EXPECT_NE(m.find(at), std::string::npos) << m;
+  // The advice per surface names the corner that moves it.
+  EXPECT_NE(roomBoxAdvice(r.camera, r.geometry.box, SurfaceKind::WallRight).find("bottom-right corner"),
+            std::string::npos);
+  EXPECT_NE(roomBoxAdvice(r.camera, r.geometry.box, SurfaceKind::Ceiling).find("top corners"),
+            std::string::npos);
+  // The same outline on the left wall alone is a light.
+  outline.pop_back();
+  outline.push_back(*r.camera.project(Vec3(-2.5, 1.2, -4.6)));
+  EXPECT_TRUE(lightFromOutline(r.camera, r.geometry, outline, "lights[0].points").ok());
 }
 
 }  // namespace

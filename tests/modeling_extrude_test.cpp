@@ -189,9 +189,12 @@ TEST(Extrude, AboveTheHorizonAndWrongClicksAreRefused) {
   const Vec3 vp = c.vanishingPointOf(Vec3(0, 0, -1));
   const double horizonY = vp.y() / vp.z();
   ASSERT_GT(horizonY, 5.0);
-  // Click above the horizon.
-  expectError(extrusionFromOutline(c, t.outline, Vec2(t.click.x(), horizonY - 5), "surfaces[0]"),
-              "surfaces[0].height_click_px", "horizon");
+  // Click above the horizon: the message says where the horizon is there and what to click.
+  const auto high = extrusionFromOutline(c, t.outline, Vec2(t.click.x(), horizonY - 5), "surfaces[0]");
+  expectError(high, "surfaces[0].height_click_px", "horizon");
+  expectError(high, "surfaces[0].height_click_px",
+              "(row y = " + std::to_string(int(std::lround(horizonRowPx(c, t.click.x())))) + " there)");
+  expectError(high, "surfaces[0].height_click_px", "click the floor straight below outline point 0");
   // Click on the wrong side: above the outline point (not below it) on its vertical.
   const Vec2 above = *c.project(Vec3(t.top[0].x(), 1.2, t.top[0].z()));
   const Vec2 wrong = t.outline[0] + 0.5 * (above - t.outline[0]);
@@ -205,8 +208,15 @@ TEST(Extrude, AboveTheHorizonAndWrongClicksAreRefused) {
   std::vector<Vec2> sky = t.outline;
   sky[2] = Vec2(sky[2].x(), horizonY - 30);
   sky[3] = Vec2(sky[3].x(), horizonY - 30);
-  expectError(extrusionFromOutline(c, sky, t.click, "surfaces[0]"), "surfaces[0].outline_px[2]",
-              "horizon");
+  const auto skyTop = extrusionFromOutline(c, sky, t.click, "surfaces[0]");
+  expectError(skyTop, "surfaces[0].outline_px[2]", "it is above the horizon");
+  expectError(skyTop, "surfaces[0].outline_px[2]", "outline the top below the horizon");
+  // The horizon's row is where the level plane through the eye vanishes: a point on it at any
+  // depth projects there.
+  for (double z : {-3.0, -30.0}) {
+    const Vec2 p = *c.project(Vec3(0.7, c.heightM, z));
+    EXPECT_NEAR(horizonRowPx(c, p.x()), p.y(), 1e-6);
+  }
 }
 
 TEST(Extrude, SlabAndBoxAndSceneGeometry) {

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <functional>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <random>
 
@@ -118,6 +119,61 @@ std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<u
 
 }  // namespace
 
+namespace {
+
+std::string pixelText(const Vec2& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.0f, %.0f)", p.x(), p.y());
+  return buf;
+}
+
+// A room surface's name in a sentence ("the left wall", "table 1's top").
+std::string surfaceText(const SceneGeometry& g, int id) {
+  switch (g.surfaces[size_t(id)].kind) {
+    case SurfaceKind::Floor: return "the floor";
+    case SurfaceKind::Ceiling: return "the ceiling";
+    case SurfaceKind::WallLeft: return "the left wall";
+    case SurfaceKind::WallRight: return "the right wall";
+    case SurfaceKind::WallBack: return "the back wall";
+    case SurfaceKind::WallRear: return "the wall behind the camera";
+    default: return "surface '" + g.surfaces[size_t(id)].name + "'";
+  }
+}
+
+// Why outline point i cannot be carried onto the plane of `surface`, where most of the outline
+// lies, and what to do. Its ray meets that plane only behind the camera, or runs along it
+// (den ~ 0): the point lies on another surface, and the room box puts the two where the photo
+// does not (a wall too far out, a floor crease too high), or the outline crosses a corner.
+std::string offSurfaceMessage(const Camera& camera, const SceneGeometry& g,
+                              const std::vector<Vec2>& outlinePx, const std::vector<SurfaceHit>& hits,
+                              size_t i, int surface, double den) {
+  const std::string on = surfaceText(g, surface), here = surfaceText(g, hits[i].surfaceId);
+  const SurfaceKind kind = g.surfaces[size_t(surface)].kind;
+  std::string out = "point " + std::to_string(i) + " " + pixelText(outlinePx[i]) + " lies on " +
+                    here + ", but most of the outline lies on " + on + ", whose plane its ray " +
+                    (std::abs(den) < 1e-9 ? "runs along" : "meets only behind the camera") +
+                    ": the outline cannot lie on one surface. ";
+  if (isBoxSurface(kind))
+    out += "Either the room box puts " + on + " where the photo does not show it (" +
+           roomBoxAdvice(camera, g.box, kind) + "), or the outline crosses onto " + here +
+           " (outline the light within one surface)";
+  else
+    out += "Outline the light within one surface";
+  if (kind == SurfaceKind::Floor || kind == SurfaceKind::Ceiling) {
+    const double y = horizonRowPx(camera, outlinePx[i].x());
+    if (std::isfinite(y)) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, " (points on the %s are %s the horizon, row y = %.0f there)",
+                    kind == SurfaceKind::Floor ? "floor" : "ceiling",
+                    kind == SurfaceKind::Floor ? "below" : "above", y);
+      out += buf;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
                                      const std::vector<Vec2>& outlinePx, const std::string& key) {
   if (outlinePx.size() < 3)
@@ -130,7 +186,9 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
     const auto h = geometry.intersect(camera.rayThroughPixel(outlinePx[i]));
     if (!h)
       return Error{"", key + "[" + std::to_string(i) + "]",
-                   "the point does not fall on any surface of the room"};
+                   "point " + std::to_string(i) + " " + pixelText(outlinePx[i]) +
+                       " does not fall on any surface of the room: " +
+                       roomBoxAdvice(camera, geometry.box, SurfaceKind::WallBack)};
     hits.push_back(*h);
     ++count[h->surfaceId];
   }
@@ -149,10 +207,9 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
   for (size_t i = 0; i < outlinePx.size(); ++i) {
     const Ray r = camera.rayThroughPixel(outlinePx[i]);
     const double den = r.direction.dot(n);
-    if (std::abs(den) < 1e-9)
-      return Error{"", key, "the outline is seen edge-on and cannot be placed"};
-    const double t = (c - r.origin).dot(n) / den;
-    if (!(t > 0)) return Error{"", key, "the outline lies behind the camera"};
+    const double t = std::abs(den) < 1e-9 ? -1.0 : (c - r.origin).dot(n) / den;
+    if (!(t > 0))
+      return Error{"", key, offSurfaceMessage(camera, geometry, outlinePx, hits, i, surface, den)};
     pts.push_back(r.at(t));
   }
   // An in-plane frame along the room's axes: lights on the ceiling are rectangles aligned with

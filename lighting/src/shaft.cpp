@@ -39,7 +39,10 @@ Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, cons
       const double cosv = std::max(0.05, std::abs(h->normalWorld.dot(r.direction)));
       out.push_back({x, y, std::log(std::max(lum, 1e-5)), h->surfaceId, h->pointWorld, h->t * h->t / cosv});
     }
-  if (out.size() < 4) return Error{"", key, "the box shows no surface of the room"};
+  if (out.size() < 4)
+    return Error{"", key,
+                 "the box shows no surface of the room: draw it over the sunlit patch on the floor "
+                 "or a wall, or " + roomBoxAdvice(camera, geometry.box, SurfaceKind::WallBack)};
   return out;
 }
 
@@ -152,14 +155,22 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
   dir.normalize();
   const Patch& receiver = patch ? *patch : *source;
   if (receiver.surface < 0 || size_t(receiver.surface) >= S)
-    return Error{"", key, "the lit region is not on any surface of the room"};
+    return Error{"", key,
+                 "the lit region is not on any surface of the room: " +
+                     roomBoxAdvice(camera, geometry.box, SurfaceKind::WallBack)};
   const Vec4 plane = planeOf(geometry.surfaces[size_t(receiver.surface)]);
   // The patch must face the light: light arrives on the room side of its surface.
   Vec3 n = plane.head<3>();
   const Vec3 towardCamera = camera.centreWorld() - receiver.centroid;
   if (n.dot(towardCamera) < 0) n = -n;
   if (patch && !(n.dot(dir) < -1e-3))
-    return Error{"", key, "the light's direction does not reach the lit patch from inside the room"};
+    return Error{"", key,
+                 "the light's direction does not reach the lit patch (on the " +
+                     geometry.surfaces[size_t(receiver.surface)].name +
+                     ") from inside the room: the window box and the patch box must be on the room's "
+                     "sides the sunlight passes between (the patch lit, the window it comes "
+                     "through), or " +
+                     roomBoxAdvice(camera, geometry.box, geometry.surfaces[size_t(receiver.surface)].kind)};
   out.sun.travelDirection = dir;
   out.sun.irradianceOverPi = Vec3(1, 1, 1);
   out.sun.receiverPlane = plane;

@@ -738,10 +738,15 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   li.startCornersPx = start;
   li.edges = e.photoEdges.get();
   li.cancel = o.cancel;
+  // The horizon is as sure as the vertical vanishing point (a fallback's is not measured).
+  const double upSigmaDeg = e.vanishingPoints[1].angularSigmaDeg;
+  li.rules.horizonSigmaRad = upSigmaDeg < 90 ? upSigmaDeg * M_PI / 180 : 0.0;
+  li.refuseImplausible = o.refuseImplausibleBox;
   const auto lr = detail::estimateLayout(li);
   e.backWallPx = lr.cornersPx;
   e.layoutScore = lr.ok ? lr.score01 : 0.0;
   if (!lr.ok) e.warnings.push_back("box layout: " + lr.problem + "; the back wall is a default");
+  if (!lr.refused.empty()) e.warnings.push_back("box layout: " + lr.refused);
   // A box the room builder accepts, or an ordinary room in front of the camera.
   if (!roomFromBackWall(e.camera, e.backWallPx).ok()) {
     bool anyFixed = false;

@@ -58,6 +58,19 @@ using detail::hitHorizontal;
 using detail::pxText;
 using detail::signedAreaTop;
 
+std::string rowText(double y) {
+  if (!std::isfinite(y)) return "undefined";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "y = %.0f", y);
+  return buf;
+}
+
+std::string metreText(double m) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f m", m);
+  return buf;
+}
+
 // Adds quad a b c d (counter-clockwise seen from the side its normal n points to).
 void addQuad(TriangleMesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
              const Vec3& n) {
@@ -222,6 +235,42 @@ std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box) 
   return out;
 }
 
+std::string roomBoxAdvice(const Camera& camera, const RoomBox& box, SurfaceKind surface) {
+  const auto c = backWallCornersPx(camera, box);
+  auto at = [&](int i) {
+    const bool inside = c[i].x() >= 0 && c[i].y() >= 0 && c[i].x() <= camera.widthPx &&
+                        c[i].y() <= camera.heightPx;
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.0f, %.0f)%s", c[i].x(), c[i].y(),
+                  inside ? "" : ", outside the photo");
+    return std::string(buf);
+  };
+  switch (surface) {
+    case SurfaceKind::WallLeft:
+      return "check the room box: drag the back wall's bottom-left corner at " + at(3) +
+             " onto the crease where the left wall meets the floor";
+    case SurfaceKind::WallRight:
+      return "check the room box: drag the back wall's bottom-right corner at " + at(2) +
+             " onto the crease where the right wall meets the floor";
+    case SurfaceKind::Ceiling:
+      return "check the room box: drag the back wall's top corners at " + at(0) + " and " + at(1) +
+             " onto the crease where the ceiling meets the back wall";
+    case SurfaceKind::Floor:
+    case SurfaceKind::WallBack:
+      return "check the room box: drag the back wall's bottom corners at " + at(3) + " and " +
+             at(2) + " onto the crease where the back wall meets the floor";
+    default:
+      return "check the room box: drag the back wall's corners at " + at(0) + ", " + at(1) + ", " +
+             at(2) + " and " + at(3) + " onto the room's corners";
+  }
+}
+
+double horizonRowPx(const Camera& camera, double x) {
+  const Vec3 line = camera.vanishingPointOf(Vec3::UnitX()).cross(camera.vanishingPointOf(Vec3::UnitZ()));
+  if (!line.allFinite() || std::abs(line.y()) < 1e-12) return std::nan("");
+  return -(line.x() * x + line.z()) / line.y();
+}
+
 double CardAlpha::alphaAt(const Vec3& pointWorld) const {
   if (alphaPx.empty()) return 0.0;
   const auto px = camera.project(pointWorld);
@@ -275,8 +324,9 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   const auto floorPt = hitHorizontal(camera.rayThroughPixel(clickPx), 0.0);
   if (!floorPt)
     return Error{"", key + ".height_click_px",
-                 "the click " + pxText(clickPx) + " is at or above the horizon, so it cannot be "
-                 "on the floor"};
+                 "the click " + pxText(clickPx) + " is at or above the horizon (row " +
+                     rowText(horizonRowPx(camera, clickPx.x())) + " there), so it cannot be on "
+                     "the floor: click the floor straight below outline point 0, below the horizon"};
   {
     // Point 0 must lie on the image of the vertical through the click: the line from the click
     // toward the vertical vanishing point (possibly at infinity).
@@ -304,7 +354,10 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   const double s = (a * e - b * d) / den;     // along the vertical line: the height
   const double tRay = (b * e - cc * d) / den;  // along the ray
   if (!(tRay > 0))
-    return Error{"", key + ".height_click_px", "the outline is behind the camera"};
+    return Error{"", key + ".height_click_px",
+                 "outline point 0 " + pxText(outlinePx[0]) + " and the floor click " +
+                     pxText(clickPx) + " do not meet in front of the camera (the vertical through "
+                     "the click passes behind it): click the floor straight below outline point 0"};
   const double h = s;
   if (!(h > 0.01))
     return Error{"", key + ".height_click_px",
@@ -326,7 +379,12 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
     if (!p)
       return Error{"", key + ".outline_px[" + std::to_string(i) + "]",
                    "the point " + pxText(outlinePx[i]) + " cannot lie on a top at " +
-                       std::to_string(h) + " m (it is on the other side of the horizon)"};
+                       metreText(h) + ": it is " + (h < camera.heightM ? "above" : "below") +
+                       " the horizon (row " + rowText(horizonRowPx(camera, outlinePx[i].x())) +
+                       " there), and a top " + (h < camera.heightM ? "below" : "above") +
+                       " the camera's eye is seen " + (h < camera.heightM ? "from above" : "from below") +
+                       ": outline the top " + (h < camera.heightM ? "below" : "above") +
+                       " the horizon, or check the height click"};
     ex.topOutlineWorld.push_back(*p);
   }
   const double area = signedAreaTop(ex.topOutlineWorld);

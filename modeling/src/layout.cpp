@@ -133,13 +133,14 @@ double longestEdgeRun(const std::vector<float>& across, double noise) {
 // Everything about one photo's layout search that does not depend on the hypothesis.
 class LayoutSearch {
  public:
-  LayoutSearch(const LayoutInput& in) : in_(in) {}
+  LayoutSearch(const LayoutInput& in) : in_(in), rules_(in.rules) {}
 
   bool setUp(std::string& problem) {
     const Camera& cam = *in_.camera;
     W_ = cam.widthPx;
     H_ = cam.heightPx;
     ws_ = std::min(1.0, kLayoutSidePx / std::max(W_, H_));
+    rules_.creaseSigmaPx = std::max(rules_.creaseSigmaPx, 1.0 / ws_);  // a layout pixel at least
     diag_ = std::hypot(double(W_), double(H_));
     hx_ = cam.vanishingPointOf(Vec3::UnitX());
     hy_ = cam.vanishingPointOf(Vec3::UnitY());
@@ -204,7 +205,31 @@ class LayoutSearch {
   struct Score {
     double total = -1e300;
     double edgeSupported = 0, edgeVisible = 0, regionSigned = 0, regionTotal = 0;
+    double topSupported = 0, topVisible = 0;  // the back wall's top edge alone
+    double ceilingZ = 0, ceilingY = 0;  // receding and vertical line samples on the ceiling
   };
+
+  // Whether the photo shows the box's top edge as a ceiling crease: at least half of its visible
+  // part on an edge, and above it a ceiling: receding lines (panels, lights, beams; at least a
+  // quarter of the edge's length) outweighing vertical ones (a facade over a roofline, not a
+  // ceiling).
+  static bool showsCeiling(const Score& s) {
+    return s.topVisible > 0 && s.topSupported >= 0.5 * s.topVisible &&
+           s.ceilingZ > s.ceilingY && s.ceilingZ >= 0.25 * s.topVisible;
+  }
+  // Why the box of parameters t (scored s) is implausible (BoxRules); empty when it is not.
+  // With the top edge held (the search's second pass after a ceiling refusal) it is a ceiling.
+  Implausible implausible(const std::array<double, 4>& t, const Score& s) const {
+    std::array<Vec2, 4> c;
+    if (!corners(t, c)) return {};
+    return implausibility(cam(), c, topHeld_ || showsCeiling(s), rules_);
+  }
+  // From now on score() refuses implausible boxes (the search's second pass); topHeld: the top
+  // edge is held where the photo shows a ceiling crease.
+  void setRefuseImplausible(bool topHeld) {
+    refuse_ = true;
+    topHeld_ = topHeld;
+  }
 
   // full: also the photo's contrast along the edges (slower; the search's final stages).
   Score score(const std::array<double, 4>& t, bool full = true) const {
@@ -228,8 +253,13 @@ class LayoutSearch {
       if (!clipToRect(a, b, W_ * ws_, H_ * ws_)) continue;
       const double len = (b - a).norm();
       if (len < 1) continue;
-      s.edgeSupported += edgeSupport(i, edgeFamily[i], a, b, full);
+      const double sup = edgeSupport(i, edgeFamily[i], a, b, full);
+      s.edgeSupported += sup;
       s.edgeVisible += len;
+      if (i == 0) {
+        s.topSupported = sup;
+        s.topVisible = len;
+      }
     }
     // Faces: inside the quad is the back wall, else the sector around vz between corner rays.
     const auto l = lines(t);
@@ -259,6 +289,8 @@ class LayoutSearch {
         face = r < r1 ? kCeiling : r < r2 ? kRight : r < r3 ? kFloor : kLeft;
       }
       s.regionSigned += (kAllowed[face][p.family] ? 1.0 : -1.0) * p.weight;
+      if (face == kCeiling && p.family == 2) s.ceilingZ += p.weight;
+      if (face == kCeiling && p.family == 1) s.ceilingY += p.weight;
       s.regionTotal += p.weight;
     }
     constexpr double kEdgeBias = 0.15;   // evidence below this along an edge counts against it
@@ -272,6 +304,7 @@ class LayoutSearch {
       prior += std::abs(t[i] - (std::isfinite(paired) ? paired : default_[i])) / diag_;
     }
     s.total -= 0.5 * ws_ * prior;
+    if (refuse_ && implausible(t, s)) s.total = -1e300;
     return s;
   }
 
@@ -496,6 +529,8 @@ class LayoutSearch {
   }
 
   const LayoutInput& in_;
+  BoxRules rules_;
+  bool refuse_ = false, topHeld_ = false;
   int W_ = 0, H_ = 0;
   double ws_ = 1, diag_ = 1;
   Vec3 hx_, hy_;
@@ -541,146 +576,115 @@ std::shared_ptr<const PhotoEdges> photoEdgesOf(const cv::Mat& grey8, int photoW,
   return pe;
 }
 
-LayoutResult estimateLayout(const LayoutInput& in) {
-  LayoutResult out;
-  INLAY_CHECK(in.camera && in.segments);
-  const Camera& cam = *in.camera;
-  // Whatever happens, a usable default: the middle half of the photo.
-  const double W = cam.widthPx, H = cam.heightPx;
-  out.cornersPx = {Vec2(0.25 * W, 0.25 * H), Vec2(0.75 * W, 0.25 * H), Vec2(0.75 * W, 0.75 * H),
-                   Vec2(0.25 * W, 0.75 * H)};
-  LayoutSearch search(in);
-  if (!search.setUp(out.problem)) return out;
+namespace {
 
-  // Lines fixed by placed corners: TL fixes top and left, TR top and right, BR bottom and
-  // right, BL bottom and left. Two corners on one line: the mean parameter.
-  constexpr int kCornerLines[4][2] = {{0, 2}, {0, 3}, {1, 3}, {1, 2}};
-  std::array<double, 4> fixedSum{0, 0, 0, 0};
-  std::array<int, 4> fixedCount{0, 0, 0, 0};
-  for (int c = 0; c < 4; ++c) {
-    if (!in.fixedCornersPx[c]) continue;
-    for (int line : kCornerLines[c]) {
-      const double t = search.paramOfCorner(line, *in.fixedCornersPx[c]);
-      if (!std::isfinite(t)) continue;
-      fixedSum[line] += t;
-      ++fixedCount[line];
+// Lines fixed by placed corners: TL fixes top and left, TR top and right, BR bottom and right,
+// BL bottom and left.
+constexpr int kCornerLines[4][2] = {{0, 2}, {0, 3}, {1, 3}, {1, 2}};
+
+// Candidates per line: lines through its vanishing point and the photo's own segments of that
+// family (weighted by length, merged when close), the line just outside the photo, and the
+// ordinary room's.
+std::vector<double> lineCandidates(const LayoutSearch& search, const LayoutInput& in, int i,
+                                   double current) {
+  std::vector<double> cand;
+  const auto& lo = search.lo();
+  const auto& hi = search.hi();
+  // Two kinds of votes, clustered separately: lines of the edge's own family (their
+  // midpoints), and the far ends of receding lines (where the floor, ceiling or a side wall
+  // meets the back wall): the best 4 and 2 clusters.
+  for (const bool receding : {false, true}) {
+    std::vector<std::pair<double, double>> votes;  // (param, weight)
+    for (size_t k = 0; k < in.segments->size(); ++k) {
+      const LineSegment& sg = (*in.segments)[k];
+      if (sg.userGiven || search.bordersBright(k)) continue;
+      const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
+      if (receding ? sg.family != 2 : !mine) continue;
+      const double v = search.paramOfCorner(
+          i, receding ? search.farEnd(sg) : Vec2(0.5 * (sg.aPx + sg.bPx)));
+      if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
+    }
+    std::sort(votes.begin(), votes.end());
+    std::vector<std::pair<double, double>> merged;  // (weight, param)
+    const double tol = 0.01 * search.diag();
+    for (size_t a = 0; a < votes.size();) {
+      size_t b = a;
+      double w = 0, sum = 0;
+      while (b < votes.size() && votes[b].first - votes[a].first < tol) {
+        w += votes[b].second;
+        sum += votes[b].second * votes[b].first;
+        ++b;
+      }
+      merged.push_back({w, sum / w});
+      a = b;
+    }
+    std::sort(merged.begin(), merged.end(),
+              [](const auto& x, const auto& y) { return x.first > y.first; });
+    const size_t keep = receding ? 2 : 4;
+    for (size_t k = 0; k < std::min(keep, merged.size()); ++k) cand.push_back(merged[k].second);
+  }
+  for (double v : search.contrastCandidates(i, 3)) cand.push_back(v);
+  cand.push_back(search.outside()[i]);
+  cand.push_back(current);
+  // Candidates closer than half a percent of the diagonal are one.
+  std::sort(cand.begin(), cand.end());
+  cand.erase(std::unique(cand.begin(), cand.end(),
+                         [&](double x, double y) { return y - x < 0.005 * search.diag(); }),
+             cand.end());
+  return cand;
+}
+
+// The coordinate ascent's starting boxes: every combination of the lines' candidates scored
+// on the segments, the best few re-scored with the photo's contrast (a crease no segment
+// found); the best two, each also with the top edge its bottom edge implies (a ceiling out of
+// view); and the ordinary room.
+std::vector<std::array<double, 4>> globalStarts(const LayoutSearch& search, const LayoutInput& in,
+                                                const std::array<double, 4>& t,
+                                                const std::array<bool, 4>& isFixed) {
+  std::array<std::vector<double>, 4> cand;
+  for (int i = 0; i < 4; ++i)
+    cand[i] = isFixed[i] ? std::vector<double>{t[i]} : lineCandidates(search, in, i, t[i]);
+  struct Cand { double score; std::array<double, 4> t; };
+  std::vector<Cand> cands;
+  auto stop = [&] { return in.cancel && in.cancel->shouldStop(); };
+  for (double a : cand[0])
+    for (double b : cand[1]) {
+      if (stop()) break;
+      for (double c : cand[2])
+        for (double d : cand[3]) {
+          const std::array<double, 4> p{a, b, c, d};
+          cands.push_back({search.score(p, false).total, p});
+        }
+    }
+  auto byScore = [](const Cand& x, const Cand& y) { return x.score > y.score; };
+  std::sort(cands.begin(), cands.end(), byScore);
+  cands.resize(std::min<size_t>(12, cands.size()));
+  for (Cand& c : cands) c.score = search.score(c.t).total;
+  std::sort(cands.begin(), cands.end(), byScore);
+  std::vector<std::array<double, 4>> starts;
+  for (size_t i = 0; i < std::min<size_t>(2, cands.size()); ++i) {
+    starts.push_back(cands[i].t);
+    const double top = search.ceilingFromFloor(cands[i].t[1]);
+    if (!isFixed[0] && std::isfinite(top) && top >= search.lo()[0] && top <= search.hi()[0]) {
+      starts.push_back(cands[i].t);
+      starts.back()[0] = top;
     }
   }
-  std::array<bool, 4> isFixed{};
-  std::array<double, 4> t = search.defaults();
-  for (int i = 0; i < 4; ++i)
-    if (fixedCount[i] > 0) {
-      isFixed[i] = true;
-      t[i] = fixedSum[i] / fixedCount[i];
-    }
+  starts.push_back(t);  // the ordinary room
+  return starts;
+}
 
+// Coordinate ascent from each start, coarse to fine (a window around the current value,
+// shrinking); the best box reached.
+std::pair<LayoutSearch::Score, std::array<double, 4>> ascend(
+    const LayoutSearch& search, const LayoutInput& in,
+    const std::vector<std::array<double, 4>>& starts, const std::array<bool, 4>& isFixed) {
+  LayoutSearch::Score best;
+  std::array<double, 4> bestT = starts.back();
   auto stop = [&] { return in.cancel && in.cancel->shouldStop(); };
   const auto& lo = search.lo();
   const auto& hi = search.hi();
-  LayoutSearch::Score best;
-  std::vector<std::array<double, 4>> starts;
-  if (in.startCornersPx) {
-    std::array<double, 4> s = t;
-    for (int i = 0; i < 4; ++i) {
-      if (isFixed[i]) continue;
-      // Each line passes through two corners of the previous quad: take the first that gives
-      // a finite parameter.
-      for (int c = 0; c < 4; ++c)
-        if (kCornerLines[c][0] == i || kCornerLines[c][1] == i) {
-          const double v = search.paramOfCorner(i, (*in.startCornersPx)[c]);
-          if (std::isfinite(v)) {
-            s[i] = std::clamp(v, lo[i], hi[i]);
-            break;
-          }
-        }
-    }
-    starts.push_back(s);
-  } else {
-    // Candidates per line: lines through its vanishing point and the photo's own segments of
-    // that family (weighted by length, merged when close), the line just outside the photo,
-    // and the ordinary room's; then every combination, keeping the best few as starts.
-    std::array<std::vector<double>, 4> cand;
-    for (int i = 0; i < 4; ++i) {
-      if (isFixed[i]) {
-        cand[i] = {t[i]};
-        continue;
-      }
-      // Two kinds of votes, clustered separately: lines of the edge's own family (their
-      // midpoints), and the far ends of receding lines (where the floor, ceiling or a side wall
-      // meets the back wall): the best 5 and 2 clusters.
-      for (const bool receding : {false, true}) {
-        std::vector<std::pair<double, double>> votes;  // (param, weight)
-        for (size_t k = 0; k < in.segments->size(); ++k) {
-          const LineSegment& sg = (*in.segments)[k];
-          if (sg.userGiven || search.bordersBright(k)) continue;
-          const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
-          if (receding ? sg.family != 2 : !mine) continue;
-          const double v = search.paramOfCorner(
-              i, receding ? search.farEnd(sg) : Vec2(0.5 * (sg.aPx + sg.bPx)));
-          if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
-        }
-        std::sort(votes.begin(), votes.end());
-        std::vector<std::pair<double, double>> merged;  // (weight, param)
-        const double tol = 0.01 * search.diag();
-        for (size_t a = 0; a < votes.size();) {
-          size_t b = a;
-          double w = 0, sum = 0;
-          while (b < votes.size() && votes[b].first - votes[a].first < tol) {
-            w += votes[b].second;
-            sum += votes[b].second * votes[b].first;
-            ++b;
-          }
-          merged.push_back({w, sum / w});
-          a = b;
-        }
-        std::sort(merged.begin(), merged.end(),
-                  [](const auto& x, const auto& y) { return x.first > y.first; });
-        const size_t keep = receding ? 2 : 4;
-        for (size_t k = 0; k < std::min(keep, merged.size()); ++k) cand[i].push_back(merged[k].second);
-      }
-      for (double v : search.contrastCandidates(i, 3)) cand[i].push_back(v);
-      cand[i].push_back(search.outside()[i]);
-      cand[i].push_back(t[i]);
-      // Candidates closer than half a percent of the diagonal are one.
-      std::sort(cand[i].begin(), cand[i].end());
-      cand[i].erase(std::unique(cand[i].begin(), cand[i].end(),
-                                [&](double x, double y) { return y - x < 0.005 * search.diag(); }),
-                    cand[i].end());
-    }
-    struct Cand { double score; std::array<double, 4> t; };
-    std::vector<Cand> cands;
-    std::array<double, 4> p = t;
-    for (double a : cand[0])
-      for (double b : cand[1]) {
-        if (stop()) break;
-        for (double c : cand[2])
-          for (double d : cand[3]) {
-            p = {a, b, c, d};
-            cands.push_back({search.score(p, false).total, p});
-          }
-      }
-    std::sort(cands.begin(), cands.end(),
-              [](const Cand& x, const Cand& y) { return x.score > y.score; });
-    // The segments' best few, re-scored with the photo's contrast (a crease no segment found).
-    cands.resize(std::min<size_t>(12, cands.size()));
-    for (Cand& c : cands) c.score = search.score(c.t).total;
-    std::sort(cands.begin(), cands.end(),
-              [](const Cand& x, const Cand& y) { return x.score > y.score; });
-    for (size_t i = 0; i < std::min<size_t>(2, cands.size()); ++i) {
-      starts.push_back(cands[i].t);
-      // The same with the top edge the bottom one implies (a ceiling out of view).
-      const double top = search.ceilingFromFloor(cands[i].t[1]);
-      if (!isFixed[0] && std::isfinite(top) && top >= lo[0] && top <= hi[0]) {
-        starts.push_back(cands[i].t);
-        starts.back()[0] = top;
-      }
-    }
-    starts.push_back(t);  // the ordinary room
-  }
-
-  std::array<double, 4> bestT = t;
   for (auto s : starts) {
-    // Coordinate ascent, coarse to fine: a window around the current value, shrinking.
     LayoutSearch::Score cur = search.score(s);
     double window = in.startCornersPx ? 0.05 : 0.25;
     for (int round = 0; round < 30 && window * search.diag() > 0.5; ++round) {
@@ -710,6 +714,176 @@ LayoutResult estimateLayout(const LayoutInput& in) {
     if (cur.total > best.total) {
       best = cur;
       bestT = s;
+    }
+  }
+  return {best, bestT};
+}
+
+std::string metresText(const BoxSize& b) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.1f m deep, %.1f m wide", b.depthM, b.widthM);
+  std::string out = buf;
+  if (std::isfinite(b.ceilingM)) {
+    std::snprintf(buf, sizeof buf, ", ceiling %.1f m", b.ceilingM);
+    out += buf;
+  }
+  return out;
+}
+
+}  // namespace
+
+BoxSize boxSizeOf(const Camera& cam, const std::array<Vec2, 4>& c) {
+  BoxSize b;
+  const Vec3 o = cam.centreWorld();
+  Vec3 foot[2];
+  for (int k = 0; k < 2; ++k) {
+    const Vec3 d = cam.directionThroughPixel(c[3 - k]);  // BL, then BR
+    if (!d.allFinite() || !(d.y() < -1e-9)) return b;
+    foot[k] = o + d * (cam.heightM / -d.y());
+  }
+  const double zBack = 0.5 * (foot[0].z() + foot[1].z());
+  if (!(zBack < -1e-6)) return b;
+  b.depthM = -zBack;
+  b.widthM = foot[1].x() - foot[0].x();
+  b.creaseRad = std::atan2(cam.heightM, b.depthM);
+  double sum = 0;
+  int n = 0;
+  for (int i : {0, 1}) {
+    const Vec3 d = cam.directionThroughPixel(c[i]);
+    if (!d.allFinite() || std::abs(d.z()) < 1e-12) continue;
+    const double t = (zBack - o.z()) / d.z();
+    if (!(t > 0)) continue;
+    sum += o.y() + t * d.y();
+    ++n;
+  }
+  if (n > 0) b.ceilingM = sum / n;
+  b.ok = std::isfinite(b.depthM) && std::isfinite(b.widthM);
+  return b;
+}
+
+Implausible implausibility(const Camera& cam, const std::array<Vec2, 4>& c, bool showsCeiling,
+                           const BoxRules& r) {
+  const BoxSize b = boxSizeOf(cam, c);
+  if (!b.ok) return {};  // not a box at all: the room builder says why
+  const double h = cam.heightM;
+  char buf[320];
+  // The crease's angle is known to s: the horizon's and the crease's own 1-sigma.
+  const double s = std::hypot(r.horizonSigmaRad, std::atan(r.creaseSigmaPx / cam.focalPx));
+  const double lo = b.creaseRad - 2 * s, hi = b.creaseRad + 2 * s;
+  if (!(lo > 0) || std::tan(hi) / std::tan(lo) > r.depthFactor) {
+    std::snprintf(buf, sizeof buf,
+                  "its floor crease is %.1f deg below the horizon, too near it to place a back "
+                  "wall %.1f m away from a camera %.2f m up (the photo bounds that depth only to "
+                  "%s)",
+                  b.creaseRad * 180 / M_PI, b.depthM, h,
+                  lo > 0 ? (std::to_string(int(std::lround(h / std::tan(hi)))) + "-" +
+                            std::to_string(int(std::lround(h / std::tan(lo)))) + " m")
+                               .c_str()
+                         : "no bound");
+    return {Implausible::kDepth, buf};
+  }
+  if (b.widthM < r.minWidthOverEye * h) {
+    std::snprintf(buf, sizeof buf, "it is %.2f m wide, too narrow to hold a camera %.2f m up",
+                  b.widthM, h);
+    return {Implausible::kWidth, buf};
+  }
+  if (showsCeiling && std::isfinite(b.ceilingM) && b.ceilingM > r.maxCeilingOverEye * h) {
+    std::snprintf(buf, sizeof buf,
+                  "its ceiling crease, seen in the photo, would be %.1f m up (%.1f camera "
+                  "heights) over a floor crease %.1f m away: that floor crease is more likely "
+                  "the top of furniture or a sill",
+                  b.ceilingM, b.ceilingM / h, b.depthM);
+    return {Implausible::kCeiling, buf};
+  }
+  return {};
+}
+
+LayoutResult estimateLayout(const LayoutInput& in) {
+  LayoutResult out;
+  INLAY_CHECK(in.camera && in.segments);
+  const Camera& cam = *in.camera;
+  // Whatever happens, a usable default: the middle half of the photo.
+  const double W = cam.widthPx, H = cam.heightPx;
+  out.cornersPx = {Vec2(0.25 * W, 0.25 * H), Vec2(0.75 * W, 0.25 * H), Vec2(0.75 * W, 0.75 * H),
+                   Vec2(0.25 * W, 0.75 * H)};
+  LayoutSearch search(in);
+  if (!search.setUp(out.problem)) return out;
+
+  // Two corners on one line: the mean parameter.
+  std::array<double, 4> fixedSum{0, 0, 0, 0};
+  std::array<int, 4> fixedCount{0, 0, 0, 0};
+  bool anyFixed = false;
+  for (int c = 0; c < 4; ++c) {
+    if (!in.fixedCornersPx[c]) continue;
+    anyFixed = true;
+    for (int line : kCornerLines[c]) {
+      const double t = search.paramOfCorner(line, *in.fixedCornersPx[c]);
+      if (!std::isfinite(t)) continue;
+      fixedSum[line] += t;
+      ++fixedCount[line];
+    }
+  }
+  std::array<bool, 4> isFixed{};
+  std::array<double, 4> t = search.defaults();
+  for (int i = 0; i < 4; ++i)
+    if (fixedCount[i] > 0) {
+      isFixed[i] = true;
+      t[i] = fixedSum[i] / fixedCount[i];
+    }
+
+  std::vector<std::array<double, 4>> starts;
+  if (in.startCornersPx) {
+    std::array<double, 4> s = t;
+    for (int i = 0; i < 4; ++i) {
+      if (isFixed[i]) continue;
+      // Each line passes through two corners of the previous quad: take the first that gives
+      // a finite parameter.
+      for (int c = 0; c < 4; ++c)
+        if (kCornerLines[c][0] == i || kCornerLines[c][1] == i) {
+          const double v = search.paramOfCorner(i, (*in.startCornersPx)[c]);
+          if (std::isfinite(v)) {
+            s[i] = std::clamp(v, search.lo()[i], search.hi()[i]);
+            break;
+          }
+        }
+    }
+    starts.push_back(s);
+  } else {
+    starts = globalStarts(search, in, t, isFixed);
+  }
+  auto [best, bestT] = ascend(search, in, starts, isFixed);
+
+  // The automatic box only: an implausible best box gives way to the best plausible one (the
+  // search again, refusing implausible boxes), else to the ordinary room.
+  if (in.refuseImplausible && !anyFixed && !in.startCornersPx && best.total > -1e299) {
+    const Implausible why = search.implausible(bestT, best);
+    if (why) {
+      std::array<Vec2, 4> refusedCorners;
+      search.corners(bestT, refusedCorners);
+      const BoxSize refused = boxSizeOf(cam, refusedCorners);
+      // A ceiling the photo shows stays; the floor crease must come down to a plausible one.
+      const bool holdTop = why.rule == Implausible::kCeiling;
+      if (holdTop) {
+        isFixed[0] = true;
+        t[0] = bestT[0];
+      }
+      search.setRefuseImplausible(holdTop);
+      auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, t, isFixed), isFixed);
+      std::array<Vec2, 4> c2;
+      const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
+      out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
+                    "; " + (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                                  : std::string("an ordinary room is assumed")) +
+                    ": check the box";
+      best = found ? best2 : LayoutSearch::Score{};
+      bestT = found ? bestT2 : t;
+      if (!found) {
+        std::array<Vec2, 4> c0;
+        if (search.corners(t, c0)) out.cornersPx = c0;
+        out.ok = true;
+        out.score01 = 0;
+        return out;
+      }
     }
   }
   std::array<Vec2, 4> c;

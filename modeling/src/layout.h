@@ -6,6 +6,7 @@
 
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/estimate_camera.h"
+#include "layout_rules.h"
 
 #include <opencv2/core.hpp>
 
@@ -39,6 +40,9 @@ struct LayoutInput {
   std::optional<std::array<Vec2, 4>> startCornersPx;   // search locally from here (a correction)
   const PhotoEdges* edges = nullptr;                   // none: segments only
   const CancelToken* cancel = nullptr;
+  // Refuse implausible boxes (BoxRules) when no corner is fixed and no start given.
+  bool refuseImplausible = true;
+  BoxRules rules;
 };
 
 struct LayoutResult {
@@ -46,6 +50,9 @@ struct LayoutResult {
   std::array<Vec2, 4> cornersPx;  // TL, TR, BR, BL, photo pixels
   double score01 = 0;       // share of the box's visible edges and faces the lines support
   std::string problem;      // why not ok
+  // When the best-supported box was refused as implausible: why, and what replaced it (a
+  // sentence for CameraEstimate::warnings); empty otherwise.
+  std::string refused;
 };
 
 LayoutResult estimateLayout(const LayoutInput& input);

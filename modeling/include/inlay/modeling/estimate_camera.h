@@ -152,6 +152,11 @@ struct EstimateOptions {
   std::optional<Vec2> principalPx;
   double cameraHeightM = 1.6;  // Camera::heightM of the result (the scene's camera.height_m)
   bool estimateLayout = true;
+  // Refuse an implausible automatic box and search again (modeling/src/layout_rules.h: a floor
+  // crease too near the horizon for its depth, a room narrower than half the camera's height, a
+  // ceiling the photo shows more than 3 camera heights up); a warning says what was refused and
+  // what replaced it. Off: the best-supported box, whatever it is (a diagnosis).
+  bool refuseImplausibleBox = true;
   uint32_t seed = 1;            // hypothesis sampling; same seed, same result
   const CancelToken* cancel = nullptr;  // polled between stages and inside the loops
 };

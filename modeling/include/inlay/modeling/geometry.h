@@ -102,6 +102,16 @@ Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 
 // Where the back wall's corners appear in the photo (TL, TR, BR, BL); may lie outside it.
 std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
 
+// For messages when a mark (a light's outline, a table top, a shaft box) does not land on the
+// room: what the user can do about the box's `surface`, naming the back-wall corner that moves
+// it and where that corner is in the photo, e.g. "check the room box: drag the back wall's
+// bottom-left corner at (88, 402) onto the crease where the left wall meets the floor".
+std::string roomBoxAdvice(const Camera& camera, const RoomBox& box, SurfaceKind surface);
+
+// The horizon's row (photo pixels) at column x: where horizontal planes vanish, the image of
+// the camera's own height. NaN when the camera looks straight up or down.
+double horizonRowPx(const Camera& camera, double x);
+
 // An extruded horizontal surface (a table top) from an outline and a floor click below
 // outline point 0. Height by single-view metrology; the outline (either orientation) must be
 // simple (CGAL), its top is triangulated (constrained Delaunay) and extruded down to the floor,

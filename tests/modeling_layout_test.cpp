@@ -1,0 +1,169 @@
+// The automatic box's plausibility rules (layout.h: BoxRules, implausibility) and the search's
+// fallback when the best-supported box breaks them: a room whose floor crease is seen only in
+// pieces between furniture, behind a long sill that would make the box 17 m deep.
+#include "inlay/modeling/camera.h"
+#include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/geometry.h"
+#include "../modeling/src/layout_rules.h"
+#include "test_support.h"
+
+#include <cmath>
+#include <vector>
+
+namespace inlay {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// 640 x 480, f = 560 px, 1.5 m up, turned 10 degrees left and 4 down.
+Camera roomCamera() {
+  Camera c = levelCamera(640, 480, 560, 1.5);
+  c.worldFromCamera = (Eigen::AngleAxisd(10 * kDeg, Vec3::UnitY()) *
+                       Eigen::AngleAxisd(-4 * kDeg, Vec3::UnitX()))
+                          .toRotationMatrix();
+  return c;
+}
+
+// The back wall's corners of a box (TL, TR, BR, BL) in the photo.
+std::array<Vec2, 4> cornersOf(const Camera& c, double xl, double xr, double zb, double ceiling) {
+  RoomBox b;
+  b.xLeftM = xl, b.xRightM = xr, b.zBackM = zb, b.ceilingM = ceiling;
+  return backWallCornersPx(c, b);
+}
+
+TEST(LayoutRules, BoxSizeIsTheRoomBuildersAndTheRulesSayWhich) {
+  const Camera c = roomCamera();
+  const auto ordinary = cornersOf(c, -2.5, 2.5, -5, 2.7);
+  const detail::BoxSize s = detail::boxSizeOf(c, ordinary);
+  ASSERT_TRUE(s.ok);
+  EXPECT_NEAR(s.depthM, 5, 1e-6);
+  EXPECT_NEAR(s.widthM, 5, 1e-6);
+  EXPECT_NEAR(s.ceilingM, 2.7, 1e-6);
+  EXPECT_NEAR(s.creaseRad, std::atan(1.5 / 5), 1e-9);
+  const detail::BoxRules rules;
+  EXPECT_FALSE(detail::implausibility(c, ordinary, true, rules));
+  // 17 m deep under a ceiling the photo shows 5.6 m up (3.7 camera heights): refused, naming it.
+  const auto deep = cornersOf(c, -8.5, 8.5, -17, 5.58);
+  const auto d = detail::implausibility(c, deep, true, rules);
+  EXPECT_EQ(d.rule, detail::Implausible::kCeiling);
+  EXPECT_NE(d.why.find("5.6 m up"), std::string::npos) << d.why;
+  // The same box against the sky (no ceiling in the photo): a facade, kept.
+  EXPECT_FALSE(detail::implausibility(c, deep, false, rules));
+  // Half a degree below the horizon: the photo cannot bound the depth.
+  const double far = 1.5 / std::tan(0.5 * kDeg);
+  const auto horizon = detail::implausibility(c, cornersOf(c, -20, 20, -far, 2.7), false, rules);
+  EXPECT_EQ(horizon.rule, detail::Implausible::kDepth);
+  EXPECT_NE(horizon.why.find("0.5 deg below the horizon"), std::string::npos) << horizon.why;
+  // A less sure horizon bounds less: 40 m is fine with the pixel alone, not with 0.5 deg.
+  const auto forty = cornersOf(c, -3, 3, -40, 2.7);
+  EXPECT_FALSE(detail::implausibility(c, forty, false, rules));
+  detail::BoxRules unsure = rules;
+  unsure.horizonSigmaRad = 0.5 * kDeg;
+  EXPECT_EQ(detail::implausibility(c, forty, false, unsure).rule, detail::Implausible::kDepth);
+  // Narrower than half the camera's height: no room for the photographer.
+  const auto sliver = cornersOf(c, -0.4, -0.2, -3, 2.4);
+  EXPECT_EQ(detail::implausibility(c, sliver, false, rules).rule, detail::Implausible::kWidth);
+  // Scale-free: the same photo of a room twice the size, from twice the height, is as plausible.
+  Camera tall = c;
+  tall.heightM = 3.0;
+  EXPECT_FALSE(detail::implausibility(tall, cornersOf(tall, -5, 5, -10, 5.4), true, rules));
+}
+
+// Segments of world lines (family: 0 x, 1 y, 2 z), the part in front of the camera, clipped to
+// the photo.
+struct Lines {
+  const Camera& cam;
+  std::vector<LineSegment> segs;
+  void add(const Vec3& a, const Vec3& b, int family) {
+    const auto pa = cam.project(a), pb = cam.project(b);
+    ASSERT_TRUE(pa && pb);
+    LineSegment s;
+    s.aPx = *pa;
+    s.bPx = *pb;
+    s.family = family;
+    segs.push_back(s);
+  }
+};
+
+// A 5 m wide, 2.7 m high room, its back wall 5 m ahead. The ceiling crease, the back wall's
+// vertical corners and the ceiling's receding edges are seen whole; the floor crease only in
+// three short pieces between furniture; across the back wall runs a long sill (two parallel
+// edges) 1.06 m up, which, taken for the floor, makes the box 17 m deep with a 5.6 m ceiling.
+std::vector<LineSegment> clutteredRoom(const Camera& c) {
+  Lines l{c, {}};
+  const double xl = -2.5, xr = 2.5, zb = -5, hc = 2.7;
+  l.add({xl, hc, zb}, {xr, hc, zb}, 0);
+  l.add({xl, 0.05, zb}, {xl, hc, zb}, 1);
+  l.add({xr, 0.05, zb}, {xr, hc, zb}, 1);
+  for (double x : {xl, xr}) l.add({x, hc, zb}, {x, hc, -2.5}, 2);
+  for (double x0 : {-2.3, -0.3, 1.5}) l.add({x0, 0, zb}, {x0 + 0.35, 0, zb}, 0);
+  for (double y : {1.06, 1.02}) l.add({xl + 0.05, y, zb}, {xr - 0.05, y, zb}, 0);
+  // Ceiling panels (x and z lines) and a door on the back wall (y lines).
+  for (double z = -4.5; z <= -3; z += 0.5) l.add({xl + 0.3, hc, z}, {xr - 0.3, hc, z}, 0);
+  for (double x = -1.5; x <= 1.5; x += 1) l.add({x, hc, zb + 0.2}, {x, hc, -3}, 2);
+  for (double x : {0.4, 1.3}) l.add({x, 1.2, zb}, {x, 2.0, zb}, 1);
+  return l.segs;
+}
+
+// The room's lines plus the left wall's window and the floor's tiles (for the vanishing points).
+std::vector<LineSegment> clutteredRoomForTheCamera(const Camera& c) {
+  std::vector<LineSegment> segs = clutteredRoom(c);
+  Lines more{c, {}};
+  for (double y : {1.0, 2.1}) more.add({-2.5, y, -4.5}, {-2.5, y, -3.5}, 2);
+  for (double z : {-4.5, -3.5}) more.add({-2.5, 1.0, z}, {-2.5, 2.1, z}, 1);
+  for (double x = -1.5; x <= 1.5; x += 1) more.add({x, 0, -2.6}, {x, 0, -1.6}, 2);
+  segs.insert(segs.end(), more.segs.begin(), more.segs.end());
+  return segs;
+}
+
+bool refusalWarned(const CameraEstimate& e) {
+  for (const std::string& w : e.warnings)
+    if (w.rfind("box layout: the best-supported box", 0) == 0) return true;
+  return false;
+}
+
+TEST(LayoutRules, ASillThatWouldMakeTheBox17mDeepIsRefused) {
+  const Camera c = roomCamera();
+  const std::vector<LineSegment> segs = clutteredRoomForTheCamera(c);
+  // The premise: without the rules the sill wins and the box is about 17 m deep.
+  EstimateOptions off;
+  off.refuseImplausibleBox = false;
+  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  ASSERT_TRUE(free.ok()) << free.error().message();
+  ASSERT_TRUE(free->manhattan);
+  const detail::BoxSize fs = detail::boxSizeOf(free->camera, free->backWallPx);
+  ASSERT_TRUE(fs.ok);
+  EXPECT_GT(fs.depthM, 14.0);
+  EXPECT_GT(fs.ceilingM, 3 * c.heightM);
+  EXPECT_FALSE(refusalWarned(*free));
+  // With them (the default): refused, the warning says why and what replaced it; the floor
+  // crease is found where its pieces are, the ceiling kept.
+  const auto ruled = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(ruled.ok()) << ruled.error().message();
+  const detail::BoxSize rs = detail::boxSizeOf(ruled->camera, ruled->backWallPx);
+  ASSERT_TRUE(rs.ok);
+  // Against the true back wall measured with the estimated camera (its focal length and tilt
+  // are the lines', not the truth's).
+  const detail::BoxSize want = detail::boxSizeOf(ruled->camera, cornersOf(c, -2.5, 2.5, -5, 2.7));
+  ASSERT_TRUE(want.ok);
+  EXPECT_NEAR(rs.depthM, want.depthM, 0.05 * want.depthM) << "focal " << ruled->camera.focalPx;
+  EXPECT_NEAR(rs.ceilingM, want.ceilingM, 0.05 * want.ceilingM);
+  EXPECT_LT(rs.depthM, 6.0);
+  EXPECT_FALSE(detail::implausibility(ruled->camera, ruled->backWallPx, true, detail::BoxRules{}));
+  ASSERT_TRUE(refusalWarned(*ruled));
+  std::string warning;
+  for (const std::string& w : ruled->warnings)
+    if (w.rfind("box layout: the best-supported box", 0) == 0) warning = w;
+  EXPECT_NE(warning.find("top of furniture or a sill"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("the next-best box is used (5."), std::string::npos) << warning;
+  // Placed corners are the user's: never refused, whatever box they make.
+  EstimateCorrection placed;
+  for (int i = 0; i < 4; ++i) placed.backWallCornersPx[i] = free->backWallPx[i];
+  const auto kept = correctEstimate(*ruled, placed);
+  ASSERT_TRUE(kept.ok()) << kept.error().message();
+  EXPECT_FALSE(refusalWarned(*kept));
+  for (int i = 0; i < 4; ++i) EXPECT_LT((kept->backWallPx[i] - free->backWallPx[i]).norm(), 1e-6);
+}
+
+}  // namespace
+}  // namespace inlay
