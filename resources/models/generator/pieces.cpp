@@ -35,8 +35,9 @@ AssetMaterial oak() { return material("oak", {0.42, 0.26, 0.13}, 0.55); }
 AssetMaterial walnut() { return material("walnut", {0.16, 0.085, 0.045}, 0.45); }
 AssetMaterial blackMetal() { return material("black_metal", {0.04, 0.04, 0.04}, 0.35, 1.0); }
 AssetMaterial brass() { return material("brass", {0.91, 0.72, 0.40}, 0.3, 1.0); }
-// A warm shade lit from inside: radiance 3 (three times what shows as white at exposure 0).
-AssetMaterial glowingShade() { return material("lamp_shade", {0.9, 0.85, 0.75}, 0.9, 0, Vec3(3.0, 2.4, 1.65)); }
+// A warm shade lit from inside: radiance 1.5 in red (what shows as white at exposure 0 is 1),
+// so the shade reads warm rather than clipped white, and lights the room around it.
+AssetMaterial glowingShade() { return material("lamp_shade", {0.9, 0.85, 0.75}, 0.9, 0, Vec3(1.5, 1.15, 0.75)); }
 
 Affine at(float x, float y, float z) { return Affine(Eigen::Translation3f(x, y, z)); }
 Affine rotX(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::UnitX())); }
