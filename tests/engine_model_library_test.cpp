@@ -1,10 +1,9 @@
 // The bundled model library (resources/models, built by inlay-make-library): every piece that
 // library.json lists loads cleanly with Inlay's own loader, has finite geometry with unit
 // normals and UVs, is as big as the index says (within 1 cm), stands on y = 0 centred, stays
-// under 50k triangles, and renders into the bundled example through the engine (preset "asset")
-// and split by material (assetObjects) with no warning and no non-finite sample. Needs nothing
-// from ../shared.
-#include "inlay/engine/asset_parts.h"
+// under 50k triangles, and renders into the bundled example as the engine inserts it (preset
+// "asset": a material per part, the lamps' shades lights) with no new warning and no
+// non-finite sample. Needs nothing from ../shared.
 #include "inlay/engine/pipeline.h"
 #include "inlay/render/path_tracer.h"
 #include "test_support.h"
@@ -109,24 +108,6 @@ TEST(ModelLibrary, EveryPieceLoadsFiniteAndAsBigAsTheIndexSays) {
   }
 }
 
-// A two-material mesh splits into two single-material objects with all its triangles.
-TEST(ModelLibrary, AssetObjectsSplitsByMaterial) {
-  TriangleMesh m = makeCube();
-  m.materials = {AssetMaterial{"wood"}, AssetMaterial{"glow"}};
-  m.materials[1].emission = Vec3(2, 2, 2);
-  m.triangleMaterial.assign(m.triangles.size(), 0u);
-  for (size_t t = 0; t < 4; ++t) m.triangleMaterial[t] = 1;
-  const auto objects = assetObjects(m, Mat4::Identity());
-  ASSERT_EQ(objects.size(), 2u);
-  EXPECT_EQ(objects[0].meshObject->triangles.size(), m.triangles.size() - 4);
-  EXPECT_EQ(objects[1].meshObject->triangles.size(), 4u);
-  EXPECT_EQ(objects[0].material.kind, Material::Kind::Glossy);  // roughness 0.5: glossy, as "asset" maps it
-  EXPECT_EQ(objects[1].material.kind, Material::Kind::Emissive);
-  EXPECT_EQ(objects[1].material.emission, Vec3(2, 2, 2));
-  // One material: the mesh itself.
-  EXPECT_EQ(assetObjects(makeCube(), Mat4::Identity()).size(), 1u);
-}
-
 // A few samples at quarter resolution: finite, no dropped sample, and the piece is seen.
 void expectCleanRender(const RenderScene& scene, const std::string& what) {
   PathTracer tracer(scene);
@@ -178,17 +159,16 @@ TEST(ModelLibrary, EveryPieceRendersIntoTheExampleWithoutWarnings) {
     auto placed = placeObject(*mesh, ps->geometry, ps->camera, object.basePx, object.heightM, object.yawDeg, "objects[0]");
     ASSERT_TRUE(placed.ok()) << placed.error().message();
     RenderScene scene = ps->renderScene;
-    InsertedObject one;  // as the pipeline inserts it: the file's first material for all of it
+    InsertedObject one;  // as the pipeline inserts it: one object, a material per part
     one.meshObject = std::make_shared<const TriangleMesh>(*mesh);
     one.worldFromObject = placed->worldFromObject;
-    one.material = materialFromKeys(object.material, one.meshObject.get());
+    setObjectMaterial(one, object.material);
+    EXPECT_EQ(one.partMaterials.size(), mesh->materials.size() > 1 ? mesh->materials.size() : 0u);
+    bool light = false;
+    for (const Material& m : one.partMaterials) light = light || m.kind == Material::Kind::Emissive;
+    EXPECT_EQ(light, e.category == "lighting") << "a lamp's shade is a light";
     scene.objects = {one};
     expectCleanRender(scene, "as one object");
-    scene.objects = assetObjects(*mesh, placed->worldFromObject);
-    expectCleanRender(scene, "split by material");
-    bool light = false;
-    for (const InsertedObject& o : scene.objects) light = light || o.material.kind == Material::Kind::Emissive;
-    EXPECT_EQ(light, e.category == "lighting") << "a lamp's shade is a light";
   }
 }
 

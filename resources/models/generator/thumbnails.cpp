@@ -1,7 +1,6 @@
 // Thumbnails through Inlay's renderer (see thumbnails.h).
 #include "thumbnails.h"
 
-#include "inlay/engine/asset_parts.h"
 #include "inlay/modeling/parallel.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/path_tracer.h"
@@ -136,7 +135,13 @@ Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& 
   const int k = std::clamp(int(std::ceil(options.sizePx / sq.side)), 1, std::max(1, options.maxUpscale));
 
   RenderScene scene = room.renderScene;
-  scene.objects = assetObjects(mesh, placement->worldFromObject);
+  InsertedObject piece;  // as the pipeline inserts a file with preset "asset"
+  piece.meshObject = std::make_shared<const TriangleMesh>(mesh);
+  piece.worldFromObject = placement->worldFromObject;
+  MaterialKeys asset;
+  asset.preset = "asset";
+  setObjectMaterial(piece, asset);
+  scene.objects = {piece};
   PathTracer tracer(scene);
   DifferentialBuffers buffers(cam.widthPx * k, cam.heightPx * k);
   const int x0 = int(std::floor(sq.x0 * k)), y0 = int(std::floor(sq.y0 * k));
