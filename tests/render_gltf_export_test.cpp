@@ -194,6 +194,41 @@ TEST(GltfExport, MarkedRoomSurfacesKeepTheirMaterials) {
   EXPECT_EQ(roughness, 1.f);  // unmarked: matte
 }
 
+// An object with part materials (a lamp: a stand and a glowing shade) exports a primitive per
+// part, each with its own material.
+TEST(GltfExport, PartMaterialsExportAsOnePrimitiveEach) {
+  RenderScene s = exportScene();
+  s.objects.resize(1);
+  TriangleMesh mesh = *test::sphereMesh(0.2, 8, 16);
+  mesh.triangleMaterial.assign(mesh.triangles.size(), 0u);
+  for (size_t t = 0; t < mesh.triangles.size() / 2; ++t) mesh.triangleMaterial[t] = 1;
+  mesh.materials.resize(2);
+  s.objects[0].meshObject = std::make_shared<TriangleMesh>(mesh);
+  Material stand, shade;
+  stand.kind = Material::Kind::Conductor;
+  shade.kind = Material::Kind::Emissive;
+  shade.emission = Vec3(1.5, 1.2, 0.8);
+  s.objects[0].partMaterials = {stand, shade};
+  const auto dir = test::tempDir("gltf_parts");
+  const std::string path = (dir / "lamp.gltf").string();
+  ASSERT_TRUE(exportGltf(s, path).ok());
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json* object = nullptr;
+  for (const auto& m : j["meshes"])
+    if (m["name"] == "object_0") object = &m;
+  ASSERT_NE(object, nullptr);
+  ASSERT_EQ((*object)["primitives"].size(), 2u);
+  size_t indices = 0;
+  for (const auto& p : (*object)["primitives"]) indices += j["accessors"][p["indices"].get<int>()]["count"].get<size_t>();
+  EXPECT_EQ(indices, 3 * mesh.triangles.size());
+  const auto& shadeMaterial = j["materials"][(*object)["primitives"][1]["material"].get<int>()];
+  EXPECT_EQ(shadeMaterial["name"], "object_0_part_1");
+  EXPECT_NEAR(shadeMaterial["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>(), 1.5, 1e-9);
+  const auto& standMaterial = j["materials"][(*object)["primitives"][0]["material"].get<int>()];
+  EXPECT_EQ(standMaterial["pbrMetallicRoughness"]["metallicFactor"], 1);
+}
+
 TEST(GltfExport, GlbHoldsEverythingAndBadPathsAreErrors) {
   const RenderScene s = exportScene();
   const auto dir = test::tempDir("gltf_glb");

@@ -313,6 +313,73 @@
     </message>
 </context>
 <context>
+    <name>inlay::studio::LibraryDock</name>
+    <message>
+        <source>Chair</source>
+        <translation>Stuhl</translation>
+    </message>
+    <message>
+        <source>Armchair</source>
+        <translation>Sessel</translation>
+    </message>
+    <message>
+        <source>Sofa</source>
+        <translation>Sofa</translation>
+    </message>
+    <message>
+        <source>Coffee table</source>
+        <translation>Couchtisch</translation>
+    </message>
+    <message>
+        <source>Dining table</source>
+        <translation>Esstisch</translation>
+    </message>
+    <message>
+        <source>Stool</source>
+        <translation>Hocker</translation>
+    </message>
+    <message>
+        <source>Floor lamp</source>
+        <translation>Stehlampe</translation>
+    </message>
+    <message>
+        <source>Table lamp</source>
+        <translation>Tischlampe</translation>
+    </message>
+    <message>
+        <source>Vase</source>
+        <translation>Vase</translation>
+    </message>
+    <message>
+        <source>Potted plant</source>
+        <translation>Topfpflanze</translation>
+    </message>
+    <message>
+        <source>Bookshelf</source>
+        <translation>Bücherregal</translation>
+    </message>
+    <message>
+        <source>Rug</source>
+        <translation>Teppich</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>Bibliothek</translation>
+    </message>
+    <message>
+        <source>The model library could not be shown: %1</source>
+        <translation>Die Modellbibliothek kann nicht angezeigt werden: %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2 × %3 × %4 m (width × depth × height)
+Drag it into the photo.</source>
+        <translation>%1
+%2 × %3 × %4 m (Breite × Tiefe × Höhe)
+Ins Foto ziehen, um es einzusetzen.</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::MainWindow</name>
     <message>
         <location filename="../app/studio/main_window.cpp" line="80"/>

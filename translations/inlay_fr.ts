@@ -313,6 +313,73 @@
     </message>
 </context>
 <context>
+    <name>inlay::studio::LibraryDock</name>
+    <message>
+        <source>Chair</source>
+        <translation>Chaise</translation>
+    </message>
+    <message>
+        <source>Armchair</source>
+        <translation>Fauteuil</translation>
+    </message>
+    <message>
+        <source>Sofa</source>
+        <translation>Canapé</translation>
+    </message>
+    <message>
+        <source>Coffee table</source>
+        <translation>Table basse</translation>
+    </message>
+    <message>
+        <source>Dining table</source>
+        <translation>Table de salle à manger</translation>
+    </message>
+    <message>
+        <source>Stool</source>
+        <translation>Tabouret</translation>
+    </message>
+    <message>
+        <source>Floor lamp</source>
+        <translation>Lampadaire</translation>
+    </message>
+    <message>
+        <source>Table lamp</source>
+        <translation>Lampe de table</translation>
+    </message>
+    <message>
+        <source>Vase</source>
+        <translation>Vase</translation>
+    </message>
+    <message>
+        <source>Potted plant</source>
+        <translation>Plante en pot</translation>
+    </message>
+    <message>
+        <source>Bookshelf</source>
+        <translation>Étagère à livres</translation>
+    </message>
+    <message>
+        <source>Rug</source>
+        <translation>Tapis</translation>
+    </message>
+    <message>
+        <source>Library</source>
+        <translation>Bibliothèque de modèles</translation>
+    </message>
+    <message>
+        <source>The model library could not be shown: %1</source>
+        <translation>La bibliothèque de modèles ne peut pas être affichée : %1</translation>
+    </message>
+    <message>
+        <source>%1
+%2 × %3 × %4 m (width × depth × height)
+Drag it into the photo.</source>
+        <translation>%1
+%2 × %3 × %4 m (largeur × profondeur × hauteur)
+Faites-le glisser dans la photo.</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::MainWindow</name>
     <message>
         <location filename="../app/studio/main_window.cpp" line="80"/>

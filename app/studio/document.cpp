@@ -329,7 +329,7 @@ QString Document::catchUpObjects(const std::vector<ObjectKeys>& preparedWith) {
     }
     if (!sameMaterial(preparedWith[i].material, now.material)) {
       InsertedObject& o = prepared_->renderScene.objects[i];
-      o.material = materialFromKeys(now.material, o.meshObject.get());
+      setObjectMaterial(o, now.material);
     }
   }
   return {};
@@ -477,8 +477,8 @@ void Document::insertObjectAt(int index, const ObjectKeys& keys,
   doc_.objects.insert(at(doc_.objects), keys);
   prepared_->doc.objects.insert(at(prepared_->doc.objects), keys);
   InsertedObject object;
-  object.material = materialFromKeys(keys.material, mesh.get());
   object.meshObject = std::move(mesh);
+  setObjectMaterial(object, keys.material);
   prepared_->renderScene.objects.insert(at(prepared_->renderScene.objects), object);
   // Validated before the command was pushed, against the same mesh and geometry.
   const Expected<Placement> placed = placeObjectAt(*prepared_, size_t(index));
@@ -545,7 +545,7 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
   if (event.has(ChangeEvent::ObjectMaterial) &&
       size_t(index) < prepared_->renderScene.objects.size()) {
     InsertedObject& o = prepared_->renderScene.objects[size_t(index)];
-    o.material = materialFromKeys(keys.material, o.meshObject.get());
+    setObjectMaterial(o, keys.material);
   }
   if (event.what) Q_EMIT changed(event);
 }

@@ -2,6 +2,7 @@
 
 #include "autosave.h"
 #include "docks.h"
+#include "library_dock.h"
 #include "i18n.h"
 #include "document.h"
 #include "render_controller.h"
@@ -102,6 +103,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
   layersDock_ = new LayersDock(viewport_, this);
   addDockWidget(Qt::RightDockWidgetArea, layersDock_);
+  addDockWidget(Qt::RightDockWidgetArea, new LibraryDock(this));  // the bundled model library
   autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);

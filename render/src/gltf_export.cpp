@@ -318,6 +318,32 @@ struct Writer {
                                         {"translation", {t.x(), t.y(), t.z()}}}));
   }
 
+  // An object's primitives: one per part material (InsertedObject::partMaterials) sharing the
+  // vertex accessors, or one with the object's material.
+  json objectPrimitives(const InsertedObject& o, const std::string& name) {
+    const TriangleMesh& m = *o.meshObject;
+    const bool parts = !o.partMaterials.empty() && m.triangleMaterial.size() == m.triangles.size();
+    const size_t count = parts ? o.partMaterials.size() : 1;
+    std::vector<std::vector<uint32_t>> idx(count);
+    for (size_t t = 0; t < m.triangles.size(); ++t) {
+      const auto& tri = m.triangles[t];
+      const size_t k = parts ? m.triangleMaterial[t] : 0;
+      if (k < count && std::max({tri[0], tri[1], tri[2]}) < m.positions.size())
+        idx[k].insert(idx[k].end(), {tri[0], tri[1], tri[2]});
+    }
+    json attributes = {{"POSITION", b.vec3Accessor(m.positions, true)}};
+    if (m.normals.size() == m.positions.size()) attributes["NORMAL"] = b.vec3Accessor(m.normals, false);
+    json primitives = json::array();
+    for (size_t k = 0; k < count; ++k) {
+      if (idx[k].empty()) continue;
+      const Material& mat = parts ? o.partMaterials[k] : o.material;
+      const std::string matName = parts ? name + "_part_" + std::to_string(k) : name;
+      const int material = b.push("materials", objectMaterial(b, mat, matName));
+      primitives.push_back({{"attributes", attributes}, {"indices", b.indexAccessor(idx[k])}, {"material", material}});
+    }
+    return primitives;
+  }
+
   void objects(const RenderScene& scene, json& children, std::vector<std::string>* warnings) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
       const InsertedObject& o = scene.objects[i];
@@ -326,15 +352,7 @@ struct Writer {
         if (warnings) warnings->push_back(name + ": empty mesh or invalid transform, not exported");
         continue;
       }
-      const TriangleMesh& m = *o.meshObject;
-      std::vector<uint32_t> idx;
-      for (const auto& t : m.triangles)
-        if (std::max({t[0], t[1], t[2]}) < m.positions.size()) idx.insert(idx.end(), {t[0], t[1], t[2]});
-      const bool normals = m.normals.size() == m.positions.size();
-      const int material = b.push("materials", objectMaterial(b, o.material, name));
-      const int mesh = b.push("meshes", {{"name", name},
-                                         {"primitives", json::array({b.primitive(m.positions, normals ? m.normals : std::vector<Vec3f>{},
-                                                                                  {}, idx, material)})}});
+      const int mesh = b.push("meshes", {{"name", name}, {"primitives", objectPrimitives(o, name)}});
       json matrix = json::array();
       for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) matrix.push_back(o.worldFromObject(r, c));

@@ -88,6 +88,25 @@ struct ObjectData {
   bool shadingNormals = false;   // per-vertex normals usable
   Material material;
   int meshLight = -1;            // index into Impl::meshLights when emissive
+  // A multi-material asset's per-part materials (InsertedObject::partMaterials) and, per part,
+  // its index into Impl::meshLights (-1: not emissive). Empty: `material` everywhere.
+  std::vector<Material> parts;
+  std::vector<int> partMeshLight;
+
+  // The part index of triangle `prim`, or -1 when `material` applies.
+  int partOf(unsigned prim) const {
+    if (parts.empty() || !mesh || prim >= mesh->triangleMaterial.size()) return -1;
+    const uint32_t k = mesh->triangleMaterial[prim];
+    return k < parts.size() ? int(k) : -1;
+  }
+  const Material& materialOf(unsigned prim) const {
+    const int k = partOf(prim);
+    return k < 0 ? material : parts[size_t(k)];
+  }
+  int meshLightOf(unsigned prim) const {
+    const int k = partOf(prim);
+    return k < 0 ? meshLight : partMeshLight[size_t(k)];
+  }
 };
 
 struct LightData {
@@ -102,10 +121,12 @@ struct LightData {
   double power = 0;  // area x mean radiance; 0: never picked
 };
 
-// An emissive object as a light: its triangles in world space (refreshed when it moves), picked
-// by area (one radiance per object, so by power too). Two-sided, as its hits are.
+// An emissive object (or the emissive part of a multi-material one) as a light: its triangles
+// in world space (refreshed when it moves), picked by area (one radiance per light, so by power
+// too). Two-sided, as its hits are.
 struct MeshLightData {
   size_t object = 0;
+  int part = -1;                           // the object's part (-1: all its triangles)
   std::vector<Vec3> corner, edge1, edge2;  // triangle k = corner + b1 edge1 + b2 edge2
   std::vector<double> cumulativeArea;      // running sum; back() = area
   double area = 0;
@@ -124,6 +145,7 @@ struct SunData {
 struct Hit {
   enum class Kind { None, Room, Light, Object } kind = Kind::None;
   int index = -1;  // surface id, light index or object index
+  unsigned prim = 0;  // the object's triangle (its part's material)
   double t = 0;
   Vec3 point;
   Vec3 geometricNormal;  // unit, as the mesh winds it (outward for objects), world space
@@ -250,6 +272,7 @@ struct PathTracer::Impl {
     } else {
       hit.kind = Hit::Kind::Object;
       hit.index = int(id - surfaceCount - lights.size());
+      hit.prim = rh.hit.primID;
       const ObjectData& o = objects[size_t(hit.index)];
       const TriangleMesh& m = *o.mesh;
       const auto& tri = m.triangles[rh.hit.primID];
@@ -353,7 +376,22 @@ struct PathTracer::Impl {
   }
 
   // Refreshes the world triangles of object i's mesh light (if it is one).
-  void updateMeshLight(size_t i);
+  void updateMeshLight(size_t i);  // every light of object i
+  void updateMeshLightData(MeshLightData& m);
+  // Makes `m` (its emission sanitised in place), the material of object i's part `part` (-1:
+  // the whole object), a mesh light when it is emissive and bright; returns its index into
+  // meshLights, or -1.
+  int addMeshLight(const ObjectData& o, size_t i, Material& m, int part) {
+    if (m.kind != Material::Kind::Emissive) return -1;
+    const Vec3 e = m.emission;
+    m.emission = e.allFinite() ? Vec3(e.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+    if (!o.instance || !(m.emission.maxCoeff() > 0)) return -1;
+    meshLights.emplace_back();
+    meshLights.back().object = i;
+    meshLights.back().part = part;
+    meshLights.back().radiance = m.emission;
+    return int(meshLights.size()) - 1;
+  }
   // A point on mesh light k uniform by area (u picks the triangle and is reused inside it);
   // its unit geometric normal into *normal.
   Vec3 sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const;
@@ -472,15 +510,22 @@ struct PathTracer::Impl {
 
 void PathTracer::Impl::updateMeshLight(size_t i) {
   const ObjectData& o = objects[i];
-  if (o.meshLight < 0) return;
-  MeshLightData& m = meshLights[size_t(o.meshLight)];
+  if (o.meshLight >= 0) updateMeshLightData(meshLights[size_t(o.meshLight)]);
+  for (int k : o.partMeshLight)
+    if (k >= 0) updateMeshLightData(meshLights[size_t(k)]);
+}
+
+void PathTracer::Impl::updateMeshLightData(MeshLightData& m) {
+  const ObjectData& o = objects[m.object];
   const Mat3 linear = o.worldFromObject.topLeftCorner<3, 3>();
   const Vec3 shift = o.worldFromObject.topRightCorner<3, 1>();
   m.corner.clear(), m.edge1.clear(), m.edge2.clear(), m.cumulativeArea.clear();
   m.area = 0;
   Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300), weighted = Vec3::Zero();
   const TriangleMesh& mesh = *o.mesh;
-  for (const auto& tri : mesh.triangles) {
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    if (m.part >= 0 && o.partOf(unsigned(t)) != m.part) continue;
     if (tri[0] >= mesh.positions.size() || tri[1] >= mesh.positions.size() || tri[2] >= mesh.positions.size())
       continue;
     const Vec3 a = linear * mesh.positions[tri[0]].cast<double>() + shift;
@@ -581,10 +626,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       bsdf.albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
       if (reassigned) setRoomBsdf(*reassigned, bsdf);
     } else {
-      const Material& m = objects[size_t(hit.index)].material;
+      const ObjectData& od = objects[size_t(hit.index)];
+      const Material& m = od.materialOf(hit.prim);
       if (m.kind == Material::Kind::Emissive) {
         // Both sides emit. After a non-specular bounce NEE could have found this point too.
-        const int k = objects[size_t(hit.index)].meshLight;
+        const int k = od.meshLightOf(hit.prim);
         const double w = st.lastSpecular || k < 0
                              ? 1.0
                              : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal,
@@ -899,15 +945,12 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       o.sunInstance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(o.sunInstance, o.scene);
     }
-    if (o.material.kind == Material::Kind::Emissive) {
-      const Vec3& e = o.material.emission;
-      o.material.emission = e.allFinite() ? Vec3(e.cwiseMax(0.0)) : Vec3(Vec3::Zero());
-      if (o.instance && o.material.emission.maxCoeff() > 0) {
-        o.meshLight = int(d.meshLights.size());
-        d.meshLights.emplace_back();
-        d.meshLights.back().object = i;
-        d.meshLights.back().radiance = o.material.emission;
-      }
+    // A multi-material asset lights by its emissive parts; any other object by its material.
+    if (o.mesh && !src.partMaterials.empty() && o.mesh->triangleMaterial.size() == o.mesh->triangles.size()) {
+      o.parts = src.partMaterials;
+      for (size_t k = 0; k < o.parts.size(); ++k) o.partMeshLight.push_back(d.addMeshLight(o, i, o.parts[k], int(k)));
+    } else {
+      o.meshLight = d.addMeshLight(o, i, o.material, -1);
     }
     d.setTransform(o, src.worldFromObject);
     d.updateMeshLight(i);

@@ -206,6 +206,34 @@ Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& k
   return out;
 }
 
+Material materialFromAsset(const AssetMaterial& a) {
+  Material m;
+  m.albedo = a.baseColor;
+  m.roughness = a.roughness;
+  m.ior = a.ior;
+  if (a.emission.maxCoeff() > 0) {
+    m.kind = Material::Kind::Emissive;
+    m.emission = a.emission;
+  } else if (a.transmission > 0.5) {
+    m.kind = a.roughness < 0.05 ? Material::Kind::Glass : Material::Kind::RoughGlass;
+  } else if (a.metallic > 0.5) {
+    m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Conductor;
+  } else {
+    m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
+  }
+  return m;
+}
+
+void setObjectMaterial(InsertedObject& object, const MaterialKeys& keys) {
+  const TriangleMesh* mesh = object.meshObject.get();
+  object.material = materialFromKeys(keys, mesh);
+  object.partMaterials.clear();
+  if (keys.preset != "asset" || !mesh || mesh->materials.size() < 2 ||
+      mesh->triangleMaterial.size() != mesh->triangles.size())
+    return;
+  for (const AssetMaterial& a : mesh->materials) object.partMaterials.push_back(materialFromAsset(a));
+}
+
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject) {
   Material m;
   m.albedo = keys.albedo;
@@ -226,22 +254,9 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
     m.emission = keys.rgb;
     m.albedo = Vec3::Zero();
   } else if (keys.preset == "asset" && meshObject && !meshObject->materials.empty()) {
-    // One material per object in the renderer: the file's first material, mapped onto the
-    // nearest of the renderer's models.
-    const AssetMaterial& a = meshObject->materials.front();
-    m.albedo = a.baseColor;
-    m.roughness = a.roughness;
-    m.ior = a.ior;
-    if (a.emission.maxCoeff() > 0) {
-      m.kind = Material::Kind::Emissive;
-      m.emission = a.emission;
-    } else if (a.transmission > 0.5) {
-      m.kind = a.roughness < 0.05 ? Material::Kind::Glass : Material::Kind::RoughGlass;
-    } else if (a.metallic > 0.5) {
-      m.kind = a.roughness < 0.05 ? Material::Kind::Mirror : Material::Kind::Conductor;
-    } else {
-      m.kind = a.roughness < 0.6 ? Material::Kind::Glossy : Material::Kind::Diffuse;
-    }
+    // The file's first material, mapped onto the nearest of the renderer's models (a
+    // multi-material file's other parts: setObjectMaterial).
+    m = materialFromAsset(meshObject->materials.front());
   } else {
     m.kind = Material::Kind::Diffuse;
   }
@@ -368,7 +383,7 @@ Expected<PlacedObjects> placeObjects(const std::vector<ObjectKeys>& objects,
     InsertedObject obj;
     obj.meshObject = cached;
     obj.worldFromObject = place->worldFromObject;
-    obj.material = materialFromKeys(o.material, cached.get());
+    setObjectMaterial(obj, o.material);
     out.objects.push_back(obj);
     out.placements.push_back(*place);
   }

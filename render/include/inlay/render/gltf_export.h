@@ -10,7 +10,8 @@
 //   glTF cannot say them);
 // - each inserted object as a node (its worldFromObject matrix) over its object-space mesh, with
 //   a metallic-roughness material: diffuse, glossy (KHR_materials_ior), metal/mirror (metallic 1),
-//   glass and rough glass (KHR_materials_transmission + KHR_materials_ior), emissive.
+//   glass and rough glass (KHR_materials_transmission + KHR_materials_ior), emissive; an object
+//   with part materials (a multi-material asset) as one primitive per part.
 // Suns (masked directional light) have no glTF equivalent and are left out with a warning.
 //
 // Radiance units carry over: an emissive strength of 1 shows as a pure white pixel at exposure

@@ -87,6 +87,11 @@ struct InsertedObject {
   std::shared_ptr<const TriangleMesh> meshObject;  // object space, shared between copies
   Mat4 worldFromObject = Mat4::Identity();
   Material material;
+  // A multi-material asset (a lamp's brass stand and its glowing shade): one material per
+  // entry of meshObject->materials, chosen per triangle by meshObject->triangleMaterial; an
+  // emissive part is a light. Empty (or the mesh has no per-triangle materials): `material`
+  // everywhere.
+  std::vector<Material> partMaterials;
 };
 
 struct RenderScene {

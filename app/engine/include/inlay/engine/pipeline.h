@@ -119,6 +119,15 @@ Status exportSceneGltf(const PreparedScene& scene, const std::string& path,
 // The renderer's material for the scene file's material keys; `meshObject` (may be null)
 // supplies the file's own material for preset "asset" (its first material).
 Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObject);
+// A file's material (glTF metallic-roughness, OBJ/MTL) as the nearest of the renderer's models:
+// emission -> Emissive (a light), transmission -> Glass / RoughGlass, metallic -> Mirror /
+// Conductor, else Glossy (roughness < 0.6) or Diffuse.
+Material materialFromAsset(const AssetMaterial& asset);
+// Sets `object`'s material from the keys (materialFromKeys), and for preset "asset" on a mesh
+// with per-triangle materials also its partMaterials, one per file material, so that each part
+// renders in its own (a lamp's shade glows, its stand stays brass). `object.meshObject` must be
+// set first.
+void setObjectMaterial(InsertedObject& object, const MaterialKeys& keys);
 // RenderScene::roomMaterials from the scene file's "room.materials": one entry per surface of
 // `room`, nullopt where unmarked (or "diffuse"). A name this room does not have is an error
 // naming "room.materials.<name>".
