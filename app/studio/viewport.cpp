@@ -1,8 +1,12 @@
 #include "viewport.h"
 
 #include "document.h"
+#include "model_import.h"
 
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QElapsedTimer>
+#include <QMimeData>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -108,6 +112,7 @@ Viewport::Viewport(Document* document, RenderController* renderer, QWidget* pare
   setFocusPolicy(Qt::StrongFocus);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setMinimumSize(160, 120);
+  setAcceptDrops(true);
   auto repaint = [this] {
     if (fit_) updateFit();
     update();
@@ -1057,6 +1062,40 @@ void Viewport::wheelEvent(QWheelEvent* event) {
   if (steps == 0) return;
   zoomAbout(std::pow(1.15, steps), event->position());
   event->accept();
+}
+
+// --- Dropping model files ---
+namespace {
+
+// The first local model file among the drag's URLs (text/uri-list), or "".
+QString droppedModel(const QMimeData* data) {
+  if (!data || !data->hasUrls()) return {};
+  for (const QUrl& url : data->urls())
+    if (url.isLocalFile() && isModelFile(url.toLocalFile())) return url.toLocalFile();
+  return {};
+}
+
+}  // namespace
+
+void Viewport::dragEnterEvent(QDragEnterEvent* event) {
+  if (droppedModel(event->mimeData()).isEmpty()) return event->ignore();  // the window's (a photo)
+  event->acceptProposedAction();
+}
+
+void Viewport::dragMoveEvent(QDragMoveEvent* event) {
+  if (droppedModel(event->mimeData()).isEmpty()) return event->ignore();
+  event->acceptProposedAction();
+}
+
+void Viewport::dropEvent(QDropEvent* event) {
+  const QString path = droppedModel(event->mimeData());
+  if (path.isEmpty()) return event->ignore();
+  event->acceptProposedAction();
+  const Vec2 px = imageFromWidget(event->position());
+  // After the drop has returned to the source (a file manager, the library dock): reading the
+  // file and a refusal's dialog must not run inside the drag's event loop.
+  QMetaObject::invokeMethod(this, [this, path, px] { Q_EMIT modelDropped(path, QPointF(px.x(), px.y())); },
+                            Qt::QueuedConnection);
 }
 
 }  // namespace inlay::studio
