@@ -153,6 +153,7 @@ class StudioDesignerTest : public QObject {
   void initTestCase();
   void modelsInsertDropArrangeUndoRedo();
   void badModelFilesGetMessagesOrSaneDefaults();
+  void dropOnATableTopStandsOnIt();
   void propertiesLabelEveryFieldInEveryLanguage();
 
  private:
@@ -412,6 +413,38 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
   QCOMPARE(window->document()->objectCount(), objects + 1);
   QCOMPARE(window->document()->scene().objects.back().heightM, defaultModelHeightM());
   QCOMPARE(window->document()->undoStack()->count(), steps + 1);
+}
+
+void StudioDesignerTest::dropOnATableTopStandsOnIt() {
+  const QString example = inlay::test::exampleScene();
+  if (example.isEmpty()) QSKIP("the bundled example is not installed");
+  const QString shelf = dir_.filePath(QStringLiteral("small_shelf.obj"));
+  QVERIFY(writeText(shelf, concaveShelfObj()));
+  auto window = inlay::test::openStudio(example);
+  QVERIFY(window);
+  Document* doc = window->document();
+  QVERIFY(inlay::test::waitReady(doc, waitMs(120000)));
+  // A table top outlined on the example's floor (as the Table Top tool makes it).
+  QVERIFY(doc->addExtrusion({{60, 250}, {150, 250}, {160, 280}, {50, 280}}, {60, 330}));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(120000)), qPrintable(doc->prepareError()));
+  const int objects = doc->objectCount();
+  const Vec2 onTop(105, 265);
+  QVERIFY(dropUrl(window->viewport(), shelf, window->viewport()->widgetFromImage(onTop).toPoint()));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QVERIFY2(window->lastModelError().isEmpty(), qPrintable(window->lastModelError()));
+  QCOMPARE(doc->objectCount(), objects + 1);
+  const int i = objects;
+  QVERIFY((doc->scene().objects[size_t(i)].basePx - onTop).norm() < 2.0);
+  // On the top, above the floor, on the surface the drop pointed at.
+  const Placement& pl = doc->prepared()->placements[size_t(i)];
+  QVERIFY2(pl.baseWorld.y() > 0.05, qPrintable(QString::number(pl.baseWorld.y())));
+  const auto& surfaces = doc->prepared()->geometry.surfaces;
+  QVERIFY(pl.supportSurfaceId >= 0 && size_t(pl.supportSurfaceId) < surfaces.size());
+  QVERIFY2(QString::fromStdString(surfaces[size_t(pl.supportSurfaceId)].name).endsWith(QStringLiteral("_top")),
+           surfaces[size_t(pl.supportSurfaceId)].name.c_str());
+  // Its duplicate stays on the table top (not on the floor beside it), or on the same spot.
+  QVERIFY(doc->duplicateObject(i));
+  QVERIFY(std::abs(doc->prepared()->placements[size_t(i + 1)].baseWorld.y() - pl.baseWorld.y()) < 0.02);
 }
 
 void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {

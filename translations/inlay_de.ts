@@ -732,17 +732,17 @@
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="469"/>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -750,372 +750,377 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1: Die Szene ließ sich nicht vorbereiten, das Modell hat also keinen Platz.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="548"/>
-        <location filename="../app/studio/main_window.cpp" line="560"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="550"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="554"/>
+        <location filename="../app/studio/main_window.cpp" line="557"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
+        <location filename="../app/studio/main_window.cpp" line="558"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="556"/>
+        <location filename="../app/studio/main_window.cpp" line="559"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="557"/>
+        <location filename="../app/studio/main_window.cpp" line="560"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="559"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="561"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="571"/>
+        <location filename="../app/studio/main_window.cpp" line="574"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="574"/>
+        <location filename="../app/studio/main_window.cpp" line="577"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="594"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="594"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="600"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="629"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="629"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="639"/>
+        <location filename="../app/studio/main_window.cpp" line="642"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="647"/>
+        <location filename="../app/studio/main_window.cpp" line="650"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="648"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="655"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="674"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="683"/>
-        <location filename="../app/studio/main_window.cpp" line="704"/>
-        <location filename="../app/studio/main_window.cpp" line="733"/>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="683"/>
-        <location filename="../app/studio/main_window.cpp" line="704"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
-        <location filename="../app/studio/main_window.cpp" line="751"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
-        <location filename="../app/studio/main_window.cpp" line="751"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="755"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="689"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="709"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="712"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="722"/>
+        <location filename="../app/studio/main_window.cpp" line="725"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="733"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="769"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="773"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
-        <location filename="../app/studio/main_window.cpp" line="773"/>
+        <location filename="../app/studio/main_window.cpp" line="745"/>
+        <location filename="../app/studio/main_window.cpp" line="776"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="801"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="799"/>
+        <location filename="../app/studio/main_window.cpp" line="802"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="808"/>
+        <location filename="../app/studio/main_window.cpp" line="811"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="833"/>
+        <location filename="../app/studio/main_window.cpp" line="836"/>
         <source>Insert Model</source>
         <translation>Modell einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="841"/>
+        <location filename="../app/studio/main_window.cpp" line="844"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="848"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="861"/>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="871"/>
+        <location filename="../app/studio/main_window.cpp" line="874"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="881"/>
+        <location filename="../app/studio/main_window.cpp" line="884"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="882"/>
+        <location filename="../app/studio/main_window.cpp" line="885"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="896"/>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="914"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="909"/>
+        <location filename="../app/studio/main_window.cpp" line="927"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <location filename="../app/studio/main_window.cpp" line="945"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="957"/>
+        <location filename="../app/studio/main_window.cpp" line="975"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="959"/>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="985"/>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="988"/>
+        <location filename="../app/studio/main_window.cpp" line="1006"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="989"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="993"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="994"/>
+        <location filename="../app/studio/main_window.cpp" line="1012"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1012"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1036"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -1603,48 +1608,53 @@
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="701"/>
+        <location filename="../app/studio/viewport.cpp" line="610"/>
+        <source>%1 hidden</source>
+        <translation>%1 ausgeblendet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="702"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="704"/>
+        <location filename="../app/studio/viewport.cpp" line="705"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="708"/>
+        <location filename="../app/studio/viewport.cpp" line="709"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="711"/>
+        <location filename="../app/studio/viewport.cpp" line="712"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="729"/>
+        <location filename="../app/studio/viewport.cpp" line="730"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="733"/>
+        <location filename="../app/studio/viewport.cpp" line="734"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="774"/>
+        <location filename="../app/studio/viewport.cpp" line="775"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="914"/>
-        <location filename="../app/studio/viewport.cpp" line="1056"/>
+        <location filename="../app/studio/viewport.cpp" line="915"/>
+        <location filename="../app/studio/viewport.cpp" line="1057"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="988"/>
+        <location filename="../app/studio/viewport.cpp" line="989"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
@@ -1652,37 +1662,42 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="47"/>
+        <location filename="../app/studio/main.cpp" line="49"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="54"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="56"/>
+        <location filename="../app/studio/main.cpp" line="58"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="62"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="66"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
+        <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

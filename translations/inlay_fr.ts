@@ -732,17 +732,17 @@
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="469"/>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -750,372 +750,377 @@
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="547"/>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="548"/>
-        <location filename="../app/studio/main_window.cpp" line="560"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="550"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="554"/>
+        <location filename="../app/studio/main_window.cpp" line="557"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
+        <location filename="../app/studio/main_window.cpp" line="558"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="556"/>
+        <location filename="../app/studio/main_window.cpp" line="559"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="557"/>
+        <location filename="../app/studio/main_window.cpp" line="560"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="559"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="561"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="571"/>
+        <location filename="../app/studio/main_window.cpp" line="574"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="574"/>
+        <location filename="../app/studio/main_window.cpp" line="577"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="594"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="594"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="600"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="629"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="629"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="639"/>
+        <location filename="../app/studio/main_window.cpp" line="642"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="647"/>
+        <location filename="../app/studio/main_window.cpp" line="650"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="648"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="655"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="674"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="683"/>
-        <location filename="../app/studio/main_window.cpp" line="704"/>
-        <location filename="../app/studio/main_window.cpp" line="733"/>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="683"/>
-        <location filename="../app/studio/main_window.cpp" line="704"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
-        <location filename="../app/studio/main_window.cpp" line="751"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
-        <location filename="../app/studio/main_window.cpp" line="751"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="755"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="689"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="709"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="712"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="722"/>
+        <location filename="../app/studio/main_window.cpp" line="725"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="733"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="769"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="773"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
-        <location filename="../app/studio/main_window.cpp" line="773"/>
+        <location filename="../app/studio/main_window.cpp" line="745"/>
+        <location filename="../app/studio/main_window.cpp" line="776"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="801"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="799"/>
+        <location filename="../app/studio/main_window.cpp" line="802"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="808"/>
+        <location filename="../app/studio/main_window.cpp" line="811"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="833"/>
+        <location filename="../app/studio/main_window.cpp" line="836"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="841"/>
+        <location filename="../app/studio/main_window.cpp" line="844"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="848"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="861"/>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="871"/>
+        <location filename="../app/studio/main_window.cpp" line="874"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="881"/>
+        <location filename="../app/studio/main_window.cpp" line="884"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="882"/>
+        <location filename="../app/studio/main_window.cpp" line="885"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="896"/>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="914"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="909"/>
+        <location filename="../app/studio/main_window.cpp" line="927"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <location filename="../app/studio/main_window.cpp" line="945"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="957"/>
+        <location filename="../app/studio/main_window.cpp" line="975"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="959"/>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="985"/>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="988"/>
+        <location filename="../app/studio/main_window.cpp" line="1006"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="989"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="993"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="994"/>
+        <location filename="../app/studio/main_window.cpp" line="1012"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1012"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1036"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -1603,48 +1608,53 @@
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="701"/>
+        <location filename="../app/studio/viewport.cpp" line="610"/>
+        <source>%1 hidden</source>
+        <translation>%1 masqué</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="702"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="704"/>
+        <location filename="../app/studio/viewport.cpp" line="705"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="708"/>
+        <location filename="../app/studio/viewport.cpp" line="709"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="711"/>
+        <location filename="../app/studio/viewport.cpp" line="712"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="729"/>
+        <location filename="../app/studio/viewport.cpp" line="730"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="733"/>
+        <location filename="../app/studio/viewport.cpp" line="734"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="774"/>
+        <location filename="../app/studio/viewport.cpp" line="775"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="914"/>
-        <location filename="../app/studio/viewport.cpp" line="1056"/>
+        <location filename="../app/studio/viewport.cpp" line="915"/>
+        <location filename="../app/studio/viewport.cpp" line="1057"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="988"/>
+        <location filename="../app/studio/viewport.cpp" line="989"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
@@ -1652,37 +1662,42 @@
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="47"/>
+        <location filename="../app/studio/main.cpp" line="49"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="54"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="56"/>
+        <location filename="../app/studio/main.cpp" line="58"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="62"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="66"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
+        <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

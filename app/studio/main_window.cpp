@@ -477,7 +477,10 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->showMessage(tr("Preparing the scene…"));
     statusBar()->setToolTip(QString());
   }
-  if (event.has(ChangeEvent::SceneReplaced)) reportFailure_ = true;
+  if (event.has(ChangeEvent::SceneReplaced)) {
+    reportFailure_ = true;
+    waitingModels_.clear();  // they were meant for the scene that was closed
+  }
   if (event.has(ChangeEvent::Marks)) reportFailure_ = false;
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (progress_) {

@@ -572,7 +572,8 @@ void Viewport::paintObjects(QPainter& p) {
     const QPointF base = widgetFromImage(o.basePx);
     const bool selected = int(i) == document_->selectedObject();
     const bool hot = selected || int(i) == hoverObject_ || int(i) == dragObject_;
-    const QColor accent = selected ? QColor(255, 150, 40) : QColor(240, 240, 240);
+    // A hidden object keeps a grey marker (it can still be selected, moved and shown again).
+    const QColor accent = selected ? QColor(255, 150, 40) : o.hidden ? QColor(150, 150, 150) : QColor(240, 240, 240);
     if (prepared && i < prepared->placements.size()) {
       const Placement& pl = prepared->placements[i];
       const Camera& cam = prepared->camera;
@@ -606,7 +607,7 @@ void Viewport::paintObjects(QPainter& p) {
     p.drawLine(base + QPointF(r, 0), base + QPointF(r + 4, 0));
     p.drawLine(base - QPointF(0, r + 4), base - QPointF(0, r));
     p.drawLine(base + QPointF(0, r), base + QPointF(0, r + 4));
-    labelAt(p, base, QString::number(i + 1), accent);
+    labelAt(p, base, o.hidden ? tr("%1 hidden").arg(i + 1) : QString::number(i + 1), accent);
   }
 }
 
