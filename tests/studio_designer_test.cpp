@@ -113,6 +113,7 @@ bool dropUrl(QWidget* on, const QString& path, QPoint widgetPos) {
   QCoreApplication::sendEvent(on, &move);
   QDropEvent drop(QPointF(widgetPos), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
   QCoreApplication::sendEvent(on, &drop);
+  QCoreApplication::processEvents();  // the viewport hands the drop on once it has returned
   return drop.isAccepted();
 }
 
@@ -477,7 +478,7 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
     QCOMPARE(translated.size(), english.size());
     for (int i = 0; i < english.size(); ++i) {
       QVERIFY2(!translated[i].isEmpty(), qPrintable(lang));
-      if (english[i] != QLatin1String("Name:"))  // "Name:" is German as well
+      if (english[i] != QLatin1String("Name:") && english[i] != QLatin1String("Material:"))  // German too
         QVERIFY2(translated[i] != english[i], qPrintable(lang + QStringLiteral(": ") + english[i]));
     }
     QVERIFY(window.insertModelAction()->text() != QStringLiteral("Insert &Model…"));
