@@ -216,6 +216,12 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY(window.propertiesDock()->sizeLabel()->text().contains(QStringLiteral(" × ")));
   // Open Recent keeps it, under Models.
   QVERIFY(QSettings().value(QStringLiteral("recentModels")).toStringList().contains(QFileInfo(gltf).absoluteFilePath()));
+  {
+    const QList<QAction*> recent = window.recentMenu()->actions();
+    QVERIFY(std::any_of(recent.begin(), recent.end(), [&](QAction* a) {
+      return a->data().toString() == QFileInfo(gltf).absoluteFilePath() && a->isEnabled();
+    }));
+  }
   step(QStringLiteral("gltf_inserted"));
 
   // --- 3. Drop an OBJ (concave faces, no unit) on the floor: it stands where it was dropped ---
