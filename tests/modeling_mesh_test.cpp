@@ -3,6 +3,10 @@
 
 #include "test_support.h"
 
+#include <assimp/Exporter.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -140,7 +144,7 @@ TEST(Mesh, ObjPolygonsNegativeIndicesAndCorners) {
                            "v 0 0 1\nf -1/1/1 -6/2/1 -5/3/1\n");
   auto m = loadMesh(p.string());
   ASSERT_TRUE(m.ok()) << m.error().message();
-  EXPECT_EQ(m->triangles.size(), 4u);  // 3 from the fan + 1
+  EXPECT_EQ(m->triangles.size(), 4u);  // 3 from the (convex) pentagon + 1
   ASSERT_EQ(m->normals.size(), m->positions.size());
   ASSERT_EQ(m->uvs.size(), m->positions.size());
   // The relative triangle uses the last vertex (0,0,1) and the first two.
@@ -486,6 +490,235 @@ TEST(Mesh, TruncatedSharedFilesAreErrors) {
     auto m = loadMesh(p.string());
     if (m.ok()) EXPECT_LT(m->triangles.size(), 5804u);
   }
+}
+
+
+// --- Polygon faces: concave ones must stay inside their outline --------------------------------
+
+// Twice the signed area of a polygon in the xy plane.
+double doubleArea2d(const std::vector<Eigen::Vector2d>& p) {
+  double a = 0;
+  for (size_t i = 0; i < p.size(); ++i)
+    a += p[i].x() * p[(i + 1) % p.size()].y() - p[(i + 1) % p.size()].x() * p[i].y();
+  return a;
+}
+
+// Even-odd point-in-polygon test.
+bool insidePolygon(const Eigen::Vector2d& q, const std::vector<Eigen::Vector2d>& p) {
+  bool in = false;
+  for (size_t i = 0, j = p.size() - 1; i < p.size(); j = i++)
+    if ((p[i].y() > q.y()) != (p[j].y() > q.y()) &&
+        q.x() < (p[j].x() - p[i].x()) * (q.y() - p[i].y()) / (p[j].y() - p[i].y()) + p[i].x())
+      in = !in;
+  return in;
+}
+
+// The triangulation of a planar counter-clockwise polygon (given in 2D, placed in 3D on a tilted
+// plane so the projection step is exercised): n - 2 triangles, all wound like the polygon, whose
+// areas add up to the polygon's and whose centroids (and edge midpoints pulled inward) lie inside.
+void expectTriangulates(const std::vector<Eigen::Vector2d>& poly) {
+  const Eigen::Vector3d origin(0.3, -1.0, 2.0);
+  const Eigen::Vector3d u = Eigen::Vector3d(1, 0.5, 0.2).normalized();
+  const Eigen::Vector3d v = u.cross(Eigen::Vector3d(0.1, 0.2, 1)).normalized().cross(u).normalized();
+  std::vector<Vec3f> corners;
+  for (const auto& q : poly) corners.push_back((origin + q.x() * u + q.y() * v).cast<float>());
+  const auto tris = triangulatePolygon(corners);
+  ASSERT_EQ(tris.size(), poly.size() - 2);
+  double sum = 0;
+  for (const auto& t : tris) {
+    for (uint32_t i : t) ASSERT_LT(i, poly.size());
+    const std::vector<Eigen::Vector2d> tri = {poly[t[0]], poly[t[1]], poly[t[2]]};
+    const double a = doubleArea2d(tri);
+    EXPECT_GT(a, 0) << "a triangle wound against the polygon (or flat)";
+    sum += a;
+    const Eigen::Vector2d c = (tri[0] + tri[1] + tri[2]) / 3.0;
+    EXPECT_TRUE(insidePolygon(c, poly)) << "triangle centroid (" << c.transpose() << ") outside";
+  }
+  EXPECT_NEAR(sum, doubleArea2d(poly), 1e-4 * std::abs(doubleArea2d(poly)));
+}
+
+TEST(MeshPolygon, ConcaveLShapedFace) {
+  // Starts at the reflex corner's neighbour, where a fan from corner 0 crosses outside.
+  expectTriangulates({{2, 1}, {1, 1}, {1, 3}, {0, 3}, {0, 0}, {2, 0}});
+  expectTriangulates({{1, 1}, {1, 3}, {0, 3}, {0, 0}, {2, 0}, {2, 1}});
+}
+
+TEST(MeshPolygon, ConcaveUShapedFace) {
+  expectTriangulates({{3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}, {0, 0}});
+  // The same U clockwise: reversed input, still inside and area preserved (checked reversed).
+  std::vector<Eigen::Vector2d> cw = {{0, 0}, {0, 2}, {1, 2}, {1, 1}, {2, 1}, {2, 2}, {3, 2}, {3, 0}};
+  const std::vector<Vec3f> corners = [&] {
+    std::vector<Vec3f> c;
+    for (const auto& q : cw) c.emplace_back(float(q.x()), 0.f, float(q.y()));  // on the floor
+    return c;
+  }();
+  const auto tris = triangulatePolygon(corners);
+  ASSERT_EQ(tris.size(), 6u);
+  double sum = 0;
+  for (const auto& t : tris) {
+    const double a = -doubleArea2d({cw[t[0]], cw[t[1]], cw[t[2]]});  // clockwise: negative
+    EXPECT_GT(a, 0);
+    sum += a;
+    EXPECT_TRUE(insidePolygon((cw[t[0]] + cw[t[1]] + cw[t[2]]) / 3.0, cw));
+  }
+  EXPECT_NEAR(sum, 2 * 5.0, 1e-6);  // twice the U's area (3 x 2 less the 1 x 1 notch)
+}
+
+TEST(MeshPolygon, StarAndCombFaces) {
+  // A 10-corner star and a comb with many reflex corners: a chair's back, a shelf's side.
+  std::vector<Eigen::Vector2d> star;
+  for (int i = 0; i < 10; ++i) {
+    const double r = i % 2 ? 0.4 : 1.0, a = 2 * M_PI * i / 10;
+    star.emplace_back(r * std::cos(a), r * std::sin(a));
+  }
+  expectTriangulates(star);
+  // Five teeth of width 1 standing on a bar 1 high, gaps between them down to the bar.
+  std::vector<Eigen::Vector2d> comb = {{0, 0}, {9, 0}};
+  for (int k = 4; k >= 0; --k) {
+    comb.emplace_back(2 * k + 1, 3);
+    comb.emplace_back(2 * k, 3);
+    if (k > 0) {
+      comb.emplace_back(2 * k, 1);
+      comb.emplace_back(2 * k - 1, 1);
+    }
+  }
+  expectTriangulates(comb);
+}
+
+TEST(MeshPolygon, DegenerateFacesGiveTheirTrianglesWithoutCrashing) {
+  // Collinear corners: no area, still n - 2 triangles with valid indices.
+  const std::vector<Vec3f> line = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}};
+  auto tris = triangulatePolygon(line);
+  ASSERT_EQ(tris.size(), 3u);
+  for (const auto& t : tris)
+    for (uint32_t i : t) EXPECT_LT(i, line.size());
+  // Repeated corners and a self-intersecting bow tie.
+  EXPECT_EQ(triangulatePolygon({{0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}}).size(), 2u);
+  EXPECT_EQ(triangulatePolygon({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}).size(), 2u);
+  EXPECT_EQ(triangulatePolygon({{0, 0, 0}, {1, 0, 0}}).size(), 0u);
+
+  // In an OBJ file: the collinear face loads beside a real one; the file as a whole is fine.
+  const auto dir = test::tempDir("obj_degenerate");
+  const auto p = writeFile(dir, "flat.obj",
+                           "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nv 0 1 0\n"
+                           "f 1 2 3 4\nf 1 2 5\n");
+  auto m = loadMesh(p.string());
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  EXPECT_EQ(m->triangles.size(), 3u);
+}
+
+TEST(MeshPolygon, ObjConcaveFaceStaysInsideItsOutline) {
+  // An L-shaped table top as one OBJ face (vertical normal, y up): its triangles cover exactly
+  // the L; the old fan from corner 1 covered the notch.
+  const auto dir = test::tempDir("obj_concave");
+  const auto p = writeFile(dir, "l.obj",
+                           "v 2 0 1\nv 1 0 1\nv 1 0 3\nv 0 0 3\nv 0 0 0\nv 2 0 0\n"
+                           "vt 0 0\nvn 0 1 0\nf 1/1/1 2/1/1 3/1/1 4/1/1 5/1/1 6/1/1\n");
+  auto m = loadMesh(p.string());
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  ASSERT_EQ(m->triangles.size(), 4u);
+  double area = 0;
+  for (const auto& t : m->triangles) {
+    const Vec3f a = m->positions[t[0]], b = m->positions[t[1]], c = m->positions[t[2]];
+    area += 0.5 * double((b - a).cross(c - a).norm());
+    const Vec3f centre = (a + b + c) / 3.f;
+    EXPECT_FALSE(centre.x() > 1 && centre.z() > 1) << "a triangle in the notch of the L";
+  }
+  EXPECT_NEAR(area, 4.0, 1e-5);
+}
+
+// --- FBX, COLLADA and 3DS through Assimp --------------------------------------------------------
+
+TEST(MeshAssimp, FbxColladaAnd3dsLoadWithTheirUnits) {
+  // A box 0.4 x 1.8 x 0.6 (y up) written as OBJ, converted by Assimp's own exporters.
+  const auto dir = test::tempDir("mesh_assimp");
+  std::string obj;
+  for (int i = 0; i < 8; ++i)
+    obj += "v " + std::to_string(i & 1 ? 0.4 : 0.0) + " " + std::to_string(i & 2 ? 1.8 : 0.0) + " " +
+           std::to_string(i & 4 ? 0.6 : 0.0) + "\n";
+  obj += "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  const auto src = writeFile(dir, "box.obj", obj);
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(src.string(), 0);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  Assimp::Exporter exporter;
+  struct Case {
+    const char* formatId;
+    const char* file;
+    double metresPerUnit;  // what loadMesh must report (0: unknown)
+  };
+  for (const Case& c : {Case{"collada", "box.dae", 1.0}, Case{"3ds", "box.3ds", 0.0}}) {
+    const fs::path out = dir / c.file;
+    if (exporter.Export(scene, c.formatId, out.string()) != AI_SUCCESS) {
+      ADD_FAILURE() << c.formatId << ": Assimp cannot write it here: " << exporter.GetErrorString();
+      continue;
+    }
+    MeshFileInfo info;
+    auto m = loadMesh(out.string(), {}, &info);
+    ASSERT_TRUE(m.ok()) << c.file << ": " << m.error().message();
+    EXPECT_EQ(m->triangles.size(), 12u) << c.file;
+    // The height is up in y, 1.8 units (metres for COLLADA, which states its unit).
+    EXPECT_NEAR(m->bounds().sizes().y(), 1.8f, 1e-4f) << c.file << " " << m->bounds().sizes().transpose();
+    EXPECT_EQ(info.metresPerUnit, c.metresPerUnit) << c.file;
+    EXPECT_EQ(info.format, std::string(c.file).substr(4));
+  }
+  // FBX (ASCII: Assimp 5.2 cannot read back the binary FBX it writes). Its global settings say
+  // the unit (UnitScaleFactor: centimetres per unit) and the up axis; set them as a file from
+  // another tool would.
+  ASSERT_EQ(exporter.Export(scene, "fbxa", (dir / "box.fbx").string()), AI_SUCCESS) << exporter.GetErrorString();
+  const std::string fbx = readBytes(dir / "box.fbx");
+  auto withSetting = [](std::string text, const std::string& name, const std::string& value) {
+    const std::string key = "P: \"" + name + "\",";
+    const size_t at = text.find(key);
+    if (at == std::string::npos) return std::string();
+    const size_t end = text.find('\n', at);
+    const size_t comma = text.rfind(',', end);
+    return text.replace(comma + 1, end - comma - 1, " " + value);
+  };
+  struct FbxCase {
+    const char* unitScale;  // centimetres per unit
+    const char* upAxis;
+    double metresPerUnit;
+    Eigen::Vector3f size;   // after loading, in file units, y up
+  };
+  for (const FbxCase& c : {FbxCase{"1", "1", 0.01, {0.4f, 1.8f, 0.6f}},
+                           FbxCase{"100", "1", 1.0, {0.4f, 1.8f, 0.6f}},
+                           FbxCase{"2.54", "2", 0.0254, {0.4f, 0.6f, 1.8f}}}) {
+    std::string text = withSetting(withSetting(fbx, "UnitScaleFactor", c.unitScale), "UpAxis", c.upAxis);
+    ASSERT_FALSE(text.empty()) << "the exported FBX has no UnitScaleFactor or UpAxis setting";
+    const fs::path p = writeFile(dir, std::string("box_") + c.upAxis + ".fbx", text);
+    MeshFileInfo info;
+    auto m = loadMesh(p.string(), {}, &info);
+    ASSERT_TRUE(m.ok()) << m.error().message();
+    EXPECT_EQ(m->triangles.size(), 12u);
+    EXPECT_NEAR(info.metresPerUnit, c.metresPerUnit, 1e-7) << c.unitScale;  // a float in the file
+    EXPECT_LT((m->bounds().sizes() - c.size).norm(), 1e-4f) << c.unitScale << " up " << c.upAxis << ": "
+                                                             << m->bounds().sizes().transpose();
+    EXPECT_EQ(info.format, "fbx");
+  }
+  // Refusals name the file and the reason.
+  const auto junk = writeFile(dir, "junk.fbx", "this is not an FBX file at all\n");
+  auto bad = loadMesh(junk.string());
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message().find("junk.fbx"), std::string::npos) << bad.error().message();
+  const auto empty = writeFile(dir, "empty.dae", "");
+  bad = loadMesh(empty.string());
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message().find("empty"), std::string::npos) << bad.error().message();
+}
+
+TEST(MeshAssimp, GltfIsInMetres) {
+  INLAY_REQUIRE_SHARED();
+  const fs::path p = fs::path(test::sharedDir()) / "models" / "spot_red_plastic.glb";
+  if (!fs::exists(p)) GTEST_SKIP() << p << " is missing";
+  MeshFileInfo info;
+  auto m = loadMesh(p.string(), {}, &info);
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  EXPECT_EQ(info.metresPerUnit, 1.0);
+  EXPECT_EQ(info.format, "gltf");
+  MeshFileInfo objInfo;
+  ASSERT_TRUE(loadMesh((p.parent_path() / "spot.obj").string(), {}, &objInfo).ok());
+  EXPECT_EQ(objInfo.metresPerUnit, 0.0);  // OBJ does not say
 }
 
 }  // namespace

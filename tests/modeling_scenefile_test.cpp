@@ -252,6 +252,43 @@ TEST(SceneFile, RoomMaterialsParseAndRoundTrip) {
   EXPECT_EQ(again->doc.room.materials.at("wall_left").reflectance, Vec3(0.8, 0.85, 0.9));
 }
 
+// "objects[].name" and "objects[].hidden", and the meshes Assimp reads (FBX, COLLADA, 3DS).
+TEST(SceneFile, ObjectNameHiddenAndAssimpMeshes) {
+  const fs::path dir = sceneDir("object_name_hidden");
+  for (const char* f : {"chair.fbx", "lamp.dae", "vase.3ds"}) std::ofstream(dir / f) << "x";
+  auto r = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "objects": [
+            {"mesh": "chair.fbx", "base_px": [10, 20], "name": "armchair", "hidden": true},
+            {"mesh": "lamp.dae", "base_px": [30, 40]},
+            {"mesh": "vase.3ds", "base_px": [50, 60], "hidden": false}]})",
+      dir.string(), "scene.json");
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  ASSERT_EQ(r->doc.objects.size(), 3u);
+  EXPECT_EQ(r->doc.objects[0].name, "armchair");
+  EXPECT_TRUE(r->doc.objects[0].hidden);
+  EXPECT_EQ(r->doc.objects[1].name, "");
+  EXPECT_FALSE(r->doc.objects[1].hidden);
+  const std::string text = sceneToJson(r->doc);
+  EXPECT_NE(text.find("\"hidden\": true"), std::string::npos);
+  EXPECT_EQ(text.find("\"hidden\": false"), std::string::npos);  // the default is not written
+  auto again = parseSceneJson(text, dir.string(), "scene.json");
+  ASSERT_TRUE(again.ok()) << again.error().message();
+  EXPECT_EQ(sceneToJson(again->doc), text);
+  // A hidden key that is not a boolean is refused with its key.
+  auto bad = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "objects": [
+            {"mesh": "chair.fbx", "base_px": [10, 20], "hidden": "yes"}]})",
+      dir.string(), "scene.json");
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().message().find("objects[0].hidden"), std::string::npos) << bad.error().message();
+  auto obj = parseSceneJson(
+      R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "objects": [
+            {"mesh": "chair.blend", "base_px": [10, 20]}]})",
+      dir.string(), "scene.json");
+  ASSERT_FALSE(obj.ok());
+  EXPECT_NE(obj.error().message().find(".fbx, .dae or .3ds"), std::string::npos) << obj.error().message();
+}
+
 TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
   const fs::path dir = sceneDir("vanishing_lines");
   auto r = parseSceneJson(

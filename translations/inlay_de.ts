@@ -17,249 +17,294 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="288"/>
-        <location filename="../app/studio/document.cpp" line="318"/>
+        <location filename="../app/studio/document.cpp" line="296"/>
+        <location filename="../app/studio/document.cpp" line="326"/>
         <source>Preparation was cancelled.</source>
         <translation>Die Vorbereitung wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="434"/>
+        <location filename="../app/studio/document.cpp" line="441"/>
         <source>There is no object %1.</source>
         <translation>Es gibt kein Objekt %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="435"/>
+        <location filename="../app/studio/document.cpp" line="442"/>
         <source>The scene is still being prepared.</source>
         <translation>Die Szene wird noch vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="436"/>
+        <location filename="../app/studio/document.cpp" line="443"/>
         <source>The scene could not be prepared.</source>
         <translation>Die Szene konnte nicht vorbereitet werden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="374"/>
-        <location filename="../app/studio/document.cpp" line="615"/>
-        <location filename="../app/studio/document.cpp" line="797"/>
-        <location filename="../app/studio/document.cpp" line="854"/>
+        <location filename="../app/studio/document.cpp" line="382"/>
+        <location filename="../app/studio/document.cpp" line="734"/>
+        <location filename="../app/studio/document.cpp" line="916"/>
+        <location filename="../app/studio/document.cpp" line="973"/>
         <source>The position is not a number.</source>
         <translation>Die Position ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="376"/>
-        <location filename="../app/studio/document.cpp" line="447"/>
+        <location filename="../app/studio/document.cpp" line="384"/>
+        <location filename="../app/studio/document.cpp" line="454"/>
+        <location filename="../app/studio/document.cpp" line="471"/>
         <source>The height must be greater than zero.</source>
         <translation>Die Höhe muss größer als null sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="398"/>
+        <location filename="../app/studio/document.cpp" line="405"/>
         <source>Move object %1</source>
         <translation>Objekt %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="405"/>
+        <location filename="../app/studio/document.cpp" line="412"/>
         <source>Change height of object %1</source>
         <translation>Höhe von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="412"/>
+        <location filename="../app/studio/document.cpp" line="419"/>
         <source>Turn object %1</source>
         <translation>Objekt %1 drehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="419"/>
+        <location filename="../app/studio/document.cpp" line="426"/>
         <source>Change material of object %1</source>
         <translation>Material von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="458"/>
         <source>Insert object %1</source>
-        <translation>Objekt %1 einfügen</translation>
+        <translation type="vanished">Objekt %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="470"/>
+        <location filename="../app/studio/document.cpp" line="469"/>
+        <source>The model has no triangles.</source>
+        <translation>Das Modell hat keine Dreiecke.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="477"/>
+        <source>object %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="478"/>
+        <source>Insert %1</source>
+        <translation>%1 einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="495"/>
+        <source>Duplicate %1</source>
+        <translation>%1 duplizieren</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="543"/>
+        <source>Rename %1</source>
+        <translation>%1 umbenennen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="550"/>
+        <source>Hide %1</source>
+        <translation>%1 ausblenden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="550"/>
+        <source>Show %1</source>
+        <translation>%1 einblenden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="558"/>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="559"/>
+        <source>cube</source>
+        <translation>Würfel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="597"/>
         <source>Delete object %1</source>
         <translation>Objekt %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="580"/>
+        <location filename="../app/studio/document.cpp" line="699"/>
         <source>Open a photo first.</source>
         <translation>Öffnen Sie zuerst ein Foto.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="600"/>
+        <location filename="../app/studio/document.cpp" line="719"/>
         <source>There is no estimated box yet.</source>
         <translation>Es gibt noch keinen geschätzten Raum.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="724"/>
         <source>Accept the estimated box</source>
         <translation>Geschätzten Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="611"/>
+        <location filename="../app/studio/document.cpp" line="730"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="621"/>
+        <location filename="../app/studio/document.cpp" line="740"/>
         <source>Move a corner of the back wall</source>
         <translation>Ecke der Rückwand verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="627"/>
+        <location filename="../app/studio/document.cpp" line="746"/>
         <source>Estimate the box again</source>
         <translation>Raum neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="632"/>
+        <location filename="../app/studio/document.cpp" line="751"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="640"/>
+        <location filename="../app/studio/document.cpp" line="759"/>
         <source>Outline light %1</source>
         <translation>Lampe %1 umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="646"/>
-        <location filename="../app/studio/document.cpp" line="817"/>
+        <location filename="../app/studio/document.cpp" line="765"/>
+        <location filename="../app/studio/document.cpp" line="936"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="654"/>
+        <location filename="../app/studio/document.cpp" line="773"/>
         <source>Add shaft %1</source>
         <translation>Sonnenstrahl %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="661"/>
+        <location filename="../app/studio/document.cpp" line="780"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="670"/>
+        <location filename="../app/studio/document.cpp" line="789"/>
         <source>Add surface %1</source>
         <translation>Fläche %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="681"/>
+        <location filename="../app/studio/document.cpp" line="800"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Ein Verdecker braucht einen Strich über dem, was davor ist, und einen über dem, was dahinter ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="686"/>
+        <location filename="../app/studio/document.cpp" line="805"/>
         <source>Add occluder %1</source>
         <translation>Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="693"/>
+        <location filename="../app/studio/document.cpp" line="812"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="699"/>
+        <location filename="../app/studio/document.cpp" line="818"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Strich zu Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="710"/>
+        <location filename="../app/studio/document.cpp" line="829"/>
         <source>There is no such mark.</source>
         <translation>Diese Markierung gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="717"/>
+        <location filename="../app/studio/document.cpp" line="836"/>
         <source>Delete light %1</source>
         <translation>Lampe %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="718"/>
+        <location filename="../app/studio/document.cpp" line="837"/>
         <source>Delete shaft %1</source>
         <translation>Sonnenstrahl %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="719"/>
+        <location filename="../app/studio/document.cpp" line="838"/>
         <source>Delete surface %1</source>
         <translation>Fläche %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="720"/>
+        <location filename="../app/studio/document.cpp" line="839"/>
         <source>Delete occluder %1</source>
         <translation>Verdecker %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="800"/>
+        <location filename="../app/studio/document.cpp" line="919"/>
         <source>There is no such point.</source>
         <translation>Diesen Punkt gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="808"/>
-        <location filename="../app/studio/document.cpp" line="826"/>
+        <location filename="../app/studio/document.cpp" line="927"/>
+        <location filename="../app/studio/document.cpp" line="945"/>
         <source>The outline would lose its area.</source>
         <translation>Der Umriss würde seine Fläche verlieren.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="809"/>
+        <location filename="../app/studio/document.cpp" line="928"/>
         <source>Reshape light %1</source>
         <translation>Licht %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="818"/>
+        <location filename="../app/studio/document.cpp" line="937"/>
         <source>Reshape shaft %1</source>
         <translation>Lichtschacht %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="827"/>
+        <location filename="../app/studio/document.cpp" line="946"/>
         <source>Reshape surface %1</source>
         <translation>Fläche %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="835"/>
+        <location filename="../app/studio/document.cpp" line="954"/>
         <source>Reshape occluder %1</source>
         <translation>Verdecker %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="851"/>
+        <location filename="../app/studio/document.cpp" line="970"/>
         <source>There is no such axis.</source>
         <translation>Diese Achse gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="856"/>
+        <location filename="../app/studio/document.cpp" line="975"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="860"/>
+        <location filename="../app/studio/document.cpp" line="979"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Die beiden Linien liegen auf einer Geraden: Zeichnen Sie zwei verschiedene Kanten.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="869"/>
+        <location filename="../app/studio/document.cpp" line="988"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 zeichnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="870"/>
+        <location filename="../app/studio/document.cpp" line="989"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="884"/>
+        <location filename="../app/studio/document.cpp" line="1003"/>
         <source>The room has no surface %1.</source>
         <translation>Der Raum hat keine Fläche %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="887"/>
+        <location filename="../app/studio/document.cpp" line="1006"/>
         <source>Unknown material.</source>
         <translation>Unbekanntes Material.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="890"/>
+        <location filename="../app/studio/document.cpp" line="1009"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>Die Rauheit muss zwischen 0 und 1 liegen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="896"/>
+        <location filename="../app/studio/document.cpp" line="1015"/>
         <source>Change the material of %1</source>
         <translation>Material von %1 ändern</translation>
     </message>
@@ -267,47 +312,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="164"/>
+        <location filename="../app/studio/docks.cpp" line="195"/>
         <source>Layers</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="165"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Composite</source>
         <translation>Komposit</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="165"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Photo</source>
         <translation>Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>Albedo</source>
         <translation>Albedo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>Direct light</source>
         <translation>Direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="167"/>
+        <location filename="../app/studio/docks.cpp" line="198"/>
         <source>With objects</source>
         <translation>Mit Objekten</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="167"/>
+        <location filename="../app/studio/docks.cpp" line="198"/>
         <source>Without objects</source>
         <translation>Ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="168"/>
+        <location filename="../app/studio/docks.cpp" line="199"/>
         <source>Mask</source>
         <translation>Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="168"/>
+        <location filename="../app/studio/docks.cpp" line="199"/>
         <source>Difference</source>
         <translation>Differenz</translation>
     </message>
@@ -382,349 +427,389 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="80"/>
+        <location filename="../app/studio/main_window.cpp" line="82"/>
         <source>Reading the photo</source>
         <translation>Foto wird gelesen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="81"/>
+        <location filename="../app/studio/main_window.cpp" line="83"/>
         <source>Estimating the camera</source>
         <translation>Kamera wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="82"/>
+        <location filename="../app/studio/main_window.cpp" line="84"/>
         <source>Fitting the room</source>
         <translation>Raum wird angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="83"/>
+        <location filename="../app/studio/main_window.cpp" line="85"/>
         <source>Estimating the lighting</source>
         <translation>Beleuchtung wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="84"/>
+        <location filename="../app/studio/main_window.cpp" line="86"/>
         <source>Placing the objects</source>
         <translation>Objekte werden platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="387"/>
+        <location filename="../app/studio/main_window.cpp" line="433"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Samples pro Pixel des angezeigten Komposits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="388"/>
+        <location filename="../app/studio/main_window.cpp" line="434"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="389"/>
+        <location filename="../app/studio/main_window.cpp" line="435"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="390"/>
+        <location filename="../app/studio/main_window.cpp" line="436"/>
         <source>Render time since the last change</source>
         <translation>Renderzeit seit der letzten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="391"/>
+        <location filename="../app/studio/main_window.cpp" line="437"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="116"/>
+        <location filename="../app/studio/main_window.cpp" line="118"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="128"/>
+        <location filename="../app/studio/main_window.cpp" line="130"/>
         <source>Preparing the scene: %1…</source>
         <translation>Szene wird vorbereitet: %1 …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="354"/>
+        <location filename="../app/studio/main_window.cpp" line="391"/>
         <source>&amp;Open Scene…</source>
         <translation>Szene &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="375"/>
+        <location filename="../app/studio/main_window.cpp" line="421"/>
         <source>Open a scene file (.json)</source>
         <translation>Eine Szenendatei (.json) öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="355"/>
+        <location filename="../app/studio/main_window.cpp" line="392"/>
         <source>Open &amp;Photo…</source>
         <translation>&amp;Foto öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="376"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
         <source>Start a new scene from a photo</source>
         <translation>Eine neue Szene aus einem Foto beginnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="356"/>
+        <location filename="../app/studio/main_window.cpp" line="393"/>
         <source>Open &amp;Example</source>
         <translation>&amp;Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
+        <location filename="../app/studio/main_window.cpp" line="394"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="358"/>
+        <location filename="../app/studio/main_window.cpp" line="395"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="359"/>
+        <location filename="../app/studio/main_window.cpp" line="396"/>
         <source>&amp;Export Composite…</source>
         <translation>Komposit &amp;exportieren …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="377"/>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="360"/>
+        <location filename="../app/studio/main_window.cpp" line="397"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Angezeigte &amp;Ebene exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="378"/>
+        <location filename="../app/studio/main_window.cpp" line="424"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="361"/>
+        <location filename="../app/studio/main_window.cpp" line="398"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Szene als &amp;glTF exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="379"/>
+        <location filename="../app/studio/main_window.cpp" line="425"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Raum, Lichter, Kamera und Objekte als glTF 2.0 schreiben, um in Blender weiterzuarbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="362"/>
+        <location filename="../app/studio/main_window.cpp" line="399"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Redo</source>
         <translation>Wi&amp;ederholen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="363"/>
+        <location filename="../app/studio/main_window.cpp" line="400"/>
         <source>Insert &amp;Sphere</source>
         <translation>&amp;Kugel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="380"/>
+        <location filename="../app/studio/main_window.cpp" line="426"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="364"/>
+        <location filename="../app/studio/main_window.cpp" line="401"/>
         <source>Insert &amp;Cube</source>
         <translation>&amp;Würfel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="381"/>
+        <location filename="../app/studio/main_window.cpp" line="427"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="365"/>
+        <location filename="../app/studio/main_window.cpp" line="402"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="382"/>
+        <location filename="../app/studio/main_window.cpp" line="428"/>
         <source>Delete the selected object or mark</source>
         <translation>Das ausgewählte Objekt oder die ausgewählte Markierung löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="366"/>
+        <location filename="../app/studio/main_window.cpp" line="412"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="367"/>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="368"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="369"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Vorher (nur Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="383"/>
+        <location filename="../app/studio/main_window.cpp" line="429"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="370"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Geschätzten &amp;Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="384"/>
+        <location filename="../app/studio/main_window.cpp" line="430"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Die geschätzte Rückwand als Ihre behalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="371"/>
+        <location filename="../app/studio/main_window.cpp" line="417"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Raum &amp;neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="385"/>
+        <location filename="../app/studio/main_window.cpp" line="431"/>
         <source>Forget your corners of the back wall</source>
         <translation>Ihre Ecken der Rückwand verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="372"/>
+        <location filename="../app/studio/main_window.cpp" line="418"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>Szene erneut &amp;vorbereiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="386"/>
+        <location filename="../app/studio/main_window.cpp" line="432"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="373"/>
+        <location filename="../app/studio/main_window.cpp" line="419"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="393"/>
+        <location filename="../app/studio/main_window.cpp" line="439"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="393"/>
+        <location filename="../app/studio/main_window.cpp" line="439"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="374"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="394"/>
+        <location filename="../app/studio/main_window.cpp" line="403"/>
+        <source>Insert &amp;Model…</source>
+        <translation>&amp;Modell einfügen…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="404"/>
+        <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
+        <translation>Ein 3D-Modell (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) auf den Boden stellen; oder die Datei dort ablegen, wo es stehen soll</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;uplizieren</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <source>Stand a copy of the selected object beside it</source>
+        <translation>Eine Kopie des gewählten Objekts daneben stellen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <source>Re&amp;name…</source>
+        <translation>&amp;Umbenennen…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="409"/>
+        <source>Rename the selected object (in the Scene list)</source>
+        <translation>Das gewählte Objekt umbenennen (in der Szenenliste)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="410"/>
+        <source>&amp;Hide or Show</source>
+        <translation>Aus- oder &amp;Einblenden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="411"/>
+        <source>Hide the selected object from the render, or show it again</source>
+        <translation>Das gewählte Objekt aus dem Rendering ausblenden oder wieder einblenden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="440"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Fluchtlinien (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="396"/>
+        <location filename="../app/studio/main_window.cpp" line="442"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="397"/>
+        <location filename="../app/studio/main_window.cpp" line="443"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="398"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="399"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="400"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="401"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="402"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="403"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="404"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="423"/>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -732,299 +817,452 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
+        <translation>%1: Die Szene ließ sich nicht vorbereiten, das Modell hat also keinen Platz.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
+        <location filename="../app/studio/main_window.cpp" line="557"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="558"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="559"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="560"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="574"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="577"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="536"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
-        <location filename="../app/studio/main_window.cpp" line="565"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="565"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
+        <location filename="../app/studio/main_window.cpp" line="642"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="576"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="583"/>
+        <location filename="../app/studio/main_window.cpp" line="650"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="584"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="595"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="610"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="611"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
-        <location filename="../app/studio/main_window.cpp" line="698"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="755"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="625"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="645"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="648"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="725"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="698"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="773"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="678"/>
-        <location filename="../app/studio/main_window.cpp" line="709"/>
+        <location filename="../app/studio/main_window.cpp" line="745"/>
+        <location filename="../app/studio/main_window.cpp" line="776"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="730"/>
+        <location filename="../app/studio/main_window.cpp" line="801"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="731"/>
+        <location filename="../app/studio/main_window.cpp" line="802"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="740"/>
+        <location filename="../app/studio/main_window.cpp" line="811"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="805"/>
+        <location filename="../app/studio/main_window.cpp" line="836"/>
+        <source>Insert Model</source>
+        <translation>Modell einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="844"/>
+        <source>%1: open a photo first; the model needs a room to stand in.</source>
+        <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="848"/>
+        <source>%1: not a model file Inlay reads (%2).</source>
+        <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
+        <source>Reading %1…</source>
+        <translation>%1 wird gelesen…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="874"/>
+        <source>%1 goes in once the scene is prepared.</source>
+        <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="884"/>
+        <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
+        <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="885"/>
+        <source>%1: there is no floor in the middle of the photo to stand it on.</source>
+        <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="914"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <source>Inserted %1, %2 m high (its own size).</source>
+        <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <source>Inserted %1, %2 m high.</source>
+        <translation>%1 eingefügt, %2 m hoch.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <source>Cannot insert the model</source>
+        <translation>Das Modell lässt sich nicht einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="945"/>
+        <source>Select an object to rename.</source>
+        <translation>Ein Objekt zum Umbenennen auswählen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="975"/>
+        <source>Models</source>
+        <translation>Modelle</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
+        <source>Insert %1</source>
+        <translation>%1 einfügen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="808"/>
+        <location filename="../app/studio/main_window.cpp" line="1006"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="809"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="813"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="1012"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="832"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="1036"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::ModelImportText</name>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="12"/>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="13"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="14"/>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="15"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="16"/>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="31"/>
+        <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
+        <translation>%1-Dateien nennen ihre Einheit nicht: %2 wurde auf %3 Höhe skaliert (Höhe in den Eigenschaften ändern).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="42"/>
+        <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
+        <translation>%1 gibt %2 Höhe an, eine absurde Größe: Es wurde stattdessen %3 hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="63"/>
+        <source>3D models (%1)</source>
+        <translation>3D-Modelle (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="64"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="78"/>
+        <source>%1: not a model file Inlay reads (%2).</source>
+        <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="96"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="99"/>
+        <source>(Inlay inserts models of up to %1 triangles.)</source>
+        <translation>(Inlay fügt Modelle mit bis zu %1 Dreiecken ein.)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="104"/>
+        <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
+        <translation>%1: Das Modell ist flach (es hat keine Höhe) und kann daher nicht im Raum stehen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <source>%1 has no normals: it is shaded flat.</source>
+        <translation>%1 hat keine Normalen: Es wird flach schattiert.</translation>
     </message>
 </context>
 <context>
@@ -1038,134 +1276,191 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="263"/>
+        <location filename="../app/studio/docks.cpp" line="325"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="273"/>
+        <location filename="../app/studio/docks.cpp" line="330"/>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="331"/>
+        <source>Render:</source>
+        <translation>Rendern:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="332"/>
+        <source>Shown</source>
+        <translation>Sichtbar</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="333"/>
+        <source>A hidden object stays in the scene but is not rendered</source>
+        <translation>Ein ausgeblendetes Objekt bleibt in der Szene, wird aber nicht gerendert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="334"/>
+        <source>Size (W × D × H):</source>
+        <translation>Größe (B × T × H):</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="335"/>
+        <source>Width × depth × height in metres, as placed (before its turn)</source>
+        <translation>Breite × Tiefe × Höhe in Metern, wie platziert (vor der Drehung)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="337"/>
+        <source>The photo pixel the centre of the object&apos;s base stands on</source>
+        <translation>Der Fotopixel, auf dem die Mitte der Standfläche des Objekts steht</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="342"/>
         <source>Surface:</source>
         <translation>Fläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="274"/>
+        <location filename="../app/studio/docks.cpp" line="343"/>
         <source>Finish:</source>
         <translation>Oberfläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="275"/>
+        <location filename="../app/studio/docks.cpp" line="344"/>
         <source>Roughness:</source>
         <translation>Rauheit:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="276"/>
+        <location filename="../app/studio/docks.cpp" line="345"/>
+        <location filename="../app/studio/docks.cpp" line="357"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="277"/>
+        <location filename="../app/studio/docks.cpp" line="346"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
         <source>Diffuse</source>
         <translation>Matt (diffus)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Glossy</source>
         <translation>Glänzend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Mirror</source>
         <translation>Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
         <source>Metal</source>
         <translation>Metall</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Glass</source>
         <translation>Glas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Frosted glass</source>
         <translation>Milchglas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Emissive</source>
         <translation>Leuchtend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>From the file</source>
         <translation>Aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="281"/>
+        <location filename="../app/studio/docks.cpp" line="350"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Reflexionsgrad der Objektoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="268"/>
+        <location filename="../app/studio/docks.cpp" line="336"/>
         <source>Base (px):</source>
         <translation>Fußpunkt (px):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="269"/>
+        <location filename="../app/studio/docks.cpp" line="338"/>
+        <location filename="../app/studio/docks.cpp" line="356"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="270"/>
+        <location filename="../app/studio/docks.cpp" line="339"/>
         <source>Turn:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="271"/>
+        <location filename="../app/studio/docks.cpp" line="340"/>
         <source>Material:</source>
         <translation>Material:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="272"/>
+        <location filename="../app/studio/docks.cpp" line="341"/>
         <source>Colour:</source>
         <translation>Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="282"/>
+        <location filename="../app/studio/docks.cpp" line="351"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Raumfläche&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Matte</source>
         <translation>Matt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="285"/>
+        <location filename="../app/studio/docks.cpp" line="354"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Eine echte Fläche im Foto, die spiegelt: ein glänzender Boden, ein Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="337"/>
+        <location filename="../app/studio/docks.cpp" line="355"/>
+        <source>&lt;b&gt;New models&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Neue Modelle&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="358"/>
+        <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
+        <translation>Die Höhe, die ein Modell erhält, wenn seine Datei keine Einheit nennt (OBJ, PLY, 3DS) oder eine absurde Größe angibt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>No object selected</source>
         <translation>Kein Objekt ausgewählt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="342"/>
+        <location filename="../app/studio/docks.cpp" line="420"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="387"/>
+        <location filename="../app/studio/docks.cpp" line="424"/>
+        <source>%1 × %2 × %3 m</source>
+        <translation>%1 × %2 × %3 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="428"/>
+        <source>– (the scene is being prepared)</source>
+        <translation>– (die Szene wird vorbereitet)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="473"/>
         <source>Object colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -1173,122 +1468,126 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="31"/>
+        <location filename="../app/studio/docks.cpp" line="36"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="32"/>
+        <location filename="../app/studio/docks.cpp" line="37"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="79"/>
+        <location filename="../app/studio/docks.cpp" line="96"/>
         <source>Scene</source>
         <translation>Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="80"/>
+        <location filename="../app/studio/docks.cpp" line="97"/>
         <source>Item</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="80"/>
+        <location filename="../app/studio/docks.cpp" line="97"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="84"/>
+        <location filename="../app/studio/docks.cpp" line="101"/>
         <source>Room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="87"/>
+        <location filename="../app/studio/docks.cpp" line="104"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="92"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>back wall given</source>
         <translation>Rückwand vorgegeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="92"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="95"/>
+        <location filename="../app/studio/docks.cpp" line="112"/>
         <source>Lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="98"/>
+        <location filename="../app/studio/docks.cpp" line="115"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="99"/>
+        <location filename="../app/studio/docks.cpp" line="116"/>
         <source>outline on the photo</source>
         <translation>Umriss im Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="100"/>
+        <location filename="../app/studio/docks.cpp" line="117"/>
         <source>rectangle in 3D</source>
         <translation>Rechteck im Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="114"/>
+        <location filename="../app/studio/docks.cpp" line="131"/>
         <source>Shafts</source>
         <translation>Sonnenstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="114"/>
+        <location filename="../app/studio/docks.cpp" line="131"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="115"/>
+        <location filename="../app/studio/docks.cpp" line="132"/>
         <source>sunlit patch and its window</source>
         <translation>Sonnenfleck und sein Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="133"/>
         <source>Surfaces</source>
         <translation>Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="133"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="118"/>
+        <location filename="../app/studio/docks.cpp" line="135"/>
         <source>Occluders</source>
         <translation>Verdecker</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="118"/>
+        <location filename="../app/studio/docks.cpp" line="135"/>
         <source>Occluder %1</source>
         <translation>Verdecker %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="120"/>
+        <location filename="../app/studio/docks.cpp" line="137"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 Striche davor, %2 dahinter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="125"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="129"/>
-        <source>Object %1</source>
-        <translation>Objekt %1</translation>
+        <location filename="../app/studio/docks.cpp" line="147"/>
+        <source>hidden: %1</source>
+        <translation>ausgeblendet: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="130"/>
+        <source>Object %1</source>
+        <translation type="vanished">Objekt %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="145"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1296,128 +1595,133 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="303"/>
+        <location filename="../app/studio/viewport.cpp" line="308"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <location filename="../app/studio/viewport.cpp" line="310"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="307"/>
+        <location filename="../app/studio/viewport.cpp" line="312"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="308"/>
+        <location filename="../app/studio/viewport.cpp" line="313"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="311"/>
+        <location filename="../app/studio/viewport.cpp" line="316"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="312"/>
+        <location filename="../app/studio/viewport.cpp" line="317"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="314"/>
+        <location filename="../app/studio/viewport.cpp" line="319"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="319"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Ziehen Sie entlang einer Kante in %1-Richtung (die Tasten X, Y, Z wählen sie).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="320"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Ziehen Sie nun entlang einer zweiten Kante in %1-Richtung.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="392"/>
+        <location filename="../app/studio/viewport.cpp" line="397"/>
         <source>Back wall (yours)</source>
         <translation>Rückwand (Ihre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="392"/>
+        <location filename="../app/studio/viewport.cpp" line="397"/>
         <source>Back wall (estimated)</source>
         <translation>Rückwand (geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="448"/>
+        <location filename="../app/studio/viewport.cpp" line="453"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="486"/>
+        <location filename="../app/studio/viewport.cpp" line="491"/>
         <source>%1: %2 px</source>
         <translation>%1: %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="515"/>
+        <location filename="../app/studio/viewport.cpp" line="520"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="529"/>
+        <location filename="../app/studio/viewport.cpp" line="534"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="544"/>
+        <location filename="../app/studio/viewport.cpp" line="549"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="696"/>
+        <location filename="../app/studio/viewport.cpp" line="610"/>
+        <source>%1 hidden</source>
+        <translation>%1 ausgeblendet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="702"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="699"/>
+        <location filename="../app/studio/viewport.cpp" line="705"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="703"/>
+        <location filename="../app/studio/viewport.cpp" line="709"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="706"/>
+        <location filename="../app/studio/viewport.cpp" line="712"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="724"/>
+        <location filename="../app/studio/viewport.cpp" line="730"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="728"/>
+        <location filename="../app/studio/viewport.cpp" line="734"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="769"/>
+        <location filename="../app/studio/viewport.cpp" line="775"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="909"/>
-        <location filename="../app/studio/viewport.cpp" line="1051"/>
+        <location filename="../app/studio/viewport.cpp" line="915"/>
+        <location filename="../app/studio/viewport.cpp" line="1057"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="983"/>
+        <location filename="../app/studio/viewport.cpp" line="989"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
@@ -1425,37 +1729,42 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="47"/>
+        <location filename="../app/studio/main.cpp" line="49"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="54"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="56"/>
+        <location filename="../app/studio/main.cpp" line="58"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="62"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="66"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
+        <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

@@ -17,249 +17,294 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="288"/>
-        <location filename="../app/studio/document.cpp" line="318"/>
+        <location filename="../app/studio/document.cpp" line="296"/>
+        <location filename="../app/studio/document.cpp" line="326"/>
         <source>Preparation was cancelled.</source>
         <translation>La préparation a été annulée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="374"/>
-        <location filename="../app/studio/document.cpp" line="615"/>
-        <location filename="../app/studio/document.cpp" line="797"/>
-        <location filename="../app/studio/document.cpp" line="854"/>
+        <location filename="../app/studio/document.cpp" line="382"/>
+        <location filename="../app/studio/document.cpp" line="734"/>
+        <location filename="../app/studio/document.cpp" line="916"/>
+        <location filename="../app/studio/document.cpp" line="973"/>
         <source>The position is not a number.</source>
         <translation>La position n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="376"/>
-        <location filename="../app/studio/document.cpp" line="447"/>
+        <location filename="../app/studio/document.cpp" line="384"/>
+        <location filename="../app/studio/document.cpp" line="454"/>
+        <location filename="../app/studio/document.cpp" line="471"/>
         <source>The height must be greater than zero.</source>
         <translation>La hauteur doit être supérieure à zéro.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="398"/>
+        <location filename="../app/studio/document.cpp" line="405"/>
         <source>Move object %1</source>
         <translation>Déplacer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="405"/>
+        <location filename="../app/studio/document.cpp" line="412"/>
         <source>Change height of object %1</source>
         <translation>Changer la hauteur de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="412"/>
+        <location filename="../app/studio/document.cpp" line="419"/>
         <source>Turn object %1</source>
         <translation>Tourner l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="419"/>
+        <location filename="../app/studio/document.cpp" line="426"/>
         <source>Change material of object %1</source>
         <translation>Changer le matériau de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="434"/>
+        <location filename="../app/studio/document.cpp" line="441"/>
         <source>There is no object %1.</source>
         <translation>Il n&apos;y a pas d&apos;objet %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="435"/>
+        <location filename="../app/studio/document.cpp" line="442"/>
         <source>The scene is still being prepared.</source>
         <translation>La scène est encore en préparation.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="436"/>
+        <location filename="../app/studio/document.cpp" line="443"/>
         <source>The scene could not be prepared.</source>
         <translation>La scène n&apos;a pas pu être préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="458"/>
         <source>Insert object %1</source>
-        <translation>Insérer l&apos;objet %1</translation>
+        <translation type="vanished">Insérer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="470"/>
+        <location filename="../app/studio/document.cpp" line="469"/>
+        <source>The model has no triangles.</source>
+        <translation>Le modèle n&apos;a aucun triangle.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="477"/>
+        <source>object %1</source>
+        <translation>objet %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="478"/>
+        <source>Insert %1</source>
+        <translation>Insérer %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="495"/>
+        <source>Duplicate %1</source>
+        <translation>Dupliquer %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="543"/>
+        <source>Rename %1</source>
+        <translation>Renommer %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="550"/>
+        <source>Hide %1</source>
+        <translation>Masquer %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="550"/>
+        <source>Show %1</source>
+        <translation>Afficher %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="558"/>
+        <source>sphere</source>
+        <translation>sphère</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="559"/>
+        <source>cube</source>
+        <translation>cube</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="597"/>
         <source>Delete object %1</source>
         <translation>Supprimer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="580"/>
+        <location filename="../app/studio/document.cpp" line="699"/>
         <source>Open a photo first.</source>
         <translation>Ouvrez d&apos;abord une photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="600"/>
+        <location filename="../app/studio/document.cpp" line="719"/>
         <source>There is no estimated box yet.</source>
         <translation>Il n&apos;y a pas encore de pièce estimée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="724"/>
         <source>Accept the estimated box</source>
         <translation>Accepter la pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="611"/>
+        <location filename="../app/studio/document.cpp" line="730"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Ce coin du mur du fond n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="621"/>
+        <location filename="../app/studio/document.cpp" line="740"/>
         <source>Move a corner of the back wall</source>
         <translation>Déplacer un coin du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="627"/>
+        <location filename="../app/studio/document.cpp" line="746"/>
         <source>Estimate the box again</source>
         <translation>Estimer à nouveau la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="632"/>
+        <location filename="../app/studio/document.cpp" line="751"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une lampe doit compter au moins trois points entourant une surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="640"/>
+        <location filename="../app/studio/document.cpp" line="759"/>
         <source>Outline light %1</source>
         <translation>Détourer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="646"/>
-        <location filename="../app/studio/document.cpp" line="817"/>
+        <location filename="../app/studio/document.cpp" line="765"/>
+        <location filename="../app/studio/document.cpp" line="936"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Chaque cadre d&apos;un rayon de soleil doit mesurer au moins deux pixels de large et de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="654"/>
+        <location filename="../app/studio/document.cpp" line="773"/>
         <source>Add shaft %1</source>
         <translation>Ajouter le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="661"/>
+        <location filename="../app/studio/document.cpp" line="780"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une surface doit compter au moins trois points entourant une aire.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="670"/>
+        <location filename="../app/studio/document.cpp" line="789"/>
         <source>Add surface %1</source>
         <translation>Ajouter la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="681"/>
+        <location filename="../app/studio/document.cpp" line="800"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Un masque d&apos;avant-plan demande un trait sur ce qui est devant et un sur ce qui est derrière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="686"/>
+        <location filename="../app/studio/document.cpp" line="805"/>
         <source>Add occluder %1</source>
         <translation>Ajouter le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="693"/>
+        <location filename="../app/studio/document.cpp" line="812"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Ce masque d&apos;avant-plan n&apos;existe pas, ou le trait est vide.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="699"/>
+        <location filename="../app/studio/document.cpp" line="818"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Ajouter un trait au masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="710"/>
+        <location filename="../app/studio/document.cpp" line="829"/>
         <source>There is no such mark.</source>
         <translation>Ce repère n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="717"/>
+        <location filename="../app/studio/document.cpp" line="836"/>
         <source>Delete light %1</source>
         <translation>Supprimer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="718"/>
+        <location filename="../app/studio/document.cpp" line="837"/>
         <source>Delete shaft %1</source>
         <translation>Supprimer le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="719"/>
+        <location filename="../app/studio/document.cpp" line="838"/>
         <source>Delete surface %1</source>
         <translation>Supprimer la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="720"/>
+        <location filename="../app/studio/document.cpp" line="839"/>
         <source>Delete occluder %1</source>
         <translation>Supprimer le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="800"/>
+        <location filename="../app/studio/document.cpp" line="919"/>
         <source>There is no such point.</source>
         <translation>Ce point n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="808"/>
-        <location filename="../app/studio/document.cpp" line="826"/>
+        <location filename="../app/studio/document.cpp" line="927"/>
+        <location filename="../app/studio/document.cpp" line="945"/>
         <source>The outline would lose its area.</source>
         <translation>Le contour perdrait sa surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="809"/>
+        <location filename="../app/studio/document.cpp" line="928"/>
         <source>Reshape light %1</source>
         <translation>Remodeler la lumière %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="818"/>
+        <location filename="../app/studio/document.cpp" line="937"/>
         <source>Reshape shaft %1</source>
         <translation>Remodeler le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="827"/>
+        <location filename="../app/studio/document.cpp" line="946"/>
         <source>Reshape surface %1</source>
         <translation>Remodeler la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="835"/>
+        <location filename="../app/studio/document.cpp" line="954"/>
         <source>Reshape occluder %1</source>
         <translation>Remodeler l’occultant %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="851"/>
+        <location filename="../app/studio/document.cpp" line="970"/>
         <source>There is no such axis.</source>
         <translation>Cet axe n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="856"/>
+        <location filename="../app/studio/document.cpp" line="975"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="860"/>
+        <location filename="../app/studio/document.cpp" line="979"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Les deux lignes sont sur une même droite : tracez deux arêtes différentes.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="869"/>
+        <location filename="../app/studio/document.cpp" line="988"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Tracer les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="870"/>
+        <location filename="../app/studio/document.cpp" line="989"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Oublier les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="884"/>
+        <location filename="../app/studio/document.cpp" line="1003"/>
         <source>The room has no surface %1.</source>
         <translation>La pièce n’a pas de surface %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="887"/>
+        <location filename="../app/studio/document.cpp" line="1006"/>
         <source>Unknown material.</source>
         <translation>Matériau inconnu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="890"/>
+        <location filename="../app/studio/document.cpp" line="1009"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>La rugosité doit être comprise entre 0 et 1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="896"/>
+        <location filename="../app/studio/document.cpp" line="1015"/>
         <source>Change the material of %1</source>
         <translation>Changer le matériau de %1</translation>
     </message>
@@ -267,47 +312,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="164"/>
+        <location filename="../app/studio/docks.cpp" line="195"/>
         <source>Layers</source>
         <translation>Calques</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="165"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Composite</source>
         <translation>Composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="165"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Photo</source>
         <translation>Photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>Albedo</source>
         <translation>Albédo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>Direct light</source>
         <translation>Lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="167"/>
+        <location filename="../app/studio/docks.cpp" line="198"/>
         <source>With objects</source>
         <translation>Avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="167"/>
+        <location filename="../app/studio/docks.cpp" line="198"/>
         <source>Without objects</source>
         <translation>Sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="168"/>
+        <location filename="../app/studio/docks.cpp" line="199"/>
         <source>Mask</source>
         <translation>Masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="168"/>
+        <location filename="../app/studio/docks.cpp" line="199"/>
         <source>Difference</source>
         <translation>Différence</translation>
     </message>
@@ -382,349 +427,389 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="80"/>
+        <location filename="../app/studio/main_window.cpp" line="82"/>
         <source>Reading the photo</source>
         <translation>Lecture de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="81"/>
+        <location filename="../app/studio/main_window.cpp" line="83"/>
         <source>Estimating the camera</source>
         <translation>Estimation de l&apos;appareil photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="82"/>
+        <location filename="../app/studio/main_window.cpp" line="84"/>
         <source>Fitting the room</source>
         <translation>Ajustement de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="83"/>
+        <location filename="../app/studio/main_window.cpp" line="85"/>
         <source>Estimating the lighting</source>
         <translation>Estimation de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="84"/>
+        <location filename="../app/studio/main_window.cpp" line="86"/>
         <source>Placing the objects</source>
         <translation>Placement des objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="387"/>
+        <location filename="../app/studio/main_window.cpp" line="433"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Échantillons par pixel de la composition affichée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="388"/>
+        <location filename="../app/studio/main_window.cpp" line="434"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Échantillons par seconde du rendu (millions)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="389"/>
+        <location filename="../app/studio/main_window.cpp" line="435"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Erreur estimée (RMSE en sRGB) là où les objets modifient la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="390"/>
+        <location filename="../app/studio/main_window.cpp" line="436"/>
         <source>Render time since the last change</source>
         <translation>Temps de rendu depuis la dernière modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="391"/>
+        <location filename="../app/studio/main_window.cpp" line="437"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="116"/>
+        <location filename="../app/studio/main_window.cpp" line="118"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="128"/>
+        <location filename="../app/studio/main_window.cpp" line="130"/>
         <source>Preparing the scene: %1…</source>
         <translation>Préparation de la scène : %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="354"/>
+        <location filename="../app/studio/main_window.cpp" line="391"/>
         <source>&amp;Open Scene…</source>
         <translation>&amp;Ouvrir une scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="375"/>
+        <location filename="../app/studio/main_window.cpp" line="421"/>
         <source>Open a scene file (.json)</source>
         <translation>Ouvrir un fichier de scène (.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="355"/>
+        <location filename="../app/studio/main_window.cpp" line="392"/>
         <source>Open &amp;Photo…</source>
         <translation>Ouvrir une &amp;photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="376"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
         <source>Start a new scene from a photo</source>
         <translation>Commencer une nouvelle scène à partir d&apos;une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="356"/>
+        <location filename="../app/studio/main_window.cpp" line="393"/>
         <source>Open &amp;Example</source>
         <translation>Ouvrir l&apos;&amp;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="357"/>
+        <location filename="../app/studio/main_window.cpp" line="394"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="358"/>
+        <location filename="../app/studio/main_window.cpp" line="395"/>
         <source>Save &amp;As…</source>
         <translation>Enregistrer &amp;sous…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="359"/>
+        <location filename="../app/studio/main_window.cpp" line="396"/>
         <source>&amp;Export Composite…</source>
         <translation>E&amp;xporter la composition…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="377"/>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Écrire la composition actuelle en PNG, JPEG, TIFF ou EXR</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="360"/>
+        <location filename="../app/studio/main_window.cpp" line="397"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Exporter le &amp;calque affiché…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="378"/>
+        <location filename="../app/studio/main_window.cpp" line="424"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Écrire le calque affiché (albédo, masque, …) en image 8 bits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="361"/>
+        <location filename="../app/studio/main_window.cpp" line="398"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Exporter la scène en &amp;glTF…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="379"/>
+        <location filename="../app/studio/main_window.cpp" line="425"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Écrire la pièce, ses lumières, la caméra et les objets en glTF 2.0, pour continuer dans Blender</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="362"/>
+        <location filename="../app/studio/main_window.cpp" line="399"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="363"/>
+        <location filename="../app/studio/main_window.cpp" line="400"/>
         <source>Insert &amp;Sphere</source>
         <translation>Insérer une &amp;sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="380"/>
+        <location filename="../app/studio/main_window.cpp" line="426"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Poser une sphère sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="364"/>
+        <location filename="../app/studio/main_window.cpp" line="401"/>
         <source>Insert &amp;Cube</source>
         <translation>Insérer un &amp;cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="381"/>
+        <location filename="../app/studio/main_window.cpp" line="427"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Poser un cube sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="365"/>
+        <location filename="../app/studio/main_window.cpp" line="402"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="382"/>
+        <location filename="../app/studio/main_window.cpp" line="428"/>
         <source>Delete the selected object or mark</source>
         <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="366"/>
+        <location filename="../app/studio/main_window.cpp" line="412"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="367"/>
+        <location filename="../app/studio/main_window.cpp" line="413"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="368"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="369"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="383"/>
+        <location filename="../app/studio/main_window.cpp" line="429"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="370"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="384"/>
+        <location filename="../app/studio/main_window.cpp" line="430"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="371"/>
+        <location filename="../app/studio/main_window.cpp" line="417"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="385"/>
+        <location filename="../app/studio/main_window.cpp" line="431"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="372"/>
+        <location filename="../app/studio/main_window.cpp" line="418"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>P&amp;réparer à nouveau la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="386"/>
+        <location filename="../app/studio/main_window.cpp" line="432"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="373"/>
+        <location filename="../app/studio/main_window.cpp" line="419"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="393"/>
+        <location filename="../app/studio/main_window.cpp" line="439"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="393"/>
+        <location filename="../app/studio/main_window.cpp" line="439"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="374"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="394"/>
+        <location filename="../app/studio/main_window.cpp" line="403"/>
+        <source>Insert &amp;Model…</source>
+        <translation>Insérer un &amp;modèle…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="404"/>
+        <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
+        <translation>Poser un modèle 3D (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) au sol ; ou déposer le fichier là où il doit se tenir</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <source>D&amp;uplicate</source>
+        <translation>D&amp;upliquer</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <source>Stand a copy of the selected object beside it</source>
+        <translation>Poser une copie de l&apos;objet choisi à côté de lui</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <source>Re&amp;name…</source>
+        <translation>Re&amp;nommer…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="409"/>
+        <source>Rename the selected object (in the Scene list)</source>
+        <translation>Renommer l&apos;objet choisi (dans la liste de la scène)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="410"/>
+        <source>&amp;Hide or Show</source>
+        <translation>&amp;Masquer ou afficher</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="411"/>
+        <source>Hide the selected object from the render, or show it again</source>
+        <translation>Masquer l&apos;objet choisi du rendu, ou l&apos;afficher à nouveau</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="440"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Lignes de fuite (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="396"/>
+        <location filename="../app/studio/main_window.cpp" line="442"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="397"/>
+        <location filename="../app/studio/main_window.cpp" line="443"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="398"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="399"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="400"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="401"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="402"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="403"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="404"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Annuler : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="423"/>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -732,299 +817,452 @@ Faites-le glisser dans la photo.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
+        <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
+        <location filename="../app/studio/main_window.cpp" line="557"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="558"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="559"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="560"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="562"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="574"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="577"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="578"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="597"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="536"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
-        <location filename="../app/studio/main_window.cpp" line="565"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="555"/>
+        <location filename="../app/studio/main_window.cpp" line="622"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="565"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="575"/>
+        <location filename="../app/studio/main_window.cpp" line="642"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="576"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="583"/>
+        <location filename="../app/studio/main_window.cpp" line="650"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="584"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="595"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="610"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="611"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
-        <location filename="../app/studio/main_window.cpp" line="698"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="619"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="623"/>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="754"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="755"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="625"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="645"/>
+        <location filename="../app/studio/main_window.cpp" line="712"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="648"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="725"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="698"/>
+        <location filename="../app/studio/main_window.cpp" line="765"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="705"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="773"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="678"/>
-        <location filename="../app/studio/main_window.cpp" line="709"/>
+        <location filename="../app/studio/main_window.cpp" line="745"/>
+        <location filename="../app/studio/main_window.cpp" line="776"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="730"/>
+        <location filename="../app/studio/main_window.cpp" line="801"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="731"/>
+        <location filename="../app/studio/main_window.cpp" line="802"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="740"/>
+        <location filename="../app/studio/main_window.cpp" line="811"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="805"/>
+        <location filename="../app/studio/main_window.cpp" line="836"/>
+        <source>Insert Model</source>
+        <translation>Insérer un modèle</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="844"/>
+        <source>%1: open a photo first; the model needs a room to stand in.</source>
+        <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="848"/>
+        <source>%1: not a model file Inlay reads (%2).</source>
+        <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
+        <source>Reading %1…</source>
+        <translation>Lecture de %1…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="874"/>
+        <source>%1 goes in once the scene is prepared.</source>
+        <translation>%1 sera inséré dès que la scène sera prête.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="884"/>
+        <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
+        <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="885"/>
+        <source>%1: there is no floor in the middle of the photo to stand it on.</source>
+        <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="914"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <source>Inserted %1, %2 m high (its own size).</source>
+        <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <source>Inserted %1, %2 m high.</source>
+        <translation>%1 inséré, %2 m de haut.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <source>Cannot insert the model</source>
+        <translation>Impossible d&apos;insérer le modèle</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="945"/>
+        <source>Select an object to rename.</source>
+        <translation>Choisissez un objet à renommer.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="975"/>
+        <source>Models</source>
+        <translation>Modèles</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
+        <source>Insert %1</source>
+        <translation>Insérer %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="808"/>
+        <location filename="../app/studio/main_window.cpp" line="1006"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="809"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="813"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="1012"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="832"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="1036"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::ModelImportText</name>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="12"/>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="13"/>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="14"/>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="15"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="16"/>
+        <source>%1 µm</source>
+        <translation>%1 µm</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="31"/>
+        <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
+        <translation>Les fichiers %1 n&apos;indiquent pas leur unité : %2 a été mis à l&apos;échelle à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="42"/>
+        <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
+        <translation>%1 se dit haut de %2, une taille absurde : il a été inséré à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="63"/>
+        <source>3D models (%1)</source>
+        <translation>Modèles 3D (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="64"/>
+        <source>All files (*)</source>
+        <translation>Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="78"/>
+        <source>%1: not a model file Inlay reads (%2).</source>
+        <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="96"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="99"/>
+        <source>(Inlay inserts models of up to %1 triangles.)</source>
+        <translation>(Inlay insère des modèles jusqu&apos;à %1 triangles.)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="104"/>
+        <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
+        <translation>%1 : le modèle est plat (il n&apos;a pas de hauteur) et ne peut donc pas se tenir dans la pièce.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <source>%1 has no normals: it is shaded flat.</source>
+        <translation>%1 n&apos;a pas de normales : il est ombré à plat.</translation>
     </message>
 </context>
 <context>
@@ -1038,134 +1276,191 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="263"/>
+        <location filename="../app/studio/docks.cpp" line="325"/>
         <source>Properties</source>
         <translation>Propriétés</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="273"/>
+        <location filename="../app/studio/docks.cpp" line="330"/>
+        <source>Name:</source>
+        <translation>Nom :</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="331"/>
+        <source>Render:</source>
+        <translation>Rendu :</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="332"/>
+        <source>Shown</source>
+        <translation>Affiché</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="333"/>
+        <source>A hidden object stays in the scene but is not rendered</source>
+        <translation>Un objet masqué reste dans la scène mais n&apos;est pas rendu</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="334"/>
+        <source>Size (W × D × H):</source>
+        <translation>Taille (L × P × H) :</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="335"/>
+        <source>Width × depth × height in metres, as placed (before its turn)</source>
+        <translation>Largeur × profondeur × hauteur en mètres, telle que placée (avant sa rotation)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="337"/>
+        <source>The photo pixel the centre of the object&apos;s base stands on</source>
+        <translation>Le pixel de la photo sur lequel repose le centre de la base de l&apos;objet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="342"/>
         <source>Surface:</source>
         <translation>Surface :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="274"/>
+        <location filename="../app/studio/docks.cpp" line="343"/>
         <source>Finish:</source>
         <translation>Finition :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="275"/>
+        <location filename="../app/studio/docks.cpp" line="344"/>
         <source>Roughness:</source>
         <translation>Rugosité :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="276"/>
+        <location filename="../app/studio/docks.cpp" line="345"/>
+        <location filename="../app/studio/docks.cpp" line="357"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="277"/>
+        <location filename="../app/studio/docks.cpp" line="346"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
         <source>Diffuse</source>
         <translation>Diffus</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Glossy</source>
         <translation>Brillant</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Mirror</source>
         <translation>Miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="278"/>
+        <location filename="../app/studio/docks.cpp" line="347"/>
         <source>Metal</source>
         <translation>Métal</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Glass</source>
         <translation>Verre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Frosted glass</source>
         <translation>Verre dépoli</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>Emissive</source>
         <translation>Émissif</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="279"/>
+        <location filename="../app/studio/docks.cpp" line="348"/>
         <source>From the file</source>
         <translation>Celui du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="281"/>
+        <location filename="../app/studio/docks.cpp" line="350"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Réflectance de la surface de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="268"/>
+        <location filename="../app/studio/docks.cpp" line="336"/>
         <source>Base (px):</source>
         <translation>Base (px) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="269"/>
+        <location filename="../app/studio/docks.cpp" line="338"/>
+        <location filename="../app/studio/docks.cpp" line="356"/>
         <source>Height:</source>
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="270"/>
+        <location filename="../app/studio/docks.cpp" line="339"/>
         <source>Turn:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="271"/>
+        <location filename="../app/studio/docks.cpp" line="340"/>
         <source>Material:</source>
         <translation>Matériau :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="272"/>
+        <location filename="../app/studio/docks.cpp" line="341"/>
         <source>Colour:</source>
         <translation>Couleur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="282"/>
+        <location filename="../app/studio/docks.cpp" line="351"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Surface de la pièce&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="283"/>
+        <location filename="../app/studio/docks.cpp" line="352"/>
         <source>Matte</source>
         <translation>Mat</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="285"/>
+        <location filename="../app/studio/docks.cpp" line="354"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Une vraie surface de la photo qui réfléchit : un sol brillant, un miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="337"/>
+        <location filename="../app/studio/docks.cpp" line="355"/>
+        <source>&lt;b&gt;New models&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Nouveaux modèles&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="358"/>
+        <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
+        <translation>La hauteur que reçoit un modèle quand son fichier n&apos;indique pas d&apos;unité (OBJ, PLY, 3DS) ou une taille absurde</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>No object selected</source>
         <translation>Aucun objet sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="342"/>
+        <location filename="../app/studio/docks.cpp" line="420"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objet %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="387"/>
+        <location filename="../app/studio/docks.cpp" line="424"/>
+        <source>%1 × %2 × %3 m</source>
+        <translation>%1 × %2 × %3 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="428"/>
+        <source>– (the scene is being prepared)</source>
+        <translation>– (la scène est en préparation)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="473"/>
         <source>Object colour</source>
         <translation>Couleur de l&apos;objet</translation>
     </message>
@@ -1173,122 +1468,126 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="31"/>
+        <location filename="../app/studio/docks.cpp" line="36"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="32"/>
+        <location filename="../app/studio/docks.cpp" line="37"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="79"/>
+        <location filename="../app/studio/docks.cpp" line="96"/>
         <source>Scene</source>
         <translation>Scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="80"/>
+        <location filename="../app/studio/docks.cpp" line="97"/>
         <source>Item</source>
         <translation>Élément</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="80"/>
+        <location filename="../app/studio/docks.cpp" line="97"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="84"/>
+        <location filename="../app/studio/docks.cpp" line="101"/>
         <source>Room</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="87"/>
+        <location filename="../app/studio/docks.cpp" line="104"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="92"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>back wall given</source>
         <translation>mur du fond donné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="92"/>
+        <location filename="../app/studio/docks.cpp" line="109"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="95"/>
+        <location filename="../app/studio/docks.cpp" line="112"/>
         <source>Lights</source>
         <translation>Lampes</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="98"/>
+        <location filename="../app/studio/docks.cpp" line="115"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="99"/>
+        <location filename="../app/studio/docks.cpp" line="116"/>
         <source>outline on the photo</source>
         <translation>contour sur la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="100"/>
+        <location filename="../app/studio/docks.cpp" line="117"/>
         <source>rectangle in 3D</source>
         <translation>rectangle en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="114"/>
+        <location filename="../app/studio/docks.cpp" line="131"/>
         <source>Shafts</source>
         <translation>Rayons de soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="114"/>
+        <location filename="../app/studio/docks.cpp" line="131"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="115"/>
+        <location filename="../app/studio/docks.cpp" line="132"/>
         <source>sunlit patch and its window</source>
         <translation>tache de soleil et sa fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="133"/>
         <source>Surfaces</source>
         <translation>Surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="133"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="118"/>
+        <location filename="../app/studio/docks.cpp" line="135"/>
         <source>Occluders</source>
         <translation>Masques d&apos;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="118"/>
+        <location filename="../app/studio/docks.cpp" line="135"/>
         <source>Occluder %1</source>
         <translation>Masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="120"/>
+        <location filename="../app/studio/docks.cpp" line="137"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 traits devant, %2 derrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="125"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="129"/>
-        <source>Object %1</source>
-        <translation>Objet %1</translation>
+        <location filename="../app/studio/docks.cpp" line="147"/>
+        <source>hidden: %1</source>
+        <translation>masqué : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="130"/>
+        <source>Object %1</source>
+        <translation type="vanished">Objet %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="145"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1296,128 +1595,133 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="303"/>
+        <location filename="../app/studio/viewport.cpp" line="308"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="305"/>
+        <location filename="../app/studio/viewport.cpp" line="310"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="307"/>
+        <location filename="../app/studio/viewport.cpp" line="312"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="308"/>
+        <location filename="../app/studio/viewport.cpp" line="313"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="311"/>
+        <location filename="../app/studio/viewport.cpp" line="316"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="312"/>
+        <location filename="../app/studio/viewport.cpp" line="317"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="314"/>
+        <location filename="../app/studio/viewport.cpp" line="319"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="319"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Faites glisser le long d’une arête dans la direction %1 (les touches X, Y, Z la choisissent).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="320"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Faites maintenant glisser le long d’une deuxième arête dans la direction %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="392"/>
+        <location filename="../app/studio/viewport.cpp" line="397"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="392"/>
+        <location filename="../app/studio/viewport.cpp" line="397"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="448"/>
+        <location filename="../app/studio/viewport.cpp" line="453"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="486"/>
+        <location filename="../app/studio/viewport.cpp" line="491"/>
         <source>%1: %2 px</source>
         <translation>%1 : %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="515"/>
+        <location filename="../app/studio/viewport.cpp" line="520"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="529"/>
+        <location filename="../app/studio/viewport.cpp" line="534"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="544"/>
+        <location filename="../app/studio/viewport.cpp" line="549"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="696"/>
+        <location filename="../app/studio/viewport.cpp" line="610"/>
+        <source>%1 hidden</source>
+        <translation>%1 masqué</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="702"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="699"/>
+        <location filename="../app/studio/viewport.cpp" line="705"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="703"/>
+        <location filename="../app/studio/viewport.cpp" line="709"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="706"/>
+        <location filename="../app/studio/viewport.cpp" line="712"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="724"/>
+        <location filename="../app/studio/viewport.cpp" line="730"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="728"/>
+        <location filename="../app/studio/viewport.cpp" line="734"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="769"/>
+        <location filename="../app/studio/viewport.cpp" line="775"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="909"/>
-        <location filename="../app/studio/viewport.cpp" line="1051"/>
+        <location filename="../app/studio/viewport.cpp" line="915"/>
+        <location filename="../app/studio/viewport.cpp" line="1057"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="983"/>
+        <location filename="../app/studio/viewport.cpp" line="989"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
@@ -1425,37 +1729,42 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="47"/>
+        <location filename="../app/studio/main.cpp" line="49"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="54"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="56"/>
+        <location filename="../app/studio/main.cpp" line="58"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="62"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="66"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
+        <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

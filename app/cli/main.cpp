@@ -393,7 +393,7 @@ int commandRender(const std::string& scenePath, const Args& a) {
   CollectingSink sink(progress, a.progressCsv.empty() ? nullptr : &csv, so.targetSpp, so.seconds);
   {
     RenderSession session(&sink, so);
-    session.setScene(ps.renderScene);
+    session.setScene(shownRenderScene(ps));
     while (!session.waitUntilDone(0.05)) {
       if (gInterrupted) {
         session.cancel();

@@ -4,6 +4,9 @@
 #include "render_controller.h"
 #include "viewport.h"
 
+#include "model_import.h"
+
+#include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -12,8 +15,10 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -33,6 +38,8 @@ QString meshName(const ObjectKeys& o) {
   return QFileInfo(QString::fromStdString(o.mesh)).fileName();
 }
 
+const char* const kDefaultHeightKey = "insert/defaultModelHeightM";
+
 QColor displayColour(const Vec3& linear) {
   auto enc = [](double v) { return int(std::lround(255.0 * linearToSrgb(float(v)))); };
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
@@ -49,6 +56,15 @@ SceneTreeDock::SceneTreeDock(Document* document, QWidget* parent)
   tree_->setRootIsDecorated(true);
   setWidget(tree_);
   connect(document_, &Document::changed, this, &SceneTreeDock::onDocumentChanged);
+  tree_->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
+  connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+    if (updating_ || column != 0 || !item->data(0, kRoleObject).isValid()) return;
+    const int index = item->data(0, kRoleObject).toInt();
+    if (item->text(0) == document_->objectName(index)) return;
+    QString reason;
+    // Rebuilt by the document's change (or put back on refusal).
+    if (!document_->renameObject(index, item->text(0), &reason)) rebuild();
+  });
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
     if (updating_ || !item) return;
     const QVariant v = item->data(0, kRoleObject);
@@ -68,6 +84,7 @@ void SceneTreeDock::changeEvent(QEvent* event) {
 void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
       event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement) ||
+      event.has(ChangeEvent::ObjectShown) ||
       event.has(ChangeEvent::ObjectsAddedOrRemoved) || event.has(ChangeEvent::Marks))
     rebuild();
   else if (event.has(ChangeEvent::Selection))
@@ -125,10 +142,12 @@ void SceneTreeDock::rebuild() {
       new QTreeWidgetItem(tree_, {tr("Objects"), QString::number(doc.objects.size())});
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];
+    const QString details = tr("%1, %2 m").arg(meshName(o)).arg(o.heightM, 0, 'f', 2);
     auto* item = new QTreeWidgetItem(
-        objects, {tr("Object %1").arg(i + 1),
-                  tr("%1, %2 m").arg(meshName(o)).arg(o.heightM, 0, 'f', 2)});
+        objects, {document_->objectName(int(i)), o.hidden ? tr("hidden: %1").arg(details) : details});
     item->setData(0, kRoleObject, int(i));
+    item->setFlags(item->flags() | Qt::ItemIsEditable);  // F2 / double click renames
+    if (o.hidden) item->setForeground(0, tree_->palette().brush(QPalette::Disabled, QPalette::Text));
     item->setIcon(0, [&] {
       QPixmap swatch(12, 12);
       swatch.fill(displayColour(o.material.albedo));
@@ -139,6 +158,18 @@ void SceneTreeDock::rebuild() {
   tree_->expandAll();
   updating_ = false;
   syncSelection();
+}
+
+bool SceneTreeDock::editName(int index) {
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it)
+    if ((*it)->data(0, kRoleObject).isValid() && (*it)->data(0, kRoleObject).toInt() == index) {
+      show();
+      raise();
+      tree_->setCurrentItem(*it);
+      tree_->editItem(*it, 0);
+      return true;
+    }
+  return false;
 }
 
 // ---------------------------------------------------------------- LayersDock
@@ -194,6 +225,10 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   auto* panel = new QWidget(this);
   auto* form = new QFormLayout(panel);
   title_ = new QLabel(panel);
+  name_ = new QLineEdit(panel);
+  shown_ = new QCheckBox(panel);
+  size_ = new QLabel(panel);
+  size_->setTextInteractionFlags(Qt::TextSelectableByMouse);
   base_ = new QLabel(panel);
   base_->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
@@ -227,16 +262,32 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   roomRoughness_->setSingleStep(0.05);
   roomRoughness_->setKeyboardTracking(false);
 
+  newModelsTitle_ = new QLabel(panel);
+  newModelHeight_ = new QDoubleSpinBox(panel);
+  newModelHeight_->setRange(kMinPlausibleHeightM, kMaxPlausibleHeightM);
+  newModelHeight_->setDecimals(2);
+  newModelHeight_->setSingleStep(0.05);
+  newModelHeight_->setKeyboardTracking(false);
+  newModelHeight_->setValue(defaultModelHeightM());
+
+  // Every field with its own label (QFormLayout makes none for an empty text, and retranslate()
+  // needs one to set).
   form->addRow(title_);
-  form->addRow(QString(), base_);
-  form->addRow(QString(), height_);
-  form->addRow(QString(), yaw_);
-  form->addRow(QString(), preset_);
-  form->addRow(QString(), albedo_);
+  for (QWidget* field : {static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_),
+                         static_cast<QWidget*>(size_), static_cast<QWidget*>(base_),
+                         static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
+                         static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
+    form->addRow(new QLabel(panel), field);
   form->addRow(roomTitle_);
-  form->addRow(QString(), roomSurface_);
-  form->addRow(QString(), roomPreset_);
-  form->addRow(QString(), roomRoughness_);
+  for (QWidget* field : {static_cast<QWidget*>(roomSurface_), static_cast<QWidget*>(roomPreset_),
+                         static_cast<QWidget*>(roomRoughness_)})
+    form->addRow(new QLabel(panel), field);
+  form->addRow(newModelsTitle_);
+  form->addRow(new QLabel(panel), newModelHeight_);
+  for (int row = 0; row < form->rowCount(); ++row)  // a click on a label focuses its field
+    if (auto* l = qobject_cast<QLabel*>(form->itemAt(row, QFormLayout::LabelRole)
+                                            ? form->itemAt(row, QFormLayout::LabelRole)->widget() : nullptr))
+      if (QLayoutItem* f = form->itemAt(row, QFormLayout::FieldRole)) l->setBuddy(f->widget());
   setWidget(panel);
   retranslate();
 
@@ -247,6 +298,17 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   connect(yaw_, &QDoubleSpinBox::valueChanged, this, &PropertiesDock::editYaw);
   connect(preset_, &QComboBox::activated, this, &PropertiesDock::editPreset);
   connect(albedo_, &QPushButton::clicked, this, &PropertiesDock::pickAlbedo);
+  connect(name_, &QLineEdit::editingFinished, this, [this] {
+    const int i = document_->selectedObject();
+    if (i < 0 || name_->text() == document_->objectName(i)) return;
+    QString reason;
+    report(document_->renameObject(i, name_->text(), &reason), reason);
+  });
+  connect(shown_, &QCheckBox::clicked, this, [this](bool shown) {
+    QString reason;
+    report(document_->setObjectHidden(document_->selectedObject(), !shown, &reason), reason);
+  });
+  connect(newModelHeight_, &QDoubleSpinBox::valueChanged, this, [](double m) { setDefaultModelHeightM(m); });
   connect(document_, &Document::changed, this, [this] { refresh(); });
   refresh();
 }
@@ -265,7 +327,14 @@ void PropertiesDock::retranslate() {
   auto label = [form](QWidget* field, const QString& text) {
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(field))) l->setText(text);
   };
+  label(name_, tr("Name:"));
+  label(shown_, tr("Render:"));
+  shown_->setText(tr("Shown"));
+  shown_->setToolTip(tr("A hidden object stays in the scene but is not rendered"));
+  label(size_, tr("Size (W × D × H):"));
+  size_->setToolTip(tr("Width × depth × height in metres, as placed (before its turn)"));
   label(base_, tr("Base (px):"));
+  base_->setToolTip(tr("The photo pixel the centre of the object's base stands on"));
   label(height_, tr("Height:"));
   label(yaw_, tr("Turn:"));
   label(preset_, tr("Material:"));
@@ -283,6 +352,11 @@ void PropertiesDock::retranslate() {
   const QString finishes[] = {tr("Matte"), tr("Glossy"), tr("Mirror")};
   for (int i = 0; i < roomPreset_->count(); ++i) roomPreset_->setItemText(i, finishes[i]);
   roomPreset_->setToolTip(tr("A real surface of the photo that reflects: a glossy floor, a mirror"));
+  newModelsTitle_->setText(tr("<b>New models</b>"));
+  label(newModelHeight_, tr("Height:"));
+  newModelHeight_->setSuffix(tr(" m"));
+  newModelHeight_->setToolTip(tr("The height a model gets when its file does not state its unit "
+                                 "(OBJ, PLY, 3DS) or states an absurd size"));
 }
 
 void PropertiesDock::refreshRoom() {
@@ -331,15 +405,27 @@ void PropertiesDock::refresh() {
   const bool editable =
       valid && (document_->isReady() || document_->state() == Document::State::Preparing);
   for (QWidget* w : {static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
-                     static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
+                     static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_),
+                     static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_)})
     w->setEnabled(editable);
+  const QSignalBlocker b0(name_), b4(shown_);
   if (!valid) {
     title_->setText(tr("No object selected"));
+    name_->clear();
+    size_->clear();
     base_->clear();
     return;
   }
   const ObjectKeys& o = document_->scene().objects[size_t(i)];
   title_->setText(tr("<b>Object %1</b> (%2)").arg(i + 1).arg(meshName(o)));
+  if (!name_->hasFocus()) name_->setText(document_->objectName(i));
+  shown_->setChecked(!o.hidden);
+  const std::optional<Vec3> size = document_->objectSizeM(i);
+  size_->setText(size ? tr("%1 × %2 × %3 m")
+                            .arg(size->x(), 0, 'f', 2)
+                            .arg(size->z(), 0, 'f', 2)
+                            .arg(size->y(), 0, 'f', 2)
+                      : tr("– (the scene is being prepared)"));
   base_->setText(QStringLiteral("%1, %2").arg(o.basePx.x(), 0, 'f', 1).arg(o.basePx.y(), 0, 'f', 1));
   const QSignalBlocker b1(height_), b2(yaw_), b3(preset_);
   height_->setValue(o.heightM);
@@ -391,6 +477,16 @@ void PropertiesDock::pickAlbedo() {
                   srgbToLinear(float(chosen.blueF())));
   QString reason;
   report(document_->setMaterial(i, m, &reason), reason);
+}
+
+double defaultModelHeightM() {
+  const double m = QSettings().value(QLatin1String(kDefaultHeightKey), kDefaultModelHeightM).toDouble();
+  return m >= kMinPlausibleHeightM && m <= kMaxPlausibleHeightM ? m : kDefaultModelHeightM;
+}
+
+void setDefaultModelHeightM(double metres) {
+  if (metres >= kMinPlausibleHeightM && metres <= kMaxPlausibleHeightM)
+    QSettings().setValue(QLatin1String(kDefaultHeightKey), metres);
 }
 
 }  // namespace inlay::studio

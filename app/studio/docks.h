@@ -4,8 +4,9 @@
 //     choosing an object or a mark selects it in the document (and so in the viewport).
 //   LayersDock: which image the viewport shows (composite, photo, albedo, direct light, with and
 //     without objects, mask, difference).
-//   PropertiesDock: height_m, yaw_deg, material preset and albedo colour of the selected object;
-//     below, a real surface of the room (floor, walls, ceiling, table tops) and its material
+//   PropertiesDock: name, shown or hidden, size (width x depth x height in metres), height_m,
+//     yaw_deg, material preset and albedo colour of the selected object, every field labelled;
+//     the height new models get when their file does not state their unit; below, a real surface of the room (floor, walls, ceiling, table tops) and its material
 //     (matte, glossy with a roughness, mirror: room.materials).
 // Each retranslates its texts on QEvent::LanguageChange.
 // GUI thread only.
@@ -16,7 +17,9 @@
 #include <optional>
 #include <utility>
 
+class QCheckBox;
 class QComboBox;
+class QLineEdit;
 class QListWidget;
 class QDoubleSpinBox;
 class QLabel;
@@ -35,6 +38,8 @@ class SceneTreeDock : public QDockWidget {
  public:
   explicit SceneTreeDock(Document* document, QWidget* parent = nullptr);
   QTreeWidget* tree() const { return tree_; }
+  // Opens the in-place editor on object `index`'s name (shows the dock); false if no such item.
+  bool editName(int index);
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -69,6 +74,10 @@ class PropertiesDock : public QDockWidget {
 
  public:
   explicit PropertiesDock(Document* document, QWidget* parent = nullptr);
+  QLineEdit* nameBox() const { return name_; }
+  QCheckBox* shownBox() const { return shown_; }
+  QLabel* sizeLabel() const { return size_; }
+  QDoubleSpinBox* newModelHeightBox() const { return newModelHeight_; }
   QDoubleSpinBox* heightBox() const { return height_; }
   QDoubleSpinBox* yawBox() const { return yaw_; }
   QComboBox* presetBox() const { return preset_; }
@@ -96,6 +105,9 @@ class PropertiesDock : public QDockWidget {
 
   Document* document_;
   QLabel* title_;
+  QLineEdit* name_;
+  QCheckBox* shown_;
+  QLabel* size_;
   QLabel* base_;
   QDoubleSpinBox* height_;
   QDoubleSpinBox* yaw_;
@@ -105,6 +117,13 @@ class PropertiesDock : public QDockWidget {
   QComboBox* roomSurface_;
   QComboBox* roomPreset_;
   QDoubleSpinBox* roomRoughness_;
+  QLabel* newModelsTitle_;
+  QDoubleSpinBox* newModelHeight_;
 };
+
+// The height (metres) a model gets when its file does not state its unit, or states an absurd
+// one: the Properties dock's "New models" field, kept in the settings.
+double defaultModelHeightM();
+void setDefaultModelHeightM(double metres);
 
 }  // namespace inlay::studio

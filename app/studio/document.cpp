@@ -23,6 +23,22 @@ bool samePlacement(const ObjectKeys& a, const ObjectKeys& b) {
   return a.basePx == b.basePx && a.heightM == b.heightM && a.yawDeg == b.yawDeg;
 }
 
+bool sameShown(const ObjectKeys& a, const ObjectKeys& b) { return a.name == b.name && a.hidden == b.hidden; }
+
+bool sameObject(const ObjectKeys& a, const ObjectKeys& b) {
+  return samePlacement(a, b) && sameMaterial(a.material, b.material) && sameShown(a, b);
+}
+
+// What changed between two versions of object `index`.
+ChangeEvent objectChange(int index, const ObjectKeys& before, const ObjectKeys& after) {
+  ChangeEvent event;
+  event.objectIndex = index;
+  if (!samePlacement(before, after)) event.what |= ChangeEvent::ObjectPlacement;
+  if (!sameMaterial(before.material, after.material)) event.what |= ChangeEvent::ObjectMaterial;
+  if (!sameShown(before, after)) event.what |= ChangeEvent::ObjectShown;
+  return event;
+}
+
 // A path as it should be written in a scene file saved in `dir`: relative when the file lies
 // inside that folder, absolute otherwise (a "../../x" path breaks as soon as the scene moves).
 std::string pathForFolder(const std::string& resolved, const std::string& asWritten,
@@ -109,7 +125,7 @@ class ObjectEditCommand : public QUndoCommand {
         before_(std::move(before)),
         after_(std::move(after)),
         mergeId_(mergeId) {
-    setObsolete(samePlacement(before_, after_) && sameMaterial(before_.material, after_.material));
+    setObsolete(sameObject(before_, after_));
   }
 
   void undo() override { doc_->applyObject(index_, before_); }
@@ -119,7 +135,7 @@ class ObjectEditCommand : public QUndoCommand {
     const auto* o = dynamic_cast<const ObjectEditCommand*>(other);
     if (!o || o->mergeId_ != mergeId_ || o->index_ != index_) return false;
     after_ = o->after_;
-    setObsolete(samePlacement(before_, after_) && sameMaterial(before_.material, after_.material));
+    setObsolete(sameObject(before_, after_));
     return true;
   }
 
@@ -377,8 +393,7 @@ bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, const 
     slot = saved;
     if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
   }
-  if (samePlacement(current, keys) && sameMaterial(current.material, keys.material))
-    return true;  // nothing to do
+  if (sameObject(current, keys)) return true;  // nothing to do
   undo_.push(new ObjectEditCommand(this, index, current, keys, mergeId, text));
   return true;
 }
@@ -441,14 +456,134 @@ bool Document::insertObject(const ObjectKeys& keys, QString* reason) {
   // The engine's loader, so the studio honours `subdivide` as render does.
   Expected<TriangleMesh> mesh = loadObjectMesh(keys);
   if (!mesh.ok()) return fail(QString::fromStdString(mesh.error().underKey(key).message()));
-  auto shared = std::make_shared<const TriangleMesh>(std::move(mesh.value()));
-  const Expected<Placement> placed = placeObject(*shared, prepared_->geometry, prepared_->camera,
+  return insertObject(keys, std::make_shared<const TriangleMesh>(std::move(mesh.value())), reason);
+}
+
+bool Document::insertObject(const ObjectKeys& keys, std::shared_ptr<const TriangleMesh> mesh,
+                            QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (const QString why = whyObjectsCannotChange(-1); !why.isEmpty()) return fail(why);
+  if (!mesh || mesh->empty()) return fail(tr("The model has no triangles."));
+  if (!(keys.heightM > 0) || !std::isfinite(keys.heightM))
+    return fail(tr("The height must be greater than zero."));
+  const std::string key = "objects[" + std::to_string(doc_.objects.size()) + "]";
+  const Expected<Placement> placed = placeObject(*mesh, prepared_->geometry, prepared_->camera,
                                                  keys.basePx, keys.heightM, keys.yawDeg, key);
   if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
   const int index = objectCount();
-  undo_.push(new ObjectListCommand(this, true, index, keys, std::move(shared),
-                                   tr("Insert object %1").arg(index + 1)));
+  const QString name = keys.name.empty() ? tr("object %1").arg(index + 1) : QString::fromStdString(keys.name);
+  undo_.push(new ObjectListCommand(this, true, index, keys, std::move(mesh), tr("Insert %1").arg(name)));
   return true;
+}
+
+bool Document::duplicateObject(int index, QString* reason) {
+  auto fail = [&](const QString& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  if (const QString why = whyObjectsCannotChange(index); !why.isEmpty()) return fail(why);
+  ObjectKeys copy = doc_.objects[size_t(index)];
+  copy.name = uniqueName(objectName(index)).toStdString();
+  copy.hidden = false;
+  const std::shared_ptr<const TriangleMesh> mesh = prepared_->renderScene.objects[size_t(index)].meshObject;
+  copy.basePx = spotBeside(index).value_or(copy.basePx);
+  const int at = objectCount();
+  undo_.push(new ObjectListCommand(this, true, at, copy, mesh,
+                                   tr("Duplicate %1").arg(objectName(index))));
+  return true;
+}
+
+QString Document::uniqueName(const QString& base) const {
+  // "chair" -> "chair 2"; "chair 2" -> "chair 3": the number counts up from the base's own.
+  QString stem = base;
+  int n = 1;
+  const int space = base.lastIndexOf(QLatin1Char(' '));
+  bool isNumber = false;
+  const int tail = space > 0 ? base.mid(space + 1).toInt(&isNumber) : 0;
+  if (isNumber && tail > 0) {
+    stem = base.left(space);
+    n = tail;
+  }
+  auto taken = [this](const QString& name) {
+    for (int i = 0; i < objectCount(); ++i)
+      if (objectName(i) == name) return true;
+    return false;
+  };
+  QString name;
+  do name = QStringLiteral("%1 %2").arg(stem).arg(++n);
+  while (taken(name));
+  return name;
+}
+
+std::optional<Vec2> Document::spotBeside(int index) const {
+  if (!prepared_ || size_t(index) >= prepared_->placements.size()) return std::nullopt;
+  const std::optional<Vec3> size = objectSizeM(index);
+  if (!size) return std::nullopt;
+  const Camera& cam = prepared_->camera;
+  const Vec3 base = prepared_->placements[size_t(index)].baseWorld;
+  const double step = 1.15 * std::max({size->x(), size->z(), 0.05});
+  for (const Vec3& dir : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
+    const std::optional<Vec2> px = cam.project(base + step * dir);
+    if (!px || px->x() < 0 || px->y() < 0 || px->x() >= cam.widthPx || px->y() >= cam.heightPx) continue;
+    const auto hit = prepared_->geometry.intersect(cam.rayThroughPixel(*px), /*supportsOnly=*/true);
+    // The same level (a duplicate on a table top stays on it, not on the floor beside it).
+    if (hit && hit->normalWorld.y() >= 0.5 && std::abs(hit->pointWorld.y() - base.y()) < 0.02) return px;
+  }
+  return std::nullopt;
+}
+
+bool Document::renameObject(int index, const QString& name, QString* reason) {
+  if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
+  ObjectKeys keys = doc_.objects[size_t(index)];
+  const QString before = objectName(index);
+  keys.name = name.trimmed().toStdString();
+  return editObject(index, keys, 0, tr("Rename %1").arg(before), reason);
+}
+
+bool Document::setObjectHidden(int index, bool hidden, QString* reason) {
+  if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
+  ObjectKeys keys = doc_.objects[size_t(index)];
+  keys.hidden = hidden;
+  return editObject(index, keys, 0, (hidden ? tr("Hide %1") : tr("Show %1")).arg(objectName(index)),
+                    reason);
+}
+
+QString Document::objectName(int index) const {
+  if (index < 0 || index >= objectCount()) return {};
+  const ObjectKeys& o = doc_.objects[size_t(index)];
+  if (!o.name.empty()) return QString::fromStdString(o.name);
+  if (o.mesh == "builtin:sphere") return tr("sphere");
+  if (o.mesh == "builtin:cube") return tr("cube");
+  return QFileInfo(QString::fromStdString(o.mesh)).completeBaseName();
+}
+
+std::optional<Vec3> Document::objectSizeM(int index) const {
+  if (!prepared_ || index < 0 || size_t(index) >= prepared_->renderScene.objects.size() ||
+      index >= objectCount())
+    return std::nullopt;
+  const auto& mesh = prepared_->renderScene.objects[size_t(index)].meshObject;
+  if (!mesh || mesh->empty()) return std::nullopt;
+  const Eigen::Vector3f sizes = mesh->bounds().sizes();
+  if (!(sizes.y() > 0)) return std::nullopt;
+  const double scale = doc_.objects[size_t(index)].heightM / double(sizes.y());
+  return Vec3(sizes.x() * scale, doc_.objects[size_t(index)].heightM, sizes.z() * scale);
+}
+
+std::optional<Vec2> Document::supportPointNear(const Vec2& px) const {
+  if (!prepared_ || !px.allFinite()) return std::nullopt;
+  const Camera& cam = prepared_->camera;
+  auto supports = [&](const Vec2& q) {
+    const auto hit = prepared_->geometry.intersect(cam.rayThroughPixel(q), /*supportsOnly=*/true);
+    return hit && hit->normalWorld.y() >= 0.5;
+  };
+  if (px.x() < 0 || px.x() >= cam.widthPx || px.y() < 0 || px.y() >= cam.heightPx) return std::nullopt;
+  const double step = std::max(1.0, cam.heightPx / 400.0);
+  for (double y = px.y(); y < cam.heightPx; y += step)
+    if (supports(Vec2(px.x(), y))) return Vec2(px.x(), y);
+  return std::nullopt;
 }
 
 bool Document::removeObject(int index, QString* reason) {
@@ -511,11 +646,7 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
   if (!prepared_ && state_ == State::Preparing) {
     // The document takes the edit now (the viewport draws it); the scene being prepared
     // catches up when it arrives (catchUpObjects).
-    ChangeEvent event;
-    event.objectIndex = index;
-    if (!samePlacement(doc_.objects[size_t(index)], keys)) event.what |= ChangeEvent::ObjectPlacement;
-    if (!sameMaterial(doc_.objects[size_t(index)].material, keys.material))
-      event.what |= ChangeEvent::ObjectMaterial;
+    const ChangeEvent event = objectChange(index, doc_.objects[size_t(index)], keys);
     doc_.objects[size_t(index)] = keys;
     if (event.what) Q_EMIT changed(event);
     return;
@@ -526,10 +657,7 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
     return changeObjectsUnprepared(std::move(objects), selected_);
   }
   ObjectKeys& current = doc_.objects[size_t(index)];
-  ChangeEvent event;
-  event.objectIndex = index;
-  if (!samePlacement(current, keys)) event.what |= ChangeEvent::ObjectPlacement;
-  if (!sameMaterial(current.material, keys.material)) event.what |= ChangeEvent::ObjectMaterial;
+  const ChangeEvent event = objectChange(index, current, keys);
   current = keys;
   prepared_->doc.objects[size_t(index)] = keys;
 

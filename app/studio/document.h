@@ -44,6 +44,7 @@ struct ChangeEvent {
     FilePath = 1u << 6,         // filePath() changed (open, save as)
     ObjectsAddedOrRemoved = 1u << 7,  // objects inserted or deleted; indices may have shifted
     Marks = 1u << 8,            // the scene's marks changed (SceneMarks); preparation restarted
+    ObjectShown = 1u << 9,      // name or hidden of objectIndex
   };
   unsigned what = 0;
   int objectIndex = -1;  // for ObjectPlacement / ObjectMaterial
@@ -127,7 +128,28 @@ class Document : public QObject {
   bool setMaterial(int index, const MaterialKeys& material, QString* reason = nullptr);
   // Appends an object (its mesh is loaded here, on the calling thread) and selects it.
   bool insertObject(const ObjectKeys& keys, QString* reason = nullptr);
+  // The same with a mesh already loaded (Insert Model… loads on a worker thread); `mesh` must
+  // be what loadObjectMesh(keys) gives.
+  bool insertObject(const ObjectKeys& keys, std::shared_ptr<const TriangleMesh> mesh,
+                    QString* reason = nullptr);
   bool removeObject(int index, QString* reason = nullptr);
+  // A copy of object `index` standing beside it (the first free spot on a supporting surface
+  // to its right, left, front or back; on the same spot when there is none), named
+  // "<name> 2", ..., selected. One undo step.
+  bool duplicateObject(int index, QString* reason = nullptr);
+  // The name the user gives (objects[].name); empty: named after its mesh again.
+  bool renameObject(int index, const QString& name, QString* reason = nullptr);
+  // Hidden objects stay in the scene (and the file) but are not rendered.
+  bool setObjectHidden(int index, bool hidden, QString* reason = nullptr);
+  // What the scene tree and Properties call object `index`: its name, else its file's name.
+  QString objectName(int index) const;
+  // The object's width (x), height (y) and depth (z) in metres as placed, before its turn;
+  // nullopt while its mesh is not loaded (the scene is being prepared).
+  std::optional<Vec3> objectSizeM(int index) const;
+  // A base pixel near `px` where an object can stand: `px` itself when it is on a supporting
+  // surface (floor, table top, step), else the first such pixel straight below it (a drop on a
+  // wall lands on the floor in front of it). nullopt when there is none or nothing is prepared.
+  std::optional<Vec2> supportPointNear(const Vec2& px) const;
   // A base pixel where a new object can stand: the first point on a supporting surface along
   // the photo's vertical centre line, from the bottom up. nullopt if there is none (or the
   // scene is not prepared).
@@ -218,6 +240,10 @@ class Document : public QObject {
   void insertObjectAt(int index, const ObjectKeys& keys, std::shared_ptr<const TriangleMesh> mesh);
   void removeObjectAt(int index);
   void onPrepared(const PrepareResult& result);
+  // "chair" -> "chair 2" (or the next number no object has).
+  QString uniqueName(const QString& base) const;
+  // A base pixel beside object `index` on the same surface level (for a duplicate).
+  std::optional<Vec2> spotBeside(int index) const;
   // Applies the object edits made while the scene was being prepared to the new PreparedScene;
   // returns the reason when one cannot stand where the user put it.
   QString catchUpObjects(const std::vector<ObjectKeys>& preparedWith);

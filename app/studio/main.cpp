@@ -1,6 +1,8 @@
 // inlay: the studio. See ../../../shared/spec/cli.md ("inlay [SCENE.json | PHOTO]").
 //
 // --recover restores the work a crash left (Autosaver) without asking; without it the window asks.
+// --insert-model MODEL (repeatable) inserts a model file once the scene is prepared, as Insert
+// Model… does (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS).
 // Test hook: inlay --screenshot OUT.png [--wait-spp N] [SCENE | PHOTO] opens the scene, waits
 // until the composite reaches N samples per pixel (default 4; or its render ends, or 60 s
 // pass), grabs the main window to OUT.png and exits: 0 when the screenshot shows the rendered
@@ -62,6 +64,11 @@ int main(int argc, char** argv) {
   const QCommandLineOption recoverOpt(
       QStringLiteral("recover"),
       QCoreApplication::translate("main", "Restore unsaved work left by a crash without asking."));
+  const QCommandLineOption insertModelOpt(
+      QStringLiteral("insert-model"),
+      QCoreApplication::translate("main", "Insert the model <file> into the scene once it is prepared."),
+      QStringLiteral("file"));
+  parser.addOption(insertModelOpt);
   parser.addOption(recoverOpt);
   parser.addOption(screenshotOpt);
   parser.addOption(waitSppOpt);
@@ -98,6 +105,9 @@ int main(int argc, char** argv) {
     opened = window.restoreRecovery() || opened;
   else if (!screenshot)
     window.offerRecovery();
+  if (opened)
+    for (const QString& model : parser.values(insertModelOpt))
+      opened = window.insertModelFile(QDir::current().absoluteFilePath(model)) && opened;
   if (!screenshot) return app.exec();
 
   // --- Screenshot mode ---
@@ -115,7 +125,12 @@ int main(int argc, char** argv) {
     const auto* renderer = window.renderer();
     bool done = false;
     int rc = 0;
-    if (state == Document::State::Failed || state == Document::State::Empty) {
+    if (!window.lastModelError().isEmpty()) {  // a model was refused (the window said why)
+      done = true;
+      rc = 2;
+    } else if (window.pendingModelCount() > 0) {
+      return;  // a model is being read or waits for the scene
+    } else if (state == Document::State::Failed || state == Document::State::Empty) {
       if (state == Document::State::Empty)  // a failure was already reported by the window
         std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(window.document()->prepareError()));
       done = true;

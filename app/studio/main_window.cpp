@@ -31,6 +31,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QThread>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -39,6 +40,7 @@ namespace {
 
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentKey = "recentFiles";
+const char* const kRecentModelsKey = "recentModels";
 
 // The window icon: the SVG when Qt can read SVG here, else the same drawing painted directly
 // (a box room in perspective with a sphere standing in it).
@@ -137,6 +139,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     else
       statusBar()->showMessage(m, 5000);
   });
+  connect(viewport_, &Viewport::modelDropped, this, [this](const QString& path, QPointF imagePx) {
+    insertModelFile(path, Vec2(imagePx.x(), imagePx.y()));
+  });
   connect(propertiesDock_, &PropertiesDock::statusMessage, this,
           [this](const QString& m) { statusBar()->showMessage(m, 5000); });
 
@@ -150,6 +155,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
+  // A model still being read: its thread ends by itself (it touches no window); wait for it.
+  for (QThread* t : std::as_const(loaders_)) {
+    QObject::disconnect(t, nullptr, this, nullptr);
+    t->wait();
+    delete t;
+  }
+  loaders_.clear();
   // Stop the render thread before the document it renders goes away.
   delete renderer_;
   renderer_ = nullptr;
@@ -215,6 +227,19 @@ void MainWindow::createActions() {
   deleteAct_ = new QAction(this);
   deleteAct_->setShortcut(QKeySequence::Delete);
   connect(deleteAct_, &QAction::triggered, this, &MainWindow::deleteSelected);
+  insertModelAct_ = new QAction(s->standardIcon(QStyle::SP_FileDialogNewFolder), QString(), this);
+  insertModelAct_->setObjectName(QStringLiteral("insertModelAction"));
+  insertModelAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
+  connect(insertModelAct_, &QAction::triggered, this, &MainWindow::insertModelDialog);
+  duplicateAct_ = new QAction(this);
+  duplicateAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_D));
+  connect(duplicateAct_, &QAction::triggered, this, &MainWindow::duplicateSelected);
+  hideAct_ = new QAction(this);
+  hideAct_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
+  connect(hideAct_, &QAction::triggered, this, &MainWindow::toggleSelectedHidden);
+  renameAct_ = new QAction(this);
+  renameAct_->setShortcut(QKeySequence(Qt::Key_F2));
+  connect(renameAct_, &QAction::triggered, this, &MainWindow::renameSelected);
 
   zoomInAct_ = new QAction(this);
   zoomInAct_->setShortcut(QKeySequence::ZoomIn);
@@ -287,8 +312,13 @@ void MainWindow::createMenus() {
   edit->addAction(undoAct_);
   edit->addAction(redoAct_);
   edit->addSeparator();
+  edit->addAction(insertModelAct_);
   edit->addAction(insertSphereAct_);
   edit->addAction(insertCubeAct_);
+  edit->addSeparator();
+  edit->addAction(duplicateAct_);
+  edit->addAction(renameAct_);
+  edit->addAction(hideAct_);
   edit->addAction(deleteAct_);
   edit->addSeparator();
   edit->addAction(acceptBoxAct_);
@@ -343,6 +373,8 @@ void MainWindow::createMenus() {
   tools->addSeparator();
   tools->addActions(toolActs_);
   tools->addSeparator();
+  tools->addAction(insertModelAct_);
+  tools->addSeparator();
   tools->addAction(zoomInAct_);
   tools->addAction(zoomOutAct_);
   tools->addAction(fitAct_);
@@ -370,6 +402,15 @@ void MainWindow::retranslate() {
   insertSphereAct_->setText(tr("Insert &Sphere"));
   insertCubeAct_->setText(tr("Insert &Cube"));
   deleteAct_->setText(tr("&Delete"));
+  insertModelAct_->setText(tr("Insert &Model…"));
+  insertModelAct_->setStatusTip(tr("Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; "
+                                   "or drop the file where it should stand"));
+  duplicateAct_->setText(tr("D&uplicate"));
+  duplicateAct_->setStatusTip(tr("Stand a copy of the selected object beside it"));
+  renameAct_->setText(tr("Re&name…"));
+  renameAct_->setStatusTip(tr("Rename the selected object (in the Scene list)"));
+  hideAct_->setText(tr("&Hide or Show"));
+  hideAct_->setStatusTip(tr("Hide the selected object from the render, or show it again"));
   zoomInAct_->setText(tr("Zoom &In"));
   zoomOutAct_->setText(tr("Zoom &Out"));
   fitAct_->setText(tr("&Fit to Window"));
@@ -438,7 +479,10 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     statusBar()->showMessage(tr("Preparing the scene…"));
     statusBar()->setToolTip(QString());
   }
-  if (event.has(ChangeEvent::SceneReplaced)) reportFailure_ = true;
+  if (event.has(ChangeEvent::SceneReplaced)) {
+    reportFailure_ = true;
+    waitingModels_.clear();  // they were meant for the scene that was closed
+  }
   if (event.has(ChangeEvent::Marks)) reportFailure_ = false;
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (progress_) {
@@ -475,6 +519,24 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   exportGltfAct_->setEnabled(ready);
   insertSphereAct_->setEnabled(ready);
   insertCubeAct_->setEnabled(ready);
+  // Models may be chosen while the scene prepares: they go in once it is ready.
+  insertModelAct_->setEnabled(!document_->scene().photo.empty());
+  const int selected = document_->selectedObject();
+  duplicateAct_->setEnabled(ready && selected >= 0);
+  const bool objectEditable = selected >= 0 && (ready || document_->state() == Document::State::Preparing);
+  renameAct_->setEnabled(objectEditable);
+  hideAct_->setEnabled(objectEditable);
+  if (event.has(ChangeEvent::PrepareFinished) && !waitingModels_.empty()) {
+    std::vector<WaitingModel> waiting;
+    waiting.swap(waitingModels_);
+    if (ready) {
+      for (const WaitingModel& m : waiting) placeModel(m.model, m.dropPx);
+    } else {
+      for (const WaitingModel& m : waiting)
+        refuseModel(tr("%1: the scene could not be prepared, so the model has nowhere to stand.")
+                        .arg(QFileInfo(m.model.path).fileName()));
+    }
+  }
   deleteAct_->setEnabled(!document_->scene().photo.empty());
   acceptBoxAct_->setEnabled(document_->shownBackWallPx().has_value() && !document_->backWallIsUsers());
   resetBoxAct_->setEnabled(document_->backWallIsUsers());
@@ -727,6 +789,10 @@ void MainWindow::dropEvent(QDropEvent* event) {
   if (urls.size() != 1 || !urls.first().isLocalFile()) return;
   event->acceptProposedAction();
   const QString path = urls.first().toLocalFile();
+  if (isModelFile(path)) {  // dropped beside the viewport: stands in the middle of the floor
+    QMetaObject::invokeMethod(this, [this, path] { insertModelFile(path); }, Qt::QueuedConnection);
+    return;
+  }
   // After the drop has finished: maybeSave() may open a dialog.
   QMetaObject::invokeMethod(
       this, [this, path] { if (maybeSave()) openPath(path); }, Qt::QueuedConnection);
@@ -768,19 +834,136 @@ void MainWindow::deleteSelected() {
   if (!ok) statusBar()->showMessage(reason, 5000);
 }
 
-void MainWindow::addRecentFile(const QString& path) {
+void MainWindow::insertModelDialog() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Insert Model"), QString(), modelFileFilter());
+  if (!path.isEmpty()) insertModelFile(path);
+}
+
+bool MainWindow::insertModelFile(const QString& path, std::optional<Vec2> dropPx) {
+  lastModelError_.clear();
+  const QString name = QFileInfo(path).fileName();
+  if (document_->scene().photo.empty()) {
+    refuseModel(tr("%1: open a photo first; the model needs a room to stand in.").arg(name));
+    return false;
+  }
+  if (!isModelFile(path)) {
+    refuseModel(tr("%1: not a model file Inlay reads (%2).")
+                    .arg(name, modelFileExtensions().join(QStringLiteral(", "))));
+    return false;
+  }
+  // Read on a thread of its own: a large file must not freeze the window.
+  auto result = std::make_shared<ModelLoadResult>();
+  const double defaultHeight = defaultModelHeightM();
+  QThread* loader = QThread::create([result, path, defaultHeight] {
+    *result = loadModelForInsert(path, defaultHeight);
+  });
+  loaders_ << loader;
+  connect(loader, &QThread::finished, this, [this, loader, result, dropPx] {
+    loaders_.removeOne(loader);
+    loader->deleteLater();
+    onModelLoaded(*result, dropPx);
+  });
+  statusBar()->showMessage(tr("Reading %1…").arg(name));
+  loader->start();
+  return true;
+}
+
+void MainWindow::onModelLoaded(const ModelLoadResult& result, std::optional<Vec2> dropPx) {
+  if (!result.model) return refuseModel(result.error);
+  addRecentFile(result.model->path, kRecentModelsKey);
+  if (document_->state() == Document::State::Preparing) {
+    waitingModels_.push_back({*result.model, dropPx});
+    statusBar()->showMessage(tr("%1 goes in once the scene is prepared.").arg(result.model->name), 8000);
+    return;
+  }
+  placeModel(*result.model, dropPx);
+}
+
+bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx) {
+  const QString file = QFileInfo(model.path).fileName();
+  const std::optional<Vec2> at = dropPx ? document_->supportPointNear(*dropPx) : document_->freeStandingPointPx();
+  if (!at) {
+    refuseModel(dropPx ? tr("%1: there is no floor, table top or step under the drop point to stand it on.").arg(file)
+                       : tr("%1: there is no floor in the middle of the photo to stand it on.").arg(file));
+    return false;
+  }
+  ObjectKeys keys;
+  keys.mesh = model.path.toStdString();
+  keys.meshResolved = keys.mesh;
+  keys.name = model.name.toStdString();
+  keys.basePx = *at;
+  keys.heightM = model.heightM;
+  QStringList notes = model.notes;
+  bool ownSize = model.ownSize;
+  // A size the file states but the room cannot hold (a teapot taller than the ceiling) is a
+  // unit mistake of the file as much as 1 km is.
+  const double ceilingM = document_->prepared() ? document_->prepared()->box.ceilingM : 0.0;
+  if (ownSize && ceilingM > 0 && keys.heightM > ceilingM) {
+    notes << tr("%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted "
+                "%4 m high instead (change Height in Properties).")
+                 .arg(model.name)
+                 .arg(keys.heightM, 0, 'f', 2)
+                 .arg(ceilingM, 0, 'f', 2)
+                 .arg(defaultModelHeightM(), 0, 'f', 2);
+    keys.heightM = defaultModelHeightM();
+    ownSize = false;
+  }
+  // The file's own materials when it has any (a glTF's PBR values, an OBJ's MTL).
+  const bool hasMaterials = !model.mesh->materials.empty() && model.mesh->materials.front().name != "default";
+  keys.material.preset = hasMaterials ? "asset" : "diffuse";
+  QString reason;
+  if (!document_->insertObject(keys, model.mesh, &reason)) {
+    refuseModel(tr("%1: %2").arg(file, reason));
+    return false;
+  }
+  QString message = ownSize ? tr("Inserted %1, %2 m high (its own size).").arg(model.name).arg(keys.heightM, 0, 'f', 2)
+                            : tr("Inserted %1, %2 m high.").arg(model.name).arg(keys.heightM, 0, 'f', 2);
+  if (!notes.isEmpty()) message += QLatin1Char(' ') + notes.join(QLatin1Char(' '));
+  statusBar()->showMessage(message, 12000);
+  statusBar()->setToolTip(message);
+  return true;
+}
+
+void MainWindow::refuseModel(const QString& text) {
+  lastModelError_ = text;
+  showError(tr("Cannot insert the model"), text);
+}
+
+void MainWindow::duplicateSelected() {
+  QString reason;
+  if (!document_->duplicateObject(document_->selectedObject(), &reason)) statusBar()->showMessage(reason, 5000);
+}
+
+void MainWindow::toggleSelectedHidden() {
+  const int i = document_->selectedObject();
+  QString reason;
+  const bool hidden = i >= 0 && i < document_->objectCount() && document_->scene().objects[size_t(i)].hidden;
+  if (!document_->setObjectHidden(i, !hidden, &reason)) statusBar()->showMessage(reason, 5000);
+}
+
+void MainWindow::renameSelected() {
+  // In place, in the Scene list (the undoable rename happens when the editor closes).
+  if (!sceneDock_->editName(document_->selectedObject()))
+    statusBar()->showMessage(tr("Select an object to rename."), 5000);
+}
+
+void MainWindow::addRecentFile(const QString& path, const char* key) {
   QSettings settings;
-  QStringList files = settings.value(QLatin1String(kRecentKey)).toStringList();
+  QStringList files = settings.value(QLatin1String(key)).toStringList();
   files.removeAll(path);
   files.prepend(path);
   while (files.size() > kMaxRecentFiles) files.removeLast();
-  settings.setValue(QLatin1String(kRecentKey), files);
+  settings.setValue(QLatin1String(key), files);
   rebuildRecentMenu();
 }
 
+// Scenes and photos first (choosing one opens it), then the models inserted lately (choosing
+// one inserts it again into the open scene).
 void MainWindow::rebuildRecentMenu() {
   recentMenu_->clear();
-  const QStringList files = QSettings().value(QLatin1String(kRecentKey)).toStringList();
+  const QSettings settings;
+  const QStringList files = settings.value(QLatin1String(kRecentKey)).toStringList();
+  const QStringList models = settings.value(QLatin1String(kRecentModelsKey)).toStringList();
   for (int i = 0; i < files.size(); ++i) {
     const QString& f = files[i];
     QAction* a = recentMenu_->addAction(
@@ -790,7 +973,17 @@ void MainWindow::rebuildRecentMenu() {
       if (maybeSave()) openPath(f);
     });
   }
-  recentMenu_->setEnabled(!files.isEmpty());
+  if (!models.isEmpty()) {
+    recentMenu_->addSection(tr("Models"));
+    for (const QString& f : models) {
+      QAction* a = recentMenu_->addAction(tr("Insert %1").arg(QFileInfo(f).fileName()));
+      a->setData(f);
+      a->setStatusTip(QDir::toNativeSeparators(f));
+      a->setEnabled(!document_->scene().photo.empty());
+      connect(a, &QAction::triggered, this, [this, f] { insertModelFile(f); });
+    }
+  }
+  recentMenu_->setEnabled(!files.isEmpty() || !models.isEmpty());
 }
 
 void MainWindow::setLanguage(const QString& code) {

@@ -3,16 +3,23 @@
 // comes from them. GUI thread only.
 #pragma once
 
+#include "model_import.h"
+
+#include "inlay/modeling/core.h"
+
+#include <QList>
 #include <QMainWindow>
 #include <QPointer>
 #include <QTemporaryDir>
 
 #include <memory>
+#include <optional>
 
 class QAction;
 class QLabel;
 class QMenu;
 class QProgressDialog;
+class QThread;
 class QToolBar;
 
 namespace inlay::studio {
@@ -74,6 +81,23 @@ class MainWindow : public QMainWindow {
   // they stand now) as glTF 2.0 (.gltf with its .bin and textures beside it, or one .glb);
   // returns false (after telling the user) when the scene is not prepared or cannot be written.
   bool exportSceneGltf(const QString& path);
+  // Insert Model…: reads the model file on a worker thread, then inserts it standing at
+  // `dropPx` (image pixels; on the surface under it, or straight below it) or, without one, in
+  // the middle of the visible floor. While the scene is being prepared the model waits and goes
+  // in once it is ready. A refusal (unreadable, too large, flat, no place to stand) is a dialog
+  // naming the file and the reason. Returns false when refused at once (not a model file, no
+  // photo open).
+  bool insertModelFile(const QString& path, std::optional<Vec2> dropPx = std::nullopt);
+  // Model files being read or waiting for the scene (the tests wait for 0).
+  int pendingModelCount() const { return int(loaders_.size() + waitingModels_.size()); }
+  // The last refusal of insertModelFile (for tests; cleared by the next call).
+  QString lastModelError() const { return lastModelError_; }
+  QAction* insertModelAction() const { return insertModelAct_; }
+  QAction* duplicateAction() const { return duplicateAct_; }
+  QAction* hideAction() const { return hideAct_; }
+  QAction* renameAction() const { return renameAct_; }
+  QAction* deleteAction() const { return deleteAct_; }
+  QMenu* recentMenu() const { return recentMenu_; }
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -93,6 +117,10 @@ class MainWindow : public QMainWindow {
   // visible floor; false (with the reason in the status bar) when there is no such place.
   bool insertBuiltin(const QString& mesh);
   void deleteSelected();
+  void insertModelDialog();
+  void duplicateSelected();
+  void toggleSelectedHidden();
+  void renameSelected();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -109,7 +137,11 @@ class MainWindow : public QMainWindow {
   void onFrame();
   void updateTitle();
   void showError(const QString& title, const QString& text);
-  void addRecentFile(const QString& path);
+  void addRecentFile(const QString& path, const char* key = "recentFiles");
+  // A model file read by the worker: inserted now, kept until the scene is ready, or refused.
+  void onModelLoaded(const ModelLoadResult& result, std::optional<Vec2> dropPx);
+  bool placeModel(const ModelImport& model, std::optional<Vec2> dropPx);
+  void refuseModel(const QString& text);
   void rebuildRecentMenu();
   bool maybeSave();
 
@@ -124,6 +156,14 @@ class MainWindow : public QMainWindow {
   QPointer<QProgressDialog> progress_;
   std::unique_ptr<QTemporaryDir> exampleCopy_;  // the embedded example, unpacked
   bool interactive_ = true;
+  // Insert Model…: the threads reading model files, and models read while the scene prepared.
+  QList<QThread*> loaders_;
+  struct WaitingModel {
+    ModelImport model;
+    std::optional<Vec2> dropPx;
+  };
+  std::vector<WaitingModel> waitingModels_;
+  QString lastModelError_;
 
   QMenu* fileMenu_ = nullptr;
   QMenu* recentMenu_ = nullptr;
@@ -152,6 +192,10 @@ class MainWindow : public QMainWindow {
   QAction* redoAct_ = nullptr;
   QAction* insertSphereAct_ = nullptr;
   QAction* insertCubeAct_ = nullptr;
+  QAction* insertModelAct_ = nullptr;
+  QAction* duplicateAct_ = nullptr;
+  QAction* hideAct_ = nullptr;
+  QAction* renameAct_ = nullptr;
   QAction* deleteAct_ = nullptr;
   QAction* zoomInAct_ = nullptr;
   QAction* zoomOutAct_ = nullptr;

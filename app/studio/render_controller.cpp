@@ -46,7 +46,7 @@ void RenderController::startScene() {
   }
   // Before setScene: a frame of the new version must find the new context.
   sink_->setContext(CompositeSink::compositeContextOf(*prepared), requestedVersion_ + 1);
-  request(session_->setScene(prepared->renderScene));
+  request(session_->setScene(shownRenderScene(*prepared)));
 }
 
 void RenderController::onDocumentChanged(const ChangeEvent& event) {
@@ -74,14 +74,14 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   }
   const PreparedScene* prepared = document_->prepared();
   if (session_ && prepared && event.has(ChangeEvent::ObjectsAddedOrRemoved)) {
-    request(session_->setScene(prepared->renderScene));
+    request(session_->setScene(shownRenderScene(*prepared)));
     return;
   }
   if (!session_ || !prepared || event.objectIndex < 0 ||
       size_t(event.objectIndex) >= prepared->renderScene.objects.size())
     return;
-  if (event.has(ChangeEvent::ObjectMaterial)) {
-    request(session_->setScene(prepared->renderScene));  // carries the new transform too
+  if (event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectShown)) {
+    request(session_->setScene(shownRenderScene(*prepared)));  // carries the new transform too
   } else if (event.has(ChangeEvent::ObjectPlacement)) {
     request(session_->setObjectTransform(
         size_t(event.objectIndex),

@@ -1,8 +1,12 @@
 #include "viewport.h"
 
 #include "document.h"
+#include "model_import.h"
 
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QElapsedTimer>
+#include <QMimeData>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -108,6 +112,7 @@ Viewport::Viewport(Document* document, RenderController* renderer, QWidget* pare
   setFocusPolicy(Qt::StrongFocus);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setMinimumSize(160, 120);
+  setAcceptDrops(true);
   auto repaint = [this] {
     if (fit_) updateFit();
     update();
@@ -567,7 +572,8 @@ void Viewport::paintObjects(QPainter& p) {
     const QPointF base = widgetFromImage(o.basePx);
     const bool selected = int(i) == document_->selectedObject();
     const bool hot = selected || int(i) == hoverObject_ || int(i) == dragObject_;
-    const QColor accent = selected ? QColor(255, 150, 40) : QColor(240, 240, 240);
+    // A hidden object keeps a grey marker (it can still be selected, moved and shown again).
+    const QColor accent = selected ? QColor(255, 150, 40) : o.hidden ? QColor(150, 150, 150) : QColor(240, 240, 240);
     if (prepared && i < prepared->placements.size()) {
       const Placement& pl = prepared->placements[i];
       const Camera& cam = prepared->camera;
@@ -601,7 +607,7 @@ void Viewport::paintObjects(QPainter& p) {
     p.drawLine(base + QPointF(r, 0), base + QPointF(r + 4, 0));
     p.drawLine(base - QPointF(0, r + 4), base - QPointF(0, r));
     p.drawLine(base + QPointF(0, r), base + QPointF(0, r + 4));
-    labelAt(p, base, QString::number(i + 1), accent);
+    labelAt(p, base, o.hidden ? tr("%1 hidden").arg(i + 1) : QString::number(i + 1), accent);
   }
 }
 
@@ -1057,6 +1063,40 @@ void Viewport::wheelEvent(QWheelEvent* event) {
   if (steps == 0) return;
   zoomAbout(std::pow(1.15, steps), event->position());
   event->accept();
+}
+
+// --- Dropping model files ---
+namespace {
+
+// The first local model file among the drag's URLs (text/uri-list), or "".
+QString droppedModel(const QMimeData* data) {
+  if (!data || !data->hasUrls()) return {};
+  for (const QUrl& url : data->urls())
+    if (url.isLocalFile() && isModelFile(url.toLocalFile())) return url.toLocalFile();
+  return {};
+}
+
+}  // namespace
+
+void Viewport::dragEnterEvent(QDragEnterEvent* event) {
+  if (droppedModel(event->mimeData()).isEmpty()) return event->ignore();  // the window's (a photo)
+  event->acceptProposedAction();
+}
+
+void Viewport::dragMoveEvent(QDragMoveEvent* event) {
+  if (droppedModel(event->mimeData()).isEmpty()) return event->ignore();
+  event->acceptProposedAction();
+}
+
+void Viewport::dropEvent(QDropEvent* event) {
+  const QString path = droppedModel(event->mimeData());
+  if (path.isEmpty()) return event->ignore();
+  event->acceptProposedAction();
+  const Vec2 px = imageFromWidget(event->position());
+  // After the drop has returned to the source (a file manager, the library dock): reading the
+  // file and a refusal's dialog must not run inside the drag's event loop.
+  QMetaObject::invokeMethod(this, [this, path, px] { Q_EMIT modelDropped(path, QPointF(px.x(), px.y())); },
+                            Qt::QueuedConnection);
 }
 
 }  // namespace inlay::studio

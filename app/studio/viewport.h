@@ -28,7 +28,8 @@
 // Vanishing Lines tool: drag two segments along edges that run in one world direction (X, Y, Z
 // keys choose it; z by default); the camera is re-estimated with that vanishing point fixed.
 // Arrow keys nudge the selected object by one image pixel (ten with Shift), one undo step each.
-// Wheel zooms about the cursor; middle drag pans. GUI thread only.
+// Wheel zooms about the cursor; middle drag pans. A model file dropped on the view stands on the
+// surface under the cursor (modelDropped; the window reads and inserts it). GUI thread only.
 #pragma once
 
 #include "inlay/modeling/core.h"
@@ -110,6 +111,8 @@ class Viewport : public QWidget {
   // A transient message for the status bar (empty: clear it).
   void statusMessage(const QString& message);
   void zoomChanged(double zoom);
+  // A model file (a local file or file URL, text/uri-list) was dropped; imagePx: where.
+  void modelDropped(const QString& path, QPointF imagePx);
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -121,6 +124,12 @@ class Viewport : public QWidget {
   void wheelEvent(QWheelEvent* event) override;
   void keyPressEvent(QKeyEvent* event) override;
   void changeEvent(QEvent* event) override;  // a language switch: the hint and labels again
+  // Drops of model files (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) as local file URLs: the object
+  // stands where the cursor is (see modelDropped). Other drops go on to the window (a photo or
+  // a scene opens).
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dragMoveEvent(QDragMoveEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
   QSize imageSize() const;

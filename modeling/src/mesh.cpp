@@ -5,7 +5,10 @@
 // drops non-manifold faces ("complex edge"), and it trusts face indices and header counts, so
 // every file would need a full validating pass first anyway. glTF/GLB go through Assimp after a
 // structural pre-check of the buffers (Assimp 5.2 reads past short buffers in some paths), and
-// the glTF JSON supplies the extensions Assimp 5.2 ignores (emissive strength, IOR).
+// the glTF JSON supplies the extensions Assimp 5.2 ignores (emissive strength, IOR). FBX,
+// COLLADA and 3DS go to Assimp as they are (no reader of ours), and the result gets the same
+// validation. OBJ polygons are ear-clipped on their best-fit plane (concave faces stay inside
+// their outline).
 #include "inlay/modeling/mesh.h"
 
 #include <assimp/Importer.hpp>
@@ -22,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -98,6 +102,101 @@ void TriangleMesh::append(const TriangleMesh& other) {
   } else {
     for (uint32_t m : other.triangleMaterial) triangleMaterial.push_back(m + matOffset);
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Polygon faces
+
+namespace {
+
+using Pt2 = Eigen::Vector2d;
+
+double cross2(const Pt2& a, const Pt2& b, const Pt2& c) {
+  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+}
+
+// The corners in the plane through them, counter-clockwise when seen against the Newell normal;
+// empty when the polygon has no area to speak of.
+std::vector<Pt2> projectToBestFitPlane(const std::vector<Vec3f>& corners) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const size_t k = corners.size();
+  for (size_t i = 0; i < k; ++i) {
+    const Eigen::Vector3d a = corners[i].cast<double>(), b = corners[(i + 1) % k].cast<double>();
+    n += Eigen::Vector3d((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()),
+                         (a.x() - b.x()) * (a.y() + b.y()));
+  }
+  double extent = 0;
+  for (const Vec3f& c : corners) extent = std::max(extent, double((c - corners[0]).norm()));
+  if (!(n.norm() > 1e-12 * extent * extent) || !n.allFinite()) return {};
+  n.normalize();
+  const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);  // u x v = n
+  std::vector<Pt2> out;
+  out.reserve(k);
+  for (const Vec3f& c : corners) out.emplace_back(u.dot(c.cast<double>()), v.dot(c.cast<double>()));
+  return out;
+}
+
+bool insideOrOnTriangle(const Pt2& p, const Pt2& a, const Pt2& b, const Pt2& c) {
+  return cross2(a, b, p) >= 0 && cross2(b, c, p) >= 0 && cross2(c, a, p) >= 0;
+}
+
+// Ear clipping of a counter-clockwise polygon. A corner is an ear when it turns left and no
+// other remaining reflex corner lies in its triangle (only reflex corners can). When none is
+// found (a self-intersecting or degenerate remainder) the most convex corner is cut anyway, so
+// the count of triangles is always n - 2.
+std::vector<std::array<uint32_t, 3>> clipEars(const std::vector<Pt2>& p) {
+  std::vector<uint32_t> ring(p.size());
+  for (size_t i = 0; i < p.size(); ++i) ring[i] = uint32_t(i);
+  std::vector<std::array<uint32_t, 3>> out;
+  out.reserve(p.size() - 2);
+  auto turn = [&](size_t i) {
+    const size_t m = ring.size();
+    return cross2(p[ring[(i + m - 1) % m]], p[ring[i]], p[ring[(i + 1) % m]]);
+  };
+  auto isEar = [&](size_t i) {
+    const size_t m = ring.size();
+    const uint32_t a = ring[(i + m - 1) % m], b = ring[i], c = ring[(i + 1) % m];
+    if (!(cross2(p[a], p[b], p[c]) > 0)) return false;
+    for (size_t j = 0; j < m; ++j) {
+      const uint32_t q = ring[j];
+      if (q == a || q == b || q == c || turn(j) > 0) continue;  // convex corners cannot block
+      if (p[q] == p[a] || p[q] == p[b] || p[q] == p[c]) continue;  // a bridge's twin corner
+      if (insideOrOnTriangle(p[q], p[a], p[b], p[c])) return false;
+    }
+    return true;
+  };
+  while (ring.size() > 3) {
+    const size_t m = ring.size();
+    size_t cut = m;
+    for (size_t i = 0; i < m && cut == m; ++i)
+      if (isEar(i)) cut = i;
+    if (cut == m) {  // no proper ear: take the most convex corner
+      cut = 0;
+      for (size_t i = 1; i < m; ++i)
+        if (turn(i) > turn(cut)) cut = i;
+    }
+    out.push_back({ring[(cut + m - 1) % m], ring[cut], ring[(cut + 1) % m]});
+    ring.erase(ring.begin() + std::ptrdiff_t(cut));
+  }
+  out.push_back({ring[0], ring[1], ring[2]});
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3f>& corners) {
+  const size_t k = corners.size();
+  std::vector<std::array<uint32_t, 3>> fan;
+  for (size_t i = 1; i + 1 < k; ++i) fan.push_back({0, uint32_t(i), uint32_t(i + 1)});
+  if (k <= 3) return fan;
+  const std::vector<Pt2> p = projectToBestFitPlane(corners);
+  if (p.empty()) return fan;  // no area: any n - 2 triangles have none
+  // Ear clipping is quadratic or worse in the corners: a face beyond a thousand is fanned.
+  if (k > 1024) return fan;
+  bool convex = true;
+  for (size_t i = 0; i < k && convex; ++i) convex = cross2(p[(i + k - 1) % k], p[i], p[(i + 1) % k]) >= 0;
+  if (convex) return fan;
+  return clipEars(p);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -287,6 +386,19 @@ std::vector<AssetMaterial> readMtl(const std::vector<std::string>& files, const 
   return out;
 }
 
+// Appends one polygon face (vertex indices into m.positions): triangles (ids.size() - 2 of them)
+// that follow the face's outline, concave ones included.
+void addFace(TriangleMesh& m, const std::vector<uint32_t>& ids) {
+  if (ids.size() == 3) {
+    m.triangles.push_back({ids[0], ids[1], ids[2]});
+    return;
+  }
+  std::vector<Vec3f> corners;
+  corners.reserve(ids.size());
+  for (uint32_t i : ids) corners.push_back(m.positions[i]);
+  for (const auto& t : triangulatePolygon(corners)) m.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
+}
+
 TriangleMesh readObj(const std::string& text, const std::string& path, const MeshLimits& limits) {
   std::vector<Vec3f> v, vn;
   std::vector<Vec2f> vt;
@@ -411,9 +523,11 @@ TriangleMesh readObj(const std::string& text, const std::string& path, const Mes
   }
   if (!allVt && !allVn) {
     m.positions = std::move(v);
-    for (const auto& face : faces)
-      for (size_t k = 1; k + 1 < face.size(); ++k)
-        m.triangles.push_back({uint32_t(face[0].v), uint32_t(face[k].v), uint32_t(face[k + 1].v)});
+    for (const auto& face : faces) {
+      std::vector<uint32_t> ids;
+      for (const ObjCorner& c : face) ids.push_back(uint32_t(c.v));
+      addFace(m, ids);
+    }
     return m;
   }
   // One output vertex per distinct (v, vt, vn) corner.
@@ -440,7 +554,7 @@ TriangleMesh readObj(const std::string& text, const std::string& path, const Mes
   for (const auto& face : faces) {
     std::vector<uint32_t> ids;
     for (const ObjCorner& c : face) ids.push_back(vertexOf(c));
-    for (size_t k = 1; k + 1 < ids.size(); ++k) m.triangles.push_back({ids[0], ids[k], ids[k + 1]});
+    addFace(m, ids);
   }
   if (m.positions.size() > limits.maxVertices)
     fail("", "more than " + std::to_string(limits.maxVertices) + " vertices");
@@ -903,31 +1017,14 @@ nlohmann::json checkGltf(const std::string& path, const std::string& data, bool 
   return j;
 }
 
-TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
-  const std::string data = readWholeFile(path);
-  const bool glb = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
-  const nlohmann::json gltf = checkGltf(path, data, glb);
-
-  Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_GenNormals | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-  const aiScene* scene = nullptr;
-  try {
-    scene = importer.ReadFileFromMemory(data.data(), data.size(), flags, glb ? "glb" : "gltf");
-    if (!glb && !scene) scene = importer.ReadFile(path, flags);  // external buffers by path
-  } catch (const std::exception& e) {
-    fail("", std::string("import failed: ") + e.what());
-  }
-  if (!scene) fail("", std::string("import failed: ") + importer.GetErrorString());
-  if (!scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    fail("", "incomplete scene");
-
+// The triangles of an imported scene (its node transforms applied by PreTransformVertices)
+// with per-triangle materials.
+TriangleMesh meshFromAssimp(const aiScene& sceneRef, const MeshLimits& limits,
+                            const nlohmann::json* gltfMaterials) {
+  const aiScene* scene = &sceneRef;
   TriangleMesh m;
-  // Materials: Assimp's in glTF order (plus its default at the end), extensions from the JSON.
-  const nlohmann::json* gltfMaterials =
-      gltf.contains("materials") && gltf["materials"].is_array() ? &gltf["materials"] : nullptr;
+  // Materials: Assimp's in the file's order (plus its default at the end); for glTF the
+  // extensions Assimp 5.2 ignores come from the JSON.
   for (unsigned i = 0; i < scene->mNumMaterials; ++i) {
     const aiMaterial* am = scene->mMaterials[i];
     AssetMaterial mat;
@@ -1005,6 +1102,84 @@ TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
   return m;
 }
 
+
+TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
+  const std::string data = readWholeFile(path);
+  const bool glb = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
+  const nlohmann::json gltf = checkGltf(path, data, glb);
+
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_GenNormals | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFileFromMemory(data.data(), data.size(), flags, glb ? "glb" : "gltf");
+    if (!glb && !scene) scene = importer.ReadFile(path, flags);  // external buffers by path
+  } catch (const std::exception& e) {
+    fail("", std::string("import failed: ") + e.what());
+  }
+  if (!scene) fail("", std::string("import failed: ") + importer.GetErrorString());
+  if (!scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+    fail("", "incomplete scene");
+
+  const nlohmann::json* gltfMaterials =
+      gltf.contains("materials") && gltf["materials"].is_array() ? &gltf["materials"] : nullptr;
+  return meshFromAssimp(*scene, limits, gltfMaterials);
+}
+
+// A number from the scene's metadata (Assimp stores FBX settings as int, float or double).
+std::optional<double> metadataNumber(const aiScene& scene, const char* key) {
+  if (!scene.mMetaData) return std::nullopt;
+  int32_t i;
+  float f;
+  double d;
+  if (scene.mMetaData->Get(key, d)) return d;
+  if (scene.mMetaData->Get(key, f)) return double(f);
+  if (scene.mMetaData->Get(key, i)) return double(i);
+  return std::nullopt;
+}
+
+// FBX, COLLADA and 3DS through Assimp. COLLADA's <unit> and up_axis are applied by Assimp; FBX
+// says its unit (UnitScaleFactor, centimetres per unit) and up axis in its global settings; 3DS
+// is z-up with no unit.
+TriangleMesh readWithAssimp(const std::string& path, const std::string& ext, const MeshLimits& limits,
+                            MeshFileInfo& info) {
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_GenNormals | aiProcess_PreTransformVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFile(path, flags);
+  } catch (const std::exception& e) {
+    fail("", std::string("import failed: ") + e.what());
+  }
+  if (!scene) fail("", std::string("import failed: ") + importer.GetErrorString());
+  if (!scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mNumMeshes == 0)
+    fail("", "no meshes in the file");
+  TriangleMesh m = meshFromAssimp(*scene, limits, nullptr);
+  // z-up: a quarter turn about x brings +z (or -z) to +y.
+  auto turnZUp = [&m](double sign) {
+    auto turn = [sign](Vec3f& v) { v = Vec3f(v.x(), float(sign) * v.z(), -float(sign) * v.y()); };
+    for (Vec3f& p : m.positions) turn(p);
+    for (Vec3f& n : m.normals) turn(n);
+  };
+  if (ext == ".dae") info.metresPerUnit = 1.0;
+  // 3DS is z-up (3ds Max's axes), and Assimp 5.2 leaves it so: its own 3DS export of a y-up box
+  // reads back lying on its side.
+  if (ext == ".3ds") turnZUp(1.0);
+  if (ext == ".fbx") {
+    const std::optional<double> cmPerUnit = metadataNumber(*scene, "UnitScaleFactor");
+    if (cmPerUnit && std::isfinite(*cmPerUnit) && *cmPerUnit > 0) info.metresPerUnit = *cmPerUnit / 100.0;
+    const std::optional<double> up = metadataNumber(*scene, "UpAxis");
+    if (up && *up == 2.0) turnZUp(metadataNumber(*scene, "UpAxisSign").value_or(1.0) < 0 ? -1.0 : 1.0);
+  }
+  return m;
+}
+
 // Common checks for every importer.
 void validate(TriangleMesh& m, const MeshLimits& limits) {
   if (m.triangles.empty()) fail("", "no triangles");
@@ -1044,8 +1219,18 @@ void validate(TriangleMesh& m, const MeshLimits& limits) {
 
 }  // namespace
 
-Expected<TriangleMesh> loadMesh(const std::string& pathOrBuiltin, const MeshLimits& limits) {
+const std::vector<std::string>& meshFileExtensions() {
+  static const std::vector<std::string> exts = {".obj", ".ply", ".gltf", ".glb", ".fbx", ".dae", ".3ds"};
+  return exts;
+}
+
+Expected<TriangleMesh> loadMesh(const std::string& pathOrBuiltin, const MeshLimits& limits,
+                                MeshFileInfo* infoOut) {
   const std::string& path = pathOrBuiltin;
+  MeshFileInfo scratch;
+  MeshFileInfo& info = infoOut ? *infoOut : scratch;
+  info = {};
+  if (path.rfind("builtin:", 0) == 0) info.format = "builtin";
   if (path == "builtin:sphere") return makeSphere();
   if (path == "builtin:cube") return makeCube();
   if (path.rfind("builtin:", 0) == 0)
@@ -1065,9 +1250,12 @@ Expected<TriangleMesh> loadMesh(const std::string& pathOrBuiltin, const MeshLimi
     if (ext == ".obj") m = readObj(readWholeFile(path), path, limits);
     else if (ext == ".ply") m = readPly(readWholeFile(path), limits);
     else if (ext == ".gltf" || ext == ".glb") m = readGltf(path, limits);
+    else if (ext == ".fbx" || ext == ".dae" || ext == ".3ds") m = readWithAssimp(path, ext, limits, info);
     else
       return Error{path, "", "unsupported mesh format '" + ext +
-                                 "' (expected .obj, .ply, .gltf or .glb)"};
+                                 "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)"};
+    if (ext == ".gltf" || ext == ".glb") info.metresPerUnit = 1.0;  // the glTF spec's unit
+    info.format = ext == ".glb" ? "gltf" : ext.substr(1);
     validate(m, limits);
     return m;
   } catch (const MeshError& e) {

@@ -6,6 +6,7 @@
 #include "inlay/modeling/scene_file.h"
 
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/mesh.h"
 
 #include <nlohmann/json.hpp>
 
@@ -668,7 +669,7 @@ class Reader {
 
   ObjectKeys readObject(const json& j, const std::string& p) {
     object(j, p);
-    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material"});
+    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material", "name", "hidden"});
     ObjectKeys o;
     const std::string mp = child(p, "mesh");
     if (!j.contains("mesh")) fail(mp, "missing (builtin:sphere, builtin:cube or a mesh file)");
@@ -681,8 +682,9 @@ class Reader {
       std::string ext = fs::path(o.mesh).extension().string();
       std::transform(ext.begin(), ext.end(), ext.begin(),
                      [](unsigned char c) { return char(std::tolower(c)); });
-      if (ext != ".obj" && ext != ".ply" && ext != ".gltf" && ext != ".glb")
-        fail(mp, "unsupported mesh format '" + ext + "' (expected .obj, .ply, .gltf or .glb)");
+      const std::vector<std::string>& known = meshFileExtensions();
+      if (std::find(known.begin(), known.end(), ext) == known.end())
+        fail(mp, "unsupported mesh format '" + ext + "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)");
       o.meshResolved = resolve(o.mesh);
       std::error_code ec;
       if (!fs::is_regular_file(o.meshResolved, ec)) fail(mp, whyNotAFile(o.meshResolved));
@@ -698,6 +700,11 @@ class Reader {
       o.subdivideLevels = int(levels);
     }
     if (j.contains("material")) o.material = readMaterial(j["material"], child(p, "material"));
+    if (j.contains("name")) o.name = string(j["name"], child(p, "name"));
+    if (j.contains("hidden")) {
+      if (!j["hidden"].is_boolean()) fail(child(p, "hidden"), "must be true or false");
+      o.hidden = j["hidden"].get<bool>();
+    }
     return o;
   }
 
@@ -917,6 +924,8 @@ ojson buildJson(const SceneDoc& doc) {
                 {"yaw_deg", o.yawDeg},
                 {"material", mat}};
       if (o.subdivideLevels > 0) obj["subdivide"] = o.subdivideLevels;
+      if (!o.name.empty()) obj["name"] = o.name;
+      if (o.hidden) obj["hidden"] = true;
       a.push_back(obj);
     }
     j["objects"] = a;

@@ -185,7 +185,10 @@ Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object) {
 }
 
 Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
-  return exportGltf(scene.renderScene, path, {}, warnings);
+  RenderScene shown = scene.renderScene;  // hidden objects are not exported
+  for (size_t i = shown.objects.size(); i-- > 0;)
+    if (i < scene.doc.objects.size() && scene.doc.objects[i].hidden) shown.objects.erase(shown.objects.begin() + std::ptrdiff_t(i));
+  return exportGltf(shown, path, {}, warnings);
 }
 
 Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys, const SceneGeometry& room) {
@@ -388,6 +391,13 @@ Expected<PlacedObjects> placeObjects(const std::vector<ObjectKeys>& objects,
     out.placements.push_back(*place);
   }
   return out;
+}
+
+RenderScene shownRenderScene(const PreparedScene& scene) {
+  RenderScene shown = scene.renderScene;
+  for (size_t i = 0; i < shown.objects.size() && i < scene.doc.objects.size(); ++i)
+    if (scene.doc.objects[i].hidden) shown.objects[i].meshObject.reset();
+  return shown;
 }
 
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {

@@ -101,6 +101,8 @@ struct ObjectKeys {
   double yawDeg = 0.0;
   int subdivideLevels = 0;           // "subdivide": smooth subdivision levels (0: none)
   MaterialKeys material;
+  std::string name;                  // "name": what the user calls it (the file's name on insert)
+  bool hidden = false;               // "hidden": kept in the scene, not rendered
 };
 
 // "room": {"materials": {"<surface name>": {...}}}: a real surface of the photo marked as

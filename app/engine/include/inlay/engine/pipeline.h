@@ -98,6 +98,11 @@ Expected<PlacedObjects> placeObjects(const std::vector<ObjectKeys>& objects,
 // mesh stays loaded). Errors name "objects[index].base_px" etc.
 Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index);
 
+// The render scene with the objects the scene file marks `hidden` left out of the picture: they
+// keep their index (and placement) but carry no mesh, so RenderSession::setObjectTransform
+// indices stay the document's.
+RenderScene shownRenderScene(const PreparedScene& scene);
+
 // The 8-bit-ready linear composite of a frame: differential composite over the photo, then the
 // scene's exposure.
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame);

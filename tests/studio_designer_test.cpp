@@ -1,0 +1,498 @@
+// The studio as a designer uses it with their own models: open a York photo (../shared/york,
+// skipped without it), insert a glTF model through Insert Model…, drop an OBJ (with concave
+// n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale,
+// duplicate, rename, hide, undo everything and redo it all. Each step's seconds since the photo
+// was opened and a screenshot go to studio_designer_artifacts/ in the build tree (figures.csv,
+// NN_step.png). Bad model files (empty, NaN, flat, over the triangle limit, absurd units,
+// taller than the room, a drop while the scene prepares) get a message naming the file or a
+// sane default, never a crash; the Properties dock labels every field, in German and French.
+#include "docks.h"
+#include "document.h"
+#include "i18n.h"
+#include "main_window.h"
+#include "model_import.h"
+#include "render_controller.h"
+#include "viewport.h"
+
+#include "inlay/engine/pipeline.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QDropEvent>
+#include <QFile>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMimeData>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QUrl>
+#include <QtTest>
+
+#include <cmath>
+
+#include "studio_test_support.h"
+#include "studio_workflow_steps.h"
+
+using namespace inlay;
+using namespace inlay::studio;
+using inlay::test::StepLog;
+using inlay::test::waitMs;
+
+namespace {
+
+QString sharedFile(const QString& relative) {
+  const QString shared = qEnvironmentVariable("INLAY_SHARED_DIR");
+  const QString path = shared + QLatin1Char('/') + relative;
+  return !shared.isEmpty() && QFile::exists(path) ? QFileInfo(path).absoluteFilePath() : QString();
+}
+
+bool writeText(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
+}
+
+// A small glTF 2.0 file (one embedded buffer): a box `w` x `h` x `d` metres, or in any unit the
+// caller means, standing on y = 0.
+QByteArray boxGltf(double w, double h, double d) {
+  QByteArray bin;
+  auto putF = [&](float v) { bin.append(reinterpret_cast<const char*>(&v), 4); };
+  auto putU = [&](quint16 v) { bin.append(reinterpret_cast<const char*>(&v), 2); };
+  for (int i = 0; i < 8; ++i) {
+    putF(float(i & 1 ? w / 2 : -w / 2));
+    putF(float(i & 2 ? h : 0));
+    putF(float(i & 4 ? d / 2 : -d / 2));
+  }
+  const quint16 faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
+                             2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
+  for (quint16 f : faces) putU(f);
+  const QByteArray json = QStringLiteral(
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
+"materials":[{"name":"oak","pbrMetallicRoughness":{"baseColorFactor":[0.55,0.35,0.2,1],"metallicFactor":0,"roughnessFactor":0.6}}],
+"buffers":[{"byteLength":%1,"uri":"data:application/octet-stream;base64,%2"}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96},{"buffer":0,"byteOffset":96,"byteLength":72}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3","min":[%3,0,%5],"max":[%4,%6,%7]},
+{"bufferView":1,"componentType":5123,"count":36,"type":"SCALAR"}]})")
+                               .arg(bin.size())
+                               .arg(QString::fromLatin1(bin.toBase64()))
+                               .arg(-w / 2).arg(w / 2).arg(-d / 2).arg(h).arg(d / 2)
+                               .toUtf8();
+  return json;
+}
+
+// A small bookshelf side as OBJ without a unit: a U-shaped (concave) front and back face, 8
+// corners each, joined by quads. 1 x 1.8 x 0.3 units.
+QByteArray concaveShelfObj() {
+  const double xy[8][2] = {{0, 0}, {1, 0}, {1, 1.8}, {0.8, 1.8}, {0.8, 0.2}, {0.2, 0.2}, {0.2, 1.8}, {0, 1.8}};
+  QByteArray obj = "# a U-shaped shelf with concave octagon faces\n";
+  for (double z : {0.0, 0.3})
+    for (const auto& p : xy) obj += QByteArray("v ") + QByteArray::number(p[0]) + ' ' + QByteArray::number(p[1]) + ' ' + QByteArray::number(z) + '\n';
+  obj += "f 8 7 6 5 4 3 2 1\nf 9 10 11 12 13 14 15 16\n";
+  for (int i = 0; i < 8; ++i) {
+    const int a = i + 1, b = (i + 1) % 8 + 1;
+    obj += "f " + QByteArray::number(a) + ' ' + QByteArray::number(b) + ' ' + QByteArray::number(b + 8) + ' ' +
+           QByteArray::number(a + 8) + '\n';
+  }
+  return obj;
+}
+
+// Drops the file URL on the viewport at `widgetPos`, as a file manager or the model library's
+// thumbnails do (text/uri-list): enter, move, drop.
+bool dropUrl(QWidget* on, const QString& path, QPoint widgetPos) {
+  QMimeData data;
+  data.setData(QStringLiteral("text/uri-list"), QUrl::fromLocalFile(path).toEncoded() + "\r\n");
+  QDragEnterEvent enter(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(on, &enter);
+  if (!enter.isAccepted()) return false;
+  QDragMoveEvent move(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(on, &move);
+  QDropEvent drop(QPointF(widgetPos), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(on, &drop);
+  QCoreApplication::processEvents();  // the viewport hands the drop on once it has returned
+  return drop.isAccepted();
+}
+
+bool waitNoPendingModels(MainWindow& w, int timeoutMs) {
+  QElapsedTimer t;
+  t.start();
+  while (w.pendingModelCount() > 0 && t.elapsed() < timeoutMs) QTest::qWait(20);
+  return w.pendingModelCount() == 0;
+}
+
+// Every key of every object, as the scene file writes them.
+std::string objectsJson(const Document* doc) {
+  SceneDoc d;
+  d.objects = doc->scene().objects;
+  return sceneToJson(d);
+}
+
+// The supporting surface's height under object `i` (0: the floor).
+double standsAtY(const Document* doc, int i) { return doc->prepared()->placements[size_t(i)].baseWorld.y(); }
+
+// A floor pixel near the bottom middle of the photo and a wall pixel above the floor line.
+std::optional<Vec2> floorPixel(const Document* doc, double fx) {
+  const Camera& cam = doc->prepared()->camera;
+  for (double fy = 0.95; fy > 0.4; fy -= 0.02) {
+    const Vec2 px(fx * cam.widthPx, fy * cam.heightPx);
+    const auto hit = doc->prepared()->geometry.intersect(cam.rayThroughPixel(px), true);
+    if (hit && std::abs(hit->pointWorld.y()) < 1e-6) return px;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+class StudioDesignerTest : public QObject {
+  Q_OBJECT
+
+ private Q_SLOTS:
+  void initTestCase();
+  void modelsInsertDropArrangeUndoRedo();
+  void badModelFilesGetMessagesOrSaneDefaults();
+  void dropOnATableTopStandsOnIt();
+  void propertiesLabelEveryFieldInEveryLanguage();
+
+ private:
+  QTemporaryDir dir_;
+};
+
+void StudioDesignerTest::initTestCase() {
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName(QStringLiteral("InlayTest"));
+  QCoreApplication::setApplicationName(QStringLiteral("studio_designer_test"));
+  QSettings().clear();
+  QVERIFY(dir_.isValid());
+}
+
+void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
+  const QString photo = sharedFile(QStringLiteral("york/P1020833.jpg"));
+  if (photo.isEmpty()) QSKIP("skipped: ../shared/york not present (needs ../shared/york/P1020833.jpg)");
+  // The glTF model: ../shared/models' spot when present, else a box this test writes.
+  QString gltf = sharedFile(QStringLiteral("models/spot_red_plastic.glb"));
+  if (gltf.isEmpty()) {
+    gltf = dir_.filePath(QStringLiteral("cabinet.gltf"));
+    QVERIFY(writeText(gltf, boxGltf(0.8, 1.1, 0.4)));
+  }
+  const QString shelf = dir_.filePath(QStringLiteral("shelf.obj"));
+  QVERIFY(writeText(shelf, concaveShelfObj()));
+
+  StepLog log(QStringLiteral("studio_designer_artifacts"));
+  MainWindow window;
+  QVERIFY(inlay::test::showForWorkflow(window));
+  Document* doc = window.document();
+  Viewport* view = window.viewport();
+  QStringList timings;
+  auto step = [&](const QString& name) { QVERIFY(log.step(&window, name)); };
+
+  // --- 1. Open the photo: the scene is estimated ---
+  log.restart();
+  QVERIFY(window.openPath(photo));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  step(QStringLiteral("photo_opened"));
+
+  // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
+  QVERIFY(window.insertModelAction()->isEnabled());
+  QCOMPARE(window.insertModelAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
+  QElapsedTimer clock;
+  clock.start();
+  QVERIFY(window.insertModelFile(gltf));
+  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
+  QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
+  timings << QStringLiteral("insert_gltf_ms,%1").arg(clock.elapsed());
+  QCOMPARE(doc->objectCount(), 1);
+  const ObjectKeys& inserted = doc->scene().objects[0];
+  QCOMPARE(QString::fromStdString(inserted.name), QFileInfo(gltf).completeBaseName());
+  QCOMPARE(doc->objectName(0), QFileInfo(gltf).completeBaseName());
+  const double ownHeight = meshHeightUnits(*doc->prepared()->renderScene.objects[0].meshObject);
+  QVERIFY2(std::abs(inserted.heightM - ownHeight) < 1e-6,
+           qPrintable(QStringLiteral("height %1, the file's %2").arg(inserted.heightM).arg(ownHeight)));
+  QVERIFY(std::abs(standsAtY(doc, 0)) < 1e-6);  // on the floor
+  QCOMPARE(window.propertiesDock()->nameBox()->text(), QFileInfo(gltf).completeBaseName());
+  QVERIFY(window.propertiesDock()->sizeLabel()->text().contains(QStringLiteral(" × ")));
+  // Open Recent keeps it, under Models.
+  QVERIFY(QSettings().value(QStringLiteral("recentModels")).toStringList().contains(QFileInfo(gltf).absoluteFilePath()));
+  {
+    const QList<QAction*> recent = window.recentMenu()->actions();
+    QVERIFY(std::any_of(recent.begin(), recent.end(), [&](QAction* a) {
+      return a->data().toString() == QFileInfo(gltf).absoluteFilePath() && a->isEnabled();
+    }));
+  }
+  step(QStringLiteral("gltf_inserted"));
+
+  // --- 3. Drop an OBJ (concave faces, no unit) on the floor: it stands where it was dropped ---
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->hasFrame(), waitMs(30000));
+  const std::optional<Vec2> floorAt = floorPixel(doc, 0.3);
+  QVERIFY(floorAt);
+  clock.restart();
+  QVERIFY(dropUrl(view, shelf, view->widgetFromImage(*floorAt).toPoint()));
+  QTRY_COMPARE_WITH_TIMEOUT(doc->objectCount(), 2, waitMs(30000));
+  timings << QStringLiteral("drop_obj_ms,%1").arg(clock.elapsed());
+  const ObjectKeys& dropped = doc->scene().objects[1];
+  QCOMPARE(QString::fromStdString(dropped.name), QStringLiteral("shelf"));
+  QVERIFY((dropped.basePx - *floorAt).norm() < 2.0);  // within the widget-to-image rounding
+  QVERIFY(std::abs(standsAtY(doc, 1)) < 1e-6);
+  QCOMPARE(dropped.heightM, defaultModelHeightM());  // OBJ states no unit
+  // Every triangle of the shelf's U faces lies inside the U (no fan across the opening).
+  {
+    const TriangleMesh& m = *doc->prepared()->renderScene.objects[1].meshObject;
+    QCOMPARE(int(m.triangles.size()), 2 * 6 + 8 * 2);
+    for (const auto& t : m.triangles) {
+      const Vec3f c = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.f;
+      QVERIFY2(!(c.x() > 0.2f && c.x() < 0.8f && c.y() > 0.2f), "a triangle across the shelf's opening");
+    }
+  }
+  step(QStringLiteral("obj_dropped_on_floor"));
+
+  // A drop on the back wall: the model lands on the floor straight below the cursor.
+  const std::array<Vec2, 4> wall = *doc->shownBackWallPx();
+  const Vec2 onWall = 0.5 * (wall[0] + wall[2]);
+  QVERIFY(dropUrl(view, shelf, view->widgetFromImage(onWall).toPoint()));
+  QTRY_COMPARE_WITH_TIMEOUT(doc->objectCount(), 3, waitMs(30000));
+  QVERIFY(std::abs(doc->scene().objects[2].basePx.x() - onWall.x()) < 2.0);
+  QVERIFY(doc->scene().objects[2].basePx.y() > onWall.y());
+  QVERIFY(std::abs(standsAtY(doc, 2)) < 1e-6);
+  step(QStringLiteral("obj_dropped_on_wall_lands_on_floor"));
+
+  // --- 4. Turn and scale the shelf in Properties (one undo step each) ---
+  doc->setSelectedObject(1);
+  const int beforeArrange = doc->undoStack()->count();
+  clock.restart();
+  window.propertiesDock()->yawBox()->setValue(35.0);
+  window.propertiesDock()->heightBox()->setValue(1.2);
+  timings << QStringLiteral("turn_and_scale_ms,%1").arg(clock.elapsed());
+  QCOMPARE(doc->scene().objects[1].yawDeg, 35.0);
+  QCOMPARE(doc->scene().objects[1].heightM, 1.2);
+  QCOMPARE(doc->undoStack()->count(), beforeArrange + 2);
+  const std::optional<Vec3> size = doc->objectSizeM(1);
+  QVERIFY(size);
+  QVERIFY(std::abs(size->y() - 1.2) < 1e-9 && std::abs(size->x() / size->y() - 1.0 / 1.8) < 1e-4);
+  QVERIFY(window.propertiesDock()->sizeLabel()->text().startsWith(QStringLiteral("0.67 × 0.20 × 1.20")));
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  step(QStringLiteral("turned_and_scaled"));
+
+  // --- 5. Duplicate (Ctrl+D), rename and hide: one undo step each ---
+  QCOMPARE(window.duplicateAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_D));
+  window.duplicateAction()->trigger();
+  QCOMPARE(doc->objectCount(), 4);
+  QCOMPARE(doc->selectedObject(), 3);
+  QCOMPARE(doc->objectName(3), QStringLiteral("shelf 2"));
+  QCOMPARE(doc->scene().objects[3].heightM, 1.2);
+  QCOMPARE(doc->scene().objects[3].yawDeg, 35.0);
+  QVERIFY((doc->scene().objects[3].basePx - doc->scene().objects[1].basePx).norm() > 5.0);  // beside it
+  QVERIFY(std::abs(standsAtY(doc, 3) - standsAtY(doc, 1)) < 0.02);
+  QVERIFY(doc->renameObject(3, QStringLiteral("bookshelf")));
+  QCOMPARE(doc->objectName(3), QStringLiteral("bookshelf"));
+  window.hideAction()->trigger();
+  QVERIFY(doc->scene().objects[3].hidden);
+  QVERIFY(!window.propertiesDock()->shownBox()->isChecked());
+  QCOMPARE(doc->undoStack()->count(), beforeArrange + 5);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  step(QStringLiteral("duplicated_renamed_hidden"));
+  window.hideAction()->trigger();  // shown again for the pictures
+  QVERIFY(!doc->scene().objects[3].hidden);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
+                           waitMs(60000));
+  step(QStringLiteral("arranged"));
+
+  // --- 6. Undo everything, then redo it all: the same objects, key for key ---
+  const std::string arranged = objectsJson(doc);
+  clock.restart();
+  int undone = 0;
+  while (doc->undoStack()->canUndo()) {
+    window.undoAction()->trigger();
+    ++undone;
+  }
+  timings << QStringLiteral("undo_all_ms,%1").arg(clock.elapsed());
+  QCOMPARE(doc->objectCount(), 0);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  step(QStringLiteral("all_undone"));
+  clock.restart();
+  for (int i = 0; i < undone; ++i) doc->undoStack()->redo();
+  timings << QStringLiteral("redo_all_ms,%1").arg(clock.elapsed());
+  QVERIFY(inlay::test::waitReady(doc, waitMs(180000)));
+  QCOMPARE(objectsJson(doc), arranged);
+  QCOMPARE(int(doc->prepared()->placements.size()), 4);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
+                           waitMs(60000));
+  step(QStringLiteral("all_redone"));
+
+  // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
+  doc->prepare();
+  QCOMPARE(doc->state(), Document::State::Preparing);
+  QVERIFY(dropUrl(view, shelf, view->widgetFromImage(*floorAt).toPoint()));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
+  QCOMPARE(doc->objectCount(), 5);
+  QVERIFY(doc->undoStack()->canUndo());
+  step(QStringLiteral("dropped_while_preparing"));
+
+  QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
+  qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
+  qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
+  qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
+}
+
+void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
+  auto write = [&](const QString& name, const QByteArray& bytes) {
+    const QString p = dir_.filePath(name);
+    return writeText(p, bytes) ? p : QString();
+  };
+  auto refusedNaming = [](const ModelLoadResult& r, const QString& file, const QString& what) {
+    if (r.model) return QStringLiteral("%1 was accepted").arg(file);
+    if (!r.error.contains(file) || !r.error.contains(what, Qt::CaseInsensitive))
+      return QStringLiteral("message '%1' does not name %2 and '%3'").arg(r.error, file, what);
+    return QString();
+  };
+  const double h = 0.75;
+  // Empty, NaN, flat, not a model, over the limit: refused with the file and the reason.
+  QString why = refusedNaming(loadModelForInsert(write(QStringLiteral("empty.obj"), QByteArray()), h),
+                              QStringLiteral("empty.obj"), QStringLiteral("empty"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  why = refusedNaming(loadModelForInsert(write(QStringLiteral("nan.obj"), "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"), h),
+                      QStringLiteral("nan.obj"), QStringLiteral("non-finite"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  why = refusedNaming(loadModelForInsert(write(QStringLiteral("rug.obj"), "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 2 3 4\n"), h),
+                      QStringLiteral("rug.obj"), QStringLiteral("flat"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  why = refusedNaming(loadModelForInsert(write(QStringLiteral("notes.txt"), "hello"), h),
+                      QStringLiteral("notes.txt"), QStringLiteral("not a model file"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  why = refusedNaming(loadModelForInsert(write(QStringLiteral("junk.fbx"), "no FBX in here"), h),
+                      QStringLiteral("junk.fbx"), QStringLiteral("import failed"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  // The triangle limit, stated in the message (a small limit stands in for 5 million).
+  ModelImportLimits tiny;
+  tiny.maxTriangles = 10;
+  const ModelLoadResult big = loadModelForInsert(write(QStringLiteral("shelf_big.obj"), concaveShelfObj()), h, tiny);
+  why = refusedNaming(big, QStringLiteral("shelf_big.obj"), QStringLiteral("10"));
+  QVERIFY2(why.isEmpty(), qPrintable(why));
+  QVERIFY2(big.error.contains(QStringLiteral("up to 10 triangles")), qPrintable(big.error));
+  QCOMPARE(ModelImportLimits{}.maxTriangles, size_t(5'000'000));
+
+  // Absurd units: a glTF box 1 km or 1 µm high gets the default height and a note.
+  for (const double metres : {1000.0, 1e-6}) {
+    const ModelLoadResult r = loadModelForInsert(write(QStringLiteral("absurd.gltf"), boxGltf(metres, metres, metres)), h);
+    QVERIFY2(r.model, qPrintable(r.error));
+    QCOMPARE(r.model->heightM, h);
+    QVERIFY(!r.model->ownSize);
+    QVERIFY(!r.model->notes.isEmpty() && r.model->notes.join(QString()).contains(QStringLiteral("absurd")));
+  }
+  // A plausible one keeps its own size; one without normals gets a note and flat shading.
+  const ModelLoadResult cabinet = loadModelForInsert(write(QStringLiteral("cabinet.gltf"), boxGltf(0.8, 1.1, 0.4)), h);
+  QVERIFY2(cabinet.model, qPrintable(cabinet.error));
+  QVERIFY(cabinet.model->ownSize);
+  QVERIFY(std::abs(cabinet.model->heightM - 1.1) < 1e-6);
+  QCOMPARE(cabinet.model->name, QStringLiteral("cabinet"));
+  const ModelLoadResult bare = loadModelForInsert(write(QStringLiteral("bare.obj"), concaveShelfObj()), h);
+  QVERIFY2(bare.model, qPrintable(bare.error));
+  QVERIFY(bare.model->notes.join(QString()).contains(QStringLiteral("no normals")));
+  // A missing MTL file (its textures with it): the model still comes in, with the default material.
+  const ModelLoadResult lost = loadModelForInsert(
+      write(QStringLiteral("lost.obj"), "mtllib nowhere.mtl\nusemtl wood\n" + concaveShelfObj()), h);
+  QVERIFY2(lost.model, qPrintable(lost.error));
+
+  // Through the window: a refusal is a message naming the file, and nothing changes.
+  const QString example = inlay::test::exampleScene();
+  if (example.isEmpty()) QSKIP("the bundled example is not installed");
+  auto window = inlay::test::openStudio(example);
+  QVERIFY(window);
+  QVERIFY(inlay::test::waitReady(window->document(), waitMs(120000)));
+  const int objects = window->document()->objectCount();
+  const int steps = window->document()->undoStack()->count();
+  QVERIFY(window->insertModelFile(dir_.filePath(QStringLiteral("nan.obj"))));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QVERIFY2(window->lastModelError().contains(QStringLiteral("nan.obj")), qPrintable(window->lastModelError()));
+  QVERIFY(!window->insertModelFile(dir_.filePath(QStringLiteral("notes.txt"))));
+  QVERIFY(window->lastModelError().contains(QStringLiteral("notes.txt")));
+  QCOMPARE(window->document()->objectCount(), objects);
+  QCOMPARE(window->document()->undoStack()->count(), steps);
+  // A plausible size the room cannot hold (15 m, in metres as glTF says): the default height.
+  const QString tower = write(QStringLiteral("tower.gltf"), boxGltf(1, 15, 1));
+  QVERIFY(window->document()->prepared()->box.ceilingM < 15);
+  QVERIFY(window->insertModelFile(tower));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QVERIFY2(window->lastModelError().isEmpty(), qPrintable(window->lastModelError()));
+  QCOMPARE(window->document()->objectCount(), objects + 1);
+  QCOMPARE(window->document()->scene().objects.back().heightM, defaultModelHeightM());
+  QCOMPARE(window->document()->undoStack()->count(), steps + 1);
+}
+
+void StudioDesignerTest::dropOnATableTopStandsOnIt() {
+  const QString example = inlay::test::exampleScene();
+  if (example.isEmpty()) QSKIP("the bundled example is not installed");
+  const QString shelf = dir_.filePath(QStringLiteral("small_shelf.obj"));
+  QVERIFY(writeText(shelf, concaveShelfObj()));
+  auto window = inlay::test::openStudio(example);
+  QVERIFY(window);
+  Document* doc = window->document();
+  QVERIFY(inlay::test::waitReady(doc, waitMs(120000)));
+  // A table top outlined on the example's floor (as the Table Top tool makes it).
+  QVERIFY(doc->addExtrusion({{60, 250}, {150, 250}, {160, 280}, {50, 280}}, {60, 330}));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(120000)), qPrintable(doc->prepareError()));
+  const int objects = doc->objectCount();
+  const Vec2 onTop(105, 265);
+  QVERIFY(dropUrl(window->viewport(), shelf, window->viewport()->widgetFromImage(onTop).toPoint()));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QVERIFY2(window->lastModelError().isEmpty(), qPrintable(window->lastModelError()));
+  QCOMPARE(doc->objectCount(), objects + 1);
+  const int i = objects;
+  QVERIFY((doc->scene().objects[size_t(i)].basePx - onTop).norm() < 2.0);
+  // On the top, above the floor, on the surface the drop pointed at.
+  const Placement& pl = doc->prepared()->placements[size_t(i)];
+  QVERIFY2(pl.baseWorld.y() > 0.05, qPrintable(QString::number(pl.baseWorld.y())));
+  const auto& surfaces = doc->prepared()->geometry.surfaces;
+  QVERIFY(pl.supportSurfaceId >= 0 && size_t(pl.supportSurfaceId) < surfaces.size());
+  QVERIFY2(QString::fromStdString(surfaces[size_t(pl.supportSurfaceId)].name).endsWith(QStringLiteral("_top")),
+           surfaces[size_t(pl.supportSurfaceId)].name.c_str());
+  // Its duplicate stays on the table top (not on the floor beside it), or on the same spot.
+  QVERIFY(doc->duplicateObject(i));
+  QVERIFY(std::abs(doc->prepared()->placements[size_t(i + 1)].baseWorld.y() - pl.baseWorld.y()) < 0.02);
+}
+
+void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
+  MainWindow window;
+  window.setInteractive(false);
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  PropertiesDock* dock = window.propertiesDock();
+  auto* form = qobject_cast<QFormLayout*>(dock->widget()->layout());
+  QVERIFY(form);
+  auto labels = [&] {
+    QStringList out;
+    for (int row = 0; row < form->rowCount(); ++row) {
+      if (form->itemAt(row, QFormLayout::SpanningRole)) continue;  // a section title
+      QLayoutItem* field = form->itemAt(row, QFormLayout::FieldRole);
+      if (!field || !field->widget()) continue;
+      auto* label = qobject_cast<QLabel*>(form->labelForField(field->widget()));
+      out << (label ? label->text() : QString());
+    }
+    return out;
+  };
+  const QStringList english = labels();
+  QVERIFY(english.size() >= 12);
+  for (const QString& l : english) QVERIFY2(!l.isEmpty(), qPrintable(QStringLiteral("a field without a label: ") + english.join(QLatin1Char('|'))));
+  QVERIFY(english.contains(QStringLiteral("Size (W × D × H):")));
+  for (const QString& lang : {QStringLiteral("de"), QStringLiteral("fr")}) {
+    window.setLanguage(lang);
+    QCoreApplication::processEvents();
+    const QStringList translated = labels();
+    QCOMPARE(translated.size(), english.size());
+    for (int i = 0; i < english.size(); ++i) {
+      QVERIFY2(!translated[i].isEmpty(), qPrintable(lang));
+      if (english[i] != QLatin1String("Name:") && english[i] != QLatin1String("Material:"))  // German too
+        QVERIFY2(translated[i] != english[i], qPrintable(lang + QStringLiteral(": ") + english[i]));
+    }
+    QVERIFY(window.insertModelAction()->text() != QStringLiteral("Insert &Model…"));
+  }
+  window.setLanguage(QStringLiteral("en"));
+  QSettings().remove(QStringLiteral("language"));
+  removeTranslators();
+}
+
+QTEST_MAIN(StudioDesignerTest)
+#include "studio_designer_test.moc"
