@@ -112,6 +112,7 @@ struct Args {
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, cue = "symmetry";
   std::optional<double> prior;
+  std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
@@ -150,7 +151,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
         s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
         s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo" || s == "--cue" || s == "--prior") {
+        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -165,6 +166,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--replace-lights") a.replaceLights = *v;
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
+      else if (s == "--evaluate-at") a.evaluateAt = *v;
       else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -539,6 +541,12 @@ int commandResponse(const std::string& input, const Args& a) {
   else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
   else return usageError("--cue " + a.cue + ": expected 'symmetry', 'colour' or 'both'");
   if (a.prior) o.priorWeight = *a.prior;
+  if (!a.evaluateAt.empty()) {
+    ResponseParams q;
+    if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
+      return usageError("--evaluate-at: expected POWER,TOE,SHOULDER");
+    o.evaluateAt = q;
+  }
   ResponseKeys keys;
   std::string photoPath = input;
   std::string ext = std::filesystem::path(input).extension().string();

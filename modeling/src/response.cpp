@@ -256,7 +256,7 @@ double profileAt(const std::array<double, kBins>& alpha, const std::array<int, k
 
 struct EdgeResiduals {
   double symmetry = 0;  // mean (alpha(d0 + t) + alpha(d0 - t) - 1)^2
-  double colour = 0;    // mean squared distance from the colour line, in units of the step
+  double colour = 0;    // mean squared distance from the colour line, in codes of noise
   bool valid = false;
 };
 
@@ -284,7 +284,17 @@ EdgeResiduals residualsOf(const Edge& edge, const std::array<double, 256>& g) {
     const double a = v.dot(D) / dd;
     const int bin = std::clamp(int((e.d + kReachPx) / kBinPx), 0, kBins - 1);
     alpha[size_t(bin)] += a, ++count[size_t(bin)];
-    if (std::fabs(e.d) < kSidePx) colour += (v - a * D).squaredNorm() / dd, ++middle;
+    if (std::fabs(e.d) < kSidePx) {
+      // The distance from the colour line against what one code of noise moves the pixel
+      // (a curve steep where the codes are noisy must not look worse than it is).
+      double noise2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        const int k = e.code[c];
+        const double slope = 0.5 * (g[size_t(std::min(k + 1, 255))] - g[size_t(std::max(k - 1, 0))]);
+        noise2 += slope * slope;
+      }
+      colour += (v - a * D).squaredNorm() / std::max(noise2, 1e-30), ++middle;
+    }
   }
   for (int i = 0; i < kBins; ++i)
     if (count[size_t(i)]) alpha[size_t(i)] /= count[size_t(i)];
@@ -302,12 +312,27 @@ EdgeResiduals residualsOf(const Edge& edge, const std::array<double, 256>& g) {
   }
   if (std::fabs(best) > kSidePx) return r;
   d0 = best;
-  static constexpr double kOffsets[] = {0.25, 0.5, 0.75, 1.0, 1.25, 1.5};
-  for (double t : kOffsets) {
-    const double s = profileAt(alpha, count, d0 + t) + profileAt(alpha, count, d0 - t) - 1;
-    r.symmetry += s * s;
+  // The blur of a step is point-symmetric about its middle: its line spread (the profile's
+  // derivative) within kSidePx of the middle has its mean where the profile crosses 1/2. The
+  // gap, in units of the spread's width, is scale-free: a curve cannot shrink it by making the
+  // edge look sharper.
+  double w = 0, m1 = 0, m2 = 0, prevAlpha = 0, prevPos = 0;
+  bool first = true;
+  for (int i = 0; i < kBins; ++i) {
+    if (!count[size_t(i)]) continue;
+    const double d = -kReachPx + (i + 0.5) * kBinPx;
+    if (std::fabs(d - d0) > kSidePx + kBinPx) continue;
+    if (!first) {
+      const double step = alpha[size_t(i)] - prevAlpha, mid = 0.5 * (d + prevPos);
+      w += step, m1 += step * mid, m2 += step * mid * mid;
+    }
+    prevAlpha = alpha[size_t(i)], prevPos = d, first = false;
   }
-  r.symmetry /= std::size(kOffsets);
+  if (!(w > 0.5)) return r;
+  const double mean = m1 / w, var = m2 / w - mean * mean;
+  if (!(var > 1e-4)) return r;
+  const double skew = (mean - d0) / std::sqrt(var);
+  r.symmetry = skew * skew;
   r.colour = colour / std::max(1, middle);
   r.valid = true;
   return r;
@@ -335,11 +360,13 @@ struct Fit {
       const EdgeResiduals r = residualsOf(e, g);
       double v = 1.0;  // an edge whose middle got lost counts as a bad one
       if (r.valid) {
-        const double raw = options.cue == ResponseEstimateOptions::Cue::Symmetry ? r.symmetry
-                           : options.cue == ResponseEstimateOptions::Cue::Colour ? r.colour
-                                                                                 : r.symmetry + r.colour;
-        constexpr double kScale = 0.01;  // residuals beyond ~0.1 per offset count less (outliers)
-        v = raw / (1 + raw / kScale) / kScale;
+        // Each cue's residual through a Cauchy-like cap at its scale (a skew of 0.2; two codes
+        // of noise off the colour line), so a few odd edges cannot dominate.
+        auto robust = [](double raw, double scale) { return raw / (1 + raw / scale) / scale; };
+        using Cue = ResponseEstimateOptions::Cue;
+        v = options.cue == Cue::Symmetry ? robust(r.symmetry, 0.04)
+            : options.cue == Cue::Colour ? robust(r.colour, 4.0)
+                                         : 0.5 * (robust(r.symmetry, 0.04) + robust(r.colour, 4.0));
       }
       sum += v, ++n;
     }
@@ -461,8 +488,16 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   if (hi - lo < 48)
     return undetermined("the edges cover only codes " + std::to_string(lo) + " to " + std::to_string(hi));
 
-  // A coarse grid, then Nelder-Mead from its best point.
   Fit fit{&edges, options};
+  out.srgbObjective = fit.data(ResponseParams{});
+  if (options.evaluateAt) {
+    out.response = CameraResponse::toeShoulder(*options.evaluateAt);
+    out.objective = fit.data(out.response.params());
+    out.determined = true;
+    out.seconds = seconds();
+    return out;
+  }
+  // A coarse grid, then Nelder-Mead from its best point.
   double best = std::numeric_limits<double>::infinity();
   Vec3 bestX(1, 0, 0);
   auto improved = [&](double v) { out.history.emplace_back(seconds(), v); };
@@ -480,7 +515,6 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   const ResponseParams q = Fit::paramsOf(bestX.cwiseMax(Vec3(ResponseParams::kMinPower, 0, 0)));
   out.response = CameraResponse::toeShoulder(q);
   out.objective = fit.data(q);
-  out.srgbObjective = fit.data(ResponseParams{});
   out.determined = true;
   out.seconds = seconds();
   return out;

@@ -26,6 +26,7 @@
 #include "inlay/modeling/image.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,8 @@ struct ResponseEstimateOptions {
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
+  // Diagnostics: skip the search and report the objective at these parameters.
+  std::optional<ResponseParams> evaluateAt;
 };
 
 struct ResponseEstimate {
