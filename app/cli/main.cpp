@@ -110,7 +110,7 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo, cue = "symmetry";
+  std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour";
   std::optional<double> prior;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;

@@ -645,7 +645,10 @@ bool MainWindow::exportComposite(const QString& path) {
     showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
     return false;
   }
-  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), *linear);
+  SaveOptions save;  // 8-bit files through the photo's camera response (its codes kept)
+  const PreparedScene* prepared = document_->prepared();
+  if (prepared && prepared->photo.wasSrgbEncoded) save.response = &prepared->response;
+  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), *linear, save);
   if (!saved.ok()) {
     showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
     return false;

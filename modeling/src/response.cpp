@@ -142,7 +142,6 @@ std::vector<unsigned char> srgbCodesOf(const ImageF& img) {
 }
 
 void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& response) {
-  if (response.family() == ResponseFamily::Srgb) return;  // read as sRGB already
   const auto& table = response.table8();
   for (float& v : img.data) {
     if (bitsPerChannel <= 8) {
@@ -444,8 +443,8 @@ std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
     clipped += std::max({c[0], c[1], c[2]}) >= 254 || std::min({c[0], c[1], c[2]}) <= 1;
   }
   const double sd = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
-  if (sd < 2) return "the photo is nearly one flat colour";
   if (double(clipped) > 0.5 * n) return "most of the photo is clipped to black or white";
+  if (sd < 2) return "the photo is nearly one flat colour";
   const size_t populated = size_t(std::count_if(hist.begin(), hist.end(), [&](size_t h) { return h * 1000 >= n; }));
   if (populated < 8) return "the photo is nearly binary (" + std::to_string(populated) + " grey levels in use)";
   return {};

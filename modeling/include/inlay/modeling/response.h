@@ -101,7 +101,7 @@ struct ResponseEstimateOptions {
   //     RGB, which a wrong curve bends (Lin, Gu, Yamazaki, Shum 2004; needs coloured edges);
   //   Both: the sum of the two.
   enum class Cue { Symmetry, Colour, Both };
-  Cue cue = Cue::Symmetry;
+  Cue cue = Cue::Colour;  // chosen by bench_response.py (docs/camera-response.md)
   // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
   // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
   double priorWeight = 0.02;
