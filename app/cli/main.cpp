@@ -582,7 +582,7 @@ int commandResponse(const std::string& input, const Args& a) {
     j["estimate"] = {{"determined", e.determined}, {"cue", a.cue}, {"prior_weight", o.priorWeight},
                      {"edges_used", e.edgesUsed}, {"segments_found", e.segmentsFound},
                      {"objective", e.objective}, {"srgb_objective", e.srgbObjective},
-                     {"seconds", e.seconds}, {"history", history}};
+                     {"seconds", e.seconds}, {"cpu_seconds", e.cpuSeconds}, {"history", history}};
   }
   if (auto st = writeFileAtomically(a.output, j.dump(1) + "\n"); !st) return inputError(st.error());
   if (!a.quiet) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -428,6 +429,12 @@ Vec3 nelderMead(const Fit& f, Vec3 start, double& value, const CancelToken* canc
   return p[b];
 }
 
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 // Why the photo cannot determine a curve, or empty: nearly flat, nearly binary, mostly clipped.
 std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
   const size_t n = codes.size() / 3;
@@ -455,10 +462,12 @@ std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
 ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const double cpu0 = threadCpuSeconds();
   ResponseEstimate out;
   auto undetermined = [&](const std::string& why) {
     out.response = CameraResponse::srgb();
     out.determined = false;
+    out.cpuSeconds = threadCpuSeconds() - cpu0;
     out.warnings.push_back("camera response: " + why + "; using sRGB (give camera.response to choose)");
     out.seconds = seconds();
     return out;
@@ -516,6 +525,7 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   out.objective = fit.data(q);
   out.determined = true;
   out.seconds = seconds();
+  out.cpuSeconds = threadCpuSeconds() - cpu0;
   return out;
 }
 

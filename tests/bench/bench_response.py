@@ -14,6 +14,10 @@ the best scale (exposure and white balance are not identifiable from one photo),
 relative to the true values' RMS, over the codes the photo uses (weighted by its histogram of
 all three channels, clipped code 255 left out).
 
+--harness N (instead of the curves): harness.py's object RMSE of the first N half-B variants
+rendered (--seconds S, default 20) with camera.response "srgb", "auto" and the true curve's
+nearest toe_shoulder member, to OUT/response_harness.csv.
+
 The setting is chosen on half A (odd rooms t01, t03, ... t13) by the median curve error and
 reported on half B (even rooms), so no setting is tuned to the rooms it is judged on. Fit time
 is inlay-cli's own measurement of the estimate (seconds in RESPONSE.json).
@@ -24,7 +28,8 @@ OUT/response.png (curve error against fit time per setting and half, and the cho
 setting's curves on B).
 
 usage: bench_response.py INLAY_CLI [--out DIR] [--seeds 1,2,3] [--cues symmetry,colour,both]
-                         [--priors 0.02,0.2,2] [--rooms t01,t02]
+                         [--priors 0.02,0.2,2] [--settings colour@0.2,symmetry@0.02] [--rooms t01,t02]
+                         [--harness N --seconds S]
 """
 import json, os, statistics, subprocess, sys
 
@@ -71,6 +76,67 @@ def curve_error(table, cam, hist):
     e = np.asarray(table, np.float64)[1:255]
     s = np.sum(w * e * t) / max(np.sum(w * e * e), 1e-30)
     return float(np.sqrt(np.sum(w * (s * e - t) ** 2) / np.sum(w * t * t)))
+
+
+def family_inverse(codes, p, t, s):
+    """The toe_shoulder family's decode (response.h), for fitting it to a true curve."""
+    y = np.clip(codes / 255.0, 0, 1)
+    u = np.where(y <= 0.04045, y / 12.92, ((y + 0.055) / 1.055) ** 2.4)
+    u = u / (1 + s - s * u)
+    u = (u + np.sqrt(u * u + 4 * (1 + t) * u * t)) / (2 * (1 + t))
+    return u ** (1 / p)
+
+
+def true_family_params(cam):
+    """The toe_shoulder parameters nearest the true curve (codes 1..250, best scale): a grid."""
+    codes = np.arange(1, 251).astype(np.float64)
+    truth = true_inverse(cam, codes)
+    best = (1e9, (1.0, 0.0, 0.0))
+    for p in np.arange(0.4, 2.5, 0.02):
+        for t in (0, 0.02, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.7, 1.0, 1.5, 2.0):
+            for s in (0, 0.1, 0.3, 1, 3, 10, 30, 100, 300, 1000):
+                e = family_inverse(codes, p, t, s)
+                k = np.dot(e, truth) / np.dot(e, e)
+                err = np.sqrt(np.mean((k * e - truth) ** 2))
+                if err < best[0]:
+                    best = (err, (float(p), float(t), float(s)))
+    return best[1]
+
+
+def harness_runs(cli, variants, count, seconds, out):
+    """Object RMSE by harness.py with camera.response srgb, auto and the true curve's nearest
+    family member, on the first `count` half-B variants (random cameras only)."""
+    harness = os.path.join(benchlib.shared_dir(), "tools", "harness.py")
+    rows = []
+    picked = [v for v in variants if v[1] != "plain" and int(v[0][1:]) % 2 == 0][:count]
+    for room, seed, d in picked:
+        cam = json.load(open(os.path.join(d, "camera_variant.json")))
+        p, t, s = true_family_params(cam)
+        for mode, response in (("srgb", "srgb"), ("auto", "auto"),
+                               ("true_curve", {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s})):
+            work = os.path.join(out, "harness", "%s-s%s-%s" % (room, seed, mode))
+            os.makedirs(work, exist_ok=True)
+            sf = os.path.join(work, "scene.json")
+            subprocess.run([sys.executable, harness, "scene", d, sf, "--seconds", str(seconds)], check=True)
+            j = json.load(open(sf))
+            j["camera"]["response"] = response
+            json.dump(j, open(sf, "w"), indent=1)
+            comp = os.path.join(work, "composite.png")
+            r = subprocess.run([cli, "render", sf, "-o", comp], capture_output=True, text=True)
+            if r.returncode != 0:
+                sys.stderr.write(r.stderr[-400:])
+                continue
+            score = json.loads(subprocess.run([sys.executable, harness, "score", d, comp], capture_output=True,
+                                              text=True, check=True).stdout)
+            line = [l for l in r.stderr.splitlines() if "camera response" in l]
+            rows.append({"room": room, "seed": seed, "curve": cam["curve"], "response": mode,
+                         "used": line[0].split("camera response: ")[1] if line else "",
+                         "object_rmse": round(score["object_rmse"], 4),
+                         "object_rmse_adjusted": round(score["object_rmse_adjusted"], 4),
+                         "around_rmse": round(score["around_rmse"], 4),
+                         "around_rmse_do_nothing": round(score["around_rmse_do_nothing"], 4)})
+            print(json.dumps(rows[-1]), flush=True)
+    benchlib.write_csv(os.path.join(out, "response_harness.csv"), rows)
 
 
 def make_variants(train, rooms, seeds, vdir):
@@ -161,7 +227,12 @@ def main():
     cues = opt("--cues", "symmetry,colour,both").split(",")
     priors = [float(p) for p in opt("--priors", "0.02,0.2,2").split(",")]
     settings = [("srgb", 0.0)] + [(c, p) for c in cues for p in priors]
+    if opt("--settings", ""):  # explicit CUE@PRIOR list instead of the product
+        settings = [("srgb", 0.0)] + [(x.split("@")[0], float(x.split("@")[1])) for x in opt("--settings", "").split(",")]
     variants = make_variants(train, rooms, seeds, os.path.join(out, "variants"))
+    if int(opt("--harness", "0")) > 0:
+        harness_runs(cli, variants, int(opt("--harness", "0")), float(opt("--seconds", "20")), out)
+        return 0
     rows = []
     for room, seed, d in variants:
         cam = json.load(open(os.path.join(d, "camera_variant.json")))
@@ -176,6 +247,8 @@ def main():
             err = curve_error(table, cam, hist)
             est = j.get("estimate", {})
             rows.append({"room": room, "seed": seed, "half": half, "curve": cam["curve"], "setting": name,
+                         "vignetting": cam.get("vignetting", 0.0), "jpeg_quality": cam.get("jpeg_quality", 0),
+                         "cpu_seconds": round(est.get("cpu_seconds", 0.0), 4),
                          "curve_error": round(err, 5), "seconds": round(sec, 4),
                          "determined": est.get("determined", cue == "srgb"),
                          "edges": est.get("edges_used", 0), "family": j.get("description", "srgb"),

@@ -122,6 +122,7 @@ struct ResponseEstimate {
   double objective = 0;            // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;        // the same for plain sRGB
   double seconds = 0;
+  double cpuSeconds = 0;           // this thread's CPU time (what an idle core would take)
   // The fit's objective (with prior) against seconds: one row per improvement.
   std::vector<std::pair<double, double>> history;
 };
