@@ -185,6 +185,9 @@ TEST(ResponseEstimate, RecoversKnownCurvesOfSyntheticPhotos) {
       const CameraResponse truth = CameraResponse::toeShoulder(truths[i]);
       ResponseEstimateOptions o;
       o.cue = cue;
+      // A light pull toward sRGB: the default's (chosen on the rooms, whose edges hardly
+      // determine the curve) would hold these clean edges back.
+      o.priorWeight = 0.02;
       const ResponseEstimate e = estimateResponse(syntheticPhoto(truth, 0.002, uint32_t(11 + i)), o);
       expectSane(e);
       ASSERT_TRUE(e.determined) << (e.warnings.empty() ? "" : e.warnings[0]);

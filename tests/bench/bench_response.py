@@ -16,7 +16,8 @@ all three channels, clipped code 255 left out).
 
 --harness N (instead of the curves): harness.py's object RMSE of the first N half-B variants
 rendered (--seconds S, default 20) with camera.response "srgb", "auto" and the true curve's
-nearest toe_shoulder member, to OUT/response_harness.csv.
+nearest toe_shoulder member, and the last again on the same camera with its vignetting off
+(does vignetting matter once the curve is right?), to OUT/response_harness.csv.
 
 The setting is chosen on half A (odd rooms t01, t03, ... t13) by the median curve error and
 reported on half B (even rooms), so no setting is tuned to the rooms it is judged on. Fit time
@@ -109,11 +110,14 @@ def harness_runs(cli, variants, count, seconds, out):
     harness = os.path.join(benchlib.shared_dir(), "tools", "harness.py")
     rows = []
     picked = [v for v in variants if v[1] != "plain" and int(v[0][1:]) % 2 == 0][:count]
+    train = os.path.join(benchlib.shared_dir(), "scenes-train")
     for room, seed, d in picked:
         cam = json.load(open(os.path.join(d, "camera_variant.json")))
         p, t, s = true_family_params(cam)
-        for mode, response in (("srgb", "srgb"), ("auto", "auto"),
-                               ("true_curve", {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s})):
+        true_curve = {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s}
+        flat = without_vignetting(os.path.join(train, room), d, 1000 * int(seed) + int(room[1:]), d + "-novignette")
+        for mode, response, d in (("srgb", "srgb", d), ("auto", "auto", d), ("true_curve", true_curve, d),
+                                  ("true_curve_no_vignetting", true_curve, flat)):
             work = os.path.join(out, "harness", "%s-s%s-%s" % (room, seed, mode))
             os.makedirs(work, exist_ok=True)
             sf = os.path.join(work, "scene.json")
@@ -137,6 +141,36 @@ def harness_runs(cli, variants, count, seconds, out):
                          "around_rmse_do_nothing": round(score["around_rmse_do_nothing"], 4)})
             print(json.dumps(rows[-1]), flush=True)
     benchlib.write_csv(os.path.join(out, "response_harness.csv"), rows)
+
+
+def without_vignetting(room_dir, variant_dir, seed, out):
+    """The variant's camera (same seed: same curve, noise field, JPEG) with its vignetting off."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(
+        "camera_variants", os.path.join(benchlib.shared_dir(), "tools", "camera_variants.py"))
+    cv = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(cv)
+    rng = np.random.default_rng(seed)
+    cam = cv.draw_camera(rng)
+    cam["vignetting"] = 0.0
+    truth = json.load(open(os.path.join(room_dir, "truth.json")))
+    photo = cv.read_exr(os.path.join(room_dir, "photo_linear.exr"))
+    with_object = cv.read_exr(os.path.join(room_dir, "truth_linear.exr"))
+    noise = rng.standard_normal(photo.shape)
+    os.makedirs(out, exist_ok=True)
+    for name in os.listdir(variant_dir):
+        if name not in ("photo.png", "photo.jpg", "truth.png", "camera_variant.json") and \
+                not os.path.lexists(os.path.join(out, name)):
+            os.symlink(os.path.realpath(os.path.join(variant_dir, name)), os.path.join(out, name))
+    for image, stem in ((photo, "photo"), (with_object, "truth")):
+        pixels = cv.encode(image, truth["exposure"]["scale"], cam, noise, np.ones(photo.shape[:2]))
+        bgr = np.ascontiguousarray(pixels[:, :, ::-1])
+        if cam["jpeg_quality"]:
+            bgr = cv2.imdecode(cv2.imencode(".jpg", bgr, [cv2.IMWRITE_JPEG_QUALITY, cam["jpeg_quality"]])[1],
+                               cv2.IMREAD_COLOR)
+        cv2.imwrite(os.path.join(out, stem + ".png"), bgr)
+    json.dump(cam, open(os.path.join(out, "camera_variant.json"), "w"), indent=1)
+    return out
 
 
 def make_variants(train, rooms, seeds, vdir):

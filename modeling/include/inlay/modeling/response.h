@@ -104,7 +104,7 @@ struct ResponseEstimateOptions {
   Cue cue = Cue::Colour;  // chosen by bench_response.py (docs/camera-response.md)
   // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
   // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
-  double priorWeight = 0.02;
+  double priorWeight = 2.0;  // chosen on half A by bench_response.py
   int minEdges = 8;             // fewer clean edges: sRGB with a warning
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
