@@ -111,7 +111,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour";
-  std::optional<double> prior;
+  std::optional<double> prior, minImprovement;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
@@ -151,7 +151,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
         s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
         s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at") {
+        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -167,6 +167,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
+      else if (s == "--min-improvement") {
+        a.minImprovement = parseNumber<double>(*v);
+        if (!a.minImprovement || *a.minImprovement >= 1) return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
+      }
       else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -541,6 +545,7 @@ int commandResponse(const std::string& input, const Args& a) {
   else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
   else return usageError("--cue " + a.cue + ": expected 'symmetry', 'colour' or 'both'");
   if (a.prior) o.priorWeight = *a.prior;
+  if (a.minImprovement) o.minImprovement = *a.minImprovement;
   if (!a.evaluateAt.empty()) {
     ResponseParams q;
     if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
@@ -579,7 +584,7 @@ int commandResponse(const std::string& input, const Args& a) {
     const ResponseEstimate& e = *c.estimate;
     json history = json::array();
     for (const auto& [sec, obj] : e.history) history.push_back({sec, obj});
-    j["estimate"] = {{"determined", e.determined}, {"cue", a.cue}, {"prior_weight", o.priorWeight},
+    j["estimate"] = {{"determined", e.determined}, {"decision", e.decision}, {"cue", a.cue}, {"prior_weight", o.priorWeight},
                      {"edges_used", e.edgesUsed}, {"segments_found", e.segmentsFound},
                      {"objective", e.objective}, {"srgb_objective", e.srgbObjective},
                      {"seconds", e.seconds}, {"cpu_seconds", e.cpuSeconds}, {"history", history}};

@@ -2,6 +2,7 @@
 
 #include "autosave.h"
 #include "docks.h"
+#include "response_dock.h"
 #include "i18n.h"
 #include "document.h"
 #include "render_controller.h"
@@ -102,6 +103,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   addDockWidget(Qt::LeftDockWidgetArea, propertiesDock_);
   layersDock_ = new LayersDock(viewport_, this);
   addDockWidget(Qt::RightDockWidgetArea, layersDock_);
+  responseDock_ = new ResponseDock(document_, this);
+  addDockWidget(Qt::RightDockWidgetArea, responseDock_);
   autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);
@@ -308,6 +311,7 @@ void MainWindow::createMenus() {
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
   view->addAction(layersDock_->toggleViewAction());
+  view->addAction(responseDock_->toggleViewAction());
   view->addSeparator();
   languageMenu_ = view->addMenu(QString());
   QMenu* language = languageMenu_;

@@ -466,6 +466,7 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   ResponseEstimate out;
   auto undetermined = [&](const std::string& why) {
     out.response = CameraResponse::srgb();
+    out.decision = why;
     out.determined = false;
     out.cpuSeconds = threadCpuSeconds() - cpu0;
     out.warnings.push_back("camera response: " + why + "; using sRGB (give camera.response to choose)");
@@ -524,6 +525,15 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   out.response = CameraResponse::toeShoulder(q);
   out.objective = fit.data(q);
   out.determined = true;
+  out.decision = "fitted";
+  if (!(out.objective <= (1 - options.minImprovement) * out.srgbObjective)) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "kept sRGB: the fitted %s lowers the edge residual only from %.4f to %.4f",
+                  out.response.describe().c_str(), out.srgbObjective, out.objective);
+    out.decision = buf;
+    out.response = CameraResponse::srgb();
+    out.objective = out.srgbObjective;
+  }
   out.seconds = seconds();
   out.cpuSeconds = threadCpuSeconds() - cpu0;
   return out;

@@ -106,6 +106,9 @@ struct ResponseEstimateOptions {
   // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
   double priorWeight = 2.0;  // chosen on half A by bench_response.py
   int minEdges = 8;             // fewer clean edges: sRGB with a warning
+  // The fitted curve is kept only when it lowers the edges' residual by at least this fraction
+  // of sRGB's; otherwise sRGB (the edges show no curve clearly different from it).
+  double minImprovement = 0.1;
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
@@ -121,6 +124,7 @@ struct ResponseEstimate {
   int segmentsFound = 0;
   double objective = 0;            // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;        // the same for plain sRGB
+  std::string decision;            // why this curve: "fitted", or why sRGB was kept
   double seconds = 0;
   double cpuSeconds = 0;           // this thread's CPU time (what an idle core would take)
   // The fit's objective (with prior) against seconds: one row per improvement.
