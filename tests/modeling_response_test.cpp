@@ -188,6 +188,7 @@ TEST(ResponseEstimate, RecoversKnownCurvesOfSyntheticPhotos) {
       // A light pull toward sRGB: the default's (chosen on the rooms, whose edges hardly
       // determine the curve) would hold these clean edges back.
       o.priorWeight = 0.02;
+      o.minImprovement = 0;  // and no acceptance margin: this tests the cue itself
       const ResponseEstimate e = estimateResponse(syntheticPhoto(truth, 0.002, uint32_t(11 + i)), o);
       expectSane(e);
       ASSERT_TRUE(e.determined) << (e.warnings.empty() ? "" : e.warnings[0]);
