@@ -46,6 +46,33 @@ def main():
     r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
     check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
 
+    # `response`: the camera response of a photo or scene, and camera.response refused by key.
+    out = os.path.join(tmp, "response.json")
+    r = run(cli, "response", photo, "-o", out, "--quiet")
+    ok = r.returncode == 0 and os.path.isfile(out)
+    check("response of a photo", ok, r.stderr)
+    if ok:
+        j = json.load(open(out))
+        t = j["table"]
+        check("response table", len(t) == 256 and t[0] == 0 and t[255] == 1 and all(a < b for a, b in zip(t, t[1:])),
+              str(t[:4]))
+        check("response estimated", j["source"] == "estimated" and "estimate" in j, json.dumps(j)[:300])
+    fixed = scene(lambda s: s.setdefault("camera", {}).update(response={"family": "toe_shoulder", "power": 0.7}),
+                  "response_fixed")
+    r = run(cli, "response", fixed, "-o", out, "--quiet")
+    check("response from camera.response", r.returncode == 0 and json.load(open(out))["parameters"]["power"] == 0.7,
+          r.stderr)
+    for bad, key in (("gamma", "camera.response"), ({"family": "toe_shoulder", "toe": -1}, "camera.response.toe")):
+        p = scene(lambda s: s.setdefault("camera", {}).update(response=bad), "response_bad")
+        r = run(cli, "response", p, "-o", out)
+        check("bad camera.response " + json.dumps(bad), r.returncode == 2 and key in r.stderr, r.stderr)
+        r = run(cli, "render", p, "-o", os.path.join(tmp, "never.png"))
+        check("render refuses bad camera.response", r.returncode == 2 and key in r.stderr, r.stderr)
+    r = run(cli, "response", photo)
+    check("response needs -o", r.returncode == 2 and "-o" in r.stderr, r.stderr)
+    r = run(cli, "response", photo, "-o", out, "--cue", "noise")
+    check("response bad --cue", r.returncode == 2 and "--cue" in r.stderr, r.stderr)
+
     # The README's first command: `demo` renders the bundled example wherever it is run from.
     demo = os.path.join(tmp, "example.png")
     r = subprocess.run([cli, "demo", "-o", demo, "--spp", "4", "--quiet"], capture_output=True, text=True,

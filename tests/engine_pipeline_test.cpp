@@ -5,6 +5,7 @@
 #include "inlay/engine/pipeline.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/path_tracer.h"
+#include "inlay/modeling/image_io.h"
 #include "test_support.h"
 
 #include <cmath>
@@ -43,13 +44,51 @@ RenderFrame renderFrame(const PreparedScene& ps, int spp) {
 TEST(Engine, NoObjectGivesThePhotoBitForBit) {
   SceneDoc doc = exampleDoc();
   doc.objects.clear();
+  // A camera response other than sRGB: the photo is linearised by it and the PNG encoded by it.
+  doc.camera.response = {ResponseKeys::Mode::ToeShoulder, 0.8, 0.3, 12.0};
   auto ps = prepareScene(doc);
   ASSERT_TRUE(ps.ok()) << ps.error().message();
+  EXPECT_EQ(ps->response, CameraResponse::toeShoulder({0.8, 0.3, 12.0}));
   const ImageF composite = compositeOf(*ps, renderFrame(*ps, 2));
   ASSERT_EQ(composite.data.size(), ps->photo.linearRgb.data.size());
   size_t differing = 0;
   for (size_t i = 0; i < composite.data.size(); ++i) differing += composite.data[i] != ps->photo.linearRgb.data[i];
   EXPECT_EQ(differing, 0u);
+  // Written through the response, the PNG holds the photo's own codes.
+  const auto dir = test::tempDir("engine_response_png");
+  SaveOptions so;
+  so.response = &ps->response;
+  ASSERT_TRUE(saveImage((dir / "composite.png").string(), composite, so).ok());
+  auto written = loadImage((dir / "composite.png").string());
+  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved);
+  ASSERT_TRUE(written.ok() && photo.ok());
+  EXPECT_EQ(srgbCodesOf(written->linearRgb), srgbCodesOf(photo->linearRgb));
+}
+
+// An EXR/HDR photo is linear whatever camera.response says (with a warning when it says
+// otherwise); an 8-bit photo takes what the key asks.
+TEST(Engine, TheResponseOfALinearPhotoIsTheIdentity) {
+  LoadedImage linearPhoto;
+  linearPhoto.linearRgb = ImageF(64, 48, 3, 0.25f);
+  linearPhoto.wasSrgbEncoded = false;
+  ChosenResponse auto_ = responseOf({}, linearPhoto);
+  EXPECT_EQ(auto_.response.family(), ResponseFamily::Linear);
+  EXPECT_FALSE(auto_.estimate);
+  EXPECT_TRUE(auto_.warnings.empty());
+  ChosenResponse asked = responseOf({ResponseKeys::Mode::Srgb}, linearPhoto);
+  EXPECT_EQ(asked.response.family(), ResponseFamily::Linear);
+  ASSERT_EQ(asked.warnings.size(), 1u);
+  EXPECT_NE(asked.warnings[0].find("camera.response"), std::string::npos);
+  LoadedImage eightBit = linearPhoto;
+  eightBit.wasSrgbEncoded = true;
+  EXPECT_EQ(responseOf({ResponseKeys::Mode::Srgb}, eightBit).response, CameraResponse::srgb());
+  EXPECT_EQ(responseOf({ResponseKeys::Mode::Linear}, eightBit).response, CameraResponse::linear());
+  // "auto" on a flat 8-bit photo: sRGB, with the estimate's warning.
+  ChosenResponse flat = responseOf({}, eightBit);
+  EXPECT_EQ(flat.response, CameraResponse::srgb());
+  ASSERT_TRUE(flat.estimate);
+  EXPECT_FALSE(flat.estimate->determined);
+  EXPECT_EQ(flat.warnings.size(), 1u);
 }
 
 // "room.materials": the floor marked as a mirror reaches the render scene; with no object the

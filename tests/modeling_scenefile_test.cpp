@@ -309,6 +309,65 @@ TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
   EXPECT_EQ(again->doc.camera.vanishingLinesPx, l);
 }
 
+TEST(SceneFile, CameraResponseParsesAndRoundTrips) {
+  const fs::path dir = sceneDir("response");
+  auto parse = [&](const std::string& response) {
+    return parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
+                              response + "}}",
+                          dir.string(), "scene.json");
+  };
+  auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})", dir.string(),
+                                "scene.json");
+  ASSERT_TRUE(missing.ok());
+  EXPECT_EQ(missing->doc.camera.response.mode, ResponseKeys::Mode::Auto);
+  EXPECT_EQ(sceneToJson(missing->doc).find("response"), std::string::npos);  // auto is not written
+  const std::pair<const char*, ResponseKeys::Mode> modes[] = {
+      {R"("auto")", ResponseKeys::Mode::Auto}, {R"("srgb")", ResponseKeys::Mode::Srgb},
+      {R"("linear")", ResponseKeys::Mode::Linear}, {R"({"family": "linear"})", ResponseKeys::Mode::Linear},
+      {R"({"family": "toe_shoulder", "power": 0.8, "toe": 0.25, "shoulder": 40})", ResponseKeys::Mode::ToeShoulder}};
+  for (const auto& [text, mode] : modes) {
+    auto r = parse(text);
+    ASSERT_TRUE(r.ok()) << text << ": " << r.error().message();
+    EXPECT_TRUE(r->warnings.empty()) << text;
+    EXPECT_EQ(r->doc.camera.response.mode, mode) << text;
+    auto again = parseSceneJson(sceneToJson(r->doc), dir.string(), "scene.json");
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    EXPECT_EQ(again->doc.camera.response, r->doc.camera.response) << text;
+  }
+  auto explicitCurve = parse(R"({"family": "toe_shoulder", "power": 0.8, "toe": 0.25, "shoulder": 40})");
+  ASSERT_TRUE(explicitCurve.ok());
+  EXPECT_EQ(explicitCurve->doc.camera.response.power, 0.8);
+  EXPECT_EQ(explicitCurve->doc.camera.response.toe, 0.25);
+  EXPECT_EQ(explicitCurve->doc.camera.response.shoulder, 40);
+  auto defaults = parse(R"({"family": "toe_shoulder"})");  // sRGB's parameters
+  ASSERT_TRUE(defaults.ok());
+  EXPECT_EQ(defaults->doc.camera.response.power, 1.0);
+  EXPECT_EQ(defaults->doc.camera.response.shoulder, 0.0);
+}
+
+TEST(SceneFile, BadCameraResponseNamesItsKey) {
+  const fs::path dir = sceneDir("bad_response");
+  const std::pair<const char*, const char*> cases[] = {
+      {R"("gamma")", "camera.response"},
+      {R"(2.2)", "camera.response"},
+      {R"(null)", "camera.response"},
+      {R"({"power": 1})", "camera.response.family"},
+      {R"({"family": "filmic"})", "camera.response.family"},
+      {R"({"family": 3})", "camera.response.family"},
+      {R"({"family": "toe_shoulder", "power": 0})", "camera.response.power"},
+      {R"({"family": "toe_shoulder", "power": "1"})", "camera.response.power"},
+      {R"({"family": "toe_shoulder", "toe": -0.1})", "camera.response.toe"},
+      {R"({"family": "toe_shoulder", "shoulder": 1e9})", "camera.response.shoulder"},
+      {R"({"family": "srgb", "power": 1})", "camera.response.power"}};
+  for (const auto& [text, key] : cases) {
+    auto r = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
+                                std::string(text) + "}}",
+                            dir.string(), "scene.json");
+    ASSERT_FALSE(r.ok()) << text;
+    EXPECT_EQ(r.error().key, key) << text << ": " << r.error().message();
+  }
+}
+
 TEST(SceneFile, SaveRefusesWhatCouldNotBeReadBack) {
   const fs::path dir = sceneDir("save_refuses");
   writeText(dir / "scene.json", kFullScene);

@@ -4,10 +4,15 @@
 
 #include "inlay/render/composite.h"
 
+#include "inlay/modeling/image_io.h"
+#include "inlay/modeling/response.h"
+
 #include <cstring>
 
 namespace inlay {
 namespace {
+
+namespace fs = std::filesystem;
 
 ImageF filled(int w, int h, int c, uint32_t seed, float scale) {
   ImageF im(w, h, c);
@@ -68,6 +73,43 @@ TEST(Composite, FullMaskShowsTheRender) {
   const ImageF photo = filled(4, 4, 3, 7, 1.f), with = filled(4, 4, 3, 8, 1.f), without = filled(4, 4, 3, 9, 1.f);
   const ImageF out = differentialComposite(photo, with, without, ImageF(4, 4, 1, 1.f));
   for (size_t i = 0; i < out.data.size(); ++i) EXPECT_FLOAT_EQ(out.data[i], with.data[i]);
+}
+
+// out = f(f^-1(photo) + with - without): the photo linearised by its camera response, the
+// composite encoded with it. Untouched pixels keep the photo's codes in the PNG bit for bit;
+// changed ones are the response's encoding of the composite radiance.
+TEST(Composite, ReencodedThroughTheCameraResponseKeepsUntouchedCodes) {
+  const int w = 32, h = 16;
+  const CameraResponse response = CameraResponse::toeShoulder({0.7, 0.3, 20});
+  ImageF photo(w, h, 3);
+  std::vector<unsigned char> codes(photo.data.size());
+  for (size_t i = 0; i < codes.size(); ++i) {
+    codes[i] = (unsigned char)((i * 37) % 251);
+    photo.data[i] = response.table8()[codes[i]];  // f^-1(photo)
+  }
+  ImageF with = filled(w, h, 3, 2, 0.5f), without = with, mask(w, h, 1, 0.f);
+  for (int x = 4; x < 12; ++x)  // the object adds light to a band of rows 5 and 6 only
+    for (int y = 5; y < 7; ++y)
+      for (int c = 0; c < 3; ++c) with.at(x, y, c) += 0.05f;
+  const ImageF out = differentialComposite(photo, with, without, mask);
+  const fs::path dir = test::tempDir("composite_response");
+  SaveOptions so;
+  so.response = &response;
+  ASSERT_TRUE(saveImage((dir / "out.png").string(), out, so).ok());
+  auto back = loadImage((dir / "out.png").string());
+  ASSERT_TRUE(back.ok());
+  const std::vector<unsigned char> written = srgbCodesOf(back->linearRgb);
+  int changed = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const size_t i = (size_t(y) * w + x) * 3 + size_t(c);
+        const bool touched = x >= 4 && x < 12 && y >= 5 && y < 7;
+        const int expected = touched ? int(std::lround(255 * response.encode(photo.data[i] + 0.05))) : codes[i];
+        EXPECT_NEAR(int(written[i]), expected, touched ? 1 : 0) << x << "," << y;
+        changed += written[i] != codes[i];
+      }
+  EXPECT_GT(changed, 0);
 }
 
 TEST(Exposure, ScalesByPowersOfTwo) {

@@ -11,7 +11,9 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -40,6 +42,12 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
+  inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue symmetry|colour|both] [--prior W]
+                                                     the camera response (camera.response, or
+                                                     estimated from the photo's edges): family,
+                                                     parameters, warnings and the 256 codes'
+                                                     linear values; --cue and --prior tune the
+                                                     estimate (diagnostics)
   inlay-cli export SCENE.json -o SCENE.gltf|SCENE.glb
                                                      the reconstructed scene as glTF 2.0 (room
                                                      with albedo textures, lights as emissive
@@ -51,7 +59,9 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli --help | --version
 
 Render options:
-  -o, --output FILE       composite; .png/.jpg/.tif as 8-bit sRGB, .exr as linear half
+  -o, --output FILE       composite; .png/.jpg/.tif as 8-bit through the photo's camera
+                          response (camera.response; sRGB for a linear photo), so pixels the
+                          objects do not change keep the photo's codes; .exr as linear half
   --spp N                 stop at N samples per pixel (default: the scene's render.spp, 256)
   --seconds S             stop after S seconds of rendering (default: the scene's render.seconds)
   --seed K                random seed (default: the scene's render.seed)
@@ -106,7 +116,9 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo;
+  std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour";
+  std::optional<double> prior, minImprovement;
+  std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
@@ -145,7 +157,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
         s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
         s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo") {
+        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -159,6 +171,16 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--lights-json") a.lightsJson = *v;
       else if (s == "--replace-lights") a.replaceLights = *v;
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
+      else if (s == "--cue") a.cue = *v;
+      else if (s == "--evaluate-at") a.evaluateAt = *v;
+      else if (s == "--min-improvement") {
+        a.minImprovement = parseNumber<double>(*v);
+        if (!a.minImprovement || *a.minImprovement >= 1) return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
+      }
+      else if (s == "--prior") {
+        a.prior = parseNumber<double>(*v);
+        if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
+      }
       else if (s == "--seconds") {
         a.seconds = parseNumber<double>(*v);
         if (!a.seconds) return "--seconds: '" + *v + "' is not a non-negative number";
@@ -276,6 +298,13 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   }
   for (const auto& w : prepared->warnings)
     if (!progress.quiet()) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+  if (!progress.quiet()) {
+    const auto& e = prepared->responseEstimate;
+    std::fprintf(stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
+                 e ? (" (estimated from " + std::to_string(e->edgesUsed) + " edges in " +
+                      std::to_string(int(std::lround(1000 * e->seconds))) + " ms)").c_str()
+                   : " (camera.response)");
+  }
   return prepared;
 }
 
@@ -409,7 +438,10 @@ int commandRender(const std::string& scenePath, const Args& a) {
     return 1;
   }
   const ImageF composite = compositeOf(ps, *frame);
-  if (auto st = saveImage(a.output, composite); !st) return inputError(st.error());
+  SaveOptions save;
+  // A linear (EXR/HDR) photo's composite is written as sRGB to 8-bit files, as it always was.
+  save.response = ps.response.family() == ResponseFamily::Linear && !ps.photo.wasSrgbEncoded ? nullptr : &ps.response;
+  if (auto st = saveImage(a.output, composite, save); !st) return inputError(st.error());
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;
     std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
@@ -504,6 +536,69 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
     for (const auto& w : cl->warnings) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
     std::fprintf(stderr, "inlay-cli: wrote %s (focal %.1f px, confidence %.2f, %.0f ms)\n",
                  a.output.c_str(), cam.focalPx, est.overallConfidence, est.timings.totalMs);
+  }
+  return 0;
+}
+
+// RESPONSE.json: the camera response of a scene's photo (its camera.response, estimated when
+// "auto") or of a bare photo (estimated), with the 256 codes' linear values.
+int commandResponse(const std::string& input, const Args& a) {
+  if (a.output.empty()) return usageError("response needs -o RESPONSE.json");
+  ResponseEstimateOptions o;
+  o.cancel = &gCancel;
+  if (a.cue == "symmetry") o.cue = ResponseEstimateOptions::Cue::Symmetry;
+  else if (a.cue == "colour") o.cue = ResponseEstimateOptions::Cue::Colour;
+  else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
+  else return usageError("--cue " + a.cue + ": expected 'symmetry', 'colour' or 'both'");
+  if (a.prior) o.priorWeight = *a.prior;
+  if (a.minImprovement) o.minImprovement = *a.minImprovement;
+  if (!a.evaluateAt.empty()) {
+    ResponseParams q;
+    if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
+      return usageError("--evaluate-at: expected POWER,TOE,SHOULDER");
+    o.evaluateAt = q;
+  }
+  ResponseKeys keys;
+  std::string photoPath = input;
+  std::string ext = std::filesystem::path(input).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const bool scene = ext == ".json";
+  if (scene) {
+    auto loaded = loadSceneFile(input);
+    if (!loaded) return inputError(loaded.error());
+    for (const auto& w : loaded->warnings)
+      if (!a.quiet) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+    keys = loaded->doc.camera.response;
+    photoPath = loaded->doc.photoResolved.empty() ? loaded->doc.photo : loaded->doc.photoResolved;
+  }
+  auto photo = loadImage(photoPath, ImageLimits::photo());
+  if (!photo) return inputError(scene ? photo.error().underKey("photo").inFile(input) : photo.error());
+  const ChosenResponse c = responseOf(keys, *photo, o);
+  if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted; nothing written\n"), 1;
+  using nlohmann::json;
+  const CameraResponse& r = c.response;
+  json j;
+  j["family"] = r.familyName();
+  j["description"] = r.describe();
+  j["parameters"] = {{"power", r.params().power}, {"toe", r.params().toe}, {"shoulder", r.params().shoulder}};
+  j["source"] = !photo->wasSrgbEncoded ? "linear photo" : c.estimate ? "estimated" : "camera.response";
+  j["warnings"] = c.warnings;
+  json table = json::array();
+  for (float v : r.table8()) table.push_back(v);
+  j["table"] = table;  // code k (0..255) -> linear radiance, code 255 -> 1
+  if (c.estimate) {
+    const ResponseEstimate& e = *c.estimate;
+    json history = json::array();
+    for (const auto& [sec, obj] : e.history) history.push_back({sec, obj});
+    j["estimate"] = {{"determined", e.determined}, {"decision", e.decision}, {"cue", a.cue}, {"prior_weight", o.priorWeight},
+                     {"edges_used", e.edgesUsed}, {"segments_found", e.segmentsFound},
+                     {"objective", e.objective}, {"srgb_objective", e.srgbObjective},
+                     {"seconds", e.seconds}, {"cpu_seconds", e.cpuSeconds}, {"history", history}};
+  }
+  if (auto st = writeFileAtomically(a.output, j.dump(1) + "\n"); !st) return inputError(st.error());
+  if (!a.quiet) {
+    for (const auto& w : c.warnings) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+    std::fprintf(stderr, "inlay-cli: wrote %s (%s)\n", a.output.c_str(), r.describe().c_str());
   }
   return 0;
 }
@@ -628,6 +723,10 @@ int main(int argc, char** argv) {
     if (a.command == "export") {
       if (a.positional.size() != 1) return usageError("export needs exactly one SCENE.json");
       return commandExport(a.positional[0], a);
+    }
+    if (a.command == "response") {
+      if (a.positional.size() != 1) return usageError("response needs exactly one SCENE.json or PHOTO");
+      return commandResponse(a.positional[0], a);
     }
     if (a.command == "estimate") {
       if (a.positional.size() != 1) return usageError("estimate needs exactly one PHOTO");

@@ -1015,4 +1015,10 @@ bool Document::setRoomMaterial(const std::string& surface,
   return editMarks(m, 0, tr("Change the material of %1").arg(QString::fromStdString(surface)), reason);
 }
 
+bool Document::setCameraResponse(const ResponseKeys& response, QString* reason) {
+  SceneMarks m = marks();
+  m.camera.response = response;
+  return editMarks(m, 0, tr("Change the camera response"), reason);
+}
+
 }  // namespace inlay::studio

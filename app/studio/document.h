@@ -203,6 +203,9 @@ class Document : public QObject {
   // The names of the room's surfaces that can take a material (floor, walls, ceiling, the
   // surfaces' tops and sides), of the newest prepared scene (kept while it re-prepares).
   std::vector<std::string> roomSurfaceNames() const;
+  // How the photo's codes map to radiance (camera.response: auto, srgb, linear or explicit);
+  // one undo step, the scene is prepared again.
+  bool setCameraResponse(const ResponseKeys& response, QString* reason = nullptr);
   bool removeMark(MarkRef mark, QString* reason = nullptr);
   SceneMarks marks() const;
   // The newest camera estimate (kept while the scene is re-prepared), or null.

@@ -12,6 +12,7 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
   context->doc.photoResolved = scene.doc.photoResolved;
   context->doc.render = scene.doc.render;
   context->photo = scene.photo;
+  context->response = scene.response;
   context->camera = scene.camera;
   context->box = scene.box;
   return context;
@@ -58,7 +59,7 @@ void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   image.frame = frame;
   auto linear = std::make_shared<ImageF>(compositeOf(*context, *frame));
   // compositeOf already applied the scene's exposure.
-  image.srgb8 = srgb8FromLinear(*linear, 0.0);
+  image.srgb8 = encoded8FromLinear(*linear, context->response, 0.0);
   image.linear = std::move(linear);
 
   bool wasEmpty = false;

@@ -29,7 +29,7 @@ struct CompositeImage {
   double seconds = 0;
   double estimatedError = 0;
   bool final = false;
-  QImage srgb8;                                // the composite, 8-bit sRGB
+  QImage srgb8;                                // the composite, 8-bit (the photo's response)
   std::shared_ptr<const ImageF> linear;        // the composite, linear (for export)
   std::shared_ptr<const RenderFrame> frame;     // the renderer's frame (the layers' source)
 };
@@ -49,7 +49,7 @@ class CompositeSink : public FrameSink {
   void onFrame(std::shared_ptr<const RenderFrame> frame) override;
 
   // A copy of the parts of `scene` that compositeOf reads: the photo and the document's
-  // render keys (exposure), plus the camera and room for completeness.
+  // render keys (exposure) and camera response, plus the camera and room for completeness.
   static std::shared_ptr<const PreparedScene> compositeContextOf(const PreparedScene& scene);
 
  private:

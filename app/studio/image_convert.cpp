@@ -47,4 +47,21 @@ QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
   return out;
 }
 
+QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response, double exposureStops) {
+  if (response.family() != ResponseFamily::ToeShoulder) return srgb8FromLinear(linearRgb, exposureStops);
+  if (linearRgb.empty() || linearRgb.width <= 0 || linearRgb.height <= 0) return {};
+  const float gain = float(std::exp2(exposureStops));
+  const int c = linearRgb.channels;
+  QImage out(linearRgb.width, linearRgb.height, QImage::Format_RGB32);
+  for (int y = 0; y < linearRgb.height; ++y) {
+    auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
+    for (int x = 0; x < linearRgb.width; ++x) {
+      const float* p = linearRgb.pixel(x, y);
+      row[x] = qRgb(response.encodeCode8(p[0] * gain), response.encodeCode8((c >= 3 ? p[1] : p[0]) * gain),
+                    response.encodeCode8((c >= 3 ? p[2] : p[0]) * gain));
+    }
+  }
+  return out;
+}
+
 }  // namespace inlay::studio

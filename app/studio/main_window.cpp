@@ -3,6 +3,7 @@
 #include "autosave.h"
 #include "docks.h"
 #include "library_dock.h"
+#include "response_dock.h"
 #include "i18n.h"
 #include "document.h"
 #include "render_controller.h"
@@ -106,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   layersDock_ = new LayersDock(viewport_, this);
   addDockWidget(Qt::RightDockWidgetArea, layersDock_);
   addDockWidget(Qt::RightDockWidgetArea, new LibraryDock(this));  // the bundled model library
+  responseDock_ = new ResponseDock(document_, this);
+  addDockWidget(Qt::RightDockWidgetArea, responseDock_);
   autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);
@@ -340,6 +343,7 @@ void MainWindow::createMenus() {
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
   view->addAction(layersDock_->toggleViewAction());
+  view->addAction(responseDock_->toggleViewAction());
   view->addSeparator();
   languageMenu_ = view->addMenu(QString());
   QMenu* language = languageMenu_;
@@ -709,7 +713,10 @@ bool MainWindow::exportComposite(const QString& path) {
     showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
     return false;
   }
-  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), *linear);
+  SaveOptions save;  // 8-bit files through the photo's camera response (its codes kept)
+  const PreparedScene* prepared = document_->prepared();
+  if (prepared && prepared->photo.wasSrgbEncoded) save.response = &prepared->response;
+  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), *linear, save);
   if (!saved.ok()) {
     showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
     return false;

@@ -28,6 +28,7 @@ class Autosaver;
 class Document;
 class LayersDock;
 class PropertiesDock;
+class ResponseDock;
 class RenderController;
 class SceneTreeDock;
 class Viewport;
@@ -151,6 +152,7 @@ class MainWindow : public QMainWindow {
   SceneTreeDock* sceneDock_;
   PropertiesDock* propertiesDock_;
   LayersDock* layersDock_;
+  ResponseDock* responseDock_ = nullptr;
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;

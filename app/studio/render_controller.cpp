@@ -66,7 +66,7 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::PrepareStarted) && session_) session_->cancel();
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (const PreparedScene* prepared = document_->prepared()) {
-      photo_ = srgb8FromLinear(prepared->photo.linearRgb, prepared->doc.render.exposure);
+      photo_ = encoded8FromLinear(prepared->photo.linearRgb, prepared->response, prepared->doc.render.exposure);
       composite_ = {};
       startScene();
       Q_EMIT frameUpdated();
@@ -116,6 +116,8 @@ QImage RenderController::layerImage(Layer layer) {
   const PreparedScene* prepared = document_->prepared();
   const RenderFrame* frame = composite_.frame.get();
   const double exposure = prepared ? prepared->doc.render.exposure : 0.0;
+  // Radiance layers are shown through the photo's camera response, as the composite is.
+  const CameraResponse response = prepared ? prepared->response : CameraResponse::srgb();
   // The source each layer is made from; its address is the cache key (a new prepared scene
   // or frame is a new object).
   const void* source = nullptr;
@@ -138,9 +140,9 @@ QImage RenderController::layerImage(Layer layer) {
       // Reflectance is shown as is (exposure does not apply to it).
       image = srgb8FromLinear(prepared->lighting.albedo, 0.0);
       break;
-    case Layer::DirectLight: image = srgb8FromLinear(prepared->lighting.direct, exposure); break;
-    case Layer::WithObjects: image = srgb8FromLinear(frame->withObjects, exposure); break;
-    case Layer::WithoutObjects: image = srgb8FromLinear(frame->withoutObjects, exposure); break;
+    case Layer::DirectLight: image = encoded8FromLinear(prepared->lighting.direct, response, exposure); break;
+    case Layer::WithObjects: image = encoded8FromLinear(frame->withObjects, response, exposure); break;
+    case Layer::WithoutObjects: image = encoded8FromLinear(frame->withoutObjects, response, exposure); break;
     case Layer::Mask: image = srgb8FromLinear(frame->mask, 0.0); break;
     case Layer::Difference: image = differenceOf(compositeImage(), photoImage(), 4); break;
     default: break;

@@ -1,5 +1,6 @@
 // Image input and output through OpenImageIO (the only unit that includes it).
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/response.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -127,13 +128,17 @@ ExifInfo readExif(const OIIO::ImageSpec& spec) {
   return e;
 }
 
-// Linear float (C = 1, 3 or 4) -> interleaved 8-bit sRGB with `outChannels` <= C channels
+// Linear float (C = 1, 3 or 4) -> interleaved 8-bit sRGB (or `response`'s encoding when given) with `outChannels` <= C channels
 // (grey stays grey, RGBA may drop its alpha for JPEG).
-std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels) {
+std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels, const CameraResponse* response) {
   std::vector<unsigned char> out(linear.pixelCount() * size_t(outChannels));
   for (size_t i = 0; i < linear.pixelCount(); ++i) {
     const float* p = &linear.data[i * size_t(linear.channels)];
     for (int c = 0; c < outChannels; ++c) {
+      if (c < 3 && response) {
+        out[i * size_t(outChannels) + size_t(c)] = response->encodeCode8(p[linear.channels == 1 ? 0 : c]);
+        continue;
+      }
       const float v = c < 3 ? linearToSrgb(p[linear.channels == 1 ? 0 : c])
                             : std::clamp(p[c], 0.f, 1.f);  // alpha stays linear
       out[i * size_t(outChannels) + size_t(c)] = (unsigned char)std::lround(v * 255.f);
@@ -547,7 +552,7 @@ Status saveImage(const std::string& path, const ImageF& linear, const SaveOption
   if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".tif" || ext == ".tiff") {
     const bool jpeg = ext == ".jpg" || ext == ".jpeg";
     int outC = linear.channels == 4 ? (jpeg ? 3 : 4) : (linear.channels == 1 ? 1 : 3);
-    const std::vector<unsigned char> px = toSrgb8(linear, outC);
+    const std::vector<unsigned char> px = toSrgb8(linear, outC, options.response);
     OIIO::ImageSpec spec(linear.width, linear.height, outC, OIIO::TypeDesc::UINT8);
     spec.attribute("oiio:ColorSpace", "sRGB");
     if (jpeg) spec.attribute("CompressionQuality", std::clamp(options.jpegQuality, 1, 100));

@@ -5,6 +5,8 @@
 // (1e999) names the key where it happened. The DOM is then walked with a key path.
 #include "inlay/modeling/scene_file.h"
 
+#include "inlay/modeling/response.h"
+
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/mesh.h"
 
@@ -414,7 +416,7 @@ class Reader {
     const std::string p = "camera";
     object(j, p);
     knownKeys(j, p, {"height_m", "focal_px", "principal_px", "vanishing_points_px",
-                     "vanishing_lines_px"});
+                     "vanishing_lines_px", "response"});
     if (j.contains("height_m")) c.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("focal_px")) c.focalPx = positive(j["focal_px"], child(p, "focal_px"));
     if (j.contains("principal_px")) c.principalPx = vec<2>(j["principal_px"], child(p, "principal_px"));
@@ -426,6 +428,50 @@ class Reader {
       c.vanishingPointsPx = v;
     }
     if (j.contains("vanishing_lines_px")) readVanishingLines(j["vanishing_lines_px"], c);
+    if (j.contains("response")) c.response = readResponse(j["response"]);
+  }
+
+  // camera.response: "auto", "srgb", "linear" or {"family": ..., parameters}.
+  ResponseKeys readResponse(const json& j) {
+    const std::string p = "camera.response";
+    ResponseKeys r;
+    if (j.is_string()) {
+      const std::string v = j.get<std::string>();
+      if (v == "auto") r.mode = ResponseKeys::Mode::Auto;
+      else if (v == "srgb") r.mode = ResponseKeys::Mode::Srgb;
+      else if (v == "linear") r.mode = ResponseKeys::Mode::Linear;
+      else fail(p, "unknown response '" + v + "' (expected \"auto\", \"srgb\", \"linear\" or an object "
+                   "{\"family\": \"toe_shoulder\", \"power\", \"toe\", \"shoulder\"})");
+      return r;
+    }
+    if (!j.is_object())
+      fail(p, std::string("expected \"auto\", \"srgb\", \"linear\" or an object, got ") + typeName(j));
+    knownKeys(j, p, {"family", "power", "toe", "shoulder"});
+    if (!j.contains("family")) fail(child(p, "family"), "missing (\"toe_shoulder\", \"srgb\" or \"linear\")");
+    const std::string family = string(j["family"], child(p, "family"));
+    if (family == "srgb") r.mode = ResponseKeys::Mode::Srgb;
+    else if (family == "linear") r.mode = ResponseKeys::Mode::Linear;
+    else if (family == "toe_shoulder") r.mode = ResponseKeys::Mode::ToeShoulder;
+    else fail(child(p, "family"), "unknown family '" + family + "' (expected \"toe_shoulder\", \"srgb\" or \"linear\")");
+    auto bounded = [&](const char* key, double lo, double hi, double fallback) {
+      if (!j.contains(key)) return fallback;
+      const double v = number(j[key], child(p, key));
+      if (v < lo || v > hi) {
+        char buf[120];
+        std::snprintf(buf, sizeof buf, "must be in [%g, %g] (got %s)", lo, hi, j[key].dump().c_str());
+        fail(child(p, key), buf);
+      }
+      return v;
+    };
+    if (r.mode == ResponseKeys::Mode::ToeShoulder) {
+      r.power = bounded("power", ResponseParams::kMinPower, ResponseParams::kMaxPower, 1.0);
+      r.toe = bounded("toe", 0.0, ResponseParams::kMaxToe, 0.0);
+      r.shoulder = bounded("shoulder", 0.0, ResponseParams::kMaxShoulder, 0.0);
+    } else {
+      for (const char* k : {"power", "toe", "shoulder"})
+        if (j.contains(k)) fail(child(p, k), "only the toe_shoulder family takes parameters");
+    }
+    return r;
   }
 
   // camera.vanishing_lines_px: {"x": [[a0, b0], [a1, b1]], ...}, any of the three axes.
@@ -814,7 +860,8 @@ ojson buildJson(const SceneDoc& doc) {
   const CameraKeys& c = doc.camera;
   const bool anyLines = std::any_of(c.vanishingLinesPx.begin(), c.vanishingLinesPx.end(),
                                     [](const auto& l) { return l.has_value(); });
-  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines) {
+  const bool anyResponse = c.response.mode != ResponseKeys::Mode::Auto;
+  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse) {
     ojson cam = ojson::object();
     if (c.heightM) cam["height_m"] = *c.heightM;
     if (c.focalPx) cam["focal_px"] = *c.focalPx;
@@ -835,6 +882,11 @@ ojson buildJson(const SceneDoc& doc) {
       }
       cam["vanishing_lines_px"] = lines;
     }
+    if (c.response.mode == ResponseKeys::Mode::Srgb) cam["response"] = "srgb";
+    if (c.response.mode == ResponseKeys::Mode::Linear) cam["response"] = "linear";
+    if (c.response.mode == ResponseKeys::Mode::ToeShoulder)
+      cam["response"] = {{"family", "toe_shoulder"}, {"power", c.response.power}, {"toe", c.response.toe},
+                         {"shoulder", c.response.shoulder}};
     j["camera"] = cam;
   }
   if (doc.layout.backWallPx) {

@@ -357,6 +357,32 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
   return out;
 }
 
+ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
+                          const ResponseEstimateOptions& options) {
+  ChosenResponse out;
+  if (!photo.wasSrgbEncoded) {
+    out.response = CameraResponse::linear();
+    if (keys.mode != ResponseKeys::Mode::Auto && keys.mode != ResponseKeys::Mode::Linear)
+      out.warnings.push_back("camera.response: ignored, the photo is already linear (EXR/HDR)");
+    return out;
+  }
+  switch (keys.mode) {
+    case ResponseKeys::Mode::Srgb: out.response = CameraResponse::srgb(); break;
+    case ResponseKeys::Mode::Linear: out.response = CameraResponse::linear(); break;
+    case ResponseKeys::Mode::ToeShoulder:
+      out.response = CameraResponse::toeShoulder({keys.power, keys.toe, keys.shoulder});
+      break;
+    case ResponseKeys::Mode::Auto: {
+      ResponseEstimate e = estimateResponse(photo.linearRgb, options);
+      out.response = e.response;
+      out.warnings = e.warnings;
+      out.estimate = std::move(e);
+      break;
+    }
+  }
+  return out;
+}
+
 Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index) {
   INLAY_CHECK(index < scene.doc.objects.size() && index < scene.renderScene.objects.size());
   const ObjectKeys& o = scene.doc.objects[index];
@@ -417,6 +443,20 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   const int W = ps.photo.linearRgb.width, H = ps.photo.linearRgb.height;
   ps.stageSeconds.emplace_back("photo", secondsSince(t));
   if (cancelled()) return Error{"", "", "cancelled"};
+
+  // The camera response; from here on everything works in the linearised radiance.
+  t = Clock::now();
+  {
+    ResponseEstimateOptions ro;
+    ro.cancel = opt.cancel;
+    ChosenResponse chosen = responseOf(doc.camera.response, ps.photo, ro);
+    if (cancelled()) return Error{"", "", "cancelled"};
+    ps.response = chosen.response;
+    ps.responseEstimate = std::move(chosen.estimate);
+    for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
+    if (ps.photo.wasSrgbEncoded) redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
+  }
+  ps.stageSeconds.emplace_back("response", secondsSince(t));
 
   // Camera.
   progress("camera", 0);

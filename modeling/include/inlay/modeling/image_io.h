@@ -18,6 +18,8 @@
 
 namespace inlay {
 
+class CameraResponse;
+
 struct ImageLimits {
   long long maxPixels = 300'000'000LL;  // decompression-bomb guard (about 17k x 17k)
   int maxDimension = 65'536;            // either side
@@ -51,8 +53,12 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
 struct SaveOptions {
   bool exrHalf = true;  // .exr: half (true) or float (false)
   int jpegQuality = 95;
+  // PNG/JPEG/TIFF: the camera response that encodes the colour channels (modeling/response.h),
+  // so a photo's pixels decoded with it are written back as the same codes; null: sRGB.
+  const CameraResponse* response = nullptr;
 };
-// `linear`: linear values (C = 1, 3 or 4); encoded to sRGB 8-bit for PNG/JPEG/TIFF, clamped.
+// `linear`: linear values (C = 1, 3 or 4); encoded to 8-bit for PNG/JPEG/TIFF by
+// options.response (sRGB when null), clamped.
 Status saveImage(const std::string& path, const ImageF& linear, const SaveOptions& options = {});
 
 // A multi-layer EXR: one part per named layer, each linear float or half, written atomically.

@@ -16,6 +16,17 @@
 
 namespace inlay {
 
+// "camera.response": how the photo's encoded values map to radiance (modeling/response.h).
+// "auto" (the default; also when missing): estimated from the photo; "srgb"; "linear"; or
+// {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s} (missing numbers: sRGB's
+// 1, 0, 0), {"family": "srgb"} or {"family": "linear"}. EXR/HDR photos are linear whatever it says.
+struct ResponseKeys {
+  enum class Mode { Auto, Srgb, Linear, ToeShoulder };
+  Mode mode = Mode::Auto;
+  double power = 1.0, toe = 0.0, shoulder = 0.0;  // ToeShoulder
+  bool operator==(const ResponseKeys&) const = default;
+};
+
 struct CameraKeys {
   std::optional<double> heightM;                    // default 1.6 when missing
   std::optional<double> focalPx;
@@ -25,6 +36,7 @@ struct CameraKeys {
   // segments the user drew along that direction ({a0, b0, a1, b1} here); their lines meet at the
   // axis's vanishing point. Each segment is >= 2 px long and the two are not one line.
   std::array<std::optional<std::array<Vec2, 4>>, 3> vanishingLinesPx;
+  ResponseKeys response;
 };
 
 struct LayoutKeys {

@@ -11,6 +11,7 @@
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/response.h"
 #include "inlay/modeling/scene_file.h"
 #include "inlay/render/scene.h"
 #include "inlay/render/session.h"
@@ -25,7 +26,12 @@ namespace inlay {
 
 struct PreparedScene {
   SceneDoc doc;
-  LoadedImage photo;            // linear RGB, oriented
+  LoadedImage photo;            // linear RGB (decoded by `response`), oriented
+  // How the photo's codes map to radiance (camera.response, estimated when "auto"); the
+  // composite is encoded with it (SaveOptions::response), so untouched pixels keep their codes.
+  // Linear for EXR/HDR photos.
+  CameraResponse response;
+  std::optional<ResponseEstimate> responseEstimate;  // when "auto" ran the estimate
   Camera camera;
   RoomBox box;
   std::array<Vec2, 4> backWallPx{};  // the corners the box was made from
@@ -76,6 +82,17 @@ struct CameraAndLayout {
 Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const LayoutKeys& layout,
                                             const LoadedImage& photo, bool alwaysEstimate,
                                             const CancelToken* cancel = nullptr);
+
+// The camera response of `photo` as `keys` ask (an EXR/HDR photo is linear whatever they say,
+// with a warning when they say otherwise); "auto" estimates it (modeling/response.h). Warnings
+// (why the estimate fell back to sRGB) go to `warnings`.
+struct ChosenResponse {
+  CameraResponse response;
+  std::optional<ResponseEstimate> estimate;
+  std::vector<std::string> warnings;
+};
+ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
+                          const ResponseEstimateOptions& options = {});
 
 // Everything needed to render `doc`. Errors name the scene file's key and the reason.
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});

@@ -1,0 +1,142 @@
+// The camera's response: how the file's encoded values relate to scene radiance.
+//
+// A camera maps relative linear radiance x >= 0 to an encoded value f(x) in [0,1] (an 8-bit
+// code is round(255 f(x))). Inlay models f as one of three families:
+//   - "srgb":   the IEC 61966-2-1 curve (what every 8-bit photo was read as before).
+//   - "linear": the identity (EXR/HDR photos are already linear).
+//   - "toe_shoulder": the sRGB curve after a warp of the radiance,
+//        f(x) = srgb(S_s(T_t(x^p))),
+//     p (power) > 0: the curve's overall gamma relative to sRGB (p < 1: a higher display
+//       gamma's brighter mid-tones, p > 1: a lower one's);
+//     T_t(u) = (1 + t) u^2 / (u + t), t (toe) >= 0: a darker, flatter toe (contrast in the
+//       shadows); t = 0 is the identity;
+//     S_s(u) = (1 + s) u / (1 + s u), s (shoulder) >= 0: a highlight roll-off; s = 0 is the
+//       identity, large s a long shoulder where the top codes span many stops.
+//     Each map takes [0,1] onto [0,1] with 0 -> 0 and 1 -> 1 and is strictly increasing, so f
+//     is too; at p = 1, t = 0, s = 0 the family is sRGB exactly. Code 255 always decodes to
+//     1.0: "1.0 is a pure white pixel" keeps its meaning in the scene file.
+// Parameters are clamped to ResponseParams' bounds, where f stays finite and strictly
+// monotone (f^-1 of every 8-bit code is a distinct finite float).
+//
+// estimateResponse() finds the toe_shoulder parameters from the photo's own edges (see there).
+// Thread-safe: a CameraResponse is an immutable value.
+#pragma once
+
+#include "inlay/modeling/core.h"
+#include "inlay/modeling/image.h"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace inlay {
+
+enum class ResponseFamily { Srgb, Linear, ToeShoulder };
+
+struct ResponseParams {
+  double power = 1.0;     // [kMinPower, kMaxPower]
+  double toe = 0.0;       // [0, kMaxToe]
+  double shoulder = 0.0;  // [0, kMaxShoulder]
+  static constexpr double kMinPower = 0.4, kMaxPower = 2.5;
+  static constexpr double kMaxToe = 2.0;
+  static constexpr double kMaxShoulder = 1000.0;
+  ResponseParams clamped() const;  // NaN -> the neutral value
+};
+
+class CameraResponse {
+ public:
+  CameraResponse();  // sRGB
+  static CameraResponse srgb();
+  static CameraResponse linear();
+  static CameraResponse toeShoulder(const ResponseParams& params);  // clamped to the bounds
+
+  ResponseFamily family() const { return family_; }
+  const ResponseParams& params() const { return params_; }
+  std::string familyName() const;  // "srgb", "linear", "toe_shoulder"
+  // e.g. "toe_shoulder (power 0.82, toe 0.10, shoulder 3.1)"
+  std::string describe() const;
+
+  // f: linear radiance -> encoded [0,1] (clamped; NaN -> 0).
+  double encode(double linear) const;
+  // f^-1: encoded [0,1] (clamped) -> linear radiance in [0,1].
+  double decode(double encoded) const;
+
+  // f^-1 of the 8-bit codes: 256 strictly increasing finite floats, table8()[0] = 0,
+  // table8()[255] = 1. For "srgb" these are exactly srgbToLinear(k / 255.f).
+  const std::array<float, 256>& table8() const { return table8_; }
+  // round(255 f(linear)), such that encodeCode8(table8()[k]) == k for every code k.
+  unsigned char encodeCode8(float linear) const;
+
+  bool operator==(const CameraResponse& o) const {
+    return family_ == o.family_ && (family_ != ResponseFamily::ToeShoulder ||
+                                    (params_.power == o.params_.power && params_.toe == o.params_.toe &&
+                                     params_.shoulder == o.params_.shoulder));
+  }
+
+ private:
+  void buildTables();
+  ResponseFamily family_ = ResponseFamily::Srgb;
+  ResponseParams params_;
+  std::array<float, 256> table8_{};
+  std::array<float, 255> thresholds8_{};  // f^-1((k + 0.5) / 255): code k below, k + 1 above
+};
+
+// The file's encoded values of a photo read as sRGB (LoadedImage::linearRgb of an 8- or 16-bit
+// file) decoded again with `response`: every value v becomes response.decode(srgb(v)), with the
+// sRGB code recovered exactly for 8-bit files (`bitsPerChannel` 8) so a photo's pixel with code
+// k becomes exactly table8()[k]. In place; a linear response of an sRGB-read image is its
+// encoded values as they are.
+void redecodePhoto(ImageF& srgbDecodedRgb, int bitsPerChannel, const CameraResponse& response);
+
+// The 8-bit codes (W x H x 3, interleaved) of an image read as sRGB, recovered exactly for
+// 8-bit files and rounded for deeper ones.
+std::vector<unsigned char> srgbCodesOf(const ImageF& srgbDecodedRgb);
+
+struct ResponseEstimateOptions {
+  // What the estimate measures at the photo's straight edges between two flat regions:
+  //   Symmetry: the edge's profile in linear radiance is point-symmetric about its middle (a
+  //     symmetric lens/pixel blur of a step), which a wrong curve bends (works for grey edges);
+  //   Colour: the pixels across an edge are mixtures of its two colours, on a line in linear
+  //     RGB, which a wrong curve bends (Lin, Gu, Yamazaki, Shum 2004; needs coloured edges);
+  //   Both: the sum of the two.
+  enum class Cue { Symmetry, Colour, Both };
+  Cue cue = Cue::Colour;  // chosen by bench_response.py (docs/camera-response.md)
+  // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
+  // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
+  double priorWeight = 2.0;  // chosen on half A by bench_response.py
+  int minEdges = 8;             // fewer clean edges: sRGB with a warning
+  // The fitted curve is kept only when it lowers the edges' residual by at least this fraction
+  // of sRGB's; otherwise sRGB (the edges show no curve clearly different from it).
+  double minImprovement = 0.1;
+  int maxSegments = 300;        // line segments considered (the longest)
+  double minEdgeLengthPx = 20;  // shorter segments are skipped
+  const CancelToken* cancel = nullptr;
+  // Diagnostics: skip the search and report the objective at these parameters.
+  std::optional<ResponseParams> evaluateAt;
+};
+
+struct ResponseEstimate {
+  CameraResponse response;         // sRGB when undetermined
+  bool determined = false;         // false: the photo could not determine it (see warnings)
+  std::vector<std::string> warnings;
+  int edgesUsed = 0;               // clean edges the fit used
+  int segmentsFound = 0;
+  double objective = 0;            // the fit's mean edge residual at the result (without prior)
+  double srgbObjective = 0;        // the same for plain sRGB
+  std::string decision;            // why this curve: "fitted", or why sRGB was kept
+  double seconds = 0;
+  double cpuSeconds = 0;           // this thread's CPU time (what an idle core would take)
+  // The fit's objective (with prior) against seconds: one row per improvement.
+  std::vector<std::pair<double, double>> history;
+};
+
+// The response of an 8/16-bit photo read as sRGB (`srgbDecodedRgb`: LoadedImage::linearRgb of
+// such a file), from its straight edges alone: line segments are found (lines.h), each
+// segment's pixels within 4 px are kept when both sides are flat, unclipped and differ, and the
+// toe_shoulder parameters minimise the chosen cue's residual plus the prior (a grid, then
+// Nelder-Mead). Undetermined (returns sRGB, determined false, a warning saying why): a nearly
+// flat or nearly binary photo, one mostly clipped, or fewer than minEdges clean edges.
+ResponseEstimate estimateResponse(const ImageF& srgbDecodedRgb, const ResponseEstimateOptions& options = {});
+
+}  // namespace inlay
