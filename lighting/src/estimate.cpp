@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -114,6 +115,22 @@ std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<u
     out[idx] = b.allFinite() && withSuns ? Vec3(predicted.cwiseMax(b)) : predicted;
   }
   return out;
+}
+
+// Mixes the new gathered light into the previous pass's (gathered <- r gathered + (1 - r)
+// previous) and returns the relative change of its mean from the previous one (infinity when
+// there is none).
+double relaxGathered(ImageF& gathered, const ImageF& previous, double r) {
+  if (previous.data.size() != gathered.data.size() || previous.data.empty())
+    return std::numeric_limits<double>::infinity();
+  double sumNew = 0, sumOld = 0;
+  for (size_t i = 0; i < gathered.data.size(); ++i) {
+    const double mixed = r * double(gathered.data[i]) + (1 - r) * double(previous.data[i]);
+    gathered.data[i] = float(std::isfinite(mixed) ? mixed : previous.data[i]);
+    sumNew += gathered.data[i];
+    sumOld += previous.data[i];
+  }
+  return sumOld > 0 ? std::abs(sumNew - sumOld) / sumOld : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -707,11 +724,16 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     gatherSamples = gatherSamplesForNoise(tracer, pilot, opt.seed, radianceAt, go);
   }
   out.gatherSamples = gatherSamples;
-  const int passes = 2;
+  const int passes = std::max(2, opt.maxPasses);
+  const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
+  ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
+    const double change = relaxGathered(out.gathered, previousGathered, pass >= 1 ? relax : 1.0);
+    previousGathered = out.gathered;
     if (stop() || !fit()) return cancelled();
-    if (pass == passes - 1) break;
+    out.passes = pass + 1;
+    if (pass == passes - 1 || (pass >= 2 && change < opt.passTolerance)) break;
     model.active = true;
     for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
     model.rho.assign(S, Vec3::Zero());

@@ -26,9 +26,12 @@ against run time: object RMSE against render wall seconds, albedo MAE against de
 response error against its seconds); prints Markdown tables per half.
 
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
-                               [--seconds S] [--no-albedo] [--no-plain] [--rescore]
+                               [--seconds S] [--spp N] [--no-albedo] [--no-plain] [--rescore]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
+  --spp N       render exactly N samples per pixel instead (no clock, uniform sampling): the
+                fair comparison of two builds on a loaded machine (the clock gives fewer samples
+                when other jobs run); both runs share seed 1 and so their noise pattern
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
 """
 import json, os, re, statistics, subprocess, sys, time
@@ -207,8 +210,10 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
         for f in (comp, lj):
             if os.path.exists(f):
                 os.remove(f)
-        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1", "--spp", "100000",
-                                "--seconds", str(o["seconds"]), "--lights-json", lj], timeout=o["seconds"] * 4 + 600)
+        budget = (["--spp", str(o["spp"]), "--seconds", "0", "--noise", "0"] if o["spp"]
+                  else ["--spp", "100000", "--seconds", str(o["seconds"])])
+        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1", "--lights-json", lj] + budget,
+                               timeout=o["seconds"] * 4 + 1800)
         row["render_wall_s"] = round(secs, 2)
         if rc != 0:
             row["error"] = err.strip()[-300:]
@@ -328,7 +333,7 @@ def main():
     os.makedirs(os.path.join(out, "variants"), exist_ok=True)
     kinds = ([] if "--no-plain" in argv else ["plain"]) + ["s%d" % k for k in range(1, int(opt("--cameras", "3")) + 1)]
     rc, _, help_text, help_err = run([cli, "--help"])
-    o = {"seconds": float(opt("--seconds", "15")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
+    o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
          "has_response": "inlay-cli response" in help_text + help_err}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     rows = []
