@@ -727,10 +727,16 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   const int passes = std::max(2, opt.maxPasses);
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
+  std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
   for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
-    const double change = relaxGathered(out.gathered, previousGathered, pass >= 1 ? relax : 1.0);
+    const double r = pass >= 1 ? relax : 1.0;
+    const double change = relaxGathered(out.gathered, previousGathered, r);
     previousGathered = out.gathered;
+    // The mixed Gamma holds the clipped pixels' gain mixed alike: the fit's extra gain is on
+    // top of that.
+    for (size_t c = 0; c < 3; ++c)
+      previousGain[c] = clippedGainApplied[c] = r * clippedGainApplied[c] + (1 - r) * previousGain[c];
     if (stop() || !fit()) return cancelled();
     out.passes = pass + 1;
     if (pass == passes - 1 || (pass >= 2 && change < opt.passTolerance)) break;
