@@ -33,6 +33,9 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 fair comparison of two builds on a loaded machine (the clock gives fewer samples
                 when other jobs run); both runs share seed 1 and so their noise pattern
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
+  --baseline D  also compare with another build's run in folder D (its generalization.csv):
+                prints both halves' medians side by side, writes OUT/generalization_vs_baseline.csv
+                and OUT/generalization_vs_baseline.png (per room, baseline against this run)
 """
 import json, os, re, statistics, subprocess, sys, time
 
@@ -323,7 +326,8 @@ def plot(out, rows):
                     if pts:
                         ax[pane].plot([p[0] for p in pts], [p[1] for p in pts], "o", color=c, label="half " + h)
                 ax[pane].set(xlabel="seconds", ylabel=ek, title=title)
-                ax[pane].legend(fontsize=7)
+                if ax[pane].get_legend_handles_labels()[0]:
+                    ax[pane].legend(fontsize=7)
 
 
 def main():
@@ -351,8 +355,75 @@ def main():
     benchlib.write_csv(os.path.join(out, "generalization_summary.csv"), summary)
     print_tables(rows, summary)
     plot(out, rows)
+    if opt("--baseline", ""):
+        compare(out, rows, os.path.abspath(opt("--baseline", "")))
     print("wrote", os.path.join(out, "generalization.csv"))
     return 0
+
+
+def read_rows(path):
+    """Rows of a generalization.csv, numbers as floats."""
+    import csv
+    rows = []
+    for r in csv.DictReader(open(path)):
+        for k, v in r.items():
+            try:
+                r[k] = float(v)
+            except (TypeError, ValueError):
+                pass
+        rows.append(r)
+    return rows
+
+
+COMPARED = ["object_rmse", "object_rmse_adjusted", "around_rmse", "light_intensity_error", "light_worst_ratio",
+            "albedo_ours_mae", "albedo_retinex_mae"]
+
+
+def compare(out, rows, baseline_dir):
+    """This run against another build's on the rooms and cameras both measured."""
+    base = {(r["room"], r["camera"]): r for r in read_rows(os.path.join(baseline_dir, "generalization.csv"))}
+    pairs = [(base[(r["room"], r["camera"])], r) for r in rows if (r["room"], r["camera"]) in base]
+    table = []
+    for b, a in pairs:
+        t = {"room": a["room"], "half": a["half"], "camera": a["camera"]}
+        for k in COMPARED:
+            t[k + "_baseline"], t[k] = b.get(k, ""), a.get(k, "")
+        table.append(t)
+    benchlib.write_csv(os.path.join(out, "generalization_vs_baseline.csv"), table)
+    print("\n### Against the baseline (%s)\n" % baseline_dir)
+    print("| half | camera | rooms | " + " | ".join("%s base -> now" % k for k in COMPARED) + " | albedo wins base -> now |")
+    print("|" + "---|" * (len(COMPARED) + 4))
+    for h in ("A", "B"):
+        for kind in ("plain", "cameras"):
+            sel = [t for t in table if t["half"] == h and (t["camera"] == "plain") == (kind == "plain")]
+            if not sel:
+                continue
+            cells = []
+            for k in COMPARED:
+                cells.append("%s -> %s" % (med([{"v": t[k + "_baseline"]} for t in sel], "v"),
+                                           med([{"v": t[k]} for t in sel], "v")))
+            wins = lambda suffix: sum(1 for t in sel if isinstance(t.get("albedo_ours_mae" + suffix), float)
+                                      and isinstance(t.get("albedo_retinex_mae" + suffix), float)
+                                      and t["albedo_ours_mae" + suffix] < t["albedo_retinex_mae" + suffix])
+            print("| %s | %s | %d | %s | %d -> %d |" % (h, kind, len(sel), " | ".join(cells), wins("_baseline"), wins("")))
+    with benchlib.figure(os.path.join(out, "generalization_vs_baseline.png"), 1, 3, figsize=(17, 4.5)) as ax:
+        if ax is None:
+            return
+        x = np.arange(len(table))
+        for pane, (k, title) in enumerate((("object_rmse", "object RMSE"), ("light_worst_ratio", "ours / true light (worst)"),
+                                           ("albedo_ours_mae", "albedo MAE (ours)"))):
+            vals = lambda key: [t[key] if isinstance(t[key], float) else np.nan for t in table]
+            ax[pane].bar(x - 0.2, vals(k + "_baseline"), 0.4, label="baseline")
+            ax[pane].bar(x + 0.2, vals(k), 0.4, label="this run")
+            if k == "albedo_ours_mae":
+                ax[pane].plot(x, vals("albedo_retinex_mae"), "k_", ms=12, label="Retinex (this run)")
+            if k == "light_worst_ratio":
+                ax[pane].axhline(1.0, ls="--", color="grey")
+                ax[pane].set_yscale("log")
+            ax[pane].set_xticks(x)
+            ax[pane].set_xticklabels(["%s%s %s" % (t["room"], t["half"], t["camera"]) for t in table], rotation=60, fontsize=7)
+            ax[pane].set(title=title)
+            ax[pane].legend(fontsize=7)
 
 
 if __name__ == "__main__":
