@@ -739,7 +739,15 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       previousGain[c] = clippedGainApplied[c] = r * clippedGainApplied[c] + (1 - r) * previousGain[c];
     if (stop() || !fit()) return cancelled();
     out.passes = pass + 1;
-    if (pass == passes - 1 || (pass >= 2 && change < opt.passTolerance)) break;
+    if (pass >= 2 && change < opt.passTolerance) break;
+    if (pass == passes - 1) {
+      if (passes > 2)
+        out.notes.push_back("gathered light still changed by " +
+                            std::to_string(int(std::lround(100 * change))) + "% in the last of " +
+                            std::to_string(passes) +
+                            " passes (the walls the camera does not see are uncertain)");
+      break;
+    }
     model.active = true;
     for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
     model.rho.assign(S, Vec3::Zero());
