@@ -730,7 +730,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
   for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
-    const double r = pass >= 1 ? relax : 1.0;
+    const double r = pass >= 2 ? relax : 1.0;
     const double change = relaxGathered(out.gathered, previousGathered, r);
     previousGathered = out.gathered;
     // The mixed Gamma holds the clipped pixels' gain mixed alike: the fit's extra gain is on
