@@ -49,7 +49,7 @@ struct LightingOptions {
   // light behind the camera makes the plain iteration overshoot and swing (Gamma too low, then
   // far too high), and stopping after the second pass kept the overshoot (albedo too dark, the
   // light too bright). Passes stop when the mean Gamma changes by less than passTolerance
-  // (relative), after at most maxPasses.
+  // (relative), after at most maxPasses. Rooms with a sun keep two passes (see estimate.cpp).
   int maxPasses = 5;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
