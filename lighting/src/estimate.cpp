@@ -725,15 +725,16 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   }
   out.gatherSamples = gatherSamples;
   // With a sun, pass 2 gathers its clipped patch apart and fits its bounce with its strength; that
-  // scheme is made for two passes (more drift the sun's strength down: 0.6 of the truth in
-  // AClippedSunPatchsBounceTellsTheSunsStrength), so sun rooms keep two.
+  // scheme is made for two plain passes (mixing pass 1 into it counts the bounce twice, and more
+  // passes drift the sun's strength down: 0.6 of the truth in
+  // AClippedSunPatchsBounceTellsTheSunsStrength), so sun rooms keep them.
   const int passes = K > 0 ? 2 : std::max(2, opt.maxPasses);
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
   for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
-    const double r = pass >= 2 ? relax : 1.0;
+    const double r = pass >= 1 && K == 0 ? relax : 1.0;
     const double change = relaxGathered(out.gathered, previousGathered, r);
     previousGathered = out.gathered;
     // The mixed Gamma holds the clipped pixels' gain mixed alike: the fit's extra gain is on

@@ -42,14 +42,12 @@ struct LightingOptions {
   int directSamples = 16;       // points per light for E_j
   // The fit and the gathered light depend on each other through what the camera does not see
   // (its radiance is predicted from the fitted albedo and lights). The first pass guesses it
-  // from the mean of what the camera sees; later passes predict it from the previous fit, and
-  // from the third on each pass's Gamma is mixed with the previous one's (Gamma <- r Gamma_new +
-  // (1 - r) Gamma_old; the first two differ in kind: a sun's patch is gathered apart from the
-  // second pass on, so mixing them would count its bounce twice): a
+  // from the mean of what the camera sees; later passes predict it from the previous fit, each
+  // pass's Gamma mixed with the previous one's (Gamma <- r Gamma_new + (1 - r) Gamma_old): a
   // light behind the camera makes the plain iteration overshoot and swing (Gamma too low, then
   // far too high), and stopping after the second pass kept the overshoot (albedo too dark, the
   // light too bright). Passes stop when the mean Gamma changes by less than passTolerance
-  // (relative), after at most maxPasses. Rooms with a sun keep two passes (see estimate.cpp).
+  // (relative), after at most maxPasses. Rooms with a sun keep two plain passes (estimate.cpp).
   int maxPasses = 5;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
