@@ -33,6 +33,9 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 fair comparison of two builds on a loaded machine (the clock gives fewer samples
                 when other jobs run); both runs share seed 1 and so their noise pattern
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
+  --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
+                files win for the same room and camera; e.g. two runs that split the rooms) and
+                write the tables, summary and plots of their union to OUT
   --baseline D  also compare with another build's run in folder D (its generalization.csv):
                 prints both halves' medians side by side, writes OUT/generalization_vs_baseline.csv
                 and OUT/generalization_vs_baseline.png (per room, baseline against this run)
@@ -341,6 +344,15 @@ def main():
          "has_response": "inlay-cli response" in help_text + help_err}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     rows = []
+    if opt("--from-csv", ""):
+        merged = {}
+        for path in opt("--from-csv", "").split(","):
+            for r in read_rows(path):
+                r["table"] = r.get("table") in (True, "True", 1.0)
+                merged[(r["room"], r["camera"])] = r
+        rows = [merged[k] for k in sorted(merged)]
+        benchlib.write_csv(os.path.join(out, "generalization.csv"), rows)
+        names = []
     for name in names:
         for kind in kinds:
             vdir = variant(tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind)
