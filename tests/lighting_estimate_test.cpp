@@ -404,6 +404,86 @@ TEST(Lighting, TheLitPatchAgainstItsShadowTellsAClippedSunsStrength) {
   EXPECT_FALSE(sunStrengthFromShadowRatio(photo, r.camera, r.geometry, ImageF(3, 3, 3, 0.f), {}, away, ro).ok());
 }
 
+// A ceiling light behind the camera, pale walls: most of the light on what the camera sees has
+// bounced off the walls it does not see, whose radiance the estimate predicts from its own fit.
+// Two plain passes swung from too little gathered light (pass 1 guesses the unseen walls from
+// the seen ones) to far too much (pass 2 predicts them with the overshooting first fit); the
+// relaxed passes settle on the gathered light the photo implies.
+struct BehindCameraResult {
+  double worstGammaError = 0;  // max over seen surfaces of |mean Gamma / true mean Gamma - 1|
+  double lightRatio = 0;       // estimated / true radiance (green)
+  int passes = 0;
+};
+
+// The true Gamma of a seen pixel: B / rho - L E with the true albedo and light.
+BehindCameraResult estimateBehindCamera(const SyntheticRoom& r, const AreaLight& trueLight,
+                                        const LightingOptions& opt) {
+  AreaLight given = trueLight;
+  given.radiance = Vec3(1, 1, 1);
+  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {given}, {true}, ImageF(), {}, opt);
+  EXPECT_TRUE(est.ok()) << est.error().message();
+  BehindCameraResult out;
+  if (!est.ok()) return out;
+  const RoomTracer rt(r.geometry);
+  for (int sid = 0; sid < int(r.albedo.size()); ++sid) {
+    double trueGamma = 0, estGamma = 0;
+    int n = 0;
+    for (int y = 0; y < r.photo.height; y += 3)
+      for (int x = 0; x < r.photo.width; x += 3) {
+        const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)));
+        if (!h || h->surfaceId != sid) continue;
+        const double le = trueLight.radiance[1] * rt.unitLightIrradianceOverPi(
+                                                      trueLight, h->pointWorld + 1e-5 * h->normalWorld,
+                                                      h->normalWorld, 64, 1);
+        trueGamma += r.photo.at(x, y, 1) / r.albedo[size_t(sid)][1] - le;
+        estGamma += est->gathered.at(x, y, 1);
+        ++n;
+      }
+    if (n < 20) continue;  // not seen
+    std::printf("  %-12s Gamma %.4f true %.4f\n", r.geometry.surfaces[size_t(sid)].name.c_str(),
+                estGamma / n, trueGamma / n);
+    out.worstGammaError = std::max(out.worstGammaError, std::abs(estGamma / trueGamma - 1));
+  }
+  out.lightRatio = est->lights[0].radiance[1] / trueLight.radiance[1];
+  out.passes = est->passes;
+  for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
+  for (float v : est->albedo.data) EXPECT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  return out;
+}
+
+TEST(Lighting, ALightBehindTheCameraGathersWhatThePhotoImplies) {
+  SyntheticRoom r = emptyRoom();
+  r.albedo = {Vec3(0.3, 0.3, 0.3), Vec3(0.8, 0.8, 0.8), Vec3(0.78, 0.78, 0.78),
+              Vec3(0.78, 0.78, 0.78), Vec3(0.78, 0.78, 0.78), Vec3(0.78, 0.78, 0.78)};
+  AreaLight light;
+  const double y = 2.699;  // between the camera (z = 0) and the wall behind it (z = 0.5)
+  light.cornersWorld = {Vec3(-0.3, y, 0.05), Vec3(-0.3, y, 0.4), Vec3(0.3, y, 0.4), Vec3(0.3, y, 0.05)};
+  if (light.normal().y() > 0) std::swap(light.cornersWorld[1], light.cornersWorld[3]);
+  light.radiance = Vec3(20, 20, 20);
+  ASSERT_LT(r.camera.depthOf(light.centre()), 0);  // behind the camera
+  r.photo = renderRoom(r, {light}, {}, 48);
+  LightingOptions opt;
+  opt.gatherSamples = 64;
+  opt.gatherStride = 2;
+  opt.objective = false;
+  const BehindCameraResult relaxed = estimateBehindCamera(r, light, opt);
+  std::printf("relaxed: %d passes, light x%.3f, worst Gamma error %.3f\n", relaxed.passes,
+              relaxed.lightRatio, relaxed.worstGammaError);
+  LightingOptions twoPasses = opt;  // what the estimate did before
+  twoPasses.maxPasses = 2;
+  twoPasses.passRelaxation = 1;
+  const BehindCameraResult plain = estimateBehindCamera(r, light, twoPasses);
+  std::printf("two plain passes: light x%.3f, worst Gamma error %.3f\n", plain.lightRatio,
+              plain.worstGammaError);
+  EXPECT_GT(relaxed.passes, 2);
+  EXPECT_LT(relaxed.worstGammaError, 0.15);  // two plain passes: 0.26 (the wall facing the camera)
+  EXPECT_LT(relaxed.worstGammaError, plain.worstGammaError);
+  // Known weakness (docs/generalization.md): the intensity itself stays poorly determined here
+  // (about 2.4 times too bright in both), as E and Gamma have nearly the same shape on what the
+  // camera sees; only that it is finite is asserted.
+  EXPECT_TRUE(std::isfinite(relaxed.lightRatio) && relaxed.lightRatio > 0);
+}
+
 TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   const SyntheticRoom r = makeRoom(Vec3(4, 4, 4), 4);
   auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");

@@ -76,7 +76,8 @@ Render options:
                           objects do not change are revisited only every fourth wave)
   --initial-lights        render with the lights as estimated, before their refinement
   --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
-                          the photo's linear units) and the refinement's objective against time
+                          the photo's linear units), the refinement's objective against time
+                          and the seconds of each stage of the preparation
   --replace-lights FILE   diagnostics: render with the area lights of FILE (its "refined" list,
                           or "lights"; the format --lights-json writes) instead of the estimate's
   --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
@@ -332,7 +333,10 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
     for (const auto& s : suns) a.push_back({{"rgb", {s.irradianceOverPi.x(), s.irradianceOverPi.y(), s.irradianceOverPi.z()}}});
     return a;
   };
+  json stages = json::array();
+  for (const auto& [stage, seconds] : ps.stageSeconds) stages.push_back({stage, seconds});
   return {{"initial", lightsJsonOf(ps.initialLights)}, {"refined", lightsJsonOf(ps.lighting.lights)},
+          {"stage_seconds", stages},
           {"suns_initial", sunsJson(ps.initialSuns)}, {"suns_refined", sunsJson(ps.lighting.suns)},
           {"refinement", {{"ran", !r.history.empty()}, {"seconds", r.seconds}, {"pixels", r.pixels},
                           {"evaluations", r.evaluations}, {"initial_objective", r.initialObjective},

@@ -14,6 +14,7 @@
 #include <array>
 #include <chrono>
 #include <functional>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
@@ -115,6 +116,22 @@ std::vector<Vec3> predictedBeamRadiance(const ImageF& photo, const std::vector<u
     out[idx] = b.allFinite() && withSuns ? Vec3(predicted.cwiseMax(b)) : predicted;
   }
   return out;
+}
+
+// Mixes the new gathered light into the previous pass's (gathered <- r gathered + (1 - r)
+// previous) and returns the relative change of its mean from the previous one (infinity when
+// there is none).
+double relaxGathered(ImageF& gathered, const ImageF& previous, double r) {
+  if (previous.data.size() != gathered.data.size() || previous.data.empty())
+    return std::numeric_limits<double>::infinity();
+  double sumNew = 0, sumOld = 0;
+  for (size_t i = 0; i < gathered.data.size(); ++i) {
+    const double mixed = r * double(gathered.data[i]) + (1 - r) * double(previous.data[i]);
+    gathered.data[i] = float(std::isfinite(mixed) ? mixed : previous.data[i]);
+    sumNew += gathered.data[i];
+    sumOld += previous.data[i];
+  }
+  return sumOld > 0 ? std::abs(sumNew - sumOld) / sumOld : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -764,11 +781,34 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     gatherSamples = gatherSamplesForNoise(tracer, pilot, opt.seed, radianceAt, go);
   }
   out.gatherSamples = gatherSamples;
-  const int passes = 2;
+  // With a sun, pass 2 gathers its clipped patch apart and fits its bounce with its strength; that
+  // scheme is made for two plain passes (mixing pass 1 into it counts the bounce twice, and more
+  // passes drift the sun's strength down: 0.6 of the truth in
+  // AClippedSunPatchsBounceTellsTheSunsStrength), so sun rooms keep them.
+  const int passes = K > 0 ? 2 : std::max(2, opt.maxPasses);
+  const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
+  ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
+  std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
   for (int pass = 0; pass < passes; ++pass) {
     gatherAll();
+    const double r = pass >= 1 && K == 0 ? relax : 1.0;
+    const double change = relaxGathered(out.gathered, previousGathered, r);
+    previousGathered = out.gathered;
+    // The mixed Gamma holds the clipped pixels' gain mixed alike: the fit's extra gain is on
+    // top of that.
+    for (size_t c = 0; c < 3; ++c)
+      previousGain[c] = clippedGainApplied[c] = r * clippedGainApplied[c] + (1 - r) * previousGain[c];
     if (stop() || !fit()) return cancelled();
-    if (pass == passes - 1) break;
+    out.passes = pass + 1;
+    if (pass >= 2 && change < opt.passTolerance) break;
+    if (pass == passes - 1) {
+      if (passes > 2)
+        out.notes.push_back("gathered light still changed by " +
+                            std::to_string(int(std::lround(100 * change))) + "% in the last of " +
+                            std::to_string(passes) +
+                            " passes (the walls the camera does not see are uncertain)");
+      break;
+    }
     model.active = true;
     for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
     model.rho.assign(S, Vec3::Zero());

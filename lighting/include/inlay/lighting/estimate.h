@@ -40,6 +40,17 @@ struct LightingOptions {
   int patchSamples = 64;
   int patchSweeps = 3;
   int directSamples = 16;       // points per light for E_j
+  // The fit and the gathered light depend on each other through what the camera does not see
+  // (its radiance is predicted from the fitted albedo and lights). The first pass guesses it
+  // from the mean of what the camera sees; later passes predict it from the previous fit, each
+  // pass's Gamma mixed with the previous one's (Gamma <- r Gamma_new + (1 - r) Gamma_old): a
+  // light behind the camera makes the plain iteration overshoot and swing (Gamma too low, then
+  // far too high), and stopping after the second pass kept the overshoot (albedo too dark, the
+  // light too bright). Passes stop when the mean Gamma changes by less than passTolerance
+  // (relative), after at most maxPasses. Rooms with a sun keep two plain passes (estimate.cpp).
+  int maxPasses = 5;
+  double passRelaxation = 0.5;
+  double passTolerance = 0.03;
   int fitPixels = 6000;         // pixels sampled for the fit
   double saturatedAbove = 0.98; // linear value treated as clipped
   // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
@@ -78,6 +89,7 @@ struct LightingEstimate {
   std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
   double fitRmsLog = 0;  // robust fit residual (log space)
   int gatherSamples = 0; // rays per gathered pixel used
+  int passes = 0;        // gather-and-fit passes run (LightingOptions::maxPasses)
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
