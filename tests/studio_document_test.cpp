@@ -62,6 +62,7 @@ class StudioDocumentTest : public QObject {
   void sinkContextCompositesLikeTheFullScene();
   void insertAndDeleteAreUndoable();
   void markEditsValidateMergeAndRestartPreparation();
+  void cameraResponseIsShownAndOneUndoStep();
 };
 
 void StudioDocumentTest::srgbEncodingHasKnownValues() {
@@ -135,6 +136,44 @@ void StudioDocumentTest::sinkCompositeOfUntouchedSceneIsThePhoto() {
   const std::optional<CompositeImage> obj = sink.take();
   QVERIFY(obj);
   QCOMPARE(qRed(obj->srgb8.pixel(0, 0)), 255);
+}
+
+// The sink encodes the composite through the photo's camera response (untouched pixels show the
+// photo's own codes), and choosing a response is one undo step that prepares again.
+void StudioDocumentTest::cameraResponseIsShownAndOneUndoStep() {
+  CompositeSink sink([] {});
+  PreparedScene scene;
+  scene.response = CameraResponse::toeShoulder({0.7, 0.3, 20});
+  scene.photo.linearRgb = ImageF(8, 6, 3);
+  for (size_t i = 0; i < scene.photo.linearRgb.data.size(); ++i)
+    scene.photo.linearRgb.data[i] = scene.response.table8()[(i * 41) % 256];
+  sink.setContext(CompositeSink::compositeContextOf(scene), 1);
+  const ImageF radiance(8, 6, 3, 0.7f);
+  sink.onFrame(makeFrame(1, radiance, radiance, 0.f));
+  const std::optional<CompositeImage> got = sink.take();
+  QVERIFY(got);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) {
+      const size_t i = (size_t(y) * 8 + size_t(x)) * 3;
+      QCOMPARE(qRed(got->srgb8.pixel(x, y)), int((i * 41) % 256));
+      QCOMPARE(qBlue(got->srgb8.pixel(x, y)), int(((i + 2) * 41) % 256));
+    }
+
+  const QString dir = exampleDir();
+  if (dir.isEmpty()) QSKIP("resources/example absent");
+  Document doc;
+  doc.newFromPhoto(dir + QStringLiteral("/photo.png"));
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(120000));
+  QVERIFY2(doc.isReady(), qPrintable(doc.prepareError()));
+  doc.undoStack()->clear();
+  QString reason;
+  QVERIFY2(doc.setCameraResponse({ResponseKeys::Mode::Linear}, &reason), qPrintable(reason));
+  QCOMPARE(doc.scene().camera.response.mode, ResponseKeys::Mode::Linear);
+  QCOMPARE(doc.undoStack()->count(), 1);
+  QTRY_VERIFY_WITH_TIMEOUT(doc.state() != Document::State::Preparing, waitMs(120000));
+  QVERIFY(doc.prepared() && doc.prepared()->response == CameraResponse::linear());
+  doc.undoStack()->undo();
+  QCOMPARE(doc.scene().camera.response.mode, ResponseKeys::Mode::Auto);
 }
 
 void StudioDocumentTest::dragMergesAndReturningIsObsolete() {

@@ -96,6 +96,7 @@ void ResponseDock::refresh() {
   QString text = QString::fromStdString(prepared->response.describe());
   if (const auto& e = prepared->responseEstimate) {
     text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
+    if (e->determined && e->decision != "fitted") text += QStringLiteral("\n") + QString::fromStdString(e->decision);
     for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);
   }
   info_->setText(text);
