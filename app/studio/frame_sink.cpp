@@ -12,6 +12,7 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
   context->doc.photoResolved = scene.doc.photoResolved;
   context->doc.render = scene.doc.render;
   context->photo = scene.photo;
+  context->photoNoise = scene.photoNoise;
   context->camera = scene.camera;
   context->box = scene.box;
   return context;
