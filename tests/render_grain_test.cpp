@@ -98,7 +98,7 @@ TEST(Grain, RecoversAffineNoiseLevelFunction) {
   const auto sigma = [](double I) { return 0.004 + 0.02 * I; };
   const PhotoNoise m = measurePhotoNoise(noisy(cleanScene(), sigma));
   expectRecovers(m, sigma, 0.10);
-  EXPECT_LT(m.grainWidthPx, 0.3);
+  EXPECT_LT(m.grainWidthPx, 0.37);  // neighbours' correlation below 0.05: white
   EXPECT_LT(m.channelCorrelation, 0.1);
 }
 
@@ -208,7 +208,7 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
       for (int c = 0; c < 3; ++c) {
         const bool object = f.mask.at(x, y) > 0, changed = object || f.with.at(x, y, c) != f.without.at(x, y, c);
         if (!changed) {
-          ASSERT_EQ(0, std::memcmp(&out.at(x, y, c), &photo.at(x, y, c), sizeof(float))) << x << "," << y;
+          ASSERT_EQ(0, std::memcmp(out.pixel(x, y) + c, photo.pixel(x, y) + c, sizeof(float))) << x << "," << y;
         } else if (object) {
           const double d = out.at(x, y, c) - 0.5;
           s += d, ss += d * d, cnt += 1;

@@ -17,6 +17,8 @@ namespace {
 
 constexpr double kMaxGrainWidthPx = 3.0;
 constexpr int kFields = 4;  // one shared by the channels, one per channel
+// Noise below this fraction of the intensity is a noise-free photo's float round-off.
+constexpr double kNoiseFreeRelative = 1e-5;
 
 // ---- the grain field: hashed white noise, filtered ------------------------------------------
 
@@ -192,7 +194,17 @@ struct Bin {
   double intensity = 0;
   double residualQuantile = 0;  // the envelope quantile of the residual variances
   std::vector<size_t> flat;     // patches at or below it
+  std::vector<size_t> members;  // every patch of the bin
 };
+
+// Patches whose residual variance is at most `factor` times what noise alone gives them
+// (`expected`): nearly every noise-only patch (so the set is not biased toward quiet noise, as
+// the envelope's lowest quarter is), few textured ones.
+void keepNoiseOnly(const std::vector<Patch>& patches, int c, double expected, double factor, Bin& bin) {
+  bin.flat.clear();
+  for (size_t m : bin.members)
+    if (patches[m].residual[size_t(c)] <= factor * expected) bin.flat.push_back(m);
+}
 
 std::vector<Bin> envelopeBins(const std::vector<Patch>& patches, int c, const NoiseMeasureOptions& opt) {
   std::vector<size_t> idx;
@@ -217,6 +229,7 @@ std::vector<Bin> envelopeBins(const std::vector<Patch>& patches, int c, const No
     bin.residualQuantile = v[q];
     for (size_t m : members)
       if (patches[m].residual[size_t(c)] <= bin.residualQuantile) bin.flat.push_back(m);
+    bin.members = std::move(members);
     bins.push_back(std::move(bin));
   }
   return bins;
@@ -319,16 +332,33 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
     out.notes.push_back("too few unclipped patches to measure the noise");
     return out;
   }
-  // The grain's width from the flat patches' high-frequency share, then the chi-square
-  // correction of the envelope quantile for a noise-only patch of that grain.
-  out.grainWidthPx = widthForRatio(flatHighFrequencyRatio(patches, bins), P);
-  const PatchResponse response = patchResponse(out.grainWidthPx, P);
-  const double quantileFactor = chiSquareQuantileOverDof(o.envelopeQuantile, response.dof);
-  for (int c = 0; c < 3; ++c) {
-    for (const Bin& b : bins[size_t(c)]) {
-      const double var = b.residualQuantile / (response.residualFactor * quantileFactor);
-      out.levels[size_t(c)].push_back({b.intensity, std::isfinite(var) ? std::sqrt(std::max(0.0, var)) : 0.0});
-      out.patchesUsed[size_t(c)] += int(b.flat.size());
+  // Twice: the grain's width from the flat patches' high-frequency share, then each bin's noise
+  // variance from its envelope quantile (corrected by the chi-square quantile of a noise-only
+  // patch of that grain); the second time the flat patches are every patch within a factor of
+  // the first estimate's noise (the envelope's lowest quarter favours quiet noise).
+  for (int pass = 0; pass < 2; ++pass) {
+    out.grainWidthPx = widthForRatio(flatHighFrequencyRatio(patches, bins), P);
+    const PatchResponse response = patchResponse(out.grainWidthPx, P);
+    const double quantileFactor = chiSquareQuantileOverDof(o.envelopeQuantile, response.dof);
+    const double noiseOnlyFactor = 1 + 4 * std::sqrt(2 / response.dof);  // 4 sd above the mean
+    for (int c = 0; c < 3; ++c) {
+      out.levels[size_t(c)].clear();
+      out.patchesUsed[size_t(c)] = 0;
+      for (Bin& b : bins[size_t(c)]) {
+        // First pass: the envelope quantile; second: the mean over the noise-only patches (far
+        // less spread, and they hold nearly every noise-only patch).
+        double var = b.residualQuantile / (response.residualFactor * quantileFactor);
+        if (pass == 1 && !b.flat.empty()) {
+          double sum = 0;
+          for (size_t m : b.flat) sum += patches[m].residual[size_t(c)];
+          var = sum / double(b.flat.size()) / response.residualFactor;
+        }
+        if (!std::isfinite(var) || var <= kNoiseFreeRelative * kNoiseFreeRelative * b.intensity * b.intensity)
+          var = 0;  // float round-off of a noise-free photo
+        out.levels[size_t(c)].push_back({b.intensity, std::sqrt(std::max(0.0, var))});
+        keepNoiseOnly(patches, c, var * response.residualFactor, noiseOnlyFactor, b);
+        out.patchesUsed[size_t(c)] += int(b.flat.size());
+      }
     }
   }
   out.channelCorrelation = channelCorrelationOf(img, patches, bins, P, lo, hi);
