@@ -83,6 +83,15 @@ ImageF noisy(const ImageF& clean, const std::function<double(double)>& sigma, do
   return im;
 }
 
+// addGrain on a frame of these layers (no render noise unless given: sRGB standard error).
+void addGrainTo(ImageF& composite, const ImageF& photo, const ImageF& with, const ImageF& without,
+                const ImageF& mask, const PhotoNoise& noise, uint32_t seed, const ImageF& renderNoise = {}) {
+  RenderFrame f;
+  f.width = with.width, f.height = with.height;
+  f.withObjects = with, f.withoutObjects = without, f.mask = mask, f.noise = renderNoise;
+  addGrain(composite, photo, f, noise, seed);
+}
+
 // The measured sigma against the true one at intensities across the data, within `tol`.
 void expectRecovers(const PhotoNoise& m, const std::function<double(double)>& sigma, double tol) {
   ASSERT_FALSE(m.empty());
@@ -126,7 +135,7 @@ TEST(Grain, NoNoiseNoGrain) {
   ImageF with(kW, kH, 3, 0.3f), without(kW, kH, 3, 0.2f), mask(kW, kH, 1, 0.5f);
   const ImageF composite = differentialComposite(clean, with, without, mask);
   ImageF grained = composite;
-  addGrain(grained, clean, with, without, mask, m, 1);
+  addGrainTo(grained, clean, with, without, mask, m, 1);
   EXPECT_EQ(0, std::memcmp(grained.data.data(), composite.data.data(), composite.data.size() * sizeof(float)));
 }
 
@@ -197,9 +206,9 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
   const Frame f = objectShadowBounce(photo);
   const ImageF composite = differentialComposite(f.photo, f.with, f.without, f.mask);
   ImageF out = composite;
-  addGrain(out, f.photo, f.with, f.without, f.mask, n, 3);
+  addGrainTo(out, f.photo, f.with, f.without, f.mask, n, 3);
   ImageF again = composite;
-  addGrain(again, f.photo, f.with, f.without, f.mask, n, 3);
+  addGrainTo(again, f.photo, f.with, f.without, f.mask, n, 3);
   EXPECT_EQ(0, std::memcmp(out.data.data(), again.data.data(), out.data.size() * sizeof(float)));
 
   double s = 0, ss = 0, cnt = 0;
@@ -232,12 +241,33 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
   EXPECT_NEAR(added / expected, 1.0, 0.1);
 }
 
+// A render not yet converged carries noise of its own: the grain makes up only the rest.
+TEST(Grain, RenderNoiseCountsTowardTheGrain) {
+  const Frame f = objectShadowBounce(cleanScene());
+  const PhotoNoise n = constantNoise(0.02);
+  const ImageF clean = differentialComposite(f.photo, f.with, f.without, f.mask);
+  // The session's sRGB standard error for a linear one of 0.012 at the object's value 0.5.
+  const double slope = 1.055 / 2.4 * std::pow(0.5, 1.0 / 2.4 - 1.0);
+  ImageF renderNoise(kW, kH, 1, float(0.012 * slope)), tooNoisy(kW, kH, 1, float(0.05 * slope));
+  ImageF partial = clean, none = clean;
+  addGrainTo(partial, f.photo, f.with, f.without, f.mask, n, 4, renderNoise);
+  addGrainTo(none, f.photo, f.with, f.without, f.mask, n, 4, tooNoisy);
+  double ss = 0, cnt = 0;
+  for (int y = 100; y < 300; ++y)
+    for (int x = 100; x < 200; ++x) {
+      const double d = partial.at(x, y, 0) - 0.5;
+      ss += d * d, cnt += 1;
+      ASSERT_EQ(none.at(x, y, 0), clean.at(x, y, 0));
+    }
+  EXPECT_NEAR(std::sqrt(ss / cnt) / std::sqrt(0.02 * 0.02 - 0.012 * 0.012), 1.0, 0.05);
+}
+
 TEST(Grain, DifferentSeedsDifferentGrain) {
   const Frame f = objectShadowBounce(cleanScene());
   const PhotoNoise n = constantNoise(0.02, 0.8, 0.5);
   ImageF a = differentialComposite(f.photo, f.with, f.without, f.mask), b = a;
-  addGrain(a, f.photo, f.with, f.without, f.mask, n, 1);
-  addGrain(b, f.photo, f.with, f.without, f.mask, n, 2);
+  addGrainTo(a, f.photo, f.with, f.without, f.mask, n, 1);
+  addGrainTo(b, f.photo, f.with, f.without, f.mask, n, 2);
   double diff = 0;
   for (int y = 100; y < 300; ++y) diff += std::abs(a.at(150, y, 0) - b.at(150, y, 0));
   EXPECT_GT(diff / 200, 0.01);
@@ -284,7 +314,7 @@ TEST(Grain, StiffInputsGiveFiniteResults) {
   for (float& v : f.without.data) v *= 1e30f;
   f.with.at(150, 150, 0) = NAN;
   ImageF out = differentialComposite(f.photo, f.with, f.without, f.mask);
-  addGrain(out, f.photo, f.with, f.without, f.mask, hm, 1);
+  addGrainTo(out, f.photo, f.with, f.without, f.mask, hm, 1);
   expectFinite(out);
   // Tiny images: no model, no crash.
   for (int s : {1, 3, 7, 8, 9}) {
@@ -293,7 +323,7 @@ TEST(Grain, StiffInputsGiveFiniteResults) {
     EXPECT_TRUE(m.empty());
     ImageF with(s, s, 3, 0.6f), without(s, s, 3, 0.5f), mask(s, s, 1, 1.f);
     ImageF c = differentialComposite(tiny, with, without, mask);
-    addGrain(c, tiny, with, without, mask, constantNoise(0.1, 2.0, 0.5), 1);
+    addGrainTo(c, tiny, with, without, mask, constantNoise(0.1, 2.0, 0.5), 1);
     expectFinite(c);
   }
 }

@@ -447,33 +447,49 @@ ImageF grainFields(const PhotoNoise& noise, const Box& box, uint32_t seed) {
   return out;
 }
 
+// The render's own standard error at (x, y) in linear units: RenderFrame::noise is in sRGB,
+// mapped by the slope of the sRGB encoding at the pixel's mean with-object value (session.cpp's
+// pixelError); the same slope takes it back. 0 where non-finite.
+double renderSigmaLinear(const RenderFrame& frame, int x, int y) {
+  double meanWith = 0;
+  for (int c = 0; c < 3; ++c) meanWith += frame.withObjects.at(x, y, c) / 3.0;
+  double slope = 12.92;
+  if (meanWith > 0.0031308) slope = 1.055 / 2.4 * std::pow(std::min(meanWith, 1.0), 1.0 / 2.4 - 1.0);
+  const double s = frame.noise.at(x, y, 0) / slope;
+  return std::isfinite(s) && s > 0 ? s : 0.0;
+}
+
 }  // namespace
 
-void addGrain(ImageF& composite, const ImageF& photoLinear, const ImageF& withObjects,
-              const ImageF& withoutObjects, const ImageF& mask, const PhotoNoise& noise, uint32_t seed) {
+void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& frame,
+              const PhotoNoise& noise, uint32_t seed) {
+  const ImageF &with = frame.withObjects, &without = frame.withoutObjects, &mask = frame.mask;
   const int W = composite.width, H = composite.height;
   INLAY_CHECK(photoLinear.width == W && photoLinear.height == H && photoLinear.channels >= 3);
-  INLAY_CHECK(withObjects.width == W && withObjects.height == H && withObjects.channels == 3);
-  INLAY_CHECK(withoutObjects.width == W && withoutObjects.height == H && withoutObjects.channels == 3);
+  INLAY_CHECK(with.width == W && with.height == H && with.channels == 3);
+  INLAY_CHECK(without.width == W && without.height == H && without.channels == 3);
   INLAY_CHECK(mask.empty() || (mask.width == W && mask.height == H && mask.channels >= 1));
+  const bool renderNoise = frame.noise.width == W && frame.noise.height == H && frame.noise.channels >= 1;
   if (noise.empty() || composite.channels < 3) return;
-  const Box box = changedBox(withObjects, withoutObjects, mask);
+  const Box box = changedBox(with, without, mask);
   if (box.empty()) return;
   const ImageF grain = grainFields(noise, box, seed);
   parallelFor(tbb::blocked_range<int>(box.y0, box.y1), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = box.x0; x < box.x1; ++x)
+      for (int x = box.x0; x < box.x1; ++x) {
+        const double sRender = renderNoise ? renderSigmaLinear(frame, x, y) : 0.0;
         for (int c = 0; c < 3; ++c) {
-          if (!changedAt(withObjects, withoutObjects, mask, x, y, c)) continue;
+          if (!changedAt(with, without, mask, x, y, c)) continue;
           const float m = mask.empty() ? 0.f : mask.at(x, y, 0);
           const double mm = std::isfinite(m) ? std::clamp(double(m), 0.0, 1.0) : 0.0;
           float& v = composite.at(x, y, c);
           const double sOut = noise.sigma(c, v), sPhoto = noise.sigma(c, photoLinear.at(x, y, c));
-          const double missing = sOut * sOut - (1 - mm) * (1 - mm) * sPhoto * sPhoto;
+          const double missing = sOut * sOut - (1 - mm) * (1 - mm) * sPhoto * sPhoto - sRender * sRender;
           if (!(missing > 0) || !std::isfinite(missing)) continue;
           const double g = double(v) + std::sqrt(missing) * grain.at(x - box.x0, y - box.y0, c);
           if (std::isfinite(g)) v = float(std::max(0.0, g));
         }
+      }
   });
 }
 

@@ -4,15 +4,20 @@ through random cameras (shot noise, tone curve, JPEG) and on the dark, noisy JPE
 
 Per room of ../shared/scenes-train and camera seed, camera_variants.py re-photographs the room
 (OUT/variants/<room>_s<seed>; t09 is also run as it is, its own noisy JPEG). The harness writes
-the assisted scene file; inlay-cli renders it twice with the same seed and budget: as is (grain
-on, the default) and with --no-grain. Per composite:
+the assisted scene file; inlay-cli renders it once with --layers: the PNG is the composite with
+grain (the default), the layers' composite is the same render without grain (the layers stay
+clean), encoded to 8-bit sRGB here as inlay-cli encodes a PNG (its half floats can move a value
+by one code at most). So on and off share their render and its Monte-Carlo noise: what differs
+is the grain alone. Per composite:
   hf_object      the high-frequency noise of the composite inside the object's mask (eroded 2 px):
                  Immerkaer's 3 x 3 second difference, median absolute response as a Gaussian's
                  standard deviation, sRGB [0,1], mean over R, G, B;
   hf_truth       the same of truth.png (the true photo with the object, which shares the
                  photo's noise field);
   hf_ratio       hf_object / hf_truth: 1 is grain like the photo's, below 1 an object cleaner
-                 than the photo around it;
+                 than the photo around it; the render's own noise counts in it (spp, converged:
+                 the render's samples per pixel on average, and whether every pixel met the noise
+                 target);
   object_rmse, around_rmse, around_rmse_do_nothing   the harness's scores.
 Halves: A = odd rooms (where any setting would be chosen), B = even rooms (reported). The
 summary prints the median hf_ratio and around_rmse per half, grain on and off.
@@ -20,9 +25,9 @@ summary prints the median hf_ratio and around_rmse per half, grain on and off.
 Writes OUT/grain.csv, OUT/grain.png.
 
 usage: bench_grain.py INLAY_CLI [--out DIR] [--rooms t03,t07,t11,t06,t08,t14] [--seeds 1,2]
-                      [--seconds 20] [--no-t09]
+                      [--seconds 60] [--no-t09]
 """
-import json, os, statistics, subprocess, sys, time
+import json, os, re, statistics, subprocess, sys, time
 
 import cv2
 import numpy as np
@@ -62,29 +67,61 @@ def variant(shared, room, seed, out):
     return dst
 
 
-def render_and_score(cli, harness, scene_dir, work, seconds, grain):
-    """One render (grain on or off) of the harness's assisted scene, scored."""
-    sf = os.path.join(work, "scene.json")
-    comp = os.path.join(work, "composite_%s.png" % ("on" if grain else "off"))
-    py = sys.executable
-    subprocess.run([py, harness, "scene", scene_dir, sf, "--seconds", str(seconds)], check=True)
-    t0 = time.time()
-    cmd = [cli, "render", sf, "-o", comp, "--quiet"] + ([] if grain else ["--no-grain"])
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        print(os.path.basename(scene_dir), "failed:", p.stderr.strip()[-300:])
-        return None
-    score = json.loads(subprocess.run([py, harness, "score", scene_dir, comp], capture_output=True,
-                                      text=True, check=True).stdout)
-    mask = cv2.imread(os.path.join(scene_dir, "object_mask.png"), cv2.IMREAD_GRAYSCALE) >= 128
-    hf_obj, n = hf_noise(read8(comp), mask)
-    hf_truth, _ = hf_noise(read8(os.path.join(scene_dir, "truth.png")), mask)
-    return {"wall_s": round(wall, 1), "hf_object": round(hf_obj, 5), "hf_truth": round(hf_truth, 5),
+def srgb8(linear):
+    """inlay-cli's PNG encoding of a linear image: sRGB, clamped, rounded to 8 bits, in [0,1]."""
+    x = np.clip(linear, 0, 1)
+    v = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.power(x, 1 / 2.4) - 0.055)
+    return np.round(v * 255) / 255
+
+
+def clean_composite(layers_exr):
+    import OpenImageIO as oiio
+    inp = oiio.ImageInput.open(layers_exr)
+    try:
+        for sub in range(64):
+            if not inp.seek_subimage(sub, 0):
+                break
+            if inp.spec().get_string_attribute("name") == "composite":
+                return srgb8(np.asarray(inp.read_image(oiio.FLOAT))[:, :, :3].astype(np.float64))
+    finally:
+        inp.close()
+    raise SystemExit("no composite layer in " + layers_exr)
+
+
+def scores_of(image, comp_path, scene_dir, harness, mask, hf_truth):
+    score = json.loads(subprocess.run([sys.executable, harness, "score", scene_dir, comp_path],
+                                      capture_output=True, text=True, check=True).stdout)
+    hf_obj, n = hf_noise(image, mask)
+    return {"hf_object": round(hf_obj, 5), "hf_truth": round(hf_truth, 5),
             "hf_ratio": round(hf_obj / hf_truth, 3) if hf_truth > 0 else float("nan"),
             "object_pixels_inner": n, "object_rmse": round(score["object_rmse"], 4),
             "around_rmse": round(score["around_rmse"], 5),
             "around_rmse_do_nothing": round(score["around_rmse_do_nothing"], 5)}
+
+
+def render_and_score(cli, harness, scene_dir, work, seconds):
+    """One render of the harness's assisted scene; its scores with grain (on) and without (off)."""
+    sf, on, exr = (os.path.join(work, n) for n in ("scene.json", "composite_on.png", "layers.exr"))
+    subprocess.run([sys.executable, harness, "scene", scene_dir, sf, "--seconds", str(seconds)], check=True)
+    t0 = time.time()
+    p = subprocess.run([cli, "render", sf, "-o", on, "--layers", exr], capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        print(os.path.basename(scene_dir), "failed:", p.stderr.strip()[-300:])
+        return None
+    last = [l for l in p.stderr.splitlines() if "wrote" in l][-1]
+    m = re.search(r"([0-9.]+) on average", last)
+    common = {"wall_s": round(wall, 1), "spp": float(m.group(1)) if m else float("nan"),
+              "converged": "converged" in last}
+    off = os.path.join(work, "composite_off.png")
+    off_image = clean_composite(exr)
+    cv2.imwrite(off, np.round(off_image[:, :, ::-1] * 255).astype(np.uint8))
+    mask = cv2.imread(os.path.join(scene_dir, "object_mask.png"), cv2.IMREAD_GRAYSCALE) >= 128
+    hf_truth, _ = hf_noise(read8(os.path.join(scene_dir, "truth.png")), mask)
+    res = {}
+    for grain, image, path in (("on", read8(on), on), ("off", off_image, off)):
+        res[grain] = dict(common, **scores_of(image, path, scene_dir, harness, mask, hf_truth))
+    return res
 
 
 def summary(rows):
@@ -132,7 +169,7 @@ def main():
     harness = os.path.join(shared, "tools", "harness.py")
     rooms = opt("--rooms", "t03,t07,t11,t06,t08,t14").split(",")
     seeds = [int(s) for s in opt("--seeds", "1,2").split(",")]
-    seconds = float(opt("--seconds", "20"))
+    seconds = float(opt("--seconds", "60"))
     jobs = [(r, s) for r in rooms for s in seeds]
     if "--no-t09" not in sys.argv:
         jobs.append(("t09", 0))
@@ -145,13 +182,13 @@ def main():
         cam = os.path.join(scene_dir, "camera_variant.json")
         cam = json.load(open(cam)) if os.path.isfile(cam) else {}
         half = "t09" if seed == 0 else ("A" if int(room[1:]) % 2 else "B")
-        for grain in (True, False):
-            res = render_and_score(cli, harness, scene_dir, work, seconds, grain)
+        res = render_and_score(cli, harness, scene_dir, work, seconds)
+        for grain in ("on", "off"):
             if res is None:
                 continue
-            row = {"scene": name, "half": half, "grain": "on" if grain else "off",
+            row = {"scene": name, "half": half, "grain": grain,
                    "camera_noise": round(cam.get("noise", float("nan")), 4), "jpeg_quality": cam.get("jpeg_quality", "")}
-            row.update(res)
+            row.update(res[grain])
             rows.append(row)
             print(json.dumps(row), flush=True)
     if not rows:

@@ -250,7 +250,7 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
                    const PhotoNoise* grain, uint32_t grainSeed) {
   ImageF c = differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask);
-  if (grain) addGrain(c, photoLinear, frame.withObjects, frame.withoutObjects, frame.mask, *grain, grainSeed);
+  if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed);
   applyExposure(c, exposureStops);
   return c;
 }

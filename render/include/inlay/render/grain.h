@@ -12,6 +12,7 @@
 #pragma once
 
 #include "inlay/modeling/image.h"
+#include "inlay/render/session.h"
 
 #include <array>
 #include <cstdint>
@@ -67,20 +68,22 @@ struct NoiseMeasureOptions {
 PhotoNoise measurePhotoNoise(const ImageF& linear, const NoiseMeasureOptions& options = {});
 
 // Grain for the pixels the objects change, in place on `composite` (the differential composite
-// of photoLinear, withObjects, withoutObjects and mask, in the photo's linear units, before
-// exposure). A channel of a pixel is changed where the mask is not 0 or withObjects differs from
-// withoutObjects (differentialComposite's rule); untouched channels keep their value bit for
-// bit. A changed channel of mask m and composite value v gets the noise the photo lacks there:
-//   sqrt(max(0, sigma^2(v) - (1 - m)^2 sigma^2(photo)))
+// of photoLinear and the frame's withObjects, withoutObjects and mask, in the photo's linear
+// units, before exposure). A channel of a pixel is changed where the mask is not 0 or
+// withObjects differs from withoutObjects (differentialComposite's rule); untouched channels
+// keep their value bit for bit. A changed channel of mask m and composite value v gets the noise
+// it lacks there:
+//   sqrt(max(0, sigma^2(v) - (1 - m)^2 sigma^2(photo) - s_render^2))
 // times a unit-variance grain field shaped like the photo's (PhotoNoise::grainWidthPx and
-// channelCorrelation): object pixels (m = 1, the render itself noise-free once converged) the
-// full sigma(v), pixels only shadowed or lit by bounce light keep the photo's own noise and get
-// only the part missing at their new value. The result is clamped at 0 like the composite and
-// is finite wherever the composite is. An empty model changes nothing. `seed` picks the grain
-// field: the same seed gives the same grain bit for bit, on any thread count.
-void addGrain(ImageF& composite, const ImageF& photoLinear, const ImageF& withObjects,
-              const ImageF& withoutObjects, const ImageF& mask, const PhotoNoise& noise,
-              uint32_t seed);
+// channelCorrelation): object pixels (m = 1) the full sigma(v), pixels only shadowed or lit by
+// bounce light keep the photo's own noise and get only the part missing at their new value.
+// s_render is the render's own noise, from frame.noise (the session's standard error in sRGB,
+// taken back to linear by the same sRGB slope; 0 when the frame has none): a render not yet
+// converged already carries part of the grain. The result is clamped at 0 like the composite
+// and is finite wherever the composite is. An empty model changes nothing. `seed` picks the
+// grain field: the same seed gives the same grain bit for bit, on any thread count.
+void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& frame,
+              const PhotoNoise& noise, uint32_t seed);
 
 // The unit-variance grain field of `noise`'s correlation at pixel (x, y), channel c (0..2): what
 // addGrain() scales. Exposed for tests and benchmarks; any integer coordinates.
