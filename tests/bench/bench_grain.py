@@ -25,7 +25,8 @@ summary prints the median hf_ratio and around_rmse per half, grain on and off.
 Writes OUT/grain.csv, OUT/grain.png.
 
 usage: bench_grain.py INLAY_CLI [--out DIR] [--rooms t03,t07,t11,t06,t08,t14] [--seeds 1,2]
-                      [--seconds 60] [--no-t09]
+                      [--seconds 60] [--no-t09] [--rerender]
+A room's render is kept in OUT/grain/<room>/ and reused unless --rerender.
 """
 import json, os, re, statistics, subprocess, sys, time
 
@@ -76,16 +77,14 @@ def srgb8(linear):
 
 def clean_composite(layers_exr):
     import OpenImageIO as oiio
-    inp = oiio.ImageInput.open(layers_exr)
+    buf = oiio.ImageBuf(layers_exr)
+    names = list(buf.spec().channelnames)
+    pixels = np.asarray(buf.get_pixels(oiio.FLOAT))
     try:
-        for sub in range(64):
-            if not inp.seek_subimage(sub, 0):
-                break
-            if inp.spec().get_string_attribute("name") == "composite":
-                return srgb8(np.asarray(inp.read_image(oiio.FLOAT))[:, :, :3].astype(np.float64))
-    finally:
-        inp.close()
-    raise SystemExit("no composite layer in " + layers_exr)
+        idx = [names.index("composite." + c) for c in "RGB"]
+    except ValueError:
+        raise SystemExit("no composite layer in " + layers_exr)
+    return srgb8(pixels[:, :, idx].astype(np.float64))
 
 
 def scores_of(image, comp_path, scene_dir, harness, mask, hf_truth):
@@ -103,13 +102,17 @@ def render_and_score(cli, harness, scene_dir, work, seconds):
     """One render of the harness's assisted scene; its scores with grain (on) and without (off)."""
     sf, on, exr = (os.path.join(work, n) for n in ("scene.json", "composite_on.png", "layers.exr"))
     subprocess.run([sys.executable, harness, "scene", scene_dir, sf, "--seconds", str(seconds)], check=True)
-    t0 = time.time()
-    p = subprocess.run([cli, "render", sf, "-o", on, "--layers", exr], capture_output=True, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        print(os.path.basename(scene_dir), "failed:", p.stderr.strip()[-300:])
-        return None
-    last = [l for l in p.stderr.splitlines() if "wrote" in l][-1]
+    log = os.path.join(work, "render.log")
+    if "--rerender" in sys.argv or not (os.path.isfile(log) and os.path.isfile(exr) and os.path.isfile(on)):
+        t0 = time.time()
+        p = subprocess.run([cli, "render", sf, "-o", on, "--layers", exr], capture_output=True, text=True)
+        if p.returncode != 0:
+            print(os.path.basename(scene_dir), "failed:", p.stderr.strip()[-300:])
+            return None
+        open(log, "w").write("wall %.1f\n" % (time.time() - t0) + p.stderr)
+    text = open(log).read()
+    wall = float(text.split()[1])
+    last = [l for l in text.splitlines() if "wrote" in l][-1]
     m = re.search(r"([0-9.]+) on average", last)
     common = {"wall_s": round(wall, 1), "spp": float(m.group(1)) if m else float("nan"),
               "converged": "converged" in last}
