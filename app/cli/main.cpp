@@ -369,6 +369,7 @@ int commandRender(const std::string& scenePath, const Args& a) {
 
   if (auto st = applyReplacements(ps, a); !st) return inputError(st.error());
   if (a.noGrain) ps.doc.render.grain = false;
+  if (!a.quiet && ps.doc.render.grain) std::fprintf(stderr, "inlay-cli: %s\n", describeNoise(ps.photoNoise).c_str());
   if (!a.lightsJson.empty())
     if (auto st = writeFileAtomically(a.lightsJson, lightsReport(ps).dump(1) + "\n"); !st)
       return inputError(st.error());

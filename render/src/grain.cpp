@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <cstdio>
 #include <numeric>
 
 namespace inlay {
@@ -367,6 +368,18 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
     out.grainWidthPx = 0, out.channelCorrelation = 0;
   }
   return out;
+}
+
+std::string describeNoise(const PhotoNoise& noise) {
+  if (noise.empty())
+    return "no grain: " + (noise.notes.empty() ? std::string("the photo shows no noise") : noise.notes.back());
+  const auto& g = noise.levels[1].empty() ? noise.levels[0] : noise.levels[1];
+  const double mid = g.empty() ? 0 : g[g.size() / 2].intensity;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "photo noise %.3g (R) %.3g (G) %.3g (B) at %.3g; grain %.2f px wide, %.0f%% shared by the channels",
+                noise.sigma(0, mid), noise.sigma(1, mid), noise.sigma(2, mid), mid, noise.grainWidthPx,
+                100 * noise.channelCorrelation);
+  return buf;
 }
 
 // ---- the grain ---------------------------------------------------------------------------------

@@ -10,8 +10,8 @@ clean), encoded to 8-bit sRGB here as inlay-cli encodes a PNG (its half floats c
 by one code at most). So on and off share their render and its Monte-Carlo noise: what differs
 is the grain alone. Per composite:
   hf_object      the high-frequency noise of the composite inside the object's mask (eroded 2 px):
-                 Immerkaer's 3 x 3 second difference, median absolute response as a Gaussian's
-                 standard deviation, sRGB [0,1], mean over R, G, B;
+                 Immerkaer's 3 x 3 second difference, RMS over the 90 % smallest responses as a
+                 Gaussian's standard deviation, sRGB [0,1], mean over R, G, B;
   hf_truth       the same of truth.png (the true photo with the object, which shares the
                  photo's noise field);
   hf_ratio       hf_object / hf_truth: 1 is grain like the photo's, below 1 an object cleaner
@@ -25,8 +25,12 @@ summary prints the median hf_ratio and around_rmse per half, grain on and off.
 Writes OUT/grain.csv, OUT/grain.png.
 
 usage: bench_grain.py INLAY_CLI [--out DIR] [--rooms t03,t07,t11,t06,t08,t14] [--seeds 1,2]
+                      [--jobs t03:2,t08:5]
                       [--seconds 60] [--no-t09] [--rerender]
-A room's render is kept in OUT/grain/<room>/ and reused unless --rerender.
+--jobs: these room:seed pairs instead of every room with every seed (camera_variants.py draws
+its camera from the seed alone, so seed 1 is the same camera, a nearly noise-free one, for every
+room). A room's render is kept in OUT/grain/<room>_s<seed>/ and reused unless --rerender (the
+row's budget_s is the one it was rendered with).
 """
 import json, os, re, statistics, subprocess, sys, time
 
@@ -46,13 +50,20 @@ def read8(path):
 
 
 def hf_noise(image, mask):
-    """Immerkaer's noise estimate inside `mask` (boolean, H x W), mean over the channels."""
+    """The noise's standard deviation inside `mask` (boolean, H x W; eroded 2 px) from Immerkaer's
+    3 x 3 second difference, mean over the channels: the RMS response over the 90 % of pixels
+    with the smallest response (edges and silhouettes left out), as a Gaussian's (a Gaussian
+    truncated at its 90 % quantile keeps 0.623 of its variance). RMS, not the median: 8-bit
+    values make the median response jump between whole code values when the noise is below one."""
     k = np.array([[1, -2, 1], [-2, 4, -2], [1, -2, 1]], np.float64)
     inner = cv2.erode(mask.astype(np.uint8), np.ones((5, 5), np.uint8)).astype(bool)
     sig = []
     for c in range(3):
-        r = cv2.filter2D(image[:, :, c], -1, k, borderType=cv2.BORDER_REFLECT)
-        sig.append(np.median(np.abs(r[inner])) / (0.6745 * 6))
+        r = np.abs(cv2.filter2D(image[:, :, c], -1, k, borderType=cv2.BORDER_REFLECT)[inner])
+        if r.size == 0:
+            return float("nan"), 0
+        kept = r[r <= np.quantile(r, 0.9)]
+        sig.append(np.sqrt(np.mean(kept ** 2) / 0.623) / 6)
     return float(np.mean(sig)), int(inner.sum())
 
 
@@ -101,9 +112,9 @@ def scores_of(image, comp_path, scene_dir, harness, mask, hf_truth):
 def render_and_score(cli, harness, scene_dir, work, seconds):
     """One render of the harness's assisted scene; its scores with grain (on) and without (off)."""
     sf, on, exr = (os.path.join(work, n) for n in ("scene.json", "composite_on.png", "layers.exr"))
-    subprocess.run([sys.executable, harness, "scene", scene_dir, sf, "--seconds", str(seconds)], check=True)
     log = os.path.join(work, "render.log")
-    if "--rerender" in sys.argv or not (os.path.isfile(log) and os.path.isfile(exr) and os.path.isfile(on)):
+    if "--rerender" in sys.argv or not all(os.path.isfile(f) for f in (sf, log, exr, on)):
+        subprocess.run([sys.executable, harness, "scene", scene_dir, sf, "--seconds", str(seconds)], check=True)
         t0 = time.time()
         p = subprocess.run([cli, "render", sf, "-o", on, "--layers", exr], capture_output=True, text=True)
         if p.returncode != 0:
@@ -114,7 +125,8 @@ def render_and_score(cli, harness, scene_dir, work, seconds):
     wall = float(text.split()[1])
     last = [l for l in text.splitlines() if "wrote" in l][-1]
     m = re.search(r"([0-9.]+) on average", last)
-    common = {"wall_s": round(wall, 1), "spp": float(m.group(1)) if m else float("nan"),
+    budget = json.load(open(sf)).get("render", {}).get("seconds")
+    common = {"budget_s": budget, "wall_s": round(wall, 1), "spp": float(m.group(1)) if m else float("nan"),
               "converged": "converged" in last}
     off = os.path.join(work, "composite_off.png")
     off_image = clean_composite(exr)
@@ -174,6 +186,8 @@ def main():
     seeds = [int(s) for s in opt("--seeds", "1,2").split(",")]
     seconds = float(opt("--seconds", "60"))
     jobs = [(r, s) for r in rooms for s in seeds]
+    if opt("--jobs", ""):  # room:seed pairs instead of every room with every seed
+        jobs = [(j.split(":")[0], int(j.split(":")[1])) for j in opt("--jobs", "").split(",")]
     if "--no-t09" not in sys.argv:
         jobs.append(("t09", 0))
     rows = []

@@ -85,6 +85,10 @@ PhotoNoise measurePhotoNoise(const ImageF& linear, const NoiseMeasureOptions& op
 void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& frame,
               const PhotoNoise& noise, uint32_t seed);
 
+// One line for a user: the noise at the photo's middle intensity, the grain's width and colour
+// share, or why there is none.
+std::string describeNoise(const PhotoNoise& noise);
+
 // The unit-variance grain field of `noise`'s correlation at pixel (x, y), channel c (0..2): what
 // addGrain() scales. Exposed for tests and benchmarks; any integer coordinates.
 float grainAt(const PhotoNoise& noise, int x, int y, int c, uint32_t seed);
