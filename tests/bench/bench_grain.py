@@ -26,7 +26,7 @@ Writes OUT/grain.csv, OUT/grain.png.
 
 usage: bench_grain.py INLAY_CLI [--out DIR] [--rooms t03,t07,t11,t06,t08,t14] [--seeds 1,2]
                       [--jobs t03:2,t08:5]
-                      [--seconds 60] [--no-t09] [--rerender]
+                      [--seconds 60] [--no-t09] [--rerender] [--plot-only]
 --jobs: these room:seed pairs instead of every room with every seed (camera_variants.py draws
 its camera from the seed alone, so seed 1 is the same camera, a nearly noise-free one, for every
 room). A room's render is kept in OUT/grain/<room>_s<seed>/ and reused unless --rerender (the
@@ -160,6 +160,7 @@ def plot(ax, rows):
         v = [next((r["hf_ratio"] for r in rows if r["scene"] == n and r["grain"] == grain), np.nan) for n in names]
         ax[0].bar(x + off, v, 0.4, label="grain " + grain, color=colour)
     ax[0].axhline(1.0, color="k", lw=0.8)
+    ax[0].set_yscale("log")
     ax[0].set_xticks(x, names, rotation=60, fontsize=7)
     ax[0].set(ylabel="object HF noise / truth's", title="grain inside the object (1 = like the photo)")
     ax[0].legend(fontsize=7)
@@ -176,6 +177,14 @@ def plot(ax, rows):
 
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
+    if "--plot-only" in sys.argv:  # the figure again from OUT/grain.csv
+        import csv
+        rows = [dict(r, hf_ratio=float(r["hf_ratio"]), around_rmse=float(r["around_rmse"]))
+                for r in csv.DictReader(open(os.path.join(out, "grain.csv")))]
+        with benchlib.figure(os.path.join(out, "grain.png"), 1, 2, figsize=(11, 4)) as ax:
+            if ax is not None:
+                plot(ax, rows)
+        return 0
     shared = benchlib.shared_dir()
     if not os.path.isdir(os.path.join(shared, "scenes-train")):
         print("skipped: no ../shared/scenes-train")
