@@ -393,7 +393,7 @@ float grainAt(const PhotoNoise& noise, int x, int y, int c, uint32_t seed) {
       for (int i = -r; i <= r; ++i) s += k[size_t(i + r)] * k[size_t(j + r)] * whiteNoise(x + i, y + j, f, seed);
     return s;
   };
-  const double rho = std::clamp(noise.channelCorrelation, 0.0, 1.0);
+  const double rho = std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
   return float(std::sqrt(rho) * field(0) + std::sqrt(1 - rho) * field(1 + std::clamp(c, 0, 2)));
 }
 
@@ -430,7 +430,8 @@ ImageF grainFields(const PhotoNoise& noise, const Box& box, uint32_t seed) {
   const std::vector<double> k = grainKernel(noise.grainWidthPx);
   const int r = int(k.size() / 2), w = box.x1 - box.x0, h = box.y1 - box.y0;
   const int hw = h + 2 * r;  // rows of the horizontal pass
-  const double a = std::sqrt(std::clamp(noise.channelCorrelation, 0.0, 1.0)), b = std::sqrt(1 - a * a);
+  const double rho = std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
+  const double a = std::sqrt(rho), b = std::sqrt(1 - rho);
   ImageF out(w, h, 3, 0.f);
   std::vector<double> horiz(size_t(hw) * size_t(w));
   for (int f = 0; f < kFields; ++f) {
