@@ -115,6 +115,29 @@ TEST(Engine, CompositeGrainOnlyWhereTheObjectChangesThePhoto) {
   EXPECT_EQ(compositeOf(off, f).data, clean.data);
 }
 
+// The same noisy pixels saved as PNG and as EXR: the PNG's grain is measured, the linear EXR
+// gets none.
+TEST(Engine, ALinearPhotoGetsNoGrain) {
+  ImageF noisy(160, 120, 3);
+  uint32_t state = 9;
+  for (int y = 0; y < noisy.height; ++y)
+    for (int x = 0; x < noisy.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        state = state * 1664525u + 1013904223u;
+        noisy.at(x, y, c) = 0.05f + 0.8f * float(x) / float(noisy.width) + 0.05f * (float(state >> 8) / 16777216.f - 0.5f);
+      }
+  const auto dir = test::tempDir("linear_grain");
+  for (const char* ext : {"png", "exr"}) {
+    const std::string path = (dir / (std::string("photo.") + ext)).string();
+    ASSERT_TRUE(saveImage(path, noisy).ok());
+    auto photo = loadImage(path);
+    ASSERT_TRUE(photo.ok());
+    const PhotoNoise n = photoNoiseOf(*photo);
+    EXPECT_EQ(n.empty(), std::string(ext) == "exr") << ext << ": " << describeNoise(n);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
   auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();

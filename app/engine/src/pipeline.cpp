@@ -583,9 +583,14 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   // The photo's grain, last: in the units ps.photo.linearRgb ended in. A linear photo (EXR,
   // HDR) is taken as noise-free: its pixels are radiances, not a camera's encoded output.
   t = Clock::now();
-  if (ps.photo.wasSrgbEncoded) ps.photoNoise = measurePhotoNoise(ps.photo.linearRgb);
+  ps.photoNoise = photoNoiseOf(ps.photo);
   ps.stageSeconds.emplace_back("grain", secondsSince(t));
   return ps;
+}
+
+PhotoNoise photoNoiseOf(const LoadedImage& photo) {
+  if (!photo.wasSrgbEncoded) return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
+  return measurePhotoNoise(photo.linearRgb);
 }
 
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain) {

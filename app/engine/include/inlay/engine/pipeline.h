@@ -87,6 +87,10 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 // mesh stays loaded). Errors name "objects[index].base_px" etc.
 Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index);
 
+// The grain prepareScene measures: the noise of an encoded photo (JPEG, PNG, TIFF) in the units
+// of its linearRgb; none for a linear photo (EXR, HDR), whose pixels are radiances.
+PhotoNoise photoNoiseOf(const LoadedImage& photo);
+
 // The 8-bit-ready linear composite of a frame: differential composite over the photo, the
 // photo's grain on the pixels the objects change (when the scene's render.grain and
 // `withGrain`; false for the clean EXR layers), then the scene's exposure.
