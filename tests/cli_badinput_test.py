@@ -33,6 +33,7 @@ def main():
 
     r = run(cli, "--help")
     check("help", r.returncode == 0 and "render" in r.stdout and "Exit status" in r.stdout, r.stderr)
+    check("help names --no-grain", "--no-grain" in r.stdout, r.stdout)
     r = run(cli, "--version")
     check("version", r.returncode == 0 and r.stdout.startswith("inlay-cli "), r.stdout)
     check("no args", run(cli).returncode == 2)
@@ -117,6 +118,7 @@ def main():
         ("empty scribbles", lambda s: s.update(occluders=[{"foreground_scribbles_px": [],
                                                            "background_scribbles_px": [[[10, 10], [50, 10]]]}]),
          "occluders[0].foreground_scribbles_px"),
+        ("grain not a boolean", lambda s: s.setdefault("render", {}).update(grain="yes"), "render.grain"),
     ]
     out = os.path.join(tmp, "keep.png")
     for name, mutate, key in cases:

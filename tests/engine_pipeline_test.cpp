@@ -125,6 +125,58 @@ TEST(Engine, RoomMaterialsReachTheRenderSceneAndKeepThePhoto) {
   EXPECT_NE(refused.error().reason.find("no surface"), std::string::npos);
 }
 
+// The example photo (a path-traced room, 8-bit) has measurable grain; compositeOf gives it to
+// the pixels the object changes, leaves the others the photo bit for bit, and gives none with
+// render.grain false, withGrain false (the clean EXR layers) or a linear photo's empty model.
+TEST(Engine, CompositeGrainOnlyWhereTheObjectChangesThePhoto) {
+  auto ps = preparedExample();
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  EXPECT_FALSE(ps->photoNoise.empty()) << describeNoise(ps->photoNoise);
+  const RenderFrame f = renderFrame(*ps, 4);
+  const ImageF grained = compositeOf(*ps, f), clean = compositeOf(*ps, f, /*withGrain=*/false);
+  EXPECT_EQ(clean.data, compositeOf(ps->photo.linearRgb, ps->doc.render.exposure, f).data);
+  size_t changed = 0, grainedPixels = 0;
+  for (int y = 0; y < clean.height; ++y)
+    for (int x = 0; x < clean.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const bool touched = f.mask.at(x, y) != 0.f || f.withObjects.at(x, y, c) != f.withoutObjects.at(x, y, c);
+        changed += touched;
+        grainedPixels += grained.at(x, y, c) != clean.at(x, y, c);
+        ASSERT_TRUE(std::isfinite(grained.at(x, y, c)));
+        if (!touched) ASSERT_EQ(grained.at(x, y, c), ps->photo.linearRgb.at(x, y, c)) << x << "," << y;
+      }
+  EXPECT_GT(grainedPixels, changed / 10);
+  PreparedScene off = *ps;
+  off.doc.render.grain = false;
+  EXPECT_EQ(compositeOf(off, f).data, clean.data);
+  off.doc.render.grain = true;
+  off.photoNoise = PhotoNoise{};
+  EXPECT_EQ(compositeOf(off, f).data, clean.data);
+}
+
+// The same noisy pixels saved as PNG and as EXR: the PNG's grain is measured, the linear EXR
+// gets none.
+TEST(Engine, ALinearPhotoGetsNoGrain) {
+  ImageF noisy(160, 120, 3);
+  uint32_t state = 9;
+  for (int y = 0; y < noisy.height; ++y)
+    for (int x = 0; x < noisy.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        state = state * 1664525u + 1013904223u;
+        noisy.at(x, y, c) = 0.05f + 0.8f * float(x) / float(noisy.width) + 0.05f * (float(state >> 8) / 16777216.f - 0.5f);
+      }
+  const auto dir = test::tempDir("linear_grain");
+  for (const char* ext : {"png", "exr"}) {
+    const std::string path = (dir / (std::string("photo.") + ext)).string();
+    ASSERT_TRUE(saveImage(path, noisy).ok());
+    auto photo = loadImage(path);
+    ASSERT_TRUE(photo.ok());
+    const PhotoNoise n = photoNoiseOf(*photo);
+    EXPECT_EQ(n.empty(), std::string(ext) == "exr") << ext << ": " << describeNoise(n);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
   auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();

@@ -66,7 +66,7 @@ const char* kFullScene = R"({
     { "mesh": "builtin:cube", "base_px": [100, 290], "subdivide": 2,
       "material": { "preset": "emissive", "rgb": [3, 2, 1] } }
   ],
-  "render": { "spp": 64, "seconds": 12.5, "noise": 0.01, "exposure": -0.5, "seed": 7 }
+  "render": { "spp": 64, "seconds": 12.5, "noise": 0.01, "exposure": -0.5, "seed": 7, "grain": false }
 })";
 
 void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
@@ -138,6 +138,7 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
   EXPECT_EQ(a.render.exposure, b.render.exposure);
   EXPECT_EQ(a.render.noise, b.render.noise);
   EXPECT_EQ(a.render.seed, b.render.seed);
+  EXPECT_EQ(a.render.grain, b.render.grain);
 }
 
 TEST(SceneFile, FullSceneParsesEveryKey) {
@@ -200,6 +201,7 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_EQ(d.render.exposure, -0.5);
   EXPECT_EQ(d.render.noise, 0.01);
   EXPECT_EQ(d.render.seed, 7u);
+  EXPECT_FALSE(d.render.grain);
 }
 
 TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
@@ -417,6 +419,7 @@ TEST(SceneFile, MinimalSceneGetsDefaults) {
   EXPECT_EQ(d.render.noise, 0.004);
   EXPECT_EQ(d.render.seed, 1u);
   EXPECT_EQ(d.render.exposure, 0.0);
+  EXPECT_TRUE(d.render.grain);  // on by default
   EXPECT_FALSE(d.render.seconds.has_value());
   // Minimal round trip too.
   auto again = parseSceneJson(sceneToJson(d), dir.string(), "scene.json");
@@ -601,6 +604,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"noise_string", R"(, "render": {"noise": "low"})", "render.noise", "number"},
         BadCase{"seconds_negative", R"(, "render": {"seconds": -1})", "render.seconds", "> 0"},
         BadCase{"seed_string", R"(, "render": {"seed": "abc"})", "render.seed", "integer"},
+        BadCase{"grain_string", R"(, "render": {"grain": "yes"})", "render.grain",
+                "expected true or false, got a string"},
+        BadCase{"grain_number", R"(, "render": {"grain": 1})", "render.grain", "expected true or false"},
         BadCase{"exposure_bool", R"(, "render": {"exposure": true})", "render.exposure",
                 "expected a number, got a boolean"},
         BadCase{"invalid_json", R"(, "render": {"spp": 4,}})", "render", "invalid JSON"}),

@@ -66,7 +66,8 @@ Render options:
   --seconds S             stop after S seconds of rendering (default: the scene's render.seconds)
   --seed K                random seed (default: the scene's render.seed)
   --threads T             threads (default: all cores)
-  --layers FILE.exr       also write linear layers: composite, with_objects, without_objects, mask
+  --layers FILE.exr       also write linear layers: composite (without grain), with_objects,
+                          without_objects, mask
   --progress-csv FILE     one row per progressive update: seconds, spp, estimated error
   --noise E               adaptive sampling: stop sampling a pixel once its composite's
                           estimated standard error (sRGB [0,1]) is below E, and the render
@@ -74,6 +75,8 @@ Render options:
                           0: sample until --spp or --seconds)
   --no-focus              sample every pixel equally (with --noise 0; default: pixels the
                           objects do not change are revisited only every fourth wave)
+  --no-grain              leave the inserted objects clean (default: the scene's render.grain,
+                          true: the pixels the objects change get the photo's own grain)
   --initial-lights        render with the lights as estimated, before their refinement
   --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
                           the photo's linear units), the refinement's objective against time
@@ -125,6 +128,7 @@ struct Args {
   std::optional<double> seconds, noise;
   bool quiet = false;
   bool noFocus = false;
+  bool noGrain = false;
 };
 
 template <class T>
@@ -204,6 +208,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       a.quiet = true;
     } else if (s == "--no-focus") {
       a.noFocus = true;
+    } else if (s == "--no-grain") {
+      a.noGrain = true;
     } else if (s == "--initial-lights") {
       a.initialLights = true;
     } else if (!s.empty() && s[0] == '-' && s != "-") {
@@ -401,6 +407,8 @@ int commandRender(const std::string& scenePath, const Args& a) {
   PreparedScene& ps = *prepared;
 
   if (auto st = applyReplacements(ps, a); !st) return inputError(st.error());
+  if (a.noGrain) ps.doc.render.grain = false;
+  if (!a.quiet && ps.doc.render.grain) std::fprintf(stderr, "inlay-cli: %s\n", describeNoise(ps.photoNoise).c_str());
   if (!a.lightsJson.empty())
     if (auto st = writeFileAtomically(a.lightsJson, lightsReport(ps).dump(1) + "\n"); !st)
       return inputError(st.error());
@@ -448,7 +456,8 @@ int commandRender(const std::string& scenePath, const Args& a) {
   if (auto st = saveImage(a.output, composite, save); !st) return inputError(st.error());
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;
-    std::vector<NamedLayer> layers = {{"composite", &composite}, {"with_objects", &with},
+    const ImageF clean = compositeOf(ps, *frame, /*withGrain=*/false);  // the layers stay clean
+    std::vector<NamedLayer> layers = {{"composite", &clean}, {"with_objects", &with},
                                       {"without_objects", &without}, {"mask", &frame->mask}};
     if (!frame->samples.empty()) layers.push_back({"samples", &frame->samples});
     if (!frame->noise.empty()) layers.push_back({"noise", &frame->noise});

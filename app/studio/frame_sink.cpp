@@ -13,6 +13,7 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
   context->doc.render = scene.doc.render;
   context->photo = scene.photo;
   context->response = scene.response;
+  context->photoNoise = scene.photoNoise;
   context->camera = scene.camera;
   context->box = scene.box;
   return context;

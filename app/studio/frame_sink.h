@@ -48,8 +48,9 @@ class CompositeSink : public FrameSink {
 
   void onFrame(std::shared_ptr<const RenderFrame> frame) override;
 
-  // A copy of the parts of `scene` that compositeOf reads: the photo and the document's
-  // render keys (exposure) and camera response, plus the camera and room for completeness.
+  // A copy of the parts of `scene` that compositeOf reads: the photo, its measured noise (the
+  // grain), the camera response and the document's render keys (exposure, grain, seed), plus the
+  // camera and room for completeness.
   static std::shared_ptr<const PreparedScene> compositeContextOf(const PreparedScene& scene);
 
  private:

@@ -757,7 +757,7 @@ class Reader {
   void readRender(const json& j, RenderKeys& r) {
     const std::string p = "render";
     object(j, p);
-    knownKeys(j, p, {"spp", "seconds", "noise", "exposure", "seed"});
+    knownKeys(j, p, {"spp", "seconds", "noise", "exposure", "seed", "grain"});
     if (j.contains("spp")) {
       const long long spp = integer(j["spp"], child(p, "spp"));
       if (spp < 1) fail(child(p, "spp"), "must be >= 1 (got " + std::to_string(spp) + ")");
@@ -779,6 +779,7 @@ class Reader {
       if (seed < 0 || seed > 0xffffffffLL) fail(child(p, "seed"), "must be in [0, 4294967295]");
       r.seed = unsigned(seed);
     }
+    if (j.contains("grain")) r.grain = boolean(j["grain"], child(p, "grain"));
   }
 
   std::string file_;
@@ -995,6 +996,7 @@ ojson buildJson(const SceneDoc& doc) {
   r["noise"] = doc.render.noise;
   r["exposure"] = doc.render.exposure;
   r["seed"] = doc.render.seed;
+  r["grain"] = doc.render.grain;
   j["render"] = r;
   return j;
 }

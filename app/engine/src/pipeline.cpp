@@ -8,6 +8,7 @@
 #include "inlay/lighting/sun_ratio.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/gltf_export.h"
+#include "inlay/render/grain.h"
 #include "inlay/modeling/subdivide.h"
 
 #include <algorithm>
@@ -266,8 +267,10 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
   return m;
 }
 
-ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame) {
+ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
+                   const PhotoNoise* grain, uint32_t grainSeed) {
   ImageF c = differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask);
+  if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed);
   applyExposure(c, exposureStops);
   return c;
 }
@@ -649,11 +652,24 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   ps.placements = std::move(placed->placements);
   ps.stageSeconds.emplace_back("objects", secondsSince(t));
   progress("objects", 1);
+
+  // The photo's grain, last: in the units ps.photo.linearRgb ended in. A linear photo (EXR,
+  // HDR) is taken as noise-free: its pixels are radiances, not a camera's encoded output.
+  t = Clock::now();
+  ps.photoNoise = photoNoiseOf(ps.photo);
+  ps.stageSeconds.emplace_back("grain", secondsSince(t));
   return ps;
 }
 
-ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame) {
-  return compositeOf(scene.photo.linearRgb, scene.doc.render.exposure, frame);
+PhotoNoise photoNoiseOf(const LoadedImage& photo) {
+  if (!photo.wasSrgbEncoded) return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
+  return measurePhotoNoise(photo.linearRgb);
+}
+
+ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain) {
+  const bool grain = withGrain && scene.doc.render.grain;
+  return compositeOf(scene.photo.linearRgb, scene.doc.render.exposure, frame,
+                     grain ? &scene.photoNoise : nullptr, scene.doc.render.seed);
 }
 
 }  // namespace inlay

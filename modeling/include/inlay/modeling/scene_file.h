@@ -141,6 +141,10 @@ struct RenderKeys {
   double noise = 0.004;
   double exposure = 0.0;             // stops applied to the composite before encoding
   unsigned seed = 1;
+  // Give the pixels the objects change the photo's own grain (its measured noise against
+  // intensity), so an object is as grainy as the photo around it. Linear and noise-free photos
+  // get none; the EXR layers stay clean.
+  bool grain = true;
 };
 
 // What the user marks on the photo: every key but the photo, the objects and the render

@@ -13,6 +13,7 @@
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/response.h"
 #include "inlay/modeling/scene_file.h"
+#include "inlay/render/grain.h"
 #include "inlay/render/scene.h"
 #include "inlay/render/session.h"
 
@@ -48,6 +49,10 @@ struct PreparedScene {
   LightRefineResult refinement;
   RenderScene renderScene;      // lights and objects placed; roomAlbedo filled
   std::vector<Placement> placements;  // per object
+  // The photo's noise against intensity and its grain's correlation (render/grain.h), measured
+  // once from photo.linearRgb; empty for a linear (EXR, HDR) or noise-free photo. compositeOf
+  // gives the pixels the objects change this grain (scene key render.grain).
+  PhotoNoise photoNoise;
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
   std::vector<std::pair<std::string, double>> stageSeconds;  // timings per stage
 };
@@ -120,11 +125,18 @@ Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index);
 // indices stay the document's.
 RenderScene shownRenderScene(const PreparedScene& scene);
 
-// The 8-bit-ready linear composite of a frame: differential composite over the photo, then the
-// scene's exposure.
-ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame);
-// The same from just what it needs (for a render thread that holds no PreparedScene).
-ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame);
+// The grain prepareScene measures: the noise of an encoded photo (JPEG, PNG, TIFF) in the units
+// of its linearRgb; none for a linear photo (EXR, HDR), whose pixels are radiances.
+PhotoNoise photoNoiseOf(const LoadedImage& photo);
+
+// The 8-bit-ready linear composite of a frame: differential composite over the photo, the
+// photo's grain on the pixels the objects change (when the scene's render.grain and
+// `withGrain`; false for the clean EXR layers), then the scene's exposure.
+ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain = true);
+// The same from just what it needs (for a render thread that holds no PreparedScene); `grain`
+// null: no grain.
+ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
+                   const PhotoNoise* grain = nullptr, uint32_t grainSeed = 1);
 
 // An object's mesh as the scene file asks for it: loaded (mesh key), then smoothly subdivided
 // by its `subdivide` levels (Catmull-Clark for quad meshes, Loop for triangles). Errors are keyed
