@@ -317,10 +317,14 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   if (interrupted_) return Error{line.output, "", "interrupted; nothing written"};
   const auto frame = sink.last();
   if (!frame || frame->spp == 0) return Error{line.output, "", "the renderer produced no frame"};
-  const ImageF composite = compositeOf(ps.photo.linearRgb, doc.render.exposure, *frame);
+  // As `inlay-cli render` writes it: the line's grain and exposure, the photo's response.
+  const ImageF composite = compositeOf(ps.photo.linearRgb, doc.render.exposure, *frame,
+                                       doc.render.grain ? &ps.photoNoise : nullptr, doc.render.seed);
+  SaveOptions save;
+  save.response = outputResponseOf(ps);
   std::error_code ec;
   fs::create_directories(fs::path(line.output).parent_path(), ec);
-  return saveImage(line.output, composite);
+  return saveImage(line.output, composite, save);
 }
 
 void BatchRunner::renderLine(PreparedGroup& g, const BatchLine& line) {

@@ -451,8 +451,7 @@ int commandRender(const std::string& scenePath, const Args& a) {
   }
   const ImageF composite = compositeOf(ps, *frame);
   SaveOptions save;
-  // A linear (EXR/HDR) photo's composite is written as sRGB to 8-bit files, as it always was.
-  save.response = ps.response.family() == ResponseFamily::Linear && !ps.photo.wasSrgbEncoded ? nullptr : &ps.response;
+  save.response = outputResponseOf(ps);
   if (auto st = saveImage(a.output, composite, save); !st) return inputError(st.error());
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;

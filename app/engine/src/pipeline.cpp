@@ -672,4 +672,10 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool wi
                      grain ? &scene.photoNoise : nullptr, scene.doc.render.seed);
 }
 
+const CameraResponse* outputResponseOf(const PreparedScene& scene) {
+  // A linear (EXR/HDR) photo's composite is written as sRGB to 8-bit files, as it always was.
+  const bool linearPhoto = scene.response.family() == ResponseFamily::Linear && !scene.photo.wasSrgbEncoded;
+  return linearPhoto ? nullptr : &scene.response;
+}
+
 }  // namespace inlay

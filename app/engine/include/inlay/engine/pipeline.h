@@ -133,6 +133,9 @@ PhotoNoise photoNoiseOf(const LoadedImage& photo);
 // photo's grain on the pixels the objects change (when the scene's render.grain and
 // `withGrain`; false for the clean EXR layers), then the scene's exposure.
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain = true);
+// The response an 8-bit output of the composite is encoded with: the photo's own (estimated or
+// from camera.response), or null (plain sRGB) for a linear EXR/HDR photo.
+const CameraResponse* outputResponseOf(const PreparedScene& scene);
 // The same from just what it needs (for a render thread that holds no PreparedScene); `grain`
 // null: no grain.
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
