@@ -28,6 +28,14 @@ struct TracerOptions {
   bool timeRays = false;     // time every ray by type (benchmarks: two clock reads per ray)
   bool roughGlassNee = true;  // next-event estimation (with MIS) at rough glass; false: found
                               // by BSDF sampling alone (for comparison; suns then miss it)
+  // How next-event estimation picks one light (area light or emissive object) per vertex:
+  // Spatial weighs every source by power over squared distance, skipping those behind the
+  // vertex (O(n) per vertex: best for a few lights); Power draws from a table proportional to
+  // power built once per scene (O(log n), whatever the vertex); Auto uses Spatial up to
+  // spatialSelectionMax sources and Power above. All are unbiased (MIS uses the same pdf).
+  enum class LightSelection { Auto, Spatial, Power };
+  LightSelection lightSelection = LightSelection::Auto;
+  int spatialSelectionMax = 8;
 };
 
 // Rays traced by type, and the thread time spent in them (nanoseconds, summed over threads;
