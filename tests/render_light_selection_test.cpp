@@ -1,7 +1,7 @@
 // Next-event estimation's choice of a light (TracerOptions::lightSelection): the spatial rule
 // (power over squared distance at every vertex) and the power table built once per scene
-// against the analytic direct light of a room with one bright and many dim lights, their noise
-// at equal samples, the Auto switch, and the table kept current when an emissive object moves.
+// against the analytic direct light of a room with one bright and many dim lights, their means
+// against each other, the Auto switch, and the table kept current when an emissive object moves.
 #include "render_test_scenes.h"
 #include "test_support.h"
 
@@ -85,13 +85,25 @@ double noiseBetweenSeeds(const RenderScene& s, Sel mode, int spp) {
   return std::sqrt(d2 / double(a.rendered.size()) / 2) / (sum / double(a.rendered.size()));
 }
 
-// One light carrying most of the power far from most floor points, many dim lights nearby:
-// the table sends most samples to the light that matters.
-TEST(LightSelection, PowerTableLowersNoiseWithOneBrightManyDimLights) {
+// One light carrying most of the power among 47 dim ones: the two rules agree on the image's
+// mean within their noise (measured between seeds). The table's noise at equal samples is
+// printed, not bounded: the spatial rule weighs distance too and is the quieter per sample
+// (0.035 against 0.059 here); the table is the cheaper per vertex (bench_light_selection).
+TEST(LightSelection, OneBrightManyDimRulesAgreeOnTheMean) {
   const RenderScene s = test::manyLightsScene(48, 36, 48, 400.0, 1.0);
-  const double spatial = noiseBetweenSeeds(s, Sel::Spatial, 16), power = noiseBetweenSeeds(s, Sel::Power, 16);
-  std::printf("[ lights ] 1 bright + 47 dim, 16 spp: relative noise spatial %.4f, power %.4f\n", spatial, power);
-  EXPECT_LT(power, 0.9 * spatial);
+  const double spatialNoise = noiseBetweenSeeds(s, Sel::Spatial, 16), powerNoise = noiseBetweenSeeds(s, Sel::Power, 16);
+  const FloorComparison a = renderFloor(s, Sel::Spatial, 64, 5), b = renderFloor(s, Sel::Power, 64, 6);
+  double meanA = 0, meanB = 0;
+  for (size_t i = 0; i < a.rendered.size(); ++i) meanA += a.rendered[i], meanB += b.rendered[i];
+  meanA /= double(a.rendered.size()), meanB /= double(b.rendered.size());
+  // The per-pixel noise at 64 spp is half that at 16; the mean over n pixels has 1/sqrt(n) of it.
+  const double sigma = 0.5 * std::hypot(spatialNoise, powerNoise) / std::sqrt(double(a.rendered.size()));
+  std::printf("[ lights ] 1 bright + 47 dim, 16 spp: relative noise spatial %.4f, power %.4f; "
+              "64 spp means %.5f / %.5f (rel diff %+.5f, sigma %.5f)\n",
+              spatialNoise, powerNoise, meanA, meanB, meanB / meanA - 1, sigma);
+  EXPECT_LT(std::abs(meanB / meanA - 1), 4 * sigma + 1e-3);
+  EXPECT_LT(std::abs(a.err.mean()), 0.01);
+  EXPECT_LT(std::abs(b.err.mean()), 0.01);
 }
 
 // Auto is the spatial rule up to spatialSelectionMax sources and the table above (bit for bit).

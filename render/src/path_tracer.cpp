@@ -371,6 +371,7 @@ struct PathTracer::Impl {
       *prob = sourcePower(j) / total;
       return j;
     }
+    if (sourceCount() <= kBufferedWeights) return pickSpatialBuffered(p, n, u, prob);
     const double total = selectionTotal(p, n);
     if (!(total > 0)) return sourceCount();
     const double target = u * total;
@@ -387,6 +388,30 @@ struct PathTracer::Impl {
       }
     }
     *prob = selectionWeight(last, p, n) / total;  // round-off at u close to 1
+    return last;
+  }
+
+  // pickLight()'s spatial rule for a few sources: every weight computed once (the same sums in
+  // the same order, so the same pick and probability as the unbuffered loop).
+  static constexpr size_t kBufferedWeights = 64;
+  size_t pickSpatialBuffered(const Vec3& p, const Vec3& n, double u, double* prob) const {
+    std::array<double, kBufferedWeights> weight;
+    double total = 0;
+    for (size_t j = 0; j < sourceCount(); ++j) total += (weight[j] = selectionWeight(j, p, n));
+    if (!(total > 0)) return sourceCount();
+    const double target = u * total;
+    double run = 0;
+    size_t last = sourceCount();
+    for (size_t j = 0; j < sourceCount(); ++j) {
+      if (!(weight[j] > 0)) continue;
+      last = j;
+      run += weight[j];
+      if (target < run) {
+        *prob = weight[j] / total;
+        return j;
+      }
+    }
+    *prob = weight[last] / total;  // round-off at u close to 1
     return last;
   }
 

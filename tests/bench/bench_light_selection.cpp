@@ -1,4 +1,4 @@
-// Next-event estimation's choice of a light against the number of lights (1 to 64), in one
+// Next-event estimation's choice of a light against the number of lights (1 to 256), in one
 // process: the spatial selection (power over squared distance, every light weighed at every
 // vertex) against the power table (TracerOptions::LightSelection), on an empty box room lit by
 // a ceiling grid of small lights, one bright and the rest dim (test::manyLightsScene), two
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
   csv << "lights,mode,seconds_per_spp,relative_noise,mean,noise2_x_seconds\n";
   using Sel = TracerOptions::LightSelection;
   const std::pair<Sel, const char*> modes[] = {{Sel::Spatial, "spatial"}, {Sel::Power, "power"}, {Sel::Auto, "auto"}};
-  for (int count : {1, 2, 4, 8, 16, 32, 64}) {
+  for (int count : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
     const RenderScene scene = test::manyLightsScene(w, h, count, 40.0, 2.0);
     for (const auto& [mode, name] : modes) {
       const Result r = measure(scene, mode, w, h, spp, repeats);
