@@ -393,7 +393,7 @@ struct PathTracer::Impl {
 
   // pickLight()'s spatial rule for a few sources: every weight computed once (the same sums in
   // the same order, so the same pick and probability as the unbuffered loop).
-  static constexpr size_t kBufferedWeights = 64;
+  static constexpr size_t kBufferedWeights = 256;
   size_t pickSpatialBuffered(const Vec3& p, const Vec3& n, double u, double* prob) const {
     std::array<double, kBufferedWeights> weight;
     double total = 0;
