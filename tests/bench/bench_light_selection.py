@@ -40,7 +40,7 @@ def main():
             ax[1].plot(xs, [float(r["relative_noise"]) for _, r in sel], "o-", label=m)
             ax[2].plot(xs, [float(r["noise2_x_seconds"]) for _, r in sel], "o-", label=m)
         for a, t in zip(ax, ["ms per sample (CPU time, 1 thread)", "relative noise at equal samples",
-                             "noise² × seconds per sample (lower: faster to a noise)"]):
+                             "noise² × s per sample (lower is better)"]):
             a.set_xscale("log", base=2)
             a.set_xlabel("lights (one bright, the rest dim)")
             a.set_title(t)

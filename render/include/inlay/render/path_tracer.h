@@ -35,8 +35,8 @@ struct TracerOptions {
   // spatialSelectionMax sources and Power above. All are unbiased (MIS uses the same pdf).
   // Measured (bench_light_selection, one bright and the rest dim, 1 to 256 lights): the table's
   // noise at equal samples is about twice the spatial rule's from 16 lights on; its lower cost
-  // per sample repays that only from about 256 lights (noise^2 x time 0.9 of the spatial
-  // rule's there, 2.0 at 128, 2.4 at 64); hence the spatial rule up to 256 sources.
+  // per sample repays that only from about 256 lights (equal noise^2 x time there, twice the
+  // spatial rule's at 64 and 128); hence the spatial rule up to 256 sources.
   enum class LightSelection { Auto, Spatial, Power };
   LightSelection lightSelection = LightSelection::Auto;
   int spatialSelectionMax = 256;
