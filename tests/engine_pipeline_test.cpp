@@ -9,6 +9,7 @@
 #include "test_support.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace inlay {
 namespace {
@@ -225,6 +226,31 @@ TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
   }
   EXPECT_EQ(decompositionRuns(), prepared);
   EXPECT_EQ(ps->renderScene.roomAlbedo.albedo.data, albedo);
+}
+
+// Preparation has its own seed (PrepareOptions::seed), never the render seed: another
+// render.seed prepares the same lights, albedo and gathered light bit for bit, so renders with
+// other seeds converge to one image.
+bool sameBits(const ImageF& a, const ImageF& b) {
+  return a.width == b.width && a.height == b.height && a.data.size() == b.data.size() &&
+         std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(float)) == 0;
+}
+TEST(Engine, PreparationIgnoresTheRenderSeed) {
+  const auto first = preparedExample();
+  ASSERT_TRUE(first.ok()) << first.error().message();
+  SceneDoc doc = exampleDoc();
+  doc.render.seed = first->doc.render.seed + 1;
+  const auto second = prepareScene(doc);
+  ASSERT_TRUE(second.ok()) << second.error().message();
+  ASSERT_EQ(first->renderScene.lights.size(), second->renderScene.lights.size());
+  for (size_t i = 0; i < first->renderScene.lights.size(); ++i) {
+    const AreaLight &a = first->renderScene.lights[i], &b = second->renderScene.lights[i];
+    EXPECT_EQ(a.radiance, b.radiance) << "light " << i;
+    for (size_t k = 0; k < 4; ++k) EXPECT_EQ(a.cornersWorld[k], b.cornersWorld[k]) << "light " << i;
+  }
+  EXPECT_TRUE(sameBits(first->renderScene.roomAlbedo.albedo, second->renderScene.roomAlbedo.albedo));
+  EXPECT_TRUE(sameBits(first->lighting.gathered, second->lighting.gathered));
+  EXPECT_TRUE(sameBits(first->renderScene.roomAlbedo.photoRadiance, second->renderScene.roomAlbedo.photoRadiance));
 }
 
 TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {

@@ -88,6 +88,24 @@ inline RenderScene roomScene(const Camera& cam, const RoomBox& box, double albed
   return s;
 }
 
+// An empty box room lit by `count` small square lights in a grid under the ceiling: light 0
+// shines with `brightLe`, the others with `dimLe` (grey). The camera looks down at the floor.
+inline RenderScene manyLightsScene(int w, int h, int count, double brightLe, double dimLe) {
+  const RoomBox box;
+  RenderScene s = roomScene(testCamera(w, h, 70, 1.3, -30), box, 0.5);
+  const int cols = int(std::ceil(std::sqrt(double(count))));
+  const int rows = (count + cols - 1) / cols;
+  const double half = 0.12, y = box.ceilingM - 0.01;
+  for (int k = 0; k < count; ++k) {
+    const double fx = (k % cols + 0.5) / cols, fz = (k / cols + 0.5) / rows;
+    const Vec3 c(box.xLeftM + 0.2 + fx * (box.xRightM - box.xLeftM - 0.4), y,
+                 box.zBackM + 0.2 + fz * (box.zRearM - box.zBackM - 0.4));
+    // U x V = x x z = -y: the light shines down.
+    s.lights.push_back(rectLight(c, Vec3(half, 0, 0), Vec3(0, 0, half), Vec3::Constant(k == 0 ? brightLe : dimLe)));
+  }
+  return s;
+}
+
 // UV sphere of radius r around the origin with outward vertex normals.
 inline std::shared_ptr<TriangleMesh> sphereMesh(double r, int rings = 24, int segments = 48) {
   auto m = std::make_shared<TriangleMesh>();

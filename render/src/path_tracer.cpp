@@ -14,7 +14,8 @@
 // the random dimensions of their depth, so they stay correlated.
 //
 // Light transport: unidirectional path tracing with next-event estimation to the area lights
-// (one light picked by power over squared distance, a point uniform in its solid angle, by area
+// (one light picked by power over squared distance, or from a power table when there are many,
+// TracerOptions::lightSelection; a point uniform in its solid angle, by area
 // when that is tiny, a shadow ray) combined with BSDF sampling by the power heuristic (MIS). Camera rays and specular bounces see lights at
 // full weight. Emissive objects are lights too: NEE picks them among the area lights by the same
 // rule and samples a point uniformly by area on their triangles (MIS with BSDF hits likewise);
@@ -354,8 +355,46 @@ struct PathTracer::Impl {
     for (size_t j = 0; j < sourceCount(); ++j) total += selectionWeight(j, p, n);
     return total;
   }
+  // The power table (TracerOptions::LightSelection::Power): running sums of the sources'
+  // power, built once per scene (again when an emissive object moves).
+  bool powerSelection = false;
+  std::vector<double> powerCdf;  // powerCdf[j] = power of sources 0..j; back() = total
+  size_t lastPoweredSource = 0;  // the last source with power > 0 (round-off at u near 1)
+  double sourcePower(size_t j) const {
+    return j < lights.size() ? lights[j].power : meshLights[j - lights.size()].power;
+  }
+  void buildLightSelection() {
+    powerCdf.assign(sourceCount(), 0.0);
+    double run = 0;
+    for (size_t j = 0; j < sourceCount(); ++j) {
+      const double w = sourcePower(j);
+      if (w > 0) run += w, lastPoweredSource = j;
+      powerCdf[j] = run;
+    }
+    using Sel = TracerOptions::LightSelection;
+    const Sel sel = options.lightSelection;
+    powerSelection = sel == Sel::Power ||
+                     (sel == Sel::Auto && sourceCount() > size_t(std::max(0, options.spatialSelectionMax)));
+  }
+  // The probability that NEE from p (normal n) picks source j, as pickLight() draws it.
+  double selectionProbability(size_t j, const Vec3& p, const Vec3& n) const {
+    if (powerSelection) return powerCdf.empty() || !(powerCdf.back() > 0) ? 0.0 : sourcePower(j) / powerCdf.back();
+    const double total = selectionTotal(p, n);
+    return total > 0 ? selectionWeight(j, p, n) / total : 0.0;
+  }
   // The source NEE picks with u in [0, 1); sourceCount() when none can contribute.
   size_t pickLight(const Vec3& p, const Vec3& n, double u, double* prob) const {
+    if (powerSelection) {
+      const double total = powerCdf.empty() ? 0.0 : powerCdf.back();
+      if (!(total > 0)) return sourceCount();
+      // The first source whose running sum exceeds u * total (sources of no power have an
+      // empty interval and are never picked).
+      const auto it = std::upper_bound(powerCdf.begin(), powerCdf.end(), u * total);
+      const size_t j = it == powerCdf.end() ? lastPoweredSource : size_t(it - powerCdf.begin());
+      *prob = sourcePower(j) / total;
+      return j;
+    }
+    if (sourceCount() <= kBufferedWeights) return pickSpatialBuffered(p, n, u, prob);
     const double total = selectionTotal(p, n);
     if (!(total > 0)) return sourceCount();
     const double target = u * total;
@@ -372,6 +411,30 @@ struct PathTracer::Impl {
       }
     }
     *prob = selectionWeight(last, p, n) / total;  // round-off at u close to 1
+    return last;
+  }
+
+  // pickLight()'s spatial rule for a few sources: every weight computed once (the same sums in
+  // the same order, so the same pick and probability as the unbuffered loop).
+  static constexpr size_t kBufferedWeights = 256;
+  size_t pickSpatialBuffered(const Vec3& p, const Vec3& n, double u, double* prob) const {
+    std::array<double, kBufferedWeights> weight;
+    double total = 0;
+    for (size_t j = 0; j < sourceCount(); ++j) total += (weight[j] = selectionWeight(j, p, n));
+    if (!(total > 0)) return sourceCount();
+    const double target = u * total;
+    double run = 0;
+    size_t last = sourceCount();
+    for (size_t j = 0; j < sourceCount(); ++j) {
+      if (!(weight[j] > 0)) continue;
+      last = j;
+      run += weight[j];
+      if (target < run) {
+        *prob = weight[j] / total;
+        return j;
+      }
+    }
+    *prob = weight[last] / total;  // round-off at u close to 1
     return last;
   }
 
@@ -400,8 +463,7 @@ struct PathTracer::Impl {
   double meshLightPdf(size_t k, const Vec3& from, const Vec3& fromNormal, const Vec3& onLight,
                       const Vec3& lightNormal) const {
     const MeshLightData& m = meshLights[k];
-    const double total = selectionTotal(from, fromNormal);
-    const double selectProb = total > 0 ? meshSelectionWeight(m, from, fromNormal) / total : 0.0;
+    const double selectProb = selectionProbability(lights.size() + k, from, fromNormal);
     const Vec3 w = onLight - from;
     const double d2 = w.squaredNorm();
     const double cosL = std::abs(lightNormal.dot(w)) / std::sqrt(d2);
@@ -414,8 +476,7 @@ struct PathTracer::Impl {
   double lightPdf(int i, const Vec3& from, const Vec3& fromNormal, const Vec3& onLight) const {
     const LightData& l = lights[size_t(i)];
     if (!(l.area > 0)) return 0;
-    const double total = selectionTotal(from, fromNormal);
-    const double selectProb = total > 0 ? selectionWeight(size_t(i), from, fromNormal) / total : 0.0;
+    const double selectProb = selectionProbability(size_t(i), from, fromNormal);
     if (!(selectProb > 0)) return 0;
     if (l.rectangle) {
       const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
@@ -662,7 +723,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       // transmits (rough glass): then every side counts (a zero normal says so).
       const Vec3 selectNormal = bsdf.transmits() ? Vec3(Vec3::Zero()) : ngFacing;
       const bool nee = !bsdf.transmits() || options.roughGlassNee;
-      // Next-event estimation: one source picked by power over squared distance; on an area
+      // Next-event estimation: one source picked by power over squared distance (or by power
+      // alone, TracerOptions::lightSelection); on an area
       // light one point uniform in its solid angle (rectangles) or area, on an emissive object
       // one point uniform by area.
       double selectProb = 0;
@@ -956,6 +1018,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     d.updateMeshLight(i);
     if (o.instance) rtcAttachGeometryByID(d.withScene, o.instance, d.objectGeomId(i));
   }
+  d.buildLightSelection();
   attachCardShadowFilters(d.withScene);
   attachCardShadowFilters(d.withoutScene);
   rtcCommitScene(d.withScene);
@@ -1013,6 +1076,7 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   d.scene.objects[index].worldFromObject = worldFromObject;
   d.setTransform(d.objects[index], worldFromObject);
   d.updateMeshLight(index);
+  if (d.objects[index].meshLight >= 0) d.buildLightSelection();  // its area may have changed
   rtcCommitScene(d.withScene);
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }

@@ -560,6 +560,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   lo.nonMatteSurfaces = nonMatte;
   lo.cancel = opt.cancel;
   lo.threads = opt.threads;
+  lo.seed += opt.seed;
   auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine,
                                    lightMask, suns, lo);
   if (!lighting) return lighting.error();
@@ -588,6 +589,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       specs[i].sizeWeight = doc.lights[i].sizeWeight;
     }
     LightRefineOptions ro = opt.refine;
+    ro.seed += opt.seed;
     if (!ro.cancel) ro.cancel = opt.cancel;
     ro.nonMatteSurfaces = nonMatte;
     ro.sunBounce = ps.lighting.sunBounce;

@@ -72,6 +72,11 @@ struct PrepareOptions {
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
   // ratio cannot be measured (a note says why).
   bool sunsFromShadowRatio = true;
+  // The preparation's own randomness (the lighting fit's light samples and gathering, the
+  // refinement's fixed samples), added to each stage's default seed. It is fixed per scene and
+  // never the render seed (render.seed, --seed): renders of one scene with different render
+  // seeds share one prepared scene, so they converge to one image.
+  uint32_t seed = 0;
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
