@@ -28,9 +28,13 @@ inline uchar encode(float linear, const std::array<uchar, kLutSize>& lut) {
 
 }  // namespace
 
-QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
+namespace {
+
+// Encodes each pixel's channels (grey images repeat their one channel) after the exposure gain
+// with `code`: linear -> 8-bit code.
+template <class Code>
+QImage encodedImage(const ImageF& linearRgb, double exposureStops, Code code) {
   if (linearRgb.empty() || linearRgb.width <= 0 || linearRgb.height <= 0) return {};
-  const auto& lut = srgbLut();
   const float gain = float(std::exp2(exposureStops));
   const int c = linearRgb.channels;
   QImage out(linearRgb.width, linearRgb.height, QImage::Format_RGB32);
@@ -38,30 +42,22 @@ QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
     auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
     for (int x = 0; x < linearRgb.width; ++x) {
       const float* p = linearRgb.pixel(x, y);
-      const float r = p[0] * gain;
-      const float g = (c >= 3 ? p[1] : p[0]) * gain;
-      const float b = (c >= 3 ? p[2] : p[0]) * gain;
-      row[x] = qRgb(encode(r, lut), encode(g, lut), encode(b, lut));
+      row[x] = qRgb(code(p[0] * gain), code((c >= 3 ? p[1] : p[0]) * gain), code((c >= 3 ? p[2] : p[0]) * gain));
     }
   }
   return out;
 }
 
+}  // namespace
+
+QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
+  const auto& lut = srgbLut();
+  return encodedImage(linearRgb, exposureStops, [&lut](float v) { return encode(v, lut); });
+}
+
 QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response, double exposureStops) {
   if (response.family() != ResponseFamily::ToeShoulder) return srgb8FromLinear(linearRgb, exposureStops);
-  if (linearRgb.empty() || linearRgb.width <= 0 || linearRgb.height <= 0) return {};
-  const float gain = float(std::exp2(exposureStops));
-  const int c = linearRgb.channels;
-  QImage out(linearRgb.width, linearRgb.height, QImage::Format_RGB32);
-  for (int y = 0; y < linearRgb.height; ++y) {
-    auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
-    for (int x = 0; x < linearRgb.width; ++x) {
-      const float* p = linearRgb.pixel(x, y);
-      row[x] = qRgb(response.encodeCode8(p[0] * gain), response.encodeCode8((c >= 3 ? p[1] : p[0]) * gain),
-                    response.encodeCode8((c >= 3 ? p[2] : p[0]) * gain));
-    }
-  }
-  return out;
+  return encodedImage(linearRgb, exposureStops, [&response](float v) { return response.encodeCode8(v); });
 }
 
 }  // namespace inlay::studio

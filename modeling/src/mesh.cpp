@@ -1103,16 +1103,21 @@ TriangleMesh meshFromAssimp(const aiScene& sceneRef, const MeshLimits& limits,
 }
 
 
+// Sets `importer` to drop points and lines; returns the post-processing every Assimp read here
+// uses (triangles, welded vertices, normals, one flat mesh list, validated).
+unsigned prepareAssimpImporter(Assimp::Importer& importer) {
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  return aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenNormals |
+         aiProcess_PreTransformVertices | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+}
+
 TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
   const std::string data = readWholeFile(path);
   const bool glb = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
   const nlohmann::json gltf = checkGltf(path, data, glb);
 
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_GenNormals | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const unsigned flags = prepareAssimpImporter(importer);
   const aiScene* scene = nullptr;
   try {
     scene = importer.ReadFileFromMemory(data.data(), data.size(), flags, glb ? "glb" : "gltf");
@@ -1147,10 +1152,7 @@ std::optional<double> metadataNumber(const aiScene& scene, const char* key) {
 TriangleMesh readWithAssimp(const std::string& path, const std::string& ext, const MeshLimits& limits,
                             MeshFileInfo& info) {
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_GenNormals | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const unsigned flags = prepareAssimpImporter(importer);
   const aiScene* scene = nullptr;
   try {
     scene = importer.ReadFile(path, flags);
