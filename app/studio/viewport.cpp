@@ -424,7 +424,9 @@ void Viewport::paintVanishingLines(QPainter& p) {
   // Every supporting segment in its family's colour, thin.
   std::array<std::vector<const LineSegment*>, 3> byFamily;
   for (const LineSegment& s : e->segments) {
-    if (s.family < 0 || s.family > 2) continue;
+    // The user's own lines are drawn from the scene (paintMarkHandles): an estimate that is
+    // still being redone after an undo must not bring them back.
+    if (s.family < 0 || s.family > 2 || s.userGiven) continue;
     byFamily[size_t(s.family)].push_back(&s);
     p.setPen(QPen(family[s.family], 1.2));
     p.drawLine(widgetFromImage(s.aPx), widgetFromImage(s.bPx));
