@@ -5,8 +5,8 @@
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
 #include "inlay/modeling/image_io.h"
-#include "../modeling/src/estimate_camera_internal.h"
-#include "../modeling/src/lines.h"
+#include "../modeling/src/camera/estimate_camera_internal.h"
+#include "../modeling/src/camera/lines.h"
 #include "test_support.h"
 
 #include <nlohmann/json.hpp>

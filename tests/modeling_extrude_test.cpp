@@ -5,7 +5,7 @@
 #include "inlay/modeling/scene_file.h"
 #include "test_support.h"
 
-#include "../modeling/src/solid_mesh.h"
+#include "../modeling/src/geometry/solid_mesh.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,7 +4,7 @@
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
-#include "../modeling/src/layout_rules.h"
+#include "../modeling/src/camera/layout_rules.h"
 #include "test_support.h"
 
 #include <cmath>

@@ -27,6 +27,7 @@
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/core.h"
 #include "inlay/modeling/image.h"
+#include "inlay/modeling/line_segment.h"
 
 #include <array>
 #include <cstdint>
@@ -40,18 +41,6 @@ namespace inlay {
 namespace detail {
 struct PhotoEdges;  // the photo's gradient at the layout's scale (layout.h)
 }
-
-// One straight line segment of the photo. `family`: the world axis (0 x, 1 y, 2 z) whose
-// vanishing point it supports, -1 when it supports none. `residualPx`: the distance of its
-// endpoints to the line through its midpoint and that vanishing point (0 when family < 0).
-struct LineSegment {
-  Vec2 aPx{0, 0};
-  Vec2 bPx{0, 0};
-  int family = -1;
-  double residualPx = 0;
-  bool userGiven = false;  // drawn by the user (a correction), not detected
-  double lengthPx() const { return (bPx - aPx).norm(); }
-};
 
 // What is known about one vanishing point.
 struct VanishingPointInfo {
@@ -152,10 +141,10 @@ struct EstimateOptions {
   std::optional<Vec2> principalPx;
   double cameraHeightM = 1.6;  // Camera::heightM of the result (the scene's camera.height_m)
   bool estimateLayout = true;
-  // Refuse an implausible automatic box and search again (modeling/src/layout_rules.h: a floor
-  // crease too near the horizon for its depth, a room narrower than half the camera's height, a
-  // ceiling the photo shows more than 3 camera heights up); a warning says what was refused and
-  // what replaced it. Off: the best-supported box, whatever it is (a diagnosis).
+  // Refuse an implausible automatic box and search again (modeling/src/camera/layout_rules.h: a
+  // floor crease too near the horizon for its depth, a room narrower than half the camera's
+  // height, a ceiling the photo shows more than 3 camera heights up); a warning says what was
+  // refused and what replaced it. Off: the best-supported box, whatever it is (a diagnosis).
   bool refuseImplausibleBox = true;
   uint32_t seed = 1;            // hypothesis sampling; same seed, same result
   const CancelToken* cancel = nullptr;  // polled between stages and inside the loops

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "inlay/modeling/camera.h"
-#include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/line_segment.h"
 #include "layout_rules.h"
 
 #include <opencv2/core.hpp>

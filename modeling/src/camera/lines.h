@@ -2,8 +2,8 @@
 #pragma once
 
 #include "inlay/modeling/core.h"
-#include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image.h"
+#include "inlay/modeling/line_segment.h"
 
 #include <memory>
 #include <vector>
