@@ -405,6 +405,7 @@ struct LightingFit {
   void fitChannel(int c, double& cost);
   void storeFittedLights();
   void perPixelAlbedo();
+  void relativeFitResidual();
 };
 
 // Step 1: the first surface behind every pixel.
@@ -992,6 +993,33 @@ void LightingFit::perPixelAlbedo() {
   out.physicalAlbedo = out.albedo;
 }
 
+// The model's residual against the photo relative to the photo's own spread, in log space
+// (LightingEstimate::fitResidualRelative): scale-free, and a power applied to the photo scales
+// both alike.
+void LightingFit::relativeFitResidual() {
+  std::vector<double> residual, logB;
+  for (size_t idx : candidates) {
+    const int x = int(idx % W), y = int(idx / W);
+    if (saturated(x, y)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double b = photo.at(x, y, c), r = shadingFree.at(x, y, c);
+      const double rhoS = rho[size_t(ps[idx].surface)][size_t(c)];
+      if (!(b > 0) || !(r > 0) || !(rhoS > 0)) continue;
+      residual.push_back(std::abs(std::log(r / rhoS)));
+      logB.push_back(std::log(b));
+    }
+  }
+  if (residual.size() < 16) return;
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double mid = median(logB);
+  for (double& l : logB) l = std::abs(l - mid);
+  const double spread = median(logB);
+  if (spread > 0) out.fitResidualRelative = median(residual) / spread;
+}
+
 // Step 6, the decomposition: colour Retinex from the photo alone, scaled per channel so that its
 // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then the
 // geometry-aware objective, whose data terms tie rho * Gamma to the photo.
@@ -1159,6 +1187,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   fit.chooseGatherSamples();
   if (!fit.gatherAndFit()) return cancelled();
   fit.perPixelAlbedo();
+  fit.relativeFitResidual();
   Decomposer decomposer(fit);
   if (auto error = decomposer.run()) return *error;
   decomposer.surfaceMeanAlbedo();
