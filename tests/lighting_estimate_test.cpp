@@ -568,5 +568,34 @@ TEST(Lighting, AnOutlineOffItsWallSaysWhichPointAndWhatToDrag) {
   EXPECT_TRUE(lightFromOutline(r.camera, r.geometry, outline, "lights[0].points").ok());
 }
 
+// The light fit's relative residual (LightingEstimate::fitResidualRelative) is what a response
+// search would compare curves by: the photo's true radiance leaves less of it than the same
+// photo through a power curve either way (the lights' fall-off is fixed by the geometry, so a
+// bent photo cannot be matched by other albedos and strengths), and it is scale-free.
+TEST(Lighting, FitResidualIsLowestForTheTrueRadiance) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 32);
+  LightingOptions opt;
+  opt.gatherSamples = 32;
+  opt.objective = false;
+  const ImageF mask = lightMaskOf(r);
+  auto residualOf = [&](double power, double scale) {
+    ImageF photo = r.photo;
+    for (float& v : photo.data) v = float(scale * std::pow(std::max(v, 0.f) / 0.9f, float(power)) * 0.9f);
+    auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+    EXPECT_TRUE(light.ok());
+    const auto est = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
+    EXPECT_TRUE(est.ok());
+    return est.ok() ? est->fitResidualRelative : std::nan("");
+  };
+  const double truth = residualOf(1.0, 1.0), darker = residualOf(1.0, 0.5);
+  const double bentUp = residualOf(1.6, 1.0), bentDown = residualOf(0.6, 1.0);
+  std::printf("relative residual: true %.4f, half exposure %.4f, power 1.6 %.4f, power 0.6 %.4f\n",
+              truth, darker, bentUp, bentDown);
+  ASSERT_TRUE(std::isfinite(truth) && truth > 0);
+  EXPECT_NEAR(darker / truth, 1.0, 0.1);
+  EXPECT_GT(bentUp, 1.2 * truth);
+  EXPECT_GT(bentDown, 1.2 * truth);
+}
+
 }  // namespace
 }  // namespace inlay

@@ -676,6 +676,9 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   else if (!a.quiet && !retinex && !le.decomposeReport.empty())
     std::fprintf(stderr, "inlay-cli: decomposition %s\n",
                  (rerun ? rerun->report : le.decomposeReport).c_str());
+  if (!a.quiet && std::isfinite(le.fitResidualRelative))
+    std::fprintf(stderr, "inlay-cli: light fit: relative residual %.5f (rms log %.5f)\n",
+                 le.fitResidualRelative, le.fitRmsLog);
   return 0;
 }
 

@@ -11,6 +11,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 namespace inlay {
 
@@ -122,12 +124,11 @@ double pixelNoiseSigma(const ImageF& img, const std::vector<uint8_t>& use) {
 
 namespace {
 
-// The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
-Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF& gathered,
-                                              const ImageF& rho0, const std::vector<uint8_t>& valid,
-                                              const std::vector<uint8_t>& clipped,
-                                              const DecomposeOptions& opt) {
-  const auto t0 = Clock::now();
+// The solver's inputs checked: sizes, masks and weights (decomposeIntrinsic's contract).
+std::optional<Error> checkSolverInput(const ImageF& photo, const ImageF& gathered,
+                                      const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                      const std::vector<uint8_t>& clipped,
+                                      const DecomposeOptions& opt) {
   const int W = photo.width, H = photo.height;
   if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
   if (gathered.width != W || gathered.height != H || gathered.channels < 3)
@@ -140,8 +141,18 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
     return Error{"", "clipped", "the mask must be empty or have one entry per pixel"};
   for (double w : {opt.g1, opt.g2, opt.g3, opt.s, opt.c, opt.tolerance, opt.objectiveTolerance})
     if (!std::isfinite(w) || w < 0) return Error{"", "options", "weights must be finite and >= 0"};
+  if (!(opt.unitsPerWhite > 0) || !std::isfinite(opt.unitsPerWhite))
+    return Error{"", "options.unitsPerWhite", "must be a positive number"};
+  return std::nullopt;
+}
 
-  // Units: B and Gamma over the mean gathered irradiance of the valid pixels.
+// The photo's linear value that is one unit of B and Gamma in the objective (kappa): the mean
+// gathered irradiance of the valid pixels (normaliseByMeanGamma), over the units per white
+// (unitsPerWhite, or one per standard deviation of the photo's noise, unitsFromNoise).
+double objectiveUnit(const ImageF& photo, const ImageF& gathered, const std::vector<uint8_t>& valid,
+                     const std::vector<uint8_t>& clipped, const DecomposeOptions& opt) {
+  const int W = photo.width, H = photo.height;
+  const size_t N = photo.pixelCount();
   double kappa = 1;
   if (opt.normaliseByMeanGamma) {
     double sum = 0, n = 0;
@@ -155,8 +166,6 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
           }
     if (n > 0 && sum / n > 1e-12) kappa = sum / n;
   }
-  if (!(opt.unitsPerWhite > 0) || !std::isfinite(opt.unitsPerWhite))
-    return Error{"", "options.unitsPerWhite", "must be a positive number"};
   double units = opt.unitsPerWhite;
   if (opt.unitsFromNoise) {
     // Noise of the measured pixels only: clipped ones are flat at the clip level.
@@ -165,16 +174,51 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
     const double sigma = pixelNoiseSigma(photo, measured) / kappa;  // in the photo's units
     if (sigma > 0 && std::isfinite(sigma)) units = std::min(units, 1 / sigma);
   }
-  kappa /= units;
-  const float invK = float(1 / kappa);
+  return kappa / units;
+}
 
+// The primal-dual (Condat-Vu) solve of the objective in decompose.h, per channel plane, in the
+// objective's units: the planes, the edge masks and the steps, then iterations until the
+// residuals or the objective settle.
+class PrimalDualSolver {
+ public:
+  PrimalDualSolver(int width, int height, double unit, const DecomposeOptions& options)
+      : W(width), H(height), N(size_t(width) * size_t(height)), kappa(unit), opt(options) {}
+  void load(const ImageF& photo, const ImageF& gathered, const ImageF& rho0,
+            const std::vector<uint8_t>& valid, const std::vector<uint8_t>& clipped);
+  void iterate(Decomposition& out, Clock::time_point t0);
+  void writeLayers(Decomposition& out) const;
+
+ private:
   // Per channel planes (row-major, W x H).
   struct Plane {
     std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn;
   };
-  std::vector<Plane> P(3);
-  std::vector<float> mx(N, 0.f), my(N, 0.f);  // mask on the edge to the right / below
+  void edgeMasks();
+  void chooseSteps();
+  float lap(const std::vector<float>& u, size_t i, int x, int y) const;
+  void gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
+  void gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
+  double objective() const;
+  void step(Plane& p, bool record, double& pSum, double& dSum) const;
+
+  const int W, H;
+  const size_t N;
+  const double kappa;
+  const DecomposeOptions& opt;
+  std::vector<Plane> P;
+  std::vector<float> mx, my;  // mask on the edge to the right / below
   float gammaMax = 0;
+  double tau = 0, sigma = 0;
+  float tauF = 0, sigmaF = 0, g1x2 = 0, g3x2 = 0;
+};
+
+// B and Gamma in the objective's units, the start x0 within its box [0, min(1, B / Gamma)]
+// (no upper cap where B is clipped or not finite), the g2 weights; then the masks and steps.
+void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const ImageF& rho0,
+                            const std::vector<uint8_t>& valid, const std::vector<uint8_t>& clipped) {
+  const float invK = float(1 / kappa);
+  P.assign(3, Plane{});
   for (int c = 0; c < 3; ++c) {
     Plane& p = P[size_t(c)];
     p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N);
@@ -203,7 +247,13 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
     p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.q.assign(N, 0.f), p.ly.assign(N, 0.f);
     p.gf.assign(N, 0.f), p.gfn.assign(N, 0.f), p.lx.assign(N, 0.f), p.lxn.assign(N, 0.f);
   }
-  // |grad B|^2 over the three channels, per edge.
+  edgeMasks();
+  chooseSteps();
+}
+
+// The smoothness mask per edge: a sigmoid of |grad B|^2 over the three channels.
+void PrimalDualSolver::edgeMasks() {
+  mx.assign(N, 0.f), my.assign(N, 0.f);
   forRows(H, [&](int y) {
     for (int x = 0; x < W; ++x) {
       const size_t i = size_t(y) * W + x;
@@ -217,77 +267,132 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
       if (y + 1 < H) my[i] = mask(i + size_t(W));
     }
   });
+}
 
-  // Steps (Condat-Vu): tau Lf / 2 + tau sigma |Lap|^2 <= 0.95 with |Lap|^2 <= 64 and
-  // Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal step takes what the smooth part allows, the
-  // dual step the rest.
+// Steps (Condat-Vu): tau Lf / 2 + tau sigma |Lap|^2 <= 0.95 with |Lap|^2 <= 64 and
+// Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal step takes what the smooth part allows, the
+// dual step the rest.
+void PrimalDualSolver::chooseSteps() {
   const double Lf = 16 * opt.g1 + 16 * opt.g3 * double(gammaMax) * gammaMax;
-  const double tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
-  const double sigma = 0.5 / (64 * tau);
-  const float tauF = float(tau), sigmaF = float(sigma);
-  const float g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
+  tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
+  sigma = 0.5 / (64 * tau);
+  tauF = float(tau), sigmaF = float(sigma);
+  g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
+}
 
-  auto lap = [&](const std::vector<float>& u, size_t i, int x, int y) {
-    if (x > 0 && x + 1 < W && y > 0 && y + 1 < H)  // interior: no boundary tests
-      return (u[i - 1] + u[i + 1]) + (u[i - size_t(W)] + u[i + size_t(W)]) - 4 * u[i];
-    float s = 0;
-    if (x > 0) s += u[i - 1] - u[i];
-    if (x + 1 < W) s += u[i + 1] - u[i];
-    if (y > 0) s += u[i - size_t(W)] - u[i];
-    if (y + 1 < H) s += u[i + size_t(W)] - u[i];
-    return s;
-  };
-  // Gradient of the smooth part at `xs` into `out`, given p.q = Gamma xs - B.
-  auto gradFfromQ = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
+float PrimalDualSolver::lap(const std::vector<float>& u, size_t i, int x, int y) const {
+  if (x > 0 && x + 1 < W && y > 0 && y + 1 < H)  // interior: no boundary tests
+    return (u[i - 1] + u[i + 1]) + (u[i - size_t(W)] + u[i + size_t(W)]) - 4 * u[i];
+  float s = 0;
+  if (x > 0) s += u[i - 1] - u[i];
+  if (x + 1 < W) s += u[i + 1] - u[i];
+  if (y > 0) s += u[i - size_t(W)] - u[i];
+  if (y + 1 < H) s += u[i + size_t(W)] - u[i];
+  return s;
+}
+
+// Gradient of the smooth part at `xs` into `out`, given p.q = Gamma xs - B.
+void PrimalDualSolver::gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const {
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      float sm = 0;
+      if (x > 0) sm += mx[i - 1] * (xs[i] - xs[i - 1]);
+      if (x + 1 < W) sm += mx[i] * (xs[i] - xs[i + 1]);
+      if (y > 0) sm += my[i - size_t(W)] * (xs[i] - xs[i - size_t(W)]);
+      if (y + 1 < H) sm += my[i] * (xs[i] - xs[i + size_t(W)]);
+      out[i] = g1x2 * sm - g3x2 * p.G[i] * lap(p.q, i, x, y);
+    }
+  });
+}
+
+void PrimalDualSolver::gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const {
+  for (size_t i = 0; i < N; ++i) p.q[i] = p.G[i] * xs[i] - p.B[i];
+  gradFfromQ(p, xs, out);
+}
+
+// The objective at the current x, summed over the channels.
+double PrimalDualSolver::objective() const {
+  double f = 0;
+  for (int c = 0; c < 3; ++c) {
+    const Plane& p = P[size_t(c)];
+    std::vector<double> rows(size_t(H), 0.0);
     forRows(H, [&](int y) {
+      double s = 0;
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
-        float sm = 0;
-        if (x > 0) sm += mx[i - 1] * (xs[i] - xs[i - 1]);
-        if (x + 1 < W) sm += mx[i] * (xs[i] - xs[i + 1]);
-        if (y > 0) sm += my[i - size_t(W)] * (xs[i] - xs[i - size_t(W)]);
-        if (y + 1 < H) sm += my[i] * (xs[i] - xs[i + size_t(W)]);
-        out[i] = g1x2 * sm - g3x2 * p.G[i] * lap(p.q, i, x, y);
-      }
-    });
-  };
-  auto gradF = [&](Plane& p, const std::vector<float>& xs, std::vector<float>& out) {
-    for (size_t i = 0; i < N; ++i) p.q[i] = p.G[i] * xs[i] - p.B[i];
-    gradFfromQ(p, xs, out);
-  };
-  auto objective = [&]() {
-    double f = 0;
-    for (int c = 0; c < 3; ++c) {
-      Plane& p = P[size_t(c)];
-      std::vector<double> rows(size_t(H), 0.0);
-      forRows(H, [&](int y) {
-        double s = 0;
-        for (int x = 0; x < W; ++x) {
-          const size_t i = size_t(y) * W + x;
-          s += std::abs(lap(p.x, i, x, y));
-          const double d = p.x[i] - p.x0[i];
-          s += 0.5 * p.wg2[i] * d * d;
-          const double Di = p.B[i] - p.G[i] * p.x[i];
-          if (x + 1 < W) {
-            const double gx = p.x[i + 1] - p.x[i];
-            const double dD = (p.B[i + 1] - p.G[i + 1] * p.x[i + 1]) - Di;
-            s += opt.g1 * mx[i] * gx * gx + opt.g3 * dD * dD;
-          }
-          if (y + 1 < H) {
-            const size_t j = i + size_t(W);
-            const double gy = p.x[j] - p.x[i];
-            const double dD = (p.B[j] - p.G[j] * p.x[j]) - Di;
-            s += opt.g1 * my[i] * gy * gy + opt.g3 * dD * dD;
-          }
+        s += std::abs(lap(p.x, i, x, y));
+        const double d = p.x[i] - p.x0[i];
+        s += 0.5 * p.wg2[i] * d * d;
+        const double Di = p.B[i] - p.G[i] * p.x[i];
+        if (x + 1 < W) {
+          const double gx = p.x[i + 1] - p.x[i];
+          const double dD = (p.B[i + 1] - p.G[i + 1] * p.x[i + 1]) - Di;
+          s += opt.g1 * mx[i] * gx * gx + opt.g3 * dD * dD;
         }
-        rows[size_t(y)] = s;
-      });
-      for (double r : rows) f += r;
-    }
-    return f;
-  };
+        if (y + 1 < H) {
+          const size_t j = i + size_t(W);
+          const double gy = p.x[j] - p.x[i];
+          const double dD = (p.B[j] - p.G[j] * p.x[j]) - Di;
+          s += opt.g1 * my[i] * gy * gy + opt.g3 * dD * dD;
+        }
+      }
+      rows[size_t(y)] = s;
+    });
+    for (double r : rows) f += r;
+  }
+  return f;
+}
 
-  Decomposition out;
+// One iteration on one plane; with `record`, its squared primal and dual residuals are added to
+// pSum and dSum.
+void PrimalDualSolver::step(Plane& p, bool record, double& pSum, double& dSum) const {
+  // Primal: x+ = prox_{tau g}(x - tau (grad f + Lap^T y)), g = box + g2 term.
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      p.ly[i] = lap(p.y, i, x, y);
+      const float v = p.x[i] - tauF * (p.gf[i] + p.ly[i]);
+      const float w = tauF * p.wg2[i];
+      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), 0.f, p.hi[i]);
+    }
+  });
+  // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x) {
+      const size_t i = size_t(y) * W + x;
+      p.lxn[i] = lap(p.xn, i, x, y);
+      p.yn[i] = std::clamp(p.y[i] + sigmaF * (2 * p.lxn[i] - p.lx[i]), -1.f, 1.f);
+      p.q[i] = p.G[i] * p.xn[i] - p.B[i];
+    }
+  });
+  gradFfromQ(p, p.xn, p.gfn);
+  if (record) {
+    // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
+    // term's gradient change (Condat-Vu).
+    std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
+    forRows(H, [&](int y) {
+      double sp = 0, sd = 0;
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        const double dly = p.ly[i] - lap(p.yn, i, x, y);
+        const double rp = (p.x[i] - p.xn[i]) / tau - dly - (p.gf[i] - p.gfn[i]);
+        const double rd = (p.y[i] - p.yn[i]) / sigma - (p.lx[i] - p.lxn[i]);
+        sp += rp * rp, sd += rd * rd;
+      }
+      ps[size_t(y)] = sp, ds[size_t(y)] = sd;
+    });
+    for (int y = 0; y < H; ++y) pSum += ps[size_t(y)], dSum += ds[size_t(y)];
+  }
+  std::swap(p.x, p.xn);
+  std::swap(p.y, p.yn);
+  std::swap(p.gf, p.gfn);
+  std::swap(p.lx, p.lxn);
+}
+
+// Iterates until converged (residuals or objective), the cap, non-finite residuals or
+// cancellation; fills out's history, iterations, converged and report.
+void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   for (auto& p : P) {
     gradF(p, p.x, p.gf);
@@ -297,55 +402,12 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
   }
   const int every = std::max(1, opt.historyEvery);
   double primal = INFINITY, dual = INFINITY;
-  int it = 0;
   std::string stopReason = "the iteration cap";
   const char* convergedBy = "";
-  for (it = 1; it <= std::max(1, opt.maxIterations); ++it) {
+  for (int it = 1; it <= std::max(1, opt.maxIterations); ++it) {
     const bool record = (it % every == 0) || it == opt.maxIterations;
     double pSum = 0, dSum = 0;
-    for (auto& p : P) {
-      // Primal: x+ = prox_{tau g}(x - tau (grad f + Lap^T y)), g = box + g2 term.
-      forRows(H, [&](int y) {
-        for (int x = 0; x < W; ++x) {
-          const size_t i = size_t(y) * W + x;
-          p.ly[i] = lap(p.y, i, x, y);
-          const float v = p.x[i] - tauF * (p.gf[i] + p.ly[i]);
-          const float w = tauF * p.wg2[i];
-          p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), 0.f, p.hi[i]);
-        }
-      });
-      // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
-      forRows(H, [&](int y) {
-        for (int x = 0; x < W; ++x) {
-          const size_t i = size_t(y) * W + x;
-          p.lxn[i] = lap(p.xn, i, x, y);
-          p.yn[i] = std::clamp(p.y[i] + sigmaF * (2 * p.lxn[i] - p.lx[i]), -1.f, 1.f);
-          p.q[i] = p.G[i] * p.xn[i] - p.B[i];
-        }
-      });
-      gradFfromQ(p, p.xn, p.gfn);
-      if (record) {
-        // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
-        // term's gradient change (Condat-Vu).
-        std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
-        forRows(H, [&](int y) {
-          double sp = 0, sd = 0;
-          for (int x = 0; x < W; ++x) {
-            const size_t i = size_t(y) * W + x;
-            const double dly = p.ly[i] - lap(p.yn, i, x, y);
-            const double rp = (p.x[i] - p.xn[i]) / tau - dly - (p.gf[i] - p.gfn[i]);
-            const double rd = (p.y[i] - p.yn[i]) / sigma - (p.lx[i] - p.lxn[i]);
-            sp += rp * rp, sd += rd * rd;
-          }
-          ps[size_t(y)] = sp, ds[size_t(y)] = sd;
-        });
-        for (int y = 0; y < H; ++y) pSum += ps[size_t(y)], dSum += ds[size_t(y)];
-      }
-      std::swap(p.x, p.xn);
-      std::swap(p.y, p.yn);
-      std::swap(p.gf, p.gfn);
-      std::swap(p.lx, p.lxn);
-    }
+    for (auto& p : P) step(p, record, pSum, dSum);
     out.iterations = it;
     if (record) {
       primal = tau * std::sqrt(pSum / (3.0 * N));
@@ -387,7 +449,10 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
                   "%.2e, dual %.2e, tolerance %.1e",
                   stopReason.c_str(), out.iterations, seconds(), primal, dual, opt.tolerance);
   out.report = buf;
+}
 
+// The albedo (the start where x is not finite) and D = B - Gamma rho back in the photo's units.
+void PrimalDualSolver::writeLayers(Decomposition& out) const {
   out.albedo = ImageF(W, H, 3, 0.f);
   out.direct = ImageF(W, H, 3, 0.f);
   for (int c = 0; c < 3; ++c) {
@@ -401,7 +466,22 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
       }
     });
   }
-  out.seconds = seconds();
+}
+
+// The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
+Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF& gathered,
+                                              const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                              const std::vector<uint8_t>& clipped,
+                                              const DecomposeOptions& opt) {
+  const auto t0 = Clock::now();
+  if (auto error = checkSolverInput(photo, gathered, rho0, valid, clipped, opt)) return *error;
+  PrimalDualSolver solver(photo.width, photo.height,
+                          objectiveUnit(photo, gathered, valid, clipped, opt), opt);
+  solver.load(photo, gathered, rho0, valid, clipped);
+  Decomposition out;
+  solver.iterate(out, t0);
+  solver.writeLayers(out);
+  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return out;
 }
 

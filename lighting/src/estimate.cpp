@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <random>
 
 namespace inlay {
@@ -44,10 +45,10 @@ struct BounceTerm {
 // The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
 // A clipped pixel (lowerBoundOnly) only says the prediction reaches the clip level.
 struct LogResidual {
-  LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false,
-              double gammaClipped = -1, std::vector<BounceTerm> bounce = {})
-      : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly),
-        gammaClipped(gammaClipped), bounce(std::move(bounce)) {}
+  LogResidual(double logBIn, double gammaIn, std::vector<double> eIn, bool lowerBoundOnlyIn = false,
+              double gammaClippedIn = -1, std::vector<BounceTerm> bounceIn = {})
+      : logB(logBIn), gamma(gammaIn), e(std::move(eIn)), lowerBoundOnly(lowerBoundOnlyIn),
+        gammaClipped(gammaClippedIn), bounce(std::move(bounceIn)) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
     // params[0]: rho (1), params[1..]: light radiance channel (1 each), then (when
@@ -269,83 +270,42 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
   return L;
 }
 
-Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& camera,
-                                            const SceneGeometry& geometry,
-                                            const std::vector<AreaLight>& lightsIn,
-                                            const std::vector<bool>& refineIn,
-                                            const ImageF& lightMask,
-                                            const std::vector<SunLight>& suns,
-                                            const LightingOptions& opt) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const int W = photo.width, H = photo.height;
-  if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
-  LightingEstimate out;
-  const size_t S = geometry.surfaces.size();
-  const size_t J = lightsIn.size();
-  const size_t K = suns.size();
-  const size_t C = J + K;  // unknown light strengths: area lights, then suns
-  std::unique_ptr<tbb::global_control> threadLimit;
-  if (opt.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
-  auto stop = [&] { return opt.cancel && opt.cancel->shouldStop(); };
-  auto cancelled = [] { return Error{"", "", "cancelled"}; };
+namespace {
 
-  RoomTracer tracer(geometry);
+// The state the steps of estimateLighting share: its inputs, the surface behind every pixel, the
+// lights' direct light per pixel, and what each gather-and-fit pass leaves to the next. Each
+// member function is one named step (the numbers follow the order estimateLighting runs them).
+struct LightingFit {
+  LightingFit(const ImageF& photoIn, const Camera& cameraIn, const SceneGeometry& geometryIn,
+              const std::vector<AreaLight>& lightsGiven, const std::vector<bool>& refineGiven,
+              const ImageF& lightMaskIn, const std::vector<SunLight>& sunsIn,
+              const LightingOptions& options)
+      : photo(photoIn), camera(cameraIn), geometry(geometryIn), lightsIn(lightsGiven),
+        refineIn(refineGiven), lightMask(lightMaskIn), suns(sunsIn), opt(options),
+        W(photoIn.width), H(photoIn.height), S(geometryIn.surfaces.size()), J(lightsGiven.size()),
+        K(sunsIn.size()), C(lightsGiven.size() + sunsIn.size()), tracer(geometryIn),
+        stride(std::max(1, options.gatherStride)), GW((W + stride - 1) / stride),
+        GH((H + stride - 1) / stride), gatherSamples(options.gatherSamples) {}
+
+  // Inputs.
+  const ImageF& photo;
+  const Camera& camera;
+  const SceneGeometry& geometry;
+  const std::vector<AreaLight>& lightsIn;
+  const std::vector<bool>& refineIn;
+  const ImageF& lightMask;
+  const std::vector<SunLight>& suns;
+  const LightingOptions& opt;
+  const int W, H;
+  const size_t S, J, K;
+  const size_t C;  // unknown light strengths: area lights, then suns
+  RoomTracer tracer;
+  LightingEstimate out;
 
   // 1. The first surface behind every pixel.
-  std::vector<PixelSurface> ps(size_t(W) * H);
-  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < W; ++x) {
-        const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
-        const auto h = tracer.intersect(r, 1e-6);
-        if (!h) continue;
-        PixelSurface& p = ps[size_t(y) * W + x];
-        p.surface = h->surfaceId;
-        p.point = h->pointWorld;
-        p.normal = h->normalWorld;
-        p.depth = camera.depthOf(h->pointWorld);
-      }
-  });
-  out.firstSurfacePerPixel.resize(ps.size());
-  for (size_t i = 0; i < ps.size(); ++i) out.firstSurfacePerPixel[i] = ps[i].surface;
-  if (stop()) return cancelled();
-
-  auto isLight = [&](int x, int y) { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; };
-  // The sides of an extrusion's prism stand in for the legs and the open space under a table
-  // top: the photo there shows the floor and walls behind, lit as the prism is not.
-  auto isProxy = [&](int surface) {
-    return geometry.surfaces[size_t(surface)].kind == SurfaceKind::ExtrusionSide;
-  };
-  // Clipped (or non-finite) pixels say nothing about albedo and light.
-  auto saturated = [&](int x, int y) {
-    const float* p = photo.pixel(x, y);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return true;
-    return std::max({p[0], p[1], p[2]}) >= float(opt.saturatedAbove);
-  };
-
-  // 2. Mean radiance of each surface where the photo shows it (for what the camera does not
-  // see), and of the whole room as the last resort.
-  std::vector<Vec3> surfaceRadiance(S, Vec3::Zero());
-  std::vector<double> surfaceCount(S, 0);
-  Vec3 roomRadiance = Vec3::Zero();
-  double roomCount = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const auto& p = ps[size_t(y) * W + x];
-      if (p.surface < 0 || isLight(x, y)) continue;
-      const Vec3 b = photo.rgb(x, y);
-      if (!b.allFinite()) continue;
-      surfaceRadiance[p.surface] += b;
-      surfaceCount[p.surface] += 1;
-      roomRadiance += b;
-      roomCount += 1;
-    }
-  if (roomCount == 0) return Error{"", "photo", "no pixel of the photo falls on the room"};
-  roomRadiance /= roomCount;
-  for (size_t s = 0; s < S; ++s)
-    surfaceRadiance[s] = surfaceCount[s] > 0 ? Vec3(surfaceRadiance[s] / surfaceCount[s]) : roomRadiance;
+  std::vector<PixelSurface> ps;
+  // 2. Mean radiance of each surface where the photo shows it.
+  std::vector<Vec3> surfaceRadiance;
 
   // What the first fit knows of the room, used in the second pass to predict the radiance of
   // what the camera does not see (the wall behind it, parts out of frame) instead of guessing
@@ -371,84 +331,150 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   // only the rest (beamRadianceNoSun) and unseen points no sunlight.
   bool sunApart = false;
   std::vector<Vec3> beamRadianceNoSun;
+  // A few clipped pixels send too little light to tell their gain.
+  bool fitClipped = false;
+  ImageF gatheredClipped;
+  std::array<double, 3> clippedGain = {0, 0, 0};
 
-  // The pixel showing room point `h` when the photo tells its radiance there (the camera sees
-  // that point, not a light outline, finite), else -1.
-  auto seenPixel = [&](const SurfaceHit& h) -> long {
-    const auto px = camera.project(h.pointWorld);
-    if (!px) return -1;
-    const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
-    if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y)) return -1;
-    const size_t idx = size_t(y) * W + x;
-    const auto& p = ps[idx];
-    if (p.surface != h.surfaceId ||
-        !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3) ||
-        !photo.rgb(x, y).allFinite())
-      return -1;
-    return long(idx);
+  // 3. E_j on a coarse grid (Gamma too, per pass), spread to every pixel of the same surface.
+  const int stride, GW, GH;
+  std::vector<double> gridE;
+  std::vector<int> gridSurface;
+  std::vector<Vec2> gridPixel;
+  int gatherSamples;
+  std::vector<double> E;  // W x H x C: unit direct light of each area light and sun
+  // Pass 2's bounce terms: (sun, patch surface) pairs and their gathered g (W x H, one channel).
+  struct SunPatch {
+    size_t sun = 0;
+    int surface = 0;
+    ImageF g;
   };
-  // Radiance leaving a room point toward another, read from the photo where the camera sees it.
-  auto radianceAt = [&](const SurfaceHit& h, uint32_t sampleId) -> Vec3 {
-    if (const long seen = seenPixel(h); seen >= 0) {
-      const size_t idx = size_t(seen);
-      const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
-      const Vec3 b = photo.rgb(x, y);
-      if (!clippedInBeam.empty() && clippedInBeam[idx]) {
-        if (sunApart) return beamRadianceNoSun[idx];
-        return beamRadiance.empty() ? b : beamRadiance[idx];
+  std::vector<SunPatch> sunPatches;
+
+  // 4. The light fit's pixels and unknowns.
+  std::vector<size_t> candidates;
+  std::vector<bool> refine;
+  std::vector<std::array<double, 3>> rho;
+  std::vector<std::array<double, 3>> L;
+
+  // 5. B / (sum L_j E_j + Gamma), unclamped, and sum L_j E_j / shading (green) per pixel.
+  ImageF shadingFree;
+  std::vector<float> directShare;
+
+  bool stop() const { return opt.cancel && opt.cancel->shouldStop(); }
+  bool isLight(int x, int y) const { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; }
+  // The sides of an extrusion's prism stand in for the legs and the open space under a table
+  // top: the photo there shows the floor and walls behind, lit as the prism is not.
+  bool isProxy(int surface) const {
+    return geometry.surfaces[size_t(surface)].kind == SurfaceKind::ExtrusionSide;
+  }
+  // Clipped (or non-finite) pixels say nothing about albedo and light.
+  bool saturated(int x, int y) const {
+    const float* p = photo.pixel(x, y);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return true;
+    return std::max({p[0], p[1], p[2]}) >= float(opt.saturatedAbove);
+  }
+  // A pixel inside a sun's beam: the sun's unit irradiance there above 0.05.
+  bool inSunBeam(size_t idx) const {
+    for (size_t k = 0; k < K; ++k)
+      if (E[idx * C + J + k] > 0.05) return true;
+    return false;
+  }
+
+  void findPixelSurfaces();
+  bool measureSurfaceRadiance();
+  void countClippedPixels();
+  bool computeDirectLight();
+  void spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
+              const std::function<void(int x, int y, const double* v)>& store,
+              const std::function<void(int x, int y, double* v)>& compute);
+  double lightE(const PixelSurface& p, size_t j, uint32_t id) const;
+  long seenPixel(const SurfaceHit& h) const;
+  Vec3 radianceAt(const SurfaceHit& h, uint32_t sampleId) const;
+  Vec3 clippedRadianceAt(const SurfaceHit& h) const;
+  RadianceAt sunBounceAt(size_t k, int surface) const;
+  ImageF gatherImage(const RadianceAt& radiance);
+  void gatherAll();
+  void gatherUnseenPatches();
+  bool chooseFitPixels();
+  void chooseGatherSamples();
+  bool gatherAndFit();
+  void predictUnseenFromFit();
+  bool fit();
+  double fitStartRadiance() const;
+  void fitChannel(int c, double& cost);
+  void storeFittedLights();
+  void perPixelAlbedo();
+  void relativeFitResidual();
+};
+
+// Step 1: the first surface behind every pixel.
+void LightingFit::findPixelSurfaces() {
+  ps.assign(size_t(W) * H, PixelSurface{});
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
+        const auto h = tracer.intersect(r, 1e-6);
+        if (!h) continue;
+        PixelSurface& p = ps[size_t(y) * W + x];
+        p.surface = h->surfaceId;
+        p.point = h->pointWorld;
+        p.normal = h->normalWorld;
+        p.depth = camera.depthOf(h->pointWorld);
       }
-      return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0], 1 + clippedGainApplied[1],
-                                                        1 + clippedGainApplied[2])))
-                             : b;
-    }
-    if (!model.active) return surfaceRadiance[h.surfaceId];
-    // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
-    // patch, or the surface's mean where no patch was made).
-    const int patch = model.patches.find(h);
-    Vec3 irradiance = patch >= 0 ? model.patches.gamma[size_t(patch)] : model.gammaMean[h.surfaceId];
-    for (size_t j = 0; j < J; ++j)
-      irradiance += model.lights[j] *
-                    tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
-                                                     h.normalWorld, 1, sampleId * 31u + uint32_t(j));
-    for (size_t k = 0; k < K && !sunApart; ++k)
-      irradiance += model.lights[J + k] *
-                    unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
-                                            h.normalWorld);
-    return model.rho[h.surfaceId].cwiseProduct(irradiance);
-  };
+  });
+  out.firstSurfacePerPixel.resize(ps.size());
+  for (size_t i = 0; i < ps.size(); ++i) out.firstSurfacePerPixel[i] = ps[i].surface;
+}
 
-  // The part of radianceAt that comes from clipped photo pixels (a window, an over-exposed wall
-  // by a lamp): there the photo gives only a lower bound of the radiance, so the light they send
-  // is gathered apart and the fit gives it an extra gain k (Gamma + k Gamma_clipped), with the
-  // clipped radiance's total factor 1 + k at least 1. The second pass starts from the first's.
-  auto clippedRadianceAt = [&](const SurfaceHit& h, uint32_t) -> Vec3 {
-    const long seen = seenPixel(h);
-    if (seen < 0) return Vec3::Zero();
-    const int x = int(seen % W), y = int(seen / W);
-    if (!saturated(x, y) || (!clippedInBeam.empty() && clippedInBeam[size_t(seen)])) return Vec3::Zero();
-    return photo.rgb(x, y);
-  };
+// Step 2: mean radiance of each surface where the photo shows it (for what the camera does not
+// see), and of the whole room as the last resort. False when no pixel falls on the room.
+bool LightingFit::measureSurfaceRadiance() {
+  surfaceRadiance.assign(S, Vec3::Zero());
+  std::vector<double> surfaceCount(S, 0);
+  Vec3 roomRadiance = Vec3::Zero();
+  double roomCount = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const auto& p = ps[size_t(y) * W + x];
+      if (p.surface < 0 || isLight(x, y)) continue;
+      const Vec3 b = photo.rgb(x, y);
+      if (!b.allFinite()) continue;
+      surfaceRadiance[p.surface] += b;
+      surfaceCount[p.surface] += 1;
+      roomRadiance += b;
+      roomCount += 1;
+    }
+  if (roomCount == 0) return false;
+  roomRadiance /= roomCount;
+  for (size_t s = 0; s < S; ++s)
+    surfaceRadiance[s] = surfaceCount[s] > 0 ? Vec3(surfaceRadiance[s] / surfaceCount[s]) : roomRadiance;
+  return true;
+}
+
+// Whether the clipped pixels of the room are enough to fit their gain (fitClipped).
+void LightingFit::countClippedPixels() {
   size_t clippedRoomPixels = 0, roomPixels = 0;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
       if (ps[size_t(y) * W + x].surface >= 0 && !isLight(x, y))
         ++roomPixels, clippedRoomPixels += saturated(x, y) ? 1 : 0;
   // A few clipped pixels send too little light to tell their gain.
-  const bool fitClipped = clippedRoomPixels > std::max<size_t>(50, roomPixels / 200);
-  ImageF gatheredClipped;
-  std::array<double, 3> clippedGain = {0, 0, 0};
+  fitClipped = clippedRoomPixels > std::max<size_t>(50, roomPixels / 200);
+}
 
-  // 3. Gamma and E_j on a coarse grid, then spread to every pixel of the same surface.
-  const int stride = std::max(1, opt.gatherStride);
-  const int GW = (W + stride - 1) / stride, GH = (H + stride - 1) / stride;
-  std::vector<double> gridE(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
-  std::vector<int> gridSurface(size_t(GW) * GH, -1);
-  std::vector<Vec2> gridPixel(size_t(GW) * GH);
-  int gatherSamples = opt.gatherSamples;
-  auto lightE = [&](const PixelSurface& p, size_t j, uint32_t id) {
-    return tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
-                                            opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
-  };
+double LightingFit::lightE(const PixelSurface& p, size_t j, uint32_t id) const {
+  return tracer.unitLightIrradianceOverPi(lightsIn[j], p.point + 1e-5 * p.normal, p.normal,
+                                          opt.directSamples, opt.seed + uint32_t(j) * 7919u + id);
+}
+
+// Step 3: E_j on a coarse grid, spread to every pixel of the same surface; the suns at every
+// pixel; the clipped pixels inside a sun's beam. False when cancelled.
+bool LightingFit::computeDirectLight() {
+  gridE.assign(size_t(GW) * GH * std::max<size_t>(J, 1), 0.0);
+  gridSurface.assign(size_t(GW) * GH, -1);
+  gridPixel.assign(size_t(GW) * GH, Vec2());
   // Grid samples: E_j once.
   parallelFor(tbb::blocked_range<int>(0, GH), [&](const tbb::blocked_range<int>& rows) {
     for (int gy = rows.begin(); gy < rows.end(); ++gy) {
@@ -464,42 +490,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       }
     }
   });
-  if (stop()) return cancelled();
-
-  // Spreads grid values to every pixel with bilinear weights over the grid samples of the same
-  // surface; `compute` fills a pixel whose neighbours are all on other surfaces (a sliver).
-  auto spread = [&](int dims, const std::function<double(size_t g, int d)>& gridValue,
-                    const std::function<void(int x, int y, const double* v)>& store,
-                    const std::function<void(int x, int y, double* v)>& compute) {
-    parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
-      std::vector<double> v(size_t(std::max(dims, 1)));
-      for (int y = rows.begin(); y < rows.end(); ++y)
-        for (int x = 0; x < W; ++x) {
-          const auto& p = ps[size_t(y) * W + x];
-          if (p.surface < 0) continue;
-          const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
-          const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
-          const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
-          double wsum = 0;
-          std::fill(v.begin(), v.end(), 0.0);
-          for (int dy = 0; dy < 2; ++dy)
-            for (int dx = 0; dx < 2; ++dx) {
-              const int gx = std::min(gx0 + dx, GW - 1), gy = std::min(gy0 + dy, GH - 1);
-              const size_t gi = size_t(gy) * GW + gx;
-              if (gridSurface[gi] != p.surface) continue;
-              const double w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay) + 1e-6;
-              wsum += w;
-              for (int d = 0; d < dims; ++d) v[size_t(d)] += w * gridValue(gi, d);
-            }
-          if (wsum > 0)
-            for (double& e : v) e /= wsum;
-          else
-            compute(x, y, v.data());
-          store(x, y, v.data());
-        }
-    });
-  };
-  std::vector<double> E(size_t(W) * H * std::max<size_t>(C, 1), 0.0);
+  if (stop()) return false;
+  E.assign(size_t(W) * H * std::max<size_t>(C, 1), 0.0);
   if (J > 0)
     spread(int(J), [&](size_t g, int d) { return gridE[g * J + size_t(d)]; },
            [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * C]); },
@@ -518,13 +510,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                 tracer, geometry, suns[k], p.point + 1e-5 * p.normal, p.normal);
         }
     });
-  if (stop()) return cancelled();
-  // A pixel inside a sun's beam: the sun's unit irradiance there above 0.05.
-  auto inSunBeam = [&](size_t idx) {
-    for (size_t k = 0; k < K; ++k)
-      if (E[idx * C + J + k] > 0.05) return true;
-    return false;
-  };
+  if (stop()) return false;
   if (K > 0) {
     clippedInBeam.assign(size_t(W) * H, 0);
     for (int y = 0; y < H; ++y)
@@ -533,98 +519,190 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
         clippedInBeam[idx] = saturated(x, y) && inSunBeam(idx);
       }
   }
+  return true;
+}
 
-  // Radiance of `surface` under sun k at unit strength and unit albedo where the photo does not
-  // tell it: its clipped sunlit pixels (the sun's irradiance there) and what the camera does not
-  // see (the sun's irradiance at the hit). The fit multiplies in the sun and the albedo.
-  auto sunBounceAt = [&](size_t k, int surface) {
-    return [&, k, surface](const SurfaceHit& h, uint32_t) -> Vec3 {
-      if (h.surfaceId != surface) return Vec3::Zero();
-      if (const long seen = seenPixel(h); seen >= 0)
-        return clippedInBeam[size_t(seen)] ? Vec3::Constant(E[size_t(seen) * C + J + k]) : Vec3::Zero();
-      return Vec3::Constant(unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
-                                                    h.normalWorld));
-    };
-  };
-  // Pass 2's bounce terms: (sun, patch surface) pairs and their gathered g (W x H, one channel).
-  struct SunPatch {
-    size_t sun = 0;
-    int surface = 0;
-    ImageF g;
-  };
-  std::vector<SunPatch> sunPatches;
-  // The light `radiance` sends to every pixel: gathered on the grid, spread to the pixels.
-  auto gatherImage = [&](const RadianceAt& radiance) {
-    auto gatherAt = [&](int x, int y) {
-      const auto& p = ps[size_t(y) * W + x];
-      return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, uint32_t(y * W + x),
-                                    opt.seed, radiance)
-          .mean;
-    };
-    std::vector<Vec3> grid(gridSurface.size(), Vec3::Zero());
-    parallelFor(tbb::blocked_range<size_t>(0, grid.size()), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t g = r.begin(); g < r.end(); ++g) {
-        if (stop()) return;
-        if (gridSurface[g] >= 0) grid[g] = gatherAt(int(gridPixel[g].x()), int(gridPixel[g].y()));
+// Spreads grid values to every pixel with bilinear weights over the grid samples of the same
+// surface; `compute` fills a pixel whose neighbours are all on other surfaces (a sliver).
+void LightingFit::spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
+                         const std::function<void(int x, int y, const double* v)>& store,
+                         const std::function<void(int x, int y, double* v)>& compute) {
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<double> v(size_t(std::max(dims, 1)));
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const auto& p = ps[size_t(y) * W + x];
+        if (p.surface < 0) continue;
+        const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
+        const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
+        const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
+        double wsum = 0;
+        std::fill(v.begin(), v.end(), 0.0);
+        for (int dy = 0; dy < 2; ++dy)
+          for (int dx = 0; dx < 2; ++dx) {
+            const int gx = std::min(gx0 + dx, GW - 1), gy = std::min(gy0 + dy, GH - 1);
+            const size_t gi = size_t(gy) * GW + gx;
+            if (gridSurface[gi] != p.surface) continue;
+            const double w = (dx ? ax : 1 - ax) * (dy ? ay : 1 - ay) + 1e-6;
+            wsum += w;
+            for (int d = 0; d < dims; ++d) v[size_t(d)] += w * gridValue(gi, d);
+          }
+        if (wsum > 0)
+          for (double& e : v) e /= wsum;
+        else
+          compute(x, y, v.data());
+        store(x, y, v.data());
       }
-    });
-    ImageF image(W, H, 3, 0.f);
-    spread(3, [&](size_t g, int d) { return grid[g][d]; },
-           [&](int x, int y, const double* v) { image.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
-           [&](int x, int y, double* v) {
-             const Vec3 g = gatherAt(x, y);
-             v[0] = g[0], v[1] = g[1], v[2] = g[2];
-           });
-    return image;
-  };
-  auto gatherAll = [&] {
-    out.gathered = gatherImage(radianceAt);
-    if (fitClipped) gatheredClipped = gatherImage(clippedRadianceAt);
-    sunPatches.clear();
-    if (!sunApart) return;
-    // The surfaces each sun lights: where it clips in the photo, and where its beam meets a
-    // patch of the room (seen or not).
-    std::vector<uint8_t> patchOn(S * K, 0);
-    for (size_t idx = 0; idx < clippedInBeam.size(); ++idx)
-      if (clippedInBeam[idx] && ps[idx].surface >= 0)
-        for (size_t k = 0; k < K; ++k)
-          if (E[idx * C + J + k] > 0) patchOn[size_t(ps[idx].surface) * K + k] = 1;
-    const SurfacePatches& P = model.patches;
-    for (size_t i = 0; i < P.point.size(); ++i)
-      for (size_t k = 0; k < K; ++k)
-        if (unitSunIrradianceOverPi(tracer, geometry, suns[k], P.point[i] + 1e-4 * P.normal[i], P.normal[i]) > 0)
-          patchOn[size_t(P.surface[i]) * K + k] = 1;
-    for (size_t k = 0; k < K; ++k)
-      for (size_t s = 0; s < S; ++s)
-        if (patchOn[s * K + k]) sunPatches.push_back({k, int(s), gatherImage(sunBounceAt(k, int(s)))});
-  };
+  });
+}
 
-  // The light gathered at every patch of the room (radiosity by Jacobi sweeps from the surface
-  // means): what the photo shows is read from it, the rest predicted from the previous sweep.
-  auto gatherUnseenPatches = [&] {
-    const double roomSize = std::max({geometry.box.xRightM - geometry.box.xLeftM,
-                                      geometry.box.zRearM - geometry.box.zBackM, geometry.box.ceilingM});
-    model.patches = makeSurfacePatches(geometry, std::max(0.05, roomSize / opt.patchesAcrossRoom));
-    SurfacePatches& P = model.patches;
-    for (size_t i = 0; i < P.point.size(); ++i) P.gamma[i] = model.gammaMean[size_t(P.surface[i])];
-    std::vector<Vec3> next(P.point.size());
-    for (int sweep = 0; sweep < opt.patchSweeps; ++sweep) {
-      parallelFor(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t i = r.begin(); i < r.end(); ++i)
-          next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i],
-                                           opt.patchSamples, uint32_t(i) * 2654435761u + uint32_t(sweep),
-                                           opt.seed + 101u, radianceAt)
-                        .mean;
-      });
-      std::swap(P.gamma, next);
+// The pixel showing room point `h` when the photo tells its radiance there (the camera sees
+// that point, not a light outline, finite), else -1.
+long LightingFit::seenPixel(const SurfaceHit& h) const {
+  const auto px = camera.project(h.pointWorld);
+  if (!px) return -1;
+  const int x = int(std::floor(px->x())), y = int(std::floor(px->y()));
+  if (x < 0 || y < 0 || x >= W || y >= H || isLight(x, y)) return -1;
+  const size_t idx = size_t(y) * W + x;
+  const auto& p = ps[idx];
+  if (p.surface != h.surfaceId ||
+      !(std::abs(p.depth - camera.depthOf(h.pointWorld)) < 0.02 * p.depth + 1e-3) ||
+      !photo.rgb(x, y).allFinite())
+    return -1;
+  return long(idx);
+}
+
+// Radiance leaving a room point toward another, read from the photo where the camera sees it.
+Vec3 LightingFit::radianceAt(const SurfaceHit& h, uint32_t sampleId) const {
+  if (const long seen = seenPixel(h); seen >= 0) {
+    const size_t idx = size_t(seen);
+    const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
+    const Vec3 b = photo.rgb(x, y);
+    if (!clippedInBeam.empty() && clippedInBeam[idx]) {
+      if (sunApart) return beamRadianceNoSun[idx];
+      return beamRadiance.empty() ? b : beamRadiance[idx];
     }
-  };
+    return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0], 1 + clippedGainApplied[1],
+                                                      1 + clippedGainApplied[2])))
+                           : b;
+  }
+  if (!model.active) return surfaceRadiance[h.surfaceId];
+  // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
+  // patch, or the surface's mean where no patch was made).
+  const int patch = model.patches.find(h);
+  Vec3 irradiance = patch >= 0 ? model.patches.gamma[size_t(patch)] : model.gammaMean[h.surfaceId];
+  for (size_t j = 0; j < J; ++j)
+    irradiance += model.lights[j] *
+                  tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
+                                                   h.normalWorld, 1, sampleId * 31u + uint32_t(j));
+  for (size_t k = 0; k < K && !sunApart; ++k)
+    irradiance += model.lights[J + k] *
+                  unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
+                                          h.normalWorld);
+  return model.rho[h.surfaceId].cwiseProduct(irradiance);
+}
 
-  // 4. Fit light radiances (per channel) and one reference albedo per surface: the albedo
-  // should be as flat within a surface as the lights and Gamma allow (robust to texture).
-  // Clipped pixels count only inside a sun's beam (as lower bounds): elsewhere a clipped
-  // pixel is a window or a lamp that no light here explains.
-  std::vector<size_t> candidates;
+// The part of radianceAt that comes from clipped photo pixels (a window, an over-exposed wall
+// by a lamp): there the photo gives only a lower bound of the radiance, so the light they send
+// is gathered apart and the fit gives it an extra gain k (Gamma + k Gamma_clipped), with the
+// clipped radiance's total factor 1 + k at least 1. The second pass starts from the first's.
+Vec3 LightingFit::clippedRadianceAt(const SurfaceHit& h) const {
+  const long seen = seenPixel(h);
+  if (seen < 0) return Vec3::Zero();
+  const int x = int(seen % W), y = int(seen / W);
+  if (!saturated(x, y) || (!clippedInBeam.empty() && clippedInBeam[size_t(seen)])) return Vec3::Zero();
+  return photo.rgb(x, y);
+}
+
+// Radiance of `surface` under sun k at unit strength and unit albedo where the photo does not
+// tell it: its clipped sunlit pixels (the sun's irradiance there) and what the camera does not
+// see (the sun's irradiance at the hit). The fit multiplies in the sun and the albedo.
+RadianceAt LightingFit::sunBounceAt(size_t k, int surface) const {
+  return [this, k, surface](const SurfaceHit& h, uint32_t) -> Vec3 {
+    if (h.surfaceId != surface) return Vec3::Zero();
+    if (const long seen = seenPixel(h); seen >= 0)
+      return clippedInBeam[size_t(seen)] ? Vec3::Constant(E[size_t(seen) * C + J + k]) : Vec3::Zero();
+    return Vec3::Constant(unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
+                                                  h.normalWorld));
+  };
+}
+
+// The light `radiance` sends to every pixel: gathered on the grid, spread to the pixels.
+ImageF LightingFit::gatherImage(const RadianceAt& radiance) {
+  auto gatherAt = [&](int x, int y) {
+    const auto& p = ps[size_t(y) * W + x];
+    return gatherIrradianceOverPi(tracer, p.point, p.normal, gatherSamples, uint32_t(y * W + x),
+                                  opt.seed, radiance)
+        .mean;
+  };
+  std::vector<Vec3> grid(gridSurface.size(), Vec3::Zero());
+  parallelFor(tbb::blocked_range<size_t>(0, grid.size()), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t g = r.begin(); g < r.end(); ++g) {
+      if (stop()) return;
+      if (gridSurface[g] >= 0) grid[g] = gatherAt(int(gridPixel[g].x()), int(gridPixel[g].y()));
+    }
+  });
+  ImageF image(W, H, 3, 0.f);
+  spread(3, [&](size_t g, int d) { return grid[g][d]; },
+         [&](int x, int y, const double* v) { image.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
+         [&](int x, int y, double* v) {
+           const Vec3 g = gatherAt(x, y);
+           v[0] = g[0], v[1] = g[1], v[2] = g[2];
+         });
+  return image;
+}
+
+// Gamma from the photo (and the model where it does not tell), the light from clipped pixels
+// apart, and (pass 2 with a sun) each sunlit patch's bounce per unit strength.
+void LightingFit::gatherAll() {
+  out.gathered = gatherImage([this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); });
+  if (fitClipped)
+    gatheredClipped = gatherImage([this](const SurfaceHit& h, uint32_t) { return clippedRadianceAt(h); });
+  sunPatches.clear();
+  if (!sunApart) return;
+  // The surfaces each sun lights: where it clips in the photo, and where its beam meets a
+  // patch of the room (seen or not).
+  std::vector<uint8_t> patchOn(S * K, 0);
+  for (size_t idx = 0; idx < clippedInBeam.size(); ++idx)
+    if (clippedInBeam[idx] && ps[idx].surface >= 0)
+      for (size_t k = 0; k < K; ++k)
+        if (E[idx * C + J + k] > 0) patchOn[size_t(ps[idx].surface) * K + k] = 1;
+  const SurfacePatches& P = model.patches;
+  for (size_t i = 0; i < P.point.size(); ++i)
+    for (size_t k = 0; k < K; ++k)
+      if (unitSunIrradianceOverPi(tracer, geometry, suns[k], P.point[i] + 1e-4 * P.normal[i], P.normal[i]) > 0)
+        patchOn[size_t(P.surface[i]) * K + k] = 1;
+  for (size_t k = 0; k < K; ++k)
+    for (size_t s = 0; s < S; ++s)
+      if (patchOn[s * K + k]) sunPatches.push_back({k, int(s), gatherImage(sunBounceAt(k, int(s)))});
+}
+
+// The light gathered at every patch of the room (radiosity by Jacobi sweeps from the surface
+// means): what the photo shows is read from it, the rest predicted from the previous sweep.
+void LightingFit::gatherUnseenPatches() {
+  const double roomSize = std::max({geometry.box.xRightM - geometry.box.xLeftM,
+                                    geometry.box.zRearM - geometry.box.zBackM, geometry.box.ceilingM});
+  model.patches = makeSurfacePatches(geometry, std::max(0.05, roomSize / opt.patchesAcrossRoom));
+  SurfacePatches& P = model.patches;
+  for (size_t i = 0; i < P.point.size(); ++i) P.gamma[i] = model.gammaMean[size_t(P.surface[i])];
+  std::vector<Vec3> next(P.point.size());
+  const RadianceAt radiance = [this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); };
+  for (int sweep = 0; sweep < opt.patchSweeps; ++sweep) {
+    parallelFor(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i)
+        next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i],
+                                         opt.patchSamples, uint32_t(i) * 2654435761u + uint32_t(sweep),
+                                         opt.seed + 101u, radiance)
+                      .mean;
+    });
+    std::swap(P.gamma, next);
+  }
+}
+
+// Step 4: the pixels the light fit uses and its unknowns. Clipped pixels count only inside a
+// sun's beam (as lower bounds): elsewhere a clipped pixel is a window or a lamp that no light
+// here explains. False when no pixel is usable.
+bool LightingFit::chooseFitPixels() {
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const size_t idx = size_t(y) * W + x;
@@ -636,136 +714,24 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       if (luminance(photo.rgb(x, y)) < 1e-4) continue;
       candidates.push_back(idx);
     }
-  if (candidates.empty())
-    return Error{"", "photo", "every pixel of the room is black or saturated: nothing to fit"};
+  if (candidates.empty()) return false;
   std::mt19937 rng(opt.seed);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   if (candidates.size() > size_t(opt.fitPixels)) candidates.resize(size_t(opt.fitPixels));
 
   out.lights = lightsIn;
   out.suns = suns;
-  std::vector<bool> refine(C, true);
+  refine.assign(C, true);
   for (size_t j = 0; j < J && j < refineIn.size(); ++j) refine[j] = refineIn[j];
-  std::vector<std::array<double, 3>> rho(S, {0.5, 0.5, 0.5});
-  std::vector<std::array<double, 3>> L(C);
+  rho.assign(S, {0.5, 0.5, 0.5});
+  L.assign(C, {0, 0, 0});
+  return true;
+}
 
-  auto fit = [&]() -> bool {
-    // Start: with albedo 0.6 everywhere, the median radiance that explains the direct part.
-    std::vector<double> ratios;
-    for (size_t idx : candidates) {
-      double esum = 0;
-      for (size_t j = 0; j < C; ++j) esum += E[idx * C + j];
-      if (esum < 1e-6) continue;
-      const int x = int(idx % W), y = int(idx / W);
-      const double b = luminance(photo.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
-      ratios.push_back(std::max(0.0, b / 0.6 - g) / esum);
-    }
-    double start = 1.0;
-    if (!ratios.empty()) {
-      std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
-      start = std::max(1e-6, ratios[ratios.size() / 2]);
-    }
-    // A light kept as given starts (and stays) at its radiance; the others start at `start`.
-    for (size_t j = 0; j < C; ++j)
-      for (int c = 0; c < 3; ++c)
-        L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
-    for (auto& r : rho) r = {0.5, 0.5, 0.5};
-    clippedGain = {0, 0, 0};
-    double cost = 0, count = 0;
-    for (int c = 0; c < 3; ++c) {
-      if (stop()) return false;
-      ceres::Problem problem;
-      for (size_t idx : candidates) {
-        const int x = int(idx % W), y = int(idx / W);
-        const int s = ps[idx].surface;
-        std::vector<double> e(C);
-        for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
-        const double b = photo.at(x, y, c);
-        std::vector<double*> blocks{&rho[s][c]};
-        for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
-        if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
-        // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
-        std::vector<BounceTerm> bounce;
-        for (const SunPatch& sp : sunPatches) {
-          BounceTerm t;
-          t.g = sp.g.at(x, y, 0);
-          if (!(t.g > 0)) continue;
-          t.sunBlock = int(1 + J + sp.sun);
-          t.rhoBlock = 0;
-          if (sp.surface != s) {
-            t.rhoBlock = int(blocks.size());
-            blocks.push_back(&rho[size_t(sp.surface)][c]);
-          }
-          bounce.push_back(t);
-        }
-        auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
-            std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove,
-            fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)));
-        for (size_t k = 0; k < blocks.size(); ++k) f->AddParameterBlock(1);
-        f->SetNumResiduals(1);
-        problem.AddResidualBlock(f, new ceres::CauchyLoss(0.15), blocks);
-      }
-      for (size_t s = 0; s < S; ++s)
-        if (problem.HasParameterBlock(&rho[s][c])) {
-          problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
-          problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
-        }
-      if (problem.HasParameterBlock(&clippedGain[size_t(c)])) {
-        problem.SetParameterLowerBound(&clippedGain[size_t(c)], 0, -clippedGainApplied[size_t(c)]);
-        problem.SetParameterUpperBound(&clippedGain[size_t(c)], 0, 1e3);
-      }
-      for (size_t j = 0; j < C; ++j)
-        if (problem.HasParameterBlock(&L[j][c])) {
-          problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
-          problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
-          if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
-        }
-      ceres::Solver::Options so;
-      so.linear_solver_type = ceres::DENSE_QR;
-      so.max_num_iterations = 100;
-      so.num_threads = opt.threads > 0 ? opt.threads : 2;
-      so.logging_type = ceres::SILENT;
-      ceres::Solver::Summary summary;
-      ceres::Solve(so, &problem, &summary);
-      if (!summary.IsSolutionUsable())
-        out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
-      cost += summary.final_cost;
-      count += double(candidates.size());
-    }
-    out.fitRmsLog = std::sqrt(2 * cost / std::max(1.0, count));
-    for (size_t j = 0; j < J; ++j) {
-      Vec3 r(L[j][0], L[j][1], L[j][2]);
-      if (!r.allFinite()) r = lightsIn[j].radiance;
-      out.lights[j].radiance = r.cwiseMax(0.0);
-    }
-    for (size_t k = 0; k < K; ++k) {
-      Vec3 r(L[J + k][0], L[J + k][1], L[J + k][2]);
-      if (!r.allFinite()) r = Vec3::Zero();
-      out.suns[k].irradianceOverPi = r.cwiseMax(0.0);
-    }
-    // The suns' bounce at the fitted strengths and albedos joins the gathered light.
-    out.sunBounce.assign(sunPatches.empty() ? 0 : K, ImageF(W, H, 3, 0.f));
-    for (const SunPatch& sp : sunPatches)
-      for (size_t i = 0; i < out.gathered.data.size(); ++i) {
-        const int c = int(i % 3);
-        const float v = float(rho[size_t(sp.surface)][size_t(c)]) * sp.g.data[i];
-        out.sunBounce[sp.sun].data[i] += v;
-        out.gathered.data[i] += float(out.suns[sp.sun].irradianceOverPi[c]) * v;
-      }
-    if (fitClipped) {
-      for (size_t c = 0; c < 3; ++c)
-        if (!std::isfinite(clippedGain[c])) clippedGain[c] = 0;
-      for (size_t i = 0; i < out.gathered.data.size(); ++i)
-        out.gathered.data[i] += float(clippedGain[i % 3]) * gatheredClipped.data[i];
-      for (size_t c = 0; c < 3; ++c) out.clippedGain[int(c)] = clippedGainApplied[c] + clippedGain[c];
-    }
-    return true;
-  };
-
-  // Pass 1 guesses what the camera does not see from the mean of what it sees; pass 2 predicts
-  // it from the fitted albedo and lights.
+// The gather's rays per pixel when not given: from a pilot on up to 64 grid points, for the
+// noise it leaves (LightingOptions::gatherNoise).
+void LightingFit::chooseGatherSamples() {
   if (gatherSamples <= 0) {
-    // The sample count for the noise it leaves, from a pilot on up to 64 grid points.
     std::vector<std::pair<Vec3, Vec3>> pilot;
     std::vector<size_t> onRoom;
     for (size_t g = 0; g < gridSurface.size(); ++g)
@@ -778,9 +744,15 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     }
     GatherSampleCountOptions go;
     go.relativeNoise = opt.gatherNoise;
-    gatherSamples = gatherSamplesForNoise(tracer, pilot, opt.seed, radianceAt, go);
+    gatherSamples = gatherSamplesForNoise(
+        tracer, pilot, opt.seed, [this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); }, go);
   }
   out.gatherSamples = gatherSamples;
+}
+
+// The gather-and-fit passes. Pass 1 guesses what the camera does not see from the mean of what
+// it sees; later passes predict it from the fitted albedo and lights. False when cancelled.
+bool LightingFit::gatherAndFit() {
   // With a sun, pass 2 gathers its clipped patch apart and fits its bounce with its strength; that
   // scheme is made for two plain passes (mixing pass 1 into it counts the bounce twice, and more
   // passes drift the sun's strength down: 0.6 of the truth in
@@ -798,7 +770,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     // top of that.
     for (size_t c = 0; c < 3; ++c)
       previousGain[c] = clippedGainApplied[c] = r * clippedGainApplied[c] + (1 - r) * previousGain[c];
-    if (stop() || !fit()) return cancelled();
+    if (stop() || !fit()) return false;
     out.passes = pass + 1;
     if (pass >= 2 && change < opt.passTolerance) break;
     if (pass == passes - 1) {
@@ -809,52 +781,193 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
                             " passes (the walls the camera does not see are uncertain)");
       break;
     }
-    model.active = true;
-    for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
-    model.rho.assign(S, Vec3::Zero());
-    model.gammaMean.assign(S, Vec3::Zero());
-    std::vector<double> n(S, 0.0);
-    for (size_t idx = 0; idx < ps.size(); ++idx) {
-      const int s = ps[idx].surface;
-      if (s < 0) continue;
-      model.gammaMean[s] += out.gathered.rgb(int(idx % W), int(idx / W));
-      n[s] += 1;
-    }
-    Vec3 gammaAll = Vec3::Zero();
-    double nAll = 0;
-    for (size_t s = 0; s < S; ++s)
-      if (n[s] > 0) gammaAll += model.gammaMean[s], nAll += n[s];
-    gammaAll /= std::max(1.0, nAll);
-    std::vector<Vec3> fitted(S);
-    std::vector<double> weight(S);
-    for (size_t s = 0; s < S; ++s) {
-      model.gammaMean[s] = n[s] > 0 ? Vec3(model.gammaMean[s] / n[s]) : gammaAll;
-      fitted[s] = Vec3(rho[s][0], rho[s][1], rho[s][2]);
-      weight[s] = n[s] > 0 ? 1.0 : 0.0;
-    }
-    model.rho = albedoOfUnseen(geometry, fitted, weight);
-    if (!clippedInBeam.empty()) {
-      beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
-                                           out.lights, out.suns, true);
-      beamRadianceNoSun = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered,
-                                                E, out.lights, out.suns, false);
-    }
-    model.lights.clear();
-    for (const auto& l : out.lights) model.lights.push_back(l.radiance);
-    for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
-    gatherUnseenPatches();
-    // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun
-    // part apart.
-    sunApart = K > 0;
+    predictUnseenFromFit();
   }
+  return true;
+}
 
-  // 5. Per-pixel albedo and direct light; the surfaces' means for what the camera cannot see.
+// After a pass's fit: the room model (per-surface albedo and mean Gamma, the fitted lights, the
+// patches' gathered light) that the next pass predicts what the camera does not see from.
+void LightingFit::predictUnseenFromFit() {
+  model.active = true;
+  for (size_t c = 0; c < 3; ++c) clippedGainApplied[c] += clippedGain[c];
+  model.rho.assign(S, Vec3::Zero());
+  model.gammaMean.assign(S, Vec3::Zero());
+  std::vector<double> n(S, 0.0);
+  for (size_t idx = 0; idx < ps.size(); ++idx) {
+    const int s = ps[idx].surface;
+    if (s < 0) continue;
+    model.gammaMean[s] += out.gathered.rgb(int(idx % W), int(idx / W));
+    n[s] += 1;
+  }
+  Vec3 gammaAll = Vec3::Zero();
+  double nAll = 0;
+  for (size_t s = 0; s < S; ++s)
+    if (n[s] > 0) gammaAll += model.gammaMean[s], nAll += n[s];
+  gammaAll /= std::max(1.0, nAll);
+  std::vector<Vec3> fitted(S);
+  std::vector<double> weight(S);
+  for (size_t s = 0; s < S; ++s) {
+    model.gammaMean[s] = n[s] > 0 ? Vec3(model.gammaMean[s] / n[s]) : gammaAll;
+    fitted[s] = Vec3(rho[s][0], rho[s][1], rho[s][2]);
+    weight[s] = n[s] > 0 ? 1.0 : 0.0;
+  }
+  model.rho = albedoOfUnseen(geometry, fitted, weight);
+  if (!clippedInBeam.empty()) {
+    beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
+                                         out.lights, out.suns, true);
+    beamRadianceNoSun = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered,
+                                              E, out.lights, out.suns, false);
+  }
+  model.lights.clear();
+  for (const auto& l : out.lights) model.lights.push_back(l.radiance);
+  for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
+  gatherUnseenPatches();
+  // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun
+  // part apart.
+  sunApart = K > 0;
+}
+
+// The light fit's start: with albedo 0.6 everywhere, the median radiance that explains the
+// direct part.
+double LightingFit::fitStartRadiance() const {
+  std::vector<double> ratios;
+  for (size_t idx : candidates) {
+    double esum = 0;
+    for (size_t j = 0; j < C; ++j) esum += E[idx * C + j];
+    if (esum < 1e-6) continue;
+    const int x = int(idx % W), y = int(idx / W);
+    const double b = luminance(photo.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
+    ratios.push_back(std::max(0.0, b / 0.6 - g) / esum);
+  }
+  double start = 1.0;
+  if (!ratios.empty()) {
+    std::nth_element(ratios.begin(), ratios.begin() + long(ratios.size() / 2), ratios.end());
+    start = std::max(1e-6, ratios[ratios.size() / 2]);
+  }
+  return start;
+}
+
+// Fit light radiances (per channel) and one reference albedo per surface: the albedo should be
+// as flat within a surface as the lights and Gamma allow (robust to texture). False when
+// cancelled.
+bool LightingFit::fit() {
+  const double start = fitStartRadiance();
+  // A light kept as given starts (and stays) at its radiance; the others start at `start`.
+  for (size_t j = 0; j < C; ++j)
+    for (int c = 0; c < 3; ++c)
+      L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
+  for (auto& r : rho) r = {0.5, 0.5, 0.5};
+  clippedGain = {0, 0, 0};
+  double cost = 0, count = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (stop()) return false;
+    fitChannel(c, cost);
+    count += double(candidates.size());
+  }
+  out.fitRmsLog = std::sqrt(2 * cost / std::max(1.0, count));
+  storeFittedLights();
+  return true;
+}
+
+// One channel of the light fit: per candidate pixel a LogResidual (Cauchy loss), the albedos,
+// the lights and the clipped gain bounded; its final cost is added to `cost`.
+void LightingFit::fitChannel(int c, double& cost) {
+  ceres::Problem problem;
+  for (size_t idx : candidates) {
+    const int x = int(idx % W), y = int(idx / W);
+    const int s = ps[idx].surface;
+    std::vector<double> e(C);
+    for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
+    const double b = photo.at(x, y, c);
+    std::vector<double*> blocks{&rho[s][c]};
+    for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
+    if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
+    // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
+    std::vector<BounceTerm> bounce;
+    for (const SunPatch& sp : sunPatches) {
+      BounceTerm t;
+      t.g = sp.g.at(x, y, 0);
+      if (!(t.g > 0)) continue;
+      t.sunBlock = int(1 + J + sp.sun);
+      t.rhoBlock = 0;
+      if (sp.surface != s) {
+        t.rhoBlock = int(blocks.size());
+        blocks.push_back(&rho[size_t(sp.surface)][c]);
+      }
+      bounce.push_back(t);
+    }
+    auto* f = new ceres::DynamicAutoDiffCostFunction<LogResidual, 8>(new LogResidual(
+        std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove,
+        fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)));
+    for (size_t k = 0; k < blocks.size(); ++k) f->AddParameterBlock(1);
+    f->SetNumResiduals(1);
+    problem.AddResidualBlock(f, new ceres::CauchyLoss(0.15), blocks);
+  }
+  for (size_t s = 0; s < S; ++s)
+    if (problem.HasParameterBlock(&rho[s][c])) {
+      problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
+      problem.SetParameterUpperBound(&rho[s][c], 0, 1.0);
+    }
+  if (problem.HasParameterBlock(&clippedGain[size_t(c)])) {
+    problem.SetParameterLowerBound(&clippedGain[size_t(c)], 0, -clippedGainApplied[size_t(c)]);
+    problem.SetParameterUpperBound(&clippedGain[size_t(c)], 0, 1e3);
+  }
+  for (size_t j = 0; j < C; ++j)
+    if (problem.HasParameterBlock(&L[j][c])) {
+      problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
+      problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
+      if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
+    }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = 100;
+  so.num_threads = opt.threads > 0 ? opt.threads : 2;
+  so.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &problem, &summary);
+  if (!summary.IsSolutionUsable())
+    out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
+  cost += summary.final_cost;
+}
+
+// The fitted radiances into out.lights and out.suns; the suns' bounce at the fitted strengths
+// and albedos, and the clipped pixels' fitted gain, join the gathered light.
+void LightingFit::storeFittedLights() {
+  for (size_t j = 0; j < J; ++j) {
+    Vec3 r(L[j][0], L[j][1], L[j][2]);
+    if (!r.allFinite()) r = lightsIn[j].radiance;
+    out.lights[j].radiance = r.cwiseMax(0.0);
+  }
+  for (size_t k = 0; k < K; ++k) {
+    Vec3 r(L[J + k][0], L[J + k][1], L[J + k][2]);
+    if (!r.allFinite()) r = Vec3::Zero();
+    out.suns[k].irradianceOverPi = r.cwiseMax(0.0);
+  }
+  out.sunBounce.assign(sunPatches.empty() ? 0 : K, ImageF(W, H, 3, 0.f));
+  for (const SunPatch& sp : sunPatches)
+    for (size_t i = 0; i < out.gathered.data.size(); ++i) {
+      const int c = int(i % 3);
+      const float v = float(rho[size_t(sp.surface)][size_t(c)]) * sp.g.data[i];
+      out.sunBounce[sp.sun].data[i] += v;
+      out.gathered.data[i] += float(out.suns[sp.sun].irradianceOverPi[c]) * v;
+    }
+  if (fitClipped) {
+    for (size_t c = 0; c < 3; ++c)
+      if (!std::isfinite(clippedGain[c])) clippedGain[c] = 0;
+    for (size_t i = 0; i < out.gathered.data.size(); ++i)
+      out.gathered.data[i] += float(clippedGain[i % 3]) * gatheredClipped.data[i];
+    for (size_t c = 0; c < 3; ++c) out.clippedGain[int(c)] = clippedGainApplied[c] + clippedGain[c];
+  }
+}
+
+// Step 5: per-pixel albedo B / (sum L_j E_j + Gamma) (the light fit's, physicalAlbedo) and
+// direct light; the shading-free image and each pixel's direct share for the decomposition.
+void LightingFit::perPixelAlbedo() {
   out.albedo = ImageF(W, H, 3, 0.f);
   out.direct = ImageF(W, H, 3, 0.f);
-  ImageF shadingFree(W, H, 3, 0.f);  // B / (sum L_j E_j + Gamma), unclamped
-  std::vector<float> directShare(size_t(W) * H, 1.f);  // sum L_j E_j / shading (green)
-  std::vector<Vec3> albedoSum(S, Vec3::Zero());
-  std::vector<double> albedoCount(S, 0);
+  shadingFree = ImageF(W, H, 3, 0.f);
+  directShare.assign(size_t(W) * H, 1.f);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const size_t idx = size_t(y) * W + x;
@@ -876,121 +989,210 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
       out.albedo.setRgb(x, y, a);
       const Vec3 b = photo.rgb(x, y);
       out.direct.setRgb(x, y, b.allFinite() ? Vec3((b - a.cwiseProduct(g)).cwiseMax(0.0)) : Vec3::Zero());
-      if (!isLight(x, y) && !saturated(x, y)) {
-        albedoSum[p.surface] += a;
-        albedoCount[p.surface] += 1;
-      }
     }
   out.physicalAlbedo = out.albedo;
+}
 
-  // 6. Decomposition: colour Retinex from the photo alone, scaled per channel so that its
-  // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then
-  // the geometry-aware objective, whose data terms tie rho * Gamma to the photo.
-  {
-    std::vector<uint8_t> valid(size_t(W) * H, 0), validPhoto(size_t(W) * H, 0),
-        clipped(size_t(W) * H, 0);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const size_t idx = size_t(y) * W + x;
-        clipped[idx] = saturated(x, y) ? 1 : 0;
-        validPhoto[idx] = ps[idx].surface >= 0 && !isLight(x, y) && !clipped[idx] &&
-                          luminance(photo.rgb(x, y)) > 1e-5;
-        // A pixel brighter than any reflectance could make it under the modelled light is one
-        // the model does not explain (a light or an opening it lacks, a surface that is not
-        // where the geometry says, such as the floor seen between a table's legs): its albedo
-        // comes from the photo's own Retinex, and the data terms leave it alone.
-        const Vec3 sf = shadingFree.rgb(x, y);
-        valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove &&
-                     !isProxy(ps[idx].surface);
-      }
-    // Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
-    // With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
-    // rho = B / Gamma does not depend on the fitted lights (the flat direction rho / k, L * k);
-    // the scale is the geometric mean of the two anchors when there are enough such pixels.
-    size_t nValid = 0, nIndirect = 0;
-    for (size_t i = 0; i < valid.size(); ++i)
-      if (valid[i]) ++nValid, nIndirect += directShare[i] < 0.25f;
-    const bool haveIndirect = nIndirect >= std::max<size_t>(200, nValid / 50);
-    // `fallback`: the albedo of pixels not in `use` (default: the physical one).
-    auto anchoredRetinex = [&](const ImageF& image, const std::vector<uint8_t>& use,
-                               bool gammaAnchor, const ImageF* fallback) {
-      const ImageF rel = retinexReflectance(image, use, opt.retinex);
-      auto medianRatio = [&](int c, bool indirectOnly) {
-        std::vector<float> ratio;
-        for (int y = 0; y < H; ++y)
-          for (int x = 0; x < W; ++x)
-            if (valid[size_t(y) * W + x] && rel.at(x, y, c) > 1e-4f &&
-                out.albedo.at(x, y, c) > 0 && out.albedo.at(x, y, c) < 1 &&
-                (!indirectOnly || directShare[size_t(y) * W + x] < 0.25f))
-              ratio.push_back(out.albedo.at(x, y, c) / rel.at(x, y, c));
-        if (ratio.empty()) return 1.0;
-        std::nth_element(ratio.begin(), ratio.begin() + long(ratio.size() / 2), ratio.end());
-        return double(ratio[ratio.size() / 2]);
-      };
-      Vec3 scale(1, 1, 1);
-      for (int c = 0; c < 3; ++c) {
-        scale[c] = medianRatio(c, false);
-        if (gammaAnchor && haveIndirect) scale[c] = std::sqrt(scale[c] * medianRatio(c, true));
-      }
-      ImageF a(W, H, 3, 0.f);
-      for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-          const size_t idx = size_t(y) * W + x;
-          if (ps[idx].surface < 0) continue;
-          for (int c = 0; c < 3; ++c) {
-            // Lamps and clipped pixels carry no reflectance: the fallback stands.
-            const float r = use[idx] ? float(scale[c] * rel.at(x, y, c))
-                                     : (fallback ? *fallback : out.albedo).at(x, y, c);
-            a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
-          }
-        }
-      return a;
-    };
-    // The baseline: Retinex of the photo alone.
-    out.retinexAlbedo = anchoredRetinex(photo, validPhoto, false, nullptr);
-    if (opt.objective) {
-      // The start: Retinex of the photo with the geometry's shading divided out (what is left
-      // of shading there is noise and model error, which the thresholds remove).
-      const ImageF rho0 = anchoredRetinex(shadingFree, valid, true, &out.retinexAlbedo);
-      DecomposeOptions dopt = opt.decompose;
-      if (!dopt.cancel) dopt.cancel = opt.cancel;
-      auto dec = decomposeIntrinsic(photo, out.gathered, rho0, valid, clipped, dopt);
-      out.decomposeStart = rho0;
-      out.decomposeValid = valid;
-      out.decomposeClipped = clipped;
-      if (!dec) return dec.error().underKey("decomposition");
-      out.decomposeHistory = dec->history;
-      out.decomposeReport = dec->report;
-      out.decomposeConverged = dec->converged;
-      if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
-      for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-          const size_t idx = size_t(y) * W + x;
-          if (ps[idx].surface < 0) continue;
-          out.albedo.setRgb(x, y, dec->albedo.rgb(x, y));
-          out.direct.setRgb(x, y, dec->direct.rgb(x, y));
-        }
-    } else {
-      out.albedo = out.retinexAlbedo;
+// The model's residual against the photo relative to the photo's own spread, in log space
+// (LightingEstimate::fitResidualRelative): scale-free, and a power applied to the photo scales
+// both alike.
+void LightingFit::relativeFitResidual() {
+  std::vector<double> residual, logB;
+  for (size_t idx : candidates) {
+    const int x = int(idx % W), y = int(idx / W);
+    if (saturated(x, y)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double b = photo.at(x, y, c), r = shadingFree.at(x, y, c);
+      const double rhoS = rho[size_t(ps[idx].surface)][size_t(c)];
+      if (!(b > 0) || !(r > 0) || !(rhoS > 0)) continue;
+      residual.push_back(std::abs(std::log(r / rhoS)));
+      logB.push_back(std::log(b));
     }
-    std::fill(albedoSum.begin(), albedoSum.end(), Vec3::Zero());
-    std::fill(albedoCount.begin(), albedoCount.end(), 0.0);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        const size_t idx = size_t(y) * W + x;
-        if (!valid[idx]) continue;
-        albedoSum[ps[idx].surface] += out.albedo.rgb(x, y);
-        albedoCount[ps[idx].surface] += 1;
-      }
   }
+  if (residual.size() < 16) return;
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double mid = median(logB);
+  for (double& l : logB) l = std::abs(l - mid);
+  const double spread = median(logB);
+  if (spread > 0) out.fitResidualRelative = median(residual) / spread;
+}
 
-  // Surfaces the camera does not see: walls and ceiling take the mean of the walls it sees.
+// Step 6, the decomposition: colour Retinex from the photo alone, scaled per channel so that its
+// median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then the
+// geometry-aware objective, whose data terms tie rho * Gamma to the photo.
+class Decomposer {
+ public:
+  explicit Decomposer(LightingFit& fit) : f(fit), W(fit.W), H(fit.H) {}
+  std::optional<Error> run();  // the decomposition's error, if any
+  void surfaceMeanAlbedo();
+
+ private:
+  void masks();
+  ImageF anchoredRetinex(const ImageF& image, const std::vector<uint8_t>& use, bool gammaAnchor,
+                         const ImageF* fallback) const;
+  LightingFit& f;
+  const int W, H;
+  std::vector<uint8_t> valid, validPhoto, clipped;
+  bool haveIndirect = false;
+};
+
+// The decomposition's masks: photo pixels with a measurement (validPhoto), those the model
+// explains (valid: its data terms apply) and the clipped ones.
+void Decomposer::masks() {
+  const LightingOptions& opt = f.opt;
+  valid.assign(size_t(W) * H, 0), validPhoto.assign(size_t(W) * H, 0), clipped.assign(size_t(W) * H, 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      clipped[idx] = f.saturated(x, y) ? 1 : 0;
+      validPhoto[idx] = f.ps[idx].surface >= 0 && !f.isLight(x, y) && !clipped[idx] &&
+                        luminance(f.photo.rgb(x, y)) > 1e-5;
+      // A pixel brighter than any reflectance could make it under the modelled light is one
+      // the model does not explain (a light or an opening it lacks, a surface that is not
+      // where the geometry says, such as the floor seen between a table's legs): its albedo
+      // comes from the photo's own Retinex, and the data terms leave it alone.
+      const Vec3 sf = f.shadingFree.rgb(x, y);
+      valid[idx] = validPhoto[idx] && sf.maxCoeff() <= opt.unexplainedAbove &&
+                   !f.isProxy(f.ps[idx].surface);
+    }
+  size_t nValid = 0, nIndirect = 0;
+  for (size_t i = 0; i < valid.size(); ++i)
+    if (valid[i]) ++nValid, nIndirect += f.directShare[i] < 0.25f;
+  haveIndirect = nIndirect >= std::max<size_t>(200, nValid / 50);
+}
+
+// Retinex of `image`, scaled per channel so its median ratio to the physical albedo is 1.
+// With `gammaAnchor`, the ratio is also taken where Gamma dominates the shading: there
+// rho = B / Gamma does not depend on the fitted lights (the flat direction rho / k, L * k);
+// the scale is the geometric mean of the two anchors when there are enough such pixels.
+// `fallback`: the albedo of pixels not in `use` (default: the physical one).
+ImageF Decomposer::anchoredRetinex(const ImageF& image, const std::vector<uint8_t>& use,
+                                   bool gammaAnchor, const ImageF* fallback) const {
+  const ImageF& physical = f.out.albedo;
+  const ImageF rel = retinexReflectance(image, use, f.opt.retinex);
+  auto medianRatio = [&](int c, bool indirectOnly) {
+    std::vector<float> ratio;
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x)
+        if (valid[size_t(y) * W + x] && rel.at(x, y, c) > 1e-4f && physical.at(x, y, c) > 0 &&
+            physical.at(x, y, c) < 1 && (!indirectOnly || f.directShare[size_t(y) * W + x] < 0.25f))
+          ratio.push_back(physical.at(x, y, c) / rel.at(x, y, c));
+    if (ratio.empty()) return 1.0;
+    std::nth_element(ratio.begin(), ratio.begin() + long(ratio.size() / 2), ratio.end());
+    return double(ratio[ratio.size() / 2]);
+  };
+  Vec3 scale(1, 1, 1);
+  for (int c = 0; c < 3; ++c) {
+    scale[c] = medianRatio(c, false);
+    if (gammaAnchor && haveIndirect) scale[c] = std::sqrt(scale[c] * medianRatio(c, true));
+  }
+  ImageF a(W, H, 3, 0.f);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      if (f.ps[idx].surface < 0) continue;
+      for (int c = 0; c < 3; ++c) {
+        // Lamps and clipped pixels carry no reflectance: the fallback stands.
+        const float r = use[idx] ? float(scale[c] * rel.at(x, y, c)) : (fallback ? *fallback : physical).at(x, y, c);
+        a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
+      }
+    }
+  return a;
+}
+
+// The baseline Retinex, then (LightingOptions::objective) the decomposition started from Retinex
+// of the shading-free image; its albedo and direct light replace the physical ones.
+std::optional<Error> Decomposer::run() {
+  LightingEstimate& out = f.out;
+  masks();
+  // The baseline: Retinex of the photo alone.
+  out.retinexAlbedo = anchoredRetinex(f.photo, validPhoto, false, nullptr);
+  if (!f.opt.objective) {
+    out.albedo = out.retinexAlbedo;
+    return std::nullopt;
+  }
+  // The start: Retinex of the photo with the geometry's shading divided out (what is left of
+  // shading there is noise and model error, which the thresholds remove).
+  const ImageF rho0 = anchoredRetinex(f.shadingFree, valid, true, &out.retinexAlbedo);
+  DecomposeOptions dopt = f.opt.decompose;
+  if (!dopt.cancel) dopt.cancel = f.opt.cancel;
+  auto dec = decomposeIntrinsic(f.photo, out.gathered, rho0, valid, clipped, dopt);
+  out.decomposeStart = rho0;
+  out.decomposeValid = valid;
+  out.decomposeClipped = clipped;
+  if (!dec) return dec.error().underKey("decomposition");
+  out.decomposeHistory = dec->history;
+  out.decomposeReport = dec->report;
+  out.decomposeConverged = dec->converged;
+  if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      if (f.ps[idx].surface < 0) continue;
+      out.albedo.setRgb(x, y, dec->albedo.rgb(x, y));
+      out.direct.setRgb(x, y, dec->direct.rgb(x, y));
+    }
+  return std::nullopt;
+}
+
+// Each surface's mean albedo over its valid pixels; surfaces the camera does not see: walls and
+// the ceiling take the mean of the walls it sees.
+void Decomposer::surfaceMeanAlbedo() {
+  const size_t S = f.S;
+  std::vector<Vec3> albedoSum(S, Vec3::Zero());
+  std::vector<double> albedoCount(S, 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      if (!valid[idx]) continue;
+      albedoSum[f.ps[idx].surface] += f.out.albedo.rgb(x, y);
+      albedoCount[f.ps[idx].surface] += 1;
+    }
   std::vector<Vec3> meanSeen(S, Vec3::Zero());
   for (size_t s = 0; s < S; ++s)
     if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
-  out.surfaceMeanAlbedo = albedoOfUnseen(geometry, meanSeen, albedoCount);
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return out;
+  f.out.surfaceMeanAlbedo = albedoOfUnseen(f.geometry, meanSeen, albedoCount);
+}
+
+}  // namespace
+
+Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& camera,
+                                            const SceneGeometry& geometry,
+                                            const std::vector<AreaLight>& lightsIn,
+                                            const std::vector<bool>& refineIn,
+                                            const ImageF& lightMask,
+                                            const std::vector<SunLight>& suns,
+                                            const LightingOptions& opt) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (photo.width <= 0 || photo.height <= 0 || photo.channels < 3)
+    return Error{"", "photo", "the photo is empty"};
+  std::unique_ptr<tbb::global_control> threadLimit;
+  if (opt.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(
+        tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
+  auto cancelled = [] { return Error{"", "", "cancelled"}; };
+
+  LightingFit fit(photo, camera, geometry, lightsIn, refineIn, lightMask, suns, opt);
+  fit.findPixelSurfaces();
+  if (fit.stop()) return cancelled();
+  if (!fit.measureSurfaceRadiance())
+    return Error{"", "photo", "no pixel of the photo falls on the room"};
+  fit.countClippedPixels();
+  if (!fit.computeDirectLight()) return cancelled();
+  if (!fit.chooseFitPixels())
+    return Error{"", "photo", "every pixel of the room is black or saturated: nothing to fit"};
+  fit.chooseGatherSamples();
+  if (!fit.gatherAndFit()) return cancelled();
+  fit.perPixelAlbedo();
+  fit.relativeFitResidual();
+  Decomposer decomposer(fit);
+  if (auto error = decomposer.run()) return *error;
+  decomposer.surfaceMeanAlbedo();
+  fit.out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return std::move(fit.out);
 }
 
 ImageF radianceForBounces(const ImageF& photo, const Camera& camera, const SceneGeometry& geometry,

@@ -22,6 +22,7 @@
 #include "inlay/modeling/image.h"
 #include "inlay/render/scene.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,12 @@ struct LightingEstimate {
   std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
   std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
   double fitRmsLog = 0;  // robust fit residual (log space)
+  // How much of the photo the fitted model leaves unexplained, free of the photo's scale and
+  // gamma: over the fit's pixels and channels, the median |log(B / (rho_s (sum L_j E_j +
+  // Gamma)))| (rho_s the fit's albedo of the pixel's surface) over the median |log B - median
+  // log B|. A response that decodes the photo to the room's true radiance should lower it (the
+  // camera-response benchmark compares curves by it); NaN when no pixel tells.
+  double fitResidualRelative = std::numeric_limits<double>::quiet_NaN();
   int gatherSamples = 0; // rays per gathered pixel used
   int passes = 0;        // gather-and-fit passes run (LightingOptions::maxPasses)
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
