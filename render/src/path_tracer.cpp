@@ -188,8 +188,9 @@ struct PathTracer::Impl {
   // in the hot loop).
   struct AtomicCounters {
     std::atomic<uint64_t> cameraRays{0}, bounceRays{0}, shadowRays{0};
-    std::atomic<int64_t> cameraNs{0}, bounceNs{0}, shadowNs{0};
+    std::atomic<int64_t> cameraNs{0}, bounceNs{0}, shadowNs{0}, neeNs{0};
     void add(const RayCounters& c) {
+      neeNs.fetch_add(c.neeNs, std::memory_order_relaxed);
       cameraRays.fetch_add(c.cameraRays, std::memory_order_relaxed);
       bounceRays.fetch_add(c.bounceRays, std::memory_order_relaxed);
       shadowRays.fetch_add(c.shadowRays, std::memory_order_relaxed);
@@ -527,8 +528,23 @@ struct PathTracer::Impl {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
   }
+  // Appends a ray to TracerOptions::rayLog (benchmarks only).
+  void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear, double tFar) const {
+    LoggedRay r;
+    r.type = type;
+    r.target = s == withScene      ? LoggedRay::Target::With
+               : s == withoutScene ? LoggedRay::Target::Without
+               : s == sunWithScene ? LoggedRay::Target::SunWith
+                                   : LoggedRay::Target::SunWithout;
+    const RTCRayHit rh = makeRayHit(o, dir, tNear, tFar);
+    r.org[0] = rh.ray.org_x, r.org[1] = rh.ray.org_y, r.org[2] = rh.ray.org_z;
+    r.dir[0] = rh.ray.dir_x, r.dir[1] = rh.ray.dir_y, r.dir[2] = rh.ray.dir_z;
+    r.tnear = rh.ray.tnear, r.tfar = rh.ray.tfar;
+    options.rayLog->rays.push_back(r);
+  }
   // A counted (and, if asked, timed) shadow ray: true when (0, tFar) is blocked in `s`.
   bool blocked(Sums& out, RTCScene s, const Vec3& o, const Vec3& dir, double tFar) const {
+    if (options.rayLog) logRay(LoggedRay::Type::Shadow, s, o, dir, 0, tFar);
     const int64_t t0 = rayClockNs();
     const bool hit = occluded(s, o, dir, 0, tFar);
     ++out.counters.shadowRays;
@@ -632,6 +648,9 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
   Vec3& dir = st.dir;
   for (;; ++st.depth) {
     const int depth = st.depth;
+    if (options.rayLog)
+      logRay(depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce,
+             mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir, st.tNear, 3.4e38);
     const int64_t t0 = rayClockNs();
     const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
                                           st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
@@ -723,6 +742,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       // transmits (rough glass): then every side counts (a zero normal says so).
       const Vec3 selectNormal = bsdf.transmits() ? Vec3(Vec3::Zero()) : ngFacing;
       const bool nee = !bsdf.transmits() || options.roughGlassNee;
+      const int64_t neeStart = rayClockNs();
       // Next-event estimation: one source picked by power over squared distance (or by power
       // alone, TracerOptions::lightSelection); on an area
       // light one point uniform in its solid angle (rectangles) or area, on an emissive object
@@ -807,6 +827,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
         const Vec3 o = hit.point + (sunAbove ? eps : -eps) * ngFacing;
         addUnlessBlocked(mode, sunWithScene, sunWithoutScene, o, sun.toSun, 3.4e38, c, out);
       }
+      out.counters.neeNs += rayClockNs() - neeStart;
       const auto uDir = rng.get2(dim / 2 + 1);
       const BsdfSample s = bsdf.sample(woLocal, pickAndLobe[1], uDir[0], uDir[1]);
       if (!s.valid) return;
@@ -1064,6 +1085,7 @@ PathTracer::Stats PathTracer::stats() const {
   s.byType.cameraNs = c.cameraNs.load(std::memory_order_relaxed);
   s.byType.bounceNs = c.bounceNs.load(std::memory_order_relaxed);
   s.byType.shadowNs = c.shadowNs.load(std::memory_order_relaxed);
+  s.byType.neeNs = c.neeNs.load(std::memory_order_relaxed);
   s.rays = s.byType.cameraRays + s.byType.bounceRays + s.byType.shadowRays;
   s.cameraRays = s.byType.cameraRays;
   s.shadowRays = s.byType.shadowRays;
