@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <limits>
@@ -163,7 +164,19 @@ struct Frame {
   double cpuSeconds = 0;  // median over the repeats
   RayCounters rays;       // of one frame
   double neeShare = 0;    // NEE's share of the frame's time (timed frames only)
+  uint64_t checksum = 0;  // FNV-1a of one frame's sums (a change that keeps every bit keeps it)
 };
+
+uint64_t checksumOf(const DifferentialBuffers& b) {
+  uint64_t h = 1469598103934665603ull;
+  for (const ImageF* im : {&b.sumWith, &b.sumWithout, &b.sumMask, &b.sumChange})
+    for (float f : im->data) {
+      uint32_t bits = 0;
+      std::memcpy(&bits, &f, 4);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+  return h;
+}
 
 // One-sample frames of `scene` on the calling thread (the same sample each time: the same rays).
 Frame renderFrames(const RenderScene& scene, TracerOptions opt, int repeats) {
@@ -178,6 +191,7 @@ Frame renderFrames(const RenderScene& scene, TracerOptions opt, int repeats) {
     const double t0 = threadSeconds();
     tracer.renderRect(b, 0, 0, w, h, 0, 1, 7);
     cpu.push_back(threadSeconds() - t0);
+    if (r == 0) f.checksum = checksumOf(b);
     const double wallNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - wall0).count();
     const RayCounters c1 = tracer.stats().byType;
     f.rays.cameraRays = c1.cameraRays - c0.cameraRays;
@@ -240,9 +254,9 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
     std::printf("%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f\n", r.name,
                 static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6, ours / plain);
   }
-  std::printf("frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%\n",
+  std::printf("frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
               full.cpuSeconds, cam.cpuSeconds, 100 * fullTimed.neeShare,
-              100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1));
+              100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1), static_cast<unsigned long long>(full.checksum));
   csv.flush();
 }
 
