@@ -188,8 +188,9 @@ struct PathTracer::Impl {
   // in the hot loop).
   struct AtomicCounters {
     std::atomic<uint64_t> cameraRays{0}, bounceRays{0}, shadowRays{0};
-    std::atomic<int64_t> cameraNs{0}, bounceNs{0}, shadowNs{0};
+    std::atomic<int64_t> cameraNs{0}, bounceNs{0}, shadowNs{0}, neeNs{0};
     void add(const RayCounters& c) {
+      neeNs.fetch_add(c.neeNs, std::memory_order_relaxed);
       cameraRays.fetch_add(c.cameraRays, std::memory_order_relaxed);
       bounceRays.fetch_add(c.bounceRays, std::memory_order_relaxed);
       shadowRays.fetch_add(c.shadowRays, std::memory_order_relaxed);
@@ -527,8 +528,23 @@ struct PathTracer::Impl {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
         .count();
   }
+  // Appends a ray to TracerOptions::rayLog (benchmarks only).
+  void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear, double tFar) const {
+    LoggedRay r;
+    r.type = type;
+    r.target = s == withScene      ? LoggedRay::Target::With
+               : s == withoutScene ? LoggedRay::Target::Without
+               : s == sunWithScene ? LoggedRay::Target::SunWith
+                                   : LoggedRay::Target::SunWithout;
+    const RTCRayHit rh = makeRayHit(o, dir, tNear, tFar);
+    r.org[0] = rh.ray.org_x, r.org[1] = rh.ray.org_y, r.org[2] = rh.ray.org_z;
+    r.dir[0] = rh.ray.dir_x, r.dir[1] = rh.ray.dir_y, r.dir[2] = rh.ray.dir_z;
+    r.tnear = rh.ray.tnear, r.tfar = rh.ray.tfar;
+    options.rayLog->rays.push_back(r);
+  }
   // A counted (and, if asked, timed) shadow ray: true when (0, tFar) is blocked in `s`.
   bool blocked(Sums& out, RTCScene s, const Vec3& o, const Vec3& dir, double tFar) const {
+    if (options.rayLog) logRay(LoggedRay::Type::Shadow, s, o, dir, 0, tFar);
     const int64_t t0 = rayClockNs();
     const bool hit = occluded(s, o, dir, 0, tFar);
     ++out.counters.shadowRays;
@@ -567,6 +583,49 @@ struct PathTracer::Impl {
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                  bool* firstHitIsObject) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
+
+  // tracePath's steps.
+  // A surface vertex as the steps after its hit see it: the normals turned to the side the
+  // path arrived from, the ray offset, the vertex's first random dimension and its light-pick
+  // and lobe numbers.
+  struct Vertex {
+    Vec3 point, wo, ngFacing, ns;
+    bool frontSide = true;  // the path arrived on the side the geometric normal points to
+    double eps = 0;
+    uint32_t dim = 0;
+    std::array<double, 2> pickAndLobe{};
+  };
+  // A non-specular BSDF in its local frame at a vertex.
+  struct Lobe {
+    const SurfaceBsdf& bsdf;
+    Frame frame;
+    Vec3 woLocal;
+    Vec3 selectNormal;  // light selection's normal; zero after a transmitting BSDF (every side)
+  };
+  // A point NEE picked on a source.
+  struct SourcePoint {
+    Vec3 y, normal, radiance;
+    double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
+    bool mesh = false;      // on an emissive object
+  };
+  static void addTo(Mode mode, Sums& out, const Vec3& c) {
+    if (mode != Mode::WithoutOnly) out.with += c;
+    if (mode != Mode::WithOnly) out.without += c;
+  }
+  Hit castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out) const;
+  void addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const;
+  bool endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const;
+  bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
+  Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
+  bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf, const SampleRng& rng,
+                          Sums& out) const;
+  SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
+  void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, const SampleRng& rng,
+                       Sums& out) const;
+  void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
+  bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
+  bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
+  bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
 };
 
 void PathTracer::Impl::updateMeshLight(size_t i) {
@@ -621,241 +680,288 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
   return m.corner[k] + su * (1.0 - v) * m.edge1[k] + su * v * m.edge2[k];
 }
 
+// A path as named steps: cast the ray; part at an object; end at an emitter or on the photo;
+// otherwise the surface's BSDF, next-event estimation, and the next direction.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  bool* firstHitIsObject) const {
-  auto add = [&](const Vec3& c) {
-    if (mode != Mode::WithoutOnly) out.with += c;
-    if (mode != Mode::WithOnly) out.without += c;
-  };
-  Vec3& throughput = st.throughput;
-  Vec3& origin = st.origin;
-  Vec3& dir = st.dir;
   for (;; ++st.depth) {
-    const int depth = st.depth;
-    const int64_t t0 = rayClockNs();
-    const Hit hit = intersectThroughCards(mode == Mode::WithoutOnly ? withoutScene : withScene, origin, dir,
-                                          st.tNear, rng.get(kFirstVertexDim + uint32_t(depth) * kDimsPerVertex + 7));
-    const int64_t spentNs = rayClockNs() - t0;
-    if (depth == 0)
-      ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
-    else
-      ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
+    const Hit hit = castPathRay(mode, st, rng, out);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
-      if (depth == 0 && firstHitIsObject) *firstHitIsObject = true;
+      if (st.depth == 0 && firstHitIsObject) *firstHitIsObject = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
       // and with the same depth-indexed random dimensions; this path goes on with the objects.
       tracePath(Mode::WithoutOnly, st, rng, out, nullptr);
       mode = Mode::WithOnly;
     }
     if (hit.kind == Hit::Kind::None) return;
-    const bool indirectHit = depth >= 2;
-    if (hit.kind == Hit::Kind::Light) {
-      const LightData& l = lights[size_t(hit.index)];
-      const double cosL = -l.normal.dot(dir);
-      if (cosL <= 0) return;  // the black back of the light
-      const double w =
-          st.lastSpecular ? 1.0
-                          : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, st.lastNormal, hit.point));
-      if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(l.radiance) * w), indirectHit));
-      return;
-    }
-    const Material* reassigned = hit.kind == Hit::Kind::Room ? roomMaterial(hit.index) : nullptr;
-    const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
-    if (hit.kind == Hit::Kind::Room && depth >= 1 && !reassigned && photoAllowed) {
-      // A bounce that lands on room the camera sees takes the photo's radiance there (all the
-      // light that point sends, so the path ends). Camera rays never do: with and without must
-      // both be rendered there, or an object's shadow would vanish from the difference.
-      //
-      // Never on a surface marked mirror or glossy: the photo shows the radiance it sends toward
-      // the camera only, and its specular part depends on the direction (a mirror pixel shows
-      // whatever lies in the camera's mirror direction, not this bounce's). Taking it would
-      // give the bounce the wrong reflection and, where the path's own specular continuation is
-      // traced too, count the reflected light twice. Such a surface is path traced at every
-      // depth with its BSDF (NEE for its lobes, a bounce on), and its bounce ends on Lambertian
-      // room where the photo's radiance does hold for every direction. A Lambertian point the
-      // real mirror lights is unaffected: the photo there already holds that light.
-      Vec3 photo;
-      if (scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) {
-        add(clampIndirect(Vec3(throughput.cwiseProduct(photo)), indirectHit));
-        if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
-        return;
-      }
-    }
+    if (hit.kind == Hit::Kind::Light) return addLightSeen(mode, st, hit, out);
+    if (endsOnPhoto(mode, st, hit, rng, out)) return;
     SurfaceBsdf bsdf;
-    if (hit.kind == Hit::Kind::Room) {
-      bsdf.kind = Material::Kind::Diffuse;
-      bsdf.albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
-      if (reassigned) setRoomBsdf(*reassigned, bsdf);
-    } else {
-      const ObjectData& od = objects[size_t(hit.index)];
-      const Material& m = od.materialOf(hit.prim);
-      if (m.kind == Material::Kind::Emissive) {
-        // Both sides emit. After a non-specular bounce NEE could have found this point too.
-        const int k = od.meshLightOf(hit.prim);
-        const double w = st.lastSpecular || k < 0
-                             ? 1.0
-                             : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal,
-                                                                       hit.point, hit.geometricNormal));
-        if (w > 0) add(clampIndirect(Vec3(throughput.cwiseProduct(m.emission) * w), indirectHit));
-        return;
-      }
-      bsdf.kind = m.kind;
-      bsdf.albedo = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
-      setLobeParameters(m, bsdf);
-    }
-    if (depth >= options.maxDepth) return;
-
-    const Vec3 wo = -dir;
-    const Vec3 ng = hit.geometricNormal;
-    const bool frontSide = wo.dot(ng) >= 0;
-    const Vec3 ngFacing = frontSide ? ng : Vec3(-ng);
-    Vec3 ns = hit.shadingNormal;
-    if (ns.dot(ngFacing) < 0) ns = -ns;
-    if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = frontSide ? bsdf.ior : 1.0 / bsdf.ior;
-    const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
-    const uint32_t dim = kFirstVertexDim + uint32_t(depth) * kDimsPerVertex;
-    const auto pickAndLobe = rng.get2(dim / 2 + 2);
-
-    if (bsdf.nonSpecular()) {
-      const Frame frame(bsdf.transmits() && wo.dot(ns) <= 0 ? ngFacing : ns);
-      const Vec3 woLocal = frame.toLocal(wo);
-      // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
-      // transmits (rough glass): then every side counts (a zero normal says so).
-      const Vec3 selectNormal = bsdf.transmits() ? Vec3(Vec3::Zero()) : ngFacing;
-      const bool nee = !bsdf.transmits() || options.roughGlassNee;
-      // Next-event estimation: one source picked by power over squared distance (or by power
-      // alone, TracerOptions::lightSelection); on an area
-      // light one point uniform in its solid angle (rectangles) or area, on an emissive object
-      // one point uniform by area.
-      double selectProb = 0;
-      const size_t li =
-          sourceCount() == 0 || !nee ? sourceCount() : pickLight(hit.point, selectNormal, pickAndLobe[0], &selectProb);
-      if (li < sourceCount() && selectProb > 0) {
-        const auto uLight = rng.get2(dim / 2);
-        const bool meshLight = li >= lights.size();
-        Vec3 y, lightNormal, radiance;
-        double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
-        if (meshLight) {
-          const MeshLightData& m = meshLights[li - lights.size()];
-          y = sampleMeshLight(m, uLight[0], uLight[1], &lightNormal);
-          radiance = m.radiance;
-        } else {
-          const LightData& l = lights[li];
-          if (l.rectangle) {
-            const SphericalRect sr(l.corner, l.edgeX, l.edgeY, hit.point);
-            if (sr.solidAngle > kMinSolidAngle) y = sr.sample(uLight[0], uLight[1]), solidAngle = sr.solidAngle;
-          } else {
-            const SphericalQuad sq(l.emitter, hit.point);
-            if (sq.solidAngle > kMinSolidAngle) y = sq.sample(uLight[0], uLight[1]), solidAngle = sq.solidAngle;
-          }
-          if (solidAngle == 0) y = sampleQuadUniform(l.emitter, uLight[0], uLight[1]);
-          lightNormal = l.normal;
-          radiance = l.radiance;
-        }
-        Vec3 w = y - hit.point;
-        const double d2 = w.squaredNorm();
-        const double d = std::sqrt(d2);
-        if (d > 0) w /= d;
-        // Area lights emit on their front only; emissive objects on both sides.
-        const double cosL = meshLight ? std::abs(lightNormal.dot(w)) : -lightNormal.dot(w);
-        const bool above = w.dot(ngFacing) > 0;
-        const Vec3 wLocal = frame.toLocal(w);
-        if (d > 2 * eps && cosL > 0 && (above || bsdf.transmits()) && (wLocal.z() > 0) == above) {
-          double pdfBsdf = 0;
-          const Vec3 fcos = bsdf.eval(woLocal, wLocal, &pdfBsdf);
-          if (fcos.maxCoeff() > 0) {
-            const double pdfLight =
-                meshLight ? meshLightPdf(li - lights.size(), hit.point, selectNormal, y, lightNormal)
-                : solidAngle > 0 ? selectProb / solidAngle
-                                 : lightPdf(int(li), hit.point, selectNormal, y);
-            const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(throughput.cwiseProduct(fcos).cwiseProduct(radiance) *
-                                                             (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
-                                                        depth >= 1)
-                                        : Vec3(Vec3::Zero());
-            // The shadow ray runs from the offset origin to the sampled point itself, stopping
-            // just short of the emitter (which would otherwise block its own light).
-            const Vec3 o = hit.point + (above ? eps : -eps) * ngFacing;
-            Vec3 ws = y - o;
-            const double ds = ws.norm();
-            ws /= ds;
-            const double tFar = ds * (1.0 - 1e-4);
-            if (meshLight) {
-              // An emissive object exists in the with-scene only.
-              if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
-                out.with += c;
-            } else {
-              addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
-            }
-          }
-        }
-      }
-      // Suns: parallel light, a delta direction (never found by BSDF sampling, so no MIS).
-      for (const SunData& sun : suns) {
-        if (!nee) break;
-        const bool sunAbove = sun.toSun.dot(ngFacing) > 0;
-        if (!sunAbove && !(bsdf.transmits() && sun.toSun.dot(ngFacing) < 0)) continue;
-        const double beam = sun.sun->beamAt(hit.point);
-        if (!(beam > 0)) continue;
-        double pdfBsdf = 0;
-        const Vec3 sunLocal = frame.toLocal(sun.toSun);
-        if ((sunLocal.z() > 0) != sunAbove) continue;
-        const Vec3 fcos = bsdf.eval(woLocal, sunLocal, &pdfBsdf);
-        if (!(fcos.maxCoeff() > 0)) continue;
-        // L = f cos E_perp with E_perp = pi * irradianceOverPi.
-        const Vec3 c = clampIndirect(
-            Vec3(throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), depth >= 1);
-        const Vec3 o = hit.point + (sunAbove ? eps : -eps) * ngFacing;
-        addUnlessBlocked(mode, sunWithScene, sunWithoutScene, o, sun.toSun, 3.4e38, c, out);
-      }
-      const auto uDir = rng.get2(dim / 2 + 1);
-      const BsdfSample s = bsdf.sample(woLocal, pickAndLobe[1], uDir[0], uDir[1]);
-      if (!s.valid) return;
-      dir = frame.toWorld(s.dir).normalized();
-      const bool reflected = s.dir.z() > 0;
-      // A shading normal may send it to the wrong side of the real surface: end the path.
-      if ((dir.dot(ngFacing) > 0) != reflected) return;
-      throughput = throughput.cwiseProduct(s.weight);
-      st.lastSpecular = !nee;  // without NEE here, a light the bounce finds counts in full
-      st.lastPdf = s.pdf;
-      st.lastPoint = hit.point;
-      st.lastNormal = selectNormal;
-      origin = hit.point + (reflected ? eps : -eps) * ngFacing;
-    } else if (bsdf.kind == Material::Kind::Mirror) {
-      dir = reflect(wo, ns).normalized();
-      if (dir.dot(ngFacing) <= 0) dir = reflect(wo, ngFacing).normalized();
-      throughput = throughput.cwiseProduct(bsdf.albedo);
-      st.lastSpecular = true;
-      st.lastPdf = 0;
-      origin = hit.point + eps * ngFacing;
-    } else {  // Glass: smooth dielectric, clear (no absorption)
-      // Entering when the ray comes from the outward side.
-      const bool entering = frontSide;
-      const double eta = entering ? bsdf.ior : 1.0 / bsdf.ior;
-      Vec3 n = ns;  // faces the incoming side
-      double cosI = wo.dot(n);
-      if (cosI <= 0) n = ngFacing, cosI = wo.dot(n);
-      double cosT = 0;
-      const double f = fresnelDielectric(cosI, eta, &cosT);
-      if (pickAndLobe[1] < f) {
-        dir = reflect(wo, n).normalized();
-        origin = hit.point + eps * ngFacing;
-        if (dir.dot(ngFacing) <= 0) return;
-      } else {
-        dir = (-wo / eta + (cosI / eta - cosT) * n).normalized();
-        origin = hit.point - eps * ngFacing;
-        if (dir.dot(ngFacing) >= 0) return;
-      }
-      st.lastSpecular = true;
-      st.lastPdf = 0;
-    }
+    if (!surfaceBsdf(mode, st, hit, out, &bsdf)) return;  // a glowing object ends the path
+    if (st.depth >= options.maxDepth) return;
+    const Vertex v = vertexAt(st, hit, rng);
+    if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+    const bool goesOn = bsdf.nonSpecular()                      ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
+                        : bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
+                                                              : scatterGlass(st, v, bsdf);
+    if (!goesOn) return;
     st.tNear = 0;
-
-    if (depth + 1 >= options.russianRouletteDepth) {
-      const double q = std::min(0.95, maxComponent(throughput));
-      if (!(q > 0) || rng.get(dim + 6) >= q) return;
-      throughput /= q;
-    }
+    if (!survivesRoulette(st, v, rng)) return;
   }
+}
+
+Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out) const {
+  const RTCScene s = mode == Mode::WithoutOnly ? withoutScene : withScene;
+  const uint32_t cardDim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex + 7;
+  if (options.rayLog)
+    logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir, st.tNear, 3.4e38);
+  const int64_t t0 = rayClockNs();
+  const Hit hit = intersectThroughCards(s, st.origin, st.dir, st.tNear, rng.get(cardDim));
+  const int64_t spentNs = rayClockNs() - t0;
+  if (st.depth == 0)
+    ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
+  else
+    ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
+  return hit;
+}
+
+// An area light the path meets: its radiance, weighted by MIS against NEE after a
+// non-specular bounce.
+void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const {
+  const LightData& l = lights[size_t(hit.index)];
+  const double cosL = -l.normal.dot(st.dir);
+  if (cosL <= 0) return;  // the black back of the light
+  const double w =
+      st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, st.lastNormal, hit.point));
+  if (w > 0) addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(l.radiance) * w), st.depth >= 2));
+}
+
+// A bounce that lands on room the camera sees takes the photo's radiance there (all the light
+// that point sends, so the path ends): true when it did. Camera rays never do: with and
+// without must both be rendered there, or an object's shadow would vanish from the difference.
+//
+// Never on a surface marked mirror or glossy: the photo shows the radiance it sends toward the
+// camera only, and its specular part depends on the direction (a mirror pixel shows whatever
+// lies in the camera's mirror direction, not this bounce's). Taking it would give the bounce
+// the wrong reflection and, where the path's own specular continuation is traced too, count
+// the reflected light twice. Such a surface is path traced at every depth with its BSDF (NEE
+// for its lobes, a bounce on), and its bounce ends on Lambertian room where the photo's
+// radiance does hold for every direction. A Lambertian point the real mirror lights is
+// unaffected: the photo there already holds that light.
+bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const {
+  const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
+  if (hit.kind != Hit::Kind::Room || st.depth < 1 || roomMaterial(hit.index) || !photoAllowed) return false;
+  Vec3 photo;
+  if (!scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) return false;
+  addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(photo)), st.depth >= 2));
+  if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
+  return true;
+}
+
+// The BSDF at a room or object hit; false (after adding its light) when the hit is a glowing
+// object, which ends the path.
+bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out,
+                                   SurfaceBsdf* bsdf) const {
+  if (hit.kind == Hit::Kind::Room) {
+    bsdf->kind = Material::Kind::Diffuse;
+    bsdf->albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
+    if (const Material* reassigned = roomMaterial(hit.index)) setRoomBsdf(*reassigned, *bsdf);
+    return true;
+  }
+  const ObjectData& od = objects[size_t(hit.index)];
+  const Material& m = od.materialOf(hit.prim);
+  if (m.kind == Material::Kind::Emissive) {
+    // Both sides emit. After a non-specular bounce NEE could have found this point too.
+    const int k = od.meshLightOf(hit.prim);
+    const double w = st.lastSpecular || k < 0
+                         ? 1.0
+                         : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal, hit.point,
+                                                                   hit.geometricNormal));
+    if (w > 0) addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(m.emission) * w), st.depth >= 2));
+    return false;
+  }
+  bsdf->kind = m.kind;
+  bsdf->albedo = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
+  setLobeParameters(m, *bsdf);
+  return true;
+}
+
+PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const {
+  Vertex v;
+  v.point = hit.point;
+  v.wo = -st.dir;
+  const Vec3 ng = hit.geometricNormal;
+  v.frontSide = v.wo.dot(ng) >= 0;
+  v.ngFacing = v.frontSide ? ng : Vec3(-ng);
+  v.ns = hit.shadingNormal;
+  if (v.ns.dot(v.ngFacing) < 0) v.ns = -v.ns;
+  v.eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
+  v.dim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex;
+  v.pickAndLobe = rng.get2(v.dim / 2 + 2);
+  return v;
+}
+
+// A non-specular vertex: next-event estimation (a light source, the suns), then a direction
+// from the BSDF. False when the path ends here.
+bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                                          const SampleRng& rng, Sums& out) const {
+  const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
+  // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
+  // transmits (rough glass): then every side counts (a zero normal says so).
+  const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
+  const bool nee = !bsdf.transmits() || options.roughGlassNee;
+  if (nee) {
+    const int64_t neeStart = rayClockNs();
+    addSourceSample(mode, st, v, lobe, rng, out);
+    addSunLight(mode, st, v, lobe, out);
+    out.counters.neeNs += rayClockNs() - neeStart;
+  }
+  const auto uDir = rng.get2(v.dim / 2 + 1);
+  const BsdfSample s = bsdf.sample(lobe.woLocal, v.pickAndLobe[1], uDir[0], uDir[1]);
+  if (!s.valid) return false;
+  st.dir = frame.toWorld(s.dir).normalized();
+  const bool reflected = s.dir.z() > 0;
+  // A shading normal may send it to the wrong side of the real surface: end the path.
+  if ((st.dir.dot(v.ngFacing) > 0) != reflected) return false;
+  st.throughput = st.throughput.cwiseProduct(s.weight);
+  st.lastSpecular = !nee;  // without NEE here, a light the bounce finds counts in full
+  st.lastPdf = s.pdf;
+  st.lastPoint = v.point;
+  st.lastNormal = lobe.selectNormal;
+  st.origin = v.point + (reflected ? v.eps : -v.eps) * v.ngFacing;
+  return true;
+}
+
+// A point on NEE source `li` seen from `from`: on an area light uniform in its solid angle
+// (rectangles and quads; by area when that is tiny), on an emissive object uniform by area.
+PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Vec3& from,
+                                                             const std::array<double, 2>& u) const {
+  SourcePoint p;
+  p.mesh = li >= lights.size();
+  if (p.mesh) {
+    const MeshLightData& m = meshLights[li - lights.size()];
+    p.y = sampleMeshLight(m, u[0], u[1], &p.normal);
+    p.radiance = m.radiance;
+    return p;
+  }
+  const LightData& l = lights[li];
+  if (l.rectangle) {
+    const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
+    if (sr.solidAngle > kMinSolidAngle) p.y = sr.sample(u[0], u[1]), p.solidAngle = sr.solidAngle;
+  } else {
+    const SphericalQuad sq(l.emitter, from);
+    if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
+  }
+  if (p.solidAngle == 0) p.y = sampleQuadUniform(l.emitter, u[0], u[1]);
+  p.normal = l.normal;
+  p.radiance = l.radiance;
+  return p;
+}
+
+// Next-event estimation to one source (area light or emissive object) picked by power over
+// squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
+// the BSDF, with a shadow ray.
+void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                                       const SampleRng& rng, Sums& out) const {
+  double selectProb = 0;
+  const size_t li = sourceCount() == 0 ? sourceCount() : pickLight(v.point, lobe.selectNormal, v.pickAndLobe[0], &selectProb);
+  if (li >= sourceCount() || !(selectProb > 0)) return;
+  const SourcePoint p = sampleSource(li, v.point, rng.get2(v.dim / 2));
+  Vec3 w = p.y - v.point;
+  const double d = std::sqrt(w.squaredNorm());
+  if (d > 0) w /= d;
+  // Area lights emit on their front only; emissive objects on both sides.
+  const double cosL = p.mesh ? std::abs(p.normal.dot(w)) : -p.normal.dot(w);
+  const bool above = w.dot(v.ngFacing) > 0;
+  const Vec3 wLocal = lobe.frame.toLocal(w);
+  if (!(d > 2 * v.eps && cosL > 0 && (above || lobe.bsdf.transmits()) && (wLocal.z() > 0) == above)) return;
+  double pdfBsdf = 0;
+  const Vec3 fcos = lobe.bsdf.eval(lobe.woLocal, wLocal, &pdfBsdf);
+  if (!(fcos.maxCoeff() > 0)) return;
+  const double pdfLight = p.mesh               ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
+                          : p.solidAngle > 0 ? selectProb / p.solidAngle
+                                             : lightPdf(int(li), v.point, lobe.selectNormal, p.y);
+  const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
+                                                   (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                                              st.depth >= 1)
+                              : Vec3(Vec3::Zero());
+  // The shadow ray runs from the offset origin to the sampled point itself, stopping just
+  // short of the emitter (which would otherwise block its own light).
+  const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
+  Vec3 ws = p.y - o;
+  const double ds = ws.norm();
+  ws /= ds;
+  const double tFar = ds * (1.0 - 1e-4);
+  if (p.mesh) {
+    // An emissive object exists in the with-scene only.
+    if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar)) out.with += c;
+  } else {
+    addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
+  }
+}
+
+// Suns: parallel light, a delta direction (never found by BSDF sampling, so no MIS).
+void PathTracer::Impl::addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                                   Sums& out) const {
+  for (const SunData& sun : suns) {
+    const bool sunAbove = sun.toSun.dot(v.ngFacing) > 0;
+    if (!sunAbove && !(lobe.bsdf.transmits() && sun.toSun.dot(v.ngFacing) < 0)) continue;
+    const double beam = sun.sun->beamAt(v.point);
+    if (!(beam > 0)) continue;
+    double pdfBsdf = 0;
+    const Vec3 sunLocal = lobe.frame.toLocal(sun.toSun);
+    if ((sunLocal.z() > 0) != sunAbove) continue;
+    const Vec3 fcos = lobe.bsdf.eval(lobe.woLocal, sunLocal, &pdfBsdf);
+    if (!(fcos.maxCoeff() > 0)) continue;
+    // L = f cos E_perp with E_perp = pi * irradianceOverPi.
+    const Vec3 c = clampIndirect(
+        Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), st.depth >= 1);
+    const Vec3 o = v.point + (sunAbove ? v.eps : -v.eps) * v.ngFacing;
+    addUnlessBlocked(mode, sunWithScene, sunWithoutScene, o, sun.toSun, 3.4e38, c, out);
+  }
+}
+
+bool PathTracer::Impl::reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const {
+  st.dir = reflect(v.wo, v.ns).normalized();
+  if (st.dir.dot(v.ngFacing) <= 0) st.dir = reflect(v.wo, v.ngFacing).normalized();
+  st.throughput = st.throughput.cwiseProduct(bsdf.albedo);
+  st.lastSpecular = true;
+  st.lastPdf = 0;
+  st.origin = v.point + v.eps * v.ngFacing;
+  return true;
+}
+
+// Smooth dielectric, clear (no absorption): reflect or refract by the Fresnel weight. False
+// when the direction lands on the wrong side of the real surface.
+bool PathTracer::Impl::scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const {
+  // Entering when the ray comes from the outward side.
+  const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+  Vec3 n = v.ns;  // faces the incoming side
+  double cosI = v.wo.dot(n);
+  if (cosI <= 0) n = v.ngFacing, cosI = v.wo.dot(n);
+  double cosT = 0;
+  const double f = fresnelDielectric(cosI, eta, &cosT);
+  if (v.pickAndLobe[1] < f) {
+    st.dir = reflect(v.wo, n).normalized();
+    st.origin = v.point + v.eps * v.ngFacing;
+    if (st.dir.dot(v.ngFacing) <= 0) return false;
+  } else {
+    st.dir = (-v.wo / eta + (cosI / eta - cosT) * n).normalized();
+    st.origin = v.point - v.eps * v.ngFacing;
+    if (st.dir.dot(v.ngFacing) >= 0) return false;
+  }
+  st.lastSpecular = true;
+  st.lastPdf = 0;
+  return true;
+}
+
+// Russian roulette from russianRouletteDepth: survival min(0.95, max throughput).
+bool PathTracer::Impl::survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const {
+  if (st.depth + 1 < options.russianRouletteDepth) return true;
+  const double q = std::min(0.95, maxComponent(st.throughput));
+  if (!(q > 0) || rng.get(v.dim + 6) >= q) return false;
+  st.throughput /= q;
+  return true;
 }
 
 // The photo shows the room without the objects. A path that left an object and lands on room
@@ -1064,6 +1170,7 @@ PathTracer::Stats PathTracer::stats() const {
   s.byType.cameraNs = c.cameraNs.load(std::memory_order_relaxed);
   s.byType.bounceNs = c.bounceNs.load(std::memory_order_relaxed);
   s.byType.shadowNs = c.shadowNs.load(std::memory_order_relaxed);
+  s.byType.neeNs = c.neeNs.load(std::memory_order_relaxed);
   s.rays = s.byType.cameraRays + s.byType.bounceRays + s.byType.shadowRays;
   s.cameraRays = s.byType.cameraRays;
   s.shadowRays = s.byType.shadowRays;

@@ -21,6 +21,8 @@
 
 namespace inlay {
 
+struct RayLog;
+
 struct TracerOptions {
   int maxDepth = 8;          // path vertices after the camera (bounces)
   int russianRouletteDepth = 3;  // roulette starts at this depth
@@ -40,6 +42,25 @@ struct TracerOptions {
   enum class LightSelection { Auto, Spatial, Power };
   LightSelection lightSelection = LightSelection::Auto;
   int spatialSelectionMax = 256;
+  // Benchmarks: every ray the tracer casts is appended here as Embree receives it (one logical
+  // ray each, before any occluder-card pass). Not thread-safe: render with one thread.
+  RayLog* rayLog = nullptr;
+};
+
+// Rays as the tracer handed them to Embree (TracerOptions::rayLog), so a benchmark can cast the
+// same rays through a bare Embree loop.
+struct LoggedRay {
+  enum class Type : uint8_t { Camera, Bounce, Shadow };
+  // The scene it was cast into: the room with or without the objects, or what a sun's shadow
+  // ray sees (no box walls, no emitters) with or without them.
+  enum class Target : uint8_t { With, Without, SunWith, SunWithout };
+  Type type = Type::Camera;
+  Target target = Target::With;
+  float org[3] = {0, 0, 0}, dir[3] = {0, 0, 0};
+  float tnear = 0, tfar = 0;  // tfar: infinity for camera and bounce rays
+};
+struct RayLog {
+  std::vector<LoggedRay> rays;
 };
 
 // Rays traced by type, and the thread time spent in them (nanoseconds, summed over threads;
@@ -50,9 +71,12 @@ struct RayCounters {
   uint64_t bounceRays = 0;  // every later path segment
   uint64_t shadowRays = 0;  // NEE and sun shadow rays
   int64_t cameraNs = 0, bounceNs = 0, shadowNs = 0;
+  // Thread time in next-event estimation as a whole (light pick, point on the light, BSDF
+  // evaluation, shadow rays; suns included), when timeRays: what a shadow ray costs the renderer.
+  int64_t neeNs = 0;
   RayCounters& operator+=(const RayCounters& o) {
     cameraRays += o.cameraRays, bounceRays += o.bounceRays, shadowRays += o.shadowRays;
-    cameraNs += o.cameraNs, bounceNs += o.bounceNs, shadowNs += o.shadowNs;
+    cameraNs += o.cameraNs, bounceNs += o.bounceNs, shadowNs += o.shadowNs, neeNs += o.neeNs;
     return *this;
   }
 };

@@ -1,0 +1,383 @@
+// The renderer's ray rate against a bare Embree loop casting the same rays, in one process, on a
+// prepared scene (the bundled example by default) at the photo's full resolution.
+//
+// - types.csv: rays per second per thread by type (camera, bounce, shadow). The renderer's
+//   figure charges every CPU second of a one-sample frame (PathTracer::renderRect on the calling
+//   thread, thread CPU time, median of REPEATS) to one type:
+//     camera: a frame with maxDepth 0 (camera rays and their first hit only), per camera ray;
+//     shadow: next-event estimation as a whole (light pick, point on the light, BSDF evaluation,
+//             shadow rays; RayCounters::neeNs as a share of the timed frame, applied to the
+//             untimed frame's CPU time);
+//     bounce: the rest of the full frame (its camera rays at the camera rate, and NEE, taken off).
+//   The bare loop casts the very rays the frame cast (TracerOptions::rayLog), each type on its
+//   own, rtcIntersect1 / rtcOccluded1 into scenes built here from the same RenderScene (room
+//   surfaces, light quads, one instanced BVH per object; the sun scenes without box walls and
+//   emitters), nothing else in the loop.
+// - triangles.csv: CPU milliseconds per sample of the full frame, and of its rays in the bare
+//   loop, with the example's object replaced by a sphere of 10k to 1M triangles.
+// - lights.csv: the same against the number of lights: the first light cut into 1 to 64 strips
+//   (the same light in total), the others removed.
+//
+// usage: bench_throughput SCENE.json OUT_DIR [--parts types,triangles,lights] [--repeats N]
+#include "inlay/engine/pipeline.h"
+#include "inlay/render/path_tracer.h"
+
+#include <embree3/rtcore.h>
+#include <pmmintrin.h>
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace inlay;
+
+namespace {
+
+double threadSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// ---- the bare Embree loop -------------------------------------------------------------------
+
+void attachMesh(RTCDevice device, RTCScene scene, const std::vector<Vec3f>& positions,
+                const std::vector<std::array<uint32_t, 3>>& triangles) {
+  if (positions.empty() || triangles.empty()) return;
+  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+  for (size_t i = 0; i < positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) v[3 * i + size_t(k)] = positions[i].allFinite() ? positions[i][k] : 0.f;
+  auto* idx = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
+  for (size_t i = 0; i < triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      idx[3 * i + size_t(k)] = triangles[i][size_t(k)] < positions.size() ? triangles[i][size_t(k)] : 0;
+  rtcCommitGeometry(g);
+  rtcAttachGeometry(scene, g);
+  rtcReleaseGeometry(g);
+}
+
+// The scenes a RenderScene makes, built the plain way.
+class BareScenes {
+ public:
+  explicit BareScenes(const RenderScene& scene) : device_(rtcNewDevice(nullptr)) {
+    for (int t = 0; t < 4; ++t) targets_[t] = rtcNewScene(device_);
+    for (const Surface& s : scene.room.surfaces) {
+      const int last = isBoxSurface(s.kind) ? 1 : 3;  // sun scenes: what stands inside the room
+      for (int t = 0; t <= last; ++t) attachMesh(device_, targets_[t], s.meshWorld.positions, s.meshWorld.triangles);
+    }
+    for (const AreaLight& l : scene.lights) {
+      std::vector<Vec3f> quad;
+      for (const Vec3& c : l.cornersWorld) quad.push_back(c.cast<float>());
+      for (int t = 0; t < 2; ++t) attachMesh(device_, targets_[t], quad, {{0, 1, 2}, {0, 2, 3}});
+    }
+    for (const InsertedObject& o : scene.objects) {
+      if (!o.meshObject || o.meshObject->empty()) continue;
+      RTCScene s = rtcNewScene(device_);
+      rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
+      attachMesh(device_, s, o.meshObject->positions, o.meshObject->triangles);
+      rtcCommitScene(s);
+      objects_.push_back(s);
+      float m[12];
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 3; ++r) m[c * 3 + r] = float(o.worldFromObject(r, c));
+      for (int t : {0, 2}) {  // With, SunWith
+        RTCGeometry inst = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+        rtcSetGeometryInstancedScene(inst, s);
+        rtcSetGeometryTransform(inst, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, m);
+        rtcCommitGeometry(inst);
+        rtcAttachGeometry(targets_[t], inst);
+        rtcReleaseGeometry(inst);
+      }
+    }
+    for (RTCScene s : targets_) rtcCommitScene(s);
+  }
+  ~BareScenes() {
+    for (RTCScene s : targets_) rtcReleaseScene(s);
+    for (RTCScene s : objects_) rtcReleaseScene(s);
+    rtcReleaseDevice(device_);
+  }
+  BareScenes(const BareScenes&) = delete;
+  BareScenes& operator=(const BareScenes&) = delete;
+
+  // Casts the logged rays of `type`; thread CPU seconds, and their count into *count.
+  double cast(const std::vector<LoggedRay>& rays, LoggedRay::Type type, size_t* count) const {
+    const unsigned csr = _mm_getcsr();
+    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
+    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
+    size_t n = 0;
+    unsigned hits = 0;
+    const double t0 = threadSeconds();
+    for (const LoggedRay& r : rays) {
+      if (r.type != type) continue;
+      ++n;
+      RTCIntersectContext ctx;
+      rtcInitIntersectContext(&ctx);
+      RTCRayHit rh;
+      rh.ray.org_x = r.org[0], rh.ray.org_y = r.org[1], rh.ray.org_z = r.org[2];
+      rh.ray.dir_x = r.dir[0], rh.ray.dir_y = r.dir[1], rh.ray.dir_z = r.dir[2];
+      rh.ray.tnear = r.tnear, rh.ray.tfar = r.tfar;
+      rh.ray.time = 0, rh.ray.mask = 0xFFFFFFFFu, rh.ray.id = 0, rh.ray.flags = 0;
+      RTCScene s = targets_[int(r.target)];
+      if (type == LoggedRay::Type::Shadow) {
+        rtcOccluded1(s, &ctx, &rh.ray);
+        hits += rh.ray.tfar < 0;
+      } else {
+        rh.hit.geomID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(s, &ctx, &rh);
+        hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      }
+    }
+    const double seconds = threadSeconds() - t0;
+    _mm_setcsr(csr);
+    *count = n;
+    sink_ += hits;
+    return seconds;
+  }
+
+ private:
+  RTCDevice device_;
+  RTCScene targets_[4] = {};  // indexed by LoggedRay::Target
+  std::vector<RTCScene> objects_;
+  mutable unsigned sink_ = 0;
+};
+
+// ---- the renderer ---------------------------------------------------------------------------
+
+struct Frame {
+  double cpuSeconds = 0;  // median over the repeats
+  RayCounters rays;       // of one frame
+  double neeShare = 0;    // NEE's share of the frame's time (timed frames only)
+  uint64_t checksum = 0;  // FNV-1a of one frame's sums (a change that keeps every bit keeps it)
+};
+
+uint64_t checksumOf(const DifferentialBuffers& b) {
+  uint64_t h = 1469598103934665603ull;
+  for (const ImageF* im : {&b.sumWith, &b.sumWithout, &b.sumMask, &b.sumChange})
+    for (float f : im->data) {
+      uint32_t bits = 0;
+      std::memcpy(&bits, &f, 4);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+  return h;
+}
+
+// One-sample frames of `scene` on the calling thread (the same sample each time: the same rays).
+Frame renderFrames(const RenderScene& scene, TracerOptions opt, int repeats) {
+  PathTracer tracer(scene, opt);
+  const int w = scene.camera.widthPx, h = scene.camera.heightPx;
+  DifferentialBuffers b(w, h);
+  std::vector<double> cpu, share;
+  Frame f;
+  for (int r = 0; r < repeats; ++r) {
+    const RayCounters c0 = tracer.stats().byType;
+    const auto wall0 = std::chrono::steady_clock::now();
+    const double t0 = threadSeconds();
+    tracer.renderRect(b, 0, 0, w, h, 0, 1, 7);
+    cpu.push_back(threadSeconds() - t0);
+    if (r == 0) f.checksum = checksumOf(b);
+    const double wallNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - wall0).count();
+    const RayCounters c1 = tracer.stats().byType;
+    f.rays.cameraRays = c1.cameraRays - c0.cameraRays;
+    f.rays.bounceRays = c1.bounceRays - c0.bounceRays;
+    f.rays.shadowRays = c1.shadowRays - c0.shadowRays;
+    share.push_back(double(c1.neeNs - c0.neeNs) / wallNs);
+  }
+  f.cpuSeconds = median(cpu);
+  f.neeShare = median(share);
+  return f;
+}
+
+std::vector<LoggedRay> logRays(const RenderScene& scene, TracerOptions opt) {
+  RayLog log;
+  opt.rayLog = &log;
+  PathTracer tracer(scene, opt);
+  DifferentialBuffers b(scene.camera.widthPx, scene.camera.heightPx);
+  tracer.renderRect(b, 0, 0, b.width, b.height, 0, 1, 7);
+  return std::move(log.rays);
+}
+
+double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, LoggedRay::Type type, int repeats,
+                   size_t* count) {
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) t.push_back(bare.cast(rays, type, count));
+  return median(t);
+}
+
+void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
+  TracerOptions camOnly;
+  camOnly.maxDepth = 0;
+  TracerOptions timed;
+  timed.timeRays = true;
+  const Frame cam = renderFrames(scene, camOnly, repeats);
+  const Frame full = renderFrames(scene, {}, repeats);
+  const Frame fullTimed = renderFrames(scene, timed, repeats);
+  const double perCamera = cam.cpuSeconds / double(std::max<uint64_t>(1, cam.rays.cameraRays));
+  const double neeSeconds = fullTimed.neeShare * full.cpuSeconds;
+  const double bounceSeconds = full.cpuSeconds - neeSeconds - perCamera * double(full.rays.cameraRays);
+  const BareScenes bare(scene);
+  const std::vector<LoggedRay> rays = logRays(scene, {});
+  const std::vector<LoggedRay> camRays = logRays(scene, camOnly);
+  struct Row {
+    const char* name;
+    LoggedRay::Type type;
+    uint64_t count;
+    double seconds;
+    const std::vector<LoggedRay>* rays;
+  };
+  const Row rows[] = {{"camera", LoggedRay::Type::Camera, cam.rays.cameraRays, cam.cpuSeconds, &camRays},
+                      {"bounce", LoggedRay::Type::Bounce, full.rays.bounceRays, bounceSeconds, &rays},
+                      {"shadow", LoggedRay::Type::Shadow, full.rays.shadowRays, neeSeconds, &rays}};
+  for (const Row& r : rows) {
+    size_t n = 0;
+    const double bareS = bareSeconds(bare, *r.rays, r.type, repeats, &n);
+    if (n != r.count) std::fprintf(stderr, "warning: %s: %zu rays logged, %llu counted\n", r.name, n,
+                                   static_cast<unsigned long long>(r.count));
+    const double ours = double(r.count) / r.seconds, plain = double(n) / bareS;
+    csv << r.name << ',' << r.count << ',' << ours << ',' << plain << ',' << ours / plain << '\n';
+    std::printf("%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f\n", r.name,
+                static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6, ours / plain);
+  }
+  std::printf("frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
+              full.cpuSeconds, cam.cpuSeconds, 100 * fullTimed.neeShare,
+              100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1), static_cast<unsigned long long>(full.checksum));
+  csv.flush();
+}
+
+// A sphere of 4 rings^2 triangles with the radius `radius`, centred on the origin.
+std::shared_ptr<TriangleMesh> sphere(int rings, float radius, const Vec3f& centre) {
+  auto m = std::make_shared<TriangleMesh>();
+  const int segments = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= segments; ++j) {
+      const double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
+      const Vec3f n = Vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)).cast<float>();
+      m->positions.push_back(centre + radius * n);
+      m->normals.push_back(n);
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
+      m->triangles.push_back({a, b, c});
+      m->triangles.push_back({b, d, c});
+    }
+  return m;
+}
+
+// CPU ms per sample of the full frame and of its rays in the bare loop.
+void perSample(const RenderScene& scene, int repeats, double* renderMs, double* bareMs) {
+  const Frame f = renderFrames(scene, {}, repeats);
+  const std::vector<LoggedRay> rays = logRays(scene, {});
+  const BareScenes bare(scene);
+  double bareS = 0;
+  for (LoggedRay::Type t : {LoggedRay::Type::Camera, LoggedRay::Type::Bounce, LoggedRay::Type::Shadow}) {
+    size_t n = 0;
+    bareS += bareSeconds(bare, rays, t, repeats, &n);
+  }
+  *renderMs = 1e3 * f.cpuSeconds;
+  *bareMs = 1e3 * bareS;
+}
+
+void triangles(const RenderScene& base, int repeats, std::ofstream& csv) {
+  const TriangleMesh& original = *base.objects.at(0).meshObject;
+  Vec3f lo = Vec3f::Constant(1e30f), hi = Vec3f::Constant(-1e30f);
+  for (const Vec3f& p : original.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (int rings : {50, 158, 500}) {  // 10k, 100k, 1M triangles
+    RenderScene scene = base;
+    scene.objects.resize(1);
+    scene.objects[0].meshObject = sphere(rings, 0.5f * (hi - lo).maxCoeff(), 0.5f * (lo + hi));
+    double ms = 0, bareMs = 0;
+    perSample(scene, repeats, &ms, &bareMs);
+    const size_t n = scene.objects[0].meshObject->triangles.size();
+    csv << n << ',' << ms << ',' << bareMs << '\n';
+    std::printf("%8zu triangles  %8.1f ms/spp  bare %7.1f ms/spp\n", n, ms, bareMs);
+    std::fflush(stdout);
+  }
+}
+
+// The first light cut into `n` strips along its first edge (the same light in total).
+std::vector<AreaLight> strips(const AreaLight& l, int n) {
+  std::vector<AreaLight> out;
+  const auto& c = l.cornersWorld;
+  for (int k = 0; k < n; ++k) {
+    const double a = double(k) / n, b = double(k + 1) / n;
+    AreaLight s = l;
+    s.cornersWorld = {c[0] + a * (c[1] - c[0]), c[0] + b * (c[1] - c[0]), c[3] + b * (c[2] - c[3]),
+                      c[3] + a * (c[2] - c[3])};
+    out.push_back(s);
+  }
+  return out;
+}
+
+void lights(const RenderScene& base, int repeats, std::ofstream& csv) {
+  for (int n : {1, 2, 4, 8, 16, 32, 64}) {
+    RenderScene scene = base;
+    scene.lights = strips(base.lights.at(0), n);
+    double ms = 0, bareMs = 0;
+    perSample(scene, repeats, &ms, &bareMs);
+    csv << n << ',' << ms << ',' << bareMs << '\n';
+    std::printf("%3d lights  %8.1f ms/spp  bare %7.1f ms/spp\n", n, ms, bareMs);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: bench_throughput SCENE.json OUT_DIR [--parts types,triangles,lights] [--repeats N]\n");
+    return 2;
+  }
+  const std::string out = argv[2];
+  std::string parts = "types,triangles,lights";
+  int repeats = 3;
+  for (int i = 3; i + 1 < argc; i += 2) {
+    if (std::string(argv[i]) == "--parts") parts = argv[i + 1];
+    else if (std::string(argv[i]) == "--repeats") repeats = std::max(1, std::atoi(argv[i + 1]));
+    else return std::fprintf(stderr, "bench_throughput: unknown option %s\n", argv[i]), 2;
+  }
+  auto loaded = loadSceneFile(argv[1]);
+  if (!loaded) return std::fprintf(stderr, "%s\n", loaded.error().message().c_str()), 2;
+  auto prepared = prepareScene(loaded->doc);
+  if (!prepared) return std::fprintf(stderr, "%s\n", prepared.error().message().c_str()), 2;
+  const RenderScene& scene = prepared->renderScene;
+  if (scene.objects.empty() || !scene.objects[0].meshObject || scene.lights.empty())
+    return std::fprintf(stderr, "%s: the scene needs an object and a light\n", argv[1]), 2;
+  std::printf("%s: %d x %d, %zu lights, %zu objects\n", argv[1], scene.camera.widthPx, scene.camera.heightPx,
+              scene.lights.size(), scene.objects.size());
+  auto open = [&](const char* name, const char* header) {
+    std::ofstream csv(out + "/" + name);
+    if (!csv) std::fprintf(stderr, "bench_throughput: %s/%s cannot be written\n", out.c_str(), name), std::exit(2);
+    csv << header << '\n';
+    return csv;
+  };
+  if (parts.find("types") != std::string::npos) {
+    auto csv = open("types.csv", "type,rays,renderer_per_s_per_thread,bare_per_s_per_thread,ratio");
+    types(scene, repeats, csv);
+  }
+  if (parts.find("triangles") != std::string::npos) {
+    auto csv = open("triangles.csv", "triangles,ms_per_spp,bare_ms_per_spp");
+    triangles(scene, repeats, csv);
+  }
+  if (parts.find("lights") != std::string::npos) {
+    auto csv = open("lights.csv", "lights,ms_per_spp,bare_ms_per_spp");
+    lights(scene, repeats, csv);
+  }
+  return 0;
+}
