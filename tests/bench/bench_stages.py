@@ -1,8 +1,8 @@
 """The preparation's stages on three dev rooms and a locked copy: each stage's seconds, or why the
 scene skipped it, and the time each skip saves.
 
-  /usr/bin/python3 tests/bench/bench_stages.py build/app/inlay-cli [--repeats 3] [--threads 2]
-      [--out DIR] [--update-doc docs/architecture.md]
+  INLAY_SHARED_DIR=../shared /usr/bin/python3 tests/bench/bench_stages.py build/app/inlay-cli
+      [--repeats 3] [--threads 2] [--out DIR] [--update-doc docs/architecture.md]
 
 Scenes (../shared/tools/harness.py, assisted):
   everything      d6_behind_table: an occluder, the table (a surface), a placed light refined
