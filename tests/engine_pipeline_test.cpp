@@ -312,8 +312,11 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   ASSERT_TRUE(unrefined.ok());
   EXPECT_TRUE(unrefined->refinement.history.empty());
   EXPECT_EQ(lightRefinementRuns(), refinements);  // skipped, and the stage says why
-  for (const StageRecord& s : unrefined->stages)
-    if (s.name == "refine") EXPECT_EQ(s.reason, "the lights are kept as estimated (initial lights asked for)");
+  for (const StageRecord& s : unrefined->stages) {
+    if (s.name == "refine") {
+      EXPECT_EQ(s.reason, "the lights are kept as estimated (initial lights asked for)");
+    }
+  }
   for (size_t j = 0; j < unrefined->initialLights.size(); ++j)
     EXPECT_EQ(unrefined->renderScene.lights[j].radiance, unrefined->initialLights[j].radiance);
 }
@@ -392,7 +395,9 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
     names.push_back(s.name);
     EXPECT_EQ(s.ran, s.reason.empty()) << s.name;
     EXPECT_TRUE(std::isfinite(s.seconds) && s.seconds >= 0) << s.name;
-    if (!s.ran) EXPECT_EQ(s.seconds, 0.0) << s.name;
+    if (!s.ran) {
+      EXPECT_EQ(s.seconds, 0.0) << s.name;
+    }
   }
   const std::vector<std::string> expected = {"photo", "response", "camera", "layout", "occluders", "surfaces",
                                              "room", "lights", "shafts", "lighting", "sun ratio", "refine",
