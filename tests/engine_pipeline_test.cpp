@@ -212,7 +212,7 @@ TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
   auto ps = prepareScene(exampleDoc());
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   bool refit = false;
-  for (const auto& [stage, seconds] : ps->stageSeconds) refit = refit || stage == "lighting refit";
+  for (const StageRecord& stage : ps->stages) refit = refit || (stage.name == "lighting refit" && stage.ran);
   EXPECT_EQ(decompositionRuns(), before + (refit ? 2 : 1));
   const uint64_t prepared = decompositionRuns();
   ASSERT_FALSE(ps->lighting.albedo.empty());
@@ -307,9 +307,16 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
 
   PrepareOptions initial;
   initial.refineLights = false;
+  const uint64_t refinements = lightRefinementRuns();
   auto unrefined = prepareScene(doc, initial);
   ASSERT_TRUE(unrefined.ok());
   EXPECT_TRUE(unrefined->refinement.history.empty());
+  EXPECT_EQ(lightRefinementRuns(), refinements);  // skipped, and the stage says why
+  for (const StageRecord& s : unrefined->stages) {
+    if (s.name == "refine") {
+      EXPECT_EQ(s.reason, "the lights are kept as estimated (initial lights asked for)");
+    }
+  }
   for (size_t j = 0; j < unrefined->initialLights.size(); ++j)
     EXPECT_EQ(unrefined->renderScene.lights[j].radiance, unrefined->initialLights[j].radiance);
 }
@@ -364,6 +371,77 @@ TEST(Engine, UserVanishingLinesFixTheirVanishingPoint) {
   auto bad = cameraAndLayoutOf(doc.camera, doc.layout, *photo, true);
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().key, "camera.vanishing_lines_px.z") << bad.error().message();
+}
+
+}  // namespace
+}  // namespace inlay
+
+namespace inlay {
+namespace {
+
+const StageRecord* stageNamed(const PreparedScene& ps, const std::string& name) {
+  for (const StageRecord& s : ps.stages)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+// Every stage of the preparation is on record, in order, with its seconds or the reason this
+// scene skipped it: the example marks no occluder, surface or shaft.
+TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
+  auto ps = preparedExample();
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  std::vector<std::string> names;
+  for (const StageRecord& s : ps->stages) {
+    names.push_back(s.name);
+    EXPECT_EQ(s.ran, s.reason.empty()) << s.name;
+    EXPECT_TRUE(std::isfinite(s.seconds) && s.seconds >= 0) << s.name;
+    if (!s.ran) {
+      EXPECT_EQ(s.seconds, 0.0) << s.name;
+    }
+  }
+  const std::vector<std::string> expected = {"photo", "response", "camera", "layout", "occluders", "surfaces",
+                                             "room", "lights", "shafts", "lighting", "sun ratio", "refine",
+                                             "lighting refit", "render scene", "objects", "grain"};
+  EXPECT_EQ(names, expected);
+  for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio"})
+    EXPECT_FALSE(stageNamed(*ps, skipped)->ran) << skipped;
+  for (const char* ran : {"photo", "camera", "lighting", "refine", "objects"}) EXPECT_TRUE(stageNamed(*ps, ran)->ran) << ran;
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "shafts")), "shafts: skipped, no sun marked");
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "occluders")), "occluders: skipped, none marked");
+  EXPECT_EQ(stageNamed(*ps, "camera")->detail, "the file's vanishing points and back wall");
+  const std::string refine = describeStage(*stageNamed(*ps, "refine"));
+  EXPECT_EQ(refine.rfind("refine: ", 0), 0u) << refine;
+  EXPECT_NE(refine.find(" s (2 of 2 lights refined"), std::string::npos) << refine;
+  for (const Surface& s : ps->geometry.surfaces) EXPECT_NE(s.kind, SurfaceKind::OccluderCard);
+  EXPECT_TRUE(ps->lighting.suns.empty());
+}
+
+// A scene with no occluder, no sun, no object and every light locked does less: the refinement
+// and the lighting refit are skipped, and neither runs (the process-wide counters of the
+// refinement and the decomposition say so); the lights are the estimate's.
+TEST(Engine, ASceneWithEveryLightLockedSkipsTheRefinementAndItsRefit) {
+  SceneDoc doc = exampleDoc();
+  for (LightKeys& l : doc.lights) l.lock = true;
+  doc.objects.clear();
+  const uint64_t refinements = lightRefinementRuns(), decompositions = decompositionRuns();
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  EXPECT_EQ(lightRefinementRuns(), refinements);
+  EXPECT_EQ(decompositionRuns(), decompositions + 1);
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "refine")), "refine: skipped, every light locked");
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "lighting refit")), "lighting refit: skipped, the lights were not refined");
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "objects")), "objects: skipped, none inserted");
+  EXPECT_TRUE(ps->refinement.history.empty());
+  EXPECT_TRUE(ps->renderScene.objects.empty());
+  ASSERT_EQ(ps->renderScene.lights.size(), ps->initialLights.size());
+  for (size_t j = 0; j < ps->initialLights.size(); ++j) {
+    EXPECT_EQ(ps->renderScene.lights[j].radiance, ps->initialLights[j].radiance);
+    EXPECT_EQ(ps->renderScene.lights[j].cornersWorld, ps->initialLights[j].cornersWorld);
+  }
+  // The unlocked example did refine (the same counter moves for it).
+  const auto example = preparedExample();
+  ASSERT_TRUE(example.ok());
+  EXPECT_TRUE(stageNamed(*example, "refine")->ran);
 }
 
 }  // namespace

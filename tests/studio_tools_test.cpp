@@ -3,12 +3,14 @@
 // while the marks are being re-prepared, and zoom and pan keeping the image under the cursor.
 #include "docks.h"
 #include "document.h"
+#include "log_dock.h"
 #include "main_window.h"
 #include "render_controller.h"
 #include "viewport.h"
 
 #include "inlay/engine/pipeline.h"
 
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QStandardPaths>
@@ -59,6 +61,7 @@ class StudioToolsTest : public QObject {
   void zoomAndPanKeepTheImageUnderTheCursor();
   void exportShownLayer();
   void exportSceneAsGltf();
+  void logListsEachPreparationsStages();
 
  private:
   std::unique_ptr<MainWindow> window_;
@@ -281,6 +284,36 @@ void StudioToolsTest::exportSceneAsGltf() {
           int(doc_->prepared()->renderScene.objects.size()));
   // A folder that does not exist: refused with a message, nothing written.
   QVERIFY(!window_->exportSceneGltf(dir.filePath(QStringLiteral("no/such/room.gltf"))));
+}
+
+// The Log dock: after each preparation, every stage with its seconds or why the scene skipped it
+// (the lines of inlay-cli --verbose), and why a preparation failed.
+void StudioToolsTest::logListsEachPreparationsStages() {
+  LogDock* log = window_->logDock();
+  QVERIFY(log);
+  const QString first = log->text();
+  QVERIFY2(first.contains(QStringLiteral("Prepared the scene in")), qPrintable(first));
+  for (const char* line : {"  photo: ", "  refine: ", "  shafts: skipped, no sun marked",
+                           "  occluders: skipped, none marked", "  surfaces: skipped, none marked"})
+    QVERIFY2(first.contains(QString::fromLatin1(line)), line);
+  // An occluder: the next preparation's block runs its stage (or says why it failed).
+  window_->toolAction(int(Viewport::Tool::Occluder))->trigger();
+  dragImage(view_, Qt::LeftButton, Vec2(180, 320), Vec2(230, 330));
+  dragImage(view_, Qt::RightButton, Vec2(300, 200), Vec2(360, 210));
+  QCOMPARE(int(doc_->scene().occluders.size()), 1);
+  waitPrepared(doc_);
+  const QString added = log->text().mid(first.size());
+  if (doc_->state() == Document::State::Failed)
+    QVERIFY2(added.contains(QStringLiteral("could not be prepared")), qPrintable(added));
+  else
+    QVERIFY2(added.contains(QStringLiteral("  occluders: ")) && added.contains(QStringLiteral(" s (1 matte)")),
+             qPrintable(added));
+  // A picture of it for the docs (beside the test binary).
+  log->raise();
+  QTest::qWait(50);
+  QDir dir(QCoreApplication::applicationDirPath());
+  dir.mkpath(QStringLiteral("studio_tools_artifacts"));
+  QVERIFY(window_->grab().save(dir.filePath(QStringLiteral("studio_tools_artifacts/log_dock.png"))));
 }
 
 QTEST_MAIN(StudioToolsTest)

@@ -42,6 +42,7 @@ struct BatchArgs {
   std::optional<int> spp, seed, threads;
   std::optional<double> seconds, noise;
   bool quiet = false;
+  bool verbose = false;  // each scene's preparation stages on stderr
 };
 
 // One manifest line, parsed.
@@ -84,6 +85,10 @@ std::string parseBatchArgs(int argc, char** argv, BatchArgs& a) {
     const std::string s = argv[i];
     if (s == "--quiet" || s == "-q") {
       a.quiet = true;
+      continue;
+    }
+    if (s == "--verbose" || s == "-v") {
+      a.verbose = true;
       continue;
     }
     if (s.size() > 1 && s[0] == '-') {
@@ -386,6 +391,11 @@ void BatchRunner::runGroup(const std::vector<BatchLine>& lines, const SceneGroup
   char msg[64];
   std::snprintf(msg, sizeof msg, " (%.1f s, %zu lines to render)", secondsSince(start), todo.size());
   note("prepared " + group.scene + msg);
+  if (args_.verbose) {
+    std::lock_guard<std::mutex> lock(m_);
+    for (const StageRecord& s : prepared->stages)
+      std::fprintf(stderr, "inlay-cli: batch: stage %s\n", describeStage(s).c_str());
+  }
 
   // --jobs N lines at a time, each on its share of the cores; the outputs do not depend on it.
   std::atomic<size_t> next{0};

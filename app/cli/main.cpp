@@ -52,7 +52,7 @@ constexpr const char* kUsage = R"(Usage:
                                                      the reconstructed scene as glTF 2.0 (room
                                                      with albedo textures, lights as emissive
                                                      geometry, camera, objects and materials)
-  inlay-cli batch MANIFEST.jsonl [--jobs N] [--shard K/N] [render options]
+  inlay-cli batch MANIFEST.jsonl [--jobs N] [--shard K/N] [--verbose] [render options]
                                                      one render per manifest line (a scene, its
                                                      object overrides, an output); each scene
                                                      prepared once; existing outputs skipped
@@ -85,6 +85,10 @@ Render options:
                           or "lights"; the format --lights-json writes) instead of the estimate's
   --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
                           photo's size) instead of the estimate's
+  --report FILE           the preparation's report as JSON: every stage with its seconds or why
+                          this scene skipped it, and the warnings (also with decompose, export)
+  --verbose               list every stage of the preparation on stderr: its seconds, or why it
+                          was skipped ("shafts: skipped, no sun marked")
   --quiet                 no progress on stderr
 
 The scene file format is described in docs/scene-file.md (installed: PREFIX/share/doc/inlay;
@@ -120,13 +124,14 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour";
+  std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour", report;
   std::optional<double> prior, minImprovement;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
   bool quiet = false;
+  bool verbose = false;
   bool noFocus = false;
   bool noGrain = false;
 };
@@ -162,7 +167,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
         s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
         s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement") {
+        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
+        s == "--report") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -174,6 +180,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--method") a.method = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
       else if (s == "--lights-json") a.lightsJson = *v;
+      else if (s == "--report") a.report = *v;
       else if (s == "--replace-lights") a.replaceLights = *v;
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
@@ -206,6 +213,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       }
     } else if (s == "--quiet" || s == "-q") {
       a.quiet = true;
+    } else if (s == "--verbose" || s == "-v") {
+      a.verbose = true;
     } else if (s == "--no-focus") {
       a.noFocus = true;
     } else if (s == "--no-grain") {
@@ -287,7 +296,42 @@ class CollectingSink : public FrameSink {
   double seconds_;
 };
 
+// The preparation's stages: each with its seconds, or the reason this scene skipped it.
+nlohmann::json stagesJson(const std::vector<StageRecord>& stages) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StageRecord& s : stages) {
+    nlohmann::json j = {{"name", s.name}, {"ran", s.ran}};
+    if (s.ran) j["seconds"] = s.seconds;
+    else j["skipped"] = s.reason;
+    if (!s.detail.empty()) j["detail"] = s.detail;
+    out.push_back(std::move(j));
+  }
+  return out;
+}
+
+// The [name, seconds] pairs of the stages that ran (--lights-json's "stage_seconds").
+nlohmann::json stageSecondsJson(const std::vector<StageRecord>& stages) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StageRecord& s : stages)
+    if (s.ran) out.push_back({s.name, s.seconds});
+  return out;
+}
+
+// --report: what the preparation did, stage by stage, and its warnings.
+nlohmann::json prepareReport(const PreparedScene& ps) {
+  double total = 0;
+  for (const StageRecord& s : ps.stages) total += s.seconds;
+  return {{"stages", stagesJson(ps.stages)}, {"seconds", total}, {"warnings", ps.warnings}};
+}
+
 Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args& a, Progress& progress) {
+  // Before the long preparation: a report that cannot be written is known now.
+  if (!a.report.empty()) {
+    const std::filesystem::path folder = std::filesystem::absolute(a.report).parent_path();
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec))
+      return Error{a.report, "--report", "its folder does not exist"};
+  }
   auto loaded = loadSceneFile(scenePath);
   if (!loaded) return loaded.error();
   for (const auto& w : loaded->warnings)
@@ -305,6 +349,11 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   }
   for (const auto& w : prepared->warnings)
     if (!progress.quiet()) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
+  // --verbose: the stages even with --quiet (it was asked for).
+  if (a.verbose)
+    for (const StageRecord& s : prepared->stages) std::fprintf(stderr, "inlay-cli: stage %s\n", describeStage(s).c_str());
+  if (!a.report.empty())
+    if (auto st = writeFileAtomically(a.report, prepareReport(*prepared).dump(1) + "\n"); !st) return st.error();
   if (!progress.quiet()) {
     const auto& e = prepared->responseEstimate;
     std::fprintf(stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
@@ -339,10 +388,8 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
     for (const auto& s : suns) a.push_back({{"rgb", {s.irradianceOverPi.x(), s.irradianceOverPi.y(), s.irradianceOverPi.z()}}});
     return a;
   };
-  json stages = json::array();
-  for (const auto& [stage, seconds] : ps.stageSeconds) stages.push_back({stage, seconds});
   return {{"initial", lightsJsonOf(ps.initialLights)}, {"refined", lightsJsonOf(ps.lighting.lights)},
-          {"stage_seconds", stages},
+          {"stage_seconds", stageSecondsJson(ps.stages)}, {"stages", stagesJson(ps.stages)},
           {"suns_initial", sunsJson(ps.initialSuns)}, {"suns_refined", sunsJson(ps.lighting.suns)},
           {"refinement", {{"ran", !r.history.empty()}, {"seconds", r.seconds}, {"pixels", r.pixels},
                           {"evaluations", r.evaluations}, {"initial_objective", r.initialObjective},

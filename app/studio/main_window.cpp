@@ -3,6 +3,7 @@
 #include "autosave.h"
 #include "docks.h"
 #include "library_dock.h"
+#include "log_dock.h"
 #include "response_dock.h"
 #include "i18n.h"
 #include "document.h"
@@ -109,6 +110,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   addDockWidget(Qt::RightDockWidgetArea, new LibraryDock(this));  // the bundled model library
   responseDock_ = new ResponseDock(document_, this);
   addDockWidget(Qt::RightDockWidgetArea, responseDock_);
+  logDock_ = new LogDock(document_, this);
+  tabifyDockWidget(responseDock_, logDock_);
+  responseDock_->raise();
   autosaver_ = new Autosaver(document_, this);
 
   sppLabel_ = new QLabel(this);
@@ -344,6 +348,7 @@ void MainWindow::createMenus() {
   view->addAction(propertiesDock_->toggleViewAction());
   view->addAction(layersDock_->toggleViewAction());
   view->addAction(responseDock_->toggleViewAction());
+  view->addAction(logDock_->toggleViewAction());
   view->addSeparator();
   languageMenu_ = view->addMenu(QString());
   QMenu* language = languageMenu_;

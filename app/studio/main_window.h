@@ -27,6 +27,7 @@ namespace inlay::studio {
 class Autosaver;
 class Document;
 class LayersDock;
+class LogDock;
 class PropertiesDock;
 class ResponseDock;
 class RenderController;
@@ -47,6 +48,7 @@ class MainWindow : public QMainWindow {
   SceneTreeDock* sceneDock() const { return sceneDock_; }
   PropertiesDock* propertiesDock() const { return propertiesDock_; }
   LayersDock* layersDock() const { return layersDock_; }
+  LogDock* logDock() const { return logDock_; }
   Autosaver* autosaver() const { return autosaver_; }
   QMenu* fileMenu() const { return fileMenu_; }
   QMenu* toolsMenu() const { return toolsMenu_; }
@@ -153,6 +155,7 @@ class MainWindow : public QMainWindow {
   PropertiesDock* propertiesDock_;
   LayersDock* layersDock_;
   ResponseDock* responseDock_ = nullptr;
+  LogDock* logDock_ = nullptr;  // each preparation's stages and warnings
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -430,16 +431,23 @@ void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double mar
   }
 }
 
-}  // namespace
 
-Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeometry& geometry,
-                                         const ImageF& albedo, const ImageF& direct,
-                                         const std::vector<uint8_t>& usable,
-                                         const std::vector<AreaLight>& lightsIn,
-                                         const std::vector<LightRefineSpec>& specsIn,
-                                         const std::vector<SunLight>& suns,
-                                         const LightRefineOptions& opt) {
-  const auto t0 = Clock::now();
+// The room box the lights stay in; light positions are normalised to it.
+struct RoomFrame {
+  Vec3 lo, hi, size;
+};
+
+Expected<RoomFrame> roomFrameOf(const SceneGeometry& geometry) {
+  const RoomBox& b = geometry.box;
+  const Vec3 lo(b.xLeftM, 0.0, b.zBackM), hi(b.xRightM, b.ceilingM, b.zRearM);
+  if (!((hi - lo).minCoeff() > 1e-3) || !lo.allFinite() || !hi.allFinite())
+    return Error{"", "room", "the room box has no volume"};
+  return RoomFrame{lo, hi, hi - lo};
+}
+
+// What refineLights needs of its images, options and suns before it starts; the error names it.
+Status checkRefineInput(const ImageF& albedo, const ImageF& direct, const std::vector<uint8_t>& usable,
+                        const std::vector<SunLight>& suns, const LightRefineOptions& opt) {
   const int W = direct.width, H = direct.height;
   if (direct.empty() || direct.channels < 3) return Error{"", "direct", "the direct-light image is empty"};
   if (albedo.width != W || albedo.height != H || albedo.channels < 3)
@@ -458,18 +466,16 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
         (opt.sunBounce[k].width != W || opt.sunBounce[k].height != H || opt.sunBounce[k].channels < 3))
       return Error{"", "suns[" + std::to_string(k) + "]", "the sun's bounce image does not match the direct-light image"};
   }
-  std::vector<LightRefineSpec> specs = specsIn;
-  specs.resize(lightsIn.size());
-  LightRefineResult out;
-  out.suns = suns;
-  std::vector<AreaLight> lights = lightsIn;
-  const RoomBox& b = geometry.box;
-  const Vec3 lo(b.xLeftM, 0.0, b.zBackM), hi(b.xRightM, b.ceilingM, b.zRearM);
-  if (!((hi - lo).minCoeff() > 1e-3) || !lo.allFinite() || !hi.allFinite())
-    return Error{"", "room", "the room box has no volume"};
-  const Vec3 boxSize = hi - lo;
+  return {};
+}
 
-  // Check the lights; move each into the room (bounds hold from the start).
+// Checks each light (finite, with an area, sane weights), clamps its intensity at zero and moves
+// each unlocked one into the room, so that its bounds hold from the start (a note says so). The
+// lights free to move, with their bounds in the room's normalised frame.
+Expected<std::vector<FreeLight>> freeLightsInRoom(std::vector<AreaLight>& lights,
+                                                  const std::vector<LightRefineSpec>& specs,
+                                                  const RoomFrame& room, const LightRefineOptions& opt,
+                                                  std::vector<std::string>& notes) {
   std::vector<FreeLight> free;
   for (size_t j = 0; j < lights.size(); ++j) {
     const std::string key = "lights[" + std::to_string(j) + "]";
@@ -487,27 +493,32 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
     FreeLight f;
     f.index = int(j);
     Vec3 cLo, cHi;
-    boundsInRoom(L, lo, hi, opt.marginM, &cLo, &cHi, &f.fixedAxes);
+    boundsInRoom(L, room.lo, room.hi, opt.marginM, &cLo, &cHi, &f.fixedAxes);
     const Vec3 c = L.centre(), moved = c.cwiseMax(cLo).cwiseMin(cHi);
     if ((moved - c).norm() > 5e-3)  // millimetres of round-off are not news
-      out.notes.push_back(key + ": outside the room; moved " + std::to_string((moved - c).norm()) +
-                          " m to fit inside it");
+      notes.push_back(key + ": outside the room; moved " + std::to_string((moved - c).norm()) +
+                      " m to fit inside it");
     if (f.fixedAxes.size() == 3)
-      out.notes.push_back(key + ": larger than the room in every direction; its position is kept");
+      notes.push_back(key + ": larger than the room in every direction; its position is kept");
     for (auto& p : L.cornersWorld) p += moved - c;
-    f.lo = (cLo - lo).cwiseQuotient(boxSize);
-    f.hi = (cHi - lo).cwiseQuotient(boxSize);
-    f.start = (moved - lo).cwiseQuotient(boxSize);
+    f.lo = (cLo - room.lo).cwiseQuotient(room.size);
+    f.hi = (cHi - room.lo).cwiseQuotient(room.size);
+    f.start = (moved - room.lo).cwiseQuotient(room.size);
     f.size = s.refineSize;
     f.logScaleBound = std::log(opt.sizeRange);
     if (f.fixedAxes.size() < 3) free.push_back(f);
   }
+  return free;
+}
 
-  // The reduced grid: pixel centres every `stride` pixels that show the room and carry data.
-  const RoomTracer tracer(geometry);
+// The reduced grid: pixel centres every `stride` pixels (about opt.gridPixels in all) that show
+// a matte room surface and carry data, with the room point each shows.
+std::vector<GridPixel> reducedGrid(const Camera& camera, const RoomTracer& tracer, const ImageF& albedo,
+                                   const ImageF& direct, const std::vector<uint8_t>& usable,
+                                   const LightRefineOptions& opt) {
+  const int W = direct.width, H = direct.height;
   const int stride = std::max(1, int(std::lround(std::sqrt(double(W) * H / opt.gridPixels))));
   std::vector<GridPixel> px;
-  double Z = 0;
   for (int y = stride / 2; y < H; y += stride)
     for (int x = stride / 2; x < W; x += stride) {
       const size_t idx = size_t(y) * W + x;
@@ -526,13 +537,17 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
       g.target = d.cwiseMax(0.0);
       g.weight = alpha;
       g.seed = uint32_t(idx);
-      Z += alpha * g.target.squaredNorm();
       px.push_back(g);
     }
-  if (px.empty()) return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
-  out.pixels = int(px.size());
-  // Per sun: its unit direct light and (when given) its sunlit patch's unit bounce, which the
-  // direct component D left out (it was in the gathered light at the estimate's strength).
+  return px;
+}
+
+// Per sun and grid pixel: its unit direct light and (when given) its sunlit patch's unit bounce.
+// The direct component D left that bounce out (it was in the gathered light at the estimate's
+// strength), so it goes back into each pixel's target at that strength.
+std::vector<std::vector<Vec3>> sunShadingOnGrid(const RoomTracer& tracer, const SceneGeometry& geometry,
+                                                const std::vector<SunLight>& suns,
+                                                const LightRefineOptions& opt, std::vector<GridPixel>& px) {
   std::vector<std::vector<Vec3>> sunE(suns.size(), std::vector<Vec3>(px.size(), Vec3::Zero()));
   for (size_t k = 0; k < suns.size(); ++k)
     parallelFor(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -547,128 +562,213 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
         px[i].target += px[i].rho.cwiseProduct(g).cwiseProduct(suns[k].irradianceOverPi.cwiseMax(0.0));
       }
     });
-  // Z counts the targets with the bounce put back.
-  Z = 0;
-  for (const GridPixel& g : px) Z += g.weight * g.target.squaredNorm();
+  return sunE;
+}
 
-  Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, lo, boxSize);
-  problem.free_ = free;
+// sum_i alpha_i |target_i|^2, the data term's scale.
+double targetEnergy(const std::vector<GridPixel>& px) {
+  double Z = 0;
+  for (const GridPixel& g : px) Z += g.weight * g.target.squaredNorm();
+  return Z;
+}
+
+// The data weights become alpha_i / Z, Z the targets' energy; for a black photo the start's
+// render instead (a note says so).
+void normaliseData(Refinement& problem, double Z, std::vector<std::string>& notes) {
   if (!(Z > 1e-20)) {
-    // A black photo: the data term is relative to the start's render instead.
-    out.notes.push_back("the photo's direct light is black: the lights are fitted to darkness");
+    notes.push_back("the photo's direct light is black: the lights are fitted to darkness");
     Z = problem.startRenderEnergy();
   }
   problem.normaliseData(Z > 1e-30 ? Z : 1.0);
+}
+
+// An unlocked light that lights no grid pixel keeps its start intensity (its prior): a note.
+void noteLightsThatLightNothing(Refinement& problem, const std::vector<AreaLight>& lights,
+                                const std::vector<LightRefineSpec>& specs, std::vector<std::string>& notes) {
   for (size_t j = 0; j < lights.size(); ++j) {
     if (specs[j].lock) continue;
     const auto& e = problem.irradiance(int(j), lights[j].centre());
     if (std::all_of(e.begin(), e.end(), [](double v) { return v <= 0; }))
-      out.notes.push_back("lights[" + std::to_string(j) +
-                          "] lights none of the room the photo shows: its intensity stays at its start");
+      notes.push_back("lights[" + std::to_string(j) +
+                      "] lights none of the room the photo shows: its intensity stays at its start");
   }
-  RefineCost* cost = new RefineCost(problem, opt.stepNormalised);
-  std::vector<std::vector<double>> params(free.size());
-  auto startParams = [&] {
-    for (size_t m = 0; m < free.size(); ++m) {
-      params[m].resize(size_t(free[m].dims()));
-      for (int a = 0; a < free[m].dims(); ++a) params[m][size_t(a)] = free[m].startOf(a);
+}
+
+// Ceres' parameter blocks: per free light its pose (normalised centre; log edge scales when its
+// size is refined).
+class PoseBlocks {
+ public:
+  explicit PoseBlocks(const std::vector<FreeLight>& free) : free_(free), blocks_(free.size()) { reset(); }
+  // Back to the start.
+  void reset() {
+    for (size_t m = 0; m < free_.size(); ++m) {
+      blocks_[m].resize(size_t(free_[m].dims()));
+      for (int a = 0; a < free_[m].dims(); ++a) blocks_[m][size_t(a)] = free_[m].startOf(a);
     }
-  };
-  startParams();
-  auto poseOf = [&](size_t m) {
+  }
+  Pose pose(size_t m) const {
     Pose pose;
-    for (int a = 0; a < free[m].dims(); ++a) pose[a] = params[m][size_t(a)];
+    for (int a = 0; a < free_[m].dims(); ++a) pose[a] = blocks_[m][size_t(a)];
     return pose;
-  };
-  // The objective and intensities at given parameters.
-  const size_t R = size_t(cost->num_residuals()), dataEnd = 3 * size_t(out.pixels);
-  std::vector<double> r(R);
-  auto evaluate = [&](std::vector<Vec3>* radiance) {
-    std::vector<const std::vector<double>*> E(lights.size(), nullptr);
-    std::vector<Pose> poses(free.size());
-    for (size_t m = 0; m < free.size(); ++m) {
-      poses[m] = poseOf(m);
-      E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(poses[m].centre), poses[m].logScale);
-    }
-    for (size_t j = 0; j < E.size(); ++j)
-      if (!E[j]) E[j] = &problem.irradiance(int(j), lights[j].centre());
-    problem.residuals(E, poses, r.data(), radiance);
-  };
-  evaluate(nullptr);
-  out.initialObjective = sumSquares(r, 0, R);
-  out.initialDataTerm = sumSquares(r, 0, dataEnd);
-  out.history.push_back({std::chrono::duration<double>(Clock::now() - t0).count(), out.initialObjective});
-
-  if (!free.empty()) {
-    ceres::Problem cp;
-    std::vector<double*> blocks;
-    for (auto& p : params) blocks.push_back(p.data());
-    cp.AddResidualBlock(cost, nullptr, blocks);
-    for (size_t m = 0; m < free.size(); ++m) {
-      if (!free[m].fixedAxes.empty())
-        cp.SetManifold(params[m].data(), new ceres::SubsetManifold(free[m].dims(), free[m].fixedAxes));
-      for (int a = 0; a < free[m].dims(); ++a) {
-        if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end()) continue;
-        cp.SetParameterLowerBound(params[m].data(), a, free[m].lower(a));
-        cp.SetParameterUpperBound(params[m].data(), a, free[m].upper(a));
-      }
-    }
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = opt.maxIterations;
-    so.max_solver_time_in_seconds = opt.maxSeconds;
-    so.num_threads = 1;
-    so.logging_type = ceres::SILENT;
-    so.function_tolerance = 1e-4;
-    so.parameter_tolerance = 1e-4;  // of the normalised position: about half a millimetre
-    RefineCallback callback(t0, opt.cancel, &out.history);
-    so.callbacks.push_back(&callback);
-    // No projected line search at the bounds: each of its steps costs a full Jacobian.
-    so.max_num_line_search_step_size_iterations = 0;
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &cp, &summary);
-    out.report = summary.message + " (" + std::to_string(summary.iterations.size()) + " iterations)";
-    if (!summary.IsSolutionUsable()) {
-      out.notes.push_back("light refinement failed (" + summary.message + "): the start is kept");
-      startParams();
-    }
-    // Bounds hold even if the solver stepped on them with round-off.
-    for (size_t m = 0; m < free.size(); ++m)
-      for (int a = 0; a < free[m].dims(); ++a) {
-        double& v = params[m][size_t(a)];
-        v = std::isfinite(v) ? std::clamp(v, free[m].lower(a), free[m].upper(a)) : free[m].startOf(a);
-      }
-  } else {
-    delete cost;
-    cost = nullptr;
-    out.report = "no light free to move: intensities solved in closed form";
   }
-  if (opt.cancel && opt.cancel->shouldStop()) return Error{"", "", "cancelled"};
+  double* block(size_t m) { return blocks_[m].data(); }
+  // Bounds hold even if the solver stepped on them with round-off; a non-finite value goes back
+  // to its start.
+  void clampToBounds() {
+    for (size_t m = 0; m < free_.size(); ++m)
+      for (int a = 0; a < free_[m].dims(); ++a) {
+        double& v = blocks_[m][size_t(a)];
+        v = std::isfinite(v) ? std::clamp(v, free_[m].lower(a), free_[m].upper(a)) : free_[m].startOf(a);
+      }
+  }
 
-  std::vector<Vec3> radiance;
-  evaluate(&radiance);
-  out.finalObjective = sumSquares(r, 0, R);
-  out.finalDataTerm = sumSquares(r, 0, dataEnd);
-  out.history.push_back({std::chrono::duration<double>(Clock::now() - t0).count(), out.finalObjective});
-  out.lights = lights;
+ private:
+  const std::vector<FreeLight>& free_;
+  std::vector<std::vector<double>> blocks_;
+};
+
+// The residuals `r` at the poses (the intensities solved inside); `radiance` (may be null)
+// receives the intensities of the unknowns.
+void evaluateAt(Refinement& problem, const std::vector<AreaLight>& lights, const PoseBlocks& params,
+                std::vector<double>& r, std::vector<Vec3>* radiance) {
+  const std::vector<FreeLight>& free = problem.free_;
+  std::vector<const std::vector<double>*> E(lights.size(), nullptr);
+  std::vector<Pose> poses(free.size());
   for (size_t m = 0; m < free.size(); ++m) {
-    AreaLight& L = out.lights[size_t(free[m].index)];
-    const Pose pose = poseOf(m);
+    poses[m] = params.pose(m);
+    E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(poses[m].centre), poses[m].logScale);
+  }
+  for (size_t j = 0; j < E.size(); ++j)
+    if (!E[j]) E[j] = &problem.irradiance(int(j), lights[j].centre());
+  problem.residuals(E, poses, r.data(), radiance);
+}
+
+// Ceres over the free lights' poses within their bounds; the objective after each accepted step
+// goes to out.history. An unusable solution leaves the start (a note says so). Returns why the
+// solver stopped.
+std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefineOptions& opt,
+                       Clock::time_point t0, LightRefineResult& out) {
+  const std::vector<FreeLight>& free = problem.free_;
+  ceres::Problem cp;
+  std::vector<double*> blocks;
+  for (size_t m = 0; m < free.size(); ++m) blocks.push_back(params.block(m));
+  cp.AddResidualBlock(new RefineCost(problem, opt.stepNormalised), nullptr, blocks);
+  for (size_t m = 0; m < free.size(); ++m) {
+    if (!free[m].fixedAxes.empty())
+      cp.SetManifold(params.block(m), new ceres::SubsetManifold(free[m].dims(), free[m].fixedAxes));
+    for (int a = 0; a < free[m].dims(); ++a) {
+      if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end()) continue;
+      cp.SetParameterLowerBound(params.block(m), a, free[m].lower(a));
+      cp.SetParameterUpperBound(params.block(m), a, free[m].upper(a));
+    }
+  }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = opt.maxIterations;
+  so.max_solver_time_in_seconds = opt.maxSeconds;
+  so.num_threads = 1;
+  so.logging_type = ceres::SILENT;
+  so.function_tolerance = 1e-4;
+  so.parameter_tolerance = 1e-4;  // of the normalised position: about half a millimetre
+  RefineCallback callback(t0, opt.cancel, &out.history);
+  so.callbacks.push_back(&callback);
+  // No projected line search at the bounds: each of its steps costs a full Jacobian.
+  so.max_num_line_search_step_size_iterations = 0;
+  ceres::Solver::Summary summary;
+  ceres::Solve(so, &cp, &summary);
+  if (!summary.IsSolutionUsable()) {
+    out.notes.push_back("light refinement failed (" + summary.message + "): the start is kept");
+    params.reset();
+  }
+  params.clampToBounds();
+  return summary.message + " (" + std::to_string(summary.iterations.size()) + " iterations)";
+}
+
+// The refined lights into `out`: the free ones at their solved poses (a grown one kept inside
+// the room: the position bounds hold for its start size), each unknown's fitted intensity (area
+// lights, and the suns with refineSuns).
+void storeRefinedLights(const Refinement& problem, const PoseBlocks& params, const std::vector<Vec3>& radiance,
+                        const RoomFrame& room, const LightRefineOptions& opt, std::vector<AreaLight> lights,
+                        LightRefineResult& out) {
+  const size_t areaLights = lights.size();
+  out.lights = std::move(lights);
+  for (size_t m = 0; m < problem.free_.size(); ++m) {
+    AreaLight& L = out.lights[size_t(problem.free_[m].index)];
+    const Pose pose = params.pose(m);
     L = posedLight(L, problem.centreOf(pose.centre), pose.logScale);
-    // A grown light keeps inside the room (the position bounds hold for its start size).
-    if (free[m].size)
-      for (auto& p : L.cornersWorld) p = p.cwiseMax(lo + Vec3::Constant(opt.marginM)).cwiseMin(hi - Vec3::Constant(opt.marginM));
+    if (problem.free_[m].size)
+      for (auto& p : L.cornersWorld)
+        p = p.cwiseMax(room.lo + Vec3::Constant(opt.marginM)).cwiseMin(room.hi - Vec3::Constant(opt.marginM));
   }
   for (size_t u = 0; u < radiance.size(); ++u) {
     const size_t t = problem.unknownTarget(u);
     const Vec3 v = radiance[u].allFinite() ? radiance[u] : Vec3::Zero();
     if (problem.unknownIsSun(u))
-      out.suns[t - lights.size()].irradianceOverPi = v;
+      out.suns[t - areaLights].irradianceOverPi = v;
     else
       out.lights[t].radiance = v;
   }
+}
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::atomic<uint64_t> gRefinementRuns{0};
+
+}  // namespace
+
+uint64_t lightRefinementRuns() { return gRefinementRuns.load(); }
+
+Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeometry& geometry,
+                                         const ImageF& albedo, const ImageF& direct,
+                                         const std::vector<uint8_t>& usable,
+                                         const std::vector<AreaLight>& lightsIn,
+                                         const std::vector<LightRefineSpec>& specsIn,
+                                         const std::vector<SunLight>& suns,
+                                         const LightRefineOptions& opt) {
+  const auto t0 = Clock::now();
+  gRefinementRuns.fetch_add(1);
+  if (Status st = checkRefineInput(albedo, direct, usable, suns, opt); !st) return st.error();
+  std::vector<LightRefineSpec> specs = specsIn;
+  specs.resize(lightsIn.size());
+  LightRefineResult out;
+  out.suns = suns;
+  const auto room = roomFrameOf(geometry);
+  if (!room) return room.error();
+  std::vector<AreaLight> lights = lightsIn;  // each free one moved into the room
+  auto free = freeLightsInRoom(lights, specs, *room, opt, out.notes);
+  if (!free) return free.error();
+
+  // The problem on the reduced grid: the photo's direct light there, the suns' share of it.
+  const RoomTracer tracer(geometry);
+  std::vector<GridPixel> px = reducedGrid(camera, tracer, albedo, direct, usable, opt);
+  if (px.empty()) return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
+  out.pixels = int(px.size());
+  std::vector<std::vector<Vec3>> sunE = sunShadingOnGrid(tracer, geometry, suns, opt, px);
+  const double Z = targetEnergy(px);  // with the suns' bounce put back
+  Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, room->lo, room->size);
+  problem.free_ = std::move(*free);
+  normaliseData(problem, Z, out.notes);
+  noteLightsThatLightNothing(problem, lights, specs, out.notes);
+
+  // The objective at the start, the solve, the objective and intensities at its end.
+  PoseBlocks params(problem.free_);
+  const size_t R = problem.residualCount(), dataEnd = 3 * size_t(out.pixels);
+  std::vector<double> r(R);
+  evaluateAt(problem, lights, params, r, nullptr);
+  out.initialObjective = sumSquares(r, 0, R);
+  out.initialDataTerm = sumSquares(r, 0, dataEnd);
+  out.history.push_back({secondsSince(t0), out.initialObjective});
+  out.report = problem.free_.empty() ? "no light free to move: intensities solved in closed form"
+                                     : solvePoses(problem, params, opt, t0, out);
+  if (opt.cancel && opt.cancel->shouldStop()) return Error{"", "", "cancelled"};
+  std::vector<Vec3> radiance;
+  evaluateAt(problem, lights, params, r, &radiance);
+  out.finalObjective = sumSquares(r, 0, R);
+  out.finalDataTerm = sumSquares(r, 0, dataEnd);
+  out.history.push_back({secondsSince(t0), out.finalObjective});
+  storeRefinedLights(problem, params, radiance, *room, opt, std::move(lights), out);
   out.evaluations = problem.evaluations();
-  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  out.seconds = secondsSince(t0);
   return out;
 }
 

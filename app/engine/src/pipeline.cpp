@@ -429,211 +429,314 @@ RenderScene shownRenderScene(const PreparedScene& scene) {
   return shown;
 }
 
-Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+std::string describeStage(const StageRecord& stage) {
+  if (!stage.ran) return stage.name + ": skipped, " + stage.reason;
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.3f s", stage.seconds);
+  return stage.name + ": " + seconds + (stage.detail.empty() ? "" : " (" + stage.detail + ")");
+}
+
+namespace {
+
+// What the stages of prepareScene() hand on to each other besides the PreparedScene they fill.
+struct Preparation {
+  Preparation(const SceneDoc& d, const PrepareOptions& o) : doc(d), opt(o) { ps.doc = d; }
+  const SceneDoc& doc;
+  const PrepareOptions& opt;
   PreparedScene ps;
-  ps.doc = doc;
-  auto progress = [&](const char* stage, double f) {
-    if (opt.progress) opt.progress(stage, f);
-  };
-  auto cancelled = [&] { return opt.cancel && opt.cancel->shouldStop(); };
-  auto t = Clock::now();
+  std::array<Vec2, 4> layoutCorners{};  // the back wall the camera stage was given or found
+  std::vector<OccluderMatte> mattes;    // per occluder
+  std::vector<Surface> occluderCards;   // per occluder; join the room after its surfaces
+  std::vector<std::optional<Material>> roomMaterials;  // per room surface ("room.materials")
+  std::vector<bool> nonMatte;           // per room surface: marked glossy or mirror
+  std::vector<AreaLight> lights;        // per scene-file light, as marked
+  // Per light: estimated (its intensity fitted, its position refined) rather than given with its
+  // rgb and "refine": false.
+  std::vector<bool> estimated;
+  std::vector<std::vector<Vec2>> outlines;  // of the outlined lights
+  ImageF lightMask;                         // the pixels showing an outlined light
+  std::vector<SunLight> suns;               // from the shafts
+  LightingOptions lightingOptions;          // the lighting stage's, again for its refit
+  bool refined = false;                     // the refinement ran
 
-  // Photo.
-  progress("photo", 0);
-  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved, ImageLimits::photo());
+  bool cancelled() const { return opt.cancel && opt.cancel->shouldStop(); }
+  // The refinement holds light i where the estimate put it.
+  bool locked(size_t i) const { return doc.lights[i].lock || !estimated[i]; }
+};
+
+Error cancelledError() { return Error{"", "", "cancelled"}; }
+
+// "1 light", "2 lights".
+std::string countOf(size_t n, const std::string& thing) {
+  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+
+// --- Why a scene does not need a stage (empty: it does) ---
+
+std::string noOccluders(const Preparation& p) { return p.doc.occluders.empty() ? "none marked" : ""; }
+std::string noSurfaces(const Preparation& p) { return p.doc.surfaces.empty() ? "none marked" : ""; }
+std::string noShafts(const Preparation& p) { return p.doc.shafts.empty() ? "no sun marked" : ""; }
+std::string noObjects(const Preparation& p) { return p.doc.objects.empty() ? "none inserted" : ""; }
+
+const char* kInitialLights = "the lights are kept as estimated (initial lights asked for)";
+
+std::string sunRatioNotNeeded(const Preparation& p) {
+  if (!p.opt.refineLights) return kInitialLights;
+  if (!p.opt.sunsFromShadowRatio) return "turned off";
+  return p.ps.lighting.suns.empty() ? "no sun marked" : "";
+}
+
+std::string refineNotNeeded(const Preparation& p) {
+  if (!p.opt.refineLights) return kInitialLights;
+  // With LightRefineOptions::refineSuns the suns' strengths are fitted even when no light moves.
+  if (p.opt.refine.refineSuns && !p.ps.lighting.suns.empty()) return "";
+  if (p.ps.lighting.lights.empty()) return "no light marked";
+  bool allLocked = true, anyGiven = false;
+  for (size_t i = 0; i < p.doc.lights.size(); ++i) {
+    allLocked = allLocked && p.locked(i);
+    anyGiven = anyGiven || !p.estimated[i];
+  }
+  if (!allLocked) return "";
+  return anyGiven ? "every light locked or given (\"refine\": false)" : "every light locked";
+}
+
+std::string refitNotNeeded(const Preparation& p) {
+  if (!p.refined) return "the lights were not refined";
+  return lightsMoved(p.ps.initialLights, p.ps.lighting.lights) ? "" : "no light moved";
+}
+
+// --- The stages' work ---
+
+Status loadPhoto(Preparation& p, std::string& detail) {
+  auto photo = loadImage(p.doc.photoResolved.empty() ? p.doc.photo : p.doc.photoResolved, ImageLimits::photo());
   if (!photo) return photo.error().underKey("photo");
-  ps.photo = std::move(*photo);
-  const int W = ps.photo.linearRgb.width, H = ps.photo.linearRgb.height;
-  ps.stageSeconds.emplace_back("photo", secondsSince(t));
-  if (cancelled()) return Error{"", "", "cancelled"};
+  p.ps.photo = std::move(*photo);
+  detail = std::to_string(p.ps.photo.linearRgb.width) + " x " + std::to_string(p.ps.photo.linearRgb.height) + " px";
+  return {};
+}
 
-  // The camera response; from here on everything works in the linearised radiance.
-  t = Clock::now();
-  {
-    ResponseEstimateOptions ro;
-    ro.cancel = opt.cancel;
-    ChosenResponse chosen = responseOf(doc.camera.response, ps.photo, ro);
-    if (cancelled()) return Error{"", "", "cancelled"};
-    ps.response = chosen.response;
-    ps.responseEstimate = std::move(chosen.estimate);
-    for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
-    if (ps.photo.wasSrgbEncoded) redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
-  }
-  ps.stageSeconds.emplace_back("response", secondsSince(t));
+// The camera response; from here on everything works in the linearised radiance.
+Status chooseResponse(Preparation& p, std::string& detail) {
+  ResponseEstimateOptions ro;
+  ro.cancel = p.opt.cancel;
+  ChosenResponse chosen = responseOf(p.doc.camera.response, p.ps.photo, ro);
+  if (p.cancelled()) return cancelledError();
+  PreparedScene& ps = p.ps;
+  ps.response = chosen.response;
+  detail = !ps.photo.wasSrgbEncoded ? "linear photo" : chosen.estimate ? "estimated" : "camera.response";
+  ps.responseEstimate = std::move(chosen.estimate);
+  for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
+  if (ps.photo.wasSrgbEncoded) redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
+  return {};
+}
 
-  // Camera.
-  progress("camera", 0);
-  t = Clock::now();
-  const double heightM = doc.camera.heightM.value_or(1.6);
-  auto cl = cameraAndLayoutOf(doc.camera, doc.layout, ps.photo, false, opt.cancel);
+Status findCamera(Preparation& p, std::string& detail) {
+  auto cl = cameraAndLayoutOf(p.doc.camera, p.doc.layout, p.ps.photo, false, p.opt.cancel);
   if (!cl) return cl.error();
-  ps.camera = cl->camera;
-  ps.cameraEstimate = std::move(cl->estimate);
-  for (const auto& w : cl->warnings) ps.warnings.push_back(w);
-  ps.stageSeconds.emplace_back("camera", secondsSince(t));
+  p.ps.camera = cl->camera;
+  p.layoutCorners = cl->backWallPx;
+  detail = cl->estimate ? "estimated from the photo" : "the file's vanishing points and back wall";
+  p.ps.cameraEstimate = std::move(cl->estimate);
+  for (const auto& w : cl->warnings) p.ps.warnings.push_back(w);
+  return {};
+}
 
-  // Room and supporting surfaces.
-  progress("room", 0);
-  t = Clock::now();
-  {
-    const std::array<Vec2, 4> corners = cl->backWallPx;
-    auto box = roomFromBackWall(ps.camera, corners);
-    if (!box && doc.layout.backWallPx) return box.error();
-    if (box) {
-      ps.box = *box;
-      ps.backWallPx = corners;
-    } else {
-      // The estimated layout does not fit this camera: a room of ordinary proportions.
-      ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, heightM + 0.5)};
-      ps.warnings.push_back("layout: the estimated back wall is unusable (" + box.error().reason +
-                            "); using a 5 x 5.5 m room: give layout.back_wall_px");
-    }
+// The room box from the back wall; an estimated back wall that does not fit this camera gives a
+// room of ordinary proportions (a given one is an error).
+Status boxFromBackWall(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  auto box = roomFromBackWall(ps.camera, p.layoutCorners);
+  if (!box && p.doc.layout.backWallPx) return box.error();
+  if (box) {
+    ps.box = *box;
+    ps.backWallPx = p.layoutCorners;
+  } else {
+    ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, p.doc.camera.heightM.value_or(1.6) + 0.5)};
+    ps.warnings.push_back("layout: the estimated back wall is unusable (" + box.error().reason +
+                          "); using a 5 x 5.5 m room: give layout.back_wall_px");
   }
-  // Occluder mattes first: one may show that a top drawn without a thickness is open below.
-  std::vector<OccluderMatte> mattes;
-  for (size_t i = 0; i < doc.occluders.size(); ++i) {
+  char buf[80];
+  std::snprintf(buf, sizeof buf, "%.2f x %.2f m, %.2f m high", ps.box.xRightM - ps.box.xLeftM,
+                ps.box.zRearM - ps.box.zBackM, ps.box.ceilingM);
+  detail = buf;
+  return {};
+}
+
+// Each occluder's matte from its scribbles, and the card it stands as in the room. The mattes
+// come before the surfaces: one may show that a top drawn without a thickness is open below.
+Status occluderMattes(Preparation& p, std::string& detail) {
+  for (size_t i = 0; i < p.doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
-    auto matte = matteFromScribbles(ps.photo.linearRgb, doc.occluders[i].foregroundScribblesPx,
-                                    doc.occluders[i].backgroundScribblesPx, key);
+    const OccluderKeys& o = p.doc.occluders[i];
+    auto matte = matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx, o.backgroundScribblesPx, key);
     if (!matte) return matte.error();
-    mattes.push_back(std::move(*matte));
-    if (cancelled()) return Error{"", "", "cancelled"};
+    p.mattes.push_back(std::move(*matte));
+    if (p.cancelled()) return cancelledError();
   }
-  for (size_t i = 0; i < doc.surfaces.size(); ++i) {
-    auto ex = extrusionOf(ps, doc.surfaces[i], mattes, "surfaces[" + std::to_string(i) + "]");
-    if (!ex) return ex.error();
-    ps.extrusions.push_back(*ex);
-  }
-  ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
-  // Occluders: each matte stands as a card (kind OccluderCard) in the room.
-  for (size_t i = 0; i < mattes.size(); ++i) {
-    auto card = occluderCard(ps.camera, mattes[i], int(i), "occluders[" + std::to_string(i) + "]");
+  for (size_t i = 0; i < p.mattes.size(); ++i) {
+    auto card = occluderCard(p.ps.camera, p.mattes[i], int(i), "occluders[" + std::to_string(i) + "]");
     if (!card) return card.error();
-    ps.geometry.surfaces.push_back(std::move(*card));
+    p.occluderCards.push_back(std::move(*card));
   }
-  // Marked surfaces are checked against this room now, before the costly lighting stage.
-  auto roomMaterials = roomMaterialsOf(doc.room, ps.geometry);
-  if (!roomMaterials) return roomMaterials.error();
-  ps.stageSeconds.emplace_back("room", secondsSince(t));
-  if (cancelled()) return Error{"", "", "cancelled"};
+  detail = countOf(p.mattes.size(), "matte");
+  return {};
+}
 
-  // Lights.
-  progress("lighting", 0);
-  t = Clock::now();
-  std::vector<AreaLight> lights;
-  std::vector<bool> refine;
-  std::vector<std::vector<Vec2>> outlines;
+Status buildSurfaces(Preparation& p, std::string& detail) {
+  for (size_t i = 0; i < p.doc.surfaces.size(); ++i) {
+    auto ex = extrusionOf(p.ps, p.doc.surfaces[i], p.mattes, "surfaces[" + std::to_string(i) + "]");
+    if (!ex) return ex.error();
+    p.ps.extrusions.push_back(*ex);
+  }
+  detail = countOf(p.ps.extrusions.size(), "surface") + " built";
+  return {};
+}
+
+// The room's geometry: box, surfaces and occluder cards. Its marked materials are checked now,
+// before the costly lighting stage.
+Status assembleRoom(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  ps.geometry = buildSceneGeometry(ps.box, ps.extrusions);
+  for (Surface& card : p.occluderCards) ps.geometry.surfaces.push_back(std::move(card));
+  p.occluderCards.clear();
+  auto roomMaterials = roomMaterialsOf(p.doc.room, ps.geometry);
+  if (!roomMaterials) return roomMaterials.error();
+  p.roomMaterials = std::move(*roomMaterials);
+  // Marked glossy or mirror surfaces show reflections: the light fits leave them out.
+  p.nonMatte.assign(p.roomMaterials.size(), false);
+  for (size_t i = 0; i < p.nonMatte.size(); ++i) p.nonMatte[i] = p.roomMaterials[i].has_value();
+  const auto marked = std::count(p.nonMatte.begin(), p.nonMatte.end(), true);
+  detail = countOf(ps.geometry.surfaces.size(), "surface") + (marked ? ", " + std::to_string(marked) + " reflective" : "");
+  return {};
+}
+
+// The lights as marked: outlines on the photo become area lights on the room's surfaces,
+// rectangles placed in 3D face the room. The pixels inside the outlines are no data.
+Status lightsFromMarks(Preparation& p, std::string& detail) {
+  const PreparedScene& ps = p.ps;
   const Vec3 roomCentre(0.5 * (ps.box.xLeftM + ps.box.xRightM), 0.5 * ps.box.ceilingM,
                         0.5 * (ps.box.zBackM + ps.box.zRearM));
-  for (size_t i = 0; i < doc.lights.size(); ++i) {
-    const LightKeys& l = doc.lights[i];
+  for (size_t i = 0; i < p.doc.lights.size(); ++i) {
+    const LightKeys& l = p.doc.lights[i];
     const std::string key = "lights[" + std::to_string(i) + "]";
     if (l.kind == LightKeys::Kind::PolygonPx) {
       auto a = lightFromOutline(ps.camera, ps.geometry, l.pointsPx, key + ".points");
       if (!a) return a.error();
-      lights.push_back(*a);
-      outlines.push_back(l.pointsPx);
+      p.lights.push_back(*a);
+      p.outlines.push_back(l.pointsPx);
     } else {
       AreaLight a;
       a.cornersWorld = l.cornersM;
       if (!(a.area() > 1e-8)) return Error{"", key + ".corners", "the rectangle has no area"};
       if (a.normal().dot(roomCentre - a.centre()) < 0) std::swap(a.cornersWorld[1], a.cornersWorld[3]);
       a.radiance = l.rgb.value_or(Vec3(1, 1, 1));
-      lights.push_back(a);
+      p.lights.push_back(a);
     }
-    refine.push_back(l.refine || !(l.kind == LightKeys::Kind::RectM && l.rgb));
+    p.estimated.push_back(l.refine || !(l.kind == LightKeys::Kind::RectM && l.rgb));
   }
-  if (lights.empty())
-    ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
-  const ImageF lightMask = rasterizeLights(W, H, outlines, 2);
-  std::vector<SunLight> suns;
-  for (size_t i = 0; i < doc.shafts.size(); ++i) {
-    auto shaft = sunFromShaft(doc.shafts[i], ps.photo.linearRgb, ps.camera, ps.geometry,
+  if (p.lights.empty())
+    p.ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
+  p.lightMask = rasterizeLights(ps.photo.linearRgb.width, ps.photo.linearRgb.height, p.outlines, 2);
+  detail = std::to_string(p.outlines.size()) + " outlined, " + std::to_string(p.lights.size() - p.outlines.size()) +
+           " placed in 3D";
+  return {};
+}
+
+Status sunsFromShafts(Preparation& p, std::string& detail) {
+  for (size_t i = 0; i < p.doc.shafts.size(); ++i) {
+    auto shaft = sunFromShaft(p.doc.shafts[i], p.ps.photo.linearRgb, p.ps.camera, p.ps.geometry,
                               "shafts[" + std::to_string(i) + "]");
     if (!shaft) return shaft.error();
-    suns.push_back(shaft->sun);
+    p.suns.push_back(shaft->sun);
   }
-  // Marked glossy or mirror surfaces show reflections: the light fits leave them out.
-  std::vector<bool> nonMatte(roomMaterials->size());
-  for (size_t i = 0; i < nonMatte.size(); ++i) nonMatte[i] = (*roomMaterials)[i].has_value();
-  LightingOptions lo;
-  lo.nonMatteSurfaces = nonMatte;
-  lo.cancel = opt.cancel;
-  lo.threads = opt.threads;
-  lo.seed += opt.seed;
-  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, lights, refine,
-                                   lightMask, suns, lo);
+  detail = countOf(p.suns.size(), "sun");
+  return {};
+}
+
+// The gathered light, the albedo and the lights' radiances (lighting/estimate.h).
+Status estimateTheLighting(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  LightingOptions& lo = p.lightingOptions;
+  lo.nonMatteSurfaces = p.nonMatte;
+  lo.cancel = p.opt.cancel;
+  lo.threads = p.opt.threads;
+  lo.seed += p.opt.seed;
+  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, p.lights, p.estimated,
+                                   p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
-  ps.stageSeconds.emplace_back("lighting", secondsSince(t));
-  if (cancelled()) return Error{"", "", "cancelled"};
-
-  // Refinement: positions and intensities against the photo's direct light.
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
-  if (opt.refineLights && opt.sunsFromShadowRatio && !ps.lighting.suns.empty()) {
-    t = Clock::now();
-    sunsFromShadowRatio(ps, lightMask);
-    ps.stageSeconds.emplace_back("sun ratio", secondsSince(t));
-  }
-  if (opt.refineLights && (!ps.lighting.lights.empty() || (opt.refine.refineSuns && !ps.lighting.suns.empty()))) {
-    progress("refine", 0);
-    t = Clock::now();
-    std::vector<LightRefineSpec> specs(doc.lights.size());
-    for (size_t i = 0; i < doc.lights.size(); ++i) {
-      specs[i].lock = doc.lights[i].lock || !refine[i];
-      specs[i].positionWeight = doc.lights[i].positionWeight;
-      specs[i].intensityWeight = doc.lights[i].intensityWeight;
-      specs[i].refineSize = doc.lights[i].refineSize;
-      specs[i].sizeWeight = doc.lights[i].sizeWeight;
-    }
-    LightRefineOptions ro = opt.refine;
-    ro.seed += opt.seed;
-    if (!ro.cancel) ro.cancel = opt.cancel;
-    ro.nonMatteSurfaces = nonMatte;
-    ro.sunBounce = ps.lighting.sunBounce;
-    auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
-                                usableDirect(ps.lighting, lightMask), ps.lighting.lights, specs,
-                                ps.lighting.suns, ro);
-    if (!refined) {
-      if (cancelled()) return Error{"", "", "cancelled"};
-      return refined.error();
-    }
-    ps.refinement = std::move(*refined);
-    ps.lighting.lights = ps.refinement.lights;
-    ps.lighting.suns = ps.refinement.suns;
-    for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
-    ps.stageSeconds.emplace_back("refine", secondsSince(t));
-    if (lightsMoved(ps.initialLights, ps.lighting.lights)) {
-      // The albedo-intensity split rests on the shape of each light's irradiance over the room
-      // (B = rho (L E + Gamma) is flat along rho / k, L k where E and Gamma look alike): with
-      // the refined positions, the radiances, Gamma and the albedo are estimated again.
-      progress("lighting", 0);
-      t = Clock::now();
-      // A locked light keeps its intensity too.
-      std::vector<bool> fitAgain(refine);
-      for (size_t i = 0; i < fitAgain.size() && i < doc.lights.size(); ++i)
-        fitAgain[i] = refine[i] && !doc.lights[i].lock;
-      auto again = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry,
-                                    ps.lighting.lights, fitAgain, lightMask, ps.lighting.suns, lo);
-      if (!again) {
-        if (cancelled()) return Error{"", "", "cancelled"};
-        return again.error();
-      }
-      ps.lighting = std::move(*again);
-      for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
-      ps.stageSeconds.emplace_back("lighting refit", secondsSince(t));
-    }
-  }
+  detail = countOf(ps.lighting.lights.size(), "light") + ", " + countOf(ps.lighting.suns.size(), "sun");
+  return {};
+}
 
-  // The render scene: room with its projected albedo, lights, objects placed.
-  progress("objects", 0);
-  t = Clock::now();
-  RenderScene& rs = ps.renderScene;
+Status sunsFromRatio(Preparation& p, std::string& detail) {
+  sunsFromShadowRatio(p.ps, p.lightMask);
+  detail = countOf(p.ps.lighting.suns.size(), "sun");
+  return {};
+}
+
+// The lights' positions and intensities against the photo's direct light (lighting/refine.h).
+Status refineTheLights(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  std::vector<LightRefineSpec> specs(p.doc.lights.size());
+  for (size_t i = 0; i < p.doc.lights.size(); ++i) {
+    const LightKeys& l = p.doc.lights[i];
+    specs[i].lock = p.locked(i);
+    specs[i].positionWeight = l.positionWeight;
+    specs[i].intensityWeight = l.intensityWeight;
+    specs[i].refineSize = l.refineSize;
+    specs[i].sizeWeight = l.sizeWeight;
+  }
+  LightRefineOptions ro = p.opt.refine;
+  ro.seed += p.opt.seed;
+  if (!ro.cancel) ro.cancel = p.opt.cancel;
+  ro.nonMatteSurfaces = p.nonMatte;
+  ro.sunBounce = ps.lighting.sunBounce;
+  auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
+                              usableDirect(ps.lighting, p.lightMask), ps.lighting.lights, specs,
+                              ps.lighting.suns, ro);
+  if (!refined) return p.cancelled() ? cancelledError() : refined.error();
+  ps.refinement = std::move(*refined);
+  ps.lighting.lights = ps.refinement.lights;
+  ps.lighting.suns = ps.refinement.suns;
+  for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
+  p.refined = true;
+  const auto locked = std::count_if(specs.begin(), specs.end(), [](const LightRefineSpec& s) { return s.lock; });
+  detail = std::to_string(specs.size() - size_t(locked)) + " of " + countOf(specs.size(), "light") + " refined, " +
+           countOf(size_t(ps.refinement.evaluations), "evaluation");
+  return {};
+}
+
+// The albedo-intensity split rests on the shape of each light's irradiance over the room
+// (B = rho (L E + Gamma) is flat along rho / k, L k where E and Gamma look alike): with the
+// refined positions, the radiances, Gamma and the albedo are estimated again.
+Status refitTheLighting(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  // A locked light keeps its intensity too.
+  std::vector<bool> fitAgain(p.estimated);
+  for (size_t i = 0; i < fitAgain.size() && i < p.doc.lights.size(); ++i)
+    fitAgain[i] = p.estimated[i] && !p.doc.lights[i].lock;
+  auto again = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, ps.lighting.lights, fitAgain,
+                                p.lightMask, ps.lighting.suns, p.lightingOptions);
+  if (!again) return p.cancelled() ? cancelledError() : again.error();
+  ps.lighting = std::move(*again);
+  for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
+  detail = "a light moved";
+  return {};
+}
+
+// The render scene: the room with its projected albedo and the photo's radiance for bounces,
+// the lights and suns.
+Status buildRenderScene(Preparation& p, std::string&) {
+  const PreparedScene& ps = p.ps;
+  RenderScene& rs = p.ps.renderScene;
+  const int W = ps.photo.linearRgb.width, H = ps.photo.linearRgb.height;
   rs.camera = ps.camera;
   rs.room = ps.geometry;
-  rs.roomMaterials = std::move(*roomMaterials);
+  rs.roomMaterials = std::move(p.roomMaterials);
   rs.lights = ps.lighting.lights;
   rs.suns = ps.lighting.suns;
   rs.roomAlbedo.camera = ps.camera;
@@ -647,20 +750,79 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
   rs.roomAlbedo.photoRadianceUsable.assign(size_t(W) * H, 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
-      if (lightMask.at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
-  auto placed = placeObjects(doc.objects, ps.geometry, ps.camera);
-  if (!placed) return placed.error();
-  rs.objects = std::move(placed->objects);
-  ps.placements = std::move(placed->placements);
-  ps.stageSeconds.emplace_back("objects", secondsSince(t));
-  progress("objects", 1);
+      if (p.lightMask.at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
+  return {};
+}
 
-  // The photo's grain, last: in the units ps.photo.linearRgb ended in. A linear photo (EXR,
-  // HDR) is taken as noise-free: its pixels are radiances, not a camera's encoded output.
-  t = Clock::now();
-  ps.photoNoise = photoNoiseOf(ps.photo);
-  ps.stageSeconds.emplace_back("grain", secondsSince(t));
-  return ps;
+Status placeTheObjects(Preparation& p, std::string& detail) {
+  auto placed = placeObjects(p.doc.objects, p.ps.geometry, p.ps.camera);
+  if (!placed) return placed.error();
+  p.ps.renderScene.objects = std::move(placed->objects);
+  p.ps.placements = std::move(placed->placements);
+  detail = countOf(p.ps.placements.size(), "object");
+  return {};
+}
+
+// The photo's grain, last: in the units ps.photo.linearRgb ended in. A linear photo (EXR, HDR)
+// is taken as noise-free: its pixels are radiances, not a camera's encoded output.
+Status measureGrain(Preparation& p, std::string& detail) {
+  p.ps.photoNoise = photoNoiseOf(p.ps.photo);
+  detail = p.ps.photoNoise.empty() ? "none" : "";
+  return {};
+}
+
+// One stage of prepareScene(): its name (StageRecord::name), the progress label it starts
+// (PrepareOptions::progress; null: none), why a scene would not need it (null: every scene does)
+// and its work, which may describe itself in `detail`.
+struct Stage {
+  const char* name;
+  const char* progress;
+  std::string (*notNeeded)(const Preparation&);
+  Status (*run)(Preparation&, std::string& detail);
+};
+
+// Runs `stage` when the scene needs it and records its seconds, or records why it was skipped.
+Status runStage(const Stage& stage, Preparation& p) {
+  StageRecord record;
+  record.name = stage.name;
+  if (stage.notNeeded) record.reason = stage.notNeeded(p);
+  if (record.reason.empty()) {
+    if (stage.progress && p.opt.progress) p.opt.progress(stage.progress, 0);
+    const auto t = Clock::now();
+    if (Status st = stage.run(p, record.detail); !st) return st;
+    record.ran = true;
+    record.seconds = secondsSince(t);
+  }
+  p.ps.stages.push_back(std::move(record));
+  return p.cancelled() ? Status(cancelledError()) : Status();
+}
+
+}  // namespace
+
+Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+  static const Stage kStages[] = {
+      {"photo", "photo", nullptr, loadPhoto},
+      {"response", nullptr, nullptr, chooseResponse},
+      {"camera", "camera", nullptr, findCamera},
+      {"layout", "room", nullptr, boxFromBackWall},
+      {"occluders", nullptr, noOccluders, occluderMattes},
+      {"surfaces", nullptr, noSurfaces, buildSurfaces},
+      {"room", nullptr, nullptr, assembleRoom},
+      {"lights", "lighting", nullptr, lightsFromMarks},
+      {"shafts", nullptr, noShafts, sunsFromShafts},
+      {"lighting", nullptr, nullptr, estimateTheLighting},
+      {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio},
+      {"refine", "refine", refineNotNeeded, refineTheLights},
+      {"lighting refit", "lighting", refitNotNeeded, refitTheLighting},
+      {"render scene", "objects", nullptr, buildRenderScene},
+      {"objects", nullptr, noObjects, placeTheObjects},
+      {"grain", nullptr, nullptr, measureGrain},
+  };
+  Preparation p(doc, opt);
+  for (const Stage& stage : kStages)
+    if (Status st = runStage(stage, p); !st) return st.error();
+  if (opt.progress) opt.progress("objects", 1);
+  return std::move(p.ps);
 }
 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {

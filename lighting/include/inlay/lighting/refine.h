@@ -30,6 +30,7 @@
 #include "inlay/modeling/image.h"
 #include "inlay/render/scene.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,10 @@ struct LightRefineResult {
   std::string report;             // why the solver stopped
   std::vector<std::string> notes; // lights moved into the room, lights that light nothing, ...
 };
+
+// How many times refineLights has run in this process (all threads): tests use it to show that
+// a scene whose lights are all locked skips the refinement.
+uint64_t lightRefinementRuns();
 
 // `albedo` and `direct`: W x H x 3, linear, the photo's pixel frame (the decomposition's rho
 // and D); `usable`: W x H, 1 where D is data (not a light outline, not clipped, on the room),

@@ -25,6 +25,21 @@
 
 namespace inlay {
 
+// One stage of prepareScene() (photo, response, camera, layout, occluders, surfaces, room,
+// lights, shafts, lighting, sun ratio, refine, lighting refit, render scene, objects, grain):
+// what it took, or why the scene did not need it ("shafts": "no sun marked"). A skipped stage
+// does none of its work.
+struct StageRecord {
+  std::string name;
+  bool ran = false;
+  double seconds = 0;   // wall seconds, when it ran
+  std::string reason;   // why it was skipped; empty when it ran
+  std::string detail;   // what it did, when it ran (may be empty): "estimated from the photo"
+};
+// One line for a log: "camera: 0.84 s (estimated from the photo)", "shafts: skipped, no sun
+// marked".
+std::string describeStage(const StageRecord& stage);
+
 struct PreparedScene {
   SceneDoc doc;
   LoadedImage photo;            // linear RGB (decoded by `response`), oriented
@@ -54,13 +69,14 @@ struct PreparedScene {
   // gives the pixels the objects change this grain (scene key render.grain).
   PhotoNoise photoNoise;
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
-  std::vector<std::pair<std::string, double>> stageSeconds;  // timings per stage
+  // Every stage of the preparation in order: its seconds, or why this scene did not need it.
+  std::vector<StageRecord> stages;
 };
 
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
-  // stage name ("photo", "camera", "room", "lighting", "objects") and fraction in [0,1];
-  // called on the calling thread.
+  // stage name ("photo", "camera", "room", "lighting", "refine", "objects": coarser than
+  // PreparedScene::stages) and fraction in [0,1]; called on the calling thread.
   std::function<void(const std::string& stage, double fraction)> progress;
   int threads = 0;
   // Refine the lights' positions and intensities against the photo (lighting/refine.h); false
