@@ -6,7 +6,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cerrno>
@@ -216,20 +215,6 @@ Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
   return writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));
 }
 
-uint32_t crc32Png(const unsigned char* data, size_t n, uint32_t crc) {
-  static const auto table = [] {
-    std::array<uint32_t, 256> t{};
-    for (uint32_t i = 0; i < 256; ++i) {
-      uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  for (size_t i = 0; i < n; ++i) crc = table[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
-  return crc;
-}
-
 uint32_t bigEndian32(const unsigned char* p) {
   return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | uint32_t(p[3]);
 }
@@ -325,9 +310,9 @@ Status checkPng(const std::string& path, const ImageLimits& limits) {
     }
     if (std::fread(data.data(), 1, length, f) != length || std::fread(crc, 1, 4, f) != 4)
       return Error{path, "", "truncated PNG: the file ends inside " + where};
-    uint32_t c = crc32Png(h + 4, 4, 0xFFFFFFFFu);
-    c = crc32Png(data.data(), data.size(), c) ^ 0xFFFFFFFFu;
-    if (c != bigEndian32(crc))
+    // zlib's crc32() is the PNG CRC (ISO 3309, pre- and post-inverted), over type and data.
+    uLong c = crc32(crc32(0L, h + 4, 4), data.data(), uInt(data.size()));
+    if (uint32_t(c) != bigEndian32(crc))
       return Error{path, "", "corrupt PNG: " + where + " fails its CRC check"};
     if (type == "IHDR" && length == 13) {
       png.width = bigEndian32(data.data());
