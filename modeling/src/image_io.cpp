@@ -138,9 +138,9 @@ std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels, const 
         out[i * size_t(outChannels) + size_t(c)] = response->encodeCode8(p[linear.channels == 1 ? 0 : c]);
         continue;
       }
-      const float v = c < 3 ? linearToSrgb(p[linear.channels == 1 ? 0 : c])
-                            : std::clamp(p[c], 0.f, 1.f);  // alpha stays linear
-      out[i * size_t(outChannels) + size_t(c)] = (unsigned char)std::lround(v * 255.f);
+      out[i * size_t(outChannels) + size_t(c)] =
+          c < 3 ? srgbCode8(p[linear.channels == 1 ? 0 : c])
+                : (unsigned char)std::lround(std::clamp(p[c], 0.f, 1.f) * 255.f);  // alpha stays linear
     }
   }
   return out;
