@@ -34,4 +34,20 @@ QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& respons
   return encodedImage(linearRgb, exposureStops, [&response](float v) { return response.encodeCode8(v); });
 }
 
+ImageF linearFromSrgb8(const QImage& image) {
+  if (image.isNull()) return {};
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+  ImageF out(rgb.width(), rgb.height(), 3);
+  for (int y = 0; y < rgb.height(); ++y) {
+    const auto* row = reinterpret_cast<const QRgb*>(rgb.constScanLine(y));
+    for (int x = 0; x < rgb.width(); ++x) {
+      float* d = out.pixel(x, y);
+      d[0] = srgbToLinear(float(qRed(row[x])) / 255.f);
+      d[1] = srgbToLinear(float(qGreen(row[x])) / 255.f);
+      d[2] = srgbToLinear(float(qBlue(row[x])) / 255.f);
+    }
+  }
+  return out;
+}
+
 }  // namespace inlay::studio
