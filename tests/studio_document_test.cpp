@@ -84,6 +84,10 @@ void StudioDocumentTest::srgbEncodingHasKnownValues() {
   for (int x = 0; x < 256; ++x) ramp.setRgb(x, 0, Vec3::Constant(srgbToLinear(float(x) / 255.f)));
   const QImage r = srgb8FromLinear(ramp);
   for (int x = 0; x < 256; ++x) QCOMPARE(qBlue(r.pixel(x, 0)), x);
+  // ... and back: linearFromSrgb8 gives every code's own linear value (layer export).
+  QImage codes(256, 1, QImage::Format_RGB32);
+  for (int x = 0; x < 256; ++x) codes.setPixel(x, 0, qRgb(x, 255 - x, x / 2));
+  QCOMPARE(srgb8FromLinear(linearFromSrgb8(codes)), codes);
 }
 
 void StudioDocumentTest::sinkDropsOldVersionsAndNotifiesOnce() {

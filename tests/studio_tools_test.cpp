@@ -8,7 +8,9 @@
 #include "render_controller.h"
 #include "viewport.h"
 
+#include "image_convert.h"
 #include "inlay/engine/pipeline.h"
+#include "inlay/modeling/image_io.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -256,6 +258,18 @@ void StudioToolsTest::zoomAndPanKeepTheImageUnderTheCursor() {
   QVERIFY(std::abs(view_->zoom() - zoom0) < 1e-9);
 }
 
+// The same size and RGB values (alpha and colour space aside).
+static bool samePixels(const QImage& a, const QImage& b) {
+  if (a.size() != b.size()) return false;
+  const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
+  for (int row = 0; row < x.height(); ++row)
+    for (int col = 0; col < x.width(); ++col)
+      if (qRed(x.pixel(col, row)) != qRed(y.pixel(col, row)) || qGreen(x.pixel(col, row)) != qGreen(y.pixel(col, row)) ||
+          qBlue(x.pixel(col, row)) != qBlue(y.pixel(col, row)))
+        return false;
+  return true;
+}
+
 void StudioToolsTest::exportShownLayer() {
   QTemporaryDir dir;
   view_->setLayer(Layer::Albedo);
@@ -263,8 +277,14 @@ void StudioToolsTest::exportShownLayer() {
   QVERIFY(window_->exportShownLayer(path));
   const QImage back(path);
   QCOMPARE(back.width(), doc_->prepared()->photo.linearRgb.width);
-  QCOMPARE(back.convertToFormat(QImage::Format_RGB32),
-           window_->renderer()->layerImage(Layer::Albedo).convertToFormat(QImage::Format_RGB32));
+  // Code for code (the file is tagged sRGB, the shown image carries no colour space: compare pixels).
+  QVERIFY(samePixels(back, window_->renderer()->layerImage(Layer::Albedo)));
+  // TIFF too (written by image_io; Qt has no TIFF plugin here), read back code for code.
+  const QString tif = dir.filePath(QStringLiteral("albedo.tif"));
+  QVERIFY(window_->exportShownLayer(tif));
+  const auto tifBack = loadImage(tif.toStdString());
+  QVERIFY(tifBack.ok());
+  QVERIFY(samePixels(srgb8FromLinear(tifBack->linearRgb), back));
   // A folder that does not exist: refused, nothing half-written.
   QVERIFY(!window_->exportShownLayer(dir.filePath(QStringLiteral("no/such/albedo.png"))));
 }

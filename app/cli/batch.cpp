@@ -224,23 +224,6 @@ Expected<SceneDoc> lineScene(const json& sceneJson, const BatchLine& line) {
   return parsed->doc;
 }
 
-// Keeps the newest frame of one render.
-class LastFrameSink : public FrameSink {
- public:
-  void onFrame(std::shared_ptr<const RenderFrame> f) override {
-    std::lock_guard<std::mutex> lock(m_);
-    last_ = std::move(f);
-  }
-  std::shared_ptr<const RenderFrame> last() {
-    std::lock_guard<std::mutex> lock(m_);
-    return last_;
-  }
-
- private:
-  std::mutex m_;
-  std::shared_ptr<const RenderFrame> last_;
-};
-
 // What every line of a prepared scene shares, read-only while its lines render.
 struct PreparedGroup {
   const PreparedScene* scene = nullptr;

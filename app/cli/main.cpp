@@ -21,7 +21,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -269,32 +268,16 @@ class Progress {
   std::string last_;
 };
 
-class CollectingSink : public FrameSink {
- public:
-  CollectingSink(Progress& progress, std::ofstream* csv, int targetSpp, double seconds)
-      : progress_(progress), csv_(csv), targetSpp_(targetSpp), seconds_(seconds) {}
-  void onFrame(std::shared_ptr<const RenderFrame> f) override {
-    std::lock_guard<std::mutex> lock(m_);
-    last_ = f;
-    double fraction = double(f->spp) / std::max(1, targetSpp_);
-    if (seconds_ > 0) fraction = std::max(fraction, f->seconds / seconds_);
-    progress_.frame(*f, std::min(1.0, fraction));
-    if (csv_ && f->spp > 0)
-      *csv_ << f->seconds << "," << f->spp << "," << f->estimatedError << "\n" << std::flush;
-  }
-  std::shared_ptr<const RenderFrame> last() {
-    std::lock_guard<std::mutex> lock(m_);
-    return last_;
-  }
-
- private:
-  std::mutex m_;
-  std::shared_ptr<const RenderFrame> last_;
-  Progress& progress_;
-  std::ofstream* csv_;
-  int targetSpp_;
-  double seconds_;
-};
+// Progress on the terminal and the optional progress CSV, for each frame of a render.
+std::function<void(const RenderFrame&)> reportFrames(Progress& progress, std::ofstream* csv, int targetSpp,
+                                                     double seconds) {
+  return [&progress, csv, targetSpp, seconds](const RenderFrame& f) {
+    double fraction = double(f.spp) / std::max(1, targetSpp);
+    if (seconds > 0) fraction = std::max(fraction, f.seconds / seconds);
+    progress.frame(f, std::min(1.0, fraction));
+    if (csv && f.spp > 0) *csv << f.seconds << "," << f.spp << "," << f.estimatedError << "\n" << std::flush;
+  };
+}
 
 // The preparation's stages: each with its seconds, or the reason this scene skipped it.
 nlohmann::json stagesJson(const std::vector<StageRecord>& stages) {
@@ -478,7 +461,7 @@ int commandRender(const std::string& scenePath, const Args& a) {
     if (!csv) return inputError(Error{a.progressCsv, "--progress-csv", "cannot be written"});
     csv << "seconds,spp,estimated_error\n";
   }
-  CollectingSink sink(progress, a.progressCsv.empty() ? nullptr : &csv, so.targetSpp, so.seconds);
+  LastFrameSink sink(reportFrames(progress, a.progressCsv.empty() ? nullptr : &csv, so.targetSpp, so.seconds));
   {
     RenderSession session(&sink, so);
     session.setScene(shownRenderScene(ps));

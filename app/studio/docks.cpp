@@ -41,7 +41,7 @@ QString meshName(const ObjectKeys& o) {
 const char* const kDefaultHeightKey = "insert/defaultModelHeightM";
 
 QColor displayColour(const Vec3& linear) {
-  auto enc = [](double v) { return int(std::lround(255.0 * linearToSrgb(float(v)))); };
+  auto enc = [](double v) { return int(srgbCode8(float(v))); };
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
 }
 

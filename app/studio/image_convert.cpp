@@ -1,33 +1,8 @@
 #include "image_convert.h"
 
-#include <array>
 #include <cmath>
 
 namespace inlay::studio {
-namespace {
-
-// linear in [0,1] quantised to 1/65535 -> 8-bit sRGB. At the steepest part of the curve (near
-// black, slope 12.92) one step is 0.05 of an 8-bit code, so the table is exact to rounding.
-constexpr int kLutSize = 65536;
-
-const std::array<uchar, kLutSize>& srgbLut() {
-  static const std::array<uchar, kLutSize> lut = [] {
-    std::array<uchar, kLutSize> t{};
-    for (int i = 0; i < kLutSize; ++i)
-      t[i] = uchar(std::lround(255.0f * linearToSrgb(float(i) / float(kLutSize - 1))));
-    return t;
-  }();
-  return lut;
-}
-
-inline uchar encode(float linear, const std::array<uchar, kLutSize>& lut) {
-  if (!(linear > 0.f)) return 0;  // also NaN
-  if (linear >= 1.f) return 255;
-  return lut[size_t(linear * float(kLutSize - 1) + 0.5f)];
-}
-
-}  // namespace
-
 namespace {
 
 // Encodes each pixel's channels (grey images repeat their one channel) after the exposure gain
@@ -51,13 +26,28 @@ QImage encodedImage(const ImageF& linearRgb, double exposureStops, Code code) {
 }  // namespace
 
 QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
-  const auto& lut = srgbLut();
-  return encodedImage(linearRgb, exposureStops, [&lut](float v) { return encode(v, lut); });
+  return encodedImage(linearRgb, exposureStops, [](float v) { return srgbCode8(v); });
 }
 
 QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response, double exposureStops) {
   if (response.family() != ResponseFamily::ToeShoulder) return srgb8FromLinear(linearRgb, exposureStops);
   return encodedImage(linearRgb, exposureStops, [&response](float v) { return response.encodeCode8(v); });
+}
+
+ImageF linearFromSrgb8(const QImage& image) {
+  if (image.isNull()) return {};
+  const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+  ImageF out(rgb.width(), rgb.height(), 3);
+  for (int y = 0; y < rgb.height(); ++y) {
+    const auto* row = reinterpret_cast<const QRgb*>(rgb.constScanLine(y));
+    for (int x = 0; x < rgb.width(); ++x) {
+      float* d = out.pixel(x, y);
+      d[0] = srgbToLinear(float(qRed(row[x])) / 255.f);
+      d[1] = srgbToLinear(float(qGreen(row[x])) / 255.f);
+      d[2] = srgbToLinear(float(qBlue(row[x])) / 255.f);
+    }
+  }
+  return out;
 }
 
 }  // namespace inlay::studio

@@ -6,6 +6,7 @@
 #include "log_dock.h"
 #include "response_dock.h"
 #include "i18n.h"
+#include "image_convert.h"
 #include "document.h"
 #include "render_controller.h"
 #include "viewport.h"
@@ -29,7 +30,6 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QProgressDialog>
-#include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -779,12 +779,11 @@ bool MainWindow::exportShownLayer(const QString& path) {
     showError(tr("Nothing to export"), tr("This layer has not been made yet."));
     return false;
   }
-  // Atomic: a failed write leaves any earlier file as it was.
-  QSaveFile file(path);
-  const QByteArray format = QFileInfo(path).suffix().toLower().toLatin1();
-  if (!file.open(QIODevice::WriteOnly) || !image.save(&file, format.constData()) || !file.commit()) {
-    showError(tr("Cannot export the layer"),
-              tr("%1: cannot write (%2)").arg(QDir::toNativeSeparators(path), file.errorString()));
+  // Through image_io as the composite is (atomic, TIFF without a Qt plugin, its messages), the
+  // shown image's codes kept.
+  const Status saved = saveImage(QDir::toNativeSeparators(path).toStdString(), linearFromSrgb8(image));
+  if (!saved.ok()) {
+    showError(tr("Cannot export the layer"), QString::fromStdString(saved.error().message()));
     return false;
   }
   statusBar()->showMessage(tr("Exported %1").arg(QDir::toNativeSeparators(path)), 5000);

@@ -28,7 +28,7 @@ const QColor kAxisColour[3] = {QColor(255, 90, 90), QColor(90, 230, 90), QColor(
 constexpr double kMinZoom = 0.02, kMaxZoom = 32.0;
 
 QColor srgbColour(const Vec3& linear) {
-  auto enc = [](double v) { return int(std::lround(255.0 * linearToSrgb(float(v)))); };
+  auto enc = [](double v) { return int(srgbCode8(float(v))); };
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
 }
 

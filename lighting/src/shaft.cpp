@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include <opencv2/imgproc.hpp>
+
 namespace inlay {
 
 namespace {
@@ -46,34 +48,33 @@ Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, cons
   return out;
 }
 
-// Otsu's threshold on values; also returns the two class means.
-double otsu(const std::vector<double>& v, double* meanLow, double* meanHigh) {
+}  // namespace
+
+// Otsu's threshold on values: OpenCV's, on the values binned to 256 levels between their extremes;
+// also returns the two class means (of the values themselves).
+double detail::otsuThreshold(const std::vector<double>& v, double* meanLow, double* meanHigh) {
   const auto [mnIt, mxIt] = std::minmax_element(v.begin(), v.end());
   const double mn = *mnIt, mx = *mxIt;
   if (!(mx - mn > 1e-9)) {
     *meanLow = *meanHigh = mn;
     return mx;
   }
-  const int bins = 256;
-  std::vector<double> hist(bins, 0), sum(bins, 0);
-  for (double x : v) {
-    const int b = std::clamp(int((x - mn) / (mx - mn) * (bins - 1)), 0, bins - 1);
-    hist[b] += 1, sum[b] += x;
+  cv::Mat1b levels(1, int(v.size()));
+  for (size_t i = 0; i < v.size(); ++i)
+    levels(0, int(i)) = uchar(std::clamp(int((v[i] - mn) / (mx - mn) * 255), 0, 255));
+  cv::Mat unused;
+  const int t = int(cv::threshold(levels, unused, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU));
+  double sum[2] = {0, 0}, count[2] = {0, 0};
+  for (size_t i = 0; i < v.size(); ++i) {
+    const int high = levels(0, int(i)) > t;
+    sum[high] += v[i], count[high] += 1;
   }
-  const double total = double(v.size());
-  double totalSum = 0;
-  for (double s : sum) totalSum += s;
-  double wB = 0, sB = 0, best = -1, thr = mn;
-  for (int b = 0; b < bins - 1; ++b) {
-    wB += hist[b], sB += sum[b];
-    const double wF = total - wB;
-    if (wB == 0 || wF == 0) continue;
-    const double mB = sB / wB, mF = (totalSum - sB) / wF;
-    const double between = wB * wF * (mB - mF) * (mB - mF);
-    if (between > best) best = between, thr = mn + (b + 0.5) / (bins - 1) * (mx - mn), *meanLow = mB, *meanHigh = mF;
-  }
-  return thr;
+  *meanLow = count[0] > 0 ? sum[0] / count[0] : mn;
+  *meanHigh = count[1] > 0 ? sum[1] / count[1] : mx;
+  return mn + (t + 0.5) / 255 * (mx - mn);
 }
+
+namespace {
 
 Vec4 planeOf(const Surface& s) {
   const auto& m = s.meshWorld;
@@ -96,7 +97,7 @@ Patch brightPatch(const std::vector<BoxPixel>& px, int W, int H, size_t surfaceC
   std::vector<double> v;
   for (const auto& p : px) v.push_back(p.logLum);
   double lo = 0, hi = 0;
-  const double thr = otsu(v, &lo, &hi);
+  const double thr = detail::otsuThreshold(v, &lo, &hi);
   Patch out;
   out.contrast = std::exp(hi - lo);
   // Soft edge: a logistic of width 0.08 in log luminance around the threshold.

@@ -40,14 +40,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Slope of the sRGB encoding at linear value v: the error a small linear error becomes on
-// screen. 12.92 on the linear toe; above 1 the slope at 1 (displays clip, so this bounds it).
-double srgbSlope(double v) {
-  if (!(v > 0.0031308)) return 12.92;
-  v = std::min(v, 1.0);
-  return 1.055 / 2.4 * std::pow(v, 1.0 / 2.4 - 1.0);
-}
-
 // Standard error, in sRGB [0,1], of pixel i's composite from its own samples: the variance of
 // the mean of the per-sample change (DifferentialBuffers::sumChange: the photo is a constant,
 // so the composite's noise is the change's, the mask's included), averaged over RGB (unbiased

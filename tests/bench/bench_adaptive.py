@@ -89,7 +89,7 @@ def main():
     if not rows:
         return 1
     csvp = os.path.join(out, "adaptive.csv")
-    benchlib.write_csv(csvp, rows)
+    benchlib.write_csv(csvp, rows, table="adaptive")
     with benchlib.figure(os.path.join(out, "adaptive.png"), 1, 2, figsize=(12, 4.2)) as ax:
         if ax is not None:
             for name in names:

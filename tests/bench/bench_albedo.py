@@ -125,10 +125,7 @@ def write(out, names, rows, curve, surfaces, failed):
                  and x["surface"] == r["surface"])
         print("| %s | %s | %d | %.4f | %.4f | %.4f | %.4f |" % (
             r["scene"], r["surface"], r["pixels"], r["mae"], r["rmse"], t["mae"], t["rmse"]))
-    with open(os.path.join(out, "albedo_scenes.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    benchlib.write_csv(os.path.join(out, "albedo_scenes.csv"), rows, table="albedo")
     with open(os.path.join(out, "albedo_error_vs_time.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(curve[0]))
         w.writeheader()

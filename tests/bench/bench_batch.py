@@ -136,7 +136,7 @@ def main():
                  "preparations": count(stderr, "prepared ")})
     print(rows[-1], flush=True)
 
-    benchlib.write_csv(os.path.join(out, "bench_batch.csv"), rows)
+    benchlib.write_csv(os.path.join(out, "bench_batch.csv"), rows, table="batch")
     with benchlib.figure(os.path.join(out, "bench_batch.png"), figsize=(6, 3)) as ax:
         if ax is not None:
             ax.barh([r["run"] for r in rows], [r["seconds"] for r in rows], color="#4a7fb0")

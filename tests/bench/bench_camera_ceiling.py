@@ -99,6 +99,7 @@ def main():
             w = csv.DictWriter(fh, fieldnames=["image"] + keys)
             w.writeheader()
             w.writerows(rows)
+    benchlib.write_table("camera_ceiling", [summary])
     print(json.dumps(summary, indent=1))
 
 

@@ -59,7 +59,7 @@ def main():
         results.append(summarise("sigma", s, rows, truth_pp))
     known = summarise("known_principal", float("nan"),
                       run(bench, york, os.path.join(out, "known"), ["--known-principal"]), truth_pp)
-    benchlib.write_csv(os.path.join(out, "camera_principal.csv"), results + [known])
+    benchlib.write_csv(os.path.join(out, "camera_principal.csv"), results + [known], table="camera_principal")
     best_a = max(results, key=lambda r: r["auc_A"])
     best_b = max(results, key=lambda r: r["auc_B"])
     summary = {"chosen_on_A": best_a["sigma"], "held_out_auc_B": best_a["auc_B"],

@@ -97,7 +97,7 @@ def main():
         diff = np.abs(ours - cyc)
         strip = np.hstack([tonemap(ours), tonemap(cyc), tonemap(4 * diff)])
         cv2.imwrite(os.path.join(out, "cycles_%s.png" % key), strip[..., ::-1])
-    benchlib.write_csv(os.path.join(out, "cycles_regions.csv"), rows)
+    benchlib.write_csv(os.path.join(out, "cycles_regions.csv"), rows, table="cycles")
     print("| scene | region | pixels | ours | Cycles | ours/Cycles - 1 |")
     print("|---|---|---|---|---|---|")
     for r in rows:

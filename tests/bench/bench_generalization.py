@@ -364,7 +364,7 @@ def main():
         print("no rooms")
         return 1
     summary = summarise(rows)
-    benchlib.write_csv(os.path.join(out, "generalization_summary.csv"), summary)
+    benchlib.write_csv(os.path.join(out, "generalization_summary.csv"), summary, table="generalization")
     print_tables(rows, summary)
     plot(out, rows)
     if opt("--baseline", ""):
@@ -401,7 +401,7 @@ def compare(out, rows, baseline_dir):
         for k in COMPARED:
             t[k + "_baseline"], t[k] = b.get(k, ""), a.get(k, "")
         table.append(t)
-    benchlib.write_csv(os.path.join(out, "generalization_vs_baseline.csv"), table)
+    benchlib.write_csv(os.path.join(out, "generalization_vs_baseline.csv"), table, table="generalization_vs_baseline")
     print("\n### Against the baseline (%s)\n" % baseline_dir)
     print("| half | camera | rooms | " + " | ".join("%s base -> now" % k for k in COMPARED) + " | albedo wins base -> now |")
     print("|" + "---|" * (len(COMPARED) + 4))

@@ -221,7 +221,7 @@ def main():
         return 1
     benchlib.write_csv(os.path.join(out, "grain.csv"), rows)
     summ = summary(rows)
-    benchlib.write_csv(os.path.join(out, "grain_summary.csv"), summ)
+    benchlib.write_csv(os.path.join(out, "grain_summary.csv"), summ, table="grain")
     for s in summ:
         print(json.dumps(s))
     with benchlib.figure(os.path.join(out, "grain.png"), 1, 2, figsize=(11, 4)) as ax:

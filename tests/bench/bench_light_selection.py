@@ -21,6 +21,7 @@ def main():
     exe = os.path.join(build, "tests", "bench", "bench_light_selection")
     subprocess.run(["nice", "-n", "10", exe, path, w, h, opt("--spp", "16"), opt("--repeats", "3")], check=True)
     rows = list(csv.DictReader(open(path)))
+    benchlib.write_table("light_selection", rows, source=path)
     modes = sorted({r["mode"] for r in rows}, key=["spatial", "power", "auto"].index)
     print("| lights | " + " | ".join(f"{m} ms/spp | {m} noise" for m in modes) + " |")
     print("|---" * (1 + 2 * len(modes)) + "|")

@@ -156,7 +156,7 @@ def main():
     if not rows:
         return 1
     csvp = os.path.join(out, "lights.csv")
-    benchlib.write_csv(csvp, rows)
+    benchlib.write_csv(csvp, rows, table="lights")
     with open(os.path.join(out, "lights_objective.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=["scene", "seconds", "objective"])
         w.writeheader()

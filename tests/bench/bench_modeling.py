@@ -166,7 +166,7 @@ def main():
                     row["edge_rmse_do_nothing"] = round(float(np.sqrt(((photo - truth)[edge] ** 2).mean())), 5)
             rows.append(row)
     path = os.path.join(out, "bench_modeling.csv")
-    benchlib.write_csv(path, rows)
+    benchlib.write_csv(path, rows, table="modeling")
     for r in rows:
         print(json.dumps(r))
     print("wrote", path)

@@ -151,10 +151,7 @@ def report_convergence(out, room):
                          "independent_s_to_0.01": "%s%.3f" % (fi, ti), "speedup": ti / tc,
                          "equal_time_error_ratio": ratio, "final_spp": c[-1]["spp"],
                          "correlated_final_rmse": c[-1]["rmse"], "region_px": c[-1]["region_px"]})
-    with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
-        wr = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        wr.writeheader()
-        wr.writerows(rows)
+    benchlib.write_csv(os.path.join(out, "summary.csv"), rows, table=os.path.basename(out.rstrip("/")))
     print("| material | threads | s to RMSE 0.01, correlated | independent | speed-up | equal-time error ratio |")
     print("|---|---|---|---|---|---|")
     for r in rows:

@@ -296,7 +296,7 @@ def main():
     chosen = min(a_rows, key=lambda s: s["median_curve_error"])["setting"] if a_rows else "srgb"
     for s in summary:
         s["chosen_on_A"] = s["setting"] == chosen
-    benchlib.write_csv(os.path.join(out, "response_summary.csv"), summary)
+    benchlib.write_csv(os.path.join(out, "response_summary.csv"), summary, table="response")
     plot(os.path.join(out, "response.png"), summary, rows, chosen)
     print("chosen on half A:", chosen)
     for s in summary:

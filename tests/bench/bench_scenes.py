@@ -59,7 +59,7 @@ def main():
     if not rows:
         return 1
     csvp = os.path.join(out, "scenes_error_vs_time%s.csv" % tag)
-    benchlib.write_csv(csvp, rows)
+    benchlib.write_csv(csvp, rows, table="scenes" + tag)
     with benchlib.figure(os.path.join(out, "scenes_error_vs_time%s.png" % tag), 1, 2, figsize=(11, 4)) as ax:
         if ax is not None:
             plot(ax, rows, names)

@@ -1,6 +1,13 @@
 """What the benchmark scripts share: their options, the ../shared rooms and the harness's
-baselines, and CSV output. Imported by the scripts beside it (run them with /usr/bin/python3)."""
-import contextlib, csv, json, os, subprocess, sys
+baselines, CSV output and the Markdown tables of docs/bench/. Imported by the scripts beside it
+(run them with /usr/bin/python3).
+
+Run on its own it turns a benchmark's CSV into its table (for the C++ benchmarks, and for CSVs
+of earlier runs); --command names what wrote the CSV, --fresh says it ran just now (the table
+then gives today's date and load):
+    /usr/bin/python3 tests/bench/benchlib.py table CSV NAME --command "..." [--fresh] [--columns a,b,c]
+writes docs/bench/NAME.md (or under $INLAY_BENCH_TABLES)."""
+import contextlib, csv, datetime, json, os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -78,8 +85,9 @@ def harness_baselines(harness, sdir):
     return {json.loads(l)["scene"]: json.loads(l) for l in out}
 
 
-def write_csv(path, rows):
-    """Rows (dicts) to CSV; the columns are every key in the order first seen."""
+def write_csv(path, rows, table=None, columns=None):
+    """Rows (dicts) to CSV; the columns are every key in the order first seen. With `table`
+    (a name), the same rows also go to docs/bench/<table>.md (write_table), `columns` of them."""
     keys = []
     for r in rows:
         keys += [k for k in r if k not in keys]
@@ -87,3 +95,67 @@ def write_csv(path, rows):
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         w.writerows(rows)
+    if table:
+        write_table(table, rows, columns, source=path)
+
+
+def tables_dir():
+    """Where the Markdown tables go: $INLAY_BENCH_TABLES, else docs/bench/ of this checkout."""
+    return os.environ.get("INLAY_BENCH_TABLES", os.path.join(HERE, "..", "..", "docs", "bench"))
+
+
+def cell(v):
+    """A table cell: floats to 4 significant digits (whole from 10^4 on; integers as they are),
+    '|' escaped."""
+    if isinstance(v, str):
+        try:
+            v = int(v) if v.strip().lstrip("-").isdigit() else float(v)
+        except ValueError:
+            return v.replace("|", "\\|")
+    if isinstance(v, float):
+        if v != v:
+            return "-"
+        return "%.0f" % v if 1e4 <= abs(v) < 1e15 else "%.4g" % v
+    return "" if v is None else str(v)
+
+
+def write_table(name, rows, columns=None, source=None, command=None, converted=False):
+    """docs/bench/<name>.md: the rows (dicts) as a Markdown table under a line saying which
+    command wrote it and when, for docs/benchmarks.md to link. Replaces the previous table."""
+    keys = list(columns) if columns else []
+    if not keys:
+        for r in rows:
+            keys += [k for k in r if k not in keys]
+    out = tables_dir()
+    os.makedirs(out, exist_ok=True)
+    root = os.path.abspath(os.path.join(HERE, "..", ".."))
+    command = command or " ".join([os.path.relpath(os.path.abspath(sys.argv[0]), root)] + sys.argv[1:])
+    if converted:  # a CSV written earlier: its run's machine and load are not known here
+        said = "Converted on %s from `%s`, written by `%s`." % (
+            datetime.date.today().isoformat(), os.path.basename(source), command)
+    else:
+        said = "Written by `%s` on %s (%d cores, load average %.1f)." % (
+            command, datetime.date.today().isoformat(), os.cpu_count() or 0, os.getloadavg()[0])
+    lines = ["<!-- written by tests/bench/benchlib.py; do not edit: run the command below again -->", said,
+             "", "| " + " | ".join(keys) + " |", "|" + "---|" * len(keys)]
+    lines += ["| " + " | ".join(cell(r.get(k, "")) for k in keys) + " |" for r in rows]
+    path = os.path.join(out, name + ".md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("table:", os.path.relpath(path))
+    return path
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+if __name__ == "__main__":
+    a = args(__doc__, 3)
+    if a[0] != "table":
+        sys.stderr.write(__doc__.strip() + "\n")
+        sys.exit(2)
+    cols = option(a, "--columns", "")
+    write_table(a[2], read_csv(a[1]), cols.split(",") if cols else None, source=a[1],
+                command=option(a, "--command", "?"), converted="--fresh" not in a)

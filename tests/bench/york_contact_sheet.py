@@ -228,7 +228,7 @@ def main():
         return
     os.makedirs(out, exist_ok=True)
     rows, drawn = run_all(cli, york, verdicts)
-    benchlib.write_csv(os.path.join(out, "york_boxes_%s.csv" % label), rows)
+    benchlib.write_csv(os.path.join(out, "york_boxes_%s.csv" % label), rows, table="york_boxes_%s" % label)
     png = os.path.join(out, "york_boxes_%s.png" % label)
     draw_sheet(png, york, drawn, cols, thumb)
     small = benchlib.option(a, "--small", "")

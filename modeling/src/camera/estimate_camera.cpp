@@ -254,7 +254,6 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
 // Covariance of (omega, log phi, principal point) at the solution, Cauchy weights, noise scale
 // from the data.
 using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
 struct Uncertainty {
   Mat6 cov = Mat6::Identity() * 1e6;
   double logPhiSigma = 10;
@@ -262,47 +261,80 @@ struct Uncertainty {
   std::array<double, 3> angularSigmaRad{M_PI, M_PI, M_PI};
 };
 
+// A weak pull of all six parameters to the solution (information 1e-9): keeps the covariance
+// finite, and huge, along directions the lines leave free.
+struct RidgeCost {
+  double x0[6];
+  template <typename T>
+  bool operator()(const T* omega, const T* logPhi, const T* pp, T* r) const {
+    const T* x[6] = {omega, omega + 1, omega + 2, logPhi, pp, pp + 1};
+    for (int j = 0; j < 6; ++j) r[j] = (*x[j] - T(x0[j])) * T(std::sqrt(1e-9));
+    return true;
+  }
+};
+
+// The solve's problem at the solution, each segment's residual scaled by the square root of its
+// Cauchy(2) weight over the noise variance the weighted residuals give (IRLS at the optimum), for
+// ceres::Covariance; a held block (a locked focal, a held principal point) is constant.
+// `dataInfoLogPhi` gets the segments' own information on log phi.
+Mat6 covarianceAt(const std::vector<Seg>& segs, const Assignment& as, const Triplet& tr, const RefineSettings& rs,
+                  double* dataInfoLogPhi) {
+  double x[6] = {0, 0, 0, std::log(tr.phi), tr.pp.x(), tr.pp.y()};
+  std::vector<SegmentCost> costs;
+  std::vector<double> weights;
+  double sumWr2 = 0;
+  for (size_t i = 0; i < segs.size(); ++i) {
+    if (as.family[i] < 0) continue;
+    costs.push_back(costOf(segs[i], tr.d[as.family[i]], rs));
+    double r0 = 0;
+    costs.back()(x, x + 3, x + 4, &r0);
+    weights.push_back(1.0 / (1.0 + (r0 / 2.0) * (r0 / 2.0)));  // Cauchy(2) weight
+    sumWr2 += weights.back() * r0 * r0;
+  }
+  const size_t n = costs.size();
+  const double scale2 = std::max(1.0, n > 6 ? sumWr2 / double(n - 6) : 1.0);
+  ceres::Problem problem;
+  double* blocks[3] = {x, x + 3, x + 4};
+  *dataInfoLogPhi = 0;
+  for (size_t i = 0; i < n; ++i) {
+    costs[i].halfLenOverSigma *= std::sqrt(weights[i] / scale2);
+    auto* cost = new ceres::AutoDiffCostFunction<SegmentCost, 1, 3, 1, 2>(new SegmentCost(costs[i]));
+    double r = 0, dOmega[3], dLogPhi = 0, dPp[2];
+    double* jacobians[3] = {dOmega, &dLogPhi, dPp};
+    cost->Evaluate(blocks, &r, jacobians);
+    *dataInfoLogPhi += scale2 * dLogPhi * dLogPhi;
+    problem.AddResidualBlock(cost, nullptr, x, x + 3, x + 4);
+  }
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PriorCost, 1, 1>(
+                               new PriorCost{rs.prior.logPhi0, 1.0 / rs.prior.sigma}),
+                           nullptr, x + 3);
+  if (rs.principalSigma > 0)
+    problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PrincipalPriorCost, 2, 2>(
+                                 new PrincipalPriorCost{1.0 / rs.principalSigma}),
+                             nullptr, x + 4);
+  RidgeCost ridge{};
+  std::copy(x, x + 6, ridge.x0);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RidgeCost, 6, 3, 1, 2>(new RidgeCost(ridge)), nullptr, x,
+                           x + 3, x + 4);
+  if (rs.lockPhi) problem.SetParameterBlockConstant(x + 3);
+  if (!(rs.principalSigma > 0)) problem.SetParameterBlockConstant(x + 4);
+  ceres::Covariance::Options options;
+  options.algorithm_type = ceres::DENSE_SVD;
+  options.min_reciprocal_condition_number = 1e-300;  // the ridge keeps it invertible: never truncate or
+                                                     // refuse (Ceres would log the refusal to stderr)
+  options.num_threads = 1;
+  ceres::Covariance covariance(options);
+  const std::vector<const double*> all = {x, x + 3, x + 4};
+  Eigen::Matrix<double, 6, 6, Eigen::RowMajor> c = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>::Zero();
+  if (!covariance.Compute(all, &problem) || !covariance.GetCovarianceMatrix(all, c.data()) || !c.allFinite())
+    return Mat6::Identity() * 1e6;
+  return c;
+}
+
 Uncertainty uncertaintyOf(const std::vector<Seg>& segs, const Assignment& as, const Triplet& tr,
                           const RefineSettings& rs) {
   Uncertainty u;
-  Mat6 info = Mat6::Zero();
-  double sumWr2 = 0;
-  int n = 0;
-  for (size_t i = 0; i < segs.size(); ++i) {
-    const int k = as.family[i];
-    if (k < 0) continue;
-    const SegmentCost c = costOf(segs[i], tr.d[k], rs);
-    double x[6] = {0, 0, 0, std::log(tr.phi), tr.pp.x(), tr.pp.y()};
-    double r0;
-    c(x, x + 3, x + 4, &r0);
-    Vec6 g;
-    for (int j = 0; j < 6; ++j) {
-      const double hstep = 1e-6;
-      double xp[6], xm[6], rp, rm;
-      std::copy(x, x + 6, xp);
-      std::copy(x, x + 6, xm);
-      xp[j] += hstep;
-      xm[j] -= hstep;
-      c(xp, xp + 3, xp + 4, &rp);
-      c(xm, xm + 3, xm + 4, &rm);
-      g[j] = (rp - rm) / (2 * hstep);
-    }
-    const double w = 1.0 / (1.0 + (r0 / 2.0) * (r0 / 2.0));  // Cauchy(2) weight
-    info += w * g * g.transpose();
-    sumWr2 += w * r0 * r0;
-    ++n;
-  }
-  u.dataInfoLogPhi = info(3, 3);
-  const double scale2 = std::max(1.0, n > 6 ? sumWr2 / (n - 6) : 1.0);
-  Mat6 full = info / scale2;
-  full(3, 3) += 1.0 / (rs.prior.sigma * rs.prior.sigma);
-  if (rs.lockPhi) full(3, 3) += 1e12;
-  const double ppInfo = rs.principalSigma > 0 ? 1.0 / (rs.principalSigma * rs.principalSigma) : 1e12;
-  full(4, 4) += ppInfo;
-  full(5, 5) += ppInfo;
-  full += Mat6::Identity() * 1e-9;
-  u.cov = full.inverse();
-  if (!u.cov.allFinite()) u.cov = Mat6::Identity() * 1e6;
+  u.cov = covarianceAt(segs, as, tr, rs, &u.dataInfoLogPhi);
   u.logPhiSigma = std::sqrt(std::max(0.0, u.cov(3, 3)));
   const Eigen::Matrix3d covOmega = u.cov.topLeftCorner<3, 3>();
   for (int k = 0; k < 3; ++k) {

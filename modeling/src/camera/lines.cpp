@@ -36,33 +36,6 @@ cv::Mat binnedLuminance(const ImageF& im, int k) {
   return out;
 }
 
-// The 8-bit sRGB code of a linear value, as lround(255 * linearToSrgb(v)) but without a pow per
-// pixel: the code is the number of code boundaries at or below v (linearToSrgb is monotone), each
-// boundary found once by bisection on floats.
-class SrgbEncoder {
- public:
-  SrgbEncoder() {
-    for (int code = 1; code < 256; ++code) {
-      float lo = 0.f, hi = 1.f;  // code(lo) < code <= code(hi)
-      while (std::nextafter(lo, hi) < hi) {
-        const float mid = 0.5f * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        (codeOf(mid) >= code ? hi : lo) = mid;
-      }
-      boundary_[code - 1] = hi;
-    }
-  }
-  unsigned char operator()(float v) const {
-    if (!(v > 0.f)) return 0;
-    return static_cast<unsigned char>(std::upper_bound(boundary_.begin(), boundary_.end(), v) -
-                                      boundary_.begin());
-  }
-  static int codeOf(float v) { return int(std::lround(255.f * linearToSrgb(v))); }
-
- private:
-  std::array<float, 255> boundary_{};  // boundary_[c - 1]: the least v of code c
-};
-
 // Sub-pixel refinement of a detected segment (working pixels, centres at integers): along its
 // normal, the peak of the gradient component across it (parabola through the best sample and
 // its neighbours), one point per pixel of length; a line fitted to the peaks weighted by their
@@ -167,11 +140,6 @@ class EdgeRefiner {
 };
 
 }  // namespace
-
-unsigned char srgbCode8(float linear) {
-  static const SrgbEncoder encode;
-  return encode(linear);
-}
 
 DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, int maxSegments,
                                  const CancelToken* cancel) {

@@ -19,8 +19,7 @@ struct DetectedLines {
   std::shared_ptr<const PhotoEdges> edges;  // for the layout; null when too small
 };
 
-// lround(255 * linearToSrgb(linear)), by a table of the 255 code boundaries (no pow per pixel).
-unsigned char srgbCode8(float linear);
+using inlay::srgbCode8;  // image.h
 
 // Grey (luminance, sRGB-encoded) at a long side of at most maxWorkingSidePx, area-averaged
 // without ever holding a full-size grey copy; then OpenCV's FastLineDetector, each segment

@@ -16,17 +16,6 @@ namespace inlay {
 
 namespace {
 
-double srgbEncode(double x) {
-  if (!(x > 0)) return 0;
-  if (x >= 1) return 1;
-  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
-}
-double srgbDecode(double y) {
-  if (!(y > 0)) return 0;
-  if (y >= 1) return 1;
-  return y <= 0.04045 ? y / 12.92 : std::pow((y + 0.055) / 1.055, 2.4);
-}
-
 // The radiance warp W = S_s o T_t o (.)^p and its inverse, on [0,1].
 double warp(const ResponseParams& q, double x) {
   double u = std::pow(std::clamp(x, 0.0, 1.0), q.power);
@@ -92,9 +81,9 @@ std::string CameraResponse::describe() const {
 
 double CameraResponse::encode(double x) const {
   switch (family_) {
-    case ResponseFamily::Srgb: return srgbEncode(x);
+    case ResponseFamily::Srgb: return linearToSrgb(x);
     case ResponseFamily::Linear: return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
-    case ResponseFamily::ToeShoulder: return std::isfinite(x) ? srgbEncode(warp(params_, x)) : 0.0;
+    case ResponseFamily::ToeShoulder: return std::isfinite(x) ? linearToSrgb(warp(params_, x)) : 0.0;
   }
   return 0;
 }
@@ -102,9 +91,9 @@ double CameraResponse::encode(double x) const {
 double CameraResponse::decode(double y) const {
   if (!std::isfinite(y)) y = 0;
   switch (family_) {
-    case ResponseFamily::Srgb: return srgbDecode(y);
+    case ResponseFamily::Srgb: return srgbToLinear(y);
     case ResponseFamily::Linear: return std::clamp(y, 0.0, 1.0);
-    case ResponseFamily::ToeShoulder: return unwarp(params_, srgbDecode(y));
+    case ResponseFamily::ToeShoulder: return unwarp(params_, srgbToLinear(y));
   }
   return 0;
 }
@@ -128,7 +117,7 @@ void CameraResponse::buildTables() {
 
 unsigned char CameraResponse::encodeCode8(float v) const {
   if (family_ == ResponseFamily::Srgb)
-    return (unsigned char)std::lround(255.f * linearToSrgb(v));  // as image_io has always written
+    return srgbCode8(v);  // as image_io has always written
   if (!(v > 0.f)) return 0;
   // The first threshold above v is the code's upper bound.
   return (unsigned char)(std::upper_bound(thresholds8_.begin(), thresholds8_.end(), v) - thresholds8_.begin());
@@ -138,7 +127,7 @@ std::vector<unsigned char> srgbCodesOf(const ImageF& img) {
   std::vector<unsigned char> codes(img.pixelCount() * 3);
   for (size_t i = 0; i < img.pixelCount(); ++i)
     for (int c = 0; c < 3; ++c)
-      codes[i * 3 + size_t(c)] = detail::srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
+      codes[i * 3 + size_t(c)] = srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
   return codes;
 }
 
@@ -146,10 +135,10 @@ void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& respon
   const auto& table = response.table8();
   for (float& v : img.data) {
     if (bitsPerChannel <= 8) {
-      v = table[detail::srgbCode8(v)];
+      v = table[srgbCode8(v)];
     } else {
       const double levels = std::exp2(std::min(bitsPerChannel, 16)) - 1;
-      const double e = std::round(srgbEncode(v) * levels) / levels;
+      const double e = std::round(linearToSrgb(double(v)) * levels) / levels;
       v = float(response.decode(e));
     }
   }

@@ -109,4 +109,11 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec2>&
   return tris;
 }
 
+bool insideOrOnPolygon(const std::vector<Vec2>& polygon, const Vec2& p) {
+  std::vector<Point2> pts;
+  pts.reserve(polygon.size());
+  for (const Vec2& q : polygon) pts.push_back(toCgal(q));
+  return CGAL::bounded_side_2(pts.begin(), pts.end(), toCgal(p), K()) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
 }  // namespace inlay::detail

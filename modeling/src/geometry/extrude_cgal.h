@@ -22,4 +22,7 @@ Expected<std::vector<Vec2>> counterClockwiseSimplePolygon(const std::vector<Vec2
 // `polygon`, each counter-clockwise, covering exactly its inside.
 std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec2>& polygon);
 
+// Whether `p` lies inside a simple polygon or on its outline (CGAL's exact predicate).
+bool insideOrOnPolygon(const std::vector<Vec2>& polygon, const Vec2& p);
+
 }  // namespace inlay::detail

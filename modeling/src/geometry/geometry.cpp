@@ -92,44 +92,6 @@ Surface makeSurface(SurfaceKind kind, std::string name, bool supports, int group
   return s;
 }
 
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-bool pointInTriangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
-  return d1 >= 0 && d2 >= 0 && d3 >= 0;
-}
-
-// Ear clipping of a simple counter-clockwise polygon; returns index triples.
-std::vector<std::array<uint32_t, 3>> triangulateSimple(const std::vector<Vec2>& pts) {
-  std::vector<std::array<uint32_t, 3>> tris;
-  std::vector<uint32_t> idx(pts.size());
-  for (size_t i = 0; i < pts.size(); ++i) idx[i] = uint32_t(i);
-  size_t guard = 0;
-  while (idx.size() > 3 && guard++ < pts.size() * pts.size() + 8) {
-    bool clipped = false;
-    for (size_t i = 0; i < idx.size(); ++i) {
-      const uint32_t ia = idx[(i + idx.size() - 1) % idx.size()], ib = idx[i],
-                     ic = idx[(i + 1) % idx.size()];
-      const Vec2 &a = pts[ia], &b = pts[ib], &c = pts[ic];
-      if (cross2(b - a, c - b) <= 0) continue;  // reflex or degenerate
-      bool inside = false;
-      for (uint32_t j : idx)
-        if (j != ia && j != ib && j != ic && pointInTriangle(pts[j], a, b, c)) {
-          inside = true;
-          break;
-        }
-      if (inside) continue;
-      tris.push_back({ia, ib, ic});
-      idx.erase(idx.begin() + long(i));
-      clipped = true;
-      break;
-    }
-    if (!clipped) break;  // numerically degenerate remainder: fan it
-  }
-  for (size_t i = 1; i + 1 < idx.size(); ++i) tris.push_back({idx[0], idx[i], idx[i + 1]});
-  return tris;
-}
-
 }  // namespace
 
 std::optional<SurfaceHit> SceneGeometry::intersect(const Ray& ray, bool supportsOnly,
@@ -466,7 +428,7 @@ SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>&
       top.meshWorld.normals.push_back(Vec3f(0, 1, 0));
       pts2.emplace_back(p.x(), -p.z());
     }
-    for (const auto& t : triangulateSimple(pts2)) {
+    for (const auto& t : detail::triangulatePolygon(pts2)) {
       // (x, -z) counter-clockwise is clockwise in (x, z): flip so the normal points up.
       top.meshWorld.triangles.push_back({t[0], t[2], t[1]});
     }

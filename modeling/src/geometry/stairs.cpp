@@ -115,18 +115,6 @@ void snapRectilinear(std::vector<Vec2>& q, double snapDeg) {
   average(plumb, 0);
 }
 
-// Even-odd point-in-polygon.
-bool inside(const std::vector<Vec2>& poly, const Vec2& p) {
-  bool in = false;
-  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 &a = poly[i], &b = poly[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-      in = !in;
-  }
-  return in;
-}
-
 const char* wallName(SurfaceKind k) {
   return k == SurfaceKind::WallLeft ? "left" : k == SurfaceKind::WallRight ? "right" : "back";
 }
@@ -263,7 +251,7 @@ Expected<Extrusion> stairsFromProfile(const Camera& camera, const RoomBox& box,
                      std::to_string(w.oppositeM) + " m)"};
   const Vec3 eye(0, camera.heightM, 0);
   const double across = (eye - w.origin).dot(w.inward);
-  if (across > 0 && across < widthM && inside(*ccw, Vec2((eye - w.origin).dot(w.u), eye.y())))
+  if (across > 0 && across < widthM && detail::insideOrOnPolygon(*ccw, Vec2((eye - w.origin).dot(w.u), eye.y())))
     return Error{"", key + ".width_m",
                  "the stairs would enclose the camera: give a narrower width_m"};
   auto prism = detail::buildPrism(*ccw, w.origin, w.u, Vec3(0, 1, 0), widthM * w.inward, key);

@@ -6,7 +6,6 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cerrno>
@@ -139,9 +138,9 @@ std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels, const 
         out[i * size_t(outChannels) + size_t(c)] = response->encodeCode8(p[linear.channels == 1 ? 0 : c]);
         continue;
       }
-      const float v = c < 3 ? linearToSrgb(p[linear.channels == 1 ? 0 : c])
-                            : std::clamp(p[c], 0.f, 1.f);  // alpha stays linear
-      out[i * size_t(outChannels) + size_t(c)] = (unsigned char)std::lround(v * 255.f);
+      out[i * size_t(outChannels) + size_t(c)] =
+          c < 3 ? srgbCode8(p[linear.channels == 1 ? 0 : c])
+                : (unsigned char)std::lround(std::clamp(p[c], 0.f, 1.f) * 255.f);  // alpha stays linear
     }
   }
   return out;
@@ -214,20 +213,6 @@ Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
     return Error{path, "", oiioError("cannot encode the image", wrote ? out->geterror() : writeErr)};
   out.reset();
   return writeFileAtomically(path, std::string(bytes.begin(), bytes.end()));
-}
-
-uint32_t crc32Png(const unsigned char* data, size_t n, uint32_t crc) {
-  static const auto table = [] {
-    std::array<uint32_t, 256> t{};
-    for (uint32_t i = 0; i < 256; ++i) {
-      uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  for (size_t i = 0; i < n; ++i) crc = table[(crc ^ data[i]) & 0xFF] ^ (crc >> 8);
-  return crc;
 }
 
 uint32_t bigEndian32(const unsigned char* p) {
@@ -325,9 +310,9 @@ Status checkPng(const std::string& path, const ImageLimits& limits) {
     }
     if (std::fread(data.data(), 1, length, f) != length || std::fread(crc, 1, 4, f) != 4)
       return Error{path, "", "truncated PNG: the file ends inside " + where};
-    uint32_t c = crc32Png(h + 4, 4, 0xFFFFFFFFu);
-    c = crc32Png(data.data(), data.size(), c) ^ 0xFFFFFFFFu;
-    if (c != bigEndian32(crc))
+    // zlib's crc32() is the PNG CRC (ISO 3309, pre- and post-inverted), over type and data.
+    uLong c = crc32(crc32(0L, h + 4, 4), data.data(), uInt(data.size()));
+    if (uint32_t(c) != bigEndian32(crc))
       return Error{path, "", "corrupt PNG: " + where + " fails its CRC check"};
     if (type == "IHDR" && length == 13) {
       png.width = bigEndian32(data.data());

@@ -13,6 +13,7 @@
 #include "inlay/render/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace inlay {
 
@@ -31,5 +32,12 @@ struct ShaftEstimate {
 Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photoLinear,
                                      const Camera& camera, const SceneGeometry& geometry,
                                      const std::string& key);
+
+namespace detail {
+// Otsu's threshold between the two modes of `values` (OpenCV's, on 256 levels between their
+// extremes) and the mean of the values on each side. Constant values: both means and the
+// threshold are that value.
+double otsuThreshold(const std::vector<double>& values, double* meanLow, double* meanHigh);
+}  // namespace detail
 
 }  // namespace inlay

@@ -8,7 +8,10 @@
 
 #include "inlay/modeling/core.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace inlay {
@@ -39,16 +42,74 @@ struct ImageF {
   }
 };
 
-// The sRGB transfer functions (IEC 61966-2-1), per channel; input clamped to [0, 1] on encode.
-inline float srgbToLinear(float v) {
-  if (!(v > 0.f)) return 0.f;
-  if (v >= 1.f) return 1.f;
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+// The sRGB transfer functions (IEC 61966-2-1), per channel, in float or double; input clamped to
+// [0, 1] (NaN to 0). The one definition of the curve: every sRGB conversion goes through these.
+template <class T>
+inline T srgbToLinear(T v) {
+  static_assert(std::is_floating_point_v<T>);
+  if (!(v > T(0))) return T(0);
+  if (v >= T(1)) return T(1);
+  return v <= T(0.04045) ? v / T(12.92) : std::pow((v + T(0.055)) / T(1.055), T(2.4));
 }
-inline float linearToSrgb(float v) {
-  if (!(v > 0.f)) return 0.f;  // also maps NaN to 0
-  if (v >= 1.f) return 1.f;
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.f / 2.4f) - 0.055f;
+template <class T>
+inline T linearToSrgb(T v) {
+  static_assert(std::is_floating_point_v<T>);
+  if (!(v > T(0))) return T(0);  // also maps NaN to 0
+  if (v >= T(1)) return T(1);
+  return v <= T(0.0031308) ? T(12.92) * v : T(1.055) * std::pow(v, T(1) / T(2.4)) - T(0.055);
+}
+
+// d linearToSrgb / dv: the error a small linear error becomes on screen. 12.92 on the linear
+// toe; above 1 the slope at 1 (displays clip, so this bounds it).
+inline double srgbSlope(double v) {
+  if (!(v > 0.0031308)) return 12.92;
+  v = std::min(v, 1.0);
+  return 1.055 / 2.4 * std::pow(v, 1.0 / 2.4 - 1.0);
+}
+
+namespace detail {
+
+// The 8-bit sRGB code of a linear value, exactly lround(255 * linearToSrgb(v)) but without a
+// pow per value: the code is the number of code boundaries at or below v (linearToSrgb is
+// monotone), each boundary found once by bisection on floats; a coarse table of 4096 buckets
+// gives the first code to try, so a value takes a step or two.
+class SrgbEncoder {
+ public:
+  SrgbEncoder() {
+    for (int code = 1; code < 256; ++code) {
+      float lo = 0.f, hi = 1.f;  // code(lo) < code <= code(hi)
+      while (std::nextafter(lo, hi) < hi) {
+        const float mid = 0.5f * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (codeOf(mid) >= code ? hi : lo) = mid;
+      }
+      boundary_[size_t(code - 1)] = hi;
+    }
+    for (int b = 0; b < kBuckets; ++b)  // the code of the bucket's least value
+      start_[size_t(b)] = (unsigned char)(std::upper_bound(boundary_.begin(), boundary_.end(), float(b) / kBuckets) -
+                                          boundary_.begin());
+  }
+  unsigned char operator()(float v) const {
+    if (!(v > 0.f)) return 0;  // also NaN
+    if (v >= 1.f) return 255;
+    unsigned code = start_[size_t(v * kBuckets)];
+    while (code < 255 && v >= boundary_[code]) ++code;
+    return (unsigned char)code;
+  }
+  static int codeOf(float v) { return int(std::lround(255.f * linearToSrgb(v))); }
+
+ private:
+  static constexpr int kBuckets = 4096;
+  std::array<float, 255> boundary_{};  // boundary_[c - 1]: the least v of code c
+  std::array<unsigned char, kBuckets> start_{};
+};
+
+}  // namespace detail
+
+// The 8-bit sRGB code of a linear value: lround(255 * linearToSrgb(linear)), exactly.
+inline unsigned char srgbCode8(float linear) {
+  static const detail::SrgbEncoder encode;
+  return encode(linear);
 }
 
 }  // namespace inlay

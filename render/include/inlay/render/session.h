@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace inlay {
@@ -68,6 +69,27 @@ class FrameSink {
  public:
   virtual ~FrameSink() = default;
   virtual void onFrame(std::shared_ptr<const RenderFrame> frame) = 0;
+};
+
+// Keeps the newest frame for a thread that waits for the render (inlay-cli's render and batch);
+// `onEach`, when given, also sees every frame on the render thread, one at a time.
+class LastFrameSink : public FrameSink {
+ public:
+  explicit LastFrameSink(std::function<void(const RenderFrame&)> onEach = {}) : onEach_(std::move(onEach)) {}
+  void onFrame(std::shared_ptr<const RenderFrame> frame) override {
+    std::lock_guard<std::mutex> lock(m_);
+    if (onEach_) onEach_(*frame);
+    last_ = std::move(frame);
+  }
+  std::shared_ptr<const RenderFrame> last() const {
+    std::lock_guard<std::mutex> lock(m_);
+    return last_;
+  }
+
+ private:
+  mutable std::mutex m_;
+  std::shared_ptr<const RenderFrame> last_;
+  std::function<void(const RenderFrame&)> onEach_;
 };
 
 struct SessionOptions {
