@@ -597,5 +597,36 @@ TEST(Lighting, FitResidualIsLowestForTheTrueRadiance) {
   EXPECT_GT(bentDown, 1.2 * truth);
 }
 
+// LightingEstimate::vignetting: the light fit's residual shows a radial fall-off put on the
+// photo (1 - v r^2, r^2 over the corner's), and little where there is none.
+TEST(Lighting, ResidualShowsTheVignettingPutOnAPhoto) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 32);
+  LightingOptions opt;
+  opt.gatherSamples = 32;
+  opt.objective = false;
+  const ImageF mask = lightMaskOf(r);
+  auto estimateOf = [&](double v) {
+    ImageF photo = r.photo;
+    const double cx = photo.width / 2.0, cy = photo.height / 2.0;
+    for (int y = 0; y < photo.height; ++y)
+      for (int x = 0; x < photo.width; ++x) {
+        const double r2 = ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy)) / (cx * cx + cy * cy);
+        for (int c = 0; c < 3; ++c) photo.at(x, y, c) *= float(1 - v * r2);
+      }
+    auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+    EXPECT_TRUE(light.ok());
+    const auto est = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
+    EXPECT_TRUE(est.ok());
+    return est.ok() ? std::make_pair(est->vignetting, est->vignettingResidualRatio) : std::make_pair(-1.0, -1.0);
+  };
+  const auto none = estimateOf(0), strong = estimateOf(0.35);
+  std::printf("vignetting: none -> %.2f (residual x %.3f), 0.35 -> %.2f (residual x %.3f)\n", none.first,
+              none.second, strong.first, strong.second);
+  EXPECT_LE(none.first, 0.08);
+  EXPECT_NEAR(strong.first, 0.35, 0.12);
+  EXPECT_LT(strong.second, 0.95);
+  EXPECT_LE(strong.second, 1.0);
+}
+
 }  // namespace
 }  // namespace inlay

@@ -707,8 +707,10 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     std::fprintf(stderr, "inlay-cli: decomposition %s\n",
                  (rerun ? rerun->report : le.decomposeReport).c_str());
   if (!a.quiet && std::isfinite(le.fitResidualRelative))
-    std::fprintf(stderr, "inlay-cli: light fit: relative residual %.5f (rms log %.5f)\n",
-                 le.fitResidualRelative, le.fitRmsLog);
+    std::fprintf(stderr,
+                 "inlay-cli: light fit: relative residual %.5f (rms log %.5f); vignetting as the "
+                 "residual shows it %.2f (residual x %.3f)\n",
+                 le.fitResidualRelative, le.fitRmsLog, le.vignetting, le.vignettingResidualRatio);
   return 0;
 }
 

@@ -406,6 +406,7 @@ struct LightingFit {
   void storeFittedLights();
   void perPixelAlbedo();
   void relativeFitResidual();
+  void vignettingFromResidual();
 };
 
 // Step 1: the first surface behind every pixel.
@@ -1020,6 +1021,55 @@ void LightingFit::relativeFitResidual() {
   if (spread > 0) out.fitResidualRelative = median(residual) / spread;
 }
 
+// LightingEstimate::vignetting: per fit pixel the log residual against its surface's fitted
+// albedo (mean over the channels) and its squared radius; then the v whose fall-off, with a
+// median offset per surface, leaves the least mean absolute residual.
+void LightingFit::vignettingFromResidual() {
+  std::vector<double> logQ, r2;
+  std::vector<int> surface;
+  const double cx = W / 2.0, cy = H / 2.0, corner2 = cx * cx + cy * cy;
+  for (size_t idx : candidates) {
+    const int x = int(idx % W), y = int(idx / W);
+    if (saturated(x, y)) continue;
+    double sum = 0;
+    int n = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double r = shadingFree.at(x, y, c), rhoS = rho[size_t(ps[idx].surface)][size_t(c)];
+      if (r > 0 && rhoS > 0 && std::isfinite(r)) sum += std::log(r / rhoS), ++n;
+    }
+    if (n == 0) continue;
+    logQ.push_back(sum / n);
+    r2.push_back(((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy)) / corner2);
+    surface.push_back(ps[idx].surface);
+  }
+  if (logQ.size() < 100) return;
+  std::vector<std::vector<double>> perSurface(S);
+  auto meanAbsResidual = [&](double v) {
+    for (auto& p : perSurface) p.clear();
+    for (size_t i = 0; i < logQ.size(); ++i)
+      perSurface[size_t(surface[i])].push_back(logQ[i] - std::log(1 - v * r2[i]));
+    std::vector<double> offset(S, 0.0);
+    for (size_t s = 0; s < S; ++s)
+      if (!perSurface[s].empty()) {
+        auto& p = perSurface[s];
+        std::nth_element(p.begin(), p.begin() + long(p.size() / 2), p.end());
+        offset[s] = p[p.size() / 2];
+      }
+    double cost = 0;
+    for (size_t i = 0; i < logQ.size(); ++i)
+      cost += std::abs(logQ[i] - std::log(1 - v * r2[i]) - offset[size_t(surface[i])]);
+    return cost / double(logQ.size());
+  };
+  const double none = meanAbsResidual(0);
+  double best = none, bestV = 0;
+  for (int k = 1; k <= 60; ++k) {
+    const double cost = meanAbsResidual(0.01 * k);
+    if (cost < best) best = cost, bestV = 0.01 * k;
+  }
+  out.vignetting = bestV;
+  out.vignettingResidualRatio = none > 0 ? best / none : 1;
+}
+
 // Step 6, the decomposition: colour Retinex from the photo alone, scaled per channel so that its
 // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then the
 // geometry-aware objective, whose data terms tie rho * Gamma to the photo.
@@ -1188,6 +1238,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   if (!fit.gatherAndFit()) return cancelled();
   fit.perPixelAlbedo();
   fit.relativeFitResidual();
+  fit.vignettingFromResidual();
   Decomposer decomposer(fit);
   if (auto error = decomposer.run()) return *error;
   decomposer.surfaceMeanAlbedo();

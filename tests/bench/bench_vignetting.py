@@ -27,8 +27,13 @@ vignetting, render seconds), medians per half and reading to OUT/vignetting_summ
 OUT/vignetting.png plots the object RMSE of each reading against srgb_exr per variant (left)
 and against the camera's vignetting (right). Half A = odd rooms, half B = even rooms.
 
+--estimate (instead of the readings): `inlay-cli decompose` on each variant's photo (read as
+sRGB) prints the vignetting its light fit's residual shows (LightingEstimate::vignetting); rows
+with the camera's true vignetting go to OUT/vignetting_estimate.csv, the plot (estimate against
+truth) to OUT/vignetting_estimate.png.
+
 usage: bench_vignetting.py INLAY_CLI [--out DIR] [--seeds 1] [--rooms t01,t03]
-                           [--readings srgb,srgb_exr,...] [--seconds 10 | --spp N]
+                           [--readings srgb,srgb_exr,...] [--seconds 10 | --spp N] [--estimate]
 """
 import json, os, statistics, subprocess, sys
 
@@ -128,6 +133,43 @@ def run_one(cli, harness, d, cam, reading, seconds, spp, work):
                                      text=True, check=True).stdout)
 
 
+def estimate_rows(cli, harness, variants, out):
+    """The vignetting the light fit's residual shows, against the camera's."""
+    import re
+    rows = []
+    for room, seed, d in variants:
+        cam = json.load(open(os.path.join(d, "camera_variant.json")))
+        work = os.path.join(out, "estimate", "%s-s%s" % (room, seed))
+        os.makedirs(work, exist_ok=True)
+        sf = os.path.join(work, "scene.json")
+        subprocess.run([sys.executable, harness, "scene", d, sf], check=True, capture_output=True)
+        j = json.load(open(sf))
+        j["camera"]["response"] = "srgb"
+        json.dump(j, open(sf, "w"), indent=1)
+        r = subprocess.run([cli, "decompose", sf, "--albedo", os.path.join(work, "albedo.exr")],
+                           capture_output=True, text=True)
+        m = re.search(r"vignetting as the residual shows it ([0-9.]+) \(residual x ([0-9.]+)\)", r.stderr)
+        if r.returncode != 0 or not m:
+            sys.stderr.write(r.stderr[-400:])
+            continue
+        rows.append({"room": room, "seed": seed, "half": "A" if int(room[1:]) % 2 else "B",
+                     "curve": cam["curve"], "true_vignetting": round(cam.get("vignetting", 0.0), 3),
+                     "estimated_vignetting": float(m.group(1)), "residual_ratio": float(m.group(2))})
+        print(json.dumps(rows[-1]), flush=True)
+        benchlib.write_csv(os.path.join(out, "vignetting_estimate.csv"), rows)
+    with benchlib.figure(os.path.join(out, "vignetting_estimate.png"), figsize=(5, 4.5)) as ax:
+        if ax is not None and rows:
+            for half in ("A", "B"):
+                h = [r for r in rows if r["half"] == half]
+                ax.scatter([r["true_vignetting"] for r in h], [r["estimated_vignetting"] for r in h],
+                           label="half " + half, s=20)
+            ax.plot([0, 0.6], [0, 0.6], "k:", lw=0.8)
+            ax.set_xlabel("camera's vignetting (camera_variant.json)")
+            ax.set_ylabel("estimated from the light fit's residual")
+            ax.legend()
+    return rows
+
+
 def summarise(rows, readings):
     out = []
     for half in ("A", "B"):
@@ -179,6 +221,9 @@ def main():
     seconds = float(opt("--seconds", "10"))
     spp = int(opt("--spp", "0"))
     variants = br.make_variants(train, rooms, seeds, os.path.join(out, "variants"))
+    if "--estimate" in sys.argv:
+        estimate_rows(cli, harness, variants, out)
+        return 0
     rows = []
     csv_path = os.path.join(out, "vignetting.csv")
     for room, seed, d in variants:
