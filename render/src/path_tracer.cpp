@@ -64,6 +64,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <utility>
 
 namespace inlay {
@@ -579,6 +581,18 @@ struct PathTracer::Impl {
                                // after a transmitting BSDF (light selection saw every side)
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
+
+  void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
+                   RayCounters& counters) const;
+  template <class RenderOne>
+  bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, const CancelToken* cancel,
+                    RenderOne&& renderOne) const;
+  mutable std::mutex arenaMutex;
+  mutable std::shared_ptr<tbb::task_arena> arena;
+  mutable int arenaThreads = -1;
+  std::shared_ptr<tbb::task_arena> arenaFor(int threads) const;
+  template <class RenderTile>
+  bool forEachTile(int width, int height, int threads, const CancelToken* cancel, RenderTile&& renderTile) const;
 
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                  bool* firstHitIsObject) const;
@@ -1188,78 +1202,102 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
 
-bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
-                            int firstSample, int count, uint32_t seed,
-                            const CancelToken* cancel) const {
-  const Impl& d = *impl_;
+// One pixel's samples [firstSample, firstSample + count), summed in double and added to the
+// buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
+void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count,
+                                   uint32_t seed, RayCounters& counters) const {
+  const Camera& cam = scene.camera;
+  const Vec3 eye = cam.centreWorld();
+  // Buffers may be a different size from the camera's pixel frame: scale into it.
+  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
+  double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
+  const Vec3 photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
+  for (int k = 0; k < count; ++k) {
+    const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
+    const auto jitter = rng.get2(0);
+    const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
+    PathState st;
+    st.origin = eye;
+    st.dir = cam.directionThroughPixel(px);
+    Sums sums;
+    bool objectFirst = false;
+    tracePath(Mode::Shared, st, rng, sums, &objectFirst);
+    counters += sums.counters;
+    if (!sums.with.allFinite() || !sums.without.allFinite()) {
+      nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
+      continue;  // dropped: counts as a sample of zero in both renders
+    }
+    sumW += sums.with;
+    sumWo += sums.without;
+    sumMask += objectFirst ? 1.0 : 0.0;
+    sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
+    const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
+    sumC += change;
+    sumCSq += change.squaredNorm() / 3.0;
+  }
+  float* w = buffers.sumWith.pixel(x, y);
+  float* wo = buffers.sumWithout.pixel(x, y);
+  float* ch = buffers.sumChange.pixel(x, y);
+  for (int c = 0; c < 3; ++c) {
+    w[c] += float(sumW[c]);
+    wo[c] += float(sumWo[c]);
+    ch[c] += float(sumC[c]);
+  }
+  buffers.sumChangeSq.at(x, y) += float(sumCSq);
+  buffers.sumMask.at(x, y) += float(sumMask);
+  buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
+  buffers.samples[size_t(y) * buffers.width + x] += count;
+}
+
+// Renders the pixels of [x0,x1) x [y0,y1) (clipped to the buffers) by `renderOne(x, y, counters)`
+// with flush-to-zero on and the ray counters published once at the end; false when `cancel`
+// stopped it (checked per pixel).
+template <class RenderOne>
+bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                                    const CancelToken* cancel, RenderOne&& renderOne) const {
   INLAY_CHECK(buffers.width > 0 && buffers.height > 0 &&
               buffers.samples.size() == size_t(buffers.width) * buffers.height);
   x0 = std::max(0, x0), y0 = std::max(0, y0);
   x1 = std::min(buffers.width, x1), y1 = std::min(buffers.height, y1);
-  const Camera& cam = d.scene.camera;
-  if (cam.widthPx <= 0 || cam.heightPx <= 0) return true;
-  // Buffers may be a different size from the camera's pixel frame: scale into it.
-  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
-  const Vec3 eye = cam.centreWorld();
+  if (scene.camera.widthPx <= 0 || scene.camera.heightPx <= 0) return true;
   DenormalsOffScope ftz;
   RayCounters rectCounters;  // published once, when the rect ends or is cancelled
   struct Publish {
     const Impl& d;
     const RayCounters& c;
     ~Publish() { d.counters.add(c); }
-  } publish{d, rectCounters};
+  } publish{*this, rectCounters};
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       if (cancel && cancel->shouldStop()) return false;
-      Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
-      double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
-      const Vec3 photo = d.photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
-      for (int k = 0; k < count; ++k) {
-        const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
-        const auto jitter = rng.get2(0);
-        const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
-        Impl::PathState st;
-        st.origin = eye;
-        st.dir = cam.directionThroughPixel(px);
-        Impl::Sums sums;
-        bool objectFirst = false;
-        d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-        rectCounters += sums.counters;
-        if (!sums.with.allFinite() || !sums.without.allFinite()) {
-          d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
-          continue;  // dropped: counts as a sample of zero in both renders
-        }
-        sumW += sums.with;
-        sumWo += sums.without;
-        sumMask += objectFirst ? 1.0 : 0.0;
-        sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
-        const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
-        sumC += change;
-        sumCSq += change.squaredNorm() / 3.0;
-      }
-      float* w = buffers.sumWith.pixel(x, y);
-      float* wo = buffers.sumWithout.pixel(x, y);
-      float* ch = buffers.sumChange.pixel(x, y);
-      for (int c = 0; c < 3; ++c) {
-        w[c] += float(sumW[c]);
-        wo[c] += float(sumWo[c]);
-        ch[c] += float(sumC[c]);
-      }
-      buffers.sumChangeSq.at(x, y) += float(sumCSq);
-      buffers.sumMask.at(x, y) += float(sumMask);
-      buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
-      buffers.samples[size_t(y) * buffers.width + x] += count;
+      renderOne(x, y, rectCounters);
     }
   return true;
 }
 
-bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
-                        int threads, const CancelToken* cancel) const {
-  const int tilesX = (buffers.width + kTileSize - 1) / kTileSize;
-  const int tilesY = (buffers.height + kTileSize - 1) / kTileSize;
+// The arena render() and renderCounts() run their tiles in, kept from one call to the next
+// (the session's waves) and made again only when the thread count changes.
+std::shared_ptr<tbb::task_arena> PathTracer::Impl::arenaFor(int threads) const {
+  std::lock_guard<std::mutex> lock(arenaMutex);
+  if (!arena || arenaThreads != threads) {
+    const int concurrency = threads > 0 ? threads : int(tbb::task_arena::automatic);
+    arena = std::make_shared<tbb::task_arena>(concurrency);
+    arenaThreads = threads;
+  }
+  return arena;
+}
+
+// Calls renderTile(x0, y0, x1, y1) for every kTileSize tile of a width x height frame in
+// parallel; false when a tile returned false or `cancel` stopped the wave.
+template <class RenderTile>
+bool PathTracer::Impl::forEachTile(int width, int height, int threads, const CancelToken* cancel,
+                                   RenderTile&& renderTile) const {
+  const int tilesX = (width + kTileSize - 1) / kTileSize;
+  const int tilesY = (height + kTileSize - 1) / kTileSize;
   std::atomic<bool> stopped{false};
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  const std::shared_ptr<tbb::task_arena> a = arenaFor(threads);
+  a->execute([&] {
     parallelFor(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& r) {
       for (int t = r.begin(); t != r.end(); ++t) {
         if (stopped.load(std::memory_order_relaxed) || (cancel && cancel->shouldStop())) {
@@ -1267,13 +1305,39 @@ bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count
           return;
         }
         const int tx = t % tilesX, ty = t / tilesX;
-        if (!renderRect(buffers, tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize,
-                        (ty + 1) * kTileSize, firstSample, count, seed, cancel))
-          stopped = true;
+        if (!renderTile(tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize)) stopped = true;
       }
     });
   });
   return !stopped.load();
+}
+
+bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                            int firstSample, int count, uint32_t seed,
+                            const CancelToken* cancel) const {
+  const Impl& d = *impl_;
+  return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
+    d.renderPixel(buffers, x, y, firstSample, count, seed, counters);
+  });
+}
+
+bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
+                        int threads, const CancelToken* cancel) const {
+  return impl_->forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+    return renderRect(buffers, x0, y0, x1, y1, firstSample, count, seed, cancel);
+  });
+}
+
+bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed,
+                              int threads, const CancelToken* cancel) const {
+  const Impl& d = *impl_;
+  INLAY_CHECK(counts.size() == buffers.samples.size());
+  return d.forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+    return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
+      const size_t i = size_t(y) * buffers.width + x;
+      if (counts[i] > 0) d.renderPixel(buffers, x, y, buffers.samples[i], counts[i], seed, counters);
+    });
+  });
 }
 
 }  // namespace inlay
