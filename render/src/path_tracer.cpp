@@ -40,9 +40,10 @@
 // (pairs are 2D-stratified).
 //
 // Occluder cards (SurfaceKind::OccluderCard, a matte standing in the room): a camera or bounce
-// ray that meets one passes on with probability 1 - alpha there (stochastic alpha test with
-// the dimension of the vertex it looks for; with- and without-paths draw the same number), and
-// is otherwise room. Shadow rays get the same stochastic test inside an Embree occlusion filter,
+// ray that meets one passes on with probability 1 - alpha there, and is otherwise room: a
+// stochastic alpha test inside an Embree intersection filter, with the number of the vertex's
+// dimension it looks for, carried in the ray's intersect context (with- and without-paths draw
+// the same number; several cards on one ray share it, so their passes are correlated). Shadow rays get the same stochastic test inside an Embree occlusion filter,
 // whose number is a hash of the ray and the hit distance (the filter has no sampler): shadows
 // behind a matte's soft edge are soft, and the with- and without-scene tests of one shadow ray
 // agree.
@@ -163,6 +164,23 @@ double triangleRoundOff(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 32.0 * 1.1920929e-7 * std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
 }
 
+// The intersect context of a camera or bounce ray: Embree's, then the number the occluder-card
+// filter tests against the card's alpha (u < alpha: the card is hit; u < 0: every card is).
+struct CardPassContext {
+  RTCIntersectContext base;  // first: the filter gets a pointer to it
+  double u = -1;
+};
+
+// A camera or bounce ray passes an occluder card where u >= alpha (probability 1 - alpha).
+void cardIntersectFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
+  const double u = reinterpret_cast<const CardPassContext*>(args->context)->u;
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] != -1) continue;
+    if (u >= card->alphaAt(filterRay(args, k).hitPoint())) args->valid[k] = 0;
+  }
+}
+
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
   return a2 + b2 > 0 ? a2 / (a2 + b2) : 0.0;
@@ -182,6 +200,7 @@ struct PathTracer::Impl {
   RTCScene sunWithoutScene = nullptr;
   std::vector<SunData> suns;
   unsigned surfaceCount = 0;
+  bool hasCards = false;  // some room surface is an occluder card with a matte (its filters set)
   std::vector<LightData> lights;
   std::vector<MeshLightData> meshLights;  // NEE sources lights.size() + k
   std::vector<ObjectData> objects;
@@ -247,11 +266,13 @@ struct PathTracer::Impl {
     }
   }
 
-  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear) const {
+  // The closest hit; occluder cards are passed where cardU >= their alpha (cardU < 0: never).
+  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcIntersect1(scene, &ctx, &rh);
+    CardPassContext ctx;
+    rtcInitIntersectContext(&ctx.base);
+    ctx.u = cardU;
+    rtcIntersect1(scene, &ctx.base, &rh);
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.t = rh.ray.tfar;
@@ -307,20 +328,6 @@ struct PathTracer::Impl {
   }
 
   const TriangleMesh& scene_surface(unsigned id) const { return scene.room.surfaces[id].meshWorld; }
-
-  // intersect(), passing through occluder cards with probability 1 - alpha (u in [0, 1)).
-  // Several cards on one ray share u (their passes are correlated, not independent).
-  Hit intersectThroughCards(RTCScene s, const Vec3& origin, const Vec3& dir, double tNear,
-                            double u) const {
-    Hit hit = intersect(s, origin, dir, tNear);
-    for (int crossed = 0; crossed < 16 && hit.kind == Hit::Kind::Room; ++crossed) {
-      const Surface& surf = scene.room.surfaces[size_t(hit.index)];
-      if (surf.kind != SurfaceKind::OccluderCard || !surf.cardAlpha) break;
-      if (u < surf.cardAlpha->alphaAt(hit.point)) break;
-      hit = intersect(s, origin, dir, hit.t + rayEpsilon(hit.point));
-    }
-    return hit;
-  }
 
   static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
     const double len = n.norm();
@@ -730,7 +737,7 @@ Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRn
   if (options.rayLog)
     logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir, st.tNear, 3.4e38);
   const int64_t t0 = rayClockNs();
-  const Hit hit = intersectThroughCards(s, st.origin, st.dir, st.tNear, rng.get(cardDim));
+  const Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
   const int64_t spentNs = rayClockNs() - t0;
   if (st.depth == 0)
     ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
@@ -1074,6 +1081,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       if (!g) continue;
       rtcSetGeometryUserData(g, const_cast<CardAlpha*>(surf.cardAlpha.get()));
       rtcSetGeometryOccludedFilterFunction(g, cardShadowFilter);
+      rtcSetGeometryIntersectFilterFunction(g, cardIntersectFilter);
+      d.hasCards = true;
       rtcCommitGeometry(g);
     }
   };
