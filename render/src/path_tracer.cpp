@@ -157,6 +157,7 @@ struct Hit {
   // Float round-off of the hit triangle's intersection, metres: it grows with the size of the
   // triangle's coordinates (a 10 km object), so rays leave it at least this far off.
   double roundOffM = 0;
+  std::optional<size_t> photoPixel;  // room hits: the photo pixel that shows the point, if any
 };
 
 // A bound on Embree's float intersection error for a triangle with these corners.
@@ -267,12 +268,12 @@ struct PathTracer::Impl {
   }
 
   // The closest hit; occluder cards are passed where cardU >= their alpha (cardU < 0: never).
-  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1) const {
+  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
     CardPassContext ctx;
     rtcInitIntersectContext(&ctx.base);
     ctx.u = cardU;
-    rtcIntersect1(scene, &ctx.base, &rh);
+    rtcIntersect1(target, &ctx.base, &rh);
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.t = rh.ray.tfar;
@@ -289,6 +290,7 @@ struct PathTracer::Impl {
       hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
       hit.shadingNormal = hit.geometricNormal;
       hit.roundOffM = triangleRoundOff(a, b, c);
+      hit.photoPixel = scene.roomAlbedo.pixelShowing(hit.index, hit.point);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
       hit.index = int(id - surfaceCount);
@@ -773,7 +775,7 @@ bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, con
   const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
   if (hit.kind != Hit::Kind::Room || st.depth < 1 || roomMaterial(hit.index) || !photoAllowed) return false;
   Vec3 photo;
-  if (!scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) return false;
+  if (!scene.roomAlbedo.radianceAtPixel(hit.photoPixel, &photo)) return false;
   addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(photo)), st.depth >= 2));
   if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
   return true;
@@ -785,7 +787,7 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
                                    SurfaceBsdf* bsdf) const {
   if (hit.kind == Hit::Kind::Room) {
     bsdf->kind = Material::Kind::Diffuse;
-    bsdf->albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
+    bsdf->albedo = scene.roomAlbedo.albedoAtPixel(hit.index, hit.photoPixel).cwiseMax(0.0).cwiseMin(1.0);
     if (const Material* reassigned = roomMaterial(hit.index)) setRoomBsdf(*reassigned, *bsdf);
     return true;
   }
