@@ -592,7 +592,7 @@ struct PathTracer::Impl {
   };
 
   void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
-                   RayCounters& counters) const;
+                   RayCounters& tileCounters) const;
   template <class RenderOne>
   bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, const CancelToken* cancel,
                     RenderOne&& renderOne) const;
@@ -1216,7 +1216,7 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
 // One pixel's samples [firstSample, firstSample + count), summed in double and added to the
 // buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
 void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count,
-                                   uint32_t seed, RayCounters& counters) const {
+                                   uint32_t seed, RayCounters& tileCounters) const {
   const Camera& cam = scene.camera;
   const Vec3 eye = cam.centreWorld();
   // Buffers may be a different size from the camera's pixel frame: scale into it.
@@ -1234,7 +1234,7 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
     Sums sums;
     bool objectFirst = false;
     tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-    counters += sums.counters;
+    tileCounters += sums.counters;
     if (!sums.with.allFinite() || !sums.without.allFinite()) {
       nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
       continue;  // dropped: counts as a sample of zero in both renders
