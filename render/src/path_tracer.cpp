@@ -40,9 +40,10 @@
 // (pairs are 2D-stratified).
 //
 // Occluder cards (SurfaceKind::OccluderCard, a matte standing in the room): a camera or bounce
-// ray that meets one passes on with probability 1 - alpha there (stochastic alpha test with
-// the dimension of the vertex it looks for; with- and without-paths draw the same number), and
-// is otherwise room. Shadow rays get the same stochastic test inside an Embree occlusion filter,
+// ray that meets one passes on with probability 1 - alpha there, and is otherwise room: a
+// stochastic alpha test inside an Embree intersection filter, with the number of the vertex's
+// dimension it looks for, carried in the ray's intersect context (with- and without-paths draw
+// the same number; several cards on one ray share it, so their passes are correlated). Shadow rays get the same stochastic test inside an Embree occlusion filter,
 // whose number is a hash of the ray and the hit distance (the filter has no sampler): shadows
 // behind a matte's soft edge are soft, and the with- and without-scene tests of one shadow ray
 // agree.
@@ -64,6 +65,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <utility>
 
 namespace inlay {
@@ -154,11 +157,29 @@ struct Hit {
   // Float round-off of the hit triangle's intersection, metres: it grows with the size of the
   // triangle's coordinates (a 10 km object), so rays leave it at least this far off.
   double roundOffM = 0;
+  std::optional<size_t> photoPixel;  // room hits: the photo pixel that shows the point, if any
 };
 
 // A bound on Embree's float intersection error for a triangle with these corners.
 double triangleRoundOff(const Vec3& a, const Vec3& b, const Vec3& c) {
   return 32.0 * 1.1920929e-7 * std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+}
+
+// The intersect context of a camera or bounce ray: Embree's, then the number the occluder-card
+// filter tests against the card's alpha (u < alpha: the card is hit; u < 0: every card is).
+struct CardPassContext {
+  RTCIntersectContext base;  // first: the filter gets a pointer to it
+  double u = -1;
+};
+
+// A camera or bounce ray passes an occluder card where u >= alpha (probability 1 - alpha).
+void cardIntersectFilter(const RTCFilterFunctionNArguments* args) {
+  const auto* card = static_cast<const CardAlpha*>(args->geometryUserPtr);
+  const double u = reinterpret_cast<const CardPassContext*>(args->context)->u;
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] != -1) continue;
+    if (u >= card->alphaAt(filterRay(args, k).hitPoint())) args->valid[k] = 0;
+  }
 }
 
 double powerHeuristic(double a, double b) {
@@ -180,6 +201,7 @@ struct PathTracer::Impl {
   RTCScene sunWithoutScene = nullptr;
   std::vector<SunData> suns;
   unsigned surfaceCount = 0;
+  bool hasCards = false;  // some room surface is an occluder card with a matte (its filters set)
   std::vector<LightData> lights;
   std::vector<MeshLightData> meshLights;  // NEE sources lights.size() + k
   std::vector<ObjectData> objects;
@@ -245,11 +267,13 @@ struct PathTracer::Impl {
     }
   }
 
-  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear) const {
+  // The closest hit; occluder cards are passed where cardU >= their alpha (cardU < 0: never).
+  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcIntersect1(scene, &ctx, &rh);
+    CardPassContext ctx;
+    rtcInitIntersectContext(&ctx.base);
+    ctx.u = cardU;
+    rtcIntersect1(target, &ctx.base, &rh);
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.t = rh.ray.tfar;
@@ -266,6 +290,7 @@ struct PathTracer::Impl {
       hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
       hit.shadingNormal = hit.geometricNormal;
       hit.roundOffM = triangleRoundOff(a, b, c);
+      hit.photoPixel = scene.roomAlbedo.pixelShowing(hit.index, hit.point);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
       hit.index = int(id - surfaceCount);
@@ -305,20 +330,6 @@ struct PathTracer::Impl {
   }
 
   const TriangleMesh& scene_surface(unsigned id) const { return scene.room.surfaces[id].meshWorld; }
-
-  // intersect(), passing through occluder cards with probability 1 - alpha (u in [0, 1)).
-  // Several cards on one ray share u (their passes are correlated, not independent).
-  Hit intersectThroughCards(RTCScene s, const Vec3& origin, const Vec3& dir, double tNear,
-                            double u) const {
-    Hit hit = intersect(s, origin, dir, tNear);
-    for (int crossed = 0; crossed < 16 && hit.kind == Hit::Kind::Room; ++crossed) {
-      const Surface& surf = scene.room.surfaces[size_t(hit.index)];
-      if (surf.kind != SurfaceKind::OccluderCard || !surf.cardAlpha) break;
-      if (u < surf.cardAlpha->alphaAt(hit.point)) break;
-      hit = intersect(s, origin, dir, hit.t + rayEpsilon(hit.point));
-    }
-    return hit;
-  }
 
   static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
     const double len = n.norm();
@@ -580,6 +591,18 @@ struct PathTracer::Impl {
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
 
+  void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
+                   RayCounters& tileCounters) const;
+  template <class RenderOne>
+  bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, const CancelToken* cancel,
+                    RenderOne&& renderOne) const;
+  mutable std::mutex arenaMutex;
+  mutable std::shared_ptr<tbb::task_arena> arena;
+  mutable int arenaThreads = -1;
+  std::shared_ptr<tbb::task_arena> arenaFor(int threads) const;
+  template <class RenderTile>
+  bool forEachTile(int width, int height, int threads, const CancelToken* cancel, RenderTile&& renderTile) const;
+
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                  bool* firstHitIsObject) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
@@ -716,7 +739,7 @@ Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRn
   if (options.rayLog)
     logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir, st.tNear, 3.4e38);
   const int64_t t0 = rayClockNs();
-  const Hit hit = intersectThroughCards(s, st.origin, st.dir, st.tNear, rng.get(cardDim));
+  const Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
   const int64_t spentNs = rayClockNs() - t0;
   if (st.depth == 0)
     ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
@@ -752,7 +775,7 @@ bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, con
   const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
   if (hit.kind != Hit::Kind::Room || st.depth < 1 || roomMaterial(hit.index) || !photoAllowed) return false;
   Vec3 photo;
-  if (!scene.roomAlbedo.radianceAt(hit.index, hit.point, &photo)) return false;
+  if (!scene.roomAlbedo.radianceAtPixel(hit.photoPixel, &photo)) return false;
   addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(photo)), st.depth >= 2));
   if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
   return true;
@@ -764,7 +787,7 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
                                    SurfaceBsdf* bsdf) const {
   if (hit.kind == Hit::Kind::Room) {
     bsdf->kind = Material::Kind::Diffuse;
-    bsdf->albedo = scene.roomAlbedo.lookup(hit.index, hit.point).cwiseMax(0.0).cwiseMin(1.0);
+    bsdf->albedo = scene.roomAlbedo.albedoAtPixel(hit.index, hit.photoPixel).cwiseMax(0.0).cwiseMin(1.0);
     if (const Material* reassigned = roomMaterial(hit.index)) setRoomBsdf(*reassigned, *bsdf);
     return true;
   }
@@ -1060,6 +1083,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       if (!g) continue;
       rtcSetGeometryUserData(g, const_cast<CardAlpha*>(surf.cardAlpha.get()));
       rtcSetGeometryOccludedFilterFunction(g, cardShadowFilter);
+      rtcSetGeometryIntersectFilterFunction(g, cardIntersectFilter);
+      d.hasCards = true;
       rtcCommitGeometry(g);
     }
   };
@@ -1188,78 +1213,102 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
 
-bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
-                            int firstSample, int count, uint32_t seed,
-                            const CancelToken* cancel) const {
-  const Impl& d = *impl_;
+// One pixel's samples [firstSample, firstSample + count), summed in double and added to the
+// buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
+void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count,
+                                   uint32_t seed, RayCounters& tileCounters) const {
+  const Camera& cam = scene.camera;
+  const Vec3 eye = cam.centreWorld();
+  // Buffers may be a different size from the camera's pixel frame: scale into it.
+  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
+  double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
+  const Vec3 photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
+  for (int k = 0; k < count; ++k) {
+    const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
+    const auto jitter = rng.get2(0);
+    const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
+    PathState st;
+    st.origin = eye;
+    st.dir = cam.directionThroughPixel(px);
+    Sums sums;
+    bool objectFirst = false;
+    tracePath(Mode::Shared, st, rng, sums, &objectFirst);
+    tileCounters += sums.counters;
+    if (!sums.with.allFinite() || !sums.without.allFinite()) {
+      nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
+      continue;  // dropped: counts as a sample of zero in both renders
+    }
+    sumW += sums.with;
+    sumWo += sums.without;
+    sumMask += objectFirst ? 1.0 : 0.0;
+    sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
+    const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
+    sumC += change;
+    sumCSq += change.squaredNorm() / 3.0;
+  }
+  float* w = buffers.sumWith.pixel(x, y);
+  float* wo = buffers.sumWithout.pixel(x, y);
+  float* ch = buffers.sumChange.pixel(x, y);
+  for (int c = 0; c < 3; ++c) {
+    w[c] += float(sumW[c]);
+    wo[c] += float(sumWo[c]);
+    ch[c] += float(sumC[c]);
+  }
+  buffers.sumChangeSq.at(x, y) += float(sumCSq);
+  buffers.sumMask.at(x, y) += float(sumMask);
+  buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
+  buffers.samples[size_t(y) * buffers.width + x] += count;
+}
+
+// Renders the pixels of [x0,x1) x [y0,y1) (clipped to the buffers) by `renderOne(x, y, counters)`
+// with flush-to-zero on and the ray counters published once at the end; false when `cancel`
+// stopped it (checked per pixel).
+template <class RenderOne>
+bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                                    const CancelToken* cancel, RenderOne&& renderOne) const {
   INLAY_CHECK(buffers.width > 0 && buffers.height > 0 &&
               buffers.samples.size() == size_t(buffers.width) * buffers.height);
   x0 = std::max(0, x0), y0 = std::max(0, y0);
   x1 = std::min(buffers.width, x1), y1 = std::min(buffers.height, y1);
-  const Camera& cam = d.scene.camera;
-  if (cam.widthPx <= 0 || cam.heightPx <= 0) return true;
-  // Buffers may be a different size from the camera's pixel frame: scale into it.
-  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
-  const Vec3 eye = cam.centreWorld();
+  if (scene.camera.widthPx <= 0 || scene.camera.heightPx <= 0) return true;
   DenormalsOffScope ftz;
   RayCounters rectCounters;  // published once, when the rect ends or is cancelled
   struct Publish {
     const Impl& d;
     const RayCounters& c;
     ~Publish() { d.counters.add(c); }
-  } publish{d, rectCounters};
+  } publish{*this, rectCounters};
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; ++x) {
       if (cancel && cancel->shouldStop()) return false;
-      Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
-      double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
-      const Vec3 photo = d.photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
-      for (int k = 0; k < count; ++k) {
-        const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
-        const auto jitter = rng.get2(0);
-        const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
-        Impl::PathState st;
-        st.origin = eye;
-        st.dir = cam.directionThroughPixel(px);
-        Impl::Sums sums;
-        bool objectFirst = false;
-        d.tracePath(Mode::Shared, st, rng, sums, &objectFirst);
-        rectCounters += sums.counters;
-        if (!sums.with.allFinite() || !sums.without.allFinite()) {
-          d.nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
-          continue;  // dropped: counts as a sample of zero in both renders
-        }
-        sumW += sums.with;
-        sumWo += sums.without;
-        sumMask += objectFirst ? 1.0 : 0.0;
-        sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
-        const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
-        sumC += change;
-        sumCSq += change.squaredNorm() / 3.0;
-      }
-      float* w = buffers.sumWith.pixel(x, y);
-      float* wo = buffers.sumWithout.pixel(x, y);
-      float* ch = buffers.sumChange.pixel(x, y);
-      for (int c = 0; c < 3; ++c) {
-        w[c] += float(sumW[c]);
-        wo[c] += float(sumWo[c]);
-        ch[c] += float(sumC[c]);
-      }
-      buffers.sumChangeSq.at(x, y) += float(sumCSq);
-      buffers.sumMask.at(x, y) += float(sumMask);
-      buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
-      buffers.samples[size_t(y) * buffers.width + x] += count;
+      renderOne(x, y, rectCounters);
     }
   return true;
 }
 
-bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
-                        int threads, const CancelToken* cancel) const {
-  const int tilesX = (buffers.width + kTileSize - 1) / kTileSize;
-  const int tilesY = (buffers.height + kTileSize - 1) / kTileSize;
+// The arena render() and renderCounts() run their tiles in, kept from one call to the next
+// (the session's waves) and made again only when the thread count changes.
+std::shared_ptr<tbb::task_arena> PathTracer::Impl::arenaFor(int threads) const {
+  std::lock_guard<std::mutex> lock(arenaMutex);
+  if (!arena || arenaThreads != threads) {
+    const int concurrency = threads > 0 ? threads : int(tbb::task_arena::automatic);
+    arena = std::make_shared<tbb::task_arena>(concurrency);
+    arenaThreads = threads;
+  }
+  return arena;
+}
+
+// Calls renderTile(x0, y0, x1, y1) for every kTileSize tile of a width x height frame in
+// parallel; false when a tile returned false or `cancel` stopped the wave.
+template <class RenderTile>
+bool PathTracer::Impl::forEachTile(int width, int height, int threads, const CancelToken* cancel,
+                                   RenderTile&& renderTile) const {
+  const int tilesX = (width + kTileSize - 1) / kTileSize;
+  const int tilesY = (height + kTileSize - 1) / kTileSize;
   std::atomic<bool> stopped{false};
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  const std::shared_ptr<tbb::task_arena> a = arenaFor(threads);
+  a->execute([&] {
     parallelFor(tbb::blocked_range<int>(0, tilesX * tilesY, 1), [&](const tbb::blocked_range<int>& r) {
       for (int t = r.begin(); t != r.end(); ++t) {
         if (stopped.load(std::memory_order_relaxed) || (cancel && cancel->shouldStop())) {
@@ -1267,13 +1316,39 @@ bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count
           return;
         }
         const int tx = t % tilesX, ty = t / tilesX;
-        if (!renderRect(buffers, tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize,
-                        (ty + 1) * kTileSize, firstSample, count, seed, cancel))
-          stopped = true;
+        if (!renderTile(tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize)) stopped = true;
       }
     });
   });
   return !stopped.load();
+}
+
+bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                            int firstSample, int count, uint32_t seed,
+                            const CancelToken* cancel) const {
+  const Impl& d = *impl_;
+  return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
+    d.renderPixel(buffers, x, y, firstSample, count, seed, counters);
+  });
+}
+
+bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
+                        int threads, const CancelToken* cancel) const {
+  return impl_->forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+    return renderRect(buffers, x0, y0, x1, y1, firstSample, count, seed, cancel);
+  });
+}
+
+bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed,
+                              int threads, const CancelToken* cancel) const {
+  const Impl& d = *impl_;
+  INLAY_CHECK(counts.size() == buffers.samples.size());
+  return d.forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+    return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
+      const size_t i = size_t(y) * buffers.width + x;
+      if (counts[i] > 0) d.renderPixel(buffers, x, y, buffers.samples[i], counts[i], seed, counters);
+    });
+  });
 }
 
 }  // namespace inlay

@@ -182,22 +182,20 @@ struct SphericalRect {
 struct SphericalTriangle {
   Vec3 o, a, b, c;          // unit directions to the corners
   Vec3 planePoint, planeNormal;
-  double alpha = 0, beta = 0, gamma = 0;
+  Vec3 nab, nbc, nca;       // normals of the great circles through the corners (not unit)
   double solidAngle = 0;
 
+  // The solid angle only: the triangle's angles are worked out when it is sampled (a quad
+  // samples one of its two triangles; a pdf needs none).
   SphericalTriangle(const Vec3& A, const Vec3& B, const Vec3& C, const Vec3& origin)
       : o(origin), planePoint(A), planeNormal((B - A).cross(C - A)) {
     a = (A - o).normalized(), b = (B - o).normalized(), c = (C - o).normalized();
     const double triple = std::abs(a.dot(b.cross(c)));
     const double sa = 2.0 * std::atan2(triple, 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
-    Vec3 nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
+    nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
     if (!(sa > 0) || !std::isfinite(sa) || nab.squaredNorm() == 0 || nbc.squaredNorm() == 0 ||
         nca.squaredNorm() == 0)
       return;
-    nab.normalize(), nbc.normalize(), nca.normalize();
-    alpha = angleBetween(nab, -nca);
-    beta = angleBetween(nbc, -nab);
-    gamma = angleBetween(nca, -nbc);
     solidAngle = sa;
   }
 
@@ -208,6 +206,10 @@ struct SphericalTriangle {
 
   // The point on the triangle in the sampled direction.
   Vec3 sample(double u0, double u1) const {
+    const Vec3 uab = nab.normalized(), ubc = nbc.normalized(), uca = nca.normalized();
+    const double alpha = angleBetween(uab, -uca);
+    const double beta = angleBetween(ubc, -uab);
+    const double gamma = angleBetween(uca, -ubc);
     const double areaPi = alpha + beta + gamma;
     const double apPi = kPi + u0 * (areaPi - kPi);
     const double cosA = std::cos(alpha), sinA = std::sin(alpha);

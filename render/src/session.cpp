@@ -5,12 +5,7 @@
 // Lock order: only Impl::mutex, never held while rendering or while calling the sink.
 #include "inlay/render/session.h"
 
-#include <tbb/blocked_range.h>
-#include "inlay/modeling/parallel.h"
-#include <tbb/task_arena.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -122,30 +117,10 @@ std::vector<uint8_t> activePixels(const DifferentialBuffers& b) {
 }
 
 // One focused wave: count[i] more samples in pixel i (each pixel continuing its own sample
-// sequence). Tiles in parallel; false when stopped.
+// sequence), tile by tile in parallel; false when stopped.
 bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, const std::vector<int>& count,
                    const SessionOptions& opt, const CancelToken& token) {
-  constexpr int kTile = 16;
-  const int tilesX = (b.width + kTile - 1) / kTile, tilesY = (b.height + kTile - 1) / kTile;
-  std::atomic<bool> stopped{false};
-  tbb::task_arena arena(opt.threads > 0 ? opt.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    parallelFor(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& r) {
-      for (int t = r.begin(); t != r.end() && !stopped; ++t) {
-        const int x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
-        for (int y = y0; y < std::min(b.height, y0 + kTile) && !stopped; ++y)
-          for (int x = x0; x < std::min(b.width, x0 + kTile); ++x) {
-            const size_t i = size_t(y) * b.width + x;
-            if (count[i] <= 0) continue;
-            if (!tracer.renderRect(b, x, y, x + 1, y + 1, b.samples[i], count[i], opt.seed, &token)) {
-              stopped = true;
-              break;
-            }
-          }
-      }
-    });
-  });
-  return !stopped;
+  return tracer.renderCounts(b, count, opt.seed, opt.threads, &token);
 }
 
 // focusOnChanges without a noise target: after two waves, `count` samples in the active pixels

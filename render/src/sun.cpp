@@ -40,12 +40,15 @@ double SunLight::beamAt(const Vec3& p) const {
 }
 
 bool ProjectedAlbedo::radianceAt(int surfaceId, const Vec3& pointWorld, Vec3* radiance) const {
+  return radianceAtPixel(pixelShowing(surfaceId, pointWorld), radiance);
+}
+
+bool ProjectedAlbedo::radianceAtPixel(std::optional<size_t> i, Vec3* radiance) const {
   // The photo shares the albedo's pixel grid.
   const int w = photoRadiance.width, h = photoRadiance.height;
   if (photoRadiance.channels < 3 || w != albedo.width || h != albedo.height ||
       photoRadianceUsable.size() != size_t(w) * h)
     return false;
-  const auto i = pixelShowing(surfaceId, pointWorld);
   if (!i || !photoRadianceUsable[*i]) return false;
   const Vec3 r = photoRadiance.rgb(int(*i % size_t(w)), int(*i / size_t(w)));
   if (!r.allFinite()) return false;

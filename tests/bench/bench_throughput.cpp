@@ -18,7 +18,11 @@
 // - lights.csv: the same against the number of lights: the first light cut into 1 to 64 strips
 //   (the same light in total), the others removed.
 //
-// usage: bench_throughput SCENE.json OUT_DIR [--parts types,triangles,lights] [--repeats N]
+// - waves.csv: one sample in every pixel as the session's focused waves rendered it before
+//   (renderRect per pixel), as they do now (PathTracer::renderCounts, tile by tile) and as a
+//   uniform wave: CPU seconds on one thread, wall seconds on two.
+//
+// usage: bench_throughput SCENE.json OUT_DIR [--parts types,waves,triangles,lights] [--repeats N]
 #include "inlay/engine/pipeline.h"
 #include "inlay/render/path_tracer.h"
 
@@ -27,6 +31,9 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
+#include <thread>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -337,6 +344,53 @@ void lights(const RenderScene& base, int repeats, std::ofstream& csv) {
   }
 }
 
+// The old focused wave on `threads` threads: 16 x 16 tiles taken in turn, one renderRect per
+// pixel.
+void pixelByPixelWave(const PathTracer& tracer, DifferentialBuffers& b, int threads) {
+  const int tilesX = (b.width + 15) / 16, tiles = tilesX * ((b.height + 15) / 16);
+  std::atomic<int> next{0};
+  auto work = [&] {
+    for (int t; (t = next.fetch_add(1)) < tiles;) {
+      const int x0 = (t % tilesX) * 16, y0 = (t / tilesX) * 16;
+      for (int y = y0; y < std::min(b.height, y0 + 16); ++y)
+        for (int x = x0; x < std::min(b.width, x0 + 16); ++x)
+          tracer.renderRect(b, x, y, x + 1, y + 1, b.samples[size_t(y) * b.width + x], 1, 7);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+// The session's focused and adaptive waves: one sample in every pixel as the waves used to
+// render it (renderRect per pixel), as renderCounts() renders it (tile by tile) and as a uniform
+// wave (render()): CPU seconds of the calling thread (one thread) and wall seconds on `threads`.
+void waves(const RenderScene& scene, int repeats, int threads, std::ofstream& csv) {
+  PathTracer tracer(scene);
+  const int w = scene.camera.widthPx, h = scene.camera.heightPx;
+  DifferentialBuffers b(w, h);
+  const std::vector<int> ones(size_t(w) * h, 1);
+  auto perPixel = [&](int t) { pixelByPixelWave(tracer, b, t); };
+  auto tiles = [&](int t) { tracer.renderCounts(b, ones, 7, t); };
+  auto uniform = [&](int t) { tracer.render(b, b.samples[0], 1, 7, t); };
+  const std::pair<const char*, std::function<void(int)>> ways[] = {
+      {"pixel_by_pixel", perPixel}, {"tiles", tiles}, {"uniform", uniform}};
+  for (const auto& [name, run] : ways) {
+    std::vector<double> cpu, wall;
+    for (int r = 0; r < repeats; ++r) {
+      const double t0 = threadSeconds();
+      run(1);
+      cpu.push_back(threadSeconds() - t0);
+      const auto w0 = std::chrono::steady_clock::now();
+      run(threads);
+      wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
+    }
+    csv << name << ',' << median(cpu) << ',' << threads << ',' << median(wall) << '\n';
+    std::printf("wave %-15s %.3f s CPU (1 thread)  %.3f s wall (%d threads)\n", name, median(cpu), median(wall), threads);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -345,7 +399,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[2];
-  std::string parts = "types,triangles,lights";
+  std::string parts = "types,waves,triangles,lights";
   int repeats = 3;
   for (int i = 3; i + 1 < argc; i += 2) {
     if (std::string(argv[i]) == "--parts") parts = argv[i + 1];
@@ -370,6 +424,10 @@ int main(int argc, char** argv) {
   if (parts.find("types") != std::string::npos) {
     auto csv = open("types.csv", "type,rays,renderer_per_s_per_thread,bare_per_s_per_thread,ratio");
     types(scene, repeats, csv);
+  }
+  if (parts.find("waves") != std::string::npos) {
+    auto csv = open("waves.csv", "wave,cpu_s_1_thread,threads,wall_s");
+    waves(scene, repeats, 2, csv);
   }
   if (parts.find("triangles") != std::string::npos) {
     auto csv = open("triangles.csv", "triangles,ms_per_spp,bare_ms_per_spp");

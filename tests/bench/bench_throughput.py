@@ -8,7 +8,7 @@ after a change compare in one figure). Prints Markdown tables.
 Writes OUT/throughput/LABEL/{types,triangles,lights}.csv and OUT/throughput.png.
 
 usage: bench_throughput.py BUILD_DIR [--out DIR] [--label current] [--scene SCENE.json]
-                           [--parts types,triangles,lights] [--repeats 3] [--plot-only]
+                           [--parts types,waves,triangles,lights] [--repeats 3] [--plot-only]
 """
 import csv, os, subprocess, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -30,7 +30,7 @@ def main():
         os.makedirs(here, exist_ok=True)
         exe = os.path.join(build, "tests", "bench", "bench_throughput")
         scene = opt("--scene", os.path.join(TOP, "resources", "example", "scene.json"))
-        subprocess.run(["nice", "-n", "10", exe, scene, here, "--parts", opt("--parts", "types,triangles,lights"),
+        subprocess.run(["nice", "-n", "10", exe, scene, here, "--parts", opt("--parts", "types,waves,triangles,lights"),
                         "--repeats", opt("--repeats", "3")], check=True)
     labels = sorted((d for d in os.listdir(root) if os.path.isdir(os.path.join(root, d))),
                     key=lambda d: os.path.getmtime(os.path.join(root, d)))

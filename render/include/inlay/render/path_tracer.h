@@ -124,6 +124,11 @@ class PathTracer {
   // The whole frame, parallel over tiles with `threads` threads (0 = all cores).
   bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
               int threads = 0, const CancelToken* cancel = nullptr) const;
+  // Adds counts[y * width + x] samples to every pixel, each pixel continuing its own sequence
+  // from buffers.samples (the session's focused and adaptive waves), parallel over tiles as
+  // render(). counts holds one entry per pixel of the buffers.
+  bool renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed, int threads = 0,
+                    const CancelToken* cancel = nullptr) const;
   // Counters since construction (all threads): rays traced (camera, bounce and shadow rays in
   // either scene), and samples dropped because a value was not finite (they count as zero in
   // both renders).

@@ -50,6 +50,10 @@ struct ProjectedAlbedo {
   // The photo's radiance at a room point the camera sees on surface `surfaceId` (and where it
   // is usable); false otherwise.
   bool radianceAt(int surfaceId, const Vec3& pointWorld, Vec3* radiance) const;
+  // lookup() and radianceAt() for a point whose pixelShowing() is already known (the tracer
+  // projects each room hit once).
+  Vec3 albedoAtPixel(int surfaceId, std::optional<size_t> pixel) const;
+  bool radianceAtPixel(std::optional<size_t> pixel, Vec3* radiance) const;
   // Fills firstSurfacePerPixel by casting each pixel centre's ray into `geometry`.
   void computeFirstSurfaces(const SceneGeometry& geometry);
 };
