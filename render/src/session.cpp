@@ -5,6 +5,8 @@
 // Lock order: only Impl::mutex, never held while rendering or while calling the sink.
 #include "inlay/render/session.h"
 
+#include "inlay/render/denoise.h"
+
 #include <tbb/blocked_range.h>
 #include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
@@ -291,6 +293,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   bool converged = false;  // every pixel met the noise target before the sample cap
   bool pendingFrame = false;  // samples added since the last frame published
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
+  DenoiseGuides guides;  // SessionOptions::denoise: made at the version's first full frame
   auto send = [&](std::shared_ptr<const RenderFrame> frame) {
     if (!last && opt.seconds > 0) {
       const double left = opt.seconds - std::chrono::duration<double>(Clock::now() - pickedUp).count();
@@ -314,6 +317,11 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
     if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
     frame->final = final;
+    if (opt.denoise) {
+      DenoiseOptions denoise;
+      denoise.threads = opt.threads;
+      denoiseFrame(*frame, full, tracer, &guides, denoise);
+    }
     frame->seconds = seconds();
     pendingFrame = false;
     send(std::move(frame));

@@ -58,6 +58,9 @@ struct RenderFrame {
   // from the running sums, times the sRGB slope at the pixel's with-object value; exposure is
   // not included.
   double estimatedError = 0;
+  // withObjects is the denoiser's (SessionOptions::denoise; render/denoise.h): its composite is
+  // the photo plus the filtered delta. estimatedError, samples and noise stay the raw render's.
+  bool denoised = false;
   bool final = false;           // target reached for this version
   bool converged = false;       // final because every pixel met SessionOptions::noiseTarget
 };
@@ -95,6 +98,9 @@ struct SessionOptions {
   int minSamples = 16;
   int quietSamples = 4;
   TracerOptions tracer;
+  // Denoise every full-resolution frame (render/denoise.h; coarse previews are left as they
+  // are). Costs one camera ray per pixel once per version (the guides) and the filter per frame.
+  bool denoise = false;
 };
 
 class RenderSession {
