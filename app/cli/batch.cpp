@@ -42,6 +42,7 @@ struct BatchArgs {
   std::optional<int> spp, seed, threads;
   std::optional<double> seconds, noise;
   bool quiet = false;
+  bool denoise = false;  // --denoise (render/denoise.h)
 };
 
 // One manifest line, parsed.
@@ -84,6 +85,10 @@ std::string parseBatchArgs(int argc, char** argv, BatchArgs& a) {
     const std::string s = argv[i];
     if (s == "--quiet" || s == "-q") {
       a.quiet = true;
+      continue;
+    }
+    if (s == "--denoise") {
+      a.denoise = true;
       continue;
     }
     if (s.size() > 1 && s[0] == '-') {
@@ -304,6 +309,7 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   so.startDivider = 1;
   so.focusOnChanges = true;
   so.noiseTarget = args_.noise.value_or(doc.render.noise);
+  so.denoise = args_.denoise;
   LastFrameSink sink;
   {
     RenderSession session(&sink, so);

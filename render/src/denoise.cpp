@@ -186,7 +186,8 @@ struct Level {
         wsum[x] = kCentre;
         for (int c = 0; c < 3; ++c) ysum[c][x] = kCentre * y[c][i];
         vsum[x] = kCentre * kCentre * (*var)[i];
-        invLum[x] = 1.f / (o.sigmaLuminance * std::sqrt((*var)[i]) + 1e-20f);
+        const float sigma = s.mask[i] * o.sigmaLuminanceObject + (1.f - s.mask[i]) * o.sigmaLuminance;
+        invLum[x] = 1.f / (sigma * std::sqrt((*var)[i]) + 1e-20f);
         invPlane[x] = 1.f / (o.sigmaPlane * std::max(g.distance[i], 1e-6f));
       }
       for (int dy = -1; dy <= 1; ++dy) {

@@ -47,8 +47,13 @@ DenoiseGuides renderDenoiseGuides(const PathTracer& tracer, int width, int heigh
 
 struct DenoiseOptions {
   int levels = 5;               // à-trous levels (steps 1, 2, 4, ...): reach 2^levels - 1 px
-  float sigmaLuminance = 4.f;   // edge stop on the delta, in standard errors
-  float sigmaNormal = 32.f;     // edge stop on normals: exp(-sigma (1 - n_i . n_j))
+  // Edge stop on the delta, in standard errors: on the room (shadows, bounce light) and on the
+  // object's own pixels (mixed by the mask). Chosen on the unit test's sphere scene at 1-16 spp
+  // (tests/render_denoise_test.cpp): the room's sparse changes want a tight stop, the object's
+  // dense shading a looser one.
+  float sigmaLuminance = 2.f;
+  float sigmaLuminanceObject = 4.f;
+  float sigmaNormal = 16.f;     // edge stop on normals: exp(-sigma (1 - n_i . n_j))
   float sigmaPlane = 0.02f;     // edge stop on the distance from the pixel's tangent plane,
                                 // relative to its distance from the camera
   float sigmaAlbedo = 0.1f;     // edge stop on the albedo (sum of |difference| over RGB)

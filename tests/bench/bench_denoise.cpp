@@ -1,0 +1,154 @@
+// The denoiser's benchmark (bench_denoise.py plots it): on a prepared scene at W x H, per object
+// material (diffuse, glossy, mirror, glass, glowing), the composite's RMSE against a converged
+// reference of the same prepared scene (REF_SPP samples, another seed), raw and denoised, as the
+// samples double from 1 to MAX_SPP on THREADS threads; and the filter's own time.
+//
+// - convergence.csv: material, mode (raw | denoised), spp, seconds (render time so far; the
+//   denoised rows add that frame's filter time), object_rmse (pixels the reference mask covers
+//   more than half), surroundings_rmse (pixels outside the object where the reference composite
+//   differs from the photo by more than 2e-3: shadow and bounce light), their pixel counts.
+// - timing.csv: per material, the guides' milliseconds (one ray per pixel, once per scene
+//   version) and the filter's (median of 7 runs on the 4-spp frame) at W x H on THREADS threads.
+//
+// RMSE is over linear RGB of the composite, clamped to [0, 1] (what a display shows).
+//
+// usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS
+#include "inlay/engine/pipeline.h"
+#include "inlay/modeling/image_io.h"
+#include "inlay/render/composite.h"
+#include "inlay/render/denoise.h"
+#include "inlay/render/path_tracer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+using namespace inlay;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+struct MaterialCase {
+  const char* name;
+  Material material;
+};
+
+std::vector<MaterialCase> materialCases() {
+  auto make = [](Material::Kind k, Vec3 albedo, double roughness = 0.3) {
+    Material m;
+    m.kind = k;
+    m.albedo = albedo;
+    m.roughness = roughness;
+    return m;
+  };
+  Material glow = make(Material::Kind::Emissive, Vec3::Zero());
+  glow.emission = Vec3(3.0, 2.4, 1.6);
+  return {{"diffuse", make(Material::Kind::Diffuse, Vec3(0.7, 0.7, 0.7))},
+          {"glossy", make(Material::Kind::Glossy, Vec3(0.6, 0.1, 0.1), 0.3)},
+          {"mirror", make(Material::Kind::Mirror, Vec3(0.9, 0.9, 0.9))},
+          {"glass", make(Material::Kind::Glass, Vec3(1, 1, 1))},
+          {"glowing", glow}};
+}
+
+double rmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& region) {
+  double s = 0;
+  for (size_t i : region)
+    for (int c = 0; c < 3; ++c) {
+      const double d = std::clamp(a.data[i * 3 + c], 0.f, 1.f) - std::clamp(b.data[i * 3 + c], 0.f, 1.f);
+      s += d * d;
+    }
+  return std::sqrt(s / (3.0 * double(std::max<size_t>(1, region.size()))));
+}
+
+ImageF denoisedWith(const DifferentialBuffers& b, const ImageF& with, const ImageF& without, const ImageF& mask,
+                    const DenoiseGuides& g, int threads) {
+  DenoiseInput in;
+  in.withObjects = &with, in.withoutObjects = &without, in.mask = &mask, in.buffers = &b, in.guides = &g;
+  DenoiseOptions o;
+  o.threads = threads;
+  return denoiseWithObjects(in, o);
+}
+
+void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& photo, int w, int h, int refSpp,
+             int maxSpp, int threads, std::ofstream& csv, std::ofstream& timing) {
+  RenderScene scene = base;
+  for (auto& o : scene.objects) o.material = mc.material, o.partMaterials.clear();
+  PathTracer tracer(scene);
+  DifferentialBuffers ref(w, h);
+  tracer.render(ref, 1 << 20, refSpp, 999, 0);
+  const ImageF refMask = ref.meanMask();
+  const ImageF reference = differentialComposite(photo, ref.meanWith(), ref.meanWithout(), refMask);
+  std::vector<size_t> object, around;
+  for (size_t i = 0; i < reference.pixelCount(); ++i) {
+    double d = 0;
+    for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
+    if (refMask.data[i] > 0.5f) object.push_back(i);
+    else if (refMask.data[i] == 0 && d > 2e-3) around.push_back(i);
+  }
+  auto t0 = Clock::now();
+  const DenoiseGuides guides = renderDenoiseGuides(tracer, w, h, threads);
+  const double guidesMs = secondsSince(t0) * 1e3;
+  DifferentialBuffers b(w, h);
+  double seconds = 0;
+  std::vector<double> filterMs;
+  for (int spp = 0, step = 1; spp < maxSpp; step = spp) {
+    t0 = Clock::now();
+    tracer.render(b, spp, step, 1, threads);
+    seconds += secondsSince(t0);
+    spp += step;
+    const ImageF with = b.meanWith(), without = b.meanWithout(), mask = b.meanMask();
+    const ImageF raw = differentialComposite(photo, with, without, mask);
+    t0 = Clock::now();
+    const ImageF dw = denoisedWith(b, with, without, mask, guides, threads);
+    const double ms = secondsSince(t0) * 1e3;
+    if (spp == 4)
+      for (int k = 0; k < 7; ++k) {
+        t0 = Clock::now();
+        (void)denoisedWith(b, with, without, mask, guides, threads);
+        filterMs.push_back(secondsSince(t0) * 1e3);
+      }
+    const ImageF den = differentialComposite(photo, dw, without, mask);
+    csv << mc.name << ",raw," << spp << ',' << seconds << ',' << rmse(raw, reference, object) << ','
+        << rmse(raw, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
+    csv << mc.name << ",denoised," << spp << ',' << seconds + ms * 1e-3 << ',' << rmse(den, reference, object) << ','
+        << rmse(den, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
+    csv.flush();
+  }
+  std::sort(filterMs.begin(), filterMs.end());
+  timing << mc.name << ',' << w << ',' << h << ',' << threads << ',' << guidesMs << ','
+         << (filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]) << '\n';
+  timing.flush();
+  std::fprintf(stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms\n", mc.name, object.size(),
+               around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 8) {
+    std::fprintf(stderr, "usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS\n");
+    return 2;
+  }
+  const std::string out = argv[2];
+  const int w = std::atoi(argv[3]), h = std::atoi(argv[4]), refSpp = std::atoi(argv[5]);
+  const int maxSpp = std::atoi(argv[6]), threads = std::atoi(argv[7]);
+  if (w <= 0 || h <= 0 || refSpp <= 0 || maxSpp <= 0 || threads < 0)
+    return std::fprintf(stderr, "bench_denoise: bad size or sample counts\n"), 2;
+  auto loaded = loadSceneFile(argv[1]);
+  if (!loaded) return std::fprintf(stderr, "%s\n", loaded.error().message().c_str()), 2;
+  auto prepared = prepareScene(loaded->doc);
+  if (!prepared) return std::fprintf(stderr, "%s\n", prepared.error().message().c_str()), 2;
+  if (prepared->renderScene.objects.empty()) return std::fprintf(stderr, "the scene has no object\n"), 2;
+  const ImageF photo = resizeImage(prepared->photo.linearRgb, w, h);
+  std::ofstream csv(out + "/convergence.csv"), timing(out + "/timing.csv");
+  if (!csv || !timing) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
+  csv << "material,mode,spp,seconds,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
+  timing << "material,width,height,threads,guides_ms,filter_ms\n";
+  for (const MaterialCase& mc : materialCases())
+    runCase(mc, prepared->renderScene, photo, w, h, refSpp, maxSpp, threads, csv, timing);
+  return 0;
+}
