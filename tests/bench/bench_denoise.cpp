@@ -3,12 +3,17 @@
 // reference of the same prepared scene (REF_SPP samples, another seed), raw and denoised, as the
 // samples double from 1 to MAX_SPP on THREADS threads; and the filter's own time.
 //
-// - convergence.csv: material, mode (raw | denoised), spp, seconds (render time so far; the
-//   denoised rows add that frame's filter time), object_rmse (pixels the reference mask covers
+// - convergence.csv: material, mode (raw | denoised), spp, seconds (render wall time so far;
+//   the denoised rows add that frame's filter time), cpu_seconds_per_thread (the same in process
+//   CPU time over THREADS: what it would take on idle cores, robust on a shared machine),
+//   object_rmse (pixels the reference mask covers
 //   more than half), surroundings_rmse (pixels outside the object where the reference composite
 //   differs from the photo by more than 2e-3: shadow and bounce light), their pixel counts.
 // - timing.csv: per material, the guides' milliseconds (one ray per pixel, once per scene
-//   version) and the filter's (median of 7 runs on the 4-spp frame) at W x H on THREADS threads.
+//   version) and the filter's (median of 7 runs on the 4-spp frame) at W x H on THREADS threads,
+//   wall and process CPU time over THREADS,
+//   and the reference's own estimated RMSE on the object and the surroundings (linear, from its
+//   per-pixel variance): the floor under the curves.
 //
 // RMSE is over linear RGB of the composite, clamped to [0, 1] (what a display shows).
 //
@@ -23,6 +28,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <vector>
+#include <ctime>
 #include <fstream>
 
 using namespace inlay;
@@ -31,6 +38,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// CPU seconds of the whole process (all threads): on a shared machine, what the work costs.
+double processCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 struct MaterialCase {
   const char* name;
@@ -79,7 +93,7 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
   for (auto& o : scene.objects) o.material = mc.material, o.partMaterials.clear();
   PathTracer tracer(scene);
   DifferentialBuffers ref(w, h);
-  tracer.render(ref, 1 << 20, refSpp, 999, 0);
+  tracer.render(ref, 1 << 20, refSpp, 999, threads);
   const ImageF refMask = ref.meanMask();
   const ImageF reference = differentialComposite(photo, ref.meanWith(), ref.meanWithout(), refMask);
   std::vector<size_t> object, around;
@@ -89,38 +103,59 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
     if (refMask.data[i] > 0.5f) object.push_back(i);
     else if (refMask.data[i] == 0 && d > 2e-3) around.push_back(i);
   }
+  // The reference's own estimated error (its per-pixel variance of the mean change): the floor
+  // under every curve measured against it.
+  auto refError = [&](const std::vector<size_t>& region) {
+    double sum = 0;
+    for (size_t i : region) {
+      const int n = std::max(1, ref.samples[i]);
+      double meanSq = 0;
+      for (int c = 0; c < 3; ++c) meanSq += std::pow(double(ref.sumChange.data[i * 3 + c]) / n, 2) / 3.0;
+      sum += std::max(0.0, double(ref.sumChangeSq.data[i]) / n - meanSq) / std::max(1, n - 1);
+    }
+    return std::sqrt(sum / double(std::max<size_t>(1, region.size())));
+  };
   auto t0 = Clock::now();
   const DenoiseGuides guides = renderDenoiseGuides(tracer, w, h, threads);
   const double guidesMs = secondsSince(t0) * 1e3;
   DifferentialBuffers b(w, h);
-  double seconds = 0;
-  std::vector<double> filterMs;
+  double seconds = 0, cpu = 0;
+  std::vector<double> filterMs, filterCpuMs;
   for (int spp = 0, step = 1; spp < maxSpp; step = spp) {
     t0 = Clock::now();
+    double c0 = processCpuSeconds();
     tracer.render(b, spp, step, 1, threads);
     seconds += secondsSince(t0);
+    cpu += (processCpuSeconds() - c0) / std::max(1, threads);
     spp += step;
     const ImageF with = b.meanWith(), without = b.meanWithout(), mask = b.meanMask();
     const ImageF raw = differentialComposite(photo, with, without, mask);
     t0 = Clock::now();
+    c0 = processCpuSeconds();
     const ImageF dw = denoisedWith(b, with, without, mask, guides, threads);
-    const double ms = secondsSince(t0) * 1e3;
+    const double ms = secondsSince(t0) * 1e3, filterCpu = (processCpuSeconds() - c0) / std::max(1, threads);
     if (spp == 4)
       for (int k = 0; k < 7; ++k) {
         t0 = Clock::now();
+        const double c1 = processCpuSeconds();
         (void)denoisedWith(b, with, without, mask, guides, threads);
         filterMs.push_back(secondsSince(t0) * 1e3);
+        filterCpuMs.push_back((processCpuSeconds() - c1) * 1e3 / std::max(1, threads));
       }
     const ImageF den = differentialComposite(photo, dw, without, mask);
-    csv << mc.name << ",raw," << spp << ',' << seconds << ',' << rmse(raw, reference, object) << ','
+    csv << mc.name << ",raw," << spp << ',' << seconds << ',' << cpu << ',' << rmse(raw, reference, object) << ','
         << rmse(raw, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
-    csv << mc.name << ",denoised," << spp << ',' << seconds + ms * 1e-3 << ',' << rmse(den, reference, object) << ','
-        << rmse(den, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
+    csv << mc.name << ",denoised," << spp << ',' << seconds + ms * 1e-3 << ',' << cpu + filterCpu << ','
+        << rmse(den, reference, object) << ',' << rmse(den, reference, around) << ',' << object.size() << ','
+        << around.size() << '\n';
     csv.flush();
   }
   std::sort(filterMs.begin(), filterMs.end());
+  std::sort(filterCpuMs.begin(), filterCpuMs.end());
   timing << mc.name << ',' << w << ',' << h << ',' << threads << ',' << guidesMs << ','
-         << (filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]) << '\n';
+         << (filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]) << ','
+         << (filterCpuMs.empty() ? 0.0 : filterCpuMs[filterCpuMs.size() / 2]) << ',' << refError(object) << ','
+         << refError(around) << '\n';
   timing.flush();
   std::fprintf(stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms\n", mc.name, object.size(),
                around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]);
@@ -146,8 +181,8 @@ int main(int argc, char** argv) {
   const ImageF photo = resizeImage(prepared->photo.linearRgb, w, h);
   std::ofstream csv(out + "/convergence.csv"), timing(out + "/timing.csv");
   if (!csv || !timing) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
-  csv << "material,mode,spp,seconds,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
-  timing << "material,width,height,threads,guides_ms,filter_ms\n";
+  csv << "material,mode,spp,seconds,cpu_seconds_per_thread,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
+  timing << "material,width,height,threads,guides_ms,filter_ms,filter_cpu_ms_per_thread,reference_object_error,reference_surroundings_error\n";
   for (const MaterialCase& mc : materialCases())
     runCase(mc, prepared->renderScene, photo, w, h, refSpp, maxSpp, threads, csv, timing);
   return 0;

@@ -2,6 +2,8 @@
 """The denoiser's benchmark: runs bench_denoise on a scene (default: the bundled example) and
 turns its CSVs into a summary and a figure.
 
+Times are CPU seconds per thread (process CPU time over the thread count: the wall time on idle
+cores), so a loaded machine does not inflate them; convergence.csv keeps the wall time too.
 Writes OUT/denoise/{convergence,timing}.csv (bench_denoise.cpp says what they hold),
 OUT/denoise/summary.csv (per material and mode, raw or denoised: seconds to object RMSE 0.01,
 to surroundings RMSE 0.01 and 0.005; '~' marks a time extrapolated beyond the last frame with the
@@ -20,6 +22,7 @@ from bench_render import time_to  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MATERIALS = ["diffuse", "glossy", "mirror", "glass", "glowing"]
+THREADS = ["2"]
 
 
 def main():
@@ -28,6 +31,7 @@ def main():
     out = os.path.join(out, "denoise")
     os.makedirs(out, exist_ok=True)
     w, h = opt("--size", "512x384").split("x")
+    THREADS[0] = opt("--threads", "2")
     subprocess.run([os.path.join(build, "tests", "bench", "bench_denoise"), scene, out, w, h, opt("--ref-spp", "512"),
                     opt("--max-spp", "64"), opt("--threads", "2")], check=True)
     report(out)
@@ -37,8 +41,9 @@ def main():
 def report(out):
     runs = defaultdict(list)
     for r in csv.DictReader(open(os.path.join(out, "convergence.csv"))):
-        for k in ("seconds", "object_rmse", "surroundings_rmse"):
+        for k in ("seconds", "cpu_seconds_per_thread", "object_rmse", "surroundings_rmse"):
             r[k] = float(r[k])
+        r["wall_seconds"], r["seconds"] = r["seconds"], r["cpu_seconds_per_thread"]  # load-independent time
         runs[(r["material"], r["mode"])].append(r)
     materials = [m for m in MATERIALS if (m, "raw") in runs]
     rows = []
@@ -59,11 +64,12 @@ def report(out):
         print("| %s | %s | %s | %s | %s | %.4f | %.4f |" % (r["material"], r["mode"], r["s_to_object_0.01"],
               r["s_to_surroundings_0.01"], r["s_to_surroundings_0.005"], r["object_rmse_at_1s"],
               r["surroundings_rmse_at_1s"]))
-    print("\n| material | size | threads | guides ms (once per version) | filter ms (median of 7) |")
-    print("|---|---|---|---|---|")
+    print("\n| material | size | threads | guides ms (once per version) | filter ms (median of 7), wall | CPU per thread | reference's own error, object / surroundings |")
+    print("|---|---|---|---|---|---|---|")
     for r in csv.DictReader(open(os.path.join(out, "timing.csv"))):
-        print("| %s | %sx%s | %s | %.1f | %.1f |" % (r["material"], r["width"], r["height"], r["threads"],
-                                                   float(r["guides_ms"]), float(r["filter_ms"])))
+        print("| %s | %sx%s | %s | %.1f | %.1f | %.1f | %.4f / %.4f |" % (r["material"], r["width"], r["height"], r["threads"],
+              float(r["guides_ms"]), float(r["filter_ms"]), float(r["filter_cpu_ms_per_thread"]), float(r["reference_object_error"]),
+              float(r["reference_surroundings_error"])))
     plot(out, runs, materials)
 
 
@@ -87,7 +93,7 @@ def plot(out, runs, materials):
             ax.axhline(0.01, color="gray", lw=0.7)
             ax.axhline(0.005, color="gray", lw=0.5, ls=":")
             ax.set_title(m)
-            ax.set_xlabel("render seconds")
+            ax.set_xlabel("render seconds (CPU per thread, %s threads)" % THREADS[0])
         axes[0][0].set_ylabel("composite RMSE vs converged reference")
         axes[0][0].legend(fontsize=7)
 
