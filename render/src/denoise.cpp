@@ -103,9 +103,10 @@ double meanVariance(const DifferentialBuffers& b, size_t i) {
 }
 
 // 3 x 3 binomial blur of a plane (SVGF's variance prefilter: one pixel's estimate is rough).
-Plane blur3(const Plane& p, int w, int h) {
+Plane blur3(const Plane& p, int w, int h, int threads) {
   Plane out(p.size(), 0.f);
-  for (int y = 0; y < h; ++y)
+  forRows(h, threads, [&](int r0, int r1) {
+  for (int y = r0; y < r1; ++y)
     for (int x = 0; x < w; ++x) {
       float s = 0, ws = 0;
       for (int dy = -1; dy <= 1; ++dy)
@@ -118,6 +119,7 @@ Plane blur3(const Plane& p, int w, int h) {
         }
       out[size_t(y) * w + x] = s / ws;
     }
+  });
   return out;
 }
 
@@ -126,14 +128,15 @@ struct Signal {
   Plane y[3], var, mask, x[3], stdX, albedoMean;
 };
 
-Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g) {
+Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g, int threads) {
   const int w = in.withObjects->width, h = in.withObjects->height;
   const size_t n = size_t(w) * h;
   Signal s;
   for (int c = 0; c < 3; ++c) s.y[c].resize(n), s.x[c].resize(n);
   s.var.resize(n), s.mask.resize(n), s.albedoMean.resize(n);
   Plane varX(n);
-  for (size_t i = 0; i < n; ++i) {
+  forRows(h, threads, [&](int r0, int r1) {
+  for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
     const float m = std::clamp(finiteOr0(in.mask->data[i]), 0.f, 1.f);
     s.mask[i] = m;
     float am = 0;
@@ -148,7 +151,8 @@ Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g) {
     s.albedoMean[i] = am;
     varX[i] = float(std::min(meanVariance(*in.buffers, i), double(kMaxValue) * kMaxValue));
   }
-  varX = blur3(varX, w, h);
+  });
+  varX = blur3(varX, w, h, threads);
   s.stdX.resize(n);
   for (size_t i = 0; i < n; ++i) {
     s.stdX[i] = std::sqrt(varX[i]);
@@ -248,10 +252,11 @@ bool sizesMatch(const DenoiseInput& in) {
 
 // The filtered delta back into a with-object image, within the clamp, for the active pixels.
 ImageF writeBack(const DenoiseInput& in, const Signal& s, const Plane* yFiltered, const std::vector<uint8_t>& active,
-                 float clampSigmas) {
+                 float clampSigmas, int threads) {
   ImageF out = *in.withObjects;
-  const size_t n = out.pixelCount();
-  for (size_t i = 0; i < n; ++i) {
+  const size_t w = size_t(out.width);
+  forRows(out.height, threads, [&](int r0, int r1) {
+  for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
     if (!active[i]) continue;
     const float lim = clampSigmas * s.stdX[i];
     float x[3];
@@ -270,6 +275,7 @@ ImageF writeBack(const DenoiseInput& in, const Signal& s, const Plane* yFiltered
       out.data[i * 3 + c] = std::isfinite(v) ? v : finiteOr0(in.withObjects->data[i * 3 + c]);
     }
   }
+  });
   return out;
 }
 
@@ -312,7 +318,7 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
     rowActive[size_t(y)] = std::any_of(active.begin() + ptrdiff_t(y) * w, active.begin() + ptrdiff_t(y + 1) * w,
                                        [](uint8_t a) { return a != 0; });
   if (std::none_of(rowActive.begin(), rowActive.end(), [](uint8_t a) { return a != 0; })) return *in.withObjects;
-  const Signal s = signalOf(in, *in.guides);
+  const Signal s = signalOf(in, *in.guides, options.threads);
   Plane ping[3] = {s.y[0], s.y[1], s.y[2]}, pong[3];
   Plane pingVar = s.var, pongVar(s.var.size());
   for (auto& p : pong) p.resize(s.var.size());
@@ -322,7 +328,7 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
     for (int c = 0; c < 3; ++c) std::swap(ping[c], pong[c]);
     std::swap(pingVar, pongVar);
   }
-  return writeBack(in, s, ping, active, options.clampSigmas);
+  return writeBack(in, s, ping, active, options.clampSigmas, options.threads);
 }
 
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
