@@ -297,8 +297,8 @@ TEST(DenoiseStability, MismatchedSizesReturnTheInput) {
   EXPECT_TRUE(test::sameBits(s.run(), s.with));
 }
 
-// The session's hook: denoised full-resolution frames, marked so, and pixels no sample changed
-// composite to the photo as the raw session's do.
+// The session's hook: denoised full-resolution frames (all of them, or the final one), marked
+// so, and pixels no sample changed composite to the photo as the raw session's do.
 TEST(DenoiseSession, FramesAreDenoisedAndKeepUntouchedPixels) {
   const int w = 48, h = 36;
   const RenderScene scene = sphereScene(w, h);
@@ -310,22 +310,26 @@ TEST(DenoiseSession, FramesAreDenoisedAndKeepUntouchedPixels) {
       frame = std::move(f);
     }
   };
-  std::shared_ptr<const RenderFrame> frames[2];
-  for (int k = 0; k < 2; ++k) {
+  using Mode = SessionOptions::Denoise;
+  const Mode modes[3] = {Mode::Off, Mode::All, Mode::Final};
+  std::shared_ptr<const RenderFrame> frames[3];
+  for (int k = 0; k < 3; ++k) {
     Last sink;
     SessionOptions opt;
     opt.targetSpp = 4;
     opt.startDivider = 1;
     opt.threads = 2;
-    opt.denoise = k == 1;
+    opt.denoise = modes[k];
     RenderSession session(&sink, opt);
     session.setScene(scene);
     ASSERT_TRUE(session.waitUntilDone(60));
     frames[k] = sink.frame;
   }
-  ASSERT_TRUE(frames[0] && frames[1]);
+  ASSERT_TRUE(frames[0] && frames[1] && frames[2]);
   EXPECT_FALSE(frames[0]->denoised);
   EXPECT_TRUE(frames[1]->denoised);
+  EXPECT_TRUE(frames[2]->denoised);  // Final: the last frame only, the same as All's last
+  EXPECT_TRUE(test::sameBits(frames[1]->withObjects, frames[2]->withObjects));
   EXPECT_TRUE(test::sameBits(frames[0]->withoutObjects, frames[1]->withoutObjects));
   int changed = 0;
   for (size_t i = 0; i < frames[0]->mask.pixelCount(); ++i) {

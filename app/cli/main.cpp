@@ -433,7 +433,8 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   // Adaptive sampling to the scene's noise target (render/session.h); --no-focus alone keeps
   // the uniform schedule it always meant.
   so.noiseTarget = a.noise.value_or(a.noFocus ? 0.0 : ps.doc.render.noise);
-  so.denoise = a.denoise.value_or(denoiseByDefault);  // render/denoise.h
+  // render/denoise.h; only the final frame is written, so only it is denoised.
+  so.denoise = a.denoise.value_or(denoiseByDefault) ? SessionOptions::Denoise::Final : SessionOptions::Denoise::Off;
   std::ofstream csv;
   if (!a.progressCsv.empty()) {
     csv.open(a.progressCsv);

@@ -38,7 +38,7 @@ void RenderController::startScene() {
   options.seed = prepared->doc.render.seed;
   // Samples go where the objects change the photo (the part a user watches while dragging).
   options.focusOnChanges = true;
-  options.denoise = denoise_;
+  options.denoise = denoise_ ? SessionOptions::Denoise::All : SessionOptions::Denoise::Off;
   if (!session_) {
     session_ = std::make_unique<RenderSession>(sink_.get(), options);
   } else {

@@ -317,11 +317,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
     if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
     frame->final = final;
-    if (opt.denoise) {
-      DenoiseOptions denoise;
-      denoise.threads = opt.threads;
-      denoiseFrame(*frame, full, tracer, &guides, denoise);
-    }
+    if (opt.denoise == SessionOptions::Denoise::All || (final && opt.denoise == SessionOptions::Denoise::Final))
+      denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     pendingFrame = false;
     send(std::move(frame));
@@ -410,6 +407,9 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     frame->final = true;
     frame->converged = converged;
     if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w) addSampleLayers(*frame, full);
+    if (opt.denoise != SessionOptions::Denoise::Off && !frame->denoised && frame->resolutionDivider == 1 &&
+        full.width == w)
+      denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     send(std::move(frame));
   }

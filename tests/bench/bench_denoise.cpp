@@ -3,7 +3,8 @@
 // reference of the same prepared scene (REF_SPP samples, another seed), raw and denoised, as the
 // samples double from 1 to MAX_SPP on THREADS threads; and the filter's own time.
 //
-// - convergence.csv: material, mode (raw | denoised), spp, seconds (render wall time so far;
+// - convergence.csv: material, mode (raw | denoised | opencv_guided: ximgproc's guided filter
+//   as a baseline, opencvGuidedWith), spp, seconds (render wall time so far;
 //   the denoised rows add that frame's filter time), cpu_seconds_per_thread (the same in process
 //   CPU time over THREADS: what it would take on idle cores, robust on a shared machine),
 //   object_rmse (pixels the reference mask covers
@@ -17,12 +18,16 @@
 //
 // RMSE is over linear RGB of the composite, clamped to [0, 1] (what a display shows).
 //
-// usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS
+// usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS [MATERIALS]
+//   MATERIALS: comma-separated subset of diffuse,glossy,mirror,glass,glowing (default: all)
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/denoise.h"
 #include "inlay/render/path_tracer.h"
+
+#include <opencv2/core.hpp>
+#include <opencv2/ximgproc/edge_filter.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -87,6 +92,30 @@ ImageF denoisedWith(const DifferentialBuffers& b, const ImageF& with, const Imag
   return denoiseWithObjects(in, o);
 }
 
+// The baseline OpenCV offers (ximgproc's guided filter, He et al.): the same delta X filtered
+// with a three-channel guide (the first hit's mean albedo, the mask, the normal's y: floor
+// against walls), radius 5, eps 1e-3, no noise level and no clamp; written back as our filter's.
+ImageF opencvGuidedWith(const ImageF& with, const ImageF& without, const ImageF& mask, const DenoiseGuides& g) {
+  const int w = with.width, h = with.height;
+  cv::Mat guide(h, w, CV_32FC3), src(h, w, CV_32FC3), dst;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      const float m = std::clamp(mask.data[i], 0.f, 1.f);
+      guide.at<cv::Vec3f>(y, x) = cv::Vec3f((g.albedo[0][i] + g.albedo[1][i] + g.albedo[2][i]) / 3.f, m, g.normal[1][i]);
+      for (int c = 0; c < 3; ++c) src.at<cv::Vec3f>(y, x)[c] = with.data[i * 3 + c] - (1.f - m) * without.data[i * 3 + c];
+    }
+  cv::ximgproc::guidedFilter(guide, src, dst, 5, 1e-3);
+  ImageF out = with;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * w + x;
+      const float m = std::clamp(mask.data[i], 0.f, 1.f);
+      for (int c = 0; c < 3; ++c) out.data[i * 3 + c] = dst.at<cv::Vec3f>(y, x)[c] + (1.f - m) * without.data[i * 3 + c];
+    }
+  return out;
+}
+
 void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& photo, int w, int h, int refSpp,
              int maxSpp, int threads, std::ofstream& csv, std::ofstream& timing) {
   RenderScene scene = base;
@@ -143,6 +172,14 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
         filterCpuMs.push_back((processCpuSeconds() - c1) * 1e3 / std::max(1, threads));
       }
     const ImageF den = differentialComposite(photo, dw, without, mask);
+    t0 = Clock::now();
+    const double c2 = processCpuSeconds();
+    const ImageF gw = opencvGuidedWith(with, without, mask, guides);
+    const double cvMs = secondsSince(t0) * 1e3, cvCpu = (processCpuSeconds() - c2) / std::max(1, threads);
+    const ImageF cvd = differentialComposite(photo, gw, without, mask);
+    csv << mc.name << ",opencv_guided," << spp << ',' << seconds + cvMs * 1e-3 << ',' << cpu + cvCpu << ','
+        << rmse(cvd, reference, object) << ',' << rmse(cvd, reference, around) << ',' << object.size() << ','
+        << around.size() << '\n';
     csv << mc.name << ",raw," << spp << ',' << seconds << ',' << cpu << ',' << rmse(raw, reference, object) << ','
         << rmse(raw, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
     csv << mc.name << ",denoised," << spp << ',' << seconds + ms * 1e-3 << ',' << cpu + filterCpu << ','
@@ -183,7 +220,9 @@ int main(int argc, char** argv) {
   if (!csv || !timing) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
   csv << "material,mode,spp,seconds,cpu_seconds_per_thread,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
   timing << "material,width,height,threads,guides_ms,filter_ms,filter_cpu_ms_per_thread,reference_object_error,reference_surroundings_error\n";
+  const std::string only = argc > 8 ? argv[8] : "";
   for (const MaterialCase& mc : materialCases())
-    runCase(mc, prepared->renderScene, photo, w, h, refSpp, maxSpp, threads, csv, timing);
+    if (only.empty() || ("," + only + ",").find("," + std::string(mc.name) + ",") != std::string::npos)
+      runCase(mc, prepared->renderScene, photo, w, h, refSpp, maxSpp, threads, csv, timing);
   return 0;
 }

@@ -12,7 +12,7 @@ Monte Carlo slope -1/2, '<=' one reached at the first frame) and OUT/denoise/con
 prints Markdown tables.
 
 usage: bench_denoise.py BUILD_DIR [--out DIR] [--scene SCENE.json] [--size 512x384]
-                        [--ref-spp 512] [--max-spp 64] [--threads 2]
+                        [--ref-spp 512] [--max-spp 64] [--threads 2] [--materials diffuse,glass]
 """
 import csv, os, subprocess, sys
 from collections import defaultdict
@@ -33,7 +33,7 @@ def main():
     w, h = opt("--size", "512x384").split("x")
     THREADS[0] = opt("--threads", "2")
     subprocess.run([os.path.join(build, "tests", "bench", "bench_denoise"), scene, out, w, h, opt("--ref-spp", "512"),
-                    opt("--max-spp", "64"), opt("--threads", "2")], check=True)
+                    opt("--max-spp", "64"), opt("--threads", "2"), opt("--materials", "")], check=True)
     report(out)
     return 0
 
@@ -48,8 +48,10 @@ def report(out):
     materials = [m for m in MATERIALS if (m, "raw") in runs]
     rows = []
     for m in materials:
-        for mode in ("raw", "denoised"):
+        for mode in ("raw", "denoised", "opencv_guided"):
             pts = runs[(m, mode)]
+            if not pts:
+                continue
             row = {"material": m, "mode": mode}
             for key, target in (("object_rmse", 0.01), ("surroundings_rmse", 0.01), ("surroundings_rmse", 0.005)):
                 t, flag = time_to([{"seconds": p["seconds"], "rmse": p[key]} for p in pts], target)
@@ -85,8 +87,10 @@ def plot(out, runs, materials):
         if axes is None:
             return
         for ax, m in zip(axes[0], materials):
-            for mode, style in (("raw", "--"), ("denoised", "-")):
+            for mode, style in (("raw", "--"), ("denoised", "-"), ("opencv_guided", ":")):
                 pts = runs[(m, mode)]
+                if not pts:
+                    continue
                 for key, colour in (("object_rmse", "C0"), ("surroundings_rmse", "C1")):
                     ax.loglog([p["seconds"] for p in pts], [p[key] for p in pts], style, color=colour, marker="o", ms=2.5,
                               label="%s, %s" % (key.split("_")[0], mode))

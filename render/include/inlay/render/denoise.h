@@ -84,5 +84,12 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options 
 // when the frame's size changed) and kept in *guides for the version's later frames.
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
                   DenoiseGuides* guides, const DenoiseOptions& options);
+// The same with the default options on `threads` threads (the session's one-line hook).
+inline void denoiseSessionFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
+                                DenoiseGuides* guides, int threads) {
+  DenoiseOptions options;
+  options.threads = threads;
+  denoiseFrame(frame, buffers, tracer, guides, options);
+}
 
 }  // namespace inlay

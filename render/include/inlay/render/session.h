@@ -98,9 +98,12 @@ struct SessionOptions {
   int minSamples = 16;
   int quietSamples = 4;
   TracerOptions tracer;
-  // Denoise every full-resolution frame (render/denoise.h; coarse previews are left as they
-  // are). Costs one camera ray per pixel once per version (the guides) and the filter per frame.
-  bool denoise = false;
+  // Denoise full-resolution frames (render/denoise.h; coarse previews are left as they are):
+  // All of them (the studio's live preview), or only the version's final frame (a host that
+  // keeps only the last frame, as the CLI). Costs one camera ray per pixel once per version
+  // (the guides) and the filter per denoised frame.
+  enum class Denoise { Off, Final, All };
+  Denoise denoise = Denoise::Off;
 };
 
 class RenderSession {
