@@ -5,9 +5,10 @@
 // Model… does (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS).
 // Test hook: inlay --screenshot OUT.png [--wait-spp N | --wait-seconds S] [SCENE | PHOTO] opens
 // the scene, waits until the composite reaches N samples per pixel (default 4), or until the
-// shown frame was rendered for S seconds (or its render ends, or 60 s pass), grabs the main window to OUT.png and exits: 0 when the screenshot shows the rendered
-// scene, 2 when the scene could not be opened or prepared (the screenshot is still written,
-// showing the error), 1 when OUT.png could not be written.
+// shown frame was rendered for S seconds (or its render ends, or 60 s pass, times
+// INLAY_TEST_WAIT_SCALE), grabs the main window to OUT.png and exits: 0 when the screenshot shows
+// the rendered scene, 2 when the scene could not be opened or prepared (the screenshot is still
+// written, showing the error), 1 when OUT.png could not be written.
 #include "document.h"
 #include "i18n.h"
 #include "main_window.h"
@@ -18,6 +19,8 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QTimer>
+
+#include <algorithm>
 
 #include <cstdio>
 
@@ -128,6 +131,8 @@ int main(int argc, char** argv) {
     const int rc = writeScreenshot(window, out);
     return rc ? rc : 2;
   }
+  // A loaded machine (or a sanitizer build) waits longer: INLAY_TEST_WAIT_SCALE, as the tests.
+  const double waitScale = std::max(1.0, qEnvironmentVariable("INLAY_TEST_WAIT_SCALE", QStringLiteral("1")).toDouble());
   int exitCode = -1;
   QElapsedTimer clock;
   clock.start();
@@ -154,9 +159,9 @@ int main(int argc, char** argv) {
       if (waitSeconds >= 0)
         std::fprintf(stderr, "inlay: screenshot of the frame at %.2f s, %d spp\n", renderer->frameInfo().seconds,
                      renderer->frameInfo().spp);
-    } else if (clock.elapsed() > 60'000) {
-      std::fprintf(stderr, "inlay: the render did not reach %d spp within 60 s; grabbing anyway\n",
-                   waitSpp);
+    } else if (clock.elapsed() > 60'000 * waitScale) {
+      std::fprintf(stderr, "inlay: the render did not reach %d spp within %.0f s; grabbing anyway\n",
+                   waitSpp, 60.0 * waitScale);
       done = true;
     }
     if (!done) return;
