@@ -43,6 +43,7 @@ struct BatchArgs {
   std::optional<double> seconds, noise;
   bool quiet = false;
   bool verbose = false;  // each scene's preparation stages on stderr
+  bool denoise = false;  // --denoise (render/denoise.h)
 };
 
 // One manifest line, parsed.
@@ -89,6 +90,10 @@ std::string parseBatchArgs(int argc, char** argv, BatchArgs& a) {
     }
     if (s == "--verbose" || s == "-v") {
       a.verbose = true;
+      continue;
+    }
+    if (s == "--denoise") {
+      a.denoise = true;
       continue;
     }
     if (s.size() > 1 && s[0] == '-') {
@@ -292,6 +297,7 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   so.startDivider = 1;
   so.focusOnChanges = true;
   so.noiseTarget = args_.noise.value_or(doc.render.noise);
+  so.denoise = args_.denoise ? SessionOptions::Denoise::Final : SessionOptions::Denoise::Off;
   LastFrameSink sink;
   {
     RenderSession session(&sink, so);

@@ -76,6 +76,11 @@ Render options:
                           objects do not change are revisited only every fourth wave)
   --no-grain              leave the inserted objects clean (default: the scene's render.grain,
                           true: the pixels the objects change get the photo's own grain)
+  --denoise               denoise the composite: an edge-aware filter of what the objects
+                          change, guided by albedo, normals, depth and the object mask, whose
+                          strength falls as the samples grow (pixels the objects do not change
+                          stay the photo bit for bit; default for demo, off for render)
+  --no-denoise            the raw render (demo's default is --denoise)
   --initial-lights        render with the lights as estimated, before their refinement
   --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
                           the photo's linear units), the refinement's objective against time
@@ -133,6 +138,7 @@ struct Args {
   bool verbose = false;
   bool noFocus = false;
   bool noGrain = false;
+  std::optional<bool> denoise;  // --denoise / --no-denoise; unset: the command's default
 };
 
 template <class T>
@@ -218,6 +224,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       a.noFocus = true;
     } else if (s == "--no-grain") {
       a.noGrain = true;
+    } else if (s == "--denoise" || s == "--no-denoise") {
+      a.denoise = s == "--denoise";
     } else if (s == "--initial-lights") {
       a.initialLights = true;
     } else if (!s.empty() && s[0] == '-' && s != "-") {
@@ -428,7 +436,7 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
   return {};
 }
 
-int commandRender(const std::string& scenePath, const Args& a) {
+int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDefault = false) {
   if (a.output.empty()) return usageError("render needs -o OUT.png");
   Progress progress(a.quiet);
   auto prepared = loadAndPrepare(scenePath, a, progress);
@@ -455,6 +463,8 @@ int commandRender(const std::string& scenePath, const Args& a) {
   // Adaptive sampling to the scene's noise target (render/session.h); --no-focus alone keeps
   // the uniform schedule it always meant.
   so.noiseTarget = a.noise.value_or(a.noFocus ? 0.0 : ps.doc.render.noise);
+  // render/denoise.h; only the final frame is written, so only it is denoised.
+  so.denoise = a.denoise.value_or(denoiseByDefault) ? SessionOptions::Denoise::Final : SessionOptions::Denoise::Off;
   std::ofstream csv;
   if (!a.progressCsv.empty()) {
     csv.open(a.progressCsv);
@@ -493,9 +503,9 @@ int commandRender(const std::string& scenePath, const Args& a) {
     if (auto st = saveLayersExr(a.layers, layers); !st) return inputError(st.error());
   }
   if (!a.quiet)
-    std::fprintf(stderr, "inlay-cli: wrote %s (%d spp at most, %.1f on average, %.1f s render, estimated error %.4f%s)\n",
+    std::fprintf(stderr, "inlay-cli: wrote %s (%d spp at most, %.1f on average, %.1f s render, estimated error %.4f%s%s)\n",
                  a.output.c_str(), frame->spp, frame->meanSpp, frame->seconds, frame->estimatedError,
-                 frame->converged ? ", converged" : "");
+                 frame->converged ? ", converged" : "", frame->denoised ? ", denoised" : "");
   return 0;
 }
 
@@ -761,7 +771,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "inlay-cli: the bundled example scene was not found\n");
         return 1;
       }
-      return commandRender(scene, a);
+      return commandRender(scene, a, /*denoiseByDefault=*/true);
     }
     if (a.command == "decompose") {
       if (a.positional.size() != 1) return usageError("decompose needs exactly one SCENE.json");

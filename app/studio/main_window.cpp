@@ -261,6 +261,14 @@ void MainWindow::createActions() {
   beforeAct_->setCheckable(true);
   beforeAct_->setShortcut(QKeySequence(Qt::Key_B));
   connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
+  denoiseAct_ = new QAction(this);
+  denoiseAct_->setCheckable(true);
+  denoiseAct_->setChecked(QSettings().value(QStringLiteral("denoisePreview"), true).toBool());
+  renderer_->setDenoise(denoiseAct_->isChecked());
+  connect(denoiseAct_, &QAction::toggled, this, [this](bool on) {
+    QSettings().setValue(QStringLiteral("denoisePreview"), on);
+    renderer_->setDenoise(on);
+  });
 
   acceptBoxAct_ = new QAction(this);
   connect(acceptBoxAct_, &QAction::triggered, this, [this] {
@@ -343,6 +351,7 @@ void MainWindow::createMenus() {
   view->addSeparator();
   view->addAction(beforeAct_);
   view->addAction(vanishingAct_);
+  view->addAction(denoiseAct_);
   view->addSeparator();
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
@@ -428,6 +437,8 @@ void MainWindow::retranslate() {
   resetBoxAct_->setText(tr("Estimate the &Box Again"));
   prepareAct_->setText(tr("&Prepare the Scene Again"));
   vanishingAct_->setText(tr("&Vanishing Lines and Confidence"));
+  denoiseAct_->setText(tr("&Denoise Preview"));
+  denoiseAct_->setStatusTip(tr("Smooth the render's noise where the objects change the photo (the rest stays the photo)"));
   aboutAct_->setText(tr("&About Inlay"));
   openSceneAct_->setStatusTip(tr("Open a scene file (.json)"));
   openPhotoAct_->setStatusTip(tr("Start a new scene from a photo"));

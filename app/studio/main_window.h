@@ -206,6 +206,7 @@ class MainWindow : public QMainWindow {
   QAction* zoomOutAct_ = nullptr;
   QAction* fitAct_ = nullptr;
   QAction* beforeAct_ = nullptr;
+  QAction* denoiseAct_ = nullptr;  // View > Denoise Preview (QSettings "denoisePreview")
   QAction* aboutAct_ = nullptr;
 
   QLabel* sppLabel_ = nullptr;

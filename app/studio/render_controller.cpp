@@ -38,6 +38,7 @@ void RenderController::startScene() {
   options.seed = prepared->doc.render.seed;
   // Samples go where the objects change the photo (the part a user watches while dragging).
   options.focusOnChanges = true;
+  options.denoise = denoise_ ? SessionOptions::Denoise::All : SessionOptions::Denoise::Off;
   if (!session_) {
     session_ = std::make_unique<RenderSession>(sink_.get(), options);
   } else {
@@ -47,6 +48,12 @@ void RenderController::startScene() {
   // Before setScene: a frame of the new version must find the new context.
   sink_->setContext(CompositeSink::compositeContextOf(*prepared), requestedVersion_ + 1);
   request(session_->setScene(shownRenderScene(*prepared)));
+}
+
+void RenderController::setDenoise(bool on) {
+  if (denoise_ == on) return;
+  denoise_ = on;
+  if (session_ && document_->prepared()) startScene();
 }
 
 void RenderController::onDocumentChanged(const ChangeEvent& event) {

@@ -59,6 +59,10 @@ class RenderController : public QObject {
   // yet (nothing prepared, or no frame). Converted on the GUI thread on first use and cached
   // until its source changes.
   QImage layerImage(Layer layer);
+  // The denoised preview (View > Denoise Preview; render/denoise.h): every full-resolution frame
+  // is denoised. Changing it restarts the current scene's render.
+  void setDenoise(bool on);
+  bool denoise() const { return denoise_; }
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -74,6 +78,7 @@ class RenderController : public QObject {
   CompositeImage composite_;
   QImage photo_;
   quint64 requestedVersion_ = 0;
+  bool denoise_ = false;
   // layerImage()'s cache: per layer, the source it was made from.
   struct CachedLayer {
     const void* source = nullptr;

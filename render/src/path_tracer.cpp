@@ -1351,4 +1351,30 @@ bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<in
   });
 }
 
+PathTracer::FirstHit PathTracer::firstHit(const Vec2& pixel) const {
+  const Impl& d = *impl_;
+  FirstHit out;
+  const Vec3 eye = d.scene.camera.centreWorld();
+  const Vec3 dir = d.scene.camera.directionThroughPixel(pixel).normalized();
+  const Hit hit = d.intersectThroughCards(d.withScene, eye, dir, 0, 0.5);
+  if (hit.kind == Hit::Kind::None || !dir.allFinite()) return out;
+  out.hit = true;
+  out.object = hit.kind == Hit::Kind::Object;
+  out.distance = hit.t;
+  out.point = hit.point;
+  out.normal = hit.shadingNormal.dot(dir) > 0 ? Vec3(-hit.shadingNormal) : hit.shadingNormal;
+  if (hit.kind == Hit::Kind::Room) {
+    const Material* m = d.roomMaterial(hit.index);
+    out.albedo = m && m->kind == Material::Kind::Mirror ? m->albedo
+                                                        : d.scene.roomAlbedo.lookup(hit.index, hit.point);
+  } else if (hit.kind == Hit::Kind::Object) {
+    const Material& m = d.objects[size_t(hit.index)].materialOf(hit.prim);
+    const bool coloured = m.kind != Material::Kind::Glass && m.kind != Material::Kind::RoughGlass &&
+                          m.kind != Material::Kind::Emissive;
+    if (coloured) out.albedo = m.albedo;
+  }
+  out.albedo = out.albedo.allFinite() ? Vec3(out.albedo.cwiseMax(0.0).cwiseMin(1.0)) : Vec3(Vec3::Ones());
+  return out;
+}
+
 }  // namespace inlay

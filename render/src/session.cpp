@@ -5,6 +5,8 @@
 // Lock order: only Impl::mutex, never held while rendering or while calling the sink.
 #include "inlay/render/session.h"
 
+#include "inlay/render/denoise.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -258,6 +260,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   bool converged = false;  // every pixel met the noise target before the sample cap
   bool pendingFrame = false;  // samples added since the last frame published
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
+  DenoiseGuides guides;  // SessionOptions::denoise: made at the version's first full frame
   auto send = [&](std::shared_ptr<const RenderFrame> frame) {
     if (!last && opt.seconds > 0) {
       const double left = opt.seconds - std::chrono::duration<double>(Clock::now() - pickedUp).count();
@@ -281,6 +284,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
     if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
     frame->final = final;
+    if (opt.denoise == SessionOptions::Denoise::All || (final && opt.denoise == SessionOptions::Denoise::Final))
+      denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     pendingFrame = false;
     send(std::move(frame));
@@ -369,6 +374,9 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     frame->final = true;
     frame->converged = converged;
     if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w) addSampleLayers(*frame, full);
+    if (opt.denoise != SessionOptions::Denoise::Off && !frame->denoised && frame->resolutionDivider == 1 &&
+        full.width == w)
+      denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     send(std::move(frame));
   }

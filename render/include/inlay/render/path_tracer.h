@@ -141,6 +141,18 @@ class PathTracer {
   };
   Stats stats() const;
 
+  // What the camera ray through `pixel` (the camera's pixel frame) meets first in the scene
+  // with the objects (an occluder card is passed where its alpha is below one half): the
+  // denoiser's guides (denoise.h). albedo: the surface's reflectance (the projected albedo on
+  // the room, a mirror's reflectance), 1 for glass, lights and emissive objects.
+  struct FirstHit {
+    bool hit = false;
+    bool object = false;
+    double distance = 0;
+    Vec3 point = Vec3::Zero(), normal = Vec3::Zero(), albedo = Vec3::Ones();
+  };
+  FirstHit firstHit(const Vec2& pixel) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -59,6 +59,9 @@ struct RenderFrame {
   // from the running sums, times the sRGB slope at the pixel's with-object value; exposure is
   // not included.
   double estimatedError = 0;
+  // withObjects is the denoiser's (SessionOptions::denoise; render/denoise.h): its composite is
+  // the photo plus the filtered delta. estimatedError, samples and noise stay the raw render's.
+  bool denoised = false;
   bool final = false;           // target reached for this version
   bool converged = false;       // final because every pixel met SessionOptions::noiseTarget
 };
@@ -117,6 +120,12 @@ struct SessionOptions {
   int minSamples = 16;
   int quietSamples = 4;
   TracerOptions tracer;
+  // Denoise full-resolution frames (render/denoise.h; coarse previews are left as they are):
+  // All of them (the studio's live preview), or only the version's final frame (a host that
+  // keeps only the last frame, as the CLI). Costs one camera ray per pixel once per version
+  // (the guides) and the filter per denoised frame.
+  enum class Denoise { Off, Final, All };
+  Denoise denoise = Denoise::Off;
 };
 
 class RenderSession {
