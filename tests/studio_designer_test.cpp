@@ -12,6 +12,7 @@
 #include "main_window.h"
 #include "model_import.h"
 #include "render_controller.h"
+#include "steps_dock.h"
 #include "viewport.h"
 
 #include "inlay/engine/pipeline.h"
@@ -26,6 +27,8 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMimeData>
+#include <QPushButton>
+#include <QSignalSpy>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -34,6 +37,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 #include "studio_test_support.h"
 #include "studio_workflow_steps.h"
@@ -145,6 +149,34 @@ std::optional<Vec2> floorPixel(const Document* doc, double fx) {
   return std::nullopt;
 }
 
+// The brightest 40 x 18 pixel patch in the upper 45 % of the photo (a ceiling light), in image
+// pixels.
+QRectF brightestPatch(const QImage& photo) {
+  const QImage g = photo.convertToFormat(QImage::Format_Grayscale8);
+  const int w = 40, h = 18;
+  long best = -1;
+  QRectF out;
+  for (int y = 0; y + h < int(0.45 * g.height()); y += 3)
+    for (int x = 0; x + w < g.width(); x += 4) {
+      long sum = 0;
+      for (int r = y; r < y + h; r += 2)
+        for (int c = x; c < x + w; c += 2) sum += g.constScanLine(r)[c];
+      if (sum > best) best = sum, out = QRectF(x, y, w, h);
+    }
+  return out;
+}
+
+QByteArray readAll(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// The widget point where a world point shows (the object's camera).
+QPoint widgetOf(const Document* doc, const Viewport* view, const Vec3& world) {
+  const std::optional<Vec2> px = doc->prepared()->camera.project(world);
+  return px ? view->widgetFromImage(*px).toPoint() : QPoint(-1, -1);
+}
+
 }  // namespace
 
 class StudioDesignerTest : public QObject {
@@ -195,16 +227,47 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
   step(QStringLiteral("photo_opened"));
 
+  // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
+  StepsDock* steps = window.stepsDock();
+  QVERIFY(steps->isVisible());
+  QCOMPARE(steps->currentStep(), int(StepsDock::Room));
+  QVERIFY(steps->button(StepsDock::Room)->isVisible() && steps->button(StepsDock::Room)->isEnabled());
+  QVERIFY2(steps->stateText(StepsDock::Lights).contains(QStringLiteral("gathered light only")),
+           qPrintable(steps->stateText(StepsDock::Lights)));
+  QVERIFY(!steps->isDone(StepsDock::Objects) && !steps->isDone(StepsDock::Export));
+
+  // --- Accept the box (the step's own button), then outline one light (Light tool clicks) ---
+  QElapsedTimer clock;
+  clock.start();
+  steps->button(StepsDock::Room)->click();
+  QVERIFY(doc->backWallIsUsers());
+  QVERIFY(steps->isDone(StepsDock::Room));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Lights));
+  steps->button(StepsDock::Lights)->click();  // picks the Light tool
+  QCOMPARE(view->tool(), Viewport::Tool::Light);
+  const QRectF lamp = brightestPatch(window.renderer()->photoImage());
+  for (const QPointF& c : {lamp.topLeft(), lamp.topRight(), lamp.bottomRight(), lamp.bottomLeft()})
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
+  QTest::keyClick(view, Qt::Key_Return);
+  QCOMPARE(int(doc->scene().lights.size()), 1);
+  QVERIFY(steps->isDone(StepsDock::Lights));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Objects));
+  window.toolAction(int(Viewport::Tool::Select))->trigger();
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
+  step(QStringLiteral("box_accepted_light_outlined"));
+
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());
   QCOMPARE(window.insertModelAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
-  QElapsedTimer clock;
-  clock.start();
+  clock.restart();
   QVERIFY(window.insertModelFile(gltf));
   QVERIFY(waitNoPendingModels(window, waitMs(30000)));
   QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
   timings << QStringLiteral("insert_gltf_ms,%1").arg(clock.elapsed());
   QCOMPARE(doc->objectCount(), 1);
+  QVERIFY(steps->isDone(StepsDock::Objects));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Export));
   const ObjectKeys& inserted = doc->scene().objects[0];
   QCOMPARE(QString::fromStdString(inserted.name), QFileInfo(gltf).completeBaseName());
   QCOMPARE(doc->objectName(0), QFileInfo(gltf).completeBaseName());
@@ -299,6 +362,74 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
                            waitMs(60000));
   step(QStringLiteral("arranged"));
 
+  // --- On-canvas handles: turn the shelf to 80° and raise it by a quarter, one undo step each ---
+  doc->setSelectedObject(1);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  const Vec3 shelfBase = doc->prepared()->placements[1].baseWorld;
+  int beforeGesture = doc->undoStack()->count();
+  const std::optional<QPointF> turnAt = view->handlePos(Viewport::Handle::Turn);
+  QVERIFY(turnAt);
+  QCOMPARE(view->handleAt(*turnAt), Viewport::Handle::Turn);
+  const double yaw80 = 80.0 * std::numbers::pi / 180.0;
+  clock.restart();
+  inlay::test::dragLeft(view, turnAt->toPoint(),
+                        widgetOf(doc, view, shelfBase + 0.6 * Vec3(std::sin(yaw80), 0, std::cos(yaw80))));
+  QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - 80.0) < 2.0, qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
+  QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  timings << QStringLiteral("turn_handle_to_frame_ms,%1").arg(clock.elapsed());
+  const double h0 = doc->scene().objects[1].heightM;
+  const std::optional<QPointF> heightAt = view->handlePos(Viewport::Handle::Height);
+  QVERIFY(heightAt);
+  clock.restart();
+  inlay::test::dragLeft(view, heightAt->toPoint(), widgetOf(doc, view, shelfBase + Vec3(0, 1.25 * h0, 0)));
+  QVERIFY2(std::abs(doc->scene().objects[1].heightM - 1.25 * h0) < 0.03 * h0,
+           qPrintable(QString::number(doc->scene().objects[1].heightM)));
+  QCOMPARE(doc->undoStack()->count(), beforeGesture + 2);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  timings << QStringLiteral("height_handle_to_frame_ms,%1").arg(clock.elapsed());
+  step(QStringLiteral("handles_turned_and_raised"));
+
+  // --- Dragged near a wall, the shelf stands with its back against it, facing into the room ---
+  {
+    const RoomBox& box = doc->prepared()->geometry.box;
+    const double halfDepth = 0.5 * doc->objectSizeM(1)->z();
+    struct Wall {
+      Vec3 nearIt, normal;
+      double yawDeg;
+      Vec3 onWall;
+    };
+    // 10 cm between the shelf's back and the wall (the snap takes up to 25 cm).
+    const Wall walls[] = {
+        {Vec3(box.xLeftM + halfDepth + 0.10, 0, shelfBase.z()), Vec3(1, 0, 0), 90.0, Vec3(box.xLeftM, 0, 0)},
+        {Vec3(box.xRightM - halfDepth - 0.10, 0, shelfBase.z()), Vec3(-1, 0, 0), -90.0, Vec3(box.xRightM, 0, 0)},
+        {Vec3(shelfBase.x(), 0, box.zBackM + halfDepth + 0.10), Vec3(0, 0, 1), 0.0, Vec3(0, 0, box.zBackM)}};
+    const Wall* chosen = nullptr;
+    for (const Wall& w : walls) {
+      const std::optional<Vec2> px = doc->prepared()->camera.project(w.nearIt);
+      const std::optional<Vec2> stand = px ? doc->supportPointNear(*px) : std::nullopt;
+      if (stand && (*stand - *px).norm() < 1.0 && doc->prepared()->camera.depthOf(w.nearIt) > 0.5) {
+        chosen = &w;
+        break;
+      }
+    }
+    QVERIFY2(chosen, "no wall of the room has floor in view beside it");
+    beforeGesture = doc->undoStack()->count();
+    clock.restart();
+    inlay::test::dragLeft(view, view->widgetFromImage(doc->scene().objects[1].basePx).toPoint(),
+                          widgetOf(doc, view, chosen->nearIt), 20);
+    QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - chosen->yawDeg) < 1e-6,
+             qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
+    const Vec3 snapped = doc->prepared()->placements[1].baseWorld;
+    const double toWall = (snapped - chosen->onWall).dot(chosen->normal);
+    QVERIFY2(std::abs(toWall - (halfDepth + 0.005)) < 0.01,
+             qPrintable(QStringLiteral("%1 m from the wall, the half depth is %2").arg(toWall).arg(halfDepth)));
+    QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
+    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 1, waitMs(30000));
+    timings << QStringLiteral("snap_drag_to_frame_ms,%1").arg(clock.elapsed());
+    step(QStringLiteral("snapped_to_wall"));
+  }
+
   // --- 6. Undo everything, then redo it all: the same objects, key for key ---
   const std::string arranged = objectsJson(doc);
   clock.restart();
@@ -320,6 +451,66 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
                            waitMs(60000));
   step(QStringLiteral("all_redone"));
+
+  // --- Render Final Image: the photo's full size, written atomically; then all steps are done ---
+  {
+    const QString finalPath = log.filePath(QStringLiteral("final.png"));
+    QFile::remove(finalPath);
+    QSignalSpy finished(&window, &MainWindow::finalImageFinished);
+    clock.restart();
+    QVERIFY(window.renderFinalImage(finalPath, 8));
+    QVERIFY(window.renderer()->paused());
+    QVERIFY(!window.renderFinalAction()->isEnabled());
+    QVERIFY(!window.renderFinalImage(finalPath, 8));  // one at a time
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
+    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
+    QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
+    const QImage written(finalPath);
+    QCOMPARE(written.size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    QVERIFY(!window.renderer()->paused());
+    QVERIFY(window.renderFinalAction()->isEnabled());
+    QVERIFY(steps->isDone(StepsDock::Export));
+    // All four done: the panel hides for good, and View > Steps brings it back.
+    QVERIFY(!steps->isVisible());
+    QVERIFY(QSettings().value(QStringLiteral("guide/done")).toBool());
+    step(QStringLiteral("final_rendered"));
+    steps->toggleViewAction()->trigger();
+    QVERIFY(steps->isVisible());
+    // A cancelled render leaves the earlier file as it was, and no temporary beside it.
+    const QByteArray earlier = readAll(finalPath);
+    QVERIFY(window.renderFinalImage(finalPath, 8));
+    window.finalRender()->cancel();
+    QCOMPARE(finished.count(), 2);
+    QVERIFY(!finished.last()[0].toBool());
+    QCOMPARE(readAll(finalPath), earlier);
+    QCOMPARE(QFileInfo(finalPath).absoluteDir().entryList({QStringLiteral("*final.png*")}, QDir::Files),
+             QStringList{QStringLiteral("final.png")});
+    QVERIFY(!window.renderer()->paused());
+  }
+
+  // --- The before/after split: the divider follows a drag ---
+  window.splitAction()->trigger();
+  QVERIFY(view->splitView());
+  {
+    const int y = view->height() / 2;
+    const int x0 = int(view->splitWidgetX());
+    const double f0 = view->splitFraction();
+    inlay::test::dragLeft(view, QPoint(x0, y), QPoint(x0 - 120, y));
+    QVERIFY2(view->splitFraction() < f0 - 0.1, qPrintable(QString::number(view->splitFraction())));
+    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
+    step(QStringLiteral("before_after_split"));
+  }
+  window.splitAction()->trigger();
+  QVERIFY(!view->splitView());
+
+  // --- Export the composite ---
+  {
+    const QString exported = log.filePath(QStringLiteral("composite.jpg"));
+    QFile::remove(exported);
+    QVERIFY(window.exportComposite(exported));
+    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    step(QStringLiteral("exported"));
+  }
 
   // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
   doc->prepare();

@@ -47,6 +47,18 @@ void RenderController::startScene() {
   // Before setScene: a frame of the new version must find the new context.
   sink_->setContext(CompositeSink::compositeContextOf(*prepared), requestedVersion_ + 1);
   request(session_->setScene(shownRenderScene(*prepared)));
+  if (paused_) session_->cancel();
+}
+
+void RenderController::setPaused(bool paused) {
+  if (paused_ == paused) return;
+  paused_ = paused;
+  if (!session_) return;
+  if (paused_) {
+    session_->cancel();
+  } else if (const PreparedScene* prepared = document_->prepared(); prepared && document_->isReady()) {
+    request(session_->setScene(shownRenderScene(*prepared)));
+  }
 }
 
 void RenderController::onDocumentChanged(const ChangeEvent& event) {
@@ -74,12 +86,13 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   }
   const PreparedScene* prepared = document_->prepared();
   if (session_ && prepared && event.has(ChangeEvent::ObjectsAddedOrRemoved)) {
-    request(session_->setScene(shownRenderScene(*prepared)));
+    if (!paused_) request(session_->setScene(shownRenderScene(*prepared)));
     return;
   }
   if (!session_ || !prepared || event.objectIndex < 0 ||
       size_t(event.objectIndex) >= prepared->renderScene.objects.size())
     return;
+  if (paused_) return;  // setPaused(false) renders the scene as it is then
   if (event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectShown)) {
     request(session_->setScene(shownRenderScene(*prepared)));  // carries the new transform too
   } else if (event.has(ChangeEvent::ObjectPlacement)) {

@@ -59,6 +59,10 @@ class RenderController : public QObject {
   // yet (nothing prepared, or no frame). Converted on the GUI thread on first use and cached
   // until its source changes.
   QImage layerImage(Layer layer);
+  // Paused: the preview renders nothing (Render Final Image has the processor); edits are still
+  // taken and the preview starts again from the current scene when unpaused.
+  void setPaused(bool paused);
+  bool paused() const { return paused_; }
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -74,6 +78,7 @@ class RenderController : public QObject {
   CompositeImage composite_;
   QImage photo_;
   quint64 requestedVersion_ = 0;
+  bool paused_ = false;
   // layerImage()'s cache: per layer, the source it was made from.
   struct CachedLayer {
     const void* source = nullptr;
