@@ -1,14 +1,19 @@
 // The studio as a designer uses it with their own models: open a York photo (../shared/york,
 // skipped without it), insert a glTF model through Insert Model…, drop an OBJ (with concave
-// n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale,
-// duplicate, rename, hide, undo everything and redo it all. Each step's seconds since the photo
-// was opened and a screenshot go to studio_designer_artifacts/ in the build tree (figures.csv,
-// NN_step.png). Bad model files (empty, NaN, flat, over the triangle limit, absurd units,
-// taller than the room, a drop while the scene prepares) get a message naming the file or a
-// sane default, never a crash; the Properties dock labels every field, in German and French.
+// n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale in
+// Properties, duplicate, rename, hide, turn and raise with the on-canvas handles, drag it near a
+// wall (its back snaps to the wall), undo everything and redo it all. A second flow is the guided
+// start: the Steps panel, the box accepted, one light outlined, a library chair dragged in,
+// Render Final Image (and a cancelled one that leaves the earlier file alone), the before/after
+// split and the export. Each step's seconds since the photo was opened and a screenshot go to
+// studio_designer_artifacts/ (and guided/) in the build tree (figures.csv, NN_step.png). Bad
+// model files (empty, NaN, flat, over the triangle limit, absurd units, taller than the room, a
+// drop while the scene prepares) get a message naming the file or a sane default, never a crash;
+// the Properties dock labels every field, in German and French.
 #include "docks.h"
 #include "document.h"
 #include "i18n.h"
+#include "library_dock.h"
 #include "main_window.h"
 #include "model_import.h"
 #include "render_controller.h"
@@ -185,6 +190,7 @@ class StudioDesignerTest : public QObject {
  private Q_SLOTS:
   void initTestCase();
   void modelsInsertDropArrangeUndoRedo();
+  void guidedFirstCompositeOnAYorkPhoto();
   void badModelFilesGetMessagesOrSaneDefaults();
   void dropOnATableTopStandsOnIt();
   void propertiesLabelEveryFieldInEveryLanguage();
@@ -227,47 +233,17 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
   step(QStringLiteral("photo_opened"));
 
-  // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
-  StepsDock* steps = window.stepsDock();
-  QVERIFY(steps->isVisible());
-  QCOMPARE(steps->currentStep(), int(StepsDock::Room));
-  QVERIFY(steps->button(StepsDock::Room)->isVisible() && steps->button(StepsDock::Room)->isEnabled());
-  QVERIFY2(steps->stateText(StepsDock::Lights).contains(QStringLiteral("gathered light only")),
-           qPrintable(steps->stateText(StepsDock::Lights)));
-  QVERIFY(!steps->isDone(StepsDock::Objects) && !steps->isDone(StepsDock::Export));
-
-  // --- Accept the box (the step's own button), then outline one light (Light tool clicks) ---
-  QElapsedTimer clock;
-  clock.start();
-  steps->button(StepsDock::Room)->click();
-  QVERIFY(doc->backWallIsUsers());
-  QVERIFY(steps->isDone(StepsDock::Room));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Lights));
-  steps->button(StepsDock::Lights)->click();  // picks the Light tool
-  QCOMPARE(view->tool(), Viewport::Tool::Light);
-  const QRectF lamp = brightestPatch(window.renderer()->photoImage());
-  for (const QPointF& c : {lamp.topLeft(), lamp.topRight(), lamp.bottomRight(), lamp.bottomLeft()})
-    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
-  QTest::keyClick(view, Qt::Key_Return);
-  QCOMPARE(int(doc->scene().lights.size()), 1);
-  QVERIFY(steps->isDone(StepsDock::Lights));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Objects));
-  window.toolAction(int(Viewport::Tool::Select))->trigger();
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
-  step(QStringLiteral("box_accepted_light_outlined"));
 
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());
   QCOMPARE(window.insertModelAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
-  clock.restart();
+  QElapsedTimer clock;
+  clock.start();
   QVERIFY(window.insertModelFile(gltf));
   QVERIFY(waitNoPendingModels(window, waitMs(30000)));
   QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
   timings << QStringLiteral("insert_gltf_ms,%1").arg(clock.elapsed());
   QCOMPARE(doc->objectCount(), 1);
-  QVERIFY(steps->isDone(StepsDock::Objects));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Export));
   const ObjectKeys& inserted = doc->scene().objects[0];
   QCOMPARE(QString::fromStdString(inserted.name), QFileInfo(gltf).completeBaseName());
   QCOMPARE(doc->objectName(0), QFileInfo(gltf).completeBaseName());
@@ -452,6 +428,97 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
                            waitMs(60000));
   step(QStringLiteral("all_redone"));
 
+
+  // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
+  doc->prepare();
+  QCOMPARE(doc->state(), Document::State::Preparing);
+  QVERIFY(dropUrl(view, shelf, view->widgetFromImage(*floorAt).toPoint()));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
+  QCOMPARE(doc->objectCount(), 5);
+  QVERIFY(doc->undoStack()->canUndo());
+  step(QStringLiteral("dropped_while_preparing"));
+
+  QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
+  qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
+  qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
+  qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
+}
+
+// The guided start on a York photo: the Steps panel's states, the box accepted with the step's
+// own button, one light outlined, a library chair dragged in, Render Final Image (and a
+// cancelled one), the before/after split and the export; the panel hides once all four steps
+// are done and View > Steps brings it back. Screenshots and times in
+// studio_designer_artifacts/guided/.
+void StudioDesignerTest::guidedFirstCompositeOnAYorkPhoto() {
+  const QString photo = sharedFile(QStringLiteral("york/P1020833.jpg"));
+  if (photo.isEmpty()) QSKIP("skipped: ../shared/york not present (needs ../shared/york/P1020833.jpg)");
+  QSettings().remove(QStringLiteral("guide/done"));
+  StepLog log(QStringLiteral("studio_designer_artifacts/guided"));
+  MainWindow window;
+  QVERIFY(inlay::test::showForWorkflow(window));
+  Document* doc = window.document();
+  Viewport* view = window.viewport();
+  QStringList timings;
+  auto step = [&](const QString& name) { QVERIFY(log.step(&window, name)); };
+  log.restart();
+  QVERIFY(window.openPath(photo));
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  step(QStringLiteral("photo_opened"));
+
+  // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
+  StepsDock* steps = window.stepsDock();
+  QVERIFY(steps->isVisible());
+  QCOMPARE(steps->currentStep(), int(StepsDock::Room));
+  QVERIFY(steps->button(StepsDock::Room)->isVisible() && steps->button(StepsDock::Room)->isEnabled());
+  QVERIFY2(steps->stateText(StepsDock::Lights).contains(QStringLiteral("gathered light only")),
+           qPrintable(steps->stateText(StepsDock::Lights)));
+  QVERIFY(!steps->isDone(StepsDock::Objects) && !steps->isDone(StepsDock::Export));
+
+  // --- Accept the box (the step's own button), then outline one light (Light tool clicks) ---
+  QElapsedTimer clock;
+  clock.start();
+  steps->button(StepsDock::Room)->click();
+  QVERIFY(doc->backWallIsUsers());
+  QVERIFY(steps->isDone(StepsDock::Room));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Lights));
+  steps->button(StepsDock::Lights)->click();  // picks the Light tool
+  QCOMPARE(view->tool(), Viewport::Tool::Light);
+  const QRectF lamp = brightestPatch(window.renderer()->photoImage());
+  for (const QPointF& c : {lamp.topLeft(), lamp.topRight(), lamp.bottomRight(), lamp.bottomLeft()})
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
+  QTest::keyClick(view, Qt::Key_Return);
+  QCOMPARE(int(doc->scene().lights.size()), 1);
+  QVERIFY(steps->isDone(StepsDock::Lights));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Objects));
+  window.toolAction(int(Viewport::Tool::Select))->trigger();
+  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
+  timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
+  step(QStringLiteral("box_accepted_light_outlined"));
+
+  // --- A library chair dragged onto the floor ---
+  auto* library = window.findChild<LibraryDock*>();
+  QVERIFY(library);
+  QListWidgetItem* chair = nullptr;
+  for (int i = 0; i < library->list()->count(); ++i)
+    if (library->list()->item(i)->text() == QStringLiteral("Chair")) chair = library->list()->item(i);
+  if (!chair) QSKIP("the model library is not installed");
+  const std::unique_ptr<QMimeData> mime(library->list()->mimeData({chair}));
+  QVERIFY(mime && mime->hasUrls());
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->hasFrame(), waitMs(60000));
+  const std::optional<Vec2> floorAt = floorPixel(doc, 0.5);
+  QVERIFY(floorAt);
+  clock.restart();
+  QVERIFY(dropUrl(view, mime->urls().first().toLocalFile(), view->widgetFromImage(*floorAt).toPoint()));
+  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
+  QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
+  QCOMPARE(doc->objectCount(), 1);
+  timings << QStringLiteral("library_chair_drop_ms,%1").arg(clock.elapsed());
+  QVERIFY(steps->isDone(StepsDock::Objects));
+  QCOMPARE(steps->currentStep(), int(StepsDock::Export));
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
+  step(QStringLiteral("library_chair_dropped"));
+
   // --- Render Final Image: the photo's full size, written atomically; then all steps are done ---
   {
     const QString finalPath = log.filePath(QStringLiteral("final.png"));
@@ -512,20 +579,9 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
     step(QStringLiteral("exported"));
   }
 
-  // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
-  doc->prepare();
-  QCOMPARE(doc->state(), Document::State::Preparing);
-  QVERIFY(dropUrl(view, shelf, view->widgetFromImage(*floorAt).toPoint()));
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
-  QCOMPARE(doc->objectCount(), 5);
-  QVERIFY(doc->undoStack()->canUndo());
-  step(QStringLiteral("dropped_while_preparing"));
-
   QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
   qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
   qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
-  qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
 }
 
 void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {

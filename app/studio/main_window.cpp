@@ -744,10 +744,20 @@ bool MainWindow::exportComposite(const QString& path) {
     showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
     return false;
   }
-  statusBar()->showMessage(tr("Exported %1 (%2 spp)")
-                               .arg(QDir::toNativeSeparators(path))
-                               .arg(renderer_->frameInfo().spp),
-                           5000);
+  const QSize preview = renderer_->previewSize();
+  if (prepared && preview.width() < prepared->camera.widthPx)
+    // A big photo's preview is smaller than the photo: say so, and where the full size is.
+    statusBar()->showMessage(tr("Exported %1 (%2 spp, the preview's %3 × %4; Render Final Image writes the photo's full size)")
+                                 .arg(QDir::toNativeSeparators(path))
+                                 .arg(renderer_->frameInfo().spp)
+                                 .arg(preview.width())
+                                 .arg(preview.height()),
+                             10000);
+  else
+    statusBar()->showMessage(tr("Exported %1 (%2 spp)")
+                                 .arg(QDir::toNativeSeparators(path))
+                                 .arg(renderer_->frameInfo().spp),
+                             5000);
   stepsDock_->markExported(path);
   return true;
 }
