@@ -194,6 +194,7 @@ class StudioDesignerTest : public QObject {
   void badModelFilesGetMessagesOrSaneDefaults();
   void dropOnATableTopStandsOnIt();
   void propertiesLabelEveryFieldInEveryLanguage();
+  void bigPhotosPreviewAtAboutOneMegapixel();
 
  private:
   QTemporaryDir dir_;
@@ -739,6 +740,21 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
   window.setLanguage(QStringLiteral("en"));
   QSettings().remove(QStringLiteral("language"));
   removeTranslators();
+}
+
+// A 12-megapixel photo's preview renders at about 1 MP with the photo's aspect; photos up to
+// 1 MP render their preview at their own size (Render Final Image is always the photo's).
+void StudioDesignerTest::bigPhotosPreviewAtAboutOneMegapixel() {
+  QCOMPARE(RenderController::previewSizeFor(640, 480), QSize(640, 480));
+  QCOMPARE(RenderController::previewSizeFor(1000, 1000), QSize(1000, 1000));
+  for (const QSize photo : {QSize(4000, 3000), QSize(3000, 4000), QSize(9248, 6936), QSize(1001, 1000)}) {
+    const QSize p = RenderController::previewSizeFor(photo.width(), photo.height());
+    const double pixels = double(p.width()) * p.height();
+    QVERIFY2(pixels <= RenderController::kPreviewMaxPixels * 1.003 && pixels > 0.99 * RenderController::kPreviewMaxPixels,
+             qPrintable(QStringLiteral("%1 x %2").arg(p.width()).arg(p.height())));
+    QVERIFY(std::abs(double(p.width()) / p.height() - double(photo.width()) / photo.height()) < 0.003);
+  }
+  QCOMPARE(RenderController::previewSizeFor(0, 0), QSize(0, 0));
 }
 
 QTEST_MAIN(StudioDesignerTest)
