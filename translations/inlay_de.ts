@@ -854,13 +854,13 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="497"/>
-        <location filename="../app/studio/main_window.cpp" line="1194"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
@@ -1022,8 +1022,8 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     <message>
         <location filename="../app/studio/main_window.cpp" line="715"/>
         <location filename="../app/studio/main_window.cpp" line="736"/>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
@@ -1035,28 +1035,28 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="785"/>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="785"/>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="786"/>
-        <location filename="../app/studio/main_window.cpp" line="906"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="786"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
@@ -1071,244 +1071,249 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="747"/>
+        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
+        <translation>%1 exportiert (%2 spp, die Vorschau mit %3 × %4; Endgültiges Bild rendern schreibt die volle Größe des Fotos)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="757"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="782"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Alle vier Schritte erledigt. Ansicht &gt; Schritte zeigt sie wieder.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
-        <location filename="../app/studio/main_window.cpp" line="802"/>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
         <source>Nothing to render</source>
         <translation>Nichts zu rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="787"/>
-        <location filename="../app/studio/main_window.cpp" line="827"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
+        <location filename="../app/studio/main_window.cpp" line="839"/>
         <source>Render Final Image</source>
         <translation>Endgültiges Bild rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="818"/>
         <source>A final image is being rendered already.</source>
         <translation>Ein endgültiges Bild wird bereits gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="813"/>
-        <location filename="../app/studio/main_window.cpp" line="818"/>
+        <location filename="../app/studio/main_window.cpp" line="825"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
         <source>Cannot render the final image</source>
         <translation>Das endgültige Bild kann nicht gerendert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1: bitte eine .png-, .jpg-, .tif- oder .exr-Datei wählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="819"/>
+        <location filename="../app/studio/main_window.cpp" line="831"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1: der Ordner %2 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="846"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="858"/>
         <source>Rendering the final image…</source>
         <translation>Das endgültige Bild wird gerendert…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="846"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Endgültiges Bild: höchstens %1 Samples pro Pixel, geschätzter Fehler %2 (Ziel %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="868"/>
+        <location filename="../app/studio/main_window.cpp" line="880"/>
         <source>Cannot write the final image</source>
         <translation>Das endgültige Bild kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="875"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="875"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="876"/>
+        <location filename="../app/studio/main_window.cpp" line="888"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
-        <location filename="../app/studio/main_window.cpp" line="802"/>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="905"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="916"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="923"/>
+        <location filename="../app/studio/main_window.cpp" line="935"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="924"/>
+        <location filename="../app/studio/main_window.cpp" line="936"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="896"/>
-        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="939"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="952"/>
+        <location filename="../app/studio/main_window.cpp" line="964"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="953"/>
+        <location filename="../app/studio/main_window.cpp" line="965"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="962"/>
+        <location filename="../app/studio/main_window.cpp" line="974"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="987"/>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
         <source>Insert Model</source>
         <translation>Modell einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1015"/>
+        <location filename="../app/studio/main_window.cpp" line="1027"/>
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1037"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1035"/>
+        <location filename="../app/studio/main_window.cpp" line="1047"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1036"/>
+        <location filename="../app/studio/main_window.cpp" line="1048"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1051"/>
+        <location filename="../app/studio/main_window.cpp" line="1063"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1065"/>
+        <location filename="../app/studio/main_window.cpp" line="1077"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1068"/>
+        <location filename="../app/studio/main_window.cpp" line="1080"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1069"/>
+        <location filename="../app/studio/main_window.cpp" line="1081"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1078"/>
+        <location filename="../app/studio/main_window.cpp" line="1090"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1096"/>
+        <location filename="../app/studio/main_window.cpp" line="1108"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1126"/>
+        <location filename="../app/studio/main_window.cpp" line="1138"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1128"/>
+        <location filename="../app/studio/main_window.cpp" line="1140"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1154"/>
+        <location filename="../app/studio/main_window.cpp" line="1166"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1157"/>
+        <location filename="../app/studio/main_window.cpp" line="1169"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1158"/>
+        <location filename="../app/studio/main_window.cpp" line="1170"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1162"/>
+        <location filename="../app/studio/main_window.cpp" line="1174"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1163"/>
+        <location filename="../app/studio/main_window.cpp" line="1175"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1181"/>
+        <location filename="../app/studio/main_window.cpp" line="1193"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1187"/>
+        <location filename="../app/studio/main_window.cpp" line="1199"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1194"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -1781,7 +1786,7 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="95"/>
         <source>the box is yours</source>
-        <translation>die Box ist Ihre</translation>
+        <translation>Ihre eigene Box</translation>
     </message>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="97"/>
@@ -2008,53 +2013,53 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Nachher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="896"/>
+        <location filename="../app/studio/viewport.cpp" line="899"/>
         <source>the left wall</source>
         <translation>der linken Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="897"/>
+        <location filename="../app/studio/viewport.cpp" line="900"/>
         <source>the right wall</source>
         <translation>der rechten Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="898"/>
+        <location filename="../app/studio/viewport.cpp" line="901"/>
         <source>the back wall</source>
         <translation>der Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="899"/>
+        <location filename="../app/studio/viewport.cpp" line="902"/>
         <source>the wall behind the camera</source>
         <translation>der Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="900"/>
+        <location filename="../app/studio/viewport.cpp" line="903"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Mit dem Rücken an %1 (Umschalt gedrückt halten: frei platzieren).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="920"/>
+        <location filename="../app/studio/viewport.cpp" line="923"/>
         <source>Turned %1°</source>
         <translation>Gedreht auf %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>Height %1 m</source>
         <translation>Höhe %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="966"/>
+        <location filename="../app/studio/viewport.cpp" line="969"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
         <location filename="../app/studio/viewport.cpp" line="892"/>
-        <location filename="../app/studio/viewport.cpp" line="1292"/>
+        <location filename="../app/studio/viewport.cpp" line="1295"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1224"/>
+        <location filename="../app/studio/viewport.cpp" line="1227"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>

@@ -854,13 +854,13 @@ Faites-le glisser dans la photo.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="497"/>
-        <location filename="../app/studio/main_window.cpp" line="1194"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
@@ -1022,8 +1022,8 @@ Faites-le glisser dans la photo.</translation>
     <message>
         <location filename="../app/studio/main_window.cpp" line="715"/>
         <location filename="../app/studio/main_window.cpp" line="736"/>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
@@ -1035,28 +1035,28 @@ Faites-le glisser dans la photo.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="785"/>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="785"/>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="786"/>
-        <location filename="../app/studio/main_window.cpp" line="906"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="786"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
@@ -1071,244 +1071,249 @@ Faites-le glisser dans la photo.</translation>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="747"/>
+        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
+        <translation>%1 exporté (%2 spp, l&apos;aperçu en %3 × %4 ; Rendre l&apos;image finale écrit la pleine taille de la photo)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="757"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="782"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Les quatre étapes sont faites. Affichage &gt; Étapes les montre à nouveau.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
-        <location filename="../app/studio/main_window.cpp" line="802"/>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
         <source>Nothing to render</source>
         <translation>Rien à rendre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="787"/>
-        <location filename="../app/studio/main_window.cpp" line="827"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
+        <location filename="../app/studio/main_window.cpp" line="839"/>
         <source>Render Final Image</source>
         <translation>Rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="818"/>
         <source>A final image is being rendered already.</source>
         <translation>Une image finale est déjà en cours de rendu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="813"/>
-        <location filename="../app/studio/main_window.cpp" line="818"/>
+        <location filename="../app/studio/main_window.cpp" line="825"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
         <source>Cannot render the final image</source>
         <translation>Impossible de rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1 : choisissez un fichier .png, .jpg, .tif ou .exr.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="819"/>
+        <location filename="../app/studio/main_window.cpp" line="831"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1 : le dossier %2 n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="846"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="858"/>
         <source>Rendering the final image…</source>
         <translation>Rendu de l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="846"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Image finale : %1 échantillons par pixel au plus, erreur estimée %2 (cible %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="868"/>
+        <location filename="../app/studio/main_window.cpp" line="880"/>
         <source>Cannot write the final image</source>
         <translation>Impossible d&apos;écrire l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="875"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="875"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="876"/>
+        <location filename="../app/studio/main_window.cpp" line="888"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
-        <location filename="../app/studio/main_window.cpp" line="802"/>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="905"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="916"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="923"/>
+        <location filename="../app/studio/main_window.cpp" line="935"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="924"/>
+        <location filename="../app/studio/main_window.cpp" line="936"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="896"/>
-        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="939"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="952"/>
+        <location filename="../app/studio/main_window.cpp" line="964"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="953"/>
+        <location filename="../app/studio/main_window.cpp" line="965"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="962"/>
+        <location filename="../app/studio/main_window.cpp" line="974"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="987"/>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1015"/>
+        <location filename="../app/studio/main_window.cpp" line="1027"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1025"/>
+        <location filename="../app/studio/main_window.cpp" line="1037"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1035"/>
+        <location filename="../app/studio/main_window.cpp" line="1047"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1036"/>
+        <location filename="../app/studio/main_window.cpp" line="1048"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1051"/>
+        <location filename="../app/studio/main_window.cpp" line="1063"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1065"/>
+        <location filename="../app/studio/main_window.cpp" line="1077"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1068"/>
+        <location filename="../app/studio/main_window.cpp" line="1080"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1069"/>
+        <location filename="../app/studio/main_window.cpp" line="1081"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1078"/>
+        <location filename="../app/studio/main_window.cpp" line="1090"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1096"/>
+        <location filename="../app/studio/main_window.cpp" line="1108"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1126"/>
+        <location filename="../app/studio/main_window.cpp" line="1138"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1128"/>
+        <location filename="../app/studio/main_window.cpp" line="1140"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1154"/>
+        <location filename="../app/studio/main_window.cpp" line="1166"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1157"/>
+        <location filename="../app/studio/main_window.cpp" line="1169"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1158"/>
+        <location filename="../app/studio/main_window.cpp" line="1170"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1162"/>
+        <location filename="../app/studio/main_window.cpp" line="1174"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1163"/>
+        <location filename="../app/studio/main_window.cpp" line="1175"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1181"/>
+        <location filename="../app/studio/main_window.cpp" line="1193"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1187"/>
+        <location filename="../app/studio/main_window.cpp" line="1199"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1194"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -2008,53 +2013,53 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>Après</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="896"/>
+        <location filename="../app/studio/viewport.cpp" line="899"/>
         <source>the left wall</source>
         <translation>le mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="897"/>
+        <location filename="../app/studio/viewport.cpp" line="900"/>
         <source>the right wall</source>
         <translation>le mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="898"/>
+        <location filename="../app/studio/viewport.cpp" line="901"/>
         <source>the back wall</source>
         <translation>le mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="899"/>
+        <location filename="../app/studio/viewport.cpp" line="902"/>
         <source>the wall behind the camera</source>
         <translation>le mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="900"/>
+        <location filename="../app/studio/viewport.cpp" line="903"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="920"/>
+        <location filename="../app/studio/viewport.cpp" line="923"/>
         <source>Turned %1°</source>
         <translation>Tourné à %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>Height %1 m</source>
         <translation>Hauteur %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="966"/>
+        <location filename="../app/studio/viewport.cpp" line="969"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
         <location filename="../app/studio/viewport.cpp" line="892"/>
-        <location filename="../app/studio/viewport.cpp" line="1292"/>
+        <location filename="../app/studio/viewport.cpp" line="1295"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1224"/>
+        <location filename="../app/studio/viewport.cpp" line="1227"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>

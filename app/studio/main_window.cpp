@@ -775,7 +775,9 @@ void MainWindow::createStepsDock() {
   splitDockWidget(stepsDock_, sceneDock_, Qt::Vertical);
   splitDockWidget(sceneDock_, propertiesDock_, Qt::Vertical);
   connect(stepsDock_, &StepsDock::allDone, this, [this] {
-    QSettings().setValue(QStringLiteral("guide/done"), true);
+    QSettings settings;
+    if (settings.value(QStringLiteral("guide/done")).toBool()) return;  // brought back by the user
+    settings.setValue(QStringLiteral("guide/done"), true);
     stepsDock_->hide();
     statusBar()->showMessage(tr("All four steps done. View > Steps shows them again."), 8000);
   });

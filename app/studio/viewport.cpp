@@ -892,7 +892,10 @@ void Viewport::dragObjectTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
     Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
     return;
   }
-  if (!snap) return Q_EMIT statusMessage(QString());
+  if (!snap) {
+    Q_EMIT statusMessage(QString());
+    return;
+  }
   const QString wall = snap->wall == SurfaceKind::WallLeft    ? tr("the left wall")
                        : snap->wall == SurfaceKind::WallRight ? tr("the right wall")
                        : snap->wall == SurfaceKind::WallBack  ? tr("the back wall")

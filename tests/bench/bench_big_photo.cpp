@@ -194,8 +194,18 @@ int main(int argc, char** argv) {
   const int gestures = std::max(3, parser.value(gesturesOpt).toInt());
 
   std::vector<Row> rows;
+  // Rewritten after each photo, so a long run that is stopped keeps what it measured.
+  auto writeCsv = [&] {
+    QFile csv(out.filePath(QStringLiteral("bench_big_photo.csv")));
+    if (!csv.open(QIODevice::WriteOnly | QIODevice::Text)) return false;
+    QTextStream s(&csv);
+    s << "megapixels,width,height,figure,value\n";
+    for (const Row& r : rows)
+      s << r.megapixels << ',' << r.size.width() << ',' << r.size.height() << ',' << r.figure << ',' << r.ms << '\n';
+    return true;
+  };
   // The target size first: the bundled example as it is (512 x 384).
-  if (!measure(example, 0.0, gestures, rows)) return 1;
+  if (!measure(example, 0.0, gestures, rows) || !writeCsv()) return 1;
   for (const QString& item : parser.value(mpOpt).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
     const double mp = item.toDouble();
     const QString path = upscaled(source, mp, QDir(tmp.path()));
@@ -203,15 +213,9 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "bench_big_photo: %.1f MP failed\n", mp);
       return 1;
     }
+    if (!writeCsv()) return 1;
     std::fprintf(stderr, "bench_big_photo: %.1f MP done\n", mp);
   }
-
-  QFile csv(out.filePath(QStringLiteral("bench_big_photo.csv")));
-  if (!csv.open(QIODevice::WriteOnly | QIODevice::Text)) return 1;
-  QTextStream s(&csv);
-  s << "megapixels,width,height,figure,value\n";
-  for (const Row& r : rows)
-    s << r.megapixels << ',' << r.size.width() << ',' << r.size.height() << ',' << r.figure << ',' << r.ms << '\n';
   // The medians, one line per photo and figure (megapixels 0: the example at 512 x 384).
   std::printf("photo,width,height,figure,median\n");
   std::vector<std::pair<QString, QString>> seen;
