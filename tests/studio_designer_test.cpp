@@ -2,11 +2,10 @@
 // skipped without it), insert a glTF model through Insert Model…, drop an OBJ (with concave
 // n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale in
 // Properties, duplicate, rename, hide, turn and raise with the on-canvas handles, drag it near a
-// wall (its back snaps to the wall), undo everything and redo it all. A second flow is the guided
-// start: the Steps panel, the box accepted, one light outlined, a library chair dragged in,
-// Render Final Image (and a cancelled one that leaves the earlier file alone), the before/after
-// split and the export. Each step's seconds since the photo was opened and a screenshot go to
-// studio_designer_artifacts/ (and guided/) in the build tree (figures.csv, NN_step.png). Bad
+// wall (its back snaps to the wall), render the final image, export, undo everything and redo it
+// all (the guided start with the Steps panel is studio_guided_test). Each step's seconds since
+// the photo was opened and a screenshot go to studio_designer_artifacts/ in the build tree
+// (figures.csv, NN_step.png). Bad
 // model files (empty, NaN, flat, over the triangle limit, absurd units, taller than the room, a
 // drop while the scene prepares) get a message naming the file or a sane default, never a crash;
 // the Properties dock labels every field, in German and French.
@@ -46,143 +45,13 @@
 
 #include "studio_test_support.h"
 #include "studio_workflow_steps.h"
+#include "studio_designer_helpers.h"
 
 using namespace inlay;
 using namespace inlay::studio;
-using inlay::test::StepLog;
-using inlay::test::waitMs;
+using namespace inlay::test;
 
-namespace {
-
-QString sharedFile(const QString& relative) {
-  const QString shared = qEnvironmentVariable("INLAY_SHARED_DIR");
-  const QString path = shared + QLatin1Char('/') + relative;
-  return !shared.isEmpty() && QFile::exists(path) ? QFileInfo(path).absoluteFilePath() : QString();
-}
-
-bool writeText(const QString& path, const QByteArray& text) {
-  QFile f(path);
-  return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
-}
-
-// A small glTF 2.0 file (one embedded buffer): a box `w` x `h` x `d` metres, or in any unit the
-// caller means, standing on y = 0.
-QByteArray boxGltf(double w, double h, double d) {
-  QByteArray bin;
-  auto putF = [&](float v) { bin.append(reinterpret_cast<const char*>(&v), 4); };
-  auto putU = [&](quint16 v) { bin.append(reinterpret_cast<const char*>(&v), 2); };
-  for (int i = 0; i < 8; ++i) {
-    putF(float(i & 1 ? w / 2 : -w / 2));
-    putF(float(i & 2 ? h : 0));
-    putF(float(i & 4 ? d / 2 : -d / 2));
-  }
-  const quint16 faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                             2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-  for (quint16 f : faces) putU(f);
-  const QByteArray json = QStringLiteral(
-      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
-"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
-"materials":[{"name":"oak","pbrMetallicRoughness":{"baseColorFactor":[0.55,0.35,0.2,1],"metallicFactor":0,"roughnessFactor":0.6}}],
-"buffers":[{"byteLength":%1,"uri":"data:application/octet-stream;base64,%2"}],
-"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96},{"buffer":0,"byteOffset":96,"byteLength":72}],
-"accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3","min":[%3,0,%5],"max":[%4,%6,%7]},
-{"bufferView":1,"componentType":5123,"count":36,"type":"SCALAR"}]})")
-                               .arg(bin.size())
-                               .arg(QString::fromLatin1(bin.toBase64()))
-                               .arg(-w / 2).arg(w / 2).arg(-d / 2).arg(h).arg(d / 2)
-                               .toUtf8();
-  return json;
-}
-
-// A small bookshelf side as OBJ without a unit: a U-shaped (concave) front and back face, 8
-// corners each, joined by quads. 1 x 1.8 x 0.3 units.
-QByteArray concaveShelfObj() {
-  const double xy[8][2] = {{0, 0}, {1, 0}, {1, 1.8}, {0.8, 1.8}, {0.8, 0.2}, {0.2, 0.2}, {0.2, 1.8}, {0, 1.8}};
-  QByteArray obj = "# a U-shaped shelf with concave octagon faces\n";
-  for (double z : {0.0, 0.3})
-    for (const auto& p : xy) obj += QByteArray("v ") + QByteArray::number(p[0]) + ' ' + QByteArray::number(p[1]) + ' ' + QByteArray::number(z) + '\n';
-  obj += "f 8 7 6 5 4 3 2 1\nf 9 10 11 12 13 14 15 16\n";
-  for (int i = 0; i < 8; ++i) {
-    const int a = i + 1, b = (i + 1) % 8 + 1;
-    obj += "f " + QByteArray::number(a) + ' ' + QByteArray::number(b) + ' ' + QByteArray::number(b + 8) + ' ' +
-           QByteArray::number(a + 8) + '\n';
-  }
-  return obj;
-}
-
-// Drops the file URL on the viewport at `widgetPos`, as a file manager or the model library's
-// thumbnails do (text/uri-list): enter, move, drop.
-bool dropUrl(QWidget* on, const QString& path, QPoint widgetPos) {
-  QMimeData data;
-  data.setData(QStringLiteral("text/uri-list"), QUrl::fromLocalFile(path).toEncoded() + "\r\n");
-  QDragEnterEvent enter(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &enter);
-  if (!enter.isAccepted()) return false;
-  QDragMoveEvent move(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &move);
-  QDropEvent drop(QPointF(widgetPos), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &drop);
-  QCoreApplication::processEvents();  // the viewport hands the drop on once it has returned
-  return drop.isAccepted();
-}
-
-bool waitNoPendingModels(MainWindow& w, int timeoutMs) {
-  QElapsedTimer t;
-  t.start();
-  while (w.pendingModelCount() > 0 && t.elapsed() < timeoutMs) QTest::qWait(20);
-  return w.pendingModelCount() == 0;
-}
-
-// Every key of every object, as the scene file writes them.
-std::string objectsJson(const Document* doc) {
-  SceneDoc d;
-  d.objects = doc->scene().objects;
-  return sceneToJson(d);
-}
-
-// The supporting surface's height under object `i` (0: the floor).
-double standsAtY(const Document* doc, int i) { return doc->prepared()->placements[size_t(i)].baseWorld.y(); }
-
-// A floor pixel near the bottom middle of the photo and a wall pixel above the floor line.
-std::optional<Vec2> floorPixel(const Document* doc, double fx) {
-  const Camera& cam = doc->prepared()->camera;
-  for (double fy = 0.95; fy > 0.4; fy -= 0.02) {
-    const Vec2 px(fx * cam.widthPx, fy * cam.heightPx);
-    const auto hit = doc->prepared()->geometry.intersect(cam.rayThroughPixel(px), true);
-    if (hit && std::abs(hit->pointWorld.y()) < 1e-6) return px;
-  }
-  return std::nullopt;
-}
-
-// The brightest 40 x 18 pixel patch in the upper 45 % of the photo (a ceiling light), in image
-// pixels.
-QRectF brightestPatch(const QImage& photo) {
-  const QImage g = photo.convertToFormat(QImage::Format_Grayscale8);
-  const int w = 40, h = 18;
-  long best = -1;
-  QRectF out;
-  for (int y = 0; y + h < int(0.45 * g.height()); y += 3)
-    for (int x = 0; x + w < g.width(); x += 4) {
-      long sum = 0;
-      for (int r = y; r < y + h; r += 2)
-        for (int c = x; c < x + w; c += 2) sum += g.constScanLine(r)[c];
-      if (sum > best) best = sum, out = QRectF(x, y, w, h);
-    }
-  return out;
-}
-
-QByteArray readAll(const QString& path) {
-  QFile f(path);
-  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-// The widget point where a world point shows (the object's camera).
-QPoint widgetOf(const Document* doc, const Viewport* view, const Vec3& world) {
-  const std::optional<Vec2> px = doc->prepared()->camera.project(world);
-  return px ? view->widgetFromImage(*px).toPoint() : QPoint(-1, -1);
-}
-
-}  // namespace
+// The helpers (sharedFile, dropUrl, floorPixel, ...) are shared with studio_guided_test.
 
 class StudioDesignerTest : public QObject {
   Q_OBJECT
@@ -190,7 +59,6 @@ class StudioDesignerTest : public QObject {
  private Q_SLOTS:
   void initTestCase();
   void modelsInsertDropArrangeUndoRedo();
-  void guidedFirstCompositeOnAYorkPhoto();
   void badModelFilesGetMessagesOrSaneDefaults();
   void dropOnATableTopStandsOnIt();
   void propertiesLabelEveryFieldInEveryLanguage();
@@ -407,6 +275,25 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
     step(QStringLiteral("snapped_to_wall"));
   }
 
+  // --- Render the final image (full size, a few samples here) and export the composite ---
+  {
+    const QString finalPath = log.filePath(QStringLiteral("final.png"));
+    QFile::remove(finalPath);
+    QSignalSpy finished(&window, &MainWindow::finalImageFinished);
+    clock.restart();
+    QVERIFY(window.renderFinalImage(finalPath, 4));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
+    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
+    QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
+    QCOMPARE(QImage(finalPath).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    step(QStringLiteral("final_rendered"));
+    const QString exported = log.filePath(QStringLiteral("composite.png"));
+    QFile::remove(exported);
+    QVERIFY(window.exportComposite(exported));
+    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    step(QStringLiteral("exported"));
+  }
+
   // --- 6. Undo everything, then redo it all: the same objects, key for key ---
   const std::string arranged = objectsJson(doc);
   clock.restart();
@@ -444,145 +331,6 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
   qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
   qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
-}
-
-// The guided start on a York photo: the Steps panel's states, the box accepted with the step's
-// own button, one light outlined, a library chair dragged in, Render Final Image (and a
-// cancelled one), the before/after split and the export; the panel hides once all four steps
-// are done and View > Steps brings it back. Screenshots and times in
-// studio_designer_artifacts/guided/.
-void StudioDesignerTest::guidedFirstCompositeOnAYorkPhoto() {
-  const QString photo = sharedFile(QStringLiteral("york/P1020833.jpg"));
-  if (photo.isEmpty()) QSKIP("skipped: ../shared/york not present (needs ../shared/york/P1020833.jpg)");
-  QSettings().remove(QStringLiteral("guide/done"));
-  StepLog log(QStringLiteral("studio_designer_artifacts/guided"));
-  MainWindow window;
-  QVERIFY(inlay::test::showForWorkflow(window));
-  Document* doc = window.document();
-  Viewport* view = window.viewport();
-  QStringList timings;
-  auto step = [&](const QString& name) { QVERIFY(log.step(&window, name)); };
-  log.restart();
-  QVERIFY(window.openPath(photo));
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  step(QStringLiteral("photo_opened"));
-
-  // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
-  StepsDock* steps = window.stepsDock();
-  QVERIFY(steps->isVisible());
-  QCOMPARE(steps->currentStep(), int(StepsDock::Room));
-  QVERIFY(steps->button(StepsDock::Room)->isVisible() && steps->button(StepsDock::Room)->isEnabled());
-  QVERIFY2(steps->stateText(StepsDock::Lights).contains(QStringLiteral("gathered light only")),
-           qPrintable(steps->stateText(StepsDock::Lights)));
-  QVERIFY(!steps->isDone(StepsDock::Objects) && !steps->isDone(StepsDock::Export));
-
-  // --- Accept the box (the step's own button), then outline one light (Light tool clicks) ---
-  QElapsedTimer clock;
-  clock.start();
-  steps->button(StepsDock::Room)->click();
-  QVERIFY(doc->backWallIsUsers());
-  QVERIFY(steps->isDone(StepsDock::Room));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Lights));
-  steps->button(StepsDock::Lights)->click();  // picks the Light tool
-  QCOMPARE(view->tool(), Viewport::Tool::Light);
-  const QRectF lamp = brightestPatch(window.renderer()->photoImage());
-  for (const QPointF& c : {lamp.topLeft(), lamp.topRight(), lamp.bottomRight(), lamp.bottomLeft()})
-    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
-  QTest::keyClick(view, Qt::Key_Return);
-  QCOMPARE(int(doc->scene().lights.size()), 1);
-  QVERIFY(steps->isDone(StepsDock::Lights));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Objects));
-  window.toolAction(int(Viewport::Tool::Select))->trigger();
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
-  step(QStringLiteral("box_accepted_light_outlined"));
-
-  // --- A library chair dragged onto the floor ---
-  auto* library = window.findChild<LibraryDock*>();
-  QVERIFY(library);
-  QListWidgetItem* chair = nullptr;
-  for (int i = 0; i < library->list()->count(); ++i)
-    if (library->list()->item(i)->text() == QStringLiteral("Chair")) chair = library->list()->item(i);
-  if (!chair) QSKIP("the model library is not installed");
-  const std::unique_ptr<QMimeData> mime(library->list()->mimeData({chair}));
-  QVERIFY(mime && mime->hasUrls());
-  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->hasFrame(), waitMs(60000));
-  const std::optional<Vec2> floorAt = floorPixel(doc, 0.5);
-  QVERIFY(floorAt);
-  clock.restart();
-  QVERIFY(dropUrl(view, mime->urls().first().toLocalFile(), view->widgetFromImage(*floorAt).toPoint()));
-  QVERIFY(waitNoPendingModels(window, waitMs(30000)));
-  QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
-  QCOMPARE(doc->objectCount(), 1);
-  timings << QStringLiteral("library_chair_drop_ms,%1").arg(clock.elapsed());
-  QVERIFY(steps->isDone(StepsDock::Objects));
-  QCOMPARE(steps->currentStep(), int(StepsDock::Export));
-  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
-  step(QStringLiteral("library_chair_dropped"));
-
-  // --- Render Final Image: the photo's full size, written atomically; then all steps are done ---
-  {
-    const QString finalPath = log.filePath(QStringLiteral("final.png"));
-    QFile::remove(finalPath);
-    QSignalSpy finished(&window, &MainWindow::finalImageFinished);
-    clock.restart();
-    QVERIFY(window.renderFinalImage(finalPath, 8));
-    QVERIFY(window.renderer()->paused());
-    QVERIFY(!window.renderFinalAction()->isEnabled());
-    QVERIFY(!window.renderFinalImage(finalPath, 8));  // one at a time
-    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
-    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
-    QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
-    const QImage written(finalPath);
-    QCOMPARE(written.size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
-    QVERIFY(!window.renderer()->paused());
-    QVERIFY(window.renderFinalAction()->isEnabled());
-    QVERIFY(steps->isDone(StepsDock::Export));
-    // All four done: the panel hides for good, and View > Steps brings it back.
-    QVERIFY(!steps->isVisible());
-    QVERIFY(QSettings().value(QStringLiteral("guide/done")).toBool());
-    step(QStringLiteral("final_rendered"));
-    steps->toggleViewAction()->trigger();
-    QVERIFY(steps->isVisible());
-    // A cancelled render leaves the earlier file as it was, and no temporary beside it.
-    const QByteArray earlier = readAll(finalPath);
-    QVERIFY(window.renderFinalImage(finalPath, 8));
-    window.finalRender()->cancel();
-    QCOMPARE(finished.count(), 2);
-    QVERIFY(!finished.last()[0].toBool());
-    QCOMPARE(readAll(finalPath), earlier);
-    QCOMPARE(QFileInfo(finalPath).absoluteDir().entryList({QStringLiteral("*final.png*")}, QDir::Files),
-             QStringList{QStringLiteral("final.png")});
-    QVERIFY(!window.renderer()->paused());
-  }
-
-  // --- The before/after split: the divider follows a drag ---
-  window.splitAction()->trigger();
-  QVERIFY(view->splitView());
-  {
-    const int y = view->height() / 2;
-    const int x0 = int(view->splitWidgetX());
-    const double f0 = view->splitFraction();
-    inlay::test::dragLeft(view, QPoint(x0, y), QPoint(x0 - 120, y));
-    QVERIFY2(view->splitFraction() < f0 - 0.1, qPrintable(QString::number(view->splitFraction())));
-    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
-    step(QStringLiteral("before_after_split"));
-  }
-  window.splitAction()->trigger();
-  QVERIFY(!view->splitView());
-
-  // --- Export the composite ---
-  {
-    const QString exported = log.filePath(QStringLiteral("composite.jpg"));
-    QFile::remove(exported);
-    QVERIFY(window.exportComposite(exported));
-    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
-    step(QStringLiteral("exported"));
-  }
-
-  QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
-  qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
-  qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
 }
 
 void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
