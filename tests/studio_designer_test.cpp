@@ -1,17 +1,22 @@
 // The studio as a designer uses it with their own models: open a York photo (../shared/york,
 // skipped without it), insert a glTF model through Insert Model…, drop an OBJ (with concave
-// n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale,
-// duplicate, rename, hide, undo everything and redo it all. Each step's seconds since the photo
-// was opened and a screenshot go to studio_designer_artifacts/ in the build tree (figures.csv,
-// NN_step.png). Bad model files (empty, NaN, flat, over the triangle limit, absurd units,
-// taller than the room, a drop while the scene prepares) get a message naming the file or a
-// sane default, never a crash; the Properties dock labels every field, in German and French.
+// n-gon faces) on the floor and one on a wall (it lands on the floor below), turn and scale in
+// Properties, duplicate, rename, hide, turn and raise with the on-canvas handles, drag it near a
+// wall (its back snaps to the wall), render the final image, export, undo everything and redo it
+// all (the guided start with the Steps panel is studio_guided_test). Each step's seconds since
+// the photo was opened and a screenshot go to studio_designer_artifacts/ in the build tree
+// (figures.csv, NN_step.png). Bad
+// model files (empty, NaN, flat, over the triangle limit, absurd units, taller than the room, a
+// drop while the scene prepares) get a message naming the file or a sane default, never a crash;
+// the Properties dock labels every field, in German and French.
 #include "docks.h"
 #include "document.h"
 #include "i18n.h"
+#include "library_dock.h"
 #include "main_window.h"
 #include "model_import.h"
 #include "render_controller.h"
+#include "steps_dock.h"
 #include "viewport.h"
 
 #include "inlay/engine/pipeline.h"
@@ -26,6 +31,8 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMimeData>
+#include <QPushButton>
+#include <QSignalSpy>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -34,118 +41,17 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 #include "studio_test_support.h"
 #include "studio_workflow_steps.h"
+#include "studio_designer_helpers.h"
 
 using namespace inlay;
 using namespace inlay::studio;
-using inlay::test::StepLog;
-using inlay::test::waitMs;
+using namespace inlay::test;
 
-namespace {
-
-QString sharedFile(const QString& relative) {
-  const QString shared = qEnvironmentVariable("INLAY_SHARED_DIR");
-  const QString path = shared + QLatin1Char('/') + relative;
-  return !shared.isEmpty() && QFile::exists(path) ? QFileInfo(path).absoluteFilePath() : QString();
-}
-
-bool writeText(const QString& path, const QByteArray& text) {
-  QFile f(path);
-  return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
-}
-
-// A small glTF 2.0 file (one embedded buffer): a box `w` x `h` x `d` metres, or in any unit the
-// caller means, standing on y = 0.
-QByteArray boxGltf(double w, double h, double d) {
-  QByteArray bin;
-  auto putF = [&](float v) { bin.append(reinterpret_cast<const char*>(&v), 4); };
-  auto putU = [&](quint16 v) { bin.append(reinterpret_cast<const char*>(&v), 2); };
-  for (int i = 0; i < 8; ++i) {
-    putF(float(i & 1 ? w / 2 : -w / 2));
-    putF(float(i & 2 ? h : 0));
-    putF(float(i & 4 ? d / 2 : -d / 2));
-  }
-  const quint16 faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
-                             2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
-  for (quint16 f : faces) putU(f);
-  const QByteArray json = QStringLiteral(
-      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
-"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
-"materials":[{"name":"oak","pbrMetallicRoughness":{"baseColorFactor":[0.55,0.35,0.2,1],"metallicFactor":0,"roughnessFactor":0.6}}],
-"buffers":[{"byteLength":%1,"uri":"data:application/octet-stream;base64,%2"}],
-"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96},{"buffer":0,"byteOffset":96,"byteLength":72}],
-"accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3","min":[%3,0,%5],"max":[%4,%6,%7]},
-{"bufferView":1,"componentType":5123,"count":36,"type":"SCALAR"}]})")
-                               .arg(bin.size())
-                               .arg(QString::fromLatin1(bin.toBase64()))
-                               .arg(-w / 2).arg(w / 2).arg(-d / 2).arg(h).arg(d / 2)
-                               .toUtf8();
-  return json;
-}
-
-// A small bookshelf side as OBJ without a unit: a U-shaped (concave) front and back face, 8
-// corners each, joined by quads. 1 x 1.8 x 0.3 units.
-QByteArray concaveShelfObj() {
-  const double xy[8][2] = {{0, 0}, {1, 0}, {1, 1.8}, {0.8, 1.8}, {0.8, 0.2}, {0.2, 0.2}, {0.2, 1.8}, {0, 1.8}};
-  QByteArray obj = "# a U-shaped shelf with concave octagon faces\n";
-  for (double z : {0.0, 0.3})
-    for (const auto& p : xy) obj += QByteArray("v ") + QByteArray::number(p[0]) + ' ' + QByteArray::number(p[1]) + ' ' + QByteArray::number(z) + '\n';
-  obj += "f 8 7 6 5 4 3 2 1\nf 9 10 11 12 13 14 15 16\n";
-  for (int i = 0; i < 8; ++i) {
-    const int a = i + 1, b = (i + 1) % 8 + 1;
-    obj += "f " + QByteArray::number(a) + ' ' + QByteArray::number(b) + ' ' + QByteArray::number(b + 8) + ' ' +
-           QByteArray::number(a + 8) + '\n';
-  }
-  return obj;
-}
-
-// Drops the file URL on the viewport at `widgetPos`, as a file manager or the model library's
-// thumbnails do (text/uri-list): enter, move, drop.
-bool dropUrl(QWidget* on, const QString& path, QPoint widgetPos) {
-  QMimeData data;
-  data.setData(QStringLiteral("text/uri-list"), QUrl::fromLocalFile(path).toEncoded() + "\r\n");
-  QDragEnterEvent enter(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &enter);
-  if (!enter.isAccepted()) return false;
-  QDragMoveEvent move(widgetPos, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &move);
-  QDropEvent drop(QPointF(widgetPos), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
-  QCoreApplication::sendEvent(on, &drop);
-  QCoreApplication::processEvents();  // the viewport hands the drop on once it has returned
-  return drop.isAccepted();
-}
-
-bool waitNoPendingModels(MainWindow& w, int timeoutMs) {
-  QElapsedTimer t;
-  t.start();
-  while (w.pendingModelCount() > 0 && t.elapsed() < timeoutMs) QTest::qWait(20);
-  return w.pendingModelCount() == 0;
-}
-
-// Every key of every object, as the scene file writes them.
-std::string objectsJson(const Document* doc) {
-  SceneDoc d;
-  d.objects = doc->scene().objects;
-  return sceneToJson(d);
-}
-
-// The supporting surface's height under object `i` (0: the floor).
-double standsAtY(const Document* doc, int i) { return doc->prepared()->placements[size_t(i)].baseWorld.y(); }
-
-// A floor pixel near the bottom middle of the photo and a wall pixel above the floor line.
-std::optional<Vec2> floorPixel(const Document* doc, double fx) {
-  const Camera& cam = doc->prepared()->camera;
-  for (double fy = 0.95; fy > 0.4; fy -= 0.02) {
-    const Vec2 px(fx * cam.widthPx, fy * cam.heightPx);
-    const auto hit = doc->prepared()->geometry.intersect(cam.rayThroughPixel(px), true);
-    if (hit && std::abs(hit->pointWorld.y()) < 1e-6) return px;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
+// The helpers (sharedFile, dropUrl, floorPixel, ...) are shared with studio_guided_test.
 
 class StudioDesignerTest : public QObject {
   Q_OBJECT
@@ -156,6 +62,7 @@ class StudioDesignerTest : public QObject {
   void badModelFilesGetMessagesOrSaneDefaults();
   void dropOnATableTopStandsOnIt();
   void propertiesLabelEveryFieldInEveryLanguage();
+  void bigPhotosPreviewAtAboutOneMegapixel();
 
  private:
   QTemporaryDir dir_;
@@ -194,6 +101,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY(window.openPath(photo));
   QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
   step(QStringLiteral("photo_opened"));
+
 
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());
@@ -299,6 +207,94 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
                            waitMs(60000));
   step(QStringLiteral("arranged"));
 
+  // --- On-canvas handles: turn the shelf to 80° and raise it by a quarter, one undo step each ---
+  doc->setSelectedObject(1);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  const Vec3 shelfBase = doc->prepared()->placements[1].baseWorld;
+  int beforeGesture = doc->undoStack()->count();
+  const std::optional<QPointF> turnAt = view->handlePos(Viewport::Handle::Turn);
+  QVERIFY(turnAt);
+  QCOMPARE(view->handleAt(*turnAt), Viewport::Handle::Turn);
+  const double yaw80 = 80.0 * std::numbers::pi / 180.0;
+  clock.restart();
+  inlay::test::dragLeft(view, turnAt->toPoint(),
+                        widgetOf(doc, view, shelfBase + 0.6 * Vec3(std::sin(yaw80), 0, std::cos(yaw80))));
+  QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - 80.0) < 2.0, qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
+  QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  timings << QStringLiteral("turn_handle_to_frame_ms,%1").arg(clock.elapsed());
+  const double h0 = doc->scene().objects[1].heightM;
+  const std::optional<QPointF> heightAt = view->handlePos(Viewport::Handle::Height);
+  QVERIFY(heightAt);
+  clock.restart();
+  inlay::test::dragLeft(view, heightAt->toPoint(), widgetOf(doc, view, shelfBase + Vec3(0, 1.25 * h0, 0)));
+  QVERIFY2(std::abs(doc->scene().objects[1].heightM - 1.25 * h0) < 0.03 * h0,
+           qPrintable(QString::number(doc->scene().objects[1].heightM)));
+  QCOMPARE(doc->undoStack()->count(), beforeGesture + 2);
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+  timings << QStringLiteral("height_handle_to_frame_ms,%1").arg(clock.elapsed());
+  step(QStringLiteral("handles_turned_and_raised"));
+
+  // --- Dragged near a wall, the shelf stands with its back against it, facing into the room ---
+  {
+    const RoomBox& box = doc->prepared()->geometry.box;
+    const double halfDepth = 0.5 * doc->objectSizeM(1)->z();
+    struct Wall {
+      Vec3 nearIt, normal;
+      double yawDeg;
+      Vec3 onWall;
+    };
+    // 10 cm between the shelf's back and the wall (the snap takes up to 25 cm).
+    const Wall walls[] = {
+        {Vec3(box.xLeftM + halfDepth + 0.10, 0, shelfBase.z()), Vec3(1, 0, 0), 90.0, Vec3(box.xLeftM, 0, 0)},
+        {Vec3(box.xRightM - halfDepth - 0.10, 0, shelfBase.z()), Vec3(-1, 0, 0), -90.0, Vec3(box.xRightM, 0, 0)},
+        {Vec3(shelfBase.x(), 0, box.zBackM + halfDepth + 0.10), Vec3(0, 0, 1), 0.0, Vec3(0, 0, box.zBackM)}};
+    const Wall* chosen = nullptr;
+    for (const Wall& w : walls) {
+      const std::optional<Vec2> px = doc->prepared()->camera.project(w.nearIt);
+      const std::optional<Vec2> stand = px ? doc->supportPointNear(*px) : std::nullopt;
+      if (stand && (*stand - *px).norm() < 1.0 && doc->prepared()->camera.depthOf(w.nearIt) > 0.5) {
+        chosen = &w;
+        break;
+      }
+    }
+    QVERIFY2(chosen, "no wall of the room has floor in view beside it");
+    beforeGesture = doc->undoStack()->count();
+    clock.restart();
+    inlay::test::dragLeft(view, view->widgetFromImage(doc->scene().objects[1].basePx).toPoint(),
+                          widgetOf(doc, view, chosen->nearIt), 20);
+    QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - chosen->yawDeg) < 1e-6,
+             qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
+    const Vec3 snapped = doc->prepared()->placements[1].baseWorld;
+    const double toWall = (snapped - chosen->onWall).dot(chosen->normal);
+    QVERIFY2(std::abs(toWall - (halfDepth + 0.005)) < 0.01,
+             qPrintable(QStringLiteral("%1 m from the wall, the half depth is %2").arg(toWall).arg(halfDepth)));
+    QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
+    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
+    timings << QStringLiteral("snap_drag_to_frame_ms,%1").arg(clock.elapsed());
+    step(QStringLiteral("snapped_to_wall"));
+  }
+
+  // --- Render the final image (full size, one sample per pixel here: the binary's time is
+  // short; studio_guided_test renders more) and export the composite ---
+  {
+    const QString finalPath = log.filePath(QStringLiteral("final.png"));
+    QFile::remove(finalPath);
+    QSignalSpy finished(&window, &MainWindow::finalImageFinished);
+    clock.restart();
+    QVERIFY(window.renderFinalImage(finalPath, 1));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
+    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
+    QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
+    QCOMPARE(QImage(finalPath).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    step(QStringLiteral("final_rendered"));
+    const QString exported = log.filePath(QStringLiteral("composite.png"));
+    QFile::remove(exported);
+    QVERIFY(window.exportComposite(exported));
+    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    step(QStringLiteral("exported"));
+  }
+
   // --- 6. Undo everything, then redo it all: the same objects, key for key ---
   const std::string arranged = objectsJson(doc);
   clock.restart();
@@ -320,6 +316,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
                            waitMs(60000));
   step(QStringLiteral("all_redone"));
+
 
   // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
   doc->prepare();
@@ -492,6 +489,21 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
   window.setLanguage(QStringLiteral("en"));
   QSettings().remove(QStringLiteral("language"));
   removeTranslators();
+}
+
+// A 12-megapixel photo's preview renders at about 1 MP with the photo's aspect; photos up to
+// 1 MP render their preview at their own size (Render Final Image is always the photo's).
+void StudioDesignerTest::bigPhotosPreviewAtAboutOneMegapixel() {
+  QCOMPARE(RenderController::previewSizeFor(640, 480), QSize(640, 480));
+  QCOMPARE(RenderController::previewSizeFor(1000, 1000), QSize(1000, 1000));
+  for (const QSize photo : {QSize(4000, 3000), QSize(3000, 4000), QSize(9248, 6936), QSize(1001, 1000)}) {
+    const QSize p = RenderController::previewSizeFor(photo.width(), photo.height());
+    const double pixels = double(p.width()) * p.height();
+    QVERIFY2(pixels <= RenderController::kPreviewMaxPixels * 1.003 && pixels > 0.99 * RenderController::kPreviewMaxPixels,
+             qPrintable(QStringLiteral("%1 x %2").arg(p.width()).arg(p.height())));
+    QVERIFY(std::abs(double(p.width()) / p.height() - double(photo.width()) / photo.height()) < 0.003);
+  }
+  QCOMPARE(RenderController::previewSizeFor(0, 0), QSize(0, 0));
 }
 
 QTEST_MAIN(StudioDesignerTest)

@@ -17,58 +17,65 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="296"/>
-        <location filename="../app/studio/document.cpp" line="326"/>
+        <location filename="../app/studio/document.cpp" line="298"/>
+        <location filename="../app/studio/document.cpp" line="328"/>
         <source>Preparation was cancelled.</source>
         <translation>La préparation a été annulée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="382"/>
-        <location filename="../app/studio/document.cpp" line="734"/>
-        <location filename="../app/studio/document.cpp" line="916"/>
-        <location filename="../app/studio/document.cpp" line="973"/>
+        <location filename="../app/studio/document.cpp" line="384"/>
+        <location filename="../app/studio/document.cpp" line="789"/>
+        <location filename="../app/studio/document.cpp" line="971"/>
+        <location filename="../app/studio/document.cpp" line="1028"/>
         <source>The position is not a number.</source>
         <translation>La position n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="384"/>
-        <location filename="../app/studio/document.cpp" line="454"/>
-        <location filename="../app/studio/document.cpp" line="471"/>
+        <location filename="../app/studio/document.cpp" line="386"/>
+        <location filename="../app/studio/document.cpp" line="509"/>
+        <location filename="../app/studio/document.cpp" line="526"/>
         <source>The height must be greater than zero.</source>
         <translation>La hauteur doit être supérieure à zéro.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="405"/>
+        <location filename="../app/studio/document.cpp" line="407"/>
+        <location filename="../app/studio/document.cpp" line="438"/>
         <source>Move object %1</source>
         <translation>Déplacer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="412"/>
+        <location filename="../app/studio/document.cpp" line="414"/>
         <source>Change height of object %1</source>
         <translation>Changer la hauteur de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="419"/>
+        <location filename="../app/studio/document.cpp" line="420"/>
+        <location filename="../app/studio/document.cpp" line="432"/>
+        <source>The turn is not a number.</source>
+        <translation>La rotation n&apos;est pas un nombre.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="425"/>
         <source>Turn object %1</source>
         <translation>Tourner l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="426"/>
+        <location filename="../app/studio/document.cpp" line="481"/>
         <source>Change material of object %1</source>
         <translation>Changer le matériau de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="441"/>
+        <location filename="../app/studio/document.cpp" line="496"/>
         <source>There is no object %1.</source>
         <translation>Il n&apos;y a pas d&apos;objet %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="442"/>
+        <location filename="../app/studio/document.cpp" line="497"/>
         <source>The scene is still being prepared.</source>
         <translation>La scène est encore en préparation.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="443"/>
+        <location filename="../app/studio/document.cpp" line="498"/>
         <source>The scene could not be prepared.</source>
         <translation>La scène n&apos;a pas pu être préparée.</translation>
     </message>
@@ -77,236 +84,254 @@
         <translation type="vanished">Insérer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="469"/>
+        <location filename="../app/studio/document.cpp" line="524"/>
         <source>The model has no triangles.</source>
         <translation>Le modèle n&apos;a aucun triangle.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="477"/>
+        <location filename="../app/studio/document.cpp" line="532"/>
         <source>object %1</source>
         <translation>objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="478"/>
+        <location filename="../app/studio/document.cpp" line="533"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="495"/>
+        <location filename="../app/studio/document.cpp" line="550"/>
         <source>Duplicate %1</source>
         <translation>Dupliquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="543"/>
+        <location filename="../app/studio/document.cpp" line="598"/>
         <source>Rename %1</source>
         <translation>Renommer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="550"/>
+        <location filename="../app/studio/document.cpp" line="605"/>
         <source>Hide %1</source>
         <translation>Masquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="550"/>
+        <location filename="../app/studio/document.cpp" line="605"/>
         <source>Show %1</source>
         <translation>Afficher %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="558"/>
+        <location filename="../app/studio/document.cpp" line="613"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="559"/>
+        <location filename="../app/studio/document.cpp" line="614"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="597"/>
+        <location filename="../app/studio/document.cpp" line="652"/>
         <source>Delete object %1</source>
         <translation>Supprimer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="699"/>
+        <location filename="../app/studio/document.cpp" line="754"/>
         <source>Open a photo first.</source>
         <translation>Ouvrez d&apos;abord une photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="719"/>
+        <location filename="../app/studio/document.cpp" line="774"/>
         <source>There is no estimated box yet.</source>
         <translation>Il n&apos;y a pas encore de pièce estimée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="724"/>
+        <location filename="../app/studio/document.cpp" line="779"/>
         <source>Accept the estimated box</source>
         <translation>Accepter la pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="730"/>
+        <location filename="../app/studio/document.cpp" line="785"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Ce coin du mur du fond n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="740"/>
+        <location filename="../app/studio/document.cpp" line="795"/>
         <source>Move a corner of the back wall</source>
         <translation>Déplacer un coin du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="746"/>
+        <location filename="../app/studio/document.cpp" line="801"/>
         <source>Estimate the box again</source>
         <translation>Estimer à nouveau la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="751"/>
+        <location filename="../app/studio/document.cpp" line="806"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une lampe doit compter au moins trois points entourant une surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="759"/>
+        <location filename="../app/studio/document.cpp" line="814"/>
         <source>Outline light %1</source>
         <translation>Détourer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="765"/>
-        <location filename="../app/studio/document.cpp" line="936"/>
+        <location filename="../app/studio/document.cpp" line="820"/>
+        <location filename="../app/studio/document.cpp" line="991"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Chaque cadre d&apos;un rayon de soleil doit mesurer au moins deux pixels de large et de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="773"/>
+        <location filename="../app/studio/document.cpp" line="828"/>
         <source>Add shaft %1</source>
         <translation>Ajouter le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="780"/>
+        <location filename="../app/studio/document.cpp" line="835"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une surface doit compter au moins trois points entourant une aire.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="789"/>
+        <location filename="../app/studio/document.cpp" line="844"/>
         <source>Add surface %1</source>
         <translation>Ajouter la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="800"/>
+        <location filename="../app/studio/document.cpp" line="855"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Un masque d&apos;avant-plan demande un trait sur ce qui est devant et un sur ce qui est derrière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="805"/>
+        <location filename="../app/studio/document.cpp" line="860"/>
         <source>Add occluder %1</source>
         <translation>Ajouter le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="812"/>
+        <location filename="../app/studio/document.cpp" line="867"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Ce masque d&apos;avant-plan n&apos;existe pas, ou le trait est vide.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="818"/>
+        <location filename="../app/studio/document.cpp" line="873"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Ajouter un trait au masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="829"/>
+        <location filename="../app/studio/document.cpp" line="884"/>
         <source>There is no such mark.</source>
         <translation>Ce repère n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="836"/>
+        <location filename="../app/studio/document.cpp" line="891"/>
         <source>Delete light %1</source>
         <translation>Supprimer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="837"/>
+        <location filename="../app/studio/document.cpp" line="892"/>
         <source>Delete shaft %1</source>
         <translation>Supprimer le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="838"/>
+        <location filename="../app/studio/document.cpp" line="893"/>
         <source>Delete surface %1</source>
         <translation>Supprimer la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="839"/>
+        <location filename="../app/studio/document.cpp" line="894"/>
         <source>Delete occluder %1</source>
         <translation>Supprimer le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="919"/>
+        <location filename="../app/studio/document.cpp" line="974"/>
         <source>There is no such point.</source>
         <translation>Ce point n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="927"/>
-        <location filename="../app/studio/document.cpp" line="945"/>
+        <location filename="../app/studio/document.cpp" line="982"/>
+        <location filename="../app/studio/document.cpp" line="1000"/>
         <source>The outline would lose its area.</source>
         <translation>Le contour perdrait sa surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="928"/>
+        <location filename="../app/studio/document.cpp" line="983"/>
         <source>Reshape light %1</source>
         <translation>Remodeler la lumière %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="937"/>
+        <location filename="../app/studio/document.cpp" line="992"/>
         <source>Reshape shaft %1</source>
         <translation>Remodeler le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="946"/>
+        <location filename="../app/studio/document.cpp" line="1001"/>
         <source>Reshape surface %1</source>
         <translation>Remodeler la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="954"/>
+        <location filename="../app/studio/document.cpp" line="1009"/>
         <source>Reshape occluder %1</source>
         <translation>Remodeler l’occultant %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="970"/>
+        <location filename="../app/studio/document.cpp" line="1025"/>
         <source>There is no such axis.</source>
         <translation>Cet axe n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="975"/>
+        <location filename="../app/studio/document.cpp" line="1030"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="979"/>
+        <location filename="../app/studio/document.cpp" line="1034"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Les deux lignes sont sur une même droite : tracez deux arêtes différentes.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="988"/>
+        <location filename="../app/studio/document.cpp" line="1043"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Tracer les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="989"/>
+        <location filename="../app/studio/document.cpp" line="1044"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Oublier les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1003"/>
+        <location filename="../app/studio/document.cpp" line="1058"/>
         <source>The room has no surface %1.</source>
         <translation>La pièce n’a pas de surface %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1006"/>
+        <location filename="../app/studio/document.cpp" line="1061"/>
         <source>Unknown material.</source>
         <translation>Matériau inconnu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1009"/>
+        <location filename="../app/studio/document.cpp" line="1064"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>La rugosité doit être comprise entre 0 et 1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1015"/>
+        <location filename="../app/studio/document.cpp" line="1070"/>
         <source>Change the material of %1</source>
         <translation>Changer le matériau de %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/document.cpp" line="1076"/>
+        <source>Change the camera response</source>
+        <translation>Changer la réponse de l&apos;appareil</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::FinalRender</name>
+    <message>
+        <location filename="../app/studio/final_render.cpp" line="73"/>
+        <source>Render Final Image cancelled; nothing was written.</source>
+        <translation>Image finale annulée ; rien n&apos;a été écrit.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/final_render.cpp" line="115"/>
+        <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s</source>
+        <translation>%1 écrit : %2 × %3, %4 échantillons par pixel au plus (%5 en moyenne), erreur estimée %6, %7 s</translation>
     </message>
 </context>
 <context>
@@ -360,62 +385,77 @@
 <context>
     <name>inlay::studio::LibraryDock</name>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="23"/>
         <source>Chair</source>
         <translation>Chaise</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="24"/>
         <source>Armchair</source>
         <translation>Fauteuil</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="25"/>
         <source>Sofa</source>
         <translation>Canapé</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="26"/>
         <source>Coffee table</source>
         <translation>Table basse</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="27"/>
         <source>Dining table</source>
         <translation>Table de salle à manger</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="28"/>
         <source>Stool</source>
         <translation>Tabouret</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="29"/>
         <source>Floor lamp</source>
         <translation>Lampadaire</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="30"/>
         <source>Table lamp</source>
         <translation>Lampe de table</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="31"/>
         <source>Vase</source>
         <translation>Vase</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="32"/>
         <source>Potted plant</source>
         <translation>Plante en pot</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="33"/>
         <source>Bookshelf</source>
         <translation>Étagère à livres</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="34"/>
         <source>Rug</source>
         <translation>Tapis</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="101"/>
         <source>Library</source>
         <translation>Bibliothèque de modèles</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="104"/>
         <source>The model library could not be shown: %1</source>
         <translation>La bibliothèque de modèles ne peut pas être affichée : %1</translation>
     </message>
     <message>
+        <location filename="../app/studio/library_dock.cpp" line="110"/>
         <source>%1
 %2 × %3 × %4 m (width × depth × height)
 Drag it into the photo.</source>
@@ -427,389 +467,410 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="82"/>
+        <location filename="../app/studio/main_window.cpp" line="86"/>
         <source>Reading the photo</source>
         <translation>Lecture de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="83"/>
+        <location filename="../app/studio/main_window.cpp" line="87"/>
         <source>Estimating the camera</source>
         <translation>Estimation de l&apos;appareil photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="84"/>
+        <location filename="../app/studio/main_window.cpp" line="88"/>
         <source>Fitting the room</source>
         <translation>Ajustement de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="85"/>
+        <location filename="../app/studio/main_window.cpp" line="89"/>
         <source>Estimating the lighting</source>
         <translation>Estimation de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="86"/>
+        <location filename="../app/studio/main_window.cpp" line="90"/>
         <source>Placing the objects</source>
         <translation>Placement des objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="433"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Échantillons par pixel de la composition affichée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="434"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Échantillons par seconde du rendu (millions)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="435"/>
+        <location filename="../app/studio/main_window.cpp" line="463"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Erreur estimée (RMSE en sRGB) là où les objets modifient la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="436"/>
+        <location filename="../app/studio/main_window.cpp" line="464"/>
         <source>Render time since the last change</source>
         <translation>Temps de rendu depuis la dernière modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="437"/>
+        <location filename="../app/studio/main_window.cpp" line="465"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="118"/>
+        <location filename="../app/studio/main_window.cpp" line="125"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="130"/>
+        <location filename="../app/studio/main_window.cpp" line="138"/>
         <source>Preparing the scene: %1…</source>
         <translation>Préparation de la scène : %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="391"/>
+        <location filename="../app/studio/main_window.cpp" line="414"/>
         <source>&amp;Open Scene…</source>
         <translation>&amp;Ouvrir une scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="421"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>Open a scene file (.json)</source>
         <translation>Ouvrir un fichier de scène (.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="392"/>
+        <location filename="../app/studio/main_window.cpp" line="415"/>
         <source>Open &amp;Photo…</source>
         <translation>Ouvrir une &amp;photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Start a new scene from a photo</source>
         <translation>Commencer une nouvelle scène à partir d&apos;une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="393"/>
+        <location filename="../app/studio/main_window.cpp" line="416"/>
         <source>Open &amp;Example</source>
         <translation>Ouvrir l&apos;&amp;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="394"/>
+        <location filename="../app/studio/main_window.cpp" line="417"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="395"/>
+        <location filename="../app/studio/main_window.cpp" line="418"/>
         <source>Save &amp;As…</source>
         <translation>Enregistrer &amp;sous…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="396"/>
+        <location filename="../app/studio/main_window.cpp" line="419"/>
         <source>&amp;Export Composite…</source>
         <translation>E&amp;xporter la composition…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="423"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Écrire la composition actuelle en PNG, JPEG, TIFF ou EXR</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="397"/>
+        <location filename="../app/studio/main_window.cpp" line="420"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Exporter le &amp;calque affiché…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="424"/>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Écrire le calque affiché (albédo, masque, …) en image 8 bits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="398"/>
+        <location filename="../app/studio/main_window.cpp" line="421"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Exporter la scène en &amp;glTF…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="425"/>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Écrire la pièce, ses lumières, la caméra et les objets en glTF 2.0, pour continuer dans Blender</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="399"/>
+        <location filename="../app/studio/main_window.cpp" line="427"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="489"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="400"/>
+        <location filename="../app/studio/main_window.cpp" line="428"/>
         <source>Insert &amp;Sphere</source>
         <translation>Insérer une &amp;sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="426"/>
+        <location filename="../app/studio/main_window.cpp" line="454"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Poser une sphère sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="401"/>
+        <location filename="../app/studio/main_window.cpp" line="429"/>
         <source>Insert &amp;Cube</source>
         <translation>Insérer un &amp;cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="427"/>
+        <location filename="../app/studio/main_window.cpp" line="455"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Poser un cube sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="402"/>
+        <location filename="../app/studio/main_window.cpp" line="430"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="428"/>
+        <location filename="../app/studio/main_window.cpp" line="456"/>
         <source>Delete the selected object or mark</source>
         <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="412"/>
+        <location filename="../app/studio/main_window.cpp" line="440"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="413"/>
+        <location filename="../app/studio/main_window.cpp" line="441"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="442"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="443"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="429"/>
+        <location filename="../app/studio/main_window.cpp" line="457"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="416"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="417"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>P&amp;réparer à nouveau la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="438"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="438"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="438"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="439"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="439"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="403"/>
+        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <source>&amp;Render Final Image…</source>
+        <translation>&amp;Rendre l&apos;image finale…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="423"/>
+        <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
+        <translation>Rendre le composite à la pleine résolution de la photo jusqu&apos;à ce qu&apos;il soit net, puis l&apos;enregistrer (PNG, JPEG, TIFF ou EXR)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="425"/>
+        <source>Before/After &amp;Split</source>
+        <translation>&amp;Partage avant/après</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="426"/>
+        <source>The photo left of a divider, the composite right of it; drag the divider</source>
+        <translation>La photo à gauche d&apos;une séparation, le composite à droite ; faites glisser la séparation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="431"/>
         <source>Insert &amp;Model…</source>
         <translation>Insérer un &amp;modèle…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="404"/>
+        <location filename="../app/studio/main_window.cpp" line="432"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Poser un modèle 3D (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) au sol ; ou déposer le fichier là où il doit se tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="406"/>
+        <location filename="../app/studio/main_window.cpp" line="434"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;upliquer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="407"/>
+        <location filename="../app/studio/main_window.cpp" line="435"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Poser une copie de l&apos;objet choisi à côté de lui</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="408"/>
+        <location filename="../app/studio/main_window.cpp" line="436"/>
         <source>Re&amp;name…</source>
         <translation>Re&amp;nommer…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="409"/>
+        <location filename="../app/studio/main_window.cpp" line="437"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Renommer l&apos;objet choisi (dans la liste de la scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="410"/>
+        <location filename="../app/studio/main_window.cpp" line="438"/>
         <source>&amp;Hide or Show</source>
         <translation>&amp;Masquer ou afficher</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="411"/>
+        <location filename="../app/studio/main_window.cpp" line="439"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Masquer l&apos;objet choisi du rendu, ou l&apos;afficher à nouveau</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="440"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Lignes de fuite (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="442"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="443"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Annuler : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="489"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="469"/>
-        <location filename="../app/studio/main_window.cpp" line="1043"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="524"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -817,377 +878,442 @@ Faites-le glisser dans la photo.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="563"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="550"/>
+        <location filename="../app/studio/main_window.cpp" line="579"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="551"/>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="580"/>
+        <location filename="../app/studio/main_window.cpp" line="592"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="581"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="582"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="557"/>
+        <location filename="../app/studio/main_window.cpp" line="586"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="558"/>
+        <location filename="../app/studio/main_window.cpp" line="587"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="559"/>
+        <location filename="../app/studio/main_window.cpp" line="588"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="560"/>
+        <location filename="../app/studio/main_window.cpp" line="589"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="562"/>
+        <location filename="../app/studio/main_window.cpp" line="591"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="564"/>
+        <location filename="../app/studio/main_window.cpp" line="593"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="574"/>
+        <location filename="../app/studio/main_window.cpp" line="603"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="577"/>
+        <location filename="../app/studio/main_window.cpp" line="606"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="578"/>
+        <location filename="../app/studio/main_window.cpp" line="607"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="597"/>
+        <location filename="../app/studio/main_window.cpp" line="626"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="597"/>
+        <location filename="../app/studio/main_window.cpp" line="626"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="603"/>
+        <location filename="../app/studio/main_window.cpp" line="632"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="622"/>
-        <location filename="../app/studio/main_window.cpp" line="632"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
+        <location filename="../app/studio/main_window.cpp" line="661"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="622"/>
+        <location filename="../app/studio/main_window.cpp" line="651"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="632"/>
+        <location filename="../app/studio/main_window.cpp" line="661"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="642"/>
+        <location filename="../app/studio/main_window.cpp" line="671"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="643"/>
+        <location filename="../app/studio/main_window.cpp" line="672"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="650"/>
+        <location filename="../app/studio/main_window.cpp" line="679"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="651"/>
+        <location filename="../app/studio/main_window.cpp" line="680"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="687"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="662"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="677"/>
+        <location filename="../app/studio/main_window.cpp" line="706"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="678"/>
+        <location filename="../app/studio/main_window.cpp" line="707"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
-        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
         <location filename="../app/studio/main_window.cpp" line="736"/>
-        <location filename="../app/studio/main_window.cpp" line="765"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="686"/>
-        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="715"/>
+        <location filename="../app/studio/main_window.cpp" line="736"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="690"/>
-        <location filename="../app/studio/main_window.cpp" line="754"/>
+        <location filename="../app/studio/main_window.cpp" line="719"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="690"/>
-        <location filename="../app/studio/main_window.cpp" line="754"/>
+        <location filename="../app/studio/main_window.cpp" line="719"/>
+        <location filename="../app/studio/main_window.cpp" line="797"/>
+        <location filename="../app/studio/main_window.cpp" line="917"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
-        <location filename="../app/studio/main_window.cpp" line="755"/>
+        <location filename="../app/studio/main_window.cpp" line="720"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="720"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="692"/>
+        <location filename="../app/studio/main_window.cpp" line="721"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="712"/>
+        <location filename="../app/studio/main_window.cpp" line="744"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="715"/>
+        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
+        <translation>%1 exporté (%2 spp, l&apos;aperçu en %3 × %4 ; Rendre l&apos;image finale écrit la pleine taille de la photo)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="757"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="724"/>
+        <location filename="../app/studio/main_window.cpp" line="782"/>
+        <source>All four steps done. View &gt; Steps shows them again.</source>
+        <translation>Les quatre étapes sont faites. Affichage &gt; Étapes les montre à nouveau.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <source>Nothing to render</source>
+        <translation>Rien à rendre</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
+        <location filename="../app/studio/main_window.cpp" line="839"/>
+        <source>Render Final Image</source>
+        <translation>Rendre l&apos;image finale</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="818"/>
+        <source>A final image is being rendered already.</source>
+        <translation>Une image finale est déjà en cours de rendu.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="825"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <source>Cannot render the final image</source>
+        <translation>Impossible de rendre l&apos;image finale</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
+        <translation>%1 : choisissez un fichier .png, .jpg, .tif ou .exr.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="831"/>
+        <source>%1: the folder %2 does not exist.</source>
+        <translation>%1 : le dossier %2 n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="858"/>
+        <source>Rendering the final image…</source>
+        <translation>Rendu de l&apos;image finale…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="846"/>
+        <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
+        <translation>Image finale : %1 échantillons par pixel au plus, erreur estimée %2 (cible %3), %4 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="880"/>
+        <source>Cannot write the final image</source>
+        <translation>Impossible d&apos;écrire l&apos;image finale</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="724"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="725"/>
+        <location filename="../app/studio/main_window.cpp" line="888"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="788"/>
+        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="899"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="905"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="753"/>
+        <location filename="../app/studio/main_window.cpp" line="916"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="765"/>
+        <location filename="../app/studio/main_window.cpp" line="928"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="772"/>
+        <location filename="../app/studio/main_window.cpp" line="935"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="773"/>
+        <location filename="../app/studio/main_window.cpp" line="936"/>
         <source>%1: cannot write (%2)</source>
         <translation>%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="745"/>
-        <location filename="../app/studio/main_window.cpp" line="776"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="939"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="801"/>
+        <location filename="../app/studio/main_window.cpp" line="964"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="802"/>
+        <location filename="../app/studio/main_window.cpp" line="965"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="811"/>
+        <location filename="../app/studio/main_window.cpp" line="974"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="836"/>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="844"/>
+        <location filename="../app/studio/main_window.cpp" line="1007"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="848"/>
+        <location filename="../app/studio/main_window.cpp" line="1011"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="864"/>
+        <location filename="../app/studio/main_window.cpp" line="1027"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="874"/>
+        <location filename="../app/studio/main_window.cpp" line="1037"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="884"/>
+        <location filename="../app/studio/main_window.cpp" line="1047"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="885"/>
+        <location filename="../app/studio/main_window.cpp" line="1048"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <location filename="../app/studio/main_window.cpp" line="1063"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="914"/>
+        <location filename="../app/studio/main_window.cpp" line="1077"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <location filename="../app/studio/main_window.cpp" line="1080"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <location filename="../app/studio/main_window.cpp" line="1081"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="927"/>
+        <location filename="../app/studio/main_window.cpp" line="1090"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="945"/>
+        <location filename="../app/studio/main_window.cpp" line="1108"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="975"/>
+        <location filename="../app/studio/main_window.cpp" line="1138"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="977"/>
+        <location filename="../app/studio/main_window.cpp" line="1140"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1003"/>
+        <location filename="../app/studio/main_window.cpp" line="1166"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1006"/>
+        <location filename="../app/studio/main_window.cpp" line="1169"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1007"/>
+        <location filename="../app/studio/main_window.cpp" line="1170"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1011"/>
+        <location filename="../app/studio/main_window.cpp" line="1174"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1012"/>
+        <location filename="../app/studio/main_window.cpp" line="1175"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1030"/>
+        <location filename="../app/studio/main_window.cpp" line="1193"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1036"/>
+        <location filename="../app/studio/main_window.cpp" line="1199"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1043"/>
+        <location filename="../app/studio/main_window.cpp" line="1206"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -1466,6 +1592,59 @@ Faites-le glisser dans la photo.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::ResponseCurveView</name>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="29"/>
+        <source>code</source>
+        <translation>code</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::ResponseDock</name>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="51"/>
+        <source>Camera Response</source>
+        <translation>Réponse de l&apos;appareil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="56"/>
+        <source>Auto (estimated from the photo)</source>
+        <translation>Auto (estimée d&apos;après la photo)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="57"/>
+        <source>sRGB</source>
+        <translation>sRGB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="58"/>
+        <source>Linear</source>
+        <translation>Linéaire</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="59"/>
+        <source>Explicit (from the scene file)</source>
+        <translation>Explicite (du fichier de scène)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="60"/>
+        <source>How the photo&apos;s pixel values map to light (camera.response)</source>
+        <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <source>Preparing the scene...</source>
+        <translation>Préparation de la scène...</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="98"/>
+        <source>
+Estimated from %1 edges in %2 ms.</source>
+        <translation>
+Estimée à partir de %1 arêtes en %2 ms.</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
         <location filename="../app/studio/docks.cpp" line="36"/>
@@ -1593,135 +1772,294 @@ Faites-le glisser dans la photo.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::StepsDock</name>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <source>no photo yet</source>
+        <translation>pas encore de photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <source>Open Photo…</source>
+        <translation>Ouvrir une photo…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="95"/>
+        <source>the box is yours</source>
+        <translation>la boîte est la vôtre</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="97"/>
+        <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s</source>
+        <translation>estimée : vérifiez que les coins du mur du fond sont sur ceux de la pièce</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="98"/>
+        <source>Accept the Box</source>
+        <translation>Accepter la boîte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="100"/>
+        <source>being estimated…</source>
+        <translation>en cours d&apos;estimation…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="102"/>
+        <source>not found: drag the back wall&apos;s corners onto the room&apos;s</source>
+        <translation>introuvable : faites glisser les coins du mur du fond sur ceux de la pièce</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <source>none: objects are lit by gathered light only</source>
+        <translation>aucune : les objets ne sont éclairés que par la lumière recueillie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <source>Outline a Light</source>
+        <translation>Détourer une lumière</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/studio/steps_dock.cpp" line="109"/>
+        <source>%n outlined</source>
+        <translation>
+            <numerusform>%n détourée</numerusform>
+            <numerusform>%n détourées</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <source>none yet (or drag one from the Library)</source>
+        <translation>aucun pour l&apos;instant (ou faites-en glisser un de la Bibliothèque)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <source>Insert Model…</source>
+        <translation>Insérer un modèle…</translation>
+    </message>
+    <message numerus="yes">
+        <location filename="../app/studio/steps_dock.cpp" line="116"/>
+        <source>%n in the photo</source>
+        <translation>
+            <numerusform>%n dans la photo</numerusform>
+            <numerusform>%n dans la photo</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <source>not yet</source>
+        <translation>pas encore</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <source>Render Final Image…</source>
+        <translation>Rendre l&apos;image finale…</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="121"/>
+        <source>written to %1</source>
+        <translation>écrite dans %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="149"/>
+        <source>Steps</source>
+        <translation>Étapes</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <source>Room</source>
+        <translation>Pièce</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <source>Lights</source>
+        <translation>Lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <source>Objects</source>
+        <translation>Objets</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="308"/>
+        <location filename="../app/studio/viewport.cpp" line="323"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="310"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="312"/>
+        <location filename="../app/studio/viewport.cpp" line="327"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="313"/>
+        <location filename="../app/studio/viewport.cpp" line="328"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="316"/>
+        <location filename="../app/studio/viewport.cpp" line="331"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="317"/>
+        <location filename="../app/studio/viewport.cpp" line="332"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="319"/>
+        <location filename="../app/studio/viewport.cpp" line="334"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="324"/>
+        <location filename="../app/studio/viewport.cpp" line="339"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Faites glisser le long d’une arête dans la direction %1 (les touches X, Y, Z la choisissent).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="340"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Faites maintenant glisser le long d’une deuxième arête dans la direction %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="397"/>
+        <location filename="../app/studio/viewport.cpp" line="433"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="397"/>
+        <location filename="../app/studio/viewport.cpp" line="433"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="453"/>
+        <location filename="../app/studio/viewport.cpp" line="491"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="491"/>
+        <location filename="../app/studio/viewport.cpp" line="529"/>
         <source>%1: %2 px</source>
         <translation>%1 : %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="520"/>
+        <location filename="../app/studio/viewport.cpp" line="558"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="534"/>
+        <location filename="../app/studio/viewport.cpp" line="572"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="549"/>
+        <location filename="../app/studio/viewport.cpp" line="587"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="610"/>
+        <location filename="../app/studio/viewport.cpp" line="646"/>
         <source>%1 hidden</source>
         <translation>%1 masqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="702"/>
+        <location filename="../app/studio/viewport.cpp" line="738"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="705"/>
+        <location filename="../app/studio/viewport.cpp" line="741"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="709"/>
+        <location filename="../app/studio/viewport.cpp" line="745"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="712"/>
+        <location filename="../app/studio/viewport.cpp" line="748"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="730"/>
+        <location filename="../app/studio/viewport.cpp" line="766"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="734"/>
+        <location filename="../app/studio/viewport.cpp" line="770"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="775"/>
+        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <source>Before</source>
+        <translation>Avant</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <source>After</source>
+        <translation>Après</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="899"/>
+        <source>the left wall</source>
+        <translation>le mur de gauche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="900"/>
+        <source>the right wall</source>
+        <translation>le mur de droite</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="901"/>
+        <source>the back wall</source>
+        <translation>le mur du fond</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="902"/>
+        <source>the wall behind the camera</source>
+        <translation>le mur derrière l&apos;appareil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="903"/>
+        <source>Its back against %1 (hold Shift to place it freely).</source>
+        <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="923"/>
+        <source>Turned %1°</source>
+        <translation>Tourné à %1°</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <source>Height %1 m</source>
+        <translation>Hauteur %1 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="969"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="915"/>
-        <location filename="../app/studio/viewport.cpp" line="1057"/>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
+        <location filename="../app/studio/viewport.cpp" line="1295"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="989"/>
+        <location filename="../app/studio/viewport.cpp" line="1227"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>

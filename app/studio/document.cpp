@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <numbers>
+#include <tuple>
 
 namespace inlay::studio {
 namespace {
@@ -405,18 +407,71 @@ bool Document::moveObject(int index, const Vec2& basePx, int dragId, QString* re
   return editObject(index, keys, dragId, tr("Move object %1").arg(index + 1), reason);
 }
 
-bool Document::setObjectHeight(int index, double heightM, QString* reason) {
+bool Document::setObjectHeight(int index, double heightM, QString* reason, int dragId) {
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.heightM = heightM;
-  return editObject(index, keys, 0, tr("Change height of object %1").arg(index + 1), reason);
+  return editObject(index, keys, dragId, tr("Change height of object %1").arg(index + 1), reason);
 }
 
-bool Document::setObjectYaw(int index, double yawDeg, QString* reason) {
+bool Document::setObjectYaw(int index, double yawDeg, QString* reason, int dragId) {
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
+  if (!std::isfinite(yawDeg)) {
+    if (reason) *reason = tr("The turn is not a number.");
+    return false;
+  }
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.yawDeg = yawDeg;
-  return editObject(index, keys, 0, tr("Turn object %1").arg(index + 1), reason);
+  return editObject(index, keys, dragId, tr("Turn object %1").arg(index + 1), reason);
+}
+
+bool Document::moveAndTurnObject(int index, const Vec2& basePx, double yawDeg, int dragId,
+                                 QString* reason) {
+  if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
+  if (!std::isfinite(yawDeg)) {
+    if (reason) *reason = tr("The turn is not a number.");
+    return false;
+  }
+  ObjectKeys keys = doc_.objects[size_t(index)];
+  keys.basePx = basePx;
+  keys.yawDeg = yawDeg;
+  return editObject(index, keys, dragId, tr("Move object %1").arg(index + 1), reason);
+}
+
+std::optional<Document::WallSnap> Document::wallSnap(int index, const Vec2& basePx) const {
+  const std::optional<Vec3> size = objectSizeM(index);
+  if (!size || !prepared_ || !basePx.allFinite()) return std::nullopt;
+  const Camera& cam = prepared_->camera;
+  const SceneGeometry& geometry = prepared_->geometry;
+  const auto hit = geometry.intersect(cam.rayThroughPixel(basePx), /*supportsOnly=*/true);
+  if (!hit || hit->normalWorld.y() < 0.5) return std::nullopt;
+  const Vec3 base = hit->pointWorld;
+  const RoomBox& box = geometry.box;
+  // Each wall: its kind, a point on it and its normal into the room.
+  const std::array<std::tuple<SurfaceKind, Vec3, Vec3>, 4> walls = {{
+      {SurfaceKind::WallBack, Vec3(0, 0, box.zBackM), Vec3(0, 0, 1)},
+      {SurfaceKind::WallLeft, Vec3(box.xLeftM, 0, 0), Vec3(1, 0, 0)},
+      {SurfaceKind::WallRight, Vec3(box.xRightM, 0, 0), Vec3(-1, 0, 0)},
+      {SurfaceKind::WallRear, Vec3(0, 0, box.zRearM), Vec3(0, 0, -1)},
+  }};
+  const double halfDepth = 0.5 * size->z();
+  constexpr double kGapM = 0.005;  // off the wall, so the back never pierces it
+  std::optional<WallSnap> best;
+  double bestGap = kWallSnapM;
+  for (const auto& [kind, onWall, normal] : walls) {
+    const double distance = (base - onWall).dot(normal);
+    const double gap = distance - halfDepth;
+    if (distance <= 0 || gap >= bestGap) continue;
+    const Vec3 snapped = base + normal * (halfDepth + kGapM - distance);
+    const std::optional<Vec2> px = cam.project(snapped);
+    if (!px || px->x() < 0 || px->y() < 0 || px->x() >= cam.widthPx || px->y() >= cam.heightPx) continue;
+    // Still on the same support (a table top it would slide off does not snap).
+    const auto there = geometry.intersect(cam.rayThroughPixel(*px), /*supportsOnly=*/true);
+    if (!there || there->normalWorld.y() < 0.5 || std::abs(there->pointWorld.y() - base.y()) > 0.01) continue;
+    bestGap = gap;
+    best = WallSnap{*px, std::atan2(normal.x(), normal.z()) * 180.0 / std::numbers::pi, kind};
+  }
+  return best;
 }
 
 bool Document::setMaterial(int index, const MaterialKeys& material, QString* reason) {

@@ -123,8 +123,12 @@ class Document : public QObject {
   // user-facing line) when the edit is not possible. ---
   // `dragId` > 0: consecutive moves with the same id merge into one undo step.
   bool moveObject(int index, const Vec2& basePx, int dragId = 0, QString* reason = nullptr);
-  bool setObjectHeight(int index, double heightM, QString* reason = nullptr);
-  bool setObjectYaw(int index, double yawDeg, QString* reason = nullptr);
+  // `dragId` > 0: the changes of one handle drag merge into one undo step.
+  bool setObjectHeight(int index, double heightM, QString* reason = nullptr, int dragId = 0);
+  bool setObjectYaw(int index, double yawDeg, QString* reason = nullptr, int dragId = 0);
+  // Moves and turns at once (a drag that snaps the object's back to a wall).
+  bool moveAndTurnObject(int index, const Vec2& basePx, double yawDeg, int dragId = 0,
+                         QString* reason = nullptr);
   bool setMaterial(int index, const MaterialKeys& material, QString* reason = nullptr);
   // Appends an object (its mesh is loaded here, on the calling thread) and selects it.
   bool insertObject(const ObjectKeys& keys, QString* reason = nullptr);
@@ -150,6 +154,20 @@ class Document : public QObject {
   // surface (floor, table top, step), else the first such pixel straight below it (a drop on a
   // wall lands on the floor in front of it). nullopt when there is none or nothing is prepared.
   std::optional<Vec2> supportPointNear(const Vec2& px) const;
+  // Where object `index` would stand with its back against a wall when its base is dragged to
+  // `basePx`: the nearest wall of the room box whose gap to the object's back (its depth turned
+  // to face away from the wall) is under kWallSnapM, with the base moved along the wall's normal
+  // so the back is 5 mm off the wall and the yaw facing into the room (0 for the back wall, 90
+  // for the left one, -90 for the right one, 180 for the wall behind the camera). nullopt when no
+  // wall is that near, the object is not loaded, or the moved base would leave its support (a
+  // table top narrower than the snap).
+  struct WallSnap {
+    Vec2 basePx{0, 0};
+    double yawDeg = 0;
+    SurfaceKind wall = SurfaceKind::WallBack;
+  };
+  static constexpr double kWallSnapM = 0.25;
+  std::optional<WallSnap> wallSnap(int index, const Vec2& basePx) const;
   // A base pixel where a new object can stand: the first point on a supporting surface along
   // the photo's vertical centre line, from the bottom up. nullopt if there is none (or the
   // scene is not prepared).

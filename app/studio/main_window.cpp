@@ -2,6 +2,8 @@
 
 #include "autosave.h"
 #include "docks.h"
+#include "final_render.h"
+#include "steps_dock.h"
 #include "library_dock.h"
 #include "log_dock.h"
 #include "response_dock.h"
@@ -129,6 +131,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   showZoom(viewport_->zoom());
 
   createActions();
+  createStepsDock();
   createMenus();
   retranslate();
 
@@ -156,6 +159,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   if (!restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray()))
     resize(1200, 800);
   restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+  // Done once: the steps stay out of the way (View > Steps shows them again).
+  if (settings.value(QStringLiteral("guide/done")).toBool()) stepsDock_->hide();
   updateTitle();
   onFrame();
   onDocumentChanged({});  // the actions' enabled states for an empty document
@@ -208,6 +213,10 @@ void MainWindow::createActions() {
   connect(exportLayerAct_, &QAction::triggered, this, &MainWindow::exportLayerDialog);
   exportGltfAct_ = new QAction(this);
   connect(exportGltfAct_, &QAction::triggered, this, &MainWindow::exportSceneGltfDialog);
+  renderFinalAct_ = new QAction(s->standardIcon(QStyle::SP_MediaPlay), QString(), this);
+  renderFinalAct_->setObjectName(QStringLiteral("renderFinalAction"));
+  renderFinalAct_->setShortcut(QKeySequence(Qt::Key_F12));
+  connect(renderFinalAct_, &QAction::triggered, this, &MainWindow::renderFinalDialog);
 
   quitAct_ = new QAction(this);
   quitAct_->setShortcut(QKeySequence::Quit);
@@ -269,6 +278,10 @@ void MainWindow::createActions() {
     QSettings().setValue(QStringLiteral("denoisePreview"), on);
     renderer_->setDenoise(on);
   });
+  splitAct_ = new QAction(this);
+  splitAct_->setCheckable(true);
+  splitAct_->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_B));
+  connect(splitAct_, &QAction::toggled, viewport_, &Viewport::setSplitView);
 
   acceptBoxAct_ = new QAction(this);
   connect(acceptBoxAct_, &QAction::triggered, this, [this] {
@@ -316,6 +329,7 @@ void MainWindow::createMenus() {
   fileMenu_->addSeparator();
   fileMenu_->addAction(saveAct_);
   fileMenu_->addAction(saveAsAct_);
+  fileMenu_->addAction(renderFinalAct_);
   fileMenu_->addAction(exportAct_);
   fileMenu_->addAction(exportLayerAct_);
   fileMenu_->addAction(exportGltfAct_);
@@ -350,9 +364,11 @@ void MainWindow::createMenus() {
   view->addAction(fitAct_);
   view->addSeparator();
   view->addAction(beforeAct_);
+  view->addAction(splitAct_);
   view->addAction(vanishingAct_);
   view->addAction(denoiseAct_);
   view->addSeparator();
+  view->addAction(stepsDock_->toggleViewAction());
   view->addAction(sceneDock_->toggleViewAction());
   view->addAction(propertiesDock_->toggleViewAction());
   view->addAction(layersDock_->toggleViewAction());
@@ -392,6 +408,7 @@ void MainWindow::createMenus() {
   tools->addActions(toolActs_);
   tools->addSeparator();
   tools->addAction(insertModelAct_);
+  tools->addAction(renderFinalAct_);
   tools->addSeparator();
   tools->addAction(zoomInAct_);
   tools->addAction(zoomOutAct_);
@@ -416,6 +433,11 @@ void MainWindow::retranslate() {
   exportAct_->setText(tr("&Export Composite…"));
   exportLayerAct_->setText(tr("Export Shown &Layer…"));
   exportGltfAct_->setText(tr("Export Scene as &glTF…"));
+  renderFinalAct_->setText(tr("&Render Final Image…"));
+  renderFinalAct_->setStatusTip(tr("Render the composite at the photo's full resolution until it is clean, "
+                                   "then save it (PNG, JPEG, TIFF or EXR)"));
+  splitAct_->setText(tr("Before/After &Split"));
+  splitAct_->setStatusTip(tr("The photo left of a divider, the composite right of it; drag the divider"));
   quitAct_->setText(tr("&Quit"));
   insertSphereAct_->setText(tr("Insert &Sphere"));
   insertCubeAct_->setText(tr("Insert &Cube"));
@@ -537,6 +559,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   const bool ready = document_->isReady();
   exportAct_->setEnabled(ready);
   exportGltfAct_->setEnabled(ready);
+  renderFinalAct_->setEnabled(ready && !finalRender_);
   insertSphereAct_->setEnabled(ready);
   insertCubeAct_->setEnabled(ready);
   // Models may be chosen while the scene prepares: they go in once it is ready.
@@ -737,11 +760,142 @@ bool MainWindow::exportComposite(const QString& path) {
     showError(tr("Cannot export the composite"), QString::fromStdString(saved.error().message()));
     return false;
   }
-  statusBar()->showMessage(tr("Exported %1 (%2 spp)")
-                               .arg(QDir::toNativeSeparators(path))
-                               .arg(renderer_->frameInfo().spp),
-                           5000);
+  const QSize preview = renderer_->previewSize();
+  if (prepared && preview.width() < prepared->camera.widthPx)
+    // A big photo's preview is smaller than the photo: say so, and where the full size is.
+    statusBar()->showMessage(tr("Exported %1 (%2 spp, the preview's %3 × %4; Render Final Image writes the photo's full size)")
+                                 .arg(QDir::toNativeSeparators(path))
+                                 .arg(renderer_->frameInfo().spp)
+                                 .arg(preview.width())
+                                 .arg(preview.height()),
+                             10000);
+  else
+    statusBar()->showMessage(tr("Exported %1 (%2 spp)")
+                                 .arg(QDir::toNativeSeparators(path))
+                                 .arg(renderer_->frameInfo().spp),
+                             5000);
+  stepsDock_->markExported(path);
   return true;
+}
+
+void MainWindow::createStepsDock() {
+  StepsDock::Actions actions;
+  actions.openPhoto = openPhotoAct_;
+  actions.acceptBox = acceptBoxAct_;
+  actions.outlineLight = toolActs_.value(int(Viewport::Tool::Light));
+  actions.insertModel = insertModelAct_;
+  actions.renderFinal = renderFinalAct_;
+  stepsDock_ = new StepsDock(document_, actions, this);
+  addDockWidget(Qt::LeftDockWidgetArea, stepsDock_);
+  // The steps on top: Steps, Scene, Properties.
+  splitDockWidget(stepsDock_, sceneDock_, Qt::Vertical);
+  splitDockWidget(sceneDock_, propertiesDock_, Qt::Vertical);
+  connect(stepsDock_, &StepsDock::allDone, this, [this] {
+    QSettings settings;
+    if (settings.value(QStringLiteral("guide/done")).toBool()) return;  // brought back by the user
+    settings.setValue(QStringLiteral("guide/done"), true);
+    stepsDock_->hide();
+    statusBar()->showMessage(tr("All four steps done. View > Steps shows them again."), 8000);
+  });
+}
+
+void MainWindow::renderFinalDialog() {
+  if (!document_->isReady()) {
+    showError(tr("Nothing to render"), tr("The scene is not prepared yet."));
+    return;
+  }
+  QString suggestion;
+  if (!document_->scene().photoResolved.empty()) {
+    const QFileInfo photo(QString::fromStdString(document_->scene().photoResolved));
+    suggestion = photo.absoluteDir().filePath(photo.completeBaseName() + QStringLiteral("_inlay.png"));
+  }
+  QString selected;
+  const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
+                tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
+  QString path = QFileDialog::getSaveFileName(this, tr("Render Final Image"), suggestion,
+                                              QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")),
+                                              &selected);
+  if (path.isEmpty()) return;
+  if (QFileInfo(path).suffix().isEmpty())
+    path += selected == jpeg ? QStringLiteral(".jpg")
+            : selected == tiff ? QStringLiteral(".tif")
+            : selected == exr  ? QStringLiteral(".exr")
+                               : QStringLiteral(".png");
+  renderFinalImage(path);
+}
+
+bool MainWindow::renderFinalImage(const QString& path, int maxSpp) {
+  const PreparedScene* prepared = document_->prepared();
+  if (!document_->isReady() || !prepared) {
+    showError(tr("Nothing to render"), tr("The scene is not prepared yet."));
+    return false;
+  }
+  if (finalRender_) {
+    statusBar()->showMessage(tr("A final image is being rendered already."), 5000);
+    return false;
+  }
+  const QFileInfo info(path);
+  const QStringList formats = {QStringLiteral("png"), QStringLiteral("jpg"), QStringLiteral("jpeg"),
+                               QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("exr")};
+  if (!formats.contains(info.suffix().toLower())) {
+    showError(tr("Cannot render the final image"),
+              tr("%1: choose a .png, .jpg, .tif or .exr file.").arg(QDir::toNativeSeparators(path)));
+    return false;
+  }
+  if (!QFileInfo(info.absolutePath()).isDir()) {
+    showError(tr("Cannot render the final image"),
+              tr("%1: the folder %2 does not exist.").arg(info.fileName(), QDir::toNativeSeparators(info.absolutePath())));
+    return false;
+  }
+  renderer_->setPaused(true);  // the processor is the final render's
+  finalRender_ = new FinalRender(*prepared, info.absoluteFilePath(), maxSpp, this);
+  renderFinalAct_->setEnabled(false);
+  delete finalProgress_;
+  finalProgress_ = new QProgressDialog(tr("Rendering the final image…"), tr("Cancel"), 0, 1000, this);
+  finalProgress_->setWindowTitle(tr("Render Final Image"));
+  finalProgress_->setWindowModality(Qt::NonModal);  // see the preparation's dialog
+  finalProgress_->setMinimumDuration(interactive_ ? 0 : 1000000000);
+  finalProgress_->setAutoClose(false);
+  finalProgress_->setAutoReset(false);
+  connect(finalProgress_, &QProgressDialog::canceled, finalRender_, &FinalRender::cancel);
+  connect(finalRender_, &FinalRender::progressed, this, [this](const FinalRender::Progress& p) {
+    const QString text = tr("Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s")
+                             .arg(p.spp)
+                             .arg(p.estimatedError, 0, 'f', 4)
+                             .arg(p.noiseTarget, 0, 'f', 4)
+                             .arg(p.seconds, 0, 'f', 0);
+    if (finalProgress_) {
+      finalProgress_->setLabelText(text);
+      finalProgress_->setValue(int(p.fraction * 1000));
+    }
+    statusBar()->showMessage(text);
+  });
+  connect(finalRender_, &FinalRender::finished, this, &MainWindow::onFinalRenderFinished);
+  statusBar()->showMessage(tr("Rendering the final image…"));
+  return true;
+}
+
+void MainWindow::onFinalRenderFinished(bool ok, const QString& message) {
+  if (finalProgress_) {
+    finalProgress_->hide();
+    finalProgress_->deleteLater();
+    finalProgress_ = nullptr;
+  }
+  const QString path = finalRender_ ? finalRender_->path() : QString();
+  const bool cancelled = finalRender_ && finalRender_->cancelled();
+  if (finalRender_) finalRender_->deleteLater();
+  finalRender_ = nullptr;
+  renderer_->setPaused(false);
+  renderFinalAct_->setEnabled(document_->isReady());
+  if (ok) {
+    stepsDock_->markExported(path);
+    statusBar()->showMessage(message, 15000);
+  } else if (cancelled) {
+    statusBar()->showMessage(message, 8000);
+  } else {
+    showError(tr("Cannot write the final image"), message);
+  }
+  Q_EMIT finalImageFinished(ok, message);
 }
 
 void MainWindow::exportSceneGltfDialog() {

@@ -3,6 +3,7 @@
 // comes from them. GUI thread only.
 #pragma once
 
+#include "final_render.h"
 #include "model_import.h"
 
 #include "inlay/modeling/core.h"
@@ -26,6 +27,7 @@ namespace inlay::studio {
 
 class Autosaver;
 class Document;
+class StepsDock;
 class LayersDock;
 class LogDock;
 class PropertiesDock;
@@ -101,6 +103,19 @@ class MainWindow : public QMainWindow {
   QAction* renameAction() const { return renameAct_; }
   QAction* deleteAction() const { return deleteAct_; }
   QMenu* recentMenu() const { return recentMenu_; }
+  // Render Final Image…: renders the scene as it is now at the photo's full resolution to its
+  // noise target on a thread of its own (the preview pauses meanwhile), with a progress dialog
+  // whose Cancel stops it, then writes `path` (PNG, JPEG, TIFF or EXR by its extension)
+  // atomically. Returns false (after telling the user) when it cannot start: nothing prepared,
+  // a render already running, an unknown extension or a missing folder. finalImageFinished
+  // follows every start. `maxSpp` > 0 caps the samples per pixel (tests, drafts).
+  bool renderFinalImage(const QString& path, int maxSpp = 0);
+  // The final render under way (null when none).
+  FinalRender* finalRender() const { return finalRender_; }
+  QAction* renderFinalAction() const { return renderFinalAct_; }
+  QAction* splitAction() const { return splitAct_; }
+  QAction* exportAction() const { return exportAct_; }
+  StepsDock* stepsDock() const { return stepsDock_; }
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
 
@@ -115,6 +130,7 @@ class MainWindow : public QMainWindow {
   void exportCompositeDialog();
   void exportLayerDialog();
   void exportSceneGltfDialog();
+  void renderFinalDialog();
   void about();
   // Inserts a builtin mesh ("builtin:sphere", "builtin:cube") standing in the middle of the
   // visible floor; false (with the reason in the status bar) when there is no such place.
@@ -124,6 +140,10 @@ class MainWindow : public QMainWindow {
   void duplicateSelected();
   void toggleSelectedHidden();
   void renameSelected();
+
+ Q_SIGNALS:
+  // A final render ended: ok when its file was written; message: what was written or why not.
+  void finalImageFinished(bool ok, const QString& message);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -147,6 +167,8 @@ class MainWindow : public QMainWindow {
   void refuseModel(const QString& text);
   void rebuildRecentMenu();
   bool maybeSave();
+  void createStepsDock();
+  void onFinalRenderFinished(bool ok, const QString& message);
 
   Document* document_;
   RenderController* renderer_;
@@ -156,6 +178,9 @@ class MainWindow : public QMainWindow {
   LayersDock* layersDock_;
   ResponseDock* responseDock_ = nullptr;
   LogDock* logDock_ = nullptr;  // each preparation's stages and warnings
+  StepsDock* stepsDock_ = nullptr;
+  QPointer<FinalRender> finalRender_;
+  QPointer<QProgressDialog> finalProgress_;
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;
@@ -192,6 +217,8 @@ class MainWindow : public QMainWindow {
   QAction* exportAct_ = nullptr;
   QAction* exportLayerAct_ = nullptr;
   QAction* exportGltfAct_ = nullptr;
+  QAction* renderFinalAct_ = nullptr;
+  QAction* splitAct_ = nullptr;
   QAction* quitAct_ = nullptr;
   QAction* undoAct_ = nullptr;
   QAction* redoAct_ = nullptr;

@@ -5,9 +5,38 @@
 #include <QImageReader>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace inlay::studio {
+namespace {
+
+// `camera` seeing the same view on a grid of `width` x `height` pixels.
+Camera scaledCamera(const Camera& camera, int width, int height) {
+  Camera c = camera;
+  const double sx = double(width) / camera.widthPx, sy = double(height) / camera.heightPx;
+  c.widthPx = width;
+  c.heightPx = height;
+  c.focalPx = camera.focalPx * 0.5 * (sx + sy);  // sx and sy differ by the rounding only
+  c.principalPx = Vec2(camera.principalPx.x() * sx, camera.principalPx.y() * sy);
+  return c;
+}
+
+}  // namespace
+
+QSize RenderController::previewSizeFor(int width, int height) {
+  const double pixels = double(width) * height;
+  if (width <= 0 || height <= 0 || pixels <= kPreviewMaxPixels) return {width, height};
+  const double s = std::sqrt(kPreviewMaxPixels / pixels);
+  return {std::max(1, int(std::lround(width * s))), std::max(1, int(std::lround(height * s)))};
+}
+
+RenderScene RenderController::previewScene(const PreparedScene& prepared) const {
+  RenderScene scene = shownRenderScene(prepared);
+  if (previewSize_.isValid() && previewSize_ != QSize(scene.camera.widthPx, scene.camera.heightPx))
+    scene.camera = scaledCamera(scene.camera, previewSize_.width(), previewSize_.height());
+  return scene;
+}
 
 RenderController::RenderController(Document* document, QObject* parent)
     : QObject(parent), document_(document) {
@@ -45,9 +74,30 @@ void RenderController::startScene() {
     session_->cancel();
     session_->setOptions(options);
   }
-  // Before setScene: a frame of the new version must find the new context.
-  sink_->setContext(CompositeSink::compositeContextOf(*prepared), requestedVersion_ + 1);
-  request(session_->setScene(shownRenderScene(*prepared)));
+  // Before setScene: a frame of the new version must find the new context (with the photo at
+  // the preview's size).
+  previewSize_ = previewSizeFor(prepared->camera.widthPx, prepared->camera.heightPx);
+  std::shared_ptr<const PreparedScene> context = CompositeSink::compositeContextOf(*prepared);
+  if (previewSize_ != QSize(prepared->camera.widthPx, prepared->camera.heightPx)) {
+    auto reduced = std::make_shared<PreparedScene>(*context);
+    reduced->photo.linearRgb = resizeImage(context->photo.linearRgb, previewSize_.width(), previewSize_.height());
+    reduced->camera = scaledCamera(context->camera, previewSize_.width(), previewSize_.height());
+    context = std::move(reduced);
+  }
+  sink_->setContext(std::move(context), requestedVersion_ + 1);
+  request(session_->setScene(previewScene(*prepared)));
+  if (paused_) session_->cancel();
+}
+
+void RenderController::setPaused(bool paused) {
+  if (paused_ == paused) return;
+  paused_ = paused;
+  if (!session_) return;
+  if (paused_) {
+    session_->cancel();
+  } else if (const PreparedScene* prepared = document_->prepared(); prepared && document_->isReady()) {
+    request(session_->setScene(previewScene(*prepared)));
+  }
 }
 
 void RenderController::setDenoise(bool on) {
@@ -81,14 +131,15 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   }
   const PreparedScene* prepared = document_->prepared();
   if (session_ && prepared && event.has(ChangeEvent::ObjectsAddedOrRemoved)) {
-    request(session_->setScene(shownRenderScene(*prepared)));
+    if (!paused_) request(session_->setScene(previewScene(*prepared)));
     return;
   }
   if (!session_ || !prepared || event.objectIndex < 0 ||
       size_t(event.objectIndex) >= prepared->renderScene.objects.size())
     return;
+  if (paused_) return;  // setPaused(false) renders the scene as it is then
   if (event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectShown)) {
-    request(session_->setScene(shownRenderScene(*prepared)));  // carries the new transform too
+    request(session_->setScene(previewScene(*prepared)));  // carries the new transform too
   } else if (event.has(ChangeEvent::ObjectPlacement)) {
     request(session_->setObjectTransform(
         size_t(event.objectIndex),
@@ -151,7 +202,14 @@ QImage RenderController::layerImage(Layer layer) {
     case Layer::WithObjects: image = encoded8FromLinear(frame->withObjects, response, exposure); break;
     case Layer::WithoutObjects: image = encoded8FromLinear(frame->withoutObjects, response, exposure); break;
     case Layer::Mask: image = srgb8FromLinear(frame->mask, 0.0); break;
-    case Layer::Difference: image = differenceOf(compositeImage(), photoImage(), 4); break;
+    case Layer::Difference:
+      // Against the photo at the composite's size (a big photo's preview is smaller).
+      image = differenceOf(compositeImage(),
+                           photoImage().size() == compositeImage().size()
+                               ? photoImage()
+                               : photoImage().scaled(compositeImage().size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation),
+                           4);
+      break;
     default: break;
   }
   cached = {source, image};

@@ -38,11 +38,20 @@ class RenderController : public QObject {
   Q_OBJECT
 
  public:
+  // A photo of more pixels than this gets its preview (the composite while editing) rendered at
+  // a reduced size of about this many pixels, drawn scaled up to the photo's size; Render Final
+  // Image renders at the photo's full size.
+  static constexpr double kPreviewMaxPixels = 1.0e6;
+  // The preview's size for a photo of `width` x `height` (the photo's own up to kPreviewMaxPixels).
+  static QSize previewSizeFor(int width, int height);
+
   explicit RenderController(Document* document, QObject* parent = nullptr);
   ~RenderController() override;
 
   // The newest composite of the current scene version (null until its first frame).
   const QImage& compositeImage() const { return composite_.srgb8; }
+  // The size the preview renders at (the photo's own for photos up to kPreviewMaxPixels).
+  QSize previewSize() const { return previewSize_; }
   // Its linear pixels (for export); null until the first frame.
   std::shared_ptr<const ImageF> compositeLinear() const { return composite_.linear; }
   // Statistics of compositeImage() (spp, error, seconds, version).
@@ -63,6 +72,10 @@ class RenderController : public QObject {
   // is denoised. Changing it restarts the current scene's render.
   void setDenoise(bool on);
   bool denoise() const { return denoise_; }
+  // Paused: the preview renders nothing (Render Final Image has the processor); edits are still
+  // taken and the preview starts again from the current scene when unpaused.
+  void setPaused(bool paused);
+  bool paused() const { return paused_; }
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -73,12 +86,16 @@ class RenderController : public QObject {
   Q_INVOKABLE void takeFrame();  // by name from the render thread (see the constructor)
   void startScene();
   void request(uint64_t version);
+  // The render scene of the preview: the shown objects, the camera scaled to previewSize_.
+  RenderScene previewScene(const PreparedScene& prepared) const;
 
   Document* document_;
   CompositeImage composite_;
   QImage photo_;
   quint64 requestedVersion_ = 0;
   bool denoise_ = false;
+  bool paused_ = false;
+  QSize previewSize_;  // of the current prepared scene
   // layerImage()'s cache: per layer, the source it was made from.
   struct CachedLayer {
     const void* source = nullptr;

@@ -27,6 +27,20 @@ const QColor kAxisColour[3] = {QColor(255, 90, 90), QColor(90, 230, 90), QColor(
 
 constexpr double kMinZoom = 0.02, kMaxZoom = 32.0;
 
+// An object's front (+z of its model) turned by `yawDeg` about +y.
+Vec3 frontOf(double yawDeg) {
+  const double yaw = yawDeg * std::numbers::pi / 180.0;
+  return Vec3(std::sin(yaw), 0.0, std::cos(yaw));
+}
+
+// The distance from an object's base to its turn handle: outside its footprint.
+double turnRadiusM(const std::optional<Vec3>& sizeM, double heightM) {
+  if (!sizeM) return std::max(0.3, 0.6 * heightM);
+  return std::max(0.3, 0.5 * std::max(sizeM->x(), sizeM->z()) + 0.15);
+}
+
+const QColor kTurnColour(80, 200, 255), kHeightColour(255, 215, 70), kSplitColour(255, 255, 255);
+
 QColor srgbColour(const Vec3& linear) {
   auto enc = [](double v) { return int(srgbCode8(float(v))); };
   return QColor(enc(linear.x()), enc(linear.y()), enc(linear.z()));
@@ -121,6 +135,7 @@ Viewport::Viewport(Document* document, RenderController* renderer, QWidget* pare
     if (e.has(ChangeEvent::SceneReplaced)) fit_ = true;
     if (e.has(ChangeEvent::SceneReplaced) || e.has(ChangeEvent::ObjectsAddedOrRemoved)) {
       dragObject_ = -1;  // indices may have shifted
+      dragHandle_ = Handle::None;
       hoverObject_ = -1;
     }
     if (e.has(ChangeEvent::SceneReplaced)) {
@@ -344,11 +359,13 @@ void Viewport::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), QColor(45, 45, 48));
   paintImage(p);
   p.setRenderHint(QPainter::Antialiasing);
+  if (split_) paintSplit(p);
   paintRoom(p);
   if (showVanishing_) paintVanishingLines(p);
   paintMarks(p);
   paintMarkHandles(p);
   paintObjects(p);
+  paintHandles(p);
   paintToolInput(p);
   if (loupeShown()) paintLoupe(p);
   paintStatus(p);
@@ -361,14 +378,33 @@ void Viewport::paintImage(QPainter& p) {
   const QSize imgSize = imageSize();
   if (image.isNull()) return;
   const QRectF target(offset_, QSizeF(imgSize.width() * scale_, imgSize.height() * scale_));
+  if (split_ && !showBefore_) {
+    // Before/after: the photo left of the divider, the shown layer right of it.
+    const double x = splitWidgetX();
+    p.save();
+    p.setClipRect(QRectF(QPointF(x, target.top()), target.bottomRight()));
+    paintScaled(p, image, target);
+    p.setClipRect(QRectF(target.topLeft(), QPointF(x, target.bottom())));
+    paintScaled(p, renderer_->photoImage(), target);
+    p.restore();
+    return;
+  }
+  paintScaled(p, image, target);
+}
+
+void Viewport::paintScaled(QPainter& p, const QImage& image, const QRectF& target) {
+  if (image.isNull()) return;
   const qreal dpr = devicePixelRatioF();
   const QSize screenSize = (target.size() * dpr).toSize();  // device pixels
   if (scale_ * dpr < 1.0 && !screenSize.isEmpty()) {
-    if (image.cacheKey() != scaledKey_ || scaledImage_.size() != screenSize) {
-      scaledImage_ = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
-      scaledKey_ = image.cacheKey();
+    // One cache per image (the split draws two): a miss takes the slot not used last.
+    const int slot = image.cacheKey() == scaledKey_[1] ? 1 : image.cacheKey() == scaledKey_[0] ? 0 : 1 - lastSlot_;
+    lastSlot_ = slot;
+    if (image.cacheKey() != scaledKey_[slot] || scaledImage_[slot].size() != screenSize) {
+      scaledImage_[slot] = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
+      scaledKey_[slot] = image.cacheKey();
     }
-    p.drawImage(target, scaledImage_, QRectF(scaledImage_.rect()));
+    p.drawImage(target, scaledImage_[slot], QRectF(scaledImage_[slot].rect()));
   } else {
     p.drawImage(target, image, QRectF(image.rect()));  // magnified: nearest, pixels visible
   }
@@ -580,10 +616,8 @@ void Viewport::paintObjects(QPainter& p) {
       const Placement& pl = prepared->placements[i];
       const Camera& cam = prepared->camera;
       const Vec3 top = pl.baseWorld + Vec3(0, o.heightM, 0);
-      const double yaw = o.yawDeg * std::numbers::pi / 180.0;
-      // +x of the object turned by yaw about +y (counter-clockwise seen from above).
-      const Vec3 facing(std::cos(yaw), 0.0, -std::sin(yaw));
-      const Vec3 tip = pl.baseWorld + facing * std::max(0.15, 0.6 * o.heightM);
+      // Its front (+z of the model, glTF's convention) turned by yaw about +y.
+      const Vec3 tip = pl.baseWorld + frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(int(i)), o.heightM);
       if (auto t = cam.project(top); t && cam.depthOf(top) > 0.05)
         haloLine(p, base, widgetFromImage(*t), accent, hot ? 2.0 : 1.2, Qt::DotLine);
       if (auto t = cam.project(tip); t && cam.depthOf(tip) > 0.05) {
@@ -743,6 +777,164 @@ void Viewport::paintStatus(QPainter& p) {
       Qt::AlignLeft | Qt::AlignBottom);
 }
 
+// ---------------------------------------------------------------- before/after split
+
+double Viewport::splitWidgetX() const {
+  return widgetFromImage(Vec2(splitFraction_ * imageSize().width(), 0)).x();
+}
+
+void Viewport::setSplitView(bool on) {
+  if (split_ == on) return;
+  split_ = on;
+  draggingSplit_ = false;
+  update();
+}
+
+void Viewport::setSplitFraction(double fraction) {
+  splitFraction_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 0.5;
+  update();
+}
+
+// The divider across the photo with a grip in its middle, "Before" and "After" beside its top.
+void Viewport::paintSplit(QPainter& p) {
+  const QSize img = imageSize();
+  if (img.isEmpty()) return;
+  const double x = splitWidgetX();
+  const double top = widgetFromImage(Vec2(0, 0)).y(), bottom = widgetFromImage(Vec2(0, img.height())).y();
+  haloLine(p, QPointF(x, top), QPointF(x, bottom), kSplitColour, draggingSplit_ ? 2.5 : 1.5);
+  const QPointF grip(x, 0.5 * (top + bottom));
+  p.setPen(QPen(QColor(0, 0, 0, 180), 1.5));
+  p.setBrush(kSplitColour);
+  p.drawEllipse(grip, 9, 9);
+  p.setPen(QPen(QColor(40, 40, 40), 1.5));
+  p.drawLine(grip + QPointF(-4, 0), grip + QPointF(-1, -3));
+  p.drawLine(grip + QPointF(-4, 0), grip + QPointF(-1, 3));
+  p.drawLine(grip + QPointF(4, 0), grip + QPointF(1, -3));
+  p.drawLine(grip + QPointF(4, 0), grip + QPointF(1, 3));
+  const QFontMetricsF fm(p.font());
+  const QString before = tr("Before"), after = tr("After");
+  const double y = std::max(top, 0.0) + 8 + fm.ascent();
+  labelAt(p, QPointF(x - 12 - fm.horizontalAdvance(before), y), before, kSplitColour);
+  labelAt(p, QPointF(x + 12, y), after, kSplitColour);
+}
+
+// ---------------------------------------------------------------- object handles
+
+std::optional<QPointF> Viewport::handlePos(Handle handle) const {
+  const int i = document_->selectedObject();
+  const PreparedScene* prepared = document_->prepared();
+  if (handle == Handle::None || i < 0 || i >= document_->objectCount() || !prepared ||
+      size_t(i) >= prepared->placements.size())
+    return std::nullopt;
+  const ObjectKeys& o = document_->scene().objects[size_t(i)];
+  const Vec3 base = prepared->placements[size_t(i)].baseWorld;
+  const Vec3 at = handle == Handle::Height
+                      ? Vec3(base + Vec3(0, o.heightM, 0))
+                      : Vec3(base + frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(i), o.heightM));
+  const Camera& cam = prepared->camera;
+  if (cam.depthOf(at) <= 0.05) return std::nullopt;
+  const std::optional<Vec2> px = cam.project(at);
+  if (!px) return std::nullopt;
+  return widgetFromImage(*px);
+}
+
+Viewport::Handle Viewport::handleAt(const QPointF& widgetPos) const {
+  for (Handle h : {Handle::Height, Handle::Turn})
+    if (const std::optional<QPointF> at = handlePos(h)) {
+      const QPointF d = *at - widgetPos;
+      if (std::hypot(d.x(), d.y()) <= kPickRadiusPx) return h;
+    }
+  return Handle::None;
+}
+
+// The selected object's turn disc (with the circle it moves on, while turning) and height square.
+void Viewport::paintHandles(QPainter& p) {
+  const int i = document_->selectedObject();
+  const PreparedScene* prepared = document_->prepared();
+  if (i < 0 || i >= document_->objectCount() || !prepared || size_t(i) >= prepared->placements.size()) return;
+  if (dragHandle_ == Handle::Turn) {
+    // The circle on the object's support the disc travels along.
+    const ObjectKeys& o = document_->scene().objects[size_t(i)];
+    const Vec3 base = prepared->placements[size_t(i)].baseWorld;
+    const double r = turnRadiusM(document_->objectSizeM(i), o.heightM);
+    QPolygonF ring;
+    for (int k = 0; k <= 72; ++k) {
+      const Vec3 q = base + frontOf(k * 5.0) * r;
+      if (prepared->camera.depthOf(q) <= 0.05) continue;
+      if (const auto px = prepared->camera.project(q)) ring << widgetFromImage(*px);
+    }
+    haloPolygon(p, ring, kTurnColour, 1.2, Qt::DashLine);
+  }
+  for (Handle h : {Handle::Turn, Handle::Height}) {
+    const std::optional<QPointF> at = handlePos(h);
+    if (!at) continue;
+    const bool hot = h == hoverHandle_ || h == dragHandle_;
+    const double r = hot ? 7.5 : 6.0;
+    p.setPen(QPen(QColor(0, 0, 0, 200), 3.0));
+    p.setBrush(Qt::NoBrush);
+    const QRectF box(*at - QPointF(r, r), QSizeF(2 * r, 2 * r));
+    h == Handle::Turn ? p.drawEllipse(box) : p.drawRect(box);
+    p.setPen(QPen(QColor(20, 20, 20), 1.2));
+    p.setBrush(h == Handle::Turn ? kTurnColour : kHeightColour);
+    h == Handle::Turn ? p.drawEllipse(box) : p.drawRect(box);
+  }
+}
+
+void Viewport::dragObjectTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
+  QString reason;
+  const Vec2 target = px + dragGrabPx_;
+  // Near a wall: its back against it (Shift places freely); elsewhere its own turn.
+  const std::optional<Document::WallSnap> snap =
+      (modifiers & Qt::ShiftModifier) ? std::nullopt : document_->wallSnap(dragObject_, target);
+  const bool ok = snap ? document_->moveAndTurnObject(dragObject_, snap->basePx, snap->yawDeg, dragId_, &reason)
+                       : document_->moveAndTurnObject(dragObject_, target, dragStartYawDeg_, dragId_, &reason);
+  if (!ok) {
+    Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
+    return;
+  }
+  if (!snap) {
+    Q_EMIT statusMessage(QString());
+    return;
+  }
+  const QString wall = snap->wall == SurfaceKind::WallLeft    ? tr("the left wall")
+                       : snap->wall == SurfaceKind::WallRight ? tr("the right wall")
+                       : snap->wall == SurfaceKind::WallBack  ? tr("the back wall")
+                                                              : tr("the wall behind the camera");
+  Q_EMIT statusMessage(tr("Its back against %1 (hold Shift to place it freely).").arg(wall));
+}
+
+void Viewport::dragHandleTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
+  const PreparedScene* prepared = document_->prepared();
+  const int i = dragObject_;
+  if (!prepared || i < 0 || i >= document_->objectCount() || size_t(i) >= prepared->placements.size()) return;
+  const Vec3 base = prepared->placements[size_t(i)].baseWorld;
+  const Ray ray = prepared->camera.rayThroughPixel(px);
+  QString reason;
+  bool ok = true;
+  if (dragHandle_ == Handle::Turn) {
+    // Where the cursor's ray meets the plane the object stands on: its front points there.
+    if (std::abs(ray.direction.y()) < 1e-9) return;
+    const double t = (base.y() - ray.origin.y()) / ray.direction.y();
+    if (!(t > 0)) return;  // above the horizon: the turn stays
+    const Vec3 v = ray.at(t) - base;
+    double yaw = std::atan2(v.x(), v.z()) * 180.0 / std::numbers::pi;
+    if (modifiers & Qt::ShiftModifier) yaw = 15.0 * std::round(yaw / 15.0);
+    ok = document_->setObjectYaw(i, yaw, &reason, dragId_);
+    if (ok) Q_EMIT statusMessage(tr("Turned %1°").arg(yaw, 0, 'f', 1));
+  } else {
+    // The point of the object's vertical axis nearest to the cursor's ray sets its height.
+    const Vec3 up(0, 1, 0), w0 = base - ray.origin;
+    const double b = up.dot(ray.direction), denom = 1.0 - b * b;
+    if (denom < 1e-9) return;
+    const double s = (b * ray.direction.dot(w0) - up.dot(w0)) / denom;
+    const double ceiling = prepared->box.ceilingM;
+    const double height = std::clamp(s - dragHeightOffsetM_, 0.02, std::max(0.05, ceiling - base.y()));
+    ok = document_->setObjectHeight(i, height, &reason, dragId_);
+    if (ok) Q_EMIT statusMessage(tr("Height %1 m").arg(height, 0, 'f', 2));
+  }
+  if (!ok) Q_EMIT statusMessage(reason);
+}
+
 // ---------------------------------------------------------------- input
 
 void Viewport::report(bool ok, const QString& reason) {
@@ -833,10 +1025,29 @@ void Viewport::finishStroke() {
 }
 
 void Viewport::pressSelect(QMouseEvent* event) {
+  if (const Handle h = handleAt(event->position()); h != Handle::None) {
+    dragObject_ = document_->selectedObject();
+    dragHandle_ = h;
+    dragId_ = Document::newDragId();
+    const ObjectKeys& o = document_->scene().objects[size_t(dragObject_)];
+    dragHeightOffsetM_ = 0;
+    if (h == Handle::Height) {
+      // Grabbed off the square's centre: the height follows the cursor without a jump.
+      const PreparedScene* prepared = document_->prepared();
+      const Vec3 base = prepared->placements[size_t(dragObject_)].baseWorld;
+      const Ray ray = prepared->camera.rayThroughPixel(imageFromWidget(event->position()));
+      const Vec3 w0 = base - ray.origin;
+      const double b = ray.direction.y(), denom = 1.0 - b * b;
+      if (denom > 1e-9) dragHeightOffsetM_ = (b * ray.direction.dot(w0) - w0.y()) / denom - o.heightM;
+    }
+    setCursor(h == Handle::Turn ? Qt::SizeHorCursor : Qt::SizeVerCursor);
+    return;
+  }
   const int hit = objectAt(event->position());
   document_->setSelectedObject(hit);
   if (hit >= 0) {
     dragObject_ = hit;
+    dragStartYawDeg_ = document_->scene().objects[size_t(hit)].yawDeg;
     dragId_ = Document::newDragId();
     dragGrabPx_ = document_->scene().objects[size_t(hit)].basePx - imageFromWidget(event->position());
     setCursor(Qt::SizeAllCursor);
@@ -867,6 +1078,13 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     panning_ = true;
     lastPanPos_ = event->position();
     setCursor(Qt::ClosedHandCursor);
+    return;
+  }
+  if (split_ && event->button() == Qt::LeftButton && handleAt(event->position()) == Handle::None &&
+      std::abs(event->position().x() - splitWidgetX()) <= kPickRadiusPx) {
+    draggingSplit_ = true;
+    setCursor(Qt::SplitHCursor);
+    update();
     return;
   }
   switch (tool_) {
@@ -905,16 +1123,22 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     return;
   }
   const Vec2 px = imageFromWidget(event->position());
+  if (draggingSplit_) {
+    const QSize img = imageSize();
+    if (!img.isEmpty()) setSplitFraction(px.x() / img.width());
+    return;
+  }
   if (dragObject_ >= 0) {
     if (dragObject_ >= document_->objectCount()) {
       dragObject_ = -1;
+      dragHandle_ = Handle::None;
       return;
     }
-    QString reason;
-    if (document_->moveObject(dragObject_, px + dragGrabPx_, dragId_, &reason))
-      Q_EMIT statusMessage(QString());
+    if (dragHandle_ != Handle::None)
+      dragHandleTo(px, event->modifiers());
     else
-      Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
+      dragObjectTo(px, event->modifiers());
+    update();
     return;
   }
   if (dragPoint_) {
@@ -936,12 +1160,17 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   if (rubberFrom_) rubberTo_ = px;
   if (stroking_ && (stroke_.empty() || (stroke_.back() - px).norm() >= 1.0)) stroke_.push_back(px);
   if (tool_ == Tool::Select) {
-    const int hover = objectAt(event->position());
-    const int corner = hover >= 0 ? -1 : cornerAt(event->position());
-    if (hover != hoverObject_ || corner != hoverCorner_) {
+    const Handle handle = handleAt(event->position());
+    const int hover = handle != Handle::None ? -1 : objectAt(event->position());
+    const int corner = hover >= 0 || handle != Handle::None ? -1 : cornerAt(event->position());
+    if (hover != hoverObject_ || corner != hoverCorner_ || handle != hoverHandle_) {
       hoverObject_ = hover;
       hoverCorner_ = corner;
-      setCursor(hover >= 0 || corner >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+      hoverHandle_ = handle;
+      setCursor(handle == Handle::Turn     ? Qt::SizeHorCursor
+                : handle == Handle::Height ? Qt::SizeVerCursor
+                : hover >= 0 || corner >= 0 ? Qt::OpenHandCursor
+                                            : Qt::ArrowCursor);
     }
   }
   update();  // the tool's rubber band follows the cursor
@@ -954,9 +1183,16 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     unsetCursor();
     return;
   }
+  if (event->button() == Qt::LeftButton && draggingSplit_) {
+    draggingSplit_ = false;
+    unsetCursor();
+    update();
+    return;
+  }
   if (event->button() == Qt::LeftButton && (dragObject_ >= 0 || dragCorner_ >= 0 || dragPoint_)) {
     dragPoint_.reset();
     dragObject_ = -1;
+    dragHandle_ = Handle::None;
     dragCorner_ = -1;
     const bool over = objectAt(event->position()) >= 0 || cornerAt(event->position()) >= 0;
     setCursor(over ? Qt::OpenHandCursor : Qt::ArrowCursor);

@@ -27,6 +27,13 @@
 // an occluder stroke's point) moves that point alone (Document::moveMarkPoint, one undo step).
 // Vanishing Lines tool: drag two segments along edges that run in one world direction (X, Y, Z
 // keys choose it; z by default); the camera is re-estimated with that vanishing point fixed.
+// The selected object carries two handles: a disc at the tip of its facing arrow (its front,
+// +z of the model) turns it about its base (yaw; Shift: 15° steps) and a square at the top of
+// its height line scales it uniformly (height_m); each drag is one undo step. Dragging an object
+// near a wall (Document::kWallSnapM) stands it with its back against the wall, facing into the
+// room (Document::wallSnap; Shift: no snapping); dragged away again it takes back its own turn.
+// The before/after split (setSplitView): the photo left of a vertical divider, the composite
+// right of it; the divider is dragged with the left button in any tool.
 // Arrow keys nudge the selected object by one image pixel (ten with Shift), one undo step each.
 // Wheel zooms about the cursor; middle drag pans. A model file dropped on the view stands on the
 // surface under the cursor (modelDropped; the window reads and inserts it). GUI thread only.
@@ -61,6 +68,8 @@ class Viewport : public QWidget {
   static constexpr double kLoupeZoom = 4.0;      // magnification over the current zoom
 
   enum class Tool { Select, Light, Shaft, Surface, Occluder, VanishingLines };
+  // The selected object's on-canvas handles.
+  enum class Handle { None, Turn, Height };
 
   Viewport(Document* document, RenderController* renderer, QWidget* parent = nullptr);
 
@@ -85,6 +94,16 @@ class Viewport : public QWidget {
   // The world axis (0 x, 1 y, 2 z) the Vanishing Lines tool draws for; keys X, Y, Z choose it.
   int vanishingAxis() const { return vanishingAxis_; }
   void setVanishingAxis(int axis);
+  // Where the selected object's handle is drawn (widget coordinates); nullopt when no object
+  // is selected, nothing is prepared or the handle's point is behind the camera.
+  std::optional<QPointF> handlePos(Handle handle) const;
+  // The selected object's handle within kPickRadiusPx of `widgetPos`.
+  Handle handleAt(const QPointF& widgetPos) const;
+  // The before/after split: shown, and the divider's place as a fraction of the photo's width.
+  bool splitView() const { return split_; }
+  double splitFraction() const { return splitFraction_; }
+  // The divider's x in widget coordinates.
+  double splitWidgetX() const;
   // True while the loupe is drawn (a corner drag).
   bool loupeShown() const { return dragCorner_ >= 0; }
   // The outline points of the Light / Surface tool not yet committed (image pixels).
@@ -103,6 +122,8 @@ class Viewport : public QWidget {
   void setLayer(inlay::studio::Layer layer);
   void setTool(inlay::studio::Viewport::Tool tool);
   void setShowVanishingLines(bool show);
+  void setSplitView(bool on);
+  void setSplitFraction(double fraction);  // clamped to [0, 1]
   // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
   void commitToolInput();
   void cancelToolInput();
@@ -138,16 +159,21 @@ class Viewport : public QWidget {
   const QImage& shownImage();
   // Paint steps, in drawing order.
   void paintImage(QPainter& p);
+  void paintScaled(QPainter& p, const QImage& image, const QRectF& target);
   void paintRoom(QPainter& p);
   void paintVanishingLines(QPainter& p);
   void paintMarks(QPainter& p);
   void paintObjects(QPainter& p);
+  void paintHandles(QPainter& p);
+  void paintSplit(QPainter& p);
   void paintMarkHandles(QPainter& p);
   void paintToolInput(QPainter& p);
   void paintLoupe(QPainter& p);
   void paintStatus(QPainter& p);
   // Tool input.
   void pressSelect(QMouseEvent* event);
+  void dragObjectTo(const Vec2& px, Qt::KeyboardModifiers modifiers);
+  void dragHandleTo(const Vec2& px, Qt::KeyboardModifiers modifiers);
   void addOutlinePoint(const QPointF& widgetPos);
   void closeOutline();
   void finishStroke();
@@ -166,6 +192,13 @@ class Viewport : public QWidget {
 
   std::optional<MarkPoint> dragPoint_;  // a mark's point being dragged (Select tool)
   int dragObject_ = -1;
+  double dragStartYawDeg_ = 0;  // the dragged object's own turn (restored off a wall)
+  Handle dragHandle_ = Handle::None;  // a handle of dragObject_ being dragged
+  double dragHeightOffsetM_ = 0;      // Height: the cursor's height on the line minus height_m
+  Handle hoverHandle_ = Handle::None;
+  bool split_ = false;
+  double splitFraction_ = 0.5;
+  bool draggingSplit_ = false;
   int dragCorner_ = -1;
   int dragId_ = 0;
   Vec2 dragGrabPx_{0, 0};  // the dragged point minus the image point under the cursor
@@ -191,8 +224,9 @@ class Viewport : public QWidget {
 
   // The shown image resampled to the screen size when zoomed out (smooth resampling of a large
   // photo on every paint would make drags stutter). A cache of pixels, not of overlay state.
-  QImage scaledImage_;
-  qint64 scaledKey_ = 0;
+  QImage scaledImage_[2];
+  qint64 scaledKey_[2] = {0, 0};
+  int lastSlot_ = 0;
   QImage layerImage_;  // keeps the image of a non-composite layer alive during a paint
   std::vector<double> paintTimesMs_;
 };

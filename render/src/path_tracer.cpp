@@ -238,11 +238,17 @@ struct PathTracer::Impl {
 
   unsigned objectGeomId(size_t i) const { return surfaceCount + unsigned(lights.size()) + unsigned(i); }
 
-  // The photo's linear pixel (x, y) of the camera's frame, for the composite's variance; zero
-  // when the scene carries no photo (or not one of the camera's size) or the value is not finite.
+  // The photo's linear pixel under pixel (x, y) of the camera's frame, for the composite's
+  // variance (a camera scaled to a smaller grid than the photo, as a big photo's preview is,
+  // reads the photo pixel at the same place); zero when the scene carries no photo or the value
+  // is not finite.
   Vec3 photoAt(int x, int y) const {
     const ImageF& p = scene.roomAlbedo.photoRadiance;
-    if (p.channels < 3 || p.width != scene.camera.widthPx || p.height != scene.camera.heightPx) return Vec3::Zero();
+    if (p.channels < 3 || scene.camera.widthPx <= 0 || scene.camera.heightPx <= 0) return Vec3::Zero();
+    if (p.width != scene.camera.widthPx || p.height != scene.camera.heightPx) {
+      x = int((x + 0.5) * p.width / scene.camera.widthPx);
+      y = int((y + 0.5) * p.height / scene.camera.heightPx);
+    }
     const Vec3 v = p.rgb(std::clamp(x, 0, p.width - 1), std::clamp(y, 0, p.height - 1));
     return v.allFinite() ? v : Vec3::Zero();
   }
