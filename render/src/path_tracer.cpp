@@ -1362,7 +1362,7 @@ PathTracer::FirstHit PathTracer::firstHit(const Vec2& pixel) const {
   FirstHit out;
   const Vec3 eye = d.scene.camera.centreWorld();
   const Vec3 dir = d.scene.camera.directionThroughPixel(pixel).normalized();
-  const Hit hit = d.intersectThroughCards(d.withScene, eye, dir, 0, 0.5);
+  const Hit hit = d.intersect(d.withScene, eye, dir, 0, 0.5);
   if (hit.kind == Hit::Kind::None || !dir.allFinite()) return out;
   out.hit = true;
   out.object = hit.kind == Hit::Kind::Object;
