@@ -44,10 +44,10 @@ struct BounceTerm {
 // The fit: per pixel and channel, log B = log rho_s + log(sum_j L_j E_j + Gamma).
 // A clipped pixel (lowerBoundOnly) only says the prediction reaches the clip level.
 struct LogResidual {
-  LogResidual(double logB, double gamma, std::vector<double> e, bool lowerBoundOnly = false,
-              double gammaClipped = -1, std::vector<BounceTerm> bounce = {})
-      : logB(logB), gamma(gamma), e(std::move(e)), lowerBoundOnly(lowerBoundOnly),
-        gammaClipped(gammaClipped), bounce(std::move(bounce)) {}
+  LogResidual(double logBValue, double gammaValue, std::vector<double> eValues, bool lowerBound = false,
+              double gammaClip = -1, std::vector<BounceTerm> bounces = {})
+      : logB(logBValue), gamma(gammaValue), e(std::move(eValues)), lowerBoundOnly(lowerBound),
+        gammaClipped(gammaClip), bounce(std::move(bounces)) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
     // params[0]: rho (1), params[1..]: light radiance channel (1 each), then (when

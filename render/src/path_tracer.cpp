@@ -244,11 +244,11 @@ struct PathTracer::Impl {
     }
   }
 
-  Hit intersect(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear) const {
+  Hit intersect(RTCScene rtcScene, const Vec3& origin, const Vec3& dir, double tNear) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    rtcIntersect1(scene, &ctx, &rh);
+    rtcIntersect1(rtcScene, &ctx, &rh);
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.t = rh.ray.tfar;
@@ -558,8 +558,8 @@ struct PathTracer::Impl {
     int depth = 0;             // index of the vertex the ray will find (0: the camera ray's hit)
     bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
     double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
-    Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
-    Vec3 lastNormal;           // its geometric normal on the side the path left from; zero
+    Vec3 lastPoint = Vec3::Zero();  // the vertex of that bounce (MIS: the light pdf seen from it)
+    Vec3 lastNormal = Vec3::Zero();  // its geometric normal on the side the path left from; zero
                                // after a transmitting BSDF (light selection saw every side)
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
