@@ -11,6 +11,7 @@ PKGS=(
   xvfb xauth
   desktop-file-utils   # desktop-file-validate: the .desktop entry (tests/install_smoke_test.sh)
   clang libclang-rt-14-dev   # tests/fuzz/run_fuzzers.sh (libFuzzer)
+  clang-format-14            # tests/tools/check_format.sh (CI's format check)
   python3 python3-numpy python3-opencv python3-openimageio python3-scipy python3-matplotlib
 )
 SUDO=""

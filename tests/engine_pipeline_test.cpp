@@ -144,7 +144,7 @@ TEST(Engine, CompositeGrainOnlyWhereTheObjectChangesThePhoto) {
         changed += touched;
         grainedPixels += grained.at(x, y, c) != clean.at(x, y, c);
         ASSERT_TRUE(std::isfinite(grained.at(x, y, c)));
-        if (!touched) ASSERT_EQ(grained.at(x, y, c), ps->photo.linearRgb.at(x, y, c)) << x << "," << y;
+        if (!touched) { ASSERT_EQ(grained.at(x, y, c), ps->photo.linearRgb.at(x, y, c)) << x << "," << y; }
       }
   EXPECT_GT(grainedPixels, changed / 10);
   PreparedScene off = *ps;

@@ -276,7 +276,7 @@ TEST(ImageIo, SixteenBitPngIsDecodedFromSrgb) {
 Expected<LoadedImage> loadOriented(const fs::path& dir, int orientation) {
   const auto plain = dir / "plain.jpg";
   EXPECT_TRUE(saveImage(plain.string(), quadrants()).ok());
-  const auto tagged = dir / ("o" + std::to_string(orientation) + ".jpg");
+  const auto tagged = dir / std::string("o").append(std::to_string(orientation)).append(".jpg");
   writeBytes(tagged, withApp1(readBytes(plain),
                               exifPayload(orientation, "TestCam", "TC-1", 350, 2000, 52)));
   return loadImage(tagged.string());

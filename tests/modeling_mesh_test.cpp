@@ -207,7 +207,7 @@ TEST_P(MeshBadInput, IsRefusedWithElementAndReason) {
   auto m = loadMesh(p.string());
   ASSERT_FALSE(m.ok()) << c.name;
   EXPECT_EQ(m.error().file, p.string());
-  if (!c.element.empty()) EXPECT_EQ(m.error().key, c.element) << m.error().message();
+  if (!c.element.empty()) { EXPECT_EQ(m.error().key, c.element) << m.error().message(); }
   EXPECT_NE(m.error().reason.find(c.reasonPart), std::string::npos) << m.error().message();
 }
 
@@ -316,7 +316,7 @@ INSTANTIATE_TEST_SUITE_P(
                     "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}], "scene": 0})",
                 "accessors[0]", "past the end of bufferView 0"},
         BadMesh{"glb_garbage", "g.glb", std::string("glTF\x02\0\0\0\xff\xff\xff\x7f", 12), "", ""}),
-    [](const ::testing::TestParamInfo<BadMesh>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<BadMesh>& p) { return std::string(p.param.name); });
 
 TEST(Mesh, PlyAsciiAndBinaryAndTristrips) {
   const auto dir = test::tempDir("ply_ok");
@@ -423,7 +423,7 @@ TEST(Mesh, SharedModelsLoad) {
     EXPECT_FALSE(m->bounds().isEmpty()) << e.file;
     EXPECT_GT(m->bounds().sizes().minCoeff(), 0.f) << e.file;
     EXPECT_LT(s, 10.0) << e.file;
-    if (!m->normals.empty()) EXPECT_EQ(m->normals.size(), m->positions.size()) << e.file;
+    if (!m->normals.empty()) { EXPECT_EQ(m->normals.size(), m->positions.size()) << e.file; }
   }
 }
 
@@ -488,7 +488,7 @@ TEST(Mesh, TruncatedSharedFilesAreErrors) {
     const std::string bytes = readBytes(models / "cow.obj");
     const auto p = writeFile(dir, "cow_cut.obj", bytes.substr(0, bytes.size() / 2));
     auto m = loadMesh(p.string());
-    if (m.ok()) EXPECT_LT(m->triangles.size(), 5804u);
+    if (m.ok()) { EXPECT_LT(m->triangles.size(), 5804u); }
   }
 }
 

@@ -34,7 +34,7 @@ TEST(Response, TablesAreFiniteStrictlyIncreasingAndEncodeBackToTheirCodes) {
     EXPECT_EQ(t[255], 1.f) << r.describe();
     for (int k = 0; k < 256; ++k) {
       ASSERT_TRUE(std::isfinite(t[size_t(k)])) << r.describe() << " code " << k;
-      if (k > 0) ASSERT_GT(t[size_t(k)], t[size_t(k - 1)]) << r.describe() << " code " << k;
+      if (k > 0) { ASSERT_GT(t[size_t(k)], t[size_t(k - 1)]) << r.describe() << " code " << k; }
       ASSERT_EQ(int(r.encodeCode8(t[size_t(k)])), k) << r.describe();
     }
     // Encoding is monotone and total: anything (NaN, negative, huge) gets a code.

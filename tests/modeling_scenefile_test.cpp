@@ -75,23 +75,27 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
   EXPECT_EQ(a.camera.heightM, b.camera.heightM);
   EXPECT_EQ(a.camera.focalPx, b.camera.focalPx);
   EXPECT_EQ(a.camera.principalPx.has_value(), b.camera.principalPx.has_value());
-  if (a.camera.principalPx && b.camera.principalPx)
+  if (a.camera.principalPx && b.camera.principalPx) {
     EXPECT_EQ(*a.camera.principalPx, *b.camera.principalPx);
+  }
   ASSERT_EQ(a.camera.vanishingPointsPx.has_value(), b.camera.vanishingPointsPx.has_value());
-  if (a.camera.vanishingPointsPx)
+  if (a.camera.vanishingPointsPx) {
     for (int i = 0; i < 3; ++i)
       EXPECT_EQ((*a.camera.vanishingPointsPx)[i], (*b.camera.vanishingPointsPx)[i]);
+  }
   ASSERT_EQ(a.layout.backWallPx.has_value(), b.layout.backWallPx.has_value());
-  if (a.layout.backWallPx)
+  if (a.layout.backWallPx) {
     for (int i = 0; i < 4; ++i) EXPECT_EQ((*a.layout.backWallPx)[i], (*b.layout.backWallPx)[i]);
+  }
   ASSERT_EQ(a.lights.size(), b.lights.size());
   for (size_t i = 0; i < a.lights.size(); ++i) {
     EXPECT_EQ(a.lights[i].kind, b.lights[i].kind);
     EXPECT_EQ(a.lights[i].pointsPx, b.lights[i].pointsPx);
-    if (a.lights[i].kind == LightKeys::Kind::RectM)
+    if (a.lights[i].kind == LightKeys::Kind::RectM) {
       for (int k = 0; k < 4; ++k) EXPECT_EQ(a.lights[i].cornersM[k], b.lights[i].cornersM[k]);
+    }
     EXPECT_EQ(a.lights[i].rgb.has_value(), b.lights[i].rgb.has_value());
-    if (a.lights[i].rgb && b.lights[i].rgb) EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb);
+    if (a.lights[i].rgb && b.lights[i].rgb) { EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb); }
     EXPECT_EQ(a.lights[i].refine, b.lights[i].refine);
     EXPECT_EQ(a.lights[i].lock, b.lights[i].lock);
     EXPECT_EQ(a.lights[i].positionWeight, b.lights[i].positionWeight);
@@ -104,8 +108,9 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
     EXPECT_EQ(a.shafts[i].shaftBoxPx, b.shafts[i].shaftBoxPx);
     EXPECT_EQ(a.shafts[i].sourceBoxPx, b.shafts[i].sourceBoxPx);
     EXPECT_EQ(a.shafts[i].direction.has_value(), b.shafts[i].direction.has_value());
-    if (a.shafts[i].direction && b.shafts[i].direction)
+    if (a.shafts[i].direction && b.shafts[i].direction) {
       EXPECT_EQ(*a.shafts[i].direction, *b.shafts[i].direction);
+    }
   }
   ASSERT_EQ(a.surfaces.size(), b.surfaces.size());
   for (size_t i = 0; i < a.surfaces.size(); ++i) {
@@ -610,7 +615,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"exposure_bool", R"(, "render": {"exposure": true})", "render.exposure",
                 "expected a number, got a boolean"},
         BadCase{"invalid_json", R"(, "render": {"spp": 4,}})", "render", "invalid JSON"}),
-    [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<BadCase>& p) { return std::string(p.param.name); });
 
 TEST(SceneFile, HeaderErrors) {
   const fs::path dir = sceneDir("header");

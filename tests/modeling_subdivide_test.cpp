@@ -60,7 +60,7 @@ TEST(Subdivide, CubeConvergesToASmoothClosedShape) {
                 m.positions.size(), v, step, q);
     EXPECT_GT(step, 0.0);  // Catmull-Clark shrinks a convex cage
     EXPECT_GT(q, previousRoundness);
-    if (levels >= 2) EXPECT_LT(step, 0.35 * previousStep);  // geometric convergence (~1/4 per level)
+    if (levels >= 2) { EXPECT_LT(step, 0.35 * previousStep); }  // geometric convergence (~1/4 per level)
     previousStep = step, previousVolume = v, previousRoundness = q;
   }
   // The limit surface of the unit cube: about 0.3276 (levels 3-4 extrapolated), well inside the

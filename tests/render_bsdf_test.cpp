@@ -87,7 +87,7 @@ TEST(BsdfFurnace, AlbedoNeverAboveOneAndLosslessNearOne) {
       std::printf("[ bsdf furnace ] %-16s theta %4.0f: albedo %.4f\n", c.name, theta, a);
       EXPECT_LE(a, 1.005) << c.name << " at " << theta;
       EXPECT_TRUE(std::isfinite(a));
-      if (theta <= 75) EXPECT_GE(a, c.minAlbedo) << c.name << " at " << theta;
+      if (theta <= 75) { EXPECT_GE(a, c.minAlbedo) << c.name << " at " << theta; }
     }
   }
 }
@@ -104,7 +104,7 @@ TEST(BsdfFurnace, RoughGlassKeepsEnergyBothWays) {
         // Lossless up to GGX's single-scattering loss (largest from the dense side, where
         // rays refracted out at grazing microfacets are masked).
         EXPECT_GE(a, roughness < 0.1 ? 0.999 : roughness < 0.5 ? 0.88 : 0.6);
-        if (eta > 1) EXPECT_GT(transmitted, 0.5 * a);
+        if (eta > 1) { EXPECT_GT(transmitted, 0.5 * a); }
       }
   // Near-smooth and at normal incidence it is the smooth interface: T = 1 - ((n-1)/(n+1))^2.
   double transmitted = 0;

@@ -66,7 +66,7 @@ void expectCausticConverges(Material::Kind kind, double roughness, const char* n
     // At 64 spp a few long caustic paths still weigh on the mean: rough glass gave +0.129 by
     // BSDF sampling alone and +0.157 with NEE through the glass (the same sample sequence; both
     // +0.03 at 256 spp), so 64 spp is held to 0.2 and 256 spp to 0.05.
-    if (spp >= 64) EXPECT_NEAR(mean / refMean, 1.0, spp >= 256 ? 0.05 : 0.2) << name << " at " << spp;
+    if (spp >= 64) { EXPECT_NEAR(mean / refMean, 1.0, spp >= 256 ? 0.05 : 0.2) << name << " at " << spp; }
     EXPECT_LT(rms, previous) << name << " at " << spp;
     previous = rms;
   }

@@ -113,7 +113,7 @@ TEST(GltfExport, AssimpReadsBackRoomLightsCameraAndObjects) {
   ASSERT_EQ(sc->mMaterials[wall->mMaterialIndex]->GetTexture(aiTextureType_DIFFUSE, 0, &texPath), AI_SUCCESS);
   const Expected<LoadedImage> tex = loadImage((dir / texPath.C_Str()).string());
   ASSERT_TRUE(tex.ok()) << tex.error().message();
-  for (const Vec2 px : {Vec2(32.5, 20.5), Vec2(10.5, 12.5), Vec2(50.5, 25.5)}) {
+  for (const Vec2& px : {Vec2(32.5, 20.5), Vec2(10.5, 12.5), Vec2(50.5, 25.5)}) {
     const Ray r = s.camera.rayThroughPixel(px);
     const Vec3 p = r.at((-4.0 - r.origin.z()) / r.direction.z());
     ASSERT_EQ(s.roomAlbedo.firstSurfacePerPixel[size_t(px.y()) * 64 + size_t(px.x())], 4);

@@ -103,8 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
                       FurnaceCase{"conductor_r0.3", mat(Material::Kind::Conductor, 1.0, 0.3), 1.0, 0.03},
                       // GGX single-scattering loss (a few % per interface at alpha 0.09), compounded inside.
                       FurnaceCase{"rough_glass_r0.3", mat(Material::Kind::RoughGlass, 1.0, 0.3), 0.955, 0.02}),
-    [](const auto& info) {
-      std::string n = info.param.name;
+    [](const auto& p) {
+      std::string n = p.param.name;
       for (char& c : n)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       return n;
@@ -193,7 +193,7 @@ TEST(DiffusePlane, RoomTracerMatchesFormFactor) {
   const AreaLight light = p.light();
   ASSERT_LT(light.normal().y(), -0.99);
   const RoomTracer tracer(test::boxRoom());
-  for (const Vec3 point : {Vec3(0, 0, -2), Vec3(0.3, 0, -1.5), Vec3(-1.0, 0, -3.0)}) {
+  for (const Vec3& point : {Vec3(0, 0, -2), Vec3(0.3, 0, -1.5), Vec3(-1.0, 0, -3.0)}) {
     const double expected = rectFormFactor(point.x(), point.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
     const double got = tracer.unitLightIrradianceOverPi(light, point, Vec3(0, 1, 0), 1024, 5);
     std::printf("[ plane ] RoomTracer at (%.1f, %.1f): %.6f, closed form %.6f (rel %+.4f)\n", point.x(),
@@ -296,7 +296,7 @@ TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
   EXPECT_NEAR(polygonFormFactor(Vec3(0.3, 0, -1.5), Vec3(0, 1, 0), rect),
               rectFormFactor(0.3, -1.5, -0.25, 0.25, -2.2, -1.8, 1.2), 1e-9);
   const RoomTracer room(test::boxRoom());
-  for (const Vec3 point : {Vec3(0, 0, -2), Vec3(0.5, 0, -1.5), Vec3(-1.0, 0, -3.0), Vec3(0, 1.19, -2.1)}) {
+  for (const Vec3& point : {Vec3(0, 0, -2), Vec3(0.5, 0, -1.5), Vec3(-1.0, 0, -3.0), Vec3(0, 1.19, -2.1)}) {
     const double expected = polygonFormFactor(point, Vec3(0, 1, 0), light.cornersWorld);
     const double got = room.unitLightIrradianceOverPi(light, point, Vec3(0, 1, 0), 256, 2);
     std::printf("[ plane ] trapezoid, RoomTracer at (%.1f, %.2f, %.1f): %.6f, closed form %.6f\n", point.x(),

@@ -166,7 +166,7 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
   shot(QStringLiteral("diffuse"));
 
   PropertiesDock* props = window_->propertiesDock();
-  for (const QString preset : {QStringLiteral("glass"), QStringLiteral("mirror"), QStringLiteral("emissive")}) {
+  for (const QString& preset : {QStringLiteral("glass"), QStringLiteral("mirror"), QStringLiteral("emissive")}) {
     const int steps = doc->undoStack()->index();
     const int index = props->presetBox()->findData(preset);
     QVERIFY(index >= 0);

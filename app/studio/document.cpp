@@ -764,7 +764,7 @@ void Document::applyMarks(const SceneMarks& m) {
   putMarks(doc_, m);
   const bool wasSelected = selectedMark_.has_value();
   selectedMark_.reset();  // indices may have shifted
-  Q_EMIT changed({ChangeEvent::Marks | (wasSelected ? ChangeEvent::Selection : 0u)});
+  Q_EMIT changed({ChangeEvent::Marks | (wasSelected ? unsigned(ChangeEvent::Selection) : 0u)});
   prepare();
 }
 

@@ -591,8 +591,8 @@ struct PathTracer::Impl {
     int depth = 0;             // index of the vertex the ray will find (0: the camera ray's hit)
     bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
     double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
-    Vec3 lastPoint;            // the vertex of that bounce (MIS: the light pdf seen from it)
-    Vec3 lastNormal;           // its geometric normal on the side the path left from; zero
+    Vec3 lastPoint = Vec3::Zero();  // the vertex of that bounce (MIS: the light pdf seen from it)
+    Vec3 lastNormal = Vec3::Zero();  // its geometric normal on the side the path left from; zero
                                // after a transmitting BSDF (light selection saw every side)
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };

@@ -1161,7 +1161,7 @@ double segmentResidualGradientError() {
     double omega[3] = {k.omega[0], k.omega[1], k.omega[2]}, logPhi = k.logPhi;
     double pp[2] = {k.pp[0], k.pp[1]};
     const double* params[3] = {omega, &logPhi, pp};
-    double r, j0[3], j1[1], j2[2];
+    double r = 0, j0[3] = {}, j1[1] = {}, j2[2] = {};  // Evaluate fills them
     double* jac[3] = {j0, j1, j2};
     ad.Evaluate(params, &r, jac);
     const double analytic[6] = {j0[0], j0[1], j0[2], j1[0], j2[0], j2[1]};

@@ -231,18 +231,6 @@ bool cleanEdge(const std::vector<EdgeSample>& s, Edge& edge) {
   return true;
 }
 
-// Linear interpolation of the binned profile at d (bins without samples skipped).
-double profileAt(const std::array<double, kBins>& alpha, const std::array<int, kBins>& count, double d) {
-  const double f = (d + kReachPx) / kBinPx - 0.5;
-  int i0 = std::clamp(int(std::floor(f)), 0, kBins - 1), i1 = std::clamp(i0 + 1, 0, kBins - 1);
-  while (i0 > 0 && count[size_t(i0)] == 0) --i0;
-  while (i1 < kBins - 1 && count[size_t(i1)] == 0) ++i1;
-  if (count[size_t(i0)] == 0) return alpha[size_t(i1)];
-  if (count[size_t(i1)] == 0 || i1 == i0) return alpha[size_t(i0)];
-  const double w = std::clamp((f - i0) / double(i1 - i0), 0.0, 1.0);
-  return (1 - w) * alpha[size_t(i0)] + w * alpha[size_t(i1)];
-}
-
 struct EdgeResiduals {
   double symmetry = 0;  // mean (alpha(d0 + t) + alpha(d0 - t) - 1)^2
   double colour = 0;    // mean squared distance from the colour line, in codes of noise

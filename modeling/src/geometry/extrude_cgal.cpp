@@ -76,7 +76,9 @@ Expected<std::vector<Vec2>> counterClockwiseSimplePolygon(const std::vector<Vec2
   }
   if (!(maxOff > 1e-7 * axis.norm()))
     return Error{"", key, "all points lie on one line: the outline encloses no area"};
-  if (!poly.is_simple()) {
+  // The free function with a kernel of our own: Polygon_2::is_simple() passes its member kernel (an
+  // empty object), which GCC 12 takes for uninitialized (-Wmaybe-uninitialized) after inlining.
+  if (!CGAL::is_simple_2(poly.vertices_begin(), poly.vertices_end(), K())) {
     const auto [a, b] = firstCrossing(p);
     return Error{"", key,
                  a >= 0 ? "the outline crosses itself (edge " + std::to_string(a) + " meets edge " +

@@ -41,7 +41,6 @@ AssetMaterial glowingShade() { return material("lamp_shade", {0.9, 0.85, 0.75}, 
 
 Affine at(float x, float y, float z) { return Affine(Eigen::Translation3f(x, y, z)); }
 Affine rotX(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::UnitX())); }
-Affine rotY(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::UnitY())); }
 
 // Collects a piece's parts: each is checked to be closed and outward-wound before it joins.
 class PieceBuilder {

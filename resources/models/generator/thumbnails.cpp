@@ -46,7 +46,7 @@ Expected<Placement> nearestFittingPlacement(const PreparedScene& room, const Tri
   const double margin = 4;
   std::optional<Placement> last;
   Eigen::AlignedBox2d lastBox;
-  Vec2 lastBase;
+  Vec2 lastBase(0, 0);
   for (double y = cam.heightPx - 2; y > 0.5 * cam.heightPx; y -= 3) {
     const Vec2 base(0.5 * cam.widthPx, y);
     auto placed = placeObject(mesh, room.geometry, cam, base, heightM, yawDeg, "thumbnail");
