@@ -863,6 +863,225 @@ Core makeCore(int W, int H, const std::optional<Vec2>& principalPx = std::nullop
   return c;
 }
 
+// ---------------------------------------------------------------------------------------------
+// The correction (correctEstimate): check what the user fixed, add the user's lines to the
+// previous estimate's segments, start from the previous camera turned toward the user's
+// vanishing points, refit, then search the back wall again.
+
+// Two user lines of one axis: finite, at least 2 pixels long, not the same line.
+Status checkVanishingLines(const std::array<Vec2, 4>& p, int axis) {
+  const std::string key = std::string("correction.vanishing_lines_px[") + kAxisName[axis] + "]";
+  for (const Vec2& q : p)
+    if (!q.allFinite()) return Error{"", key, "is not a finite number"};
+  if ((p[1] - p[0]).norm() < 2 || (p[3] - p[2]).norm() < 2)
+    return Error{"", key, "a line is shorter than 2 pixels"};
+  const Vec3 l0 = Vec3(p[0].x(), p[0].y(), 1).cross(Vec3(p[1].x(), p[1].y(), 1));
+  const double dist0 = std::abs(l0.dot(Vec3(p[2].x(), p[2].y(), 1))) / l0.head<2>().norm();
+  const double dist1 = std::abs(l0.dot(Vec3(p[3].x(), p[3].y(), 1))) / l0.head<2>().norm();
+  if (dist0 < 1 && dist1 < 1) return Error{"", key, "the two lines are the same line"};
+  return Status::Ok();
+}
+
+// The correction's input errors (correctEstimate's header lists them), in the order of its keys.
+Status checkCorrection(const Camera& pc, const EstimateCorrection& corr) {
+  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() ||
+      !(pc.focalPx > 0))
+    return Error{"", "correction.previous", "is not an estimate of a photo"};
+  if (corr.lockedFocalPx && !(std::isfinite(*corr.lockedFocalPx) && *corr.lockedFocalPx > 0))
+    return Error{"", "correction.focal_px", "must be a positive finite number"};
+  for (int k = 0; k < 3; ++k)
+    if (corr.vanishingLinesPx[k])
+      if (Status s = checkVanishingLines(*corr.vanishingLinesPx[k], k); !s) return s;
+  if (corr.fixedCamera) {
+    const Camera& f = *corr.fixedCamera;
+    const Mat3& r = f.worldFromCamera;
+    if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
+      return Error{"", "correction.camera", "is for a photo of another size"};
+    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
+        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
+        std::abs(r.determinant() - 1) > 1e-6)
+      return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
+  }
+  for (int i = 0; i < 4; ++i)
+    if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
+      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
+                   "is not a finite number"};
+  return Status::Ok();
+}
+
+// The user's lines as segments of their family: explicit vanishing lines, and back-wall edges
+// with both corners placed.
+void addUserLines(Core& c, const EstimateCorrection& corr) {
+  for (int k = 0; k < 3; ++k)
+    if (corr.vanishingLinesPx[k]) {
+      const auto& p = *corr.vanishingLinesPx[k];
+      for (int j = 0; j < 2; ++j) {
+        LineSegment s;
+        s.aPx = p[2 * j];
+        s.bPx = p[2 * j + 1];
+        s.family = k;
+        s.userGiven = true;
+        c.segments.push_back(s);
+      }
+    }
+  const auto& bc = corr.backWallCornersPx;
+  const int edgeFamily[4] = {0, 1, 0, 1};  // TL-TR top (x), TR-BR right (y), BR-BL, BL-TL
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    if (bc[i] && bc[j] && (*bc[j] - *bc[i]).norm() >= 2) {
+      LineSegment s;
+      s.aPx = *bc[i];
+      s.bPx = *bc[j];
+      s.family = edgeFamily[i];
+      s.userGiven = true;
+      c.segments.push_back(s);
+    }
+  }
+}
+
+// The previous estimate's detected segments and the user's lines, about the principal point
+// that is held: a fixed camera's, else the previous estimate's. It is the normalisation origin
+// (vanishing points assume it).
+Core correctionCore(const CameraEstimate& previous, const EstimateCorrection& corr) {
+  const Camera& pc = previous.camera;
+  Core c = makeCore(pc.widthPx, pc.heightPx);
+  c.frame.centre = corr.fixedCamera ? corr.fixedCamera->principalPx : pc.principalPx;
+  c.workingScale = previous.workingScale;
+  for (const auto& s : previous.segments)
+    if (!s.userGiven) c.segments.push_back(s);
+  addUserLines(c, corr);
+  return c;
+}
+
+// The focal length's prior: the caller's, else the previous estimate's held loosely.
+Prior correctionPrior(const Core& c, const EstimateOptions& o, double previousFocalPx) {
+  double totalW = 0;
+  for (const Seg& g : c.segs) totalW += g.fixedFamily >= 0 ? 0 : g.weight;
+  EstimateOptions po = o;
+  if (!po.priorFocalPx) po.priorFocalPx = previousFocalPx;
+  Prior prior = makePrior(c, po, totalW);
+  if (!o.priorFocalPx) prior.sigma = o.priorLogSigmaDefault;
+  return prior;
+}
+
+// Per axis, the user's vanishing point (normalised homogeneous) where two user lines give one.
+std::array<std::optional<Vec3>, 3> userVanishingPoints(const Core& c) {
+  std::array<std::optional<Vec3>, 3> userH;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<const Seg*> lines;
+    for (const Seg& g : c.segs)
+      if (g.fixedFamily == k) lines.push_back(&g);
+    if (lines.size() < 2) continue;
+    const auto lineOf = [](const Seg* g) {
+      return Vec3(g->a.x(), g->a.y(), 1).cross(Vec3(g->b.x(), g->b.y(), 1));
+    };
+    const Vec3 h = lineOf(lines[0]).cross(lineOf(lines[1]));
+    if (h.norm() > 1e-12) userH[k] = h.normalized();
+  }
+  return userH;
+}
+
+// The refinement's start: the previous rotation, turned (least squares) toward the user's
+// vanishing points; the focal length locked, or from two finite user points' orthogonality, or
+// the previous one.
+Triplet correctionStart(const Core& c, const EstimateCorrection& corr, const Camera& pc) {
+  Triplet start;
+  start.phi = (corr.lockedFocalPx ? *corr.lockedFocalPx : pc.focalPx) / c.frame.s;
+  const std::array<std::optional<Vec3>, 3> userH = userVanishingPoints(c);
+  if (!corr.lockedFocalPx) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = a + 1; b < 3; ++b)
+        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 &&
+            std::abs(userH[b]->z()) > 1e-3) {
+          const Vec3& p = *userH[a];
+          const Vec3& q = *userH[b];
+          const double f2 = -(p.x() * q.x() + p.y() * q.y()) / (p.z() * q.z());
+          if (f2 > 0.05 * 0.05 && f2 < 200 * 200) start.phi = std::sqrt(f2);
+        }
+  }
+  Mat3 target = Mat3::Zero();
+  const Mat3 cw0 = pc.cameraFromWorld();
+  for (int k = 0; k < 3; ++k) {
+    Vec3 d = cw0.col(k);
+    double w = 1;
+    if (userH[k]) {
+      // Camera direction of the user's VP, signed like the previous one.
+      const Vec3& h = *userH[k];
+      Vec3 u(h.x() / start.phi, -h.y() / start.phi, -h.z());
+      u.normalize();
+      if (u.dot(d) < 0) u = -u;
+      d = u;
+      w = 100;
+    }
+    target += w * d * Vec3::Unit(k).transpose();
+  }
+  Eigen::JacobiSVD<Mat3> svd(target, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 r = svd.matrixU() * svd.matrixV().transpose();
+  if (r.determinant() < 0) {
+    Mat3 u = svd.matrixU();
+    u.col(2) = -u.col(2);
+    r = u * svd.matrixV().transpose();
+  }
+  for (int k = 0; k < 3; ++k) start.d[k] = r.col(k);
+  return start;
+}
+
+// The corrected triplet: a fixed camera kept as given (the segments only re-assigned to its
+// vanishing points, its focal length locked in rs), else refined from the start.
+Triplet fitCorrection(const Core& c, const EstimateCorrection& corr, const Triplet& start,
+                      RefineSettings& rs, Assignment& as) {
+  if (!corr.fixedCamera) return refine(c.segs, start, rs, 3, &as);
+  Triplet tr;
+  for (int k = 0; k < 3; ++k) tr.d[k] = corr.fixedCamera->cameraFromWorld().col(k);
+  tr.phi = corr.fixedCamera->focalPx / c.frame.s;
+  rs.lockPhi = true;
+  as = assign(c.segs, tr);
+  return tr;
+}
+
+// What the user fixed stays as fixed: the principal point held where the previous estimate put
+// it (or the fixed camera's, exact), a fixed camera exactly; Manhattan once the photo or the
+// user showed it.
+void keepWhatWasFixed(CameraEstimate& e, const CameraEstimate& previous,
+                      const EstimateCorrection& corr, std::array<double, 3> z) {
+  e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
+  e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
+  if (corr.fixedCamera) {
+    e.camera = *corr.fixedCamera;
+    for (int k = 0; k < 3; ++k) {
+      e.vanishingPoints[k].homogeneousPx = e.camera.vanishingPointOf(Vec3::Unit(k));
+      e.vanishingPointsPx[k] = scenePixel(e.vanishingPoints[k].homogeneousPx, e.camera.principalPx);
+    }
+  }
+  std::sort(z.begin(), z.end());
+  e.manhattan = previous.manhattan || corr.fixedCamera || (z[2] >= kStrongZ && z[1] >= kPresentZ);
+}
+
+// The back wall again for the corrected camera. A small change of camera (a dragged corner, a
+// nudged line) searches it locally from where it was, so it does not jump; a large one (or a
+// camera the user typed) globally. Placed corners must make a room.
+Status relayoutCorrected(CameraEstimate& e, const CameraEstimate& previous,
+                         const EstimateCorrection& corr, const EstimateOptions& o) {
+  const Camera& pc = previous.camera;
+  const auto ts = Clock::now();
+  const double turnDeg =
+      std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
+                           -1.0, 1.0)) / kDeg;
+  const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
+                         std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
+  runLayout(e, o, corr.backWallCornersPx,
+            bigChange ? std::nullopt : std::optional<std::array<Vec2, 4>>(previous.backWallPx));
+  e.timings.layoutMs = msSince(ts);
+  bool anyFixed = false;
+  for (const auto& f : corr.backWallCornersPx) anyFixed |= f.has_value();
+  if (anyFixed) {
+    const auto room = roomFromBackWall(e.camera, e.backWallPx);
+    if (!room.ok()) return room.error().underKey("correction");
+  }
+  return Status::Ok();
+}
+
+
 }  // namespace
 
 Expected<CameraEstimate> estimateCameraFromSegments(int widthPx, int heightPx,
@@ -913,153 +1132,25 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
                                          const EstimateOptions& o) {
   const auto t0 = Clock::now();
   const Camera& pc = previous.camera;
-  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() ||
-      !(pc.focalPx > 0))
-    return Error{"", "correction.previous", "is not an estimate of a photo"};
-  if (corr.lockedFocalPx && !(std::isfinite(*corr.lockedFocalPx) && *corr.lockedFocalPx > 0))
-    return Error{"", "correction.focal_px", "must be a positive finite number"};
-  for (int k = 0; k < 3; ++k)
-    if (corr.vanishingLinesPx[k]) {
-      const auto& p = *corr.vanishingLinesPx[k];
-      const std::string key = std::string("correction.vanishing_lines_px[") + kAxisName[k] + "]";
-      for (const Vec2& q : p)
-        if (!q.allFinite()) return Error{"", key, "is not a finite number"};
-      if ((p[1] - p[0]).norm() < 2 || (p[3] - p[2]).norm() < 2)
-        return Error{"", key, "a line is shorter than 2 pixels"};
-      const Vec3 l0 = Vec3(p[0].x(), p[0].y(), 1).cross(Vec3(p[1].x(), p[1].y(), 1));
-      const double dist0 = std::abs(l0.dot(Vec3(p[2].x(), p[2].y(), 1))) / l0.head<2>().norm();
-      const double dist1 = std::abs(l0.dot(Vec3(p[3].x(), p[3].y(), 1))) / l0.head<2>().norm();
-      if (dist0 < 1 && dist1 < 1) return Error{"", key, "the two lines are the same line"};
-    }
-  if (corr.fixedCamera) {
-    const Camera& f = *corr.fixedCamera;
-    const Mat3& r = f.worldFromCamera;
-    if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
-      return Error{"", "correction.camera", "is for a photo of another size"};
-    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
-        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
-        std::abs(r.determinant() - 1) > 1e-6)
-      return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
-  }
-  for (int i = 0; i < 4; ++i)
-    if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
-      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
-                   "is not a finite number"};
+  if (Status s = checkCorrection(pc, corr); !s) return s.error();
 
   CameraEstimate e;
   e.workingScale = previous.workingScale;
   e.photoEdges = previous.photoEdges;
-  Core c = makeCore(pc.widthPx, pc.heightPx);
-  // The principal point is held: a fixed camera's, else the previous estimate's. It is the
-  // normalisation origin (vanishing points assume it).
-  c.frame.centre = corr.fixedCamera ? corr.fixedCamera->principalPx : pc.principalPx;
-  c.workingScale = previous.workingScale;
-  for (const auto& s : previous.segments)
-    if (!s.userGiven) c.segments.push_back(s);
-  // User lines: explicit vanishing lines, and back-wall edges with both corners placed.
-  for (int k = 0; k < 3; ++k)
-    if (corr.vanishingLinesPx[k]) {
-      const auto& p = *corr.vanishingLinesPx[k];
-      for (int j = 0; j < 2; ++j) {
-        LineSegment s;
-        s.aPx = p[2 * j];
-        s.bPx = p[2 * j + 1];
-        s.family = k;
-        s.userGiven = true;
-        c.segments.push_back(s);
-      }
-    }
-  const auto& bc = corr.backWallCornersPx;
-  const int edgeFamily[4] = {0, 1, 0, 1};  // TL-TR top (x), TR-BR right (y), BR-BL, BL-TL
-  for (int i = 0; i < 4; ++i) {
-    const int j = (i + 1) % 4;
-    if (bc[i] && bc[j] && (*bc[j] - *bc[i]).norm() >= 2) {
-      LineSegment s;
-      s.aPx = *bc[i];
-      s.bPx = *bc[j];
-      s.family = edgeFamily[i];
-      s.userGiven = true;
-      c.segments.push_back(s);
-    }
-  }
+  Core c = correctionCore(previous, corr);
   const double workPx = 1.0 / std::max(1e-9, c.workingScale);
   buildSegs(c, o, workPx);
-  double totalW = 0;
-  for (const Seg& g : c.segs) totalW += g.fixedFamily >= 0 ? 0 : g.weight;
-  EstimateOptions po = o;
-  if (!po.priorFocalPx) po.priorFocalPx = pc.focalPx;  // the previous estimate, held loosely
-  Prior prior = makePrior(c, po, totalW);
-  if (!o.priorFocalPx) prior.sigma = o.priorLogSigmaDefault;
-
-  // Start: the previous rotation, turned (least squares) toward the user's vanishing points.
-  Triplet start;
-  start.phi = (corr.lockedFocalPx ? *corr.lockedFocalPx : pc.focalPx) / c.frame.s;
-  std::array<std::optional<Vec3>, 3> userH;  // normalised homogeneous user VPs
-  for (int k = 0; k < 3; ++k) {
-    std::vector<const Seg*> lines;
-    for (const Seg& g : c.segs)
-      if (g.fixedFamily == k) lines.push_back(&g);
-    if (lines.size() < 2) continue;
-    const auto lineOf = [](const Seg* g) {
-      return Vec3(g->a.x(), g->a.y(), 1).cross(Vec3(g->b.x(), g->b.y(), 1));
-    };
-    const Vec3 h = lineOf(lines[0]).cross(lineOf(lines[1]));
-    if (h.norm() > 1e-12) userH[k] = h.normalized();
-  }
-  if (!corr.lockedFocalPx) {
-    // Two user vanishing points, both finite: the focal length from their orthogonality.
-    for (int a = 0; a < 3; ++a)
-      for (int b = a + 1; b < 3; ++b)
-        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 &&
-            std::abs(userH[b]->z()) > 1e-3) {
-          const Vec3& p = *userH[a];
-          const Vec3& q = *userH[b];
-          const double f2 = -(p.x() * q.x() + p.y() * q.y()) / (p.z() * q.z());
-          if (f2 > 0.05 * 0.05 && f2 < 200 * 200) start.phi = std::sqrt(f2);
-        }
-  }
-  Mat3 target = Mat3::Zero();
-  const Mat3 cw0 = pc.cameraFromWorld();
-  for (int k = 0; k < 3; ++k) {
-    Vec3 d = cw0.col(k);
-    double w = 1;
-    if (userH[k]) {
-      // Camera direction of the user's VP, signed like the previous one.
-      const Vec3& h = *userH[k];
-      Vec3 u(h.x() / start.phi, -h.y() / start.phi, -h.z());
-      u.normalize();
-      if (u.dot(d) < 0) u = -u;
-      d = u;
-      w = 100;
-    }
-    target += w * d * Vec3::Unit(k).transpose();
-  }
-  Eigen::JacobiSVD<Mat3> svd(target, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Mat3 r = svd.matrixU() * svd.matrixV().transpose();
-  if (r.determinant() < 0) {
-    Mat3 u = svd.matrixU();
-    u.col(2) = -u.col(2);
-    r = u * svd.matrixV().transpose();
-  }
-  for (int k = 0; k < 3; ++k) start.d[k] = r.col(k);
+  const Prior prior = correctionPrior(c, o, pc.focalPx);
+  const Triplet start = correctionStart(c, corr, pc);
 
   RefineSettings rs;
   rs.pixelSigma = workPx;
   rs.prior = prior;
   rs.lockPhi = corr.lockedFocalPx.has_value();
   rs.cancel = o.cancel;
-  auto ts = Clock::now();
+  const auto ts = Clock::now();
   Assignment as;
-  Triplet tr;
-  if (corr.fixedCamera) {
-    // Kept as given: the segments are only re-assigned to its vanishing points.
-    for (int k = 0; k < 3; ++k) tr.d[k] = corr.fixedCamera->cameraFromWorld().col(k);
-    tr.phi = corr.fixedCamera->focalPx / c.frame.s;
-    rs.lockPhi = true;
-    as = assign(c.segs, tr);
-  } else {
-    tr = refine(c.segs, start, rs, 3, &as);
-  }
+  Triplet tr = fitCorrection(c, corr, start, rs, as);
   if (o.cancel && o.cancel->shouldStop()) return Error{"", "estimate", "cancelled"};
   if (rs.lockPhi && !corr.fixedCamera) tr.phi = *corr.lockedFocalPx / c.frame.s;
   // Keep the world-axis meaning the user worked with; only re-apply the sign rules.
@@ -1067,38 +1158,11 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
   const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
   std::array<double, 3> z{};
   finish(e, c, w, as, u, rs, o, rs.lockPhi, z);
-  // Held where the previous estimate put it (or the fixed camera's, exact).
-  e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
-  e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
-  if (corr.fixedCamera) {
-    e.camera = *corr.fixedCamera;
-    for (int k = 0; k < 3; ++k) {
-      e.vanishingPoints[k].homogeneousPx = e.camera.vanishingPointOf(Vec3::Unit(k));
-      e.vanishingPointsPx[k] = scenePixel(e.vanishingPoints[k].homogeneousPx, e.camera.principalPx);
-    }
-  }
-  std::sort(z.begin(), z.end());
-  e.manhattan = previous.manhattan || corr.fixedCamera || (z[2] >= kStrongZ && z[1] >= kPresentZ);
+  keepWhatWasFixed(e, previous, corr, z);
   addVpWarnings(e);
   e.timings.refineMs = msSince(ts);
 
-  ts = Clock::now();
-  // A small change of camera (a dragged corner, a nudged line) searches the back wall locally
-  // from where it was, so it does not jump; a large one (or a camera the user typed) globally.
-  const double turnDeg =
-      std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
-                           -1.0, 1.0)) / kDeg;
-  const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
-                         std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
-  runLayout(e, o, corr.backWallCornersPx,
-            bigChange ? std::nullopt : std::optional<std::array<Vec2, 4>>(previous.backWallPx));
-  e.timings.layoutMs = msSince(ts);
-  bool anyFixed = false;
-  for (const auto& f : bc) anyFixed |= f.has_value();
-  if (anyFixed) {
-    const auto room = roomFromBackWall(e.camera, e.backWallPx);
-    if (!room.ok()) return room.error().underKey("correction");
-  }
+  if (Status s = relayoutCorrected(e, previous, corr, o); !s) return s.error();
   indexSupporters(e);
   e.timings.totalMs = msSince(t0);
   return e;
