@@ -689,20 +689,46 @@ std::string plyNumber(double x) {
   return buf;
 }
 
-TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
-  // Header.
+// The header: the body's format, where it starts, and its elements in order.
+struct PlyHeader {
+  std::vector<PlyElement> elements;
+  PlyBody::Format format = PlyBody::Format::Ascii;
+  size_t bodyPos = 0;
+};
+
+// A 'property' line: a scalar ("property float x") or a list ("property list uchar int
+// vertex_indices").
+PlyProperty readPlyProperty(std::istringstream& ls, const std::string& where) {
+  PlyProperty p;
+  std::string t;
+  ls >> t;
+  if (t == "list") {
+    std::string ct, it;
+    ls >> ct >> it >> p.name;
+    p.isList = true;
+    if (!plyType(ct, p.countType) || !plyType(it, p.type)) fail(where, "unknown list type");
+  } else {
+    ls >> p.name;
+    if (!plyType(t, p.type)) fail(where, "unknown property type '" + t + "'");
+  }
+  if (p.name.empty()) fail(where, "property without a name");
+  return p;
+}
+
+// The header up to 'end_header' (at most 1 MB): format, elements and their properties; comment,
+// obj_info and ply lines are ignored.
+PlyHeader readPlyHeader(const std::string& data) {
   if (data.compare(0, 3, "ply") != 0 || data.size() < 4 || (data[3] != '\n' && data[3] != '\r'))
     fail("header", "not a PLY file (missing 'ply' magic)");
   const size_t endHeader = data.find("end_header");
   if (endHeader == std::string::npos || endHeader > (1 << 20))
     fail("header", "no 'end_header' line");
-  size_t bodyPos = data.find('\n', endHeader);
-  if (bodyPos == std::string::npos) bodyPos = data.size();
-  else ++bodyPos;
+  PlyHeader h;
+  h.bodyPos = data.find('\n', endHeader);
+  if (h.bodyPos == std::string::npos) h.bodyPos = data.size();
+  else ++h.bodyPos;
   std::istringstream header(data.substr(0, endHeader));
   std::string line;
-  std::vector<PlyElement> elements;
-  PlyBody::Format format = PlyBody::Format::Ascii;
   bool haveFormat = false;
   int lineNo = 0;
   while (std::getline(header, line)) {
@@ -714,9 +740,9 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
     if (kw == "format") {
       std::string f;
       ls >> f;
-      if (f == "ascii") format = PlyBody::Format::Ascii;
-      else if (f == "binary_little_endian") format = PlyBody::Format::Le;
-      else if (f == "binary_big_endian") format = PlyBody::Format::Be;
+      if (f == "ascii") h.format = PlyBody::Format::Ascii;
+      else if (f == "binary_little_endian") h.format = PlyBody::Format::Le;
+      else if (f == "binary_big_endian") h.format = PlyBody::Format::Be;
       else fail(where, "unknown format '" + f + "'");
       haveFormat = true;
     } else if (kw == "element") {
@@ -727,136 +753,149 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
       if (e.name.empty() || !parseInt(count, c) || c < 0) fail(where, "malformed element line");
       e.count = uint64_t(c);
       e.headerLine = lineNo;
-      elements.push_back(e);
+      h.elements.push_back(e);
     } else if (kw == "property") {
-      if (elements.empty()) fail(where, "property before any element");
-      PlyProperty p;
-      std::string t;
-      ls >> t;
-      if (t == "list") {
-        std::string ct, it;
-        ls >> ct >> it >> p.name;
-        p.isList = true;
-        if (!plyType(ct, p.countType) || !plyType(it, p.type)) fail(where, "unknown list type");
-      } else {
-        ls >> p.name;
-        if (!plyType(t, p.type)) fail(where, "unknown property type '" + t + "'");
-      }
-      if (p.name.empty()) fail(where, "property without a name");
-      elements.back().props.push_back(p);
+      if (h.elements.empty()) fail(where, "property before any element");
+      h.elements.back().props.push_back(readPlyProperty(ls, where));
     }
-    // comment, obj_info, ply: ignored.
   }
   if (!haveFormat) fail("header", "no 'format' line");
+  return h;
+}
 
-  PlyBody body(data, bodyPos, format);
-  checkPlyCounts(elements, format, body.remaining());
+// The vertex element: positions (x, y, z), and normals (nx, ny, nz) and texture coordinates
+// (u v, s t or texture_u texture_v) when all of theirs are there; other properties are skipped.
+void readPlyVertices(TriangleMesh& m, PlyBody& body, const PlyElement& e, const MeshLimits& limits) {
+  const std::string ename = "element '" + e.name + "'";
+  if (e.count > limits.maxVertices)
+    fail(ename, std::to_string(e.count) + " vertices exceed the limit of " +
+                    std::to_string(limits.maxVertices));
+  int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1;
+  for (size_t k = 0; k < e.props.size(); ++k) {
+    const std::string& n = e.props[k].name;
+    const int ki = e.props[k].isList ? -1 : int(k);
+    if (n == "x") ix = ki; else if (n == "y") iy = ki; else if (n == "z") iz = ki;
+    else if (n == "nx") inx = ki; else if (n == "ny") iny = ki; else if (n == "nz") inz = ki;
+    else if (n == "u" || n == "s" || n == "texture_u") iu = ki;
+    else if (n == "v" || n == "t" || n == "texture_v") iv = ki;
+  }
+  if (ix < 0 || iy < 0 || iz < 0) fail(ename, "no x, y, z properties");
+  const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
+  m.positions.resize(size_t(e.count));
+  if (hasN) m.normals.resize(size_t(e.count));
+  if (hasUv) m.uvs.resize(size_t(e.count));
+  std::vector<double> vals(e.props.size());
+  for (uint64_t i = 0; i < e.count; ++i) {
+    const std::string where = "vertex " + std::to_string(i);
+    for (size_t k = 0; k < e.props.size(); ++k) {
+      const PlyProperty& p = e.props[k];
+      if (p.isList) {
+        const int64_t n = plyListLength(body.read(p.countType, where), 1e6, where);
+        for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+      } else {
+        vals[k] = body.read(p.type, where);
+      }
+    }
+    const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
+    if (!pos.allFinite()) fail(where, "non-finite coordinate");
+    m.positions[i] = pos;
+    if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),
+                                   float(vals[size_t(inz)]));
+    if (hasUv) m.uvs[i] = Vec2f(float(vals[size_t(iu)]), float(vals[size_t(iv)]));
+  }
+}
+
+// One list of vertex indices as triangles: a face fanned from its first corner; a triangle
+// strip, where -1 restarts the strip and odd triangles flip to keep the winding.
+void addPlyIndices(TriangleMesh& m, const std::vector<int64_t>& idx, bool strips,
+                   const std::string& where) {
+  if (!strips) {
+    if (idx.size() < 3) fail(where, "a face needs at least 3 vertices");
+    for (size_t k = 1; k + 1 < idx.size(); ++k)
+      m.triangles.push_back({uint32_t(idx[0]), uint32_t(idx[k]), uint32_t(idx[k + 1])});
+    return;
+  }
+  size_t start = 0;
+  for (size_t k = 0; k <= idx.size(); ++k) {
+    if (k < idx.size() && idx[k] >= 0) continue;
+    for (size_t q = start; q + 2 < k; ++q) {
+      uint32_t a = uint32_t(idx[q]), b = uint32_t(idx[q + 1]), c = uint32_t(idx[q + 2]);
+      if (a == b || b == c || a == c) continue;
+      if ((q - start) % 2) std::swap(a, b);
+      m.triangles.push_back({a, b, c});
+    }
+    start = k + 1;
+  }
+}
+
+// A 'face' or 'tristrips' element: its vertex_indices (or vertex_index) lists, each index a
+// whole number within the vertices read (-1 too in a strip); other properties are skipped.
+void readPlyFaces(TriangleMesh& m, PlyBody& body, const PlyElement& e, const MeshLimits& limits) {
+  const bool strips = e.name == "tristrips";
+  for (uint64_t i = 0; i < e.count; ++i) {
+    const std::string where = (strips ? "tristrip " : "face ") + std::to_string(i);
+    for (const PlyProperty& p : e.props) {
+      if (!p.isList) {
+        body.read(p.type, where);
+        continue;
+      }
+      const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
+      const bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
+      if (!isIndices) {
+        for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+        continue;
+      }
+      std::vector<int64_t> idx;
+      idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
+      for (int64_t q = 0; q < n; ++q) {
+        const double x = body.read(p.type, where);
+        if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
+            x >= double(m.positions.size()))
+          fail(where, "vertex index " + plyNumber(x) + " out of range (" +
+                          std::to_string(m.positions.size()) + " vertices)");
+        idx.push_back(int64_t(x));
+      }
+      addPlyIndices(m, idx, strips, where);
+      if (m.triangles.size() > limits.maxTriangles)
+        fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
+    }
+  }
+}
+
+// Any other element: read through, bounds-checked, and dropped.
+void skipPlyElement(PlyBody& body, const PlyElement& e) {
+  for (uint64_t i = 0; i < e.count; ++i)
+    for (const PlyProperty& p : e.props) {
+      const std::string where = e.name + " " + std::to_string(i);
+      if (!p.isList) {
+        body.read(p.type, where);
+        continue;
+      }
+      const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
+      for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+    }
+}
+
+TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
+  const PlyHeader h = readPlyHeader(data);
+  PlyBody body(data, h.bodyPos, h.format);
+  checkPlyCounts(h.elements, h.format, body.remaining());
 
   TriangleMesh m;
   bool haveVertices = false;
-  for (const PlyElement& e : elements) {
+  for (const PlyElement& e : h.elements) {
     body.reading(e);
     // An element without properties holds no bytes, whatever its count: nothing to read (a count
     // of 6e18 looped for ever, fuzz_mesh_ply's timeout). A vertex element still fails below.
     if (e.props.empty() && e.name != "vertex") continue;
-    const std::string ename = "element '" + e.name + "'";
     if (e.name == "vertex") {
-      if (e.count > limits.maxVertices)
-        fail(ename, std::to_string(e.count) + " vertices exceed the limit of " +
-                        std::to_string(limits.maxVertices));
-      int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1;
-      for (size_t k = 0; k < e.props.size(); ++k) {
-        const std::string& n = e.props[k].name;
-        const int ki = e.props[k].isList ? -1 : int(k);
-        if (n == "x") ix = ki; else if (n == "y") iy = ki; else if (n == "z") iz = ki;
-        else if (n == "nx") inx = ki; else if (n == "ny") iny = ki; else if (n == "nz") inz = ki;
-        else if (n == "u" || n == "s" || n == "texture_u") iu = ki;
-        else if (n == "v" || n == "t" || n == "texture_v") iv = ki;
-      }
-      if (ix < 0 || iy < 0 || iz < 0) fail(ename, "no x, y, z properties");
-      const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
-      m.positions.resize(size_t(e.count));
-      if (hasN) m.normals.resize(size_t(e.count));
-      if (hasUv) m.uvs.resize(size_t(e.count));
-      std::vector<double> vals(e.props.size());
-      for (uint64_t i = 0; i < e.count; ++i) {
-        const std::string where = "vertex " + std::to_string(i);
-        for (size_t k = 0; k < e.props.size(); ++k) {
-          const PlyProperty& p = e.props[k];
-          if (p.isList) {
-            const int64_t n = plyListLength(body.read(p.countType, where), 1e6, where);
-            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-          } else {
-            vals[k] = body.read(p.type, where);
-          }
-        }
-        const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
-        if (!pos.allFinite()) fail(where, "non-finite coordinate");
-        m.positions[i] = pos;
-        if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),
-                                       float(vals[size_t(inz)]));
-        if (hasUv) m.uvs[i] = Vec2f(float(vals[size_t(iu)]), float(vals[size_t(iv)]));
-      }
+      readPlyVertices(m, body, e, limits);
       haveVertices = true;
     } else if (e.name == "face" || e.name == "tristrips") {
-      const bool strips = e.name == "tristrips";
-      if (!haveVertices) fail(ename, "appears before the vertex element");
-      for (uint64_t i = 0; i < e.count; ++i) {
-        const std::string where = (strips ? "tristrip " : "face ") + std::to_string(i);
-        for (const PlyProperty& p : e.props) {
-          if (!p.isList) {
-            body.read(p.type, where);
-            continue;
-          }
-          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
-          const bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
-          if (!isIndices) {
-            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-            continue;
-          }
-          std::vector<int64_t> idx;
-          idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
-          for (int64_t q = 0; q < n; ++q) {
-            const double x = body.read(p.type, where);
-            if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
-                x >= double(m.positions.size()))
-              fail(where, "vertex index " + plyNumber(x) + " out of range (" +
-                              std::to_string(m.positions.size()) + " vertices)");
-            idx.push_back(int64_t(x));
-          }
-          if (!strips) {
-            if (idx.size() < 3) fail(where, "a face needs at least 3 vertices");
-            for (size_t k = 1; k + 1 < idx.size(); ++k)
-              m.triangles.push_back({uint32_t(idx[0]), uint32_t(idx[k]), uint32_t(idx[k + 1])});
-          } else {
-            // -1 restarts the strip; odd triangles flip to keep the winding.
-            size_t start = 0;
-            for (size_t k = 0; k <= idx.size(); ++k) {
-              if (k < idx.size() && idx[k] >= 0) continue;
-              for (size_t q = start; q + 2 < k; ++q) {
-                uint32_t a = uint32_t(idx[q]), b = uint32_t(idx[q + 1]), c = uint32_t(idx[q + 2]);
-                if (a == b || b == c || a == c) continue;
-                if ((q - start) % 2) std::swap(a, b);
-                m.triangles.push_back({a, b, c});
-              }
-              start = k + 1;
-            }
-          }
-          if (m.triangles.size() > limits.maxTriangles)
-            fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
-        }
-      }
+      if (!haveVertices) fail("element '" + e.name + "'", "appears before the vertex element");
+      readPlyFaces(m, body, e, limits);
     } else {
-      for (uint64_t i = 0; i < e.count; ++i)
-        for (const PlyProperty& p : e.props) {
-          const std::string where = e.name + " " + std::to_string(i);
-          if (!p.isList) {
-            body.read(p.type, where);
-            continue;
-          }
-          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
-          for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-        }
+      skipPlyElement(body, e);
     }
   }
   if (!haveVertices) fail("header", "no vertex element");
