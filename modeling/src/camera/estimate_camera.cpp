@@ -524,42 +524,45 @@ void setPrincipalUncertainty(CameraEstimate& e, const Uncertainty& u, const Refi
   e.principalFromPrior = !(worst < 0.5 * rs.principalSigma * rs.principalSigma);
 }
 
-// Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
-// families and residuals, confidences, focal interval. zScore (out): per axis the family's
-// meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
-void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
-            const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
-            bool lockedFocal, std::array<double, 3>& zScore) {
+// The camera of a refined triplet (its directions made an exact rotation).
+Camera cameraOf(const Core& c, const Triplet& tr, double heightM) {
   Camera cam;
   cam.widthPx = c.W;
   cam.heightPx = c.H;
   cam.principalPx = c.frame.centre + c.frame.s * tr.pp;
   cam.focalPx = tr.phi * c.frame.s;
-  cam.heightM = o.cameraHeightM;
+  cam.heightM = heightM;
   Mat3 cameraFromWorld;
   for (int k = 0; k < 3; ++k) cameraFromWorld.col(k) = tr.d[k];
   Eigen::JacobiSVD<Mat3> svd(cameraFromWorld, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Mat3 r = svd.matrixU() * svd.matrixV().transpose();
   if (r.determinant() < 0) r = -r;  // cannot happen with z = x cross y; keep a rotation anyway
   cam.worldFromCamera = r.transpose();
-  e.camera = cam;
+  return cam;
+}
 
-  const double diag = std::hypot(double(c.W), double(c.H));
-  // Residuals and families for the caller's segments.
+// Per family, what its supporting segments say; and the chance model's inputs over the
+// detected segments.
+struct FamilyTally {
+  double chanceSum = 0;  // sum of the detected segments' chance to fit a point by accident
+  int detected = 0;      // detected (not user-given) segments
+  std::array<int, 3> count{0, 0, 0}, userCount{0, 0, 0}, tight{0, 0, 0};
+  std::array<double, 3> length{0, 0, 0}, sumR2{0, 0, 0};
+  std::array<double, 3> angMin{1e9, 1e9, 1e9}, angMax{-1e9, -1e9, -1e9};
+};
+
+// The caller's segments get their families and residuals, and each family its tally. Chance
+// model (a contrario, as LSD itself): a segment fits a given vanishing point within half its
+// inlier tolerance by accident with probability p_i = 2 asin(sinTol / 2) / pi. Real structure
+// fits far tighter than the tolerance, noise does not.
+FamilyTally tallyFamilies(Core& c, const Triplet& tr, const Assignment& as) {
   for (auto& s : c.segments) {
     s.family = s.userGiven ? s.family : -1;
     s.residualPx = 0;
   }
   Vec3 h[3];
   for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi, tr.pp);
-  // Chance model (a contrario, as LSD itself): a segment fits a given vanishing point within
-  // half its inlier tolerance by accident with probability p_i = 2 asin(sinTol / 2) / pi. Real
-  // structure fits far tighter than the tolerance, noise does not.
-  double chanceSum = 0;
-  int detected = 0;
-  std::array<int, 3> count{0, 0, 0}, userCount{0, 0, 0}, tight{0, 0, 0};
-  std::array<double, 3> length{0, 0, 0}, sumR2{0, 0, 0};
-  std::array<double, 3> angMin{1e9, 1e9, 1e9}, angMax{-1e9, -1e9, -1e9};
+  FamilyTally f;
   std::array<Vec2, 3> meanDir{Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
   auto chanceOf = [](const Seg& g) {
     return std::clamp(2.0 * std::asin(std::min(1.0, 0.5 * g.sinTol)) / M_PI, 1e-4, 0.5);
@@ -567,22 +570,23 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   for (size_t i = 0; i < c.segs.size(); ++i) {
     const Seg& g = c.segs[i];
     if (g.fixedFamily < 0) {
-      chanceSum += chanceOf(g);
-      ++detected;
+      f.chanceSum += chanceOf(g);
+      ++f.detected;
     }
     const int k = as.family[i];
     if (k < 0) continue;
     LineSegment& s = c.segments[g.source];
     s.family = k;
     s.residualPx = g.halfLenPx * sinTo(g, h[k]);
-    ++count[k];
-    if (s.userGiven) ++userCount[k];
-    else if (sinTo(g, h[k]) < 0.5 * g.sinTol) ++tight[k];
-    length[k] += s.lengthPx();
-    sumR2[k] += s.residualPx * s.residualPx;
+    ++f.count[k];
+    if (s.userGiven) ++f.userCount[k];
+    else if (sinTo(g, h[k]) < 0.5 * g.sinTol) ++f.tight[k];
+    f.length[k] += s.lengthPx();
+    f.sumR2[k] += s.residualPx * s.residualPx;
     // Doubled angle: direction of an undirected line.
     meanDir[k] += Vec2(std::cos(2 * std::atan2(g.t.y(), g.t.x())), std::sin(2 * std::atan2(g.t.y(), g.t.x())));
   }
+  // The spread of each family's directions about their mean.
   for (size_t i = 0; i < c.segs.size(); ++i) {
     const int k = as.family[i];
     if (k < 0) continue;
@@ -591,38 +595,49 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
     double a = std::atan2(t.y(), t.x()) - mean;
     while (a > M_PI / 2) a -= M_PI;
     while (a < -M_PI / 2) a += M_PI;
-    angMin[k] = std::min(angMin[k], a);
-    angMax[k] = std::max(angMax[k], a);
+    f.angMin[k] = std::min(f.angMin[k], a);
+    f.angMax[k] = std::max(f.angMax[k], a);
   }
+  return f;
+}
+
+// Each vanishing point as the camera sees it, with its family's support.
+void describeVanishingPoints(CameraEstimate& e, const Camera& cam, const Triplet& tr,
+                             const FamilyTally& f, const Uncertainty& u) {
+  const double diag = std::hypot(double(cam.widthPx), double(cam.heightPx));
   for (int k = 0; k < 3; ++k) {
     VanishingPointInfo& v = e.vanishingPoints[k];
     v.homogeneousPx = cam.vanishingPointOf(Vec3::Unit(k));
     v.directionCamera = tr.d[k];
     const double xyn = std::hypot(v.homogeneousPx.x(), v.homogeneousPx.y());
     v.atInfinity = std::abs(v.homogeneousPx.z()) * 1000 * diag < xyn;
-    v.segmentCount = count[k];
-    v.supportLengthPx = length[k];
-    v.rmsResidualPx = count[k] ? std::sqrt(sumR2[k] / count[k]) : 0;
+    v.segmentCount = f.count[k];
+    v.supportLengthPx = f.length[k];
+    v.rmsResidualPx = f.count[k] ? std::sqrt(f.sumR2[k] / f.count[k]) : 0;
     v.angularSigmaDeg = u.angularSigmaRad[k] / kDeg;
-    v.nearlyParallel = count[k] >= 2 && (angMax[k] - angMin[k]) < 2.0 * kDeg;
+    v.nearlyParallel = f.count[k] >= 2 && (f.angMax[k] - f.angMin[k]) < 2.0 * kDeg;
     e.vanishingPointsPx[k] = scenePixel(v.homogeneousPx, cam.principalPx);
   }
-  // Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points tried)
-  // x P(at least `tight` of `detected` segments fit by accident), binomial with the mean chance.
-  // A Manhattan frame is found strongest family first: its point is one of the segment pairs'
-  // (times the focal rungs); the second lies on the great circle orthogonal to the first (one
-  // per segment and rung); the third is then fixed (one per rung).
-  const double p = detected > 0 ? chanceSum / detected : 0.01;
-  const double n = std::max(1, detected);
+}
+
+// Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points tried)
+// x P(at least `tight` of `detected` segments fit by accident), binomial with the mean chance.
+// A Manhattan frame is found strongest family first: its point is one of the segment pairs'
+// (times the focal rungs); the second lies on the great circle orthogonal to the first (one
+// per segment and rung); the third is then fixed (one per rung). Each point's confidence is
+// that significance times the precision of its direction; zScore (out) is the significance.
+void setConfidences(CameraEstimate& e, const FamilyTally& f, std::array<double, 3>& zScore) {
+  const double p = f.detected > 0 ? f.chanceSum / f.detected : 0.01;
+  const double n = std::max(1, f.detected);
   const double firstTests = 0.5 * n * std::max(1.0, n - 1) * 15.0;
   std::array<double, 3> raw{};
-  for (int k = 0; k < 3; ++k) raw[k] = -log10BinomialTail(detected, tight[k], p);
+  for (int k = 0; k < 3; ++k) raw[k] = -log10BinomialTail(f.detected, f.tight[k], p);
   std::array<int, 3> rank{0, 1, 2};
   std::sort(rank.begin(), rank.end(), [&](int a, int b) { return raw[a] > raw[b]; });
   const double tests[3] = {firstTests, n * 15.0, 15.0};
   for (int order = 0; order < 3; ++order) {
     const int k = rank[order];
-    const double z = userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[order]);
+    const double z = f.userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[order]);
     zScore[k] = z;
     // Calibrated on noise and random-line photos (best family up to 6.5) and real rooms (50-110
     // for a wall's or floor's lines, 2-20 for a sparse second or third family).
@@ -636,6 +651,19 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   std::array<double, 3> sorted = e.confidence;
   std::sort(sorted.begin(), sorted.end());
   e.overallConfidence = sorted[1];
+}
+
+// Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
+// families and residuals, confidences, focal interval. zScore (out): per axis the family's
+// meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
+void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
+            const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
+            bool lockedFocal, std::array<double, 3>& zScore) {
+  e.camera = cameraOf(c, tr, o.cameraHeightM);
+  const FamilyTally f = tallyFamilies(c, tr, as);
+  describeVanishingPoints(e, e.camera, tr, f, u);
+  setConfidences(e, f, zScore);
+  const Camera& cam = e.camera;
   const double fs = lockedFocal ? 0.0 : u.logPhiSigma;
   e.focalMinPx = cam.focalPx * std::exp(-2 * fs);
   e.focalMaxPx = cam.focalPx * std::exp(2 * fs);
