@@ -792,6 +792,68 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   }
 }
 
+// The best refined triplet of the search's best few rungs' winners (by refined score).
+struct RefinedBest {
+  bool have = false;
+  double score = -1e300;
+  Triplet triplet;
+  Assignment as;
+};
+
+// Refine the best few rungs' winners; keep the best refined score. Nothing when cancelled.
+std::optional<RefinedBest> refineCandidates(const Core& c, const SearchOutput& so,
+                                            const RefineSettings& rs, const Prior& prior,
+                                            const CancelToken* cancel) {
+  RefinedBest best;
+  for (size_t i = 0; i < std::min<size_t>(3, so.candidates.size()); ++i) {
+    Assignment as;
+    const Triplet tr = refine(c.segs, so.candidates[i].second, rs, 3, &as);
+    const double sc = dataScore(c.segs, tr) - prior.penalty(tr.phi);
+    if (sc > best.score) {
+      best.score = sc;
+      best.triplet = tr;
+      best.as = as;
+      best.have = true;
+    }
+    if (cancel && cancel->shouldStop()) return std::nullopt;
+  }
+  return best;
+}
+
+// The estimate from the best refined triplet, its axes in world order. Manhattan: one family
+// far beyond chance (random lines reach z of about 11), a second one present (the third follows
+// from orthogonality); else the fallback camera, tilted to the vertical lines when they are.
+void estimateFromBest(CameraEstimate& e, Core& c, const RefinedBest& best, const RefineSettings& rs,
+                      const Prior& prior, const EstimateOptions& o, Clock::time_point ts) {
+  const auto order = axisOrder(best.triplet);
+  Triplet w = ordered(best.triplet, order);
+  Assignment as = best.as;
+  for (int& f : as.family)
+    if (f >= 0) f = int(std::find(order.begin(), order.end(), f) - order.begin());
+  const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
+  std::array<double, 3> z{};
+  finish(e, c, w, as, u, rs, o, false, z);
+  e.timings.refineMs = msSince(ts);
+  std::array<double, 3> zs = z;
+  std::sort(zs.begin(), zs.end());
+  e.manhattan = zs[2] >= kStrongZ && zs[1] >= kPresentZ;
+  if (!e.manhattan) {
+    const bool vertical = z[1] >= kStrongZ;
+    const Vec3 up = w.d[1];
+    const double upConf = e.confidence[1];
+    fallbackCamera(e, c, prior, o, vertical ? std::optional<Vec3>(up) : std::nullopt, upConf);
+    return;
+  }
+  addVpWarnings(e);
+  if (e.focalFromPrior)
+    e.warnings.push_back(
+        std::string("the focal length is not determined by the lines (vanishing points at "
+                    "infinity); it comes from ") +
+        (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view"));
+}
+
+// Segments -> vanishing-point search over focal rungs -> refinement of the best -> the estimate
+// (or the fallback camera) -> the back wall.
 Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::time_point t0,
                                       CameraEstimate e) {
   const double workPx = 1.0 / std::max(1e-9, c.workingScale);  // one working pixel, in photo px
@@ -814,54 +876,12 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
   rs.prior = prior;
   rs.principalSigma = o.principalPx ? 0.0 : std::max(0.0, o.principalSigma);
   rs.cancel = o.cancel;
-  bool have = false;
-  double bestScore = -1e300;
-  Triplet best;
-  Assignment bestAs;
-  // Refine the best few rungs' winners; keep the best refined score.
-  for (size_t i = 0; i < std::min<size_t>(3, so.candidates.size()); ++i) {
-    Assignment as;
-    const Triplet tr = refine(c.segs, so.candidates[i].second, rs, 3, &as);
-    const double sc = dataScore(c.segs, tr) - prior.penalty(tr.phi);
-    if (sc > bestScore) {
-      bestScore = sc;
-      best = tr;
-      bestAs = as;
-      have = true;
-    }
-    if (cancelled()) return Error{"", "estimate", "cancelled"};
-  }
-  if (!so.progress.empty() && have)
-    e.progress.push_back({msSince(t0) / 1000.0, bestScore});
-
-  if (have) {
-    const auto order = axisOrder(best);
-    Triplet w = ordered(best, order);
-    Assignment as = bestAs;
-    for (int& f : as.family)
-      if (f >= 0) f = int(std::find(order.begin(), order.end(), f) - order.begin());
-    const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
-    std::array<double, 3> z{};
-    finish(e, c, w, as, u, rs, o, false, z);
-    e.timings.refineMs = msSince(ts);
-    // Manhattan: one family far beyond chance (random lines reach z of about 11), a second one
-    // present (the third follows from orthogonality).
-    std::array<double, 3> zs = z;
-    std::sort(zs.begin(), zs.end());
-    e.manhattan = zs[2] >= kStrongZ && zs[1] >= kPresentZ;
-    if (!e.manhattan) {
-      const bool vertical = z[1] >= kStrongZ;
-      const Vec3 up = w.d[1];
-      const double upConf = e.confidence[1];
-      fallbackCamera(e, c, prior, o, vertical ? std::optional<Vec3>(up) : std::nullopt, upConf);
-    } else {
-      addVpWarnings(e);
-      if (e.focalFromPrior)
-        e.warnings.push_back(
-            std::string("the focal length is not determined by the lines (vanishing points at "
-                        "infinity); it comes from ") +
-            (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view"));
-    }
+  const auto best = refineCandidates(c, so, rs, prior, o.cancel);
+  if (!best) return Error{"", "estimate", "cancelled"};
+  if (!so.progress.empty() && best->have)
+    e.progress.push_back({msSince(t0) / 1000.0, best->score});
+  if (best->have) {
+    estimateFromBest(e, c, *best, rs, prior, o, ts);
   } else {
     for (auto& s : c.segments) s.family = -1;
     e.segments = c.segments;
