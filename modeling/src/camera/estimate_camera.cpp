@@ -556,42 +556,45 @@ void setPrincipalUncertainty(CameraEstimate& e, const Uncertainty& u, const Refi
   e.principalFromPrior = !(worst < 0.5 * rs.principalSigma * rs.principalSigma);
 }
 
-// Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
-// families and residuals, confidences, focal interval. zScore (out): per axis the family's
-// meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
-void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
-            const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
-            bool lockedFocal, std::array<double, 3>& zScore) {
+// The camera of a refined triplet (its directions made an exact rotation).
+Camera cameraOf(const Core& c, const Triplet& tr, double heightM) {
   Camera cam;
   cam.widthPx = c.W;
   cam.heightPx = c.H;
   cam.principalPx = c.frame.centre + c.frame.s * tr.pp;
   cam.focalPx = tr.phi * c.frame.s;
-  cam.heightM = o.cameraHeightM;
+  cam.heightM = heightM;
   Mat3 cameraFromWorld;
   for (int k = 0; k < 3; ++k) cameraFromWorld.col(k) = tr.d[k];
   Eigen::JacobiSVD<Mat3> svd(cameraFromWorld, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Mat3 r = svd.matrixU() * svd.matrixV().transpose();
   if (r.determinant() < 0) r = -r;  // cannot happen with z = x cross y; keep a rotation anyway
   cam.worldFromCamera = r.transpose();
-  e.camera = cam;
+  return cam;
+}
 
-  const double diag = std::hypot(double(c.W), double(c.H));
-  // Residuals and families for the caller's segments.
+// Per family, what its supporting segments say; and the chance model's inputs over the
+// detected segments.
+struct FamilyTally {
+  double chanceSum = 0;  // sum of the detected segments' chance to fit a point by accident
+  int detected = 0;      // detected (not user-given) segments
+  std::array<int, 3> count{0, 0, 0}, userCount{0, 0, 0}, tight{0, 0, 0};
+  std::array<double, 3> length{0, 0, 0}, sumR2{0, 0, 0};
+  std::array<double, 3> angMin{1e9, 1e9, 1e9}, angMax{-1e9, -1e9, -1e9};
+};
+
+// The caller's segments get their families and residuals, and each family its tally. Chance
+// model (a contrario, as LSD itself): a segment fits a given vanishing point within half its
+// inlier tolerance by accident with probability p_i = 2 asin(sinTol / 2) / pi. Real structure
+// fits far tighter than the tolerance, noise does not.
+FamilyTally tallyFamilies(Core& c, const Triplet& tr, const Assignment& as) {
   for (auto& s : c.segments) {
     s.family = s.userGiven ? s.family : -1;
     s.residualPx = 0;
   }
   Vec3 h[3];
   for (int k = 0; k < 3; ++k) h[k] = vpOf(tr.d[k], tr.phi, tr.pp);
-  // Chance model (a contrario, as LSD itself): a segment fits a given vanishing point within
-  // half its inlier tolerance by accident with probability p_i = 2 asin(sinTol / 2) / pi. Real
-  // structure fits far tighter than the tolerance, noise does not.
-  double chanceSum = 0;
-  int detected = 0;
-  std::array<int, 3> count{0, 0, 0}, userCount{0, 0, 0}, tight{0, 0, 0};
-  std::array<double, 3> length{0, 0, 0}, sumR2{0, 0, 0};
-  std::array<double, 3> angMin{1e9, 1e9, 1e9}, angMax{-1e9, -1e9, -1e9};
+  FamilyTally f;
   std::array<Vec2, 3> meanDir{Vec2::Zero(), Vec2::Zero(), Vec2::Zero()};
   auto chanceOf = [](const Seg& g) {
     return std::clamp(2.0 * std::asin(std::min(1.0, 0.5 * g.sinTol)) / M_PI, 1e-4, 0.5);
@@ -599,22 +602,23 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   for (size_t i = 0; i < c.segs.size(); ++i) {
     const Seg& g = c.segs[i];
     if (g.fixedFamily < 0) {
-      chanceSum += chanceOf(g);
-      ++detected;
+      f.chanceSum += chanceOf(g);
+      ++f.detected;
     }
     const int k = as.family[i];
     if (k < 0) continue;
     LineSegment& s = c.segments[g.source];
     s.family = k;
     s.residualPx = g.halfLenPx * sinTo(g, h[k]);
-    ++count[k];
-    if (s.userGiven) ++userCount[k];
-    else if (sinTo(g, h[k]) < 0.5 * g.sinTol) ++tight[k];
-    length[k] += s.lengthPx();
-    sumR2[k] += s.residualPx * s.residualPx;
+    ++f.count[k];
+    if (s.userGiven) ++f.userCount[k];
+    else if (sinTo(g, h[k]) < 0.5 * g.sinTol) ++f.tight[k];
+    f.length[k] += s.lengthPx();
+    f.sumR2[k] += s.residualPx * s.residualPx;
     // Doubled angle: direction of an undirected line.
     meanDir[k] += Vec2(std::cos(2 * std::atan2(g.t.y(), g.t.x())), std::sin(2 * std::atan2(g.t.y(), g.t.x())));
   }
+  // The spread of each family's directions about their mean.
   for (size_t i = 0; i < c.segs.size(); ++i) {
     const int k = as.family[i];
     if (k < 0) continue;
@@ -623,38 +627,49 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
     double a = std::atan2(t.y(), t.x()) - mean;
     while (a > M_PI / 2) a -= M_PI;
     while (a < -M_PI / 2) a += M_PI;
-    angMin[k] = std::min(angMin[k], a);
-    angMax[k] = std::max(angMax[k], a);
+    f.angMin[k] = std::min(f.angMin[k], a);
+    f.angMax[k] = std::max(f.angMax[k], a);
   }
+  return f;
+}
+
+// Each vanishing point as the camera sees it, with its family's support.
+void describeVanishingPoints(CameraEstimate& e, const Camera& cam, const Triplet& tr,
+                             const FamilyTally& f, const Uncertainty& u) {
+  const double diag = std::hypot(double(cam.widthPx), double(cam.heightPx));
   for (int k = 0; k < 3; ++k) {
     VanishingPointInfo& v = e.vanishingPoints[k];
     v.homogeneousPx = cam.vanishingPointOf(Vec3::Unit(k));
     v.directionCamera = tr.d[k];
     const double xyn = std::hypot(v.homogeneousPx.x(), v.homogeneousPx.y());
     v.atInfinity = std::abs(v.homogeneousPx.z()) * 1000 * diag < xyn;
-    v.segmentCount = count[k];
-    v.supportLengthPx = length[k];
-    v.rmsResidualPx = count[k] ? std::sqrt(sumR2[k] / count[k]) : 0;
+    v.segmentCount = f.count[k];
+    v.supportLengthPx = f.length[k];
+    v.rmsResidualPx = f.count[k] ? std::sqrt(f.sumR2[k] / f.count[k]) : 0;
     v.angularSigmaDeg = u.angularSigmaRad[k] / kDeg;
-    v.nearlyParallel = count[k] >= 2 && (angMax[k] - angMin[k]) < 2.0 * kDeg;
+    v.nearlyParallel = f.count[k] >= 2 && (f.angMax[k] - f.angMin[k]) < 2.0 * kDeg;
     e.vanishingPointsPx[k] = scenePixel(v.homogeneousPx, cam.principalPx);
   }
-  // Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points tried)
-  // x P(at least `tight` of `detected` segments fit by accident), binomial with the mean chance.
-  // A Manhattan frame is found strongest family first: its point is one of the segment pairs'
-  // (times the focal rungs); the second lies on the great circle orthogonal to the first (one
-  // per segment and rung); the third is then fixed (one per rung).
-  const double p = detected > 0 ? chanceSum / detected : 0.01;
-  const double n = std::max(1, detected);
+}
+
+// Support beyond chance: -log10 of the number of false alarms, NFA = (vanishing points tried)
+// x P(at least `tight` of `detected` segments fit by accident), binomial with the mean chance.
+// A Manhattan frame is found strongest family first: its point is one of the segment pairs'
+// (times the focal rungs); the second lies on the great circle orthogonal to the first (one
+// per segment and rung); the third is then fixed (one per rung). Each point's confidence is
+// that significance times the precision of its direction; zScore (out) is the significance.
+void setConfidences(CameraEstimate& e, const FamilyTally& f, std::array<double, 3>& zScore) {
+  const double p = f.detected > 0 ? f.chanceSum / f.detected : 0.01;
+  const double n = std::max(1, f.detected);
   const double firstTests = 0.5 * n * std::max(1.0, n - 1) * 15.0;
   std::array<double, 3> raw{};
-  for (int k = 0; k < 3; ++k) raw[k] = -log10BinomialTail(detected, tight[k], p);
+  for (int k = 0; k < 3; ++k) raw[k] = -log10BinomialTail(f.detected, f.tight[k], p);
   std::array<int, 3> rank{0, 1, 2};
   std::sort(rank.begin(), rank.end(), [&](int a, int b) { return raw[a] > raw[b]; });
   const double tests[3] = {firstTests, n * 15.0, 15.0};
   for (int order = 0; order < 3; ++order) {
     const int k = rank[order];
-    const double z = userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[order]);
+    const double z = f.userCount[k] > 0 ? 100.0 : raw[k] - std::log10(tests[order]);
     zScore[k] = z;
     // Calibrated on noise and random-line photos (best family up to 6.5) and real rooms (50-110
     // for a wall's or floor's lines, 2-20 for a sparse second or third family).
@@ -668,6 +683,19 @@ void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
   std::array<double, 3> sorted = e.confidence;
   std::sort(sorted.begin(), sorted.end());
   e.overallConfidence = sorted[1];
+}
+
+// Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
+// families and residuals, confidences, focal interval. zScore (out): per axis the family's
+// meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
+void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
+            const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
+            bool lockedFocal, std::array<double, 3>& zScore) {
+  e.camera = cameraOf(c, tr, o.cameraHeightM);
+  const FamilyTally f = tallyFamilies(c, tr, as);
+  describeVanishingPoints(e, e.camera, tr, f, u);
+  setConfidences(e, f, zScore);
+  const Camera& cam = e.camera;
   const double fs = lockedFocal ? 0.0 : u.logPhiSigma;
   e.focalMinPx = cam.focalPx * std::exp(-2 * fs);
   e.focalMaxPx = cam.focalPx * std::exp(2 * fs);
@@ -796,6 +824,68 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   }
 }
 
+// The best refined triplet of the search's best few rungs' winners (by refined score).
+struct RefinedBest {
+  bool have = false;
+  double score = -1e300;
+  Triplet triplet;
+  Assignment as;
+};
+
+// Refine the best few rungs' winners; keep the best refined score. Nothing when cancelled.
+std::optional<RefinedBest> refineCandidates(const Core& c, const SearchOutput& so,
+                                            const RefineSettings& rs, const Prior& prior,
+                                            const CancelToken* cancel) {
+  RefinedBest best;
+  for (size_t i = 0; i < std::min<size_t>(3, so.candidates.size()); ++i) {
+    Assignment as;
+    const Triplet tr = refine(c.segs, so.candidates[i].second, rs, 3, &as);
+    const double sc = dataScore(c.segs, tr) - prior.penalty(tr.phi);
+    if (sc > best.score) {
+      best.score = sc;
+      best.triplet = tr;
+      best.as = as;
+      best.have = true;
+    }
+    if (cancel && cancel->shouldStop()) return std::nullopt;
+  }
+  return best;
+}
+
+// The estimate from the best refined triplet, its axes in world order. Manhattan: one family
+// far beyond chance (random lines reach z of about 11), a second one present (the third follows
+// from orthogonality); else the fallback camera, tilted to the vertical lines when they are.
+void estimateFromBest(CameraEstimate& e, Core& c, const RefinedBest& best, const RefineSettings& rs,
+                      const Prior& prior, const EstimateOptions& o, Clock::time_point ts) {
+  const auto order = axisOrder(best.triplet);
+  Triplet w = ordered(best.triplet, order);
+  Assignment as = best.as;
+  for (int& f : as.family)
+    if (f >= 0) f = int(std::find(order.begin(), order.end(), f) - order.begin());
+  const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
+  std::array<double, 3> z{};
+  finish(e, c, w, as, u, rs, o, false, z);
+  e.timings.refineMs = msSince(ts);
+  std::array<double, 3> zs = z;
+  std::sort(zs.begin(), zs.end());
+  e.manhattan = zs[2] >= kStrongZ && zs[1] >= kPresentZ;
+  if (!e.manhattan) {
+    const bool vertical = z[1] >= kStrongZ;
+    const Vec3 up = w.d[1];
+    const double upConf = e.confidence[1];
+    fallbackCamera(e, c, prior, o, vertical ? std::optional<Vec3>(up) : std::nullopt, upConf);
+    return;
+  }
+  addVpWarnings(e);
+  if (e.focalFromPrior)
+    e.warnings.push_back(
+        std::string("the focal length is not determined by the lines (vanishing points at "
+                    "infinity); it comes from ") +
+        (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view"));
+}
+
+// Segments -> vanishing-point search over focal rungs -> refinement of the best -> the estimate
+// (or the fallback camera) -> the back wall.
 Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::time_point t0,
                                       CameraEstimate e) {
   const double workPx = 1.0 / std::max(1e-9, c.workingScale);  // one working pixel, in photo px
@@ -818,54 +908,12 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
   rs.prior = prior;
   rs.principalSigma = o.principalPx ? 0.0 : std::max(0.0, o.principalSigma);
   rs.cancel = o.cancel;
-  bool have = false;
-  double bestScore = -1e300;
-  Triplet best;
-  Assignment bestAs;
-  // Refine the best few rungs' winners; keep the best refined score.
-  for (size_t i = 0; i < std::min<size_t>(3, so.candidates.size()); ++i) {
-    Assignment as;
-    const Triplet tr = refine(c.segs, so.candidates[i].second, rs, 3, &as);
-    const double sc = dataScore(c.segs, tr) - prior.penalty(tr.phi);
-    if (sc > bestScore) {
-      bestScore = sc;
-      best = tr;
-      bestAs = as;
-      have = true;
-    }
-    if (cancelled()) return Error{"", "estimate", "cancelled"};
-  }
-  if (!so.progress.empty() && have)
-    e.progress.push_back({msSince(t0) / 1000.0, bestScore});
-
-  if (have) {
-    const auto order = axisOrder(best);
-    Triplet w = ordered(best, order);
-    Assignment as = bestAs;
-    for (int& f : as.family)
-      if (f >= 0) f = int(std::find(order.begin(), order.end(), f) - order.begin());
-    const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
-    std::array<double, 3> z{};
-    finish(e, c, w, as, u, rs, o, false, z);
-    e.timings.refineMs = msSince(ts);
-    // Manhattan: one family far beyond chance (random lines reach z of about 11), a second one
-    // present (the third follows from orthogonality).
-    std::array<double, 3> zs = z;
-    std::sort(zs.begin(), zs.end());
-    e.manhattan = zs[2] >= kStrongZ && zs[1] >= kPresentZ;
-    if (!e.manhattan) {
-      const bool vertical = z[1] >= kStrongZ;
-      const Vec3 up = w.d[1];
-      const double upConf = e.confidence[1];
-      fallbackCamera(e, c, prior, o, vertical ? std::optional<Vec3>(up) : std::nullopt, upConf);
-    } else {
-      addVpWarnings(e);
-      if (e.focalFromPrior)
-        e.warnings.push_back(
-            std::string("the focal length is not determined by the lines (vanishing points at "
-                        "infinity); it comes from ") +
-            (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view"));
-    }
+  const auto best = refineCandidates(c, so, rs, prior, o.cancel);
+  if (!best) return Error{"", "estimate", "cancelled"};
+  if (!so.progress.empty() && best->have)
+    e.progress.push_back({msSince(t0) / 1000.0, best->score});
+  if (best->have) {
+    estimateFromBest(e, c, *best, rs, prior, o, ts);
   } else {
     for (auto& s : c.segments) s.family = -1;
     e.segments = c.segments;
@@ -894,6 +942,225 @@ Core makeCore(int W, int H, const std::optional<Vec2>& principalPx = std::nullop
   c.frame.s = 0.5 * std::max(W, H);
   return c;
 }
+
+// ---------------------------------------------------------------------------------------------
+// The correction (correctEstimate): check what the user fixed, add the user's lines to the
+// previous estimate's segments, start from the previous camera turned toward the user's
+// vanishing points, refit, then search the back wall again.
+
+// Two user lines of one axis: finite, at least 2 pixels long, not the same line.
+Status checkVanishingLines(const std::array<Vec2, 4>& p, int axis) {
+  const std::string key = std::string("correction.vanishing_lines_px[") + kAxisName[axis] + "]";
+  for (const Vec2& q : p)
+    if (!q.allFinite()) return Error{"", key, "is not a finite number"};
+  if ((p[1] - p[0]).norm() < 2 || (p[3] - p[2]).norm() < 2)
+    return Error{"", key, "a line is shorter than 2 pixels"};
+  const Vec3 l0 = Vec3(p[0].x(), p[0].y(), 1).cross(Vec3(p[1].x(), p[1].y(), 1));
+  const double dist0 = std::abs(l0.dot(Vec3(p[2].x(), p[2].y(), 1))) / l0.head<2>().norm();
+  const double dist1 = std::abs(l0.dot(Vec3(p[3].x(), p[3].y(), 1))) / l0.head<2>().norm();
+  if (dist0 < 1 && dist1 < 1) return Error{"", key, "the two lines are the same line"};
+  return Status::Ok();
+}
+
+// The correction's input errors (correctEstimate's header lists them), in the order of its keys.
+Status checkCorrection(const Camera& pc, const EstimateCorrection& corr) {
+  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() ||
+      !(pc.focalPx > 0))
+    return Error{"", "correction.previous", "is not an estimate of a photo"};
+  if (corr.lockedFocalPx && !(std::isfinite(*corr.lockedFocalPx) && *corr.lockedFocalPx > 0))
+    return Error{"", "correction.focal_px", "must be a positive finite number"};
+  for (int k = 0; k < 3; ++k)
+    if (corr.vanishingLinesPx[k])
+      if (Status s = checkVanishingLines(*corr.vanishingLinesPx[k], k); !s) return s;
+  if (corr.fixedCamera) {
+    const Camera& f = *corr.fixedCamera;
+    const Mat3& r = f.worldFromCamera;
+    if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
+      return Error{"", "correction.camera", "is for a photo of another size"};
+    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
+        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
+        std::abs(r.determinant() - 1) > 1e-6)
+      return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
+  }
+  for (int i = 0; i < 4; ++i)
+    if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
+      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
+                   "is not a finite number"};
+  return Status::Ok();
+}
+
+// The user's lines as segments of their family: explicit vanishing lines, and back-wall edges
+// with both corners placed.
+void addUserLines(Core& c, const EstimateCorrection& corr) {
+  for (int k = 0; k < 3; ++k)
+    if (corr.vanishingLinesPx[k]) {
+      const auto& p = *corr.vanishingLinesPx[k];
+      for (int j = 0; j < 2; ++j) {
+        LineSegment s;
+        s.aPx = p[2 * j];
+        s.bPx = p[2 * j + 1];
+        s.family = k;
+        s.userGiven = true;
+        c.segments.push_back(s);
+      }
+    }
+  const auto& bc = corr.backWallCornersPx;
+  const int edgeFamily[4] = {0, 1, 0, 1};  // TL-TR top (x), TR-BR right (y), BR-BL, BL-TL
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    if (bc[i] && bc[j] && (*bc[j] - *bc[i]).norm() >= 2) {
+      LineSegment s;
+      s.aPx = *bc[i];
+      s.bPx = *bc[j];
+      s.family = edgeFamily[i];
+      s.userGiven = true;
+      c.segments.push_back(s);
+    }
+  }
+}
+
+// The previous estimate's detected segments and the user's lines, about the principal point
+// that is held: a fixed camera's, else the previous estimate's. It is the normalisation origin
+// (vanishing points assume it).
+Core correctionCore(const CameraEstimate& previous, const EstimateCorrection& corr) {
+  const Camera& pc = previous.camera;
+  Core c = makeCore(pc.widthPx, pc.heightPx);
+  c.frame.centre = corr.fixedCamera ? corr.fixedCamera->principalPx : pc.principalPx;
+  c.workingScale = previous.workingScale;
+  for (const auto& s : previous.segments)
+    if (!s.userGiven) c.segments.push_back(s);
+  addUserLines(c, corr);
+  return c;
+}
+
+// The focal length's prior: the caller's, else the previous estimate's held loosely.
+Prior correctionPrior(const Core& c, const EstimateOptions& o, double previousFocalPx) {
+  double totalW = 0;
+  for (const Seg& g : c.segs) totalW += g.fixedFamily >= 0 ? 0 : g.weight;
+  EstimateOptions po = o;
+  if (!po.priorFocalPx) po.priorFocalPx = previousFocalPx;
+  Prior prior = makePrior(c, po, totalW);
+  if (!o.priorFocalPx) prior.sigma = o.priorLogSigmaDefault;
+  return prior;
+}
+
+// Per axis, the user's vanishing point (normalised homogeneous) where two user lines give one.
+std::array<std::optional<Vec3>, 3> userVanishingPoints(const Core& c) {
+  std::array<std::optional<Vec3>, 3> userH;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<const Seg*> lines;
+    for (const Seg& g : c.segs)
+      if (g.fixedFamily == k) lines.push_back(&g);
+    if (lines.size() < 2) continue;
+    const auto lineOf = [](const Seg* g) {
+      return Vec3(g->a.x(), g->a.y(), 1).cross(Vec3(g->b.x(), g->b.y(), 1));
+    };
+    const Vec3 h = lineOf(lines[0]).cross(lineOf(lines[1]));
+    if (h.norm() > 1e-12) userH[k] = h.normalized();
+  }
+  return userH;
+}
+
+// The refinement's start: the previous rotation, turned (least squares) toward the user's
+// vanishing points; the focal length locked, or from two finite user points' orthogonality, or
+// the previous one.
+Triplet correctionStart(const Core& c, const EstimateCorrection& corr, const Camera& pc) {
+  Triplet start;
+  start.phi = (corr.lockedFocalPx ? *corr.lockedFocalPx : pc.focalPx) / c.frame.s;
+  const std::array<std::optional<Vec3>, 3> userH = userVanishingPoints(c);
+  if (!corr.lockedFocalPx) {
+    for (int a = 0; a < 3; ++a)
+      for (int b = a + 1; b < 3; ++b)
+        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 &&
+            std::abs(userH[b]->z()) > 1e-3) {
+          const Vec3& p = *userH[a];
+          const Vec3& q = *userH[b];
+          const double f2 = -(p.x() * q.x() + p.y() * q.y()) / (p.z() * q.z());
+          if (f2 > 0.05 * 0.05 && f2 < 200 * 200) start.phi = std::sqrt(f2);
+        }
+  }
+  Mat3 target = Mat3::Zero();
+  const Mat3 cw0 = pc.cameraFromWorld();
+  for (int k = 0; k < 3; ++k) {
+    Vec3 d = cw0.col(k);
+    double w = 1;
+    if (userH[k]) {
+      // Camera direction of the user's VP, signed like the previous one.
+      const Vec3& h = *userH[k];
+      Vec3 u(h.x() / start.phi, -h.y() / start.phi, -h.z());
+      u.normalize();
+      if (u.dot(d) < 0) u = -u;
+      d = u;
+      w = 100;
+    }
+    target += w * d * Vec3::Unit(k).transpose();
+  }
+  Eigen::JacobiSVD<Mat3> svd(target, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 r = svd.matrixU() * svd.matrixV().transpose();
+  if (r.determinant() < 0) {
+    Mat3 u = svd.matrixU();
+    u.col(2) = -u.col(2);
+    r = u * svd.matrixV().transpose();
+  }
+  for (int k = 0; k < 3; ++k) start.d[k] = r.col(k);
+  return start;
+}
+
+// The corrected triplet: a fixed camera kept as given (the segments only re-assigned to its
+// vanishing points, its focal length locked in rs), else refined from the start.
+Triplet fitCorrection(const Core& c, const EstimateCorrection& corr, const Triplet& start,
+                      RefineSettings& rs, Assignment& as) {
+  if (!corr.fixedCamera) return refine(c.segs, start, rs, 3, &as);
+  Triplet tr;
+  for (int k = 0; k < 3; ++k) tr.d[k] = corr.fixedCamera->cameraFromWorld().col(k);
+  tr.phi = corr.fixedCamera->focalPx / c.frame.s;
+  rs.lockPhi = true;
+  as = assign(c.segs, tr);
+  return tr;
+}
+
+// What the user fixed stays as fixed: the principal point held where the previous estimate put
+// it (or the fixed camera's, exact), a fixed camera exactly; Manhattan once the photo or the
+// user showed it.
+void keepWhatWasFixed(CameraEstimate& e, const CameraEstimate& previous,
+                      const EstimateCorrection& corr, std::array<double, 3> z) {
+  e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
+  e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
+  if (corr.fixedCamera) {
+    e.camera = *corr.fixedCamera;
+    for (int k = 0; k < 3; ++k) {
+      e.vanishingPoints[k].homogeneousPx = e.camera.vanishingPointOf(Vec3::Unit(k));
+      e.vanishingPointsPx[k] = scenePixel(e.vanishingPoints[k].homogeneousPx, e.camera.principalPx);
+    }
+  }
+  std::sort(z.begin(), z.end());
+  e.manhattan = previous.manhattan || corr.fixedCamera || (z[2] >= kStrongZ && z[1] >= kPresentZ);
+}
+
+// The back wall again for the corrected camera. A small change of camera (a dragged corner, a
+// nudged line) searches it locally from where it was, so it does not jump; a large one (or a
+// camera the user typed) globally. Placed corners must make a room.
+Status relayoutCorrected(CameraEstimate& e, const CameraEstimate& previous,
+                         const EstimateCorrection& corr, const EstimateOptions& o) {
+  const Camera& pc = previous.camera;
+  const auto ts = Clock::now();
+  const double turnDeg =
+      std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
+                           -1.0, 1.0)) / kDeg;
+  const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
+                         std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
+  runLayout(e, o, corr.backWallCornersPx,
+            bigChange ? std::nullopt : std::optional<std::array<Vec2, 4>>(previous.backWallPx));
+  e.timings.layoutMs = msSince(ts);
+  bool anyFixed = false;
+  for (const auto& f : corr.backWallCornersPx) anyFixed |= f.has_value();
+  if (anyFixed) {
+    const auto room = roomFromBackWall(e.camera, e.backWallPx);
+    if (!room.ok()) return room.error().underKey("correction");
+  }
+  return Status::Ok();
+}
+
 
 }  // namespace
 
@@ -945,153 +1212,25 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
                                          const EstimateOptions& o) {
   const auto t0 = Clock::now();
   const Camera& pc = previous.camera;
-  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() ||
-      !(pc.focalPx > 0))
-    return Error{"", "correction.previous", "is not an estimate of a photo"};
-  if (corr.lockedFocalPx && !(std::isfinite(*corr.lockedFocalPx) && *corr.lockedFocalPx > 0))
-    return Error{"", "correction.focal_px", "must be a positive finite number"};
-  for (int k = 0; k < 3; ++k)
-    if (corr.vanishingLinesPx[k]) {
-      const auto& p = *corr.vanishingLinesPx[k];
-      const std::string key = std::string("correction.vanishing_lines_px[") + kAxisName[k] + "]";
-      for (const Vec2& q : p)
-        if (!q.allFinite()) return Error{"", key, "is not a finite number"};
-      if ((p[1] - p[0]).norm() < 2 || (p[3] - p[2]).norm() < 2)
-        return Error{"", key, "a line is shorter than 2 pixels"};
-      const Vec3 l0 = Vec3(p[0].x(), p[0].y(), 1).cross(Vec3(p[1].x(), p[1].y(), 1));
-      const double dist0 = std::abs(l0.dot(Vec3(p[2].x(), p[2].y(), 1))) / l0.head<2>().norm();
-      const double dist1 = std::abs(l0.dot(Vec3(p[3].x(), p[3].y(), 1))) / l0.head<2>().norm();
-      if (dist0 < 1 && dist1 < 1) return Error{"", key, "the two lines are the same line"};
-    }
-  if (corr.fixedCamera) {
-    const Camera& f = *corr.fixedCamera;
-    const Mat3& r = f.worldFromCamera;
-    if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
-      return Error{"", "correction.camera", "is for a photo of another size"};
-    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
-        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
-        std::abs(r.determinant() - 1) > 1e-6)
-      return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
-  }
-  for (int i = 0; i < 4; ++i)
-    if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
-      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
-                   "is not a finite number"};
+  if (Status s = checkCorrection(pc, corr); !s) return s.error();
 
   CameraEstimate e;
   e.workingScale = previous.workingScale;
   e.photoEdges = previous.photoEdges;
-  Core c = makeCore(pc.widthPx, pc.heightPx);
-  // The principal point is held: a fixed camera's, else the previous estimate's. It is the
-  // normalisation origin (vanishing points assume it).
-  c.frame.centre = corr.fixedCamera ? corr.fixedCamera->principalPx : pc.principalPx;
-  c.workingScale = previous.workingScale;
-  for (const auto& s : previous.segments)
-    if (!s.userGiven) c.segments.push_back(s);
-  // User lines: explicit vanishing lines, and back-wall edges with both corners placed.
-  for (int k = 0; k < 3; ++k)
-    if (corr.vanishingLinesPx[k]) {
-      const auto& p = *corr.vanishingLinesPx[k];
-      for (int j = 0; j < 2; ++j) {
-        LineSegment s;
-        s.aPx = p[2 * j];
-        s.bPx = p[2 * j + 1];
-        s.family = k;
-        s.userGiven = true;
-        c.segments.push_back(s);
-      }
-    }
-  const auto& bc = corr.backWallCornersPx;
-  const int edgeFamily[4] = {0, 1, 0, 1};  // TL-TR top (x), TR-BR right (y), BR-BL, BL-TL
-  for (int i = 0; i < 4; ++i) {
-    const int j = (i + 1) % 4;
-    if (bc[i] && bc[j] && (*bc[j] - *bc[i]).norm() >= 2) {
-      LineSegment s;
-      s.aPx = *bc[i];
-      s.bPx = *bc[j];
-      s.family = edgeFamily[i];
-      s.userGiven = true;
-      c.segments.push_back(s);
-    }
-  }
+  Core c = correctionCore(previous, corr);
   const double workPx = 1.0 / std::max(1e-9, c.workingScale);
   buildSegs(c, o, workPx);
-  double totalW = 0;
-  for (const Seg& g : c.segs) totalW += g.fixedFamily >= 0 ? 0 : g.weight;
-  EstimateOptions po = o;
-  if (!po.priorFocalPx) po.priorFocalPx = pc.focalPx;  // the previous estimate, held loosely
-  Prior prior = makePrior(c, po, totalW);
-  if (!o.priorFocalPx) prior.sigma = o.priorLogSigmaDefault;
-
-  // Start: the previous rotation, turned (least squares) toward the user's vanishing points.
-  Triplet start;
-  start.phi = (corr.lockedFocalPx ? *corr.lockedFocalPx : pc.focalPx) / c.frame.s;
-  std::array<std::optional<Vec3>, 3> userH;  // normalised homogeneous user VPs
-  for (int k = 0; k < 3; ++k) {
-    std::vector<const Seg*> lines;
-    for (const Seg& g : c.segs)
-      if (g.fixedFamily == k) lines.push_back(&g);
-    if (lines.size() < 2) continue;
-    const auto lineOf = [](const Seg* g) {
-      return Vec3(g->a.x(), g->a.y(), 1).cross(Vec3(g->b.x(), g->b.y(), 1));
-    };
-    const Vec3 h = lineOf(lines[0]).cross(lineOf(lines[1]));
-    if (h.norm() > 1e-12) userH[k] = h.normalized();
-  }
-  if (!corr.lockedFocalPx) {
-    // Two user vanishing points, both finite: the focal length from their orthogonality.
-    for (int a = 0; a < 3; ++a)
-      for (int b = a + 1; b < 3; ++b)
-        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 &&
-            std::abs(userH[b]->z()) > 1e-3) {
-          const Vec3& p = *userH[a];
-          const Vec3& q = *userH[b];
-          const double f2 = -(p.x() * q.x() + p.y() * q.y()) / (p.z() * q.z());
-          if (f2 > 0.05 * 0.05 && f2 < 200 * 200) start.phi = std::sqrt(f2);
-        }
-  }
-  Mat3 target = Mat3::Zero();
-  const Mat3 cw0 = pc.cameraFromWorld();
-  for (int k = 0; k < 3; ++k) {
-    Vec3 d = cw0.col(k);
-    double w = 1;
-    if (userH[k]) {
-      // Camera direction of the user's VP, signed like the previous one.
-      const Vec3& h = *userH[k];
-      Vec3 u(h.x() / start.phi, -h.y() / start.phi, -h.z());
-      u.normalize();
-      if (u.dot(d) < 0) u = -u;
-      d = u;
-      w = 100;
-    }
-    target += w * d * Vec3::Unit(k).transpose();
-  }
-  Eigen::JacobiSVD<Mat3> svd(target, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Mat3 r = svd.matrixU() * svd.matrixV().transpose();
-  if (r.determinant() < 0) {
-    Mat3 u = svd.matrixU();
-    u.col(2) = -u.col(2);
-    r = u * svd.matrixV().transpose();
-  }
-  for (int k = 0; k < 3; ++k) start.d[k] = r.col(k);
+  const Prior prior = correctionPrior(c, o, pc.focalPx);
+  const Triplet start = correctionStart(c, corr, pc);
 
   RefineSettings rs;
   rs.pixelSigma = workPx;
   rs.prior = prior;
   rs.lockPhi = corr.lockedFocalPx.has_value();
   rs.cancel = o.cancel;
-  auto ts = Clock::now();
+  const auto ts = Clock::now();
   Assignment as;
-  Triplet tr;
-  if (corr.fixedCamera) {
-    // Kept as given: the segments are only re-assigned to its vanishing points.
-    for (int k = 0; k < 3; ++k) tr.d[k] = corr.fixedCamera->cameraFromWorld().col(k);
-    tr.phi = corr.fixedCamera->focalPx / c.frame.s;
-    rs.lockPhi = true;
-    as = assign(c.segs, tr);
-  } else {
-    tr = refine(c.segs, start, rs, 3, &as);
-  }
+  Triplet tr = fitCorrection(c, corr, start, rs, as);
   if (o.cancel && o.cancel->shouldStop()) return Error{"", "estimate", "cancelled"};
   if (rs.lockPhi && !corr.fixedCamera) tr.phi = *corr.lockedFocalPx / c.frame.s;
   // Keep the world-axis meaning the user worked with; only re-apply the sign rules.
@@ -1099,38 +1238,11 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
   const Uncertainty u = uncertaintyOf(c.segs, as, w, rs);
   std::array<double, 3> z{};
   finish(e, c, w, as, u, rs, o, rs.lockPhi, z);
-  // Held where the previous estimate put it (or the fixed camera's, exact).
-  e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
-  e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
-  if (corr.fixedCamera) {
-    e.camera = *corr.fixedCamera;
-    for (int k = 0; k < 3; ++k) {
-      e.vanishingPoints[k].homogeneousPx = e.camera.vanishingPointOf(Vec3::Unit(k));
-      e.vanishingPointsPx[k] = scenePixel(e.vanishingPoints[k].homogeneousPx, e.camera.principalPx);
-    }
-  }
-  std::sort(z.begin(), z.end());
-  e.manhattan = previous.manhattan || corr.fixedCamera || (z[2] >= kStrongZ && z[1] >= kPresentZ);
+  keepWhatWasFixed(e, previous, corr, z);
   addVpWarnings(e);
   e.timings.refineMs = msSince(ts);
 
-  ts = Clock::now();
-  // A small change of camera (a dragged corner, a nudged line) searches the back wall locally
-  // from where it was, so it does not jump; a large one (or a camera the user typed) globally.
-  const double turnDeg =
-      std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
-                           -1.0, 1.0)) / kDeg;
-  const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
-                         std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
-  runLayout(e, o, corr.backWallCornersPx,
-            bigChange ? std::nullopt : std::optional<std::array<Vec2, 4>>(previous.backWallPx));
-  e.timings.layoutMs = msSince(ts);
-  bool anyFixed = false;
-  for (const auto& f : bc) anyFixed |= f.has_value();
-  if (anyFixed) {
-    const auto room = roomFromBackWall(e.camera, e.backWallPx);
-    if (!room.ok()) return room.error().underKey("correction");
-  }
+  if (Status s = relayoutCorrected(e, previous, corr, o); !s) return s.error();
   indexSupporters(e);
   e.timings.totalMs = msSince(t0);
   return e;

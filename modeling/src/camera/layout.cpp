@@ -730,6 +730,103 @@ std::string metresText(const BoxSize& b) {
   return out;
 }
 
+// The four lines' parameters to start from: the default box's, and those that placed corners
+// fix (two corners on one line: the mean parameter).
+struct LineParams {
+  std::array<double, 4> t{};
+  std::array<bool, 4> isFixed{};
+  bool anyFixed = false;  // some corner was placed
+};
+
+LineParams fixedLineParams(const LayoutSearch& search, const LayoutInput& in) {
+  std::array<double, 4> fixedSum{0, 0, 0, 0};
+  std::array<int, 4> fixedCount{0, 0, 0, 0};
+  LineParams lp;
+  for (int c = 0; c < 4; ++c) {
+    if (!in.fixedCornersPx[c]) continue;
+    lp.anyFixed = true;
+    for (int line : kCornerLines[c]) {
+      const double t = search.paramOfCorner(line, *in.fixedCornersPx[c]);
+      if (!std::isfinite(t)) continue;
+      fixedSum[line] += t;
+      ++fixedCount[line];
+    }
+  }
+  lp.t = search.defaults();
+  for (int i = 0; i < 4; ++i)
+    if (fixedCount[i] > 0) {
+      lp.isFixed[i] = true;
+      lp.t[i] = fixedSum[i] / fixedCount[i];
+    }
+  return lp;
+}
+
+// A correction's one start: each free line through the previous quad's corners. Each line
+// passes through two of them: the first that gives a finite parameter.
+std::array<double, 4> startFromPrevious(const LayoutSearch& search, const LayoutInput& in,
+                                        const LineParams& lp) {
+  std::array<double, 4> s = lp.t;
+  for (int i = 0; i < 4; ++i) {
+    if (lp.isFixed[i]) continue;
+    for (int c = 0; c < 4; ++c)
+      if (kCornerLines[c][0] == i || kCornerLines[c][1] == i) {
+        const double v = search.paramOfCorner(i, (*in.startCornersPx)[c]);
+        if (std::isfinite(v)) {
+          s[i] = std::clamp(v, search.lo()[i], search.hi()[i]);
+          break;
+        }
+      }
+  }
+  return s;
+}
+
+using BestBox = std::pair<LayoutSearch::Score, std::array<double, 4>>;
+
+// The automatic box only: an implausible best box gives way to the best plausible one (the
+// search again, refusing implausible boxes; a ceiling the photo shows stays, the floor crease
+// must come down to a plausible one), else to the ordinary room. out.refused says which.
+// Returns true when `out` is final (the ordinary room).
+bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LineParams& lp,
+                           BestBox& best, LayoutResult& out) {
+  const Implausible why = search.implausible(best.second, best.first);
+  if (!why) return false;
+  const Camera& cam = *in.camera;
+  std::array<Vec2, 4> refusedCorners;
+  search.corners(best.second, refusedCorners);
+  const BoxSize refused = boxSizeOf(cam, refusedCorners);
+  const bool holdTop = why.rule == Implausible::kCeiling;
+  if (holdTop) {
+    lp.isFixed[0] = true;
+    lp.t[0] = best.second[0];
+  }
+  search.setRefuseImplausible(holdTop);
+  auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, lp.t, lp.isFixed), lp.isFixed);
+  std::array<Vec2, 4> c2;
+  const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
+  out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
+                "; " + (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                              : std::string("an ordinary room is assumed")) +
+                ": check the box";
+  if (found) {
+    best = {best2, bestT2};
+    return false;
+  }
+  std::array<Vec2, 4> c0;
+  if (search.corners(lp.t, c0)) out.cornersPx = c0;
+  out.ok = true;
+  out.score01 = 0;
+  return true;
+}
+
+// The share of the box the photo supports: its visible edges' support and its faces' agreement
+// with the line orientation.
+double supportedShare(const LayoutSearch::Score& best) {
+  const double edgeFrac = best.edgeVisible > 0 ? best.edgeSupported / best.edgeVisible : 0;
+  const double regionFrac =
+      best.regionTotal > 0 ? 0.5 * (1 + best.regionSigned / best.regionTotal) : 0;
+  return std::clamp(0.6 * edgeFrac + 0.4 * regionFrac, 0.0, 1.0);
+}
+
 }  // namespace
 
 BoxSize boxSizeOf(const Camera& cam, const std::array<Vec2, 4>& c) {
@@ -809,85 +906,17 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   LayoutSearch search(in);
   if (!search.setUp(out.problem)) return out;
 
-  // Two corners on one line: the mean parameter.
-  std::array<double, 4> fixedSum{0, 0, 0, 0};
-  std::array<int, 4> fixedCount{0, 0, 0, 0};
-  bool anyFixed = false;
-  for (int c = 0; c < 4; ++c) {
-    if (!in.fixedCornersPx[c]) continue;
-    anyFixed = true;
-    for (int line : kCornerLines[c]) {
-      const double t = search.paramOfCorner(line, *in.fixedCornersPx[c]);
-      if (!std::isfinite(t)) continue;
-      fixedSum[line] += t;
-      ++fixedCount[line];
-    }
-  }
-  std::array<bool, 4> isFixed{};
-  std::array<double, 4> t = search.defaults();
-  for (int i = 0; i < 4; ++i)
-    if (fixedCount[i] > 0) {
-      isFixed[i] = true;
-      t[i] = fixedSum[i] / fixedCount[i];
-    }
+  LineParams lp = fixedLineParams(search, in);
+  const std::vector<std::array<double, 4>> starts =
+      in.startCornersPx ? std::vector<std::array<double, 4>>{startFromPrevious(search, in, lp)}
+                        : globalStarts(search, in, lp.t, lp.isFixed);
+  BestBox best = ascend(search, in, starts, lp.isFixed);
+  if (in.refuseImplausible && !lp.anyFixed && !in.startCornersPx && best.first.total > -1e299 &&
+      replaceImplausibleBox(search, in, lp, best, out))
+    return out;
 
-  std::vector<std::array<double, 4>> starts;
-  if (in.startCornersPx) {
-    std::array<double, 4> s = t;
-    for (int i = 0; i < 4; ++i) {
-      if (isFixed[i]) continue;
-      // Each line passes through two corners of the previous quad: take the first that gives
-      // a finite parameter.
-      for (int c = 0; c < 4; ++c)
-        if (kCornerLines[c][0] == i || kCornerLines[c][1] == i) {
-          const double v = search.paramOfCorner(i, (*in.startCornersPx)[c]);
-          if (std::isfinite(v)) {
-            s[i] = std::clamp(v, search.lo()[i], search.hi()[i]);
-            break;
-          }
-        }
-    }
-    starts.push_back(s);
-  } else {
-    starts = globalStarts(search, in, t, isFixed);
-  }
-  auto [best, bestT] = ascend(search, in, starts, isFixed);
-
-  // The automatic box only: an implausible best box gives way to the best plausible one (the
-  // search again, refusing implausible boxes), else to the ordinary room.
-  if (in.refuseImplausible && !anyFixed && !in.startCornersPx && best.total > -1e299) {
-    const Implausible why = search.implausible(bestT, best);
-    if (why) {
-      std::array<Vec2, 4> refusedCorners;
-      search.corners(bestT, refusedCorners);
-      const BoxSize refused = boxSizeOf(cam, refusedCorners);
-      // A ceiling the photo shows stays; the floor crease must come down to a plausible one.
-      const bool holdTop = why.rule == Implausible::kCeiling;
-      if (holdTop) {
-        isFixed[0] = true;
-        t[0] = bestT[0];
-      }
-      search.setRefuseImplausible(holdTop);
-      auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, t, isFixed), isFixed);
-      std::array<Vec2, 4> c2;
-      const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
-      out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
-                    "; " + (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
-                                  : std::string("an ordinary room is assumed")) +
-                    ": check the box";
-      best = found ? best2 : LayoutSearch::Score{};
-      bestT = found ? bestT2 : t;
-      if (!found) {
-        std::array<Vec2, 4> c0;
-        if (search.corners(t, c0)) out.cornersPx = c0;
-        out.ok = true;
-        out.score01 = 0;
-        return out;
-      }
-    }
-  }
   std::array<Vec2, 4> c;
-  if (!(best.total > -1e299) || !search.corners(bestT, c)) {
+  if (!(best.first.total > -1e299) || !search.corners(best.second, c)) {
     out.problem = "no back wall hypothesis fits the vanishing points";
     return out;
   }
@@ -895,10 +924,7 @@ LayoutResult estimateLayout(const LayoutInput& in) {
     if (in.fixedCornersPx[i]) c[i] = *in.fixedCornersPx[i];
   out.cornersPx = c;
   out.ok = true;
-  const double edgeFrac = best.edgeVisible > 0 ? best.edgeSupported / best.edgeVisible : 0;
-  const double regionFrac =
-      best.regionTotal > 0 ? 0.5 * (1 + best.regionSigned / best.regionTotal) : 0;
-  out.score01 = std::clamp(0.6 * edgeFrac + 0.4 * regionFrac, 0.0, 1.0);
+  out.score01 = supportedShare(best.first);
   return out;
 }
 

@@ -38,56 +38,79 @@ bool finiteStrokes(const std::vector<std::vector<Vec2>>& strokes) {
   return true;
 }
 
-}  // namespace
+using Strokes = std::vector<std::vector<Vec2>>;
 
-Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
-                                           const std::vector<std::vector<Vec2>>& fg,
-                                           const std::vector<std::vector<Vec2>>& bg,
-                                           const std::string& key, const MatteOptions& opt) {
-  const std::string fgKey = key + ".foreground_scribbles_px";
-  const std::string bgKey = key + ".background_scribbles_px";
-  INLAY_CHECK(photo.channels >= 3 && photo.width > 0 && photo.height > 0);
-  auto hasPoints = [](const std::vector<std::vector<Vec2>>& s) {
+// The keys that one occluder's messages name.
+struct MatteKeys {
+  std::string occluder, fg, bg;
+};
+
+// The strokes rasterised at the photo's size, and where the two kinds overlap.
+struct StrokeMasks {
+  cv::Mat fg, bg, both;  // CV_8U, 255 under a stroke
+};
+
+// What the cut works on: a region around the strokes, its colours and GrabCut's labels.
+struct CutRegion {
+  cv::Rect roi;  // the strokes' box grown by the margin, within the photo
+  cv::Mat img;   // CV_8UC3, 8-bit sRGB BGR (what grabCut's colour models and alphamat expect)
+  cv::Mat gc;    // CV_8U, GrabCut's labels (cv::GC_*)
+};
+
+// Strokes with at least one point, every point finite and within reach.
+Status checkStrokes(const Strokes& fg, const Strokes& bg, const MatteKeys& keys) {
+  auto hasPoints = [](const Strokes& s) {
     for (const auto& stroke : s)
       if (!stroke.empty()) return true;
     return false;
   };
-  if (!hasPoints(fg)) return Error{"", fgKey, "is empty: scribble at least one stroke inside the object"};
-  if (!hasPoints(bg)) return Error{"", bgKey, "is empty: scribble at least one stroke around the object"};
-  if (!finiteStrokes(fg)) return Error{"", fgKey, "holds a point that is not a finite number"};
-  if (!finiteStrokes(bg)) return Error{"", bgKey, "holds a point that is not a finite number"};
-  const int W = photo.width, H = photo.height;
-  const int radius = std::max(0, opt.strokeRadiusPx);
-  cv::Mat fgMask(H, W, CV_8U, cv::Scalar(0)), bgMask(H, W, CV_8U, cv::Scalar(0));
-  drawStrokes(fgMask, fg, radius, 255);
-  drawStrokes(bgMask, bg, radius, 255);
-  const int fgCount = cv::countNonZero(fgMask), bgCount = cv::countNonZero(bgMask);
+  if (!hasPoints(fg)) return Error{"", keys.fg, "is empty: scribble at least one stroke inside the object"};
+  if (!hasPoints(bg)) return Error{"", keys.bg, "is empty: scribble at least one stroke around the object"};
+  if (!finiteStrokes(fg)) return Error{"", keys.fg, "holds a point that is not a finite number"};
+  if (!finiteStrokes(bg)) return Error{"", keys.bg, "holds a point that is not a finite number"};
+  return Status::Ok();
+}
+
+// Both kinds of strokes rasterised. Each must leave pixels inside the photo that the other kind
+// does not cover, and neither may cover the whole photo.
+Expected<StrokeMasks> rasteriseStrokes(const Strokes& fg, const Strokes& bg, int W, int H,
+                                       int radius, const MatteKeys& keys) {
+  StrokeMasks m;
+  m.fg = cv::Mat(H, W, CV_8U, cv::Scalar(0));
+  m.bg = cv::Mat(H, W, CV_8U, cv::Scalar(0));
+  drawStrokes(m.fg, fg, radius, 255);
+  drawStrokes(m.bg, bg, radius, 255);
+  const int fgCount = cv::countNonZero(m.fg), bgCount = cv::countNonZero(m.bg);
   const int total = W * H;
-  if (fgCount == 0) return Error{"", fgKey, "no stroke falls inside the photo"};
-  if (bgCount == 0) return Error{"", bgKey, "no stroke falls inside the photo"};
-  cv::Mat both;
-  cv::bitwise_and(fgMask, bgMask, both);
-  const int overlap = cv::countNonZero(both);
+  if (fgCount == 0) return Error{"", keys.fg, "no stroke falls inside the photo"};
+  if (bgCount == 0) return Error{"", keys.bg, "no stroke falls inside the photo"};
+  cv::bitwise_and(m.fg, m.bg, m.both);
+  const int overlap = cv::countNonZero(m.both);
   if (fgCount >= total)
-    return Error{"", fgKey, "covers the whole photo: nothing is left for the background"};
+    return Error{"", keys.fg, "covers the whole photo: nothing is left for the background"};
   if (bgCount >= total)
-    return Error{"", bgKey, "covers the whole photo: nothing is left for the object"};
+    return Error{"", keys.bg, "covers the whole photo: nothing is left for the object"};
   if (fgCount - overlap == 0)
-    return Error{"", fgKey, "every foreground stroke is covered by background strokes"};
+    return Error{"", keys.fg, "every foreground stroke is covered by background strokes"};
   if (bgCount - overlap == 0)
-    return Error{"", bgKey, "every background stroke is covered by foreground strokes"};
+    return Error{"", keys.bg, "every background stroke is covered by foreground strokes"};
+  return m;
+}
 
-  // Work region: the strokes' bounding box, grown.
+// The strokes' bounding box, grown by the margin on each side (at least 16 px).
+cv::Rect workRegion(const StrokeMasks& m, double marginFraction) {
   cv::Mat any;
-  cv::bitwise_or(fgMask, bgMask, any);
+  cv::bitwise_or(m.fg, m.bg, any);
   const cv::Rect strokesBox = cv::boundingRect(any);
-  const int mx = std::max(16, int(opt.marginFraction * strokesBox.width));
-  const int my = std::max(16, int(opt.marginFraction * strokesBox.height));
-  const cv::Rect roi = cv::Rect(strokesBox.x - mx, strokesBox.y - my, strokesBox.width + 2 * mx,
-                                strokesBox.height + 2 * my) &
-                       cv::Rect(0, 0, W, H);
+  const int mx = std::max(16, int(marginFraction * strokesBox.width));
+  const int my = std::max(16, int(marginFraction * strokesBox.height));
+  return cv::Rect(strokesBox.x - mx, strokesBox.y - my, strokesBox.width + 2 * mx,
+                  strokesBox.height + 2 * my) &
+         cv::Rect(0, 0, m.fg.cols, m.fg.rows);
+}
 
-  // 8-bit sRGB BGR of the region (what grabCut's colour models and alphamat expect).
+// 8-bit sRGB BGR of the region.
+cv::Mat srgb8Bgr(const ImageF& photo, const cv::Rect& roi) {
   cv::Mat img(roi.height, roi.width, CV_8UC3);
   for (int y = 0; y < roi.height; ++y)
     for (int x = 0; x < roi.width; ++x) {
@@ -95,150 +118,168 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
       auto enc = [](float v) { return cv::saturate_cast<uchar>(std::lround(255.f * linearToSrgb(v))); };
       img.at<cv::Vec3b>(y, x) = cv::Vec3b(enc(p[2]), enc(p[1]), enc(p[0]));
     }
+  return img;
+}
 
-  const auto t0 = Clock::now();
+// GrabCut's first labels: the strokes sure, contradicting strokes left to the cut. Undecided
+// pixels: a background stroke that closes on itself is a loop around the object (GrabCut's
+// rectangle): inside it "probably foreground", outside it sure background. Without a loop,
+// "probably foreground" inside the foreground strokes' convex hull.
+cv::Mat labelsFromStrokes(const StrokeMasks& m, const Strokes& bg, const cv::Rect& roi, int radius) {
   cv::Mat gc(roi.size(), CV_8U, cv::Scalar(cv::GC_PR_BGD));
-  const cv::Mat fgR = fgMask(roi), bgR = bgMask(roi);
+  const cv::Mat fgR = m.fg(roi);
   gc.setTo(cv::GC_FGD, fgR);
-  gc.setTo(cv::GC_BGD, bgR);
-  gc.setTo(cv::GC_PR_BGD, both(roi));  // contradicting strokes: left to the cut
-  // Undecided pixels: a background stroke that closes on itself is a loop around the object
-  // (GrabCut's rectangle): inside it "probably foreground", outside it sure background. Without
-  // a loop, "probably foreground" inside the foreground strokes' convex hull.
-  {
-    cv::Mat inside(roi.size(), CV_8U, cv::Scalar(0));
-    bool loop = false;
-    for (const auto& stroke : bg) {
-      if (stroke.size() < 3) continue;
-      const double closeGap = std::max(8.0, 4.0 * radius + 2.0);
-      if ((stroke.front() - stroke.back()).norm() > closeGap) continue;
-      std::vector<cv::Point> poly;
-      for (const Vec2& q : stroke)
-        poly.emplace_back(int(std::floor(q.x())) - roi.x, int(std::floor(q.y())) - roi.y);
-      cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));
-      loop = true;
-    }
-    if (!loop) {
-      std::vector<cv::Point> pts;
-      cv::findNonZero(fgR, pts);
-      if (pts.size() >= 3) {
-        std::vector<cv::Point> hull;
-        cv::convexHull(pts, hull);
-        cv::fillConvexPoly(inside, hull, cv::Scalar(255));
-      }
-    }
-    cv::Mat undecided = gc == cv::GC_PR_BGD;
-    gc.setTo(cv::GC_PR_FGD, undecided & inside);
-    if (loop) gc.setTo(cv::GC_BGD, undecided & ~inside);
+  gc.setTo(cv::GC_BGD, m.bg(roi));
+  gc.setTo(cv::GC_PR_BGD, m.both(roi));
+  cv::Mat inside(roi.size(), CV_8U, cv::Scalar(0));
+  bool loop = false;
+  for (const auto& stroke : bg) {
+    if (stroke.size() < 3) continue;
+    const double closeGap = std::max(8.0, 4.0 * radius + 2.0);
+    if ((stroke.front() - stroke.back()).norm() > closeGap) continue;
+    std::vector<cv::Point> poly;
+    for (const Vec2& q : stroke)
+      poly.emplace_back(int(std::floor(q.x())) - roi.x, int(std::floor(q.y())) - roi.y);
+    cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));
+    loop = true;
   }
-  // A foreground stroke drawn across a gap (between table legs) crosses background. A stroke
-  // starts and ends on the object: a stroke pixel whose colour is nearer the background strokes'
-  // colours than its own stroke's end colours (by a margin) is a gap pixel, a background seed;
-  // one merely close to a background colour is left to the cut instead of forced.
-  {
-    std::vector<cv::Vec3b> bgColours;
-    for (int y = 0; y < roi.height; ++y)
-      for (int x = 0; x < roi.width; ++x)
-        if (bgR.at<uchar>(y, x) && !both(roi).at<uchar>(y, x)) bgColours.push_back(img.at<cv::Vec3b>(y, x));
-    auto nearest2 = [](const cv::Vec3b& c, const std::vector<cv::Vec3b>& set) {
-      const size_t stride = std::max<size_t>(1, set.size() / 2000);
-      int best = 1 << 30;
-      for (size_t k = 0; k < set.size(); k += stride) {
-        const int d0 = c[0] - set[k][0], d1 = c[1] - set[k][1], d2 = c[2] - set[k][2];
-        best = std::min(best, d0 * d0 + d1 * d1 + d2 * d2);
-      }
-      return best;
-    };
-    const int maxDist2 = opt.ambiguousColourDistance * opt.ambiguousColourDistance;
-    for (const auto& stroke : fg) {
-      if (stroke.size() < 2) continue;
-      cv::Mat one(H, W, CV_8U, cv::Scalar(0));
-      drawStrokes(one, {stroke}, radius, 255);
-      cv::Mat ends(H, W, CV_8U, cv::Scalar(0));
-      for (const Vec2& e : {stroke.front(), stroke.back()})
-        cv::circle(ends, cv::Point(int(std::floor(e.x())), int(std::floor(e.y()))), radius + 2,
-                   cv::Scalar(255), cv::FILLED);
-      ends &= one;
-      std::vector<cv::Vec3b> endColours;
-      for (int y = 0; y < roi.height; ++y)
-        for (int x = 0; x < roi.width; ++x)
-          if (ends.at<uchar>(roi.y + y, roi.x + x)) endColours.push_back(img.at<cv::Vec3b>(y, x));
-      std::vector<std::pair<cv::Point, uchar>> relabel;
-      int kept = 0;
-      for (int y = 0; y < roi.height; ++y)
-        for (int x = 0; x < roi.width; ++x) {
-          if (!one.at<uchar>(roi.y + y, roi.x + x) || gc.at<uchar>(y, x) != cv::GC_FGD) continue;
-          const cv::Vec3b c = img.at<cv::Vec3b>(y, x);
-          const int dBg = nearest2(c, bgColours);
-          const int dEnd = endColours.empty() ? (1 << 30) : nearest2(c, endColours);
-          if (4 * dBg + 4 * maxDist2 < dEnd) {  // |c - bg| well below |c - ends|
-            relabel.push_back({cv::Point(x, y), uchar(cv::GC_BGD)});
-          } else if (dBg <= maxDist2) {
-            relabel.push_back({cv::Point(x, y), uchar(cv::GC_PR_FGD)});
-          } else {
-            ++kept;
-          }
-        }
-      // A stroke that would keep no sure pixel (an object coloured like its surroundings) is the
-      // user's word against the colours: only its gap pixels go, the rest stays sure.
-      for (const auto& [pt, label] : relabel)
-        if (kept > 0 || label == cv::GC_BGD) gc.at<uchar>(pt) = label;
+  if (!loop) {
+    std::vector<cv::Point> pts;
+    cv::findNonZero(fgR, pts);
+    if (pts.size() >= 3) {
+      std::vector<cv::Point> hull;
+      cv::convexHull(pts, hull);
+      cv::fillConvexPoly(inside, hull, cv::Scalar(255));
     }
   }
+  cv::Mat undecided = gc == cv::GC_PR_BGD;
+  gc.setTo(cv::GC_PR_FGD, undecided & inside);
+  if (loop) gc.setTo(cv::GC_BGD, undecided & ~inside);
+  return gc;
+}
+
+// Squared RGB distance from c to the nearest of `set` (at most about 2000 of them looked at).
+int nearestDistance2(const cv::Vec3b& c, const std::vector<cv::Vec3b>& set) {
+  const size_t stride = std::max<size_t>(1, set.size() / 2000);
+  int best = 1 << 30;
+  for (size_t k = 0; k < set.size(); k += stride) {
+    const int d0 = c[0] - set[k][0], d1 = c[1] - set[k][1], d2 = c[2] - set[k][2];
+    best = std::min(best, d0 * d0 + d1 * d1 + d2 * d2);
+  }
+  return best;
+}
+
+// One foreground stroke's sure pixels, judged by colour: one whose colour is nearer the
+// background strokes' colours than its own stroke's end colours (by a margin) is a gap pixel, a
+// background seed; one merely close to a background colour is left to the cut. A stroke that
+// would keep no sure pixel (an object coloured like its surroundings) is the user's word
+// against the colours: only its gap pixels go, the rest stays sure.
+void relabelStrokeGaps(CutRegion& c, const std::vector<Vec2>& stroke, cv::Size photoSize,
+                       int radius, const std::vector<cv::Vec3b>& bgColours, int maxDist2) {
+  const cv::Rect& roi = c.roi;
+  cv::Mat one(photoSize, CV_8U, cv::Scalar(0));
+  drawStrokes(one, {stroke}, radius, 255);
+  cv::Mat ends(photoSize, CV_8U, cv::Scalar(0));
+  for (const Vec2& e : {stroke.front(), stroke.back()})
+    cv::circle(ends, cv::Point(int(std::floor(e.x())), int(std::floor(e.y()))), radius + 2,
+               cv::Scalar(255), cv::FILLED);
+  ends &= one;
+  std::vector<cv::Vec3b> endColours;
+  for (int y = 0; y < roi.height; ++y)
+    for (int x = 0; x < roi.width; ++x)
+      if (ends.at<uchar>(roi.y + y, roi.x + x)) endColours.push_back(c.img.at<cv::Vec3b>(y, x));
+  std::vector<std::pair<cv::Point, uchar>> relabel;
+  int kept = 0;
+  for (int y = 0; y < roi.height; ++y)
+    for (int x = 0; x < roi.width; ++x) {
+      if (!one.at<uchar>(roi.y + y, roi.x + x) || c.gc.at<uchar>(y, x) != cv::GC_FGD) continue;
+      const cv::Vec3b colour = c.img.at<cv::Vec3b>(y, x);
+      const int dBg = nearestDistance2(colour, bgColours);
+      const int dEnd = endColours.empty() ? (1 << 30) : nearestDistance2(colour, endColours);
+      if (4 * dBg + 4 * maxDist2 < dEnd) {  // |c - bg| well below |c - ends|
+        relabel.push_back({cv::Point(x, y), uchar(cv::GC_BGD)});
+      } else if (dBg <= maxDist2) {
+        relabel.push_back({cv::Point(x, y), uchar(cv::GC_PR_FGD)});
+      } else {
+        ++kept;
+      }
+    }
+  for (const auto& [pt, label] : relabel)
+    if (kept > 0 || label == cv::GC_BGD) c.gc.at<uchar>(pt) = label;
+}
+
+// A foreground stroke drawn across a gap (between table legs) crosses background; strokes
+// start and end on the object, so each stroke's pixels are judged against its own ends'
+// colours and the background strokes' (relabelStrokeGaps).
+void relabelGaps(CutRegion& c, const StrokeMasks& m, const Strokes& fg, int radius, int maxDist2) {
+  const cv::Mat bgR = m.bg(c.roi), bothR = m.both(c.roi);
+  std::vector<cv::Vec3b> bgColours;
+  for (int y = 0; y < c.roi.height; ++y)
+    for (int x = 0; x < c.roi.width; ++x)
+      if (bgR.at<uchar>(y, x) && !bothR.at<uchar>(y, x)) bgColours.push_back(c.img.at<cv::Vec3b>(y, x));
+  for (const auto& stroke : fg)
+    if (stroke.size() >= 2) relabelStrokeGaps(c, stroke, m.fg.size(), radius, bgColours, maxDist2);
+}
+
+// GrabCut from the labels: the object's pixels (CV_8U, 255 on the object) of the region.
+Expected<cv::Mat> cutObject(CutRegion& c, int iterations, const MatteKeys& keys) {
   cv::Mat bgdModel, fgdModel;
-  if (cv::countNonZero((gc == cv::GC_FGD) | (gc == cv::GC_PR_FGD)) == 0)
-    return Error{"", fgKey, "no stroke pixel is left for the object"};
-  if (cv::countNonZero((gc == cv::GC_BGD) | (gc == cv::GC_PR_BGD)) == 0)
-    return Error{"", bgKey, "no pixel is left for the background"};
+  if (cv::countNonZero((c.gc == cv::GC_FGD) | (c.gc == cv::GC_PR_FGD)) == 0)
+    return Error{"", keys.fg, "no stroke pixel is left for the object"};
+  if (cv::countNonZero((c.gc == cv::GC_BGD) | (c.gc == cv::GC_PR_BGD)) == 0)
+    return Error{"", keys.bg, "no pixel is left for the background"};
   try {
-    cv::grabCut(img, gc, cv::Rect(), bgdModel, fgdModel, std::max(1, opt.grabCutIterations),
+    cv::grabCut(c.img, c.gc, cv::Rect(), bgdModel, fgdModel, std::max(1, iterations),
                 cv::GC_INIT_WITH_MASK);
   } catch (const cv::Exception& e) {
-    return Error{"", key, std::string("the segmentation failed: ") + e.what()};
+    return Error{"", keys.occluder, std::string("the segmentation failed: ") + e.what()};
   }
-  cv::Mat seg = (gc == cv::GC_FGD) | (gc == cv::GC_PR_FGD);
-  OccluderMatte out;
-  out.segmentSeconds = secondsSince(t0);
-  if (cv::countNonZero(seg) == 0)
-    return Error{"", fgKey, "the segmentation keeps nothing of the object"};
+  cv::Mat seg = (c.gc == cv::GC_FGD) | (c.gc == cv::GC_PR_FGD);
+  return seg;
+}
 
-  // Trimap: sure inside (eroded cut and strokes), sure outside (beyond the dilated cut and the
-  // background strokes), unknown in the band between.
-  const auto t1 = Clock::now();
-  const int band = std::max(1, opt.bandPx);
-  const cv::Mat kernel =
-      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * band + 1, 2 * band + 1));
+// Trimap: sure inside (eroded cut and strokes), sure outside (beyond the dilated cut and the
+// background strokes), unknown (128) in the band between. Background strokes stay sure;
+// foreground strokes only where the cut's core holds them (a stroke drawn across a gap, e.g.
+// between table legs, is left to the matting there).
+cv::Mat trimapOf(const cv::Mat& seg, const StrokeMasks& m, const cv::Rect& roi, const cv::Mat& kernel) {
   cv::Mat inner, outer;
   cv::erode(seg, inner, kernel);
   cv::dilate(seg, outer, kernel);
   cv::Mat trimap(roi.size(), CV_8U, cv::Scalar(128));
   trimap.setTo(0, outer == 0);
   trimap.setTo(255, inner);
-  // Background strokes stay sure; foreground strokes only where the cut's core holds them (a
-  // stroke drawn across a gap, e.g. between table legs, is left to the matting there).
-  trimap.setTo(0, bgR & ~both(roi));
-  cv::Mat alpha8;
-  if (cv::countNonZero(trimap == 128) > 0 && cv::countNonZero(trimap == 255) > 0 &&
-      cv::countNonZero(trimap == 0) > 0) {
-    // Matting costs with the pixels it sees: only the box around what is not sure background,
-    // plus a margin of background for its colour samples.
-    const int m = 3 * band + 4;
-    const cv::Rect r = cv::boundingRect(trimap != 0);
-    const cv::Rect crop = cv::Rect(r.x - m, r.y - m, r.width + 2 * m, r.height + 2 * m) &
-                          cv::Rect(0, 0, roi.width, roi.height);
-    cv::Mat cropAlpha;
-    try {
-      cv::alphamat::infoFlow(img(crop).clone(), trimap(crop).clone(), cropAlpha);
-    } catch (const cv::Exception& e) {
-      return Error{"", key, std::string("the matting failed: ") + e.what()};
-    }
-    alpha8 = cv::Mat(roi.size(), CV_8U, cv::Scalar(0));
-    cropAlpha.copyTo(alpha8(crop));
-  } else {
-    alpha8 = seg.clone();
-  }
-  out.matteSeconds = secondsSince(t1);
+  trimap.setTo(0, m.bg(roi) & ~m.both(roi));
+  return trimap;
+}
 
+// Alpha (CV_8U) of the region by information-flow matting over the trimap's unknown band, or
+// the cut itself when the trimap lacks one of its three parts. Matting costs with the pixels it
+// sees: only the box around what is not sure background, plus a margin of background for its
+// colour samples.
+Expected<cv::Mat> alphaOf(const CutRegion& c, const cv::Mat& trimap, const cv::Mat& seg, int band,
+                          const MatteKeys& keys) {
+  if (!(cv::countNonZero(trimap == 128) > 0 && cv::countNonZero(trimap == 255) > 0 &&
+        cv::countNonZero(trimap == 0) > 0))
+    return seg.clone();
+  const int m = 3 * band + 4;
+  const cv::Rect r = cv::boundingRect(trimap != 0);
+  const cv::Rect crop = cv::Rect(r.x - m, r.y - m, r.width + 2 * m, r.height + 2 * m) &
+                        cv::Rect(0, 0, c.roi.width, c.roi.height);
+  cv::Mat cropAlpha;
+  try {
+    cv::alphamat::infoFlow(c.img(crop).clone(), trimap(crop).clone(), cropAlpha);
+  } catch (const cv::Exception& e) {
+    return Error{"", keys.occluder, std::string("the matting failed: ") + e.what()};
+  }
+  cv::Mat alpha8(c.roi.size(), CV_8U, cv::Scalar(0));
+  cropAlpha.copyTo(alpha8(crop));
+  return alpha8;
+}
+
+// The matte at the photo's size (the trimap's sure parts exactly 0 and 1) and its box.
+Status storeMatte(OccluderMatte& out, const cv::Mat& alpha8, const cv::Mat& trimap,
+                  const cv::Rect& roi, int W, int H, const MatteKeys& keys) {
   out.alphaPx = ImageF(W, H, 1, 0.f);
   int x0 = W, y0 = H, x1 = -1, y1 = -1;
   for (int y = 0; y < roi.height; ++y)
@@ -253,20 +294,67 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo,
         y0 = std::min(y0, roi.y + y), y1 = std::max(y1, roi.y + y);
       }
     }
-  if (x1 < 0) return Error{"", fgKey, "the matte keeps nothing of the object"};
+  if (x1 < 0) return Error{"", keys.fg, "the matte keeps nothing of the object"};
   out.boxPx = {x0, y0, x1 + 1, y1 + 1};
-  // Lowest point: the lowest row with coverage >= 0.5, its middle such pixel; the edge crosses
-  // that pixel about `alpha` below its top (a horizontal edge covering it that much).
-  for (int y = y1; y >= y0; --y) {
+  return Status::Ok();
+}
+
+// Lowest point: the lowest row with coverage >= 0.5, its middle such pixel; the edge crosses
+// that pixel about `alpha` below its top (a horizontal edge covering it that much).
+Status findLowestPoint(OccluderMatte& out, const MatteKeys& keys) {
+  const auto& [x0, y0, x1, y1] = out.boxPx;
+  for (int y = y1 - 1; y >= y0; --y) {
     std::vector<int> xs;
-    for (int x = x0; x <= x1; ++x)
+    for (int x = x0; x < x1; ++x)
       if (out.alphaPx.at(x, y) >= 0.5f) xs.push_back(x);
     if (xs.empty()) continue;
     const int x = xs[xs.size() / 2];
     out.lowestPx = Vec2(x + 0.5, y + double(out.alphaPx.at(x, y)));
-    return out;
+    return Status::Ok();
   }
-  return Error{"", fgKey, "the matte has no pixel at least half covered"};
+  return Error{"", keys.fg, "the matte has no pixel at least half covered"};
+}
+
+}  // namespace
+
+// Check and rasterise the strokes, cut the object from its surroundings in a region around them
+// (GrabCut seeded by the strokes, gap pixels of foreground strokes relabelled by colour), then
+// matte the cut's border band (information flow) and find where the matte stands on the floor.
+Expected<OccluderMatte> matteFromScribbles(const ImageF& photo, const Strokes& fg, const Strokes& bg,
+                                           const std::string& key, const MatteOptions& opt) {
+  const MatteKeys keys{key, key + ".foreground_scribbles_px", key + ".background_scribbles_px"};
+  INLAY_CHECK(photo.channels >= 3 && photo.width > 0 && photo.height > 0);
+  if (Status s = checkStrokes(fg, bg, keys); !s) return s.error();
+  const int W = photo.width, H = photo.height;
+  const int radius = std::max(0, opt.strokeRadiusPx);
+  auto masks = rasteriseStrokes(fg, bg, W, H, radius, keys);
+  if (!masks) return masks.error();
+  CutRegion cut;
+  cut.roi = workRegion(*masks, opt.marginFraction);
+  cut.img = srgb8Bgr(photo, cut.roi);
+
+  const auto t0 = Clock::now();
+  cut.gc = labelsFromStrokes(*masks, bg, cut.roi, radius);
+  relabelGaps(cut, *masks, fg, radius, opt.ambiguousColourDistance * opt.ambiguousColourDistance);
+  auto seg = cutObject(cut, opt.grabCutIterations, keys);
+  if (!seg) return seg.error();
+  OccluderMatte out;
+  out.segmentSeconds = secondsSince(t0);
+  if (cv::countNonZero(*seg) == 0)
+    return Error{"", keys.fg, "the segmentation keeps nothing of the object"};
+
+  const auto t1 = Clock::now();
+  const int band = std::max(1, opt.bandPx);
+  const cv::Mat kernel =
+      cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * band + 1, 2 * band + 1));
+  const cv::Mat trimap = trimapOf(*seg, *masks, cut.roi, kernel);
+  auto alpha8 = alphaOf(cut, trimap, *seg, band, keys);
+  if (!alpha8) return alpha8.error();
+  out.matteSeconds = secondsSince(t1);
+
+  if (Status s = storeMatte(out, *alpha8, trimap, cut.roi, W, H, keys); !s) return s.error();
+  if (Status s = findLowestPoint(out, keys); !s) return s.error();
+  return out;
 }
 
 Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte, int groupIndex,

@@ -399,7 +399,8 @@ void addFace(TriangleMesh& m, const std::vector<uint32_t>& ids) {
   for (const auto& t : triangulatePolygon(corners)) m.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
 }
 
-TriangleMesh readObj(const std::string& text, const std::string& path, const MeshLimits& limits) {
+// What an OBJ file says, as read (indices 0-based, checked against the final counts later).
+struct ObjData {
   std::vector<Vec3f> v, vn;
   std::vector<Vec2f> vt;
   std::vector<std::vector<ObjCorner>> faces;
@@ -408,8 +409,86 @@ TriangleMesh readObj(const std::string& text, const std::string& path, const Mes
   std::vector<std::string> materialNames, mtlFiles;
   std::map<std::string, int> materialIndex;
   int currentMaterial = -1;
+  size_t triangleCount = 0;
+};
+
+// A 'v', 'vn' or 'vt' statement: finite numbers, at most limits.maxVertices vertices.
+void readObjNumbers(ObjData& d, const std::vector<std::string_view>& toks, const std::string& where,
+                    const MeshLimits& limits) {
+  const std::string_view kw = toks[0];
+  const size_t need = kw == "vt" ? 1 : 3;
+  if (toks.size() < need + 1) fail(where, "'" + std::string(kw) + "' needs " + std::to_string(need) + " numbers");
+  double x[3] = {0, 0, 0};
+  for (size_t k = 0; k < std::min<size_t>(3, toks.size() - 1); ++k) {
+    if (kw == "vt" && k == 2) break;
+    if (!parseDouble(toks[k + 1], x[k]))
+      fail(where, "malformed number '" + std::string(toks[k + 1]) + "'");
+    if (!std::isfinite(x[k]) || std::fabs(x[k]) > 3e38)
+      fail(where, "non-finite coordinate '" + std::string(toks[k + 1]) + "'");
+  }
+  if (kw == "v") {
+    if (d.v.size() >= limits.maxVertices)
+      fail(where, "more than " + std::to_string(limits.maxVertices) + " vertices");
+    d.v.emplace_back(float(x[0]), float(x[1]), float(x[2]));
+  } else if (kw == "vn") {
+    d.vn.emplace_back(float(x[0]), float(x[1]), float(x[2]));
+  } else {
+    d.vt.emplace_back(float(x[0]), float(x[1]));
+  }
+}
+
+// One face corner, "v", "v/vt", "v//vn" or "v/vt/vn". Negative indices count back from the last
+// element read so far.
+ObjCorner readObjCorner(std::string_view tok, const ObjData& d, const std::string& where) {
+  int64_t idx[3] = {0, 0, 0};
+  size_t s = 0;
+  for (int part = 0; part < 3 && s <= tok.size(); ++part) {
+    size_t e = tok.find('/', s);
+    if (e == std::string_view::npos) e = tok.size();
+    const std::string_view num = tok.substr(s, e - s);
+    if (!num.empty() && !parseInt(num, idx[part]))
+      fail(where, "malformed face index '" + std::string(tok) + "'");
+    if (part == 0 && num.empty()) fail(where, "face corner without a vertex index");
+    if (!num.empty() && idx[part] == 0)
+      fail(where, "face index 0 (OBJ indices start at 1)");
+    s = e + 1;
+    if (e == tok.size()) break;
+  }
+  const size_t counts[3] = {d.v.size(), d.vt.size(), d.vn.size()};
+  ObjCorner c{-1, -1, -1};
+  int64_t* outs[3] = {&c.v, &c.vt, &c.vn};
+  static const char* names[3] = {"vertex", "texture", "normal"};
+  for (int part = 0; part < 3; ++part) {
+    if (idx[part] == 0) continue;
+    const int64_t r = idx[part] < 0 ? int64_t(counts[part]) + idx[part] : idx[part] - 1;
+    if (r < 0)
+      fail(where, std::string(names[part]) + " index " + std::to_string(idx[part]) +
+                      " refers before the first " + names[part]);
+    *outs[part] = r;
+  }
+  return c;
+}
+
+// An 'f' statement: at least 3 corners, at most limits.maxTriangles triangles in the file.
+void readObjFace(ObjData& d, const std::vector<std::string_view>& toks, const std::string& where,
+                 size_t lineNo, const MeshLimits& limits) {
+  if (toks.size() < 4) fail(where, "a face needs at least 3 vertices");
+  std::vector<ObjCorner> face;
+  for (size_t k = 1; k < toks.size(); ++k) face.push_back(readObjCorner(toks[k], d, where));
+  d.triangleCount += face.size() - 2;
+  if (d.triangleCount > limits.maxTriangles)
+    fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
+  d.faces.push_back(std::move(face));
+  d.faceLine.push_back(lineNo);
+  d.faceMaterial.push_back(d.currentMaterial);
+}
+
+// The statements line by line: vertices, faces and materials; others (o, g, s, l, p) do not
+// change what we keep.
+ObjData parseObj(const std::string& text, const MeshLimits& limits) {
+  ObjData d;
   std::vector<std::string_view> toks;
-  size_t lineNo = 0, pos = 0, triangleCount = 0;
+  size_t lineNo = 0, pos = 0;
   while (pos < text.size()) {
     size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
@@ -422,140 +501,107 @@ TriangleMesh readObj(const std::string& text, const std::string& path, const Mes
     const std::string where = "line " + std::to_string(lineNo);
     const std::string_view kw = toks[0];
     if (kw == "v" || kw == "vn" || kw == "vt") {
-      const size_t need = kw == "vt" ? 1 : 3;
-      if (toks.size() < need + 1) fail(where, "'" + std::string(kw) + "' needs " + std::to_string(need) + " numbers");
-      double d[3] = {0, 0, 0};
-      for (size_t k = 0; k < std::min<size_t>(3, toks.size() - 1); ++k) {
-        if (kw == "vt" && k == 2) break;
-        if (!parseDouble(toks[k + 1], d[k]))
-          fail(where, "malformed number '" + std::string(toks[k + 1]) + "'");
-        if (!std::isfinite(d[k]) || std::fabs(d[k]) > 3e38)
-          fail(where, "non-finite coordinate '" + std::string(toks[k + 1]) + "'");
-      }
-      if (kw == "v") {
-        if (v.size() >= limits.maxVertices)
-          fail(where, "more than " + std::to_string(limits.maxVertices) + " vertices");
-        v.emplace_back(float(d[0]), float(d[1]), float(d[2]));
-      } else if (kw == "vn") {
-        vn.emplace_back(float(d[0]), float(d[1]), float(d[2]));
-      } else {
-        vt.emplace_back(float(d[0]), float(d[1]));
-      }
+      readObjNumbers(d, toks, where, limits);
     } else if (kw == "f") {
-      if (toks.size() < 4) fail(where, "a face needs at least 3 vertices");
-      std::vector<ObjCorner> face;
-      for (size_t k = 1; k < toks.size(); ++k) {
-        int64_t idx[3] = {0, 0, 0};
-        const std::string_view tok = toks[k];
-        size_t s = 0;
-        for (int part = 0; part < 3 && s <= tok.size(); ++part) {
-          size_t e = tok.find('/', s);
-          if (e == std::string_view::npos) e = tok.size();
-          const std::string_view num = tok.substr(s, e - s);
-          if (!num.empty() && !parseInt(num, idx[part]))
-            fail(where, "malformed face index '" + std::string(tok) + "'");
-          if (part == 0 && num.empty()) fail(where, "face corner without a vertex index");
-          if (!num.empty() && idx[part] == 0)
-            fail(where, "face index 0 (OBJ indices start at 1)");
-          s = e + 1;
-          if (e == tok.size()) break;
-        }
-        // Negative indices count back from the last element read so far.
-        const size_t counts[3] = {v.size(), vt.size(), vn.size()};
-        ObjCorner c{-1, -1, -1};
-        int64_t* outs[3] = {&c.v, &c.vt, &c.vn};
-        static const char* names[3] = {"vertex", "texture", "normal"};
-        for (int part = 0; part < 3; ++part) {
-          if (idx[part] == 0) continue;
-          const int64_t r = idx[part] < 0 ? int64_t(counts[part]) + idx[part] : idx[part] - 1;
-          if (r < 0)
-            fail(where, std::string(names[part]) + " index " + std::to_string(idx[part]) +
-                            " refers before the first " + names[part]);
-          *outs[part] = r;
-        }
-        face.push_back(c);
-      }
-      triangleCount += face.size() - 2;
-      if (triangleCount > limits.maxTriangles)
-        fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
-      faces.push_back(std::move(face));
-      faceLine.push_back(lineNo);
-      faceMaterial.push_back(currentMaterial);
+      readObjFace(d, toks, where, lineNo, limits);
     } else if (kw == "usemtl" && toks.size() >= 2) {
       const std::string name(toks[1]);
-      auto [it, added] = materialIndex.emplace(name, int(materialNames.size()));
-      if (added) materialNames.push_back(name);
-      currentMaterial = it->second;
+      auto [it, added] = d.materialIndex.emplace(name, int(d.materialNames.size()));
+      if (added) d.materialNames.push_back(name);
+      d.currentMaterial = it->second;
     } else if (kw == "mtllib") {
-      for (size_t k = 1; k < toks.size(); ++k) mtlFiles.emplace_back(toks[k]);
+      for (size_t k = 1; k < toks.size(); ++k) d.mtlFiles.emplace_back(toks[k]);
     }
-    // Other statements (o, g, s, l, p) do not change what we keep.
   }
+  return d;
+}
 
-  // Range checks against the final counts (forward references are tolerated).
+// Which attributes every corner has.
+struct ObjAttributes {
   bool allVt = true, allVn = true;
-  for (size_t fi = 0; fi < faces.size(); ++fi) {
-    for (const ObjCorner& c : faces[fi]) {
-      const std::string where = "line " + std::to_string(faceLine[fi]);
-      if (c.v >= int64_t(v.size()))
+};
+
+// Range checks against the final counts (forward references are tolerated).
+ObjAttributes checkObjRanges(const ObjData& d) {
+  ObjAttributes a;
+  for (size_t fi = 0; fi < d.faces.size(); ++fi) {
+    for (const ObjCorner& c : d.faces[fi]) {
+      const std::string where = "line " + std::to_string(d.faceLine[fi]);
+      if (c.v >= int64_t(d.v.size()))
         fail(where, "vertex index " + std::to_string(c.v + 1) + " out of range (file has " +
-                        std::to_string(v.size()) + " vertices)");
-      if (c.vt >= int64_t(vt.size()))
+                        std::to_string(d.v.size()) + " vertices)");
+      if (c.vt >= int64_t(d.vt.size()))
         fail(where, "texture index " + std::to_string(c.vt + 1) + " out of range (file has " +
-                        std::to_string(vt.size()) + ")");
-      if (c.vn >= int64_t(vn.size()))
+                        std::to_string(d.vt.size()) + ")");
+      if (c.vn >= int64_t(d.vn.size()))
         fail(where, "normal index " + std::to_string(c.vn + 1) + " out of range (file has " +
-                        std::to_string(vn.size()) + ")");
-      allVt = allVt && c.vt >= 0;
-      allVn = allVn && c.vn >= 0;
+                        std::to_string(d.vn.size()) + ")");
+      a.allVt = a.allVt && c.vt >= 0;
+      a.allVn = a.allVn && c.vn >= 0;
     }
   }
+  return a;
+}
 
-  TriangleMesh m;
-  if (!materialNames.empty()) {
-    m.materials = readMtl(mtlFiles, fs::path(path).parent_path(), materialNames);
-    uint32_t noMaterial = uint32_t(m.materials.size());
-    if (std::find(faceMaterial.begin(), faceMaterial.end(), -1) != faceMaterial.end())
-      m.materials.push_back(AssetMaterial{"default"});
-    for (size_t fi = 0; fi < faces.size(); ++fi)
-      m.triangleMaterial.insert(m.triangleMaterial.end(), faces[fi].size() - 2,
-                                faceMaterial[fi] < 0 ? noMaterial : uint32_t(faceMaterial[fi]));
+// The materials `usemtl` named, from the MTL files beside the OBJ, and one per triangle (a
+// "default" material for faces before any usemtl).
+void assignObjMaterials(TriangleMesh& m, const ObjData& d, const std::string& path) {
+  if (d.materialNames.empty()) return;
+  m.materials = readMtl(d.mtlFiles, fs::path(path).parent_path(), d.materialNames);
+  uint32_t noMaterial = uint32_t(m.materials.size());
+  if (std::find(d.faceMaterial.begin(), d.faceMaterial.end(), -1) != d.faceMaterial.end())
+    m.materials.push_back(AssetMaterial{"default"});
+  for (size_t fi = 0; fi < d.faces.size(); ++fi)
+    m.triangleMaterial.insert(m.triangleMaterial.end(), d.faces[fi].size() - 2,
+                              d.faceMaterial[fi] < 0 ? noMaterial : uint32_t(d.faceMaterial[fi]));
+}
+
+// The faces over one output vertex per distinct (v, vt, vn) corner; vt and vn are kept only
+// when every corner has them.
+void addObjFacesWithAttributes(TriangleMesh& m, const ObjData& d, ObjAttributes a) {
+  std::unordered_map<uint64_t, uint32_t> corner;
+  auto vertexOf = [&](const ObjCorner& c) {
+    const uint64_t key = (uint64_t(c.v) * 0x9E3779B97F4A7C15ull) ^
+                         (uint64_t(a.allVt ? c.vt : 0) * 0xC2B2AE3D27D4EB4Full) ^
+                         (uint64_t(a.allVn ? c.vn : 0) + 0x165667B19E3779F9ull);
+    // Collisions of the mixed key would merge different corners: verify and fall back.
+    auto it = corner.find(key);
+    if (it != corner.end()) {
+      const uint32_t i = it->second;
+      if (m.positions[i] == d.v[size_t(c.v)] && (!a.allVt || m.uvs[i] == d.vt[size_t(c.vt)]) &&
+          (!a.allVn || m.normals[i] == d.vn[size_t(c.vn)]))
+        return i;
+    }
+    const uint32_t i = uint32_t(m.positions.size());
+    m.positions.push_back(d.v[size_t(c.v)]);
+    if (a.allVt) m.uvs.push_back(d.vt[size_t(c.vt)]);
+    if (a.allVn) m.normals.push_back(d.vn[size_t(c.vn)]);
+    if (it == corner.end()) corner.emplace(key, i);
+    return i;
+  };
+  for (const auto& face : d.faces) {
+    std::vector<uint32_t> ids;
+    for (const ObjCorner& c : face) ids.push_back(vertexOf(c));
+    addFace(m, ids);
   }
-  if (!allVt && !allVn) {
-    m.positions = std::move(v);
-    for (const auto& face : faces) {
+}
+
+TriangleMesh readObj(const std::string& text, const std::string& path, const MeshLimits& limits) {
+  ObjData d = parseObj(text, limits);
+  const ObjAttributes a = checkObjRanges(d);
+  TriangleMesh m;
+  assignObjMaterials(m, d, path);
+  if (!a.allVt && !a.allVn) {
+    // Positions only: the file's vertices as they are.
+    m.positions = std::move(d.v);
+    for (const auto& face : d.faces) {
       std::vector<uint32_t> ids;
       for (const ObjCorner& c : face) ids.push_back(uint32_t(c.v));
       addFace(m, ids);
     }
     return m;
   }
-  // One output vertex per distinct (v, vt, vn) corner.
-  std::unordered_map<uint64_t, uint32_t> corner;
-  auto vertexOf = [&](const ObjCorner& c) {
-    const uint64_t key = (uint64_t(c.v) * 0x9E3779B97F4A7C15ull) ^
-                         (uint64_t(allVt ? c.vt : 0) * 0xC2B2AE3D27D4EB4Full) ^
-                         (uint64_t(allVn ? c.vn : 0) + 0x165667B19E3779F9ull);
-    // Collisions of the mixed key would merge different corners: verify and fall back.
-    auto it = corner.find(key);
-    if (it != corner.end()) {
-      const uint32_t i = it->second;
-      if (m.positions[i] == v[size_t(c.v)] && (!allVt || m.uvs[i] == vt[size_t(c.vt)]) &&
-          (!allVn || m.normals[i] == vn[size_t(c.vn)]))
-        return i;
-    }
-    const uint32_t i = uint32_t(m.positions.size());
-    m.positions.push_back(v[size_t(c.v)]);
-    if (allVt) m.uvs.push_back(vt[size_t(c.vt)]);
-    if (allVn) m.normals.push_back(vn[size_t(c.vn)]);
-    if (it == corner.end()) corner.emplace(key, i);
-    return i;
-  };
-  for (const auto& face : faces) {
-    std::vector<uint32_t> ids;
-    for (const ObjCorner& c : face) ids.push_back(vertexOf(c));
-    addFace(m, ids);
-  }
+  addObjFacesWithAttributes(m, d, a);
   if (m.positions.size() > limits.maxVertices)
     fail("", "more than " + std::to_string(limits.maxVertices) + " vertices");
   return m;
@@ -689,20 +735,46 @@ std::string plyNumber(double x) {
   return buf;
 }
 
-TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
-  // Header.
+// The header: the body's format, where it starts, and its elements in order.
+struct PlyHeader {
+  std::vector<PlyElement> elements;
+  PlyBody::Format format = PlyBody::Format::Ascii;
+  size_t bodyPos = 0;
+};
+
+// A 'property' line: a scalar ("property float x") or a list ("property list uchar int
+// vertex_indices").
+PlyProperty readPlyProperty(std::istringstream& ls, const std::string& where) {
+  PlyProperty p;
+  std::string t;
+  ls >> t;
+  if (t == "list") {
+    std::string ct, it;
+    ls >> ct >> it >> p.name;
+    p.isList = true;
+    if (!plyType(ct, p.countType) || !plyType(it, p.type)) fail(where, "unknown list type");
+  } else {
+    ls >> p.name;
+    if (!plyType(t, p.type)) fail(where, "unknown property type '" + t + "'");
+  }
+  if (p.name.empty()) fail(where, "property without a name");
+  return p;
+}
+
+// The header up to 'end_header' (at most 1 MB): format, elements and their properties; comment,
+// obj_info and ply lines are ignored.
+PlyHeader readPlyHeader(const std::string& data) {
   if (data.compare(0, 3, "ply") != 0 || data.size() < 4 || (data[3] != '\n' && data[3] != '\r'))
     fail("header", "not a PLY file (missing 'ply' magic)");
   const size_t endHeader = data.find("end_header");
   if (endHeader == std::string::npos || endHeader > (1 << 20))
     fail("header", "no 'end_header' line");
-  size_t bodyPos = data.find('\n', endHeader);
-  if (bodyPos == std::string::npos) bodyPos = data.size();
-  else ++bodyPos;
+  PlyHeader h;
+  h.bodyPos = data.find('\n', endHeader);
+  if (h.bodyPos == std::string::npos) h.bodyPos = data.size();
+  else ++h.bodyPos;
   std::istringstream header(data.substr(0, endHeader));
   std::string line;
-  std::vector<PlyElement> elements;
-  PlyBody::Format format = PlyBody::Format::Ascii;
   bool haveFormat = false;
   int lineNo = 0;
   while (std::getline(header, line)) {
@@ -714,9 +786,9 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
     if (kw == "format") {
       std::string f;
       ls >> f;
-      if (f == "ascii") format = PlyBody::Format::Ascii;
-      else if (f == "binary_little_endian") format = PlyBody::Format::Le;
-      else if (f == "binary_big_endian") format = PlyBody::Format::Be;
+      if (f == "ascii") h.format = PlyBody::Format::Ascii;
+      else if (f == "binary_little_endian") h.format = PlyBody::Format::Le;
+      else if (f == "binary_big_endian") h.format = PlyBody::Format::Be;
       else fail(where, "unknown format '" + f + "'");
       haveFormat = true;
     } else if (kw == "element") {
@@ -727,136 +799,149 @@ TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
       if (e.name.empty() || !parseInt(count, c) || c < 0) fail(where, "malformed element line");
       e.count = uint64_t(c);
       e.headerLine = lineNo;
-      elements.push_back(e);
+      h.elements.push_back(e);
     } else if (kw == "property") {
-      if (elements.empty()) fail(where, "property before any element");
-      PlyProperty p;
-      std::string t;
-      ls >> t;
-      if (t == "list") {
-        std::string ct, it;
-        ls >> ct >> it >> p.name;
-        p.isList = true;
-        if (!plyType(ct, p.countType) || !plyType(it, p.type)) fail(where, "unknown list type");
-      } else {
-        ls >> p.name;
-        if (!plyType(t, p.type)) fail(where, "unknown property type '" + t + "'");
-      }
-      if (p.name.empty()) fail(where, "property without a name");
-      elements.back().props.push_back(p);
+      if (h.elements.empty()) fail(where, "property before any element");
+      h.elements.back().props.push_back(readPlyProperty(ls, where));
     }
-    // comment, obj_info, ply: ignored.
   }
   if (!haveFormat) fail("header", "no 'format' line");
+  return h;
+}
 
-  PlyBody body(data, bodyPos, format);
-  checkPlyCounts(elements, format, body.remaining());
+// The vertex element: positions (x, y, z), and normals (nx, ny, nz) and texture coordinates
+// (u v, s t or texture_u texture_v) when all of theirs are there; other properties are skipped.
+void readPlyVertices(TriangleMesh& m, PlyBody& body, const PlyElement& e, const MeshLimits& limits) {
+  const std::string ename = "element '" + e.name + "'";
+  if (e.count > limits.maxVertices)
+    fail(ename, std::to_string(e.count) + " vertices exceed the limit of " +
+                    std::to_string(limits.maxVertices));
+  int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1;
+  for (size_t k = 0; k < e.props.size(); ++k) {
+    const std::string& n = e.props[k].name;
+    const int ki = e.props[k].isList ? -1 : int(k);
+    if (n == "x") ix = ki; else if (n == "y") iy = ki; else if (n == "z") iz = ki;
+    else if (n == "nx") inx = ki; else if (n == "ny") iny = ki; else if (n == "nz") inz = ki;
+    else if (n == "u" || n == "s" || n == "texture_u") iu = ki;
+    else if (n == "v" || n == "t" || n == "texture_v") iv = ki;
+  }
+  if (ix < 0 || iy < 0 || iz < 0) fail(ename, "no x, y, z properties");
+  const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
+  m.positions.resize(size_t(e.count));
+  if (hasN) m.normals.resize(size_t(e.count));
+  if (hasUv) m.uvs.resize(size_t(e.count));
+  std::vector<double> vals(e.props.size());
+  for (uint64_t i = 0; i < e.count; ++i) {
+    const std::string where = "vertex " + std::to_string(i);
+    for (size_t k = 0; k < e.props.size(); ++k) {
+      const PlyProperty& p = e.props[k];
+      if (p.isList) {
+        const int64_t n = plyListLength(body.read(p.countType, where), 1e6, where);
+        for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+      } else {
+        vals[k] = body.read(p.type, where);
+      }
+    }
+    const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
+    if (!pos.allFinite()) fail(where, "non-finite coordinate");
+    m.positions[i] = pos;
+    if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),
+                                   float(vals[size_t(inz)]));
+    if (hasUv) m.uvs[i] = Vec2f(float(vals[size_t(iu)]), float(vals[size_t(iv)]));
+  }
+}
+
+// One list of vertex indices as triangles: a face fanned from its first corner; a triangle
+// strip, where -1 restarts the strip and odd triangles flip to keep the winding.
+void addPlyIndices(TriangleMesh& m, const std::vector<int64_t>& idx, bool strips,
+                   const std::string& where) {
+  if (!strips) {
+    if (idx.size() < 3) fail(where, "a face needs at least 3 vertices");
+    for (size_t k = 1; k + 1 < idx.size(); ++k)
+      m.triangles.push_back({uint32_t(idx[0]), uint32_t(idx[k]), uint32_t(idx[k + 1])});
+    return;
+  }
+  size_t start = 0;
+  for (size_t k = 0; k <= idx.size(); ++k) {
+    if (k < idx.size() && idx[k] >= 0) continue;
+    for (size_t q = start; q + 2 < k; ++q) {
+      uint32_t a = uint32_t(idx[q]), b = uint32_t(idx[q + 1]), c = uint32_t(idx[q + 2]);
+      if (a == b || b == c || a == c) continue;
+      if ((q - start) % 2) std::swap(a, b);
+      m.triangles.push_back({a, b, c});
+    }
+    start = k + 1;
+  }
+}
+
+// A 'face' or 'tristrips' element: its vertex_indices (or vertex_index) lists, each index a
+// whole number within the vertices read (-1 too in a strip); other properties are skipped.
+void readPlyFaces(TriangleMesh& m, PlyBody& body, const PlyElement& e, const MeshLimits& limits) {
+  const bool strips = e.name == "tristrips";
+  for (uint64_t i = 0; i < e.count; ++i) {
+    const std::string where = (strips ? "tristrip " : "face ") + std::to_string(i);
+    for (const PlyProperty& p : e.props) {
+      if (!p.isList) {
+        body.read(p.type, where);
+        continue;
+      }
+      const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
+      const bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
+      if (!isIndices) {
+        for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+        continue;
+      }
+      std::vector<int64_t> idx;
+      idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
+      for (int64_t q = 0; q < n; ++q) {
+        const double x = body.read(p.type, where);
+        if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
+            x >= double(m.positions.size()))
+          fail(where, "vertex index " + plyNumber(x) + " out of range (" +
+                          std::to_string(m.positions.size()) + " vertices)");
+        idx.push_back(int64_t(x));
+      }
+      addPlyIndices(m, idx, strips, where);
+      if (m.triangles.size() > limits.maxTriangles)
+        fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
+    }
+  }
+}
+
+// Any other element: read through, bounds-checked, and dropped.
+void skipPlyElement(PlyBody& body, const PlyElement& e) {
+  for (uint64_t i = 0; i < e.count; ++i)
+    for (const PlyProperty& p : e.props) {
+      const std::string where = e.name + " " + std::to_string(i);
+      if (!p.isList) {
+        body.read(p.type, where);
+        continue;
+      }
+      const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
+      for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
+    }
+}
+
+TriangleMesh readPly(const std::string& data, const MeshLimits& limits) {
+  const PlyHeader h = readPlyHeader(data);
+  PlyBody body(data, h.bodyPos, h.format);
+  checkPlyCounts(h.elements, h.format, body.remaining());
 
   TriangleMesh m;
   bool haveVertices = false;
-  for (const PlyElement& e : elements) {
+  for (const PlyElement& e : h.elements) {
     body.reading(e);
     // An element without properties holds no bytes, whatever its count: nothing to read (a count
     // of 6e18 looped for ever, fuzz_mesh_ply's timeout). A vertex element still fails below.
     if (e.props.empty() && e.name != "vertex") continue;
-    const std::string ename = "element '" + e.name + "'";
     if (e.name == "vertex") {
-      if (e.count > limits.maxVertices)
-        fail(ename, std::to_string(e.count) + " vertices exceed the limit of " +
-                        std::to_string(limits.maxVertices));
-      int ix = -1, iy = -1, iz = -1, inx = -1, iny = -1, inz = -1, iu = -1, iv = -1;
-      for (size_t k = 0; k < e.props.size(); ++k) {
-        const std::string& n = e.props[k].name;
-        const int ki = e.props[k].isList ? -1 : int(k);
-        if (n == "x") ix = ki; else if (n == "y") iy = ki; else if (n == "z") iz = ki;
-        else if (n == "nx") inx = ki; else if (n == "ny") iny = ki; else if (n == "nz") inz = ki;
-        else if (n == "u" || n == "s" || n == "texture_u") iu = ki;
-        else if (n == "v" || n == "t" || n == "texture_v") iv = ki;
-      }
-      if (ix < 0 || iy < 0 || iz < 0) fail(ename, "no x, y, z properties");
-      const bool hasN = inx >= 0 && iny >= 0 && inz >= 0, hasUv = iu >= 0 && iv >= 0;
-      m.positions.resize(size_t(e.count));
-      if (hasN) m.normals.resize(size_t(e.count));
-      if (hasUv) m.uvs.resize(size_t(e.count));
-      std::vector<double> vals(e.props.size());
-      for (uint64_t i = 0; i < e.count; ++i) {
-        const std::string where = "vertex " + std::to_string(i);
-        for (size_t k = 0; k < e.props.size(); ++k) {
-          const PlyProperty& p = e.props[k];
-          if (p.isList) {
-            const int64_t n = plyListLength(body.read(p.countType, where), 1e6, where);
-            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-          } else {
-            vals[k] = body.read(p.type, where);
-          }
-        }
-        const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
-        if (!pos.allFinite()) fail(where, "non-finite coordinate");
-        m.positions[i] = pos;
-        if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),
-                                       float(vals[size_t(inz)]));
-        if (hasUv) m.uvs[i] = Vec2f(float(vals[size_t(iu)]), float(vals[size_t(iv)]));
-      }
+      readPlyVertices(m, body, e, limits);
       haveVertices = true;
     } else if (e.name == "face" || e.name == "tristrips") {
-      const bool strips = e.name == "tristrips";
-      if (!haveVertices) fail(ename, "appears before the vertex element");
-      for (uint64_t i = 0; i < e.count; ++i) {
-        const std::string where = (strips ? "tristrip " : "face ") + std::to_string(i);
-        for (const PlyProperty& p : e.props) {
-          if (!p.isList) {
-            body.read(p.type, where);
-            continue;
-          }
-          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
-          const bool isIndices = p.name == "vertex_indices" || p.name == "vertex_index";
-          if (!isIndices) {
-            for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-            continue;
-          }
-          std::vector<int64_t> idx;
-          idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
-          for (int64_t q = 0; q < n; ++q) {
-            const double x = body.read(p.type, where);
-            if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
-                x >= double(m.positions.size()))
-              fail(where, "vertex index " + plyNumber(x) + " out of range (" +
-                              std::to_string(m.positions.size()) + " vertices)");
-            idx.push_back(int64_t(x));
-          }
-          if (!strips) {
-            if (idx.size() < 3) fail(where, "a face needs at least 3 vertices");
-            for (size_t k = 1; k + 1 < idx.size(); ++k)
-              m.triangles.push_back({uint32_t(idx[0]), uint32_t(idx[k]), uint32_t(idx[k + 1])});
-          } else {
-            // -1 restarts the strip; odd triangles flip to keep the winding.
-            size_t start = 0;
-            for (size_t k = 0; k <= idx.size(); ++k) {
-              if (k < idx.size() && idx[k] >= 0) continue;
-              for (size_t q = start; q + 2 < k; ++q) {
-                uint32_t a = uint32_t(idx[q]), b = uint32_t(idx[q + 1]), c = uint32_t(idx[q + 2]);
-                if (a == b || b == c || a == c) continue;
-                if ((q - start) % 2) std::swap(a, b);
-                m.triangles.push_back({a, b, c});
-              }
-              start = k + 1;
-            }
-          }
-          if (m.triangles.size() > limits.maxTriangles)
-            fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
-        }
-      }
+      if (!haveVertices) fail("element '" + e.name + "'", "appears before the vertex element");
+      readPlyFaces(m, body, e, limits);
     } else {
-      for (uint64_t i = 0; i < e.count; ++i)
-        for (const PlyProperty& p : e.props) {
-          const std::string where = e.name + " " + std::to_string(i);
-          if (!p.isList) {
-            body.read(p.type, where);
-            continue;
-          }
-          const int64_t n = plyListLength(body.read(p.countType, where), 1e9, where);
-          for (int64_t q = 0; q < n; ++q) body.read(p.type, where);
-        }
+      skipPlyElement(body, e);
     }
   }
   if (!haveVertices) fail("header", "no vertex element");

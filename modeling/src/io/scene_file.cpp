@@ -852,6 +852,128 @@ Expected<SceneLoadResult> loadSceneFile(const std::string& path, const SceneLimi
 
 namespace {
 
+// camera: only the keys given ("auto" response is the default and not written).
+ojson cameraJson(const CameraKeys& c, bool anyLines) {
+  ojson cam = ojson::object();
+  if (c.heightM) cam["height_m"] = *c.heightM;
+  if (c.focalPx) cam["focal_px"] = *c.focalPx;
+  if (c.principalPx) cam["principal_px"] = toJson(*c.principalPx);
+  if (c.vanishingPointsPx) {
+    ojson a = ojson::array();
+    for (const Vec2& v : *c.vanishingPointsPx) a.push_back(toJson(v));
+    cam["vanishing_points_px"] = a;
+  }
+  if (anyLines) {
+    ojson lines = ojson::object();
+    static const char* const kAxes[3] = {"x", "y", "z"};
+    for (size_t k = 0; k < 3; ++k) {
+      if (!c.vanishingLinesPx[k]) continue;
+      const auto& q = *c.vanishingLinesPx[k];
+      lines[kAxes[k]] = ojson::array({ojson::array({toJson(q[0]), toJson(q[1])}),
+                                      ojson::array({toJson(q[2]), toJson(q[3])})});
+    }
+    cam["vanishing_lines_px"] = lines;
+  }
+  if (c.response.mode == ResponseKeys::Mode::Srgb) cam["response"] = "srgb";
+  if (c.response.mode == ResponseKeys::Mode::Linear) cam["response"] = "linear";
+  if (c.response.mode == ResponseKeys::Mode::ToeShoulder)
+    cam["response"] = {{"family", "toe_shoulder"}, {"power", c.response.power}, {"toe", c.response.toe},
+                       {"shoulder", c.response.shoulder}};
+  return cam;
+}
+
+ojson lightJson(const LightKeys& l) {
+  ojson o;
+  if (l.kind == LightKeys::Kind::PolygonPx) {
+    o["kind"] = "polygon_px";
+    o["points"] = toJson(l.pointsPx);
+  } else {
+    o["kind"] = "rect_m";
+    ojson corners = ojson::array();
+    for (const Vec3& v : l.cornersM) corners.push_back(toJson(v));
+    o["corners"] = corners;
+  }
+  if (l.rgb) o["rgb"] = toJson(*l.rgb);
+  o["refine"] = l.refine;
+  if (l.lock) o["lock"] = true;
+  if (l.refineSize) o["refine_size"] = true;
+  if (l.positionWeight != LightKeys{}.positionWeight || l.intensityWeight != LightKeys{}.intensityWeight ||
+      l.sizeWeight != LightKeys{}.sizeWeight)
+    o["weights"] = ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}, {"size", l.sizeWeight}};
+  return o;
+}
+
+ojson shaftJson(const ShaftKeys& s) {
+  ojson o = ojson::object();
+  if (s.shaftBoxPx) o["shaft_box_px"] = *s.shaftBoxPx;
+  if (s.sourceBoxPx) o["source_box_px"] = *s.sourceBoxPx;
+  if (s.direction) o["direction"] = toJson(*s.direction);
+  return o;
+}
+
+// A surface in its kind's form: stairs from a profile, stairs from a spec, or an extrusion.
+ojson surfaceJson(const SurfaceKeys& s) {
+  if (s.kind == "stairs" && !s.profilePx.empty()) {
+    ojson o{{"kind", s.kind}, {"profile_px", toJson(s.profilePx)}};
+    if (!s.wall.empty()) o["wall"] = s.wall;
+    if (s.widthM > 0) o["width_m"] = s.widthM;
+    return o;
+  }
+  if (s.kind == "stairs")
+    return ojson{{"kind", s.kind},         {"base_px", toJson(s.basePx)},
+                 {"steps", s.steps},       {"rise_m", s.riseM},
+                 {"run_m", s.runM},        {"width_m", s.widthM},
+                 {"climb_axis", s.climbAxis}};
+  ojson o{{"kind", s.kind},
+          {"outline_px", toJson(s.outlinePx)},
+          {"height_click_px", toJson(s.heightClickPx)}};
+  if (s.thicknessM) o["thickness_m"] = *s.thicknessM;
+  return o;
+}
+
+ojson occluderJson(const OccluderKeys& o) {
+  ojson fg = ojson::array(), bg = ojson::array();
+  for (const auto& s : o.foregroundScribblesPx) fg.push_back(toJson(s));
+  for (const auto& s : o.backgroundScribblesPx) bg.push_back(toJson(s));
+  return ojson{{"foreground_scribbles_px", fg}, {"background_scribbles_px", bg}};
+}
+
+ojson objectJson(const ObjectKeys& o) {
+  const MaterialKeys& m = o.material;
+  ojson mat{{"preset", m.preset},   {"albedo", toJson(m.albedo)}, {"roughness", m.roughness},
+            {"ior", m.ior},         {"rgb", toJson(m.rgb)}};
+  ojson obj{{"mesh", o.mesh},
+            {"base_px", toJson(o.basePx)},
+            {"height_m", o.heightM},
+            {"yaw_deg", o.yawDeg},
+            {"material", mat}};
+  if (o.subdivideLevels > 0) obj["subdivide"] = o.subdivideLevels;
+  if (!o.name.empty()) obj["name"] = o.name;
+  if (o.hidden) obj["hidden"] = true;
+  return obj;
+}
+
+ojson renderJson(const RenderKeys& render) {
+  ojson r;
+  r["spp"] = render.spp;
+  r["seconds"] = render.seconds ? ojson(*render.seconds) : ojson(nullptr);
+  r["noise"] = render.noise;
+  r["exposure"] = render.exposure;
+  r["seed"] = render.seed;
+  r["grain"] = render.grain;
+  return r;
+}
+
+// A JSON array of one entry per item, or nothing when there are none.
+template <class T, class ToJson>
+void putList(ojson& j, const char* key, const std::vector<T>& items, ToJson toJsonOf) {
+  if (items.empty()) return;
+  ojson a = ojson::array();
+  for (const T& item : items) a.push_back(toJsonOf(item));
+  j[key] = a;
+}
+
+// The document in the spec's key order; optional sections only when they hold something.
 ojson buildJson(const SceneDoc& doc) {
   ojson j;
   j["format"] = "inlay-scene";
@@ -862,127 +984,18 @@ ojson buildJson(const SceneDoc& doc) {
   const bool anyLines = std::any_of(c.vanishingLinesPx.begin(), c.vanishingLinesPx.end(),
                                     [](const auto& l) { return l.has_value(); });
   const bool anyResponse = c.response.mode != ResponseKeys::Mode::Auto;
-  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse) {
-    ojson cam = ojson::object();
-    if (c.heightM) cam["height_m"] = *c.heightM;
-    if (c.focalPx) cam["focal_px"] = *c.focalPx;
-    if (c.principalPx) cam["principal_px"] = toJson(*c.principalPx);
-    if (c.vanishingPointsPx) {
-      ojson a = ojson::array();
-      for (const Vec2& v : *c.vanishingPointsPx) a.push_back(toJson(v));
-      cam["vanishing_points_px"] = a;
-    }
-    if (anyLines) {
-      ojson lines = ojson::object();
-      static const char* const kAxes[3] = {"x", "y", "z"};
-      for (size_t k = 0; k < 3; ++k) {
-        if (!c.vanishingLinesPx[k]) continue;
-        const auto& q = *c.vanishingLinesPx[k];
-        lines[kAxes[k]] = ojson::array({ojson::array({toJson(q[0]), toJson(q[1])}),
-                                        ojson::array({toJson(q[2]), toJson(q[3])})});
-      }
-      cam["vanishing_lines_px"] = lines;
-    }
-    if (c.response.mode == ResponseKeys::Mode::Srgb) cam["response"] = "srgb";
-    if (c.response.mode == ResponseKeys::Mode::Linear) cam["response"] = "linear";
-    if (c.response.mode == ResponseKeys::Mode::ToeShoulder)
-      cam["response"] = {{"family", "toe_shoulder"}, {"power", c.response.power}, {"toe", c.response.toe},
-                         {"shoulder", c.response.shoulder}};
-    j["camera"] = cam;
-  }
+  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse)
+    j["camera"] = cameraJson(c, anyLines);
   if (doc.layout.backWallPx) {
     ojson a = ojson::array();
     for (const Vec2& v : *doc.layout.backWallPx) a.push_back(toJson(v));
     j["layout"] = ojson{{"back_wall_px", a}};
   }
-  if (!doc.lights.empty()) {
-    ojson a = ojson::array();
-    for (const LightKeys& l : doc.lights) {
-      ojson o;
-      if (l.kind == LightKeys::Kind::PolygonPx) {
-        o["kind"] = "polygon_px";
-        o["points"] = toJson(l.pointsPx);
-      } else {
-        o["kind"] = "rect_m";
-        ojson corners = ojson::array();
-        for (const Vec3& v : l.cornersM) corners.push_back(toJson(v));
-        o["corners"] = corners;
-      }
-      if (l.rgb) o["rgb"] = toJson(*l.rgb);
-      o["refine"] = l.refine;
-      if (l.lock) o["lock"] = true;
-      if (l.refineSize) o["refine_size"] = true;
-      if (l.positionWeight != LightKeys{}.positionWeight || l.intensityWeight != LightKeys{}.intensityWeight ||
-          l.sizeWeight != LightKeys{}.sizeWeight)
-        o["weights"] = ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}, {"size", l.sizeWeight}};
-      a.push_back(o);
-    }
-    j["lights"] = a;
-  }
-  if (!doc.shafts.empty()) {
-    ojson a = ojson::array();
-    for (const ShaftKeys& s : doc.shafts) {
-      ojson o = ojson::object();
-      if (s.shaftBoxPx) o["shaft_box_px"] = *s.shaftBoxPx;
-      if (s.sourceBoxPx) o["source_box_px"] = *s.sourceBoxPx;
-      if (s.direction) o["direction"] = toJson(*s.direction);
-      a.push_back(o);
-    }
-    j["shafts"] = a;
-  }
-  if (!doc.surfaces.empty()) {
-    ojson a = ojson::array();
-    for (const SurfaceKeys& s : doc.surfaces) {
-      if (s.kind == "stairs" && !s.profilePx.empty()) {
-        ojson o{{"kind", s.kind}, {"profile_px", toJson(s.profilePx)}};
-        if (!s.wall.empty()) o["wall"] = s.wall;
-        if (s.widthM > 0) o["width_m"] = s.widthM;
-        a.push_back(o);
-        continue;
-      }
-      if (s.kind == "stairs") {
-        a.push_back(ojson{{"kind", s.kind},         {"base_px", toJson(s.basePx)},
-                          {"steps", s.steps},       {"rise_m", s.riseM},
-                          {"run_m", s.runM},        {"width_m", s.widthM},
-                          {"climb_axis", s.climbAxis}});
-        continue;
-      }
-      ojson o{{"kind", s.kind},
-              {"outline_px", toJson(s.outlinePx)},
-              {"height_click_px", toJson(s.heightClickPx)}};
-      if (s.thicknessM) o["thickness_m"] = *s.thicknessM;
-      a.push_back(o);
-    }
-    j["surfaces"] = a;
-  }
-  if (!doc.occluders.empty()) {
-    ojson a = ojson::array();
-    for (const OccluderKeys& o : doc.occluders) {
-      ojson fg = ojson::array(), bg = ojson::array();
-      for (const auto& s : o.foregroundScribblesPx) fg.push_back(toJson(s));
-      for (const auto& s : o.backgroundScribblesPx) bg.push_back(toJson(s));
-      a.push_back(ojson{{"foreground_scribbles_px", fg}, {"background_scribbles_px", bg}});
-    }
-    j["occluders"] = a;
-  }
-  if (!doc.objects.empty()) {
-    ojson a = ojson::array();
-    for (const ObjectKeys& o : doc.objects) {
-      const MaterialKeys& m = o.material;
-      ojson mat{{"preset", m.preset},   {"albedo", toJson(m.albedo)}, {"roughness", m.roughness},
-                {"ior", m.ior},         {"rgb", toJson(m.rgb)}};
-      ojson obj{{"mesh", o.mesh},
-                {"base_px", toJson(o.basePx)},
-                {"height_m", o.heightM},
-                {"yaw_deg", o.yawDeg},
-                {"material", mat}};
-      if (o.subdivideLevels > 0) obj["subdivide"] = o.subdivideLevels;
-      if (!o.name.empty()) obj["name"] = o.name;
-      if (o.hidden) obj["hidden"] = true;
-      a.push_back(obj);
-    }
-    j["objects"] = a;
-  }
+  putList(j, "lights", doc.lights, lightJson);
+  putList(j, "shafts", doc.shafts, shaftJson);
+  putList(j, "surfaces", doc.surfaces, surfaceJson);
+  putList(j, "occluders", doc.occluders, occluderJson);
+  putList(j, "objects", doc.objects, objectJson);
   if (!doc.room.materials.empty()) {
     ojson mats = ojson::object();
     for (const auto& [name, m] : doc.room.materials)
@@ -990,14 +1003,7 @@ ojson buildJson(const SceneDoc& doc) {
                          {"reflectance", toJson(m.reflectance)}};
     j["room"] = ojson{{"materials", mats}};
   }
-  ojson r;
-  r["spp"] = doc.render.spp;
-  r["seconds"] = doc.render.seconds ? ojson(*doc.render.seconds) : ojson(nullptr);
-  r["noise"] = doc.render.noise;
-  r["exposure"] = doc.render.exposure;
-  r["seed"] = doc.render.seed;
-  r["grain"] = doc.render.grain;
-  j["render"] = r;
+  j["render"] = renderJson(doc.render);
   return j;
 }
 
