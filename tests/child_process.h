@@ -77,8 +77,8 @@ class ChildProcess {
     std::string line;
     char c = 0;
     while (out_ >= 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-          end - std::chrono::steady_clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
       pollfd p = {out_, POLLIN, 0};
       if (left.count() <= 0 || ::poll(&p, 1, int(left.count())) <= 0) break;
       if (::read(out_, &c, 1) != 1 || c == '\n') break;

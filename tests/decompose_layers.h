@@ -17,8 +17,8 @@ struct Layers {
 };
 
 inline Layers makeLayers(int W, int H, int cell = 8) {
-  Layers l{ImageF(W, H, 3), ImageF(W, H, 3), ImageF(W, H, 3),
-           std::vector<uint8_t>(size_t(W) * H, 1), std::vector<uint8_t>(size_t(W) * H, 0)};
+  Layers l{ImageF(W, H, 3), ImageF(W, H, 3), ImageF(W, H, 3), std::vector<uint8_t>(size_t(W) * H, 1),
+           std::vector<uint8_t>(size_t(W) * H, 0)};
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x) {
       const bool odd = ((x / cell) + (y / cell)) & 1;

@@ -75,7 +75,8 @@ TEST(EngineGeometry, BadOccluderAndSurfaceInputNamesTheKey) {
   doc.surfaces = {bow};
   ps = prepareScene(doc);
   ASSERT_FALSE(ps.ok());
-  EXPECT_NE(ps.error().message().find("surfaces[0].outline_px"), std::string::npos) << ps.error().message();
+  EXPECT_NE(ps.error().message().find("surfaces[0].outline_px"), std::string::npos)
+      << ps.error().message();
 }
 
 }  // namespace

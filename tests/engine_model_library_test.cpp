@@ -41,10 +41,11 @@ std::vector<Entry> entries() {
   std::vector<Entry> out;
   for (const json& p : libraryIndex().value("pieces", json::array())) {
     const json& d = p.at("dimensions_m");
-    out.push_back({p.at("name").get<std::string>(), (kModels / p.at("file").get<std::string>()).string(),
-                   p.at("category").get<std::string>(),
-                   Vec3(d.at("width").get<double>(), d.at("depth").get<double>(), d.at("height").get<double>()),
-                   p.at("triangles").get<size_t>()});
+    out.push_back(
+        {p.at("name").get<std::string>(), (kModels / p.at("file").get<std::string>()).string(),
+         p.at("category").get<std::string>(),
+         Vec3(d.at("width").get<double>(), d.at("depth").get<double>(), d.at("height").get<double>()),
+         p.at("triangles").get<size_t>()});
   }
   return out;
 }
@@ -87,7 +88,8 @@ TEST(ModelLibrary, EveryPieceLoadsFiniteAndAsBigAsTheIndexSays) {
     // Vertex normals face the way their triangles wind (outward), not against them.
     size_t against = 0;
     for (const auto& t : mesh->triangles) {
-      const Vec3f g = (mesh->positions[t[1]] - mesh->positions[t[0]]).cross(mesh->positions[t[2]] - mesh->positions[t[0]]);
+      const Vec3f g = (mesh->positions[t[1]] - mesh->positions[t[0]])
+                          .cross(mesh->positions[t[2]] - mesh->positions[t[0]]);
       against += g.dot(mesh->normals[t[0]] + mesh->normals[t[1]] + mesh->normals[t[2]]) < 0;
     }
     EXPECT_EQ(against, 0u);
@@ -156,7 +158,8 @@ TEST(ModelLibrary, EveryPieceRendersIntoTheExampleWithoutWarnings) {
     object.heightM = e.sizeM.z();
     auto mesh = loadObjectMesh(object);
     ASSERT_TRUE(mesh.ok()) << mesh.error().message();
-    auto placed = placeObject(*mesh, ps->geometry, ps->camera, object.basePx, object.heightM, object.yawDeg, "objects[0]");
+    auto placed = placeObject(*mesh, ps->geometry, ps->camera, object.basePx, object.heightM,
+                              object.yawDeg, "objects[0]");
     ASSERT_TRUE(placed.ok()) << placed.error().message();
     RenderScene scene = ps->renderScene;
     InsertedObject one;  // as the pipeline inserts it: one object, a material per part

@@ -53,7 +53,8 @@ TEST(Engine, NoObjectGivesThePhotoBitForBit) {
   const ImageF composite = compositeOf(*ps, renderFrame(*ps, 2));
   ASSERT_EQ(composite.data.size(), ps->photo.linearRgb.data.size());
   size_t differing = 0;
-  for (size_t i = 0; i < composite.data.size(); ++i) differing += composite.data[i] != ps->photo.linearRgb.data[i];
+  for (size_t i = 0; i < composite.data.size(); ++i)
+    differing += composite.data[i] != ps->photo.linearRgb.data[i];
   EXPECT_EQ(differing, 0u);
   // Written through the response, the PNG holds the photo's own codes.
   const auto dir = test::tempDir("engine_response_png");
@@ -116,7 +117,8 @@ TEST(Engine, RoomMaterialsReachTheRenderSceneAndKeepThePhoto) {
   EXPECT_EQ(marked, 1u);
   const ImageF composite = compositeOf(*ps, renderFrame(*ps, 2));
   size_t differing = 0;
-  for (size_t i = 0; i < composite.data.size(); ++i) differing += composite.data[i] != ps->photo.linearRgb.data[i];
+  for (size_t i = 0; i < composite.data.size(); ++i)
+    differing += composite.data[i] != ps->photo.linearRgb.data[i];
   EXPECT_EQ(differing, 0u);
 
   doc.room.materials["surface_99_top"] = mirror;
@@ -140,11 +142,14 @@ TEST(Engine, CompositeGrainOnlyWhereTheObjectChangesThePhoto) {
   for (int y = 0; y < clean.height; ++y)
     for (int x = 0; x < clean.width; ++x)
       for (int c = 0; c < 3; ++c) {
-        const bool touched = f.mask.at(x, y) != 0.f || f.withObjects.at(x, y, c) != f.withoutObjects.at(x, y, c);
+        const bool touched = f.mask.at(x, y) != 0.f ||
+                             f.withObjects.at(x, y, c) != f.withoutObjects.at(x, y, c);
         changed += touched;
         grainedPixels += grained.at(x, y, c) != clean.at(x, y, c);
         ASSERT_TRUE(std::isfinite(grained.at(x, y, c)));
-        if (!touched) { ASSERT_EQ(grained.at(x, y, c), ps->photo.linearRgb.at(x, y, c)) << x << "," << y; }
+        if (!touched) {
+          ASSERT_EQ(grained.at(x, y, c), ps->photo.linearRgb.at(x, y, c)) << x << "," << y;
+        }
       }
   EXPECT_GT(grainedPixels, changed / 10);
   PreparedScene off = *ps;
@@ -164,7 +169,8 @@ TEST(Engine, ALinearPhotoGetsNoGrain) {
     for (int x = 0; x < noisy.width; ++x)
       for (int c = 0; c < 3; ++c) {
         state = state * 1664525u + 1013904223u;
-        noisy.at(x, y, c) = 0.05f + 0.8f * float(x) / float(noisy.width) + 0.05f * (float(state >> 8) / 16777216.f - 0.5f);
+        noisy.at(x, y, c) = 0.05f + 0.8f * float(x) / float(noisy.width) +
+                            0.05f * (float(state >> 8) / 16777216.f - 0.5f);
       }
   const auto dir = test::tempDir("linear_grain");
   for (const char* ext : {"png", "exr"}) {
@@ -212,7 +218,8 @@ TEST(Engine, MovingAnObjectNeverRedoesTheDecomposition) {
   auto ps = prepareScene(exampleDoc());
   ASSERT_TRUE(ps.ok()) << ps.error().message();
   bool refit = false;
-  for (const StageRecord& stage : ps->stages) refit = refit || (stage.name == "lighting refit" && stage.ran);
+  for (const StageRecord& stage : ps->stages)
+    refit = refit || (stage.name == "lighting refit" && stage.ran);
   EXPECT_EQ(decompositionRuns(), before + (refit ? 2 : 1));
   const uint64_t prepared = decompositionRuns();
   ASSERT_FALSE(ps->lighting.albedo.empty());
@@ -250,7 +257,8 @@ TEST(Engine, PreparationIgnoresTheRenderSeed) {
   }
   EXPECT_TRUE(sameBits(first->renderScene.roomAlbedo.albedo, second->renderScene.roomAlbedo.albedo));
   EXPECT_TRUE(sameBits(first->lighting.gathered, second->lighting.gathered));
-  EXPECT_TRUE(sameBits(first->renderScene.roomAlbedo.photoRadiance, second->renderScene.roomAlbedo.photoRadiance));
+  EXPECT_TRUE(sameBits(first->renderScene.roomAlbedo.photoRadiance,
+                       second->renderScene.roomAlbedo.photoRadiance));
 }
 
 TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
@@ -261,7 +269,8 @@ TEST(Engine, MovingAnObjectMatchesAFreshPlacement) {
   const auto moved = placeObjectAt(*ps, 0);
   ASSERT_TRUE(moved.ok()) << moved.error().message();
   const auto fresh = placeObject(*ps->renderScene.objects[0].meshObject, ps->geometry, ps->camera,
-                                 ps->doc.objects[0].basePx, ps->doc.objects[0].heightM, 30, "objects[0]");
+                                 ps->doc.objects[0].basePx, ps->doc.objects[0].heightM, 30,
+                                 "objects[0]");
   ASSERT_TRUE(fresh.ok());
   EXPECT_TRUE(moved->worldFromObject.isApprox(fresh->worldFromObject, 1e-12));
   EXPECT_NEAR(moved->baseWorld.y(), 0.0, 1e-9);  // still on the floor
@@ -367,7 +376,8 @@ TEST(Engine, UserVanishingLinesFixTheirVanishingPoint) {
 
   // Two lines through one vanishing point that no camera can have with the others: the error
   // names the file's key, not the solver's.
-  doc.camera.vanishingLinesPx[2] = std::array<Vec2, 4>{Vec2(10, 10), Vec2(10.5, 10), Vec2(0, 50), Vec2(100, 60)};
+  doc.camera.vanishingLinesPx[2] =
+      std::array<Vec2, 4>{Vec2(10, 10), Vec2(10.5, 10), Vec2(0, 50), Vec2(100, 60)};
   auto bad = cameraAndLayoutOf(doc.camera, doc.layout, *photo, true);
   ASSERT_FALSE(bad.ok());
   EXPECT_EQ(bad.error().key, "camera.vanishing_lines_px.z") << bad.error().message();
@@ -399,13 +409,14 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
       EXPECT_EQ(s.seconds, 0.0) << s.name;
     }
   }
-  const std::vector<std::string> expected = {"photo", "response", "camera", "layout", "occluders", "surfaces",
-                                             "room", "lights", "shafts", "lighting", "sun ratio", "refine",
-                                             "lighting refit", "render scene", "objects", "grain"};
+  const std::vector<std::string> expected = {
+      "photo",  "response", "camera",    "layout", "occluders",      "surfaces",     "room",    "lights",
+      "shafts", "lighting", "sun ratio", "refine", "lighting refit", "render scene", "objects", "grain"};
   EXPECT_EQ(names, expected);
   for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio"})
     EXPECT_FALSE(stageNamed(*ps, skipped)->ran) << skipped;
-  for (const char* ran : {"photo", "camera", "lighting", "refine", "objects"}) EXPECT_TRUE(stageNamed(*ps, ran)->ran) << ran;
+  for (const char* ran : {"photo", "camera", "lighting", "refine", "objects"})
+    EXPECT_TRUE(stageNamed(*ps, ran)->ran) << ran;
   EXPECT_EQ(describeStage(*stageNamed(*ps, "shafts")), "shafts: skipped, no sun marked");
   EXPECT_EQ(describeStage(*stageNamed(*ps, "occluders")), "occluders: skipped, none marked");
   EXPECT_EQ(stageNamed(*ps, "camera")->detail, "the file's vanishing points and back wall");
@@ -429,7 +440,8 @@ TEST(Engine, ASceneWithEveryLightLockedSkipsTheRefinementAndItsRefit) {
   EXPECT_EQ(lightRefinementRuns(), refinements);
   EXPECT_EQ(decompositionRuns(), decompositions + 1);
   EXPECT_EQ(describeStage(*stageNamed(*ps, "refine")), "refine: skipped, every light locked");
-  EXPECT_EQ(describeStage(*stageNamed(*ps, "lighting refit")), "lighting refit: skipped, the lights were not refined");
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "lighting refit")),
+            "lighting refit: skipped, the lights were not refined");
   EXPECT_EQ(describeStage(*stageNamed(*ps, "objects")), "objects: skipped, none inserted");
   EXPECT_TRUE(ps->refinement.history.empty());
   EXPECT_TRUE(ps->renderScene.objects.empty());

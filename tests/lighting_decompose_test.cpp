@@ -234,7 +234,7 @@ TEST(Decompose, WeightsSweptOverTwelveDecades) {
       DecomposeOptions o;
       (which == 0 ? o.g1 : which == 1 ? o.g2 : o.g3) = w;
       o.maxIterations = 300;
-          auto d = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
+      auto d = decomposeIntrinsic(l.B, l.gamma, rho0, l.valid, l.clipped, o);
       ASSERT_TRUE(d) << which << " " << w;
       SCOPED_TRACE(::testing::Message() << "weight " << which << " = " << w << ": " << d->report);
       expectFeasible(l, *d);
@@ -313,7 +313,9 @@ TEST(Decompose, LargePhotoIsSolvedOnBlocksAndStaysFeasible) {
   ASSERT_TRUE(d);
   EXPECT_NE(d->report.find("blocks of the 4000x3000 photo"), std::string::npos) << d->report;
   EXPECT_EQ(d->converged, d->report.rfind("converged", 0) == 0);
-  if (!d->converged) { EXPECT_NE(d->report.find("iteration cap"), std::string::npos) << d->report; }
+  if (!d->converged) {
+    EXPECT_NE(d->report.find("iteration cap"), std::string::npos) << d->report;
+  }
   expectFeasible(l, *d);
   // The cap rho <= B / Gamma alone pulls the too-bright start toward the truth.
   EXPECT_LT(mae(d->albedo, l.rhoTrue), mae(start, l.rhoTrue));

@@ -33,8 +33,8 @@ SyntheticRoom emptyRoom() {
   RoomBox box;
   box.xLeftM = -2.5, box.xRightM = 2.5, box.zBackM = -5.5, box.zRearM = 0.5, box.ceilingM = 2.7;
   r.geometry = buildSceneGeometry(box, {});
-  r.albedo = {Vec3(0.35, 0.3, 0.25), Vec3(0.8, 0.8, 0.8), Vec3(0.6, 0.55, 0.5),
-              Vec3(0.5, 0.6, 0.55), Vec3(0.7, 0.65, 0.6), Vec3(0.6, 0.6, 0.6)};
+  r.albedo = {Vec3(0.35, 0.3, 0.25), Vec3(0.8, 0.8, 0.8),  Vec3(0.6, 0.55, 0.5),
+              Vec3(0.5, 0.6, 0.55),  Vec3(0.7, 0.65, 0.6), Vec3(0.6, 0.6, 0.6)};
   return r;
 }
 
@@ -57,7 +57,8 @@ ImageF renderRoom(const SyntheticRoom& r, const std::vector<AreaLight>& lights,
 SyntheticRoom makeRoom(const Vec3& radiance, int spp) {
   SyntheticRoom r = emptyRoom();
   const double y = 2.699;
-  r.light.cornersWorld = {Vec3(-0.4, y, -3.4), Vec3(-0.4, y, -2.6), Vec3(0.4, y, -2.6), Vec3(0.4, y, -3.4)};
+  r.light.cornersWorld = {Vec3(-0.4, y, -3.4), Vec3(-0.4, y, -2.6), Vec3(0.4, y, -2.6),
+                          Vec3(0.4, y, -3.4)};
   if (r.light.normal().y() > 0) std::swap(r.light.cornersWorld[1], r.light.cornersWorld[3]);
   r.light.radiance = radiance;
   for (const Vec3& c : r.light.cornersWorld) r.lightOutlinePx.push_back(*r.camera.project(c));
@@ -68,9 +69,12 @@ SyntheticRoom makeRoom(const Vec3& radiance, int spp) {
 ImageF lightMaskOf(const SyntheticRoom& r) {
   ImageF m(r.photo.width, r.photo.height, 1, 0.f);
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-  for (const Vec2& p : r.lightOutlinePx) x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  for (const Vec2& p : r.lightOutlinePx)
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()),
+    y1 = std::max(y1, p.y());
   for (int y = std::max(0, int(y0) - 2); y <= std::min(r.photo.height - 1, int(y1) + 2); ++y)
-    for (int x = std::max(0, int(x0) - 2); x <= std::min(r.photo.width - 1, int(x1) + 2); ++x) m.at(x, y) = 1;
+    for (int x = std::max(0, int(x0) - 2); x <= std::min(r.photo.width - 1, int(x1) + 2); ++x)
+      m.at(x, y) = 1;
   return m;
 }
 
@@ -85,7 +89,8 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   LightingOptions opt;
   opt.gatherSamples = 64;
   opt.gatherStride = 2;
-  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, opt);
+  const auto est =
+      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, opt);
   ASSERT_TRUE(est.ok()) << est.error().message();
   // The per-surface fit is ill-conditioned along (albedo / k, light * k) where E and Gamma have
   // nearly the same shape (about 10% here); the decomposition and light refinement tighten it.
@@ -94,9 +99,10 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   }
   // Albedo per visible surface.
   for (size_t s = 0; s < r.albedo.size(); ++s) {
-    std::printf("%-12s albedo %.3f %.3f %.3f  true %.3f %.3f %.3f\n", r.geometry.surfaces[s].name.c_str(),
-                est->surfaceMeanAlbedo[s][0], est->surfaceMeanAlbedo[s][1], est->surfaceMeanAlbedo[s][2],
-                r.albedo[s][0], r.albedo[s][1], r.albedo[s][2]);
+    std::printf("%-12s albedo %.3f %.3f %.3f  true %.3f %.3f %.3f\n",
+                r.geometry.surfaces[s].name.c_str(), est->surfaceMeanAlbedo[s][0],
+                est->surfaceMeanAlbedo[s][1], est->surfaceMeanAlbedo[s][2], r.albedo[s][0],
+                r.albedo[s][1], r.albedo[s][2]);
     if (r.geometry.surfaces[s].kind == SurfaceKind::WallRear) continue;  // not seen
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(est->surfaceMeanAlbedo[s][c], r.albedo[s][c], 0.08)
@@ -107,16 +113,21 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   {
     RoomTracer rt(r.geometry);
     for (int sid : {0, 4, 1}) {
-      double sumB = 0, sumE = 0, sumG = 0; int n = 0;
-      for (int y = 0; y < 120; y += 3) for (int x = 0; x < 160; x += 3) {
-        const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)));
-        if (!h || h->surfaceId != sid) continue;
-        sumB += r.photo.at(x, y, 1) / r.albedo[sid][1];
-        sumE += trueRadiance[1] * rt.unitLightIrradianceOverPi(r.light, h->pointWorld + 1e-5 * h->normalWorld, h->normalWorld, 64, 1);
-        sumG += est->gathered.at(x, y, 1);
-        ++n;
-      }
-      std::printf("surface %d: B/rho %.4f  L*E %.4f  Gamma %.4f  (L*E+Gamma)/(B/rho) %.4f\n", sid, sumB / n, sumE / n, sumG / n, (sumE + sumG) / sumB);
+      double sumB = 0, sumE = 0, sumG = 0;
+      int n = 0;
+      for (int y = 0; y < 120; y += 3)
+        for (int x = 0; x < 160; x += 3) {
+          const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)));
+          if (!h || h->surfaceId != sid) continue;
+          sumB += r.photo.at(x, y, 1) / r.albedo[sid][1];
+          sumE += trueRadiance[1] * rt.unitLightIrradianceOverPi(r.light,
+                                                                 h->pointWorld + 1e-5 * h->normalWorld,
+                                                                 h->normalWorld, 64, 1);
+          sumG += est->gathered.at(x, y, 1);
+          ++n;
+        }
+      std::printf("surface %d: B/rho %.4f  L*E %.4f  Gamma %.4f  (L*E+Gamma)/(B/rho) %.4f\n", sid,
+                  sumB / n, sumE / n, sumG / n, (sumE + sumG) / sumB);
       EXPECT_NEAR((sumE + sumG) / sumB, 1.0, 0.03) << "surface " << sid;
     }
   }
@@ -184,7 +195,8 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
   const double x0 = -0.8, x1 = 0.8, y0 = 1.0, y1 = 2.2, zWall = r.geometry.box.zBackM + 1e-3;
   SunWindow out;
   AreaLight& window = out.window;
-  window.cornersWorld = {Vec3(x0, y0, zWall), Vec3(x1, y0, zWall), Vec3(x1, y1, zWall), Vec3(x0, y1, zWall)};
+  window.cornersWorld = {Vec3(x0, y0, zWall), Vec3(x1, y0, zWall), Vec3(x1, y1, zWall),
+                         Vec3(x0, y1, zWall)};
   if (window.normal().z() < 0) std::swap(window.cornersWorld[1], window.cornersWorld[3]);
   window.radiance = Vec3(2.5, 3.0, 3.5);
   SunLight& sun = out.sun;
@@ -209,8 +221,8 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
 
 // The lighting estimate of a room lit by `sun` alone (through its window): `samples` gather
 // rays a pixel on every second pixel, two threads.
-Expected<LightingEstimate> estimateSunRoom(const ImageF& photo, const SyntheticRoom& r, const SunLight& sun,
-                                           int samples) {
+Expected<LightingEstimate> estimateSunRoom(const ImageF& photo, const SyntheticRoom& r,
+                                           const SunLight& sun, int samples) {
   LightingOptions opt;
   opt.gatherSamples = samples;
   opt.gatherStride = 2;
@@ -253,10 +265,11 @@ TEST(Lighting, ClippedSunPatchDoesNotShareTheWindowsGain) {
     ASSERT_GT(v.size(), 500u);
     std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
     const double median = v[v.size() / 2];
-    std::printf("channel %d: clipped gain %.3f (true %.3f), floor albedo %.3f / surface %.3f "
-                "(true %.3f), sun %.3f (true %.3f)\n",
-                c, est->clippedGain[c], trueGain[c], median, est->surfaceMeanAlbedo[floor][c],
-                r.albedo[floor][c], est->suns[0].irradianceOverPi[c], sun.irradianceOverPi[c]);
+    std::printf(
+        "channel %d: clipped gain %.3f (true %.3f), floor albedo %.3f / surface %.3f "
+        "(true %.3f), sun %.3f (true %.3f)\n",
+        c, est->clippedGain[c], trueGain[c], median, est->surfaceMeanAlbedo[floor][c],
+        r.albedo[floor][c], est->suns[0].irradianceOverPi[c], sun.irradianceOverPi[c]);
     // With the fix the gain is 0.73-0.84 of the truth (the gather still undershoots the small
     // window); one gain shared with the patch was 0.50-0.58 of it.
     EXPECT_GT(est->clippedGain[c] / trueGain[c], 0.65) << "channel " << c;
@@ -307,14 +320,15 @@ TEST(Lighting, AClippedSunPatchsBounceTellsTheSunsStrength) {
   for (int y = 0; y < photo.height; ++y)
     for (int x = 0; x < photo.width; ++x) {
       const bool clipped = photo.rgb(x, y).maxCoeff() >= 0.98f;
-      if (!clipped || !(sun.litMask.at(x, y) > 0.f)) changedElsewhere += bounce.rgb(x, y) != photo.rgb(x, y);
+      if (!clipped || !(sun.litMask.at(x, y) > 0.f))
+        changedElsewhere += bounce.rgb(x, y) != photo.rgb(x, y);
       if (!clipped || !(sun.litMask.at(x, y) > 0.5f)) continue;
       ++patch;
       errPhoto += (photo.rgb(x, y) - r.photo.rgb(x, y)).norm();
       errModel += (bounce.rgb(x, y) - r.photo.rgb(x, y)).norm();
     }
-  std::printf("clipped patch: mean error of its radiance %.3f as clipped, %.3f modelled\n", errPhoto / patch,
-              errModel / patch);
+  std::printf("clipped patch: mean error of its radiance %.3f as clipped, %.3f modelled\n",
+              errPhoto / patch, errModel / patch);
   EXPECT_LT(errModel, 0.4 * errPhoto);
   EXPECT_EQ(changedElsewhere, 0);
   // The refinement keeps the strength by default; asked to solve it (against D, with the bounce
@@ -322,20 +336,20 @@ TEST(Lighting, AClippedSunPatchsBounceTellsTheSunsStrength) {
   // low in this room).
   LightRefineOptions ro;
   ro.sunBounce = est->sunBounce;
-  const auto kept = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid, {}, {},
-                                 est->suns, ro);
+  const auto kept = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid, {},
+                                 {}, est->suns, ro);
   ASSERT_TRUE(kept.ok()) << kept.error().message();
   EXPECT_EQ(kept->suns[0].irradianceOverPi, est->suns[0].irradianceOverPi);
   ro.refineSuns = true;
-  const auto solved = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid, {}, {},
-                                   est->suns, ro);
+  const auto solved = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid,
+                                   {}, {}, est->suns, ro);
   ASSERT_TRUE(solved.ok()) << solved.error().message();
   ASSERT_TRUE(solved->suns[0].irradianceOverPi.allFinite());
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(solved->suns[0].irradianceOverPi[c] / truth[c], 1.0, 0.4) << c;
   // A bounce image of the wrong size is named.
   ro.sunBounce = {ImageF(3, 3, 3, 0.f)};
-  const auto bad = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid, {}, {},
-                                est->suns, ro);
+  const auto bad = refineLights(r.camera, r.geometry, est->albedo, est->direct, est->decomposeValid, {},
+                                {}, est->suns, ro);
   ASSERT_FALSE(bad.ok());
   EXPECT_NE(bad.error().message().find("suns[0]"), std::string::npos);
 }
@@ -367,7 +381,8 @@ TEST(Lighting, TheLitPatchAgainstItsShadowTellsAClippedSunsStrength) {
       if (!h) continue;
       Vec3 a = r.albedo[size_t(h->surfaceId)];
       if (h->surfaceId == 0) {
-        const double u = std::fmod(h->pointWorld.x() + 10, 0.3), v = std::fmod(h->pointWorld.z() + 10, 0.3);
+        const double u = std::fmod(h->pointWorld.x() + 10, 0.3),
+                     v = std::fmod(h->pointWorld.z() + 10, 0.3);
         a = std::min(u, v) < 0.06 ? grout : tile;
       }
       scene.roomAlbedo.albedo.setRgb(x, y, a);
@@ -383,13 +398,14 @@ TEST(Lighting, TheLitPatchAgainstItsShadowTellsAClippedSunsStrength) {
   ASSERT_TRUE(est.ok()) << est.error().message();
   SunRatioOptions ro;
   ro.minPixels = 60;
-  const auto ratio = sunStrengthFromShadowRatio(photo, r.camera, r.geometry, est->gathered, {}, est->suns[0], ro);
+  const auto ratio =
+      sunStrengthFromShadowRatio(photo, r.camera, r.geometry, est->gathered, {}, est->suns[0], ro);
   ASSERT_TRUE(ratio.ok()) << ratio.error().message();
   double errEstimate = 0, errRatio = 0;
   for (int c = 0; c < 3; ++c) {
-    std::printf("channel %d: estimate %.3f, ratio %.3f (%d lit, %d shadowed, %g quantiles), true %.3f\n", c,
-                est->suns[0].irradianceOverPi[c], ratio->strength[c], ratio->litPixels, ratio->shadowPixels,
-                ratio->quantilesUsed[c], truth[c]);
+    std::printf("channel %d: estimate %.3f, ratio %.3f (%d lit, %d shadowed, %g quantiles), true %.3f\n",
+                c, est->suns[0].irradianceOverPi[c], ratio->strength[c], ratio->litPixels,
+                ratio->shadowPixels, ratio->quantilesUsed[c], truth[c]);
     errEstimate += std::abs(est->suns[0].irradianceOverPi[c] / truth[c] - 1) / 3;
     errRatio += std::abs(ratio->strength[c] / truth[c] - 1) / 3;
     EXPECT_NEAR(ratio->strength[c] / truth[c], 1.0, 0.12) << "channel " << c;
@@ -401,7 +417,8 @@ TEST(Lighting, TheLitPatchAgainstItsShadowTellsAClippedSunsStrength) {
   const auto none = sunStrengthFromShadowRatio(photo, r.camera, r.geometry, est->gathered, {}, away, ro);
   ASSERT_FALSE(none.ok());
   EXPECT_NE(none.error().message().find("suns"), std::string::npos);
-  EXPECT_FALSE(sunStrengthFromShadowRatio(photo, r.camera, r.geometry, ImageF(3, 3, 3, 0.f), {}, away, ro).ok());
+  EXPECT_FALSE(
+      sunStrengthFromShadowRatio(photo, r.camera, r.geometry, ImageF(3, 3, 3, 0.f), {}, away, ro).ok());
 }
 
 // A ceiling light behind the camera, pale walls: most of the light on what the camera sees has
@@ -432,9 +449,9 @@ BehindCameraResult estimateBehindCamera(const SyntheticRoom& r, const AreaLight&
       for (int x = 0; x < r.photo.width; x += 3) {
         const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)));
         if (!h || h->surfaceId != sid) continue;
-        const double le = trueLight.radiance[1] * rt.unitLightIrradianceOverPi(
-                                                      trueLight, h->pointWorld + 1e-5 * h->normalWorld,
-                                                      h->normalWorld, 64, 1);
+        const double le = trueLight.radiance[1] *
+                          rt.unitLightIrradianceOverPi(trueLight, h->pointWorld + 1e-5 * h->normalWorld,
+                                                       h->normalWorld, 64, 1);
         trueGamma += r.photo.at(x, y, 1) / r.albedo[size_t(sid)][1] - le;
         estGamma += est->gathered.at(x, y, 1);
         ++n;
@@ -453,7 +470,7 @@ BehindCameraResult estimateBehindCamera(const SyntheticRoom& r, const AreaLight&
 
 TEST(Lighting, ALightBehindTheCameraGathersWhatThePhotoImplies) {
   SyntheticRoom r = emptyRoom();
-  r.albedo = {Vec3(0.3, 0.3, 0.3), Vec3(0.8, 0.8, 0.8), Vec3(0.78, 0.78, 0.78),
+  r.albedo = {Vec3(0.3, 0.3, 0.3),    Vec3(0.8, 0.8, 0.8),    Vec3(0.78, 0.78, 0.78),
               Vec3(0.78, 0.78, 0.78), Vec3(0.78, 0.78, 0.78), Vec3(0.78, 0.78, 0.78)};
   AreaLight light;
   const double y = 2.699;  // between the camera (z = 0) and the wall behind it (z = 0.5)
@@ -527,10 +544,12 @@ TEST(Lighting, OutlinesThatCannotBeLightsAreNamed) {
   auto two = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(20, 10)}, "lights[3].points");
   ASSERT_FALSE(two.ok());
   EXPECT_NE(two.error().message().find("lights[3].points"), std::string::npos);
-  auto flat = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(20, 10), Vec2(30, 10)}, "lights[0].points");
+  auto flat = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(20, 10), Vec2(30, 10)},
+                               "lights[0].points");
   ASSERT_FALSE(flat.ok());
   EXPECT_NE(flat.error().message().find("no area"), std::string::npos);
-  auto nan = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(std::nan(""), 10), Vec2(30, 20)}, "lights[0].points");
+  auto nan = lightFromOutline(r.camera, r.geometry, {Vec2(10, 10), Vec2(std::nan(""), 10), Vec2(30, 20)},
+                              "lights[0].points");
   EXPECT_FALSE(nan.ok());
 }
 
@@ -550,8 +569,9 @@ TEST(Lighting, AnOutlineOffItsWallSaysWhichPointAndWhatToDrag) {
   EXPECT_EQ(l.error().key, "lights[0].points");
   EXPECT_EQ(m.find("the outline lies behind the camera"), std::string::npos);
   for (const std::string& words :
-       {std::string("point 3 (100, 70) lies on the back wall"), std::string("most of the outline lies on the left wall"),
-        std::string("only behind the camera"), std::string("drag the back wall's bottom-left corner at (")})
+       {std::string("point 3 (100, 70) lies on the back wall"),
+        std::string("most of the outline lies on the left wall"), std::string("only behind the camera"),
+        std::string("drag the back wall's bottom-left corner at (")})
     EXPECT_NE(m.find(words), std::string::npos) << m;
   const Vec2 bl = backWallCornersPx(r.camera, r.geometry.box)[3];
   char at[64];
@@ -580,7 +600,8 @@ TEST(Lighting, FitResidualIsLowestForTheTrueRadiance) {
   const ImageF mask = lightMaskOf(r);
   auto residualOf = [&](double power, double scale) {
     ImageF photo = r.photo;
-    for (float& v : photo.data) v = float(scale * std::pow(std::max(v, 0.f) / 0.9f, float(power)) * 0.9f);
+    for (float& v : photo.data)
+      v = float(scale * std::pow(std::max(v, 0.f) / 0.9f, float(power)) * 0.9f);
     auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
     EXPECT_TRUE(light.ok());
     const auto est = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
@@ -610,14 +631,16 @@ TEST(Lighting, ResidualShowsTheVignettingPutOnAPhoto) {
     const double cx = photo.width / 2.0, cy = photo.height / 2.0;
     for (int y = 0; y < photo.height; ++y)
       for (int x = 0; x < photo.width; ++x) {
-        const double r2 = ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy)) / (cx * cx + cy * cy);
+        const double r2 = ((x + 0.5 - cx) * (x + 0.5 - cx) + (y + 0.5 - cy) * (y + 0.5 - cy)) /
+                          (cx * cx + cy * cy);
         for (int c = 0; c < 3; ++c) photo.at(x, y, c) *= float(1 - v * r2);
       }
     auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
     EXPECT_TRUE(light.ok());
     const auto est = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
     EXPECT_TRUE(est.ok());
-    return est.ok() ? std::make_pair(est->vignetting, est->vignettingResidualRatio) : std::make_pair(-1.0, -1.0);
+    return est.ok() ? std::make_pair(est->vignetting, est->vignettingResidualRatio)
+                    : std::make_pair(-1.0, -1.0);
   };
   const auto none = estimateOf(0), strong = estimateOf(0.35);
   std::printf("vignetting: none -> %.2f (residual x %.3f), 0.35 -> %.2f (residual x %.3f)\n", none.first,

@@ -22,21 +22,24 @@ SceneGeometry cubeRoom(double halfM, double heightM) {
 double cornerViewFactor(double a, double b, double c) {
   const double A = a / c, B = b / c;
   return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
-          B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) / (2 * M_PI);
+          B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
+         (2 * M_PI);
 }
 
 TEST(Gather, ClosedRoomOfConstantRadiance) {
   const SceneGeometry g = cubeRoom(2, 2.5);
   RoomTracer tracer(g);
   const RadianceAt constant = [](const SurfaceHit&, uint32_t) { return Vec3(0.5, 0.25, 0.125); };
-  const GatherSample s = gatherIrradianceOverPi(tracer, Vec3(0.3, 0, -0.7), Vec3(0, 1, 0), 64, 17, 7, constant);
+  const GatherSample s =
+      gatherIrradianceOverPi(tracer, Vec3(0.3, 0, -0.7), Vec3(0, 1, 0), 64, 17, 7, constant);
   EXPECT_EQ(s.rays, 64);
   EXPECT_NEAR(s.mean.x(), 0.5, 1e-12);
   EXPECT_NEAR(s.mean.z(), 0.125, 1e-12);
   EXPECT_NEAR(s.standardError.norm(), 0, 1e-9);
   // No spread: the fewest samples.
   GatherSampleCountOptions o;
-  EXPECT_EQ(gatherSamplesForNoise(tracer, {{Vec3(0, 0, 0), Vec3(0, 1, 0)}}, 7, constant, o), o.minSamples);
+  EXPECT_EQ(gatherSamplesForNoise(tracer, {{Vec3(0, 0, 0), Vec3(0, 1, 0)}}, 7, constant, o),
+            o.minSamples);
 }
 
 TEST(Gather, CeilingViewFactorFromTheFloorCentre) {
@@ -44,10 +47,12 @@ TEST(Gather, CeilingViewFactorFromTheFloorCentre) {
   const SceneGeometry g = cubeRoom(half, h);
   RoomTracer tracer(g);
   const RadianceAt ceilingOnly = [&](const SurfaceHit& hit, uint32_t) {
-    return g.surfaces[size_t(hit.surfaceId)].kind == SurfaceKind::Ceiling ? Vec3(1, 1, 1) : Vec3(0, 0, 0);
+    return g.surfaces[size_t(hit.surfaceId)].kind == SurfaceKind::Ceiling ? Vec3(1, 1, 1)
+                                                                          : Vec3(0, 0, 0);
   };
   const double truth = 4 * cornerViewFactor(half, half, h);
-  const GatherSample s = gatherIrradianceOverPi(tracer, Vec3(0, 0, 0), Vec3(0, 1, 0), 1024, 3, 7, ceilingOnly);
+  const GatherSample s =
+      gatherIrradianceOverPi(tracer, Vec3(0, 0, 0), Vec3(0, 1, 0), 1024, 3, 7, ceilingOnly);
   EXPECT_NEAR(s.mean.y(), truth, 0.01) << "se " << s.standardError.y();
   EXPECT_GT(s.standardError.y(), 0);
   // Stratification: the error is well within the independent-sample bound.
@@ -57,7 +62,8 @@ TEST(Gather, CeilingViewFactorFromTheFloorCentre) {
   loose.relativeNoise = 0.2;
   tight.relativeNoise = 0.05;
   tight.maxSamples = 4096;
-  const std::vector<std::pair<Vec3, Vec3>> pts{{Vec3(0, 0, 0), Vec3(0, 1, 0)}, {Vec3(1, 0, 1), Vec3(0, 1, 0)}};
+  const std::vector<std::pair<Vec3, Vec3>> pts{{Vec3(0, 0, 0), Vec3(0, 1, 0)},
+                                               {Vec3(1, 0, 1), Vec3(0, 1, 0)}};
   const int nLoose = gatherSamplesForNoise(tracer, pts, 7, ceilingOnly, loose);
   const int nTight = gatherSamplesForNoise(tracer, pts, 7, ceilingOnly, tight);
   EXPECT_LT(nLoose, nTight);
@@ -111,7 +117,8 @@ TEST(SurfacePatches, RadiositySweepsMatchTheFurnace) {
     std::vector<Vec3> next(P.point.size());
     for (size_t i = 0; i < P.point.size(); ++i)
       next[i] = gatherIrradianceOverPi(tracer, P.point[i] + 1e-4 * P.normal[i], P.normal[i], 16,
-                                       uint32_t(i), 1, radiance).mean;
+                                       uint32_t(i), 1, radiance)
+                    .mean;
     P.gamma = next;
     const double expect = Le * (1 - std::pow(rho, sweep)) / (1 - rho);
     for (size_t i = 0; i < P.gamma.size(); ++i)

@@ -20,8 +20,8 @@ const test::RefineRoom& room() {
 
 bool insideRoom(const AreaLight& L, const RoomBox& b) {
   for (const Vec3& p : L.cornersWorld)
-    if (!(p.x() >= b.xLeftM && p.x() <= b.xRightM && p.y() >= 0 && p.y() <= b.ceilingM && p.z() >= b.zBackM &&
-          p.z() <= b.zRearM))
+    if (!(p.x() >= b.xLeftM && p.x() <= b.xRightM && p.y() >= 0 && p.y() <= b.ceilingM &&
+          p.z() >= b.zBackM && p.z() <= b.zRearM))
       return false;
   return true;
 }
@@ -104,7 +104,8 @@ TEST(LightRefine, ALockedLightKeepsPositionAndIntensity) {
   specs[0].lock = true;
   auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, specs);
   ASSERT_TRUE(res.ok());
-  for (int k = 0; k < 4; ++k) EXPECT_EQ(res->lights[0].cornersWorld[size_t(k)], start[0].cornersWorld[size_t(k)]);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(res->lights[0].cornersWorld[size_t(k)], start[0].cornersWorld[size_t(k)]);
   EXPECT_EQ(res->lights[0].radiance, start[0].radiance);
   EXPECT_GT((res->lights[1].centre() - start[1].centre()).norm(), 1e-3);
 }
@@ -112,7 +113,7 @@ TEST(LightRefine, ALockedLightKeepsPositionAndIntensity) {
 TEST(LightRefine, LightsOutsideOrAgainstTheWallsEndInsideTheRoom) {
   const auto& r = room();
   auto start = r.truth;
-  for (auto& c : start[0].cornersWorld) c += Vec3(-3.0, 1.0, 0);  // through the left wall and ceiling
+  for (auto& c : start[0].cornersWorld) c += Vec3(-3.0, 1.0, 0);     // through the left wall and ceiling
   for (auto& c : start[1].cornersWorld) c.x() += 2.5 - 1.45 - 1e-4;  // its edge on the right wall
   auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, {});
   ASSERT_TRUE(res.ok()) << res.error().message();
@@ -124,7 +125,9 @@ TEST(LightRefine, LightsOutsideOrAgainstTheWallsEndInsideTheRoom) {
 
 // The edge scale factors of `L` against `ref` (same corner order): |c1 - c0| and |c3 - c0|.
 Vec2 edgeRatio(const AreaLight& L, const AreaLight& ref) {
-  auto edge = [](const AreaLight& a, int k) { return (a.cornersWorld[size_t(k)] - a.cornersWorld[0]).norm(); };
+  auto edge = [](const AreaLight& a, int k) {
+    return (a.cornersWorld[size_t(k)] - a.cornersWorld[0]).norm();
+  };
   return Vec2(edge(L, 1) / edge(ref, 1), edge(L, 3) / edge(ref, 3));
 }
 
@@ -144,7 +147,8 @@ TEST(LightRefine, ALightDrawnTooSmallGrowsBackWhenItsSizeIsRefined) {
   auto sized = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, specs, {}, o);
   ASSERT_TRUE(sized.ok()) << sized.error().message();
   ASSERT_TRUE(finiteLights(*sized));
-  const Vec2 grown = edgeRatio(sized->lights[0], r.truth[0]), other = edgeRatio(sized->lights[1], r.truth[1]);
+  const Vec2 grown = edgeRatio(sized->lights[0], r.truth[0]),
+             other = edgeRatio(sized->lights[1], r.truth[1]);
   std::printf("light 0 edges %.3f %.3f of the truth (start 0.6), light 1 %.3f %.3f; %.2f s\n", grown.x(),
               grown.y(), other.x(), other.y(), sized->seconds);
   for (int a = 0; a < 2; ++a) {
@@ -199,7 +203,8 @@ TEST(LightRefine, ABlackPhotoOrALightThatLightsNothingGivesFiniteLightsAndANote)
   auto res = refineLights(r.camera, r.geometry, r.albedo, black, {}, r.truth, {});
   ASSERT_TRUE(res.ok());
   ASSERT_TRUE(finiteLights(*res));
-  for (size_t j = 0; j < 2; ++j) EXPECT_LT(res->lights[j].radiance.maxCoeff(), 1e-2 * r.truth[j].radiance.maxCoeff());
+  for (size_t j = 0; j < 2; ++j)
+    EXPECT_LT(res->lights[j].radiance.maxCoeff(), 1e-2 * r.truth[j].radiance.maxCoeff());
   EXPECT_FALSE(res->notes.empty());
   // Against the wall behind the camera, facing it: no pixel of the photo sees its light.
   auto up = r.truth;
@@ -246,7 +251,8 @@ TEST(LightRefine, AnOutlineOnNothingIsNamedAndOneAcrossAnEdgeLandsInTheRoom) {
   SceneGeometry open = r.geometry;
   open.surfaces.erase(std::remove_if(open.surfaces.begin(), open.surfaces.end(),
                                      [](const Surface& s) {
-                                       return s.kind == SurfaceKind::Ceiling || s.kind == SurfaceKind::WallBack;
+                                       return s.kind == SurfaceKind::Ceiling ||
+                                              s.kind == SurfaceKind::WallBack;
                                      }),
                       open.surfaces.end());
   std::vector<Vec2> sky;
@@ -289,7 +295,8 @@ TEST(LightRefine, MarkedSurfacesAreLeftOutOfTheFit) {
   int shown = 0;
   for (int y = 0; y < direct.height; ++y)
     for (int x = 0; x < direct.width; ++x) {
-      const Vec2 pc((x + 0.5) * r.camera.widthPx / direct.width, (y + 0.5) * r.camera.heightPx / direct.height);
+      const Vec2 pc((x + 0.5) * r.camera.widthPx / direct.width,
+                    (y + 0.5) * r.camera.heightPx / direct.height);
       const auto h = tracer.intersect(r.camera.rayThroughPixel(pc), 1e-6);
       if (h && h->surfaceId == wall) direct.setRgb(x, y, 2.5 * direct.rgb(x, y)), ++shown;
     }

@@ -61,13 +61,18 @@ struct Saver {
 
 std::vector<Saver> savers() {
   return {
-      {"bytes.txt", [](const std::string& p, int v) {
+      {"bytes.txt",
+       [](const std::string& p, int v) {
          return writeFileAtomically(p, std::string(v ? 300'000 : 1000, v ? 'n' : 'o'));
        }},
-      {"scene.json", [](const std::string& p, int v) { return saveSceneFile(p, sceneWithObjects(v ? 400 : 1)); }},
-      {"image.png", [](const std::string& p, int v) { return saveImage(p, noise(v ? 160 : 8, v ? 120 : 8, 1 + v)); }},
-      {"image.tif", [](const std::string& p, int v) { return saveImage(p, noise(v ? 160 : 8, v ? 120 : 8, 1 + v)); }},
-      {"image.exr", [](const std::string& p, int v) {
+      {"scene.json",
+       [](const std::string& p, int v) { return saveSceneFile(p, sceneWithObjects(v ? 400 : 1)); }},
+      {"image.png",
+       [](const std::string& p, int v) { return saveImage(p, noise(v ? 160 : 8, v ? 120 : 8, 1 + v)); }},
+      {"image.tif",
+       [](const std::string& p, int v) { return saveImage(p, noise(v ? 160 : 8, v ? 120 : 8, 1 + v)); }},
+      {"image.exr",
+       [](const std::string& p, int v) {
          return saveImage(p, noise(v ? 160 : 8, v ? 120 : 8, 1 + v), {.exrHalf = false});
        }},
   };
@@ -154,8 +159,9 @@ TEST(AtomicSave, KilledMidSaveLeavesOldOrNew) {
   for (int round = 0; round < rounds; ++round) {
     ASSERT_TRUE(writeFileAtomically(dest.string(), oldBytes).ok());
     test::ChildProcess child;
-    ASSERT_TRUE(child.start({}, {std::string(kChildEnv) + "=" + std::to_string(newBytes.size()) +
-                                 ":" + dest.string()}, false));
+    ASSERT_TRUE(child.start(
+        {}, {std::string(kChildEnv) + "=" + std::to_string(newBytes.size()) + ":" + dest.string()},
+        false));
     const std::string tempPrefix = ".user.inlay-tmp-" + std::to_string(child.pid()) + "-";
     auto childSaving = [&] {
       std::error_code ec;
@@ -179,8 +185,10 @@ TEST(AtomicSave, KilledMidSaveLeavesOldOrNew) {
     sawOld += isOld;
     sawNew += isNew;
   }
-  std::printf("[ atomic ] after %d kills mid-save the file was old %d times, new %d times; "
-              "%zu files in the folder\n", rounds, sawOld, sawNew, countFiles(dir));
+  std::printf(
+      "[ atomic ] after %d kills mid-save the file was old %d times, new %d times; "
+      "%zu files in the folder\n",
+      rounds, sawOld, sawNew, countFiles(dir));
   EXPECT_GT(sawNew, 0);  // odd rounds kill after the first save replaced the file
   // The kills leave temporaries of dead processes; the next save removes them.
   ASSERT_TRUE(writeFileAtomically(dest.string(), "final").ok());

@@ -27,8 +27,8 @@ double angleDeg(const Vec3& a, const Vec3& b) {
 // Far vanishing points as the harness writes them: a huge coordinate along the direction.
 Vec2 vpOf(const json& v, const Vec2& principal) {
   if (v["finite"].get<bool>()) return {v["pixel"][0].get<double>(), v["pixel"][1].get<double>()};
-  return principal + 1e7 * Vec2(v["image_direction"][0].get<double>(),
-                                v["image_direction"][1].get<double>());
+  return principal +
+         1e7 * Vec2(v["image_direction"][0].get<double>(), v["image_direction"][1].get<double>());
 }
 
 TEST(Camera, MatchesGroundTruthOfEverySceneFromVanishingPointsAlone) {
@@ -42,7 +42,8 @@ TEST(Camera, MatchesGroundTruthOfEverySceneFromVanishingPointsAlone) {
     in.widthPx = t["image"]["width"];
     in.heightPx = t["image"]["height"];
     in.heightM = cam["height_above_floor"];
-    const Vec2 pp(cam["principal_point_px"][0].get<double>(), cam["principal_point_px"][1].get<double>());
+    const Vec2 pp(cam["principal_point_px"][0].get<double>(),
+                  cam["principal_point_px"][1].get<double>());
     const auto& vps = t["vanishing_points"];
     in.vanishingPointsPx = {vpOf(vps["x"], pp), vpOf(vps["y"], pp), vpOf(vps["z"], pp)};
     // No focal length given: it must come from the vanishing points.
@@ -83,7 +84,8 @@ TEST(Room, BackWallCornersOfEverySceneGiveTheTrueBox) {
     c.widthPx = t["image"]["width"];
     c.heightPx = t["image"]["height"];
     c.focalPx = cam["focal_px"];
-    c.principalPx = {cam["principal_point_px"][0].get<double>(), cam["principal_point_px"][1].get<double>()};
+    c.principalPx = {cam["principal_point_px"][0].get<double>(),
+                     cam["principal_point_px"][1].get<double>()};
     for (int r = 0; r < 3; ++r)
       for (int k = 0; k < 3; ++k) c.worldFromCamera(r, k) = cam["R_cam_to_world_opengl"][r][k];
     c.heightM = cam["height_above_floor"];
@@ -122,11 +124,14 @@ Vec2 vpPixel(const Camera& c, const Vec3& axis) {
 }
 
 TEST(Camera, StableWithVanishingPointsAtInfinityAndRoll) {
-  struct Case { double yaw, pitch, roll, f; bool giveFocal; };
+  struct Case {
+    double yaw, pitch, roll, f;
+    bool giveFocal;
+  };
   // yaw 0, pitch 0: x and y vanishing points at infinity (frontal wall, level camera).
-  for (const Case& k : {Case{0, 0, 0, 500, true}, Case{20, -10, 0, 500, false},
-                        Case{-35, 8, 15, 300, false}, Case{10, -5, -30, 2500, false},
-                        Case{30, -20, 5, 150, false}, Case{0, -15, 0, 600, true}}) {
+  for (const Case& k :
+       {Case{0, 0, 0, 500, true}, Case{20, -10, 0, 500, false}, Case{-35, 8, 15, 300, false},
+        Case{10, -5, -30, 2500, false}, Case{30, -20, 5, 150, false}, Case{0, -15, 0, 600, true}}) {
     const Camera truth = syntheticCamera(k.yaw, k.pitch, k.roll, k.f);
     VanishingInput in;
     in.widthPx = 640;
@@ -187,7 +192,11 @@ TEST(Extrusion, HeightBySingleViewMetrologyAndPlacementOnTop) {
     EXPECT_TRUE(found);
   }
   RoomBox box;
-  box.xLeftM = -3; box.xRightM = 3; box.zBackM = -6; box.zRearM = 0.5; box.ceilingM = 2.7;
+  box.xLeftM = -3;
+  box.xRightM = 3;
+  box.zBackM = -6;
+  box.zRearM = 0.5;
+  box.ceilingM = 2.7;
   const SceneGeometry g = buildSceneGeometry(box, {*ex});
   const TriangleMesh cube = makeCube();
   const auto p = placeObject(cube, g, c, *c.project(Vec3(0.1, h, -3.0)), 0.2, 30, "objects[0]");

@@ -68,7 +68,9 @@ Camera makeCamera(int w, int h, double f, double yawDeg, double pitchDeg, double
   return c;
 }
 
-struct Seg3 { Vec3 a, b; };
+struct Seg3 {
+  Vec3 a, b;
+};
 
 // A 5 m x 2.7 m room, back wall 5 m ahead (camera at x = z = 0), with floor tiles, a door on
 // the back wall and a window on the left wall: lines in all three directions.
@@ -208,12 +210,16 @@ TEST(EstimateCamera, SrgbCodeTableMatchesTheCurveEverywhere) {
 // which the detector's fit to integer edge pixels alone does not reach (sub-pixel refinement in
 // lines.cpp; without it the worst angle error here is 0.12 deg and the worst offset 0.35 px).
 TEST(EstimateCamera, DetectedSegmentsLieOnTheEdgesToASubPixel) {
-  struct Square { Vec2 c; double half, turnDeg; };
+  struct Square {
+    Vec2 c;
+    double half, turnDeg;
+  };
   const Square squares[2] = {{{110, 120}, 70, 7.3}, {{300, 150}, 60, 31.0}};
   auto inside = [&](const Square& q, double x, double y) {
     const double a = q.turnDeg * kDeg;
     const Vec2 d(x - q.c.x(), y - q.c.y());
-    const double u = std::cos(a) * d.x() + std::sin(a) * d.y(), v = -std::sin(a) * d.x() + std::cos(a) * d.y();
+    const double u = std::cos(a) * d.x() + std::sin(a) * d.y(),
+                 v = -std::sin(a) * d.x() + std::cos(a) * d.y();
     return std::abs(u) <= q.half && std::abs(v) <= q.half;
   };
   ImageF im(400, 300, 3);
@@ -242,7 +248,8 @@ TEST(EstimateCamera, DetectedSegmentsLieOnTheEdgesToASubPixel) {
       const LineSegment* best = nullptr;
       for (const LineSegment& s : dl.segments) {
         const double da = std::abs((s.aPx - p0).dot(normal)), db = std::abs((s.bPx - p0).dot(normal));
-        if (da < 2 && db < 2 && s.lengthPx() > 0.5 * q.half && (!best || s.lengthPx() > best->lengthPx()))
+        if (da < 2 && db < 2 && s.lengthPx() > 0.5 * q.half &&
+            (!best || s.lengthPx() > best->lengthPx()))
           best = &s;
       }
       if (!best) continue;
@@ -365,12 +372,14 @@ TEST(EstimateCamera, TeleIsFiniteAndHonestAboutFocal) {
   ASSERT_TRUE(e.ok()) << e.error().message();
   expectSane(*e);
   const bool focalRight = std::abs(e->camera.focalPx / truth.focalPx - 1) < 0.1;
-  const bool honest = e->focalFromPrior || (e->focalMinPx <= truth.focalPx && truth.focalPx <= e->focalMaxPx);
-  EXPECT_TRUE(focalRight || honest) << "f " << e->camera.focalPx << " in [" << e->focalMinPx
-                                     << ", " << e->focalMaxPx << "]";
+  const bool honest = e->focalFromPrior ||
+                      (e->focalMinPx <= truth.focalPx && truth.focalPx <= e->focalMaxPx);
+  EXPECT_TRUE(focalRight || honest) << "f " << e->camera.focalPx << " in [" << e->focalMinPx << ", "
+                                    << e->focalMaxPx << "]";
   // Up is still up.
-  EXPECT_LT(angleDeg(e->camera.worldFromCamera.row(1).transpose(),
-                     truth.worldFromCamera.row(1).transpose()), 3.0);
+  EXPECT_LT(
+      angleDeg(e->camera.worldFromCamera.row(1).transpose(), truth.worldFromCamera.row(1).transpose()),
+      3.0);
 }
 
 TEST(EstimateCamera, TenSegmentsGiveAnHonestAnswer) {
@@ -656,7 +665,7 @@ TEST(EstimateCamera, CeilingOutOfViewFollowsTheVisibleFloorCrease) {
   const Camera truth = makeCamera(640, 480, 350, 3, -24, 0);
   const auto wall = trueBackWall(truth, zb, hc);
   ASSERT_LT(std::max(wall[0].y(), wall[1].y()), -20.0);  // the top edge is out of view
-  for (int i = 2; i < 4; ++i)                             // the floor crease in view
+  for (int i = 2; i < 4; ++i)                            // the floor crease in view
     ASSERT_TRUE(wall[i].x() > 0 && wall[i].x() < 640 && wall[i].y() > 0 && wall[i].y() < 480);
   EstimateOptions o;
   o.cameraHeightM = truth.heightM;
@@ -665,8 +674,8 @@ TEST(EstimateCamera, CeilingOutOfViewFollowsTheVisibleFloorCrease) {
   expectSane(*e);
   for (int i = 2; i < 4; ++i) EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 3.0) << i;
   for (int i = 0; i < 2; ++i)
-    EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 8.0) << i << ": " << e->backWallPx[i].transpose()
-                                                        << " vs " << wall[i].transpose();
+    EXPECT_LT((e->backWallPx[i] - wall[i]).norm(), 8.0)
+        << i << ": " << e->backWallPx[i].transpose() << " vs " << wall[i].transpose();
 }
 
 TEST(EstimateCamera, BadInputAndCancellation) {

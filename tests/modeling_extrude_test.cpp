@@ -73,8 +73,9 @@ TEST(Extrude, BadOutlinesAreRefusedWithTheKey) {
   expectError(extrusionFromOutline(c, {t.outline[0], t.outline[1]}, t.click, "surfaces[2]"),
               "surfaces[2].outline_px", "at least 3 distinct points");
   // Repeated points do not count as distinct.
-  expectError(extrusionFromOutline(c, {t.outline[0], t.outline[1], t.outline[1]}, t.click, "surfaces[0]"),
-              "surfaces[0].outline_px", "at least 3 distinct points");
+  expectError(
+      extrusionFromOutline(c, {t.outline[0], t.outline[1], t.outline[1]}, t.click, "surfaces[0]"),
+      "surfaces[0].outline_px", "at least 3 distinct points");
   const Vec2 mid = 0.5 * (t.outline[0] + t.outline[1]), far = 2.0 * t.outline[1] - t.outline[0];
   expectError(extrusionFromOutline(c, {t.outline[0], mid, t.outline[1], far}, t.click, "surfaces[1]"),
               "surfaces[1].outline_px", "one line");
@@ -105,8 +106,8 @@ TEST(Extrude, EitherOrientationGivesTheSameClosedSolid) {
   }
   // A concave (L-shaped) top: the triangles cover exactly its area.
   const double h = 0.75;
-  std::vector<Vec3> L = {{-0.5, h, -3.3}, {0.5, h, -3.3}, {0.5, h, -3.0}, {0.0, h, -3.0},
-                         {0.0, h, -2.7}, {-0.5, h, -2.7}};
+  std::vector<Vec3> L = {{-0.5, h, -3.3}, {0.5, h, -3.3}, {0.5, h, -3.0},
+                         {0.0, h, -3.0},  {0.0, h, -2.7}, {-0.5, h, -2.7}};
   std::vector<Vec2> lpx;
   for (const auto& p : L) lpx.push_back(*c.project(p));
   const auto l = extrusionFromOutline(c, lpx, t.click, "surfaces[0]");
@@ -286,12 +287,13 @@ TEST(Stairs, ObjectsStandOnAnyStep) {
 // Three steps (rise 0.25, run 0.4) drawn on the left wall (x = -3), climbing toward -z from
 // z = -4.2, as a user clicks them: each corner projected, off by up to a pixel.
 std::vector<Vec2> drawnLeftWallProfile(const Camera& c) {
-  const std::vector<Vec2> zy = {{-4.2, 0},    {-4.2, 0.25}, {-4.6, 0.25}, {-4.6, 0.5},
-                                {-5.0, 0.5},  {-5.0, 0.75}, {-5.4, 0.75}, {-5.4, 0}};
-  const Vec2 jitter[8] = {{0.6, -0.8}, {-0.9, 0.4}, {0.3, 0.9}, {-0.5, -0.7},
+  const std::vector<Vec2> zy = {{-4.2, 0},   {-4.2, 0.25}, {-4.6, 0.25}, {-4.6, 0.5},
+                                {-5.0, 0.5}, {-5.0, 0.75}, {-5.4, 0.75}, {-5.4, 0}};
+  const Vec2 jitter[8] = {{0.6, -0.8}, {-0.9, 0.4},  {0.3, 0.9}, {-0.5, -0.7},
                           {0.8, 0.2},  {-0.2, -0.9}, {0.7, 0.6}, {-0.6, 0.3}};
   std::vector<Vec2> px;
-  for (size_t i = 0; i < zy.size(); ++i) px.push_back(*c.project(Vec3(-3, zy[i].y(), zy[i].x())) + jitter[i]);
+  for (size_t i = 0; i < zy.size(); ++i)
+    px.push_back(*c.project(Vec3(-3, zy[i].y(), zy[i].x())) + jitter[i]);
   return px;
 }
 
@@ -342,7 +344,8 @@ TEST(Stairs, BadProfilesAreRefusedWithTheKey) {
   expectProfileError(c, sp, "surfaces[0].profile_px", "at least 3 points");
   // Drawn on the floor, not on a wall.
   sp.profilePx.clear();
-  for (const Vec3& p : {Vec3(0, 0, -3), Vec3(0.5, 0, -3), Vec3(0.5, 0, -3.5)}) sp.profilePx.push_back(*c.project(p));
+  for (const Vec3& p : {Vec3(0, 0, -3), Vec3(0.5, 0, -3), Vec3(0.5, 0, -3.5)})
+    sp.profilePx.push_back(*c.project(p));
   expectProfileError(c, sp, "surfaces[0].profile_px", "not on a wall");
   // High on the wall: above the horizon (the camera is 1.5 m up), it cannot reach the floor.
   sp.profilePx.clear();
@@ -507,7 +510,8 @@ TEST(Extrude, TableTopOfTheTableSceneMatchesTruth) {
   in.principalPx = pp;
   auto vp = [&](const json& v) {
     if (v["finite"].get<bool>()) return Vec2(v["pixel"][0].get<double>(), v["pixel"][1].get<double>());
-    return Vec2(pp + 1e7 * Vec2(v["image_direction"][0].get<double>(), v["image_direction"][1].get<double>()));
+    return Vec2(
+        pp + 1e7 * Vec2(v["image_direction"][0].get<double>(), v["image_direction"][1].get<double>()));
   };
   const auto& vps = t["vanishing_points"];
   in.vanishingPointsPx = {vp(vps["x"]), vp(vps["y"]), vp(vps["z"])};
@@ -515,7 +519,8 @@ TEST(Extrude, TableTopOfTheTableSceneMatchesTruth) {
   ASSERT_TRUE(c.ok()) << c.error().message();
   const json& top = t["table"]["top_surface"];
   std::vector<Vec2> outline;
-  for (const auto& p : top["image_polygon"]) outline.emplace_back(p[0].get<double>(), p[1].get<double>());
+  for (const auto& p : top["image_polygon"])
+    outline.emplace_back(p[0].get<double>(), p[1].get<double>());
   const json& c0 = top["corners"][0]["world"];
   Vec2 click;
   std::vector<Vec2> floorTruthPx;

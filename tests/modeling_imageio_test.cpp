@@ -91,8 +91,17 @@ std::string exifPayload(int orientation, const std::string& make, const std::str
     uint32_t count;
     std::string data;  // value bytes (placed inline when <= 4)
   };
-  auto shortVal = [](uint32_t v) { std::string s; putLe16(s, v); return s; };
-  auto rational = [](uint32_t n, uint32_t d) { std::string s; putLe32(s, n); putLe32(s, d); return s; };
+  auto shortVal = [](uint32_t v) {
+    std::string s;
+    putLe16(s, v);
+    return s;
+  };
+  auto rational = [](uint32_t n, uint32_t d) {
+    std::string s;
+    putLe32(s, n);
+    putLe32(s, d);
+    return s;
+  };
   const std::string makeZ = make + '\0', modelZ = model + '\0';
   std::vector<Entry> ifd0 = {{0x010F, 2, uint32_t(makeZ.size()), makeZ},
                              {0x0110, 2, uint32_t(modelZ.size()), modelZ},
@@ -175,8 +184,7 @@ TEST(ImageIo, PngRoundTripWithinOneStep) {
   ASSERT_EQ(loaded->linearRgb.width, 7);
   ASSERT_EQ(loaded->linearRgb.height, 5);
   for (size_t i = 0; i < img.data.size(); ++i)
-    EXPECT_NEAR(linearToSrgb(loaded->linearRgb.data[i]), linearToSrgb(img.data[i]), 1.0 / 255.0)
-        << i;
+    EXPECT_NEAR(linearToSrgb(loaded->linearRgb.data[i]), linearToSrgb(img.data[i]), 1.0 / 255.0) << i;
   EXPECT_EQ(countFiles(dir), 1u);  // no temporary left behind
 }
 
@@ -258,8 +266,8 @@ TEST(ImageIo, SixteenBitPngIsDecodedFromSrgb) {
   const auto dir = test::tempDir("png16");
   // 3 x 1 grey, 16 bits: 0, 32768, 65535 (filter byte 0 before the row).
   std::string row("\0\x00\x00\x80\x00\xff\xff", 7);
-  const std::string png = kPngSignature + ihdr(3, 1, 16, 0) +
-                          pngChunk("IDAT", zlibStored(row)) + pngChunk("IEND", "");
+  const std::string png = kPngSignature + ihdr(3, 1, 16, 0) + pngChunk("IDAT", zlibStored(row)) +
+                          pngChunk("IEND", "");
   const auto path = dir / "g16.png";
   writeBytes(path, png);
   auto loaded = loadImage(path.string());
@@ -277,8 +285,8 @@ Expected<LoadedImage> loadOriented(const fs::path& dir, int orientation) {
   const auto plain = dir / "plain.jpg";
   EXPECT_TRUE(saveImage(plain.string(), quadrants()).ok());
   const auto tagged = dir / std::string("o").append(std::to_string(orientation)).append(".jpg");
-  writeBytes(tagged, withApp1(readBytes(plain),
-                              exifPayload(orientation, "TestCam", "TC-1", 350, 2000, 52)));
+  writeBytes(tagged,
+             withApp1(readBytes(plain), exifPayload(orientation, "TestCam", "TC-1", 350, 2000, 52)));
   return loadImage(tagged.string());
 }
 
@@ -393,8 +401,7 @@ TEST_P(TruncatedImage, IsAnErrorNotACrash) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, TruncatedImage,
-                         ::testing::Values("png", "jpg", "exr", "tif", "hdr"));
+INSTANTIATE_TEST_SUITE_P(Formats, TruncatedImage, ::testing::Values("png", "jpg", "exr", "tif", "hdr"));
 
 TEST(ImageIo, CmykIsConvertedByTheReader) {
   const auto dir = test::tempDir("cmyk");
@@ -442,14 +449,12 @@ TEST(ImageIo, HugeHeaderIsRefusedFastWithoutReadingPixels) {
   const auto dir = test::tempDir("bomb");
   // A valid PNG header claiming 60000 x 60000 RGB (10.8 GB decoded) and a tiny IDAT.
   const std::string png = kPngSignature + ihdr(60000, 60000, 8, 2) +
-                          pngChunk("IDAT", zlibStored(std::string(4, '\0'))) +
-                          pngChunk("IEND", "");
+                          pngChunk("IDAT", zlibStored(std::string(4, '\0'))) + pngChunk("IEND", "");
   const auto path = dir / "bomb.png";
   writeBytes(path, png);
   const auto t0 = std::chrono::steady_clock::now();
   auto loaded = loadImage(path.string());
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_FALSE(loaded.ok());
   EXPECT_NE(loaded.error().reason.find("exceeds"), std::string::npos) << loaded.error().message();
   EXPECT_LT(seconds, 1.0);
@@ -478,8 +483,7 @@ TEST(ImageIo, ExrHeaderThatLiesIsRefusedBeforeOpenExrReadsIt) {
   const std::string channels("channels\0chlist\0", 16);
   // Then the size (4 bytes) and the box xMin, yMin, xMax, yMax: xMax is at 12, yMax at 16.
   const std::string dataWindow("dataWindow\0box2i\0", 17);
-  const std::string channelsAt =
-      "attribute 'channels' at byte " + std::to_string(bytes.find(channels));
+  const std::string channelsAt = "attribute 'channels' at byte " + std::to_string(bytes.find(channels));
   struct Case {
     std::string name, bytes, reason;
   } cases[] = {
@@ -499,8 +503,7 @@ TEST(ImageIo, ExrHeaderThatLiesIsRefusedBeforeOpenExrReadsIt) {
     writeBytes(dir / c.name, c.bytes);
     const auto t0 = std::chrono::steady_clock::now();
     auto loaded = loadImage((dir / c.name).string());
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_FALSE(loaded.ok()) << c.name;
     EXPECT_EQ(loaded.error().file, (dir / c.name).string());
     EXPECT_NE(loaded.error().reason.find(c.reason), std::string::npos)
@@ -572,9 +575,8 @@ TEST(ImageIo, LayersExrHasNamedChannels) {
   const auto dir = test::tempDir("layers");
   ImageF composite(4, 3, 3, 0.25f), mask(4, 3, 1, 1.f), rgba(4, 3, 4, 0.5f);
   const auto path = dir / "layers.exr";
-  ASSERT_TRUE(saveLayersExr(path.string(), {{"composite", &composite},
-                                            {"with_objects", &rgba},
-                                            {"mask", &mask}},
+  ASSERT_TRUE(saveLayersExr(path.string(),
+                            {{"composite", &composite}, {"with_objects", &rgba}, {"mask", &mask}},
                             /*half=*/false)
                   .ok());
   EXPECT_EQ(countFiles(dir), 1u);

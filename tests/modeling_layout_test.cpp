@@ -18,9 +18,9 @@ constexpr double kDeg = M_PI / 180.0;
 // 640 x 480, f = 560 px, 1.5 m up, turned 10 degrees left and 4 down.
 Camera roomCamera() {
   Camera c = levelCamera(640, 480, 560, 1.5);
-  c.worldFromCamera = (Eigen::AngleAxisd(10 * kDeg, Vec3::UnitY()) *
-                       Eigen::AngleAxisd(-4 * kDeg, Vec3::UnitX()))
-                          .toRotationMatrix();
+  c.worldFromCamera =
+      (Eigen::AngleAxisd(10 * kDeg, Vec3::UnitY()) * Eigen::AngleAxisd(-4 * kDeg, Vec3::UnitX()))
+          .toRotationMatrix();
   return c;
 }
 

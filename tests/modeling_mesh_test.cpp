@@ -34,8 +34,7 @@ std::string readBytes(const fs::path& p) {
 
 Vec3f faceNormal(const TriangleMesh& m, size_t t) {
   const auto& tri = m.triangles[t];
-  return (m.positions[tri[1]] - m.positions[tri[0]])
-      .cross(m.positions[tri[2]] - m.positions[tri[0]]);
+  return (m.positions[tri[1]] - m.positions[tri[0]]).cross(m.positions[tri[2]] - m.positions[tri[0]]);
 }
 
 // Signed volume (divergence theorem): positive for a closed mesh with outward winding.
@@ -76,7 +75,8 @@ TEST(Mesh, CubeHasFlatOutwardFaces) {
     const Vec3f n = faceNormal(c, t).normalized();
     for (uint32_t v : c.triangles[t]) EXPECT_NEAR((c.normals[v] - n).norm(), 0.f, 1e-6f);
     const Vec3f centroid = (c.positions[c.triangles[t][0]] + c.positions[c.triangles[t][1]] +
-                            c.positions[c.triangles[t][2]]) / 3.f;
+                            c.positions[c.triangles[t][2]]) /
+                           3.f;
     EXPECT_GT(n.dot(centroid), 0.f);
   }
   EXPECT_NEAR(signedVolume(c), 1.0, 1e-6);
@@ -207,16 +207,17 @@ TEST_P(MeshBadInput, IsRefusedWithElementAndReason) {
   auto m = loadMesh(p.string());
   ASSERT_FALSE(m.ok()) << c.name;
   EXPECT_EQ(m.error().file, p.string());
-  if (!c.element.empty()) { EXPECT_EQ(m.error().key, c.element) << m.error().message(); }
+  if (!c.element.empty()) {
+    EXPECT_EQ(m.error().key, c.element) << m.error().message();
+  }
   EXPECT_NE(m.error().reason.find(c.reasonPart), std::string::npos) << m.error().message();
 }
 
 std::string plyHeader(const std::string& format, int vertices, int faces,
                       const std::string& indexType = "int") {
-  return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " +
-         std::to_string(vertices) + "\nproperty float x\nproperty float y\nproperty float z\n" +
-         "element face " + std::to_string(faces) + "\nproperty list uchar " + indexType +
-         " vertex_indices\nend_header\n";
+  return "ply\nformat " + format + " 1.0\ncomment test\nelement vertex " + std::to_string(vertices) +
+         "\nproperty float x\nproperty float y\nproperty float z\n" + "element face " +
+         std::to_string(faces) + "\nproperty list uchar " + indexType + " vertex_indices\nend_header\n";
 }
 std::string binaryTriangle() {
   std::string s;
@@ -233,25 +234,19 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadMesh{"empty_obj", "e.obj", "", "", "empty file"},
         BadMesh{"comments_only", "c.obj", "# nothing\n\n", "", "no triangles"},
-        BadMesh{"nan_vertex", "n.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2",
-                "non-finite"},
-        BadMesh{"inf_vertex", "i.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", "line 3",
-                "non-finite"},
-        BadMesh{"overflow_vertex", "o.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", "line 2",
-                ""},
+        BadMesh{"nan_vertex", "n.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "line 2", "non-finite"},
+        BadMesh{"inf_vertex", "i.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", "line 3", "non-finite"},
+        BadMesh{"overflow_vertex", "o.obj", "v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n", "line 2", ""},
         BadMesh{"index_too_big", "b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "line 4",
                 "out of range"},
-        BadMesh{"index_zero", "z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4",
-                "index 0"},
-        BadMesh{"negative_before_start", "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n",
-                "line 4", "before the first"},
+        BadMesh{"index_zero", "z.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "line 4", "index 0"},
+        BadMesh{"negative_before_start", "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n", "line 4",
+                "before the first"},
         BadMesh{"normal_index", "vn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n",
                 "line 5", "normal index 2 out of range"},
         BadMesh{"two_vertex_face", "t.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "line 3", "at least 3"},
-        BadMesh{"garbage_index", "g.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", "line 4",
-                "malformed"},
-        BadMesh{"degenerate_only", "d.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "",
-                "zero area"},
+        BadMesh{"garbage_index", "g.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n", "line 4", "malformed"},
+        BadMesh{"degenerate_only", "d.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n", "", "zero area"},
         BadMesh{"empty_ply", "e.ply", "", "", "empty file"},
         BadMesh{"not_ply", "x.ply", "solid cube\nendsolid\n", "header", "not a PLY"},
         BadMesh{"ply_no_end", "h.ply", "ply\nformat ascii 1.0\nelement vertex 3\n", "header",
@@ -259,18 +254,17 @@ INSTANTIATE_TEST_SUITE_P(
         BadMesh{"ply_ascii_short", "s.ply", plyHeader("ascii", 5, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                 "", ""},
         BadMesh{"ply_binary_lies", "l.ply", plyHeader("binary_little_endian", 3, 2) + binaryTriangle(),
-                "face 1", "unexpected end of data: the file ends here, but header line 8 claims 2 "
-                          "'face' entries"},
-        BadMesh{"ply_huge_count", "u.ply", plyHeader("binary_little_endian", 2000000000, 1) +
-                                              binaryTriangle(),
-                "header line 4",
+                "face 1",
+                "unexpected end of data: the file ends here, but header line 8 claims 2 "
+                "'face' entries"},
+        BadMesh{"ply_huge_count", "u.ply",
+                plyHeader("binary_little_endian", 2000000000, 1) + binaryTriangle(), "header line 4",
                 "more data than the file holds: 'vertex' claims 2000000000 entries, so the data "
                 "after end_header needs at least 24000000000 bytes, but the file holds 49"},
         BadMesh{"ply_bad_index", "i.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
                 "face 0", "out of range"},
         BadMesh{"ply_negative_index", "n.ply",
-                plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "face 0",
-                "out of range"},
+                plyHeader("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "face 0", "out of range"},
         BadMesh{"ply_nan", "f.ply", plyHeader("ascii", 3, 1) + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",
                 "vertex 1", "non-finite"},
         // List lengths read as float (fuzz_mesh_ply: a NaN count was converted to an integer).
@@ -320,21 +314,22 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(Mesh, PlyAsciiAndBinaryAndTristrips) {
   const auto dir = test::tempDir("ply_ok");
-  auto a = loadMesh(writeFile(dir, "a.ply", plyHeader("ascii", 4, 1) +
-                                                "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
-                        .string());
+  auto a = loadMesh(
+      writeFile(dir, "a.ply", plyHeader("ascii", 4, 1) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+          .string());
   ASSERT_TRUE(a.ok()) << a.error().message();
   EXPECT_EQ(a->triangles.size(), 2u);
-  auto b = loadMesh(writeFile(dir, "b.ply", plyHeader("binary_little_endian", 3, 1) + binaryTriangle())
-                        .string());
+  auto b = loadMesh(
+      writeFile(dir, "b.ply", plyHeader("binary_little_endian", 3, 1) + binaryTriangle()).string());
   ASSERT_TRUE(b.ok()) << b.error().message();
   EXPECT_EQ(b->triangles.size(), 1u);
   EXPECT_EQ(b->positions[1], Vec3f(1, 0, 0));
   // Big endian with normals and an extra element to skip.
-  std::string be = "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\n"
-                   "property float y\nproperty float z\nproperty float nx\nproperty float ny\n"
-                   "property float nz\nelement face 1\nproperty list uchar int vertex_indices\n"
-                   "element extra 1\nproperty list uchar short junk\nend_header\n";
+  std::string be =
+      "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nproperty float nx\nproperty float ny\n"
+      "property float nz\nelement face 1\nproperty list uchar int vertex_indices\n"
+      "element extra 1\nproperty list uchar short junk\nend_header\n";
   auto putBe = [&](const void* p, size_t n) {
     const char* c = static_cast<const char*>(p);
     for (size_t i = 0; i < n; ++i) be += c[n - 1 - i];
@@ -405,12 +400,16 @@ struct SharedModel {
 TEST(Mesh, SharedModelsLoad) {
   INLAY_REQUIRE_SHARED();
   const fs::path models = fs::path(test::sharedDir()) / "models";
-  const SharedModel expected[] = {
-      {"spot.obj", 5856, 5856},          {"teapot.obj", 6320, 6320},
-      {"stanford-bunny.obj", 69451, 69451}, {"suzanne.obj", 968, 968},
-      {"cow.obj", 5804, 5804},           {"igea.ply", 250000, 280000},
-      {"spot_red_plastic.glb", 5856, 5856}, {"teapot_gold.glb", 6320, 6320},
-      {"suzanne_glass.glb", 968, 968},   {"cow_glowing.glb", 5804, 5804}};
+  const SharedModel expected[] = {{"spot.obj", 5856, 5856},
+                                  {"teapot.obj", 6320, 6320},
+                                  {"stanford-bunny.obj", 69451, 69451},
+                                  {"suzanne.obj", 968, 968},
+                                  {"cow.obj", 5804, 5804},
+                                  {"igea.ply", 250000, 280000},
+                                  {"spot_red_plastic.glb", 5856, 5856},
+                                  {"teapot_gold.glb", 6320, 6320},
+                                  {"suzanne_glass.glb", 968, 968},
+                                  {"cow_glowing.glb", 5804, 5804}};
   for (const SharedModel& e : expected) {
     const fs::path p = models / e.file;
     if (!fs::exists(p)) continue;
@@ -423,7 +422,9 @@ TEST(Mesh, SharedModelsLoad) {
     EXPECT_FALSE(m->bounds().isEmpty()) << e.file;
     EXPECT_GT(m->bounds().sizes().minCoeff(), 0.f) << e.file;
     EXPECT_LT(s, 10.0) << e.file;
-    if (!m->normals.empty()) { EXPECT_EQ(m->normals.size(), m->positions.size()) << e.file; }
+    if (!m->normals.empty()) {
+      EXPECT_EQ(m->normals.size(), m->positions.size()) << e.file;
+    }
   }
 }
 
@@ -488,10 +489,11 @@ TEST(Mesh, TruncatedSharedFilesAreErrors) {
     const std::string bytes = readBytes(models / "cow.obj");
     const auto p = writeFile(dir, "cow_cut.obj", bytes.substr(0, bytes.size() / 2));
     auto m = loadMesh(p.string());
-    if (m.ok()) { EXPECT_LT(m->triangles.size(), 5804u); }
+    if (m.ok()) {
+      EXPECT_LT(m->triangles.size(), 5804u);
+    }
   }
 }
-
 
 // --- Polygon faces: concave ones must stay inside their outline --------------------------------
 
@@ -658,14 +660,16 @@ TEST(MeshAssimp, FbxColladaAnd3dsLoadWithTheirUnits) {
     ASSERT_TRUE(m.ok()) << c.file << ": " << m.error().message();
     EXPECT_EQ(m->triangles.size(), 12u) << c.file;
     // The height is up in y, 1.8 units (metres for COLLADA, which states its unit).
-    EXPECT_NEAR(m->bounds().sizes().y(), 1.8f, 1e-4f) << c.file << " " << m->bounds().sizes().transpose();
+    EXPECT_NEAR(m->bounds().sizes().y(), 1.8f, 1e-4f)
+        << c.file << " " << m->bounds().sizes().transpose();
     EXPECT_EQ(info.metresPerUnit, c.metresPerUnit) << c.file;
     EXPECT_EQ(info.format, std::string(c.file).substr(4));
   }
   // FBX (ASCII: Assimp 5.2 cannot read back the binary FBX it writes). Its global settings say
   // the unit (UnitScaleFactor: centimetres per unit) and the up axis; set them as a file from
   // another tool would.
-  ASSERT_EQ(exporter.Export(scene, "fbxa", (dir / "box.fbx").string()), AI_SUCCESS) << exporter.GetErrorString();
+  ASSERT_EQ(exporter.Export(scene, "fbxa", (dir / "box.fbx").string()), AI_SUCCESS)
+      << exporter.GetErrorString();
   const std::string fbx = readBytes(dir / "box.fbx");
   auto withSetting = [](std::string text, const std::string& name, const std::string& value) {
     const std::string key = "P: \"" + name + "\",";
@@ -679,11 +683,11 @@ TEST(MeshAssimp, FbxColladaAnd3dsLoadWithTheirUnits) {
     const char* unitScale;  // centimetres per unit
     const char* upAxis;
     double metresPerUnit;
-    Eigen::Vector3f size;   // after loading, in file units, y up
+    Eigen::Vector3f size;  // after loading, in file units, y up
   };
-  for (const FbxCase& c : {FbxCase{"1", "1", 0.01, {0.4f, 1.8f, 0.6f}},
-                           FbxCase{"100", "1", 1.0, {0.4f, 1.8f, 0.6f}},
-                           FbxCase{"2.54", "2", 0.0254, {0.4f, 0.6f, 1.8f}}}) {
+  for (const FbxCase& c :
+       {FbxCase{"1", "1", 0.01, {0.4f, 1.8f, 0.6f}}, FbxCase{"100", "1", 1.0, {0.4f, 1.8f, 0.6f}},
+        FbxCase{"2.54", "2", 0.0254, {0.4f, 0.6f, 1.8f}}}) {
     std::string text = withSetting(withSetting(fbx, "UnitScaleFactor", c.unitScale), "UpAxis", c.upAxis);
     ASSERT_FALSE(text.empty()) << "the exported FBX has no UnitScaleFactor or UpAxis setting";
     const fs::path p = writeFile(dir, std::string("box_") + c.upAxis + ".fbx", text);
@@ -692,8 +696,8 @@ TEST(MeshAssimp, FbxColladaAnd3dsLoadWithTheirUnits) {
     ASSERT_TRUE(m.ok()) << m.error().message();
     EXPECT_EQ(m->triangles.size(), 12u);
     EXPECT_NEAR(info.metresPerUnit, c.metresPerUnit, 1e-7) << c.unitScale;  // a float in the file
-    EXPECT_LT((m->bounds().sizes() - c.size).norm(), 1e-4f) << c.unitScale << " up " << c.upAxis << ": "
-                                                             << m->bounds().sizes().transpose();
+    EXPECT_LT((m->bounds().sizes() - c.size).norm(), 1e-4f)
+        << c.unitScale << " up " << c.upAxis << ": " << m->bounds().sizes().transpose();
     EXPECT_EQ(info.format, "fbx");
   }
   // Refusals name the file and the reason.

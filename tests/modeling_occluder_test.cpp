@@ -63,7 +63,8 @@ TEST(Occluder, RecoversAKnownSoftMatte) {
 
 TEST(Occluder, BadScribblesAreRefusedWithTheKey) {
   const Synthetic s;
-  auto expectError = [](const Expected<OccluderMatte>& e, const std::string& key, const std::string& words) {
+  auto expectError = [](const Expected<OccluderMatte>& e, const std::string& key,
+                        const std::string& words) {
     ASSERT_FALSE(e.ok());
     EXPECT_NE(e.error().message().find(key), std::string::npos) << e.error().message();
     EXPECT_NE(e.error().message().find(words), std::string::npos) << e.error().message();
@@ -169,7 +170,8 @@ TEST(Occluder, TableMatteOfTheOcclusionScene) {
   auto isTable = [&](int x, int y) { return std::lround(linearToSrgb(L.at(x, y, 0)) * 255) == 7; };
   for (int y = 0; y < L.height; ++y)
     for (int x = 0; x < L.width; ++x)
-      if (isTable(x, y)) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      if (isTable(x, y))
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
   ASSERT_LT(x0, x1);
   // The harness strokes rows of the table mask eroded by a 9 x 9 square, end to end.
   auto inEroded = [&](int x, int y) {
@@ -201,7 +203,8 @@ TEST(Occluder, TableMatteOfTheOcclusionScene) {
       if (inEroded(x, y)) ex0 = std::min(ex0, x), ex1 = std::max(ex1, x);
   const double bx0 = std::max(0, ex0 - 20), bx1 = std::min(L.width - 1, ex1 + 20);
   const double by0 = std::max(0, e0 - 20), by1 = std::min(L.height - 1, e1 + 20);
-  const std::vector<std::vector<Vec2>> bg = {{{bx0, by0}, {bx1, by0}, {bx1, by1}, {bx0, by1}, {bx0, by0}}};
+  const std::vector<std::vector<Vec2>> bg = {
+      {{bx0, by0}, {bx1, by0}, {bx1, by1}, {bx0, by1}, {bx0, by0}}};
   const auto m = matteFromScribbles(*photo, fg, bg, "occluders[0]");
   ASSERT_TRUE(m.ok()) << m.error().message();
   double inter = 0, uni = 0, table = 0;

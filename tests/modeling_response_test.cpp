@@ -23,7 +23,8 @@ std::vector<CameraResponse> allKindsOfResponse() {
                                      CameraResponse::toeShoulder({0.8, 0.2, 5})};
   for (double p : {ResponseParams::kMinPower, ResponseParams::kMaxPower})
     for (double t : {0.0, ResponseParams::kMaxToe})
-      for (double s : {0.0, ResponseParams::kMaxShoulder}) out.push_back(CameraResponse::toeShoulder({p, t, s}));
+      for (double s : {0.0, ResponseParams::kMaxShoulder})
+        out.push_back(CameraResponse::toeShoulder({p, t, s}));
   return out;
 }
 
@@ -34,7 +35,9 @@ TEST(Response, TablesAreFiniteStrictlyIncreasingAndEncodeBackToTheirCodes) {
     EXPECT_EQ(t[255], 1.f) << r.describe();
     for (int k = 0; k < 256; ++k) {
       ASSERT_TRUE(std::isfinite(t[size_t(k)])) << r.describe() << " code " << k;
-      if (k > 0) { ASSERT_GT(t[size_t(k)], t[size_t(k - 1)]) << r.describe() << " code " << k; }
+      if (k > 0) {
+        ASSERT_GT(t[size_t(k)], t[size_t(k - 1)]) << r.describe() << " code " << k;
+      }
       ASSERT_EQ(int(r.encodeCode8(t[size_t(k)])), k) << r.describe();
     }
     // Encoding is monotone and total: anything (NaN, negative, huge) gets a code.
@@ -99,10 +102,15 @@ TEST(Response, APhotosCodesSurviveDecodingAndEncodingWithAnyResponse) {
 // A synthetic photo: overlapping rotated rectangles of random colours over a background,
 // anti-aliased (4 x 4 samples per pixel) and blurred (Gaussian, sigma 0.7 px) in linear
 // radiance, with shot noise of `noise` (linear units at radiance 1), encoded by `truth`.
-ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, int W = 320, int H = 240) {
+ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, int W = 320,
+                      int H = 240) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(0, 1);
-  struct Rect { Vec2 c; double a, hw, hh; Vec3 rgb; };
+  struct Rect {
+    Vec2 c;
+    double a, hw, hh;
+    Vec3 rgb;
+  };
   std::vector<Rect> rects;
   for (int i = 0; i < 36; ++i)
     rects.push_back({Vec2(U(rng) * W, U(rng) * H), 0.1 + 0.6 * U(rng), 12 + 40 * U(rng), 8 + 30 * U(rng),
@@ -117,7 +125,8 @@ ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, 
           Vec3 v(0.3, 0.25, 0.2);
           for (const Rect& r : rects) {
             const Vec2 d = p - r.c;
-            const double u = d.x() * std::cos(r.a) + d.y() * std::sin(r.a), w = -d.x() * std::sin(r.a) + d.y() * std::cos(r.a);
+            const double u = d.x() * std::cos(r.a) + d.y() * std::sin(r.a),
+                         w = -d.x() * std::sin(r.a) + d.y() * std::cos(r.a);
             if (std::fabs(u) < r.hw && std::fabs(w) < r.hh) v = r.rgb;
           }
           sum += v / 16;
@@ -134,7 +143,8 @@ ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, 
         for (int c = 0; c < 3; ++c) {
           float s = 0;
           for (int i = -2; i <= 2; ++i) {
-            const int xx = pass == 0 ? std::clamp(x + i, 0, W - 1) : x, yy = pass == 0 ? y : std::clamp(y + i, 0, H - 1);
+            const int xx = pass == 0 ? std::clamp(x + i, 0, W - 1) : x,
+                      yy = pass == 0 ? y : std::clamp(y + i, 0, H - 1);
             s += k[i + 2] * src.at(xx, yy, c);
           }
           dst.at(x, y, c) = s;
@@ -145,7 +155,8 @@ ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, 
   // Exposed so that the brightest colour (0.88) is code 235: clear of clipping on every curve.
   const double exposure = truth.decode(235.0 / 255) / 0.88;
   for (size_t i = 0; i < lin.data.size(); ++i) {
-    const double v = std::max(0.0, exposure * lin.data[i] + noise * std::sqrt(std::max(double(lin.data[i]), 1e-4)) * N(rng));
+    const double v = std::max(
+        0.0, exposure * lin.data[i] + noise * std::sqrt(std::max(double(lin.data[i]), 1e-4)) * N(rng));
     const int code = int(std::lround(255 * truth.encode(v)));
     photo.data[i] = srgbToLinear(float(code) / 255.f);  // what loadImage makes of it
   }
@@ -170,7 +181,8 @@ double curveError(const CameraResponse& estimate, const CameraResponse& truth) {
 
 void expectSane(const ResponseEstimate& e) {
   const auto& t = e.response.table8();
-  for (int k = 1; k < 256; ++k) ASSERT_TRUE(std::isfinite(t[size_t(k)]) && t[size_t(k)] > t[size_t(k - 1)]);
+  for (int k = 1; k < 256; ++k)
+    ASSERT_TRUE(std::isfinite(t[size_t(k)]) && t[size_t(k)] > t[size_t(k - 1)]);
   EXPECT_TRUE(std::isfinite(e.objective));
   EXPECT_GE(e.seconds, 0);
 }
@@ -192,9 +204,11 @@ TEST(ResponseEstimate, RecoversKnownCurvesOfSyntheticPhotos) {
       const ResponseEstimate e = estimateResponse(syntheticPhoto(truth, 0.002, uint32_t(11 + i)), o);
       expectSane(e);
       ASSERT_TRUE(e.determined) << (e.warnings.empty() ? "" : e.warnings[0]);
-      const double err = curveError(e.response, truth), srgbErr = curveError(CameraResponse::srgb(), truth);
+      const double err = curveError(e.response, truth),
+                   srgbErr = curveError(CameraResponse::srgb(), truth);
       std::printf("cue %d truth %s: estimate %s, error %.4f (sRGB %.4f), %d edges, %.3f s\n", int(cue),
-                  truth.describe().c_str(), e.response.describe().c_str(), err, srgbErr, e.edgesUsed, e.seconds);
+                  truth.describe().c_str(), e.response.describe().c_str(), err, srgbErr, e.edgesUsed,
+                  e.seconds);
       EXPECT_LT(err, 0.065) << truth.describe() << " estimated as " << e.response.describe();
       EXPECT_LE(err, std::max(0.01, 0.5 * srgbErr)) << "no better than reading the photo as sRGB";
     }
@@ -220,7 +234,9 @@ TEST(ResponseEstimate, AFlatPhotoIsUndeterminedWithAWarning) {
 TEST(ResponseEstimate, ANearlyBinaryPhotoIsUndeterminedWithAWarning) {
   ImageF binary(200, 150, 3);
   for (int y = 0; y < 150; ++y)
-    for (int x = 0; x < 200; ++x) binary.setRgb(x, y, Vec3::Constant(((x / 17 + y / 13) % 2) ? srgbToLinear(0.8f) : srgbToLinear(0.1f)));
+    for (int x = 0; x < 200; ++x)
+      binary.setRgb(x, y,
+                    Vec3::Constant(((x / 17 + y / 13) % 2) ? srgbToLinear(0.8f) : srgbToLinear(0.1f)));
   const ResponseEstimate e = estimateResponse(binary);
   expectSane(e);
   EXPECT_FALSE(e.determined);

@@ -95,7 +95,9 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
       for (int k = 0; k < 4; ++k) EXPECT_EQ(a.lights[i].cornersM[k], b.lights[i].cornersM[k]);
     }
     EXPECT_EQ(a.lights[i].rgb.has_value(), b.lights[i].rgb.has_value());
-    if (a.lights[i].rgb && b.lights[i].rgb) { EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb); }
+    if (a.lights[i].rgb && b.lights[i].rgb) {
+      EXPECT_EQ(*a.lights[i].rgb, *b.lights[i].rgb);
+    }
     EXPECT_EQ(a.lights[i].refine, b.lights[i].refine);
     EXPECT_EQ(a.lights[i].lock, b.lights[i].lock);
     EXPECT_EQ(a.lights[i].positionWeight, b.lights[i].positionWeight);
@@ -293,7 +295,8 @@ TEST(SceneFile, ObjectNameHiddenAndAssimpMeshes) {
             {"mesh": "chair.blend", "base_px": [10, 20]}]})",
       dir.string(), "scene.json");
   ASSERT_FALSE(obj.ok());
-  EXPECT_NE(obj.error().message().find(".fbx, .dae or .3ds"), std::string::npos) << obj.error().message();
+  EXPECT_NE(obj.error().message().find(".fbx, .dae or .3ds"), std::string::npos)
+      << obj.error().message();
 }
 
 TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
@@ -319,19 +322,23 @@ TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
 TEST(SceneFile, CameraResponseParsesAndRoundTrips) {
   const fs::path dir = sceneDir("response");
   auto parse = [&](const std::string& response) {
-    return parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-                              response + "}}",
-                          dir.string(), "scene.json");
+    return parseSceneJson(
+        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
+            response + "}}",
+        dir.string(), "scene.json");
   };
-  auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})", dir.string(),
-                                "scene.json");
+  auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
+                                dir.string(), "scene.json");
   ASSERT_TRUE(missing.ok());
   EXPECT_EQ(missing->doc.camera.response.mode, ResponseKeys::Mode::Auto);
   EXPECT_EQ(sceneToJson(missing->doc).find("response"), std::string::npos);  // auto is not written
   const std::pair<const char*, ResponseKeys::Mode> modes[] = {
-      {R"("auto")", ResponseKeys::Mode::Auto}, {R"("srgb")", ResponseKeys::Mode::Srgb},
-      {R"("linear")", ResponseKeys::Mode::Linear}, {R"({"family": "linear"})", ResponseKeys::Mode::Linear},
-      {R"({"family": "toe_shoulder", "power": 0.8, "toe": 0.25, "shoulder": 40})", ResponseKeys::Mode::ToeShoulder}};
+      {R"("auto")", ResponseKeys::Mode::Auto},
+      {R"("srgb")", ResponseKeys::Mode::Srgb},
+      {R"("linear")", ResponseKeys::Mode::Linear},
+      {R"({"family": "linear"})", ResponseKeys::Mode::Linear},
+      {R"({"family": "toe_shoulder", "power": 0.8, "toe": 0.25, "shoulder": 40})",
+       ResponseKeys::Mode::ToeShoulder}};
   for (const auto& [text, mode] : modes) {
     auto r = parse(text);
     ASSERT_TRUE(r.ok()) << text << ": " << r.error().message();
@@ -367,9 +374,10 @@ TEST(SceneFile, BadCameraResponseNamesItsKey) {
       {R"({"family": "toe_shoulder", "shoulder": 1e9})", "camera.response.shoulder"},
       {R"({"family": "srgb", "power": 1})", "camera.response.power"}};
   for (const auto& [text, key] : cases) {
-    auto r = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-                                std::string(text) + "}}",
-                            dir.string(), "scene.json");
+    auto r = parseSceneJson(
+        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
+            std::string(text) + "}}",
+        dir.string(), "scene.json");
     ASSERT_FALSE(r.ok()) << text;
     EXPECT_EQ(r.error().key, key) << text << ": " << r.error().message();
   }
@@ -492,20 +500,24 @@ INSTANTIATE_TEST_SUITE_P(
                 "camera.vanishing_points_px", "expected 3 elements"},
         BadCase{"vp_type", R"(, "camera": {"vanishing_points_px": [[1,2],[3,4],[5,null]]})",
                 "camera.vanishing_points_px[2][1]", "expected a number, got null"},
-        BadCase{"vlines_nan", R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[9,"NaN"]], [[0,5],[9,9]]]}})",
+        BadCase{"vlines_nan",
+                R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[9,"NaN"]], [[0,5],[9,9]]]}})",
                 "camera.vanishing_lines_px.z[0][1][1]", "expected a number"},
-        BadCase{"vlines_overflow", R"(, "camera": {"vanishing_lines_px": {"y": [[[0,0],[9,9]], [[1e999,5],[9,9]]]}})",
+        BadCase{"vlines_overflow",
+                R"(, "camera": {"vanishing_lines_px": {"y": [[[0,0],[9,9]], [[1e999,5],[9,9]]]}})",
                 "camera.vanishing_lines_px.y[1][0][0]", "out of range"},
-        BadCase{"vlines_degenerate", R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[90,9]], [[5,5],[5.5,5]]]}})",
+        BadCase{"vlines_degenerate",
+                R"(, "camera": {"vanishing_lines_px": {"z": [[[0,0],[90,9]], [[5,5],[5.5,5]]]}})",
                 "camera.vanishing_lines_px.z[1]", "degenerate segment"},
-        BadCase{"vlines_one_line", R"(, "camera": {"vanishing_lines_px": {"x": [[[0,0],[10,10]], [[20,20],[30,30]]]}})",
+        BadCase{"vlines_one_line",
+                R"(, "camera": {"vanishing_lines_px": {"x": [[[0,0],[10,10]], [[20,20],[30,30]]]}})",
                 "camera.vanishing_lines_px.x", "lie on one line"},
         BadCase{"vlines_count", R"(, "camera": {"vanishing_lines_px": {"x": [[[0,0],[10,10]]]}})",
                 "camera.vanishing_lines_px.x", "expected 2 elements"},
         BadCase{"vlines_type", R"(, "camera": {"vanishing_lines_px": [1, 2]})",
                 "camera.vanishing_lines_px", "expected an object"},
-        BadCase{"principal_type", R"(, "camera": {"principal_px": "centre"})",
-                "camera.principal_px", "expected an array"},
+        BadCase{"principal_type", R"(, "camera": {"principal_px": "centre"})", "camera.principal_px",
+                "expected an array"},
         BadCase{"back_wall", R"(, "layout": {"back_wall_px": [[1,2],[3,4],[5,6]]})",
                 "layout.back_wall_px", "expected 4 elements"},
         BadCase{"lights_not_array", R"(, "lights": {})", "lights", "expected an array"},
@@ -517,11 +529,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"light_zero_area",
                 R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[5,5],[10,10]]}])",
                 "lights[0].points", "zero area"},
-        BadCase{"light_two_points",
-                R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[5,5]]}])",
+        BadCase{"light_two_points", R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[5,5]]}])",
                 "lights[0].points", "at least 3 points"},
         BadCase{"light_second_bad",
-                ", \"lights\": [{" + kPolygon + R"(}, {"kind": "polygon_px", "points": [[0,0],[1,1],[1,"x"]]}])",
+                ", \"lights\": [{" + kPolygon +
+                    R"(}, {"kind": "polygon_px", "points": [[0,0],[1,1],[1,"x"]]}])",
                 "lights[1].points[2][1]", "expected a number"},
         BadCase{"rect_corner_size",
                 R"(, "lights": [{"kind": "rect_m", "corners": [[0,0,0],[1,0],[1,0,1],[0,0,1]]}])",
@@ -534,15 +546,18 @@ INSTANTIATE_TEST_SUITE_P(
                 "lights[0].corners", "zero area"},
         BadCase{"light_refine_type", ", \"lights\": [{" + kPolygon + R"(, "refine": "yes"}])",
                 "lights[0].refine", "expected true or false"},
-        BadCase{"light_lock_type", ", \"lights\": [{" + kPolygon + R"(, "lock": 1}])",
-                "lights[0].lock", "expected true or false"},
-        BadCase{"light_weight_negative", ", \"lights\": [{" + kPolygon + R"(, "weights": {"position": -1}}])",
+        BadCase{"light_lock_type", ", \"lights\": [{" + kPolygon + R"(, "lock": 1}])", "lights[0].lock",
+                "expected true or false"},
+        BadCase{"light_weight_negative",
+                ", \"lights\": [{" + kPolygon + R"(, "weights": {"position": -1}}])",
                 "lights[0].weights.position", ">= 0"},
-        BadCase{"light_size_weight_negative", ", \"lights\": [{" + kPolygon + R"(, "weights": {"size": -2}}])",
+        BadCase{"light_size_weight_negative",
+                ", \"lights\": [{" + kPolygon + R"(, "weights": {"size": -2}}])",
                 "lights[0].weights.size", ">= 0"},
         BadCase{"light_refine_size_not_bool", ", \"lights\": [{" + kPolygon + R"(, "refine_size": 1}])",
                 "lights[0].refine_size", "expected true or false"},
-        BadCase{"light_weight_nan", ", \"lights\": [{" + kPolygon + R"(, "weights": {"intensity": "a"}}])",
+        BadCase{"light_weight_nan",
+                ", \"lights\": [{" + kPolygon + R"(, "weights": {"intensity": "a"}}])",
                 "lights[0].weights.intensity", "expected a number"},
         BadCase{"light_weights_not_object", ", \"lights\": [{" + kPolygon + R"(, "weights": [1, 2]}])",
                 "lights[0].weights", "object"},
@@ -555,26 +570,31 @@ INSTANTIATE_TEST_SUITE_P(
                 "shafts[0].shaft_box_px", "x0 < x1"},
         BadCase{"shaft_zero_direction", R"(, "shafts": [{"direction": [0, 0, 0]}])",
                 "shafts[0].direction", "non-zero"},
-        BadCase{"surface_bowtie",
-                R"(, "surfaces": [{"kind": "extrusion", "outline_px": [[0,0],[10,10],[10,0],[0,10]], "height_click_px": [0, 20]}])",
-                "surfaces[0].outline_px", "self-intersecting"},
-        BadCase{"surface_fold_back",
-                R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[5,0],[5,5]], "height_click_px": [0, 20]}])",
-                "surfaces[0].outline_px", "self-intersecting"},
-        BadCase{"surface_kind",
-                R"(, "surfaces": [{"kind": "ramp", "outline_px": [[0,0],[1,0],[1,1]], "height_click_px": [0, 2]}])",
-                "surfaces[0].kind", "unknown surface kind"},
-        BadCase{"surface_no_click",
-                R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[10,10]]}])",
+        BadCase{
+            "surface_bowtie",
+            R"(, "surfaces": [{"kind": "extrusion", "outline_px": [[0,0],[10,10],[10,0],[0,10]], "height_click_px": [0, 20]}])",
+            "surfaces[0].outline_px", "self-intersecting"},
+        BadCase{
+            "surface_fold_back",
+            R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[5,0],[5,5]], "height_click_px": [0, 20]}])",
+            "surfaces[0].outline_px", "self-intersecting"},
+        BadCase{
+            "surface_kind",
+            R"(, "surfaces": [{"kind": "ramp", "outline_px": [[0,0],[1,0],[1,1]], "height_click_px": [0, 2]}])",
+            "surfaces[0].kind", "unknown surface kind"},
+        BadCase{"surface_no_click", R"(, "surfaces": [{"outline_px": [[0,0],[10,0],[10,10]]}])",
                 "surfaces[0].height_click_px", "missing"},
-        BadCase{"occluder_scribble",
-                R"(, "occluders": [{"foreground_scribbles_px": [[]]}])",
+        BadCase{"occluder_scribble", R"(, "occluders": [{"foreground_scribbles_px": [[]]}])",
                 "occluders[0].foreground_scribbles_px[0]", "at least 1"},
-        BadCase{"height_zero", ", \"objects\": [" + kSphere + R"(, {"mesh": "builtin:cube", "base_px": [1, 2], "height_m": 0}])",
+        BadCase{"height_zero",
+                ", \"objects\": [" + kSphere +
+                    R"(, {"mesh": "builtin:cube", "base_px": [1, 2], "height_m": 0}])",
                 "objects[1].height_m", "> 0"},
-        BadCase{"height_negative", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -2}])",
+        BadCase{"height_negative",
+                R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -2}])",
                 "objects[0].height_m", "> 0"},
-        BadCase{"height_overflow", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -1e999}])",
+        BadCase{"height_overflow",
+                R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "height_m": -1e999}])",
                 "objects[0].height_m", "out of range"},
         BadCase{"mesh_missing_file", R"(, "objects": [{"mesh": "models/nope.obj", "base_px": [1, 2]}])",
                 "objects[0].mesh", "file not found"},
@@ -582,19 +602,26 @@ INSTANTIATE_TEST_SUITE_P(
                 "objects[0].mesh", "unknown builtin"},
         BadCase{"mesh_format", R"(, "objects": [{"mesh": "models/chair.stl", "base_px": [1, 2]}])",
                 "objects[0].mesh", "unsupported mesh format"},
-        BadCase{"mesh_absent", R"(, "objects": [{"base_px": [1, 2]}])", "objects[0].mesh",
-                "missing"},
+        BadCase{"mesh_absent", R"(, "objects": [{"base_px": [1, 2]}])", "objects[0].mesh", "missing"},
         BadCase{"base_missing", R"(, "objects": [{"mesh": "builtin:cube"}])", "objects[0].base_px",
                 "missing"},
-        BadCase{"preset", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "velvet"}}])",
-                "objects[0].material.preset", "unknown material preset"},
-        BadCase{"albedo_range", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"albedo": [0.5, 1.5, 0.5]}}])",
-                "objects[0].material.albedo[1]", "[0, 1]"},
-        BadCase{"ior_range", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "glass", "ior": 0.5}}])",
-                "objects[0].material.ior", "[1, 5]"},
-        BadCase{"subdivide_fraction", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 1.5}])",
+        BadCase{
+            "preset",
+            R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "velvet"}}])",
+            "objects[0].material.preset", "unknown material preset"},
+        BadCase{
+            "albedo_range",
+            R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"albedo": [0.5, 1.5, 0.5]}}])",
+            "objects[0].material.albedo[1]", "[0, 1]"},
+        BadCase{
+            "ior_range",
+            R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "material": {"preset": "glass", "ior": 0.5}}])",
+            "objects[0].material.ior", "[1, 5]"},
+        BadCase{"subdivide_fraction",
+                R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 1.5}])",
                 "objects[0].subdivide", "[0, 5]"},
-        BadCase{"subdivide_too_many", R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 9}])",
+        BadCase{"subdivide_too_many",
+                R"(, "objects": [{"mesh": "builtin:cube", "base_px": [1, 2], "subdivide": 9}])",
                 "objects[0].subdivide", "[0, 5]"},
         BadCase{"room_surface_name", R"(, "room": {"materials": {"flor": {"preset": "mirror"}}})",
                 "room.materials.flor", "unknown room surface"},
@@ -619,9 +646,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SceneFile, HeaderErrors) {
   const fs::path dir = sceneDir("header");
-  auto parse = [&](const std::string& text) {
-    return parseSceneJson(text, dir.string(), "scene.json");
-  };
+  auto parse = [&](const std::string& text) { return parseSceneJson(text, dir.string(), "scene.json"); };
   auto e = parse(R"({"format": "inlay-scene", "version": 1})");
   ASSERT_FALSE(e.ok());
   EXPECT_EQ(e.error().key, "photo");
@@ -655,8 +680,8 @@ TEST(SceneFile, HeaderErrors) {
 TEST(SceneFile, LimitsAreEnforcedWithoutDeepRecursion) {
   const fs::path dir = sceneDir("limits");
   // 200,000 nested arrays under an unknown key: refused by depth, quickly, without recursion.
-  const std::string deep = withHeader(", \"junk\": " + std::string(200000, '[') +
-                                      std::string(200000, ']'));
+  const std::string deep =
+      withHeader(", \"junk\": " + std::string(200000, '[') + std::string(200000, ']'));
   const auto t0 = std::chrono::steady_clock::now();
   auto r = parseSceneJson(deep, dir.string(), "scene.json");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
@@ -711,14 +736,16 @@ TEST(SceneFile, OutlineChecksAcceptValidShapes) {
   const fs::path dir = sceneDir("shapes");
   // A concave L-shaped table top and a clockwise triangle are fine.
   auto r = parseSceneJson(
-      withHeader(R"(, "surfaces": [{"outline_px": [[0,0],[20,0],[20,10],[10,10],[10,20],[0,20]], "height_click_px": [0, 30]}],
+      withHeader(
+          R"(, "surfaces": [{"outline_px": [[0,0],[20,0],[20,10],[10,10],[10,20],[0,20]], "height_click_px": [0, 30]}],
                     "lights": [{"kind": "polygon_px", "points": [[0,0],[0,10],[10,0]]}])"),
       dir.string(), "scene.json");
   ASSERT_TRUE(r.ok()) << r.error().message();
   EXPECT_EQ(r->doc.surfaces[0].outlinePx.size(), 6u);
   // Touching itself at a vertex is a self-intersection.
   r = parseSceneJson(
-      withHeader(R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[10,0],[5,5],[10,10],[0,10],[5,5]]}])"),
+      withHeader(
+          R"(, "lights": [{"kind": "polygon_px", "points": [[0,0],[10,0],[5,5],[10,10],[0,10],[5,5]]}])"),
       dir.string(), "scene.json");
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().key.rfind("lights[0].points", 0), 0u);

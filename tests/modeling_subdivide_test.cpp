@@ -26,20 +26,27 @@ bool watertight(const TriangleMesh& m) {
 double volume(const TriangleMesh& m) {
   double v = 0;
   for (const auto& t : m.triangles)
-    v += m.positions[t[0]].cast<double>().dot(m.positions[t[1]].cast<double>().cross(m.positions[t[2]].cast<double>())) / 6;
+    v += m.positions[t[0]].cast<double>().dot(
+             m.positions[t[1]].cast<double>().cross(m.positions[t[2]].cast<double>())) /
+         6;
   return v;
 }
 
 double area(const TriangleMesh& m) {
   double a = 0;
   for (const auto& t : m.triangles)
-    a += 0.5 * (m.positions[t[1]] - m.positions[t[0]]).cast<double>().cross((m.positions[t[2]] - m.positions[t[0]]).cast<double>()).norm();
+    a += 0.5 * (m.positions[t[1]] - m.positions[t[0]])
+                   .cast<double>()
+                   .cross((m.positions[t[2]] - m.positions[t[0]]).cast<double>())
+                   .norm();
   return a;
 }
 
 // Isoperimetric quotient 36 pi V^2 / A^3: 1 for a sphere, 0.52 for a cube, 0.30 for a regular
 // tetrahedron; rises as a shape rounds off.
-double roundness(const TriangleMesh& m) { return 36 * kPi * std::pow(volume(m), 2) / std::pow(area(m), 3); }
+double roundness(const TriangleMesh& m) {
+  return 36 * kPi * std::pow(volume(m), 2) / std::pow(area(m), 3);
+}
 
 TEST(Subdivide, CubeConvergesToASmoothClosedShape) {
   const TriangleMesh cube = makeCube();  // 24 split vertices, 12 triangles, flat normals
@@ -56,11 +63,13 @@ TEST(Subdivide, CubeConvergesToASmoothClosedShape) {
     EXPECT_TRUE(watertight(m));
     EXPECT_EQ(m.normals.size(), m.positions.size());
     const double v = volume(m), q = roundness(m), step = previousVolume - v;
-    std::printf("[ subdivide ] cube, %d levels: %zu vertices, volume %.5f (step %.5f), roundness %.4f\n", levels,
-                m.positions.size(), v, step, q);
+    std::printf("[ subdivide ] cube, %d levels: %zu vertices, volume %.5f (step %.5f), roundness %.4f\n",
+                levels, m.positions.size(), v, step, q);
     EXPECT_GT(step, 0.0);  // Catmull-Clark shrinks a convex cage
     EXPECT_GT(q, previousRoundness);
-    if (levels >= 2) { EXPECT_LT(step, 0.35 * previousStep); }  // geometric convergence (~1/4 per level)
+    if (levels >= 2) {
+      EXPECT_LT(step, 0.35 * previousStep);
+    }  // geometric convergence (~1/4 per level)
     previousStep = step, previousVolume = v, previousRoundness = q;
   }
   // The limit surface of the unit cube: about 0.3276 (levels 3-4 extrapolated), well inside the

@@ -18,15 +18,18 @@ namespace inlay::test {
 struct RefineRoom {
   Camera camera;
   SceneGeometry geometry;
-  ImageF albedo, direct;       // W x H x 3
+  ImageF albedo, direct;         // W x H x 3
   std::vector<AreaLight> truth;  // the lights that made `direct`
 };
 
-inline AreaLight ceilingPanel(const Vec3& centre, double sx, double sz, double ceilingM, const Vec3& radiance) {
+inline AreaLight ceilingPanel(const Vec3& centre, double sx, double sz, double ceilingM,
+                              const Vec3& radiance) {
   AreaLight L;
   const double y = ceilingM - 1e-3;
-  L.cornersWorld = {Vec3(centre.x() - sx / 2, y, centre.z() - sz / 2), Vec3(centre.x() + sx / 2, y, centre.z() - sz / 2),
-                    Vec3(centre.x() + sx / 2, y, centre.z() + sz / 2), Vec3(centre.x() - sx / 2, y, centre.z() + sz / 2)};
+  L.cornersWorld = {Vec3(centre.x() - sx / 2, y, centre.z() - sz / 2),
+                    Vec3(centre.x() + sx / 2, y, centre.z() - sz / 2),
+                    Vec3(centre.x() + sx / 2, y, centre.z() + sz / 2),
+                    Vec3(centre.x() - sx / 2, y, centre.z() + sz / 2)};
   if (L.normal().y() > 0) std::swap(L.cornersWorld[1], L.cornersWorld[3]);
   L.radiance = radiance;
   return L;
@@ -43,8 +46,9 @@ inline RefineRoom makeRefineRoom(int W, int H, int truthSamples) {
   r.geometry = buildSceneGeometry(box, {});
   r.truth = {ceilingPanel(Vec3(-1.0, 0, -3.2), 0.6, 0.6, 2.7, Vec3(6, 5, 3.5)),
              ceilingPanel(Vec3(1.1, 0, -2.0), 0.7, 0.5, 2.7, Vec3(3.5, 4, 5))};
-  const std::vector<Vec3> surfaceAlbedo = {Vec3(0.35, 0.3, 0.25), Vec3(0.8, 0.8, 0.8), Vec3(0.6, 0.55, 0.5),
-                                           Vec3(0.5, 0.6, 0.55), Vec3(0.7, 0.65, 0.6), Vec3(0.6, 0.6, 0.6)};
+  const std::vector<Vec3> surfaceAlbedo = {Vec3(0.35, 0.3, 0.25), Vec3(0.8, 0.8, 0.8),
+                                           Vec3(0.6, 0.55, 0.5),  Vec3(0.5, 0.6, 0.55),
+                                           Vec3(0.7, 0.65, 0.6),  Vec3(0.6, 0.6, 0.6)};
   r.albedo = ImageF(W, H, 3, 0.f);
   r.direct = ImageF(W, H, 3, 0.f);
   const RoomTracer tracer(r.geometry);
@@ -60,8 +64,9 @@ inline RefineRoom makeRefineRoom(int W, int H, int truthSamples) {
         Vec3 e = Vec3::Zero();
         for (size_t j = 0; j < r.truth.size(); ++j)
           e += r.truth[j].radiance *
-               tracer.unitLightIrradianceOverPi(r.truth[j], h->pointWorld + 1e-5 * h->normalWorld, h->normalWorld,
-                                                truthSamples, 0x9e3779b9u ^ uint32_t(y * W + x + 977 * j));
+               tracer.unitLightIrradianceOverPi(r.truth[j], h->pointWorld + 1e-5 * h->normalWorld,
+                                                h->normalWorld, truthSamples,
+                                                0x9e3779b9u ^ uint32_t(y * W + x + 977 * j));
         r.albedo.setRgb(x, y, rho);
         r.direct.setRgb(x, y, rho.cwiseProduct(e));
       }
@@ -70,7 +75,8 @@ inline RefineRoom makeRefineRoom(int W, int H, int truthSamples) {
 }
 
 // The truth lights moved by `shiftM` (alternating directions) and their radiance scaled.
-inline std::vector<AreaLight> perturbed(const std::vector<AreaLight>& truth, double shiftM, double radianceScale) {
+inline std::vector<AreaLight> perturbed(const std::vector<AreaLight>& truth, double shiftM,
+                                        double radianceScale) {
   std::vector<AreaLight> out = truth;
   for (size_t j = 0; j < out.size(); ++j) {
     const Vec3 d = j % 2 == 0 ? Vec3(shiftM, 0, -0.6 * shiftM) : Vec3(-0.7 * shiftM, 0, shiftM);

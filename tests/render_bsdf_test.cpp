@@ -48,7 +48,8 @@ double integratedAlbedo(const SurfaceBsdf& b, const Vec3& wo, int n = 1 << 16) {
   return sum / n;
 }
 
-double roughGlassAlbedo(double roughness, double eta, const Vec3& wo, double* transmitted, int n = 1 << 14) {
+double roughGlassAlbedo(double roughness, double eta, const Vec3& wo, double* transmitted,
+                        int n = 1 << 14) {
   const double alpha = std::max(1e-4, roughness * roughness);
   double sum = 0, through = 0;
   for (int i = 0; i < n; ++i) {
@@ -87,7 +88,9 @@ TEST(BsdfFurnace, AlbedoNeverAboveOneAndLosslessNearOne) {
       std::printf("[ bsdf furnace ] %-16s theta %4.0f: albedo %.4f\n", c.name, theta, a);
       EXPECT_LE(a, 1.005) << c.name << " at " << theta;
       EXPECT_TRUE(std::isfinite(a));
-      if (theta <= 75) { EXPECT_GE(a, c.minAlbedo) << c.name << " at " << theta; }
+      if (theta <= 75) {
+        EXPECT_GE(a, c.minAlbedo) << c.name << " at " << theta;
+      }
     }
   }
 }
@@ -98,13 +101,16 @@ TEST(BsdfFurnace, RoughGlassKeepsEnergyBothWays) {
       for (double theta : {0.0, 30.0, 60.0, 80.0}) {
         double transmitted = 0;
         const double a = roughGlassAlbedo(roughness, eta, direction(theta), &transmitted);
-        std::printf("[ bsdf furnace ] rough glass r%.2f eta %.3f theta %2.0f: albedo %.4f (transmitted %.4f)\n",
-                    roughness, eta, theta, a, transmitted);
+        std::printf(
+            "[ bsdf furnace ] rough glass r%.2f eta %.3f theta %2.0f: albedo %.4f (transmitted %.4f)\n",
+            roughness, eta, theta, a, transmitted);
         EXPECT_LE(a, 1.01);
         // Lossless up to GGX's single-scattering loss (largest from the dense side, where
         // rays refracted out at grazing microfacets are masked).
         EXPECT_GE(a, roughness < 0.1 ? 0.999 : roughness < 0.5 ? 0.88 : 0.6);
-        if (eta > 1) { EXPECT_GT(transmitted, 0.5 * a); }
+        if (eta > 1) {
+          EXPECT_GT(transmitted, 0.5 * a);
+        }
       }
   // Near-smooth and at normal incidence it is the smooth interface: T = 1 - ((n-1)/(n+1))^2.
   double transmitted = 0;
@@ -138,15 +144,17 @@ TEST(BsdfSampling, RoughGlassEvalMatchesItsSampler) {
           const auto u = rng.get2(0);
           const double z = 1 - 2 * u[0], r = std::sqrt(std::max(0.0, 1 - z * z)), phi = 2 * kPi * u[1];
           double pdf = 0;
-          const double f = roughGlassEval(wo, Vec3(r * std::cos(phi), r * std::sin(phi), z), alpha, eta, &pdf).x();
+          const double f =
+              roughGlassEval(wo, Vec3(r * std::cos(phi), r * std::sin(phi), z), alpha, eta, &pdf).x();
           integrated += f * 4 * kPi / m;
           pdfMass += pdf * 4 * kPi / m;
           if (z < 0) integratedThrough += f * 4 * kPi / m;
         }
-        std::printf("[ rough glass eval ] r%.1f eta %.3f theta %2.0f: sampled %.4f integrated %.4f (through %.4f / "
-                    "%.4f), pdf mass %.4f valid %.4f\n",
-                    roughness, eta, theta, sampled, integrated, transmitted, integratedThrough, pdfMass,
-                    double(valid) / n);
+        std::printf(
+            "[ rough glass eval ] r%.1f eta %.3f theta %2.0f: sampled %.4f integrated %.4f (through %.4f / "
+            "%.4f), pdf mass %.4f valid %.4f\n",
+            roughness, eta, theta, sampled, integrated, transmitted, integratedThrough, pdfMass,
+            double(valid) / n);
         EXPECT_NEAR(sampled, integrated, 0.02 * integrated);
         EXPECT_NEAR(transmitted, integratedThrough, 0.02 * integrated);
         EXPECT_NEAR(pdfMass, double(valid) / n, 0.02);
@@ -168,11 +176,13 @@ TEST(BsdfFurnace, CompensatedMetalKeepsItsColour) {
     if (!s.valid) continue;
     sum += s.weight / n;
     double pdf = 0;
-    const Vec3 fms = gold.multipleScattering(GgxAlbedoTable::instance().albedo(wo.z(), gold.alpha), s.dir.z());
+    const Vec3 fms =
+        gold.multipleScattering(GgxAlbedoTable::instance().albedo(wo.z(), gold.alpha), s.dir.z());
     single += (s.weight - fms * s.dir.z() * (s.weight.x() / gold.eval(wo, s.dir, &pdf).x())) / n;
   }
-  std::printf("[ bsdf furnace ] gold r0.8: albedo %.4f %.4f %.4f (single scattering %.4f %.4f %.4f), white %.4f\n",
-              sum.x(), sum.y(), sum.z(), single.x(), single.y(), single.z(), sampledAlbedo(white, wo));
+  std::printf(
+      "[ bsdf furnace ] gold r0.8: albedo %.4f %.4f %.4f (single scattering %.4f %.4f %.4f), white %.4f\n",
+      sum.x(), sum.y(), sum.z(), single.x(), single.y(), single.z(), sampledAlbedo(white, wo));
   for (int c = 0; c < 3; ++c) {
     EXPECT_GT(sum[c], single[c] + 0.02) << c;
     EXPECT_LE(sum[c], 1.005) << c;

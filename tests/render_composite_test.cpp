@@ -32,8 +32,9 @@ TEST(Composite, FollowsDebevecFormula) {
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) {
         const double m = mask.at(x, y);
-        const double expected = std::max(
-            0.0, m * with.at(x, y, c) + (1 - m) * (photo.at(x, y, c) + with.at(x, y, c) - without.at(x, y, c)));
+        const double expected =
+            std::max(0.0, m * with.at(x, y, c) +
+                              (1 - m) * (photo.at(x, y, c) + with.at(x, y, c) - without.at(x, y, c)));
         ASSERT_NEAR(out.at(x, y, c), expected, 1e-6 * (1 + expected));
       }
 }
@@ -50,10 +51,8 @@ TEST(Composite, UnchangedPixelsAreThePhotoBitForBit) {
   with.at(3, 2, 1) += 0.25f;
   const ImageF out2 = differentialComposite(photo, with, render, mask);
   for (size_t i = 0; i < out2.data.size(); ++i) {
-    if (i == (size_t(2) * w + 3) * 3 + 1)
-      EXPECT_FLOAT_EQ(out2.data[i], photo.data[i] + 0.25f);
-    else
-      ASSERT_EQ(out2.data[i], photo.data[i]);
+    if (i == (size_t(2) * w + 3) * 3 + 1) EXPECT_FLOAT_EQ(out2.data[i], photo.data[i] + 0.25f);
+    else ASSERT_EQ(out2.data[i], photo.data[i]);
   }
 }
 
@@ -70,7 +69,8 @@ TEST(Composite, ClampsNegativeAndNeverProducesNonFinite) {
 }
 
 TEST(Composite, FullMaskShowsTheRender) {
-  const ImageF photo = filled(4, 4, 3, 7, 1.f), with = filled(4, 4, 3, 8, 1.f), without = filled(4, 4, 3, 9, 1.f);
+  const ImageF photo = filled(4, 4, 3, 7, 1.f), with = filled(4, 4, 3, 8, 1.f),
+               without = filled(4, 4, 3, 9, 1.f);
   const ImageF out = differentialComposite(photo, with, without, ImageF(4, 4, 1, 1.f));
   for (size_t i = 0; i < out.data.size(); ++i) EXPECT_FLOAT_EQ(out.data[i], with.data[i]);
 }
@@ -105,7 +105,8 @@ TEST(Composite, ReencodedThroughTheCameraResponseKeepsUntouchedCodes) {
       for (int c = 0; c < 3; ++c) {
         const size_t i = (size_t(y) * w + x) * 3 + size_t(c);
         const bool touched = x >= 4 && x < 12 && y >= 5 && y < 7;
-        const int expected = touched ? int(std::lround(255 * response.encode(photo.data[i] + 0.05))) : codes[i];
+        const int expected = touched ? int(std::lround(255 * response.encode(photo.data[i] + 0.05)))
+                                     : codes[i];
         EXPECT_NEAR(int(written[i]), expected, touched ? 1 : 0) << x << "," << y;
         changed += written[i] != codes[i];
       }

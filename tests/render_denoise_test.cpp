@@ -20,7 +20,8 @@ namespace {
 // A sphere on the floor of a box room under one ceiling light, seen from above its shadow.
 RenderScene sphereScene(int w, int h) {
   RenderScene s = test::roomScene(test::testCamera(w, h, 60, 1.3, -25), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(-0.3, 2.59, -2.2), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(20)));
+  s.lights.push_back(
+      test::rectLight(Vec3(-0.3, 2.59, -2.2), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(20)));
   InsertedObject o;
   o.meshObject = test::sphereMesh(0.35, 16, 32);
   o.worldFromObject = test::translation(Vec3(0.2, 0.35, -2.4));
@@ -68,7 +69,8 @@ std::vector<uint8_t> objectPixels(const ImageF& mask, float above = 0.5f) {
 std::vector<uint8_t> changedPixels(const ImageF& composite, const ImageF& photo) {
   std::vector<uint8_t> o(photo.pixelCount());
   for (size_t i = 0; i < o.size(); ++i)
-    for (int c = 0; c < 3; ++c) o[i] = o[i] || std::abs(composite.data[i * 3 + c] - photo.data[i * 3 + c]) > 2e-3f;
+    for (int c = 0; c < 3; ++c)
+      o[i] = o[i] || std::abs(composite.data[i * 3 + c] - photo.data[i * 3 + c]) > 2e-3f;
   return o;
 }
 
@@ -81,7 +83,8 @@ class DenoiseScene : public ::testing::Test {
     guides = renderDenoiseGuides(*tracer, kW, kH, 2);
     photo = ImageF(kW, kH, 3);
     for (int y = 0; y < kH; ++y)  // a textured photo: tiles of two greys
-      for (int x = 0; x < kW; ++x) photo.setRgb(x, y, Vec3::Constant(((x / 4 + y / 4) % 2) ? 0.35 : 0.55));
+      for (int x = 0; x < kW; ++x)
+        photo.setRgb(x, y, Vec3::Constant(((x / 4 + y / 4) % 2) ? 0.35 : 0.55));
   }
   RenderScene scene;
   std::unique_ptr<PathTracer> tracer;
@@ -99,7 +102,8 @@ TEST_F(DenoiseScene, GuidesSeeTheObjectAndTheRoom) {
     for (int x = 0; x < kW; ++x) {
       const size_t i = size_t(y) * kW + x;
       const double a = guides.albedo[0][i];
-      EXPECT_TRUE(std::abs(a - 0.6) < 1e-6 || std::abs(a - 0.8) < 1e-6 || a == 1.0) << a;  // room, sphere, light
+      EXPECT_TRUE(std::abs(a - 0.6) < 1e-6 || std::abs(a - 0.8) < 1e-6 || a == 1.0)
+          << a;  // room, sphere, light
       const double n = std::hypot(guides.normal[0][i], guides.normal[1][i], guides.normal[2][i]);
       EXPECT_NEAR(n, 1.0, 1e-4);
       EXPECT_GT(guides.distance[i], 0.5f);
@@ -143,7 +147,7 @@ TEST_F(DenoiseScene, UntouchedPixelsStayThePhotoBitForBit) {
       farPx += !near;
       changedPx += std::memcmp(&den.data[i * 3], &raw.data[i * 3], 3 * sizeof(float)) != 0;
     }
-  EXPECT_GT(farPx, 20);      // the test covers some pixels out of reach
+  EXPECT_GT(farPx, 20);       // the test covers some pixels out of reach
   EXPECT_GT(changedPx, 100);  // and the filter did change the object and its shadow
 }
 
@@ -164,10 +168,12 @@ TEST_F(DenoiseScene, LowersTheErrorOfAFewSampleRender) {
       saveImage(d + "_ref.png", refC);
     }
     // The object's inside (its edge pixels' error is the mask's, which the filter leaves alone).
-    EXPECT_LT(rmse(den, refC, obj), (spp == 1 ? 0.5 : 0.6) * rmse(raw, refC, obj)) << spp << " spp, object";
+    EXPECT_LT(rmse(den, refC, obj), (spp == 1 ? 0.5 : 0.6) * rmse(raw, refC, obj))
+        << spp << " spp, object";
     std::printf("%d spp: object %.4f -> %.4f, surroundings %.4f -> %.4f\n", spp, rmse(raw, refC, obj),
                 rmse(den, refC, obj), rmse(raw, refC, around), rmse(den, refC, around));
-    EXPECT_LT(rmse(den, refC, around), (spp == 1 ? 0.75 : 0.6) * rmse(raw, refC, around)) << spp << " spp, surroundings";
+    EXPECT_LT(rmse(den, refC, around), (spp == 1 ? 0.75 : 0.6) * rmse(raw, refC, around))
+        << spp << " spp, surroundings";
     EXPECT_TRUE(test::allFinite(den));
   }
 }
@@ -230,7 +236,8 @@ struct Synthetic {
   }
   ImageF run() const {
     DenoiseInput in;
-    in.withObjects = &with, in.withoutObjects = &without, in.mask = &mask, in.buffers = &b, in.guides = &g;
+    in.withObjects = &with, in.withoutObjects = &without, in.mask = &mask, in.buffers = &b,
+    in.guides = &g;
     return denoiseWithObjects(in);
   }
 };
@@ -339,13 +346,13 @@ TEST(DenoiseSession, FramesAreDenoisedAndKeepUntouchedPixels) {
   int changed = 0;
   for (size_t i = 0; i < frames[0]->mask.pixelCount(); ++i) {
     const bool untouched = frames[0]->withObjects.rgb(int(i % w), int(i / w)) ==
-                           frames[0]->withoutObjects.rgb(int(i % w), int(i / w)) &&
+                               frames[0]->withoutObjects.rgb(int(i % w), int(i / w)) &&
                            frames[0]->mask.data[i] == 0;
-    const bool same = std::memcmp(&frames[0]->withObjects.data[i * 3], &frames[1]->withObjects.data[i * 3],
-                                  3 * sizeof(float)) == 0;
+    const bool same = std::memcmp(&frames[0]->withObjects.data[i * 3],
+                                  &frames[1]->withObjects.data[i * 3], 3 * sizeof(float)) == 0;
     changed += !same;
-    if (untouched &&
-        frames[1]->withObjects.rgb(int(i % w), int(i / w)) == frames[1]->withoutObjects.rgb(int(i % w), int(i / w))) {
+    if (untouched && frames[1]->withObjects.rgb(int(i % w), int(i / w)) ==
+                         frames[1]->withoutObjects.rgb(int(i % w), int(i / w))) {
       EXPECT_TRUE(same);
     }
   }

@@ -24,11 +24,12 @@ RenderScene exportScene() {
   RenderScene s = test::roomScene(test::testCamera(w, h, 60, 1.3, -10), RoomBox{}, 0.5);
   s.roomAlbedo.albedo = ImageF(w, h, 3);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) s.roomAlbedo.albedo.setRgb(x, y, Vec3(0.1 + 0.8 * x / w, 0.3, 0.9 - 0.6 * y / h));
+    for (int x = 0; x < w; ++x)
+      s.roomAlbedo.albedo.setRgb(x, y, Vec3(0.1 + 0.8 * x / w, 0.3, 0.9 - 0.6 * y / h));
   s.roomAlbedo.computeFirstSurfaces(s.room);
   s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3(6, 5, 4)));
-  const Material::Kind kinds[] = {Material::Kind::Diffuse, Material::Kind::Conductor, Material::Kind::RoughGlass,
-                                  Material::Kind::Emissive};
+  const Material::Kind kinds[] = {Material::Kind::Diffuse, Material::Kind::Conductor,
+                                  Material::Kind::RoughGlass, Material::Kind::Emissive};
   for (int i = 0; i < 4; ++i) {
     InsertedObject o;
     o.meshObject = test::sphereMesh(0.2, 8, 16);
@@ -87,7 +88,8 @@ TEST(GltfExport, AssimpReadsBackRoomLightsCameraAndObjects) {
   const nlohmann::json doc = nlohmann::json::parse(in);
   auto strengthOf = [&](const std::string& name) {
     for (const auto& m : doc["materials"])
-      if (m["name"] == name) return m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>();
+      if (m["name"] == name)
+        return m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>();
     return 0.0;
   };
   EXPECT_NEAR(e.r * strengthOf("light_0"), 6.0, 1e-4);
@@ -110,7 +112,8 @@ TEST(GltfExport, AssimpReadsBackRoomLightsCameraAndObjects) {
   const aiMesh* wall = sc->mMeshes[wallNode->mMeshes[0]];
   ASSERT_TRUE(wall->HasTextureCoords(0));
   aiString texPath;
-  ASSERT_EQ(sc->mMaterials[wall->mMaterialIndex]->GetTexture(aiTextureType_DIFFUSE, 0, &texPath), AI_SUCCESS);
+  ASSERT_EQ(sc->mMaterials[wall->mMaterialIndex]->GetTexture(aiTextureType_DIFFUSE, 0, &texPath),
+            AI_SUCCESS);
   const Expected<LoadedImage> tex = loadImage((dir / texPath.C_Str()).string());
   ASSERT_TRUE(tex.ok()) << tex.error().message();
   for (const Vec2& px : {Vec2(32.5, 20.5), Vec2(10.5, 12.5), Vec2(50.5, 25.5)}) {
@@ -120,21 +123,28 @@ TEST(GltfExport, AssimpReadsBackRoomLightsCameraAndObjects) {
     bool found = false;
     for (unsigned f = 0; f < wall->mNumFaces && !found; ++f) {
       const unsigned* ix = wall->mFaces[f].mIndices;
-      auto P = [&](int k) { const aiVector3D& v = wall->mVertices[ix[k]]; return Vec2(v.x, v.y); };
+      auto P = [&](int k) {
+        const aiVector3D& v = wall->mVertices[ix[k]];
+        return Vec2(v.x, v.y);
+      };
       const Vec2 a = P(0), b = P(1), c = P(2), q(p.x(), p.y());
       const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
       const double l1 = ((q - a).x() * (c - a).y() - (q - a).y() * (c - a).x()) / area;
       const double l2 = ((b - a).x() * (q - a).y() - (b - a).y() * (q - a).x()) / area;
       if (l1 < 0 || l2 < 0 || l1 + l2 > 1) continue;
       found = true;
-      auto UV = [&](int k) { const aiVector3D& t = wall->mTextureCoords[0][ix[k]]; return Vec2(t.x, t.y); };
+      auto UV = [&](int k) {
+        const aiVector3D& t = wall->mTextureCoords[0][ix[k]];
+        return Vec2(t.x, t.y);
+      };
       Vec2 uv = (1 - l1 - l2) * UV(0) + l1 * UV(1) + l2 * UV(2);
       uv.y() = 1 - uv.y();  // Assimp flips glTF's v on import
       const ImageF& t = tex->linearRgb;
-      const Vec3 got = t.rgb(std::min(t.width - 1, int(uv.x() * t.width)), std::min(t.height - 1, int(uv.y() * t.height)));
+      const Vec3 got = t.rgb(std::min(t.width - 1, int(uv.x() * t.width)),
+                             std::min(t.height - 1, int(uv.y() * t.height)));
       const Vec3 want = s.roomAlbedo.albedo.rgb(int(px.x()), int(px.y()));
-      EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 0.04) << "pixel " << px.transpose() << " got " << got.transpose()
-                                                            << " want " << want.transpose();
+      EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 0.04)
+          << "pixel " << px.transpose() << " got " << got.transpose() << " want " << want.transpose();
     }
     EXPECT_TRUE(found);
   }
@@ -220,11 +230,14 @@ TEST(GltfExport, PartMaterialsExportAsOnePrimitiveEach) {
   ASSERT_NE(object, nullptr);
   ASSERT_EQ((*object)["primitives"].size(), 2u);
   size_t indices = 0;
-  for (const auto& p : (*object)["primitives"]) indices += j["accessors"][p["indices"].get<int>()]["count"].get<size_t>();
+  for (const auto& p : (*object)["primitives"])
+    indices += j["accessors"][p["indices"].get<int>()]["count"].get<size_t>();
   EXPECT_EQ(indices, 3 * mesh.triangles.size());
   const auto& shadeMaterial = j["materials"][(*object)["primitives"][1]["material"].get<int>()];
   EXPECT_EQ(shadeMaterial["name"], "object_0_part_1");
-  EXPECT_NEAR(shadeMaterial["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>(), 1.5, 1e-9);
+  EXPECT_NEAR(
+      shadeMaterial["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"].get<double>(),
+      1.5, 1e-9);
   const auto& standMaterial = j["materials"][(*object)["primitives"][0]["material"].get<int>()];
   EXPECT_EQ(standMaterial["pbrMetallicRoughness"]["metallicFactor"], 1);
 }
@@ -234,7 +247,8 @@ TEST(GltfExport, GlbHoldsEverythingAndBadPathsAreErrors) {
   const auto dir = test::tempDir("gltf_glb");
   const std::string path = (dir / "room.glb").string();
   ASSERT_TRUE(exportGltf(s, path).ok());
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(
+      std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator()), 1);
   Assimp::Importer importer;
   const aiScene* sc = importer.ReadFile(path, 0);
   ASSERT_NE(sc, nullptr) << importer.GetErrorString();

@@ -43,7 +43,8 @@ std::vector<ImageF> unitNoise(double widthPx, double shared, uint32_t seed) {
     const int r = int(std::ceil(3 * widthPx));
     std::vector<double> k;
     double ss = 0;
-    for (int i = -r; i <= r; ++i) k.push_back(std::exp(-0.5 * i * i / (widthPx * widthPx))), ss += k.back() * k.back();
+    for (int i = -r; i <= r; ++i)
+      k.push_back(std::exp(-0.5 * i * i / (widthPx * widthPx))), ss += k.back() * k.back();
     for (double& v : k) v /= std::sqrt(ss);
     for (auto& f : white) {
       ImageF h(kW, kH, 1), o(kW, kH, 1);
@@ -85,7 +86,8 @@ ImageF noisy(const ImageF& clean, const std::function<double(double)>& sigma, do
 
 // addGrain on a frame of these layers (no render noise unless given: sRGB standard error).
 void addGrainTo(ImageF& composite, const ImageF& photo, const ImageF& with, const ImageF& without,
-                const ImageF& mask, const PhotoNoise& noise, uint32_t seed, const ImageF& renderNoise = {}) {
+                const ImageF& mask, const PhotoNoise& noise, uint32_t seed,
+                const ImageF& renderNoise = {}) {
   RenderFrame f;
   f.width = with.width, f.height = with.height;
   f.withObjects = with, f.withoutObjects = without, f.mask = mask, f.noise = renderNoise;
@@ -98,7 +100,8 @@ void expectRecovers(const PhotoNoise& m, const std::function<double(double)>& si
   for (int c = 0; c < 3; ++c)
     for (double I : {0.1, 0.2, 0.35, 0.5, 0.65, 0.75}) {
       const double got = m.sigma(c, I), want = sigma(I);
-      EXPECT_NEAR(got / want, 1.0, tol) << "channel " << c << " at I = " << I << ": " << got << " vs " << want;
+      EXPECT_NEAR(got / want, 1.0, tol)
+          << "channel " << c << " at I = " << I << ": " << got << " vs " << want;
     }
 }
 
@@ -136,7 +139,8 @@ TEST(Grain, NoNoiseNoGrain) {
   const ImageF composite = differentialComposite(clean, with, without, mask);
   ImageF grained = composite;
   addGrainTo(grained, clean, with, without, mask, m, 1);
-  EXPECT_EQ(0, std::memcmp(grained.data.data(), composite.data.data(), composite.data.size() * sizeof(float)));
+  EXPECT_EQ(
+      0, std::memcmp(grained.data.data(), composite.data.data(), composite.data.size() * sizeof(float)));
 }
 
 PhotoNoise constantNoise(double sigma, double widthPx = 0, double rho = 0) {
@@ -169,7 +173,8 @@ TEST(Grain, FieldIsDeterministicUnitVarianceAndIndependent) {
   double white = 0, coarse = 0;
   for (int i = 0; i < 20000; ++i) {
     white += grainAt(constantNoise(1), i, 3 * i, 2, 9) * grainAt(constantNoise(1), i + 1, 3 * i, 2, 9);
-    coarse += grainAt(constantNoise(1, 1.5), i, 3 * i, 2, 9) * grainAt(constantNoise(1, 1.5), i + 1, 3 * i, 2, 9);
+    coarse += grainAt(constantNoise(1, 1.5), i, 3 * i, 2, 9) *
+              grainAt(constantNoise(1, 1.5), i + 1, 3 * i, 2, 9);
   }
   EXPECT_NEAR(white / 20000, 0.0, 0.03);
   EXPECT_NEAR(coarse / 20000, std::exp(-1.0 / (4 * 1.5 * 1.5)), 0.05);
@@ -215,9 +220,11 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x)
       for (int c = 0; c < 3; ++c) {
-        const bool object = f.mask.at(x, y) > 0, changed = object || f.with.at(x, y, c) != f.without.at(x, y, c);
+        const bool object = f.mask.at(x, y) > 0,
+                   changed = object || f.with.at(x, y, c) != f.without.at(x, y, c);
         if (!changed) {
-          ASSERT_EQ(0, std::memcmp(out.pixel(x, y) + c, photo.pixel(x, y) + c, sizeof(float))) << x << "," << y;
+          ASSERT_EQ(0, std::memcmp(out.pixel(x, y) + c, photo.pixel(x, y) + c, sizeof(float)))
+              << x << "," << y;
         } else if (object) {
           const double d = out.at(x, y, c) - 0.5;
           s += d, ss += d * d, cnt += 1;

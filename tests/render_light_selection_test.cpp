@@ -49,7 +49,8 @@ FloorComparison renderFloor(const RenderScene& s, Sel mode, int spp, uint32_t se
       const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
       if (!(d.y() < 0)) continue;
       const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
-      if (q.x() < box.xLeftM + 0.1 || q.x() > box.xRightM - 0.1 || q.z() < box.zBackM + 0.1 || q.z() > box.zRearM - 0.1)
+      if (q.x() < box.xLeftM + 0.1 || q.x() > box.xRightM - 0.1 || q.z() < box.zBackM + 0.1 ||
+          q.z() > box.zRearM - 0.1)
         continue;
       double expected = 0;
       for (const AreaLight& l : s.lights) expected += l.radiance.x() * formFactorUp(q, l.cornersWorld);
@@ -67,8 +68,8 @@ TEST(LightSelection, BothRulesMatchTheFormFactorSum) {
   for (Sel mode : {Sel::Spatial, Sel::Power}) {
     const FloorComparison c = renderFloor(s, mode, 128, 3);
     ASSERT_GT(c.err.n, 300);
-    std::printf("[ lights ] %s: %d floor px, mean rel err %+.4f, rms %.4f\n", mode == Sel::Spatial ? "spatial" : "power",
-                c.err.n, c.err.mean(), c.err.rms());
+    std::printf("[ lights ] %s: %d floor px, mean rel err %+.4f, rms %.4f\n",
+                mode == Sel::Spatial ? "spatial" : "power", c.err.n, c.err.mean(), c.err.rms());
     EXPECT_LT(std::abs(c.err.mean()), 0.01);
     EXPECT_LT(c.err.rms(), 0.08);
   }
@@ -91,16 +92,18 @@ double noiseBetweenSeeds(const RenderScene& s, Sel mode, int spp) {
 // (0.035 against 0.059 here); the table is the cheaper per vertex (bench_light_selection).
 TEST(LightSelection, OneBrightManyDimRulesAgreeOnTheMean) {
   const RenderScene s = test::manyLightsScene(48, 36, 48, 400.0, 1.0);
-  const double spatialNoise = noiseBetweenSeeds(s, Sel::Spatial, 16), powerNoise = noiseBetweenSeeds(s, Sel::Power, 16);
+  const double spatialNoise = noiseBetweenSeeds(s, Sel::Spatial, 16),
+               powerNoise = noiseBetweenSeeds(s, Sel::Power, 16);
   const FloorComparison a = renderFloor(s, Sel::Spatial, 64, 5), b = renderFloor(s, Sel::Power, 64, 6);
   double meanA = 0, meanB = 0;
   for (size_t i = 0; i < a.rendered.size(); ++i) meanA += a.rendered[i], meanB += b.rendered[i];
   meanA /= double(a.rendered.size()), meanB /= double(b.rendered.size());
   // The per-pixel noise at 64 spp is half that at 16; the mean over n pixels has 1/sqrt(n) of it.
   const double sigma = 0.5 * std::hypot(spatialNoise, powerNoise) / std::sqrt(double(a.rendered.size()));
-  std::printf("[ lights ] 1 bright + 47 dim, 16 spp: relative noise spatial %.4f, power %.4f; "
-              "64 spp means %.5f / %.5f (rel diff %+.5f, sigma %.5f)\n",
-              spatialNoise, powerNoise, meanA, meanB, meanB / meanA - 1, sigma);
+  std::printf(
+      "[ lights ] 1 bright + 47 dim, 16 spp: relative noise spatial %.4f, power %.4f; "
+      "64 spp means %.5f / %.5f (rel diff %+.5f, sigma %.5f)\n",
+      spatialNoise, powerNoise, meanA, meanB, meanB / meanA - 1, sigma);
   EXPECT_LT(std::abs(meanB / meanA - 1), 4 * sigma + 1e-3);
   EXPECT_LT(std::abs(a.err.mean()), 0.01);
   EXPECT_LT(std::abs(b.err.mean()), 0.01);

@@ -14,7 +14,9 @@ namespace {
 constexpr int kW = 40, kH = 30;
 const Vec3 kLampCentre(0, 2.2, -2.0), kLampU(0.3, 0, 0), kLampV(0, 0, 0.3);
 
-RenderScene floorScene() { return test::roomScene(test::testCamera(kW, kH, 60, 1.3, -40), RoomBox{}, 0.6); }
+RenderScene floorScene() {
+  return test::roomScene(test::testCamera(kW, kH, 60, 1.3, -40), RoomBox{}, 0.6);
+}
 
 RenderScene areaLightScene(double radiance) {
   RenderScene s = floorScene();
@@ -72,8 +74,9 @@ TEST(MeshLight, QuadGivesTheAreaLightsIrradiance) {
   for (size_t i : px) sumArea += area.data[i * 3], sumMesh += mesh.data[i * 3];
   const double rel = sumMesh / sumArea - 1.0;
   const double rms = rmsRelative(mesh, area, px);
-  std::printf("[ mesh light ] emissive quad vs area light, 256 spp, %zu px: mean rel %+.4f, rms rel %.4f\n",
-              px.size(), rel, rms);
+  std::printf(
+      "[ mesh light ] emissive quad vs area light, 256 spp, %zu px: mean rel %+.4f, rms rel %.4f\n",
+      px.size(), rel, rms);
   EXPECT_LT(std::abs(rel), 0.01);
   EXPECT_LT(rms, 0.05);
 }
@@ -122,7 +125,8 @@ TEST(MeshLight, GlowingSphereLightsTheRoomAndFollowsItsMoves) {
       (x < kW / 2 ? left : right) += with.at(x, y, 0) - without.at(x, y, 0);
       withoutTotal += without.at(x, y, 0);
     }
-  std::printf("[ mesh light ] glowing sphere on the left: added light left %.2f, right %.2f\n", left, right);
+  std::printf("[ mesh light ] glowing sphere on the left: added light left %.2f, right %.2f\n", left,
+              right);
   EXPECT_EQ(withoutTotal, 0.0);  // no other light: the room without the lamp is black
   EXPECT_GT(left, 2.0 * right);
   EXPECT_GT(right, 0.0);

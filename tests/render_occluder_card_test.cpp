@@ -15,7 +15,8 @@ constexpr int kW = 40, kH = 30;
 RenderScene sceneWithCard(const ImageF* alpha) {
   const Camera cam = test::testCamera(kW, kH, 70, 1.3, -10);
   RenderScene s = test::roomScene(cam, RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
   InsertedObject o;
   o.meshObject = test::sphereMesh(0.4);
   o.worldFromObject = test::translation(Vec3(0, 0.4, -2.5));
@@ -28,7 +29,8 @@ RenderScene sceneWithCard(const ImageF* alpha) {
     Surface card;
     card.kind = SurfaceKind::OccluderCard;
     card.name = "occluder_0_card";
-    card.meshWorld = test::quadMesh(test::rectCorners(Vec3(0, 0.75, -1.8), Vec3(1.5, 0, 0), Vec3(0, 0.75, 0)));
+    card.meshWorld =
+        test::quadMesh(test::rectCorners(Vec3(0, 0.75, -1.8), Vec3(1.5, 0, 0), Vec3(0, 0.75, 0)));
     auto a = std::make_shared<CardAlpha>();
     a->camera = cam;
     a->alphaPx = *alpha;
@@ -68,7 +70,6 @@ TEST(OccluderCard, HidesTheObjectWhereTheMatteCoversIt) {
   EXPECT_NEAR((left2 + right2) / (left0 + right0), 0.7, 0.05);
 }
 
-
 // A horizontal card between a small ceiling light and the floor, above the camera (out of its
 // view); its matte is given in a second camera looking straight down, uniform `alpha` there.
 // Returns the mean radiance of the floor the camera sees (all of it in the card's shadow).
@@ -81,7 +82,8 @@ double floorUnderCard(std::optional<float> alpha) {
     Surface card;
     card.kind = SurfaceKind::OccluderCard;
     card.name = "occluder_0_card";
-    card.meshWorld = test::quadMesh(test::rectCorners(Vec3(0, 1.6, -0.5), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4)));
+    card.meshWorld =
+        test::quadMesh(test::rectCorners(Vec3(0, 1.6, -0.5), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4)));
     auto a = std::make_shared<CardAlpha>();
     a->camera = test::testCamera(kW, kH, 120, 2.5, -90);
     a->alphaPx = ImageF(kW, kH, 1, *alpha);

@@ -13,7 +13,9 @@ namespace {
 constexpr int kW = 40, kH = 30;
 const Vec3 kLampCentre(0, 2.2, -2.0), kLampU(0.3, 0, 0), kLampV(0, 0, 0.3);
 
-RenderScene floorScene() { return test::roomScene(test::testCamera(kW, kH, 60, 1.3, -40), RoomBox{}, 0.6); }
+RenderScene floorScene() {
+  return test::roomScene(test::testCamera(kW, kH, 60, 1.3, -40), RoomBox{}, 0.6);
+}
 
 Material emissive(double radiance) {
   Material m;
@@ -26,7 +28,8 @@ Material emissive(double radiance) {
 RenderScene shadeOnly(double radiance) {
   RenderScene s = floorScene();
   InsertedObject shade;
-  shade.meshObject = std::make_shared<TriangleMesh>(test::quadMesh(test::rectCorners(kLampCentre, kLampU, kLampV)));
+  shade.meshObject =
+      std::make_shared<TriangleMesh>(test::quadMesh(test::rectCorners(kLampCentre, kLampU, kLampV)));
   shade.material = emissive(radiance);
   s.objects.push_back(shade);
   return s;
@@ -36,7 +39,8 @@ RenderScene shadeOnly(double radiance) {
 // glowing quad (part 1).
 RenderScene lamp(const std::vector<Material>& parts, const Material& whole) {
   RenderScene s = floorScene();
-  TriangleMesh mesh = test::quadMesh(test::rectCorners(Vec3(1.8, 2.5, -3.8), Vec3(0.1, 0, 0), Vec3(0, 0, 0.1)));
+  TriangleMesh mesh =
+      test::quadMesh(test::rectCorners(Vec3(1.8, 2.5, -3.8), Vec3(0.1, 0, 0), Vec3(0, 0, 0.1)));
   mesh.append(test::quadMesh(test::rectCorners(kLampCentre, kLampU, kLampV)));
   mesh.triangleMaterial = {0, 0, 1, 1};
   mesh.materials.resize(2);
@@ -70,7 +74,8 @@ TEST(PartMaterials, AGlowingPartLightsTheRoomAsItWouldAlone) {
   const double alone = floorLight(shadeOnly(5.0), 16);
   const double asPart = floorLight(lamp({dark, emissive(5.0)}, dark), 16);
   ASSERT_GT(alone, 1.0);
-  std::printf("[ part materials ] floor light: shade alone %.3f, shade as part 1 of 2 %.3f\n", alone, asPart);
+  std::printf("[ part materials ] floor light: shade alone %.3f, shade as part 1 of 2 %.3f\n", alone,
+              asPart);
   EXPECT_NEAR(asPart / alone, 1.0, 0.002);
 }
 

@@ -22,7 +22,8 @@ using test::kPi;
 RenderScene furnaceScene(int w, int h, double le) {
   const RoomBox box;
   RenderScene s = test::roomScene(test::testCamera(w, h, 50), box, 0.5);
-  for (const auto& f : test::boxFaces(box)) s.lights.push_back(test::rectLight(f.c, f.u, f.v, Vec3::Constant(le)));
+  for (const auto& f : test::boxFaces(box))
+    s.lights.push_back(test::rectLight(f.c, f.u, f.v, Vec3::Constant(le)));
   return s;
 }
 
@@ -78,9 +79,10 @@ TEST_P(Furnace, ObjectRadianceMatchesUniformField) {
   ASSERT_GT(obj.pixels, 100);
   ASSERT_GT(bg.pixels, 100);
   const double rel = obj.mean.x() / (fc.expectedOverLe * le) - 1.0;
-  std::printf("[ furnace ] %-14s object mean %.5f expected %.5f (rel err %+.4f) over %d px, "
-              "background max dev %.2g\n",
-              fc.name, obj.mean.x(), fc.expectedOverLe * le, rel, obj.pixels, bg.maxAbsDeviation);
+  std::printf(
+      "[ furnace ] %-14s object mean %.5f expected %.5f (rel err %+.4f) over %d px, "
+      "background max dev %.2g\n",
+      fc.name, obj.mean.x(), fc.expectedOverLe * le, rel, obj.pixels, bg.maxAbsDeviation);
   EXPECT_LT(std::abs(rel), fc.tolerance);
   EXPECT_LT(bg.maxAbsDeviation, 1e-6);
   EXPECT_EQ(tracer.stats().nonFiniteSamples, 0u);
@@ -96,13 +98,14 @@ Material mat(Material::Kind kind, double albedo, double roughness = 0.3) {
 
 INSTANTIATE_TEST_SUITE_P(
     Materials, Furnace,
-    ::testing::Values(FurnaceCase{"diffuse_0.6", mat(Material::Kind::Diffuse, 0.6), 0.6, 0.02},
-                      FurnaceCase{"diffuse_1.0", mat(Material::Kind::Diffuse, 1.0), 1.0, 0.02},
-                      FurnaceCase{"mirror_0.9", mat(Material::Kind::Mirror, 0.9), 0.9, 1e-5},
-                      FurnaceCase{"glass", mat(Material::Kind::Glass, 1.0), 1.0, 0.02},
-                      FurnaceCase{"conductor_r0.3", mat(Material::Kind::Conductor, 1.0, 0.3), 1.0, 0.03},
-                      // GGX single-scattering loss (a few % per interface at alpha 0.09), compounded inside.
-                      FurnaceCase{"rough_glass_r0.3", mat(Material::Kind::RoughGlass, 1.0, 0.3), 0.955, 0.02}),
+    ::testing::Values(
+        FurnaceCase{"diffuse_0.6", mat(Material::Kind::Diffuse, 0.6), 0.6, 0.02},
+        FurnaceCase{"diffuse_1.0", mat(Material::Kind::Diffuse, 1.0), 1.0, 0.02},
+        FurnaceCase{"mirror_0.9", mat(Material::Kind::Mirror, 0.9), 0.9, 1e-5},
+        FurnaceCase{"glass", mat(Material::Kind::Glass, 1.0), 1.0, 0.02},
+        FurnaceCase{"conductor_r0.3", mat(Material::Kind::Conductor, 1.0, 0.3), 1.0, 0.03},
+        // GGX single-scattering loss (a few % per interface at alpha 0.09), compounded inside.
+        FurnaceCase{"rough_glass_r0.3", mat(Material::Kind::RoughGlass, 1.0, 0.3), 0.955, 0.02}),
     [](const auto& p) {
       std::string n = p.param.name;
       for (char& c : n)
@@ -137,7 +140,8 @@ TEST(Glass, SlabTransmitsFresnelSeries) {
   const int w = 32, h = 24;
   RenderScene s = test::roomScene(test::testCamera(w, h, 10), RoomBox{}, 0.0);
   const double le = 2.0;
-  s.lights.push_back(test::rectLight(Vec3(0, 1.3, -3), Vec3(0.5, 0, 0), Vec3(0, 0.5, 0), Vec3::Constant(le)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 1.3, -3), Vec3(0.5, 0, 0), Vec3(0, 0.5, 0), Vec3::Constant(le)));
   ASSERT_GT(s.lights[0].normal().z(), 0.99);
   auto box = std::make_shared<TriangleMesh>();
   const auto faces = test::boxFaces(RoomBox{-0.5, 0.5, -0.2, 0.2, 1.0});  // y in [0, 1]
@@ -218,13 +222,15 @@ TEST(DiffusePlane, RoomTracerMatchesFormFactor) {
 // stratification; area sampling needs far more this close).
 TEST(DiffusePlane, RoomTracerNextToATouchingLight) {
   const RoomTracer tracer(test::boxRoom());
-  const AreaLight light = test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Ones());
+  const AreaLight light =
+      test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Ones());
   for (const double below : {0.003, 0.02, 0.2}) {
     const Vec3 p(0.1, 2.6 - below, -4.0 + 1e-4), n(0, 0, 1);
     const double few = tracer.unitLightIrradianceOverPi(light, p, n, 64, 3);
     const double many = tracer.unitLightIrradianceOverPi(light, p, n, 4096, 4);
-    std::printf("[ plane ] wall point %.3f m below a touching light: 64 samples %.5f, 4096 samples %.5f\n", below,
-                few, many);
+    std::printf(
+        "[ plane ] wall point %.3f m below a touching light: 64 samples %.5f, 4096 samples %.5f\n",
+        below, few, many);
     EXPECT_GT(many, 0.0);
     EXPECT_NEAR(few / many, 1.0, 0.02);
   }
@@ -259,14 +265,15 @@ TEST(DiffusePlane, PathTracerDirectLightMatchesFormFactor) {
       if (!floor) continue;
       const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
       const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
-      const double expected = albedo * p.le * rectFormFactor(q.x(), q.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
+      const double expected = albedo * p.le *
+                              rectFormFactor(q.x(), q.z(), p.x0, p.x1, p.z0, p.z1, p.lightY);
       if (expected < 0.005) continue;  // the far floor: relative noise too high to compare
       err.add(with.at(x, y, 0), expected);
     }
   ASSERT_GT(err.n, 200);
   const double bias = err.mean(), rms = err.rms();
-  std::printf("[ plane ] path tracer, maxDepth 1, 128 spp: %d floor px, mean rel err %+.4f, rms %.4f\n", err.n,
-              bias, rms);
+  std::printf("[ plane ] path tracer, maxDepth 1, 128 spp: %d floor px, mean rel err %+.4f, rms %.4f\n",
+              err.n, bias, rms);
   // Pixel-footprint averaging of a smooth function: the mean over pixels stays unbiased to 1%.
   EXPECT_LT(std::abs(bias), 0.01);
   EXPECT_LT(rms, 0.05);
@@ -288,19 +295,22 @@ double polygonFormFactor(const Vec3& p, const Vec3& n, const std::array<Vec3, 4>
 // RoomTracer and the path tracer (direct light) against Lambert's polygon formula.
 TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
   AreaLight light;
-  light.cornersWorld = {Vec3(-0.3, 1.2, -2.2), Vec3(0.3, 1.2, -2.2), Vec3(0.1, 1.2, -1.8), Vec3(-0.1, 1.2, -1.8)};
+  light.cornersWorld = {Vec3(-0.3, 1.2, -2.2), Vec3(0.3, 1.2, -2.2), Vec3(0.1, 1.2, -1.8),
+                        Vec3(-0.1, 1.2, -1.8)};
   light.radiance = Vec3::Constant(3.0);
   ASSERT_LT(light.normal().y(), -0.99);
   // The closed form agrees with the rectangle formula on a rectangle (checks the helper).
-  const std::array<Vec3, 4> rect = test::rectCorners(Vec3(0, 1.2, -2), Vec3(0.25, 0, 0), Vec3(0, 0, 0.2));
+  const std::array<Vec3, 4> rect =
+      test::rectCorners(Vec3(0, 1.2, -2), Vec3(0.25, 0, 0), Vec3(0, 0, 0.2));
   EXPECT_NEAR(polygonFormFactor(Vec3(0.3, 0, -1.5), Vec3(0, 1, 0), rect),
               rectFormFactor(0.3, -1.5, -0.25, 0.25, -2.2, -1.8, 1.2), 1e-9);
   const RoomTracer room(test::boxRoom());
-  for (const Vec3& point : {Vec3(0, 0, -2), Vec3(0.5, 0, -1.5), Vec3(-1.0, 0, -3.0), Vec3(0, 1.19, -2.1)}) {
+  for (const Vec3& point :
+       {Vec3(0, 0, -2), Vec3(0.5, 0, -1.5), Vec3(-1.0, 0, -3.0), Vec3(0, 1.19, -2.1)}) {
     const double expected = polygonFormFactor(point, Vec3(0, 1, 0), light.cornersWorld);
     const double got = room.unitLightIrradianceOverPi(light, point, Vec3(0, 1, 0), 256, 2);
-    std::printf("[ plane ] trapezoid, RoomTracer at (%.1f, %.2f, %.1f): %.6f, closed form %.6f\n", point.x(),
-                point.y(), point.z(), got, expected);
+    std::printf("[ plane ] trapezoid, RoomTracer at (%.1f, %.2f, %.1f): %.6f, closed form %.6f\n",
+                point.x(), point.y(), point.z(), got, expected);
     EXPECT_NEAR(got / expected, 1.0, point.y() > 1 ? 0.02 : 0.01);  // 1 cm under it: the 1 mm offset
   }
   const int w = 48, h = 36;
@@ -325,8 +335,8 @@ TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
       err.add(with.at(x, y, 0), expected);
     }
   ASSERT_GT(err.n, 200);
-  std::printf("[ plane ] trapezoid, path tracer 64 spp: %d px, mean rel err %+.4f, rms %.4f\n", err.n, err.mean(),
-              err.rms());
+  std::printf("[ plane ] trapezoid, path tracer 64 spp: %d px, mean rel err %+.4f, rms %.4f\n", err.n,
+              err.mean(), err.rms());
   EXPECT_LT(std::abs(err.mean()), 0.01);
   EXPECT_LT(err.rms(), 0.05);
 }
@@ -338,7 +348,8 @@ TEST(DiffuseSphere, DirectLightMatchesRoomTracerPerPixel) {
   const int w = 48, h = 36;
   RenderScene s = test::roomScene(test::testCamera(w, h, 30, 1.3, -20), RoomBox{}, 0.5);
   const double le = 4.0, albedo = 0.8, radius = 0.3;
-  s.lights.push_back(test::rectLight(Vec3(0.3, 2.6, -2.4), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(le)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0.3, 2.6, -2.4), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(le)));
   const Vec3 centre(0, radius, -2.5);
   InsertedObject o;
   o.meshObject = test::sphereMesh(0.5, 48, 96);  // radius 0.5, scaled to 0.3 below
@@ -364,8 +375,8 @@ TEST(DiffuseSphere, DirectLightMatchesRoomTracerPerPixel) {
       const double bq = oc.dot(r.direction), disc = bq * bq - (oc.squaredNorm() - radius * radius);
       if (disc <= 0) continue;
       const Vec3 p = r.at(-bq - std::sqrt(disc)), nrm = (p - centre).normalized();
-      const double expected =
-          albedo * le * room.unitLightIrradianceOverPi(s.lights[0], p + 1e-4 * nrm, nrm, 1024, 1);
+      const double expected = albedo * le *
+                              room.unitLightIrradianceOverPi(s.lights[0], p + 1e-4 * nrm, nrm, 1024, 1);
       if (expected < 0.05) continue;  // the dim side: relative noise too high
       err.add(with.at(x, y, 0), expected);
     }
@@ -382,7 +393,8 @@ TEST(Mirror, ReflectsEmitterTimesReflectance) {
   const int w = 48, h = 36;
   RenderScene s = test::roomScene(test::testCamera(w, h, 40), RoomBox{}, 0.5);
   const double le = 2.5;
-  s.lights.push_back(test::rectLight(Vec3(0, 1.3, 0.45), Vec3(0, 1.2, 0), Vec3(1.9, 0, 0), Vec3::Constant(le)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 1.3, 0.45), Vec3(0, 1.2, 0), Vec3(1.9, 0, 0), Vec3::Constant(le)));
   ASSERT_LT(s.lights[0].normal().z(), -0.99);
   InsertedObject o;
   o.meshObject = std::make_shared<TriangleMesh>(
@@ -394,8 +406,8 @@ TEST(Mirror, ReflectsEmitterTimesReflectance) {
   ASSERT_TRUE(tracer.render(b, 0, 4, 1));
   const RegionStats m = regionStats(b.meanWith(), b.meanMask(), 1.f, 0.8 * le);
   ASSERT_GT(m.pixels, 20);
-  std::printf("[ mirror ] %d px, mean %.6f, expected %.6f, max dev %.2g\n", m.pixels, m.mean.x(), 0.8 * le,
-              m.maxAbsDeviation);
+  std::printf("[ mirror ] %d px, mean %.6f, expected %.6f, max dev %.2g\n", m.pixels, m.mean.x(),
+              0.8 * le, m.maxAbsDeviation);
   EXPECT_LT(m.maxAbsDeviation, 1e-5);
   // The camera never sees the light directly (it is behind), and the room is lit by it.
   const RegionStats room = regionStats(b.meanWithout(), b.meanMask(), 0.f, 0);
@@ -467,7 +479,8 @@ TEST(PhotoRadiance, BouncesSeeThePhotoCameraRaysDoNot) {
   const Vec3 n(0, -std::sin(tilt), std::cos(tilt)), u(1, 0, 0);
   const Vec3 v = n.cross(u);
   InsertedObject o;
-  o.meshObject = std::make_shared<TriangleMesh>(test::quadMesh(test::rectCorners(Vec3(0, 1.3, -3), 0.25 * u, 0.25 * v)));
+  o.meshObject = std::make_shared<TriangleMesh>(
+      test::quadMesh(test::rectCorners(Vec3(0, 1.3, -3), 0.25 * u, 0.25 * v)));
   o.material = mat(Material::Kind::Mirror, 0.8);
   s.objects.push_back(o);
   PathTracer tracer(s);
@@ -499,7 +512,8 @@ TEST(PhotoRadiance, BouncesSeeThePhotoCameraRaysDoNot) {
 // A closed room lit by a ceiling light, with an object that no path can reach.
 RenderScene closedRoomScene(int w, int h, bool objectInside) {
   RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
   InsertedObject o;
   o.meshObject = test::sphereMesh(0.4);
   o.worldFromObject = test::translation(objectInside ? Vec3(0.3, 0.4, -2.5) : Vec3(0, 1.3, -5.0));
@@ -532,7 +546,8 @@ TEST(Differential, UnreachableObjectLeavesWithEqualWithoutBitForBit) {
   for (float v : b.sumWith.data) total += v;
   EXPECT_GT(total, 0.0);  // the room is lit: not a vacuous comparison
   const ImageF photo = randomPhoto(w, h);
-  EXPECT_TRUE(sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
+  EXPECT_TRUE(
+      sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
 }
 
 TEST(Differential, NoObjectsGivesThePhotoBack) {
@@ -543,7 +558,8 @@ TEST(Differential, NoObjectsGivesThePhotoBack) {
   DifferentialBuffers b(w, h);
   ASSERT_TRUE(tracer.render(b, 0, 8, 2));
   const ImageF photo = randomPhoto(w, h);
-  EXPECT_TRUE(sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
+  EXPECT_TRUE(
+      sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
 }
 
 // The positive control: an object in the room changes the render (so the tests above can fail).
@@ -660,7 +676,8 @@ TEST(Cancel, StoppedRenderReportsFalseAndKeepsWholeSamples) {
 TEST(Stiff, LightTouchingAWallConvergesFast) {
   const int w = 32, h = 32;
   RenderScene s = test::roomScene(test::testCamera(w, h, 16, 2.3), RoomBox{}, 0.7);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(10)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -3.7), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(10)));
   TracerOptions opt;
   opt.maxDepth = 1;
   PathTracer tracer(s, opt);
@@ -677,8 +694,8 @@ TEST(Stiff, LightTouchingAWallConvergesFast) {
       sum2 += rel * rel, worst = std::max(worst, std::abs(rel)), ++n;
     }
   ASSERT_GT(n, 100);
-  std::printf("[ stiff ] wall under a touching light, 4 vs 256 spp: %d px, rms rel %.4f, worst %.4f\n", n,
-              std::sqrt(sum2 / n), worst);
+  std::printf("[ stiff ] wall under a touching light, 4 vs 256 spp: %d px, rms rel %.4f, worst %.4f\n",
+              n, std::sqrt(sum2 / n), worst);
   EXPECT_LT(std::sqrt(sum2 / n), 0.12);  // area sampling: 0.24 here
 }
 
@@ -687,9 +704,12 @@ TEST(Stiff, LightTouchingAWallConvergesFast) {
 TEST(Stiff, ExtremeInputsStayFinite) {
   const int w = 40, h = 30;
   RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -15), RoomBox{}, 0.7);
-  s.lights.push_back(test::rectLight(Vec3(0.5, 0.0, -2), Vec3(0, 0, 0.3), Vec3(0.3, 0, 0), Vec3::Constant(2)));
-  s.lights.push_back(test::rectLight(Vec3(-0.5, 0.3, -2.5), Vec3(0, 0.3, 0), Vec3(0, 0, 0.3), Vec3::Constant(2)));
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -1.5), Vec3(0.05, 0, 0), Vec3(0, 0, 0.05), Vec3::Constant(1e6)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0.5, 0.0, -2), Vec3(0, 0, 0.3), Vec3(0.3, 0, 0), Vec3::Constant(2)));
+  s.lights.push_back(
+      test::rectLight(Vec3(-0.5, 0.3, -2.5), Vec3(0, 0.3, 0), Vec3(0, 0, 0.3), Vec3::Constant(2)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -1.5), Vec3(0.05, 0, 0), Vec3(0, 0, 0.05), Vec3::Constant(1e6)));
   s.lights.push_back(test::rectLight(Vec3(0, 1, -1), Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3::Constant(1)));
   s.lights.push_back(test::rectLight(Vec3(1, 1, -1), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0),
                                      Vec3::Constant(std::numeric_limits<double>::quiet_NaN())));
@@ -768,7 +788,8 @@ TEST(Differential, CorrelatedBeatsIndependentRenders) {
   const ImageF refDiff = diffOf(ref.meanWith(), ref.meanWithout());
   auto rmse = [&](const ImageF& d) {
     double s = 0;
-    for (size_t i = 0; i < d.data.size(); ++i) s += double(d.data[i] - refDiff.data[i]) * (d.data[i] - refDiff.data[i]);
+    for (size_t i = 0; i < d.data.size(); ++i)
+      s += double(d.data[i] - refDiff.data[i]) * (d.data[i] - refDiff.data[i]);
     return std::sqrt(s / d.data.size());
   };
   DifferentialBuffers corr(w, h), withOnly(w, h), withoutOnly(w, h);
@@ -783,9 +804,10 @@ TEST(Differential, CorrelatedBeatsIndependentRenders) {
   const double eIndep = rmse(diffOf(withOnly.meanWith(), withoutOnly.meanWith()));
   // At equal cost (rays as the cost), error goes as 1 / sqrt(cost).
   const double equalCost = eIndep / eCorr * std::sqrt(raysIndep / raysCorr);
-  std::printf("[ differential ] RMSE of with-without at %d spp: correlated %.4f, independent %.4f (%.1fx at "
-              "equal samples, %.1fx at equal rays)\n",
-              spp, eCorr, eIndep, eIndep / eCorr, equalCost);
+  std::printf(
+      "[ differential ] RMSE of with-without at %d spp: correlated %.4f, independent %.4f (%.1fx at "
+      "equal samples, %.1fx at equal rays)\n",
+      spp, eCorr, eIndep, eIndep / eCorr, equalCost);
   EXPECT_GT(equalCost, 3.0);
 }
 
@@ -798,9 +820,10 @@ TEST(Performance, PrintsPathRate) {
   ASSERT_TRUE(tracer.render(b, 0, 4, 1));
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const double rays = double(tracer.stats().rays);
-  std::printf("[ perf ] %dx%d x 4 spp differential (sphere in a lit room, maxDepth 8, all cores): "
-              "%.3f s, %.2f M samples/s, %.1f rays/sample, %.2f M rays/s\n",
-              w, h, s, w * h * 4 / s * 1e-6, rays / (w * h * 4), rays / s * 1e-6);
+  std::printf(
+      "[ perf ] %dx%d x 4 spp differential (sphere in a lit room, maxDepth 8, all cores): "
+      "%.3f s, %.2f M samples/s, %.1f rays/sample, %.2f M rays/s\n",
+      w, h, s, w * h * 4 / s * 1e-6, rays / (w * h * 4), rays / s * 1e-6);
   EXPECT_GT(rays, double(w * h * 4));
 }
 

@@ -36,7 +36,8 @@ RenderScene mirrorRoom(const std::optional<Material>& floor) {
   Surface partition;
   partition.kind = SurfaceKind::ExtrusionSide;
   partition.name = "surface_0_side";
-  partition.meshWorld = test::quadMesh(test::rectCorners(Vec3(-0.2, 1.3, -2.5), Vec3(0, 1.3, 0), Vec3(0, 0, 1.5)));
+  partition.meshWorld =
+      test::quadMesh(test::rectCorners(Vec3(-0.2, 1.3, -2.5), Vec3(0, 1.3, 0), Vec3(0, 0, 1.5)));
   s.room.surfaces.push_back(partition);
   s.roomAlbedo.surfaceMean.push_back(Vec3::Constant(0.5));
   s.roomAlbedo.photoRadiance = ImageF(kW, kH, 3);
@@ -142,12 +143,13 @@ TEST(RoomMaterial, GlossyFloorBlursTheReflection) {
   while (below < kH - 1 && sharp.diff.at(ix, below) != 0.f) ++below;
   below = std::min(kH - 1, below + 3);
   ASSERT_EQ(sharp.diff.at(ix, below), 0.f);
-  std::printf("[ glossy ] at the image %.3f (mirror %.3f), %d px below it %.3f\n", glossy.diff.at(ix, iy),
-              sharp.diff.at(ix, iy), below - iy, glossy.diff.at(ix, below));
+  std::printf("[ glossy ] at the image %.3f (mirror %.3f), %d px below it %.3f\n",
+              glossy.diff.at(ix, iy), sharp.diff.at(ix, iy), below - iy, glossy.diff.at(ix, below));
   EXPECT_GT(glossy.diff.at(ix, below), 0.01);
   EXPECT_GT(glossy.diff.at(ix, iy), glossy.diff.at(ix, below));
   EXPECT_LT(glossy.diff.at(ix, iy), 0.8 * sharp.diff.at(ix, iy));
-  for (const auto& [x, y] : farPixels(mirror.camera)) ASSERT_EQ(glossy.diff.at(x, y), 0.f) << x << ", " << y;
+  for (const auto& [x, y] : farPixels(mirror.camera))
+    ASSERT_EQ(glossy.diff.at(x, y), 0.f) << x << ", " << y;
 }
 
 using test::sameBits;
@@ -157,7 +159,8 @@ using test::sameBits;
 TEST(RoomMaterial, UnreachableObjectLeavesMarkedRoomBitIdentical) {
   const int w = 40, h = 30;
   RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
   s.roomMaterials.assign(s.room.surfaces.size(), std::nullopt);
   s.roomMaterials[0] = marked(Material::Kind::Mirror);
   s.roomMaterials[4] = marked(Material::Kind::Glossy, 0.3);
@@ -174,7 +177,8 @@ TEST(RoomMaterial, UnreachableObjectLeavesMarkedRoomBitIdentical) {
   EXPECT_GT(total, 0.0);
   ImageF photo(w, h, 3);
   for (size_t i = 0; i < photo.data.size(); ++i) photo.data[i] = float(i % 17) / 16.f;
-  EXPECT_TRUE(sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
+  EXPECT_TRUE(
+      sameBits(differentialComposite(photo, b.meanWith(), b.meanWithout(), b.meanMask()), photo));
 
   // The positive control: the same object inside the room changes the sums.
   s.objects[0].worldFromObject = test::translation(Vec3(0.3, 0.6, -2.5));

@@ -17,7 +17,8 @@ constexpr int kW = 32, kH = 24, kRuns = 16, kSpp = 16;
 
 RenderScene frostedBallScene(double roughness) {
   RenderScene s = test::roomScene(test::testCamera(kW, kH, 30, 1.3, -15), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.55, -2.3), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(15)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.55, -2.3), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(15)));
   InsertedObject ball;
   ball.meshObject = test::sphereMesh(0.3, 32, 64);
   ball.worldFromObject = test::translation(Vec3(0, 0.8, -2.0));
@@ -84,10 +85,11 @@ TEST(RoughGlassNee, AgreesWithBsdfSamplingAndLowersVariance) {
     ASSERT_GE(region.size(), 20u);
     const Estimate on = renderRuns(s, true, region), off = renderRuns(s, false, region);
     const double tolerance = 4.0 * std::hypot(on.standardError, off.standardError);
-    std::printf("[ rough glass nee ] r%.1f, %zu px: NEE on %.4f +- %.4f (pixel var %.4f), off %.4f +- %.4f "
-                "(pixel var %.4f)\n",
-                roughness, region.size(), on.mean, on.standardError, on.pixelVariance, off.mean,
-                off.standardError, off.pixelVariance);
+    std::printf(
+        "[ rough glass nee ] r%.1f, %zu px: NEE on %.4f +- %.4f (pixel var %.4f), off %.4f +- %.4f "
+        "(pixel var %.4f)\n",
+        roughness, region.size(), on.mean, on.standardError, on.pixelVariance, off.mean,
+        off.standardError, off.pixelVariance);
     EXPECT_NEAR(on.mean, off.mean, tolerance) << "roughness " << roughness;
     EXPECT_LT(on.pixelVariance, 0.8 * off.pixelVariance) << "roughness " << roughness;
   }

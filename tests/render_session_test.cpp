@@ -65,7 +65,8 @@ class Collector : public FrameSink {
 
 RenderScene sessionScene(int w, int h) {
   RenderScene s = test::roomScene(test::testCamera(w, h, 70, 1.3, -10), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(5)));
   InsertedObject o;
   o.meshObject = test::sphereMesh(0.4, 12, 24);
   o.worldFromObject = test::translation(Vec3(0.3, 0.4, -2.5));
@@ -99,7 +100,8 @@ TEST(Session, FramesFollowTheScheduleAndMatchTheTracer) {
       EXPECT_TRUE(std::isfinite(e.frame->estimatedError));
       EXPECT_EQ(e.frame->final, &e == &frames.back());
     }
-    const std::vector<std::pair<int, int>> expected = {{8, 0}, {4, 0}, {2, 0}, {1, 1}, {1, 2}, {1, 4}, {1, 8}};
+    const std::vector<std::pair<int, int>> expected = {{8, 0}, {4, 0}, {2, 0}, {1, 1},
+                                                       {1, 2}, {1, 4}, {1, 8}};
     EXPECT_EQ(got, expected);
     // The final frame is the tracer's 8-sample render (same seed), up to float summation order.
     PathTracer tracer(scene, opt.tracer);
@@ -115,7 +117,8 @@ TEST(Session, FramesFollowTheScheduleAndMatchTheTracer) {
     EXPECT_EQ(p8.at(8, 0, 0), p8.at(15, 7, 0));
     // Error estimates fall with samples (4x the samples: about half the error).
     const double e1 = frames[3].frame->estimatedError, e8 = frames.back().frame->estimatedError;
-    std::printf("[ session ] estimated sRGB RMSE where with != without: 1 spp %.4f, 8 spp %.4f\n", e1, e8);
+    std::printf("[ session ] estimated sRGB RMSE where with != without: 1 spp %.4f, 8 spp %.4f\n", e1,
+                e8);
     EXPECT_GT(e1, 0.0);
     EXPECT_LT(e8, e1);
   }
@@ -188,9 +191,10 @@ TEST(Session, FocusOnChangesKeepsTheObjectPixelsAndSavesTime) {
       }
       (same ? samePx : differentPx)++;
     }
-  std::printf("[ session ] focus on changes, %dx%d, 32 spp: %.2f s vs %.2f s uniform; %d object px identical, "
-              "%d px with fewer samples\n",
-              w, h, seconds[1], seconds[0], objectPx, differentPx);
+  std::printf(
+      "[ session ] focus on changes, %dx%d, 32 spp: %.2f s vs %.2f s uniform; %d object px identical, "
+      "%d px with fewer samples\n",
+      w, h, seconds[1], seconds[0], objectPx, differentPx);
   EXPECT_GT(objectPx, 5);
   EXPECT_GT(differentPx, w * h / 2);
   EXPECT_LT(seconds[1], seconds[0]);  // about 2.5x faster here (most pixels never meet the object)
@@ -233,13 +237,17 @@ TEST(Session, AdaptiveSamplingMeetsTheNoiseTargetWhereTheObjectChangesThePhoto) 
   const ImageF photo(w, h, 3);  // the composite's photo: black (the change is what is tested)
   const ImageF compRef = differentialComposite(photo, rw, rwo, rm);
   const ImageF comp = differentialComposite(photo, f.withObjects, f.withoutObjects, f.mask);
-  auto srgb = [](double v) { return v <= 0.0031308 ? 12.92 * std::max(0.0, v) : 1.055 * std::pow(std::min(v, 1.0), 1 / 2.4) - 0.055; };
+  auto srgb = [](double v) {
+    return v <= 0.0031308 ? 12.92 * std::max(0.0, v)
+                          : 1.055 * std::pow(std::min(v, 1.0), 1 / 2.4) - 0.055;
+  };
   double objSamples = 0, quietSamples = 0, errSq = 0, estSq = 0;
   int objPx = 0, quietPx = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
-      const bool untouched = quiet.sumWith.rgb(x, y) == quiet.sumWithout.rgb(x, y) && quiet.sumMask.at(x, y) == 0;
+      const bool untouched = quiet.sumWith.rgb(x, y) == quiet.sumWithout.rgb(x, y) &&
+                             quiet.sumMask.at(x, y) == 0;
       if (untouched && f.samples.data[i] <= 64) {
         ASSERT_EQ(f.withObjects.rgb(x, y), f.withoutObjects.rgb(x, y)) << x << "," << y;
         quietSamples += f.samples.data[i];
@@ -249,16 +257,18 @@ TEST(Session, AdaptiveSamplingMeetsTheNoiseTargetWhereTheObjectChangesThePhoto) 
       if (rm.at(x, y) == 1.f && f.mask.at(x, y) == 1.f) {
         objSamples += f.samples.data[i];
         ++objPx;
-        for (int c = 0; c < 3; ++c) errSq += std::pow(srgb(comp.at(x, y, c)) - srgb(compRef.at(x, y, c)), 2) / 3;
+        for (int c = 0; c < 3; ++c)
+          errSq += std::pow(srgb(comp.at(x, y, c)) - srgb(compRef.at(x, y, c)), 2) / 3;
         estSq += double(f.noise.data[i]) * f.noise.data[i];
       }
     }
   ASSERT_GT(objPx, 10);
   ASSERT_GT(quietPx, 20);
   const double rmse = std::sqrt(errSq / objPx), est = std::sqrt(estSq / objPx);
-  std::printf("[ session ] adaptive, target %.3f: object %.0f spp (%d px), untouched %.1f spp (%d px), "
-              "%.2f s; object RMSE vs 512 spp %.4f, estimated %.4f\n",
-              opt.noiseTarget, objSamples / objPx, objPx, quietSamples / quietPx, quietPx, f.seconds, rmse, est);
+  std::printf(
+      "[ session ] adaptive, target %.3f: object %.0f spp (%d px), untouched %.1f spp (%d px), "
+      "%.2f s; object RMSE vs 512 spp %.4f, estimated %.4f\n",
+      opt.noiseTarget, objSamples / objPx, objPx, quietSamples / quietPx, quietPx, f.seconds, rmse, est);
   EXPECT_GT(objSamples / objPx, 4 * quietSamples / quietPx);
   // The estimate is honest: the true error (its reference's own noise included) within 2x.
   EXPECT_LT(rmse, 2 * est + 0.005);
@@ -280,7 +290,8 @@ TEST(Session, EditCancelsTheRunningWaveQuickly) {
     std::this_thread::sleep_for(std::chrono::milliseconds(60));  // land mid-wave
     const auto t0 = Clock::now();
     v = session.setObjectTransform(0, test::translation(Vec3(-0.5 + 0.2 * k, 0.4, -2.5)));
-    ASSERT_TRUE(sink.waitFor([&](const auto& f) { return !f.empty() && f.back().frame->sceneVersion == v; }, 10));
+    ASSERT_TRUE(sink.waitFor(
+        [&](const auto& f) { return !f.empty() && f.back().frame->sceneVersion == v; }, 10));
     for (const auto& e : sink.frames())
       if (e.frame->sceneVersion == v) {
         latenciesMs.push_back(std::chrono::duration<double, std::milli>(e.at - t0).count());
@@ -288,9 +299,10 @@ TEST(Session, EditCancelsTheRunningWaveQuickly) {
       }
   }
   std::sort(latenciesMs.begin(), latenciesMs.end());
-  std::printf("[ session ] edit -> first frame of the new version (160x120, 2 threads busy): median %.1f ms, "
-              "max %.1f ms\n",
-              latenciesMs[latenciesMs.size() / 2], latenciesMs.back());
+  std::printf(
+      "[ session ] edit -> first frame of the new version (160x120, 2 threads busy): median %.1f ms, "
+      "max %.1f ms\n",
+      latenciesMs[latenciesMs.size() / 2], latenciesMs.back());
   EXPECT_LT(latenciesMs[latenciesMs.size() / 2], 500.0);
   // Versions never go backwards.
   uint64_t last = 0;

@@ -54,8 +54,8 @@ class OrderChecker : public FrameSink {
 
 RenderScene tortureScene(double lightPower) {
   RenderScene s = test::roomScene(test::testCamera(40, 30, 70, 1.3, -10), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4),
-                                     Vec3::Constant(lightPower)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.6, -2), Vec3(0.4, 0, 0), Vec3(0, 0, 0.4), Vec3::Constant(lightPower)));
   for (int k = 0; k < 2; ++k) {
     InsertedObject o;
     o.meshObject = test::sphereMesh(0.3, 8, 16);
@@ -73,7 +73,8 @@ class Watchdog {
       : thread_([this, seconds] {
           std::unique_lock<std::mutex> lock(mutex_);
           if (!cv_.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return done_; })) {
-            std::fprintf(stderr, "render session torture test: no progress for %.0f s (deadlock)\n", seconds);
+            std::fprintf(stderr, "render session torture test: no progress for %.0f s (deadlock)\n",
+                         seconds);
             std::abort();
           }
         }) {}

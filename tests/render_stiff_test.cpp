@@ -15,14 +15,16 @@ constexpr int kW = 40, kH = 30;
 // A horizontal plate at 0.5 m under a ceiling light; `halfSizeM` its half width.
 RenderScene plateScene(double halfSizeM) {
   RenderScene s = test::roomScene(test::testCamera(kW, kH, 50, 1.3, -30), RoomBox{}, 0.6);
-  s.lights.push_back(test::rectLight(Vec3(0, 2.5, -2.0), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(6)));
+  s.lights.push_back(
+      test::rectLight(Vec3(0, 2.5, -2.0), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(6)));
   InsertedObject plate;
   // Corners C-U-V .. C-U+V with U x V = +y: the plate faces up.
   // Tilted off the axes (an axis-aligned plane would be intersected exactly in float).
   plate.meshObject = std::make_shared<TriangleMesh>(
       test::quadMesh(test::rectCorners(Vec3::Zero(), Vec3(0, 0, halfSizeM), Vec3(halfSizeM, 0, 0))));
   plate.worldFromObject = test::translation(Vec3(0, 0.5, -2.0));
-  plate.worldFromObject.topLeftCorner<3, 3>() = Eigen::AngleAxisd(0.15, Vec3(1, 0.3, 0.8).normalized()).toRotationMatrix();
+  plate.worldFromObject.topLeftCorner<3, 3>() =
+      Eigen::AngleAxisd(0.15, Vec3(1, 0.3, 0.8).normalized()).toRotationMatrix();
   plate.material.kind = Material::Kind::Diffuse;
   plate.material.albedo = Vec3::Constant(0.7);
   s.objects.push_back(plate);
@@ -48,7 +50,8 @@ TEST(Stiff, TenKilometreObjectIsLitLikeASmallOne) {
       worst = std::max(worst, std::abs(wa.at(x, y, 0) / wb.at(x, y, 0) - 1.0));
     }
   ASSERT_GT(n, 300);
-  std::printf("[ stiff ] 10 km plate vs 3.8 m plate, %d px: mean ratio %.4f, worst pixel %.4f\n", n, sa / sb, worst);
+  std::printf("[ stiff ] 10 km plate vs 3.8 m plate, %d px: mean ratio %.4f, worst pixel %.4f\n", n,
+              sa / sb, worst);
   EXPECT_NEAR(sa / sb, 1.0, 0.01);
   EXPECT_LT(worst, 0.05);  // acne would blacken whole pixels
 }

@@ -37,22 +37,24 @@ struct Face {
   Vec3 c, u, v;
 };
 inline std::array<Face, 6> boxFaces(const RoomBox& b) {
-  const double cx = 0.5 * (b.xLeftM + b.xRightM), cy = 0.5 * b.ceilingM, cz = 0.5 * (b.zBackM + b.zRearM);
-  const double hx = 0.5 * (b.xRightM - b.xLeftM), hy = 0.5 * b.ceilingM, hz = 0.5 * (b.zRearM - b.zBackM);
+  const double cx = 0.5 * (b.xLeftM + b.xRightM), cy = 0.5 * b.ceilingM,
+               cz = 0.5 * (b.zBackM + b.zRearM);
+  const double hx = 0.5 * (b.xRightM - b.xLeftM), hy = 0.5 * b.ceilingM,
+               hz = 0.5 * (b.zRearM - b.zBackM);
   return {{
-      {Vec3(cx, 0, cz), Vec3(0, 0, hz), Vec3(hx, 0, 0)},             // floor, +y
-      {Vec3(cx, b.ceilingM, cz), Vec3(hx, 0, 0), Vec3(0, 0, hz)},    // ceiling, -y
-      {Vec3(b.xLeftM, cy, cz), Vec3(0, hy, 0), Vec3(0, 0, hz)},      // left, +x
-      {Vec3(b.xRightM, cy, cz), Vec3(0, 0, hz), Vec3(0, hy, 0)},     // right, -x
-      {Vec3(cx, cy, b.zBackM), Vec3(hx, 0, 0), Vec3(0, hy, 0)},      // back, +z
-      {Vec3(cx, cy, b.zRearM), Vec3(0, hy, 0), Vec3(hx, 0, 0)},      // rear, -z
+      {Vec3(cx, 0, cz), Vec3(0, 0, hz), Vec3(hx, 0, 0)},           // floor, +y
+      {Vec3(cx, b.ceilingM, cz), Vec3(hx, 0, 0), Vec3(0, 0, hz)},  // ceiling, -y
+      {Vec3(b.xLeftM, cy, cz), Vec3(0, hy, 0), Vec3(0, 0, hz)},    // left, +x
+      {Vec3(b.xRightM, cy, cz), Vec3(0, 0, hz), Vec3(0, hy, 0)},   // right, -x
+      {Vec3(cx, cy, b.zBackM), Vec3(hx, 0, 0), Vec3(0, hy, 0)},    // back, +z
+      {Vec3(cx, cy, b.zRearM), Vec3(0, hy, 0), Vec3(hx, 0, 0)},    // rear, -z
   }};
 }
 
 inline SceneGeometry boxRoom(const RoomBox& b = {}) {
   SceneGeometry g;
   g.box = b;
-  const SurfaceKind kinds[6] = {SurfaceKind::Floor,    SurfaceKind::Ceiling,  SurfaceKind::WallLeft,
+  const SurfaceKind kinds[6] = {SurfaceKind::Floor,     SurfaceKind::Ceiling,  SurfaceKind::WallLeft,
                                 SurfaceKind::WallRight, SurfaceKind::WallBack, SurfaceKind::WallRear};
   const auto faces = boxFaces(b);
   for (int i = 0; i < 6; ++i) {
@@ -101,7 +103,8 @@ inline RenderScene manyLightsScene(int w, int h, int count, double brightLe, dou
     const Vec3 c(box.xLeftM + 0.2 + fx * (box.xRightM - box.xLeftM - 0.4), y,
                  box.zBackM + 0.2 + fz * (box.zRearM - box.zBackM - 0.4));
     // U x V = x x z = -y: the light shines down.
-    s.lights.push_back(rectLight(c, Vec3(half, 0, 0), Vec3(0, 0, half), Vec3::Constant(k == 0 ? brightLe : dimLe)));
+    s.lights.push_back(
+        rectLight(c, Vec3(half, 0, 0), Vec3(0, 0, half), Vec3::Constant(k == 0 ? brightLe : dimLe)));
   }
   return s;
 }

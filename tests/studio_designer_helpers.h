@@ -51,33 +51,41 @@ inline QByteArray boxGltf(double w, double h, double d) {
   const quint16 faces[36] = {0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4,
                              2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5};
   for (quint16 f : faces) putU(f);
-  const QByteArray json = QStringLiteral(
-      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+  const QByteArray json =
+      QStringLiteral(
+          R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
 "meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"material":0}]}],
 "materials":[{"name":"oak","pbrMetallicRoughness":{"baseColorFactor":[0.55,0.35,0.2,1],"metallicFactor":0,"roughnessFactor":0.6}}],
 "buffers":[{"byteLength":%1,"uri":"data:application/octet-stream;base64,%2"}],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":96},{"buffer":0,"byteOffset":96,"byteLength":72}],
 "accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3","min":[%3,0,%5],"max":[%4,%6,%7]},
 {"bufferView":1,"componentType":5123,"count":36,"type":"SCALAR"}]})")
-                               .arg(bin.size())
-                               .arg(QString::fromLatin1(bin.toBase64()))
-                               .arg(-w / 2).arg(w / 2).arg(-d / 2).arg(h).arg(d / 2)
-                               .toUtf8();
+          .arg(bin.size())
+          .arg(QString::fromLatin1(bin.toBase64()))
+          .arg(-w / 2)
+          .arg(w / 2)
+          .arg(-d / 2)
+          .arg(h)
+          .arg(d / 2)
+          .toUtf8();
   return json;
 }
 
 // A small bookshelf side as OBJ without a unit: a U-shaped (concave) front and back face, 8
 // corners each, joined by quads. 1 x 1.8 x 0.3 units.
 inline QByteArray concaveShelfObj() {
-  const double xy[8][2] = {{0, 0}, {1, 0}, {1, 1.8}, {0.8, 1.8}, {0.8, 0.2}, {0.2, 0.2}, {0.2, 1.8}, {0, 1.8}};
+  const double xy[8][2] = {{0, 0},     {1, 0},     {1, 1.8},   {0.8, 1.8},
+                           {0.8, 0.2}, {0.2, 0.2}, {0.2, 1.8}, {0, 1.8}};
   QByteArray obj = "# a U-shaped shelf with concave octagon faces\n";
   for (double z : {0.0, 0.3})
-    for (const auto& p : xy) obj += QByteArray("v ") + QByteArray::number(p[0]) + ' ' + QByteArray::number(p[1]) + ' ' + QByteArray::number(z) + '\n';
+    for (const auto& p : xy)
+      obj += QByteArray("v ") + QByteArray::number(p[0]) + ' ' + QByteArray::number(p[1]) + ' ' +
+             QByteArray::number(z) + '\n';
   obj += "f 8 7 6 5 4 3 2 1\nf 9 10 11 12 13 14 15 16\n";
   for (int i = 0; i < 8; ++i) {
     const int a = i + 1, b = (i + 1) % 8 + 1;
-    obj += "f " + QByteArray::number(a) + ' ' + QByteArray::number(b) + ' ' + QByteArray::number(b + 8) + ' ' +
-           QByteArray::number(a + 8) + '\n';
+    obj += "f " + QByteArray::number(a) + ' ' + QByteArray::number(b) + ' ' + QByteArray::number(b + 8) +
+           ' ' + QByteArray::number(a + 8) + '\n';
   }
   return obj;
 }
@@ -113,7 +121,9 @@ inline std::string objectsJson(const Document* doc) {
 }
 
 // The supporting surface's height under object `i` (0: the floor).
-inline double standsAtY(const Document* doc, int i) { return doc->prepared()->placements[size_t(i)].baseWorld.y(); }
+inline double standsAtY(const Document* doc, int i) {
+  return doc->prepared()->placements[size_t(i)].baseWorld.y();
+}
 
 // A floor pixel near the bottom middle of the photo and a wall pixel above the floor line.
 inline std::optional<Vec2> floorPixel(const Document* doc, double fx) {
@@ -153,6 +163,5 @@ inline QPoint widgetOf(const Document* doc, const Viewport* view, const Vec3& wo
   const std::optional<Vec2> px = doc->prepared()->camera.project(world);
   return px ? view->widgetFromImage(*px).toPoint() : QPoint(-1, -1);
 }
-
 
 }  // namespace inlay::test

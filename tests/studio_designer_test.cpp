@@ -102,7 +102,6 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
   step(QStringLiteral("photo_opened"));
 
-
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());
   QCOMPARE(window.insertModelAction()->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
@@ -123,7 +122,10 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QCOMPARE(window.propertiesDock()->nameBox()->text(), QFileInfo(gltf).completeBaseName());
   QVERIFY(window.propertiesDock()->sizeLabel()->text().contains(QStringLiteral(" × ")));
   // Open Recent keeps it, under Models.
-  QVERIFY(QSettings().value(QStringLiteral("recentModels")).toStringList().contains(QFileInfo(gltf).absoluteFilePath()));
+  QVERIFY(QSettings()
+              .value(QStringLiteral("recentModels"))
+              .toStringList()
+              .contains(QFileInfo(gltf).absoluteFilePath()));
   {
     const QList<QAction*> recent = window.recentMenu()->actions();
     QVERIFY(std::any_of(recent.begin(), recent.end(), [&](QAction* a) {
@@ -217,9 +219,11 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QCOMPARE(view->handleAt(*turnAt), Viewport::Handle::Turn);
   const double yaw80 = 80.0 * std::numbers::pi / 180.0;
   clock.restart();
-  inlay::test::dragLeft(view, turnAt->toPoint(),
-                        widgetOf(doc, view, shelfBase + 0.6 * Vec3(std::sin(yaw80), 0, std::cos(yaw80))));
-  QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - 80.0) < 2.0, qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
+  inlay::test::dragLeft(
+      view, turnAt->toPoint(),
+      widgetOf(doc, view, shelfBase + 0.6 * Vec3(std::sin(yaw80), 0, std::cos(yaw80))));
+  QVERIFY2(std::abs(doc->scene().objects[1].yawDeg - 80.0) < 2.0,
+           qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
   QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
   timings << QStringLiteral("turn_handle_to_frame_ms,%1").arg(clock.elapsed());
@@ -227,7 +231,8 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   const std::optional<QPointF> heightAt = view->handlePos(Viewport::Handle::Height);
   QVERIFY(heightAt);
   clock.restart();
-  inlay::test::dragLeft(view, heightAt->toPoint(), widgetOf(doc, view, shelfBase + Vec3(0, 1.25 * h0, 0)));
+  inlay::test::dragLeft(view, heightAt->toPoint(),
+                        widgetOf(doc, view, shelfBase + Vec3(0, 1.25 * h0, 0)));
   QVERIFY2(std::abs(doc->scene().objects[1].heightM - 1.25 * h0) < 0.03 * h0,
            qPrintable(QString::number(doc->scene().objects[1].heightM)));
   QCOMPARE(doc->undoStack()->count(), beforeGesture + 2);
@@ -245,10 +250,12 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
       Vec3 onWall;
     };
     // 10 cm between the shelf's back and the wall (the snap takes up to 25 cm).
-    const Wall walls[] = {
-        {Vec3(box.xLeftM + halfDepth + 0.10, 0, shelfBase.z()), Vec3(1, 0, 0), 90.0, Vec3(box.xLeftM, 0, 0)},
-        {Vec3(box.xRightM - halfDepth - 0.10, 0, shelfBase.z()), Vec3(-1, 0, 0), -90.0, Vec3(box.xRightM, 0, 0)},
-        {Vec3(shelfBase.x(), 0, box.zBackM + halfDepth + 0.10), Vec3(0, 0, 1), 0.0, Vec3(0, 0, box.zBackM)}};
+    const Wall walls[] = {{Vec3(box.xLeftM + halfDepth + 0.10, 0, shelfBase.z()), Vec3(1, 0, 0), 90.0,
+                           Vec3(box.xLeftM, 0, 0)},
+                          {Vec3(box.xRightM - halfDepth - 0.10, 0, shelfBase.z()), Vec3(-1, 0, 0), -90.0,
+                           Vec3(box.xRightM, 0, 0)},
+                          {Vec3(shelfBase.x(), 0, box.zBackM + halfDepth + 0.10), Vec3(0, 0, 1), 0.0,
+                           Vec3(0, 0, box.zBackM)}};
     const Wall* chosen = nullptr;
     for (const Wall& w : walls) {
       const std::optional<Vec2> px = doc->prepared()->camera.project(w.nearIt);
@@ -268,7 +275,8 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
     const Vec3 snapped = doc->prepared()->placements[1].baseWorld;
     const double toWall = (snapped - chosen->onWall).dot(chosen->normal);
     QVERIFY2(std::abs(toWall - (halfDepth + 0.005)) < 0.01,
-             qPrintable(QStringLiteral("%1 m from the wall, the half depth is %2").arg(toWall).arg(halfDepth)));
+             qPrintable(
+                 QStringLiteral("%1 m from the wall, the half depth is %2").arg(toWall).arg(halfDepth)));
     QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
     QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
     timings << QStringLiteral("snap_drag_to_frame_ms,%1").arg(clock.elapsed());
@@ -286,12 +294,14 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
     timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
     QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
-    QCOMPARE(QImage(finalPath).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    QCOMPARE(QImage(finalPath).size(),
+             QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
     step(QStringLiteral("final_rendered"));
     const QString exported = log.filePath(QStringLiteral("composite.png"));
     QFile::remove(exported);
     QVERIFY(window.exportComposite(exported));
-    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    QCOMPARE(QImage(exported).size(),
+             QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
     step(QStringLiteral("exported"));
   }
 
@@ -317,7 +327,6 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
                            waitMs(60000));
   step(QStringLiteral("all_redone"));
 
-
   // --- 7. A drop while the scene is being prepared waits and goes in once it is ready ---
   doc->prepare();
   QCOMPARE(doc->state(), Document::State::Preparing);
@@ -330,7 +339,8 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
 
   QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
   qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
-  qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
+  qInfo("steps (name, seconds since the photo was opened): %s",
+        qPrintable(log.steps().join(QStringLiteral("; "))));
   qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
 }
 
@@ -350,11 +360,14 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
   QString why = refusedNaming(loadModelForInsert(write(QStringLiteral("empty.obj"), QByteArray()), h),
                               QStringLiteral("empty.obj"), QStringLiteral("empty"));
   QVERIFY2(why.isEmpty(), qPrintable(why));
-  why = refusedNaming(loadModelForInsert(write(QStringLiteral("nan.obj"), "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"), h),
-                      QStringLiteral("nan.obj"), QStringLiteral("non-finite"));
+  why = refusedNaming(
+      loadModelForInsert(write(QStringLiteral("nan.obj"), "v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n"), h),
+      QStringLiteral("nan.obj"), QStringLiteral("non-finite"));
   QVERIFY2(why.isEmpty(), qPrintable(why));
-  why = refusedNaming(loadModelForInsert(write(QStringLiteral("rug.obj"), "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 2 3 4\n"), h),
-                      QStringLiteral("rug.obj"), QStringLiteral("flat"));
+  why = refusedNaming(
+      loadModelForInsert(
+          write(QStringLiteral("rug.obj"), "v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nf 1 2 3 4\n"), h),
+      QStringLiteral("rug.obj"), QStringLiteral("flat"));
   QVERIFY2(why.isEmpty(), qPrintable(why));
   why = refusedNaming(loadModelForInsert(write(QStringLiteral("notes.txt"), "hello"), h),
                       QStringLiteral("notes.txt"), QStringLiteral("not a model file"));
@@ -365,7 +378,8 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
   // The triangle limit, stated in the message (a small limit stands in for 5 million).
   ModelImportLimits tiny;
   tiny.maxTriangles = 10;
-  const ModelLoadResult big = loadModelForInsert(write(QStringLiteral("shelf_big.obj"), concaveShelfObj()), h, tiny);
+  const ModelLoadResult big =
+      loadModelForInsert(write(QStringLiteral("shelf_big.obj"), concaveShelfObj()), h, tiny);
   why = refusedNaming(big, QStringLiteral("shelf_big.obj"), QStringLiteral("10"));
   QVERIFY2(why.isEmpty(), qPrintable(why));
   QVERIFY2(big.error.contains(QStringLiteral("up to 10 triangles")), qPrintable(big.error));
@@ -373,19 +387,23 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
 
   // Absurd units: a glTF box 1 km or 1 µm high gets the default height and a note.
   for (const double metres : {1000.0, 1e-6}) {
-    const ModelLoadResult r = loadModelForInsert(write(QStringLiteral("absurd.gltf"), boxGltf(metres, metres, metres)), h);
+    const ModelLoadResult r =
+        loadModelForInsert(write(QStringLiteral("absurd.gltf"), boxGltf(metres, metres, metres)), h);
     QVERIFY2(r.model, qPrintable(r.error));
     QCOMPARE(r.model->heightM, h);
     QVERIFY(!r.model->ownSize);
-    QVERIFY(!r.model->notes.isEmpty() && r.model->notes.join(QString()).contains(QStringLiteral("absurd")));
+    QVERIFY(!r.model->notes.isEmpty() &&
+            r.model->notes.join(QString()).contains(QStringLiteral("absurd")));
   }
   // A plausible one keeps its own size; one without normals gets a note and flat shading.
-  const ModelLoadResult cabinet = loadModelForInsert(write(QStringLiteral("cabinet.gltf"), boxGltf(0.8, 1.1, 0.4)), h);
+  const ModelLoadResult cabinet =
+      loadModelForInsert(write(QStringLiteral("cabinet.gltf"), boxGltf(0.8, 1.1, 0.4)), h);
   QVERIFY2(cabinet.model, qPrintable(cabinet.error));
   QVERIFY(cabinet.model->ownSize);
   QVERIFY(std::abs(cabinet.model->heightM - 1.1) < 1e-6);
   QCOMPARE(cabinet.model->name, QStringLiteral("cabinet"));
-  const ModelLoadResult bare = loadModelForInsert(write(QStringLiteral("bare.obj"), concaveShelfObj()), h);
+  const ModelLoadResult bare =
+      loadModelForInsert(write(QStringLiteral("bare.obj"), concaveShelfObj()), h);
   QVERIFY2(bare.model, qPrintable(bare.error));
   QVERIFY(bare.model->notes.join(QString()).contains(QStringLiteral("no normals")));
   // A missing MTL file (its textures with it): the model still comes in, with the default material.
@@ -403,7 +421,8 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
   const int steps = window->document()->undoStack()->count();
   QVERIFY(window->insertModelFile(dir_.filePath(QStringLiteral("nan.obj"))));
   QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
-  QVERIFY2(window->lastModelError().contains(QStringLiteral("nan.obj")), qPrintable(window->lastModelError()));
+  QVERIFY2(window->lastModelError().contains(QStringLiteral("nan.obj")),
+           qPrintable(window->lastModelError()));
   QVERIFY(!window->insertModelFile(dir_.filePath(QStringLiteral("notes.txt"))));
   QVERIFY(window->lastModelError().contains(QStringLiteral("notes.txt")));
   QCOMPARE(window->document()->objectCount(), objects);
@@ -444,7 +463,8 @@ void StudioDesignerTest::dropOnATableTopStandsOnIt() {
   QVERIFY2(pl.baseWorld.y() > 0.05, qPrintable(QString::number(pl.baseWorld.y())));
   const auto& surfaces = doc->prepared()->geometry.surfaces;
   QVERIFY(pl.supportSurfaceId >= 0 && size_t(pl.supportSurfaceId) < surfaces.size());
-  QVERIFY2(QString::fromStdString(surfaces[size_t(pl.supportSurfaceId)].name).endsWith(QStringLiteral("_top")),
+  QVERIFY2(QString::fromStdString(surfaces[size_t(pl.supportSurfaceId)].name)
+               .endsWith(QStringLiteral("_top")),
            surfaces[size_t(pl.supportSurfaceId)].name.c_str());
   // Its duplicate stays on the table top (not on the floor beside it), or on the same spot.
   QVERIFY(doc->duplicateObject(i));
@@ -472,7 +492,9 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
   };
   const QStringList english = labels();
   QVERIFY(english.size() >= 12);
-  for (const QString& l : english) QVERIFY2(!l.isEmpty(), qPrintable(QStringLiteral("a field without a label: ") + english.join(QLatin1Char('|'))));
+  for (const QString& l : english)
+    QVERIFY2(!l.isEmpty(),
+             qPrintable(QStringLiteral("a field without a label: ") + english.join(QLatin1Char('|'))));
   QVERIFY(english.contains(QStringLiteral("Size (W × D × H):")));
   for (const QString& lang : {QStringLiteral("de"), QStringLiteral("fr")}) {
     window.setLanguage(lang);
@@ -481,7 +503,8 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
     QCOMPARE(translated.size(), english.size());
     for (int i = 0; i < english.size(); ++i) {
       QVERIFY2(!translated[i].isEmpty(), qPrintable(lang));
-      if (english[i] != QLatin1String("Name:") && english[i] != QLatin1String("Material:"))  // German too
+      if (english[i] != QLatin1String("Name:") &&
+          english[i] != QLatin1String("Material:"))  // German too
         QVERIFY2(translated[i] != english[i], qPrintable(lang + QStringLiteral(": ") + english[i]));
     }
     QVERIFY(window.insertModelAction()->text() != QStringLiteral("Insert &Model…"));
@@ -496,10 +519,12 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
 void StudioDesignerTest::bigPhotosPreviewAtAboutOneMegapixel() {
   QCOMPARE(RenderController::previewSizeFor(640, 480), QSize(640, 480));
   QCOMPARE(RenderController::previewSizeFor(1000, 1000), QSize(1000, 1000));
-  for (const QSize photo : {QSize(4000, 3000), QSize(3000, 4000), QSize(9248, 6936), QSize(1001, 1000)}) {
+  for (const QSize photo :
+       {QSize(4000, 3000), QSize(3000, 4000), QSize(9248, 6936), QSize(1001, 1000)}) {
     const QSize p = RenderController::previewSizeFor(photo.width(), photo.height());
     const double pixels = double(p.width()) * p.height();
-    QVERIFY2(pixels <= RenderController::kPreviewMaxPixels * 1.003 && pixels > 0.99 * RenderController::kPreviewMaxPixels,
+    QVERIFY2(pixels <= RenderController::kPreviewMaxPixels * 1.003 &&
+                 pixels > 0.99 * RenderController::kPreviewMaxPixels,
              qPrintable(QStringLiteral("%1 x %2").arg(p.width()).arg(p.height())));
     QVERIFY(std::abs(double(p.width()) / p.height() - double(photo.width()) / photo.height()) < 0.003);
   }

@@ -287,9 +287,9 @@ void StudioDocumentTest::markEditsValidateMergeAndRestartPreparation() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   QVERIFY(!doc.setBackWallCorner(4, Vec2(1, 1), 0, &reason));
   QVERIFY(!doc.setBackWallCorner(0, Vec2(nan, 1), 0, &reason));
-  QVERIFY(!doc.addLight({{1, 1}, {20, 1}}, &reason));                 // two points
-  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {40, 1}}, &reason));         // no area
-  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {nan, 20}}, &reason));       // NaN
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}}, &reason));             // two points
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {40, 1}}, &reason));    // no area
+  QVERIFY(!doc.addLight({{1, 1}, {20, 1}, {nan, 20}}, &reason));  // NaN
   QVERIFY(!doc.addExtrusion({{1, 1}, {20, 1}}, Vec2(1, 30), &reason));
   QVERIFY(!doc.addShaft({10, 10, 10.5, 40}, {0, 0, 20, 20}, &reason));  // too thin
   QVERIFY(!doc.addOccluder(OccluderKeys{{{{5, 5}}}, {}}, &reason));     // no background stroke
@@ -392,8 +392,7 @@ void StudioDocumentTest::rendererKeepsUpWithManyMoves() {
   QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent(), waitMs(30000));
   QCOMPARE(quint64(renderer.frameInfo().sceneVersion), wanted);
   doc.undoStack()->undo();
-  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted,
-                           waitMs(30000));
+  QTRY_VERIFY_WITH_TIMEOUT(renderer.isCurrent() && renderer.requestedVersion() > wanted, waitMs(30000));
 }
 
 // The sink composites with a slim copy of the prepared scene; it must give what compositeOf

@@ -83,7 +83,8 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   QCOMPARE(view->tool(), Viewport::Tool::Light);
   const QRectF lamp = brightestPatch(window.renderer()->photoImage());
   for (const QPointF& c : {lamp.topLeft(), lamp.topRight(), lamp.bottomRight(), lamp.bottomLeft()})
-    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier,
+                      view->widgetFromImage(Vec2(c.x(), c.y())).toPoint());
   QTest::keyClick(view, Qt::Key_Return);
   QCOMPARE(int(doc->scene().lights.size()), 1);
   QVERIFY(steps->isDone(StepsDock::Lights));
@@ -113,7 +114,8 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   timings << QStringLiteral("library_chair_drop_ms,%1").arg(clock.elapsed());
   QVERIFY(steps->isDone(StepsDock::Objects));
   QCOMPARE(steps->currentStep(), int(StepsDock::Export));
-  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
+  QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
+                           waitMs(60000));
   step(QStringLiteral("library_chair_dropped"));
 
   // --- Render Final Image: the photo's full size, written atomically; then all steps are done ---
@@ -161,7 +163,8 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
     const double f0 = view->splitFraction();
     inlay::test::dragLeft(view, QPoint(x0, y), QPoint(x0 - 120, y));
     QVERIFY2(view->splitFraction() < f0 - 0.1, qPrintable(QString::number(view->splitFraction())));
-    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2, waitMs(60000));
+    QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
+                             waitMs(60000));
     step(QStringLiteral("before_after_split"));
   }
   window.splitAction()->trigger();
@@ -172,13 +175,15 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
     const QString exported = log.filePath(QStringLiteral("composite.jpg"));
     QFile::remove(exported);
     QVERIFY(window.exportComposite(exported));
-    QCOMPARE(QImage(exported).size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
+    QCOMPARE(QImage(exported).size(),
+             QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
     step(QStringLiteral("exported"));
   }
 
   QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
   qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
-  qInfo("steps (name, seconds since the photo was opened): %s", qPrintable(log.steps().join(QStringLiteral("; "))));
+  qInfo("steps (name, seconds since the photo was opened): %s",
+        qPrintable(log.steps().join(QStringLiteral("; "))));
 }
 
 QTEST_MAIN(StudioGuidedTest)

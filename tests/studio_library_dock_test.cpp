@@ -20,7 +20,9 @@ using namespace inlay::studio;
 
 namespace {
 
-QString modelsDir() { return qEnvironmentVariable("INLAY_SOURCE_DIR") + QStringLiteral("/resources/models"); }
+QString modelsDir() {
+  return qEnvironmentVariable("INLAY_SOURCE_DIR") + QStringLiteral("/resources/models");
+}
 
 }  // namespace
 

@@ -52,7 +52,8 @@ QString exampleFile(const QString& name) {
 bool waitPrepared(Document* doc) {
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < inlay::test::waitMs(180000)) QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < inlay::test::waitMs(180000))
+    QTest::qWait(20);
   return doc->state() != Document::State::Preparing;
 }
 
@@ -118,8 +119,7 @@ void StudioLiveTest::initTestCase() {
 void StudioLiveTest::cleanupTestCase() { QFile::remove(QSettings().fileName()); }
 
 void StudioLiveTest::init() {
-  if (!QFile::exists(exampleFile(QStringLiteral("scene.json"))))
-    QSKIP("resources/example absent");
+  if (!QFile::exists(exampleFile(QStringLiteral("scene.json")))) QSKIP("resources/example absent");
 }
 
 void StudioLiveTest::cleanup() {
@@ -169,12 +169,14 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   const CameraEstimate& after = *doc->lastEstimate();
   const std::optional<Vec2> vpAfter = vanishingPoint(after, 2);
   QVERIFY(vpAfter);
-  const Vec3 l0 = Vec3((*lines)[0].x(), (*lines)[0].y(), 1).cross(Vec3((*lines)[1].x(), (*lines)[1].y(), 1));
-  const Vec3 l1 = Vec3((*lines)[2].x(), (*lines)[2].y(), 1).cross(Vec3((*lines)[3].x(), (*lines)[3].y(), 1));
+  const Vec3 l0 =
+      Vec3((*lines)[0].x(), (*lines)[0].y(), 1).cross(Vec3((*lines)[1].x(), (*lines)[1].y(), 1));
+  const Vec3 l1 =
+      Vec3((*lines)[2].x(), (*lines)[2].y(), 1).cross(Vec3((*lines)[3].x(), (*lines)[3].y(), 1));
   const Vec3 meet = l0.cross(l1);
   const Vec2 users(meet.x() / meet.z(), meet.y() / meet.z());
-  qInfo("z vanishing point: estimated (%.1f, %.1f), user's (%.1f, %.1f), after (%.1f, %.1f)",
-        vp->x(), vp->y(), users.x(), users.y(), vpAfter->x(), vpAfter->y());
+  qInfo("z vanishing point: estimated (%.1f, %.1f), user's (%.1f, %.1f), after (%.1f, %.1f)", vp->x(),
+        vp->y(), users.x(), users.y(), vpAfter->x(), vpAfter->y());
   QVERIFY((*vpAfter - users).norm() < 0.5 * (*vp - users).norm());
   // The user's segments are in the estimate with finite residuals, and the overlay draws them.
   int userSegments = 0;
@@ -203,9 +205,11 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   const QColor without = view->grab().toImage().pixelColor(mid);
   QVERIFY2(std::abs(without.blue() - c.blue()) > 30, qPrintable(without.name()));
   QString reason;
-  QVERIFY(!doc->setVanishingLines(0, std::array<Vec2, 4>{Vec2(0, 0), Vec2(10, 10), Vec2(20, 20), Vec2(30, 30)}, &reason));
+  QVERIFY(!doc->setVanishingLines(
+      0, std::array<Vec2, 4>{Vec2(0, 0), Vec2(10, 10), Vec2(20, 20), Vec2(30, 30)}, &reason));
   QVERIFY(!reason.isEmpty());
-  QVERIFY(!doc->setVanishingLines(1, std::array<Vec2, 4>{Vec2(0, 0), Vec2(0.5, 0), Vec2(20, 20), Vec2(30, 35)}, &reason));
+  QVERIFY(!doc->setVanishingLines(
+      1, std::array<Vec2, 4>{Vec2(0, 0), Vec2(0.5, 0), Vec2(20, 20), Vec2(30, 35)}, &reason));
 }
 
 void StudioLiveTest::marksReshapePointByPoint() {
@@ -232,7 +236,7 @@ void StudioLiveTest::marksReshapePointByPoint() {
   const Vec2 lightPoint = doc->scene().lights[size_t(lastLight)].pointsPx[1];
   const Case cases[] = {
       {{MarkKind::Light, lastLight}, 1, lightPoint + Vec2(6, 9)},
-      {{MarkKind::Shaft, int(doc->scene().shafts.size()) - 1}, 2, Vec2(395, 342)},   // x1y1 corner
+      {{MarkKind::Shaft, int(doc->scene().shafts.size()) - 1}, 2, Vec2(395, 342)},  // x1y1 corner
       {{MarkKind::Surface, int(doc->scene().surfaces.size()) - 1}, 1, Vec2(158, 244)},
       {{MarkKind::Occluder, int(doc->scene().occluders.size()) - 1}, 1, Vec2(433, 204)},
   };
@@ -256,7 +260,8 @@ void StudioLiveTest::marksReshapePointByPoint() {
       const MarkPoint& m = pointsAfter[k];
       QVERIFY(m.mark == pointsBefore[k].mark && m.point == pointsBefore[k].point);
       if (m.mark == c.mark && m.point == c.point) {
-        QVERIFY2((m.px - c.to).norm() < 1.5, qPrintable(QStringLiteral("%1,%2").arg(m.px.x()).arg(m.px.y())));
+        QVERIFY2((m.px - c.to).norm() < 1.5,
+                 qPrintable(QStringLiteral("%1,%2").arg(m.px.x()).arg(m.px.y())));
         continue;
       }
       // A box corner drags its two neighbours along one coordinate each; the opposite stays.
@@ -360,8 +365,8 @@ void StudioLiveTest::twoStudiosKeepTheirOwnRecovery() {
   const QString deadPath = prefix + QStringLiteral("dead-0.json");
   QVERIFY(QFile::copy(a->autosaver()->scenePath(), deadPath));
   test::ChildProcess dying;  // a real process (posix_spawn), so under ThreadSanitizer too
-  QVERIFY(dying.start({"--lock-and-die", (prefix + QStringLiteral("dead-0.lock")).toStdString()},
-                      {}, false));
+  QVERIFY(dying.start({"--lock-and-die", (prefix + QStringLiteral("dead-0.lock")).toStdString()}, {},
+                      false));
   QCOMPARE(QString::fromStdString(test::ChildProcess::describe(
                dying.waitFor(std::chrono::milliseconds(test::waitMs(30000))))),
            QStringLiteral("exit code 0"));
@@ -407,7 +412,8 @@ void StudioLiveTest::objectEditsWhilePreparing() {
   QVERIFY2(doc->isReady(), qPrintable(doc->prepareError()));
   // The new scene caught up: the object stands where the document says, in its new material.
   const PreparedScene* p = doc->prepared();
-  QVERIFY((*p->camera.project(p->placements[0].baseWorld) - doc->scene().objects[0].basePx).norm() < 1e-3);
+  QVERIFY((*p->camera.project(p->placements[0].baseWorld) - doc->scene().objects[0].basePx).norm() <
+          1e-3);
   QCOMPARE(p->doc.objects[0].heightM, 0.42);
   QCOMPARE(p->renderScene.objects[0].material.kind, Material::Kind::Glossy);
   QVERIFY(p->renderScene.objects[0].material.albedo.isApprox(Vec3(0.8, 0.1, 0.1)));
@@ -443,7 +449,8 @@ void StudioLiveTest::roomSurfaceMaterial() {
   QVERIFY(waitPrepared(doc) && doc->isReady());
   const PreparedScene* p = doc->prepared();
   size_t floorId = 0;
-  while (floorId < p->geometry.surfaces.size() && p->geometry.surfaces[floorId].name != "floor") ++floorId;
+  while (floorId < p->geometry.surfaces.size() && p->geometry.surfaces[floorId].name != "floor")
+    ++floorId;
   QVERIFY(floorId < p->renderScene.roomMaterials.size());
   QVERIFY(p->renderScene.roomMaterials[floorId].has_value());
   QCOMPARE(p->renderScene.roomMaterials[floorId]->kind, Material::Kind::Glossy);

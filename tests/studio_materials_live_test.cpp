@@ -107,7 +107,9 @@ class StudioMaterialsLiveTest : public QObject {
 
  private:
   bool waitRefined(int minSpp);
-  QImage composite() const { return window_->renderer()->compositeImage().convertToFormat(QImage::Format_RGB32); }
+  QImage composite() const {
+    return window_->renderer()->compositeImage().convertToFormat(QImage::Format_RGB32);
+  }
   void shot(const QString& name);
 
   std::unique_ptr<MainWindow> window_;
@@ -166,7 +168,8 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
   shot(QStringLiteral("diffuse"));
 
   PropertiesDock* props = window_->propertiesDock();
-  for (const QString& preset : {QStringLiteral("glass"), QStringLiteral("mirror"), QStringLiteral("emissive")}) {
+  for (const QString& preset :
+       {QStringLiteral("glass"), QStringLiteral("mirror"), QStringLiteral("emissive")}) {
     const int steps = doc->undoStack()->index();
     const int index = props->presetBox()->findData(preset);
     QVERIFY(index >= 0);
@@ -187,9 +190,9 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
     qInfo("%s: %d of %d object pixels unlike the diffuse sphere; floor brightness %.1f (diffuse %.1f)",
           qPrintable(preset), unlike, count(both), floor, diffuseFloor);
     if (preset == QLatin1String("emissive"))
-      QVERIFY2(floor > diffuseFloor + 8, qPrintable(QStringLiteral("floor %1 vs %2").arg(floor).arg(diffuseFloor)));
-    else
-      QVERIFY2(unlike > count(both) / 5, qPrintable(QString::number(unlike)));
+      QVERIFY2(floor > diffuseFloor + 8,
+               qPrintable(QStringLiteral("floor %1 vs %2").arg(floor).arg(diffuseFloor)));
+    else QVERIFY2(unlike > count(both) / 5, qPrintable(QString::number(unlike)));
 
     // Drag the sphere across the floor and catch the first frame of its new place.
     QImage first;
@@ -204,9 +207,11 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
         firstDivider = renderer->frameInfo().resolutionDivider;
       }
     };
-    const QMetaObject::Connection c = connect(renderer, &RenderController::frameUpdated, this, catchFirst);
+    const QMetaObject::Connection c =
+        connect(renderer, &RenderController::frameUpdated, this, catchFirst);
     QCOMPARE(view->objectAt(view->widgetFromImage(home).toPoint()), 0);
-    inlay::test::dragLeft(view, view->widgetFromImage(home).toPoint(), view->widgetFromImage(away).toPoint());
+    inlay::test::dragLeft(view, view->widgetFromImage(home).toPoint(),
+                          view->widgetFromImage(away).toPoint());
     sinceRelease.start();
     catchFirst();  // already current when the drag's last frame came during the moves
     QVERIFY2((doc->scene().objects[0].basePx - away).norm() < 1.5, "the drag did not move the object");

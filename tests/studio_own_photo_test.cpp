@@ -61,7 +61,8 @@ double meanDifference(const QImage& a, const QImage& b, const QPoint& c, int r) 
   for (int y = c.y() - r; y <= c.y() + r; ++y)
     for (int x = c.x() - r; x <= c.x() + r; ++x) {
       const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
-      sum += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) + std::abs(qBlue(p) - qBlue(q));
+      sum += std::abs(qRed(p) - qRed(q)) + std::abs(qGreen(p) - qGreen(q)) +
+             std::abs(qBlue(p) - qBlue(q));
       n += 3;
     }
   return sum / n;
@@ -121,7 +122,8 @@ void StudioOwnPhotoTest::firstCompositeOnOwnPhoto() {
   // --- 3. Outline the middle ceiling panel with the Light tool (clicks, closed on the first) ---
   window.toolAction(int(Viewport::Tool::Light))->trigger();
   const Vec2 panel[4] = {{324, 49}, {398, 47}, {411, 92}, {339, 93}};
-  for (const Vec2& q : panel) QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(q).toPoint());
+  for (const Vec2& q : panel)
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(q).toPoint());
   QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(panel[0]).toPoint());
   QVERIFY(view->pendingPoints().empty());
   QCOMPARE(int(doc->scene().lights.size()), 1);
@@ -139,7 +141,8 @@ void StudioOwnPhotoTest::firstCompositeOnOwnPhoto() {
 
   // --- 5. The composite reaches a few samples per pixel ---
   const int wantedSpp = 4;
-  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= wantedSpp, waitMs(120000));
+  QTRY_VERIFY_WITH_TIMEOUT(renderer->isCurrent() && renderer->frameInfo().spp >= wantedSpp,
+                           waitMs(120000));
   step(QStringLiteral("composite_rendered"));
 
   // --- 6. Export the composite (what File > Export Composite writes after its dialog) ---
@@ -155,7 +158,8 @@ void StudioOwnPhotoTest::firstCompositeOnOwnPhoto() {
   QCOMPARE(out.size(), original.size());
   const Camera& cam = doc->prepared()->camera;
   const Vec3 base = doc->prepared()->placements[0].baseWorld;
-  const std::optional<Vec2> centre = cam.project(base + Vec3(0, 0.5 * doc->scene().objects[0].heightM, 0));
+  const std::optional<Vec2> centre =
+      cam.project(base + Vec3(0, 0.5 * doc->scene().objects[0].heightM, 0));
   QVERIFY(centre);
   const QPoint objectPx(int(std::lround(centre->x())), int(std::lround(centre->y())));
   QVERIFY(out.rect().adjusted(3, 3, -3, -3).contains(objectPx));

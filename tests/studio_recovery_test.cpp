@@ -54,8 +54,7 @@ int runChild(int argc, char** argv, const QString& scene) {
   Document* doc = window.document();
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(120000))
-    QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(120000)) QTest::qWait(20);
   if (!doc->isReady()) return 4;
   if (!doc->moveObject(0, doc->scene().objects[0].basePx + kMove)) return 5;
   if (!doc->addLight(kLight)) return 6;
@@ -91,10 +90,10 @@ void StudioRecoveryTest::killedStudioIsRestored() {
   const QByteArray said =
       QByteArray::fromStdString(child.readLine(std::chrono::milliseconds(waitMs(180000))));
   QVERIFY2(said.startsWith("AUTOSAVED"),
-           qPrintable(QStringLiteral("child said '%1', %2")
-                          .arg(QString::fromUtf8(said),
-                               QString::fromStdString(test::ChildProcess::describe(
-                                   child.waitFor(std::chrono::milliseconds(2000)))))));
+           qPrintable(
+               QStringLiteral("child said '%1', %2")
+                   .arg(QString::fromUtf8(said), QString::fromStdString(test::ChildProcess::describe(
+                                                     child.waitFor(std::chrono::milliseconds(2000)))))));
   const QList<QByteArray> words = said.trimmed().split(' ');
   const Vec2 movedTo(words[1].toDouble(), words[2].toDouble());
 

@@ -35,8 +35,7 @@ namespace {
 void waitPrepared(Document* doc) {
   QElapsedTimer t;
   t.start();
-  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(180000))
-    QTest::qWait(20);
+  while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(180000)) QTest::qWait(20);
 }
 
 // A drag with `button` between two image points.
@@ -106,7 +105,8 @@ void StudioToolsTest::shaftToolDrawsTwoBoxes() {
   waitPrepared(doc_);
   // This photo has no sunlit patch there: the failure names the shaft, nothing crashes.
   if (doc_->state() == Document::State::Failed)
-    QVERIFY2(doc_->prepareError().contains(QStringLiteral("shafts[0]")), qPrintable(doc_->prepareError()));
+    QVERIFY2(doc_->prepareError().contains(QStringLiteral("shafts[0]")),
+             qPrintable(doc_->prepareError()));
   doc_->undoStack()->undo();
   QCOMPARE(int(doc_->scene().shafts.size()), 0);
   waitPrepared(doc_);
@@ -141,7 +141,8 @@ void StudioToolsTest::occluderStrokesBecomeOneOccluderThenAppend() {
   QCOMPARE(int(doc_->scene().occluders.size()), 1);
   waitPrepared(doc_);
   if (doc_->state() == Document::State::Failed)
-    QVERIFY2(doc_->prepareError().contains(QStringLiteral("occluders[0]")), qPrintable(doc_->prepareError()));
+    QVERIFY2(doc_->prepareError().contains(QStringLiteral("occluders[0]")),
+             qPrintable(doc_->prepareError()));
   doc_->undoStack()->undo();
   doc_->undoStack()->undo();
   QCOMPARE(int(doc_->scene().occluders.size()), 0);
@@ -175,7 +176,8 @@ void StudioToolsTest::outlineKeysAndDeletingAMark() {
   QCOMPARE(int(doc_->scene().lights[3].pointsPx.size()), 4);
   doc_->undoStack()->undo();
   // Escape drops an outline half drawn.
-  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(10, 10)).toPoint());
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier,
+                    view_->widgetFromImage(Vec2(10, 10)).toPoint());
   QTest::keyClick(view_, Qt::Key_Escape);
   QVERIFY(view_->pendingPoints().empty());
   waitPrepared(doc_);
@@ -194,7 +196,8 @@ void StudioToolsTest::outlineKeysAndDeletingAMark() {
   doc_->undoStack()->undo();
   QCOMPARE(int(doc_->scene().lights.size()), 3);
   // A click on nothing deselects.
-  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier, view_->widgetFromImage(Vec2(250, 200)).toPoint());
+  QTest::mouseClick(view_, Qt::LeftButton, Qt::NoModifier,
+                    view_->widgetFromImage(Vec2(250, 200)).toPoint());
   QVERIFY(!doc_->selectedMark());
 
   // Delete light 1 from the scene tree: undoable.
@@ -235,15 +238,16 @@ void StudioToolsTest::undoingAnObjectEditWhilePreparing() {
   waitPrepared(doc_);
   QVERIFY(doc_->isReady());
   QVERIFY((*doc_->prepared()->camera.project(doc_->prepared()->placements[0].baseWorld) -
-           (base0 + Vec2(-30, 4))).norm() < 1e-3);
+           (base0 + Vec2(-30, 4)))
+              .norm() < 1e-3);
 }
 
 void StudioToolsTest::zoomAndPanKeepTheImageUnderTheCursor() {
   const QPoint at(view_->width() / 3, view_->height() / 2);
   const Vec2 under = view_->imageFromWidget(at);
   const double zoom0 = view_->zoom();
-  QWheelEvent wheel(at, view_->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::NoButton,
-                    Qt::NoModifier, Qt::NoScrollPhase, false);
+  QWheelEvent wheel(at, view_->mapToGlobal(at), QPoint(), QPoint(0, 240), Qt::NoButton, Qt::NoModifier,
+                    Qt::NoScrollPhase, false);
   QCoreApplication::sendEvent(view_, &wheel);
   QVERIFY(view_->zoom() > zoom0 * 1.2);
   QVERIFY((view_->imageFromWidget(at) - under).norm() < 1e-6);
@@ -264,7 +268,8 @@ static bool samePixels(const QImage& a, const QImage& b) {
   const QImage x = a.convertToFormat(QImage::Format_RGB32), y = b.convertToFormat(QImage::Format_RGB32);
   for (int row = 0; row < x.height(); ++row)
     for (int col = 0; col < x.width(); ++col)
-      if (qRed(x.pixel(col, row)) != qRed(y.pixel(col, row)) || qGreen(x.pixel(col, row)) != qGreen(y.pixel(col, row)) ||
+      if (qRed(x.pixel(col, row)) != qRed(y.pixel(col, row)) ||
+          qGreen(x.pixel(col, row)) != qGreen(y.pixel(col, row)) ||
           qBlue(x.pixel(col, row)) != qBlue(y.pixel(col, row)))
         return false;
   return true;
@@ -326,7 +331,8 @@ void StudioToolsTest::logListsEachPreparationsStages() {
   if (doc_->state() == Document::State::Failed)
     QVERIFY2(added.contains(QStringLiteral("could not be prepared")), qPrintable(added));
   else
-    QVERIFY2(added.contains(QStringLiteral("  occluders: ")) && added.contains(QStringLiteral(" s (1 matte)")),
+    QVERIFY2(added.contains(QStringLiteral("  occluders: ")) &&
+                 added.contains(QStringLiteral(" s (1 matte)")),
              qPrintable(added));
   // A picture of it for the docs (beside the test binary).
   log->raise();

@@ -34,8 +34,8 @@ using namespace inlay::studio;
 namespace {
 
 QString exampleScene() {
-  const QString fromSource =
-      qEnvironmentVariable("INLAY_SOURCE_DIR") + QStringLiteral("/resources/example/scene.json");
+  const QString fromSource = qEnvironmentVariable("INLAY_SOURCE_DIR") +
+                             QStringLiteral("/resources/example/scene.json");
   if (!qEnvironmentVariable("INLAY_SOURCE_DIR").isEmpty() && QFile::exists(fromSource))
     return fromSource;
   return QString::fromStdString(exampleScenePath());
@@ -113,8 +113,8 @@ void StudioViewportTest::dragMovesObjectAsOneUndoStep() {
   const Vec2 moved = doc->scene().objects[0].basePx;
   QVERIFY2((moved - base0).norm() > 50, "the drag did not move the object");
   // The grab offset keeps the marker under the cursor: it ends within a pixel of the target.
-  QVERIFY2((moved - target).norm() < 1.0, qPrintable(QStringLiteral("ended at %1, %2")
-                                                         .arg(moved.x()).arg(moved.y())));
+  QVERIFY2((moved - target).norm() < 1.0,
+           qPrintable(QStringLiteral("ended at %1, %2").arg(moved.x()).arg(moved.y())));
   QCOMPARE(doc->undoStack()->count(), 1);  // ten moves, one undo step
   QVERIFY(!doc->undoStack()->isClean());
   QVERIFY(window.isWindowModified());

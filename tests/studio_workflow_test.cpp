@@ -38,8 +38,8 @@
 #include "studio_workflow_steps.h"
 
 using namespace inlay;
-using inlay::test::waitMs;
 using inlay::test::StepLog;
+using inlay::test::waitMs;
 using namespace inlay::studio;
 
 namespace {
@@ -135,7 +135,8 @@ void StudioWorkflowTest::newUserWorkflow() {
   const Vec2 placedCorner = (*doc->scene().layout.backWallPx)[3];
   QVERIFY2((placedCorner - targetPx).norm() < 1.0 / view->zoom() + 1e-6,
            qPrintable(QStringLiteral("corner at %1, %2").arg(placedCorner.x()).arg(placedCorner.y())));
-  for (int i = 0; i < 3; ++i) QVERIFY((*doc->scene().layout.backWallPx)[size_t(i)] == estimated[size_t(i)]);
+  for (int i = 0; i < 3; ++i)
+    QVERIFY((*doc->scene().layout.backWallPx)[size_t(i)] == estimated[size_t(i)]);
   QVERIFY2(waitReady(doc), qPrintable(doc->prepareError()));
   // The user's fix is kept exactly; the camera was re-estimated around it.
   for (int i = 0; i < 4; ++i)
@@ -146,7 +147,8 @@ void StudioWorkflowTest::newUserWorkflow() {
   window.toolAction(int(Viewport::Tool::Light))->trigger();
   QCOMPARE(view->tool(), Viewport::Tool::Light);
   const Vec2 outline[4] = {{89.3, 37.0}, {149.7, 39.7}, {153.3, 53.1}, {100.2, 51.0}};
-  for (const Vec2& q : outline) QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(q).toPoint());
+  for (const Vec2& q : outline)
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(q).toPoint());
   QCOMPARE(int(view->pendingPoints().size()), 4);
   QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(outline[0]).toPoint());
   QVERIFY(view->pendingPoints().empty());
@@ -180,7 +182,8 @@ void StudioWorkflowTest::newUserWorkflow() {
       QTest::qWait(1);
     firstFrameMs.push_back(double(sinceEdit.nsecsElapsed()) * 1e-6);
   }
-  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(floorTarget).toPoint());
+  QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier,
+                      view->widgetFromImage(floorTarget).toPoint());
   QCOMPARE(undo->count(), 5);
   QVERIFY((doc->scene().objects[0].basePx - floorTarget).norm() < 1.0);
   QVERIFY(std::abs(doc->prepared()->placements[0].baseWorld.y()) < 1e-6);  // on the floor
@@ -227,7 +230,9 @@ void StudioWorkflowTest::newUserWorkflow() {
   const QPoint grab = view->widgetFromImage(objectNow).toPoint();
   QCOMPARE(view->objectAt(grab), 0);
   QTest::mousePress(view, Qt::LeftButton, Qt::NoModifier, grab);
-  for (int k = 1; k <= 10; ++k) QTest::mouseMove(view, view->widgetFromImage(objectNow + (onTable - objectNow) * (k / 10.0)).toPoint());
+  for (int k = 1; k <= 10; ++k)
+    QTest::mouseMove(view,
+                     view->widgetFromImage(objectNow + (onTable - objectNow) * (k / 10.0)).toPoint());
   QTest::mouseRelease(view, Qt::LeftButton, Qt::NoModifier, view->widgetFromImage(onTable).toPoint());
   QCOMPARE(undo->count(), 7);
   const double standsAt = doc->prepared()->placements[0].baseWorld.y();
@@ -239,7 +244,8 @@ void StudioWorkflowTest::newUserWorkflow() {
   for (QLabel* l : window.statusBar()->findChildren<QLabel*>()) figures << l->text();
   const QString joined = figures.join(QLatin1Char(' '));
   QVERIFY2(joined.contains(QStringLiteral("spp")) && joined.contains(QStringLiteral("samples/s")) &&
-               joined.contains(QStringLiteral("error")), qPrintable(joined));
+               joined.contains(QStringLiteral("error")),
+           qPrintable(joined));
   step(QStringLiteral("object_on_table"));
   const std::string finalJson = sceneToJson(doc->scene());
 
@@ -282,7 +288,8 @@ void StudioWorkflowTest::newUserWorkflow() {
   QVERIFY2(waitReady(reopened.document()), qPrintable(reopened.document()->prepareError()));
   QCOMPARE(sceneToJson(reopened.document()->scene()), sceneToJson(doc->scene()));
   QVERIFY((reopened.document()->prepared()->placements[0].baseWorld -
-           doc->prepared()->placements[0].baseWorld).norm() < 1e-9);
+           doc->prepared()->placements[0].baseWorld)
+              .norm() < 1e-9);
   QTRY_VERIFY_WITH_TIMEOUT(reopened.renderer()->hasFrame(), waitMs(60000));
   step(QStringLiteral("reopened"));
 
@@ -323,7 +330,8 @@ void StudioWorkflowTest::frenchFromTheLanguageMenu() {
     QCOMPARE(window.toolsMenu()->title().remove(QLatin1Char('&')), QStringLiteral("Outils"));
     QCOMPARE(window.layersDock()->windowTitle(), QStringLiteral("Calques"));
     // Qt's own strings come from qtbase_fr (when the system has it).
-    if (QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath) + QStringLiteral("/qtbase_fr.qm")))
+    if (QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath) +
+                      QStringLiteral("/qtbase_fr.qm")))
       QCOMPARE(QCoreApplication::translate("QPlatformTheme", "Cancel"), QStringLiteral("Annuler"));
     QVERIFY(log_->shot(&window, QStringLiteral("french")));
   }

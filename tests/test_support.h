@@ -23,8 +23,8 @@ inline std::string sharedDir() {
 
 // A fresh temporary folder for one test.
 inline std::filesystem::path tempDir(const std::string& name) {
-  auto p = std::filesystem::temp_directory_path() / ("inlay_test_" + name + "_" +
-                                                      std::to_string(::getpid()));
+  auto p = std::filesystem::temp_directory_path() /
+           ("inlay_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(p);
   std::filesystem::create_directories(p);
   return p;
@@ -69,7 +69,7 @@ class FileSizeCap {
 }  // namespace inlay::test
 
 // Skips the test (reported as skipped by ctest through gtest) when ../shared is missing.
-#define INLAY_REQUIRE_SHARED()                                                   \
-  do {                                                                           \
+#define INLAY_REQUIRE_SHARED()                                                     \
+  do {                                                                             \
     if (inlay::test::sharedDir().empty()) GTEST_SKIP() << "../shared not present"; \
   } while (0)

@@ -48,9 +48,9 @@ struct BatchArgs {
 
 // One manifest line, parsed.
 struct BatchLine {
-  int lineNumber = 0;       // 1-based, as an editor shows it
-  std::string scene;        // absolute
-  std::string output;       // absolute
+  int lineNumber = 0;            // 1-based, as an editor shows it
+  std::string scene;             // absolute
+  std::string output;            // absolute
   json objects = json::array();  // per-object overrides, merged into the scene's objects[i]
   json render = json::object();  // merged into the scene's render keys
 };
@@ -233,7 +233,7 @@ Expected<SceneDoc> lineScene(const json& sceneJson, const BatchLine& line) {
 struct PreparedGroup {
   const PreparedScene* scene = nullptr;
   json sceneJson;
-  MeshCache meshes;      // guarded by meshMutex
+  MeshCache meshes;  // guarded by meshMutex
   std::mutex meshMutex;
 };
 
@@ -418,8 +418,8 @@ int BatchRunner::run(const std::vector<BatchLine>& lines, const std::vector<Scen
   std::fprintf(stderr, "inlay-cli: batch: failed lines of %s:", args_.manifest.c_str());
   for (const auto& f : failures_) std::fprintf(stderr, " %d", f.lineNumber);
   std::fprintf(stderr, "\n");
-  const bool internal = std::any_of(failures_.begin(), failures_.end(),
-                                    [](const Failure& f) { return !f.badInput; });
+  const bool internal =
+      std::any_of(failures_.begin(), failures_.end(), [](const Failure& f) { return !f.badInput; });
   return internal ? 1 : 2;
 }
 

@@ -168,12 +168,11 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       (void)flag;
       return std::string(argv[++i]);
     };
-    if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" ||
-        s == "--albedo" || s == "--direct" || s == "--gathered" || s == "--method" ||
-        s == "--scene" || s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
-        s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo" || s == "--cue" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
-        s == "--report") {
+    if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" || s == "--albedo" ||
+        s == "--direct" || s == "--gathered" || s == "--method" || s == "--scene" || s == "--spp" ||
+        s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
+        s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
+        s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -192,13 +191,12 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--evaluate-at") a.evaluateAt = *v;
       else if (s == "--min-improvement") {
         a.minImprovement = parseNumber<double>(*v);
-        if (!a.minImprovement || *a.minImprovement >= 1) return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
-      }
-      else if (s == "--prior") {
+        if (!a.minImprovement || *a.minImprovement >= 1)
+          return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
+      } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
-      }
-      else if (s == "--seconds") {
+      } else if (s == "--seconds") {
         a.seconds = parseNumber<double>(*v);
         if (!a.seconds) return "--seconds: '" + *v + "' is not a non-negative number";
       } else if (s == "--noise") {
@@ -262,8 +260,8 @@ class Progress {
                    std::string(size_t(30 * std::clamp(fraction, 0.0, 1.0)), '#').c_str(),
                    int(100 * fraction), f.spp, f.seconds, f.estimatedError);
     } else if (f.spp > 0 && (f.spp & (f.spp - 1)) == 0) {  // powers of two only
-      std::fprintf(stderr, "inlay-cli: render %d spp, %.1f s, estimated error %.4f\n", f.spp,
-                   f.seconds, f.estimatedError);
+      std::fprintf(stderr, "inlay-cli: render %d spp, %.1f s, estimated error %.4f\n", f.spp, f.seconds,
+                   f.estimatedError);
     }
   }
   void done() {
@@ -277,13 +275,14 @@ class Progress {
 };
 
 // Progress on the terminal and the optional progress CSV, for each frame of a render.
-std::function<void(const RenderFrame&)> reportFrames(Progress& progress, std::ofstream* csv, int targetSpp,
-                                                     double seconds) {
+std::function<void(const RenderFrame&)> reportFrames(Progress& progress, std::ofstream* csv,
+                                                     int targetSpp, double seconds) {
   return [&progress, csv, targetSpp, seconds](const RenderFrame& f) {
     double fraction = double(f.spp) / std::max(1, targetSpp);
     if (seconds > 0) fraction = std::max(fraction, f.seconds / seconds);
     progress.frame(f, std::min(1.0, fraction));
-    if (csv && f.spp > 0) *csv << f.seconds << "," << f.spp << "," << f.estimatedError << "\n" << std::flush;
+    if (csv && f.spp > 0)
+      *csv << f.seconds << "," << f.spp << "," << f.estimatedError << "\n" << std::flush;
   };
 }
 
@@ -342,14 +341,17 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
     if (!progress.quiet()) std::fprintf(stderr, "inlay-cli: warning: %s\n", w.c_str());
   // --verbose: the stages even with --quiet (it was asked for).
   if (a.verbose)
-    for (const StageRecord& s : prepared->stages) std::fprintf(stderr, "inlay-cli: stage %s\n", describeStage(s).c_str());
+    for (const StageRecord& s : prepared->stages)
+      std::fprintf(stderr, "inlay-cli: stage %s\n", describeStage(s).c_str());
   if (!a.report.empty())
-    if (auto st = writeFileAtomically(a.report, prepareReport(*prepared).dump(1) + "\n"); !st) return st.error();
+    if (auto st = writeFileAtomically(a.report, prepareReport(*prepared).dump(1) + "\n"); !st)
+      return st.error();
   if (!progress.quiet()) {
     const auto& e = prepared->responseEstimate;
     std::fprintf(stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
                  e ? (" (estimated from " + std::to_string(e->edgesUsed) + " edges in " +
-                      std::to_string(int(std::lround(1000 * e->seconds))) + " ms)").c_str()
+                      std::to_string(int(std::lround(1000 * e->seconds))) + " ms)")
+                         .c_str()
                    : " (camera.response)");
   }
   return prepared;
@@ -362,7 +364,8 @@ nlohmann::json lightsJsonOf(const std::vector<AreaLight>& lights) {
     json corners = json::array();
     for (const Vec3& c : L.cornersWorld) corners.push_back({c.x(), c.y(), c.z()});
     const Vec3 c = L.centre();
-    a.push_back({{"corners", corners}, {"centre", {c.x(), c.y(), c.z()}},
+    a.push_back({{"corners", corners},
+                 {"centre", {c.x(), c.y(), c.z()}},
                  {"rgb", {L.radiance.x(), L.radiance.y(), L.radiance.z()}}});
   }
   return a;
@@ -376,17 +379,28 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
   for (const auto& h : r.history) history.push_back({h.seconds, h.objective});
   auto sunsJson = [](const std::vector<SunLight>& suns) {
     json a = json::array();
-    for (const auto& s : suns) a.push_back({{"rgb", {s.irradianceOverPi.x(), s.irradianceOverPi.y(), s.irradianceOverPi.z()}}});
+    for (const auto& s : suns)
+      a.push_back({{"rgb", {s.irradianceOverPi.x(), s.irradianceOverPi.y(), s.irradianceOverPi.z()}}});
     return a;
   };
-  return {{"initial", lightsJsonOf(ps.initialLights)}, {"refined", lightsJsonOf(ps.lighting.lights)},
-          {"stage_seconds", stageSecondsJson(ps.stages)}, {"stages", stagesJson(ps.stages)},
-          {"suns_initial", sunsJson(ps.initialSuns)}, {"suns_refined", sunsJson(ps.lighting.suns)},
-          {"refinement", {{"ran", !r.history.empty()}, {"seconds", r.seconds}, {"pixels", r.pixels},
-                          {"evaluations", r.evaluations}, {"initial_objective", r.initialObjective},
-                          {"final_objective", r.finalObjective}, {"initial_data_term", r.initialDataTerm},
-                          {"final_data_term", r.finalDataTerm}, {"history", history},
-                          {"report", r.report}, {"notes", r.notes}}}};
+  return {{"initial", lightsJsonOf(ps.initialLights)},
+          {"refined", lightsJsonOf(ps.lighting.lights)},
+          {"stage_seconds", stageSecondsJson(ps.stages)},
+          {"stages", stagesJson(ps.stages)},
+          {"suns_initial", sunsJson(ps.initialSuns)},
+          {"suns_refined", sunsJson(ps.lighting.suns)},
+          {"refinement",
+           {{"ran", !r.history.empty()},
+            {"seconds", r.seconds},
+            {"pixels", r.pixels},
+            {"evaluations", r.evaluations},
+            {"initial_objective", r.initialObjective},
+            {"final_objective", r.finalObjective},
+            {"initial_data_term", r.initialDataTerm},
+            {"final_data_term", r.finalDataTerm},
+            {"history", history},
+            {"report", r.report},
+            {"notes", r.notes}}}};
 }
 
 // --replace-lights / --replace-albedo (diagnostics: which of lights and albedo limits the error).
@@ -397,7 +411,8 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
     const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
     const char* list = j.is_object() && j.contains("refined") ? "refined" : "lights";
     if (!j.is_object() || !j.contains(list) || !j[list].is_array())
-      return Error{a.replaceLights, "--replace-lights", "expected a JSON object with a \"lights\" array"};
+      return Error{a.replaceLights, "--replace-lights",
+                   "expected a JSON object with a \"lights\" array"};
     rs.lights.clear();
     for (size_t i = 0; i < j[list].size(); ++i) {
       const auto& l = j[list][i];
@@ -405,12 +420,15 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
       AreaLight L;
       try {
         for (size_t k = 0; k < 4; ++k)
-          L.cornersWorld[k] = Vec3(l.at("corners").at(k).at(0), l.at("corners").at(k).at(1), l.at("corners").at(k).at(2));
+          L.cornersWorld[k] = Vec3(l.at("corners").at(k).at(0), l.at("corners").at(k).at(1),
+                                   l.at("corners").at(k).at(2));
         L.radiance = Vec3(l.at("rgb").at(0), l.at("rgb").at(1), l.at("rgb").at(2));
       } catch (const std::exception&) {
-        return Error{a.replaceLights, key, "expected \"corners\" (4 x 3 numbers) and \"rgb\" (3 numbers)"};
+        return Error{a.replaceLights, key,
+                     "expected \"corners\" (4 x 3 numbers) and \"rgb\" (3 numbers)"};
       }
-      if (!L.radiance.allFinite() || !(L.area() > 0)) return Error{a.replaceLights, key, "not a finite light with an area"};
+      if (!L.radiance.allFinite() || !(L.area() > 0))
+        return Error{a.replaceLights, key, "not a finite light with an area"};
       rs.lights.push_back(L);
     }
   }
@@ -446,7 +464,8 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
 
   if (auto st = applyReplacements(ps, a); !st) return inputError(st.error());
   if (a.noGrain) ps.doc.render.grain = false;
-  if (!a.quiet && ps.doc.render.grain) std::fprintf(stderr, "inlay-cli: %s\n", describeNoise(ps.photoNoise).c_str());
+  if (!a.quiet && ps.doc.render.grain)
+    std::fprintf(stderr, "inlay-cli: %s\n", describeNoise(ps.photoNoise).c_str());
   if (!a.lightsJson.empty())
     if (auto st = writeFileAtomically(a.lightsJson, lightsReport(ps).dump(1) + "\n"); !st)
       return inputError(st.error());
@@ -464,14 +483,16 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   // the uniform schedule it always meant.
   so.noiseTarget = a.noise.value_or(a.noFocus ? 0.0 : ps.doc.render.noise);
   // render/denoise.h; only the final frame is written, so only it is denoised.
-  so.denoise = a.denoise.value_or(denoiseByDefault) ? SessionOptions::Denoise::Final : SessionOptions::Denoise::Off;
+  so.denoise = a.denoise.value_or(denoiseByDefault) ? SessionOptions::Denoise::Final
+                                                    : SessionOptions::Denoise::Off;
   std::ofstream csv;
   if (!a.progressCsv.empty()) {
     csv.open(a.progressCsv);
     if (!csv) return inputError(Error{a.progressCsv, "--progress-csv", "cannot be written"});
     csv << "seconds,spp,estimated_error\n";
   }
-  LastFrameSink sink(reportFrames(progress, a.progressCsv.empty() ? nullptr : &csv, so.targetSpp, so.seconds));
+  LastFrameSink sink(
+      reportFrames(progress, a.progressCsv.empty() ? nullptr : &csv, so.targetSpp, so.seconds));
   {
     RenderSession session(&sink, so);
     session.setScene(shownRenderScene(ps));
@@ -496,16 +517,20 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   if (!a.layers.empty()) {
     ImageF with = frame->withObjects, without = frame->withoutObjects;
     const ImageF clean = compositeOf(ps, *frame, /*withGrain=*/false);  // the layers stay clean
-    std::vector<NamedLayer> layers = {{"composite", &clean}, {"with_objects", &with},
-                                      {"without_objects", &without}, {"mask", &frame->mask}};
+    std::vector<NamedLayer> layers = {{"composite", &clean},
+                                      {"with_objects", &with},
+                                      {"without_objects", &without},
+                                      {"mask", &frame->mask}};
     if (!frame->samples.empty()) layers.push_back({"samples", &frame->samples});
     if (!frame->noise.empty()) layers.push_back({"noise", &frame->noise});
     if (auto st = saveLayersExr(a.layers, layers); !st) return inputError(st.error());
   }
   if (!a.quiet)
-    std::fprintf(stderr, "inlay-cli: wrote %s (%d spp at most, %.1f on average, %.1f s render, estimated error %.4f%s%s)\n",
-                 a.output.c_str(), frame->spp, frame->meanSpp, frame->seconds, frame->estimatedError,
-                 frame->converged ? ", converged" : "", frame->denoised ? ", denoised" : "");
+    std::fprintf(
+        stderr,
+        "inlay-cli: wrote %s (%d spp at most, %.1f on average, %.1f s render, estimated error %.4f%s%s)\n",
+        a.output.c_str(), frame->spp, frame->meanSpp, frame->seconds, frame->estimatedError,
+        frame->converged ? ", converged" : "", frame->denoised ? ", denoised" : "");
   return 0;
 }
 
@@ -545,7 +570,8 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   // What the user already fixed in the scene is kept; the rest is estimated around it.
   auto cl = cameraAndLayoutOf(fixed.camera, fixed.layout, *photo, true, &gCancel);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted; nothing written\n"), 1;
-  if (!cl) return inputError(cl.error().inFile(a.sceneForEstimate.empty() ? photoPath : a.sceneForEstimate));
+  if (!cl)
+    return inputError(cl.error().inFile(a.sceneForEstimate.empty() ? photoPath : a.sceneForEstimate));
   const CameraEstimate& est = *cl->estimate;
   const Camera& cam = cl->camera;
   const std::array<Vec2, 3> vps = fixed.camera.vanishingPointsPx ? *fixed.camera.vanishingPointsPx
@@ -553,34 +579,44 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   using nlohmann::json;
   auto pt = [](const Vec2& p) { return json::array({p.x(), p.y()}); };
   json j;
-  j["camera"] = {{"height_m", cam.heightM}, {"focal_px", cam.focalPx},
+  j["camera"] = {{"height_m", cam.heightM},
+                 {"focal_px", cam.focalPx},
                  {"principal_px", pt(cam.principalPx)},
                  {"vanishing_points_px", json::array({pt(vps[0]), pt(vps[1]), pt(vps[2])})}};
   j["layout"] = {{"back_wall_px", json::array({pt(cl->backWallPx[0]), pt(cl->backWallPx[1]),
                                                pt(cl->backWallPx[2]), pt(cl->backWallPx[3])})}};
   json rot = json::array();
   for (int r = 0; r < 3; ++r)
-    rot.push_back(json::array({cam.worldFromCamera(r, 0), cam.worldFromCamera(r, 1), cam.worldFromCamera(r, 2)}));
+    rot.push_back(
+        json::array({cam.worldFromCamera(r, 0), cam.worldFromCamera(r, 1), cam.worldFromCamera(r, 2)}));
   j["rotation"] = rot;
-  j["confidence"] = {{"vanishing_points", json::array({est.confidence[0], est.confidence[1], est.confidence[2]})},
-                     {"overall", est.overallConfidence}, {"manhattan", est.manhattan},
-                     {"layout", est.layoutScore}};
+  j["confidence"] = {
+      {"vanishing_points", json::array({est.confidence[0], est.confidence[1], est.confidence[2]})},
+      {"overall", est.overallConfidence},
+      {"manhattan", est.manhattan},
+      {"layout", est.layoutScore}};
   // What each vanishing point rests on (the studio shows the same from CameraEstimate).
   json vpInfo = json::array();
   for (const VanishingPointInfo& v : est.vanishingPoints)
-    vpInfo.push_back({{"homogeneous_px", {v.homogeneousPx.x(), v.homogeneousPx.y(), v.homogeneousPx.z()}},
-                      {"at_infinity", v.atInfinity}, {"segments", v.segmentCount},
-                      {"support_length_px", v.supportLengthPx}, {"rms_residual_px", v.rmsResidualPx},
-                      {"angular_sigma_deg", v.angularSigmaDeg}, {"confidence", v.confidence},
-                      {"nearly_parallel", v.nearlyParallel}});
+    vpInfo.push_back(
+        {{"homogeneous_px", {v.homogeneousPx.x(), v.homogeneousPx.y(), v.homogeneousPx.z()}},
+         {"at_infinity", v.atInfinity},
+         {"segments", v.segmentCount},
+         {"support_length_px", v.supportLengthPx},
+         {"rms_residual_px", v.rmsResidualPx},
+         {"angular_sigma_deg", v.angularSigmaDeg},
+         {"confidence", v.confidence},
+         {"nearly_parallel", v.nearlyParallel}});
   j["vanishing_point_support"] = vpInfo;
   j["focal_interval_px"] = json::array({est.focalMinPx, est.focalMaxPx});
   j["focal_from_prior"] = est.focalFromPrior;
   j["principal_sigma_px"] = pt(est.principalSigmaPx);
   j["principal_from_prior"] = est.principalFromPrior;
   j["warnings"] = est.warnings;
-  j["timings_ms"] = {{"lines", est.timings.linesMs}, {"vanishing", est.timings.vanishingMs},
-                     {"refine", est.timings.refineMs}, {"layout", est.timings.layoutMs},
+  j["timings_ms"] = {{"lines", est.timings.linesMs},
+                     {"vanishing", est.timings.vanishingMs},
+                     {"refine", est.timings.refineMs},
+                     {"layout", est.timings.layoutMs},
                      {"total", est.timings.totalMs}};
   j["segments"] = est.segments.size();
   if (auto st = writeFileAtomically(a.output, j.dump(2) + "\n"); !st) return inputError(st.error());
@@ -613,7 +649,8 @@ int commandResponse(const std::string& input, const Args& a) {
   ResponseKeys keys;
   std::string photoPath = input;
   std::string ext = std::filesystem::path(input).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
   const bool scene = ext == ".json";
   if (scene) {
     auto loaded = loadSceneFile(input);
@@ -632,7 +669,8 @@ int commandResponse(const std::string& input, const Args& a) {
   json j;
   j["family"] = r.familyName();
   j["description"] = r.describe();
-  j["parameters"] = {{"power", r.params().power}, {"toe", r.params().toe}, {"shoulder", r.params().shoulder}};
+  j["parameters"] = {
+      {"power", r.params().power}, {"toe", r.params().toe}, {"shoulder", r.params().shoulder}};
   j["source"] = !photo->wasSrgbEncoded ? "linear photo" : c.estimate ? "estimated" : "camera.response";
   j["warnings"] = c.warnings;
   json table = json::array();
@@ -642,10 +680,17 @@ int commandResponse(const std::string& input, const Args& a) {
     const ResponseEstimate& e = *c.estimate;
     json history = json::array();
     for (const auto& [sec, obj] : e.history) history.push_back({sec, obj});
-    j["estimate"] = {{"determined", e.determined}, {"decision", e.decision}, {"cue", a.cue}, {"prior_weight", o.priorWeight},
-                     {"edges_used", e.edgesUsed}, {"segments_found", e.segmentsFound},
-                     {"objective", e.objective}, {"srgb_objective", e.srgbObjective},
-                     {"seconds", e.seconds}, {"cpu_seconds", e.cpuSeconds}, {"history", history}};
+    j["estimate"] = {{"determined", e.determined},
+                     {"decision", e.decision},
+                     {"cue", a.cue},
+                     {"prior_weight", o.priorWeight},
+                     {"edges_used", e.edgesUsed},
+                     {"segments_found", e.segmentsFound},
+                     {"objective", e.objective},
+                     {"srgb_objective", e.srgbObjective},
+                     {"seconds", e.seconds},
+                     {"cpu_seconds", e.cpuSeconds},
+                     {"history", history}};
   }
   if (auto st = writeFileAtomically(a.output, j.dump(1) + "\n"); !st) return inputError(st.error());
   if (!a.quiet) {
@@ -694,16 +739,14 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   if (rerun)  // the room's pixels from the re-run
     for (size_t i = 0; i < albedo.data.size(); ++i)
       if (albedo.data[i] > 0 || le.decomposeValid[i / 3]) albedo.data[i] = rerun->albedo.data[i];
-  if (auto st = saveImage(a.albedo, albedo, SaveOptions{false}); !st)
-    return inputError(st.error());
+  if (auto st = saveImage(a.albedo, albedo, SaveOptions{false}); !st) return inputError(st.error());
   if (!a.direct.empty()) {
     ImageF direct = rerun ? rerun->direct : le.direct;
     if (retinex)  // D = B - rho Gamma for Retinex's rho
       for (size_t i = 0; i < direct.data.size() && i < le.gathered.data.size(); ++i)
-        direct.data[i] = std::max(0.f, prepared->photo.linearRgb.data[i] -
-                                           albedo.data[i] * le.gathered.data[i]);
-    if (auto st = saveImage(a.direct, direct, SaveOptions{false}); !st)
-      return inputError(st.error());
+        direct.data[i] =
+            std::max(0.f, prepared->photo.linearRgb.data[i] - albedo.data[i] * le.gathered.data[i]);
+    if (auto st = saveImage(a.direct, direct, SaveOptions{false}); !st) return inputError(st.error());
   }
   if (!a.gathered.empty())
     if (auto st = saveImage(a.gathered, le.gathered, SaveOptions{false}); !st)

@@ -60,7 +60,8 @@ Autosaver::Autosaver(Document* document, QObject* parent) : QObject(parent), doc
     error_ = tr("%1: cannot take the lock").arg(pathWith(".lock"));
   bool ok = false;
   int ms = qEnvironmentVariable("INLAY_AUTOSAVE_MS").toInt(&ok);
-  if (!ok || ms <= 0) ms = 1000 * std::max(5, QSettings().value(QStringLiteral("autosaveSeconds"), 30).toInt());
+  if (!ok || ms <= 0)
+    ms = 1000 * std::max(5, QSettings().value(QStringLiteral("autosaveSeconds"), 30).toInt());
   timer_.setInterval(ms);
   connect(&timer_, &QTimer::timeout, this, [this] { saveNow(); });
   connect(document_->undoStack(), &QUndoStack::indexChanged, this, [this] { dirty_ = true; });
@@ -86,9 +87,8 @@ bool Autosaver::saveNow() {
     return true;
   }
   if (!dirty_) return true;
-  const Status saved =
-      saveSceneFile(QDir::toNativeSeparators(scenePath()).toStdString(),
-                    withAbsolutePaths(document_->scene()));
+  const Status saved = saveSceneFile(QDir::toNativeSeparators(scenePath()).toStdString(),
+                                     withAbsolutePaths(document_->scene()));
   if (!saved.ok()) {
     error_ = QString::fromStdString(saved.error().message());
     return false;
@@ -97,8 +97,8 @@ bool Autosaver::saveNow() {
   info[QStringLiteral("original")] = document_->filePath();
   info[QStringLiteral("saved")] = QDateTime::currentDateTimeUtc().toString(Qt::ISODate);
   QSaveFile file(infoPath());
-  if (!file.open(QIODevice::WriteOnly) ||
-      file.write(QJsonDocument(info).toJson()) < 0 || !file.commit()) {
+  if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(info).toJson()) < 0 ||
+      !file.commit()) {
     error_ = tr("%1: cannot write (%2)").arg(infoPath(), file.errorString());
     return false;
   }
@@ -128,7 +128,8 @@ std::vector<Autosaver::Recovery> Autosaver::pendingAll() {
     if (!r.saved.isValid()) r.saved = QFileInfo(r.scenePath).lastModified();
     out.push_back(r);
   }
-  std::sort(out.begin(), out.end(), [](const Recovery& a, const Recovery& b) { return a.saved > b.saved; });
+  std::sort(out.begin(), out.end(),
+            [](const Recovery& a, const Recovery& b) { return a.saved > b.saved; });
   return out;
 }
 

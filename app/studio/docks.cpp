@@ -28,7 +28,7 @@
 namespace inlay::studio {
 namespace {
 
-constexpr int kRoleObject = Qt::UserRole + 1;  // object index, or -1
+constexpr int kRoleObject = Qt::UserRole + 1;    // object index, or -1
 constexpr int kRoleMarkKind = Qt::UserRole + 2;  // MarkKind as int
 constexpr int kRoleMarkIndex = Qt::UserRole + 3;
 
@@ -84,11 +84,10 @@ void SceneTreeDock::changeEvent(QEvent* event) {
 void SceneTreeDock::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::SceneReplaced) || event.has(ChangeEvent::PrepareFinished) ||
       event.has(ChangeEvent::ObjectMaterial) || event.has(ChangeEvent::ObjectPlacement) ||
-      event.has(ChangeEvent::ObjectShown) ||
-      event.has(ChangeEvent::ObjectsAddedOrRemoved) || event.has(ChangeEvent::Marks))
+      event.has(ChangeEvent::ObjectShown) || event.has(ChangeEvent::ObjectsAddedOrRemoved) ||
+      event.has(ChangeEvent::Marks))
     rebuild();
-  else if (event.has(ChangeEvent::Selection))
-    syncSelection();
+  else if (event.has(ChangeEvent::Selection)) syncSelection();
 }
 
 void SceneTreeDock::rebuild() {
@@ -112,9 +111,10 @@ void SceneTreeDock::rebuild() {
   auto* lights = new QTreeWidgetItem(tree_, {tr("Lights"), QString::number(doc.lights.size())});
   for (size_t i = 0; i < doc.lights.size(); ++i) {
     const LightKeys& l = doc.lights[i];
-    auto* item = new QTreeWidgetItem(lights, {tr("Light %1").arg(i + 1),
-                                 l.kind == LightKeys::Kind::PolygonPx ? tr("outline on the photo")
-                                                                      : tr("rectangle in 3D")});
+    auto* item = new QTreeWidgetItem(
+        lights,
+        {tr("Light %1").arg(i + 1),
+         l.kind == LightKeys::Kind::PolygonPx ? tr("outline on the photo") : tr("rectangle in 3D")});
     item->setData(0, kRoleMarkKind, int(MarkKind::Light));
     item->setData(0, kRoleMarkIndex, int(i));
   }
@@ -132,14 +132,12 @@ void SceneTreeDock::rebuild() {
            [](size_t) { return tr("sunlit patch and its window"); });
   addMarks(tr("Surfaces"), doc.surfaces.size(), MarkKind::Surface, tr("Surface %1"),
            [&](size_t i) { return QString::fromStdString(doc.surfaces[i].kind); });
-  addMarks(tr("Occluders"), doc.occluders.size(), MarkKind::Occluder, tr("Occluder %1"),
-           [&](size_t i) {
-             return tr("%1 strokes in front, %2 behind")
-                 .arg(doc.occluders[i].foregroundScribblesPx.size())
-                 .arg(doc.occluders[i].backgroundScribblesPx.size());
-           });
-  auto* objects =
-      new QTreeWidgetItem(tree_, {tr("Objects"), QString::number(doc.objects.size())});
+  addMarks(tr("Occluders"), doc.occluders.size(), MarkKind::Occluder, tr("Occluder %1"), [&](size_t i) {
+    return tr("%1 strokes in front, %2 behind")
+        .arg(doc.occluders[i].foregroundScribblesPx.size())
+        .arg(doc.occluders[i].backgroundScribblesPx.size());
+  });
+  auto* objects = new QTreeWidgetItem(tree_, {tr("Objects"), QString::number(doc.objects.size())});
   for (size_t i = 0; i < doc.objects.size(); ++i) {
     const ObjectKeys& o = doc.objects[i];
     const QString details = tr("%1, %2 m").arg(meshName(o)).arg(o.heightM, 0, 'f', 2);
@@ -193,9 +191,8 @@ void LayersDock::changeEvent(QEvent* event) {
 
 void LayersDock::retranslate() {
   setWindowTitle(tr("Layers"));
-  const QString names[kLayerCount] = {tr("Composite"),    tr("Photo"),
-                                      tr("Albedo"),       tr("Direct light"),
-                                      tr("With objects"), tr("Without objects"),
+  const QString names[kLayerCount] = {tr("Composite"),    tr("Photo"),        tr("Albedo"),
+                                      tr("Direct light"), tr("With objects"), tr("Without objects"),
                                       tr("Mask"),         tr("Difference")};
   for (int i = 0; i < kLayerCount; ++i) list_->item(i)->setText(names[i]);
 }
@@ -209,7 +206,8 @@ void SceneTreeDock::syncSelection() {
     if ((*it)->data(0, kRoleObject).isValid() && (*it)->data(0, kRoleObject).toInt() == selected)
       found = *it;
     if (mark && (*it)->data(0, kRoleMarkKind).isValid() &&
-        MarkRef{MarkKind((*it)->data(0, kRoleMarkKind).toInt()), (*it)->data(0, kRoleMarkIndex).toInt()} == *mark)
+        MarkRef{MarkKind((*it)->data(0, kRoleMarkKind).toInt()),
+                (*it)->data(0, kRoleMarkIndex).toInt()} == *mark)
       found = *it;
   }
   tree_->setCurrentItem(found);
@@ -246,8 +244,8 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   yaw_->setKeyboardTracking(false);
 
   preset_ = new QComboBox(panel);
-  for (const char* preset : {"diffuse", "glossy", "mirror", "metal", "glass", "rough_glass",
-                             "emissive", "asset"})
+  for (const char* preset :
+       {"diffuse", "glossy", "mirror", "metal", "glass", "rough_glass", "emissive", "asset"})
     preset_->addItem(QString(), QString::fromLatin1(preset));
   albedo_ = new QPushButton(panel);
 
@@ -273,10 +271,10 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   // Every field with its own label (QFormLayout makes none for an empty text, and retranslate()
   // needs one to set).
   form->addRow(title_);
-  for (QWidget* field : {static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_),
-                         static_cast<QWidget*>(size_), static_cast<QWidget*>(base_),
-                         static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
-                         static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
+  for (QWidget* field :
+       {static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_), static_cast<QWidget*>(size_),
+        static_cast<QWidget*>(base_), static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
+        static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_)})
     form->addRow(new QLabel(panel), field);
   form->addRow(roomTitle_);
   for (QWidget* field : {static_cast<QWidget*>(roomSurface_), static_cast<QWidget*>(roomPreset_),
@@ -286,7 +284,8 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
   form->addRow(new QLabel(panel), newModelHeight_);
   for (int row = 0; row < form->rowCount(); ++row)  // a click on a label focuses its field
     if (auto* l = qobject_cast<QLabel*>(form->itemAt(row, QFormLayout::LabelRole)
-                                            ? form->itemAt(row, QFormLayout::LabelRole)->widget() : nullptr))
+                                            ? form->itemAt(row, QFormLayout::LabelRole)->widget()
+                                            : nullptr))
       if (QLayoutItem* f = form->itemAt(row, QFormLayout::FieldRole)) l->setBuddy(f->widget());
   setWidget(panel);
   retranslate();
@@ -308,7 +307,8 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
     QString reason;
     report(document_->setObjectHidden(document_->selectedObject(), !shown, &reason), reason);
   });
-  connect(newModelHeight_, &QDoubleSpinBox::valueChanged, this, [](double m) { setDefaultModelHeightM(m); });
+  connect(newModelHeight_, &QDoubleSpinBox::valueChanged, this,
+          [](double m) { setDefaultModelHeightM(m); });
   connect(document_, &Document::changed, this, [this] { refresh(); });
   refresh();
 }
@@ -344,8 +344,8 @@ void PropertiesDock::retranslate() {
   label(roomRoughness_, tr("Roughness:"));
   height_->setSuffix(tr(" m"));
   yaw_->setSuffix(tr(" °"));
-  const QString presets[] = {tr("Diffuse"), tr("Glossy"), tr("Mirror"), tr("Metal"),
-                             tr("Glass"), tr("Frosted glass"), tr("Emissive"), tr("From the file")};
+  const QString presets[] = {tr("Diffuse"), tr("Glossy"),        tr("Mirror"),   tr("Metal"),
+                             tr("Glass"),   tr("Frosted glass"), tr("Emissive"), tr("From the file")};
   for (int i = 0; i < preset_->count(); ++i) preset_->setItemText(i, presets[i]);
   albedo_->setToolTip(tr("Reflectance of the object's surface"));
   roomTitle_->setText(tr("<b>Room surface</b>"));
@@ -355,8 +355,9 @@ void PropertiesDock::retranslate() {
   newModelsTitle_->setText(tr("<b>New models</b>"));
   label(newModelHeight_, tr("Height:"));
   newModelHeight_->setSuffix(tr(" m"));
-  newModelHeight_->setToolTip(tr("The height a model gets when its file does not state its unit "
-                                 "(OBJ, PLY, 3DS) or states an absurd size"));
+  newModelHeight_->setToolTip(
+      tr("The height a model gets when its file does not state its unit "
+         "(OBJ, PLY, 3DS) or states an absurd size"));
 }
 
 void PropertiesDock::refreshRoom() {
@@ -366,7 +367,8 @@ void PropertiesDock::refreshRoom() {
     const QSignalBlocker block(roomSurface_);
     roomSurface_->clear();
     for (const std::string& n : names) roomSurface_->addItem(QString::fromStdString(n));
-    roomSurface_->setCurrentIndex(std::max(0, roomSurface_->findText(current.isEmpty() ? QStringLiteral("floor") : current)));
+    roomSurface_->setCurrentIndex(
+        std::max(0, roomSurface_->findText(current.isEmpty() ? QStringLiteral("floor") : current)));
   }
   const bool editable = !names.empty();
   for (QWidget* w : {static_cast<QWidget*>(roomSurface_), static_cast<QWidget*>(roomPreset_),
@@ -402,11 +404,11 @@ void PropertiesDock::refresh() {
   const bool valid = i >= 0 && i < document_->objectCount();
   refreshRoom();
   // Edits are taken while the scene re-prepares too (the document is the truth).
-  const bool editable =
-      valid && (document_->isReady() || document_->state() == Document::State::Preparing);
-  for (QWidget* w : {static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_),
-                     static_cast<QWidget*>(preset_), static_cast<QWidget*>(albedo_),
-                     static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_)})
+  const bool editable = valid &&
+                        (document_->isReady() || document_->state() == Document::State::Preparing);
+  for (QWidget* w :
+       {static_cast<QWidget*>(height_), static_cast<QWidget*>(yaw_), static_cast<QWidget*>(preset_),
+        static_cast<QWidget*>(albedo_), static_cast<QWidget*>(name_), static_cast<QWidget*>(shown_)})
     w->setEnabled(editable);
   const QSignalBlocker b0(name_), b4(shown_);
   if (!valid) {
@@ -434,9 +436,9 @@ void PropertiesDock::refresh() {
   preset_->setCurrentIndex(std::max(0, presetIndex));
   const QColor c = displayColour(o.material.albedo);
   albedo_->setText(c.name());
-  albedo_->setStyleSheet(QStringLiteral("QPushButton { background: %1; color: %2; }")
-                             .arg(c.name(), c.lightnessF() > 0.5 ? QStringLiteral("black")
-                                                                 : QStringLiteral("white")));
+  albedo_->setStyleSheet(
+      QStringLiteral("QPushButton { background: %1; color: %2; }")
+          .arg(c.name(), c.lightnessF() > 0.5 ? QStringLiteral("black") : QStringLiteral("white")));
 }
 
 void PropertiesDock::report(bool ok, const QString& reason) {
@@ -469,8 +471,7 @@ void PropertiesDock::pickAlbedo() {
   const int i = document_->selectedObject();
   if (i < 0 || i >= document_->objectCount()) return;
   MaterialKeys m = document_->scene().objects[size_t(i)].material;
-  const QColor chosen =
-      QColorDialog::getColor(displayColour(m.albedo), this, tr("Object colour"));
+  const QColor chosen = QColorDialog::getColor(displayColour(m.albedo), this, tr("Object colour"));
   if (!chosen.isValid()) return;
   // The dialog speaks sRGB; the scene file stores linear reflectance.
   m.albedo = Vec3(srgbToLinear(float(chosen.redF())), srgbToLinear(float(chosen.greenF())),

@@ -17,15 +17,17 @@ namespace inlay::studio {
 namespace {
 
 bool sameMaterial(const MaterialKeys& a, const MaterialKeys& b) {
-  return a.preset == b.preset && a.albedo == b.albedo && a.roughness == b.roughness &&
-         a.ior == b.ior && a.rgb == b.rgb;
+  return a.preset == b.preset && a.albedo == b.albedo && a.roughness == b.roughness && a.ior == b.ior &&
+         a.rgb == b.rgb;
 }
 
 bool samePlacement(const ObjectKeys& a, const ObjectKeys& b) {
   return a.basePx == b.basePx && a.heightM == b.heightM && a.yawDeg == b.yawDeg;
 }
 
-bool sameShown(const ObjectKeys& a, const ObjectKeys& b) { return a.name == b.name && a.hidden == b.hidden; }
+bool sameShown(const ObjectKeys& a, const ObjectKeys& b) {
+  return a.name == b.name && a.hidden == b.hidden;
+}
 
 bool sameObject(const ObjectKeys& a, const ObjectKeys& b) {
   return samePlacement(a, b) && sameMaterial(a.material, b.material) && sameShown(a, b);
@@ -43,8 +45,7 @@ ChangeEvent objectChange(int index, const ObjectKeys& before, const ObjectKeys& 
 
 // A path as it should be written in a scene file saved in `dir`: relative when the file lies
 // inside that folder, absolute otherwise (a "../../x" path breaks as soon as the scene moves).
-std::string pathForFolder(const std::string& resolved, const std::string& asWritten,
-                          const QDir& dir) {
+std::string pathForFolder(const std::string& resolved, const std::string& asWritten, const QDir& dir) {
   if (resolved.empty()) return asWritten;
   const QString rel = dir.relativeFilePath(QString::fromStdString(resolved));
   if (rel.startsWith(QLatin1String(".."))) return resolved;
@@ -173,7 +174,6 @@ class ObjectListCommand : public QUndoCommand {
   std::shared_ptr<const TriangleMesh> mesh_;
 };
 
-
 Document::Document(QObject* parent) : QObject(parent) {
   thread_.setObjectName(QStringLiteral("inlay-prepare"));
   worker_ = new PrepareWorker;
@@ -232,8 +232,7 @@ bool Document::openSceneFile(const QString& path, QString* error) {
 
 bool Document::restoreRecovery(const QString& recoveryPath, const QString& originalPath,
                                QString* error) {
-  Expected<SceneLoadResult> loaded =
-      loadSceneFile(QDir::toNativeSeparators(recoveryPath).toStdString());
+  Expected<SceneLoadResult> loaded = loadSceneFile(QDir::toNativeSeparators(recoveryPath).toStdString());
   if (!loaded.ok()) {
     if (error) *error = QString::fromStdString(loaded.error().message());
     return false;
@@ -467,7 +466,8 @@ std::optional<Document::WallSnap> Document::wallSnap(int index, const Vec2& base
     if (!px || px->x() < 0 || px->y() < 0 || px->x() >= cam.widthPx || px->y() >= cam.heightPx) continue;
     // Still on the same support (a table top it would slide off does not snap).
     const auto there = geometry.intersect(cam.rayThroughPixel(*px), /*supportsOnly=*/true);
-    if (!there || there->normalWorld.y() < 0.5 || std::abs(there->pointWorld.y() - base.y()) > 0.01) continue;
+    if (!there || there->normalWorld.y() < 0.5 || std::abs(there->pointWorld.y() - base.y()) > 0.01)
+      continue;
     bestGap = gap;
     best = WallSnap{*px, std::atan2(normal.x(), normal.z()) * 180.0 / std::numbers::pi, kind};
   }
@@ -486,15 +486,16 @@ std::optional<Vec2> Document::freeStandingPointPx() const {
   const Camera& cam = prepared_->camera;
   for (double f = 0.92; f > 0.3; f -= 0.04) {
     const Vec2 px(0.5 * cam.widthPx, f * cam.heightPx);
-    if (prepared_->geometry.intersect(cam.rayThroughPixel(px), /*supportsOnly=*/true))
-      return px;
+    if (prepared_->geometry.intersect(cam.rayThroughPixel(px), /*supportsOnly=*/true)) return px;
   }
   return std::nullopt;
 }
 
 QString Document::whyObjectsCannotChange(int index, bool whilePreparing) const {
-  if (index != -1 && (index < 0 || index >= objectCount())) return tr("There is no object %1.").arg(index + 1);
-  if (state_ == State::Preparing) return whilePreparing ? QString() : tr("The scene is still being prepared.");
+  if (index != -1 && (index < 0 || index >= objectCount()))
+    return tr("There is no object %1.").arg(index + 1);
+  if (state_ == State::Preparing)
+    return whilePreparing ? QString() : tr("The scene is still being prepared.");
   if (state_ != State::Ready || !prepared_) return tr("The scene could not be prepared.");
   return {};
 }
@@ -529,7 +530,8 @@ bool Document::insertObject(const ObjectKeys& keys, std::shared_ptr<const Triang
                                                  keys.basePx, keys.heightM, keys.yawDeg, key);
   if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
   const int index = objectCount();
-  const QString name = keys.name.empty() ? tr("object %1").arg(index + 1) : QString::fromStdString(keys.name);
+  const QString name = keys.name.empty() ? tr("object %1").arg(index + 1)
+                                         : QString::fromStdString(keys.name);
   undo_.push(new ObjectListCommand(this, true, index, keys, std::move(mesh), tr("Insert %1").arg(name)));
   return true;
 }
@@ -543,11 +545,12 @@ bool Document::duplicateObject(int index, QString* reason) {
   ObjectKeys copy = doc_.objects[size_t(index)];
   copy.name = uniqueName(objectName(index)).toStdString();
   copy.hidden = false;
-  const std::shared_ptr<const TriangleMesh> mesh = prepared_->renderScene.objects[size_t(index)].meshObject;
+  const std::shared_ptr<const TriangleMesh> mesh =
+      prepared_->renderScene.objects[size_t(index)].meshObject;
   copy.basePx = spotBeside(index).value_or(copy.basePx);
   const int at = objectCount();
-  undo_.push(new ObjectListCommand(this, true, at, copy, mesh,
-                                   tr("Duplicate %1").arg(objectName(index))));
+  undo_.push(
+      new ObjectListCommand(this, true, at, copy, mesh, tr("Duplicate %1").arg(objectName(index))));
   return true;
 }
 
@@ -725,8 +728,7 @@ void Document::applyObject(int index, const ObjectKeys& keys) {
     if (size_t(index) < prepared_->renderScene.objects.size())
       prepared_->renderScene.objects[size_t(index)].worldFromObject = placed->worldFromObject;
   }
-  if (event.has(ChangeEvent::ObjectMaterial) &&
-      size_t(index) < prepared_->renderScene.objects.size()) {
+  if (event.has(ChangeEvent::ObjectMaterial) && size_t(index) < prepared_->renderScene.objects.size()) {
     InsertedObject& o = prepared_->renderScene.objects[size_t(index)];
     setObjectMaterial(o, keys.material);
   }
@@ -748,8 +750,7 @@ std::optional<std::array<Vec2, 4>> Document::shownBackWallPx() const {
   return estimatedBackWallPx_;
 }
 
-bool Document::editMarks(const SceneMarks& after, int mergeId, const QString& text,
-                         QString* reason) {
+bool Document::editMarks(const SceneMarks& after, int mergeId, const QString& text, QString* reason) {
   if (doc_.photo.empty()) {
     if (reason) *reason = tr("Open a photo first.");
     return false;
@@ -846,9 +847,8 @@ bool Document::addExtrusion(const std::vector<Vec2>& outlinePx, const Vec2& heig
 
 bool Document::addOccluder(const OccluderKeys& occluder, QString* reason) {
   auto usable = [](const std::vector<std::vector<Vec2>>& strokes) {
-    return !strokes.empty() && std::all_of(strokes.begin(), strokes.end(), [](const auto& s) {
-      return !s.empty() && finitePoints(s);
-    });
+    return !strokes.empty() && std::all_of(strokes.begin(), strokes.end(),
+                                           [](const auto& s) { return !s.empty() && finitePoints(s); });
   };
   if (!usable(occluder.foregroundScribblesPx) || !usable(occluder.backgroundScribblesPx)) {
     if (reason)
@@ -862,8 +862,7 @@ bool Document::addOccluder(const OccluderKeys& occluder, QString* reason) {
 
 bool Document::addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
                                  QString* reason) {
-  if (index < 0 || index >= int(doc_.occluders.size()) || strokePx.empty() ||
-      !finitePoints(strokePx)) {
+  if (index < 0 || index >= int(doc_.occluders.size()) || strokePx.empty() || !finitePoints(strokePx)) {
     if (reason) *reason = tr("There is no such occluder, or the stroke is empty.");
     return false;
   }
@@ -918,8 +917,8 @@ std::array<Vec2, 4> boxCorners(const std::array<double, 4>& b) {
 // Moves corner `c` of a box; the opposite corner stays. The result is normalised (x0 <= x1).
 std::array<double, 4> boxWithCorner(const std::array<double, 4>& b, int c, const Vec2& px) {
   const Vec2 opposite = boxCorners(b)[size_t((c + 2) % 4)];
-  return {std::min(px.x(), opposite.x()), std::min(px.y(), opposite.y()),
-          std::max(px.x(), opposite.x()), std::max(px.y(), opposite.y())};
+  return {std::min(px.x(), opposite.x()), std::min(px.y(), opposite.y()), std::max(px.x(), opposite.x()),
+          std::max(px.y(), opposite.y())};
 }
 
 // The occluder's points in MarkPoint order, as pointers into `o`.
@@ -988,7 +987,8 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
       auto& box = point < 4 ? m.shafts[i].shaftBoxPx : m.shafts[i].sourceBoxPx;
       if (!box) return fail(noPoint);
       box = boxWithCorner(*box, point % 4, px);
-      if (!validBox(*box)) return fail(tr("Each box of a shaft must be at least two pixels wide and high."));
+      if (!validBox(*box))
+        return fail(tr("Each box of a shaft must be at least two pixels wide and high."));
       text = tr("Reshape shaft %1").arg(mark.index + 1);
       break;
     }
@@ -1029,7 +1029,9 @@ bool Document::setVanishingLines(int axis, const std::optional<std::array<Vec2, 
     if ((q[1] - q[0]).norm() < 2 || (q[3] - q[2]).norm() < 2)
       return fail(tr("Each line must be at least two pixels long."));
     const Vec2 d = (q[1] - q[0]).normalized();
-    auto offLine = [&](const Vec2& r) { return std::abs(d.x() * (r - q[0]).y() - d.y() * (r - q[0]).x()); };
+    auto offLine = [&](const Vec2& r) {
+      return std::abs(d.x() * (r - q[0]).y() - d.y() * (r - q[0]).x());
+    };
     if (offLine(q[2]) < 1 && offLine(q[3]) < 1)
       return fail(tr("The two lines lie on one line: draw two different edges."));
   }
@@ -1056,17 +1058,15 @@ bool Document::setRoomMaterial(const std::string& surface,
   const std::vector<std::string> names = roomSurfaceNames();
   if (std::find(names.begin(), names.end(), surface) == names.end())
     return fail(tr("The room has no surface %1.").arg(QString::fromStdString(surface)));
-  if (material && (material->preset != "glossy" && material->preset != "mirror" &&
-                   material->preset != "diffuse"))
+  if (material &&
+      (material->preset != "glossy" && material->preset != "mirror" && material->preset != "diffuse"))
     return fail(tr("Unknown material."));
-  if (material && (!(material->roughness >= 0 && material->roughness <= 1) ||
-                   !material->reflectance.allFinite()))
+  if (material &&
+      (!(material->roughness >= 0 && material->roughness <= 1) || !material->reflectance.allFinite()))
     return fail(tr("The roughness must lie between 0 and 1."));
   SceneMarks m = marks();
-  if (material)
-    m.room.materials[surface] = *material;
-  else
-    m.room.materials.erase(surface);
+  if (material) m.room.materials[surface] = *material;
+  else m.room.materials.erase(surface);
   return editMarks(m, 0, tr("Change the material of %1").arg(QString::fromStdString(surface)), reason);
 }
 

@@ -35,16 +35,16 @@ struct PrepareResult;
 // and repaints everything from the document's state.
 struct ChangeEvent {
   enum Kind {
-    SceneReplaced = 1u << 0,    // a new SceneDoc (open / new from photo); nothing prepared yet
+    SceneReplaced = 1u << 0,  // a new SceneDoc (open / new from photo); nothing prepared yet
     PrepareStarted = 1u << 1,
     PrepareFinished = 1u << 2,  // state() is Ready or Failed (or Empty after a cancel)
     ObjectPlacement = 1u << 3,  // base_px / height_m / yaw_deg of objectIndex
     ObjectMaterial = 1u << 4,   // material of objectIndex
     Selection = 1u << 5,
-    FilePath = 1u << 6,         // filePath() changed (open, save as)
+    FilePath = 1u << 6,               // filePath() changed (open, save as)
     ObjectsAddedOrRemoved = 1u << 7,  // objects inserted or deleted; indices may have shifted
-    Marks = 1u << 8,            // the scene's marks changed (SceneMarks); preparation restarted
-    ObjectShown = 1u << 9,      // name or hidden of objectIndex
+    Marks = 1u << 8,                  // the scene's marks changed (SceneMarks); preparation restarted
+    ObjectShown = 1u << 9,            // name or hidden of objectIndex
   };
   unsigned what = 0;
   int objectIndex = -1;  // for ObjectPlacement / ObjectMaterial
@@ -206,8 +206,7 @@ class Document : public QObject {
   std::vector<MarkPoint> markPoints() const;
   // Moves one point of a mark (MarkPoint numbering). A drag passes one dragId: one undo step.
   // Refused when the mark would lose its area (a light or a surface) or a box its size.
-  bool moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId = 0,
-                     QString* reason = nullptr);
+  bool moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId = 0, QString* reason = nullptr);
   // Two segments {a0, b0, a1, b1} the user drew along world axis `axis` (0 x, 1 y, 2 z): the
   // camera is re-estimated with that vanishing point fixed (camera.vanishing_lines_px). nullopt
   // forgets them. Refused for degenerate segments or two segments on one line. Drawing lines
@@ -253,8 +252,7 @@ class Document : public QObject {
   // document's, so preparation restarts with them.
   void changeObjectsUnprepared(std::vector<ObjectKeys> objects, int selected);
   // Validates `keys` for object `index` and pushes the command (see the edit functions).
-  bool editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text,
-                  QString* reason);
+  bool editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text, QString* reason);
   // Applies object keys already known to be valid (from an undo command).
   void applyObject(int index, const ObjectKeys& keys);
   // Insert / remove one object everywhere it is mirrored (from an undo command).
@@ -275,7 +273,7 @@ class Document : public QObject {
   State state_ = State::Empty;
   std::unique_ptr<PreparedScene> prepared_;
   QString prepareError_;
-  QStringList warnings_;      // of the file (loadWarnings_) and of the newest preparation
+  QStringList warnings_;  // of the file (loadWarnings_) and of the newest preparation
   QStringList loadWarnings_;
   QUndoStack undo_;
   int selected_ = -1;
@@ -289,7 +287,6 @@ class Document : public QObject {
   quint64 jobId_ = 0;
   std::shared_ptr<CancelToken> cancel_;
 };
-
 
 }  // namespace inlay::studio
 

@@ -47,7 +47,9 @@ SessionOptions FinalRender::optionsFor(const PreparedScene& scene, int maxSpp) {
 }
 
 FinalRender::FinalRender(const PreparedScene& scene, const QString& path, int maxSpp, QObject* parent)
-    : QObject(parent), path_(path), context_(CompositeSink::compositeContextOf(scene)),
+    : QObject(parent),
+      path_(path),
+      context_(CompositeSink::compositeContextOf(scene)),
       options_(optionsFor(scene, maxSpp)) {
   qRegisterMetaType<inlay::studio::FinalRender::Progress>();
   progress_.noiseTarget = options_.noiseTarget;
@@ -112,14 +114,16 @@ void FinalRender::startSaving(std::shared_ptr<const RenderFrame> frame) {
     if (!result->status.ok())
       return finish(false, QString::fromStdString(result->status.error().message()));
     composite_ = result->image;
-    finish(true, tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s")
-                     .arg(QDir::toNativeSeparators(path_))
-                     .arg(frame->width)
-                     .arg(frame->height)
-                     .arg(frame->spp)
-                     .arg(frame->meanSpp, 0, 'f', 1)
-                     .arg(frame->estimatedError, 0, 'f', 4)
-                     .arg(frame->seconds, 0, 'f', 1));
+    finish(
+        true,
+        tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s")
+            .arg(QDir::toNativeSeparators(path_))
+            .arg(frame->width)
+            .arg(frame->height)
+            .arg(frame->spp)
+            .arg(frame->meanSpp, 0, 'f', 1)
+            .arg(frame->estimatedError, 0, 'f', 4)
+            .arg(frame->seconds, 0, 'f', 1));
   });
   saver_->start();
 }

@@ -36,7 +36,8 @@ class FinalRender : public QObject {
 
   // Starts rendering `scene` (copied: later edits do not reach it) for `path`; `maxSpp` > 0
   // caps the samples per pixel below render.spp (tests, quick drafts).
-  FinalRender(const PreparedScene& scene, const QString& path, int maxSpp = 0, QObject* parent = nullptr);
+  FinalRender(const PreparedScene& scene, const QString& path, int maxSpp = 0,
+              QObject* parent = nullptr);
   ~FinalRender() override;
 
   QString path() const { return path_; }

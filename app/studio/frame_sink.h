@@ -29,9 +29,9 @@ struct CompositeImage {
   double seconds = 0;
   double estimatedError = 0;
   bool final = false;
-  QImage srgb8;                                // the composite, 8-bit (the photo's response)
-  std::shared_ptr<const ImageF> linear;        // the composite, linear (for export)
-  std::shared_ptr<const RenderFrame> frame;     // the renderer's frame (the layers' source)
+  QImage srgb8;                              // the composite, 8-bit (the photo's response)
+  std::shared_ptr<const ImageF> linear;      // the composite, linear (for export)
+  std::shared_ptr<const RenderFrame> frame;  // the renderer's frame (the layers' source)
 };
 
 class CompositeSink : public FrameSink {

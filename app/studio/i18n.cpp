@@ -25,9 +25,7 @@ std::unique_ptr<QTranslator>& ownTranslator() {
 
 // The installed catalogues (share/inlay/translations beside bin/): a language compiled into the
 // program is taken from the program; one added later (a new .qm dropped there) from this folder.
-QString installedTranslationsDir() {
-  return QString::fromStdString(findDataDir("translations"));
-}
+QString installedTranslationsDir() { return QString::fromStdString(findDataDir("translations")); }
 
 }  // namespace
 
@@ -55,8 +53,7 @@ bool installTranslators(const QString& language) {
   if (lang.isEmpty() || lang == QLatin1String("en") || lang == QLatin1String("C")) return false;
 
   auto qt = std::make_unique<QTranslator>();
-  if (qt->load(QStringLiteral("qtbase_") + lang,
-               QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+  if (qt->load(QStringLiteral("qtbase_") + lang, QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
     QCoreApplication::installTranslator(qt.get());
     qtTranslator() = std::move(qt);
   }

@@ -17,7 +17,8 @@ QImage encodedImage(const ImageF& linearRgb, double exposureStops, Code code) {
     auto* row = reinterpret_cast<QRgb*>(out.scanLine(y));
     for (int x = 0; x < linearRgb.width; ++x) {
       const float* p = linearRgb.pixel(x, y);
-      row[x] = qRgb(code(p[0] * gain), code((c >= 3 ? p[1] : p[0]) * gain), code((c >= 3 ? p[2] : p[0]) * gain));
+      row[x] = qRgb(code(p[0] * gain), code((c >= 3 ? p[1] : p[0]) * gain),
+                    code((c >= 3 ? p[2] : p[0]) * gain));
     }
   }
   return out;
@@ -29,9 +30,11 @@ QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops) {
   return encodedImage(linearRgb, exposureStops, [](float v) { return srgbCode8(v); });
 }
 
-QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response, double exposureStops) {
+QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response,
+                          double exposureStops) {
   if (response.family() != ResponseFamily::ToeShoulder) return srgb8FromLinear(linearRgb, exposureStops);
-  return encodedImage(linearRgb, exposureStops, [&response](float v) { return response.encodeCode8(v); });
+  return encodedImage(linearRgb, exposureStops,
+                      [&response](float v) { return response.encodeCode8(v); });
 }
 
 ImageF linearFromSrgb8(const QImage& image) {

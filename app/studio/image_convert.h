@@ -14,7 +14,8 @@ namespace inlay::studio {
 QImage srgb8FromLinear(const ImageF& linearRgb, double exposureStops = 0.0);
 // The same encoded with the photo's camera response (so the photo shows its own codes);
 // sRGB for a linear response (an EXR/HDR photo is shown as sRGB).
-QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response, double exposureStops = 0.0);
+QImage encoded8FromLinear(const ImageF& linearRgb, const CameraResponse& response,
+                          double exposureStops = 0.0);
 // The inverse of srgb8FromLinear at exposure 0: W x H x 3 linear values whose sRGB codes are the
 // image's own (so image_io writes the shown image back code for code).
 ImageF linearFromSrgb8(const QImage& image);

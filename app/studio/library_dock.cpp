@@ -40,7 +40,8 @@ QStringList LibraryList::mimeTypes() const { return {QStringLiteral("text/uri-li
 
 QMimeData* LibraryList::mimeData(const QList<QListWidgetItem*>& items) const {
   QList<QUrl> urls;
-  for (const QListWidgetItem* item : items) urls.push_back(QUrl::fromLocalFile(item->data(kRoleFile).toString()));
+  for (const QListWidgetItem* item : items)
+    urls.push_back(QUrl::fromLocalFile(item->data(kRoleFile).toString()));
   if (urls.isEmpty()) return nullptr;
   auto* mime = new QMimeData;
   mime->setUrls(urls);  // text/uri-list
@@ -48,7 +49,10 @@ QMimeData* LibraryList::mimeData(const QList<QListWidgetItem*>& items) const {
 }
 
 LibraryDock::LibraryDock(QWidget* parent, const QString& modelsDir)
-    : QDockWidget(parent), modelsDir_(modelsDir), list_(new LibraryList(this)), message_(new QLabel(this)) {
+    : QDockWidget(parent),
+      modelsDir_(modelsDir),
+      list_(new LibraryList(this)),
+      message_(new QLabel(this)) {
   setObjectName(QStringLiteral("libraryDock"));
   list_->setViewMode(QListView::IconMode);
   list_->setIconSize(QSize(96, 96));
@@ -80,7 +84,8 @@ QString LibraryDock::translatedTitle(const QString& englishTitle) {
 void LibraryDock::load() {
   const std::string dir = modelsDir_.isEmpty() ? modelLibraryDir() : modelsDir_.toStdString();
   if (dir.empty()) {
-    problem_ = QStringLiteral("no library.json in $INLAY_MODELS_DIR, <prefix>/share/inlay/models or resources/models");
+    problem_ = QStringLiteral(
+        "no library.json in $INLAY_MODELS_DIR, <prefix>/share/inlay/models or resources/models");
     return;
   }
   auto pieces = loadModelLibrary(dir);
@@ -89,7 +94,8 @@ void LibraryDock::load() {
     return;
   }
   for (const LibraryPiece& p : *pieces) {
-    auto* item = new QListWidgetItem(QIcon(QPixmap(QString::fromStdString(p.thumbnail))), QString(), list_);
+    auto* item =
+        new QListWidgetItem(QIcon(QPixmap(QString::fromStdString(p.thumbnail))), QString(), list_);
     item->setData(kRoleFile, QString::fromStdString(p.file));
     item->setData(kRoleTitle, QString::fromStdString(p.title));
     item->setData(kRoleSize, QVariantList{p.sizeM.x(), p.sizeM.y(), p.sizeM.z()});

@@ -48,7 +48,7 @@ class LibraryDock : public QDockWidget {
   void retranslate();
 
   QString modelsDir_;
-  QString problem_;     // why the library could not be shown (untranslated detail)
+  QString problem_;  // why the library could not be shown (untranslated detail)
   LibraryList* list_;
   QLabel* message_;
 };

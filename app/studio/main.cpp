@@ -102,7 +102,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   bool secondsOk = true;
-  const double waitSeconds = parser.isSet(waitSecondsOpt) ? parser.value(waitSecondsOpt).toDouble(&secondsOk) : -1.0;
+  const double waitSeconds =
+      parser.isSet(waitSecondsOpt) ? parser.value(waitSecondsOpt).toDouble(&secondsOk) : -1.0;
   if (!secondsOk || (parser.isSet(waitSecondsOpt) && !(waitSeconds >= 0))) {
     std::fprintf(stderr, "inlay: --wait-seconds: %s\n",
                  qUtf8Printable(QCoreApplication::translate("main", "expected a number >= 0")));
@@ -116,10 +117,8 @@ int main(int argc, char** argv) {
   window.show();
   bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
   // Work a crash left behind replaces what was opened (after asking, unless --recover).
-  if (parser.isSet(recoverOpt))
-    opened = window.restoreRecovery() || opened;
-  else if (!screenshot)
-    window.offerRecovery();
+  if (parser.isSet(recoverOpt)) opened = window.restoreRecovery() || opened;
+  else if (!screenshot) window.offerRecovery();
   if (opened)
     for (const QString& model : parser.values(insertModelOpt))
       opened = window.insertModelFile(QDir::current().absoluteFilePath(model)) && opened;
@@ -132,7 +131,8 @@ int main(int argc, char** argv) {
     return rc ? rc : 2;
   }
   // A loaded machine (or a sanitizer build) waits longer: INLAY_TEST_WAIT_SCALE, as the tests.
-  const double waitScale = std::max(1.0, qEnvironmentVariable("INLAY_TEST_WAIT_SCALE", QStringLiteral("1")).toDouble());
+  const double waitScale =
+      std::max(1.0, qEnvironmentVariable("INLAY_TEST_WAIT_SCALE", QStringLiteral("1")).toDouble());
   int exitCode = -1;
   QElapsedTimer clock;
   clock.start();
@@ -152,13 +152,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(window.document()->prepareError()));
       done = true;
       rc = 2;
-    } else if (renderer->isCurrent() &&
-               ((waitSeconds >= 0 ? renderer->frameInfo().seconds >= waitSeconds : renderer->frameInfo().spp >= waitSpp) ||
-                renderer->frameInfo().final)) {
+    } else if (renderer->isCurrent() && ((waitSeconds >= 0 ? renderer->frameInfo().seconds >= waitSeconds
+                                                           : renderer->frameInfo().spp >= waitSpp) ||
+                                         renderer->frameInfo().final)) {
       done = true;
       if (waitSeconds >= 0)
-        std::fprintf(stderr, "inlay: screenshot of the frame at %.2f s, %d spp\n", renderer->frameInfo().seconds,
-                     renderer->frameInfo().spp);
+        std::fprintf(stderr, "inlay: screenshot of the frame at %.2f s, %d spp\n",
+                     renderer->frameInfo().seconds, renderer->frameInfo().spp);
     } else if (clock.elapsed() > 60'000 * waitScale) {
       std::fprintf(stderr, "inlay: the render did not reach %d spp within %.0f s; grabbing anyway\n",
                    waitSpp, 60.0 * waitScale);

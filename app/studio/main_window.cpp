@@ -144,10 +144,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(renderer_, &RenderController::frameUpdated, this, &MainWindow::onFrame);
   connect(viewport_, &Viewport::statusMessage, this, [this](const QString& m) {
-    if (m.isEmpty())
-      statusBar()->clearMessage();
-    else
-      statusBar()->showMessage(m, 5000);
+    if (m.isEmpty()) statusBar()->clearMessage();
+    else statusBar()->showMessage(m, 5000);
   });
   connect(viewport_, &Viewport::modelDropped, this, [this](const QString& path, QPointF imagePx) {
     insertModelFile(path, Vec2(imagePx.x(), imagePx.y()));
@@ -379,10 +377,10 @@ void MainWindow::createMenus() {
   QMenu* language = languageMenu_;
   auto* group = new QActionGroup(language);
   const QString current = QSettings().value(QStringLiteral("language")).toString();
-  const std::pair<QString, QString> languages[] = {
-      {QString(), QString()}, {QStringLiteral("en"), QStringLiteral("English")},
-      {QStringLiteral("de"), QStringLiteral("Deutsch")},
-      {QStringLiteral("fr"), QStringLiteral("Français")}};
+  const std::pair<QString, QString> languages[] = {{QString(), QString()},
+                                                   {QStringLiteral("en"), QStringLiteral("English")},
+                                                   {QStringLiteral("de"), QStringLiteral("Deutsch")},
+                                                   {QStringLiteral("fr"), QStringLiteral("Français")}};
   for (const auto& [code, name] : languages) {
     QAction* a = language->addAction(name);
     if (code.isEmpty()) systemLanguageAct_ = a;
@@ -434,17 +432,20 @@ void MainWindow::retranslate() {
   exportLayerAct_->setText(tr("Export Shown &Layer…"));
   exportGltfAct_->setText(tr("Export Scene as &glTF…"));
   renderFinalAct_->setText(tr("&Render Final Image…"));
-  renderFinalAct_->setStatusTip(tr("Render the composite at the photo's full resolution until it is clean, "
-                                   "then save it (PNG, JPEG, TIFF or EXR)"));
+  renderFinalAct_->setStatusTip(
+      tr("Render the composite at the photo's full resolution until it is clean, "
+         "then save it (PNG, JPEG, TIFF or EXR)"));
   splitAct_->setText(tr("Before/After &Split"));
-  splitAct_->setStatusTip(tr("The photo left of a divider, the composite right of it; drag the divider"));
+  splitAct_->setStatusTip(
+      tr("The photo left of a divider, the composite right of it; drag the divider"));
   quitAct_->setText(tr("&Quit"));
   insertSphereAct_->setText(tr("Insert &Sphere"));
   insertCubeAct_->setText(tr("Insert &Cube"));
   deleteAct_->setText(tr("&Delete"));
   insertModelAct_->setText(tr("Insert &Model…"));
-  insertModelAct_->setStatusTip(tr("Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; "
-                                   "or drop the file where it should stand"));
+  insertModelAct_->setStatusTip(
+      tr("Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; "
+         "or drop the file where it should stand"));
   duplicateAct_->setText(tr("D&uplicate"));
   duplicateAct_->setStatusTip(tr("Stand a copy of the selected object beside it"));
   renameAct_->setText(tr("Re&name…"));
@@ -460,13 +461,16 @@ void MainWindow::retranslate() {
   prepareAct_->setText(tr("&Prepare the Scene Again"));
   vanishingAct_->setText(tr("&Vanishing Lines and Confidence"));
   denoiseAct_->setText(tr("&Denoise Preview"));
-  denoiseAct_->setStatusTip(tr("Smooth the render's noise where the objects change the photo (the rest stays the photo)"));
+  denoiseAct_->setStatusTip(
+      tr("Smooth the render's noise where the objects change the photo (the rest stays the photo)"));
   aboutAct_->setText(tr("&About Inlay"));
   openSceneAct_->setStatusTip(tr("Open a scene file (.json)"));
   openPhotoAct_->setStatusTip(tr("Start a new scene from a photo"));
   exportAct_->setStatusTip(tr("Write the current composite as PNG, JPEG, TIFF or EXR"));
-  exportLayerAct_->setStatusTip(tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
-  exportGltfAct_->setStatusTip(tr("Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender"));
+  exportLayerAct_->setStatusTip(
+      tr("Write the layer the viewport shows (albedo, mask, …) as an 8-bit image"));
+  exportGltfAct_->setStatusTip(
+      tr("Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender"));
   insertSphereAct_->setStatusTip(tr("Stand a sphere on the floor in the middle of the photo"));
   insertCubeAct_->setStatusTip(tr("Stand a cube on the floor in the middle of the photo"));
   deleteAct_->setStatusTip(tr("Delete the selected object or mark"));
@@ -479,9 +483,9 @@ void MainWindow::retranslate() {
   errorLabel_->setToolTip(tr("Estimated error (RMSE in sRGB) where the objects change the photo"));
   timeLabel_->setToolTip(tr("Render time since the last change"));
   zoomLabel_->setToolTip(tr("Zoom"));
-  const QString toolNames[] = {tr("&Select and Move"), tr("Outline a &Light"), tr("Sun &Shaft"),
-                               tr("&Table Top or Step"), tr("&Occluder Strokes"),
-                               tr("&Vanishing Lines (X, Y, Z)")};
+  const QString toolNames[] = {tr("&Select and Move"),  tr("Outline a &Light"),
+                               tr("Sun &Shaft"),        tr("&Table Top or Step"),
+                               tr("&Occluder Strokes"), tr("&Vanishing Lines (X, Y, Z)")};
   for (int i = 0; i < toolActs_.size(); ++i) toolActs_[i]->setText(toolNames[i]);
   fileMenu_->setTitle(tr("&File"));
   recentMenu_->setTitle(tr("Open &Recent"));
@@ -536,24 +540,21 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     switch (document_->state()) {
       case Document::State::Failed:
         // After an open: a dialog. After an edit of the marks: the viewport's banner says it.
-        if (reportFailure_)
-          showError(tr("The scene could not be prepared"), document_->prepareError());
-        else
-          statusBar()->showMessage(document_->prepareError(), 10000);
+        if (reportFailure_) showError(tr("The scene could not be prepared"), document_->prepareError());
+        else statusBar()->showMessage(document_->prepareError(), 10000);
         break;
       case Document::State::Ready:
         if (!document_->warnings().isEmpty()) {
           // The first note in the bar, all of them in its tooltip.
           const QStringList& w = document_->warnings();
           statusBar()->showMessage(
-              w.size() == 1 ? w.first() : tr("%1 (and %n more)", nullptr, int(w.size() - 1)).arg(w.first()),
+              w.size() == 1 ? w.first()
+                            : tr("%1 (and %n more)", nullptr, int(w.size() - 1)).arg(w.first()),
               10000);
           statusBar()->setToolTip(w.join(QLatin1Char('\n')));
         }
         break;
-      default:
-        statusBar()->showMessage(document_->prepareError(), 5000);
-        break;
+      default: statusBar()->showMessage(document_->prepareError(), 5000); break;
     }
   }
   const bool ready = document_->isReady();
@@ -566,7 +567,8 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   insertModelAct_->setEnabled(!document_->scene().photo.empty());
   const int selected = document_->selectedObject();
   duplicateAct_->setEnabled(ready && selected >= 0);
-  const bool objectEditable = selected >= 0 && (ready || document_->state() == Document::State::Preparing);
+  const bool objectEditable = selected >= 0 &&
+                              (ready || document_->state() == Document::State::Preparing);
   renameAct_->setEnabled(objectEditable);
   hideAct_->setEnabled(objectEditable);
   if (event.has(ChangeEvent::PrepareFinished) && !waitingModels_.empty()) {
@@ -600,12 +602,14 @@ void MainWindow::onFrame() {
   }
   const CompositeImage& f = renderer_->frameInfo();
   sppLabel_->setText(f.resolutionDivider > 1 ? tr("preview 1/%1").arg(f.resolutionDivider)
-                     : f.final                ? tr("%1 spp, done").arg(f.spp)
-                                              : tr("%1 spp").arg(f.spp));
+                     : f.final               ? tr("%1 spp, done").arg(f.spp)
+                                             : tr("%1 spp").arg(f.spp));
   errorLabel_->setText(tr("error %1").arg(f.estimatedError, 0, 'f', 4));
-  const double pixels = double(renderer_->compositeImage().width()) * renderer_->compositeImage().height();
-  rateLabel_->setText(f.seconds > 0 ? tr("%1 M samples/s").arg(f.spp * pixels / f.seconds * 1e-6, 0, 'f', 2)
-                                    : tr("– samples/s"));
+  const double pixels = double(renderer_->compositeImage().width()) *
+                        renderer_->compositeImage().height();
+  rateLabel_->setText(f.seconds > 0
+                          ? tr("%1 M samples/s").arg(f.spp * pixels / f.seconds * 1e-6, 0, 'f', 2)
+                          : tr("– samples/s"));
   timeLabel_->setText(tr("%1 s").arg(f.seconds, 0, 'f', 1));
   exportAct_->setEnabled(true);
 }
@@ -613,13 +617,11 @@ void MainWindow::onFrame() {
 void MainWindow::updateTitle() {
   const QString path = document_->filePath();
   QString name;
-  if (!path.isEmpty())
-    name = QFileInfo(path).fileName();
+  if (!path.isEmpty()) name = QFileInfo(path).fileName();
   else if (!document_->scene().photo.empty())
-    name = tr("%1 (new scene)").arg(
-        QFileInfo(QString::fromStdString(document_->scene().photo)).fileName());
-  else
-    name = tr("Untitled");
+    name =
+        tr("%1 (new scene)").arg(QFileInfo(QString::fromStdString(document_->scene().photo)).fileName());
+  else name = tr("Untitled");
   setWindowTitle(tr("%1[*] — Inlay").arg(name));
   setWindowModified(!document_->undoStack()->isClean());
 }
@@ -719,8 +721,8 @@ bool MainWindow::saveAsDialog() {
     const QFileInfo photo(QString::fromStdString(document_->scene().photoResolved));
     suggestion = photo.absoluteDir().filePath(photo.completeBaseName() + QStringLiteral(".json"));
   }
-  QString path = QFileDialog::getSaveFileName(this, tr("Save Scene As"), suggestion,
-                                              tr("Inlay scenes (*.json)"));
+  QString path =
+      QFileDialog::getSaveFileName(this, tr("Save Scene As"), suggestion, tr("Inlay scenes (*.json)"));
   if (path.isEmpty()) return false;
   if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
   return saveTo(path);
@@ -734,12 +736,12 @@ void MainWindow::exportCompositeDialog() {
   QString selected;
   const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
                 tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
-  QString path = QFileDialog::getSaveFileName(this, tr("Export Composite"), QString(),
-                                              QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")),
-                                              &selected);
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Export Composite"), QString(),
+      QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty())
-    path += selected == jpeg ? QStringLiteral(".jpg")
+    path += selected == jpeg   ? QStringLiteral(".jpg")
             : selected == tiff ? QStringLiteral(".tif")
             : selected == exr  ? QStringLiteral(".exr")
                                : QStringLiteral(".png");
@@ -763,17 +765,17 @@ bool MainWindow::exportComposite(const QString& path) {
   const QSize preview = renderer_->previewSize();
   if (prepared && preview.width() < prepared->camera.widthPx)
     // A big photo's preview is smaller than the photo: say so, and where the full size is.
-    statusBar()->showMessage(tr("Exported %1 (%2 spp, the preview's %3 × %4; Render Final Image writes the photo's full size)")
-                                 .arg(QDir::toNativeSeparators(path))
-                                 .arg(renderer_->frameInfo().spp)
-                                 .arg(preview.width())
-                                 .arg(preview.height()),
-                             10000);
+    statusBar()->showMessage(
+        tr("Exported %1 (%2 spp, the preview's %3 × %4; Render Final Image writes the photo's full size)")
+            .arg(QDir::toNativeSeparators(path))
+            .arg(renderer_->frameInfo().spp)
+            .arg(preview.width())
+            .arg(preview.height()),
+        10000);
   else
-    statusBar()->showMessage(tr("Exported %1 (%2 spp)")
-                                 .arg(QDir::toNativeSeparators(path))
-                                 .arg(renderer_->frameInfo().spp),
-                             5000);
+    statusBar()->showMessage(
+        tr("Exported %1 (%2 spp)").arg(QDir::toNativeSeparators(path)).arg(renderer_->frameInfo().spp),
+        5000);
   stepsDock_->markExported(path);
   return true;
 }
@@ -812,12 +814,12 @@ void MainWindow::renderFinalDialog() {
   QString selected;
   const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
                 tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
-  QString path = QFileDialog::getSaveFileName(this, tr("Render Final Image"), suggestion,
-                                              QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")),
-                                              &selected);
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Render Final Image"), suggestion,
+      QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
   if (path.isEmpty()) return;
   if (QFileInfo(path).suffix().isEmpty())
-    path += selected == jpeg ? QStringLiteral(".jpg")
+    path += selected == jpeg   ? QStringLiteral(".jpg")
             : selected == tiff ? QStringLiteral(".tif")
             : selected == exr  ? QStringLiteral(".exr")
                                : QStringLiteral(".png");
@@ -835,7 +837,7 @@ bool MainWindow::renderFinalImage(const QString& path, int maxSpp) {
     return false;
   }
   const QFileInfo info(path);
-  const QStringList formats = {QStringLiteral("png"), QStringLiteral("jpg"), QStringLiteral("jpeg"),
+  const QStringList formats = {QStringLiteral("png"), QStringLiteral("jpg"),  QStringLiteral("jpeg"),
                                QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("exr")};
   if (!formats.contains(info.suffix().toLower())) {
     showError(tr("Cannot render the final image"),
@@ -844,7 +846,8 @@ bool MainWindow::renderFinalImage(const QString& path, int maxSpp) {
   }
   if (!QFileInfo(info.absolutePath()).isDir()) {
     showError(tr("Cannot render the final image"),
-              tr("%1: the folder %2 does not exist.").arg(info.fileName(), QDir::toNativeSeparators(info.absolutePath())));
+              tr("%1: the folder %2 does not exist.")
+                  .arg(info.fileName(), QDir::toNativeSeparators(info.absolutePath())));
     return false;
   }
   renderer_->setPaused(true);  // the processor is the final render's
@@ -859,11 +862,12 @@ bool MainWindow::renderFinalImage(const QString& path, int maxSpp) {
   finalProgress_->setAutoReset(false);
   connect(finalProgress_, &QProgressDialog::canceled, finalRender_, &FinalRender::cancel);
   connect(finalRender_, &FinalRender::progressed, this, [this](const FinalRender::Progress& p) {
-    const QString text = tr("Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s")
-                             .arg(p.spp)
-                             .arg(p.estimatedError, 0, 'f', 4)
-                             .arg(p.noiseTarget, 0, 'f', 4)
-                             .arg(p.seconds, 0, 'f', 0);
+    const QString text =
+        tr("Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s")
+            .arg(p.spp)
+            .arg(p.estimatedError, 0, 'f', 4)
+            .arg(p.noiseTarget, 0, 'f', 4)
+            .arg(p.seconds, 0, 'f', 0);
     if (finalProgress_) {
       finalProgress_->setLabelText(text);
       finalProgress_->setValue(int(p.fraction * 1000));
@@ -916,13 +920,15 @@ bool MainWindow::exportSceneGltf(const QString& path) {
     return false;
   }
   std::vector<std::string> warnings;
-  const Status written = inlay::exportSceneGltf(*prepared, QDir::toNativeSeparators(path).toStdString(), &warnings);
+  const Status written =
+      inlay::exportSceneGltf(*prepared, QDir::toNativeSeparators(path).toStdString(), &warnings);
   if (!written.ok()) {
     showError(tr("Cannot export the scene"), QString::fromStdString(written.error().message()));
     return false;
   }
   QString message = tr("Exported %1").arg(QDir::toNativeSeparators(path));
-  if (!warnings.empty()) message += QStringLiteral(" (") + QString::fromStdString(warnings.front()) + QStringLiteral(")");
+  if (!warnings.empty())
+    message += QStringLiteral(" (") + QString::fromStdString(warnings.front()) + QStringLiteral(")");
   statusBar()->showMessage(message, 8000);
   return true;
 }
@@ -966,12 +972,17 @@ void MainWindow::dropEvent(QDropEvent* event) {
   event->acceptProposedAction();
   const QString path = urls.first().toLocalFile();
   if (isModelFile(path)) {  // dropped beside the viewport: stands in the middle of the floor
-    QMetaObject::invokeMethod(this, [this, path] { insertModelFile(path); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        this, [this, path] { insertModelFile(path); }, Qt::QueuedConnection);
     return;
   }
   // After the drop has finished: maybeSave() may open a dialog.
   QMetaObject::invokeMethod(
-      this, [this, path] { if (maybeSave()) openPath(path); }, Qt::QueuedConnection);
+      this,
+      [this, path] {
+        if (maybeSave()) openPath(path);
+      },
+      Qt::QueuedConnection);
 }
 
 void MainWindow::about() {
@@ -986,7 +997,8 @@ void MainWindow::about() {
 bool MainWindow::insertBuiltin(const QString& mesh) {
   const std::optional<Vec2> at = document_->freeStandingPointPx();
   if (!at) {
-    statusBar()->showMessage(tr("There is no floor in the middle of the photo to stand an object on."), 5000);
+    statusBar()->showMessage(tr("There is no floor in the middle of the photo to stand an object on."),
+                             5000);
     return false;
   }
   ObjectKeys keys;
@@ -1011,7 +1023,8 @@ void MainWindow::deleteSelected() {
 }
 
 void MainWindow::insertModelDialog() {
-  const QString path = QFileDialog::getOpenFileName(this, tr("Insert Model"), QString(), modelFileFilter());
+  const QString path =
+      QFileDialog::getOpenFileName(this, tr("Insert Model"), QString(), modelFileFilter());
   if (!path.isEmpty()) insertModelFile(path);
 }
 
@@ -1030,9 +1043,8 @@ bool MainWindow::insertModelFile(const QString& path, std::optional<Vec2> dropPx
   // Read on a thread of its own: a large file must not freeze the window.
   auto result = std::make_shared<ModelLoadResult>();
   const double defaultHeight = defaultModelHeightM();
-  QThread* loader = QThread::create([result, path, defaultHeight] {
-    *result = loadModelForInsert(path, defaultHeight);
-  });
+  QThread* loader = QThread::create(
+      [result, path, defaultHeight] { *result = loadModelForInsert(path, defaultHeight); });
   loaders_ << loader;
   connect(loader, &QThread::finished, this, [this, loader, result, dropPx] {
     loaders_.removeOne(loader);
@@ -1057,10 +1069,13 @@ void MainWindow::onModelLoaded(const ModelLoadResult& result, std::optional<Vec2
 
 bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx) {
   const QString file = QFileInfo(model.path).fileName();
-  const std::optional<Vec2> at = dropPx ? document_->supportPointNear(*dropPx) : document_->freeStandingPointPx();
+  const std::optional<Vec2> at = dropPx ? document_->supportPointNear(*dropPx)
+                                        : document_->freeStandingPointPx();
   if (!at) {
-    refuseModel(dropPx ? tr("%1: there is no floor, table top or step under the drop point to stand it on.").arg(file)
-                       : tr("%1: there is no floor in the middle of the photo to stand it on.").arg(file));
+    refuseModel(dropPx
+                    ? tr("%1: there is no floor, table top or step under the drop point to stand it on.")
+                          .arg(file)
+                    : tr("%1: there is no floor in the middle of the photo to stand it on.").arg(file));
     return false;
   }
   ObjectKeys keys;
@@ -1085,15 +1100,17 @@ bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx
     ownSize = false;
   }
   // The file's own materials when it has any (a glTF's PBR values, an OBJ's MTL).
-  const bool hasMaterials = !model.mesh->materials.empty() && model.mesh->materials.front().name != "default";
+  const bool hasMaterials = !model.mesh->materials.empty() &&
+                            model.mesh->materials.front().name != "default";
   keys.material.preset = hasMaterials ? "asset" : "diffuse";
   QString reason;
   if (!document_->insertObject(keys, model.mesh, &reason)) {
     refuseModel(tr("%1: %2").arg(file, reason));
     return false;
   }
-  QString message = ownSize ? tr("Inserted %1, %2 m high (its own size).").arg(model.name).arg(keys.heightM, 0, 'f', 2)
-                            : tr("Inserted %1, %2 m high.").arg(model.name).arg(keys.heightM, 0, 'f', 2);
+  QString message =
+      ownSize ? tr("Inserted %1, %2 m high (its own size).").arg(model.name).arg(keys.heightM, 0, 'f', 2)
+              : tr("Inserted %1, %2 m high.").arg(model.name).arg(keys.heightM, 0, 'f', 2);
   if (!notes.isEmpty()) message += QLatin1Char(' ') + notes.join(QLatin1Char(' '));
   statusBar()->showMessage(message, 12000);
   statusBar()->setToolTip(message);
@@ -1107,13 +1124,15 @@ void MainWindow::refuseModel(const QString& text) {
 
 void MainWindow::duplicateSelected() {
   QString reason;
-  if (!document_->duplicateObject(document_->selectedObject(), &reason)) statusBar()->showMessage(reason, 5000);
+  if (!document_->duplicateObject(document_->selectedObject(), &reason))
+    statusBar()->showMessage(reason, 5000);
 }
 
 void MainWindow::toggleSelectedHidden() {
   const int i = document_->selectedObject();
   QString reason;
-  const bool hidden = i >= 0 && i < document_->objectCount() && document_->scene().objects[size_t(i)].hidden;
+  const bool hidden = i >= 0 && i < document_->objectCount() &&
+                      document_->scene().objects[size_t(i)].hidden;
   if (!document_->setObjectHidden(i, !hidden, &reason)) statusBar()->showMessage(reason, 5000);
 }
 
@@ -1142,8 +1161,8 @@ void MainWindow::rebuildRecentMenu() {
   const QStringList models = settings.value(QLatin1String(kRecentModelsKey)).toStringList();
   for (int i = 0; i < files.size(); ++i) {
     const QString& f = files[i];
-    QAction* a = recentMenu_->addAction(
-        QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(f).fileName()));
+    QAction* a =
+        recentMenu_->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(f).fileName()));
     a->setStatusTip(QDir::toNativeSeparators(f));
     connect(a, &QAction::triggered, this, [this, f] {
       if (maybeSave()) openPath(f);
@@ -1166,8 +1185,7 @@ void MainWindow::setLanguage(const QString& code) {
   QSettings().setValue(QStringLiteral("language"), code);
   // The choice made here wins over INLAY_LANG and the system's; installing sends every widget a
   // QEvent::LanguageChange, and each retranslates itself.
-  installTranslators(code.isEmpty() ? QLocale::system().name().section(QLatin1Char('_'), 0, 0)
-                                    : code);
+  installTranslators(code.isEmpty() ? QLocale::system().name().section(QLatin1Char('_'), 0, 0) : code);
 }
 
 QAction* MainWindow::toolAction(int tool) const {
@@ -1180,19 +1198,18 @@ bool MainWindow::offerRecovery() {
   if (!interactive_) return true;
   const QString what = r->originalPath.isEmpty() ? tr("a new scene")
                                                  : QDir::toNativeSeparators(r->originalPath);
-  auto* box = new QMessageBox(
-      QMessageBox::Question, tr("Restore unsaved work?"),
-      tr("Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?")
-          .arg(what, QLocale().toString(r->saved.toLocalTime(), QLocale::ShortFormat)),
-      QMessageBox::NoButton, this);
+  auto* box =
+      new QMessageBox(QMessageBox::Question, tr("Restore unsaved work?"),
+                      tr("Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?")
+                          .arg(what, QLocale().toString(r->saved.toLocalTime(), QLocale::ShortFormat)),
+                      QMessageBox::NoButton, this);
   box->setObjectName(QStringLiteral("recoveryQuestion"));
   QPushButton* restore = box->addButton(tr("&Restore"), QMessageBox::AcceptRole);
   box->addButton(tr("&Discard"), QMessageBox::DestructiveRole);
   box->setDefaultButton(restore);
   box->setAttribute(Qt::WA_DeleteOnClose);
   connect(box, &QMessageBox::buttonClicked, this, [this, restore](QAbstractButton* b) {
-    if (b == restore)
-      restoreRecovery();
+    if (b == restore) restoreRecovery();
     else if (const std::optional<Autosaver::Recovery> offered = Autosaver::pending())
       Autosaver::discard(*offered);
   });

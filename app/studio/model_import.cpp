@@ -28,8 +28,9 @@ void chooseHeight(ModelImport& m, const MeshFileInfo& info, double defaultHeight
   m.heightM = defaultHeightM;
   const QString height = heightText(defaultHeightM);
   if (!(info.metresPerUnit > 0)) {
-    m.notes << ModelImportText::tr("%1 files do not state their unit: %2 was scaled to %3 high "
-                                   "(change Height in Properties).")
+    m.notes << ModelImportText::tr(
+                   "%1 files do not state their unit: %2 was scaled to %3 high "
+                   "(change Height in Properties).")
                    .arg(formatName(info.format), m.name, height);
     return;
   }
@@ -39,8 +40,9 @@ void chooseHeight(ModelImport& m, const MeshFileInfo& info, double defaultHeight
     m.ownSize = true;
     return;
   }
-  m.notes << ModelImportText::tr("%1 says it is %2 high, an absurd size: it was inserted "
-                                 "%3 high instead (change Height in Properties).")
+  m.notes << ModelImportText::tr(
+                 "%1 says it is %2 high, an absurd size: it was inserted "
+                 "%3 high instead (change Height in Properties).")
                  .arg(m.name, heightText(own), height);
 }
 
@@ -60,8 +62,8 @@ bool isModelFile(const QString& path) {
 QString modelFileFilter() {
   QStringList globs;
   for (const QString& e : modelFileExtensions()) globs << QStringLiteral("*") + e;
-  return ModelImportText::tr("3D models (%1)").arg(globs.join(QLatin1Char(' '))) +
-         QStringLiteral(";;") + ModelImportText::tr("All files (*)");
+  return ModelImportText::tr("3D models (%1)").arg(globs.join(QLatin1Char(' '))) + QStringLiteral(";;") +
+         ModelImportText::tr("All files (*)");
 }
 
 double meshHeightUnits(const TriangleMesh& mesh) {
@@ -96,13 +98,16 @@ ModelLoadResult loadModelForInsert(const QString& path, double defaultHeightM,
     out.error = ModelImportText::tr("%1: %2").arg(
         shown, QString::fromStdString(e.key.empty() ? e.reason : e.key + ": " + e.reason));
     if (e.reason.find("exceed") != std::string::npos || e.reason.find("more than") != std::string::npos)
-      out.error += QLatin1Char(' ') + ModelImportText::tr("(Inlay inserts models of up to %1 triangles.)")
-                                          .arg(QLocale().toString(qulonglong(limits.maxTriangles)));
+      out.error += QLatin1Char(' ') +
+                   ModelImportText::tr("(Inlay inserts models of up to %1 triangles.)")
+                       .arg(QLocale().toString(qulonglong(limits.maxTriangles)));
     return out;
   }
   if (!(meshHeightUnits(*mesh) > 0)) {
-    out.error = ModelImportText::tr("%1: the model is flat (it has no height), so it cannot stand "
-                                    "in the room.").arg(shown);
+    out.error = ModelImportText::tr(
+                    "%1: the model is flat (it has no height), so it cannot stand "
+                    "in the room.")
+                    .arg(shown);
     return out;
   }
   ModelImport m;

@@ -36,12 +36,12 @@ constexpr double kMaxPlausibleHeightM = 20.0;  // one that says it is taller: ab
 constexpr double kDefaultModelHeightM = 0.75;  // a table, a chair's seat back, a floor vase
 
 struct ModelImport {
-  QString path;                                // absolute
-  QString name;                                // the file's name without its extension
-  std::shared_ptr<const TriangleMesh> mesh;    // as the engine will use it (file units)
-  double heightM = kDefaultModelHeightM;       // the height the object gets
-  bool ownSize = false;                        // heightM is the model's own (units known)
-  QStringList notes;                           // what the user should know (status bar)
+  QString path;                              // absolute
+  QString name;                              // the file's name without its extension
+  std::shared_ptr<const TriangleMesh> mesh;  // as the engine will use it (file units)
+  double heightM = kDefaultModelHeightM;     // the height the object gets
+  bool ownSize = false;                      // heightM is the model's own (units known)
+  QStringList notes;                         // what the user should know (status bar)
   size_t triangles = 0;
 };
 

@@ -23,7 +23,7 @@ struct PrepareResult {
   quint64 jobId = 0;
   std::shared_ptr<PreparedScene> scene;  // null on error or cancel
   bool cancelled = false;
-  QString error;        // one line naming the file, key and reason
+  QString error;  // one line naming the file, key and reason
   QStringList warnings;
   double seconds = 0;
 };
@@ -70,4 +70,3 @@ class PrepareWorker : public QObject {
 };
 
 }  // namespace inlay::studio
-

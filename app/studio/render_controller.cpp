@@ -80,7 +80,8 @@ void RenderController::startScene() {
   std::shared_ptr<const PreparedScene> context = CompositeSink::compositeContextOf(*prepared);
   if (previewSize_ != QSize(prepared->camera.widthPx, prepared->camera.heightPx)) {
     auto reduced = std::make_shared<PreparedScene>(*context);
-    reduced->photo.linearRgb = resizeImage(context->photo.linearRgb, previewSize_.width(), previewSize_.height());
+    reduced->photo.linearRgb =
+        resizeImage(context->photo.linearRgb, previewSize_.width(), previewSize_.height());
     reduced->camera = scaledCamera(context->camera, previewSize_.width(), previewSize_.height());
     context = std::move(reduced);
   }
@@ -123,7 +124,8 @@ void RenderController::onDocumentChanged(const ChangeEvent& event) {
   if (event.has(ChangeEvent::PrepareStarted) && session_) session_->cancel();
   if (event.has(ChangeEvent::PrepareFinished)) {
     if (const PreparedScene* prepared = document_->prepared()) {
-      photo_ = encoded8FromLinear(prepared->photo.linearRgb, prepared->response, prepared->doc.render.exposure);
+      photo_ = encoded8FromLinear(prepared->photo.linearRgb, prepared->response,
+                                  prepared->doc.render.exposure);
       composite_ = {};
       startScene();
       Q_EMIT frameUpdated();
@@ -161,8 +163,7 @@ QImage differenceOf(const QImage& a, const QImage& b, int gain) {
     auto* o = reinterpret_cast<QRgb*>(out.scanLine(r));
     for (int c = 0; c < x.width(); ++c) {
       auto d = [&](int u, int v) { return std::min(255, gain * std::abs(u - v)); };
-      o[c] = qRgb(d(qRed(p[c]), qRed(q[c])), d(qGreen(p[c]), qGreen(q[c])),
-                  d(qBlue(p[c]), qBlue(q[c])));
+      o[c] = qRgb(d(qRed(p[c]), qRed(q[c])), d(qGreen(p[c]), qGreen(q[c])), d(qBlue(p[c]), qBlue(q[c])));
     }
   }
   return out;
@@ -198,16 +199,21 @@ QImage RenderController::layerImage(Layer layer) {
       // Reflectance is shown as is (exposure does not apply to it).
       image = srgb8FromLinear(prepared->lighting.albedo, 0.0);
       break;
-    case Layer::DirectLight: image = encoded8FromLinear(prepared->lighting.direct, response, exposure); break;
+    case Layer::DirectLight:
+      image = encoded8FromLinear(prepared->lighting.direct, response, exposure);
+      break;
     case Layer::WithObjects: image = encoded8FromLinear(frame->withObjects, response, exposure); break;
-    case Layer::WithoutObjects: image = encoded8FromLinear(frame->withoutObjects, response, exposure); break;
+    case Layer::WithoutObjects:
+      image = encoded8FromLinear(frame->withoutObjects, response, exposure);
+      break;
     case Layer::Mask: image = srgb8FromLinear(frame->mask, 0.0); break;
     case Layer::Difference:
       // Against the photo at the composite's size (a big photo's preview is smaller).
       image = differenceOf(compositeImage(),
                            photoImage().size() == compositeImage().size()
                                ? photoImage()
-                               : photoImage().scaled(compositeImage().size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation),
+                               : photoImage().scaled(compositeImage().size(), Qt::IgnoreAspectRatio,
+                                                     Qt::SmoothTransformation),
                            4);
       break;
     default: break;

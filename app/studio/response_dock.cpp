@@ -32,7 +32,8 @@ class ResponseCurveView : public QWidget {
     auto curve = [&](const CameraResponse& r) {
       QPainterPath path;
       for (int k = 0; k < 256; ++k) {
-        const QPointF q(area.left() + area.width() * k / 255.0, area.bottom() - area.height() * r.table8()[size_t(k)]);
+        const QPointF q(area.left() + area.width() * k / 255.0,
+                        area.bottom() - area.height() * r.table8()[size_t(k)]);
         k == 0 ? path.moveTo(q) : path.lineTo(q);
       }
       return path;
@@ -72,7 +73,7 @@ ResponseDock::ResponseDock(Document* document, QWidget* parent)
 
 void ResponseDock::choose(int index) {
   static const ResponseKeys::Mode modes[] = {ResponseKeys::Mode::Auto, ResponseKeys::Mode::Srgb,
-                                            ResponseKeys::Mode::Linear};
+                                             ResponseKeys::Mode::Linear};
   if (index < 0 || index > 2) return refresh();  // "explicit" is the file's, not a choice here
   ResponseKeys keys;
   keys.mode = modes[index];
@@ -96,7 +97,8 @@ void ResponseDock::refresh() {
   QString text = QString::fromStdString(prepared->response.describe());
   if (const auto& e = prepared->responseEstimate) {
     text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
-    if (e->determined && e->decision != "fitted") text += QStringLiteral("\n") + QString::fromStdString(e->decision);
+    if (e->determined && e->decision != "fitted")
+      text += QStringLiteral("\n") + QString::fromStdString(e->decision);
     for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);
   }
   info_->setText(text);

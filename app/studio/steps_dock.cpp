@@ -89,36 +89,30 @@ void StepsDock::refresh() {
   const bool photo = !doc.photo.empty();
   const bool preparing = document_->state() == Document::State::Preparing;
   // 1 Room.
-  if (!photo)
-    showRow(Room, false, tr("no photo yet"), tr("Open Photo…"), actions_.openPhoto);
-  else if (document_->backWallIsUsers())
-    showRow(Room, true, tr("the box is yours"), {}, nullptr);
+  if (!photo) showRow(Room, false, tr("no photo yet"), tr("Open Photo…"), actions_.openPhoto);
+  else if (document_->backWallIsUsers()) showRow(Room, true, tr("the box is yours"), {}, nullptr);
   else if (document_->shownBackWallPx())
     showRow(Room, false, tr("estimated: check that the back wall's corners sit on the room's"),
             tr("Accept the Box"), actions_.acceptBox);
-  else if (preparing)
-    showRow(Room, false, tr("being estimated…"), {}, nullptr);
-  else
-    showRow(Room, false, tr("not found: drag the back wall's corners onto the room's"), {}, nullptr);
+  else if (preparing) showRow(Room, false, tr("being estimated…"), {}, nullptr);
+  else showRow(Room, false, tr("not found: drag the back wall's corners onto the room's"), {}, nullptr);
   // 2 Lights (outlined lights and sun shafts).
   const int lights = int(doc.lights.size() + doc.shafts.size());
   if (lights == 0)
     showRow(Lights, false, tr("none: objects are lit by gathered light only"), tr("Outline a Light"),
             photo ? actions_.outlineLight : nullptr);
-  else
-    showRow(Lights, true, tr("%n outlined", nullptr, lights), {}, nullptr);
+  else showRow(Lights, true, tr("%n outlined", nullptr, lights), {}, nullptr);
   // 3 Objects.
   const int objects = document_->objectCount();
   if (objects == 0)
     showRow(Objects, false, tr("none yet (or drag one from the Library)"), tr("Insert Model…"),
             photo ? actions_.insertModel : nullptr);
-  else
-    showRow(Objects, true, tr("%n in the photo", nullptr, objects), {}, nullptr);
+  else showRow(Objects, true, tr("%n in the photo", nullptr, objects), {}, nullptr);
   // 4 Export.
   if (exportedPath_.isEmpty())
-    showRow(Export, false, tr("not yet"), tr("Render Final Image…"), photo ? actions_.renderFinal : nullptr);
-  else
-    showRow(Export, true, tr("written to %1").arg(QFileInfo(exportedPath_).fileName()), {}, nullptr);
+    showRow(Export, false, tr("not yet"), tr("Render Final Image…"),
+            photo ? actions_.renderFinal : nullptr);
+  else showRow(Export, true, tr("written to %1").arg(QFileInfo(exportedPath_).fileName()), {}, nullptr);
 
   const int current = currentStep();
   for (int i = 0; i < kStepCount; ++i) {
@@ -128,10 +122,11 @@ void StepsDock::refresh() {
     r.title->setFont(f);
     r.button->setDefault(i == current);
     // The number in a disc: the current step's highlighted, done ones green, later ones grey.
-    const QString disc = i == current ? QStringLiteral("palette(highlight)")
+    const QString disc = i == current       ? QStringLiteral("palette(highlight)")
                          : done_[size_t(i)] ? QStringLiteral("#3a9a4a")
                                             : QStringLiteral("palette(mid)");
-    r.number->setStyleSheet(QStringLiteral("QLabel { border-radius: 11px; color: white; background: %1; }").arg(disc));
+    r.number->setStyleSheet(
+        QStringLiteral("QLabel { border-radius: 11px; color: white; background: %1; }").arg(disc));
     r.state->setEnabled(i <= current || done_[size_t(i)]);
   }
   if (current == kStepCount && !announced_) {

@@ -60,10 +60,8 @@ bool clipToRect(QPointF& a, QPointF& b, const QRectF& r) {
       continue;
     }
     const double t = q[i] / p[i];
-    if (p[i] < 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
+    if (p[i] < 0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
     if (t0 > t1) return false;
   }
   const QPointF a0 = a;
@@ -319,8 +317,7 @@ void Viewport::setTool(Tool tool) {
 
 QString Viewport::toolHint() const {
   switch (tool_) {
-    case Tool::Select:
-      return tr("Drag an object or a corner of the back wall.");
+    case Tool::Select: return tr("Drag an object or a corner of the back wall.");
     case Tool::Light:
       return tr("Click around a light; click the first point (or press Enter) to close.");
     case Tool::Shaft:
@@ -331,12 +328,14 @@ QString Viewport::toolHint() const {
                  ? tr("Click the floor straight below the first point of the outline.")
                  : tr("Click around the top of a table or step; click the first point to close.");
     case Tool::Occluder:
-      return tr("Left drag over the thing in front, right drag over what is behind it; Enter "
-                "starts another occluder.");
+      return tr(
+          "Left drag over the thing in front, right drag over what is behind it; Enter "
+          "starts another occluder.");
     case Tool::VanishingLines: {
       const QString axis = QLatin1String(vanishingAxis_ == 0 ? "x" : vanishingAxis_ == 1 ? "y" : "z");
       return vanishingInput_.empty()
-                 ? tr("Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).").arg(axis)
+                 ? tr("Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).")
+                       .arg(axis)
                  : tr("Now drag along a second edge in the %1 direction.").arg(axis);
     }
   }
@@ -344,8 +343,7 @@ QString Viewport::toolHint() const {
 }
 
 const QImage& Viewport::shownImage() {
-  if (showBefore_ || (layer_ == Layer::Composite && !renderer_->hasFrame()) ||
-      layer_ == Layer::Photo)
+  if (showBefore_ || (layer_ == Layer::Composite && !renderer_->hasFrame()) || layer_ == Layer::Photo)
     return renderer_->photoImage();
   if (layer_ == Layer::Composite) return renderer_->compositeImage();
   layerImage_ = renderer_->layerImage(layer_);
@@ -398,7 +396,9 @@ void Viewport::paintScaled(QPainter& p, const QImage& image, const QRectF& targe
   const QSize screenSize = (target.size() * dpr).toSize();  // device pixels
   if (scale_ * dpr < 1.0 && !screenSize.isEmpty()) {
     // One cache per image (the split draws two): a miss takes the slot not used last.
-    const int slot = image.cacheKey() == scaledKey_[1] ? 1 : image.cacheKey() == scaledKey_[0] ? 0 : 1 - lastSlot_;
+    const int slot = image.cacheKey() == scaledKey_[1]   ? 1
+                     : image.cacheKey() == scaledKey_[0] ? 0
+                                                         : 1 - lastSlot_;
     lastSlot_ = slot;
     if (image.cacheKey() != scaledKey_[slot] || scaledImage_[slot].size() != screenSize) {
       scaledImage_[slot] = image.scaled(screenSize, Qt::IgnoreAspectRatio, Qt::SmoothTransformation);
@@ -471,10 +471,9 @@ void Viewport::paintVanishingLines(QPainter& p) {
   // where it is, with each one's residual.
   for (int f = 0; f < 3; ++f) {
     auto& list = byFamily[size_t(f)];
-    std::partial_sort(list.begin(), list.begin() + std::min<size_t>(2, list.size()), list.end(),
-                      [](const LineSegment* a, const LineSegment* b) {
-                        return a->lengthPx() > b->lengthPx();
-                      });
+    std::partial_sort(
+        list.begin(), list.begin() + std::min<size_t>(2, list.size()), list.end(),
+        [](const LineSegment* a, const LineSegment* b) { return a->lengthPx() > b->lengthPx(); });
     const Vec3& h = e->vanishingPoints[size_t(f)].homogeneousPx;
     for (size_t k = 0; k < std::min<size_t>(2, list.size()); ++k) {
       const LineSegment& s = *list[k];
@@ -526,8 +525,13 @@ void Viewport::paintMarkHandles(QPainter& p) {
         haloLine(p, widgetFromImage(mid), widgetFromImage(toward), kAxisColour[axis], 1.0, Qt::DashLine);
       for (const LineSegment& s : e->segments)
         if (s.userGiven && s.family == axis && (s.aPx - a).norm() < 1e-6 && (s.bPx - b).norm() < 1e-6)
-          labelAt(p, widgetFromImage(b), tr("%1: %2 px").arg(QLatin1String(axis == 0 ? "x" : axis == 1 ? "y" : "z"))
-                                             .arg(s.residualPx, 0, 'f', 2), kAxisColour[axis]);
+          labelAt(p, widgetFromImage(b),
+                  tr("%1: %2 px")
+                      .arg(QLatin1String(axis == 0   ? "x"
+                                         : axis == 1 ? "y"
+                                                     : "z"))
+                      .arg(s.residualPx, 0, 'f', 2),
+                  kAxisColour[axis]);
     }
   }
 }
@@ -590,9 +594,8 @@ void Viewport::paintMarks(QPainter& p) {
   for (size_t i = 0; i < doc.occluders.size(); ++i) {
     const double w = 1.5 + width(MarkKind::Occluder, i);
     const OccluderKeys& o = doc.occluders[i];
-    for (const auto& [strokes, colour] :
-         {std::pair{&o.foregroundScribblesPx, QColor(60, 230, 90, 220)},
-          std::pair{&o.backgroundScribblesPx, QColor(240, 70, 70, 220)}})
+    for (const auto& [strokes, colour] : {std::pair{&o.foregroundScribblesPx, QColor(60, 230, 90, 220)},
+                                          std::pair{&o.backgroundScribblesPx, QColor(240, 70, 70, 220)}})
       for (const auto& stroke : *strokes) {
         QPolygonF line;
         for (const Vec2& q : stroke) line << widgetFromImage(q);
@@ -611,13 +614,16 @@ void Viewport::paintObjects(QPainter& p) {
     const bool selected = int(i) == document_->selectedObject();
     const bool hot = selected || int(i) == hoverObject_ || int(i) == dragObject_;
     // A hidden object keeps a grey marker (it can still be selected, moved and shown again).
-    const QColor accent = selected ? QColor(255, 150, 40) : o.hidden ? QColor(150, 150, 150) : QColor(240, 240, 240);
+    const QColor accent = selected   ? QColor(255, 150, 40)
+                          : o.hidden ? QColor(150, 150, 150)
+                                     : QColor(240, 240, 240);
     if (prepared && i < prepared->placements.size()) {
       const Placement& pl = prepared->placements[i];
       const Camera& cam = prepared->camera;
       const Vec3 top = pl.baseWorld + Vec3(0, o.heightM, 0);
       // Its front (+z of the model, glTF's convention) turned by yaw about +y.
-      const Vec3 tip = pl.baseWorld + frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(int(i)), o.heightM);
+      const Vec3 tip = pl.baseWorld +
+                       frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(int(i)), o.heightM);
       if (auto t = cam.project(top); t && cam.depthOf(top) > 0.05)
         haloLine(p, base, widgetFromImage(*t), accent, hot ? 2.0 : 1.2, Qt::DotLine);
       if (auto t = cam.project(tip); t && cam.depthOf(tip) > 0.05) {
@@ -673,11 +679,13 @@ void Viewport::paintToolInput(QPainter& p) {
     return QRectF(widgetFromImage(a), widgetFromImage(b)).normalized();
   };
   if (shaftBox_)
-    haloPolygon(p, QPolygonF(QRectF(widgetFromImage(Vec2(shaftBox_->left(), shaftBox_->top())),
-                                    widgetFromImage(Vec2(shaftBox_->right(), shaftBox_->bottom())))),
+    haloPolygon(p,
+                QPolygonF(QRectF(widgetFromImage(Vec2(shaftBox_->left(), shaftBox_->top())),
+                                 widgetFromImage(Vec2(shaftBox_->right(), shaftBox_->bottom())))),
                 QColor(255, 170, 60), 1.5);
   if (rubberFrom_ && tool_ == Tool::VanishingLines)
-    haloLine(p, widgetFromImage(*rubberFrom_), widgetFromImage(rubberTo_), kAxisColour[vanishingAxis_], 2.0);
+    haloLine(p, widgetFromImage(*rubberFrom_), widgetFromImage(rubberTo_), kAxisColour[vanishingAxis_],
+             2.0);
   else if (rubberFrom_)
     haloPolygon(p, QPolygonF(rectOf(*rubberFrom_, rubberTo_)), colour, 1.0, Qt::DashLine);
   if (vanishingInput_.size() >= 2)
@@ -734,9 +742,7 @@ void Viewport::paintStatus(QPainter& p) {
   QString banner;
   QColor bannerColour(255, 255, 255);
   switch (document_->state()) {
-    case Document::State::Preparing:
-      banner = tr("Preparing the scene…");
-      break;
+    case Document::State::Preparing: banner = tr("Preparing the scene…"); break;
     case Document::State::Failed:
       banner = tr("The scene could not be prepared: %1").arg(document_->prepareError());
       bannerColour = QColor(255, 140, 140);
@@ -749,8 +755,9 @@ void Viewport::paintStatus(QPainter& p) {
       break;
   }
   auto box = [&](const QRectF& area, const QString& text, const QColor& colour, int flags) {
-    const QRectF r =
-        p.fontMetrics().boundingRect(area.toRect(), flags | Qt::TextWordWrap, text).adjusted(-6, -4, 6, 4);
+    const QRectF r = p.fontMetrics()
+                         .boundingRect(area.toRect(), flags | Qt::TextWordWrap, text)
+                         .adjusted(-6, -4, 6, 4);
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(0, 0, 0, 170));
     p.drawRoundedRect(r, 4, 4);
@@ -800,7 +807,8 @@ void Viewport::paintSplit(QPainter& p) {
   const QSize img = imageSize();
   if (img.isEmpty()) return;
   const double x = splitWidgetX();
-  const double top = widgetFromImage(Vec2(0, 0)).y(), bottom = widgetFromImage(Vec2(0, img.height())).y();
+  const double top = widgetFromImage(Vec2(0, 0)).y(),
+               bottom = widgetFromImage(Vec2(0, img.height())).y();
   haloLine(p, QPointF(x, top), QPointF(x, bottom), kSplitColour, draggingSplit_ ? 2.5 : 1.5);
   const QPointF grip(x, 0.5 * (top + bottom));
   p.setPen(QPen(QColor(0, 0, 0, 180), 1.5));
@@ -828,9 +836,10 @@ std::optional<QPointF> Viewport::handlePos(Handle handle) const {
     return std::nullopt;
   const ObjectKeys& o = document_->scene().objects[size_t(i)];
   const Vec3 base = prepared->placements[size_t(i)].baseWorld;
-  const Vec3 at = handle == Handle::Height
-                      ? Vec3(base + Vec3(0, o.heightM, 0))
-                      : Vec3(base + frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(i), o.heightM));
+  const Vec3 at =
+      handle == Handle::Height
+          ? Vec3(base + Vec3(0, o.heightM, 0))
+          : Vec3(base + frontOf(o.yawDeg) * turnRadiusM(document_->objectSizeM(i), o.heightM));
   const Camera& cam = prepared->camera;
   if (cam.depthOf(at) <= 0.05) return std::nullopt;
   const std::optional<Vec2> px = cam.project(at);
@@ -851,7 +860,8 @@ Viewport::Handle Viewport::handleAt(const QPointF& widgetPos) const {
 void Viewport::paintHandles(QPainter& p) {
   const int i = document_->selectedObject();
   const PreparedScene* prepared = document_->prepared();
-  if (i < 0 || i >= document_->objectCount() || !prepared || size_t(i) >= prepared->placements.size()) return;
+  if (i < 0 || i >= document_->objectCount() || !prepared || size_t(i) >= prepared->placements.size())
+    return;
   if (dragHandle_ == Handle::Turn) {
     // The circle on the object's support the disc travels along.
     const ObjectKeys& o = document_->scene().objects[size_t(i)];
@@ -886,8 +896,9 @@ void Viewport::dragObjectTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
   // Near a wall: its back against it (Shift places freely); elsewhere its own turn.
   const std::optional<Document::WallSnap> snap =
       (modifiers & Qt::ShiftModifier) ? std::nullopt : document_->wallSnap(dragObject_, target);
-  const bool ok = snap ? document_->moveAndTurnObject(dragObject_, snap->basePx, snap->yawDeg, dragId_, &reason)
-                       : document_->moveAndTurnObject(dragObject_, target, dragStartYawDeg_, dragId_, &reason);
+  const bool ok =
+      snap ? document_->moveAndTurnObject(dragObject_, snap->basePx, snap->yawDeg, dragId_, &reason)
+           : document_->moveAndTurnObject(dragObject_, target, dragStartYawDeg_, dragId_, &reason);
   if (!ok) {
     Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
     return;
@@ -906,7 +917,8 @@ void Viewport::dragObjectTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
 void Viewport::dragHandleTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
   const PreparedScene* prepared = document_->prepared();
   const int i = dragObject_;
-  if (!prepared || i < 0 || i >= document_->objectCount() || size_t(i) >= prepared->placements.size()) return;
+  if (!prepared || i < 0 || i >= document_->objectCount() || size_t(i) >= prepared->placements.size())
+    return;
   const Vec3 base = prepared->placements[size_t(i)].baseWorld;
   const Ray ray = prepared->camera.rayThroughPixel(px);
   QString reason;
@@ -937,9 +949,7 @@ void Viewport::dragHandleTo(const Vec2& px, Qt::KeyboardModifiers modifiers) {
 
 // ---------------------------------------------------------------- input
 
-void Viewport::report(bool ok, const QString& reason) {
-  Q_EMIT statusMessage(ok ? toolHint() : reason);
-}
+void Viewport::report(bool ok, const QString& reason) { Q_EMIT statusMessage(ok ? toolHint() : reason); }
 
 void Viewport::cancelToolInput() {
   toolPoints_.clear();
@@ -954,8 +964,7 @@ void Viewport::cancelToolInput() {
 }
 
 void Viewport::commitToolInput() {
-  if ((tool_ == Tool::Light || tool_ == Tool::Surface) && !awaitingHeightClick_)
-    closeOutline();
+  if ((tool_ == Tool::Light || tool_ == Tool::Surface) && !awaitingHeightClick_) closeOutline();
   else if (tool_ == Tool::Occluder) {
     currentOccluder_ = -1;
     pendingOccluder_ = {};
@@ -1010,8 +1019,7 @@ void Viewport::finishStroke() {
   if (currentOccluder_ >= 0 && currentOccluder_ < int(document_->scene().occluders.size())) {
     ok = document_->addOccluderStroke(currentOccluder_, strokeForeground_, stroke, &reason);
   } else {
-    (strokeForeground_ ? pendingOccluder_.foregroundScribblesPx
-                       : pendingOccluder_.backgroundScribblesPx)
+    (strokeForeground_ ? pendingOccluder_.foregroundScribblesPx : pendingOccluder_.backgroundScribblesPx)
         .push_back(std::move(stroke));
     if (!pendingOccluder_.foregroundScribblesPx.empty() &&
         !pendingOccluder_.backgroundScribblesPx.empty()) {
@@ -1134,19 +1142,17 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
       dragHandle_ = Handle::None;
       return;
     }
-    if (dragHandle_ != Handle::None)
-      dragHandleTo(px, event->modifiers());
-    else
-      dragObjectTo(px, event->modifiers());
+    if (dragHandle_ != Handle::None) dragHandleTo(px, event->modifiers());
+    else dragObjectTo(px, event->modifiers());
     update();
     return;
   }
   if (dragPoint_) {
     QString reason;
-    if (document_->moveMarkPoint(dragPoint_->mark, dragPoint_->point, px + dragGrabPx_, dragId_, &reason))
+    if (document_->moveMarkPoint(dragPoint_->mark, dragPoint_->point, px + dragGrabPx_, dragId_,
+                                 &reason))
       Q_EMIT statusMessage(QString());
-    else
-      Q_EMIT statusMessage(reason);
+    else Q_EMIT statusMessage(reason);
     update();
     return;
   }
@@ -1167,8 +1173,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
       hoverObject_ = hover;
       hoverCorner_ = corner;
       hoverHandle_ = handle;
-      setCursor(handle == Handle::Turn     ? Qt::SizeHorCursor
-                : handle == Handle::Height ? Qt::SizeVerCursor
+      setCursor(handle == Handle::Turn      ? Qt::SizeHorCursor
+                : handle == Handle::Height  ? Qt::SizeVerCursor
                 : hover >= 0 || corner >= 0 ? Qt::OpenHandCursor
                                             : Qt::ArrowCursor);
     }
@@ -1206,8 +1212,9 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
       Q_EMIT statusMessage(toolHint());
     } else {
       QString reason;
-      const bool ok = document_->addShaft({shaftBox_->left(), shaftBox_->top(), shaftBox_->right(), shaftBox_->bottom()},
-                                          {box.left(), box.top(), box.right(), box.bottom()}, &reason);
+      const bool ok = document_->addShaft(
+          {shaftBox_->left(), shaftBox_->top(), shaftBox_->right(), shaftBox_->bottom()},
+          {box.left(), box.top(), box.right(), box.bottom()}, &reason);
       shaftBox_.reset();
       report(ok, reason);
     }
@@ -1291,8 +1298,7 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
   QString reason;
   if (document_->moveObject(i, document_->scene().objects[size_t(i)].basePx + step, 0, &reason))
     Q_EMIT statusMessage(QString());
-  else
-    Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
+  else Q_EMIT statusMessage(tr("Cannot place the object here: %1").arg(reason));
   event->accept();
 }
 
@@ -1333,8 +1339,9 @@ void Viewport::dropEvent(QDropEvent* event) {
   const Vec2 px = imageFromWidget(event->position());
   // After the drop has returned to the source (a file manager, the library dock): reading the
   // file and a refusal's dialog must not run inside the drag's event loop.
-  QMetaObject::invokeMethod(this, [this, path, px] { Q_EMIT modelDropped(path, QPointF(px.x(), px.y())); },
-                            Qt::QueuedConnection);
+  QMetaObject::invokeMethod(
+      this, [this, path, px] { Q_EMIT modelDropped(path, QPointF(px.x(), px.y())); },
+      Qt::QueuedConnection);
 }
 
 }  // namespace inlay::studio

@@ -192,7 +192,7 @@ class Viewport : public QWidget {
 
   std::optional<MarkPoint> dragPoint_;  // a mark's point being dragged (Select tool)
   int dragObject_ = -1;
-  double dragStartYawDeg_ = 0;  // the dragged object's own turn (restored off a wall)
+  double dragStartYawDeg_ = 0;        // the dragged object's own turn (restored off a wall)
   Handle dragHandle_ = Handle::None;  // a handle of dragObject_ being dragged
   double dragHeightOffsetM_ = 0;      // Height: the cursor's height on the line minus height_m
   Handle hoverHandle_ = Handle::None;
@@ -214,7 +214,7 @@ class Viewport : public QWidget {
   std::optional<QRectF> shaftBox_;    // Shaft: the lit patch's box, drawn first
   std::optional<Vec2> rubberFrom_;    // Shaft: the corner where the box drag started
   Vec2 rubberTo_{0, 0};
-  std::vector<Vec2> stroke_;          // Occluder: the stroke being drawn
+  std::vector<Vec2> stroke_;  // Occluder: the stroke being drawn
   bool strokeForeground_ = true;
   bool stroking_ = false;
   OccluderKeys pendingOccluder_;      // strokes before the occluder has both kinds

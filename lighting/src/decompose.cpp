@@ -125,10 +125,9 @@ double pixelNoiseSigma(const ImageF& img, const std::vector<uint8_t>& use) {
 namespace {
 
 // The solver's inputs checked: sizes, masks and weights (decomposeIntrinsic's contract).
-std::optional<Error> checkSolverInput(const ImageF& photo, const ImageF& gathered,
-                                      const ImageF& rho0, const std::vector<uint8_t>& valid,
-                                      const std::vector<uint8_t>& clipped,
-                                      const DecomposeOptions& opt) {
+std::optional<Error> checkSolverInput(const ImageF& photo, const ImageF& gathered, const ImageF& rho0,
+                                      const std::vector<uint8_t>& valid,
+                                      const std::vector<uint8_t>& clipped, const DecomposeOptions& opt) {
   const int W = photo.width, H = photo.height;
   if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "photo", "the photo is empty"};
   if (gathered.width != W || gathered.height != H || gathered.channels < 3)
@@ -292,7 +291,8 @@ float PrimalDualSolver::lap(const std::vector<float>& u, size_t i, int x, int y)
 }
 
 // Gradient of the smooth part at `xs` into `out`, given p.q = Gamma xs - B.
-void PrimalDualSolver::gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const {
+void PrimalDualSolver::gradFfromQ(Plane& p, const std::vector<float>& xs,
+                                  std::vector<float>& out) const {
   forRows(H, [&](int y) {
     for (int x = 0; x < W; ++x) {
       const size_t i = size_t(y) * W + x;
@@ -475,8 +475,8 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
                                               const DecomposeOptions& opt) {
   const auto t0 = Clock::now();
   if (auto error = checkSolverInput(photo, gathered, rho0, valid, clipped, opt)) return *error;
-  PrimalDualSolver solver(photo.width, photo.height,
-                          objectiveUnit(photo, gathered, valid, clipped, opt), opt);
+  PrimalDualSolver solver(photo.width, photo.height, objectiveUnit(photo, gathered, valid, clipped, opt),
+                          opt);
   solver.load(photo, gathered, rho0, valid, clipped);
   Decomposition out;
   solver.iterate(out, t0);
@@ -484,7 +484,6 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
   out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return out;
 }
-
 
 // Largest albedo a pixel allows: 1, and rho * Gamma <= B where B is a measurement (not clipped).
 float albedoCap(float b, float g, bool clippedPixel) {
@@ -547,9 +546,9 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   const int f = opt.maxSolvePixels > 0 && N > size_t(opt.maxSolvePixels)
                     ? int(std::ceil(std::sqrt(double(N) / double(opt.maxSolvePixels))))
                     : 1;
-  if (f <= 1 || gathered.width != W || gathered.height != H || rho0.width != W ||
-      rho0.height != H || valid.size() != N || (!clipped.empty() && clipped.size() != N) ||
-      photo.channels < 3 || gathered.channels < 3 || rho0.channels < 3)
+  if (f <= 1 || gathered.width != W || gathered.height != H || rho0.width != W || rho0.height != H ||
+      valid.size() != N || (!clipped.empty() && clipped.size() != N) || photo.channels < 3 ||
+      gathered.channels < 3 || rho0.channels < 3)
     return solveAtFullResolution(photo, gathered, rho0, valid, clipped, opt);
   // A large photo: the solver runs on f x f block means, and its change to the start is carried
   // back bilinearly onto the full-resolution start (which keeps the photo's fine texture), then
@@ -567,7 +566,8 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c) {
         const bool lower = !clippedS.empty() && clippedS[size_t(y) * w + x];
-        const float start = std::clamp(r0s.at(x, y, c), 0.f, albedoCap(Bs.at(x, y, c), Gs.at(x, y, c), lower));
+        const float start =
+            std::clamp(r0s.at(x, y, c), 0.f, albedoCap(Bs.at(x, y, c), Gs.at(x, y, c), lower));
         change.at(x, y, c) = small->albedo.at(x, y, c) - start;
       }
   Decomposition out;

@@ -47,8 +47,12 @@ struct BounceTerm {
 struct LogResidual {
   LogResidual(double logBIn, double gammaIn, std::vector<double> eIn, bool lowerBoundOnlyIn = false,
               double gammaClippedIn = -1, std::vector<BounceTerm> bounceIn = {})
-      : logB(logBIn), gamma(gammaIn), e(std::move(eIn)), lowerBoundOnly(lowerBoundOnlyIn),
-        gammaClipped(gammaClippedIn), bounce(std::move(bounceIn)) {}
+      : logB(logBIn),
+        gamma(gammaIn),
+        e(std::move(eIn)),
+        lowerBoundOnly(lowerBoundOnlyIn),
+        gammaClipped(gammaClippedIn),
+        bounce(std::move(bounceIn)) {}
   template <class T>
   bool operator()(T const* const* params, T* residual) const {
     // params[0]: rho (1), params[1..]: light radiance channel (1 each), then (when
@@ -86,8 +90,7 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
   std::vector<Vec3> out(albedo.size());
   for (size_t s = 0; s < albedo.size(); ++s) {
     const SurfaceKind k = geometry.surfaces[s].kind;
-    out[s] = weight[s] > 0 ? albedo[s]
-                           : (isWall(k) || k == SurfaceKind::Ceiling ? wallMean : roomMean);
+    out[s] = weight[s] > 0 ? albedo[s] : (isWall(k) || k == SurfaceKind::Ceiling ? wallMean : roomMean);
   }
   return out;
 }
@@ -167,16 +170,15 @@ std::string offSurfaceMessage(const Camera& camera, const SceneGeometry& g,
                               size_t i, int surface, double den) {
   const std::string on = surfaceText(g, surface), here = surfaceText(g, hits[i].surfaceId);
   const SurfaceKind kind = g.surfaces[size_t(surface)].kind;
-  std::string out = "point " + std::to_string(i) + " " + pixelText(outlinePx[i]) + " lies on " +
-                    here + ", but most of the outline lies on " + on + ", whose plane its ray " +
+  std::string out = "point " + std::to_string(i) + " " + pixelText(outlinePx[i]) + " lies on " + here +
+                    ", but most of the outline lies on " + on + ", whose plane its ray " +
                     (std::abs(den) < 1e-9 ? "runs along" : "meets only behind the camera") +
                     ": the outline cannot lie on one surface. ";
   if (isBoxSurface(kind))
     out += "Either the room box puts " + on + " where the photo does not show it (" +
            roomBoxAdvice(camera, g.box, kind) + "), or the outline crosses onto " + here +
            " (outline the light within one surface)";
-  else
-    out += "Outline the light within one surface";
+  else out += "Outline the light within one surface";
   if (kind == SurfaceKind::Floor || kind == SurfaceKind::Ceiling) {
     const double y = horizonRowPx(camera, outlinePx[i].x());
     if (std::isfinite(y)) {
@@ -194,8 +196,7 @@ std::string offSurfaceMessage(const Camera& camera, const SceneGeometry& g,
 
 Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
                                      const std::vector<Vec2>& outlinePx, const std::string& key) {
-  if (outlinePx.size() < 3)
-    return Error{"", key, "a light outline needs at least 3 points"};
+  if (outlinePx.size() < 3) return Error{"", key, "a light outline needs at least 3 points"};
   std::vector<SurfaceHit> hits;
   std::vector<int> count(geometry.surfaces.size(), 0);
   for (size_t i = 0; i < outlinePx.size(); ++i) {
@@ -280,12 +281,25 @@ struct LightingFit {
               const std::vector<AreaLight>& lightsGiven, const std::vector<bool>& refineGiven,
               const ImageF& lightMaskIn, const std::vector<SunLight>& sunsIn,
               const LightingOptions& options)
-      : photo(photoIn), camera(cameraIn), geometry(geometryIn), lightsIn(lightsGiven),
-        refineIn(refineGiven), lightMask(lightMaskIn), suns(sunsIn), opt(options),
-        W(photoIn.width), H(photoIn.height), S(geometryIn.surfaces.size()), J(lightsGiven.size()),
-        K(sunsIn.size()), C(lightsGiven.size() + sunsIn.size()), tracer(geometryIn),
-        stride(std::max(1, options.gatherStride)), GW((W + stride - 1) / stride),
-        GH((H + stride - 1) / stride), gatherSamples(options.gatherSamples) {}
+      : photo(photoIn),
+        camera(cameraIn),
+        geometry(geometryIn),
+        lightsIn(lightsGiven),
+        refineIn(refineGiven),
+        lightMask(lightMaskIn),
+        suns(sunsIn),
+        opt(options),
+        W(photoIn.width),
+        H(photoIn.height),
+        S(geometryIn.surfaces.size()),
+        J(lightsGiven.size()),
+        K(sunsIn.size()),
+        C(lightsGiven.size() + sunsIn.size()),
+        tracer(geometryIn),
+        stride(std::max(1, options.gatherStride)),
+        GW((W + stride - 1) / stride),
+        GH((H + stride - 1) / stride),
+        gatherSamples(options.gatherSamples) {}
 
   // Inputs.
   const ImageF& photo;
@@ -481,7 +495,8 @@ bool LightingFit::computeDirectLight() {
     for (int gy = rows.begin(); gy < rows.end(); ++gy) {
       if (stop()) return;
       for (int gx = 0; gx < GW; ++gx) {
-        const int x = std::min(W - 1, gx * stride + stride / 2), y = std::min(H - 1, gy * stride + stride / 2);
+        const int x = std::min(W - 1, gx * stride + stride / 2),
+                  y = std::min(H - 1, gy * stride + stride / 2);
         const auto& p = ps[size_t(y) * W + x];
         const size_t g = size_t(gy) * GW + gx;
         gridSurface[g] = p.surface;
@@ -494,11 +509,12 @@ bool LightingFit::computeDirectLight() {
   if (stop()) return false;
   E.assign(size_t(W) * H * std::max<size_t>(C, 1), 0.0);
   if (J > 0)
-    spread(int(J), [&](size_t g, int d) { return gridE[g * J + size_t(d)]; },
-           [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * C]); },
-           [&](int x, int y, double* v) {
-             for (size_t j = 0; j < J; ++j) v[j] = lightE(ps[size_t(y) * W + x], j, uint32_t(y * W + x));
-           });
+    spread(
+        int(J), [&](size_t g, int d) { return gridE[g * J + size_t(d)]; },
+        [&](int x, int y, const double* v) { std::copy(v, v + J, &E[(size_t(y) * W + x) * C]); },
+        [&](int x, int y, double* v) {
+          for (size_t j = 0; j < J; ++j) v[j] = lightE(ps[size_t(y) * W + x], j, uint32_t(y * W + x));
+        });
   // Suns at every pixel: one ray each, and the shaft's edge stays sharp.
   if (K > 0)
     parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
@@ -507,8 +523,8 @@ bool LightingFit::computeDirectLight() {
           const auto& p = ps[size_t(y) * W + x];
           if (p.surface < 0) continue;
           for (size_t k = 0; k < K; ++k)
-            E[(size_t(y) * W + x) * C + J + k] = unitSunIrradianceOverPi(
-                tracer, geometry, suns[k], p.point + 1e-5 * p.normal, p.normal);
+            E[(size_t(y) * W + x) * C + J + k] =
+                unitSunIrradianceOverPi(tracer, geometry, suns[k], p.point + 1e-5 * p.normal, p.normal);
         }
     });
   if (stop()) return false;
@@ -535,7 +551,8 @@ void LightingFit::spread(int dims, const std::function<double(size_t g, int d)>&
         const auto& p = ps[size_t(y) * W + x];
         if (p.surface < 0) continue;
         const double fx = (x + 0.5) / stride - 0.5, fy = (y + 0.5) / stride - 0.5;
-        const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1), gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
+        const int gx0 = std::clamp(int(std::floor(fx)), 0, GW - 1),
+                  gy0 = std::clamp(int(std::floor(fy)), 0, GH - 1);
         const double ax = std::clamp(fx - gx0, 0.0, 1.0), ay = std::clamp(fy - gy0, 0.0, 1.0);
         double wsum = 0;
         std::fill(v.begin(), v.end(), 0.0);
@@ -550,8 +567,7 @@ void LightingFit::spread(int dims, const std::function<double(size_t g, int d)>&
           }
         if (wsum > 0)
           for (double& e : v) e /= wsum;
-        else
-          compute(x, y, v.data());
+        else compute(x, y, v.data());
         store(x, y, v.data());
       }
   });
@@ -583,9 +599,10 @@ Vec3 LightingFit::radianceAt(const SurfaceHit& h, uint32_t sampleId) const {
       if (sunApart) return beamRadianceNoSun[idx];
       return beamRadiance.empty() ? b : beamRadiance[idx];
     }
-    return saturated(x, y) ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0], 1 + clippedGainApplied[1],
-                                                      1 + clippedGainApplied[2])))
-                           : b;
+    return saturated(x, y)
+               ? Vec3(b.cwiseProduct(Vec3(1 + clippedGainApplied[0], 1 + clippedGainApplied[1],
+                                          1 + clippedGainApplied[2])))
+               : b;
   }
   if (!model.active) return surfaceRadiance[h.surfaceId];
   // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
@@ -597,9 +614,9 @@ Vec3 LightingFit::radianceAt(const SurfaceHit& h, uint32_t sampleId) const {
                   tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
                                                    h.normalWorld, 1, sampleId * 31u + uint32_t(j));
   for (size_t k = 0; k < K && !sunApart; ++k)
-    irradiance += model.lights[J + k] *
-                  unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
-                                          h.normalWorld);
+    irradiance += model.lights[J + k] * unitSunIrradianceOverPi(tracer, geometry, suns[k],
+                                                                h.pointWorld + 1e-5 * h.normalWorld,
+                                                                h.normalWorld);
   return model.rho[h.surfaceId].cwiseProduct(irradiance);
 }
 
@@ -623,8 +640,8 @@ RadianceAt LightingFit::sunBounceAt(size_t k, int surface) const {
     if (h.surfaceId != surface) return Vec3::Zero();
     if (const long seen = seenPixel(h); seen >= 0)
       return clippedInBeam[size_t(seen)] ? Vec3::Constant(E[size_t(seen) * C + J + k]) : Vec3::Zero();
-    return Vec3::Constant(unitSunIrradianceOverPi(tracer, geometry, suns[k], h.pointWorld + 1e-5 * h.normalWorld,
-                                                  h.normalWorld));
+    return Vec3::Constant(unitSunIrradianceOverPi(tracer, geometry, suns[k],
+                                                  h.pointWorld + 1e-5 * h.normalWorld, h.normalWorld));
   };
 }
 
@@ -644,12 +661,13 @@ ImageF LightingFit::gatherImage(const RadianceAt& radiance) {
     }
   });
   ImageF image(W, H, 3, 0.f);
-  spread(3, [&](size_t g, int d) { return grid[g][d]; },
-         [&](int x, int y, const double* v) { image.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
-         [&](int x, int y, double* v) {
-           const Vec3 g = gatherAt(x, y);
-           v[0] = g[0], v[1] = g[1], v[2] = g[2];
-         });
+  spread(
+      3, [&](size_t g, int d) { return grid[g][d]; },
+      [&](int x, int y, const double* v) { image.setRgb(x, y, Vec3(v[0], v[1], v[2])); },
+      [&](int x, int y, double* v) {
+        const Vec3 g = gatherAt(x, y);
+        v[0] = g[0], v[1] = g[1], v[2] = g[2];
+      });
   return image;
 }
 
@@ -658,7 +676,8 @@ ImageF LightingFit::gatherImage(const RadianceAt& radiance) {
 void LightingFit::gatherAll() {
   out.gathered = gatherImage([this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); });
   if (fitClipped)
-    gatheredClipped = gatherImage([this](const SurfaceHit& h, uint32_t) { return clippedRadianceAt(h); });
+    gatheredClipped =
+        gatherImage([this](const SurfaceHit& h, uint32_t) { return clippedRadianceAt(h); });
   sunPatches.clear();
   if (!sunApart) return;
   // The surfaces each sun lights: where it clips in the photo, and where its beam meets a
@@ -671,7 +690,8 @@ void LightingFit::gatherAll() {
   const SurfacePatches& P = model.patches;
   for (size_t i = 0; i < P.point.size(); ++i)
     for (size_t k = 0; k < K; ++k)
-      if (unitSunIrradianceOverPi(tracer, geometry, suns[k], P.point[i] + 1e-4 * P.normal[i], P.normal[i]) > 0)
+      if (unitSunIrradianceOverPi(tracer, geometry, suns[k], P.point[i] + 1e-4 * P.normal[i],
+                                  P.normal[i]) > 0)
         patchOn[size_t(P.surface[i]) * K + k] = 1;
   for (size_t k = 0; k < K; ++k)
     for (size_t s = 0; s < S; ++s)
@@ -746,7 +766,8 @@ void LightingFit::chooseGatherSamples() {
     GatherSampleCountOptions go;
     go.relativeNoise = opt.gatherNoise;
     gatherSamples = gatherSamplesForNoise(
-        tracer, pilot, opt.seed, [this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); }, go);
+        tracer, pilot, opt.seed, [this](const SurfaceHit& h, uint32_t id) { return radianceAt(h, id); },
+        go);
   }
   out.gatherSamples = gatherSamples;
 }
@@ -817,8 +838,8 @@ void LightingFit::predictUnseenFromFit() {
   if (!clippedInBeam.empty()) {
     beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
                                          out.lights, out.suns, true);
-    beamRadianceNoSun = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered,
-                                              E, out.lights, out.suns, false);
+    beamRadianceNoSun = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
+                                              out.lights, out.suns, false);
   }
   model.lights.clear();
   for (const auto& l : out.lights) model.lights.push_back(l.radiance);
@@ -856,8 +877,7 @@ bool LightingFit::fit() {
   const double start = fitStartRadiance();
   // A light kept as given starts (and stays) at its radiance; the others start at `start`.
   for (size_t j = 0; j < C; ++j)
-    for (int c = 0; c < 3; ++c)
-      L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
+    for (int c = 0; c < 3; ++c) L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
   for (auto& r : rho) r = {0.5, 0.5, 0.5};
   clippedGain = {0, 0, 0};
   double cost = 0, count = 0;
@@ -989,7 +1009,8 @@ void LightingFit::perPixelAlbedo() {
       }
       out.albedo.setRgb(x, y, a);
       const Vec3 b = photo.rgb(x, y);
-      out.direct.setRgb(x, y, b.allFinite() ? Vec3((b - a.cwiseProduct(g)).cwiseMax(0.0)) : Vec3::Zero());
+      out.direct.setRgb(x, y,
+                        b.allFinite() ? Vec3((b - a.cwiseProduct(g)).cwiseMax(0.0)) : Vec3::Zero());
     }
   out.physicalAlbedo = out.albedo;
 }
@@ -1146,7 +1167,8 @@ ImageF Decomposer::anchoredRetinex(const ImageF& image, const std::vector<uint8_
       if (f.ps[idx].surface < 0) continue;
       for (int c = 0; c < 3; ++c) {
         // Lamps and clipped pixels carry no reflectance: the fallback stands.
-        const float r = use[idx] ? float(scale[c] * rel.at(x, y, c)) : (fallback ? *fallback : physical).at(x, y, c);
+        const float r = use[idx] ? float(scale[c] * rel.at(x, y, c))
+                                 : (fallback ? *fallback : physical).at(x, y, c);
         a.at(x, y, c) = std::clamp(std::isfinite(r) ? r : 0.5f, 0.f, 1.f);
       }
     }
@@ -1212,8 +1234,7 @@ void Decomposer::surfaceMeanAlbedo() {
 Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& camera,
                                             const SceneGeometry& geometry,
                                             const std::vector<AreaLight>& lightsIn,
-                                            const std::vector<bool>& refineIn,
-                                            const ImageF& lightMask,
+                                            const std::vector<bool>& refineIn, const ImageF& lightMask,
                                             const std::vector<SunLight>& suns,
                                             const LightingOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -1221,8 +1242,8 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
     return Error{"", "photo", "the photo is empty"};
   std::unique_ptr<tbb::global_control> threadLimit;
   if (opt.threads > 0)
-    threadLimit = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, size_t(opt.threads));
+    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                        size_t(opt.threads));
   auto cancelled = [] { return Error{"", "", "cancelled"}; };
 
   LightingFit fit(photo, camera, geometry, lightsIn, refineIn, lightMask, suns, opt);
@@ -1250,8 +1271,8 @@ ImageF radianceForBounces(const ImageF& photo, const Camera& camera, const Scene
                           const LightingEstimate& lighting, double saturatedAbove) {
   ImageF out = photo;
   const int W = photo.width, H = photo.height;
-  if (lighting.suns.empty() || photo.channels < 3 || lighting.albedo.width != W || lighting.albedo.height != H ||
-      lighting.gathered.width != W || lighting.gathered.height != H)
+  if (lighting.suns.empty() || photo.channels < 3 || lighting.albedo.width != W ||
+      lighting.albedo.height != H || lighting.gathered.width != W || lighting.gathered.height != H)
     return out;
   const RoomTracer tracer(geometry);
   // The light fit's albedo: at clipped pixels its surface's, fitted with the suns' strengths
@@ -1270,7 +1291,8 @@ ImageF radianceForBounces(const ImageF& photo, const Camera& camera, const Scene
         const Vec3 p = h->pointWorld + 1e-5 * h->normalWorld;
         Vec3 sunlight = Vec3::Zero();
         for (const SunLight& sun : lighting.suns)
-          sunlight += sun.irradianceOverPi * unitSunIrradianceOverPi(tracer, geometry, sun, p, h->normalWorld);
+          sunlight += sun.irradianceOverPi *
+                      unitSunIrradianceOverPi(tracer, geometry, sun, p, h->normalWorld);
         if (!(sunlight.maxCoeff() > 0)) continue;  // clipped but no sun: a window or a lamp
         Vec3 irradiance = lighting.gathered.rgb(x, y) + sunlight;
         for (size_t j = 0; j < lighting.lights.size(); ++j)

@@ -23,9 +23,9 @@ double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.072
 
 }  // namespace
 
-GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point,
-                                    const Vec3& normal, int samples, uint32_t pixelId,
-                                    uint32_t seed, const RadianceAt& radianceAt) {
+GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point, const Vec3& normal,
+                                    int samples, uint32_t pixelId, uint32_t seed,
+                                    const RadianceAt& radianceAt) {
   const int nSide = std::max(1, int(std::lround(std::sqrt(double(std::max(samples, 1))))));
   const Vec3 t = (std::abs(normal.x()) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)).cross(normal).normalized();
   const Vec3 b = normal.cross(t);
@@ -36,8 +36,9 @@ GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point,
       const double u1 = (i + uniform(pixelId, seed, 2 * s)) / nSide;
       const double u2 = (k + uniform(pixelId, seed, 2 * s + 1)) / nSide;
       const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
-      const Vec3 d = (r * std::cos(phi) * t + r * std::sin(phi) * b +
-                      std::sqrt(std::max(0.0, 1 - u1)) * normal).normalized();
+      const Vec3 d =
+          (r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1 - u1)) * normal)
+              .normalized();
       const auto h = tracer.intersect(Ray{point + 1e-5 * normal, d}, 1e-5);
       Vec3 L = Vec3::Zero();
       if (h) L = radianceAt(*h, pixelId * 1024u + s);
@@ -54,9 +55,9 @@ GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point,
   return g;
 }
 
-int gatherSamplesForNoise(const RoomTracer& tracer,
-                          const std::vector<std::pair<Vec3, Vec3>>& points, uint32_t seed,
-                          const RadianceAt& radianceAt, const GatherSampleCountOptions& o) {
+int gatherSamplesForNoise(const RoomTracer& tracer, const std::vector<std::pair<Vec3, Vec3>>& points,
+                          uint32_t seed, const RadianceAt& radianceAt,
+                          const GatherSampleCountOptions& o) {
   double need = 0;
   int n = 0;
   for (size_t i = 0; i < points.size(); ++i) {

@@ -172,9 +172,8 @@ std::vector<float> poissonNeumannDct(const std::vector<float>& div, int W, int H
   return u;
 }
 
-std::vector<float> poissonNeumannMultigrid(const std::vector<float>& f, int W, int H,
-                                           double tolerance, int maxCycles,
-                                           PoissonReport* report) {
+std::vector<float> poissonNeumannMultigrid(const std::vector<float>& f, int W, int H, double tolerance,
+                                           int maxCycles, PoissonReport* report) {
   std::vector<Level> levels(1);
   levels[0].w = W, levels[0].h = H;
   levels[0].f = f;

@@ -33,10 +33,10 @@ struct GridPixel {
 // A light free to move: its box bounds in normalised room units and which axes can move.
 struct FreeLight {
   int index = 0;
-  Vec3 lo, hi;            // bounds of the normalised centre
-  Vec3 start;             // normalised centre at the start (after moving it into the room)
+  Vec3 lo, hi;  // bounds of the normalised centre
+  Vec3 start;   // normalised centre at the start (after moving it into the room)
   std::vector<int> fixedAxes;
-  bool size = false;      // its two edge lengths are parameters too (LightRefineSpec::refineSize)
+  bool size = false;         // its two edge lengths are parameters too (LightRefineSpec::refineSize)
   double logScaleBound = 0;  // |log scale| <= this
   int dims() const { return size ? 5 : 3; }
   double lower(int a) const { return a < 3 ? lo[a] : -logScaleBound; }
@@ -74,8 +74,15 @@ class Refinement {
              const std::vector<LightRefineSpec>& specs, std::vector<SunLight> suns,
              std::vector<std::vector<Vec3>> sunE, const LightRefineOptions& opt, Vec3 boxLo,
              Vec3 boxSize)
-      : tracer_(tracer), px_(std::move(px)), lights_(std::move(lights)), specs_(specs),
-        suns_(std::move(suns)), sunE_(std::move(sunE)), opt_(opt), boxLo_(boxLo), boxSize_(boxSize) {
+      : tracer_(tracer),
+        px_(std::move(px)),
+        lights_(std::move(lights)),
+        specs_(specs),
+        suns_(std::move(suns)),
+        sunE_(std::move(sunE)),
+        opt_(opt),
+        boxLo_(boxLo),
+        boxSize_(boxSize) {
     const size_t J = lights_.size();
     cache_.resize(J);
     for (size_t j = 0; j < J; ++j) {
@@ -128,9 +135,11 @@ class Refinement {
       for (size_t i = 0; i < px_.size(); ++i) shading[i] += e[i] * lights_[j].radiance;
     }
     for (size_t k = 0; k < suns_.size(); ++k)
-      for (size_t i = 0; i < px_.size(); ++i) shading[i] += sunE_[k][i].cwiseProduct(suns_[k].irradianceOverPi);
+      for (size_t i = 0; i < px_.size(); ++i)
+        shading[i] += sunE_[k][i].cwiseProduct(suns_[k].irradianceOverPi);
     double z = 0;
-    for (size_t i = 0; i < px_.size(); ++i) z += px_[i].weight * px_[i].rho.cwiseProduct(shading[i]).squaredNorm();
+    for (size_t i = 0; i < px_.size(); ++i)
+      z += px_[i].weight * px_[i].rho.cwiseProduct(shading[i]).squaredNorm();
     return z;
   }
   Vec3 startCentre(int j) const { return lights_[size_t(j)].centre(); }
@@ -156,7 +165,8 @@ class Refinement {
     return slots[0].E;
   }
 
-  std::vector<double> irradianceUncached(int j, const Vec3& centre, const Vec2& logScale = Vec2::Zero()) {
+  std::vector<double> irradianceUncached(int j, const Vec3& centre,
+                                         const Vec2& logScale = Vec2::Zero()) {
     const AreaLight L = posedLight(lights_[size_t(j)], centre, logScale);
     std::vector<double> e(px_.size(), 0.0);
     parallelFor(tbb::blocked_range<size_t>(0, px_.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -173,9 +183,8 @@ class Refinement {
   // Residuals for the given irradiance of each moving light (others from the cache):
   // intensities by NNLS, then the weighted data residuals and the priors. `radiance` receives
   // the solved intensities of the unlocked lights when not null.
-  void residuals(const std::vector<const std::vector<double>*>& lightE,
-                 const std::vector<Pose>& poses, double* r,
-                 std::vector<Vec3>* radiance = nullptr) const {
+  void residuals(const std::vector<const std::vector<double>*>& lightE, const std::vector<Pose>& poses,
+                 double* r, std::vector<Vec3>* radiance = nullptr) const {
     const size_t U = unknownCount(), N = px_.size();
     // Unit shading of unknown u at pixel i, channel c.
     auto column = [&](size_t u, size_t i, int c) {
@@ -220,7 +229,8 @@ class Refinement {
       for (int a = 0; a < 3; ++a) r[k++] = sw * (poses[m].centre[a] - free_[m].start[a]);
       // The size prior: w_size |log scale|^2 (a halving costs as much as a doubling).
       if (free_[m].size)
-        for (int a = 0; a < 2; ++a) r[k++] = std::sqrt(opt_.prior * spec.sizeWeight) * poses[m].logScale[a];
+        for (int a = 0; a < 2; ++a)
+          r[k++] = std::sqrt(opt_.prior * spec.sizeWeight) * poses[m].logScale[a];
     }
     for (size_t u = 0; u < U; ++u) {
       const double sw = std::sqrt(opt_.prior * intensityWeight(u)) / scaleOf(u);
@@ -271,8 +281,8 @@ double refineRowWeight(double y, int height) {
   return t * t;
 }
 
-std::vector<double> nonNegativeLeastSquares(const std::vector<double>& Min, const std::vector<double>& qin,
-                                            int n) {
+std::vector<double> nonNegativeLeastSquares(const std::vector<double>& Min,
+                                            const std::vector<double>& qin, int n) {
   std::vector<double> x(size_t(std::max(n, 0)), 0.0);
   if (n <= 0) return x;
   const Eigen::Map<const Eigen::MatrixXd> M(Min.data(), n, n);
@@ -371,7 +381,8 @@ class RefineCost : public ceres::CostFunction {
         const double h = poses[m][a] + step_ > f.upper(a) ? -step_ : step_;
         std::vector<Pose> moved = poses;
         moved[m][a] += h;
-        const std::vector<double> e = r_.irradianceUncached(f.index, r_.centreOf(moved[m].centre), moved[m].logScale);
+        const std::vector<double> e =
+            r_.irradianceUncached(f.index, r_.centreOf(moved[m].centre), moved[m].logScale);
         E[size_t(f.index)] = &e;
         r_.residuals(E, moved, plus.data());
         E[size_t(f.index)] = keep;
@@ -393,7 +404,8 @@ namespace {
 // Records the objective per iteration and stops on cancel.
 class RefineCallback : public ceres::IterationCallback {
  public:
-  RefineCallback(Clock::time_point t0, const CancelToken* cancel, std::vector<LightRefineSample>* history)
+  RefineCallback(Clock::time_point t0, const CancelToken* cancel,
+                 std::vector<LightRefineSample>* history)
       : t0_(t0), cancel_(cancel), history_(history) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     // An unsuccessful step reports its rejected candidate's cost: only accepted points count.
@@ -416,8 +428,8 @@ double sumSquares(const std::vector<double>& r, size_t from, size_t to) {
 
 // The light's centre interval along each axis that keeps its corners `margin` inside the box
 // [lo, hi]; an axis where the light does not fit is pinned at its centre.
-void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double margin, Vec3* cLo, Vec3* cHi,
-                  std::vector<int>* pinned) {
+void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double margin, Vec3* cLo,
+                  Vec3* cHi, std::vector<int>* pinned) {
   const Vec3 c = L.centre();
   Vec3 mn = c, mx = c;
   for (const Vec3& p : L.cornersWorld) mn = mn.cwiseMin(p), mx = mx.cwiseMax(p);
@@ -430,7 +442,6 @@ void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double mar
     }
   }
 }
-
 
 // The room box the lights stay in; light positions are normalised to it.
 struct RoomFrame {
@@ -449,7 +460,8 @@ Expected<RoomFrame> roomFrameOf(const SceneGeometry& geometry) {
 Status checkRefineInput(const ImageF& albedo, const ImageF& direct, const std::vector<uint8_t>& usable,
                         const std::vector<SunLight>& suns, const LightRefineOptions& opt) {
   const int W = direct.width, H = direct.height;
-  if (direct.empty() || direct.channels < 3) return Error{"", "direct", "the direct-light image is empty"};
+  if (direct.empty() || direct.channels < 3)
+    return Error{"", "direct", "the direct-light image is empty"};
   if (albedo.width != W || albedo.height != H || albedo.channels < 3)
     return Error{"", "albedo", "the albedo image does not match the direct-light image"};
   if (!usable.empty() && usable.size() != size_t(W) * H)
@@ -464,7 +476,8 @@ Status checkRefineInput(const ImageF& albedo, const ImageF& direct, const std::v
       return Error{"", "suns[" + std::to_string(k) + "]", "the sun's strength is not a finite number"};
     if (k < opt.sunBounce.size() && !opt.sunBounce[k].empty() &&
         (opt.sunBounce[k].width != W || opt.sunBounce[k].height != H || opt.sunBounce[k].channels < 3))
-      return Error{"", "suns[" + std::to_string(k) + "]", "the sun's bounce image does not match the direct-light image"};
+      return Error{"", "suns[" + std::to_string(k) + "]",
+                   "the sun's bounce image does not match the direct-light image"};
   }
   return {};
 }
@@ -485,8 +498,9 @@ Expected<std::vector<FreeLight>> freeLightsInRoom(std::vector<AreaLight>& lights
     if (!finite) return Error{"", key, "the light's corners or intensity are not finite numbers"};
     if (!(L.area() > 0)) return Error{"", key, "the light has no area"};
     const LightRefineSpec& s = specs[j];
-    if (!(s.positionWeight >= 0 && s.intensityWeight >= 0 && s.sizeWeight >= 0 && std::isfinite(s.positionWeight) &&
-          std::isfinite(s.intensityWeight) && std::isfinite(s.sizeWeight)))
+    if (!(s.positionWeight >= 0 && s.intensityWeight >= 0 && s.sizeWeight >= 0 &&
+          std::isfinite(s.positionWeight) && std::isfinite(s.intensityWeight) &&
+          std::isfinite(s.sizeWeight)))
       return Error{"", key + ".weights", "weights must be finite and non-negative"};
     L.radiance = L.radiance.cwiseMax(0.0);
     if (s.lock) continue;
@@ -547,7 +561,8 @@ std::vector<GridPixel> reducedGrid(const Camera& camera, const RoomTracer& trace
 // strength), so it goes back into each pixel's target at that strength.
 std::vector<std::vector<Vec3>> sunShadingOnGrid(const RoomTracer& tracer, const SceneGeometry& geometry,
                                                 const std::vector<SunLight>& suns,
-                                                const LightRefineOptions& opt, std::vector<GridPixel>& px) {
+                                                const LightRefineOptions& opt,
+                                                std::vector<GridPixel>& px) {
   std::vector<std::vector<Vec3>> sunE(suns.size(), std::vector<Vec3>(px.size(), Vec3::Zero()));
   for (size_t k = 0; k < suns.size(); ++k)
     parallelFor(tbb::blocked_range<size_t>(0, px.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
@@ -584,7 +599,8 @@ void normaliseData(Refinement& problem, double Z, std::vector<std::string>& note
 
 // An unlocked light that lights no grid pixel keeps its start intensity (its prior): a note.
 void noteLightsThatLightNothing(Refinement& problem, const std::vector<AreaLight>& lights,
-                                const std::vector<LightRefineSpec>& specs, std::vector<std::string>& notes) {
+                                const std::vector<LightRefineSpec>& specs,
+                                std::vector<std::string>& notes) {
   for (size_t j = 0; j < lights.size(); ++j) {
     if (specs[j].lock) continue;
     const auto& e = problem.irradiance(int(j), lights[j].centre());
@@ -598,7 +614,9 @@ void noteLightsThatLightNothing(Refinement& problem, const std::vector<AreaLight
 // size is refined).
 class PoseBlocks {
  public:
-  explicit PoseBlocks(const std::vector<FreeLight>& free) : free_(free), blocks_(free.size()) { reset(); }
+  explicit PoseBlocks(const std::vector<FreeLight>& free) : free_(free), blocks_(free.size()) {
+    reset();
+  }
   // Back to the start.
   void reset() {
     for (size_t m = 0; m < free_.size(); ++m) {
@@ -636,7 +654,8 @@ void evaluateAt(Refinement& problem, const std::vector<AreaLight>& lights, const
   std::vector<Pose> poses(free.size());
   for (size_t m = 0; m < free.size(); ++m) {
     poses[m] = params.pose(m);
-    E[size_t(free[m].index)] = &problem.irradiance(free[m].index, problem.centreOf(poses[m].centre), poses[m].logScale);
+    E[size_t(free[m].index)] =
+        &problem.irradiance(free[m].index, problem.centreOf(poses[m].centre), poses[m].logScale);
   }
   for (size_t j = 0; j < E.size(); ++j)
     if (!E[j]) E[j] = &problem.irradiance(int(j), lights[j].centre());
@@ -657,7 +676,8 @@ std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefin
     if (!free[m].fixedAxes.empty())
       cp.SetManifold(params.block(m), new ceres::SubsetManifold(free[m].dims(), free[m].fixedAxes));
     for (int a = 0; a < free[m].dims(); ++a) {
-      if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end()) continue;
+      if (std::find(free[m].fixedAxes.begin(), free[m].fixedAxes.end(), a) != free[m].fixedAxes.end())
+        continue;
       cp.SetParameterLowerBound(params.block(m), a, free[m].lower(a));
       cp.SetParameterUpperBound(params.block(m), a, free[m].upper(a));
     }
@@ -687,8 +707,9 @@ std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefin
 // The refined lights into `out`: the free ones at their solved poses (a grown one kept inside
 // the room: the position bounds hold for its start size), each unknown's fitted intensity (area
 // lights, and the suns with refineSuns).
-void storeRefinedLights(const Refinement& problem, const PoseBlocks& params, const std::vector<Vec3>& radiance,
-                        const RoomFrame& room, const LightRefineOptions& opt, std::vector<AreaLight> lights,
+void storeRefinedLights(const Refinement& problem, const PoseBlocks& params,
+                        const std::vector<Vec3>& radiance, const RoomFrame& room,
+                        const LightRefineOptions& opt, std::vector<AreaLight> lights,
                         LightRefineResult& out) {
   const size_t areaLights = lights.size();
   out.lights = std::move(lights);
@@ -698,19 +719,20 @@ void storeRefinedLights(const Refinement& problem, const PoseBlocks& params, con
     L = posedLight(L, problem.centreOf(pose.centre), pose.logScale);
     if (problem.free_[m].size)
       for (auto& p : L.cornersWorld)
-        p = p.cwiseMax(room.lo + Vec3::Constant(opt.marginM)).cwiseMin(room.hi - Vec3::Constant(opt.marginM));
+        p = p.cwiseMax(room.lo + Vec3::Constant(opt.marginM))
+                .cwiseMin(room.hi - Vec3::Constant(opt.marginM));
   }
   for (size_t u = 0; u < radiance.size(); ++u) {
     const size_t t = problem.unknownTarget(u);
     const Vec3 v = radiance[u].allFinite() ? radiance[u] : Vec3::Zero();
-    if (problem.unknownIsSun(u))
-      out.suns[t - areaLights].irradianceOverPi = v;
-    else
-      out.lights[t].radiance = v;
+    if (problem.unknownIsSun(u)) out.suns[t - areaLights].irradianceOverPi = v;
+    else out.lights[t].radiance = v;
   }
 }
 
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 std::atomic<uint64_t> gRefinementRuns{0};
 
@@ -741,11 +763,13 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   // The problem on the reduced grid: the photo's direct light there, the suns' share of it.
   const RoomTracer tracer(geometry);
   std::vector<GridPixel> px = reducedGrid(camera, tracer, albedo, direct, usable, opt);
-  if (px.empty()) return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
+  if (px.empty())
+    return Error{"", "photo", "no pixel of the photo shows the room with usable direct light"};
   out.pixels = int(px.size());
   std::vector<std::vector<Vec3>> sunE = sunShadingOnGrid(tracer, geometry, suns, opt, px);
   const double Z = targetEnergy(px);  // with the suns' bounce put back
-  Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, room->lo, room->size);
+  Refinement problem(tracer, std::move(px), lights, specs, suns, std::move(sunE), opt, room->lo,
+                     room->size);
   problem.free_ = std::move(*free);
   normaliseData(problem, Z, out.notes);
   noteLightsThatLightNothing(problem, lights, specs, out.notes);

@@ -25,7 +25,8 @@ Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, cons
   for (double v : box)
     if (!std::isfinite(v)) return Error{"", key, "is not a finite number"};
   const int x0 = std::max(0, int(std::floor(box[0]))), y0 = std::max(0, int(std::floor(box[1])));
-  const int x1 = std::min(photo.width, int(std::ceil(box[2]))), y1 = std::min(photo.height, int(std::ceil(box[3])));
+  const int x1 = std::min(photo.width, int(std::ceil(box[2]))),
+            y1 = std::min(photo.height, int(std::ceil(box[3])));
   if (!(x1 - x0 >= 2 && y1 - y0 >= 2))
     return Error{"", key, "the box covers less than 2 x 2 pixels of the photo"};
   std::vector<BoxPixel> out;
@@ -39,12 +40,14 @@ Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, cons
       const auto h = geometry.intersect(r);
       if (!h) continue;
       const double cosv = std::max(0.05, std::abs(h->normalWorld.dot(r.direction)));
-      out.push_back({x, y, std::log(std::max(lum, 1e-5)), h->surfaceId, h->pointWorld, h->t * h->t / cosv});
+      out.push_back(
+          {x, y, std::log(std::max(lum, 1e-5)), h->surfaceId, h->pointWorld, h->t * h->t / cosv});
     }
   if (out.size() < 4)
     return Error{"", key,
                  "the box shows no surface of the room: draw it over the sunlit patch on the floor "
-                 "or a wall, or " + roomBoxAdvice(camera, geometry.box, SurfaceKind::WallBack)};
+                 "or a wall, or " +
+                     roomBoxAdvice(camera, geometry.box, SurfaceKind::WallBack)};
   return out;
 }
 
@@ -78,7 +81,8 @@ namespace {
 
 Vec4 planeOf(const Surface& s) {
   const auto& m = s.meshWorld;
-  const Vec3 a = m.positions[m.triangles[0][0]].cast<double>(), b = m.positions[m.triangles[0][1]].cast<double>(),
+  const Vec3 a = m.positions[m.triangles[0][0]].cast<double>(),
+             b = m.positions[m.triangles[0][1]].cast<double>(),
              c = m.positions[m.triangles[0][2]].cast<double>();
   Vec3 n = (b - a).cross(c - a).normalized();
   return Vec4(n.x(), n.y(), n.z(), -n.dot(a));
@@ -165,13 +169,14 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
   const Vec3 towardCamera = camera.centreWorld() - receiver.centroid;
   if (n.dot(towardCamera) < 0) n = -n;
   if (patch && !(n.dot(dir) < -1e-3))
-    return Error{"", key,
-                 "the light's direction does not reach the lit patch (on the " +
-                     geometry.surfaces[size_t(receiver.surface)].name +
-                     ") from inside the room: the window box and the patch box must be on the room's "
-                     "sides the sunlight passes between (the patch lit, the window it comes "
-                     "through), or " +
-                     roomBoxAdvice(camera, geometry.box, geometry.surfaces[size_t(receiver.surface)].kind)};
+    return Error{
+        "", key,
+        "the light's direction does not reach the lit patch (on the " +
+            geometry.surfaces[size_t(receiver.surface)].name +
+            ") from inside the room: the window box and the patch box must be on the room's "
+            "sides the sunlight passes between (the patch lit, the window it comes "
+            "through), or " +
+            roomBoxAdvice(camera, geometry.box, geometry.surfaces[size_t(receiver.surface)].kind)};
   out.sun.travelDirection = dir;
   out.sun.irradianceOverPi = Vec3(1, 1, 1);
   out.sun.receiverPlane = plane;

@@ -56,9 +56,10 @@ double solveStrength(const std::vector<LitSample>& lit, double q, double target)
 }  // namespace
 
 Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const Camera& camera,
-                                                    const SceneGeometry& geometry, const ImageF& gathered,
-                                                    const std::vector<AreaLight>& lights, const SunLight& sun,
-                                                    const SunRatioOptions& opt) {
+                                                    const SceneGeometry& geometry,
+                                                    const ImageF& gathered,
+                                                    const std::vector<AreaLight>& lights,
+                                                    const SunLight& sun, const SunRatioOptions& opt) {
   const int W = photo.width, H = photo.height;
   if (W <= 0 || H <= 0 || photo.channels < 3) return Error{"", "suns", "the photo is empty"};
   if (gathered.width != W || gathered.height != H || gathered.channels < 3)
@@ -68,8 +69,9 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
   parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < W; ++x) {
-        const auto h = tracer.intersect(
-            camera.rayThroughPixel(Vec2((x + 0.5) * camera.widthPx / W, (y + 0.5) * camera.heightPx / H)), 1e-6);
+        const auto h = tracer.intersect(camera.rayThroughPixel(Vec2((x + 0.5) * camera.widthPx / W,
+                                                                    (y + 0.5) * camera.heightPx / H)),
+                                        1e-6);
         if (!h) continue;
         PixelView& v = view[size_t(y) * W + x];
         v.surface = h->surfaceId;
@@ -85,8 +87,9 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
   std::map<int, int> litCount;
   for (const PixelView& v : view)
     if (v.sun > 0.5 * eMax) ++litCount[v.surface];
-  const int surface =
-      std::max_element(litCount.begin(), litCount.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+  const int surface = std::max_element(litCount.begin(), litCount.end(), [](auto& a, auto& b) {
+                        return a.second < b.second;
+                      })->first;
   // Lit: well inside the beam, away from other surfaces; shadowed: well outside it.
   cv::Mat litM(H, W, CV_8U, cv::Scalar(0)), beamM(H, W, CV_8U, cv::Scalar(0));
   for (int y = 0; y < H; ++y)
@@ -95,7 +98,9 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
       if (v.surface == surface && v.sun > 0.9 * eMax) litM.at<uint8_t>(y, x) = 1;
       if (v.sun > 0) beamM.at<uint8_t>(y, x) = 1;
     }
-  const auto square = [](int r) { return cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * r + 1, 2 * r + 1)); };
+  const auto square = [](int r) {
+    return cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * r + 1, 2 * r + 1));
+  };
   cv::erode(litM, litM, square(opt.erodePx));
   cv::dilate(beamM, beamM, square(opt.shadowGapPx));
   int y0 = H, y1 = -1;
@@ -113,15 +118,17 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
   out.litPixels = int(lit.size());
   out.shadowPixels = int(shadow.size());
   if (out.litPixels < opt.minPixels || out.shadowPixels < opt.minPixels)
-    return Error{"", "suns", "too few lit (" + std::to_string(lit.size()) + ") or shadowed (" +
-                                 std::to_string(shadow.size()) + ") pixels on the patch's surface"};
+    return Error{"", "suns",
+                 "too few lit (" + std::to_string(lit.size()) + ") or shadowed (" +
+                     std::to_string(shadow.size()) + ") pixels on the patch's surface"};
   // g: the gathered light plus the area lights' direct light.
   auto otherLight = [&](size_t i) {
     const int x = int(i % size_t(W)), y = int(i / size_t(W));
     Vec3 g = gathered.rgb(x, y).cast<double>();
     for (size_t j = 0; j < lights.size(); ++j)
-      g += lights[j].radiance * tracer.unitLightIrradianceOverPi(lights[j], view[i].point, view[i].normal,
-                                                                 opt.lightSamples, uint32_t(i) * 31u + uint32_t(j));
+      g += lights[j].radiance * tracer.unitLightIrradianceOverPi(lights[j], view[i].point,
+                                                                 view[i].normal, opt.lightSamples,
+                                                                 uint32_t(i) * 31u + uint32_t(j));
     return g;
   };
   std::vector<Vec3> gLit(lit.size()), gShadow(shadow.size());
@@ -146,7 +153,8 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
     }
     std::vector<double> rho;
     for (size_t k = 0; k < shadow.size(); ++k)
-      if (gShadow[k][c] > 0 && std::isfinite(gShadow[k][c])) rho.push_back(photoAt(shadow[k], c) / gShadow[k][c]);
+      if (gShadow[k][c] > 0 && std::isfinite(gShadow[k][c]))
+        rho.push_back(photoAt(shadow[k], c) / gShadow[k][c]);
     if (ls.size() < size_t(opt.minPixels) || rho.size() < size_t(opt.minPixels))
       return Error{"", "suns", "too few pixels with gathered light beside the sun's patch"};
     const double usable = opt.clippedShareUse * double(unclipped) / double(ls.size());
@@ -159,12 +167,14 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photo, const C
       if (target > 0 && std::isfinite(target)) votes.push_back(solveStrength(ls, q, target));
     }
     if (votes.empty())
-      return Error{"", "suns", "the sun's patch is clipped in channel " + std::to_string(c) +
-                                   " (too few unclipped pixels to compare with its shadow)"};
+      return Error{"", "suns",
+                   "the sun's patch is clipped in channel " + std::to_string(c) +
+                       " (too few unclipped pixels to compare with its shadow)"};
     out.quantilesUsed[c] = double(votes.size());
     out.strength[c] = quantile(votes, 0.5);
   }
-  if (!out.strength.allFinite()) return Error{"", "suns", "the lit/shadow ratio gave a non-finite strength"};
+  if (!out.strength.allFinite())
+    return Error{"", "suns", "the lit/shadow ratio gave a non-finite strength"};
   return out;
 }
 

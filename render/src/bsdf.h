@@ -9,8 +9,8 @@ namespace inlay::detail {
 
 struct BsdfSample {
   Vec3 dir;
-  Vec3 weight;        // f cos / pdf
-  double pdf = 0;     // solid angle; 0 for specular
+  Vec3 weight;     // f cos / pdf
+  double pdf = 0;  // solid angle; 0 for specular
   bool specular = false;
   bool valid = false;
 };
@@ -53,7 +53,8 @@ class GgxAlbedoTable {
     const int i = std::min(int(x), kSize - 2), j = std::min(int(y), kSize - 2);
     const double fx = x - i, fy = y - j;
     auto at = [&](int a, int b) { return e_[size_t(b) * kSize + size_t(a)]; };
-    return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) + fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+    return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) +
+           fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
   }
   double average(double alpha) const {
     const double y = std::clamp(std::sqrt(std::max(alpha, 0.0)), 0.0, 1.0) * (kSize - 1);
@@ -72,7 +73,8 @@ inline GgxAlbedoTable::GgxAlbedoTable() {
   for (int j = 0; j < kSize; ++j) {
     const double r = double(j) / (kSize - 1), alpha = std::max(1e-4, r * r);
     for (int i = 0; i < kSize; ++i) {
-      const double s = double(i) / (kSize - 1), mu = std::max(1e-4, s * s);  // grazing: the limit's neighbour
+      const double s = double(i) / (kSize - 1),
+                   mu = std::max(1e-4, s * s);  // grazing: the limit's neighbour
       const Vec3 wo(std::sqrt(1 - mu * mu), 0, mu);
       double sum = 0;
       for (int k = 0; k < kSamples; ++k) {
@@ -234,7 +236,8 @@ inline Vec3 roughGlassEval(const Vec3& wo, const Vec3& wi, double alpha, double 
   return Vec3::Constant(value);
 }
 
-inline BsdfSample sampleRoughGlass(const Vec3& wo, double alpha, double eta, double uLobe, double u1, double u2) {
+inline BsdfSample sampleRoughGlass(const Vec3& wo, double alpha, double eta, double uLobe, double u1,
+                                   double u2) {
   BsdfSample s;
   if (wo.z() <= 0) return s;
   const Vec3 h = sampleGgxHalfVector(alpha, u1, u2);

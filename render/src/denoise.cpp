@@ -68,8 +68,9 @@ bool touched(const DenoiseInput& in, size_t i) {
   const float* a = &in.withObjects->data[i * 3];
   const float* b = &in.withoutObjects->data[i * 3];
   const DifferentialBuffers& s = *in.buffers;
-  return a[0] != b[0] || a[1] != b[1] || a[2] != b[2] || in.mask->data[i] != 0.f || s.sumChangeSq.data[i] != 0.f ||
-         s.sumChange.data[i * 3] != 0.f || s.sumChange.data[i * 3 + 1] != 0.f || s.sumChange.data[i * 3 + 2] != 0.f;
+  return a[0] != b[0] || a[1] != b[1] || a[2] != b[2] || in.mask->data[i] != 0.f ||
+         s.sumChangeSq.data[i] != 0.f || s.sumChange.data[i * 3] != 0.f ||
+         s.sumChange.data[i * 3 + 1] != 0.f || s.sumChange.data[i * 3 + 2] != 0.f;
 }
 
 // Pixels within `reach` (a square) of a touched one: the only ones the filter may change.
@@ -115,19 +116,19 @@ double meanVariance(const DifferentialBuffers& b, size_t i) {
 Plane blur3(const Plane& p, int w, int h, int threads) {
   Plane out(p.size(), 0.f);
   forRows(h, threads, [&](int r0, int r1) {
-  for (int y = r0; y < r1; ++y)
-    for (int x = 0; x < w; ++x) {
-      float s = 0, ws = 0;
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int xx = x + dx, yy = y + dy;
-          if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
-          const float k = (dx ? 1.f : 2.f) * (dy ? 1.f : 2.f);
-          s += k * p[size_t(yy) * w + xx];
-          ws += k;
-        }
-      out[size_t(y) * w + x] = s / ws;
-    }
+    for (int y = r0; y < r1; ++y)
+      for (int x = 0; x < w; ++x) {
+        float s = 0, ws = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int xx = x + dx, yy = y + dy;
+            if (xx < 0 || yy < 0 || xx >= w || yy >= h) continue;
+            const float k = (dx ? 1.f : 2.f) * (dy ? 1.f : 2.f);
+            s += k * p[size_t(yy) * w + xx];
+            ws += k;
+          }
+        out[size_t(y) * w + x] = s / ws;
+      }
   });
   return out;
 }
@@ -145,21 +146,21 @@ Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g, int threads) {
   s.var.resize(n), s.mask.resize(n), s.albedoMean.resize(n);
   Plane varX(n);
   forRows(h, threads, [&](int r0, int r1) {
-  for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
-    const float m = std::clamp(finiteOr0(in.mask->data[i]), 0.f, 1.f);
-    s.mask[i] = m;
-    float am = 0;
-    for (int c = 0; c < 3; ++c) {
-      const float x = finiteOr0(finiteOr0(in.withObjects->data[i * 3 + c]) -
-                                (1.f - m) * finiteOr0(in.withoutObjects->data[i * 3 + c]));
-      const float a = std::max(g.albedo[c][i], kMinAlbedo);
-      s.x[c][i] = x;
-      s.y[c][i] = x / a;
-      am += a / 3.f;
+    for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
+      const float m = std::clamp(finiteOr0(in.mask->data[i]), 0.f, 1.f);
+      s.mask[i] = m;
+      float am = 0;
+      for (int c = 0; c < 3; ++c) {
+        const float x = finiteOr0(finiteOr0(in.withObjects->data[i * 3 + c]) -
+                                  (1.f - m) * finiteOr0(in.withoutObjects->data[i * 3 + c]));
+        const float a = std::max(g.albedo[c][i], kMinAlbedo);
+        s.x[c][i] = x;
+        s.y[c][i] = x / a;
+        am += a / 3.f;
+      }
+      s.albedoMean[i] = am;
+      varX[i] = float(std::min(meanVariance(*in.buffers, i), double(kMaxValue) * kMaxValue));
     }
-    s.albedoMean[i] = am;
-    varX[i] = float(std::min(meanVariance(*in.buffers, i), double(kMaxValue) * kMaxValue));
-  }
   });
   varX = blur3(varX, w, h, threads);
   s.stdX.resize(n);
@@ -177,9 +178,9 @@ struct Level {
   const Signal& s;
   const std::vector<uint8_t>& rowActive;
   int w, h, step;
-  const Plane* y;     // [3], this level's input
+  const Plane* y;  // [3], this level's input
   const Plane* var;
-  Plane* yOut;        // [3]
+  Plane* yOut;  // [3]
   Plane* varOut;
 
   void rows(int y0, int y1) const {
@@ -207,8 +208,9 @@ struct Level {
         const int rr = row + dy * step;
         if (rr < 0 || rr >= h) continue;
         for (int dx = -1; dx <= 1; ++dx)
-          if (dx || dy) tap(base, size_t(rr) * w, dx * step, (dx ? 0.5f : 1.f) * (dy ? 0.5f : 1.f) * 0.25f,
-                            wsum.data(), ysum, vsum.data(), invLum.data(), invPlane.data());
+          if (dx || dy)
+            tap(base, size_t(rr) * w, dx * step, (dx ? 0.5f : 1.f) * (dy ? 0.5f : 1.f) * 0.25f,
+                wsum.data(), ysum, vsum.data(), invLum.data(), invPlane.data());
       }
       for (int x = 0; x < w; ++x) {
         const size_t i = base + x;
@@ -221,30 +223,39 @@ struct Level {
 
   // Adds the neighbour at (x + ox, row rr) of every pixel x of the row at `base`. Row pointers
   // (the pixel's `_i`, the neighbour's `_j`) keep every access affine, so the loop vectorises.
-  void tap(size_t base, size_t nbase, int ox, float k, float* wsum, std::vector<float>* ysum, float* vsum,
-           const float* invLum, const float* invPlane) const {
+  void tap(size_t base, size_t nbase, int ox, float k, float* wsum, std::vector<float>* ysum,
+           float* vsum, const float* invLum, const float* invPlane) const {
     const int x0 = std::max(0, -ox), x1 = std::min(w, w - ox);
     const float sn = o.sigmaNormal, invA = 1.f / o.sigmaAlbedo, invM = 1.f / o.sigmaMask;
     const size_t nb = nbase + size_t(ox);  // x + ox >= 0 on [x0, x1)
     const float *y0i = y[0].data() + base, *y1i = y[1].data() + base, *y2i = y[2].data() + base;
-    const float *y0j = y[0].data() + nb, *y1j = y[1].data() + nb, *y2j = y[2].data() + nb, *vj = var->data() + nb;
-    const float *n0i = g.normal[0].data() + base, *n1i = g.normal[1].data() + base, *n2i = g.normal[2].data() + base;
-    const float *n0j = g.normal[0].data() + nb, *n1j = g.normal[1].data() + nb, *n2j = g.normal[2].data() + nb;
+    const float *y0j = y[0].data() + nb, *y1j = y[1].data() + nb, *y2j = y[2].data() + nb,
+                *vj = var->data() + nb;
+    const float *n0i = g.normal[0].data() + base, *n1i = g.normal[1].data() + base,
+                *n2i = g.normal[2].data() + base;
+    const float *n0j = g.normal[0].data() + nb, *n1j = g.normal[1].data() + nb,
+                *n2j = g.normal[2].data() + nb;
     const float *p0i = g.position[0].data() + base, *p1i = g.position[1].data() + base,
                 *p2i = g.position[2].data() + base;
-    const float *p0j = g.position[0].data() + nb, *p1j = g.position[1].data() + nb, *p2j = g.position[2].data() + nb;
-    const float *a0i = g.albedo[0].data() + base, *a1i = g.albedo[1].data() + base, *a2i = g.albedo[2].data() + base;
-    const float *a0j = g.albedo[0].data() + nb, *a1j = g.albedo[1].data() + nb, *a2j = g.albedo[2].data() + nb;
+    const float *p0j = g.position[0].data() + nb, *p1j = g.position[1].data() + nb,
+                *p2j = g.position[2].data() + nb;
+    const float *a0i = g.albedo[0].data() + base, *a1i = g.albedo[1].data() + base,
+                *a2i = g.albedo[2].data() + base;
+    const float *a0j = g.albedo[0].data() + nb, *a1j = g.albedo[1].data() + nb,
+                *a2j = g.albedo[2].data() + nb;
     const float *mi = s.mask.data() + base, *mj = s.mask.data() + nb;
     float *ws = wsum, *vs = vsum, *s0 = ysum[0].data(), *s1 = ysum[1].data(), *s2 = ysum[2].data();
     // The sums are the row's own scratch, never one of the planes read: no alias checks needed.
     INLAY_IVDEP
     for (int x = x0; x < x1; ++x) {
-      const float lum = (std::abs(y0i[x] - y0j[x]) + std::abs(y1i[x] - y1j[x]) + std::abs(y2i[x] - y2j[x])) * (1.f / 3.f);
+      const float lum =
+          (std::abs(y0i[x] - y0j[x]) + std::abs(y1i[x] - y1j[x]) + std::abs(y2i[x] - y2j[x])) *
+          (1.f / 3.f);
       const float cosN = n0i[x] * n0j[x] + n1i[x] * n1j[x] + n2i[x] * n2j[x];
       const float plane =
           std::abs(n0i[x] * (p0j[x] - p0i[x]) + n1i[x] * (p1j[x] - p1i[x]) + n2i[x] * (p2j[x] - p2i[x]));
-      const float alb = std::abs(a0i[x] - a0j[x]) + std::abs(a1i[x] - a1j[x]) + std::abs(a2i[x] - a2j[x]);
+      const float alb = std::abs(a0i[x] - a0j[x]) + std::abs(a1i[x] - a1j[x]) +
+                        std::abs(a2i[x] - a2j[x]);
       const float e = lum * invLum[x] + sn * (1.f - cosN) + plane * invPlane[x] + alb * invA +
                       std::abs(mi[x] - mj[x]) * invM;
       const float wt = k * expNeg(e);
@@ -265,48 +276,52 @@ bool sizesMatch(const DenoiseInput& in) {
   return w > 0 && h > 0 && in.withObjects->channels == 3 && in.withoutObjects->width == w &&
          in.withoutObjects->height == h && in.withoutObjects->channels == 3 && in.mask->width == w &&
          in.mask->height == h && in.mask->channels == 1 && b.width == w && b.height == h &&
-         b.samples.size() == size_t(w) * h && g.width == w && g.height == h && g.distance.size() == size_t(w) * h;
+         b.samples.size() == size_t(w) * h && g.width == w && g.height == h &&
+         g.distance.size() == size_t(w) * h;
 }
 
 // The filtered delta back into a with-object image, within the clamp, for the active pixels.
-ImageF writeBack(const DenoiseInput& in, const Signal& s, const Plane* yFiltered, const std::vector<uint8_t>& active,
-                 float clampSigmas, int threads) {
+ImageF writeBack(const DenoiseInput& in, const Signal& s, const Plane* yFiltered,
+                 const std::vector<uint8_t>& active, float clampSigmas, int threads) {
   ImageF out = *in.withObjects;
   const size_t w = size_t(out.width);
   forRows(out.height, threads, [&](int r0, int r1) {
-  for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
-    if (!active[i]) continue;
-    const float lim = clampSigmas * s.stdX[i];
-    float x[3];
-    bool zero = true;
-    for (int c = 0; c < 3; ++c) {
-      const float a = std::max(in.guides->albedo[c][i], kMinAlbedo);
-      x[c] = std::clamp(yFiltered[c][i] * a, s.x[c][i] - lim, s.x[c][i] + lim);
-      if (!std::isfinite(x[c])) x[c] = s.x[c][i];
-      zero = zero && x[c] == 0.f;
+    for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
+      if (!active[i]) continue;
+      const float lim = clampSigmas * s.stdX[i];
+      float x[3];
+      bool zero = true;
+      for (int c = 0; c < 3; ++c) {
+        const float a = std::max(in.guides->albedo[c][i], kMinAlbedo);
+        x[c] = std::clamp(yFiltered[c][i] * a, s.x[c][i] - lim, s.x[c][i] + lim);
+        if (!std::isfinite(x[c])) x[c] = s.x[c][i];
+        zero = zero && x[c] == 0.f;
+      }
+      const float m = s.mask[i];
+      for (int c = 0; c < 3; ++c) {
+        const float without = in.withoutObjects->data[i * 3 + c];
+        // A zero delta outside the object: exactly the without-object value (the photo, composited).
+        const float v = zero && m == 0.f ? without : x[c] + (1.f - m) * finiteOr0(without);
+        out.data[i * 3 + c] = std::isfinite(v) ? v : finiteOr0(in.withObjects->data[i * 3 + c]);
+      }
     }
-    const float m = s.mask[i];
-    for (int c = 0; c < 3; ++c) {
-      const float without = in.withoutObjects->data[i * 3 + c];
-      // A zero delta outside the object: exactly the without-object value (the photo, composited).
-      const float v = zero && m == 0.f ? without : x[c] + (1.f - m) * finiteOr0(without);
-      out.data[i * 3 + c] = std::isfinite(v) ? v : finiteOr0(in.withObjects->data[i * 3 + c]);
-    }
-  }
   });
   return out;
 }
 
 }  // namespace
 
-int denoiseReachPx(const DenoiseOptions& options) { return (1 << std::clamp(options.levels, 0, 12)) - 1; }
+int denoiseReachPx(const DenoiseOptions& options) {
+  return (1 << std::clamp(options.levels, 0, 12)) - 1;
+}
 
 DenoiseGuides renderDenoiseGuides(const PathTracer& tracer, int width, int height, int threads) {
   DenoiseGuides g;
   if (width <= 0 || height <= 0) return g;
   g.width = width, g.height = height;
   const size_t n = size_t(width) * height;
-  for (int c = 0; c < 3; ++c) g.albedo[c].assign(n, 1.f), g.normal[c].assign(n, 0.f), g.position[c].assign(n, 0.f);
+  for (int c = 0; c < 3; ++c)
+    g.albedo[c].assign(n, 1.f), g.normal[c].assign(n, 0.f), g.position[c].assign(n, 0.f);
   g.distance.assign(n, 1e6f);
   const Camera& cam = tracer.scene().camera;
   const double sx = double(cam.widthPx) / width, sy = double(cam.heightPx) / height;
@@ -333,15 +348,18 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
   const std::vector<uint8_t> active = activePixels(in, denoiseReachPx(options));
   std::vector<uint8_t> rowActive(size_t(h), 0);
   for (int y = 0; y < h; ++y)
-    rowActive[size_t(y)] = std::any_of(active.begin() + ptrdiff_t(y) * w, active.begin() + ptrdiff_t(y + 1) * w,
+    rowActive[size_t(y)] = std::any_of(active.begin() + ptrdiff_t(y) * w,
+                                       active.begin() + ptrdiff_t(y + 1) * w,
                                        [](uint8_t a) { return a != 0; });
-  if (std::none_of(rowActive.begin(), rowActive.end(), [](uint8_t a) { return a != 0; })) return *in.withObjects;
+  if (std::none_of(rowActive.begin(), rowActive.end(), [](uint8_t a) { return a != 0; }))
+    return *in.withObjects;
   const Signal s = signalOf(in, *in.guides, options.threads);
   Plane ping[3] = {s.y[0], s.y[1], s.y[2]}, pong[3];
   Plane pingVar = s.var, pongVar(s.var.size());
   for (auto& p : pong) p.resize(s.var.size());
   for (int level = 0; level < std::clamp(options.levels, 0, 12); ++level) {
-    const Level step{*in.guides, options, s, rowActive, w, h, 1 << level, ping, &pingVar, pong, &pongVar};
+    const Level step{*in.guides, options, s,        rowActive, w,       h,
+                     1 << level, ping,    &pingVar, pong,      &pongVar};
     forRows(h, options.threads, [&](int y0, int y1) { step.rows(y0, y1); });
     for (int c = 0; c < 3; ++c) std::swap(ping[c], pong[c]);
     std::swap(pingVar, pongVar);
@@ -352,7 +370,8 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
                   DenoiseGuides* guides, const DenoiseOptions& options) {
   const int w = frame.withObjects.width, h = frame.withObjects.height;
-  if (guides->width != w || guides->height != h) *guides = renderDenoiseGuides(tracer, w, h, options.threads);
+  if (guides->width != w || guides->height != h)
+    *guides = renderDenoiseGuides(tracer, w, h, options.threads);
   DenoiseInput in;
   in.withObjects = &frame.withObjects;
   in.withoutObjects = &frame.withoutObjects;

@@ -22,9 +22,8 @@ RTCDevice newDevice() {
 bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const TriangleMesh& mesh) {
   if (mesh.triangles.empty() || mesh.positions.empty()) return false;
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                        mesh.positions.size()));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     // A non-finite vertex would poison the BVH bounds: zero it; its triangles are made
     // degenerate below.
@@ -33,9 +32,8 @@ bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const Tr
     v[3 * i + 1] = p.y();
     v[3 * i + 2] = p.z();
   }
-  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-                                                             RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-                                                             mesh.triangles.size()));
+  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
   const auto n = uint32_t(mesh.positions.size());
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
     bool usable = true;

@@ -47,8 +47,10 @@ struct FilterRay {
 };
 inline FilterRay filterRay(const RTCFilterFunctionNArguments* args, unsigned k) {
   const unsigned n = args->N;
-  return {Vec3(RTCRayN_org_x(args->ray, n, k), RTCRayN_org_y(args->ray, n, k), RTCRayN_org_z(args->ray, n, k)),
-          Vec3(RTCRayN_dir_x(args->ray, n, k), RTCRayN_dir_y(args->ray, n, k), RTCRayN_dir_z(args->ray, n, k)),
+  return {Vec3(RTCRayN_org_x(args->ray, n, k), RTCRayN_org_y(args->ray, n, k),
+               RTCRayN_org_z(args->ray, n, k)),
+          Vec3(RTCRayN_dir_x(args->ray, n, k), RTCRayN_dir_y(args->ray, n, k),
+               RTCRayN_dir_z(args->ray, n, k)),
           RTCRayN_tfar(args->ray, n, k)};
 }
 

@@ -34,10 +34,11 @@ class Builder {
 
   Builder() {
     doc["asset"] = {{"version", "2.0"}, {"generator", "inlay"}};
-    for (const char* k : {"buffers", "bufferViews", "accessors", "meshes", "materials", "nodes", "textures",
-                          "images", "samplers", "cameras"})
+    for (const char* k : {"buffers", "bufferViews", "accessors", "meshes", "materials", "nodes",
+                          "textures", "images", "samplers", "cameras"})
       doc[k] = json::array();
-    doc["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}});
+    doc["samplers"].push_back(
+        {{"magFilter", 9729}, {"minFilter", 9729}, {"wrapS", 33071}, {"wrapT", 33071}});
   }
 
   int view(const void* data, size_t bytes, int target) {
@@ -49,7 +50,9 @@ class Builder {
   }
   int vec3Accessor(const std::vector<Vec3f>& v, bool withBounds) {
     json a = {{"bufferView", view(v.data(), v.size() * sizeof(Vec3f), kArrayBuffer)},
-              {"componentType", kFloat}, {"count", v.size()}, {"type", "VEC3"}};
+              {"componentType", kFloat},
+              {"count", v.size()},
+              {"type", "VEC3"}};
     if (withBounds) {
       Vec3f lo = v[0], hi = v[0];
       for (const Vec3f& p : v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
@@ -60,11 +63,15 @@ class Builder {
   }
   int vec2Accessor(const std::vector<Vec2f>& v) {
     return push("accessors", {{"bufferView", view(v.data(), v.size() * sizeof(Vec2f), kArrayBuffer)},
-                              {"componentType", kFloat}, {"count", v.size()}, {"type", "VEC2"}});
+                              {"componentType", kFloat},
+                              {"count", v.size()},
+                              {"type", "VEC2"}});
   }
   int indexAccessor(const std::vector<uint32_t>& idx) {
     return push("accessors", {{"bufferView", view(idx.data(), idx.size() * 4, kElementArrayBuffer)},
-                              {"componentType", kUint}, {"count", idx.size()}, {"type", "SCALAR"}});
+                              {"componentType", kUint},
+                              {"count", idx.size()},
+                              {"type", "SCALAR"}});
   }
   // A primitive from flat arrays (normals and uvs may be empty).
   json primitive(const std::vector<Vec3f>& positions, const std::vector<Vec3f>& normals,
@@ -89,7 +96,8 @@ json emissiveMaterial(Builder& b, const std::string& name, const Vec3& radiance)
   const Vec3 colour = radiance / strength;
   b.useExtension("KHR_materials_emissive_strength");
   return {{"name", name},
-          {"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 1}}},
+          {"pbrMetallicRoughness",
+           {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 1}}},
           {"emissiveFactor", {colour.x(), colour.y(), colour.z()}},
           {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", strength}}}}}};
 }
@@ -100,13 +108,15 @@ json objectMaterial(Builder& b, const Material& m, const std::string& name) {
   const Vec3 a = m.albedo.cwiseMax(0.0).cwiseMin(1.0);
   const bool glass = m.kind == K::Glass || m.kind == K::RoughGlass;
   const bool metal = m.kind == K::Conductor || m.kind == K::Mirror;
-  const double roughness = m.kind == K::Diffuse                   ? 1.0
-                           : m.kind == K::Mirror || m.kind == K::Glass ? 0.0
-                                                                      : std::clamp(m.roughness, 0.0, 1.0);
+  const double roughness = m.kind == K::Diffuse ? 1.0
+                           : m.kind == K::Mirror || m.kind == K::Glass
+                               ? 0.0
+                               : std::clamp(m.roughness, 0.0, 1.0);
   const Vec3 base = glass ? Vec3(Vec3::Ones()) : a;
   json mat = {{"name", name},
               {"pbrMetallicRoughness",
-               {{"baseColorFactor", {base.x(), base.y(), base.z(), 1}}, {"metallicFactor", metal ? 1 : 0},
+               {{"baseColorFactor", {base.x(), base.y(), base.z(), 1}},
+                {"metallicFactor", metal ? 1 : 0},
                 {"roughnessFactor", roughness}}}};
   if (glass || m.kind == K::Glossy) {
     b.useExtension("KHR_materials_ior");
@@ -129,12 +139,14 @@ std::vector<PlanarGroup> planarGroups(const TriangleMesh& mesh) {
   std::vector<PlanarGroup> groups;
   for (const auto& t : mesh.triangles) {
     if (std::max({t[0], t[1], t[2]}) >= mesh.positions.size()) continue;
-    const std::array<Vec3, 3> p = {mesh.positions[t[0]].cast<double>(), mesh.positions[t[1]].cast<double>(),
+    const std::array<Vec3, 3> p = {mesh.positions[t[0]].cast<double>(),
+                                   mesh.positions[t[1]].cast<double>(),
                                    mesh.positions[t[2]].cast<double>()};
     const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]);
     if (!(n.norm() > 0) || !n.allFinite()) continue;
     const Vec3 u = n.normalized();
-    auto g = std::find_if(groups.begin(), groups.end(), [&](const PlanarGroup& q) { return q.normal.dot(u) > 0.999; });
+    auto g = std::find_if(groups.begin(), groups.end(),
+                          [&](const PlanarGroup& q) { return q.normal.dot(u) > 0.999; });
     if (g == groups.end()) g = groups.insert(groups.end(), PlanarGroup{u, {}});
     g->triangles.push_back(p);
   }
@@ -197,8 +209,8 @@ struct Writer {
   Writer(const std::string& p, bool glb) : path(p), binary(glb) {}
 
   Expected<int> texture(const ImageF& image) {
-    const fs::path scratch =
-        fs::temp_directory_path() / ("inlay_gltf_" + std::to_string(::getpid()) + "_" + std::to_string(textureCount) + ".png");
+    const fs::path scratch = fs::temp_directory_path() / ("inlay_gltf_" + std::to_string(::getpid()) +
+                                                          "_" + std::to_string(textureCount) + ".png");
     Expected<std::string> png = pngBytes(image, scratch);
     if (!png.ok()) return png.error();
     json img;
@@ -224,11 +236,15 @@ struct Writer {
       const Vec3 r = marked->albedo.cwiseMax(0.0).cwiseMin(1.0);
       return {{"name", surfaceName + "_mirror"},
               {"pbrMetallicRoughness",
-               {{"baseColorFactor", {r.x(), r.y(), r.z(), 1}}, {"metallicFactor", 1}, {"roughnessFactor", 0}}}};
+               {{"baseColorFactor", {r.x(), r.y(), r.z(), 1}},
+                {"metallicFactor", 1},
+                {"roughnessFactor", 0}}}};
     }
     json mat = {{"name", surfaceName + "_albedo"},
                 {"pbrMetallicRoughness",
-                 {{"baseColorTexture", {{"index", albedoTexture}}}, {"metallicFactor", 0}, {"roughnessFactor", 1}}}};
+                 {{"baseColorTexture", {{"index", albedoTexture}}},
+                  {"metallicFactor", 0},
+                  {"roughnessFactor", 1}}}};
     if (marked && marked->kind == K::Glossy) {
       mat["name"] = surfaceName + "_glossy";
       mat["pbrMetallicRoughness"]["roughnessFactor"] = std::clamp(marked->roughness, 0.0, 1.0);
@@ -244,7 +260,7 @@ struct Writer {
       if (surf.kind == SurfaceKind::OccluderCard) continue;
       json primitives = json::array();
       const Vec3 fill = id < scene.roomAlbedo.surfaceMean.size() ? scene.roomAlbedo.surfaceMean[id]
-                                                                  : Vec3::Constant(0.5);
+                                                                 : Vec3::Constant(0.5);
       for (const PlanarGroup& g : planarGroups(surf.meshWorld)) {
         const detail::Frame frame(g.normal);
         Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
@@ -254,13 +270,16 @@ struct Writer {
             lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
           }
         const Vec2 size = (hi - lo).cwiseMax(1e-6);
-        const int w = std::clamp(int(std::ceil(size.x() * options.texelsPerMetre)), 4, options.maxTextureSize);
-        const int h = std::clamp(int(std::ceil(size.y() * options.texelsPerMetre)), 4, options.maxTextureSize);
-        Expected<int> tex =
-            texture(bakeGroup(scene.roomAlbedo, int(id), g, lo, size, frame, w, h, fill.cwiseMax(0.0).cwiseMin(1.0)));
+        const int w =
+            std::clamp(int(std::ceil(size.x() * options.texelsPerMetre)), 4, options.maxTextureSize);
+        const int h =
+            std::clamp(int(std::ceil(size.y() * options.texelsPerMetre)), 4, options.maxTextureSize);
+        Expected<int> tex = texture(bakeGroup(scene.roomAlbedo, int(id), g, lo, size, frame, w, h,
+                                              fill.cwiseMax(0.0).cwiseMin(1.0)));
         if (!tex.ok()) return tex.error();
-        const Material* marked =
-            id < scene.roomMaterials.size() && scene.roomMaterials[id] ? &*scene.roomMaterials[id] : nullptr;
+        const Material* marked = id < scene.roomMaterials.size() && scene.roomMaterials[id]
+                                     ? &*scene.roomMaterials[id]
+                                     : nullptr;
         const int material = b.push("materials", roomSurfaceMaterial(surf.name, *tex, marked));
         std::vector<Vec3f> pos, nrm;
         std::vector<Vec2f> uv;
@@ -270,7 +289,8 @@ struct Writer {
             idx.push_back(uint32_t(pos.size()));
             pos.push_back(p.cast<float>());
             nrm.push_back(g.normal.cast<float>());
-            uv.emplace_back(float((p.dot(frame.s) - lo.x()) / size.x()), float((p.dot(frame.t) - lo.y()) / size.y()));
+            uv.emplace_back(float((p.dot(frame.s) - lo.x()) / size.x()),
+                            float((p.dot(frame.t) - lo.y()) / size.y()));
           }
         primitives.push_back(b.primitive(pos, nrm, uv, idx, material));
       }
@@ -286,7 +306,8 @@ struct Writer {
       const AreaLight& l = scene.lights[i];
       const Vec3 n = l.normal();
       if (!n.allFinite() || !(l.area() > 0) || !l.radiance.allFinite() || !(l.radiance.maxCoeff() > 0)) {
-        if (warnings) warnings->push_back("light " + std::to_string(i) + ": degenerate or dark, not exported");
+        if (warnings)
+          warnings->push_back("light " + std::to_string(i) + ": degenerate or dark, not exported");
         continue;
       }
       const auto c = detail::emitterCorners(l);
@@ -294,7 +315,10 @@ struct Writer {
       for (const Vec3& p : c) pos.push_back(p.cast<float>()), nrm.push_back(n.cast<float>());
       const std::string name = "light_" + std::to_string(i);
       const int material = b.push("materials", emissiveMaterial(b, name, l.radiance.cwiseMax(0.0)));
-      const int mesh = b.push("meshes", {{"name", name}, {"primitives", json::array({b.primitive(pos, nrm, {}, {0, 1, 2, 0, 2, 3}, material)})}});
+      const int mesh = b.push(
+          "meshes",
+          {{"name", name},
+           {"primitives", json::array({b.primitive(pos, nrm, {}, {0, 1, 2, 0, 2, 3}, material)})}});
       children.push_back(b.push("nodes", {{"name", name}, {"mesh", mesh}}));
     }
     if (!scene.suns.empty() && warnings)
@@ -305,15 +329,19 @@ struct Writer {
     const double w = std::max(1, cam.widthPx), h = std::max(1, cam.heightPx);
     const int c = b.push("cameras", {{"type", "perspective"},
                                      {"perspective",
-                                      {{"yfov", 2 * std::atan(0.5 * h / cam.focalPx)}, {"aspectRatio", w / h},
-                                       {"znear", 0.01}, {"zfar", 1000.0}}},
+                                      {{"yfov", 2 * std::atan(0.5 * h / cam.focalPx)},
+                                       {"aspectRatio", w / h},
+                                       {"znear", 0.01},
+                                       {"zfar", 1000.0}}},
                                      {"extras",
-                                      {{"width_px", cam.widthPx}, {"height_px", cam.heightPx},
+                                      {{"width_px", cam.widthPx},
+                                       {"height_px", cam.heightPx},
                                        {"focal_px", cam.focalPx},
                                        {"principal_px", {cam.principalPx.x(), cam.principalPx.y()}}}}});
     const Eigen::Quaterniond q(cam.worldFromCamera);
     const Vec3 t = cam.centreWorld();
-    children.push_back(b.push("nodes", {{"name", "camera"}, {"camera", c},
+    children.push_back(b.push("nodes", {{"name", "camera"},
+                                        {"camera", c},
                                         {"rotation", {q.x(), q.y(), q.z(), q.w()}},
                                         {"translation", {t.x(), t.y(), t.z()}}}));
   }
@@ -339,7 +367,8 @@ struct Writer {
       const Material& mat = parts ? o.partMaterials[k] : o.material;
       const std::string matName = parts ? name + "_part_" + std::to_string(k) : name;
       const int material = b.push("materials", objectMaterial(b, mat, matName));
-      primitives.push_back({{"attributes", attributes}, {"indices", b.indexAccessor(idx[k])}, {"material", material}});
+      primitives.push_back(
+          {{"attributes", attributes}, {"indices", b.indexAccessor(idx[k])}, {"material", material}});
     }
     return primitives;
   }
@@ -371,7 +400,8 @@ struct Writer {
     if (!binary) {
       for (const auto& [file, bytes] : sideFiles)
         if (Status s = writeFileAtomically(file.string(), bytes); !s.ok()) return s;
-      if (Status s = writeFileAtomically((path.parent_path() / bufferName).string(), b.bin); !s.ok()) return s;
+      if (Status s = writeFileAtomically((path.parent_path() / bufferName).string(), b.bin); !s.ok())
+        return s;
       return writeFileAtomically(path.string(), b.doc.dump(1));
     }
     std::string text = b.doc.dump();
@@ -396,8 +426,10 @@ struct Writer {
 Status exportGltf(const RenderScene& scene, const std::string& path, const GltfExportOptions& options,
                   std::vector<std::string>* warnings) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext != ".gltf" && ext != ".glb") return Error{path, "", "the export file must end in .gltf or .glb"};
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext != ".gltf" && ext != ".glb")
+    return Error{path, "", "the export file must end in .gltf or .glb"};
   if (!(options.texelsPerMetre > 0) || options.maxTextureSize < 4)
     return Error{path, "", "texture density and size must be positive"};
   Writer w(path, ext == ".glb");

@@ -33,8 +33,8 @@ uint64_t mix64(uint64_t z) {  // splitmix64's finaliser
 double whiteNoise(int x, int y, int field, uint32_t seed) {
   const uint64_t key = uint64_t(uint32_t(x)) | (uint64_t(uint32_t(y)) << 32);
   const uint64_t h = mix64(key ^ mix64((uint64_t(seed) << 3) + uint64_t(field) + 0x9e3779b97f4a7c15ULL));
-  const double u1 = (double(h >> 32) + 0.5) * 0x1p-32;          // (0, 1)
-  const double u2 = double(h & 0xffffffffULL) * 0x1p-32;       // [0, 1)
+  const double u1 = (double(h >> 32) + 0.5) * 0x1p-32;    // (0, 1)
+  const double u2 = double(h & 0xffffffffULL) * 0x1p-32;  // [0, 1)
   return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
 }
 
@@ -78,8 +78,8 @@ PatchResponse patchResponse(double widthPx, int P) {
     for (int j = 0; j < n; ++j)
       C(i, j) = lagCorrelation(k, i % P - j % P) * lagCorrelation(k, i / P - j / P);
   }
-  const Eigen::MatrixXd M =
-      Eigen::MatrixXd::Identity(n, n) - X * (X.transpose() * X).inverse() * X.transpose();
+  const Eigen::MatrixXd M = Eigen::MatrixXd::Identity(n, n) -
+                            X * (X.transpose() * X).inverse() * X.transpose();
   const Eigen::MatrixXd MC = M * C;
   PatchResponse r;
   const double tr = MC.trace();
@@ -170,7 +170,8 @@ std::vector<Patch> measurePatches(const ImageF& img, const NoiseMeasureOptions& 
                                   const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
   const int P = opt.patchPx;
   const double area = double(img.width) * img.height;
-  const int stride = std::max(P / 2, int(std::ceil(std::sqrt(area / double(std::max(1L, opt.maxPatches))))));
+  const int stride =
+      std::max(P / 2, int(std::ceil(std::sqrt(area / double(std::max(1L, opt.maxPatches))))));
   std::vector<Patch> patches;
   std::vector<double> r;
   for (int y = 0; y + P <= img.height; y += stride)
@@ -178,11 +179,13 @@ std::vector<Patch> measurePatches(const ImageF& img, const NoiseMeasureOptions& 
       Patch p;
       p.x = x, p.y = y;
       for (int c = 0; c < 3; ++c) {
-        p.valid[size_t(c)] = patchResidual(img, x, y, P, c, lo[size_t(c)], hi[size_t(c)], r, p.mean[size_t(c)]);
+        p.valid[size_t(c)] =
+            patchResidual(img, x, y, P, c, lo[size_t(c)], hi[size_t(c)], r, p.mean[size_t(c)]);
         if (!p.valid[size_t(c)]) continue;
         p.residual[size_t(c)] = sumOfSquares(r) / double(P * P);
         p.highFrequency[size_t(c)] = highFrequencyOf(r, P);
-        p.valid[size_t(c)] = std::isfinite(p.residual[size_t(c)]) && std::isfinite(p.highFrequency[size_t(c)]);
+        p.valid[size_t(c)] = std::isfinite(p.residual[size_t(c)]) &&
+                             std::isfinite(p.highFrequency[size_t(c)]);
       }
       if (p.valid[0] || p.valid[1] || p.valid[2]) patches.push_back(p);
     }
@@ -215,11 +218,11 @@ std::vector<Bin> envelopeBins(const std::vector<Patch>& patches, int c, const No
   const int nBins = std::min(std::max(1, opt.maxBins), int(idx.size()) / minPer);
   std::vector<Bin> bins;
   if (nBins < 1) return bins;
-  std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) {
-    return patches[a].mean[size_t(c)] < patches[b].mean[size_t(c)];
-  });
+  std::sort(idx.begin(), idx.end(),
+            [&](size_t a, size_t b) { return patches[a].mean[size_t(c)] < patches[b].mean[size_t(c)]; });
   for (int b = 0; b < nBins; ++b) {
-    const size_t from = idx.size() * size_t(b) / size_t(nBins), to = idx.size() * size_t(b + 1) / size_t(nBins);
+    const size_t from = idx.size() * size_t(b) / size_t(nBins),
+                 to = idx.size() * size_t(b + 1) / size_t(nBins);
     std::vector<size_t> members(idx.begin() + long(from), idx.begin() + long(to));
     Bin bin;
     bin.intensity = patches[members[members.size() / 2]].mean[size_t(c)];
@@ -238,7 +241,8 @@ std::vector<Bin> envelopeBins(const std::vector<Patch>& patches, int c, const No
 
 // High-frequency against residual variance over the flat patches of every bin and channel, each
 // bin's patches weighted by its envelope (so bright bins do not dominate).
-double flatHighFrequencyRatio(const std::vector<Patch>& patches, const std::array<std::vector<Bin>, 3>& bins) {
+double flatHighFrequencyRatio(const std::vector<Patch>& patches,
+                              const std::array<std::vector<Bin>, 3>& bins) {
   double hf = 0, res = 0;
   for (int c = 0; c < 3; ++c)
     for (const Bin& b : bins[size_t(c)]) {
@@ -268,7 +272,8 @@ double channelCorrelationOf(const ImageF& img, const std::vector<Patch>& patches
     std::array<double, 3> norm{};
     bool ok = true;
     for (int c = 0; c < 3 && ok; ++c) {
-      ok = patchResidual(img, patches[i].x, patches[i].y, P, c, lo[size_t(c)], hi[size_t(c)], r[size_t(c)], mean);
+      ok = patchResidual(img, patches[i].x, patches[i].y, P, c, lo[size_t(c)], hi[size_t(c)],
+                         r[size_t(c)], mean);
       norm[size_t(c)] = std::sqrt(sumOfSquares(r[size_t(c)]));
       ok = ok && norm[size_t(c)] > 0 && std::isfinite(norm[size_t(c)]);
     }
@@ -314,7 +319,8 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
   NoiseMeasureOptions o = opt;
   o.patchPx = P;
   if (img.channels < 3 || img.width < P || img.height < P) {
-    out.notes.push_back("the photo is smaller than one " + std::to_string(P) + " x " + std::to_string(P) + " patch");
+    out.notes.push_back("the photo is smaller than one " + std::to_string(P) + " x " +
+                        std::to_string(P) + " patch");
     return out;
   }
   // Clip levels: each channel's lowest and highest finite value.
@@ -324,7 +330,8 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
   for (size_t i = 0; i < img.pixelCount(); ++i)
     for (int c = 0; c < 3; ++c) {
       const double v = img.data[i * size_t(img.channels) + size_t(c)];
-      if (std::isfinite(v)) lo[size_t(c)] = std::min(lo[size_t(c)], v), hi[size_t(c)] = std::max(hi[size_t(c)], v);
+      if (std::isfinite(v))
+        lo[size_t(c)] = std::min(lo[size_t(c)], v), hi[size_t(c)] = std::max(hi[size_t(c)], v);
     }
   const std::vector<Patch> patches = measurePatches(img, o, lo, hi);
   std::array<std::vector<Bin>, 3> bins;
@@ -354,7 +361,8 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
           for (size_t m : b.flat) sum += patches[m].residual[size_t(c)];
           var = sum / double(b.flat.size()) / response.residualFactor;
         }
-        if (!std::isfinite(var) || var <= kNoiseFreeRelative * kNoiseFreeRelative * b.intensity * b.intensity)
+        if (!std::isfinite(var) ||
+            var <= kNoiseFreeRelative * kNoiseFreeRelative * b.intensity * b.intensity)
           var = 0;  // float round-off of a noise-free photo
         out.levels[size_t(c)].push_back({b.intensity, std::sqrt(std::max(0.0, var))});
         keepNoiseOnly(patches, c, var * response.residualFactor, noiseOnlyFactor, b);
@@ -372,13 +380,16 @@ PhotoNoise measurePhotoNoise(const ImageF& img, const NoiseMeasureOptions& opt) 
 
 std::string describeNoise(const PhotoNoise& noise) {
   if (noise.empty())
-    return "no grain: " + (noise.notes.empty() ? std::string("the photo shows no noise") : noise.notes.back());
+    return "no grain: " +
+           (noise.notes.empty() ? std::string("the photo shows no noise") : noise.notes.back());
   const auto& g = noise.levels[1].empty() ? noise.levels[0] : noise.levels[1];
   const double mid = g.empty() ? 0 : g[g.size() / 2].intensity;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "photo noise %.3g (R) %.3g (G) %.3g (B) at %.3g; grain %.2f px wide, %.0f%% shared by the channels",
-                noise.sigma(0, mid), noise.sigma(1, mid), noise.sigma(2, mid), mid, noise.grainWidthPx,
-                100 * noise.channelCorrelation);
+  std::snprintf(
+      buf, sizeof buf,
+      "photo noise %.3g (R) %.3g (G) %.3g (B) at %.3g; grain %.2f px wide, %.0f%% shared by the channels",
+      noise.sigma(0, mid), noise.sigma(1, mid), noise.sigma(2, mid), mid, noise.grainWidthPx,
+      100 * noise.channelCorrelation);
   return buf;
 }
 
@@ -390,10 +401,12 @@ float grainAt(const PhotoNoise& noise, int x, int y, int c, uint32_t seed) {
   const auto field = [&](int f) {
     double s = 0;
     for (int j = -r; j <= r; ++j)
-      for (int i = -r; i <= r; ++i) s += k[size_t(i + r)] * k[size_t(j + r)] * whiteNoise(x + i, y + j, f, seed);
+      for (int i = -r; i <= r; ++i)
+        s += k[size_t(i + r)] * k[size_t(j + r)] * whiteNoise(x + i, y + j, f, seed);
     return s;
   };
-  const double rho = std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
+  const double rho =
+      std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
   return float(std::sqrt(rho) * field(0) + std::sqrt(1 - rho) * field(1 + std::clamp(c, 0, 2)));
 }
 
@@ -430,7 +443,8 @@ ImageF grainFields(const PhotoNoise& noise, const Box& box, uint32_t seed) {
   const std::vector<double> k = grainKernel(noise.grainWidthPx);
   const int r = int(k.size() / 2), w = box.x1 - box.x0, h = box.y1 - box.y0;
   const int hw = h + 2 * r;  // rows of the horizontal pass
-  const double rho = std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
+  const double rho =
+      std::isfinite(noise.channelCorrelation) ? std::clamp(noise.channelCorrelation, 0.0, 1.0) : 0.0;
   const double a = std::sqrt(rho), b = std::sqrt(1 - rho);
   ImageF out(w, h, 3, 0.f);
   std::vector<double> horiz(size_t(hw) * size_t(w));
@@ -452,7 +466,8 @@ ImageF grainFields(const PhotoNoise& noise, const Box& box, uint32_t seed) {
       for (int j = rows.begin(); j < rows.end(); ++j)
         for (int i = 0; i < w; ++i) {
           double s = 0;
-          for (size_t t = 0; t < k.size(); ++t) s += k[t] * horiz[(size_t(j) + t) * size_t(w) + size_t(i)];
+          for (size_t t = 0; t < k.size(); ++t)
+            s += k[t] * horiz[(size_t(j) + t) * size_t(w) + size_t(i)];
           for (int c = 0; c < 3; ++c)
             if (f == 0 || f == c + 1) out.at(i, j, c) += float(weight * s);
         }
@@ -483,7 +498,8 @@ void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& f
   INLAY_CHECK(with.width == W && with.height == H && with.channels == 3);
   INLAY_CHECK(without.width == W && without.height == H && without.channels == 3);
   INLAY_CHECK(mask.empty() || (mask.width == W && mask.height == H && mask.channels >= 1));
-  const bool renderNoise = frame.noise.width == W && frame.noise.height == H && frame.noise.channels >= 1;
+  const bool renderNoise = frame.noise.width == W && frame.noise.height == H &&
+                           frame.noise.channels >= 1;
   if (noise.empty() || composite.channels < 3) return;
   const Box box = changedBox(with, without, mask);
   if (box.empty()) return;

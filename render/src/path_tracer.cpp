@@ -82,16 +82,16 @@ constexpr uint32_t kFirstVertexDim = 2;  // dimensions 0, 1: the pixel jitter
 enum class Mode { Shared, WithOnly, WithoutOnly };
 
 struct ObjectData {
-  RTCScene scene = nullptr;      // the object's own BVH (object space)
-  RTCGeometry instance = nullptr;  // its instance in withScene (retained)
+  RTCScene scene = nullptr;           // the object's own BVH (object space)
+  RTCGeometry instance = nullptr;     // its instance in withScene (retained)
   RTCGeometry sunInstance = nullptr;  // its instance in sunWithScene (retained), if suns
   std::shared_ptr<const TriangleMesh> mesh;
   Mat4 worldFromObject = Mat4::Identity();
   Mat3 normalFromObject = Mat3::Identity();  // inverse transpose of the linear part
-  bool mirrored = false;         // negative determinant: winding flips
-  bool shadingNormals = false;   // per-vertex normals usable
+  bool mirrored = false;                     // negative determinant: winding flips
+  bool shadingNormals = false;               // per-vertex normals usable
   Material material;
-  int meshLight = -1;            // index into Impl::meshLights when emissive
+  int meshLight = -1;  // index into Impl::meshLights when emissive
   // A multi-material asset's per-part materials (InsertedObject::partMaterials) and, per part,
   // its index into Impl::meshLights (-1: not emissive). Empty: `material` everywhere.
   std::vector<Material> parts;
@@ -136,8 +136,8 @@ struct MeshLightData {
   double area = 0;
   Vec3 radiance = Vec3::Zero();
   Vec3 centre = Vec3::Zero();
-  std::array<Vec3, 8> boxCorners;          // world bounding box
-  double power = 0;                        // area x mean radiance; 0: never picked
+  std::array<Vec3, 8> boxCorners;  // world bounding box
+  double power = 0;                // area x mean radiance; 0: never picked
 };
 
 struct SunData {
@@ -148,7 +148,7 @@ struct SunData {
 
 struct Hit {
   enum class Kind { None, Room, Light, Object } kind = Kind::None;
-  int index = -1;  // surface id, light index or object index
+  int index = -1;     // surface id, light index or object index
   unsigned prim = 0;  // the object's triangle (its part's material)
   double t = 0;
   Vec3 point;
@@ -162,7 +162,8 @@ struct Hit {
 
 // A bound on Embree's float intersection error for a triangle with these corners.
 double triangleRoundOff(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return 32.0 * 1.1920929e-7 * std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
+  return 32.0 * 1.1920929e-7 *
+         std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()});
 }
 
 // The intersect context of a camera or bounce ray: Embree's, then the number the occluder-card
@@ -274,7 +275,8 @@ struct PathTracer::Impl {
   }
 
   // The closest hit; occluder cards are passed where cardU >= their alpha (cardU < 0: never).
-  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1) const {
+  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear,
+                double cardU = -1) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
     CardPassContext ctx;
     rtcInitIntersectContext(&ctx.base);
@@ -391,12 +393,14 @@ struct PathTracer::Impl {
     }
     using Sel = TracerOptions::LightSelection;
     const Sel sel = options.lightSelection;
-    powerSelection = sel == Sel::Power ||
-                     (sel == Sel::Auto && sourceCount() > size_t(std::max(0, options.spatialSelectionMax)));
+    powerSelection =
+        sel == Sel::Power ||
+        (sel == Sel::Auto && sourceCount() > size_t(std::max(0, options.spatialSelectionMax)));
   }
   // The probability that NEE from p (normal n) picks source j, as pickLight() draws it.
   double selectionProbability(size_t j, const Vec3& p, const Vec3& n) const {
-    if (powerSelection) return powerCdf.empty() || !(powerCdf.back() > 0) ? 0.0 : sourcePower(j) / powerCdf.back();
+    if (powerSelection)
+      return powerCdf.empty() || !(powerCdf.back() > 0) ? 0.0 : sourcePower(j) / powerCdf.back();
     const double total = selectionTotal(p, n);
     return total > 0 ? selectionWeight(j, p, n) / total : 0.0;
   }
@@ -512,7 +516,8 @@ struct PathTracer::Impl {
 
   // The material the user gave room surface `id` (Glossy or Mirror), or null: Lambertian.
   const Material* roomMaterial(int id) const {
-    if (id < 0 || size_t(id) >= scene.roomMaterials.size() || !scene.roomMaterials[size_t(id)]) return nullptr;
+    if (id < 0 || size_t(id) >= scene.roomMaterials.size() || !scene.roomMaterials[size_t(id)])
+      return nullptr;
     const Material& m = *scene.roomMaterials[size_t(id)];
     return m.kind == Material::Kind::Glossy || m.kind == Material::Kind::Mirror ? &m : nullptr;
   }
@@ -542,11 +547,13 @@ struct PathTracer::Impl {
   // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
   int64_t rayClockNs() const {
     if (!options.timeRays) return 0;
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(
+               std::chrono::steady_clock::now().time_since_epoch())
         .count();
   }
   // Appends a ray to TracerOptions::rayLog (benchmarks only).
-  void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear, double tFar) const {
+  void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear,
+              double tFar) const {
     LoggedRay r;
     r.type = type;
     r.target = s == withScene      ? LoggedRay::Target::With
@@ -571,13 +578,11 @@ struct PathTracer::Impl {
   // Adds light c reaching o from direction dir (up to tFar) to the sums of `mode`: with the
   // paths still shared, a ray the objects block is retried without them (only then do the
   // two sums differ).
-  void addUnlessBlocked(Mode mode, RTCScene with, RTCScene without, const Vec3& o, const Vec3& dir, double tFar,
-                        const Vec3& c, Sums& out) const {
+  void addUnlessBlocked(Mode mode, RTCScene with, RTCScene without, const Vec3& o, const Vec3& dir,
+                        double tFar, const Vec3& c, Sums& out) const {
     if (mode == Mode::Shared) {
-      if (!blocked(out, with, o, dir, tFar))
-        out.with += c, out.without += c;
-      else if (!blocked(out, without, o, dir, tFar))
-        out.without += c;  // only an object blocks it
+      if (!blocked(out, with, o, dir, tFar)) out.with += c, out.without += c;
+      else if (!blocked(out, without, o, dir, tFar)) out.without += c;  // only an object blocks it
     } else if (!blocked(out, mode == Mode::WithOnly ? with : without, o, dir, tFar)) {
       (mode == Mode::WithOnly ? out.with : out.without) += c;
     }
@@ -588,29 +593,29 @@ struct PathTracer::Impl {
     Vec3 origin, dir;
     double tNear = 0;
     Vec3 throughput = Vec3::Ones();
-    int depth = 0;             // index of the vertex the ray will find (0: the camera ray's hit)
-    bool lastSpecular = true;  // camera rays count as specular: lights seen directly count
-    double lastPdf = 0;        // solid-angle pdf of the last non-specular bounce (MIS)
-    Vec3 lastPoint = Vec3::Zero();  // the vertex of that bounce (MIS: the light pdf seen from it)
+    int depth = 0;                   // index of the vertex the ray will find (0: the camera ray's hit)
+    bool lastSpecular = true;        // camera rays count as specular: lights seen directly count
+    double lastPdf = 0;              // solid-angle pdf of the last non-specular bounce (MIS)
+    Vec3 lastPoint = Vec3::Zero();   // the vertex of that bounce (MIS: the light pdf seen from it)
     Vec3 lastNormal = Vec3::Zero();  // its geometric normal on the side the path left from; zero
-                               // after a transmitting BSDF (light selection saw every side)
+                                     // after a transmitting BSDF (light selection saw every side)
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
 
   void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
                    RayCounters& tileCounters) const;
   template <class RenderOne>
-  bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, const CancelToken* cancel,
-                    RenderOne&& renderOne) const;
+  bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
+                    const CancelToken* cancel, RenderOne&& renderOne) const;
   mutable std::mutex arenaMutex;
   mutable std::shared_ptr<tbb::task_arena> arena;
   mutable int arenaThreads = -1;
   std::shared_ptr<tbb::task_arena> arenaFor(int threads) const;
   template <class RenderTile>
-  bool forEachTile(int width, int height, int threads, const CancelToken* cancel, RenderTile&& renderTile) const;
+  bool forEachTile(int width, int height, int threads, const CancelToken* cancel,
+                   RenderTile&& renderTile) const;
 
-  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
-                 bool* firstHitIsObject) const;
+  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, bool* firstHitIsObject) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
 
   // tracePath's steps.
@@ -646,11 +651,11 @@ struct PathTracer::Impl {
   bool endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const;
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
   Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
-  bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf, const SampleRng& rng,
-                          Sums& out) const;
+  bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                          const SampleRng& rng, Sums& out) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
-  void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, const SampleRng& rng,
-                       Sums& out) const;
+  void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                       const SampleRng& rng, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
   bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
@@ -675,7 +680,8 @@ void PathTracer::Impl::updateMeshLightData(MeshLightData& m) {
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     if (m.part >= 0 && o.partOf(unsigned(t)) != m.part) continue;
-    if (tri[0] >= mesh.positions.size() || tri[1] >= mesh.positions.size() || tri[2] >= mesh.positions.size())
+    if (tri[0] >= mesh.positions.size() || tri[1] >= mesh.positions.size() ||
+        tri[2] >= mesh.positions.size())
       continue;
     const Vec3 a = linear * mesh.positions[tri[0]].cast<double>() + shift;
     const Vec3 b = linear * mesh.positions[tri[1]].cast<double>() + shift;
@@ -693,14 +699,16 @@ void PathTracer::Impl::updateMeshLightData(MeshLightData& m) {
   if (!(m.power > 0)) return;
   m.centre = weighted / m.area;
   for (int k = 0; k < 8; ++k)
-    m.boxCorners[size_t(k)] = Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+    m.boxCorners[size_t(k)] =
+        Vec3(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
 }
 
 Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double v, Vec3* normal) const {
   const double target = u * m.area;
-  const size_t k = std::min(size_t(std::upper_bound(m.cumulativeArea.begin(), m.cumulativeArea.end(), target) -
-                                   m.cumulativeArea.begin()),
-                            m.cumulativeArea.size() - 1);
+  const size_t k =
+      std::min(size_t(std::upper_bound(m.cumulativeArea.begin(), m.cumulativeArea.end(), target) -
+                      m.cumulativeArea.begin()),
+               m.cumulativeArea.size() - 1);
   const double before = k > 0 ? m.cumulativeArea[k - 1] : 0.0;
   const double span = m.cumulativeArea[k] - before;
   const double uu = std::clamp(span > 0 ? (target - before) / span : 0.0, 0.0, 1.0);
@@ -730,7 +738,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (st.depth >= options.maxDepth) return;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
-    const bool goesOn = bsdf.nonSpecular()                      ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
+    const bool goesOn = bsdf.nonSpecular() ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
                         : bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
                                                               : scatterGlass(st, v, bsdf);
     if (!goesOn) return;
@@ -739,18 +747,18 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
   }
 }
 
-Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out) const {
+Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng,
+                                  Sums& out) const {
   const RTCScene s = mode == Mode::WithoutOnly ? withoutScene : withScene;
   const uint32_t cardDim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex + 7;
   if (options.rayLog)
-    logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir, st.tNear, 3.4e38);
+    logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir,
+           st.tNear, 3.4e38);
   const int64_t t0 = rayClockNs();
   const Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
   const int64_t spentNs = rayClockNs() - t0;
-  if (st.depth == 0)
-    ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
-  else
-    ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
+  if (st.depth == 0) ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
+  else ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
   return hit;
 }
 
@@ -760,9 +768,11 @@ void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& h
   const LightData& l = lights[size_t(hit.index)];
   const double cosL = -l.normal.dot(st.dir);
   if (cosL <= 0) return;  // the black back of the light
-  const double w =
-      st.lastSpecular ? 1.0 : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint, st.lastNormal, hit.point));
-  if (w > 0) addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(l.radiance) * w), st.depth >= 2));
+  const double w = st.lastSpecular ? 1.0
+                                   : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint,
+                                                                         st.lastNormal, hit.point));
+  if (w > 0)
+    addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(l.radiance) * w), st.depth >= 2));
 }
 
 // A bounce that lands on room the camera sees takes the photo's radiance there (all the light
@@ -777,9 +787,11 @@ void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& h
 // for its lobes, a bounce on), and its bounce ends on Lambertian room where the photo's
 // radiance does hold for every direction. A Lambertian point the real mirror lights is
 // unaffected: the photo there already holds that light.
-bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const {
+bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng,
+                                   Sums& out) const {
   const bool photoAllowed = !std::exchange(st.noPhotoAtFirstHit, false);
-  if (hit.kind != Hit::Kind::Room || st.depth < 1 || roomMaterial(hit.index) || !photoAllowed) return false;
+  if (hit.kind != Hit::Kind::Room || st.depth < 1 || roomMaterial(hit.index) || !photoAllowed)
+    return false;
   Vec3 photo;
   if (!scene.roomAlbedo.radianceAtPixel(hit.photoPixel, &photo)) return false;
   addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(photo)), st.depth >= 2));
@@ -802,11 +814,13 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
   if (m.kind == Material::Kind::Emissive) {
     // Both sides emit. After a non-specular bounce NEE could have found this point too.
     const int k = od.meshLightOf(hit.prim);
-    const double w = st.lastSpecular || k < 0
-                         ? 1.0
-                         : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal, hit.point,
-                                                                   hit.geometricNormal));
-    if (w > 0) addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(m.emission) * w), st.depth >= 2));
+    const double w =
+        st.lastSpecular || k < 0
+            ? 1.0
+            : powerHeuristic(st.lastPdf, meshLightPdf(size_t(k), st.lastPoint, st.lastNormal, hit.point,
+                                                      hit.geometricNormal));
+    if (w > 0)
+      addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(m.emission) * w), st.depth >= 2));
     return false;
   }
   bsdf->kind = m.kind;
@@ -815,7 +829,8 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
   return true;
 }
 
-PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const {
+PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const Hit& hit,
+                                                    const SampleRng& rng) const {
   Vertex v;
   v.point = hit.point;
   v.wo = -st.dir;
@@ -832,8 +847,9 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
 
 // A non-specular vertex: next-event estimation (a light source, the suns), then a direction
 // from the BSDF. False when the path ends here.
-bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                                          const SampleRng& rng, Sums& out) const {
+bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
+                                          const SurfaceBsdf& bsdf, const SampleRng& rng,
+                                          Sums& out) const {
   const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
@@ -893,7 +909,9 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
 void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                                        const SampleRng& rng, Sums& out) const {
   double selectProb = 0;
-  const size_t li = sourceCount() == 0 ? sourceCount() : pickLight(v.point, lobe.selectNormal, v.pickAndLobe[0], &selectProb);
+  const size_t li = sourceCount() == 0
+                        ? sourceCount()
+                        : pickLight(v.point, lobe.selectNormal, v.pickAndLobe[0], &selectProb);
   if (li >= sourceCount() || !(selectProb > 0)) return;
   const SourcePoint p = sampleSource(li, v.point, rng.get2(v.dim / 2));
   Vec3 w = p.y - v.point;
@@ -903,17 +921,20 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
   const double cosL = p.mesh ? std::abs(p.normal.dot(w)) : -p.normal.dot(w);
   const bool above = w.dot(v.ngFacing) > 0;
   const Vec3 wLocal = lobe.frame.toLocal(w);
-  if (!(d > 2 * v.eps && cosL > 0 && (above || lobe.bsdf.transmits()) && (wLocal.z() > 0) == above)) return;
+  if (!(d > 2 * v.eps && cosL > 0 && (above || lobe.bsdf.transmits()) && (wLocal.z() > 0) == above))
+    return;
   double pdfBsdf = 0;
   const Vec3 fcos = lobe.bsdf.eval(lobe.woLocal, wLocal, &pdfBsdf);
   if (!(fcos.maxCoeff() > 0)) return;
-  const double pdfLight = p.mesh               ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
-                          : p.solidAngle > 0 ? selectProb / p.solidAngle
-                                             : lightPdf(int(li), v.point, lobe.selectNormal, p.y);
-  const Vec3 c = pdfLight > 0 ? clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
-                                                   (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
-                                              st.depth >= 1)
-                              : Vec3(Vec3::Zero());
+  const double pdfLight =
+      p.mesh             ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
+      : p.solidAngle > 0 ? selectProb / p.solidAngle
+                         : lightPdf(int(li), v.point, lobe.selectNormal, p.y);
+  const Vec3 c = pdfLight > 0
+                     ? clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
+                                          (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                                     st.depth >= 1)
+                     : Vec3(Vec3::Zero());
   // The shadow ray runs from the offset origin to the sampled point itself, stopping just
   // short of the emitter (which would otherwise block its own light).
   const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
@@ -923,7 +944,8 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
   const double tFar = ds * (1.0 - 1e-4);
   if (p.mesh) {
     // An emissive object exists in the with-scene only.
-    if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar)) out.with += c;
+    if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
+      out.with += c;
   } else {
     addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
   }
@@ -944,7 +966,8 @@ void PathTracer::Impl::addSunLight(Mode mode, const PathState& st, const Vertex&
     if (!(fcos.maxCoeff() > 0)) continue;
     // L = f cos E_perp with E_perp = pi * irradianceOverPi.
     const Vec3 c = clampIndirect(
-        Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)), st.depth >= 1);
+        Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(sun.irradianceOverPi) * (kPi * beam)),
+        st.depth >= 1);
     const Vec3 o = v.point + (sunAbove ? v.eps : -v.eps) * v.ngFacing;
     addUnlessBlocked(mode, sunWithScene, sunWithoutScene, o, sun.toSun, 3.4e38, c, out);
   }
@@ -1145,9 +1168,11 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
       rtcSetGeometryInstancedScene(o.sunInstance, o.scene);
     }
     // A multi-material asset lights by its emissive parts; any other object by its material.
-    if (o.mesh && !src.partMaterials.empty() && o.mesh->triangleMaterial.size() == o.mesh->triangles.size()) {
+    if (o.mesh && !src.partMaterials.empty() &&
+        o.mesh->triangleMaterial.size() == o.mesh->triangles.size()) {
       o.parts = src.partMaterials;
-      for (size_t k = 0; k < o.parts.size(); ++k) o.partMeshLight.push_back(d.addMeshLight(o, i, o.parts[k], int(k)));
+      for (size_t k = 0; k < o.parts.size(); ++k)
+        o.partMeshLight.push_back(d.addMeshLight(o, i, o.parts[k], int(k)));
     } else {
       o.meshLight = d.addMeshLight(o, i, o.material, -1);
     }
@@ -1165,8 +1190,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     SunData sd;
     sd.sun = &sun;
     sd.toSun = -sun.travelDirection.normalized();
-    sd.irradianceOverPi =
-        sun.irradianceOverPi.allFinite() ? Vec3(sun.irradianceOverPi.cwiseMax(0.0)) : Vec3(Vec3::Zero());
+    sd.irradianceOverPi = sun.irradianceOverPi.allFinite() ? Vec3(sun.irradianceOverPi.cwiseMax(0.0))
+                                                           : Vec3(Vec3::Zero());
     if (sd.toSun.allFinite() && sd.irradianceOverPi.maxCoeff() > 0) d.suns.push_back(sd);
   }
   if (!d.suns.empty()) {
@@ -1221,8 +1246,8 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
 
 // One pixel's samples [firstSample, firstSample + count), summed in double and added to the
 // buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
-void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count,
-                                   uint32_t seed, RayCounters& tileCounters) const {
+void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample,
+                                   int count, uint32_t seed, RayCounters& tileCounters) const {
   const Camera& cam = scene.camera;
   const Vec3 eye = cam.centreWorld();
   // Buffers may be a different size from the camera's pixel frame: scale into it.
@@ -1322,7 +1347,8 @@ bool PathTracer::Impl::forEachTile(int width, int height, int threads, const Can
           return;
         }
         const int tx = t % tilesX, ty = t / tilesX;
-        if (!renderTile(tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize)) stopped = true;
+        if (!renderTile(tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize))
+          stopped = true;
       }
     });
   });
@@ -1330,8 +1356,7 @@ bool PathTracer::Impl::forEachTile(int width, int height, int threads, const Can
 }
 
 bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
-                            int firstSample, int count, uint32_t seed,
-                            const CancelToken* cancel) const {
+                            int firstSample, int count, uint32_t seed, const CancelToken* cancel) const {
   const Impl& d = *impl_;
   return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
     d.renderPixel(buffers, x, y, firstSample, count, seed, counters);
@@ -1340,21 +1365,23 @@ bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1
 
 bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
                         int threads, const CancelToken* cancel) const {
-  return impl_->forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
-    return renderRect(buffers, x0, y0, x1, y1, firstSample, count, seed, cancel);
-  });
+  return impl_->forEachTile(
+      buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+        return renderRect(buffers, x0, y0, x1, y1, firstSample, count, seed, cancel);
+      });
 }
 
-bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed,
-                              int threads, const CancelToken* cancel) const {
+bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts,
+                              uint32_t seed, int threads, const CancelToken* cancel) const {
   const Impl& d = *impl_;
   INLAY_CHECK(counts.size() == buffers.samples.size());
-  return d.forEachTile(buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
-    return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
-      const size_t i = size_t(y) * buffers.width + x;
-      if (counts[i] > 0) d.renderPixel(buffers, x, y, buffers.samples[i], counts[i], seed, counters);
-    });
-  });
+  return d.forEachTile(
+      buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
+        return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
+          const size_t i = size_t(y) * buffers.width + x;
+          if (counts[i] > 0) d.renderPixel(buffers, x, y, buffers.samples[i], counts[i], seed, counters);
+        });
+      });
 }
 
 PathTracer::FirstHit PathTracer::firstHit(const Vec2& pixel) const {
@@ -1371,15 +1398,17 @@ PathTracer::FirstHit PathTracer::firstHit(const Vec2& pixel) const {
   out.normal = hit.shadingNormal.dot(dir) > 0 ? Vec3(-hit.shadingNormal) : hit.shadingNormal;
   if (hit.kind == Hit::Kind::Room) {
     const Material* m = d.roomMaterial(hit.index);
-    out.albedo = m && m->kind == Material::Kind::Mirror ? m->albedo
-                                                        : d.scene.roomAlbedo.lookup(hit.index, hit.point);
+    out.albedo = m && m->kind == Material::Kind::Mirror
+                     ? m->albedo
+                     : d.scene.roomAlbedo.lookup(hit.index, hit.point);
   } else if (hit.kind == Hit::Kind::Object) {
     const Material& m = d.objects[size_t(hit.index)].materialOf(hit.prim);
     const bool coloured = m.kind != Material::Kind::Glass && m.kind != Material::Kind::RoughGlass &&
                           m.kind != Material::Kind::Emissive;
     if (coloured) out.albedo = m.albedo;
   }
-  out.albedo = out.albedo.allFinite() ? Vec3(out.albedo.cwiseMax(0.0).cwiseMin(1.0)) : Vec3(Vec3::Ones());
+  out.albedo = out.albedo.allFinite() ? Vec3(out.albedo.cwiseMax(0.0).cwiseMin(1.0))
+                                      : Vec3(Vec3::Ones());
   return out;
 }
 

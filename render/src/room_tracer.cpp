@@ -18,7 +18,7 @@ using namespace detail;
 struct RoomTracer::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
-  std::vector<TriangleMesh> meshes;  // per surface id, world space (for normals)
+  std::vector<TriangleMesh> meshes;                     // per surface id, world space (for normals)
   std::vector<std::shared_ptr<const CardAlpha>> cards;  // the mattes the filters read
 
   ~Impl() {
@@ -140,7 +140,8 @@ double RoomTracer::unitLightIrradianceOverPi(const AreaLight& light, const Vec3&
 }
 
 Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {
-  return albedoAtPixel(surfaceId, albedo.channels < 1 ? std::nullopt : pixelShowing(surfaceId, pointWorld));
+  return albedoAtPixel(surfaceId,
+                       albedo.channels < 1 ? std::nullopt : pixelShowing(surfaceId, pointWorld));
 }
 
 Vec3 ProjectedAlbedo::albedoAtPixel(int surfaceId, std::optional<size_t> i) const {

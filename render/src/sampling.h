@@ -180,9 +180,9 @@ struct SphericalRect {
 // Spherical Triangles", in pbrt-v4's form). solidAngle by Van Oosterom & Strackee (stable for
 // small triangles); 0 when o lies in the triangle's plane.
 struct SphericalTriangle {
-  Vec3 o, a, b, c;          // unit directions to the corners
+  Vec3 o, a, b, c;  // unit directions to the corners
   Vec3 planePoint, planeNormal;
-  Vec3 nab, nbc, nca;       // normals of the great circles through the corners (not unit)
+  Vec3 nab, nbc, nca;  // normals of the great circles through the corners (not unit)
   double solidAngle = 0;
 
   // The solid angle only: the triangle's angles are worked out when it is sampled (a quad

@@ -63,7 +63,8 @@ double pixelError(const DifferentialBuffers& b, size_t i) {
 bool changed(const DifferentialBuffers& b, size_t i) {
   const float* w = &b.sumWith.data[i * 3];
   const float* wo = &b.sumWithout.data[i * 3];
-  return b.sumChangeSq.data[i] > 0 || b.sumMask.data[i] > 0 || w[0] != wo[0] || w[1] != wo[1] || w[2] != wo[2];
+  return b.sumChangeSq.data[i] > 0 || b.sumMask.data[i] > 0 || w[0] != wo[0] || w[1] != wo[1] ||
+         w[2] != wo[2];
 }
 
 // RenderFrame::samples and ::noise from the buffers.
@@ -113,7 +114,8 @@ std::vector<uint8_t> activePixels(const DifferentialBuffers& b) {
         active[size_t(y) * w + x] = 1;
       if (b.sumMask.at(x, y) > 0)
         for (int yy = std::max(0, y - r); yy <= std::min(h - 1, y + r); ++yy)
-          for (int xx = std::max(0, x - r); xx <= std::min(w - 1, x + r); ++xx) active[size_t(yy) * w + xx] = 1;
+          for (int xx = std::max(0, x - r); xx <= std::min(w - 1, x + r); ++xx)
+            active[size_t(yy) * w + xx] = 1;
     }
   return active;
 }
@@ -127,7 +129,8 @@ bool renderFocused(const PathTracer& tracer, DifferentialBuffers& b, const std::
 
 // focusOnChanges without a noise target: after two waves, `count` samples in the active pixels
 // only, and in every pixel every 4th wave. Empty: the whole frame (all pixels have one count).
-std::vector<int> focusedCounts(const DifferentialBuffers& b, int fullWaves, int count, const SessionOptions& opt) {
+std::vector<int> focusedCounts(const DifferentialBuffers& b, int fullWaves, int count,
+                               const SessionOptions& opt) {
   if (!opt.focusOnChanges || fullWaves < 2) return {};
   std::vector<int> counts(b.samples.size(), count);
   if (fullWaves % 4 == 0) return counts;
@@ -158,7 +161,8 @@ std::vector<int> adaptiveCounts(const DifferentialBuffers& b, double level, cons
       const int n = b.samples[i];
       double r = 0;
       for (int yy = std::max(0, y - 1); yy <= std::min(h - 1, y + 1); ++yy)
-        for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx) r = std::max(r, ratio[size_t(yy) * w + xx]);
+        for (int xx = std::max(0, x - 1); xx <= std::min(w - 1, x + 1); ++xx)
+          r = std::max(r, ratio[size_t(yy) * w + xx]);
       int c = std::max(0, (isChanged[i] ? opt.minSamples : opt.quietSamples) - n);
       if (r > 1 && n > 0) c = std::max(c, int(std::min(double(n), std::ceil(n * (r - 1)))));
       counts[i] = std::clamp(c, 0, std::max(0, opt.targetSpp - n));
@@ -222,10 +226,8 @@ void RenderSession::Impl::run() {
     const bool rebuildNow = rebuild || !tracer;
     rebuild = false;
     std::map<size_t, Mat4> moves;
-    if (rebuildNow)
-      moves = movesSinceScene;
-    else
-      moves = pendingMoves;
+    if (rebuildNow) moves = movesSinceScene;
+    else moves = pendingMoves;
     pendingMoves.clear();
     const std::shared_ptr<const RenderScene> sceneNow = scene;
     const SessionOptions opt = options;
@@ -247,8 +249,8 @@ void RenderSession::Impl::run() {
   }
 }
 
-void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
-                                        const PathTracer& tracer, Clock::time_point pickedUp) {
+void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt, const PathTracer& tracer,
+                                        Clock::time_point pickedUp) {
   const auto start = Clock::now();
   const Camera& cam = tracer.scene().camera;
   const int w = cam.widthPx, h = cam.heightPx;
@@ -257,8 +259,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
   DifferentialBuffers full;  // allocated at the first full-resolution wave (previews stay cheap)
   int spp = 0;
   int fullWaves = 0;
-  bool converged = false;  // every pixel met the noise target before the sample cap
-  bool pendingFrame = false;  // samples added since the last frame published
+  bool converged = false;                   // every pixel met the noise target before the sample cap
+  bool pendingFrame = false;                // samples added since the last frame published
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
   DenoiseGuides guides;  // SessionOptions::denoise: made at the version's first full frame
   auto send = [&](std::shared_ptr<const RenderFrame> frame) {
@@ -284,7 +286,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     // The per-pixel layers cost a frame's worth of work: final frames, and adaptive ones, only.
     if (final || opt.noiseTarget > 0) addSampleLayers(*frame, full);
     frame->final = final;
-    if (opt.denoise == SessionOptions::Denoise::All || (final && opt.denoise == SessionOptions::Denoise::Final))
+    if (opt.denoise == SessionOptions::Denoise::All ||
+        (final && opt.denoise == SessionOptions::Denoise::Final))
       denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     pendingFrame = false;
@@ -305,7 +308,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
         }
         // The first level: the 99th percentile (the few pixels above it double their samples
         // in every wave anyway; starting at the largest would spend waves on fireflies alone).
-        level = std::max(opt.noiseTarget, std::isinf(level) ? errorQuantile(full, 0.99) : level / std::sqrt(2.0));
+        level = std::max(opt.noiseTarget,
+                         std::isinf(level) ? errorQuantile(full, 0.99) : level / std::sqrt(2.0));
         continue;
       }
       const bool complete = renderFocused(tracer, full, counts, opt, token);
@@ -325,8 +329,8 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       const int d = work.resolutionDivider;
       const int cw = (w + d - 1) / d, ch = (h + d - 1) / d;
       DifferentialBuffers preview(cw, ch);
-      if (!tracer.render(preview, work.firstSample, work.sampleCount, opt.seed ^ 0x9E3779B9u, opt.threads,
-                         &token))
+      if (!tracer.render(preview, work.firstSample, work.sampleCount, opt.seed ^ 0x9E3779B9u,
+                         opt.threads, &token))
         break;
       auto frame = std::make_shared<RenderFrame>();
       frame->sceneVersion = v;
@@ -350,12 +354,13 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
       continue;
     }
     if (full.width != w) full = DifferentialBuffers(w, h);
-    if (opt.noiseTarget > 0 && spp >= std::min(opt.quietSamples, opt.targetSpp)) break;  // adaptive from here
+    if (opt.noiseTarget > 0 && spp >= std::min(opt.quietSamples, opt.targetSpp))
+      break;  // adaptive from here
     const std::vector<int> counts = focusedCounts(full, fullWaves, work.sampleCount, opt);
     // With no counts every pixel has the same count: the wave's first sample is each pixel's next.
-    const bool complete = counts.empty()
-                              ? tracer.render(full, work.firstSample, work.sampleCount, opt.seed, opt.threads, &token)
-                              : renderFocused(tracer, full, counts, opt, token);
+    const bool complete = counts.empty() ? tracer.render(full, work.firstSample, work.sampleCount,
+                                                         opt.seed, opt.threads, &token)
+                                         : renderFocused(tracer, full, counts, opt, token);
     ++fullWaves;
     if (complete) spp += work.sampleCount;
     if (!complete && token.cancelled()) return;  // an edit or cancel(): publish nothing
@@ -373,9 +378,10 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt,
     auto frame = std::make_shared<RenderFrame>(*last);
     frame->final = true;
     frame->converged = converged;
-    if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w) addSampleLayers(*frame, full);
-    if (opt.denoise != SessionOptions::Denoise::Off && !frame->denoised && frame->resolutionDivider == 1 &&
-        full.width == w)
+    if (frame->samples.empty() && frame->resolutionDivider == 1 && full.width == w)
+      addSampleLayers(*frame, full);
+    if (opt.denoise != SessionOptions::Denoise::Off && !frame->denoised &&
+        frame->resolutionDivider == 1 && full.width == w)
       denoiseSessionFrame(*frame, full, tracer, &guides, opt.threads);
     frame->seconds = seconds();
     send(std::move(frame));

@@ -56,8 +56,8 @@ bool ProjectedAlbedo::radianceAtPixel(std::optional<size_t> i, Vec3* radiance) c
   return true;
 }
 
-double unitSunIrradianceOverPi(const RoomTracer& tracer, const SceneGeometry& room,
-                               const SunLight& sun, const Vec3& p, const Vec3& n) {
+double unitSunIrradianceOverPi(const RoomTracer& tracer, const SceneGeometry& room, const SunLight& sun,
+                               const Vec3& p, const Vec3& n) {
   const Vec3 toSun = -sun.travelDirection;
   const double cosR = n.dot(toSun);
   if (!(cosR > 0)) return 0;

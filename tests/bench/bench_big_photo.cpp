@@ -79,7 +79,8 @@ QString upscaled(const QImage& source, double megapixels, const QDir& dir) {
   const QString path = dir.filePath(QStringLiteral("photo_%1mp.jpg").arg(megapixels));
   QImageWriter writer(path, "jpeg");
   writer.setQuality(92);
-  return writer.write(source.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation)) ? path : QString();
+  return writer.write(source.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation)) ? path
+                                                                                            : QString();
 }
 
 // Milliseconds from each arranging gesture (move, turn, height, in turn) to its first composite
@@ -102,7 +103,8 @@ std::vector<double> gestureToFrame(MainWindow& w, int gestures, std::vector<doub
     }
     if (!ok) continue;
     const quint64 wanted = r->requestedVersion();
-    if (!waitFor([&] { return r->isCurrent() && r->frameInfo().sceneVersion >= wanted; }, 20000)) continue;
+    if (!waitFor([&] { return r->isCurrent() && r->frameInfo().sceneVersion >= wanted; }, 20000))
+      continue;
     w.viewport()->repaint();  // on screen
     ms.push_back(msSince(t));
     cpuMs.push_back(processCpuMs() - cpu0);
@@ -145,7 +147,8 @@ bool measure(const QString& photo, double megapixels, int gestures, std::vector<
   add(QStringLiteral("open_ms"), msSince(t));
   t.restart();
   if (!waitFor([&] { return doc->state() != Document::State::Preparing; }, 3600000) || !doc->isReady()) {
-    std::fprintf(stderr, "bench_big_photo: %s: %s\n", qPrintable(photo), qPrintable(doc->prepareError()));
+    std::fprintf(stderr, "bench_big_photo: %s: %s\n", qPrintable(photo),
+                 qPrintable(doc->prepareError()));
     return false;
   }
   add(QStringLiteral("prepare_ms"), msSince(t));
@@ -173,8 +176,8 @@ int main(int argc, char** argv) {
   QCoreApplication::setApplicationName(QStringLiteral("bench_big_photo"));
   QCommandLineParser parser;
   parser.addHelpOption();
-  const QCommandLineOption outOpt(QStringLiteral("out"), QStringLiteral("Output folder."), QStringLiteral("dir"),
-                                  QStringLiteral("tests/bench/out"));
+  const QCommandLineOption outOpt(QStringLiteral("out"), QStringLiteral("Output folder."),
+                                  QStringLiteral("dir"), QStringLiteral("tests/bench/out"));
   const QCommandLineOption mpOpt(QStringLiteral("mp"), QStringLiteral("Megapixels, comma-separated."),
                                  QStringLiteral("list"), QStringLiteral("0.3,3,12"));
   const QCommandLineOption gesturesOpt(QStringLiteral("gestures"), QStringLiteral("Gestures per photo."),
@@ -189,7 +192,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "bench_big_photo: the example is not found\n");
     return 2;
   }
-  const QString example = QFileInfo(QString::fromStdString(scene)).absoluteDir().filePath(QStringLiteral("photo.png"));
+  const QString example =
+      QFileInfo(QString::fromStdString(scene)).absoluteDir().filePath(QStringLiteral("photo.png"));
   QString photo = parser.value(photoOpt);
   if (photo.isEmpty()) {
     const QString york = qEnvironmentVariable("INLAY_SHARED_DIR", QStringLiteral("../shared")) +
@@ -200,7 +204,8 @@ int main(int argc, char** argv) {
   reader.setAutoTransform(true);
   const QImage source = reader.read();
   if (source.isNull()) {
-    std::fprintf(stderr, "bench_big_photo: %s: cannot read (%s)\n", qPrintable(photo), qPrintable(reader.errorString()));
+    std::fprintf(stderr, "bench_big_photo: %s: cannot read (%s)\n", qPrintable(photo),
+                 qPrintable(reader.errorString()));
     return 2;
   }
   QDir().mkpath(parser.value(outOpt));
@@ -216,7 +221,8 @@ int main(int argc, char** argv) {
     QTextStream s(&csv);
     s << "megapixels,width,height,figure,value\n";
     for (const Row& r : rows)
-      s << r.megapixels << ',' << r.size.width() << ',' << r.size.height() << ',' << r.figure << ',' << r.ms << '\n';
+      s << r.megapixels << ',' << r.size.width() << ',' << r.size.height() << ',' << r.figure << ','
+        << r.ms << '\n';
     return true;
   };
   // The target size first: the bundled example as it is (512 x 384).
@@ -241,7 +247,8 @@ int main(int argc, char** argv) {
     std::vector<double> v;
     for (const Row& q : rows)
       if (q.megapixels == r.megapixels && q.figure == r.figure) v.push_back(q.ms);
-    std::printf("%s,%d,%d,%s,%.2f\n", r.megapixels == 0 ? "example" : qPrintable(photoKey + QStringLiteral("MP")),
+    std::printf("%s,%d,%d,%s,%.2f\n",
+                r.megapixels == 0 ? "example" : qPrintable(photoKey + QStringLiteral("MP")),
                 r.size.width(), r.size.height(), qPrintable(r.figure), median(v));
   }
   return 0;

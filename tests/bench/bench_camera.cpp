@@ -81,8 +81,7 @@ struct Truth {
 };
 
 struct Scores {
-  double focalRel = NAN, angMax = NAN, angMean = NAN, horizon = NAN, cornerMax = NAN,
-         cornerMean = NAN;
+  double focalRel = NAN, angMax = NAN, angMean = NAN, horizon = NAN, cornerMax = NAN, cornerMean = NAN;
 };
 
 Scores score(const Truth& t, const CameraEstimate& e) {
@@ -147,7 +146,7 @@ struct Row {
   std::string set, image;
   int budget = 0;
   double ms = 0;
-  double cpuMs = 0;  // the same run's CPU time (threadCpuMs)
+  double cpuMs = 0;        // the same run's CPU time (threadCpuMs)
   EstimateTimings stages;  // of the fastest run
   Scores s;
   double conf = 0, layoutScore = 0;
@@ -163,7 +162,8 @@ void dumpEstimate(const std::string& dir, const std::string& name, int budget, c
   j["principal_px"] = {e.camera.principalPx.x(), e.camera.principalPx.y()};
   json rot = json::array();
   for (int r = 0; r < 3; ++r)
-    rot.push_back({e.camera.worldFromCamera(r, 0), e.camera.worldFromCamera(r, 1), e.camera.worldFromCamera(r, 2)});
+    rot.push_back({e.camera.worldFromCamera(r, 0), e.camera.worldFromCamera(r, 1),
+                   e.camera.worldFromCamera(r, 2)});
   j["rotation"] = rot;
   json segs = json::array();
   for (const auto& s : e.segments)
@@ -175,7 +175,8 @@ void dumpEstimate(const std::string& dir, const std::string& name, int budget, c
   j["confidence"] = {e.confidence[0], e.confidence[1], e.confidence[2]};
   j["warnings"] = e.warnings;
   fs::create_directories(dir);
-  std::ofstream(fs::path(dir) / (fs::path(name).stem().string() + "_" + std::to_string(budget) + ".json"))
+  std::ofstream(fs::path(dir) /
+                (fs::path(name).stem().string() + "_" + std::to_string(budget) + ".json"))
       << j.dump() << "\n";
 }
 
@@ -221,8 +222,8 @@ int main(int argc, char** argv) {
   fs::create_directories(out);
   std::vector<Row> rows;
 
-  auto run = [&](const std::string& set, const std::string& name, const LoadedImage& li,
-                 const Truth& t, const std::vector<LineSegment>* segs) {
+  auto run = [&](const std::string& set, const std::string& name, const LoadedImage& li, const Truth& t,
+                 const std::vector<LineSegment>* segs) {
     const ImageF& im = li.linearRgb;
     for (int b : budgets) {
       EstimateOptions o;
@@ -242,8 +243,10 @@ int main(int argc, char** argv) {
       for (int rep = 0; rep < reps; ++rep) {
         const double c0 = threadCpuMs();
         const auto t0 = std::chrono::steady_clock::now();
-        auto e = segs ? estimateCameraFromSegments(im.width, im.height, *segs, o) : estimateCamera(im, o);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        auto e = segs ? estimateCameraFromSegments(im.width, im.height, *segs, o)
+                      : estimateCamera(im, o);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         const double cpuMs = threadCpuMs() - c0;
         if (!e.ok()) {
           std::cerr << name << ": " << e.error().message() << "\n";
@@ -351,12 +354,12 @@ int main(int argc, char** argv) {
            "corner_err_px_max,corner_err_px_mean,confidence,manhattan,layout_score,segments,principal_x,principal_y,"
            "lines_ms,vanishing_ms,refine_ms,layout_ms,cpu_ms\n";
     for (const Row& r : rows)
-      csv << r.set << "," << r.image << "," << r.budget << "," << r.ms << "," << r.s.focalRel
-          << "," << r.s.angMax << "," << r.s.angMean << "," << r.s.horizon << "," << r.s.cornerMax
-          << "," << r.s.cornerMean << "," << r.conf << "," << r.manhattan << ","
-          << r.layoutScore << "," << r.segments << "," << r.principal.x() << ","
-          << r.principal.y() << "," << r.stages.linesMs << "," << r.stages.vanishingMs << ","
-          << r.stages.refineMs << "," << r.stages.layoutMs << "," << r.cpuMs << "\n";
+      csv << r.set << "," << r.image << "," << r.budget << "," << r.ms << "," << r.s.focalRel << ","
+          << r.s.angMax << "," << r.s.angMean << "," << r.s.horizon << "," << r.s.cornerMax << ","
+          << r.s.cornerMean << "," << r.conf << "," << r.manhattan << "," << r.layoutScore << ","
+          << r.segments << "," << r.principal.x() << "," << r.principal.y() << "," << r.stages.linesMs
+          << "," << r.stages.vanishingMs << "," << r.stages.refineMs << "," << r.stages.layoutMs << ","
+          << r.cpuMs << "\n";
   }
   json summary;
   for (const std::string set : {"york", "scenes"})
@@ -382,8 +385,11 @@ int main(int argc, char** argv) {
                 {"horizon_auc", horizonAuc(hz)},
                 {"ms_median", median(ms)},
                 {"cpu_ms_median", median(cpu)},
-                {"stage_ms_median", {{"lines", median(st[0])}, {"vanishing", median(st[1])},
-                                     {"refine", median(st[2])}, {"layout", median(st[3])}}}};
+                {"stage_ms_median",
+                 {{"lines", median(st[0])},
+                  {"vanishing", median(st[1])},
+                  {"refine", median(st[2])},
+                  {"layout", median(st[3])}}}};
       if (set == "scenes") s["corner_err_px_max_median"] = median(cm);
       summary[set][std::to_string(b)] = s;
     }

@@ -65,10 +65,11 @@ int main(int argc, char** argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const ImageF with = b.meanWith(), mask = b.meanMask();
   const ImageF region = regionIds(scene, mask, w, h);
-  if (Status st = saveLayersExr((out / "ours.exr").string(), {{"with_objects", &with}, {"region", &region}}, false);
+  if (Status st = saveLayersExr((out / "ours.exr").string(),
+                                {{"with_objects", &with}, {"region", &region}}, false);
       !st.ok())
     return std::fprintf(stderr, "%s\n", st.error().message().c_str()), 2;
-  std::printf("{\"seconds\": %.3f, \"spp\": %d, \"width\": %d, \"height\": %d, \"rays\": %llu}\n", seconds, spp, w, h,
-              (unsigned long long)tracer.stats().rays);
+  std::printf("{\"seconds\": %.3f, \"spp\": %d, \"width\": %d, \"height\": %d, \"rays\": %llu}\n",
+              seconds, spp, w, h, (unsigned long long)tracer.stats().rays);
   return 0;
 }

@@ -66,8 +66,9 @@ int main(int argc, char** argv) {
     if (std::sscanf(argv[i], "%dx%d", &w, &h) == 2 && w > 0 && h > 0) sizes.emplace_back(w, h);
   }
   if (sizes.empty()) sizes = {{640, 480}, {4000, 3000}, {8660, 5780}};
-  std::printf("size,retinex_s,solver_s,iterations,ms_per_iteration,converged,mae_start,mae_end,"
-              "peak_rss_mb,poisson_mg_s,poisson_dct_s,poisson_max_diff\n");
+  std::printf(
+      "size,retinex_s,solver_s,iterations,ms_per_iteration,converged,mae_start,mae_end,"
+      "peak_rss_mb,poisson_mg_s,poisson_dct_s,poisson_max_diff\n");
   for (auto [W, H] : sizes) {
     const int cell = std::max(4, W / 16);
     const test::Layers l = test::makeLayers(W, H, cell);
@@ -95,12 +96,12 @@ int main(int argc, char** argv) {
     if (!d) return std::fprintf(stderr, "%s\n", d.error().message().c_str()), 1;
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
-    std::printf("%dx%d,%.3f,%.3f,%d,%.2f,%d,%.4f,%.4f,%.0f,%.3f,%.3f,%.2e\n", W, H, retinexS,
-                d->seconds, d->iterations, 1000 * d->seconds / std::max(1, d->iterations),
-                int(d->converged), mae(rho0), mae(d->albedo), ru.ru_maxrss / 1024.0, mgS, dctS,
-                maxDiff);
+    std::printf("%dx%d,%.3f,%.3f,%d,%.2f,%d,%.4f,%.4f,%.0f,%.3f,%.3f,%.2e\n", W, H, retinexS, d->seconds,
+                d->iterations, 1000 * d->seconds / std::max(1, d->iterations), int(d->converged),
+                mae(rho0), mae(d->albedo), ru.ru_maxrss / 1024.0, mgS, dctS, maxDiff);
     std::fprintf(stderr, "%dx%d: %s\n", W, H, d->report.c_str());
-    const std::string path = out + "/decompose_history_" + std::to_string(W) + "x" + std::to_string(H) + ".csv";
+    const std::string path = out + "/decompose_history_" + std::to_string(W) + "x" + std::to_string(H) +
+                             ".csv";
     if (FILE* f = std::fopen(path.c_str(), "w")) {
       std::fprintf(f, "seconds,iteration,objective,primal_residual,dual_residual\n");
       for (const auto& h : d->history)

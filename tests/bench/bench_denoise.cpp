@@ -42,7 +42,9 @@ using namespace inlay;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 // CPU seconds of the whole process (all threads): on a shared machine, what the work costs.
 double processCpuSeconds() {
@@ -83,8 +85,8 @@ double rmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& region)
   return std::sqrt(s / (3.0 * double(std::max<size_t>(1, region.size()))));
 }
 
-ImageF denoisedWith(const DifferentialBuffers& b, const ImageF& with, const ImageF& without, const ImageF& mask,
-                    const DenoiseGuides& g, int threads) {
+ImageF denoisedWith(const DifferentialBuffers& b, const ImageF& with, const ImageF& without,
+                    const ImageF& mask, const DenoiseGuides& g, int threads) {
   DenoiseInput in;
   in.withObjects = &with, in.withoutObjects = &without, in.mask = &mask, in.buffers = &b, in.guides = &g;
   DenoiseOptions o;
@@ -95,15 +97,18 @@ ImageF denoisedWith(const DifferentialBuffers& b, const ImageF& with, const Imag
 // The baseline OpenCV offers (ximgproc's guided filter, He et al.): the same delta X filtered
 // with a three-channel guide (the first hit's mean albedo, the mask, the normal's y: floor
 // against walls), radius 5, eps 1e-3, no noise level and no clamp; written back as our filter's.
-ImageF opencvGuidedWith(const ImageF& with, const ImageF& without, const ImageF& mask, const DenoiseGuides& g) {
+ImageF opencvGuidedWith(const ImageF& with, const ImageF& without, const ImageF& mask,
+                        const DenoiseGuides& g) {
   const int w = with.width, h = with.height;
   cv::Mat guide(h, w, CV_32FC3), src(h, w, CV_32FC3), dst;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
       const float m = std::clamp(mask.data[i], 0.f, 1.f);
-      guide.at<cv::Vec3f>(y, x) = cv::Vec3f((g.albedo[0][i] + g.albedo[1][i] + g.albedo[2][i]) / 3.f, m, g.normal[1][i]);
-      for (int c = 0; c < 3; ++c) src.at<cv::Vec3f>(y, x)[c] = with.data[i * 3 + c] - (1.f - m) * without.data[i * 3 + c];
+      guide.at<cv::Vec3f>(y, x) =
+          cv::Vec3f((g.albedo[0][i] + g.albedo[1][i] + g.albedo[2][i]) / 3.f, m, g.normal[1][i]);
+      for (int c = 0; c < 3; ++c)
+        src.at<cv::Vec3f>(y, x)[c] = with.data[i * 3 + c] - (1.f - m) * without.data[i * 3 + c];
     }
   cv::ximgproc::guidedFilter(guide, src, dst, 5, 1e-3);
   ImageF out = with;
@@ -111,13 +116,14 @@ ImageF opencvGuidedWith(const ImageF& with, const ImageF& without, const ImageF&
     for (int x = 0; x < w; ++x) {
       const size_t i = size_t(y) * w + x;
       const float m = std::clamp(mask.data[i], 0.f, 1.f);
-      for (int c = 0; c < 3; ++c) out.data[i * 3 + c] = dst.at<cv::Vec3f>(y, x)[c] + (1.f - m) * without.data[i * 3 + c];
+      for (int c = 0; c < 3; ++c)
+        out.data[i * 3 + c] = dst.at<cv::Vec3f>(y, x)[c] + (1.f - m) * without.data[i * 3 + c];
     }
   return out;
 }
 
-void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& photo, int w, int h, int refSpp,
-             int maxSpp, int threads, std::ofstream& csv, std::ofstream& timing) {
+void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& photo, int w, int h,
+             int refSpp, int maxSpp, int threads, std::ofstream& csv, std::ofstream& timing) {
   RenderScene scene = base;
   for (auto& o : scene.objects) o.material = mc.material, o.partMaterials.clear();
   PathTracer tracer(scene);
@@ -128,7 +134,8 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
   std::vector<size_t> object, around;
   for (size_t i = 0; i < reference.pixelCount(); ++i) {
     double d = 0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
+    for (int c = 0; c < 3; ++c)
+      d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
     if (refMask.data[i] > 0.5f) object.push_back(i);
     else if (refMask.data[i] == 0 && d > 2e-3) around.push_back(i);
   }
@@ -162,7 +169,8 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
     t0 = Clock::now();
     c0 = processCpuSeconds();
     const ImageF dw = denoisedWith(b, with, without, mask, guides, threads);
-    const double ms = secondsSince(t0) * 1e3, filterCpu = (processCpuSeconds() - c0) / std::max(1, threads);
+    const double ms = secondsSince(t0) * 1e3,
+                 filterCpu = (processCpuSeconds() - c0) / std::max(1, threads);
     if (spp == 4)
       for (int k = 0; k < 7; ++k) {
         t0 = Clock::now();
@@ -175,34 +183,37 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
     t0 = Clock::now();
     const double c2 = processCpuSeconds();
     const ImageF gw = opencvGuidedWith(with, without, mask, guides);
-    const double cvMs = secondsSince(t0) * 1e3, cvCpu = (processCpuSeconds() - c2) / std::max(1, threads);
+    const double cvMs = secondsSince(t0) * 1e3,
+                 cvCpu = (processCpuSeconds() - c2) / std::max(1, threads);
     const ImageF cvd = differentialComposite(photo, gw, without, mask);
-    csv << mc.name << ",opencv_guided," << spp << ',' << seconds + cvMs * 1e-3 << ',' << cpu + cvCpu << ','
-        << rmse(cvd, reference, object) << ',' << rmse(cvd, reference, around) << ',' << object.size() << ','
-        << around.size() << '\n';
-    csv << mc.name << ",raw," << spp << ',' << seconds << ',' << cpu << ',' << rmse(raw, reference, object) << ','
-        << rmse(raw, reference, around) << ',' << object.size() << ',' << around.size() << '\n';
+    csv << mc.name << ",opencv_guided," << spp << ',' << seconds + cvMs * 1e-3 << ',' << cpu + cvCpu
+        << ',' << rmse(cvd, reference, object) << ',' << rmse(cvd, reference, around) << ','
+        << object.size() << ',' << around.size() << '\n';
+    csv << mc.name << ",raw," << spp << ',' << seconds << ',' << cpu << ','
+        << rmse(raw, reference, object) << ',' << rmse(raw, reference, around) << ',' << object.size()
+        << ',' << around.size() << '\n';
     csv << mc.name << ",denoised," << spp << ',' << seconds + ms * 1e-3 << ',' << cpu + filterCpu << ','
-        << rmse(den, reference, object) << ',' << rmse(den, reference, around) << ',' << object.size() << ','
-        << around.size() << '\n';
+        << rmse(den, reference, object) << ',' << rmse(den, reference, around) << ',' << object.size()
+        << ',' << around.size() << '\n';
     csv.flush();
   }
   std::sort(filterMs.begin(), filterMs.end());
   std::sort(filterCpuMs.begin(), filterCpuMs.end());
   timing << mc.name << ',' << w << ',' << h << ',' << threads << ',' << guidesMs << ','
          << (filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]) << ','
-         << (filterCpuMs.empty() ? 0.0 : filterCpuMs[filterCpuMs.size() / 2]) << ',' << refError(object) << ','
-         << refError(around) << '\n';
+         << (filterCpuMs.empty() ? 0.0 : filterCpuMs[filterCpuMs.size() / 2]) << ',' << refError(object)
+         << ',' << refError(around) << '\n';
   timing.flush();
-  std::fprintf(stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms\n", mc.name, object.size(),
-               around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]);
+  std::fprintf(stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms\n", mc.name,
+               object.size(), around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 8) {
-    std::fprintf(stderr, "usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS\n");
+    std::fprintf(stderr,
+                 "usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS\n");
     return 2;
   }
   const std::string out = argv[2];
@@ -219,7 +230,8 @@ int main(int argc, char** argv) {
   std::ofstream csv(out + "/convergence.csv"), timing(out + "/timing.csv");
   if (!csv || !timing) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
   csv << "material,mode,spp,seconds,cpu_seconds_per_thread,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
-  timing << "material,width,height,threads,guides_ms,filter_ms,filter_cpu_ms_per_thread,reference_object_error,reference_surroundings_error\n";
+  timing
+      << "material,width,height,threads,guides_ms,filter_ms,filter_cpu_ms_per_thread,reference_object_error,reference_surroundings_error\n";
   const std::string only = argc > 8 ? argv[8] : "";
   for (const MaterialCase& mc : materialCases())
     if (only.empty() || ("," + only + ",").find("," + std::string(mc.name) + ",") != std::string::npos)

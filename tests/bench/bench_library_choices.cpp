@@ -35,7 +35,8 @@ double bestMs(const std::function<void()>& f) {
   for (int k = 0; k < gRepeats; ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
-    best = std::min(best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    best = std::min(
+        best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
   }
   return best;
 }
@@ -82,9 +83,11 @@ void resizeRows(std::vector<Row>& rows) {
   ImageF out;
   rows.push_back({what, "ours (resizeImage)", bestMs([&] { out = resizeImage(big, 1600, 1200); }),
                   meanAbs(resizeImage(big, 1008, 756)), errorIs});
-  rows.push_back({what, "OIIO resize, default filter", bestMs([&] { out = oiioResize(big, 1600, 1200, "", 0); }),
+  rows.push_back({what, "OIIO resize, default filter",
+                  bestMs([&] { out = oiioResize(big, 1600, 1200, "", 0); }),
                   meanAbs(oiioResize(big, 1008, 756, "", 0)), errorIs});
-  rows.push_back({what, "OIIO resize, box", bestMs([&] { out = oiioResize(big, 1600, 1200, "box", 4032.f / 1600); }),
+  rows.push_back({what, "OIIO resize, box",
+                  bestMs([&] { out = oiioResize(big, 1600, 1200, "box", 4032.f / 1600); }),
                   meanAbs(oiioResize(big, 1008, 756, "box", 4)), errorIs});
 }
 
@@ -96,9 +99,11 @@ void srgbRows(std::vector<Row>& rows) {
   std::uniform_real_distribution<float> u(0, 1.2f);
   for (float& x : v) x = u(rng) * u(rng);
   std::vector<unsigned char> exact(v.size()), out(v.size());
-  for (size_t i = 0; i < v.size(); ++i) exact[i] = (unsigned char)std::lround(255.f * linearToSrgb(v[i]));
+  for (size_t i = 0; i < v.size(); ++i)
+    exact[i] = (unsigned char)std::lround(255.f * linearToSrgb(v[i]));
   static std::array<unsigned char, 65536> lut;
-  for (int i = 0; i < 65536; ++i) lut[size_t(i)] = (unsigned char)std::lround(255.f * linearToSrgb(float(i) / 65535.f));
+  for (int i = 0; i < 65536; ++i)
+    lut[size_t(i)] = (unsigned char)std::lround(255.f * linearToSrgb(float(i) / 65535.f));
   auto wrong = [&] {
     double n = 0;
     for (size_t i = 0; i < v.size(); ++i) n += out[i] != exact[i];
@@ -106,7 +111,9 @@ void srgbRows(std::vector<Row>& rows) {
   };
   const char* what = "sRGB encode 4.8 M values";
   const char* errorIs = "codes differing from lround(255 linearToSrgb(v))";
-  double ms = bestMs([&] { for (size_t i = 0; i < v.size(); ++i) out[i] = srgbCode8(v[i]); });
+  double ms = bestMs([&] {
+    for (size_t i = 0; i < v.size(); ++i) out[i] = srgbCode8(v[i]);
+  });
   rows.push_back({what, "srgbCode8 (boundaries + bucket table)", ms, wrong(), errorIs});
   ms = bestMs([&] {
     for (size_t i = 0; i < v.size(); ++i) {
@@ -115,7 +122,10 @@ void srgbRows(std::vector<Row>& rows) {
     }
   });
   rows.push_back({what, "65536-entry table (the studio's before)", ms, wrong(), errorIs});
-  ms = bestMs([&] { for (size_t i = 0; i < v.size(); ++i) out[i] = (unsigned char)std::lround(255.f * linearToSrgb(v[i])); });
+  ms = bestMs([&] {
+    for (size_t i = 0; i < v.size(); ++i)
+      out[i] = (unsigned char)std::lround(255.f * linearToSrgb(v[i]));
+  });
   rows.push_back({what, "pow per value", ms, wrong(), errorIs});
 }
 
@@ -158,8 +168,9 @@ void otsuRows(std::vector<Row>& rows) {
     ms += bestMs([&] { t = detail::otsuThreshold(v, &mLow, &mHigh); });
     loss += 1 - betweenClass(v, t) / bestBetweenClass(v);
   }
-  rows.push_back({"Otsu threshold, 500 two-mode sets", "cv::threshold(THRESH_OTSU) on 256 levels", ms / sets,
-                  loss / sets, "mean share of the exact optimum's between-class variance missed"});
+  rows.push_back({"Otsu threshold, 500 two-mode sets", "cv::threshold(THRESH_OTSU) on 256 levels",
+                  ms / sets, loss / sets,
+                  "mean share of the exact optimum's between-class variance missed"});
 }
 
 // Loading a photo as the engine does (linear float, EXIF applied, checks) and encoding it for the
@@ -172,8 +183,8 @@ void photoRows(std::vector<Row>& rows, const std::string& path) {
     codes.resize(loaded->linearRgb.data.size());
     for (size_t i = 0; i < codes.size(); ++i) codes[i] = srgbCode8(loaded->linearRgb.data[i]);
   });
-  rows.push_back({"photo preview " + path.substr(path.find_last_of('/') + 1), "loadImage + srgbCode8", ms, 0,
-                  "(time only)"});
+  rows.push_back({"photo preview " + path.substr(path.find_last_of('/') + 1), "loadImage + srgbCode8",
+                  ms, 0, "(time only)"});
 }
 
 }  // namespace
@@ -194,9 +205,10 @@ int main(int argc, char** argv) {
   std::ofstream csv(argv[1]);
   csv << "what,method,ms,error,error_is\n";
   for (const Row& r : rows) {
-    csv << '"' << r.what << "\",\"" << r.method << "\"," << r.ms << ',' << r.error << ",\"" << r.errorIs << "\"\n";
-    std::printf("%-36s %-42s %10.2f ms  error %.4g (%s)\n", r.what.c_str(), r.method.c_str(), r.ms, r.error,
-                r.errorIs.c_str());
+    csv << '"' << r.what << "\",\"" << r.method << "\"," << r.ms << ',' << r.error << ",\"" << r.errorIs
+        << "\"\n";
+    std::printf("%-36s %-42s %10.2f ms  error %.4g (%s)\n", r.what.c_str(), r.method.c_str(), r.ms,
+                r.error, r.errorIs.c_str());
   }
   return csv ? 0 : 1;
 }

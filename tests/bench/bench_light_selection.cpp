@@ -39,7 +39,8 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-Result measure(const RenderScene& scene, TracerOptions::LightSelection mode, int w, int h, int spp, int repeats) {
+Result measure(const RenderScene& scene, TracerOptions::LightSelection mode, int w, int h, int spp,
+               int repeats) {
   TracerOptions opt;
   opt.maxDepth = 2;
   opt.lightSelection = mode;
@@ -87,15 +88,16 @@ int main(int argc, char** argv) {
   }
   csv << "lights,mode,seconds_per_spp,relative_noise,mean,noise2_x_seconds\n";
   using Sel = TracerOptions::LightSelection;
-  const std::pair<Sel, const char*> modes[] = {{Sel::Spatial, "spatial"}, {Sel::Power, "power"}, {Sel::Auto, "auto"}};
+  const std::pair<Sel, const char*> modes[] = {
+      {Sel::Spatial, "spatial"}, {Sel::Power, "power"}, {Sel::Auto, "auto"}};
   for (int count : {1, 2, 4, 8, 16, 32, 64, 128, 256}) {
     const RenderScene scene = test::manyLightsScene(w, h, count, 40.0, 2.0);
     for (const auto& [mode, name] : modes) {
       const Result r = measure(scene, mode, w, h, spp, repeats);
-      csv << count << ',' << name << ',' << r.secondsPerSample << ',' << r.relativeNoise << ',' << r.mean << ','
-          << r.relativeNoise * r.relativeNoise * r.secondsPerSample << '\n';
-      std::printf("%2d lights %-8s %8.2f ms/spp  noise %.4f  mean %.4f\n", count, name, 1e3 * r.secondsPerSample,
-                  r.relativeNoise, r.mean);
+      csv << count << ',' << name << ',' << r.secondsPerSample << ',' << r.relativeNoise << ',' << r.mean
+          << ',' << r.relativeNoise * r.relativeNoise * r.secondsPerSample << '\n';
+      std::printf("%2d lights %-8s %8.2f ms/spp  noise %.4f  mean %.4f\n", count, name,
+                  1e3 * r.secondsPerSample, r.relativeNoise, r.mean);
       std::fflush(stdout);
     }
   }

@@ -42,13 +42,16 @@ double medianMs(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) return std::fprintf(stderr, "usage: bench_mesh_readers OUT.csv FILE.obj|FILE.ply ...\n"), 2;
+  if (argc < 3)
+    return std::fprintf(stderr, "usage: bench_mesh_readers OUT.csv FILE.obj|FILE.ply ...\n"), 2;
   std::ofstream csv(argv[1]);
   csv << "file,ours_triangles,ours_ms,openmesh_soup_triangles,openmesh_soup_ms,openmesh_trimesh_faces,openmesh_trimesh_ms\n";
   for (int a = 2; a < argc; ++a) {
     const std::string path = argv[a];
     using Clock = std::chrono::steady_clock;
-    auto ms = [](Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); };
+    auto ms = [](Clock::time_point t) {
+      return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+    };
     std::vector<double> ours, soup, tri;
     size_t oursTriangles = 0, soupTriangles = 0, triFaces = 0;
     for (int run = 0; run < 5; ++run) {
@@ -71,10 +74,12 @@ int main(int argc, char** argv) {
       tri.push_back(ms(t0));
       triFaces = okPlain ? plain.n_faces() : 0;
     }
-    csv << path << ',' << oursTriangles << ',' << medianMs(ours) << ',' << soupTriangles << ',' << medianMs(soup) << ','
-        << triFaces << ',' << medianMs(tri) << '\n';
-    std::printf("%s: ours %zu tris %.1f ms | OpenMesh soup %zu tris %.1f ms | OpenMesh TriMesh %zu faces %.1f ms\n",
-                path.c_str(), oursTriangles, medianMs(ours), soupTriangles, medianMs(soup), triFaces, medianMs(tri));
+    csv << path << ',' << oursTriangles << ',' << medianMs(ours) << ',' << soupTriangles << ','
+        << medianMs(soup) << ',' << triFaces << ',' << medianMs(tri) << '\n';
+    std::printf(
+        "%s: ours %zu tris %.1f ms | OpenMesh soup %zu tris %.1f ms | OpenMesh TriMesh %zu faces %.1f ms\n",
+        path.c_str(), oursTriangles, medianMs(ours), soupTriangles, medianMs(soup), triFaces,
+        medianMs(tri));
   }
   return 0;
 }

@@ -195,9 +195,14 @@ int main(int argc, char** argv) {
       // What this matte says about each top drawn without a thickness (slabFromMatte).
       const auto t0 = std::chrono::steady_clock::now();
       const SlabEvidence e = slabFromMatte(*camera, solid, m->alphaPx);
-      std::cout << json{{"what", "slab"}, {"index", index}, {"occluder", i}, {"ms", msSince(t0)},
-                        {"covered", e.coveredSamples}, {"open_points", e.openSamples},
-                        {"open", e.open}, {"thickness_m", e.thicknessM}}
+      std::cout << json{{"what", "slab"},
+                        {"index", index},
+                        {"occluder", i},
+                        {"ms", msSince(t0)},
+                        {"covered", e.coveredSamples},
+                        {"open_points", e.openSamples},
+                        {"open", e.open},
+                        {"thickness_m", e.thicknessM}}
                        .dump()
                 << std::endl;
     }

@@ -43,7 +43,9 @@ using namespace inlay;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 double residentMb() {
   std::ifstream statm("/proc/self/statm");
@@ -74,9 +76,10 @@ std::vector<MaterialCase> materialCases() {
           {"glowing", glow}};
 }
 
-ImageF compositeFrom(const ImageF& photo, const DifferentialBuffers& withBuf, const DifferentialBuffers& withoutBuf,
-                     bool correlated) {
-  return differentialComposite(photo, withBuf.meanWith(), correlated ? withBuf.meanWithout() : withoutBuf.meanWith(),
+ImageF compositeFrom(const ImageF& photo, const DifferentialBuffers& withBuf,
+                     const DifferentialBuffers& withoutBuf, bool correlated) {
+  return differentialComposite(photo, withBuf.meanWith(),
+                               correlated ? withBuf.meanWithout() : withoutBuf.meanWith(),
                                withBuf.meanMask());
 }
 
@@ -90,7 +93,8 @@ double regionRmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& r
   return std::sqrt(s / (3.0 * std::max<size_t>(1, region.size())));
 }
 
-void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int refSpp, int maxSpp, std::ofstream& csv) {
+void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int refSpp, int maxSpp,
+                 std::ofstream& csv) {
   for (const MaterialCase& mc : materialCases()) {
     RenderScene scene = base;
     for (auto& o : scene.objects) o.material = mc.material;
@@ -103,7 +107,8 @@ void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int
     std::vector<size_t> region;
     for (size_t i = 0; i < reference.pixelCount(); ++i) {
       double d = 0;
-      for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
+      for (int c = 0; c < 3; ++c)
+        d = std::max(d, double(std::abs(reference.data[i * 3 + c] - photo.data[i * 3 + c])));
       if (d > 2e-3) region.push_back(i);
     }
     std::fprintf(stderr, "%s: region %zu px\n", mc.name, region.size());
@@ -118,9 +123,10 @@ void convergence(const RenderScene& base, const ImageF& photo, int w, int h, int
           if (!correlated) emptyTracer.render(without, spp, step, 3, threads);
           seconds += secondsSince(t0);
           spp += step;
-          const double e = regionRmse(compositeFrom(photo, with, without, correlated), reference, region);
-          csv << mc.name << ',' << (correlated ? "correlated" : "independent") << ',' << threads << ',' << spp << ','
-              << seconds << ',' << e << ',' << region.size() << '\n';
+          const double e =
+              regionRmse(compositeFrom(photo, with, without, correlated), reference, region);
+          csv << mc.name << ',' << (correlated ? "correlated" : "independent") << ',' << threads << ','
+              << spp << ',' << seconds << ',' << e << ',' << region.size() << '\n';
         }
         csv.flush();
       }
@@ -165,9 +171,9 @@ void throughput(const RenderScene& scene, int w, int h, std::ofstream& csv) {
         wallPlain.push_back(secondsSince(t0));
         all.push_back(double(c.cameraRays + c.bounceRays + c.shadowRays) / wallPlain.back() / threads);
       }
-      csv << threads << ',' << maxDepth << ',' << median(wallPlain) << ',' << n.cameraRays << ',' << n.bounceRays << ','
-          << n.shadowRays << ',' << median(cam) << ',' << median(bounce) << ',' << median(shadow) << ','
-          << median(all) << ',' << median(wall) / median(wallPlain) << '\n';
+      csv << threads << ',' << maxDepth << ',' << median(wallPlain) << ',' << n.cameraRays << ','
+          << n.bounceRays << ',' << n.shadowRays << ',' << median(cam) << ',' << median(bounce) << ','
+          << median(shadow) << ',' << median(all) << ',' << median(wall) / median(wallPlain) << '\n';
       csv.flush();
     }
   }
@@ -185,7 +191,8 @@ std::shared_ptr<TriangleMesh> sphere(int rings) {
     }
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < segments; ++j) {
-      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
+      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1),
+                     d = c + 1;
       m->triangles.push_back({a, b, c});
       m->triangles.push_back({b, d, c});
     }
@@ -196,7 +203,8 @@ void bvh(const RenderScene& base, std::ofstream& csv) {
   for (int rings : {50, 158, 500}) {  // 4 rings^2 triangles: 10k, 100k, 1M
     RenderScene scene = base;
     const auto mesh = sphere(rings);
-    const double meshMb = double(mesh->positions.size() * 2 * sizeof(Vec3f) + mesh->triangles.size() * 12) / (1 << 20);
+    const double meshMb =
+        double(mesh->positions.size() * 2 * sizeof(Vec3f) + mesh->triangles.size() * 12) / (1 << 20);
     InsertedObject o = scene.objects.at(0);
     o.meshObject = mesh;
     scene.objects = {o};
@@ -214,7 +222,8 @@ void bvh(const RenderScene& base, std::ofstream& csv) {
       moves.push_back(secondsSince(t1));
     }
     std::nth_element(moves.begin(), moves.begin() + 25, moves.end());
-    csv << mesh->triangles.size() << ',' << build << ',' << moves[25] << ',' << after - before << ',' << meshMb << '\n';
+    csv << mesh->triangles.size() << ',' << build << ',' << moves[25] << ',' << after - before << ','
+        << meshMb << '\n';
     csv.flush();
   }
 }
@@ -275,8 +284,8 @@ void sessionLatency(const RenderScene& scene, std::ofstream& csv) {
       while (!sink.firstOf(v, &at, &divider) && secondsSince(t0) < 10)
         std::this_thread::sleep_for(std::chrono::microseconds(200));
       const double ms = std::chrono::duration<double, std::milli>(at - t0).count();
-      csv << w << 'x' << h << ',' << startDivider << ',' << k << ',' << ms << ',' << divider << ',' << baseline << ','
-          << ms / baseline << '\n';
+      csv << w << 'x' << h << ',' << startDivider << ',' << k << ',' << ms << ',' << divider << ','
+          << baseline << ',' << ms / baseline << '\n';
       std::this_thread::sleep_for(std::chrono::milliseconds(150));
     }
     csv.flush();

@@ -133,8 +133,8 @@ int main(int argc, char** argv) {
   parser.addHelpOption();
   const QCommandLineOption outOpt(QStringLiteral("out"), QStringLiteral("Output folder."),
                                   QStringLiteral("dir"), QStringLiteral("tests/bench/out"));
-  const QCommandLineOption runsOpt(QStringLiteral("runs"), QStringLiteral("Runs."),
-                                   QStringLiteral("n"), QStringLiteral("5"));
+  const QCommandLineOption runsOpt(QStringLiteral("runs"), QStringLiteral("Runs."), QStringLiteral("n"),
+                                   QStringLiteral("5"));
   const QCommandLineOption photoOpt(QStringLiteral("photo"), QStringLiteral("Photo."),
                                     QStringLiteral("file"));
   parser.addOptions({outOpt, runsOpt, photoOpt});

@@ -66,12 +66,12 @@ void attachMesh(RTCDevice device, RTCScene scene, const std::vector<Vec3f>& posi
                 const std::vector<std::array<uint32_t, 3>>& triangles) {
   if (positions.empty() || triangles.empty()) return;
   RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                        3 * sizeof(float), positions.size()));
   for (size_t i = 0; i < positions.size(); ++i)
     for (int k = 0; k < 3; ++k) v[3 * i + size_t(k)] = positions[i].allFinite() ? positions[i][k] : 0.f;
-  auto* idx = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
+  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles.size()));
   for (size_t i = 0; i < triangles.size(); ++i)
     for (int k = 0; k < 3; ++k)
       idx[3 * i + size_t(k)] = triangles[i][size_t(k)] < positions.size() ? triangles[i][size_t(k)] : 0;
@@ -87,7 +87,8 @@ class BareScenes {
     for (int t = 0; t < 4; ++t) targets_[t] = rtcNewScene(device_);
     for (const Surface& s : scene.room.surfaces) {
       const int last = isBoxSurface(s.kind) ? 1 : 3;  // sun scenes: what stands inside the room
-      for (int t = 0; t <= last; ++t) attachMesh(device_, targets_[t], s.meshWorld.positions, s.meshWorld.triangles);
+      for (int t = 0; t <= last; ++t)
+        attachMesh(device_, targets_[t], s.meshWorld.positions, s.meshWorld.triangles);
     }
     for (const AreaLight& l : scene.lights) {
       std::vector<Vec3f> quad;
@@ -199,7 +200,8 @@ Frame renderFrames(const RenderScene& scene, TracerOptions opt, int repeats) {
     tracer.renderRect(b, 0, 0, w, h, 0, 1, 7);
     cpu.push_back(threadSeconds() - t0);
     if (r == 0) f.checksum = checksumOf(b);
-    const double wallNs = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - wall0).count();
+    const double wallNs =
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - wall0).count();
     const RayCounters c1 = tracer.stats().byType;
     f.rays.cameraRays = c1.cameraRays - c0.cameraRays;
     f.rays.bounceRays = c1.bounceRays - c0.bounceRays;
@@ -220,8 +222,8 @@ std::vector<LoggedRay> logRays(const RenderScene& scene, TracerOptions opt) {
   return std::move(log.rays);
 }
 
-double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, LoggedRay::Type type, int repeats,
-                   size_t* count) {
+double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, LoggedRay::Type type,
+                   int repeats, size_t* count) {
   std::vector<double> t;
   for (int r = 0; r < repeats; ++r) t.push_back(bare.cast(rays, type, count));
   return median(t);
@@ -254,16 +256,20 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
   for (const Row& r : rows) {
     size_t n = 0;
     const double bareS = bareSeconds(bare, *r.rays, r.type, repeats, &n);
-    if (n != r.count) std::fprintf(stderr, "warning: %s: %zu rays logged, %llu counted\n", r.name, n,
-                                   static_cast<unsigned long long>(r.count));
+    if (n != r.count)
+      std::fprintf(stderr, "warning: %s: %zu rays logged, %llu counted\n", r.name, n,
+                   static_cast<unsigned long long>(r.count));
     const double ours = double(r.count) / r.seconds, plain = double(n) / bareS;
     csv << r.name << ',' << r.count << ',' << ours << ',' << plain << ',' << ours / plain << '\n';
-    std::printf("%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f\n", r.name,
-                static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6, ours / plain);
+    std::printf("%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f\n",
+                r.name, static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6,
+                ours / plain);
   }
-  std::printf("frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
-              full.cpuSeconds, cam.cpuSeconds, 100 * fullTimed.neeShare,
-              100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1), static_cast<unsigned long long>(full.checksum));
+  std::printf(
+      "frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
+      full.cpuSeconds, cam.cpuSeconds, 100 * fullTimed.neeShare,
+      100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1),
+      static_cast<unsigned long long>(full.checksum));
   csv.flush();
 }
 
@@ -274,13 +280,15 @@ std::shared_ptr<TriangleMesh> sphere(int rings, float radius, const Vec3f& centr
   for (int i = 0; i <= rings; ++i)
     for (int j = 0; j <= segments; ++j) {
       const double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
-      const Vec3f n = Vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)).cast<float>();
+      const Vec3f n =
+          Vec3(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)).cast<float>();
       m->positions.push_back(centre + radius * n);
       m->normals.push_back(n);
     }
   for (int i = 0; i < rings; ++i)
     for (int j = 0; j < segments; ++j) {
-      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1), d = c + 1;
+      const uint32_t a = uint32_t(i * (segments + 1) + j), b = a + 1, c = a + uint32_t(segments + 1),
+                     d = c + 1;
       m->triangles.push_back({a, b, c});
       m->triangles.push_back({b, d, c});
     }
@@ -387,7 +395,8 @@ void waves(const RenderScene& scene, int repeats, int threads, std::ofstream& cs
       wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count());
     }
     csv << name << ',' << median(cpu) << ',' << threads << ',' << median(wall) << '\n';
-    std::printf("wave %-15s %.3f s CPU (1 thread)  %.3f s wall (%d threads)\n", name, median(cpu), median(wall), threads);
+    std::printf("wave %-15s %.3f s CPU (1 thread)  %.3f s wall (%d threads)\n", name, median(cpu),
+                median(wall), threads);
   }
 }
 
@@ -395,7 +404,9 @@ void waves(const RenderScene& scene, int repeats, int threads, std::ofstream& cs
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_throughput SCENE.json OUT_DIR [--parts types,triangles,lights] [--repeats N]\n");
+    std::fprintf(
+        stderr,
+        "usage: bench_throughput SCENE.json OUT_DIR [--parts types,triangles,lights] [--repeats N]\n");
     return 2;
   }
   const std::string out = argv[2];
@@ -413,11 +424,13 @@ int main(int argc, char** argv) {
   const RenderScene& scene = prepared->renderScene;
   if (scene.objects.empty() || !scene.objects[0].meshObject || scene.lights.empty())
     return std::fprintf(stderr, "%s: the scene needs an object and a light\n", argv[1]), 2;
-  std::printf("%s: %d x %d, %zu lights, %zu objects\n", argv[1], scene.camera.widthPx, scene.camera.heightPx,
-              scene.lights.size(), scene.objects.size());
+  std::printf("%s: %d x %d, %zu lights, %zu objects\n", argv[1], scene.camera.widthPx,
+              scene.camera.heightPx, scene.lights.size(), scene.objects.size());
   auto open = [&](const char* name, const char* header) {
     std::ofstream csv(out + "/" + name);
-    if (!csv) std::fprintf(stderr, "bench_throughput: %s/%s cannot be written\n", out.c_str(), name), std::exit(2);
+    if (!csv)
+      std::fprintf(stderr, "bench_throughput: %s/%s cannot be written\n", out.c_str(), name),
+          std::exit(2);
     csv << header << '\n';
     return csv;
   };

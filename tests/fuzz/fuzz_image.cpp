@@ -9,7 +9,9 @@
 namespace {
 
 const char* extensionFor(const uint8_t* d, size_t n) {
-  auto starts = [&](const char* magic, size_t len) { return n >= len && std::memcmp(d, magic, len) == 0; };
+  auto starts = [&](const char* magic, size_t len) {
+    return n >= len && std::memcmp(d, magic, len) == 0;
+  };
   if (starts("\xFF\xD8", 2)) return ".jpg";
   if (starts("II*\0", 4) || starts("MM\0*", 4)) return ".tif";
   if (starts("\x76\x2F\x31\x01", 4)) return ".exr";

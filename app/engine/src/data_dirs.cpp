@@ -13,7 +13,8 @@ std::vector<std::string> dataDirCandidates(const std::string& name) {
     out.push_back((fs::path(env) / name).string());
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) out.push_back((exe.parent_path() / ".." / "share" / "inlay" / name).lexically_normal().string());
+  if (!ec)
+    out.push_back((exe.parent_path() / ".." / "share" / "inlay" / name).lexically_normal().string());
   out.push_back((fs::path(INLAY_SOURCE_RESOURCES_DIR) / name).string());
   return out;
 }

@@ -21,8 +21,12 @@ using nlohmann::json;
 Expected<LibraryPiece> pieceOf(const json& p, const fs::path& dir, const std::string& key) {
   if (!p.is_object()) return Error{"", key, "expected an object"};
   LibraryPiece piece;
-  for (auto [field, out] : {std::pair{"name", &piece.name}, {"title", &piece.title}, {"category", &piece.category},
-                            {"file", &piece.file}, {"thumbnail", &piece.thumbnail}, {"material", &piece.material}}) {
+  for (auto [field, out] : {std::pair{"name", &piece.name},
+                            {"title", &piece.title},
+                            {"category", &piece.category},
+                            {"file", &piece.file},
+                            {"thumbnail", &piece.thumbnail},
+                            {"material", &piece.material}}) {
     if (!p.contains(field) || !p[field].is_string() || p[field].get<std::string>().empty())
       return Error{"", key + "." + field, "expected a non-empty string"};
     *out = p[field].get<std::string>();

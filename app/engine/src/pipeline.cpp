@@ -28,7 +28,8 @@ Error inFileKeys(Error e) {
   const std::string lines = "correction.vanishing_lines_px";
   if (e.key.rfind(lines, 0) != 0) return e;
   std::string rest = e.key.substr(lines.size());  // "[z]": the file writes the axis as ".z"
-  if (rest.size() >= 3 && rest[0] == '[' && rest[2] == ']') rest = "." + rest.substr(1, 1) + rest.substr(3);
+  if (rest.size() >= 3 && rest[0] == '[' && rest[2] == ']')
+    rest = "." + rest.substr(1, 1) + rest.substr(3);
   e.key = "camera.vanishing_lines_px" + rest;
   return e;
 }
@@ -50,8 +51,10 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
       x0 = std::min(x0, p.x()), y0 = std::min(y0, p.y());
       x1 = std::max(x1, p.x()), y1 = std::max(y1, p.y());
     }
-    const int ix0 = std::max(0, int(std::floor(x0)) - growPx), iy0 = std::max(0, int(std::floor(y0)) - growPx);
-    const int ix1 = std::min(W - 1, int(std::ceil(x1)) + growPx), iy1 = std::min(H - 1, int(std::ceil(y1)) + growPx);
+    const int ix0 = std::max(0, int(std::floor(x0)) - growPx),
+              iy0 = std::max(0, int(std::floor(y0)) - growPx);
+    const int ix1 = std::min(W - 1, int(std::ceil(x1)) + growPx),
+              iy1 = std::min(H - 1, int(std::ceil(y1)) + growPx);
     for (int y = iy0; y <= iy1; ++y)
       for (int x = ix0; x <= ix1; ++x) {
         // Inside test (even-odd) at the pixel centre, or within growPx of an edge.
@@ -73,14 +76,14 @@ ImageF rasterizeLights(int W, int H, const std::vector<std::vector<Vec2>>& polyg
   return mask;
 }
 
-
 // One scene-file surface built with the camera and room: an extrusion or box (`thicknessM`:
 // 0 down to the floor, > 0 a slab), or stairs by steps or from a drawn profile.
 Expected<Extrusion> surfaceOf(const Camera& camera, const RoomBox& box, const SurfaceKeys& sk,
                               double thicknessM, const std::string& key) {
   ExtrusionOptions eo;
   eo.thicknessM = thicknessM;
-  if (sk.kind == "extrusion") return extrusionFromOutline(camera, sk.outlinePx, sk.heightClickPx, key, eo);
+  if (sk.kind == "extrusion")
+    return extrusionFromOutline(camera, sk.outlinePx, sk.heightClickPx, key, eo);
   if (sk.kind == "box") return boxFromOutline(camera, sk.outlinePx, sk.heightClickPx, key, eo);
   if (sk.kind == "stairs" && !sk.profilePx.empty()) {
     StairsProfileSpec sp;
@@ -99,7 +102,8 @@ Expected<Extrusion> surfaceOf(const Camera& camera, const RoomBox& box, const Su
     st.runM = sk.runM;
     st.widthM = sk.widthM;
     const double sign = sk.climbAxis.size() == 2 && sk.climbAxis[0] == '-' ? -1.0 : 1.0;
-    st.climbWorld = sk.climbAxis.size() == 2 && sk.climbAxis[1] == 'x' ? Vec3(sign, 0, 0) : Vec3(0, 0, sign);
+    st.climbWorld = sk.climbAxis.size() == 2 && sk.climbAxis[1] == 'x' ? Vec3(sign, 0, 0)
+                                                                       : Vec3(0, 0, sign);
     return stairsFromSpec(camera, st, key);
   }
   return Error{"", key + ".kind", "unknown surface kind '" + sk.kind + "'"};
@@ -149,7 +153,8 @@ void sunsFromShadowRatio(PreparedScene& ps, const ImageF& lightMask) {
   for (size_t k = 0; k < L.suns.size(); ++k) {
     auto r = sunStrengthFromShadowRatio(photo, ps.camera, ps.geometry, L.gathered, L.lights, L.suns[k]);
     if (!r) {
-      ps.warnings.push_back("sun " + std::to_string(k) + ": strength kept as estimated: " + r.error().reason);
+      ps.warnings.push_back("sun " + std::to_string(k) +
+                            ": strength kept as estimated: " + r.error().reason);
       continue;
     }
     const Vec3 change = r->strength - L.suns[k].irradianceOverPi;
@@ -185,14 +190,17 @@ Expected<TriangleMesh> loadObjectMesh(const ObjectKeys& object) {
   return std::move(smooth->mesh);
 }
 
-Status exportSceneGltf(const PreparedScene& scene, const std::string& path, std::vector<std::string>* warnings) {
+Status exportSceneGltf(const PreparedScene& scene, const std::string& path,
+                       std::vector<std::string>* warnings) {
   RenderScene shown = scene.renderScene;  // hidden objects are not exported
   for (size_t i = shown.objects.size(); i-- > 0;)
-    if (i < scene.doc.objects.size() && scene.doc.objects[i].hidden) shown.objects.erase(shown.objects.begin() + std::ptrdiff_t(i));
+    if (i < scene.doc.objects.size() && scene.doc.objects[i].hidden)
+      shown.objects.erase(shown.objects.begin() + std::ptrdiff_t(i));
   return exportGltf(shown, path, {}, warnings);
 }
 
-Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys, const SceneGeometry& room) {
+Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys,
+                                                               const SceneGeometry& room) {
   std::vector<std::optional<Material>> out(room.surfaces.size());
   for (const auto& [name, k] : keys.materials) {
     const auto it = std::find_if(room.surfaces.begin(), room.surfaces.end(),
@@ -345,9 +353,11 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
   }
   for (const auto& w : e->warnings) out.warnings.push_back("estimate: " + w);
   if (!e->manhattan)
-    out.warnings.push_back("estimate: the photo shows no clear room structure; the camera is a "
-                           "fallback (" + std::string(e->focalFromPrior ? "prior" : "default") +
-                           " focal length, upright): give camera.vanishing_points_px for a reliable result");
+    out.warnings.push_back(
+        "estimate: the photo shows no clear room structure; the camera is a "
+        "fallback (" +
+        std::string(e->focalFromPrior ? "prior" : "default") +
+        " focal length, upright): give camera.vanishing_points_px for a reliable result");
   if (given) {
     out.camera = *given;
   } else {
@@ -448,8 +458,8 @@ struct Preparation {
   std::vector<OccluderMatte> mattes;    // per occluder
   std::vector<Surface> occluderCards;   // per occluder; join the room after its surfaces
   std::vector<std::optional<Material>> roomMaterials;  // per room surface ("room.materials")
-  std::vector<bool> nonMatte;           // per room surface: marked glossy or mirror
-  std::vector<AreaLight> lights;        // per scene-file light, as marked
+  std::vector<bool> nonMatte;                          // per room surface: marked glossy or mirror
+  std::vector<AreaLight> lights;                       // per scene-file light, as marked
   // Per light: estimated (its intensity fitted, its position refined) rather than given with its
   // rgb and "refine": false.
   std::vector<bool> estimated;
@@ -508,10 +518,12 @@ std::string refitNotNeeded(const Preparation& p) {
 // --- The stages' work ---
 
 Status loadPhoto(Preparation& p, std::string& detail) {
-  auto photo = loadImage(p.doc.photoResolved.empty() ? p.doc.photo : p.doc.photoResolved, ImageLimits::photo());
+  auto photo =
+      loadImage(p.doc.photoResolved.empty() ? p.doc.photo : p.doc.photoResolved, ImageLimits::photo());
   if (!photo) return photo.error().underKey("photo");
   p.ps.photo = std::move(*photo);
-  detail = std::to_string(p.ps.photo.linearRgb.width) + " x " + std::to_string(p.ps.photo.linearRgb.height) + " px";
+  detail = std::to_string(p.ps.photo.linearRgb.width) + " x " +
+           std::to_string(p.ps.photo.linearRgb.height) + " px";
   return {};
 }
 
@@ -526,7 +538,8 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   detail = !ps.photo.wasSrgbEncoded ? "linear photo" : chosen.estimate ? "estimated" : "camera.response";
   ps.responseEstimate = std::move(chosen.estimate);
   for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
-  if (ps.photo.wasSrgbEncoded) redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
+  if (ps.photo.wasSrgbEncoded)
+    redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
   return {};
 }
 
@@ -568,7 +581,8 @@ Status occluderMattes(Preparation& p, std::string& detail) {
   for (size_t i = 0; i < p.doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     const OccluderKeys& o = p.doc.occluders[i];
-    auto matte = matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx, o.backgroundScribblesPx, key);
+    auto matte =
+        matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx, o.backgroundScribblesPx, key);
     if (!matte) return matte.error();
     p.mattes.push_back(std::move(*matte));
     if (p.cancelled()) return cancelledError();
@@ -606,7 +620,8 @@ Status assembleRoom(Preparation& p, std::string& detail) {
   p.nonMatte.assign(p.roomMaterials.size(), false);
   for (size_t i = 0; i < p.nonMatte.size(); ++i) p.nonMatte[i] = p.roomMaterials[i].has_value();
   const auto marked = std::count(p.nonMatte.begin(), p.nonMatte.end(), true);
-  detail = countOf(ps.geometry.surfaces.size(), "surface") + (marked ? ", " + std::to_string(marked) + " reflective" : "");
+  detail = countOf(ps.geometry.surfaces.size(), "surface") +
+           (marked ? ", " + std::to_string(marked) + " reflective" : "");
   return {};
 }
 
@@ -637,8 +652,8 @@ Status lightsFromMarks(Preparation& p, std::string& detail) {
   if (p.lights.empty())
     p.ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
   p.lightMask = rasterizeLights(ps.photo.linearRgb.width, ps.photo.linearRgb.height, p.outlines, 2);
-  detail = std::to_string(p.outlines.size()) + " outlined, " + std::to_string(p.lights.size() - p.outlines.size()) +
-           " placed in 3D";
+  detail = std::to_string(p.outlines.size()) + " outlined, " +
+           std::to_string(p.lights.size() - p.outlines.size()) + " placed in 3D";
   return {};
 }
 
@@ -704,9 +719,10 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   ps.lighting.suns = ps.refinement.suns;
   for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
   p.refined = true;
-  const auto locked = std::count_if(specs.begin(), specs.end(), [](const LightRefineSpec& s) { return s.lock; });
-  detail = std::to_string(specs.size() - size_t(locked)) + " of " + countOf(specs.size(), "light") + " refined, " +
-           countOf(size_t(ps.refinement.evaluations), "evaluation");
+  const auto locked =
+      std::count_if(specs.begin(), specs.end(), [](const LightRefineSpec& s) { return s.lock; });
+  detail = std::to_string(specs.size() - size_t(locked)) + " of " + countOf(specs.size(), "light") +
+           " refined, " + countOf(size_t(ps.refinement.evaluations), "evaluation");
   return {};
 }
 
@@ -746,7 +762,8 @@ Status buildRenderScene(Preparation& p, std::string&) {
   rs.roomAlbedo.firstSurfacePerPixel = ps.lighting.firstSurfacePerPixel;
   // Bounces that reach a room point the photo shows take the photo's radiance there (not the
   // light outlines: their light is the lights' own; a clipped sunlit patch takes the model's).
-  rs.roomAlbedo.photoRadiance = radianceForBounces(ps.photo.linearRgb, ps.camera, ps.geometry, ps.lighting);
+  rs.roomAlbedo.photoRadiance =
+      radianceForBounces(ps.photo.linearRgb, ps.camera, ps.geometry, ps.lighting);
   rs.roomAlbedo.photoRadianceUsable.assign(size_t(W) * H, 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
@@ -826,7 +843,8 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 }
 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {
-  if (!photo.wasSrgbEncoded) return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
+  if (!photo.wasSrgbEncoded)
+    return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
   return measurePhotoNoise(photo.linearRgb);
 }
 
@@ -838,7 +856,8 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool wi
 
 const CameraResponse* outputResponseOf(const PreparedScene& scene) {
   // A linear (EXR/HDR) photo's composite is written as sRGB to 8-bit files, as it always was.
-  const bool linearPhoto = scene.response.family() == ResponseFamily::Linear && !scene.photo.wasSrgbEncoded;
+  const bool linearPhoto = scene.response.family() == ResponseFamily::Linear &&
+                           !scene.photo.wasSrgbEncoded;
   return linearPhoto ? nullptr : &scene.response;
 }
 

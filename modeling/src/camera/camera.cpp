@@ -29,8 +29,7 @@ bool finiteVec(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y
 }  // namespace
 
 Vec3 Camera::directionThroughPixel(const Vec2& px) const {
-  const Vec3 dCamera((px.x() - principalPx.x()) / focalPx, -(px.y() - principalPx.y()) / focalPx,
-                     -1.0);
+  const Vec3 dCamera((px.x() - principalPx.x()) / focalPx, -(px.y() - principalPx.y()) / focalPx, -1.0);
   return (worldFromCamera * dCamera).normalized();
 }
 
@@ -48,8 +47,7 @@ double Camera::depthOf(const Vec3& world) const {
 Vec3 Camera::vanishingPointOf(const Vec3& directionWorld) const {
   const Vec3 c = cameraFromWorld() * directionWorld;
   // x = cx + f cx/(-cz), y = cy - f cy/(-cz), as a homogeneous point with w = -cz.
-  Vec3 h(principalPx.x() * -c.z() + focalPx * c.x(), principalPx.y() * -c.z() - focalPx * c.y(),
-         -c.z());
+  Vec3 h(principalPx.x() * -c.z() + focalPx * c.x(), principalPx.y() * -c.z() - focalPx * c.y(), -c.z());
   const double n = h.norm();
   return n > 0 ? Vec3(h / n) : h;
 }

@@ -184,8 +184,8 @@ Assignment assign(const std::vector<Seg>& segs, const Triplet& tr) {
 }
 
 struct RefineSettings {
-  double pixelSigma = 1;       // photo pixels of endpoint noise
-  double userWeight = 100;     // user lines count as this many detected ones
+  double pixelSigma = 1;    // photo pixels of endpoint noise
+  double userWeight = 100;  // user lines count as this many detected ones
   Prior prior;
   bool lockPhi = false;
   double principalSigma = 0;  // normalised; 0: the principal point is held where it starts
@@ -223,8 +223,7 @@ Triplet solveOnce(const std::vector<Seg>& segs, const Assignment& as, const Trip
     problem.AddResidualBlock(new ceres::AutoDiffCostFunction<PrincipalPriorCost, 2, 2>(
                                  new PrincipalPriorCost{1.0 / rs.principalSigma}),
                              nullptr, pp);
-  else
-    problem.SetParameterBlockConstant(pp);
+  else problem.SetParameterBlockConstant(pp);
   problem.SetParameterLowerBound(&logPhi, 0, std::log(0.05));
   problem.SetParameterUpperBound(&logPhi, 0, std::log(200.0));
   ceres::Solver::Options opt;
@@ -257,7 +256,7 @@ using Mat6 = Eigen::Matrix<double, 6, 6>;
 struct Uncertainty {
   Mat6 cov = Mat6::Identity() * 1e6;
   double logPhiSigma = 10;
-  double dataInfoLogPhi = 0;   // information on log phi from the segments alone
+  double dataInfoLogPhi = 0;  // information on log phi from the segments alone
   std::array<double, 3> angularSigmaRad{M_PI, M_PI, M_PI};
 };
 
@@ -277,8 +276,8 @@ struct RidgeCost {
 // Cauchy(2) weight over the noise variance the weighted residuals give (IRLS at the optimum), for
 // ceres::Covariance; a held block (a locked focal, a held principal point) is constant.
 // `dataInfoLogPhi` gets the segments' own information on log phi.
-Mat6 covarianceAt(const std::vector<Seg>& segs, const Assignment& as, const Triplet& tr, const RefineSettings& rs,
-                  double* dataInfoLogPhi) {
+Mat6 covarianceAt(const std::vector<Seg>& segs, const Assignment& as, const Triplet& tr,
+                  const RefineSettings& rs, double* dataInfoLogPhi) {
   double x[6] = {0, 0, 0, std::log(tr.phi), tr.pp.x(), tr.pp.y()};
   std::vector<SegmentCost> costs;
   std::vector<double> weights;
@@ -314,8 +313,8 @@ Mat6 covarianceAt(const std::vector<Seg>& segs, const Assignment& as, const Trip
                              nullptr, x + 4);
   RidgeCost ridge{};
   std::copy(x, x + 6, ridge.x0);
-  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RidgeCost, 6, 3, 1, 2>(new RidgeCost(ridge)), nullptr, x,
-                           x + 3, x + 4);
+  problem.AddResidualBlock(new ceres::AutoDiffCostFunction<RidgeCost, 6, 3, 1, 2>(new RidgeCost(ridge)),
+                           nullptr, x, x + 3, x + 4);
   if (rs.lockPhi) problem.SetParameterBlockConstant(x + 3);
   if (!(rs.principalSigma > 0)) problem.SetParameterBlockConstant(x + 4);
   ceres::Covariance::Options options;
@@ -326,7 +325,8 @@ Mat6 covarianceAt(const std::vector<Seg>& segs, const Assignment& as, const Trip
   ceres::Covariance covariance(options);
   const std::vector<const double*> all = {x, x + 3, x + 4};
   Eigen::Matrix<double, 6, 6, Eigen::RowMajor> c = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>::Zero();
-  if (!covariance.Compute(all, &problem) || !covariance.GetCovarianceMatrix(all, c.data()) || !c.allFinite())
+  if (!covariance.Compute(all, &problem) || !covariance.GetCovarianceMatrix(all, c.data()) ||
+      !c.allFinite())
     return Mat6::Identity() * 1e6;
   return c;
 }
@@ -376,8 +376,8 @@ struct SearchOutput {
 // refinement then uses all.
 constexpr size_t kSearchSegments = 150;
 
-SearchOutput search(const std::vector<Seg>& segs, const Prior& prior, int iterations,
-                    uint32_t seed, Clock::time_point t0, const CancelToken* cancel) {
+SearchOutput search(const std::vector<Seg>& segs, const Prior& prior, int iterations, uint32_t seed,
+                    Clock::time_point t0, const CancelToken* cancel) {
   SearchOutput out;
   const int n = int(segs.size());
   if (n < 3) return out;
@@ -387,9 +387,7 @@ SearchOutput search(const std::vector<Seg>& segs, const Prior& prior, int iterat
   for (int i = 0; i < n; ++i) cdf[i] = (acc += segs[i].weight);
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> uni(0.0, acc);
-  auto draw = [&] {
-    return int(std::lower_bound(cdf.begin(), cdf.end(), uni(rng)) - cdf.begin());
-  };
+  auto draw = [&] { return int(std::lower_bound(cdf.begin(), cdf.end(), uni(rng)) - cdf.begin()); };
   std::vector<std::array<int, 3>> triples;
   triples.reserve(iterations);
   for (int it = 0; it < iterations * 4 && int(triples.size()) < iterations; ++it) {
@@ -550,8 +548,8 @@ void setPrincipalUncertainty(CameraEstimate& e, const Uncertainty& u, const Refi
   if (!(rs.principalSigma > 0)) return;
   const Eigen::Matrix2d cov = u.cov.block<2, 2>(4, 4);
   if (!cov.allFinite()) return;
-  e.principalSigmaPx = scalePx * Vec2(std::sqrt(std::max(0.0, cov(0, 0))),
-                                      std::sqrt(std::max(0.0, cov(1, 1))));
+  e.principalSigmaPx = scalePx *
+                       Vec2(std::sqrt(std::max(0.0, cov(0, 0))), std::sqrt(std::max(0.0, cov(1, 1))));
   const double worst = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(cov).eigenvalues().maxCoeff();
   e.principalFromPrior = !(worst < 0.5 * rs.principalSigma * rs.principalSigma);
 }
@@ -616,7 +614,8 @@ FamilyTally tallyFamilies(Core& c, const Triplet& tr, const Assignment& as) {
     f.length[k] += s.lengthPx();
     f.sumR2[k] += s.residualPx * s.residualPx;
     // Doubled angle: direction of an undirected line.
-    meanDir[k] += Vec2(std::cos(2 * std::atan2(g.t.y(), g.t.x())), std::sin(2 * std::atan2(g.t.y(), g.t.x())));
+    meanDir[k] +=
+        Vec2(std::cos(2 * std::atan2(g.t.y(), g.t.x())), std::sin(2 * std::atan2(g.t.y(), g.t.x())));
   }
   // The spread of each family's directions about their mean.
   for (size_t i = 0; i < c.segs.size(); ++i) {
@@ -688,9 +687,9 @@ void setConfidences(CameraEstimate& e, const FamilyTally& f, std::array<double, 
 // Fill the estimate from a refined, world-ordered triplet: camera, vanishing points, segment
 // families and residuals, confidences, focal interval. zScore (out): per axis the family's
 // meaningfulness (-log10 NFA; 100 for user lines) for the Manhattan decision.
-void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as,
-            const Uncertainty& u, const RefineSettings& rs, const EstimateOptions& o,
-            bool lockedFocal, std::array<double, 3>& zScore) {
+void finish(CameraEstimate& e, Core& c, const Triplet& tr, const Assignment& as, const Uncertainty& u,
+            const RefineSettings& rs, const EstimateOptions& o, bool lockedFocal,
+            std::array<double, 3>& zScore) {
   e.camera = cameraOf(c, tr, o.cameraHeightM);
   const FamilyTally f = tallyFamilies(c, tr, as);
   describeVanishingPoints(e, e.camera, tr, f, u);
@@ -781,11 +780,10 @@ void fallbackCamera(CameraEstimate& e, const Core& c, const Prior& prior, const 
   const double ppSigma = o.principalPx ? 0.0 : std::max(0.0, o.principalSigma) * c.frame.s;
   e.principalSigmaPx = Vec2(ppSigma, ppSigma);
   e.principalFromPrior = true;
-  e.warnings.push_back(
-      std::string("no Manhattan structure found (too few lines in three orthogonal "
-                  "directions): the camera is a fallback: ") +
-      (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view") +
-      (upCamera ? ", tilted to the vertical lines" : ", level"));
+  e.warnings.push_back(std::string("no Manhattan structure found (too few lines in three orthogonal "
+                                   "directions): the camera is a fallback: ") +
+                       (o.priorFocalPx ? "the EXIF focal length" : "a 60 degree field of view") +
+                       (upCamera ? ", tilted to the vertical lines" : ", level"));
 }
 
 void runLayout(CameraEstimate& e, const EstimateOptions& o,
@@ -910,8 +908,7 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
   rs.cancel = o.cancel;
   const auto best = refineCandidates(c, so, rs, prior, o.cancel);
   if (!best) return Error{"", "estimate", "cancelled"};
-  if (!so.progress.empty() && best->have)
-    e.progress.push_back({msSince(t0) / 1000.0, best->score});
+  if (!so.progress.empty() && best->have) e.progress.push_back({msSince(t0) / 1000.0, best->score});
   if (best->have) {
     estimateFromBest(e, c, *best, rs, prior, o, ts);
   } else {
@@ -923,8 +920,9 @@ Expected<CameraEstimate> estimateCore(Core& c, const EstimateOptions& o, Clock::
 
   ts = Clock::now();
   if (o.estimateLayout) runLayout(e, o, {}, std::nullopt);
-  else e.backWallPx = {Vec2(0.25 * c.W, 0.25 * c.H), Vec2(0.75 * c.W, 0.25 * c.H),
-                       Vec2(0.75 * c.W, 0.75 * c.H), Vec2(0.25 * c.W, 0.75 * c.H)};
+  else
+    e.backWallPx = {Vec2(0.25 * c.W, 0.25 * c.H), Vec2(0.75 * c.W, 0.25 * c.H),
+                    Vec2(0.75 * c.W, 0.75 * c.H), Vec2(0.25 * c.W, 0.75 * c.H)};
   e.timings.layoutMs = msSince(ts);
   if (cancelled()) return Error{"", "estimate", "cancelled"};
   indexSupporters(e);
@@ -964,8 +962,7 @@ Status checkVanishingLines(const std::array<Vec2, 4>& p, int axis) {
 
 // The correction's input errors (correctEstimate's header lists them), in the order of its keys.
 Status checkCorrection(const Camera& pc, const EstimateCorrection& corr) {
-  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() ||
-      !(pc.focalPx > 0))
+  if (pc.widthPx <= 0 || pc.heightPx <= 0 || !pc.worldFromCamera.allFinite() || !(pc.focalPx > 0))
     return Error{"", "correction.previous", "is not an estimate of a photo"};
   if (corr.lockedFocalPx && !(std::isfinite(*corr.lockedFocalPx) && *corr.lockedFocalPx > 0))
     return Error{"", "correction.focal_px", "must be a positive finite number"};
@@ -977,15 +974,13 @@ Status checkCorrection(const Camera& pc, const EstimateCorrection& corr) {
     const Mat3& r = f.worldFromCamera;
     if (f.widthPx != pc.widthPx || f.heightPx != pc.heightPx)
       return Error{"", "correction.camera", "is for a photo of another size"};
-    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() ||
-        !r.allFinite() || (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 ||
-        std::abs(r.determinant() - 1) > 1e-6)
+    if (!(std::isfinite(f.focalPx) && f.focalPx > 0) || !f.principalPx.allFinite() || !r.allFinite() ||
+        (r * r.transpose() - Mat3::Identity()).norm() > 1e-6 || std::abs(r.determinant() - 1) > 1e-6)
       return Error{"", "correction.camera", "is not a pinhole camera with a rotation"};
   }
   for (int i = 0; i < 4; ++i)
     if (corr.backWallCornersPx[i] && !corr.backWallCornersPx[i]->allFinite())
-      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]",
-                   "is not a finite number"};
+      return Error{"", "correction.back_wall_px[" + std::to_string(i) + "]", "is not a finite number"};
   return Status::Ok();
 }
 
@@ -1071,8 +1066,7 @@ Triplet correctionStart(const Core& c, const EstimateCorrection& corr, const Cam
   if (!corr.lockedFocalPx) {
     for (int a = 0; a < 3; ++a)
       for (int b = a + 1; b < 3; ++b)
-        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 &&
-            std::abs(userH[b]->z()) > 1e-3) {
+        if (userH[a] && userH[b] && std::abs(userH[a]->z()) > 1e-3 && std::abs(userH[b]->z()) > 1e-3) {
           const Vec3& p = *userH[a];
           const Vec3& q = *userH[b];
           const double f2 = -(p.x() * q.x() + p.y() * q.y()) / (p.z() * q.z());
@@ -1122,8 +1116,8 @@ Triplet fitCorrection(const Core& c, const EstimateCorrection& corr, const Tripl
 // What the user fixed stays as fixed: the principal point held where the previous estimate put
 // it (or the fixed camera's, exact), a fixed camera exactly; Manhattan once the photo or the
 // user showed it.
-void keepWhatWasFixed(CameraEstimate& e, const CameraEstimate& previous,
-                      const EstimateCorrection& corr, std::array<double, 3> z) {
+void keepWhatWasFixed(CameraEstimate& e, const CameraEstimate& previous, const EstimateCorrection& corr,
+                      std::array<double, 3> z) {
   e.principalSigmaPx = corr.fixedCamera ? Vec2::Zero() : previous.principalSigmaPx;
   e.principalFromPrior = corr.fixedCamera ? true : previous.principalFromPrior;
   if (corr.fixedCamera) {
@@ -1146,7 +1140,8 @@ Status relayoutCorrected(CameraEstimate& e, const CameraEstimate& previous,
   const auto ts = Clock::now();
   const double turnDeg =
       std::acos(std::clamp(((pc.worldFromCamera.transpose() * e.camera.worldFromCamera).trace() - 1) / 2,
-                           -1.0, 1.0)) / kDeg;
+                           -1.0, 1.0)) /
+      kDeg;
   const bool bigChange = corr.fixedCamera || turnDeg > 2.0 ||
                          std::abs(std::log(e.camera.focalPx / pc.focalPx)) > 0.05;
   runLayout(e, o, corr.backWallCornersPx,
@@ -1160,7 +1155,6 @@ Status relayoutCorrected(CameraEstimate& e, const CameraEstimate& previous,
   }
   return Status::Ok();
 }
-
 
 }  // namespace
 
@@ -1179,8 +1173,7 @@ Expected<CameraEstimate> estimateCameraFromSegments(int widthPx, int heightPx,
   }
   std::sort(c.segments.begin(), c.segments.end(),
             [](const LineSegment& a, const LineSegment& b) { return a.lengthPx() > b.lengthPx(); });
-  if (int(c.segments.size()) > options.maxSegments)
-    c.segments.resize(std::max(0, options.maxSegments));
+  if (int(c.segments.size()) > options.maxSegments) c.segments.resize(std::max(0, options.maxSegments));
   CameraEstimate e;
   return estimateCore(c, options, t0, e);
 }
@@ -1207,8 +1200,7 @@ Expected<CameraEstimate> estimateCamera(const ImageF& linearRgb, const EstimateO
   return estimateCore(c, options, t0, e);
 }
 
-Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
-                                         const EstimateCorrection& corr,
+Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous, const EstimateCorrection& corr,
                                          const EstimateOptions& o) {
   const auto t0 = Clock::now();
   const Camera& pc = previous.camera;
@@ -1251,13 +1243,39 @@ Expected<CameraEstimate> correctEstimate(const CameraEstimate& previous,
 namespace detail {
 
 double segmentResidualGradientError() {
-  struct Case { Vec2 a, b; Vec3 d0; double logPhi; double omega[3]; double pp[2]; };
+  struct Case {
+    Vec2 a, b;
+    Vec3 d0;
+    double logPhi;
+    double omega[3];
+    double pp[2];
+  };
   const Case cases[] = {
-      {{-0.3, 0.2}, {0.4, 0.25}, Vec3(1, 0.05, 0.3).normalized(), std::log(1.2), {0.01, -0.02, 0.03}, {0.02, -0.03}},
-      {{0.1, -0.5}, {0.12, 0.5}, Vec3(0, 1, 0), std::log(0.8), {0, 0, 0}, {0, 0}},          // VP at infinity
-      {{-0.5, 0.0}, {0.5, 0.0}, Vec3(1, 0, 0), std::log(2.0), {0.0, 0.0, 0.0}, {0.05, 0.0}},     // both at infinity
-      {{0.2, 0.1}, {-0.3, -0.2}, Vec3(0.1, -0.2, -1).normalized(), std::log(5.0), {0.2, -0.1, 0.05}, {-0.04, 0.01}},
-      {{0.0, 0.0}, {0.3, 0.1}, Vec3(0.3, -0.1, -1).normalized(), std::log(1.0), {0, 0, 0}, {0, 0}},  // aimed at its VP
+      {{-0.3, 0.2},
+       {0.4, 0.25},
+       Vec3(1, 0.05, 0.3).normalized(),
+       std::log(1.2),
+       {0.01, -0.02, 0.03},
+       {0.02, -0.03}},
+      {{0.1, -0.5}, {0.12, 0.5}, Vec3(0, 1, 0), std::log(0.8), {0, 0, 0}, {0, 0}},  // VP at infinity
+      {{-0.5, 0.0},
+       {0.5, 0.0},
+       Vec3(1, 0, 0),
+       std::log(2.0),
+       {0.0, 0.0, 0.0},
+       {0.05, 0.0}},  // both at infinity
+      {{0.2, 0.1},
+       {-0.3, -0.2},
+       Vec3(0.1, -0.2, -1).normalized(),
+       std::log(5.0),
+       {0.2, -0.1, 0.05},
+       {-0.04, 0.01}},
+      {{0.0, 0.0},
+       {0.3, 0.1},
+       Vec3(0.3, -0.1, -1).normalized(),
+       std::log(1.0),
+       {0, 0, 0},
+       {0, 0}},  // aimed at its VP
   };
   double worst = 0;
   for (const Case& k : cases) {

@@ -15,9 +15,11 @@ namespace {
 // walls y and z. Exception: vertical lines over the floor are furniture legs and door frames
 // standing on it far more often than a wrong box, so they do not count against the floor.
 enum Face { kBack = 0, kCeiling, kRight, kFloor, kLeft };
-constexpr bool kAllowed[5][3] = {
-    {true, true, false}, {true, false, true}, {false, true, true},
-    {true, true, true}, {false, true, true}};
+constexpr bool kAllowed[5][3] = {{true, true, false},
+                                 {true, false, true},
+                                 {false, true, true},
+                                 {true, true, true},
+                                 {false, true, true}};
 
 // One line family's evidence: exp(-d^2 / 2 sigma^2) of the distance to its nearest segment pixel.
 struct EvidenceMap {
@@ -30,8 +32,8 @@ struct EvidenceMap {
 };
 
 struct Sample {
-  Vec2 pw;      // working pixels
-  double angle; // around the forward vanishing point
+  Vec2 pw;       // working pixels
+  double angle;  // around the forward vanishing point
   int family;
   double weight;  // working pixels of line it stands for
 };
@@ -170,7 +172,7 @@ class LayoutSearch {
       xMin = std::min(xMin, (c - vz_).dot(uX_));
       xMax = std::max(xMax, (c - vz_).dot(uX_));
     }
-    lo_ = {yMin - margin, eps, xMin - margin, eps};   // top, bottom, left, right
+    lo_ = {yMin - margin, eps, xMin - margin, eps};  // top, bottom, left, right
     hi_ = {-eps, yMax + margin, -eps, xMax + margin};
     outside_ = {std::min(-eps, yMin - eps), std::max(eps, yMax + eps), std::min(-eps, xMin - eps),
                 std::max(eps, xMax + eps)};
@@ -206,7 +208,7 @@ class LayoutSearch {
     double total = -1e300;
     double edgeSupported = 0, edgeVisible = 0, regionSigned = 0, regionTotal = 0;
     double topSupported = 0, topVisible = 0;  // the back wall's top edge alone
-    double ceilingZ = 0, ceilingY = 0;  // receding and vertical line samples on the ceiling
+    double ceilingZ = 0, ceilingY = 0;        // receding and vertical line samples on the ceiling
   };
 
   // Whether the photo shows the box's top edge as a ceiling crease: at least half of its visible
@@ -214,8 +216,8 @@ class LayoutSearch {
   // quarter of the edge's length) outweighing vertical ones (a facade over a roofline, not a
   // ceiling).
   static bool showsCeiling(const Score& s) {
-    return s.topVisible > 0 && s.topSupported >= 0.5 * s.topVisible &&
-           s.ceilingZ > s.ceilingY && s.ceilingZ >= 0.25 * s.topVisible;
+    return s.topVisible > 0 && s.topSupported >= 0.5 * s.topVisible && s.ceilingZ > s.ceilingY &&
+           s.ceilingZ >= 0.25 * s.topVisible;
   }
   // Why the box of parameters t (scored s) is implausible (BoxRules); empty when it is not.
   // With the top edge held (the search's second pass after a ceiling refusal) it is a ceiling.
@@ -293,7 +295,7 @@ class LayoutSearch {
       if (face == kCeiling && p.family == 1) s.ceilingY += p.weight;
       s.regionTotal += p.weight;
     }
-    constexpr double kEdgeBias = 0.15;   // evidence below this along an edge counts against it
+    constexpr double kEdgeBias = 0.15;  // evidence below this along an edge counts against it
     constexpr double kRegionWeight = 0.2;
     s.total = s.edgeSupported - kEdgeBias * s.edgeVisible + kRegionWeight * s.regionSigned;
     // Tie-break toward an ordinary room where the photo says nothing (a wall out of view); the
@@ -348,7 +350,8 @@ class LayoutSearch {
     const Vec2& u = i < 2 ? uY_ : uX_;
     const Vec3& h = i < 2 ? hx_ : hy_;
     const double step = 1.0 / ws_;
-    const double t0 = std::max(lo_[i], outside_[i < 2 ? 0 : 2]), t1 = std::min(hi_[i], outside_[i < 2 ? 1 : 3]);
+    const double t0 = std::max(lo_[i], outside_[i < 2 ? 0 : 2]),
+                 t1 = std::min(hi_[i], outside_[i < 2 ? 1 : 3]);
     std::vector<std::pair<double, double>> prof;  // (param, summed contrast)
     for (double t = t0; t <= t1; t += step) {
       const Vec3 l = h.cross(hom(vz_ + t * u));
@@ -356,7 +359,8 @@ class LayoutSearch {
       const Vec2 dir(l.y(), -l.x());
       if (dir.norm() < 1e-12) continue;
       const Vec2 base = vz_ + t * u;
-      Vec2 a = (base - 4 * diag_ * dir.normalized()) * ws_, b = (base + 4 * diag_ * dir.normalized()) * ws_;
+      Vec2 a = (base - 4 * diag_ * dir.normalized()) * ws_,
+           b = (base + 4 * diag_ * dir.normalized()) * ws_;
       double sum = 0;
       if (clipToRect(a, b, W_ * ws_, H_ * ws_)) sum = contrastAlong(i < 2 ? 0 : 1, a, b, true);
       prof.push_back({t, sum});
@@ -366,7 +370,8 @@ class LayoutSearch {
       if (prof[k].second > prof[k - 1].second && prof[k].second >= prof[k + 1].second &&
           prof[k].second > 15.0)
         peaks.push_back({prof[k].second, prof[k].first});
-    std::sort(peaks.begin(), peaks.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::sort(peaks.begin(), peaks.end(),
+              [](const auto& x, const auto& y) { return x.first > y.first; });
     for (size_t k = 0; k < std::min(keep, peaks.size()); ++k) out.push_back(peaks[k].second);
     return out;
   }
@@ -477,8 +482,7 @@ class LayoutSearch {
       const int n = std::max(1, int(len / step));
       for (int k = 0; k < n; ++k) {
         const Vec2 p = s.aPx + (s.bPx - s.aPx) * ((k + 0.5) / n);
-        samples_.push_back({p * ws_, std::atan2(p.y() - vz_.y(), p.x() - vz_.x()), s.family,
-                            len / n});
+        samples_.push_back({p * ws_, std::atan2(p.y() - vz_.y(), p.x() - vz_.x()), s.family, len / n});
       }
     }
   }
@@ -497,9 +501,9 @@ class LayoutSearch {
         Vec2 d(h.x() - px * h.z(), h.y() - py * h.z());
         const double dn = d.norm();
         if (h.z() < 0) d = -d;  // the same image direction whatever the point's sign
-        m.at<float>(y, x) = dn > 1e-12 ? float((pe.gx.at<float>(y, x) * -d.y() +
-                                                pe.gy.at<float>(y, x) * d.x()) / dn)
-                                       : 0.f;
+        m.at<float>(y, x) =
+            dn > 1e-12 ? float((pe.gx.at<float>(y, x) * -d.y() + pe.gy.at<float>(y, x) * d.x()) / dn)
+                       : 0.f;
       }
   }
   const Camera& cam() const { return *in_.camera; }
@@ -513,8 +517,8 @@ class LayoutSearch {
     Vec3 f(fwd.x(), 0, fwd.z());
     f = f.norm() > 1e-6 ? f.normalized() : Vec3(0, 0, -1);
     const double zB = -5.0 * k * std::max(0.3, -f.z());
-    const Vec3 p[4] = {{-2.5 * k, 2.7 * k, zB}, {2.5 * k, 2.7 * k, zB}, {2.5 * k, 0, zB},
-                       {-2.5 * k, 0, zB}};
+    const Vec3 p[4] = {
+        {-2.5 * k, 2.7 * k, zB}, {2.5 * k, 2.7 * k, zB}, {2.5 * k, 0, zB}, {-2.5 * k, 0, zB}};
     const double fallback[4] = {-0.3 * diag_, 0.3 * diag_, -0.3 * diag_, 0.3 * diag_};
     for (int i = 0; i < 4; ++i) default_[i] = fallback[i];
     const auto a = cam.project(p[0] + Vec3(eye.x(), 0, eye.z()));
@@ -545,7 +549,7 @@ class LayoutSearch {
     double value = 0;
   };
   mutable std::array<EdgeMemo, 8> memo_;  // edgeSupport's last value per edge slot
-  std::vector<bool> bright_;  // per segment: outlines a saturated patch (markBright)
+  std::vector<bool> bright_;              // per segment: outlines a saturated patch (markBright)
   std::vector<Sample> samples_;
 };
 
@@ -554,7 +558,8 @@ class LayoutSearch {
 std::shared_ptr<const PhotoEdges> photoEdgesOf(const cv::Mat& grey8, int photoW, int photoH) {
   if (grey8.empty() || photoW <= 0 || photoH <= 0) return nullptr;
   const double ws = std::min(1.0, kLayoutSidePx / std::max(photoW, photoH));
-  const int w = std::max(1, int(std::lround(photoW * ws))), h = std::max(1, int(std::lround(photoH * ws)));
+  const int w = std::max(1, int(std::lround(photoW * ws))),
+            h = std::max(1, int(std::lround(photoH * ws)));
   if (w < 8 || h < 8) return nullptr;
   cv::Mat g;
   grey8.convertTo(g, CV_32F, 1.0 / 255.0);
@@ -600,8 +605,8 @@ std::vector<double> lineCandidates(const LayoutSearch& search, const LayoutInput
       if (sg.userGiven || search.bordersBright(k)) continue;
       const bool mine = (i < 2 && sg.family == 0) || (i >= 2 && sg.family == 1);
       if (receding ? sg.family != 2 : !mine) continue;
-      const double v = search.paramOfCorner(
-          i, receding ? search.farEnd(sg) : Vec2(0.5 * (sg.aPx + sg.bPx)));
+      const double v =
+          search.paramOfCorner(i, receding ? search.farEnd(sg) : Vec2(0.5 * (sg.aPx + sg.bPx)));
       if (std::isfinite(v) && v >= lo[i] && v <= hi[i]) votes.push_back({v, sg.lengthPx()});
     }
     std::sort(votes.begin(), votes.end());
@@ -644,7 +649,10 @@ std::vector<std::array<double, 4>> globalStarts(const LayoutSearch& search, cons
   std::array<std::vector<double>, 4> cand;
   for (int i = 0; i < 4; ++i)
     cand[i] = isFixed[i] ? std::vector<double>{t[i]} : lineCandidates(search, in, i, t[i]);
-  struct Cand { double score; std::array<double, 4> t; };
+  struct Cand {
+    double score;
+    std::array<double, 4> t;
+  };
   std::vector<Cand> cands;
   auto stop = [&] { return in.cancel && in.cancel->shouldStop(); };
   for (double a : cand[0])
@@ -677,8 +685,8 @@ std::vector<std::array<double, 4>> globalStarts(const LayoutSearch& search, cons
 // Coordinate ascent from each start, coarse to fine (a window around the current value,
 // shrinking); the best box reached.
 std::pair<LayoutSearch::Score, std::array<double, 4>> ascend(
-    const LayoutSearch& search, const LayoutInput& in,
-    const std::vector<std::array<double, 4>>& starts, const std::array<bool, 4>& isFixed) {
+    const LayoutSearch& search, const LayoutInput& in, const std::vector<std::array<double, 4>>& starts,
+    const std::array<bool, 4>& isFixed) {
   LayoutSearch::Score best;
   std::array<double, 4> bestT = starts.back();
   auto stop = [&] { return in.cancel && in.cancel->shouldStop(); };
@@ -786,8 +794,8 @@ using BestBox = std::pair<LayoutSearch::Score, std::array<double, 4>>;
 // search again, refusing implausible boxes; a ceiling the photo shows stays, the floor crease
 // must come down to a plausible one), else to the ordinary room. out.refused says which.
 // Returns true when `out` is final (the ordinary room).
-bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LineParams& lp,
-                           BestBox& best, LayoutResult& out) {
+bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LineParams& lp, BestBox& best,
+                           LayoutResult& out) {
   const Implausible why = search.implausible(best.second, best.first);
   if (!why) return false;
   const Camera& cam = *in.camera;
@@ -804,8 +812,9 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   std::array<Vec2, 4> c2;
   const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
   out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
-                "; " + (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
-                              : std::string("an ordinary room is assumed")) +
+                "; " +
+                (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                       : std::string("an ordinary room is assumed")) +
                 ": check the box";
   if (found) {
     best = {best2, bestT2};
@@ -822,8 +831,7 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
 // with the line orientation.
 double supportedShare(const LayoutSearch::Score& best) {
   const double edgeFrac = best.edgeVisible > 0 ? best.edgeSupported / best.edgeVisible : 0;
-  const double regionFrac =
-      best.regionTotal > 0 ? 0.5 * (1 + best.regionSigned / best.regionTotal) : 0;
+  const double regionFrac = best.regionTotal > 0 ? 0.5 * (1 + best.regionSigned / best.regionTotal) : 0;
   return std::clamp(0.6 * edgeFrac + 0.4 * regionFrac, 0.0, 1.0);
 }
 
@@ -880,8 +888,8 @@ Implausible implausibility(const Camera& cam, const std::array<Vec2, 4>& c, bool
     return {Implausible::kDepth, buf};
   }
   if (b.widthM < r.minWidthOverEye * h) {
-    std::snprintf(buf, sizeof buf, "it is %.2f m wide, too narrow to hold a camera %.2f m up",
-                  b.widthM, h);
+    std::snprintf(buf, sizeof buf, "it is %.2f m wide, too narrow to hold a camera %.2f m up", b.widthM,
+                  h);
     return {Implausible::kWidth, buf};
   }
   if (showsCeiling && std::isfinite(b.ceilingM) && b.ceilingM > r.maxCeilingOverEye * h) {

@@ -23,10 +23,10 @@ namespace inlay::detail {
 // hypothesised edge.
 constexpr double kLayoutSidePx = 400;
 struct PhotoEdges {
-  cv::Mat gx, gy;      // CV_32F, d(sRGB grey in [0, 1]) per layout pixel
-  double noise = 0;    // median gradient magnitude (texture and noise level)
-  cv::Mat clipped;     // CV_8U, non-zero within 2 pixels of a (nearly) saturated pixel; the
-                       // gradient is 0 there
+  cv::Mat gx, gy;    // CV_32F, d(sRGB grey in [0, 1]) per layout pixel
+  double noise = 0;  // median gradient magnitude (texture and noise level)
+  cv::Mat clipped;   // CV_8U, non-zero within 2 pixels of a (nearly) saturated pixel; the
+                     // gradient is 0 there
 };
 
 // From the working grey image (sRGB-encoded, [0, 255], already lightly blurred) of a photo of
@@ -34,7 +34,7 @@ struct PhotoEdges {
 std::shared_ptr<const PhotoEdges> photoEdgesOf(const cv::Mat& grey8, int photoW, int photoH);
 
 struct LayoutInput {
-  const Camera* camera = nullptr;                    // photo pixels; its heightM shapes the default
+  const Camera* camera = nullptr;                      // photo pixels; its heightM shapes the default
   const std::vector<LineSegment>* segments = nullptr;  // photo pixels, families 0 x, 1 y, 2 z
   std::array<std::optional<Vec2>, 4> fixedCornersPx;   // TL, TR, BR, BL kept (their lines fixed)
   std::optional<std::array<Vec2, 4>> startCornersPx;   // search locally from here (a correction)
@@ -46,10 +46,10 @@ struct LayoutInput {
 };
 
 struct LayoutResult {
-  bool ok = false;          // false: no box (the camera looks away from every wall); default corners
+  bool ok = false;  // false: no box (the camera looks away from every wall); default corners
   std::array<Vec2, 4> cornersPx;  // TL, TR, BR, BL, photo pixels
-  double score01 = 0;       // share of the box's visible edges and faces the lines support
-  std::string problem;      // why not ok
+  double score01 = 0;             // share of the box's visible edges and faces the lines support
+  std::string problem;            // why not ok
   // When the best-supported box was refused as implausible: why, and what replaced it (a
   // sentence for CameraEstimate::warnings); empty otherwise.
   std::string refused;

@@ -49,7 +49,7 @@ struct Implausible {
   std::string why;
   explicit operator bool() const { return rule != kNone; }
 };
-Implausible implausibility(const Camera& camera, const std::array<Vec2, 4>& cornersPx,
-                           bool showsCeiling, const BoxRules& rules);
+Implausible implausibility(const Camera& camera, const std::array<Vec2, 4>& cornersPx, bool showsCeiling,
+                           const BoxRules& rules);
 
 }  // namespace inlay::detail

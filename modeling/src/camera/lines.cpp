@@ -100,8 +100,8 @@ class EdgeRefiner {
   }
 
  private:
-  static constexpr int kSteps = 9;       // profile samples across the segment
-  static constexpr double kStep = 0.5;   // pixels between them: +-2 px
+  static constexpr int kSteps = 9;           // profile samples across the segment
+  static constexpr double kStep = 0.5;       // pixels between them: +-2 px
   static constexpr double kMinGradient = 8;  // one grey level per pixel (Sobel 3 x 3 gains 8)
 
   static double sample(const cv::Mat& m, const Vec2& q) {
@@ -171,8 +171,7 @@ DetectedLines detectLineSegments(const ImageF& linearRgb, int maxWorkingSidePx, 
   for (int y = 0; y < lum.rows; ++y) {
     const float* s = lum.ptr<float>(y);
     unsigned char* d = grey8.ptr<unsigned char>(y);
-    for (int x = 0; x < lum.cols; ++x)
-      d[x] = srgbCode8(s[x]);
+    for (int x = 0; x < lum.cols; ++x) d[x] = srgbCode8(s[x]);
   }
   if (lum.cols < 8 || lum.rows < 8) return out;
   // Rendered and high-ISO photos are noisy: a light blur keeps edges, drops noise segments.

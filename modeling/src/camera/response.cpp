@@ -24,7 +24,7 @@ double warp(const ResponseParams& q, double x) {
 }
 double unwarp(const ResponseParams& q, double u) {
   u = std::clamp(u, 0.0, 1.0);
-  u = u / (1 + q.shoulder - q.shoulder * u);  // S^-1
+  u = u / (1 + q.shoulder - q.shoulder * u);                                     // S^-1
   u = (u + std::sqrt(u * u + 4 * (1 + q.toe) * u * q.toe)) / (2 * (1 + q.toe));  // T^-1
   return std::clamp(std::pow(u, 1 / q.power), 0.0, 1.0);
 }
@@ -101,7 +101,7 @@ double CameraResponse::decode(double y) const {
 void CameraResponse::buildTables() {
   for (int k = 0; k < 256; ++k)
     table8_[size_t(k)] = family_ == ResponseFamily::Srgb ? srgbToLinear(float(k) / 255.f)
-                                                        : float(decode(k / 255.0));
+                                                         : float(decode(k / 255.0));
   for (int k = 0; k < 255; ++k) thresholds8_[size_t(k)] = float(decode((k + 0.5) / 255.0));
   // Strictly increasing, codes and thresholds interleaved, whatever the rounding did.
   table8_[0] = 0.f;
@@ -116,18 +116,19 @@ void CameraResponse::buildTables() {
 }
 
 unsigned char CameraResponse::encodeCode8(float v) const {
-  if (family_ == ResponseFamily::Srgb)
-    return srgbCode8(v);  // as image_io has always written
+  if (family_ == ResponseFamily::Srgb) return srgbCode8(v);  // as image_io has always written
   if (!(v > 0.f)) return 0;
   // The first threshold above v is the code's upper bound.
-  return (unsigned char)(std::upper_bound(thresholds8_.begin(), thresholds8_.end(), v) - thresholds8_.begin());
+  return (unsigned char)(std::upper_bound(thresholds8_.begin(), thresholds8_.end(), v) -
+                         thresholds8_.begin());
 }
 
 std::vector<unsigned char> srgbCodesOf(const ImageF& img) {
   std::vector<unsigned char> codes(img.pixelCount() * 3);
   for (size_t i = 0; i < img.pixelCount(); ++i)
     for (int c = 0; c < 3; ++c)
-      codes[i * 3 + size_t(c)] = srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
+      codes[i * 3 + size_t(c)] =
+          srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
   return codes;
 }
 
@@ -149,13 +150,13 @@ void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& respon
 
 namespace {
 
-constexpr double kReachPx = 4.0;   // pixels within this distance of a segment are its profile
-constexpr double kSidePx = 2.0;    // beyond this the profile is one of the two flat sides
-constexpr double kBinPx = 0.25;    // the profile's bins (a slanted edge super-resolves it)
+constexpr double kReachPx = 4.0;  // pixels within this distance of a segment are its profile
+constexpr double kSidePx = 2.0;   // beyond this the profile is one of the two flat sides
+constexpr double kBinPx = 0.25;   // the profile's bins (a slanted edge super-resolves it)
 constexpr int kBins = int(2 * kReachPx / kBinPx);
 
 struct EdgeSample {
-  float d;                   // signed distance to the segment's line, px
+  float d;  // signed distance to the segment's line, px
   unsigned char code[3];
 };
 
@@ -167,7 +168,8 @@ struct Edge {
 double lumaCode(const unsigned char* c) { return (c[0] + c[1] + c[2]) / 3.0; }
 
 // The photo's pixels within kReachPx of segment [a, b] (away from its ends), no pixel twice.
-std::vector<EdgeSample> profileOf(const std::vector<unsigned char>& codes, int W, int H, Vec2 a, Vec2 b) {
+std::vector<EdgeSample> profileOf(const std::vector<unsigned char>& codes, int W, int H, Vec2 a,
+                                  Vec2 b) {
   std::vector<EdgeSample> out;
   const Vec2 t = (b - a).normalized(), n(-t.y(), t.x());
   const double len = (b - a).norm();
@@ -215,7 +217,8 @@ bool cleanEdge(const std::vector<EdgeSample>& s, Edge& edge) {
   if (contrast < 10) return false;
   if (std::max(sd[0], sd[1]) > std::max(2.5, 0.12 * contrast)) return false;
   // A step, not a bar: the middle stays between the sides (a little ringing allowed).
-  const double lo = std::min(mean[0], mean[1]) - 0.2 * contrast, hi = std::max(mean[0], mean[1]) + 0.2 * contrast;
+  const double lo = std::min(mean[0], mean[1]) - 0.2 * contrast,
+               hi = std::max(mean[0], mean[1]) + 0.2 * contrast;
   int outside = 0, middle = 0;
   for (const EdgeSample& e : s)
     if (std::fabs(e.d) < kSidePx) {
@@ -225,7 +228,8 @@ bool cleanEdge(const std::vector<EdgeSample>& s, Edge& edge) {
     }
   if (middle < 6 || outside > middle / 10) return false;
   edge.samples = s;
-  std::sort(edge.samples.begin(), edge.samples.end(), [](const EdgeSample& p, const EdgeSample& q) { return p.d < q.d; });
+  std::sort(edge.samples.begin(), edge.samples.end(),
+            [](const EdgeSample& p, const EdgeSample& q) { return p.d < q.d; });
   edge.lumaLo = int(std::min(mean[0], mean[1]));
   edge.lumaHi = int(std::max(mean[0], mean[1]));
   return true;
@@ -429,8 +433,10 @@ std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
   const double sd = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
   if (double(clipped) > 0.5 * n) return "most of the photo is clipped to black or white";
   if (sd < 2) return "the photo is nearly one flat colour";
-  const size_t populated = size_t(std::count_if(hist.begin(), hist.end(), [&](size_t h) { return h * 1000 >= n; }));
-  if (populated < 8) return "the photo is nearly binary (" + std::to_string(populated) + " grey levels in use)";
+  const size_t populated =
+      size_t(std::count_if(hist.begin(), hist.end(), [&](size_t h) { return h * 1000 >= n; }));
+  if (populated < 8)
+    return "the photo is nearly binary (" + std::to_string(populated) + " grey levels in use)";
   return {};
 }
 
@@ -438,7 +444,9 @@ std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
 
 ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  auto seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
   const double cpu0 = threadCpuSeconds();
   ResponseEstimate out;
   auto undetermined = [&](const std::string& why) {
@@ -469,10 +477,11 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   }
   out.edgesUsed = int(edges.size());
   if (int(edges.size()) < options.minEdges)
-    return undetermined("too few clean edges between flat regions (" + std::to_string(edges.size()) + " of " +
-                        std::to_string(options.minEdges) + " needed)");
+    return undetermined("too few clean edges between flat regions (" + std::to_string(edges.size()) +
+                        " of " + std::to_string(options.minEdges) + " needed)");
   if (hi - lo < 48)
-    return undetermined("the edges cover only codes " + std::to_string(lo) + " to " + std::to_string(hi));
+    return undetermined("the edges cover only codes " + std::to_string(lo) + " to " +
+                        std::to_string(hi));
 
   Fit fit{&edges, options};
   out.srgbObjective = fit.data(ResponseParams{});
@@ -505,7 +514,8 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   out.decision = "fitted";
   if (!(out.objective <= (1 - options.minImprovement) * out.srgbObjective)) {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "kept sRGB: the fitted %s lowers the edge residual only from %.4f to %.4f",
+    std::snprintf(buf, sizeof buf,
+                  "kept sRGB: the fitted %s lowers the edge residual only from %.4f to %.4f",
                   out.response.describe().c_str(), out.srgbObjective, out.objective);
     out.decision = buf;
     out.response = CameraResponse::srgb();

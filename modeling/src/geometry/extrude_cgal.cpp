@@ -58,9 +58,9 @@ Expected<std::vector<Vec2>> counterClockwiseSimplePolygon(const std::vector<Vec2
     if (p.empty() || (q - p.back()).norm() > 1e-9) p.push_back(q);
   while (p.size() > 1 && (p.front() - p.back()).norm() <= 1e-9) p.pop_back();  // closed by hand
   if (p.size() < 3)
-    return Error{"", key,
-                 "an outline needs at least 3 distinct points, this one has " +
-                     std::to_string(p.size())};
+    return Error{
+        "", key,
+        "an outline needs at least 3 distinct points, this one has " + std::to_string(p.size())};
   Polygon2 poly;
   for (const Vec2& q : p) poly.push_back(toCgal(q));
   // Collinear up to round-off: no point farther from the line through the two extreme points
@@ -96,14 +96,12 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec2>&
     vh[i] = cdt.insert(toCgal(polygon[i]));
     vh[i]->info() = uint32_t(i);
   }
-  for (size_t i = 0; i < polygon.size(); ++i)
-    cdt.insert_constraint(vh[i], vh[(i + 1) % polygon.size()]);
+  for (size_t i = 0; i < polygon.size(); ++i) cdt.insert_constraint(vh[i], vh[(i + 1) % polygon.size()]);
   Polygon2 poly;
   for (const Vec2& q : polygon) poly.push_back(toCgal(q));
   std::vector<std::array<uint32_t, 3>> tris;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    const Point2 c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(),
-                                    f->vertex(2)->point());
+    const Point2 c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
     if (poly.bounded_side(c) != CGAL::ON_BOUNDED_SIDE) continue;
     // A simple polygon gets no Steiner points: every vertex is one of ours.
     tris.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});

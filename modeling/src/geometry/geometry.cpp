@@ -153,8 +153,7 @@ Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 
   box.zBackM = 0.5 * (bl->z() + br->z());
   box.xLeftM = bl->x();
   box.xRightM = br->x();
-  if (!(box.zBackM < -0.05))
-    return Error{"", key, "the back wall would stand behind the camera"};
+  if (!(box.zBackM < -0.05)) return Error{"", key, "the back wall would stand behind the camera"};
   if (!(box.xRightM - box.xLeftM > 0.05))
     return Error{"", key,
                  "the corners give a back wall of no width (are they in the order top-left, "
@@ -219,8 +218,8 @@ std::string roomBoxAdvice(const Camera& camera, const RoomBox& box, SurfaceKind 
              " onto the crease where the ceiling meets the back wall";
     case SurfaceKind::Floor:
     case SurfaceKind::WallBack:
-      return "check the room box: drag the back wall's bottom corners at " + at(3) + " and " +
-             at(2) + " onto the crease where the back wall meets the floor";
+      return "check the room box: drag the back wall's bottom corners at " + at(3) + " and " + at(2) +
+             " onto the crease where the back wall meets the floor";
     default:
       return "check the room box: drag the back wall's corners at " + at(0) + ", " + at(1) + ", " +
              at(2) + " and " + at(3) + " onto the room's corners";
@@ -287,7 +286,8 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   if (!floorPt)
     return Error{"", key + ".height_click_px",
                  "the click " + pxText(clickPx) + " is at or above the horizon (row " +
-                     rowText(horizonRowPx(camera, clickPx.x())) + " there), so it cannot be on "
+                     rowText(horizonRowPx(camera, clickPx.x())) +
+                     " there), so it cannot be on "
                      "the floor: click the floor straight below outline point 0, below the horizon"};
   {
     // Point 0 must lie on the image of the vertical through the click: the line from the click
@@ -313,26 +313,30 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
   const double den = a * cc - b * b;
   if (den < 1e-12)
     return Error{"", key + ".height_click_px", "the outline point is straight above the camera"};
-  const double s = (a * e - b * d) / den;     // along the vertical line: the height
+  const double s = (a * e - b * d) / den;      // along the vertical line: the height
   const double tRay = (b * e - cc * d) / den;  // along the ray
   if (!(tRay > 0))
     return Error{"", key + ".height_click_px",
-                 "outline point 0 " + pxText(outlinePx[0]) + " and the floor click " +
-                     pxText(clickPx) + " do not meet in front of the camera (the vertical through "
+                 "outline point 0 " + pxText(outlinePx[0]) + " and the floor click " + pxText(clickPx) +
+                     " do not meet in front of the camera (the vertical through "
                      "the click passes behind it): click the floor straight below outline point 0"};
   const double h = s;
   if (!(h > 0.01))
     return Error{"", key + ".height_click_px",
-                 "the click " + pxText(clickPx) + " is not below the outline's first point "
-                 "(the height would be " + std::to_string(h) + " m): click the floor under it"};
+                 "the click " + pxText(clickPx) +
+                     " is not below the outline's first point "
+                     "(the height would be " +
+                     std::to_string(h) + " m): click the floor under it"};
   if (std::abs(h - camera.heightM) < 0.01)
     return Error{"", key + ".height_click_px",
                  "the top would be at the camera's height, seen edge-on: its outline cannot be "
                  "placed"};
   if (options.thicknessM >= h)
     return Error{"", key + ".thickness_m",
-                 "the slab (" + std::to_string(options.thicknessM) + " m) is thicker than the top "
-                 "is high (" + std::to_string(h) + " m)"};
+                 "the slab (" + std::to_string(options.thicknessM) +
+                     " m) is thicker than the top "
+                     "is high (" +
+                     std::to_string(h) + " m)"};
   Extrusion ex;
   ex.heightM = h;
   ex.thicknessM = options.thicknessM;
@@ -340,12 +344,12 @@ Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector
     const auto p = hitHorizontal(camera.rayThroughPixel(outlinePx[i]), h);
     if (!p)
       return Error{"", key + ".outline_px[" + std::to_string(i) + "]",
-                   "the point " + pxText(outlinePx[i]) + " cannot lie on a top at " +
-                       metreText(h) + ": it is " + (h < camera.heightM ? "above" : "below") +
-                       " the horizon (row " + rowText(horizonRowPx(camera, outlinePx[i].x())) +
-                       " there), and a top " + (h < camera.heightM ? "below" : "above") +
-                       " the camera's eye is seen " + (h < camera.heightM ? "from above" : "from below") +
-                       ": outline the top " + (h < camera.heightM ? "below" : "above") +
+                   "the point " + pxText(outlinePx[i]) + " cannot lie on a top at " + metreText(h) +
+                       ": it is " + (h < camera.heightM ? "above" : "below") + " the horizon (row " +
+                       rowText(horizonRowPx(camera, outlinePx[i].x())) + " there), and a top " +
+                       (h < camera.heightM ? "below" : "above") + " the camera's eye is seen " +
+                       (h < camera.heightM ? "from above" : "from below") + ": outline the top " +
+                       (h < camera.heightM ? "below" : "above") +
                        " the horizon, or check the height click"};
     ex.topOutlineWorld.push_back(*p);
   }
@@ -450,8 +454,8 @@ SceneGeometry buildSceneGeometry(const RoomBox& b, const std::vector<Extrusion>&
 }
 
 Expected<Placement> placeObject(const TriangleMesh& mesh, const SceneGeometry& geometry,
-                                const Camera& camera, const Vec2& basePx, double heightM,
-                                double yawDeg, const std::string& key) {
+                                const Camera& camera, const Vec2& basePx, double heightM, double yawDeg,
+                                const std::string& key) {
   if (mesh.empty()) return Error{"", key + ".mesh", "the mesh has no triangles"};
   if (!basePx.allFinite()) return Error{"", key + ".base_px", "is not a finite number"};
   if (!(heightM > 0 && std::isfinite(heightM)))
@@ -460,8 +464,9 @@ Expected<Placement> placeObject(const TriangleMesh& mesh, const SceneGeometry& g
   const auto hit = geometry.intersect(camera.rayThroughPixel(basePx), true);
   if (!hit || hit->normalWorld.y() < 0.5)
     return Error{"", key + ".base_px",
-                 "the pixel " + pxText(basePx) + " is not on the floor or any surface an "
-                 "object can stand on"};
+                 "the pixel " + pxText(basePx) +
+                     " is not on the floor or any surface an "
+                     "object can stand on"};
   const Eigen::AlignedBox3f bb = mesh.bounds();
   const double sizeY = double(bb.max().y() - bb.min().y());
   if (!(sizeY > 1e-12) || !std::isfinite(sizeY))

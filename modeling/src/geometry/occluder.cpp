@@ -19,11 +19,8 @@ double secondsSince(Clock::time_point t) {
 }
 
 // Rasterises strokes (pixel coordinates, centres at +0.5) into `mask` with value `v`.
-void drawStrokes(cv::Mat& mask, const std::vector<std::vector<Vec2>>& strokes, int radius,
-                 uchar v) {
-  auto toPt = [](const Vec2& p) {
-    return cv::Point(int(std::floor(p.x())), int(std::floor(p.y())));
-  };
+void drawStrokes(cv::Mat& mask, const std::vector<std::vector<Vec2>>& strokes, int radius, uchar v) {
+  auto toPt = [](const Vec2& p) { return cv::Point(int(std::floor(p.x())), int(std::floor(p.y()))); };
   for (const auto& s : strokes) {
     if (s.size() == 1) cv::circle(mask, toPt(s[0]), radius, cv::Scalar(v), cv::FILLED);
     for (size_t i = 1; i < s.size(); ++i)
@@ -64,8 +61,10 @@ Status checkStrokes(const Strokes& fg, const Strokes& bg, const MatteKeys& keys)
       if (!stroke.empty()) return true;
     return false;
   };
-  if (!hasPoints(fg)) return Error{"", keys.fg, "is empty: scribble at least one stroke inside the object"};
-  if (!hasPoints(bg)) return Error{"", keys.bg, "is empty: scribble at least one stroke around the object"};
+  if (!hasPoints(fg))
+    return Error{"", keys.fg, "is empty: scribble at least one stroke inside the object"};
+  if (!hasPoints(bg))
+    return Error{"", keys.bg, "is empty: scribble at least one stroke around the object"};
   if (!finiteStrokes(fg)) return Error{"", keys.fg, "holds a point that is not a finite number"};
   if (!finiteStrokes(bg)) return Error{"", keys.bg, "holds a point that is not a finite number"};
   return Status::Ok();
@@ -73,8 +72,8 @@ Status checkStrokes(const Strokes& fg, const Strokes& bg, const MatteKeys& keys)
 
 // Both kinds of strokes rasterised. Each must leave pixels inside the photo that the other kind
 // does not cover, and neither may cover the whole photo.
-Expected<StrokeMasks> rasteriseStrokes(const Strokes& fg, const Strokes& bg, int W, int H,
-                                       int radius, const MatteKeys& keys) {
+Expected<StrokeMasks> rasteriseStrokes(const Strokes& fg, const Strokes& bg, int W, int H, int radius,
+                                       const MatteKeys& keys) {
   StrokeMasks m;
   m.fg = cv::Mat(H, W, CV_8U, cv::Scalar(0));
   m.bg = cv::Mat(H, W, CV_8U, cv::Scalar(0));
@@ -174,8 +173,8 @@ int nearestDistance2(const cv::Vec3b& c, const std::vector<cv::Vec3b>& set) {
 // background seed; one merely close to a background colour is left to the cut. A stroke that
 // would keep no sure pixel (an object coloured like its surroundings) is the user's word
 // against the colours: only its gap pixels go, the rest stays sure.
-void relabelStrokeGaps(CutRegion& c, const std::vector<Vec2>& stroke, cv::Size photoSize,
-                       int radius, const std::vector<cv::Vec3b>& bgColours, int maxDist2) {
+void relabelStrokeGaps(CutRegion& c, const std::vector<Vec2>& stroke, cv::Size photoSize, int radius,
+                       const std::vector<cv::Vec3b>& bgColours, int maxDist2) {
   const cv::Rect& roi = c.roi;
   cv::Mat one(photoSize, CV_8U, cv::Scalar(0));
   drawStrokes(one, {stroke}, radius, 255);
@@ -278,8 +277,8 @@ Expected<cv::Mat> alphaOf(const CutRegion& c, const cv::Mat& trimap, const cv::M
 }
 
 // The matte at the photo's size (the trimap's sure parts exactly 0 and 1) and its box.
-Status storeMatte(OccluderMatte& out, const cv::Mat& alpha8, const cv::Mat& trimap,
-                  const cv::Rect& roi, int W, int H, const MatteKeys& keys) {
+Status storeMatte(OccluderMatte& out, const cv::Mat& alpha8, const cv::Mat& trimap, const cv::Rect& roi,
+                  int W, int H, const MatteKeys& keys) {
   out.alphaPx = ImageF(W, H, 1, 0.f);
   int x0 = W, y0 = H, x1 = -1, y1 = -1;
   for (int y = 0; y < roi.height; ++y)
@@ -371,8 +370,10 @@ Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte,
     return Error{"", key, "the camera looks straight down: a vertical card cannot face it"};
   normal.normalize();
   const auto& b = matte.boxPx;
-  const Vec2 corners[4] = {{double(b[0]), double(b[3])}, {double(b[2]), double(b[3])},
-                           {double(b[2]), double(b[1])}, {double(b[0]), double(b[1])}};
+  const Vec2 corners[4] = {{double(b[0]), double(b[3])},
+                           {double(b[2]), double(b[3])},
+                           {double(b[2]), double(b[1])},
+                           {double(b[0]), double(b[1])}};
   Surface s;
   s.kind = SurfaceKind::OccluderCard;
   s.name = "occluder_" + std::to_string(groupIndex) + "_card";

@@ -71,9 +71,8 @@ void convertFaces(const SolidTriMesh& m, PrismMeshes& out) {
 
 }  // namespace
 
-Expected<PrismMeshes> buildPrism(const std::vector<Vec2>& polygonCcw, const Vec3& origin,
-                                 const Vec3& u, const Vec3& v, const Vec3& sweep,
-                                 const std::string& key) {
+Expected<PrismMeshes> buildPrism(const std::vector<Vec2>& polygonCcw, const Vec3& origin, const Vec3& u,
+                                 const Vec3& v, const Vec3& sweep, const std::string& key) {
   INLAY_CHECK(polygonCcw.size() >= 3);
   if (!(sweep.norm() > 1e-6) || !sweep.allFinite())
     return Error{"", key, "the solid would have no thickness"};

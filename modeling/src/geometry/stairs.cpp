@@ -120,9 +120,8 @@ const char* wallName(SurfaceKind k) {
 }
 
 // The profile's pixels lifted onto the wall, in its (a, y) frame; errors name each point.
-Expected<std::vector<Vec2>> liftOntoWall(const Camera& camera, const RoomBox& box,
-                                         const WallFrame& w, const std::vector<Vec2>& px,
-                                         const std::string& key) {
+Expected<std::vector<Vec2>> liftOntoWall(const Camera& camera, const RoomBox& box, const WallFrame& w,
+                                         const std::vector<Vec2>& px, const std::string& key) {
   const double tolA = 0.05 * (w.aMax - w.aMin), tolY = 0.05 * box.ceilingM;
   std::vector<Vec2> q;
   for (size_t i = 0; i < px.size(); ++i) {
@@ -150,23 +149,24 @@ Expected<std::vector<Vec2>> liftOntoWall(const Camera& camera, const RoomBox& bo
 // `floorSnapM` of the floor; points that close to it are set on it.
 Status restOnFloor(std::vector<Vec2>& q, const Camera& camera, const std::vector<Vec2>& px,
                    double floorSnapM, const std::string& key) {
-  const size_t low = size_t(std::min_element(q.begin(), q.end(), [](const Vec2& a, const Vec2& b) {
-                              return a.y() < b.y();
-                            }) - q.begin());
+  const size_t low = size_t(
+      std::min_element(q.begin(), q.end(), [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); }) -
+      q.begin());
   const double yLow = q[low].y();
   const std::string ki = key + "[" + std::to_string(low) + "]";
   if (yLow >= camera.heightM)
     return Error{"", ki,
-                 "the profile's lowest point " + pxText(px[low]) + " is at or above the horizon, "
-                 "so the stairs cannot stand on the floor"};
+                 "the profile's lowest point " + pxText(px[low]) +
+                     " is at or above the horizon, "
+                     "so the stairs cannot stand on the floor"};
   if (yLow < -floorSnapM)
     return Error{"", ki,
                  "the point " + pxText(px[low]) + " lies " + std::to_string(-yLow) +
                      " m below the wall's floor line"};
   if (yLow > floorSnapM)
     return Error{"", key,
-                 "the profile does not reach the floor (its lowest point is " +
-                     std::to_string(yLow) + " m up): draw it down to the wall's floor line"};
+                 "the profile does not reach the floor (its lowest point is " + std::to_string(yLow) +
+                     " m up): draw it down to the wall's floor line"};
   for (Vec2& p : q)
     if (p.y() <= floorSnapM) p.y() = 0.0;
   return Status{};
@@ -174,8 +174,7 @@ Status restOnFloor(std::vector<Vec2>& q, const Camera& camera, const std::vector
 
 }  // namespace
 
-Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& st,
-                                   const std::string& key) {
+Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& st, const std::string& key) {
   if (!st.basePx.allFinite()) return Error{"", key + ".base_px", "is not a finite number"};
   if (st.steps < 1 || st.steps > 1000)
     return Error{"", key + ".steps", "must be a whole number from 1 to 1000"};
@@ -190,8 +189,9 @@ Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& st,
   const auto base = hitHorizontal(camera.rayThroughPixel(st.basePx), 0.0);
   if (!base)
     return Error{"", key + ".base_px",
-                 "the point " + pxText(st.basePx) + " is at or above the horizon, so it cannot be "
-                 "on the floor"};
+                 "the point " + pxText(st.basePx) +
+                     " is at or above the horizon, so it cannot be "
+                     "on the floor"};
   // Side profile in (along the climb, up), counter-clockwise: the floor line, the back, then
   // down the staircase edge: nosing of step k at ((k) run, (k + 1) rise).
   std::vector<Vec2> profile = {{0, 0}, {st.steps * st.runM, 0}};
@@ -251,13 +251,14 @@ Expected<Extrusion> stairsFromProfile(const Camera& camera, const RoomBox& box,
                      std::to_string(w.oppositeM) + " m)"};
   const Vec3 eye(0, camera.heightM, 0);
   const double across = (eye - w.origin).dot(w.inward);
-  if (across > 0 && across < widthM && detail::insideOrOnPolygon(*ccw, Vec2((eye - w.origin).dot(w.u), eye.y())))
-    return Error{"", key + ".width_m",
-                 "the stairs would enclose the camera: give a narrower width_m"};
+  if (across > 0 && across < widthM &&
+      detail::insideOrOnPolygon(*ccw, Vec2((eye - w.origin).dot(w.u), eye.y())))
+    return Error{"", key + ".width_m", "the stairs would enclose the camera: give a narrower width_m"};
   auto prism = detail::buildPrism(*ccw, w.origin, w.u, Vec3(0, 1, 0), widthM * w.inward, key);
   if (!prism) return prism.error();
   double aLo = 1e300, aHi = -1e300, yHi = 0;
-  for (const Vec2& p : *ccw) aLo = std::min(aLo, p.x()), aHi = std::max(aHi, p.x()), yHi = std::max(yHi, p.y());
+  for (const Vec2& p : *ccw)
+    aLo = std::min(aLo, p.x()), aHi = std::max(aHi, p.x()), yHi = std::max(yHi, p.y());
   const Vec3 lo = w.origin + aLo * w.u, hi = w.origin + aHi * w.u, sweep = widthM * w.inward;
   return stairsExtrusion(std::move(*prism), {lo, hi, hi + sweep, lo + sweep}, yHi);
 }

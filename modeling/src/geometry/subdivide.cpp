@@ -41,7 +41,8 @@ Welded weld(const TriangleMesh& mesh) {
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     const Vec3f& p = mesh.positions[i];
     if (!p.allFinite()) continue;
-    const auto [it, added] = index.emplace(std::array<float, 3>{p.x(), p.y(), p.z()}, int(w.positions.size()));
+    const auto [it, added] =
+        index.emplace(std::array<float, 3>{p.x(), p.y(), p.z()}, int(w.positions.size()));
     if (added) w.positions.push_back(p.cast<double>());
     remap[i] = it->second;
   }
@@ -62,7 +63,9 @@ std::vector<std::array<int, 4>> pairIntoQuads(const Welded& w) {
     int best = 0;
     double bestLen = -1;
     for (int k = 0; k < 3; ++k) {
-      const double len = (w.positions[size_t(w.triangles[t][(k + 1) % 3])] - w.positions[size_t(w.triangles[t][k])]).squaredNorm();
+      const double len =
+          (w.positions[size_t(w.triangles[t][(k + 1) % 3])] - w.positions[size_t(w.triangles[t][k])])
+              .squaredNorm();
       if (len > bestLen) bestLen = len, best = k;
     }
     return best;  // the edge from vertex k to vertex k + 1
@@ -99,7 +102,8 @@ std::vector<std::array<int, 4>> pairIntoQuads(const Welded& w) {
 
 Expected<SubdivisionResult> subdivide(const TriangleMesh& mesh, int levels, size_t maxTriangles) {
   if (levels < 0 || levels > kMaxSubdivisionLevels)
-    return Error{"", "subdivide", "must be an integer in [0, " + std::to_string(kMaxSubdivisionLevels) + "]"};
+    return Error{"", "subdivide",
+                 "must be an integer in [0, " + std::to_string(kMaxSubdivisionLevels) + "]"};
   const Welded w = weld(mesh);
   if (w.triangles.empty()) return Error{"", "subdivide", "the mesh has no usable triangle"};
   const std::vector<std::array<int, 4>> quads = pairIntoQuads(w);
@@ -107,8 +111,9 @@ Expected<SubdivisionResult> subdivide(const TriangleMesh& mesh, int levels, size
   result.scheme = quads.empty() ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
   const size_t baseTriangles = quads.empty() ? w.triangles.size() : 2 * quads.size();
   if (double(baseTriangles) * std::pow(4.0, levels) > double(maxTriangles))
-    return Error{"", "subdivide", std::to_string(levels) + " levels would make more than " + std::to_string(maxTriangles) +
-                                      " triangles"};
+    return Error{"", "subdivide",
+                 std::to_string(levels) + " levels would make more than " +
+                     std::to_string(maxTriangles) + " triangles"};
 
   std::vector<int> counts, indices;
   if (quads.empty()) {

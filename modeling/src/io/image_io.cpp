@@ -86,14 +86,38 @@ std::string oiioError(const std::string& fallback, const std::string& detail) {
 // Source pixel of output pixel (u, v) for EXIF orientation `o` of a W x H stored image.
 inline void orientedSource(int o, int w, int h, int u, int v, int& x, int& y) {
   switch (o) {
-    case 2: x = w - 1 - u; y = v; break;
-    case 3: x = w - 1 - u; y = h - 1 - v; break;
-    case 4: x = u; y = h - 1 - v; break;
-    case 5: x = v; y = u; break;
-    case 6: x = v; y = h - 1 - u; break;
-    case 7: x = w - 1 - v; y = h - 1 - u; break;
-    case 8: x = w - 1 - v; y = u; break;
-    default: x = u; y = v; break;
+    case 2:
+      x = w - 1 - u;
+      y = v;
+      break;
+    case 3:
+      x = w - 1 - u;
+      y = h - 1 - v;
+      break;
+    case 4:
+      x = u;
+      y = h - 1 - v;
+      break;
+    case 5:
+      x = v;
+      y = u;
+      break;
+    case 6:
+      x = v;
+      y = h - 1 - u;
+      break;
+    case 7:
+      x = w - 1 - v;
+      y = h - 1 - u;
+      break;
+    case 8:
+      x = w - 1 - v;
+      y = u;
+      break;
+    default:
+      x = u;
+      y = v;
+      break;
   }
 }
 
@@ -129,13 +153,15 @@ ExifInfo readExif(const OIIO::ImageSpec& spec) {
 
 // Linear float (C = 1, 3 or 4) -> interleaved 8-bit sRGB (or `response`'s encoding when given) with `outChannels` <= C channels
 // (grey stays grey, RGBA may drop its alpha for JPEG).
-std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels, const CameraResponse* response) {
+std::vector<unsigned char> toSrgb8(const ImageF& linear, int outChannels,
+                                   const CameraResponse* response) {
   std::vector<unsigned char> out(linear.pixelCount() * size_t(outChannels));
   for (size_t i = 0; i < linear.pixelCount(); ++i) {
     const float* p = &linear.data[i * size_t(linear.channels)];
     for (int c = 0; c < outChannels; ++c) {
       if (c < 3 && response) {
-        out[i * size_t(outChannels) + size_t(c)] = response->encodeCode8(p[linear.channels == 1 ? 0 : c]);
+        out[i * size_t(outChannels) + size_t(c)] =
+            response->encodeCode8(p[linear.channels == 1 ? 0 : c]);
         continue;
       }
       out[i * size_t(outChannels) + size_t(c)] =
@@ -150,8 +176,9 @@ Status checkImage(const std::string& path, const ImageF& img) {
   if (img.width <= 0 || img.height <= 0 || img.empty())
     return Error{path, "", "cannot write an empty image"};
   if (img.channels != 1 && img.channels != 3 && img.channels != 4)
-    return Error{path, "", "cannot write an image with " + std::to_string(img.channels) +
-                               " channels (1, 3 or 4 expected)"};
+    return Error{
+        path, "",
+        "cannot write an image with " + std::to_string(img.channels) + " channels (1, 3 or 4 expected)"};
   if (img.data.size() != img.pixelCount() * size_t(img.channels))
     return Error{path, "", "image buffer size does not match its dimensions"};
   return {};
@@ -159,8 +186,8 @@ Status checkImage(const std::string& path, const ImageF& img) {
 
 // Writes a temporary file beside `path`, reads it back completely (a short write shows up as a
 // decode error), then renames it over `path`.
-Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec,
-                            OIIO::TypeDesc bufType, const void* pixels) {
+Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc bufType,
+                            const void* pixels) {
   removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   std::error_code ec;
@@ -194,8 +221,8 @@ Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec
 // in memory, then writes the bytes through writeFileAtomically, whose every write is checked:
 // OpenImageIO's file writers do not all report a short write (a full disk left a truncated PNG
 // and returned success), so they never touch the target folder themselves.
-Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
-                       OIIO::TypeDesc bufType, const void* pixels) {
+Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc bufType,
+                       const void* pixels) {
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return Error{path, "", oiioError("no writer for this file type", OIIO::geterror())};
   // TIFF seeks back to patch its directories, which OpenImageIO 2.4's in-memory proxy gets
@@ -230,7 +257,8 @@ struct PngStream {
 uint64_t pngRowBytes(const PngStream& png) {
   int channels = 0;
   switch (png.colorType) {
-    case 0: case 3: channels = 1; break;
+    case 0:
+    case 3: channels = 1; break;
     case 2: channels = 3; break;
     case 4: channels = 2; break;
     case 6: channels = 4; break;
@@ -266,11 +294,13 @@ Status checkPngPixels(const std::string& path, const PngStream& png) {
   inflateEnd(&z);
   if (badFilter) return Error{path, "", "corrupt PNG: a row has an invalid filter type"};
   if (rc != Z_STREAM_END)
-    return Error{path, "", rc == Z_BUF_ERROR ? "truncated PNG: the pixel data ends early"
-                                             : "corrupt PNG: the compressed pixel data is invalid"};
+    return Error{path, "",
+                 rc == Z_BUF_ERROR ? "truncated PNG: the pixel data ends early"
+                                   : "corrupt PNG: the compressed pixel data is invalid"};
   if (png.interlace == 0 && total != expected)
-    return Error{path, "", "corrupt PNG: " + std::to_string(total) + " bytes of pixel data, " +
-                               std::to_string(expected) + " expected"};
+    return Error{path, "",
+                 "corrupt PNG: " + std::to_string(total) + " bytes of pixel data, " +
+                     std::to_string(expected) + " expected"};
   return {};
 }
 
@@ -294,8 +324,9 @@ Status checkPng(const std::string& path, const ImageLimits& limits) {
   for (;;) {
     unsigned char h[8], crc[4];
     if (std::fread(h, 1, 8, f) != 8)
-      return Error{path, "", "truncated PNG: the file ends at byte " + std::to_string(at) +
-                                 " before its IEND chunk"};
+      return Error{
+          path, "",
+          "truncated PNG: the file ends at byte " + std::to_string(at) + " before its IEND chunk"};
     const uint32_t length = bigEndian32(h);
     const std::string type(reinterpret_cast<const char*>(h + 4), 4);
     const std::string where = "chunk '" + type + "' at byte " + std::to_string(at);
@@ -333,23 +364,20 @@ Status checkPng(const std::string& path, const ImageLimits& limits) {
   return checkPngPixels(path, png);
 }
 
-
 // The header's claimed size against the limits: the one message for every format, given before
 // anything is decoded (from the file's own header when we parse it, else from OpenImageIO's).
 Status checkImageSize(const std::string& path, long long width, long long height,
                       const ImageLimits& limits) {
-  if (width > limits.maxDimension || height > limits.maxDimension ||
-      width * height > limits.maxPixels)
+  if (width > limits.maxDimension || height > limits.maxDimension || width * height > limits.maxPixels)
     return Error{path, "",
                  "image of " + std::to_string(width) + " x " + std::to_string(height) +
-                     " pixels exceeds the limit (" + std::to_string(limits.maxPixels) +
-                     " pixels, " + std::to_string(limits.maxDimension) + " per side)"};
+                     " pixels exceeds the limit (" + std::to_string(limits.maxPixels) + " pixels, " +
+                     std::to_string(limits.maxDimension) + " per side)"};
   return {};
 }
 
 int32_t littleEndian32(const unsigned char* p) {
-  return int32_t(uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 |
-                 uint32_t(p[3]) << 24);
+  return int32_t(uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24);
 }
 
 // An EXR header's NUL-terminated name (at most 255 bytes); nullopt at the file's end or when no
@@ -386,19 +414,20 @@ Status checkExrHeader(const std::string& path, std::FILE* f, unsigned long long 
     const long long at = std::ftell(f);
     const std::optional<std::string> name = readExrName(f);
     if (!name)
-      return Error{path, "", "truncated or corrupt EXR: no complete attribute name at byte " +
-                                 std::to_string(at)};
+      return Error{path, "",
+                   "truncated or corrupt EXR: no complete attribute name at byte " + std::to_string(at)};
     if (name->empty()) return {};
     const std::optional<std::string> type = readExrName(f);
     unsigned char sizeBytes[4];
     if (!type || std::fread(sizeBytes, 1, 4, f) != 4)
-      return Error{path, "", "truncated or corrupt EXR: attribute '" + *name + "' at byte " +
-                                 std::to_string(at) + " has no complete type and size"};
+      return Error{path, "",
+                   "truncated or corrupt EXR: attribute '" + *name + "' at byte " + std::to_string(at) +
+                       " has no complete type and size"};
     const long long size = littleEndian32(sizeBytes), left = (long long)fileSize - std::ftell(f);
     if (size < 0 || size > left)
-      return Error{path, "", "corrupt EXR: attribute '" + *name + "' at byte " +
-                                 std::to_string(at) + " claims " + std::to_string(size) +
-                                 " bytes, the file has " + std::to_string(left) + " left"};
+      return Error{path, "",
+                   "corrupt EXR: attribute '" + *name + "' at byte " + std::to_string(at) + " claims " +
+                       std::to_string(size) + " bytes, the file has " + std::to_string(left) + " left"};
     if (*name == "dataWindow" && *type == "box2i" && size == 16) {
       if (Status s = checkExrDataWindow(path, f, limits); !s) return s;
     } else if (std::fseek(f, long(size), SEEK_CUR) != 0) {
@@ -554,15 +583,15 @@ Status saveImage(const std::string& path, const ImageF& linear, const SaveOption
     std::vector<float> rgb(linear.pixelCount() * 3);
     for (size_t i = 0; i < linear.pixelCount(); ++i)
       for (int c = 0; c < 3; ++c) {
-        const float v = linear.data[i * size_t(linear.channels) +
-                                    size_t(linear.channels == 1 ? 0 : c)];
+        const float v = linear.data[i * size_t(linear.channels) + size_t(linear.channels == 1 ? 0 : c)];
         rgb[i * 3 + size_t(c)] = std::isfinite(v) ? std::max(v, 0.f) : 0.f;
       }
     OIIO::ImageSpec spec(linear.width, linear.height, 3, OIIO::TypeDesc::FLOAT);
     return writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, rgb.data());
   }
-  return Error{path, "", "unknown image extension '" + ext +
-                             "' (expected .png, .jpg, .jpeg, .tif, .tiff, .exr or .hdr)"};
+  return Error{
+      path, "",
+      "unknown image extension '" + ext + "' (expected .png, .jpg, .jpeg, .tif, .tiff, .exr or .hdr)"};
 }
 
 Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers, bool half) {
@@ -603,8 +632,8 @@ Status writeFileAtomically(const std::string& path, const std::string& bytes) {
   const fs::path temp = tempPathBeside(path);
   const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0)
-    return Error{path, "", std::string("cannot create a temporary file beside it: ") +
-                               std::strerror(errno)};
+    return Error{path, "",
+                 std::string("cannot create a temporary file beside it: ") + std::strerror(errno)};
   // Keep the permissions of the file being replaced.
   struct stat old {};
   if (::stat(path.c_str(), &old) == 0 && S_ISREG(old.st_mode)) ::fchmod(fd, old.st_mode & 07777);

@@ -159,7 +159,7 @@ std::vector<std::array<uint32_t, 3>> clipEars(const std::vector<Pt2>& p) {
     if (!(cross2(p[a], p[b], p[c]) > 0)) return false;
     for (size_t j = 0; j < m; ++j) {
       const uint32_t q = ring[j];
-      if (q == a || q == b || q == c || turn(j) > 0) continue;  // convex corners cannot block
+      if (q == a || q == b || q == c || turn(j) > 0) continue;     // convex corners cannot block
       if (p[q] == p[a] || p[q] == p[b] || p[q] == p[c]) continue;  // a bridge's twin corner
       if (insideOrOnTriangle(p[q], p[a], p[b], p[c])) return false;
     }
@@ -194,7 +194,8 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3f>
   // Ear clipping is quadratic or worse in the corners: a face beyond a thousand is fanned.
   if (k > 1024) return fan;
   bool convex = true;
-  for (size_t i = 0; i < k && convex; ++i) convex = cross2(p[(i + k - 1) % k], p[i], p[(i + 1) % k]) >= 0;
+  for (size_t i = 0; i < k && convex; ++i)
+    convex = cross2(p[(i + k - 1) % k], p[i], p[(i + 1) % k]) >= 0;
   if (convex) return fan;
   return clipEars(p);
 }
@@ -205,14 +206,13 @@ std::vector<std::array<uint32_t, 3>> triangulatePolygon(const std::vector<Vec3f>
 TriangleMesh makeSphere(int subdivisions) {
   subdivisions = std::clamp(subdivisions, 0, 7);
   const float t = (1.f + std::sqrt(5.f)) / 2.f;
-  std::vector<Vec3f> v = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0},
-                          {0, -1, t}, {0, 1, t},  {0, -1, -t}, {0, 1, -t},
-                          {t, 0, -1}, {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  std::vector<Vec3f> v = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                          {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (Vec3f& p : v) p.normalize();
-  std::vector<std::array<uint32_t, 3>> f = {
-      {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-      {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  std::vector<std::array<uint32_t, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                            {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                            {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
     auto midpoint = [&](uint32_t a, uint32_t b) {
@@ -396,7 +396,8 @@ void addFace(TriangleMesh& m, const std::vector<uint32_t>& ids) {
   std::vector<Vec3f> corners;
   corners.reserve(ids.size());
   for (uint32_t i : ids) corners.push_back(m.positions[i]);
-  for (const auto& t : triangulatePolygon(corners)) m.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
+  for (const auto& t : triangulatePolygon(corners))
+    m.triangles.push_back({ids[t[0]], ids[t[1]], ids[t[2]]});
 }
 
 // What an OBJ file says, as read (indices 0-based, checked against the final counts later).
@@ -417,7 +418,8 @@ void readObjNumbers(ObjData& d, const std::vector<std::string_view>& toks, const
                     const MeshLimits& limits) {
   const std::string_view kw = toks[0];
   const size_t need = kw == "vt" ? 1 : 3;
-  if (toks.size() < need + 1) fail(where, "'" + std::string(kw) + "' needs " + std::to_string(need) + " numbers");
+  if (toks.size() < need + 1)
+    fail(where, "'" + std::string(kw) + "' needs " + std::to_string(need) + " numbers");
   double x[3] = {0, 0, 0};
   for (size_t k = 0; k < std::min<size_t>(3, toks.size() - 1); ++k) {
     if (kw == "vt" && k == 2) break;
@@ -449,8 +451,7 @@ ObjCorner readObjCorner(std::string_view tok, const ObjData& d, const std::strin
     if (!num.empty() && !parseInt(num, idx[part]))
       fail(where, "malformed face index '" + std::string(tok) + "'");
     if (part == 0 && num.empty()) fail(where, "face corner without a vertex index");
-    if (!num.empty() && idx[part] == 0)
-      fail(where, "face index 0 (OBJ indices start at 1)");
+    if (!num.empty() && idx[part] == 0) fail(where, "face index 0 (OBJ indices start at 1)");
     s = e + 1;
     if (e == tok.size()) break;
   }
@@ -629,9 +630,13 @@ bool plyType(const std::string& s, PlyType& t) {
 }
 size_t plySize(PlyType t) {
   switch (t) {
-    case PlyType::I8: case PlyType::U8: return 1;
-    case PlyType::I16: case PlyType::U16: return 2;
-    case PlyType::I32: case PlyType::U32: case PlyType::F32: return 4;
+    case PlyType::I8:
+    case PlyType::U8: return 1;
+    case PlyType::I16:
+    case PlyType::U16: return 2;
+    case PlyType::I32:
+    case PlyType::U32:
+    case PlyType::F32: return 4;
     default: return 8;
   }
 }
@@ -675,12 +680,36 @@ class PlyBody {
     switch (t) {
       case PlyType::I8: return double(int8_t(b[0]));
       case PlyType::U8: return double(b[0]);
-      case PlyType::I16: { int16_t x; std::memcpy(&x, b, 2); return x; }
-      case PlyType::U16: { uint16_t x; std::memcpy(&x, b, 2); return x; }
-      case PlyType::I32: { int32_t x; std::memcpy(&x, b, 4); return x; }
-      case PlyType::U32: { uint32_t x; std::memcpy(&x, b, 4); return x; }
-      case PlyType::F32: { float x; std::memcpy(&x, b, 4); return x; }
-      default: { double x; std::memcpy(&x, b, 8); return x; }
+      case PlyType::I16: {
+        int16_t x;
+        std::memcpy(&x, b, 2);
+        return x;
+      }
+      case PlyType::U16: {
+        uint16_t x;
+        std::memcpy(&x, b, 2);
+        return x;
+      }
+      case PlyType::I32: {
+        int32_t x;
+        std::memcpy(&x, b, 4);
+        return x;
+      }
+      case PlyType::U32: {
+        uint32_t x;
+        std::memcpy(&x, b, 4);
+        return x;
+      }
+      case PlyType::F32: {
+        float x;
+        std::memcpy(&x, b, 4);
+        return x;
+      }
+      default: {
+        double x;
+        std::memcpy(&x, b, 8);
+        return x;
+      }
     }
   }
   size_t remaining() const { return d_.size() - std::min(pos_, d_.size()); }
@@ -691,9 +720,7 @@ class PlyBody {
   }
 
  private:
-  std::string endOfData() const {
-    return "unexpected end of data: the file ends here, but " + claim_;
-  }
+  std::string endOfData() const { return "unexpected end of data: the file ends here, but " + claim_; }
 
   const std::string& d_;
   size_t pos_;
@@ -703,14 +730,12 @@ class PlyBody {
 
 // Lying headers: every element instance needs at least this many bytes; refuse counts the file
 // cannot hold before allocating anything, naming the element line that claims too much.
-void checkPlyCounts(const std::vector<PlyElement>& elements, PlyBody::Format format,
-                    size_t bodyBytes) {
+void checkPlyCounts(const std::vector<PlyElement>& elements, PlyBody::Format format, size_t bodyBytes) {
   long double minBytes = 0;
   for (const PlyElement& e : elements) {
     size_t per = 0;
     for (const PlyProperty& p : e.props)
-      per += format == PlyBody::Format::Ascii ? 2
-                                              : (p.isList ? plySize(p.countType) : plySize(p.type));
+      per += format == PlyBody::Format::Ascii ? 2 : (p.isList ? plySize(p.countType) : plySize(p.type));
     minBytes += (long double)e.count * per;
     if (minBytes <= (long double)bodyBytes + 1) continue;
     fail("header line " + std::to_string(e.headerLine),
@@ -767,8 +792,7 @@ PlyHeader readPlyHeader(const std::string& data) {
   if (data.compare(0, 3, "ply") != 0 || data.size() < 4 || (data[3] != '\n' && data[3] != '\r'))
     fail("header", "not a PLY file (missing 'ply' magic)");
   const size_t endHeader = data.find("end_header");
-  if (endHeader == std::string::npos || endHeader > (1 << 20))
-    fail("header", "no 'end_header' line");
+  if (endHeader == std::string::npos || endHeader > (1 << 20)) fail("header", "no 'end_header' line");
   PlyHeader h;
   h.bodyPos = data.find('\n', endHeader);
   if (h.bodyPos == std::string::npos) h.bodyPos = data.size();
@@ -820,8 +844,12 @@ void readPlyVertices(TriangleMesh& m, PlyBody& body, const PlyElement& e, const 
   for (size_t k = 0; k < e.props.size(); ++k) {
     const std::string& n = e.props[k].name;
     const int ki = e.props[k].isList ? -1 : int(k);
-    if (n == "x") ix = ki; else if (n == "y") iy = ki; else if (n == "z") iz = ki;
-    else if (n == "nx") inx = ki; else if (n == "ny") iny = ki; else if (n == "nz") inz = ki;
+    if (n == "x") ix = ki;
+    else if (n == "y") iy = ki;
+    else if (n == "z") iz = ki;
+    else if (n == "nx") inx = ki;
+    else if (n == "ny") iny = ki;
+    else if (n == "nz") inz = ki;
     else if (n == "u" || n == "s" || n == "texture_u") iu = ki;
     else if (n == "v" || n == "t" || n == "texture_v") iv = ki;
   }
@@ -845,8 +873,8 @@ void readPlyVertices(TriangleMesh& m, PlyBody& body, const PlyElement& e, const 
     const Vec3f pos = Vec3f(float(vals[size_t(ix)]), float(vals[size_t(iy)]), float(vals[size_t(iz)]));
     if (!pos.allFinite()) fail(where, "non-finite coordinate");
     m.positions[i] = pos;
-    if (hasN) m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]),
-                                   float(vals[size_t(inz)]));
+    if (hasN)
+      m.normals[i] = Vec3f(float(vals[size_t(inx)]), float(vals[size_t(iny)]), float(vals[size_t(inz)]));
     if (hasUv) m.uvs[i] = Vec2f(float(vals[size_t(iu)]), float(vals[size_t(iv)]));
   }
 }
@@ -895,8 +923,7 @@ void readPlyFaces(TriangleMesh& m, PlyBody& body, const PlyElement& e, const Mes
       idx.reserve(size_t(std::min<int64_t>(n, 1'000'000)));
       for (int64_t q = 0; q < n; ++q) {
         const double x = body.read(p.type, where);
-        if (x != std::floor(x) || (strips ? x < -1 : x < 0) ||
-            x >= double(m.positions.size()))
+        if (x != std::floor(x) || (strips ? x < -1 : x < 0) || x >= double(m.positions.size()))
           fail(where, "vertex index " + plyNumber(x) + " out of range (" +
                           std::to_string(m.positions.size()) + " vertices)");
         idx.push_back(int64_t(x));
@@ -984,16 +1011,18 @@ size_t indexOr(const nlohmann::json& obj, const char* key, size_t fallback, bool
 
 size_t componentSize(int componentType) {
   switch (componentType) {
-    case 5120: case 5121: return 1;
-    case 5122: case 5123: return 2;
-    case 5125: case 5126: return 4;
+    case 5120:
+    case 5121: return 1;
+    case 5122:
+    case 5123: return 2;
+    case 5125:
+    case 5126: return 4;
     default: return 0;
   }
 }
 size_t componentCount(const std::string& type) {
-  static const std::map<std::string, size_t> n = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3},
-                                                  {"VEC4", 4},   {"MAT2", 4}, {"MAT3", 9},
-                                                  {"MAT4", 16}};
+  static const std::map<std::string, size_t> n = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+                                                  {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
   auto it = n.find(type);
   return it == n.end() ? 0 : it->second;
 }
@@ -1055,8 +1084,8 @@ nlohmann::json checkGltf(const std::string& path, const std::string& data, bool 
       fail(where, "no data (no uri and no GLB BIN chunk)");
     }
     if (declared > actual)
-      fail(where, "byteLength " + std::to_string(declared) + " exceeds the " +
-                      std::to_string(actual) + " bytes available");
+      fail(where, "byteLength " + std::to_string(declared) + " exceeds the " + std::to_string(actual) +
+                      " bytes available");
     bufferSize.push_back(declared);
   }
   std::vector<size_t> viewSize, viewStride;
@@ -1096,8 +1125,7 @@ nlohmann::json checkGltf(const std::string& path, const std::string& data, bool 
     const size_t stride = std::max(elem, viewStride[view]);
     if (count > (size_t(1) << 40) / stride) fail(where, "count too large");
     const size_t need = count == 0 ? 0 : offset + stride * (count - 1) + elem;
-    if (need > viewSize[view])
-      fail(where, "reads past the end of bufferView " + std::to_string(view));
+    if (need > viewSize[view]) fail(where, "reads past the end of bufferView " + std::to_string(view));
   }
   return j;
 }
@@ -1172,10 +1200,8 @@ TriangleMesh meshFromAssimp(const aiScene& sceneRef, const MeshLimits& limits,
       for (unsigned k = 0; k < 3; ++k)
         if (face.mIndices[k] >= am->mNumVertices)
           fail(where, "face " + std::to_string(f) + " index out of range");
-      m.triangles.push_back(
-          {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
-      m.triangleMaterial.push_back(am->mMaterialIndex < m.materials.size() ? am->mMaterialIndex
-                                                                           : 0);
+      m.triangles.push_back({base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
+      m.triangleMaterial.push_back(am->mMaterialIndex < m.materials.size() ? am->mMaterialIndex : 0);
     }
     if (m.triangles.size() > limits.maxTriangles)
       fail(where, "more than " + std::to_string(limits.maxTriangles) + " triangles");
@@ -1186,7 +1212,6 @@ TriangleMesh meshFromAssimp(const aiScene& sceneRef, const MeshLimits& limits,
   }
   return m;
 }
-
 
 // Sets `importer` to drop points and lines; returns the post-processing every Assimp read here
 // uses (triangles, welded vertices, normals, one flat mesh list, validated).
@@ -1211,8 +1236,7 @@ TriangleMesh readGltf(const std::string& path, const MeshLimits& limits) {
     fail("", std::string("import failed: ") + e.what());
   }
   if (!scene) fail("", std::string("import failed: ") + importer.GetErrorString());
-  if (!scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    fail("", "incomplete scene");
+  if (!scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) fail("", "incomplete scene");
 
   const nlohmann::json* gltfMaterials =
       gltf.contains("materials") && gltf["materials"].is_array() ? &gltf["materials"] : nullptr;
@@ -1260,7 +1284,8 @@ TriangleMesh readWithAssimp(const std::string& path, const std::string& ext, con
   if (ext == ".3ds") turnZUp(1.0);
   if (ext == ".fbx") {
     const std::optional<double> cmPerUnit = metadataNumber(*scene, "UnitScaleFactor");
-    if (cmPerUnit && std::isfinite(*cmPerUnit) && *cmPerUnit > 0) info.metresPerUnit = *cmPerUnit / 100.0;
+    if (cmPerUnit && std::isfinite(*cmPerUnit) && *cmPerUnit > 0)
+      info.metresPerUnit = *cmPerUnit / 100.0;
     const std::optional<double> up = metadataNumber(*scene, "UpAxis");
     if (up && *up == 2.0) turnZUp(metadataNumber(*scene, "UpAxisSign").value_or(1.0) < 0 ? -1.0 : 1.0);
   }
@@ -1329,18 +1354,21 @@ Expected<TriangleMesh> loadMesh(const std::string& pathOrBuiltin, const MeshLimi
   if (ec) return Error{path, "", "cannot read: " + ec.message()};
   if (size == 0) return Error{path, "", "empty file"};
   if ((long long)size > limits.maxFileBytes)
-    return Error{path, "", "file of " + std::to_string(size) + " bytes exceeds the limit of " +
-                               std::to_string(limits.maxFileBytes) + " bytes"};
+    return Error{path, "",
+                 "file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                     std::to_string(limits.maxFileBytes) + " bytes"};
   const std::string ext = lowerExtension(path);
   try {
     TriangleMesh m;
     if (ext == ".obj") m = readObj(readWholeFile(path), path, limits);
     else if (ext == ".ply") m = readPly(readWholeFile(path), limits);
     else if (ext == ".gltf" || ext == ".glb") m = readGltf(path, limits);
-    else if (ext == ".fbx" || ext == ".dae" || ext == ".3ds") m = readWithAssimp(path, ext, limits, info);
+    else if (ext == ".fbx" || ext == ".dae" || ext == ".3ds")
+      m = readWithAssimp(path, ext, limits, info);
     else
-      return Error{path, "", "unsupported mesh format '" + ext +
-                                 "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)"};
+      return Error{path, "",
+                   "unsupported mesh format '" + ext +
+                       "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)"};
     if (ext == ".gltf" || ext == ".glb") info.metresPerUnit = 1.0;  // the glTF spec's unit
     info.format = ext == ".glb" ? "gltf" : ext.substr(1);
     validate(m, limits);

@@ -294,8 +294,7 @@ void checkSimplePolygon(const std::vector<Vec2>& p, const std::string& path) {
   if (collinear) fail(path, "outline has zero area (all points on one line)");
   const size_t n = p.size();
   for (size_t i = 0; i < n; ++i) {
-    if (p[i] == p[(i + 1) % n])
-      fail(child(path, (i + 1) % n), "repeats the previous point");
+    if (p[i] == p[(i + 1) % n]) fail(child(path, (i + 1) % n), "repeats the previous point");
   }
   for (size_t i = 0; i < n; ++i) {
     const Vec2 &a = p[i], &b = p[(i + 1) % n];
@@ -317,8 +316,7 @@ void checkSimplePolygon(const std::vector<Vec2>& p, const std::string& path) {
                        std::to_string(j) + " cross)");
     }
   }
-  if (std::fabs(signedArea(p)) <= 1e-12 * std::max(1.0, extent2))
-    fail(path, "outline has zero area");
+  if (std::fabs(signedArea(p)) <= 1e-12 * std::max(1.0, extent2)) fail(path, "outline has zero area");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -328,12 +326,10 @@ class Reader {
  public:
   Reader(std::string fileName, fs::path baseDir, const SceneLimits& limits,
          std::vector<std::string>& warnings)
-      : file_(std::move(fileName)), base_(std::move(baseDir)), limits_(limits),
-        warnings_(warnings) {}
+      : file_(std::move(fileName)), base_(std::move(baseDir)), limits_(limits), warnings_(warnings) {}
 
   // Warns about keys of `obj` outside `known`.
-  void knownKeys(const json& obj, const std::string& path,
-                 std::initializer_list<const char*> known) {
+  void knownKeys(const json& obj, const std::string& path, std::initializer_list<const char*> known) {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
       if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) ==
           known.end())
@@ -359,8 +355,9 @@ class Reader {
 
   SceneDoc read(const json& root) {
     object(root, "");
-    knownKeys(root, "", {"format", "version", "photo", "camera", "layout", "lights", "shafts",
-                         "surfaces", "occluders", "objects", "room", "render"});
+    knownKeys(root, "",
+              {"format", "version", "photo", "camera", "layout", "lights", "shafts", "surfaces",
+               "occluders", "objects", "room", "render"});
     SceneDoc doc;
     if (!root.contains("format")) fail("format", "missing (expected \"inlay-scene\")");
     if (string(root["format"], "format") != "inlay-scene")
@@ -403,8 +400,7 @@ class Reader {
         fail("objects", std::to_string(a.size()) + " objects exceed the limit of " +
                             std::to_string(limits_.maxObjects));
       array(a, "objects");
-      for (size_t i = 0; i < a.size(); ++i)
-        doc.objects.push_back(readObject(a[i], child("objects", i)));
+      for (size_t i = 0; i < a.size(); ++i) doc.objects.push_back(readObject(a[i], child("objects", i)));
     }
     if (root.contains("room")) readRoom(root["room"], doc.room);
     if (root.contains("render")) readRender(root["render"], doc.render);
@@ -415,8 +411,9 @@ class Reader {
   void readCamera(const json& j, CameraKeys& c) {
     const std::string p = "camera";
     object(j, p);
-    knownKeys(j, p, {"height_m", "focal_px", "principal_px", "vanishing_points_px",
-                     "vanishing_lines_px", "response"});
+    knownKeys(j, p,
+              {"height_m", "focal_px", "principal_px", "vanishing_points_px", "vanishing_lines_px",
+               "response"});
     if (j.contains("height_m")) c.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("focal_px")) c.focalPx = positive(j["focal_px"], child(p, "focal_px"));
     if (j.contains("principal_px")) c.principalPx = vec<2>(j["principal_px"], child(p, "principal_px"));
@@ -440,19 +437,24 @@ class Reader {
       if (v == "auto") r.mode = ResponseKeys::Mode::Auto;
       else if (v == "srgb") r.mode = ResponseKeys::Mode::Srgb;
       else if (v == "linear") r.mode = ResponseKeys::Mode::Linear;
-      else fail(p, "unknown response '" + v + "' (expected \"auto\", \"srgb\", \"linear\" or an object "
-                   "{\"family\": \"toe_shoulder\", \"power\", \"toe\", \"shoulder\"})");
+      else
+        fail(p, "unknown response '" + v +
+                    "' (expected \"auto\", \"srgb\", \"linear\" or an object "
+                    "{\"family\": \"toe_shoulder\", \"power\", \"toe\", \"shoulder\"})");
       return r;
     }
     if (!j.is_object())
       fail(p, std::string("expected \"auto\", \"srgb\", \"linear\" or an object, got ") + typeName(j));
     knownKeys(j, p, {"family", "power", "toe", "shoulder"});
-    if (!j.contains("family")) fail(child(p, "family"), "missing (\"toe_shoulder\", \"srgb\" or \"linear\")");
+    if (!j.contains("family"))
+      fail(child(p, "family"), "missing (\"toe_shoulder\", \"srgb\" or \"linear\")");
     const std::string family = string(j["family"], child(p, "family"));
     if (family == "srgb") r.mode = ResponseKeys::Mode::Srgb;
     else if (family == "linear") r.mode = ResponseKeys::Mode::Linear;
     else if (family == "toe_shoulder") r.mode = ResponseKeys::Mode::ToeShoulder;
-    else fail(child(p, "family"), "unknown family '" + family + "' (expected \"toe_shoulder\", \"srgb\" or \"linear\")");
+    else
+      fail(child(p, "family"),
+           "unknown family '" + family + "' (expected \"toe_shoulder\", \"srgb\" or \"linear\")");
     auto bounded = [&](const char* key, double lo, double hi, double fallback) {
       if (!j.contains(key)) return fallback;
       const double v = number(j[key], child(p, key));
@@ -530,8 +532,8 @@ class Reader {
       const std::string pp = child(p, "points");
       array(j["points"], pp, 0, limits_.maxPointsPerPolyline);
       if (j["points"].size() < 3)
-        fail(pp, "a light polygon needs at least 3 points (got " +
-                     std::to_string(j["points"].size()) + ")");
+        fail(pp,
+             "a light polygon needs at least 3 points (got " + std::to_string(j["points"].size()) + ")");
       l.pointsPx = polyline(j["points"], pp, 3, limits_);
       checkSimplePolygon(l.pointsPx, pp);
     } else if (kind == "rect_m") {
@@ -573,16 +575,14 @@ class Reader {
     knownKeys(j, p, {"shaft_box_px", "source_box_px", "direction"});
     ShaftKeys s;
     if (j.contains("shaft_box_px")) s.shaftBoxPx = box(j["shaft_box_px"], child(p, "shaft_box_px"));
-    if (j.contains("source_box_px"))
-      s.sourceBoxPx = box(j["source_box_px"], child(p, "source_box_px"));
+    if (j.contains("source_box_px")) s.sourceBoxPx = box(j["source_box_px"], child(p, "source_box_px"));
     if (j.contains("direction")) {
       s.direction = vec<3>(j["direction"], child(p, "direction"));
       if (!(s.direction->norm() > 0)) fail(child(p, "direction"), "must be a non-zero vector");
     }
     if ((!s.shaftBoxPx || !s.sourceBoxPx) && !s.direction)
       fail(child(p, "direction"), std::string("required when ") +
-                                      (s.shaftBoxPx ? "source_box_px" : "shaft_box_px") +
-                                      " is missing");
+                                      (s.shaftBoxPx ? "source_box_px" : "shaft_box_px") + " is missing");
     return s;
   }
 
@@ -668,11 +668,12 @@ class Reader {
     knownKeys(j, p, {"preset", "albedo", "roughness", "ior", "rgb"});
     MaterialKeys m;
     if (j.contains("preset")) m.preset = string(j["preset"], child(p, "preset"));
-    static const std::set<std::string> presets = {"diffuse", "glossy", "mirror", "glass", "emissive",
-                                                  "asset", "metal", "rough_glass"};
+    static const std::set<std::string> presets = {"diffuse",  "glossy", "mirror", "glass",
+                                                  "emissive", "asset",  "metal",  "rough_glass"};
     if (!presets.count(m.preset))
-      fail(child(p, "preset"), "unknown material preset '" + m.preset +
-                                   "' (expected diffuse, glossy, metal, mirror, glass, rough_glass, emissive or asset)");
+      fail(child(p, "preset"),
+           "unknown material preset '" + m.preset +
+               "' (expected diffuse, glossy, metal, mirror, glass, rough_glass, emissive or asset)");
     if (j.contains("albedo")) m.albedo = albedo(j["albedo"], child(p, "albedo"));
     if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
     if (j.contains("ior")) m.ior = indexOfRefraction(j["ior"], child(p, "ior"));
@@ -706,7 +707,8 @@ class Reader {
     RoomMaterialKeys m;
     if (j.contains("preset")) m.preset = string(j["preset"], child(p, "preset"));
     if (m.preset != "glossy" && m.preset != "mirror" && m.preset != "diffuse")
-      fail(child(p, "preset"), "unknown room material preset '" + m.preset + "' (expected glossy, mirror or diffuse)");
+      fail(child(p, "preset"),
+           "unknown room material preset '" + m.preset + "' (expected glossy, mirror or diffuse)");
     if (j.contains("roughness")) m.roughness = inUnitRange(j["roughness"], child(p, "roughness"));
     if (j.contains("ior")) m.ior = indexOfRefraction(j["ior"], child(p, "ior"));
     if (j.contains("reflectance")) m.reflectance = albedo(j["reflectance"], child(p, "reflectance"));
@@ -715,7 +717,8 @@ class Reader {
 
   ObjectKeys readObject(const json& j, const std::string& p) {
     object(j, p);
-    knownKeys(j, p, {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material", "name", "hidden"});
+    knownKeys(j, p,
+              {"mesh", "base_px", "height_m", "yaw_deg", "subdivide", "material", "name", "hidden"});
     ObjectKeys o;
     const std::string mp = child(p, "mesh");
     if (!j.contains("mesh")) fail(mp, "missing (builtin:sphere, builtin:cube or a mesh file)");
@@ -730,7 +733,8 @@ class Reader {
                      [](unsigned char c) { return char(std::tolower(c)); });
       const std::vector<std::string>& known = meshFileExtensions();
       if (std::find(known.begin(), known.end(), ext) == known.end())
-        fail(mp, "unsupported mesh format '" + ext + "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)");
+        fail(mp, "unsupported mesh format '" + ext +
+                     "' (expected .obj, .ply, .gltf, .glb, .fbx, .dae or .3ds)");
       o.meshResolved = resolve(o.mesh);
       std::error_code ec;
       if (!fs::is_regular_file(o.meshResolved, ec)) fail(mp, whyNotAFile(o.meshResolved));
@@ -768,7 +772,8 @@ class Reader {
       r.seconds = positive(j["seconds"], child(p, "seconds"));
     if (j.contains("noise")) {
       r.noise = number(j["noise"], child(p, "noise"));
-      if (!(r.noise >= 0 && r.noise < 1)) fail(child(p, "noise"), "must be in [0, 1) (sRGB standard error)");
+      if (!(r.noise >= 0 && r.noise < 1))
+        fail(child(p, "noise"), "must be in [0, 1) (sRGB standard error)");
     }
     if (j.contains("exposure")) {
       r.exposure = number(j["exposure"], child(p, "exposure"));
@@ -803,9 +808,9 @@ Expected<SceneLoadResult> parseSceneJson(const std::string& text, const std::str
                                          const SceneLimits& limits) {
   const std::string& file = fileNameForMessages;
   if (text.size() > limits.maxFileBytes)
-    return Error{file, "", "scene file of " + std::to_string(text.size()) +
-                               " bytes exceeds the limit of " +
-                               std::to_string(limits.maxFileBytes) + " bytes"};
+    return Error{file, "",
+                 "scene file of " + std::to_string(text.size()) + " bytes exceeds the limit of " +
+                     std::to_string(limits.maxFileBytes) + " bytes"};
   PathSax sax(std::max(1, limits.maxNesting));
   try {
     const bool ok = json::sax_parse(text, &sax, json::input_format_t::json, /*strict=*/true);
@@ -837,17 +842,16 @@ Expected<SceneLoadResult> loadSceneFile(const std::string& path, const SceneLimi
   const auto size = fs::file_size(path, ec);
   if (ec) return Error{path, "", "cannot read: " + ec.message()};
   if (size > limits.maxFileBytes)
-    return Error{path, "", "scene file of " + std::to_string(size) +
-                               " bytes exceeds the limit of " +
-                               std::to_string(limits.maxFileBytes) + " bytes"};
+    return Error{path, "",
+                 "scene file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                     std::to_string(limits.maxFileBytes) + " bytes"};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{path, "", "cannot open for reading"};
   std::ostringstream ss;
   ss << in.rdbuf();
   if (in.bad()) return Error{path, "", "read failed"};
   const fs::path abs = fs::absolute(path, ec);
-  return parseSceneJson(ss.str(), (ec ? fs::path(path) : abs).parent_path().string(), path,
-                        limits);
+  return parseSceneJson(ss.str(), (ec ? fs::path(path) : abs).parent_path().string(), path, limits);
 }
 
 namespace {
@@ -869,15 +873,17 @@ ojson cameraJson(const CameraKeys& c, bool anyLines) {
     for (size_t k = 0; k < 3; ++k) {
       if (!c.vanishingLinesPx[k]) continue;
       const auto& q = *c.vanishingLinesPx[k];
-      lines[kAxes[k]] = ojson::array({ojson::array({toJson(q[0]), toJson(q[1])}),
-                                      ojson::array({toJson(q[2]), toJson(q[3])})});
+      lines[kAxes[k]] = ojson::array(
+          {ojson::array({toJson(q[0]), toJson(q[1])}), ojson::array({toJson(q[2]), toJson(q[3])})});
     }
     cam["vanishing_lines_px"] = lines;
   }
   if (c.response.mode == ResponseKeys::Mode::Srgb) cam["response"] = "srgb";
   if (c.response.mode == ResponseKeys::Mode::Linear) cam["response"] = "linear";
   if (c.response.mode == ResponseKeys::Mode::ToeShoulder)
-    cam["response"] = {{"family", "toe_shoulder"}, {"power", c.response.power}, {"toe", c.response.toe},
+    cam["response"] = {{"family", "toe_shoulder"},
+                       {"power", c.response.power},
+                       {"toe", c.response.toe},
                        {"shoulder", c.response.shoulder}};
   return cam;
 }
@@ -897,9 +903,10 @@ ojson lightJson(const LightKeys& l) {
   o["refine"] = l.refine;
   if (l.lock) o["lock"] = true;
   if (l.refineSize) o["refine_size"] = true;
-  if (l.positionWeight != LightKeys{}.positionWeight || l.intensityWeight != LightKeys{}.intensityWeight ||
-      l.sizeWeight != LightKeys{}.sizeWeight)
-    o["weights"] = ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}, {"size", l.sizeWeight}};
+  if (l.positionWeight != LightKeys{}.positionWeight ||
+      l.intensityWeight != LightKeys{}.intensityWeight || l.sizeWeight != LightKeys{}.sizeWeight)
+    o["weights"] =
+        ojson{{"position", l.positionWeight}, {"intensity", l.intensityWeight}, {"size", l.sizeWeight}};
   return o;
 }
 
@@ -920,9 +927,9 @@ ojson surfaceJson(const SurfaceKeys& s) {
     return o;
   }
   if (s.kind == "stairs")
-    return ojson{{"kind", s.kind},         {"base_px", toJson(s.basePx)},
-                 {"steps", s.steps},       {"rise_m", s.riseM},
-                 {"run_m", s.runM},        {"width_m", s.widthM},
+    return ojson{{"kind", s.kind},           {"base_px", toJson(s.basePx)},
+                 {"steps", s.steps},         {"rise_m", s.riseM},
+                 {"run_m", s.runM},          {"width_m", s.widthM},
                  {"climb_axis", s.climbAxis}};
   ojson o{{"kind", s.kind},
           {"outline_px", toJson(s.outlinePx)},
@@ -940,8 +947,11 @@ ojson occluderJson(const OccluderKeys& o) {
 
 ojson objectJson(const ObjectKeys& o) {
   const MaterialKeys& m = o.material;
-  ojson mat{{"preset", m.preset},   {"albedo", toJson(m.albedo)}, {"roughness", m.roughness},
-            {"ior", m.ior},         {"rgb", toJson(m.rgb)}};
+  ojson mat{{"preset", m.preset},
+            {"albedo", toJson(m.albedo)},
+            {"roughness", m.roughness},
+            {"ior", m.ior},
+            {"rgb", toJson(m.rgb)}};
   ojson obj{{"mesh", o.mesh},
             {"base_px", toJson(o.basePx)},
             {"height_m", o.heightM},
@@ -999,7 +1009,9 @@ ojson buildJson(const SceneDoc& doc) {
   if (!doc.room.materials.empty()) {
     ojson mats = ojson::object();
     for (const auto& [name, m] : doc.room.materials)
-      mats[name] = ojson{{"preset", m.preset}, {"roughness", m.roughness}, {"ior", m.ior},
+      mats[name] = ojson{{"preset", m.preset},
+                         {"roughness", m.roughness},
+                         {"ior", m.ior},
                          {"reflectance", toJson(m.reflectance)}};
     j["room"] = ojson{{"materials", mats}};
   }

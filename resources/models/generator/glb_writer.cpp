@@ -23,7 +23,8 @@ struct Doc {
 
   int view(const void* data, size_t bytes, int target) {
     while (bin.size() % 4) bin.push_back('\0');
-    gltf["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}, {"target", target}});
+    gltf["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}, {"target", target}});
     bin.append(static_cast<const char*>(data), bytes);
     return int(gltf["bufferViews"].size()) - 1;
   }
@@ -46,7 +47,8 @@ json materialJson(const AssetMaterial& m, std::vector<std::string>& extensions) 
     out["emissiveFactor"] = {e.x(), e.y(), e.z()};
     if (strength > 1) {
       out["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", strength}};
-      if (std::find(extensions.begin(), extensions.end(), "KHR_materials_emissive_strength") == extensions.end())
+      if (std::find(extensions.begin(), extensions.end(), "KHR_materials_emissive_strength") ==
+          extensions.end())
         extensions.push_back("KHR_materials_emissive_strength");
     }
   }
@@ -77,20 +79,34 @@ json primitive(Doc& doc, const TriangleMesh& mesh, uint32_t material) {
   json attributes;
   attributes["POSITION"] =
       doc.accessor({{"bufferView", doc.view(pos.data(), pos.size() * sizeof(Vec3f), kArrayBuffer)},
-                    {"componentType", kFloat}, {"count", pos.size()}, {"type", "VEC3"},
-                    {"min", {lo.x(), lo.y(), lo.z()}}, {"max", {hi.x(), hi.y(), hi.z()}}});
-  attributes["NORMAL"] = doc.accessor({{"bufferView", doc.view(nrm.data(), nrm.size() * sizeof(Vec3f), kArrayBuffer)},
-                                       {"componentType", kFloat}, {"count", nrm.size()}, {"type", "VEC3"}});
-  attributes["TEXCOORD_0"] = doc.accessor({{"bufferView", doc.view(uv.data(), uv.size() * sizeof(Vec2f), kArrayBuffer)},
-                                           {"componentType", kFloat}, {"count", uv.size()}, {"type", "VEC2"}});
+                    {"componentType", kFloat},
+                    {"count", pos.size()},
+                    {"type", "VEC3"},
+                    {"min", {lo.x(), lo.y(), lo.z()}},
+                    {"max", {hi.x(), hi.y(), hi.z()}}});
+  attributes["NORMAL"] =
+      doc.accessor({{"bufferView", doc.view(nrm.data(), nrm.size() * sizeof(Vec3f), kArrayBuffer)},
+                    {"componentType", kFloat},
+                    {"count", nrm.size()},
+                    {"type", "VEC3"}});
+  attributes["TEXCOORD_0"] =
+      doc.accessor({{"bufferView", doc.view(uv.data(), uv.size() * sizeof(Vec2f), kArrayBuffer)},
+                    {"componentType", kFloat},
+                    {"count", uv.size()},
+                    {"type", "VEC2"}});
   int indices;
   if (pos.size() <= 65535) {
     const std::vector<uint16_t> small(idx.begin(), idx.end());
-    indices = doc.accessor({{"bufferView", doc.view(small.data(), small.size() * 2, kElementArrayBuffer)},
-                            {"componentType", kUshort}, {"count", small.size()}, {"type", "SCALAR"}});
+    indices =
+        doc.accessor({{"bufferView", doc.view(small.data(), small.size() * 2, kElementArrayBuffer)},
+                      {"componentType", kUshort},
+                      {"count", small.size()},
+                      {"type", "SCALAR"}});
   } else {
     indices = doc.accessor({{"bufferView", doc.view(idx.data(), idx.size() * 4, kElementArrayBuffer)},
-                            {"componentType", kUint}, {"count", idx.size()}, {"type", "SCALAR"}});
+                            {"componentType", kUint},
+                            {"count", idx.size()},
+                            {"type", "SCALAR"}});
   }
   return {{"attributes", attributes}, {"indices", indices}, {"material", material}, {"mode", 4}};
 }

@@ -64,7 +64,8 @@ bool parseArgs(int argc, char** argv, Args& a) {
     }
   }
   if (a.thumbnail.spp < 1 || a.thumbnail.sizePx < 16 || a.thumbnail.sizePx > 1024)
-    return std::fprintf(stderr, "inlay-make-library: --spp must be >= 1 and --size in [16, 1024]\n"), false;
+    return std::fprintf(stderr, "inlay-make-library: --spp must be >= 1 and --size in [16, 1024]\n"),
+           false;
   return true;
 }
 
@@ -77,7 +78,8 @@ std::string readBackProblem(const Piece& piece, const std::string& path) {
     return "loadMesh reads " + std::to_string(loaded->triangles.size()) + " triangles, " +
            std::to_string(piece.mesh.triangles.size()) + " written";
   const Eigen::AlignedBox3f a = loaded->bounds(), b = piece.mesh.bounds();
-  if ((a.min() - b.min()).cwiseAbs().maxCoeff() > 1e-5f || (a.max() - b.max()).cwiseAbs().maxCoeff() > 1e-5f)
+  if ((a.min() - b.min()).cwiseAbs().maxCoeff() > 1e-5f ||
+      (a.max() - b.max()).cwiseAbs().maxCoeff() > 1e-5f)
     return "loadMesh reads other bounds";
   // Assimp may add its default material after the file's.
   if (loaded->materials.size() < piece.mesh.materials.size()) return "loadMesh reads fewer materials";
@@ -86,7 +88,8 @@ std::string readBackProblem(const Piece& piece, const std::string& path) {
       return "loadMesh reads material " + std::to_string(m) + " as '" + loaded->materials[m].name + "'";
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
-  if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) return std::string("Assimp: ") + importer.GetErrorString();
+  if (!scene || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+    return std::string("Assimp: ") + importer.GetErrorString();
   size_t faces = 0;
   for (unsigned i = 0; i < scene->mNumMeshes; ++i) faces += scene->mMeshes[i]->mNumFaces;
   if (faces != piece.mesh.triangles.size()) return "Assimp reads " + std::to_string(faces) + " faces";
@@ -102,7 +105,8 @@ nlohmann::json entryOf(const Piece& p, uintmax_t bytes) {
           {"file", p.name + ".glb"},
           {"thumbnail", "thumbnails/" + p.name + ".png"},
           {"category", p.category},
-          {"dimensions_m", {{"width", roundMm(size.x())}, {"depth", roundMm(size.z())}, {"height", roundMm(size.y())}}},
+          {"dimensions_m",
+           {{"width", roundMm(size.x())}, {"depth", roundMm(size.z())}, {"height", roundMm(size.y())}}},
           {"material", p.materialNote},
           {"triangles", p.mesh.triangles.size()},
           {"bytes", bytes},
@@ -110,11 +114,12 @@ nlohmann::json entryOf(const Piece& p, uintmax_t bytes) {
 }
 
 int writeModels(const std::vector<Piece>& pieces, const Args& a) {
-  nlohmann::json index = {{"format", "inlay-model-library"},
-                          {"version", 1},
-                          {"units", "metres; y up; each piece stands on y = 0, centred, its front toward +z"},
-                          {"generator", "inlay-make-library (resources/models/generator)"},
-                          {"pieces", nlohmann::json::array()}};
+  nlohmann::json index = {
+      {"format", "inlay-model-library"},
+      {"version", 1},
+      {"units", "metres; y up; each piece stands on y = 0, centred, its front toward +z"},
+      {"generator", "inlay-make-library (resources/models/generator)"},
+      {"pieces", nlohmann::json::array()}};
   std::printf("%-14s %-22s %9s %8s\n", "piece", "w x d x h (m)", "triangles", "bytes");
   for (const Piece& p : pieces) {
     const std::string path = (fs::path(a.outDir) / (p.name + ".glb")).string();
@@ -125,10 +130,12 @@ int writeModels(const std::vector<Piece>& pieces, const Args& a) {
     const uintmax_t bytes = fs::file_size(path);
     index["pieces"].push_back(entryOf(p, bytes));
     const Eigen::Vector3f s = p.mesh.bounds().sizes();
-    std::printf("%-14s %5.3f x %5.3f x %5.3f %9zu %8ju\n", p.name.c_str(), s.x(), s.z(), s.y(), p.mesh.triangles.size(),
-                bytes);
+    std::printf("%-14s %5.3f x %5.3f x %5.3f %9zu %8ju\n", p.name.c_str(), s.x(), s.z(), s.y(),
+                p.mesh.triangles.size(), bytes);
   }
-  if (auto st = writeFileAtomically((fs::path(a.outDir) / "library.json").string(), index.dump(2) + "\n"); !st)
+  if (auto st =
+          writeFileAtomically((fs::path(a.outDir) / "library.json").string(), index.dump(2) + "\n");
+      !st)
     return std::fprintf(stderr, "inlay-make-library: %s\n", st.error().message().c_str()), 1;
   return 0;
 }
@@ -143,17 +150,23 @@ int writeThumbnails(const std::vector<Piece>& pieces, const Args& a) {
   for (const Piece& p : pieces) {
     const std::string glb = (fs::path(a.outDir) / (p.name + ".glb")).string();
     auto mesh = loadMesh(glb);
-    if (!mesh) return std::fprintf(stderr, "inlay-make-library: %s\n", mesh.error().message().c_str()), 1;
+    if (!mesh)
+      return std::fprintf(stderr, "inlay-make-library: %s\n", mesh.error().message().c_str()), 1;
     ThumbnailStats stats;
-    auto image = renderThumbnail(*room, *mesh, mesh->bounds().sizes().y(), p.thumbnailYawDeg, a.thumbnail, &stats);
-    if (!image) return std::fprintf(stderr, "inlay-make-library: %s: %s\n", p.name.c_str(), image.error().message().c_str()), 1;
+    auto image = renderThumbnail(*room, *mesh, mesh->bounds().sizes().y(), p.thumbnailYawDeg,
+                                 a.thumbnail, &stats);
+    if (!image)
+      return std::fprintf(stderr, "inlay-make-library: %s: %s\n", p.name.c_str(),
+                          image.error().message().c_str()),
+             1;
     if (stats.nonFiniteSamples > 0)
-      warnings.push_back(p.name + ": " + std::to_string(stats.nonFiniteSamples) + " non-finite samples dropped");
+      warnings.push_back(p.name + ": " + std::to_string(stats.nonFiniteSamples) +
+                         " non-finite samples dropped");
     const std::string png = (fs::path(a.outDir) / "thumbnails" / (p.name + ".png")).string();
     if (auto st = saveImage(png, *image); !st)
       return std::fprintf(stderr, "inlay-make-library: %s\n", st.error().message().c_str()), 1;
-    std::printf("%-14s thumbnail at (%.0f, %.0f) px, %.1f s\n", p.name.c_str(), stats.basePx.x(), stats.basePx.y(),
-                stats.seconds);
+    std::printf("%-14s thumbnail at (%.0f, %.0f) px, %.1f s\n", p.name.c_str(), stats.basePx.x(),
+                stats.basePx.y(), stats.seconds);
     thumbs.push_back(std::move(*image));
     titles.push_back(p.title);
   }

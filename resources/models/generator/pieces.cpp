@@ -19,8 +19,8 @@ using V2 = Eigen::Vector2f;
 constexpr float kDeg = 3.14159265358979f / 180.f;
 
 // A material in glTF metallic-roughness terms (base colour linear; emission = colour x strength).
-AssetMaterial material(const std::string& name, const Vec3& linearRgb, double roughness, double metallic = 0,
-                       const Vec3& emission = Vec3::Zero()) {
+AssetMaterial material(const std::string& name, const Vec3& linearRgb, double roughness,
+                       double metallic = 0, const Vec3& emission = Vec3::Zero()) {
   AssetMaterial m;
   m.name = name;
   m.baseColor = linearRgb;
@@ -37,7 +37,9 @@ AssetMaterial blackMetal() { return material("black_metal", {0.04, 0.04, 0.04}, 
 AssetMaterial brass() { return material("brass", {0.91, 0.72, 0.40}, 0.3, 1.0); }
 // A warm shade lit from inside: radiance 1.5 in red (what shows as white at exposure 0 is 1),
 // so the shade reads warm rather than clipped white, and lights the room around it.
-AssetMaterial glowingShade() { return material("lamp_shade", {0.9, 0.85, 0.75}, 0.9, 0, Vec3(1.5, 1.15, 0.75)); }
+AssetMaterial glowingShade() {
+  return material("lamp_shade", {0.9, 0.85, 0.75}, 0.9, 0, Vec3(1.5, 1.15, 0.75));
+}
 
 Affine at(float x, float y, float z) { return Affine(Eigen::Translation3f(x, y, z)); }
 Affine rotX(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::UnitX())); }
@@ -45,8 +47,10 @@ Affine rotX(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::Unit
 // Collects a piece's parts: each is checked to be closed and outward-wound before it joins.
 class PieceBuilder {
  public:
-  PieceBuilder(std::string name, std::string title, std::string category, std::string note, Vec3f nominal) {
-    piece_.name = std::move(name), piece_.title = std::move(title), piece_.category = std::move(category);
+  PieceBuilder(std::string name, std::string title, std::string category, std::string note,
+               Vec3f nominal) {
+    piece_.name = std::move(name), piece_.title = std::move(title),
+    piece_.category = std::move(category);
     piece_.materialNote = std::move(note), piece_.nominalSizeM = nominal;
   }
   // The material's index (added on first use, by name).
@@ -65,7 +69,8 @@ class PieceBuilder {
     mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
     mesh.normals.insert(mesh.normals.end(), part.normals.begin(), part.normals.end());
     mesh.uvs.insert(mesh.uvs.end(), part.uvs.begin(), part.uvs.end());
-    for (const auto& t : part.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    for (const auto& t : part.triangles)
+      mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
     mesh.triangleMaterial.resize(mesh.triangles.size(), mat);
   }
   Piece finish(float thumbnailYawDeg = 30) {
@@ -73,9 +78,9 @@ class PieceBuilder {
     const Eigen::AlignedBox3f b = piece_.mesh.bounds();
     const Vec3f size(b.sizes().x(), b.sizes().z(), b.sizes().y());
     if ((size - piece_.nominalSizeM).cwiseAbs().maxCoeff() > 0.01f || std::abs(b.min().y()) > 1e-4f)
-      throw std::runtime_error(piece_.name + ": built " + std::to_string(size.x()) + " x " + std::to_string(size.y()) +
-                               " x " + std::to_string(size.z()) + " m (min y " + std::to_string(b.min().y()) +
-                               "), not the nominal size");
+      throw std::runtime_error(piece_.name + ": built " + std::to_string(size.x()) + " x " +
+                               std::to_string(size.y()) + " x " + std::to_string(size.z()) +
+                               " m (min y " + std::to_string(b.min().y()) + "), not the nominal size");
     return std::move(piece_);
   }
 
@@ -85,11 +90,13 @@ class PieceBuilder {
 
 // A round leg from `bottom` up to `top` whose ends stay level (a sheared, not a rotated, rod):
 // a leaning leg stands flat on the floor.
-TriangleMesh leaningRod(const Vec3f& bottom, const Vec3f& top, float rBottom, float rTop, int sides = 12) {
+TriangleMesh leaningRod(const Vec3f& bottom, const Vec3f& top, float rBottom, float rTop,
+                        int sides = 12) {
   const float height = top.y() - bottom.y();
   Affine shear = Affine::Identity();
   shear.linear().col(1) = Vec3f((top.x() - bottom.x()) / height, 1.f, (top.z() - bottom.z()) / height);
-  return transformed(rod(Vec3f::Zero(), Vec3f(0, height, 0), rBottom, rTop, sides), at(bottom.x(), bottom.y(), bottom.z()) * shear);
+  return transformed(rod(Vec3f::Zero(), Vec3f(0, height, 0), rBottom, rTop, sides),
+                     at(bottom.x(), bottom.y(), bottom.z()) * shear);
 }
 
 TriangleMesh box(float w, float h, float d, float radius, const Affine& where, int segments = 2) {
@@ -97,7 +104,8 @@ TriangleMesh box(float w, float h, float d, float radius, const Affine& where, i
 }
 
 Piece chair() {
-  PieceBuilder b("chair", "Chair", "seating", "oak frame, blue-grey fabric seat pad", {0.46f, 0.49f, 0.88f});
+  PieceBuilder b("chair", "Chair", "seating", "oak frame, blue-grey fabric seat pad",
+                 {0.46f, 0.49f, 0.88f});
   const AssetMaterial fabric = material("fabric_blue_grey", {0.16, 0.20, 0.27}, 0.9);
   b.add(box(0.46f, 0.035f, 0.44f, 0.01f, at(0, 0.4325f, 0.02f)), oak(), "seat");
   b.add(box(0.42f, 0.05f, 0.40f, 0.02f, at(0, 0.47f, 0.03f), 3), fabric, "seat pad");
@@ -109,7 +117,8 @@ Piece chair() {
   }
   auto legZ = [](float y) { return -0.19f - 0.04f * y / 0.88f; };
   b.add(box(0.40f, 0.10f, 0.025f, 0.008f, at(0, 0.80f, legZ(0.80f)) * rotX(-2.6f)), oak(), "top rail");
-  b.add(box(0.40f, 0.045f, 0.022f, 0.007f, at(0, 0.58f, legZ(0.58f)) * rotX(-2.6f)), oak(), "lower rail");
+  b.add(box(0.40f, 0.045f, 0.022f, 0.007f, at(0, 0.58f, legZ(0.58f)) * rotX(-2.6f)), oak(),
+        "lower rail");
   for (float x : {-0.1f, 0.f, 0.1f})
     b.add(rod({x, 0.59f, legZ(0.59f)}, {x, 0.77f, legZ(0.77f)}, 0.009f, 0.009f, 10), oak(), "spindle");
   return b.finish();
@@ -126,7 +135,8 @@ void upholstered(PieceBuilder& b, const UpholsteredLayout& l, const AssetMateria
   for (float x : {-1.f, 1.f})
     for (float z : {-1.f, 1.f})
       b.add(rod({x * (0.5f * l.width - 0.06f), 0, z * (0.5f * l.depth - 0.06f)},
-                {x * (0.5f * l.width - 0.06f), l.legHeight + 0.02f, z * (0.5f * l.depth - 0.06f)}, 0.018f, 0.024f),
+                {x * (0.5f * l.width - 0.06f), l.legHeight + 0.02f, z * (0.5f * l.depth - 0.06f)},
+                0.018f, 0.024f),
             walnut(), "leg");
   b.add(box(l.width, 0.20f, l.depth, 0.03f, at(0, l.legHeight + 0.10f, 0), 3), fabric, "base");
   const float armTop = l.legHeight + 0.52f;
@@ -143,7 +153,8 @@ void upholstered(PieceBuilder& b, const UpholsteredLayout& l, const AssetMateria
   const float seatDepth = l.depth - backDepth - 0.03f;
   for (int i = 0; i < l.seats; ++i) {
     const float x = -0.5f * inner + (float(i) + 0.5f) * inner / float(l.seats);
-    b.add(box(cushionW, 0.15f, seatDepth, 0.05f, at(x, baseTop + 0.07f, 0.5f * l.depth - 0.5f * seatDepth - 0.005f), 3),
+    b.add(box(cushionW, 0.15f, seatDepth, 0.05f,
+              at(x, baseTop + 0.07f, 0.5f * l.depth - 0.5f * seatDepth - 0.005f), 3),
           fabric, "seat cushion");
     b.add(box(cushionW, 0.40f, 0.14f, 0.05f,
               at(x, baseTop + 0.14f + 0.19f, -0.5f * l.depth + backDepth + 0.05f) * rotX(-10.f), 3),
@@ -152,14 +163,17 @@ void upholstered(PieceBuilder& b, const UpholsteredLayout& l, const AssetMateria
 }
 
 Piece armchair() {
-  PieceBuilder b("armchair", "Armchair", "seating", "mustard wool upholstery, walnut legs", {0.80f, 0.82f, 0.85f});
-  upholstered(b, {0.80f, 0.82f, 0.85f, 0.12f, 0.14f, 1}, material("wool_mustard", {0.50, 0.30, 0.06}, 0.95));
+  PieceBuilder b("armchair", "Armchair", "seating", "mustard wool upholstery, walnut legs",
+                 {0.80f, 0.82f, 0.85f});
+  upholstered(b, {0.80f, 0.82f, 0.85f, 0.12f, 0.14f, 1},
+              material("wool_mustard", {0.50, 0.30, 0.06}, 0.95));
   return b.finish(25);
 }
 
 Piece sofa() {
   PieceBuilder b("sofa", "Sofa", "seating", "grey linen upholstery, walnut legs", {2.00f, 0.90f, 0.84f});
-  upholstered(b, {2.00f, 0.90f, 0.84f, 0.10f, 0.18f, 3}, material("linen_grey", {0.30, 0.30, 0.29}, 0.95));
+  upholstered(b, {2.00f, 0.90f, 0.84f, 0.10f, 0.18f, 3},
+              material("linen_grey", {0.30, 0.30, 0.29}, 0.95));
   return b.finish(20);
 }
 
@@ -169,23 +183,33 @@ Piece coffeeTable() {
   b.add(box(1.10f, 0.035f, 0.60f, 0.012f, at(0, 0.4025f, 0)), walnut(), "top");
   b.add(box(0.98f, 0.02f, 0.48f, 0.006f, at(0, 0.13f, 0)), walnut(), "shelf");
   for (float x : {-0.49f, 0.49f})
-    for (float z : {-0.24f, 0.24f}) b.add(rod({x, 0, z}, {x, 0.386f, z}, 0.014f, 0.016f), blackMetal(), "leg");
+    for (float z : {-0.24f, 0.24f})
+      b.add(rod({x, 0, z}, {x, 0.386f, z}, 0.014f, 0.016f), blackMetal(), "leg");
   return b.finish();
 }
 
 Piece diningTable() {
   PieceBuilder b("dining_table", "Dining table", "tables", "oiled oak", {1.60f, 0.90f, 0.75f});
   b.add(box(1.60f, 0.035f, 0.90f, 0.01f, at(0, 0.7325f, 0)), oak(), "top");
-  for (float z : {-0.36f, 0.36f}) b.add(box(1.38f, 0.08f, 0.022f, 0.004f, at(0, 0.675f, z)), oak(), "apron");
-  for (float x : {-0.71f, 0.71f}) b.add(box(0.022f, 0.08f, 0.66f, 0.004f, at(x, 0.675f, 0)), oak(), "apron");
+  for (float z : {-0.36f, 0.36f})
+    b.add(box(1.38f, 0.08f, 0.022f, 0.004f, at(0, 0.675f, z)), oak(), "apron");
+  for (float x : {-0.71f, 0.71f})
+    b.add(box(0.022f, 0.08f, 0.66f, 0.004f, at(x, 0.675f, 0)), oak(), "apron");
   for (float x : {-0.72f, 0.72f})
-    for (float z : {-0.37f, 0.37f}) b.add(box(0.065f, 0.716f, 0.065f, 0.006f, at(x, 0.358f, z)), oak(), "leg");
+    for (float z : {-0.37f, 0.37f})
+      b.add(box(0.065f, 0.716f, 0.065f, 0.006f, at(x, 0.358f, z)), oak(), "leg");
   return b.finish();
 }
 
 Piece stool() {
   PieceBuilder b("stool", "Stool", "seating", "oak, brass foot ring", {0.36f, 0.36f, 0.65f});
-  b.add(lathe({{0, 0.612f}, {0.165f, 0.612f}, {0.178f, 0.618f}, {0.18f, 0.632f}, {0.175f, 0.645f}, {0.16f, 0.65f}, {0, 0.65f}},
+  b.add(lathe({{0, 0.612f},
+               {0.165f, 0.612f},
+               {0.178f, 0.618f},
+               {0.18f, 0.632f},
+               {0.175f, 0.645f},
+               {0.16f, 0.65f},
+               {0, 0.65f}},
               48),
         oak(), "seat");
   const float bottomR = 0.165f, topR = 0.11f, ringY = 0.22f;
@@ -207,7 +231,8 @@ TriangleMesh shade(float bottomR, float topR, float y0, float y1, float wall) {
 Piece floorLamp() {
   PieceBuilder b("floor_lamp", "Floor lamp", "lighting", "brass stand, glowing linen shade (emissive)",
                  {0.40f, 0.40f, 1.60f});
-  b.add(lathe({{0, 0}, {0.14f, 0}, {0.145f, 0.008f}, {0.14f, 0.02f}, {0.05f, 0.03f}, {0, 0.03f}}, 48), brass(), "base");
+  b.add(lathe({{0, 0}, {0.14f, 0}, {0.145f, 0.008f}, {0.14f, 0.02f}, {0.05f, 0.03f}, {0, 0.03f}}, 48),
+        brass(), "base");
   b.add(rod({0, 0.02f, 0}, {0, 1.32f, 0}, 0.011f, 0.011f), brass(), "pole");
   b.add(shade(0.20f, 0.16f, 1.25f, 1.60f, 0.004f), glowingShade(), "shade");
   return b.finish(0);
@@ -217,8 +242,16 @@ Piece tableLamp() {
   PieceBuilder b("table_lamp", "Table lamp", "lighting", "teal glazed ceramic, glowing shade (emissive)",
                  {0.30f, 0.30f, 0.50f});
   const AssetMaterial ceramic = material("ceramic_teal", {0.04, 0.22, 0.24}, 0.2);
-  b.add(lathe({{0, 0}, {0.06f, 0}, {0.066f, 0.008f}, {0.088f, 0.07f}, {0.095f, 0.13f}, {0.085f, 0.19f}, {0.05f, 0.245f},
-               {0.022f, 0.27f}, {0.02f, 0.28f}, {0, 0.28f}},
+  b.add(lathe({{0, 0},
+               {0.06f, 0},
+               {0.066f, 0.008f},
+               {0.088f, 0.07f},
+               {0.095f, 0.13f},
+               {0.085f, 0.19f},
+               {0.05f, 0.245f},
+               {0.022f, 0.27f},
+               {0.02f, 0.28f},
+               {0, 0.28f}},
               40),
         ceramic, "base");
   b.add(rod({0, 0.275f, 0}, {0, 0.36f, 0}, 0.008f, 0.008f), brass(), "neck");
@@ -263,7 +296,8 @@ TriangleMesh leaf(const Vec3f& base, float yawDeg, float riseDeg, float length, 
   for (int i = 0; i <= n; ++i) {
     const float s = float(i) / float(n);
     const float angle = (riseDeg - 75.f * s) * kDeg;  // droops toward the tip
-    const float horizontal = length * s, vertical = length * (std::sin(riseDeg * kDeg) * s - 0.55f * s * s);
+    const float horizontal = length * s,
+                vertical = length * (std::sin(riseDeg * kDeg) * s - 0.55f * s * s);
     path.push_back(base + horizontal * std::cos(angle * 0.3f) * out + Vec3f(0, vertical, 0));
     up.push_back(Vec3f::UnitY());
     const float w = 0.5f * width * std::pow(std::sin(3.14159265f * s), 0.7f);
@@ -274,14 +308,22 @@ TriangleMesh leaf(const Vec3f& base, float yawDeg, float riseDeg, float length, 
 }
 
 Piece pottedPlant() {
-  PieceBuilder b("potted_plant", "Potted plant", "decor", "terracotta pot, green leaves", {0.74f, 0.73f, 0.86f});
+  PieceBuilder b("potted_plant", "Potted plant", "decor", "terracotta pot, green leaves",
+                 {0.74f, 0.73f, 0.86f});
   const AssetMaterial terracotta = material("terracotta", {0.45, 0.16, 0.08}, 0.85);
-  b.add(lathe({{0, 0}, {0.11f, 0}, {0.15f, 0.27f}, {0.165f, 0.28f}, {0.165f, 0.31f}, {0.15f, 0.31f}, {0.142f, 0.28f},
-               {0.104f, 0.012f}, {0, 0.012f}},
+  b.add(lathe({{0, 0},
+               {0.11f, 0},
+               {0.15f, 0.27f},
+               {0.165f, 0.28f},
+               {0.165f, 0.31f},
+               {0.15f, 0.31f},
+               {0.142f, 0.28f},
+               {0.104f, 0.012f},
+               {0, 0.012f}},
               40, 30.f),
         terracotta, "pot");
-  b.add(lathe({{0, 0.25f}, {0.142f, 0.25f}, {0.142f, 0.27f}, {0, 0.275f}}, 40), material("soil", {0.05, 0.035, 0.025}, 1.0),
-        "soil");
+  b.add(lathe({{0, 0.25f}, {0.142f, 0.25f}, {0.142f, 0.27f}, {0, 0.275f}}, 40),
+        material("soil", {0.05, 0.035, 0.025}, 1.0), "soil");
   const AssetMaterial leafGreen = material("leaf", {0.05, 0.20, 0.04}, 0.5);
   const AssetMaterial stemGreen = material("stem", {0.10, 0.18, 0.05}, 0.7);
   Lcg rng(17);
@@ -293,13 +335,15 @@ Piece pottedPlant() {
     const Vec3f foot(0.02f * std::cos(yaw * kDeg), 0.27f, 0.02f * std::sin(yaw * kDeg));
     const Vec3f tip(lean * std::cos(yaw * kDeg), tipHeight, lean * std::sin(yaw * kDeg));
     b.add(rod(foot, tip, 0.005f, 0.004f, 8), stemGreen, "stem");
-    b.add(leaf(tip, yaw, 40.f + 25.f * rng.next(), 0.26f + 0.08f * rng.next(), 0.11f + 0.04f * rng.next()), leafGreen,
-          "leaf");
+    b.add(
+        leaf(tip, yaw, 40.f + 25.f * rng.next(), 0.26f + 0.08f * rng.next(), 0.11f + 0.04f * rng.next()),
+        leafGreen, "leaf");
   }
   return b.finish(0);
 }
 
-void shelfOfBooks(PieceBuilder& b, Lcg& rng, float y, float width, const std::vector<AssetMaterial>& covers) {
+void shelfOfBooks(PieceBuilder& b, Lcg& rng, float y, float width,
+                  const std::vector<AssetMaterial>& covers) {
   float x = -0.5f * width + 0.01f;
   while (true) {
     const float w = 0.022f + 0.025f * rng.next();
@@ -319,14 +363,15 @@ Piece bookshelf() {
   PieceBuilder b("bookshelf", "Bookshelf", "storage", "white painted wood, books in five colours",
                  {0.80f, 0.30f, 1.80f});
   const AssetMaterial paint = material("white_paint", {0.78, 0.77, 0.74}, 0.6);
-  for (float x : {-0.39f, 0.39f}) b.add(box(0.02f, 1.80f, 0.30f, 0.003f, at(x, 0.90f, 0)), paint, "side");
+  for (float x : {-0.39f, 0.39f})
+    b.add(box(0.02f, 1.80f, 0.30f, 0.003f, at(x, 0.90f, 0)), paint, "side");
   b.add(box(0.76f, 0.02f, 0.30f, 0.003f, at(0, 1.79f, 0)), paint, "top");
   b.add(box(0.76f, 0.06f, 0.02f, 0.003f, at(0, 0.03f, 0.13f)), paint, "plinth");
   const std::vector<float> shelves = {0.07f, 0.42f, 0.77f, 1.12f, 1.45f};
   for (float y : shelves) b.add(box(0.76f, 0.02f, 0.28f, 0.003f, at(0, y, 0.005f)), paint, "shelf");
   b.add(box(0.76f, 1.76f, 0.008f, 0.002f, at(0, 0.90f, -0.146f)), paint, "back");
   const std::vector<AssetMaterial> covers = {
-      material("book_red", {0.40, 0.05, 0.04}, 0.6),   material("book_navy", {0.03, 0.05, 0.16}, 0.6),
+      material("book_red", {0.40, 0.05, 0.04}, 0.6), material("book_navy", {0.03, 0.05, 0.16}, 0.6),
       material("book_ochre", {0.55, 0.36, 0.08}, 0.6), material("book_green", {0.06, 0.18, 0.10}, 0.6),
       material("book_cream", {0.70, 0.64, 0.52}, 0.6)};
   Lcg rng(5);
@@ -336,12 +381,15 @@ Piece bookshelf() {
 }
 
 Piece rug() {
-  PieceBuilder b("rug", "Rug", "textiles", "terracotta wool field, cream border", {2.00f, 1.40f, 0.012f});
+  PieceBuilder b("rug", "Rug", "textiles", "terracotta wool field, cream border",
+                 {2.00f, 1.40f, 0.012f});
   const AssetMaterial field = material("wool_field", {0.35, 0.09, 0.06}, 1.0);
   const AssetMaterial border = material("wool_border", {0.62, 0.56, 0.45}, 1.0);
   b.add(box(1.80f, 0.012f, 1.20f, 0.003f, at(0, 0.006f, 0), 1), field, "field");
-  for (float z : {-0.65f, 0.65f}) b.add(box(2.00f, 0.012f, 0.10f, 0.004f, at(0, 0.006f, z), 1), border, "border");
-  for (float x : {-0.95f, 0.95f}) b.add(box(0.10f, 0.012f, 1.20f, 0.004f, at(x, 0.006f, 0), 1), border, "border");
+  for (float z : {-0.65f, 0.65f})
+    b.add(box(2.00f, 0.012f, 0.10f, 0.004f, at(0, 0.006f, z), 1), border, "border");
+  for (float x : {-0.95f, 0.95f})
+    b.add(box(0.10f, 0.012f, 1.20f, 0.004f, at(x, 0.006f, 0), 1), border, "border");
   return b.finish(0);
 }
 
@@ -355,9 +403,11 @@ std::string closedOutwardProblem(const TriangleMesh& part) {
   for (size_t i = 0; i < part.positions.size(); ++i) {
     const Vec3f& p = part.positions[i];
     if (!p.allFinite()) return "vertex " + std::to_string(i) + " is not finite";
-    const std::array<long, 3> key = {std::lround(p.x() * 1e6f), std::lround(p.y() * 1e6f), std::lround(p.z() * 1e6f)};
+    const std::array<long, 3> key = {std::lround(p.x() * 1e6f), std::lround(p.y() * 1e6f),
+                                     std::lround(p.z() * 1e6f)};
     auto it = welded.find(key);
-    if (it == welded.end()) it = welded.emplace(key, mesh.add_vertex(Mesh::Point(p.x(), p.y(), p.z()))).first;
+    if (it == welded.end())
+      it = welded.emplace(key, mesh.add_vertex(Mesh::Point(p.x(), p.y(), p.z()))).first;
     handle[i] = it->second;
   }
   // add_face explains a refusal on stderr; the refusal is reported below instead.
@@ -382,8 +432,8 @@ std::string closedOutwardProblem(const TriangleMesh& part) {
 }
 
 std::vector<Piece> buildLibrary() {
-  return {chair(), armchair(), sofa(), coffeeTable(), diningTable(), stool(), floorLamp(), tableLamp(), vase(),
-          pottedPlant(), bookshelf(), rug()};
+  return {chair(),     armchair(),  sofa(), coffeeTable(), diningTable(), stool(),
+          floorLamp(), tableLamp(), vase(), pottedPlant(), bookshelf(),   rug()};
 }
 
 }  // namespace inlay::library

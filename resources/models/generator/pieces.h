@@ -17,7 +17,7 @@ struct Piece {
   std::string materialNote;  // the default material, in words
   Vec3f nominalSizeM;        // the intended width x depth x height (x, z, y extents), metres
   float thumbnailYawDeg = 30;
-  TriangleMesh mesh;         // materials, triangleMaterial, normals and UVs filled
+  TriangleMesh mesh;  // materials, triangleMaterial, normals and UVs filled
 };
 
 // Every piece, in the library's order. Throws std::runtime_error naming the piece and part when

@@ -41,17 +41,20 @@ std::vector<float> roundedAxis(float half, float radius, int segments) {
   if (radius <= 0.f) return {-half, half};
   const float inner = half - radius;
   std::vector<float> c;
-  for (int k = segments; k >= 1; --k) c.push_back(-(inner + radius * std::tan(0.25f * kPi * float(k) / float(segments))));
+  for (int k = segments; k >= 1; --k)
+    c.push_back(-(inner + radius * std::tan(0.25f * kPi * float(k) / float(segments))));
   if (inner > 1e-6f) c.push_back(-inner);
   c.push_back(inner > 1e-6f ? inner : 0.f);
-  for (int k = 1; k <= segments; ++k) c.push_back(inner + radius * std::tan(0.25f * kPi * float(k) / float(segments)));
+  for (int k = 1; k <= segments; ++k)
+    c.push_back(inner + radius * std::tan(0.25f * kPi * float(k) / float(segments)));
   c.front() = -half, c.back() = half;  // exactly, so the edges of neighbouring faces weld
   return c;
 }
 
 // One face of a rounded box: the grid on the cube face whose outward axis is `axis` (sign
 // `sign`), each point pushed onto the rounded surface around the inner box.
-void roundedBoxFace(TriangleMesh& m, const Vec3f& half, float radius, int segments, int axis, float sign) {
+void roundedBoxFace(TriangleMesh& m, const Vec3f& half, float radius, int segments, int axis,
+                    float sign) {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const std::vector<float> cu = roundedAxis(half[u], radius, segments);
   const std::vector<float> cv = roundedAxis(half[v], radius, segments);
@@ -86,7 +89,8 @@ Eigen::Vector2f edgeNormal(const std::vector<Eigen::Vector2f>& profile, size_t e
 }
 // The normal (r, y) at `point` (an end of `edge`): smooth with the neighbouring edge, or the
 // edge's own at a crease.
-Eigen::Vector2f profileNormal(const std::vector<Eigen::Vector2f>& profile, size_t edge, size_t point, float creaseCos) {
+Eigen::Vector2f profileNormal(const std::vector<Eigen::Vector2f>& profile, size_t edge, size_t point,
+                              float creaseCos) {
   const Eigen::Vector2f own = edgeNormal(profile, edge);
   const size_t other = point == edge ? edge - 1 : edge + 1;  // the neighbouring edge at `point`
   if ((point == edge && edge == 0) || (point != edge && edge + 2 >= profile.size())) return own;
@@ -132,8 +136,8 @@ TriangleMesh lathe(const std::vector<Eigen::Vector2f>& profile, int sides, float
         const float phi = 2.f * kPi * float(k) / float(sides);
         const float geometric = 2.f * kPi * float(k % sides) / float(sides);  // the seam welds exactly
         const float c = std::cos(geometric), s = std::sin(geometric);
-        addVertex(m, Vec3f(pts[end].x() * c, pts[end].y(), pts[end].x() * s), Vec3f(n.x() * c, n.y(), n.x() * s),
-                  Vec2f(rMax * phi, v));
+        addVertex(m, Vec3f(pts[end].x() * c, pts[end].y(), pts[end].x() * s),
+                  Vec3f(n.x() * c, n.y(), n.x() * s), Vec2f(rMax * phi, v));
       }
     }
     for (uint32_t k = 0; k < uint32_t(sides); ++k) {

@@ -38,7 +38,8 @@ TriangleMesh torus(float majorM, float minorM, int ringSides = 32, int tubeSides
 // perpendicular to the path). A zero width at either end closes it to a point (a leaf's tip);
 // otherwise the end is capped flat.
 TriangleMesh sweep(const std::vector<Vec3f>& path, const std::vector<Vec3f>& up,
-                   const std::vector<float>& halfWidth, const std::vector<float>& halfThick, int sides = 10);
+                   const std::vector<float>& halfWidth, const std::vector<float>& halfThick,
+                   int sides = 10);
 
 // The mesh moved by `t` (normals by its inverse transpose; a mirroring transform flips the
 // winding so the mesh stays outward-wound).

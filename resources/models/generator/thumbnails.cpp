@@ -25,7 +25,8 @@ struct Square {
 
 // The photo-pixel box of the placed mesh's bounding box corners; false when a corner is behind
 // the camera.
-bool projectedBox(const Camera& camera, const TriangleMesh& mesh, const Mat4& worldFromObject, Eigen::AlignedBox2d* box) {
+bool projectedBox(const Camera& camera, const TriangleMesh& mesh, const Mat4& worldFromObject,
+                  Eigen::AlignedBox2d* box) {
   const Eigen::AlignedBox3f b = mesh.bounds();
   box->setEmpty();
   for (int c = 0; c < 8; ++c) {
@@ -40,8 +41,9 @@ bool projectedBox(const Camera& camera, const TriangleMesh& mesh, const Mat4& wo
 
 // The nearest floor point on the photo's middle column where the whole piece is in the photo
 // (4 px margin); the farthest valid one when none fits.
-Expected<Placement> nearestFittingPlacement(const PreparedScene& room, const TriangleMesh& mesh, double heightM,
-                                            double yawDeg, Eigen::AlignedBox2d* box, Vec2* basePx) {
+Expected<Placement> nearestFittingPlacement(const PreparedScene& room, const TriangleMesh& mesh,
+                                            double heightM, double yawDeg, Eigen::AlignedBox2d* box,
+                                            Vec2* basePx) {
   const Camera& cam = room.camera;
   const double margin = 4;
   std::optional<Placement> last;
@@ -65,7 +67,8 @@ Expected<Placement> nearestFittingPlacement(const PreparedScene& room, const Tri
 
 Square squareAround(const Eigen::AlignedBox2d& box, int widthPx, int heightPx) {
   Square s;
-  s.side = std::min<double>({std::max(24.0, 1.15 * box.sizes().maxCoeff()), double(widthPx), double(heightPx)});
+  s.side = std::min<double>(
+      {std::max(24.0, 1.15 * box.sizes().maxCoeff()), double(widthPx), double(heightPx)});
   const Vec2 c = box.center();
   s.x0 = std::clamp(c.x() - 0.5 * s.side, 0.0, widthPx - s.side);
   s.y0 = std::clamp(c.y() - 0.5 * s.side, 0.0, heightPx - s.side);
@@ -75,7 +78,8 @@ Square squareAround(const Eigen::AlignedBox2d& box, int widthPx, int heightPx) {
 // Bilinear sample of `image` at photo pixel position (x, y) (pixel centres at +0.5).
 Vec3 bilinear(const ImageF& image, double x, double y) {
   x = std::clamp(x - 0.5, 0.0, image.width - 1.0), y = std::clamp(y - 0.5, 0.0, image.height - 1.0);
-  const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, image.width - 1), y1 = std::min(y0 + 1, image.height - 1);
+  const int x0 = int(x), y0 = int(y), x1 = std::min(x0 + 1, image.width - 1),
+            y1 = std::min(y0 + 1, image.height - 1);
   const double fx = x - x0, fy = y - y0;
   return (1 - fy) * ((1 - fx) * image.rgb(x0, y0) + fx * image.rgb(x1, y0)) +
          fy * ((1 - fx) * image.rgb(x0, y1) + fx * image.rgb(x1, y1));
@@ -110,7 +114,8 @@ ImageF resampled(const ImageF& image, int size) {
 
 Expected<PreparedScene> prepareExampleRoom(std::vector<std::string>* warnings) {
   const std::string path = exampleScenePath();
-  if (path.empty()) return Error{"resources/example/scene.json", "", "the bundled example scene was not found"};
+  if (path.empty())
+    return Error{"resources/example/scene.json", "", "the bundled example scene was not found"};
   auto loaded = loadSceneFile(path);
   if (!loaded) return loaded.error();
   loaded->doc.objects.clear();
@@ -123,8 +128,8 @@ Expected<PreparedScene> prepareExampleRoom(std::vector<std::string>* warnings) {
   return prepared;
 }
 
-Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& mesh, double heightM, double yawDeg,
-                                 const ThumbnailOptions& options, ThumbnailStats* stats) {
+Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& mesh, double heightM,
+                                 double yawDeg, const ThumbnailOptions& options, ThumbnailStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   Eigen::AlignedBox2d box;
   Vec2 basePx;
@@ -166,8 +171,8 @@ Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& 
   return resampled(composite, options.sizePx);
 }
 
-ImageF contactSheet(const std::vector<ImageF>& thumbnails, const std::vector<std::string>& titles, int columns,
-                    std::vector<std::string>* warnings) {
+ImageF contactSheet(const std::vector<ImageF>& thumbnails, const std::vector<std::string>& titles,
+                    int columns, std::vector<std::string>* warnings) {
   INLAY_CHECK(!thumbnails.empty() && thumbnails.size() == titles.size() && columns > 0);
   const int tile = thumbnails.front().width, pad = 8, label = 22;
   const int rows = int((thumbnails.size() + size_t(columns) - 1) / size_t(columns));
@@ -177,10 +182,12 @@ ImageF contactSheet(const std::vector<ImageF>& thumbnails, const std::vector<std
   OIIO::ImageBufAlgo::fill(sheet, background);
   const std::string font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
   const bool haveFont = std::filesystem::exists(font);
-  if (!haveFont && warnings) warnings->push_back("contact sheet: " + font + " not found; titles left out");
+  if (!haveFont && warnings)
+    warnings->push_back("contact sheet: " + font + " not found; titles left out");
   const float ink[3] = {0.02f, 0.02f, 0.02f};
   for (size_t i = 0; i < thumbnails.size(); ++i) {
-    const int x = pad + int(i % size_t(columns)) * (tile + pad), y = pad + int(i / size_t(columns)) * (tile + label + pad);
+    const int x = pad + int(i % size_t(columns)) * (tile + pad),
+              y = pad + int(i / size_t(columns)) * (tile + label + pad);
     const ImageF& t = thumbnails[i];
     for (int v = 0; v < std::min(tile, t.height); ++v)
       for (int u = 0; u < std::min(tile, t.width); ++u) sheet.setpixel(x + u, y + v, t.pixel(u, v), 3);

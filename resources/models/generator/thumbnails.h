@@ -12,10 +12,10 @@
 namespace inlay::library {
 
 struct ThumbnailOptions {
-  int sizePx = 160;     // square thumbnail side
-  int spp = 64;         // samples per rendered pixel
+  int sizePx = 160;  // square thumbnail side
+  int spp = 64;      // samples per rendered pixel
   uint32_t seed = 1;
-  int maxUpscale = 3;   // at most this many rendered pixels per photo pixel (each axis)
+  int maxUpscale = 3;  // at most this many rendered pixels per photo pixel (each axis)
 };
 
 struct ThumbnailStats {
@@ -30,12 +30,13 @@ Expected<PreparedScene> prepareExampleRoom(std::vector<std::string>* warnings);
 
 // The thumbnail (sizePx x sizePx, linear RGB, exposure applied) of `mesh` standing `heightM`
 // tall, turned `yawDeg`, in `room`. Errors name the piece.
-Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& mesh, double heightM, double yawDeg,
-                                 const ThumbnailOptions& options, ThumbnailStats* stats = nullptr);
+Expected<ImageF> renderThumbnail(const PreparedScene& room, const TriangleMesh& mesh, double heightM,
+                                 double yawDeg, const ThumbnailOptions& options,
+                                 ThumbnailStats* stats = nullptr);
 
 // The thumbnails in a grid of `columns`, each with its title under it (DejaVu Sans when the font
 // is installed; without it the titles are left out and `warnings` says so). Linear RGB.
-ImageF contactSheet(const std::vector<ImageF>& thumbnails, const std::vector<std::string>& titles, int columns,
-                    std::vector<std::string>* warnings);
+ImageF contactSheet(const std::vector<ImageF>& thumbnails, const std::vector<std::string>& titles,
+                    int columns, std::vector<std::string>* warnings);
 
 }  // namespace inlay::library

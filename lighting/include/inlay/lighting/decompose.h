@@ -42,11 +42,11 @@ ImageF retinexReflectance(const ImageF& linearRgb, const std::vector<uint8_t>& v
                           const RetinexOptions& options = {});
 
 struct DecomposeOptions {
-  double g1 = 0.2;   // weight of the masked smoothness of rho
-  double g2 = 0.9;   // weight of (D - D0)^2
-  double g3 = 0.1;   // weight of |grad D|^2
-  double s = 10;     // mask steepness
-  double c = 0.15;   // mask threshold on |grad B|^2, B in the photo's linear units (white 1)
+  double g1 = 0.2;  // weight of the masked smoothness of rho
+  double g2 = 0.9;  // weight of (D - D0)^2
+  double g3 = 0.1;  // weight of |grad D|^2
+  double s = 10;    // mask steepness
+  double c = 0.15;  // mask threshold on |grad B|^2, B in the photo's linear units (white 1)
   // Units of B and Gamma in the objective: the L1 term is scale-free in rho, the quadratic ones
   // grow with the square of the photo's units, so the units set how much the prior may
   // override the data. With `unitsFromNoise`, B is counted in standard deviations of the
@@ -100,7 +100,7 @@ struct Decomposition {
   std::vector<DecomposeSample> history;
   int iterations = 0;
   bool converged = false;  // false: stopped at the iteration cap, by cancellation or NaN
-  std::string report;  // one line: converged or why it stopped, with the residuals reached
+  std::string report;      // one line: converged or why it stopped, with the residuals reached
   double seconds = 0;
 };
 

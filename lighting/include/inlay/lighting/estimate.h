@@ -33,14 +33,14 @@ struct LightingOptions {
   // relative standard error per gathered pixel is about gatherNoise.
   int gatherSamples = 0;
   double gatherNoise = 0.05;
-  int gatherStride = 4;         // gather on every n-th pixel, interpolate between
+  int gatherStride = 4;  // gather on every n-th pixel, interpolate between
   // What the photo does not show radiates its albedo times the light gathered at its patch:
   // patches about room size / patchesAcrossRoom wide, patchSamples rays each, patchSweeps
   // radiosity sweeps (gather.h, SurfacePatches).
   double patchesAcrossRoom = 20;
   int patchSamples = 64;
   int patchSweeps = 3;
-  int directSamples = 16;       // points per light for E_j
+  int directSamples = 16;  // points per light for E_j
   // The fit and the gathered light depend on each other through what the camera does not see
   // (its radiance is predicted from the fitted albedo and lights). The first pass guesses it
   // from the mean of what the camera sees; later passes predict it from the previous fit, each
@@ -52,8 +52,8 @@ struct LightingOptions {
   int maxPasses = 5;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
-  int fitPixels = 6000;         // pixels sampled for the fit
-  double saturatedAbove = 0.98; // linear value treated as clipped
+  int fitPixels = 6000;          // pixels sampled for the fit
+  double saturatedAbove = 0.98;  // linear value treated as clipped
   // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
   // the model (a light or opening it lacks, wrong geometry): its albedo comes from the photo's
   // Retinex and the decomposition's data terms leave it out.
@@ -72,8 +72,8 @@ struct LightingOptions {
 };
 
 struct LightingEstimate {
-  ImageF albedo;        // W x H x 3, reflectance in [0,1] (the decomposition's)
-  ImageF retinexAlbedo; // W x H x 3, colour Retinex scaled per channel to the fitted lights
+  ImageF albedo;          // W x H x 3, reflectance in [0,1] (the decomposition's)
+  ImageF retinexAlbedo;   // W x H x 3, colour Retinex scaled per channel to the fitted lights
   ImageF physicalAlbedo;  // W x H x 3, B / (sum L_j E_j + Gamma) per pixel (the light fit's)
   // The decomposition's inputs besides the photo and `gathered` (to re-run it with other
   // options): its start rho0 (W x H x 3) and masks (W x H: data terms apply / B is clipped).
@@ -82,13 +82,13 @@ struct LightingEstimate {
   std::vector<DecomposeSample> decomposeHistory;  // objective and residuals against time
   std::string decomposeReport;                    // converged, or why the solver stopped
   bool decomposeConverged = true;                 // false: stopped at its iteration cap
-  ImageF gathered;      // Gamma: W x H x 3, indirect irradiance / pi
-  ImageF direct;        // D = B - rho * Gamma: W x H x 3, >= 0
-  std::vector<AreaLight> lights;      // with fitted radiance
-  std::vector<SunLight> suns;         // with fitted strength
-  std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
+  ImageF gathered;                                // Gamma: W x H x 3, indirect irradiance / pi
+  ImageF direct;                                  // D = B - rho * Gamma: W x H x 3, >= 0
+  std::vector<AreaLight> lights;                  // with fitted radiance
+  std::vector<SunLight> suns;                     // with fitted strength
+  std::vector<Vec3> surfaceMeanAlbedo;            // per surface id of the geometry
   std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
-  double fitRmsLog = 0;  // robust fit residual (log space)
+  double fitRmsLog = 0;                   // robust fit residual (log space)
   // How much of the photo the fitted model leaves unexplained, free of the photo's scale and
   // gamma: over the fit's pixels and channels, the median |log(B / (rho_s (sum L_j E_j +
   // Gamma)))| (rho_s the fit's albedo of the pixel's surface) over the median |log B - median
@@ -101,8 +101,8 @@ struct LightingEstimate {
   // absolute deviations, v on a 0.01 grid in [0, 0.6]); and the residual with v over without.
   double vignetting = 0;
   double vignettingResidualRatio = 1;
-  int gatherSamples = 0; // rays per gathered pixel used
-  int passes = 0;        // gather-and-fit passes run (LightingOptions::maxPasses)
+  int gatherSamples = 0;  // rays per gathered pixel used
+  int passes = 0;         // gather-and-fit passes run (LightingOptions::maxPasses)
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
@@ -133,8 +133,7 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
 Expected<LightingEstimate> estimateLighting(const ImageF& photoLinear, const Camera& camera,
                                             const SceneGeometry& geometry,
                                             const std::vector<AreaLight>& lights,
-                                            const std::vector<bool>& refine,
-                                            const ImageF& lightMaskPx,
+                                            const std::vector<bool>& refine, const ImageF& lightMaskPx,
                                             const std::vector<SunLight>& suns = {},
                                             const LightingOptions& options = {});
 

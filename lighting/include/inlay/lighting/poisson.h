@@ -9,8 +9,8 @@
 namespace inlay {
 
 struct PoissonReport {
-  int cycles = 0;                 // multigrid V-cycles run
-  double relativeResidual = 0;    // |f - L u| / |f| (RMS) at the end
+  int cycles = 0;               // multigrid V-cycles run
+  double relativeResidual = 0;  // |f - L u| / |f| (RMS) at the end
 };
 
 // Exact solve by a DCT-II (cv::dct). Odd sizes are padded by one zero-divergence row/column,

@@ -38,9 +38,9 @@ namespace inlay {
 
 // Per area light: what the user fixed. Defaults are the weights.
 struct LightRefineSpec {
-  bool lock = false;            // keep position and intensity as they come in
-  double positionWeight = 10;   // w of the position prior (normalised room units)
-  double intensityWeight = 1;   // w of the intensity prior (normalised intensity)
+  bool lock = false;           // keep position and intensity as they come in
+  double positionWeight = 10;  // w of the position prior (normalised room units)
+  double intensityWeight = 1;  // w of the intensity prior (normalised intensity)
   // Also fit the light's two edge lengths (each scaled by a factor within
   // [1 / sizeRange, sizeRange] of LightRefineOptions), pulled toward the start by
   // sizeWeight |log factor|^2. Off by default: an outline drawn on the photo gives the size.
@@ -49,15 +49,15 @@ struct LightRefineSpec {
 };
 
 struct LightRefineOptions {
-  int gridPixels = 3000;       // the render's reduced resolution: at most about this many pixels
-  int samplesPerLight = 9;     // fixed stratified points per light and pixel
-  int maxIterations = 25;      // Ceres trust-region iterations
-  double maxSeconds = 10;      // wall-clock limit of the solve
-  double prior = 2e-3;         // scale of the priors against the relative data term
-  double intensityRange = 8;   // normalised intensity 1 = this many times the start's largest channel
+  int gridPixels = 3000;         // the render's reduced resolution: at most about this many pixels
+  int samplesPerLight = 9;       // fixed stratified points per light and pixel
+  int maxIterations = 25;        // Ceres trust-region iterations
+  double maxSeconds = 10;        // wall-clock limit of the solve
+  double prior = 2e-3;           // scale of the priors against the relative data term
+  double intensityRange = 8;     // normalised intensity 1 = this many times the start's largest channel
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
-  double marginM = 1e-3;       // lights keep this far inside the room's walls
-  double sizeRange = 2;        // a refined size stays within [1/sizeRange, sizeRange] of the start
+  double marginM = 1e-3;         // lights keep this far inside the room's walls
+  double sizeRange = 2;          // a refined size stays within [1/sizeRange, sizeRange] of the start
   uint32_t seed = 11;
   // Suns: with refineSuns their strengths (RGB irradianceOverPi) are unknowns solved with the
   // area lights' intensities, pulled toward the start with sunIntensityWeight (directions and
@@ -88,11 +88,11 @@ struct LightRefineResult {
   double finalObjective = 0;
   double initialDataTerm = 0, finalDataTerm = 0;  // the relative data term alone
   std::vector<LightRefineSample> history;
-  int pixels = 0;                 // grid pixels that took part
-  int evaluations = 0;            // direct-light renders of one light
+  int pixels = 0;       // grid pixels that took part
+  int evaluations = 0;  // direct-light renders of one light
   double seconds = 0;
-  std::string report;             // why the solver stopped
-  std::vector<std::string> notes; // lights moved into the room, lights that light nothing, ...
+  std::string report;              // why the solver stopped
+  std::vector<std::string> notes;  // lights moved into the room, lights that light nothing, ...
 };
 
 // How many times refineLights has run in this process (all threads): tests use it to show that

@@ -18,12 +18,12 @@
 namespace inlay {
 
 struct ShaftEstimate {
-  SunLight sun;              // strength (irradianceOverPi) not yet fitted: (1, 1, 1)
-  ImageF litMaskPx;          // = sun.litMask: W x H x 1 soft mask of the lit patch (or window)
+  SunLight sun;      // strength (irradianceOverPi) not yet fitted: (1, 1, 1)
+  ImageF litMaskPx;  // = sun.litMask: W x H x 1 soft mask of the lit patch (or window)
   Vec3 patchCentroidWorld{0, 0, 0};
   Vec3 sourceCentroidWorld{0, 0, 0};
   bool directionGiven = false;
-  double contrast = 0;       // mean lit / mean unlit luminance inside the patch box
+  double contrast = 0;  // mean lit / mean unlit luminance inside the patch box
   int litPixels = 0;
 };
 

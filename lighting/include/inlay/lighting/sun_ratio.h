@@ -44,8 +44,10 @@ struct SunRatioResult {
 // Errors (key "suns"): mismatched images, too few lit or shadowed pixels, a channel whose lit
 // pixels are all clipped.
 Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photoLinear, const Camera& camera,
-                                                    const SceneGeometry& geometry, const ImageF& gathered,
-                                                    const std::vector<AreaLight>& lights, const SunLight& sun,
+                                                    const SceneGeometry& geometry,
+                                                    const ImageF& gathered,
+                                                    const std::vector<AreaLight>& lights,
+                                                    const SunLight& sun,
                                                     const SunRatioOptions& options = {});
 
 }  // namespace inlay

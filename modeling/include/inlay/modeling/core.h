@@ -17,8 +17,8 @@
 
 namespace inlay {
 
-using Vec2 = Eigen::Vector2d;   // pixel positions unless the name says otherwise
-using Vec3 = Eigen::Vector3d;   // world positions/directions in metres unless named otherwise
+using Vec2 = Eigen::Vector2d;  // pixel positions unless the name says otherwise
+using Vec3 = Eigen::Vector3d;  // world positions/directions in metres unless named otherwise
 using Vec4 = Eigen::Vector4d;
 using Mat3 = Eigen::Matrix3d;
 using Mat4 = Eigen::Matrix4d;
@@ -26,13 +26,12 @@ using Vec3f = Eigen::Vector3f;
 using Vec2f = Eigen::Vector2f;
 
 // A bug (a broken invariant, never bad input): print the condition and where, then abort.
-#define INLAY_CHECK(cond)                                                                  \
-  do {                                                                                     \
-    if (!(cond)) {                                                                         \
-      std::fprintf(stderr, "inlay: internal check failed: %s at %s:%d\n", #cond, __FILE__, \
-                   __LINE__);                                                              \
-      std::abort();                                                                        \
-    }                                                                                      \
+#define INLAY_CHECK(cond)                                                                             \
+  do {                                                                                                \
+    if (!(cond)) {                                                                                    \
+      std::fprintf(stderr, "inlay: internal check failed: %s at %s:%d\n", #cond, __FILE__, __LINE__); \
+      std::abort();                                                                                   \
+    }                                                                                                 \
   } while (0)
 
 // Bad input: which file, which key (a JSON pointer-like path such as "objects[2].height_m",
@@ -124,8 +123,7 @@ class CancelToken {
                                             std::chrono::duration<double>(seconds)))
                             .time_since_epoch()
                             .count());
-    else
-      deadlineNs_.store(0);
+    else deadlineNs_.store(0);
   }
   bool shouldStop() const {
     if (cancelled()) return true;

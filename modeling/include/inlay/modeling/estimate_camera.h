@@ -45,17 +45,17 @@ struct PhotoEdges;  // the photo's gradient at the layout's scale (layout.h)
 // What is known about one vanishing point.
 struct VanishingPointInfo {
   Vec3 homogeneousPx{0, 0, 1};      // unit norm (x, y, w); w ~ 0 at infinity
-  Vec3 directionCamera{0, 0, -1};    // the world axis in the camera frame (OpenGL), unit
-  bool atInfinity = false;           // farther than 1000 image diagonals from the centre
-  std::vector<int> segmentIndices;   // its supporting segments: indices into CameraEstimate::
-                                     // segments (their residualPx are the residuals)
-  int segmentCount = 0;              // supporting segments (detected and user-given)
-  double supportLengthPx = 0;        // their total length
-  double rmsResidualPx = 0;          // root-mean-square endpoint residual of the supporters
-  double angularSigmaDeg = 180;      // 1-sigma uncertainty of the direction from its own lines
-  double confidence = 0;             // in [0, 1]: support beyond chance (a contrario, -log10 of
-                                     // the expected false alarms) times precision of direction
-  bool nearlyParallel = false;       // its lines are nearly parallel in the photo
+  Vec3 directionCamera{0, 0, -1};   // the world axis in the camera frame (OpenGL), unit
+  bool atInfinity = false;          // farther than 1000 image diagonals from the centre
+  std::vector<int> segmentIndices;  // its supporting segments: indices into CameraEstimate::
+                                    // segments (their residualPx are the residuals)
+  int segmentCount = 0;             // supporting segments (detected and user-given)
+  double supportLengthPx = 0;       // their total length
+  double rmsResidualPx = 0;         // root-mean-square endpoint residual of the supporters
+  double angularSigmaDeg = 180;     // 1-sigma uncertainty of the direction from its own lines
+  double confidence = 0;            // in [0, 1]: support beyond chance (a contrario, -log10 of
+                                    // the expected false alarms) times precision of direction
+  bool nearlyParallel = false;      // its lines are nearly parallel in the photo
 };
 
 struct EstimateTimings {
@@ -77,14 +77,14 @@ struct SearchProgress {
 // no Manhattan structure it is the fallback (prior focal length, level or vertical-aligned
 // rotation) and `manhattan` is false, the confidences are low and `warnings` say why.
 struct CameraEstimate {
-  Camera camera;                                 // principal point: see principalSigma
-  std::array<Vec2, 3> vanishingPointsPx;         // x, y, z: scene file form (huge when at infinity)
+  Camera camera;                          // principal point: see principalSigma
+  std::array<Vec2, 3> vanishingPointsPx;  // x, y, z: scene file form (huge when at infinity)
   std::array<VanishingPointInfo, 3> vanishingPoints;
-  std::array<double, 3> confidence{0, 0, 0};     // = vanishingPoints[i].confidence
-  double overallConfidence = 0;                  // in [0, 1]: how far to trust camera rotation
-  bool manhattan = false;                        // false: fallback camera, not measured
-  double focalMinPx = 0, focalMaxPx = 0;         // about 95% interval (prior included)
-  bool focalFromPrior = false;                   // the photo did not determine the focal length
+  std::array<double, 3> confidence{0, 0, 0};  // = vanishingPoints[i].confidence
+  double overallConfidence = 0;               // in [0, 1]: how far to trust camera rotation
+  bool manhattan = false;                     // false: fallback camera, not measured
+  double focalMinPx = 0, focalMaxPx = 0;      // about 95% interval (prior included)
+  bool focalFromPrior = false;                // the photo did not determine the focal length
   // The principal point's 1-sigma per photo axis (px, posterior of the joint fit, prior
   // included) and whether the lines located it: false when in its least determined direction
   // the lines carry less information than the prior (a vanishing point near infinity, a
@@ -92,13 +92,13 @@ struct CameraEstimate {
   // EstimateOptions::principalSigma = 0) the sigma is 0 and principalFromPrior true.
   Vec2 principalSigmaPx{0, 0};
   bool principalFromPrior = true;
-  std::array<Vec2, 4> backWallPx;                // TL, TR, BR, BL; may lie outside the photo
-  double layoutScore = 0;                        // in [0, 1]: share of the box the photo supports
-  std::vector<LineSegment> segments;             // photo pixels, with families and residuals
-  std::vector<std::string> warnings;             // plain sentences (English, not translated)
+  std::array<Vec2, 4> backWallPx;     // TL, TR, BR, BL; may lie outside the photo
+  double layoutScore = 0;             // in [0, 1]: share of the box the photo supports
+  std::vector<LineSegment> segments;  // photo pixels, with families and residuals
+  std::vector<std::string> warnings;  // plain sentences (English, not translated)
   EstimateTimings timings;
   std::vector<SearchProgress> progress;
-  double workingScale = 1;                       // working image size / photo size
+  double workingScale = 1;  // working image size / photo size
   // Opaque, shared between copies: the photo's brightness gradient at the layout's scale (at
   // most 400 px, about 1 MB), so correctEstimate re-searches the box with the same evidence
   // without the photo. Null for estimateCameraFromSegments.
@@ -146,7 +146,7 @@ struct EstimateOptions {
   // height, a ceiling the photo shows more than 3 camera heights up); a warning says what was
   // refused and what replaced it. Off: the best-supported box, whatever it is (a diagnosis).
   bool refuseImplausibleBox = true;
-  uint32_t seed = 1;            // hypothesis sampling; same seed, same result
+  uint32_t seed = 1;                    // hypothesis sampling; same seed, same result
   const CancelToken* cancel = nullptr;  // polled between stages and inside the loops
 };
 

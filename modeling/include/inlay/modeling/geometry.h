@@ -24,10 +24,10 @@ namespace inlay {
 enum class SurfaceKind {
   Floor,
   Ceiling,
-  WallLeft,    // x = xLeftM, facing +x
-  WallRight,   // x = xRightM, facing -x
-  WallBack,    // z = zBackM (the wall the camera looks at), facing +z
-  WallRear,    // z = zRearM (behind the camera), facing -z
+  WallLeft,   // x = xLeftM, facing +x
+  WallRight,  // x = xRightM, facing -x
+  WallBack,   // z = zBackM (the wall the camera looks at), facing +z
+  WallRear,   // z = zRearM (behind the camera), facing -z
   ExtrusionTop,
   ExtrusionSide,
   OccluderCard,
@@ -62,10 +62,10 @@ struct CardAlpha {
 
 struct Surface {
   SurfaceKind kind = SurfaceKind::Floor;
-  std::string name;          // "floor", "wall_left", "table_1_top", ...
-  TriangleMesh meshWorld;    // world metres, normals facing into the room / up for tops
+  std::string name;              // "floor", "wall_left", "table_1_top", ...
+  TriangleMesh meshWorld;        // world metres, normals facing into the room / up for tops
   bool supportsObjects = false;  // objects may stand on it (floor, tops)
-  int groupIndex = -1;       // index of the extrusion / occluder it belongs to, -1 for the box
+  int groupIndex = -1;           // index of the extrusion / occluder it belongs to, -1 for the box
   // OccluderCard only: its matte. A ray crossing the card at p is stopped with probability
   // cardAlpha->alphaAt(p) and passes otherwise (a stochastic alpha test in the renderer).
   std::shared_ptr<const CardAlpha> cardAlpha;
@@ -73,9 +73,9 @@ struct Surface {
 
 struct SurfaceHit {
   int surfaceId = -1;
-  double t = 0;              // ray parameter, metres
+  double t = 0;  // ray parameter, metres
   Vec3 pointWorld;
-  Vec3 normalWorld;          // geometric normal facing the ray's origin side
+  Vec3 normalWorld;  // geometric normal facing the ray's origin side
 };
 
 struct SceneGeometry {
@@ -138,7 +138,7 @@ SolidSummary summarizeSolid(const SolidMesh& solid);
 struct Extrusion {
   std::vector<Vec3> topOutlineWorld;  // counter-clockwise seen from above, at y = heightM
   double heightM = 0;
-  double thicknessM = 0;              // 0: solid down to the floor; > 0: a slab this thick
+  double thicknessM = 0;  // 0: solid down to the floor; > 0: a slab this thick
   // The closed solid (OpenMesh), checked closed, manifold and outward when it was built. Null
   // for a hand-made Extrusion.
   std::shared_ptr<const SolidMesh> solid;
@@ -156,8 +156,7 @@ struct ExtrusionOptions {
   double maxClickOffsetPx = 12.0;
 };
 Expected<Extrusion> extrusionFromOutline(const Camera& camera, const std::vector<Vec2>& outlinePx,
-                                         const Vec2& heightClickPx,
-                                         const std::string& keyForMessages,
+                                         const Vec2& heightClickPx, const std::string& keyForMessages,
                                          const ExtrusionOptions& options = {});
 
 // An axis-aligned box (a cabinet, a bed) by the same metrology: the outline is the top's outline
@@ -172,11 +171,11 @@ Expected<Extrusion> boxFromOutline(const Camera& camera, const std::vector<Vec2>
 // checked simple with CGAL and extruded across the width (OpenMesh); every tread is a surface
 // objects stand on.
 struct StairsSpec {
-  Vec2 basePx{0, 0};        // floor pixel at the middle of the bottom step's front edge
-  int steps = 0;            // >= 1
-  double riseM = 0;         // height of one step, > 0
-  double runM = 0;          // depth of one tread, > 0
-  double widthM = 0;        // across the flight, > 0
+  Vec2 basePx{0, 0};          // floor pixel at the middle of the bottom step's front edge
+  int steps = 0;              // >= 1
+  double riseM = 0;           // height of one step, > 0
+  double runM = 0;            // depth of one tread, > 0
+  double widthM = 0;          // across the flight, > 0
   Vec3 climbWorld{0, 0, -1};  // unit room axis the stairs climb along (+-x or +-z)
 };
 Expected<Extrusion> stairsFromSpec(const Camera& camera, const StairsSpec& spec,
@@ -197,14 +196,13 @@ struct StairsProfileSpec {
   // The wall drawn on: WallLeft, WallRight or WallBack; nullopt: the wall most of the points'
   // rays meet first.
   std::optional<SurfaceKind> wall;
-  double widthM = 0;            // > 0: across the flight from the wall; 0: to the opposite wall
-                                // (left and right walls only)
-  double snapDeg = 10.0;        // default 10 deg: a hand-drawn step is within a few degrees
-  double floorSnapM = 0.05;     // default 5 cm: the floor line as drawn, give or take a pixel
+  double widthM = 0;         // > 0: across the flight from the wall; 0: to the opposite wall
+                             // (left and right walls only)
+  double snapDeg = 10.0;     // default 10 deg: a hand-drawn step is within a few degrees
+  double floorSnapM = 0.05;  // default 5 cm: the floor line as drawn, give or take a pixel
 };
 Expected<Extrusion> stairsFromProfile(const Camera& camera, const RoomBox& box,
-                                      const StairsProfileSpec& spec,
-                                      const std::string& keyForMessages);
+                                      const StairsProfileSpec& spec, const std::string& keyForMessages);
 
 // The room's six faces plus the given extrusions (the up-looking faces and the rest each a
 // surface: "surface_<i>_top" supports objects, "surface_<i>_side").
@@ -220,7 +218,7 @@ struct Placement {
   int supportSurfaceId = -1;
 };
 Expected<Placement> placeObject(const TriangleMesh& mesh, const SceneGeometry& geometry,
-                                const Camera& camera, const Vec2& basePx, double heightM,
-                                double yawDeg, const std::string& keyForMessages);
+                                const Camera& camera, const Vec2& basePx, double heightM, double yawDeg,
+                                const std::string& keyForMessages);
 
 }  // namespace inlay

@@ -86,8 +86,9 @@ class SrgbEncoder {
       boundary_[size_t(code - 1)] = hi;
     }
     for (int b = 0; b < kBuckets; ++b)  // the code of the bucket's least value
-      start_[size_t(b)] = (unsigned char)(std::upper_bound(boundary_.begin(), boundary_.end(), float(b) / kBuckets) -
-                                          boundary_.begin());
+      start_[size_t(b)] =
+          (unsigned char)(std::upper_bound(boundary_.begin(), boundary_.end(), float(b) / kBuckets) -
+                          boundary_.begin());
   }
   unsigned char operator()(float v) const {
     if (!(v > 0.f)) return 0;  // also NaN

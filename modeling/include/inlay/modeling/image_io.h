@@ -30,11 +30,11 @@ struct ImageLimits {
 
 // What the file says about the camera (a prior for the focal length, never a truth).
 struct ExifInfo {
-  std::optional<double> focalLengthMm;         // Exif:FocalLength
-  std::optional<double> focalLength35mm;       // Exif:FocalLengthIn35mmFilm
-  std::optional<double> focalPlaneXResolution; // Exif:FocalPlaneXResolution, per unit below
-  std::optional<int> focalPlaneResolutionUnit; // 2 inch, 3 cm, 4 mm (EXIF)
-  int orientation = 1;                         // as stored, before we applied it
+  std::optional<double> focalLengthMm;          // Exif:FocalLength
+  std::optional<double> focalLength35mm;        // Exif:FocalLengthIn35mmFilm
+  std::optional<double> focalPlaneXResolution;  // Exif:FocalPlaneXResolution, per unit below
+  std::optional<int> focalPlaneResolutionUnit;  // 2 inch, 3 cm, 4 mm (EXIF)
+  int orientation = 1;                          // as stored, before we applied it
   std::string make, model;
   // Focal length in pixels of the oriented image, from the 35 mm equivalent (36 mm across the
   // longer side) or from the focal plane resolution; nullopt when the file does not say.
@@ -42,7 +42,7 @@ struct ExifInfo {
 };
 
 struct LoadedImage {
-  ImageF linearRgb;      // W x H x 3, linear, EXIF orientation applied
+  ImageF linearRgb;            // W x H x 3, linear, EXIF orientation applied
   bool wasSrgbEncoded = true;  // false for EXR/HDR (already linear)
   int sourceBitsPerChannel = 8;
   ExifInfo exif;
@@ -66,8 +66,7 @@ struct NamedLayer {
   std::string name;  // e.g. "composite", "with_objects", "without_objects", "mask"
   const ImageF* image = nullptr;
 };
-Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers,
-                     bool half = true);
+Status saveLayersExr(const std::string& path, const std::vector<NamedLayer>& layers, bool half = true);
 
 // Write `bytes` to `path` through a temporary file in the same folder and a rename (fsync
 // before it). Temporaries left beside `path` by processes that died mid-save are removed.

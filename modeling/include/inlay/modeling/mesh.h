@@ -22,13 +22,13 @@ struct AssetMaterial {
   double roughness = 0.5;
   double transmission = 0.0;
   double ior = 1.5;
-  Vec3 emission{0, 0, 0};   // radiance multiplier (emissive colour x strength)
+  Vec3 emission{0, 0, 0};  // radiance multiplier (emissive colour x strength)
 };
 
 struct TriangleMesh {
   std::vector<Vec3f> positions;
-  std::vector<Vec3f> normals;   // per vertex; empty = flat shading
-  std::vector<Vec2f> uvs;       // per vertex; may be empty
+  std::vector<Vec3f> normals;  // per vertex; empty = flat shading
+  std::vector<Vec2f> uvs;      // per vertex; may be empty
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint32_t> triangleMaterial;  // per triangle index into `materials`; may be empty
   std::vector<AssetMaterial> materials;

@@ -37,11 +37,11 @@ struct MatteOptions {
 };
 
 struct OccluderMatte {
-  ImageF alphaPx;                  // H x W x 1, coverage in [0, 1], the photo's pixel frame
-  std::array<int, 4> boxPx{};      // x0, y0, x1, y1 (exclusive) of alpha > 0.02
-  Vec2 lowestPx{0, 0};             // the matte's lowest point (where it stands on the floor)
-  double segmentSeconds = 0;       // grabCut
-  double matteSeconds = 0;         // trimap + alphamat
+  ImageF alphaPx;              // H x W x 1, coverage in [0, 1], the photo's pixel frame
+  std::array<int, 4> boxPx{};  // x0, y0, x1, y1 (exclusive) of alpha > 0.02
+  Vec2 lowestPx{0, 0};         // the matte's lowest point (where it stands on the floor)
+  double segmentSeconds = 0;   // grabCut
+  double matteSeconds = 0;     // trimap + alphamat
 };
 
 // Matte from scribbles on the photo (linear RGB, H x W x 3, the photo's units). Strokes are
@@ -73,16 +73,16 @@ Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte,
 // and at least `openShare` of them give way; then the thickness is their median. Pure; any
 // thread.
 struct SlabEvidence {
-  int coveredSamples = 0;    // samples whose top edge the matte covers (alpha >= 0.5)
-  int openSamples = 0;       // of those, where the matte gives way before the floor
-  bool open = false;         // the rule's verdict: build a slab, not a solid
-  double thicknessM = 0;     // the median covered band under the edge, when open
+  int coveredSamples = 0;  // samples whose top edge the matte covers (alpha >= 0.5)
+  int openSamples = 0;     // of those, where the matte gives way before the floor
+  bool open = false;       // the rule's verdict: build a slab, not a solid
+  double thicknessM = 0;   // the median covered band under the edge, when open
 };
 struct SlabOptions {
-  int minSamples = 12;       // default 12: a few pixels of edge are no evidence
-  double openShare = 0.5;    // default 0.5: most of the visible front is open
+  int minSamples = 12;     // default 12: a few pixels of edge are no evidence
+  double openShare = 0.5;  // default 0.5: most of the visible front is open
 };
-SlabEvidence slabFromMatte(const Camera& camera, const Extrusion& extrusion,
-                           const ImageF& alphaPx, const SlabOptions& options = {});
+SlabEvidence slabFromMatte(const Camera& camera, const Extrusion& extrusion, const ImageF& alphaPx,
+                           const SlabOptions& options = {});
 
 }  // namespace inlay

@@ -105,7 +105,7 @@ struct ResponseEstimateOptions {
   // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
   // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
   double priorWeight = 2.0;  // chosen on half A by bench_response.py
-  int minEdges = 8;             // fewer clean edges: sRGB with a warning
+  int minEdges = 8;          // fewer clean edges: sRGB with a warning
   // The fitted curve is kept only when it lowers the edges' residual by at least this fraction
   // of sRGB's; otherwise sRGB (the edges show no curve clearly different from it).
   double minImprovement = 0.1;
@@ -117,16 +117,16 @@ struct ResponseEstimateOptions {
 };
 
 struct ResponseEstimate {
-  CameraResponse response;         // sRGB when undetermined
-  bool determined = false;         // false: the photo could not determine it (see warnings)
+  CameraResponse response;  // sRGB when undetermined
+  bool determined = false;  // false: the photo could not determine it (see warnings)
   std::vector<std::string> warnings;
-  int edgesUsed = 0;               // clean edges the fit used
+  int edgesUsed = 0;  // clean edges the fit used
   int segmentsFound = 0;
-  double objective = 0;            // the fit's mean edge residual at the result (without prior)
-  double srgbObjective = 0;        // the same for plain sRGB
-  std::string decision;            // why this curve: "fitted", or why sRGB was kept
+  double objective = 0;      // the fit's mean edge residual at the result (without prior)
+  double srgbObjective = 0;  // the same for plain sRGB
+  std::string decision;      // why this curve: "fitted", or why sRGB was kept
   double seconds = 0;
-  double cpuSeconds = 0;           // this thread's CPU time (what an idle core would take)
+  double cpuSeconds = 0;  // this thread's CPU time (what an idle core would take)
   // The fit's objective (with prior) against seconds: one row per improvement.
   std::vector<std::pair<double, double>> history;
 };
@@ -137,6 +137,7 @@ struct ResponseEstimate {
 // toe_shoulder parameters minimise the chosen cue's residual plus the prior (a grid, then
 // Nelder-Mead). Undetermined (returns sRGB, determined false, a warning saying why): a nearly
 // flat or nearly binary photo, one mostly clipped, or fewer than minEdges clean edges.
-ResponseEstimate estimateResponse(const ImageF& srgbDecodedRgb, const ResponseEstimateOptions& options = {});
+ResponseEstimate estimateResponse(const ImageF& srgbDecodedRgb,
+                                  const ResponseEstimateOptions& options = {});
 
 }  // namespace inlay

@@ -28,7 +28,7 @@ struct ResponseKeys {
 };
 
 struct CameraKeys {
-  std::optional<double> heightM;                    // default 1.6 when missing
+  std::optional<double> heightM;  // default 1.6 when missing
   std::optional<double> focalPx;
   std::optional<Vec2> principalPx;
   std::optional<std::array<Vec2, 3>> vanishingPointsPx;  // world x, y, z axes, in that order
@@ -47,10 +47,10 @@ struct LayoutKeys {
 struct LightKeys {
   enum class Kind { PolygonPx, RectM };
   Kind kind = Kind::PolygonPx;
-  std::vector<Vec2> pointsPx;        // PolygonPx: the outline on the photo (>= 3 points)
-  std::array<Vec3, 4> cornersM{};    // RectM: corners in the world frame (metres)
-  std::optional<Vec3> rgb;           // starting intensity (RectM), linear photo units
-  bool refine = true;                // "refine": false keeps the light as given
+  std::vector<Vec2> pointsPx;      // PolygonPx: the outline on the photo (>= 3 points)
+  std::array<Vec3, 4> cornersM{};  // RectM: corners in the world frame (metres)
+  std::optional<Vec3> rgb;         // starting intensity (RectM), linear photo units
+  bool refine = true;              // "refine": false keeps the light as given
   // The refinement against the photo (lighting/refine.h): "lock": true keeps the light where
   // the estimate put it (position and intensity); "weights": {"position", "intensity"} are the
   // priors' weights toward that start (>= 0; larger holds the light closer).
@@ -64,31 +64,31 @@ struct LightKeys {
 };
 
 struct ShaftKeys {
-  std::optional<std::array<double, 4>> shaftBoxPx;   // x0, y0, x1, y1
+  std::optional<std::array<double, 4>> shaftBoxPx;  // x0, y0, x1, y1
   std::optional<std::array<double, 4>> sourceBoxPx;
-  std::optional<Vec3> direction;                     // direction the light travels (world)
+  std::optional<Vec3> direction;  // direction the light travels (world)
 };
 
 struct SurfaceKeys {
-  std::string kind = "extrusion";    // "extrusion" | "box" | "stairs"
+  std::string kind = "extrusion";  // "extrusion" | "box" | "stairs"
   // extrusion, box:
-  std::vector<Vec2> outlinePx;       // closed outline around a horizontal top
-  Vec2 heightClickPx{0, 0};          // a floor click straight below outlinePx[0]
+  std::vector<Vec2> outlinePx;  // closed outline around a horizontal top
+  Vec2 heightClickPx{0, 0};     // a floor click straight below outlinePx[0]
   // "thickness_m": > 0 a slab this thick; 0 a solid to the floor; missing: a solid to the floor
   // unless an occluder's matte shows the floor under the top (then a slab, see slabFromMatte)
   std::optional<double> thicknessM;
   // stairs (a straight flight standing on the floor):
-  Vec2 basePx{0, 0};                 // "base_px": floor pixel, middle of the bottom step's front edge
-  int steps = 0;                     // "steps": >= 1
-  double riseM = 0;                  // "rise_m": height of one step
-  double runM = 0;                   // "run_m": depth of one tread
-  double widthM = 0;                 // "width_m": across the flight
-  std::string climbAxis = "-z";      // "climb_axis": "+x" | "-x" | "+z" | "-z" (default -z: away
-                                     // from the camera)
+  Vec2 basePx{0, 0};             // "base_px": floor pixel, middle of the bottom step's front edge
+  int steps = 0;                 // "steps": >= 1
+  double riseM = 0;              // "rise_m": height of one step
+  double runM = 0;               // "run_m": depth of one tread
+  double widthM = 0;             // "width_m": across the flight
+  std::string climbAxis = "-z";  // "climb_axis": "+x" | "-x" | "+z" | "-z" (default -z: away
+                                 // from the camera)
   // stairs from a side profile drawn on a wall (instead of base_px, steps, rise_m, run_m):
-  std::vector<Vec2> profilePx;       // "profile_px": closed polygon on the wall, >= 3 points
-  std::string wall;                  // "wall": "left" | "right" | "back"; "" = the wall it is on
-                                     // (widthM 0 = "width_m" missing: to the opposite wall)
+  std::vector<Vec2> profilePx;  // "profile_px": closed polygon on the wall, >= 3 points
+  std::string wall;             // "wall": "left" | "right" | "back"; "" = the wall it is on
+                                // (widthM 0 = "width_m" missing: to the opposite wall)
 };
 
 struct OccluderKeys {
@@ -102,19 +102,19 @@ struct MaterialKeys {
   Vec3 albedo{0.8, 0.8, 0.8};
   double roughness = 0.3;
   double ior = 1.5;
-  Vec3 rgb{1, 1, 1};                 // emissive radiance, photo linear units
+  Vec3 rgb{1, 1, 1};  // emissive radiance, photo linear units
 };
 
 struct ObjectKeys {
-  std::string mesh;                  // "builtin:sphere", "builtin:cube", or a path as written
-  std::string meshResolved;          // absolute path (empty for builtins), filled by the parser
+  std::string mesh;          // "builtin:sphere", "builtin:cube", or a path as written
+  std::string meshResolved;  // absolute path (empty for builtins), filled by the parser
   Vec2 basePx{0, 0};
   double heightM = 0.5;
   double yawDeg = 0.0;
-  int subdivideLevels = 0;           // "subdivide": smooth subdivision levels (0: none)
+  int subdivideLevels = 0;  // "subdivide": smooth subdivision levels (0: none)
   MaterialKeys material;
-  std::string name;                  // "name": what the user calls it (the file's name on insert)
-  bool hidden = false;               // "hidden": kept in the scene, not rendered
+  std::string name;     // "name": what the user calls it (the file's name on insert)
+  bool hidden = false;  // "hidden": kept in the scene, not rendered
 };
 
 // "room": {"materials": {"<surface name>": {...}}}: a real surface of the photo marked as
@@ -122,11 +122,11 @@ struct ObjectKeys {
 // wall_back, wall_rear, surface_<i>_top, surface_<i>_side, occluder_<i>_card); the parser checks
 // their spelling, the engine that the room has them.
 struct RoomMaterialKeys {
-  std::string preset = "glossy";     // "glossy" (the projected albedo under a dielectric coat)
-                                     // | "mirror" | "diffuse" (as if unmarked)
-  double roughness = 0.2;            // glossy
-  double ior = 1.5;                  // glossy: the coat
-  Vec3 reflectance{0.9, 0.9, 0.9};   // mirror
+  std::string preset = "glossy";    // "glossy" (the projected albedo under a dielectric coat)
+                                    // | "mirror" | "diffuse" (as if unmarked)
+  double roughness = 0.2;           // glossy
+  double ior = 1.5;                 // glossy: the coat
+  Vec3 reflectance{0.9, 0.9, 0.9};  // mirror
 };
 
 struct RoomKeys {
@@ -135,11 +135,11 @@ struct RoomKeys {
 
 struct RenderKeys {
   int spp = 256;
-  std::optional<double> seconds;     // null / missing: no time limit
+  std::optional<double> seconds;  // null / missing: no time limit
   // Adaptive sampling's target: each pixel's composite is sampled until its estimated standard
   // error (sRGB [0,1]) is below this (0: until spp or seconds). 0.004 is about one 8-bit step.
   double noise = 0.004;
-  double exposure = 0.0;             // stops applied to the composite before encoding
+  double exposure = 0.0;  // stops applied to the composite before encoding
   unsigned seed = 1;
   // Give the pixels the objects change the photo's own grain (its measured noise against
   // intensity), so an object is as grainy as the photo around it. Linear and noise-free photos
@@ -160,8 +160,8 @@ struct SceneMarks {
 };
 
 struct SceneDoc : SceneMarks {
-  std::string photo;                 // as written in the file
-  std::string photoResolved;         // absolute path, filled by the parser
+  std::string photo;          // as written in the file
+  std::string photoResolved;  // absolute path, filled by the parser
   std::vector<ObjectKeys> objects;
   RenderKeys render;
 };
@@ -172,7 +172,7 @@ struct SceneLoadResult {
 };
 
 struct SceneLimits {
-  size_t maxFileBytes = 64u << 20;   // 64 MiB
+  size_t maxFileBytes = 64u << 20;  // 64 MiB
   size_t maxObjects = 10'000;
   size_t maxPointsPerPolyline = 100'000;
   int maxNesting = 64;

@@ -22,6 +22,7 @@ struct SubdivisionResult {
 
 // `levels` in [0, kMaxSubdivisionLevels]; 0 returns the welded mesh unchanged in shape.
 // Errors: levels out of range, an empty mesh, or a result above `maxTriangles`.
-Expected<SubdivisionResult> subdivide(const TriangleMesh& mesh, int levels, size_t maxTriangles = 20'000'000);
+Expected<SubdivisionResult> subdivide(const TriangleMesh& mesh, int levels,
+                                      size_t maxTriangles = 20'000'000);
 
 }  // namespace inlay

@@ -46,20 +46,20 @@ struct DenoiseGuides {
 DenoiseGuides renderDenoiseGuides(const PathTracer& tracer, int width, int height, int threads = 0);
 
 struct DenoiseOptions {
-  int levels = 5;               // à-trous levels (steps 1, 2, 4, ...): reach 2^levels - 1 px
+  int levels = 5;  // à-trous levels (steps 1, 2, 4, ...): reach 2^levels - 1 px
   // Edge stop on the delta, in standard errors: on the room (shadows, bounce light) and on the
   // object's own pixels (mixed by the mask). Chosen on the unit test's sphere scene at 1-16 spp
   // (tests/render_denoise_test.cpp): the room's sparse changes want a tight stop, the object's
   // dense shading a looser one.
   float sigmaLuminance = 2.f;
   float sigmaLuminanceObject = 4.f;
-  float sigmaNormal = 16.f;     // edge stop on normals: exp(-sigma (1 - n_i . n_j))
-  float sigmaPlane = 0.02f;     // edge stop on the distance from the pixel's tangent plane,
-                                // relative to its distance from the camera
-  float sigmaAlbedo = 0.1f;     // edge stop on the albedo (sum of |difference| over RGB)
-  float sigmaMask = 0.1f;       // edge stop on the object mask
-  float clampSigmas = 3.f;      // the change is at most this many standard errors
-  int threads = 0;              // 0 = all cores
+  float sigmaNormal = 16.f;  // edge stop on normals: exp(-sigma (1 - n_i . n_j))
+  float sigmaPlane = 0.02f;  // edge stop on the distance from the pixel's tangent plane,
+                             // relative to its distance from the camera
+  float sigmaAlbedo = 0.1f;  // edge stop on the albedo (sum of |difference| over RGB)
+  float sigmaMask = 0.1f;    // edge stop on the object mask
+  float clampSigmas = 3.f;   // the change is at most this many standard errors
+  int threads = 0;           // 0 = all cores
 };
 
 // How far (pixels) a change can spread: 2^levels - 1 (31 at the default 5 levels).
@@ -68,9 +68,9 @@ int denoiseReachPx(const DenoiseOptions& options);
 // The statistics of a frame the filter needs, per pixel: samples, and the per-sample variance
 // (mean over RGB) of what each sample changes (DifferentialBuffers::sumChange / sumChangeSq).
 struct DenoiseInput {
-  const ImageF* withObjects = nullptr;     // W x H x 3 means
-  const ImageF* withoutObjects = nullptr;  // W x H x 3
-  const ImageF* mask = nullptr;            // W x H x 1
+  const ImageF* withObjects = nullptr;           // W x H x 3 means
+  const ImageF* withoutObjects = nullptr;        // W x H x 3
+  const ImageF* mask = nullptr;                  // W x H x 1
   const DifferentialBuffers* buffers = nullptr;  // the running sums the means came from
   const DenoiseGuides* guides = nullptr;
 };
@@ -85,8 +85,8 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options 
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
                   DenoiseGuides* guides, const DenoiseOptions& options);
 // The same with the default options on `threads` threads (the session's one-line hook).
-inline void denoiseSessionFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
-                                DenoiseGuides* guides, int threads) {
+inline void denoiseSessionFrame(RenderFrame& frame, const DifferentialBuffers& buffers,
+                                const PathTracer& tracer, DenoiseGuides* guides, int threads) {
   DenoiseOptions options;
   options.threads = threads;
   denoiseFrame(frame, buffers, tracer, guides, options);

@@ -34,7 +34,7 @@ struct GltfExportOptions {
 
 // Writes `scene` to `path` (.gltf or .glb, by extension). Warnings (what was left out) are
 // appended to `warnings` when given. Errors name the file and the reason.
-Status exportGltf(const RenderScene& scene, const std::string& path, const GltfExportOptions& options = {},
-                  std::vector<std::string>* warnings = nullptr);
+Status exportGltf(const RenderScene& scene, const std::string& path,
+                  const GltfExportOptions& options = {}, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace inlay

@@ -50,13 +50,13 @@ struct PhotoNoise {
 };
 
 struct NoiseMeasureOptions {
-  int patchPx = 8;                // square patches this wide, a plane fitted to each
-  double envelopeQuantile = 0.25; // per intensity bin, this quantile of the patches' residual
-                                  // variance (the lower envelope: texture only adds variance),
-                                  // corrected by the chi-square quantile of a noise-only patch
-  int maxBins = 16;               // intensity bins per channel (equal patch counts)
-  int minPatchesPerBin = 24;      // fewer valid patches: fewer bins; < this in all: no model
-  long maxPatches = 200'000;      // per image: the patch stride grows for large photos
+  int patchPx = 8;                 // square patches this wide, a plane fitted to each
+  double envelopeQuantile = 0.25;  // per intensity bin, this quantile of the patches' residual
+                                   // variance (the lower envelope: texture only adds variance),
+                                   // corrected by the chi-square quantile of a noise-only patch
+  int maxBins = 16;                // intensity bins per channel (equal patch counts)
+  int minPatchesPerBin = 24;       // fewer valid patches: fewer bins; < this in all: no model
+  long maxPatches = 200'000;       // per image: the patch stride grows for large photos
 };
 
 // The noise of `linear` (W x H x >= 3, linear units) against intensity, per channel, from the

@@ -24,12 +24,12 @@ namespace inlay {
 struct RayLog;
 
 struct TracerOptions {
-  int maxDepth = 8;          // path vertices after the camera (bounces)
+  int maxDepth = 8;              // path vertices after the camera (bounces)
   int russianRouletteDepth = 3;  // roulette starts at this depth
-  double clampRadiance = 0;  // per-sample clamp of indirect radiance; 0 = off (unbiased)
-  bool timeRays = false;     // time every ray by type (benchmarks: two clock reads per ray)
-  bool roughGlassNee = true;  // next-event estimation (with MIS) at rough glass; false: found
-                              // by BSDF sampling alone (for comparison; suns then miss it)
+  double clampRadiance = 0;      // per-sample clamp of indirect radiance; 0 = off (unbiased)
+  bool timeRays = false;         // time every ray by type (benchmarks: two clock reads per ray)
+  bool roughGlassNee = true;     // next-event estimation (with MIS) at rough glass; false: found
+                                 // by BSDF sampling alone (for comparison; suns then miss it)
   // How next-event estimation picks one light (area light or emissive object) per vertex:
   // Spatial weighs every source by power over squared distance, skipping those behind the
   // vertex (O(n) per vertex, each weight computed once); Power draws from a table proportional
@@ -84,16 +84,16 @@ struct RayCounters {
 // Running sums of a differential render at full resolution. mean = sum / samples[pixel].
 struct DifferentialBuffers {
   int width = 0, height = 0;
-  ImageF sumWith;      // W x H x 3, radiance of the scene with objects
-  ImageF sumWithout;   // W x H x 3, radiance of the scene without objects
-  ImageF sumMask;      // W x H x 1, fraction of camera samples whose first hit is an object
-  ImageF sumDiffSq;    // W x H x 1, sum over samples of |with - without|^2 (mean over RGB)
+  ImageF sumWith;     // W x H x 3, radiance of the scene with objects
+  ImageF sumWithout;  // W x H x 3, radiance of the scene without objects
+  ImageF sumMask;     // W x H x 1, fraction of camera samples whose first hit is an object
+  ImageF sumDiffSq;   // W x H x 1, sum over samples of |with - without|^2 (mean over RGB)
   // What each sample makes of the composite, less the photo: with - photo where the camera
   // ray's first hit is an object, with - without elsewhere (the photo pixel is a constant, so
   // these sums give the composite's per-pixel variance, mask noise included; with no photo in
   // the scene, photo = 0).
-  ImageF sumChange;    // W x H x 3
-  ImageF sumChangeSq;  // W x H x 1, sum of |change|^2 (mean over RGB)
+  ImageF sumChange;          // W x H x 3
+  ImageF sumChangeSq;        // W x H x 1, sum of |change|^2 (mean over RGB)
   std::vector<int> samples;  // per pixel
 
   DifferentialBuffers() = default;
@@ -122,13 +122,13 @@ class PathTracer {
   bool renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1, int firstSample,
                   int count, uint32_t seed, const CancelToken* cancel = nullptr) const;
   // The whole frame, parallel over tiles with `threads` threads (0 = all cores).
-  bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
-              int threads = 0, const CancelToken* cancel = nullptr) const;
+  bool render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed, int threads = 0,
+              const CancelToken* cancel = nullptr) const;
   // Adds counts[y * width + x] samples to every pixel, each pixel continuing its own sequence
   // from buffers.samples (the session's focused and adaptive waves), parallel over tiles as
   // render(). counts holds one entry per pixel of the buffers.
-  bool renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed, int threads = 0,
-                    const CancelToken* cancel = nullptr) const;
+  bool renderCounts(DifferentialBuffers& buffers, const std::vector<int>& counts, uint32_t seed,
+                    int threads = 0, const CancelToken* cancel = nullptr) const;
   // Counters since construction (all threads): rays traced (camera, bounce and shadow rays in
   // either scene), and samples dropped because a value was not finite (they count as zero in
   // both renders).
@@ -172,8 +172,8 @@ class RoomTracer {
   // Irradiance over pi at point p (normal n) due to `light` if its radiance were 1 in every
   // channel, with shadows, from `samples` stratified points on the light (deterministic in
   // `seed`). Points behind the light or facing away get 0.
-  double unitLightIrradianceOverPi(const AreaLight& light, const Vec3& p, const Vec3& n,
-                                   int samples, uint32_t seed) const;
+  double unitLightIrradianceOverPi(const AreaLight& light, const Vec3& p, const Vec3& n, int samples,
+                                   uint32_t seed) const;
 
  private:
   struct Impl;
@@ -184,7 +184,7 @@ class RoomTracer {
 // its beam mask at p, times the cosine, times whether anything inside the room (an extrusion, an
 // occluder card) stands between p and the opening. The box's own walls never block: the
 // opening is in them.
-double unitSunIrradianceOverPi(const RoomTracer& tracer, const SceneGeometry& room,
-                               const SunLight& sun, const Vec3& p, const Vec3& n);
+double unitSunIrradianceOverPi(const RoomTracer& tracer, const SceneGeometry& room, const SunLight& sun,
+                               const Vec3& p, const Vec3& n);
 
 }  // namespace inlay

@@ -33,9 +33,9 @@ struct Material {
 // albedo; anything else (out of frame, behind the camera, hidden) takes the surface's mean.
 struct ProjectedAlbedo {
   Camera camera;
-  ImageF albedo;                       // W x H x 3, in [0,1], the photo's size
+  ImageF albedo;                          // W x H x 3, in [0,1], the photo's size
   std::vector<int> firstSurfacePerPixel;  // W*H surface ids (-1: none)
-  std::vector<Vec3> surfaceMean;       // per surface id
+  std::vector<Vec3> surfaceMean;          // per surface id
 
   Vec3 lookup(int surfaceId, const Vec3& pointWorld) const;
   // The index (y * albedo.width + x) of the albedo pixel that shows `pointWorld` on surface
@@ -63,12 +63,16 @@ struct ProjectedAlbedo {
 struct AreaLight {
   std::array<Vec3, 4> cornersWorld;
   Vec3 radiance{1, 1, 1};
-  Vec3 normal() const { return (cornersWorld[1] - cornersWorld[0]).cross(cornersWorld[3] - cornersWorld[0]).normalized(); }
+  Vec3 normal() const {
+    return (cornersWorld[1] - cornersWorld[0]).cross(cornersWorld[3] - cornersWorld[0]).normalized();
+  }
   double area() const {
     return 0.5 * ((cornersWorld[1] - cornersWorld[0]).cross(cornersWorld[2] - cornersWorld[0]).norm() +
                   (cornersWorld[2] - cornersWorld[0]).cross(cornersWorld[3] - cornersWorld[0]).norm());
   }
-  Vec3 centre() const { return 0.25 * (cornersWorld[0] + cornersWorld[1] + cornersWorld[2] + cornersWorld[3]); }
+  Vec3 centre() const {
+    return 0.25 * (cornersWorld[0] + cornersWorld[1] + cornersWorld[2] + cornersWorld[3]);
+  }
 };
 
 // Sunlight through an opening: parallel light travelling along `travelDirection`, of strength
@@ -81,7 +85,7 @@ struct SunLight {
   Vec3 irradianceOverPi{1, 1, 1};
   Vec4 receiverPlane{0, 1, 0, 0};  // (n, d): n . x + d = 0, the surface the patch lies on
   Camera camera;
-  ImageF litMask;                  // W x H x 1 in [0, 1]
+  ImageF litMask;  // W x H x 1 in [0, 1]
 
   // In [0, 1]: how much of the beam reaches p (0 outside it).
   double beamAt(const Vec3& p) const;

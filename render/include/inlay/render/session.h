@@ -40,14 +40,14 @@ std::vector<RenderWork> makeRenderSchedule(int targetSpp, int startDivider = 8, 
 struct RenderFrame {
   uint64_t sceneVersion = 0;
   int width = 0, height = 0;
-  int spp = 0;                  // full-resolution samples per pixel (0 during the preview);
-                                // under a noise target the most any pixel has
-  double meanSpp = 0;           // full-resolution samples per pixel, averaged over the frame
-  int resolutionDivider = 1;    // > 1 for preview frames (upsampled to full size)
-  double seconds = 0;           // since the version's render began
-  ImageF withObjects;           // W x H x 3 means
-  ImageF withoutObjects;        // W x H x 3
-  ImageF mask;                  // W x H x 1
+  int spp = 0;                // full-resolution samples per pixel (0 during the preview);
+                              // under a noise target the most any pixel has
+  double meanSpp = 0;         // full-resolution samples per pixel, averaged over the frame
+  int resolutionDivider = 1;  // > 1 for preview frames (upsampled to full size)
+  double seconds = 0;         // since the version's render began
+  ImageF withObjects;         // W x H x 3 means
+  ImageF withoutObjects;      // W x H x 3
+  ImageF mask;                // W x H x 1
   // W x H x 1: samples per pixel and each pixel's estimated standard error (sRGB [0,1]) in
   // final full-resolution frames, and in every full-resolution frame under a noise target;
   // empty otherwise.
@@ -62,8 +62,8 @@ struct RenderFrame {
   // withObjects is the denoiser's (SessionOptions::denoise; render/denoise.h): its composite is
   // the photo plus the filtered delta. estimatedError, samples and noise stay the raw render's.
   bool denoised = false;
-  bool final = false;           // target reached for this version
-  bool converged = false;       // final because every pixel met SessionOptions::noiseTarget
+  bool final = false;      // target reached for this version
+  bool converged = false;  // final because every pixel met SessionOptions::noiseTarget
 };
 
 // Implemented by the host (the CLI writes files, the studio converts to a QImage).
@@ -78,7 +78,8 @@ class FrameSink {
 // `onEach`, when given, also sees every frame on the render thread, one at a time.
 class LastFrameSink : public FrameSink {
  public:
-  explicit LastFrameSink(std::function<void(const RenderFrame&)> onEach = {}) : onEach_(std::move(onEach)) {}
+  explicit LastFrameSink(std::function<void(const RenderFrame&)> onEach = {})
+      : onEach_(std::move(onEach)) {}
   void onFrame(std::shared_ptr<const RenderFrame> frame) override {
     std::lock_guard<std::mutex> lock(m_);
     if (onEach_) onEach_(*frame);
@@ -97,10 +98,10 @@ class LastFrameSink : public FrameSink {
 
 struct SessionOptions {
   int targetSpp = 256;
-  double seconds = 0;   // 0 = no time limit (per scene version; the first wave always
-                        // completes, so every version gets a frame)
+  double seconds = 0;  // 0 = no time limit (per scene version; the first wave always
+                       // completes, so every version gets a frame)
   uint32_t seed = 1;
-  int threads = 0;      // 0 = all cores
+  int threads = 0;  // 0 = all cores
   int startDivider = 8;
   // false: every full-resolution wave samples every pixel. true: after the first two waves,
   // pixels where no sample has yet met an object (with == without, and no pixel within 2
@@ -143,7 +144,7 @@ class RenderSession {
   // Blocks until the current version reached its target (or time limit), or was cancelled.
   // Returns false on timeout (seconds <= 0: wait forever).
   bool waitUntilDone(double timeoutSeconds = 0);
-  void cancel();              // stop rendering the current version (state: idle)
+  void cancel();  // stop rendering the current version (state: idle)
   uint64_t version() const;
   bool busy() const;
 

@@ -11,13 +11,13 @@
 namespace inlay {
 
 struct LibraryPiece {
-  std::string name;          // id and file stem: "armchair"
-  std::string title;         // English title, for users ("Armchair"; the studio translates it)
-  std::string category;      // seating | tables | lighting | decor | storage | textiles
-  std::string file;          // absolute path of the .glb
-  std::string thumbnail;     // absolute path of the PNG thumbnail
-  Vec3 sizeM{0, 0, 0};       // width (x), depth (z), height (y), metres
-  std::string material;      // the default material in words
+  std::string name;       // id and file stem: "armchair"
+  std::string title;      // English title, for users ("Armchair"; the studio translates it)
+  std::string category;   // seating | tables | lighting | decor | storage | textiles
+  std::string file;       // absolute path of the .glb
+  std::string thumbnail;  // absolute path of the PNG thumbnail
+  Vec3 sizeM{0, 0, 0};    // width (x), depth (z), height (y), metres
+  std::string material;   // the default material in words
 };
 
 // The library folder: $INLAY_MODELS_DIR, else <exe>/../share/inlay/models (installed), else the

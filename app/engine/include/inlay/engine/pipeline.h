@@ -32,9 +32,9 @@ namespace inlay {
 struct StageRecord {
   std::string name;
   bool ran = false;
-  double seconds = 0;   // wall seconds, when it ran
-  std::string reason;   // why it was skipped; empty when it ran
-  std::string detail;   // what it did, when it ran (may be empty): "estimated from the photo"
+  double seconds = 0;  // wall seconds, when it ran
+  std::string reason;  // why it was skipped; empty when it ran
+  std::string detail;  // what it did, when it ran (may be empty): "estimated from the photo"
 };
 // One line for a log: "camera: 0.84 s (estimated from the photo)", "shafts: skipped, no sun
 // marked".
@@ -42,7 +42,7 @@ std::string describeStage(const StageRecord& stage);
 
 struct PreparedScene {
   SceneDoc doc;
-  LoadedImage photo;            // linear RGB (decoded by `response`), oriented
+  LoadedImage photo;  // linear RGB (decoded by `response`), oriented
   // How the photo's codes map to radiance (camera.response, estimated when "auto"); the
   // composite is encoded with it (SaveOptions::response), so untouched pixels keep their codes.
   // Linear for EXR/HDR photos.
@@ -56,13 +56,13 @@ struct PreparedScene {
   std::optional<CameraEstimate> cameraEstimate;
   std::vector<Extrusion> extrusions;
   SceneGeometry geometry;
-  LightingEstimate lighting;   // lights and suns: refined when the refinement ran
+  LightingEstimate lighting;  // lights and suns: refined when the refinement ran
   // The lights and suns before the refinement (the estimate's radiance fit at the outlined or
   // placed positions), and what the refinement did (empty history when it did not run).
   std::vector<AreaLight> initialLights;
   std::vector<SunLight> initialSuns;
   LightRefineResult refinement;
-  RenderScene renderScene;      // lights and objects placed; roomAlbedo filled
+  RenderScene renderScene;            // lights and objects placed; roomAlbedo filled
   std::vector<Placement> placements;  // per object
   // The photo's noise against intensity and its grain's correlation (render/grain.h), measured
   // once from photo.linearRgb; empty for a linear (EXR, HDR) or noise-free photo. compositeOf
@@ -189,7 +189,8 @@ void setObjectMaterial(InsertedObject& object, const MaterialKeys& keys);
 // RenderScene::roomMaterials from the scene file's "room.materials": one entry per surface of
 // `room`, nullopt where unmarked (or "diffuse"). A name this room does not have is an error
 // naming "room.materials.<name>".
-Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys, const SceneGeometry& room);
+Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& keys,
+                                                               const SceneGeometry& room);
 
 // Path of the bundled example scene (resources/example/scene.json) in the source tree or the
 // install prefix; empty when not found.
