@@ -14,6 +14,12 @@ option(INLAY_WERROR "Treat compiler warnings in our code as errors (CI)" OFF)
 # fields; both are cheap to keep out, and a hidden name is a bug waiting for the next edit.
 # -Wshadow=local (GCC) would leave members and globals out.
 set(INLAY_WARNING_FLAGS -Wall -Wextra -Wpedantic -Wshadow)
+# GCC 12 under ASan+UBSan reports -Wmaybe-uninitialized inside libstdc++'s std::regex (the NFA's
+# std::function members, GCC bug 105562; no frame of ours), and its uninitialized analysis is
+# unreliable under sanitizer instrumentation. The Release tree keeps the check.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND INLAY_SANITIZE)
+  list(APPEND INLAY_WARNING_FLAGS -Wno-maybe-uninitialized)
+endif()
 if(INLAY_WERROR)
   list(APPEND INLAY_WARNING_FLAGS -Werror)
 endif()

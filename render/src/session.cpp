@@ -176,7 +176,7 @@ double errorQuantile(const DifferentialBuffers& b, double q) {
   for (size_t i = 0; i < b.samples.size(); ++i)
     if (changed(b, i)) e.push_back(pixelError(b, i));
   if (e.empty()) return 0;
-  const size_t k = std::min(e.size() - 1, size_t(q * double(e.size() - 1) + 0.5));
+  const size_t k = std::min(e.size() - 1, size_t(std::lround(q * double(e.size() - 1))));
   std::nth_element(e.begin(), e.begin() + std::ptrdiff_t(k), e.end());
   return e[k];
 }
