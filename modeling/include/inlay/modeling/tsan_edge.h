@@ -30,7 +30,8 @@ class TsanEdge {
 #endif
 
  private:
-  [[maybe_unused]] char tag_ = 0;  // only its address is used (TSan builds): TSan keys its sync objects by address
+  [[maybe_unused]] char tag_ =
+      0;  // only its address is used (TSan builds): TSan keys its sync objects by address
 };
 
 }  // namespace inlay
