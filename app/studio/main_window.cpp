@@ -733,19 +733,23 @@ void MainWindow::exportCompositeDialog() {
     showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
     return;
   }
+  const QString path = askImagePath(tr("Export Composite"), QString());
+  if (!path.isEmpty()) exportComposite(path);
+}
+
+// A save dialog for a composite image (PNG, JPEG, TIFF or linear EXR); a name without a suffix
+// gets the chosen type's. Empty when the user cancels.
+QString MainWindow::askImagePath(const QString& title, const QString& suggestion) {
   QString selected;
   const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
                 tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
   QString path = QFileDialog::getSaveFileName(
-      this, tr("Export Composite"), QString(),
-      QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
-  if (path.isEmpty()) return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += selected == jpeg   ? QStringLiteral(".jpg")
-            : selected == tiff ? QStringLiteral(".tif")
-            : selected == exr  ? QStringLiteral(".exr")
-                               : QStringLiteral(".png");
-  exportComposite(path);
+      this, title, suggestion, QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
+  if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
+  return path + (selected == jpeg   ? QStringLiteral(".jpg")
+                 : selected == tiff ? QStringLiteral(".tif")
+                 : selected == exr  ? QStringLiteral(".exr")
+                                    : QStringLiteral(".png"));
 }
 
 bool MainWindow::exportComposite(const QString& path) {
@@ -811,19 +815,8 @@ void MainWindow::renderFinalDialog() {
     const QFileInfo photo(QString::fromStdString(document_->scene().photoResolved));
     suggestion = photo.absoluteDir().filePath(photo.completeBaseName() + QStringLiteral("_inlay.png"));
   }
-  QString selected;
-  const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
-                tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
-  QString path = QFileDialog::getSaveFileName(
-      this, tr("Render Final Image"), suggestion,
-      QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
-  if (path.isEmpty()) return;
-  if (QFileInfo(path).suffix().isEmpty())
-    path += selected == jpeg   ? QStringLiteral(".jpg")
-            : selected == tiff ? QStringLiteral(".tif")
-            : selected == exr  ? QStringLiteral(".exr")
-                               : QStringLiteral(".png");
-  renderFinalImage(path);
+  const QString path = askImagePath(tr("Render Final Image"), suggestion);
+  if (!path.isEmpty()) renderFinalImage(path);
 }
 
 bool MainWindow::renderFinalImage(const QString& path, int maxSpp) {

@@ -128,6 +128,7 @@ class MainWindow : public QMainWindow {
   bool save();
   bool saveAsDialog();
   void exportCompositeDialog();
+  QString askImagePath(const QString& title, const QString& suggestion);
   void exportLayerDialog();
   void exportSceneGltfDialog();
   void renderFinalDialog();
