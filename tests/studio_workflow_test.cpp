@@ -133,7 +133,9 @@ void StudioWorkflowTest::newUserWorkflow() {
   QVERIFY(!view->loupeShown());
   QCOMPARE(undo->count(), 2);
   const Vec2 placedCorner = (*doc->scene().layout.backWallPx)[3];
-  QVERIFY2((placedCorner - targetPx).norm() < 1.0 / view->zoom() + 1e-6,
+  // Two roundings to whole widget pixels (the press, which sets the grab offset, and the release)
+  // each move the corner by up to half a widget pixel per axis: at most 1.42 widget pixels.
+  QVERIFY2((placedCorner - targetPx).norm() < 1.42 / view->zoom() + 1e-6,
            qPrintable(QStringLiteral("corner at %1, %2").arg(placedCorner.x()).arg(placedCorner.y())));
   for (int i = 0; i < 3; ++i)
     QVERIFY((*doc->scene().layout.backWallPx)[size_t(i)] == estimated[size_t(i)]);
