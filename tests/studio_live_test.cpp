@@ -195,7 +195,8 @@ void StudioLiveTest::vanishingLinesFixTheCamera() {
   for (int dy = -2; dy <= 2; ++dy)
     for (int dx = -2; dx <= 2; ++dx) {
       const QPoint q = around + QPoint(dx, dy);
-      if (shown.rect().contains(q) && blueness(shown.pixelColor(q)) > blueness(shown.pixelColor(mid))) mid = q;
+      if (shown.rect().contains(q) && blueness(shown.pixelColor(q)) > blueness(shown.pixelColor(mid)))
+        mid = q;
     }
   const QColor c = shown.pixelColor(mid);
   QVERIFY2(c.blue() > c.red() + 40 && c.blue() > c.green() + 25, qPrintable(c.name()));
