@@ -1,7 +1,7 @@
 #include "inlay/modeling/estimate_camera.h"
 
 #include "estimate_camera_internal.h"
-#include "inlay/modeling/geometry.h"
+#include "inlay/modeling/room_box.h"
 #include "layout.h"
 #include "lines.h"
 

@@ -1,19 +1,13 @@
-// Small helpers shared by geometry.cpp and stairs.cpp (internal to modeling).
+// Small helpers shared by geometry.cpp and stairs.cpp (internal to modeling). pxText and
+// hitHorizontal come from the camera room's room_box.h.
 #pragma once
 
 #include "inlay/modeling/core.h"
+#include "inlay/modeling/room_box.h"
 
-#include <optional>
-#include <string>
 #include <vector>
 
 namespace inlay::detail {
-
-// "(x, y)" with one decimal, for messages.
-std::string pxText(const Vec2& p);
-
-// Ray / horizontal plane y = h; nullopt when parallel or behind.
-std::optional<Vec3> hitHorizontal(const Ray& ray, double h);
 
 // Signed area of a polygon in the (x, -z) plane: positive when counter-clockwise seen from
 // above with x to the right and -z (away from the camera) up.

@@ -1,17 +1,15 @@
 // The room and everything that supports or hides inserted objects, as world-space surfaces.
 //
-// The box room comes from the back wall's four image corners plus the camera: the floor is
-// y = 0, the back wall's bottom edge fixes its depth and the side walls, its top edge the
-// ceiling. The wall behind the camera is never seen; it is placed `rearMarginM` behind the
-// camera so the box is closed (light and bounces must stay inside). Extrusions (table tops) are
-// prisms from a top outline lifted to the height given by a floor click (single-view
-// metrology). Every surface is a triangle mesh with a stable integer id (its index).
+// The box room (RoomBox, roomFromBackWall) lives with the camera, in room_box.h: the camera
+// estimate checks its boxes with it. Extrusions (table tops) are prisms from a top outline
+// lifted to the height given by a floor click (single-view metrology). Every surface is a triangle mesh with a stable integer id (its index).
 #pragma once
 
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/core.h"
 #include "inlay/modeling/image.h"
 #include "inlay/modeling/mesh.h"
+#include "inlay/modeling/room_box.h"
 
 #include <array>
 #include <memory>
@@ -42,13 +40,6 @@ inline bool isWall(SurfaceKind k) {
 inline bool isBoxSurface(SurfaceKind k) {
   return k == SurfaceKind::Floor || k == SurfaceKind::Ceiling || isWall(k);
 }
-
-// Axis-aligned box of the room, world metres.
-struct RoomBox {
-  double xLeftM = -2, xRightM = 2;
-  double zBackM = -4, zRearM = 0.5;
-  double ceilingM = 2.6;
-};
 
 // The soft coverage of an occluder card (occluder.h makes it): the matte in photo pixels, looked
 // up for a world point through the photo's camera. Immutable once built; any thread may read.
@@ -89,28 +80,11 @@ struct SceneGeometry {
                                       double tMin = 1e-6) const;
 };
 
-struct RoomOptions {
-  double rearMarginM = 0.5;  // distance of the unseen rear wall behind the camera
-};
-
-// Least-squares box from the four back-wall corners (TL, TR, BR, BL). Errors name
-// "layout.back_wall_px" and say why (a floor corner at or above the horizon, a ceiling below
-// the floor, a wall behind the camera, a degenerate quad).
-Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 4>& cornersPx,
-                                   const RoomOptions& options = {});
-
-// Where the back wall's corners appear in the photo (TL, TR, BR, BL); may lie outside it.
-std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);
-
 // For messages when a mark (a light's outline, a table top, a shaft box) does not land on the
 // room: what the user can do about the box's `surface`, naming the back-wall corner that moves
 // it and where that corner is in the photo, e.g. "check the room box: drag the back wall's
 // bottom-left corner at (88, 402) onto the crease where the left wall meets the floor".
 std::string roomBoxAdvice(const Camera& camera, const RoomBox& box, SurfaceKind surface);
-
-// The horizon's row (photo pixels) at column x: where horizontal planes vanish, the image of
-// the camera's own height. NaN when the camera looks straight up or down.
-double horizonRowPx(const Camera& camera, double x);
 
 // An extruded horizontal surface (a table top) from an outline and a floor click below
 // outline point 0. Height by single-view metrology; the outline (either orientation) must be
