@@ -1,12 +1,15 @@
 // OpenSubdiv subdivision: a cube becomes a smooth closed blob by Catmull-Clark (vertex counts of
 // uniform refinement, watertight, volume converging between the inscribed sphere's and the
 // cube's, rounder at every level); triangle meshes go through Loop; open borders stay put;
-// bad requests are errors.
+// UVs come through (seams kept, interiors interpolated); a non-manifold fin is refined and
+// counted; bad requests and bad meshes are errors naming the reason.
 #include "inlay/modeling/subdivide.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <set>
 
 namespace inlay {
 namespace {
@@ -21,6 +24,22 @@ bool watertight(const TriangleMesh& m) {
   for (const auto& [e, n] : directed)
     if (n != 1 || directed.count({e.second, e.first}) == 0) return false;
   return true;
+}
+
+// The mesh with vertices at identical positions merged (subdivide splits them at UV seams).
+TriangleMesh weldedByPosition(const TriangleMesh& m) {
+  std::map<std::array<float, 3>, uint32_t> index;
+  std::vector<uint32_t> remap(m.positions.size());
+  TriangleMesh w;
+  for (size_t i = 0; i < m.positions.size(); ++i) {
+    const auto& p = m.positions[i];
+    const auto [it, added] =
+        index.emplace(std::array<float, 3>{p.x(), p.y(), p.z()}, uint32_t(w.positions.size()));
+    if (added) w.positions.push_back(p);
+    remap[i] = it->second;
+  }
+  for (const auto& t : m.triangles) w.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
+  return w;
 }
 
 double volume(const TriangleMesh& m) {
@@ -55,13 +74,14 @@ TEST(Subdivide, CubeConvergesToASmoothClosedShape) {
   for (int levels = 1; levels <= 4; ++levels) {
     const auto r = subdivide(cube, levels);
     ASSERT_TRUE(r.ok()) << r.error().message();
-    const TriangleMesh& m = r->mesh;
+    const TriangleMesh m = weldedByPosition(r->mesh);  // makeCube's UV seams split vertices
     EXPECT_EQ(r->scheme, SubdivisionScheme::CatmullClark);
     const size_t quads = 6u << (2 * levels);
     EXPECT_EQ(m.positions.size(), quads + 2);  // Euler: V = F + 2 for a closed quad mesh of genus 0
     EXPECT_EQ(m.triangles.size(), 2 * quads);
     EXPECT_TRUE(watertight(m));
-    EXPECT_EQ(m.normals.size(), m.positions.size());
+    EXPECT_EQ(r->mesh.normals.size(), r->mesh.positions.size());
+    EXPECT_EQ(r->mesh.uvs.size(), r->mesh.positions.size());
     const double v = volume(m), q = roundness(m), step = previousVolume - v;
     std::printf("[ subdivide ] cube, %d levels: %zu vertices, volume %.5f (step %.5f), roundness %.4f\n",
                 levels, m.positions.size(), v, step, q);
@@ -121,7 +141,169 @@ TEST(Subdivide, BadRequestsAreErrors) {
   nan.triangles.push_back({0, 1, 99});
   const auto r = subdivide(nan, 1);  // the NaN vertex's and the out-of-range triangles are dropped
   ASSERT_TRUE(r.ok());
+  EXPECT_EQ(r->droppedTriangles, 2u + 1u);  // vertex 0 is on its face's two triangles
   for (const auto& p : r->mesh.positions) EXPECT_TRUE(p.allFinite());
+}
+
+TEST(Subdivide, BadMeshesSayWhy) {
+  TriangleMesh fewUvs = makeCube();
+  fewUvs.uvs.pop_back();
+  const auto a = subdivide(fewUvs, 1);
+  ASSERT_FALSE(a.ok());
+  EXPECT_NE(a.error().message().find("23 UVs for 24 vertices"), std::string::npos)
+      << a.error().message();
+  TriangleMesh nanUv = makeCube();
+  nanUv.uvs[5].y() = std::numeric_limits<float>::infinity();
+  const auto b = subdivide(nanUv, 1);
+  ASSERT_FALSE(b.ok());
+  EXPECT_NE(b.error().message().find("UV of vertex 5 is not a finite"), std::string::npos)
+      << b.error().message();
+  TriangleMesh flat;  // every triangle has two corners at one position
+  flat.positions = {Vec3f(0, 0, 0), Vec3f(0, 0, 0), Vec3f(1, 0, 0)};
+  flat.triangles = {{0, 1, 2}};
+  const auto c = subdivide(flat, 1);
+  ASSERT_FALSE(c.ok());
+  EXPECT_NE(c.error().message().find("no usable triangle"), std::string::npos) << c.error().message();
+}
+
+// A unit quad textured with uv = (x, y): the corners keep their UVs, the borders stay linear,
+// and the interior UVs, interpolated by OpenSubdiv's face-varying rules, match the positions
+// (both are refined with the same Catmull-Clark weights on a flat, regular quad).
+TEST(Subdivide, TexturedQuadCarriesItsUvs) {
+  TriangleMesh quad;
+  quad.positions = {Vec3f(0, 0, 0), Vec3f(1, 0, 0), Vec3f(1, 1, 0), Vec3f(0, 1, 0)};
+  quad.uvs = {Vec2f(0, 0), Vec2f(1, 0), Vec2f(1, 1), Vec2f(0, 1)};
+  quad.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const auto r = subdivide(quad, 3);
+  ASSERT_TRUE(r.ok()) << r->mesh.positions.size();
+  EXPECT_EQ(r->scheme, SubdivisionScheme::CatmullClark);
+  ASSERT_EQ(r->mesh.uvs.size(), r->mesh.positions.size());
+  EXPECT_EQ(r->mesh.positions.size(), 81u);  // 9 x 9, no seam to split
+  int interior = 0;
+  for (size_t i = 0; i < r->mesh.positions.size(); ++i) {
+    const Vec3f& p = r->mesh.positions[i];
+    const Vec2f& uv = r->mesh.uvs[i];
+    EXPECT_NEAR(uv.x(), p.x(), 1e-5);
+    EXPECT_NEAR(uv.y(), p.y(), 1e-5);
+    interior += p.x() > 0.01f && p.x() < 0.99f && p.y() > 0.01f && p.y() < 0.99f;
+  }
+  EXPECT_EQ(interior, 49);
+}
+
+// Vertices that repeat another's position and UV (a UV seam is only where the UVs differ, so
+// these weld into one UV value).
+size_t repeatedUvVertices(const TriangleMesh& m) {
+  std::set<std::array<float, 5>> distinct;
+  for (size_t i = 0; i < m.positions.size(); ++i)
+    distinct.insert(
+        {m.positions[i].x(), m.positions[i].y(), m.positions[i].z(), m.uvs[i].x(), m.uvs[i].y()});
+  return m.positions.size() - distinct.size();
+}
+
+// Per position, the number of distinct UVs there, as a sorted list (the seams' shape).
+std::vector<size_t> uvsPerPosition(const TriangleMesh& m, const std::vector<size_t>& which) {
+  std::map<std::array<float, 3>, std::set<std::pair<float, float>>> uvs;
+  for (size_t i : which)
+    uvs[{m.positions[i].x(), m.positions[i].y(), m.positions[i].z()}].insert(
+        {m.uvs[i].x(), m.uvs[i].y()});
+  std::vector<size_t> sizes;
+  for (const auto& [p, set] : uvs) sizes.push_back(set.size());
+  std::sort(sizes.begin(), sizes.end());
+  return sizes;
+}
+
+// Signed area of a triangle in UV space.
+double uvArea(const TriangleMesh& m, const std::array<uint32_t, 3>& t) {
+  const Vec2f a = m.uvs[t[1]] - m.uvs[t[0]], b = m.uvs[t[2]] - m.uvs[t[0]];
+  return 0.5 * (double(a.x()) * b.y() - double(a.y()) * b.x());
+}
+
+// makeCube maps each face onto the whole texture: six islands, every cube edge a seam. After
+// Catmull-Clark each island still covers [0, 1]^2 exactly once, its borders stay on the square's
+// edges, the face centres sit at uv (0.5, 0.5), and a cube corner comes out with the UVs it
+// had (one per face, less those two faces happen to share).
+TEST(Subdivide, CubeKeepsItsUvSeams) {
+  const TriangleMesh cube = makeCube();
+  const auto r = subdivide(cube, 2);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  const TriangleMesh& m = r->mesh;
+  ASSERT_EQ(m.uvs.size(), m.positions.size());
+  const size_t shared = repeatedUvVertices(cube);
+  EXPECT_EQ(m.positions.size(), 6u * 25u - shared);      // 5 x 5 per island
+  EXPECT_EQ(weldedByPosition(m).positions.size(), 98u);  // 6 * 16 + 2 shared positions
+  EXPECT_TRUE(watertight(weldedByPosition(m)));
+  double total = 0;
+  for (const auto& t : m.triangles) {
+    const double a = uvArea(m, t);
+    EXPECT_GT(std::abs(a), 1e-4);
+    total += std::abs(a);
+    for (uint32_t v : t) {
+      EXPECT_GE(m.uvs[v].minCoeff(), -1e-6f);
+      EXPECT_LE(m.uvs[v].maxCoeff(), 1 + 1e-6f);
+    }
+  }
+  EXPECT_NEAR(total, 6.0, 1e-5);
+  int centres = 0, border = 0;
+  for (const Vec2f& uv : m.uvs) {
+    centres += (uv - Vec2f(0.5f, 0.5f)).norm() < 1e-6f;
+    const bool onEdge = uv.minCoeff() < 1e-6f || uv.maxCoeff() > 1 - 1e-6f;
+    if (!onEdge) continue;
+    ++border;  // linear along the seam: quarters of the square's edge
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(4 * uv[k], std::round(4 * uv[k]), 1e-5) << uv.transpose();
+  }
+  EXPECT_EQ(centres, 6);
+  EXPECT_EQ(border, 6 * 16 - int(shared));
+  // The islands' corners: on 8 positions, with the UVs the cube's corners had.
+  std::vector<size_t> corners, all(cube.positions.size());
+  for (size_t i = 0; i < m.positions.size(); ++i)
+    if ((m.uvs[i].array() * (1 - m.uvs[i].array())).abs().maxCoeff() < 1e-6f) corners.push_back(i);
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  EXPECT_EQ(uvsPerPosition(m, corners), uvsPerPosition(cube, all));
+  EXPECT_EQ(uvsPerPosition(m, corners).size(), 8u);
+}
+
+// Loop keeps UVs too: a tetrahedron with each face on the texture's lower-left half.
+TEST(Subdivide, LoopCarriesUvIslands) {
+  TriangleMesh tet;
+  const Vec3f c[4] = {Vec3f(1, 1, 1), Vec3f(1, -1, -1), Vec3f(-1, 1, -1), Vec3f(-1, -1, 1)};
+  const std::array<int, 3> faces[4] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+  for (const auto& f : faces) {
+    const uint32_t base = uint32_t(tet.positions.size());
+    for (int k = 0; k < 3; ++k) tet.positions.push_back(c[f[size_t(k)]]);
+    tet.uvs.insert(tet.uvs.end(), {Vec2f(0, 0), Vec2f(1, 0), Vec2f(0, 1)});
+    tet.triangles.push_back({base, base + 1, base + 2});
+  }
+  const auto r = subdivide(tet, 2);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r->scheme, SubdivisionScheme::Loop);
+  const TriangleMesh& m = r->mesh;
+  EXPECT_EQ(m.positions.size(), 4u * 15u - repeatedUvVertices(tet));  // 15 per island (5 rows)
+  EXPECT_TRUE(watertight(weldedByPosition(m)));
+  double total = 0;
+  for (const auto& t : m.triangles) total += uvArea(m, t);
+  EXPECT_NEAR(total, 4 * 0.5, 1e-5);  // positive: no island folded over
+  for (const Vec2f& uv : m.uvs) {
+    EXPECT_GE(uv.minCoeff(), -1e-6f);
+    EXPECT_LE(uv.sum(), 1 + 1e-5f);
+  }
+}
+
+// A fin: a third triangle on the quad's diagonal. The half-edge mesh refuses it (three faces on
+// one edge), the result counts it, and OpenSubdiv still refines all three into finite triangles.
+TEST(Subdivide, NonManifoldFinStaysSane) {
+  TriangleMesh fin;
+  fin.positions = {Vec3f(0, 0, 0), Vec3f(1, 0, 0), Vec3f(1, 1, 0), Vec3f(0, 1, 0), Vec3f(0.5f, 0.5f, 1)};
+  fin.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 2, 4}};
+  const auto r = subdivide(fin, 2);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r->nonManifoldTriangles, 1u);
+  EXPECT_EQ(r->scheme, SubdivisionScheme::Loop);
+  EXPECT_EQ(r->mesh.triangles.size(), 3u * 16u);
+  for (const auto& p : r->mesh.positions) EXPECT_TRUE(p.allFinite());
+  for (const auto& n : r->mesh.normals) EXPECT_TRUE(n.allFinite());
+  const auto box = r->mesh.bounds();
+  EXPECT_GE(box.min().minCoeff(), -1e-6f);
+  EXPECT_LE(box.max().maxCoeff(), 1 + 1e-6f);
 }
 
 }  // namespace

@@ -1,17 +1,24 @@
 // The measurements behind docs/architecture.md's "Hand-written or library" rows that run in
 // seconds: our resize against OpenImageIO's, the 8-bit sRGB encoder against a pow per value and
-// a 65536-entry table, and OpenCV's Otsu threshold against the exact optimum on sorted values.
-// One thread each (OIIO's own pool off), best of `repeats`. Writes OUT.csv with one row per
-// method: what, method, ms, error (what the error means is in the row's `error_is`).
+// a 65536-entry table, OpenCV's Otsu threshold against the exact optimum on sorted values, and
+// subdivision (OpenMesh welding + OpenSubdiv face-varying UVs) against the std::map welding it
+// replaced, on each MESH. One thread each (OIIO's own pool off), best of `repeats`. Writes
+// OUT.csv with one row per method: what, method, ms, error (what the error means is in the
+// row's `error_is`). PHOTO "-" skips the photo row.
 //
-//   build/tests/bench/bench_library_choices OUT.csv [repeats [PHOTO]]
+//   build/tests/bench/bench_library_choices OUT.csv [repeats [PHOTO [MESH...]]]
 //   /usr/bin/python3 tests/bench/benchlib.py table OUT.csv library_choices
 #include "inlay/modeling/image.h"
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/mesh.h"
+#include "inlay/modeling/subdivide.h"
 #include "inlay/lighting/shaft.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
 
 #include <algorithm>
 #include <array>
@@ -20,6 +27,9 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <memory>
+#include <unordered_set>
 #include <random>
 #include <string>
 #include <vector>
@@ -187,21 +197,200 @@ void photoRows(std::vector<Row>& rows, const std::string& path) {
                   ms, 0, "(time only)"});
 }
 
+// The subdivision before OpenMesh and face-varying UVs (modeling/src/geometry/subdivide.cpp up
+// to November 2026), kept here as the baseline: std::map welding, a std::map of directed edges
+// for the quad pairing, positions only (UVs dropped).
+namespace before {
+
+using namespace OpenSubdiv;
+
+struct Point {
+  Vec3 p = Vec3::Zero();
+  void Clear(void* = nullptr) { p.setZero(); }
+  void AddWithWeight(const Point& src, float weight) { p += double(weight) * src.p; }
+};
+
+struct Welded {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+Welded weld(const TriangleMesh& mesh) {
+  Welded w;
+  std::map<std::array<float, 3>, int> index;
+  std::vector<int> remap(mesh.positions.size(), -1);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const Vec3f& p = mesh.positions[i];
+    if (!p.allFinite()) continue;
+    const auto [it, added] =
+        index.emplace(std::array<float, 3>{p.x(), p.y(), p.z()}, int(w.positions.size()));
+    if (added) w.positions.push_back(p.cast<double>());
+    remap[i] = it->second;
+  }
+  for (const auto& t : mesh.triangles) {
+    if (std::max({t[0], t[1], t[2]}) >= mesh.positions.size()) continue;
+    const std::array<int, 3> r = {remap[t[0]], remap[t[1]], remap[t[2]]};
+    if (r[0] < 0 || r[1] < 0 || r[2] < 0 || r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) continue;
+    w.triangles.push_back(r);
+  }
+  return w;
+}
+
+std::vector<std::array<int, 4>> pairIntoQuads(const Welded& w) {
+  const size_t n = w.triangles.size();
+  auto longestEdge = [&](size_t t) {
+    int best = 0;
+    double bestLen = -1;
+    for (int k = 0; k < 3; ++k) {
+      const double len =
+          (w.positions[size_t(w.triangles[t][(k + 1) % 3])] - w.positions[size_t(w.triangles[t][k])])
+              .squaredNorm();
+      if (len > bestLen) bestLen = len, best = k;
+    }
+    return best;
+  };
+  auto normal = [&](size_t t) {
+    const auto& v = w.triangles[t];
+    return Vec3((w.positions[size_t(v[1])] - w.positions[size_t(v[0])])
+                    .cross(w.positions[size_t(v[2])] - w.positions[size_t(v[0])])
+                    .normalized());
+  };
+  std::map<std::pair<int, int>, size_t> directed;
+  for (size_t t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) directed[{w.triangles[t][k], w.triangles[t][(k + 1) % 3]}] = t;
+  std::vector<std::array<int, 4>> quads;
+  std::vector<bool> used(n, false);
+  for (size_t t = 0; t < n; ++t) {
+    if (used[t]) continue;
+    const int k = longestEdge(t);
+    const int a = w.triangles[t][k], b = w.triangles[t][(k + 1) % 3], c = w.triangles[t][(k + 2) % 3];
+    const auto it = directed.find({b, a});
+    if (it == directed.end() || used[it->second] || it->second == t) return {};
+    const size_t u = it->second;
+    const int ku = longestEdge(u);
+    if (w.triangles[u][ku] != b || w.triangles[u][(ku + 1) % 3] != a) return {};
+    if (!(normal(t).dot(normal(u)) > 0.999)) return {};
+    used[t] = used[u] = true;
+    quads.push_back({a, w.triangles[u][(ku + 2) % 3], b, c});
+  }
+  return quads;
+}
+
+std::optional<TriangleMesh> subdivide(const TriangleMesh& mesh, int levels) {
+  const Welded w = weld(mesh);
+  if (w.triangles.empty()) return std::nullopt;
+  const std::vector<std::array<int, 4>> quads = pairIntoQuads(w);
+  std::vector<int> counts, indices;
+  if (quads.empty()) {
+    counts.assign(w.triangles.size(), 3);
+    for (const auto& t : w.triangles) indices.insert(indices.end(), t.begin(), t.end());
+  } else {
+    counts.assign(quads.size(), 4);
+    for (const auto& q : quads) indices.insert(indices.end(), q.begin(), q.end());
+  }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(w.positions.size());
+  desc.numFaces = int(counts.size());
+  desc.numVertsPerFace = counts.data();
+  desc.vertIndicesPerFace = indices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(
+      desc, Factory::Options(quads.empty() ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, sdc)));
+  if (!refiner) return std::nullopt;
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  std::vector<Point> points(size_t(refiner->GetNumVerticesTotal()));
+  for (size_t i = 0; i < w.positions.size(); ++i) points[i].p = w.positions[i];
+  Far::PrimvarRefiner primvar(*refiner);
+  Point* src = points.data();
+  for (int level = 1; level <= levels; ++level) {
+    Point* dst = src + refiner->GetLevel(level - 1).GetNumVertices();
+    primvar.Interpolate(level, src, dst);
+    src = dst;
+  }
+  const Far::TopologyLevel& last = refiner->GetLevel(levels);
+  TriangleMesh out;
+  for (int i = 0; i < last.GetNumVertices(); ++i) out.positions.push_back(src[i].p.cast<float>());
+  for (int f = 0; f < last.GetNumFaces(); ++f) {
+    const Far::ConstIndexArray v = last.GetFaceVertices(f);
+    for (int k = 1; k + 1 < v.size(); ++k)
+      out.triangles.push_back({uint32_t(v[0]), uint32_t(v[k]), uint32_t(v[k + 1])});
+  }
+  out.computeVertexNormals();
+  return out;
+}
+
+}  // namespace before
+
+// Share of `a`'s distinct positions that are not, bit for bit, among `b`'s (0: the same
+// surface; subdivide splits seam vertices, so positions are compared as sets).
+double positionsNotIn(const TriangleMesh& a, const TriangleMesh& b) {
+  auto key = [](const Vec3f& p) {
+    return std::string(reinterpret_cast<const char*>(p.data()), sizeof(float) * 3);
+  };
+  std::unordered_set<std::string> inB, inA;
+  for (const Vec3f& p : b.positions) inB.insert(key(p));
+  size_t missing = 0;
+  for (const Vec3f& p : a.positions)
+    if (inA.insert(key(p)).second && !inB.count(key(p))) ++missing;
+  return inA.empty() ? 1.0 : double(missing) / double(inA.size());
+}
+
+// Each mesh subdivided (2 levels; 1 above 50 000 triangles) by the code before and by
+// subdivide(); what each kept: vertices, triangles, UVs. Error of the new row: positions not in
+// the old result (0 = the same surface); of the old row: the share of the input's UVs lost.
+void subdivideRows(std::vector<Row>& rows, const std::vector<std::string>& meshes) {
+  for (const std::string& path : meshes) {
+    const auto mesh = loadMesh(path);
+    if (!mesh) {
+      std::fprintf(stderr, "skipping %s: %s\n", path.c_str(), mesh.error().message().c_str());
+      continue;
+    }
+    const int levels = mesh->triangles.size() > 50'000 ? 1 : 2;
+    const std::string what = "subdivide " + path.substr(path.find_last_of('/') + 1) + " (" +
+                             std::to_string(mesh->triangles.size()) + " triangles, " +
+                             (mesh->uvs.empty() ? "no UVs" : "UVs") + "), " + std::to_string(levels) +
+                             " levels";
+    auto counts = [](const TriangleMesh& m) {
+      return std::to_string(m.positions.size()) + " vertices, " + std::to_string(m.triangles.size()) +
+             " triangles, " + (m.uvs.empty() ? "no UVs" : "UVs");
+    };
+    std::optional<TriangleMesh> old;
+    const double oldMs = bestMs([&] { old = before::subdivide(*mesh, levels); });
+    Expected<SubdivisionResult> now = Error{};
+    const double nowMs = bestMs([&] { now = subdivide(*mesh, levels); });
+    if (!old || !now) {
+      std::fprintf(stderr, "skipping %s: a subdivision failed\n", path.c_str());
+      continue;
+    }
+    rows.push_back({what, "std::map weld, OpenSubdiv, UVs dropped (before): " + counts(*old), oldMs,
+                    mesh->uvs.empty() ? 0.0 : 1.0, "share of the input's UVs lost"});
+    rows.push_back({what,
+                    "OpenMesh weld, OpenSubdiv face-varying UVs: " + counts(now->mesh) + ", " +
+                        std::to_string(now->nonManifoldTriangles) + " non-manifold",
+                    nowMs, positionsNotIn(now->mesh, *old),
+                    "share of positions not in the before's result (0 = same surface)"});
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_library_choices OUT.csv [repeats [PHOTO]]\n");
+    std::fprintf(stderr, "usage: bench_library_choices OUT.csv [repeats [PHOTO [MESH...]]]\n");
     return 2;
   }
   if (argc > 2) gRepeats = std::max(1, std::atoi(argv[2]));
-  const std::string photo = argc > 3 ? argv[3] : "";
+  const std::string photo = argc > 3 && std::string(argv[3]) != "-" ? argv[3] : "";
+  const std::vector<std::string> meshes(argv + std::min(argc, 4), argv + argc);
   OIIO::attribute("threads", 1);
   std::vector<Row> rows;
   srgbRows(rows);
   otsuRows(rows);
   resizeRows(rows);
   if (!photo.empty()) photoRows(rows, photo);
+  subdivideRows(rows, meshes);
   std::ofstream csv(argv[1]);
   csv << "what,method,ms,error,error_is\n";
   for (const Row& r : rows) {
