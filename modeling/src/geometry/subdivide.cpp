@@ -263,9 +263,7 @@ std::unique_ptr<Far::TopologyRefiner> refine(const Welded& w, const Faces& faces
   std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(
       desc, Factory::Options(faces.size == 4 ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP, sdc)));
   if (!refiner) return nullptr;
-  Far::TopologyRefiner::UniformOptions options(levels);
-  options.fullTopologyInLastLevel = true;  // the last level's face-varying values
-  refiner->RefineUniform(options);
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
   return refiner;
 }
 
