@@ -52,6 +52,8 @@ def main():
                           else "%.2f" % med.get((mp, k), float("nan")) for k in figures])
     with open(os.path.join(out, "bench_big_photo_summary.csv")) as f:
         print(f.read())
+    summary_csv = os.path.join(out, "bench_big_photo_summary.csv")
+    benchlib.write_table("big_photo", list(csv.DictReader(open(summary_csv))), source=summary_csv)
     mps = [mp for mp in sorted(sizes) if mp > 0]
     actual = [sizes[mp][0] * sizes[mp][1] / 1e6 for mp in mps]
     with benchlib.figure(os.path.join(out, "bench_big_photo.png"), 1, 2, figsize=(11, 4.2)) as ax:

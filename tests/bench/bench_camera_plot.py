@@ -18,6 +18,12 @@ out = benchlib.args(__doc__)[0]
 rows = list(csv.DictReader(open(os.path.join(out, "camera_bench.csv"))))
 summary = json.load(open(os.path.join(out, "camera_bench_summary.json")))
 default = summary["default_budget"]
+benchlib.write_table("camera", [
+    {"set": set_, "budget": budget, "images": s["images"], "focal_rel_err_median": s["focal_rel_err_median"],
+     "vp_angle_deg_max_median": s["vp_angle_deg_max_median"], "horizon_auc": s["horizon_auc"],
+     "corner_err_px_max_median": s.get("corner_err_px_max_median", float("nan")), "ms_median": s["ms_median"]}
+    for set_ in ("york", "scenes") for budget, s in sorted(summary.get(set_, {}).items(), key=lambda kv: int(kv[0]))],
+    source=os.path.join(out, "camera_bench_summary.json"))
 
 
 def col(set_, budget, key):

@@ -59,7 +59,7 @@ def report(out):
             row["object_rmse_at_1s"] = at_time(pts, 1.0, "object_rmse")
             row["surroundings_rmse_at_1s"] = at_time(pts, 1.0, "surroundings_rmse")
             rows.append(row)
-    benchlib.write_csv(os.path.join(out, "summary.csv"), rows)
+    benchlib.write_csv(os.path.join(out, "summary.csv"), rows, table="denoise")
     print("| material | mode | s to object 0.01 | s to surroundings 0.01 | s to surroundings 0.005 | object RMSE at 1 s | surroundings at 1 s |")
     print("|---|---|---|---|---|---|---|")
     for r in rows:

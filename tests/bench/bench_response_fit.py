@@ -144,7 +144,7 @@ def main():
             print(json.dumps(rows[-1]), flush=True)
             benchlib.write_csv(os.path.join(out, "response_fit.csv"), rows)
     summary = summarise(rows)
-    benchlib.write_csv(os.path.join(out, "response_fit_summary.csv"), summary)
+    benchlib.write_csv(os.path.join(out, "response_fit_summary.csv"), summary, table="response_fit")
     for s in summary:
         print(s)
     plot(os.path.join(out, "response_fit.png"), rows)

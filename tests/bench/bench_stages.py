@@ -130,6 +130,10 @@ def main():
             print("%s run %d: %.1f s" % (label, k, sum(s.get("seconds", 0.0) for s in runs[-1])), flush=True)
         results[label] = summary(runs)
     benchlib.write_csv(os.path.join(out, "bench_stages.csv"), rows)
+    benchlib.write_table("stages", [{"scene": label, "stage": name, "ran": int(ran), "median_s": round(secs, 3),
+                                     "skipped": reason}
+                                    for label, stages in results.items() for name, (ran, secs, reason) in stages.items()],
+                         source=os.path.join(out, "bench_stages.csv"))
     table = markdown(results, repeats, threads)
     open(os.path.join(out, "bench_stages.md"), "w").write(table)
     plot(results, os.path.join(out, "bench_stages.png"))

@@ -36,6 +36,8 @@ def main():
                     key=lambda d: os.path.getmtime(os.path.join(root, d)))
     data = {l: {p: read(os.path.join(root, l, p + ".csv")) for p in ("types", "triangles", "lights")} for l in labels}
 
+    if data[label]["types"]:
+        benchlib.write_table("throughput", data[label]["types"], source=os.path.join(root, label, "types.csv"))
     print("| run | type | rays | renderer M rays/s/thread | bare Embree M rays/s/thread | ratio |")
     print("|---|---|---|---|---|---|")
     for l in labels:

@@ -243,7 +243,7 @@ def main():
             print(json.dumps(rows[-1]), flush=True)
             benchlib.write_csv(csv_path, rows)
     summary = summarise(rows, readings)
-    benchlib.write_csv(os.path.join(out, "vignetting_summary.csv"), summary)
+    benchlib.write_csv(os.path.join(out, "vignetting_summary.csv"), summary, table="vignetting")
     for s in summary:
         print(s)
     plot(os.path.join(out, "vignetting.png"), rows, readings)
