@@ -288,6 +288,17 @@ TEST(Subdivide, LoopCarriesUvIslands) {
   }
 }
 
+// Zero levels: the welded mesh as it was, UVs and all (the cube's 6 quads, each split once).
+TEST(Subdivide, ZeroLevelsKeepTheWeldedMesh) {
+  const TriangleMesh cube = makeCube();
+  const auto r = subdivide(cube, 0);
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_EQ(r->mesh.triangles.size(), 12u);
+  EXPECT_EQ(r->mesh.positions.size(), cube.positions.size() - repeatedUvVertices(cube));
+  ASSERT_EQ(r->mesh.uvs.size(), r->mesh.positions.size());
+  EXPECT_NEAR(volume(r->mesh), 1.0, 1e-6);
+}
+
 // A fin: a third triangle on the quad's diagonal. The half-edge mesh refuses it (three faces on
 // one edge), the result counts it, and OpenSubdiv still refines all three into finite triangles.
 TEST(Subdivide, NonManifoldFinStaysSane) {
