@@ -291,6 +291,55 @@ namespace {
 // again with them, together with the albedo); a locked light keeps the estimate's position and
 // intensity while the other is refined; --initial-lights (refineLights = false) renders the
 // estimate's.
+// A sun shaft whose window is out of view (a shaft box and a direction, no source box): the
+// opening its beam came through joins the lights after the scene file's, with a warning; the
+// lighting stage fits its intensity and the refinement, which moves the outlined lights, holds it
+// where the beam put it. The photo: the example's with a clipped patch painted on its floor, the
+// sun coming from behind and above the camera.
+TEST(Engine, AShaftsWindowOutOfViewBecomesALight) {
+  SceneDoc doc = exampleDoc();
+  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved);
+  ASSERT_TRUE(photo.ok()) << photo.error().message();
+  for (int y = 310; y < 360; ++y)
+    for (int x = 200; x < 300; ++x) photo->linearRgb.setRgb(x, y, Vec3(1, 1, 1));
+  const auto dir = test::tempDir("engine_sky_window");
+  const std::string photoPath = (dir / "photo.png").string();
+  ASSERT_TRUE(saveImage(photoPath, photo->linearRgb).ok());
+  doc.photo = doc.photoResolved = photoPath;
+  ShaftKeys shaft;
+  shaft.shaftBoxPx = std::array<double, 4>{180, 295, 320, 375};
+  shaft.direction = Vec3(0, -0.7, -0.7);
+  doc.shafts = {shaft};
+  auto ps = prepareScene(doc);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  ASSERT_EQ(ps->lighting.suns.size(), 1u);
+  ASSERT_EQ(ps->lighting.lights.size(), doc.lights.size() + 1);
+  ASSERT_EQ(ps->initialLights.size(), doc.lights.size() + 1);
+  bool warned = false;
+  for (const std::string& w : ps->warnings)
+    warned = warned || w.find("shafts[0]: the window the sun comes through is out of view") == 0;
+  EXPECT_TRUE(warned);
+  const AreaLight& sky = ps->lighting.lights.back();
+  for (int k = 0; k < 4; ++k)
+    EXPECT_EQ(sky.cornersWorld[size_t(k)], ps->initialLights.back().cornersWorld[size_t(k)]);
+  EXPECT_TRUE(sky.radiance.allFinite());
+  EXPECT_GE(sky.radiance.minCoeff(), 0.0);
+  EXPECT_EQ(ps->renderScene.lights.size(), ps->lighting.lights.size());
+  // It lies behind or above the camera, where the beam came from: out of the photo.
+  EXPECT_FALSE(ps->camera.project(sky.centre()).has_value() &&
+               ps->camera.project(sky.centre())->y() > 0 &&
+               ps->camera.project(sky.centre())->y() < photo->linearRgb.height &&
+               ps->camera.project(sky.centre())->x() > 0 &&
+               ps->camera.project(sky.centre())->x() < photo->linearRgb.width);
+  // Turned off, no light is added.
+  PrepareOptions off;
+  off.skyThroughUnseenWindows = false;
+  off.refineLights = false;
+  auto without = prepareScene(doc, off);
+  ASSERT_TRUE(without.ok()) << without.error().message();
+  EXPECT_EQ(without->lighting.lights.size(), doc.lights.size());
+}
+
 TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   SceneDoc doc = exampleDoc();
   ASSERT_GE(doc.lights.size(), 2u);

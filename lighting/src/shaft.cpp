@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include <opencv2/imgproc.hpp>
@@ -187,6 +188,92 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
   out.sourceCentroidWorld = source ? source->centroid : Vec3::Zero();
   out.contrast = receiver.contrast;
   out.litPixels = receiver.count;
+  return out;
+}
+
+namespace {
+
+// The lit pixels of the beam carried back against the light: per box surface reached, the
+// points where they cross it.
+std::map<int, std::vector<Vec3>> beamCrossings(const SunLight& sun, const Camera& camera,
+                                               const SceneGeometry& geometry) {
+  std::map<int, std::vector<Vec3>> out;
+  const ImageF& mask = sun.litMask;
+  const Vec3 toSun = -sun.travelDirection.normalized();
+  for (int y = 0; y < mask.height; ++y)
+    for (int x = 0; x < mask.width; ++x) {
+      if (!(mask.at(x, y) > 0.5f)) continue;
+      const Vec2 px((x + 0.5) * camera.widthPx / mask.width, (y + 0.5) * camera.heightPx / mask.height);
+      const auto h = geometry.intersect(camera.rayThroughPixel(px));
+      if (!h) continue;
+      const auto back = geometry.intersect(Ray{h->pointWorld + 1e-5 * h->normalWorld, toSun});
+      if (!back || !isBoxSurface(geometry.surfaces[size_t(back->surfaceId)].kind)) continue;
+      out[back->surfaceId].push_back(back->pointWorld);
+    }
+  return out;
+}
+
+// The q-quantile of v (reordered).
+double quantileOf(std::vector<double>& v, double q) {
+  const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + long(k), v.end());
+  return v[k];
+}
+
+// Of 8 x 8 points on the light, the share the camera sees (the first surface along its ray).
+double visibleShareOf(const AreaLight& light, int surface, const Camera& camera,
+                      const SceneGeometry& geometry) {
+  int seen = 0;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      const double a = (i + 0.5) / 8, b = (j + 0.5) / 8;
+      const auto& c = light.cornersWorld;
+      const Vec3 q = (1 - a) * (1 - b) * c[0] + a * (1 - b) * c[1] + a * b * c[2] + (1 - a) * b * c[3];
+      const auto px = camera.project(q);
+      if (!px || px->x() < 0 || px->y() < 0 || px->x() >= camera.widthPx || px->y() >= camera.heightPx)
+        continue;
+      const auto h = geometry.intersect(camera.rayThroughPixel(*px));
+      seen += h && h->surfaceId == surface && (h->pointWorld - q).norm() < 0.02;
+    }
+  return seen / 64.0;
+}
+
+}  // namespace
+
+std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& camera,
+                                         const SceneGeometry& geometry, int minPixels) {
+  const auto crossings = beamCrossings(sun, camera, geometry);
+  const auto most = std::max_element(crossings.begin(), crossings.end(),
+                                     [](auto& a, auto& b) { return a.second.size() < b.second.size(); });
+  if (most == crossings.end() || int(most->second.size()) < std::max(minPixels, 4)) return std::nullopt;
+  const std::vector<Vec3>& pts = most->second;
+  // The surface's normal into the room and two axes in its plane (a box surface: axis-aligned).
+  const Vec4 plane = planeOf(geometry.surfaces[size_t(most->first)]);
+  Vec3 n = plane.head<3>().normalized();
+  const RoomBox& box = geometry.box;
+  const Vec3 centre(0.5 * (box.xLeftM + box.xRightM), 0.5 * box.ceilingM,
+                    0.5 * (box.zBackM + box.zRearM));
+  if (n.dot(centre - pts[0]) < 0) n = -n;
+  // u horizontal (width), v up the wall (height); on the ceiling u along x.
+  const Vec3 up = std::abs(n.y()) > 0.9 ? Vec3::UnitZ() : Vec3::UnitY();
+  const Vec3 u = up.cross(n).normalized(), v = n.cross(u).normalized();
+  std::vector<double> a(pts.size()), b(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i)
+    a[i] = (pts[i] - pts[0]).dot(u), b[i] = (pts[i] - pts[0]).dot(v);
+  const double a0 = quantileOf(a, 0.02), a1 = quantileOf(a, 0.98), b0 = quantileOf(b, 0.02),
+               b1 = quantileOf(b, 0.98);
+  if (!(a1 - a0 > 1e-3 && b1 - b0 > 1e-3)) return std::nullopt;
+  BeamOpening out;
+  const Vec3 o = pts[0] + 1e-3 * n;
+  out.light.cornersWorld = {o + a0 * u + b0 * v, o + a1 * u + b0 * v, o + a1 * u + b1 * v,
+                            o + a0 * u + b1 * v};
+  if (out.light.normal().dot(n) < 0) std::swap(out.light.cornersWorld[1], out.light.cornersWorld[3]);
+  out.light.radiance = Vec3(1, 1, 1);
+  out.surface = most->first;
+  out.widthM = a1 - a0;
+  out.heightM = b1 - b0;
+  out.pixels = int(pts.size());
+  out.visibleShare = visibleShareOf(out.light, out.surface, camera, geometry);
   return out;
 }
 

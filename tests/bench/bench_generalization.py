@@ -117,6 +117,13 @@ def light_errors(lights_json, truth, cam):
         rel.append(float(np.linalg.norm(o - tr) / np.linalg.norm(tr)))
         ratio.append(float(o @ LUMA / max(tr @ LUMA, 1e-12)))
         row["sun_ratio"] = round(ratio[-1], 3)
+        # The sky through a window the photo does not show: Inlay adds it as a light after the
+        # scene file's (one per such shaft); ours / the truth's sky radiance, by luminance.
+        sky = ts.get("sky")
+        extra = L["refined"][len(truth["lights"]):]
+        if sky and ts.get("window", {}).get("view_status") == "out_of_view" and extra:
+            tr = np.array(sky["color"], float) * sky["strength"] * units
+            row["sky_ratio"] = round(float(np.array(extra[-1]["rgb"], float) @ LUMA / max(tr @ LUMA, 1e-12)), 3)
     if rel:
         row["light_intensity_error"] = round(max(rel), 4)
         worst = max(ratio, key=lambda r: abs(np.log(max(r, 1e-9))))

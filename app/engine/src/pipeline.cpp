@@ -471,7 +471,9 @@ struct Preparation {
 
   bool cancelled() const { return opt.cancel && opt.cancel->shouldStop(); }
   // The refinement holds light i where the estimate put it.
-  bool locked(size_t i) const { return doc.lights[i].lock || !estimated[i]; }
+  // The lights the shafts' unseen windows add (after the scene file's) are held where the beam
+  // put them.
+  bool locked(size_t i) const { return i >= doc.lights.size() || doc.lights[i].lock || !estimated[i]; }
 };
 
 Error cancelledError() { return Error{"", "", "cancelled"}; }
@@ -657,14 +659,37 @@ Status lightsFromMarks(Preparation& p, std::string& detail) {
   return {};
 }
 
+// The sky through a shaft's window when the photo does not show it: the opening the beam came
+// through, as an area light whose intensity the lighting fit finds (PrepareOptions::
+// skyThroughUnseenWindows). Returns whether it was added.
+bool addSkyOfUnseenWindow(Preparation& p, size_t i, const SunLight& sun) {
+  if (!p.opt.skyThroughUnseenWindows || p.doc.shafts[i].sourceBoxPx) return false;
+  const auto opening = openingOfBeam(sun, p.ps.camera, p.ps.geometry);
+  if (!opening || opening->visibleShare >= 0.5) return false;
+  p.lights.push_back(opening->light);
+  p.estimated.push_back(true);
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "shafts[%zu]: the window the sun comes through is out of view; its sky is a light "
+                "of %.2f x %.2f m on the %s (where the beam came from), its intensity fitted "
+                "(give source_box_px, or outline the window as a light, to choose)",
+                i, opening->widthM, opening->heightM,
+                p.ps.geometry.surfaces[size_t(opening->surface)].name.c_str());
+  p.ps.warnings.push_back(buf);
+  return true;
+}
+
 Status sunsFromShafts(Preparation& p, std::string& detail) {
+  size_t skies = 0;
   for (size_t i = 0; i < p.doc.shafts.size(); ++i) {
     auto shaft = sunFromShaft(p.doc.shafts[i], p.ps.photo.linearRgb, p.ps.camera, p.ps.geometry,
                               "shafts[" + std::to_string(i) + "]");
     if (!shaft) return shaft.error();
     p.suns.push_back(shaft->sun);
+    skies += addSkyOfUnseenWindow(p, i, shaft->sun);
   }
   detail = countOf(p.suns.size(), "sun");
+  if (skies > 0) detail += ", " + countOf(skies, "sky through an unseen window");
   return {};
 }
 
@@ -696,7 +721,8 @@ Status sunsFromRatio(Preparation& p, std::string& detail) {
 // The lights' positions and intensities against the photo's direct light (lighting/refine.h).
 Status refineTheLights(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
-  std::vector<LightRefineSpec> specs(p.doc.lights.size());
+  std::vector<LightRefineSpec> specs(p.lights.size());
+  for (size_t i = p.doc.lights.size(); i < specs.size(); ++i) specs[i].lock = true;
   for (size_t i = 0; i < p.doc.lights.size(); ++i) {
     const LightKeys& l = p.doc.lights[i];
     specs[i].lock = p.locked(i);

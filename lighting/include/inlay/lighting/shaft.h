@@ -12,6 +12,7 @@
 #include "inlay/modeling/scene_file.h"
 #include "inlay/render/scene.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,26 @@ struct ShaftEstimate {
 Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photoLinear,
                                      const Camera& camera, const SceneGeometry& geometry,
                                      const std::string& key);
+
+// The opening a sun's beam came through, as far as its lit patch shows it. Sunlight enters
+// through a window that lets the sky in as well; when the photo does not show that window, its
+// sky is a light no outline marks, and the room's light would be short by it. Every lit pixel
+// of the beam's mask (> 0.5) is carried back against the light to the box surface (a wall or
+// the ceiling) it crosses; the rectangle spanning the 2nd to 98th percentiles of those points
+// in that surface's plane, 1 mm into the room, is the opening.
+struct BeamOpening {
+  AreaLight light;   // facing into the room, radiance (1, 1, 1): the lighting fit finds it
+  int surface = -1;  // the box surface it lies on
+  double widthM = 0, heightM = 0;
+  double visibleShare = 0;  // of 8 x 8 points on it, the share the camera sees
+  int pixels = 0;           // lit pixels carried back onto it
+};
+
+// Nullopt when fewer than `minPixels` lit pixels reach one box surface (the beam's mask empty,
+// or the lit points blocked by a table top). The patch is cut where the photo ends, and so is
+// the opening.
+std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& camera,
+                                         const SceneGeometry& geometry, int minPixels = 50);
 
 namespace detail {
 // Otsu's threshold between the two modes of `values` (OpenCV's, on 256 levels between their

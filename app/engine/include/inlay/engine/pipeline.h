@@ -88,6 +88,11 @@ struct PrepareOptions {
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
   // ratio cannot be measured (a note says why).
   bool sunsFromShadowRatio = true;
+  // A shaft whose window the photo does not show (no source_box_px, and the opening its beam
+  // came through mostly out of view) lets the sky in through that window all the same: the
+  // opening (lighting/shaft.h, openingOfBeam) becomes an area light whose intensity the lighting
+  // fit finds and the refinement does not move.
+  bool skyThroughUnseenWindows = true;
   // The preparation's own randomness (the lighting fit's light samples and gathering, the
   // refinement's fixed samples), added to each stage's default seed. It is fixed per scene and
   // never the render seed (render.seed, --seed): renders of one scene with different render
