@@ -7,9 +7,14 @@ once (a header's finding shows up in every unit that includes it); the exit stat
 is any, 2 if the tool or the build tree is missing.
 
 Units run in parallel (-j). A unit that comes out clean is remembered in BUILD_DIR/clang-tidy-cache
-under a hash of everything its result depends on: the unit preprocessed with its own flags and
-comments kept (so every header it includes, and every NOLINT, is in it), every .clang-tidy of the
-repository, the flags and the clang-tidy version. A rerun only checks what changed.
+under a hash of everything its result depends on: every .clang-tidy of the repository, the
+unit's flags, the clang-tidy version and its input, which is either
+  - the source and every header it includes, as the build's last compile of the unit listed them
+    (ninja -t deps), when that object is newer than each of those files (nothing changed since,
+    so the list is the unit's); reading them costs next to nothing; or otherwise
+  - the unit preprocessed by clang with its own flags and comments kept (every NOLINT in it),
+    which costs a few seconds a unit.
+A rerun only checks what changed.
 
 usage: tests/tools/run_clang_tidy.py [-j N] [--no-cache] [BUILD_DIR] [REGEX...]
   REGEX: only the units whose path matches (e.g. 'modeling/src/mesh'); default all of ours.
@@ -93,16 +98,87 @@ def config_digest(root, tidy):
     return h.hexdigest()
 
 
-def cache_key(entry, clang, base_digest):
-    """The hash of the unit's preprocessed text (comments kept), flags and configuration; None if
-    it does not preprocess (then clang-tidy runs and reports why)."""
+def ninja_deps(build):
+    """{object file (as ninja names it): [its source and headers]} of the build's last compiles;
+    empty when the build tree is not ninja's."""
+    r = subprocess.run(["ninja", "-C", build, "-t", "deps"], capture_output=True, text=True)
+    deps, current = {}, None
+    for line in r.stdout.splitlines() if r.returncode == 0 else []:
+        if line and not line.startswith(" "):
+            current = line.split(": #deps")[0] if line.endswith("(VALID)") else None
+            if current:
+                deps[current] = []
+        elif line.strip() and current:
+            deps[current].append(line.strip())
+    return deps
+
+
+def object_of(entry):
+    args = compile_args(entry)
+    for i, a in enumerate(args):
+        if a == "-o" and i + 1 < len(args):
+            return args[i + 1]
+        if a.startswith("-o") and len(a) > 2:
+            return a[2:]
+    return None
+
+
+class FileDigests:
+    """sha256 of files' contents, each file read once per run."""
+
+    def __init__(self):
+        self.known = {}
+
+    def __call__(self, path):
+        if path not in self.known:
+            with open(path, "rb") as f:
+                self.known[path] = hashlib.sha256(f.read()).hexdigest()
+        return self.known[path]
+
+
+def deps_key(entry, deps, digests, base_digest):
+    """The hash of the unit's source and headers (the build's list), flags and configuration;
+    None when the build has no up-to-date object of the unit (its list may be out of date)."""
+    obj = object_of(entry)
+    files = deps.get(obj) if obj else None
+    if not files:
+        return None
+    directory = entry["directory"]
+    try:
+        built = os.stat(os.path.join(directory, obj)).st_mtime_ns
+        paths = [os.path.join(directory, f) for f in files]
+        if any(os.stat(p).st_mtime_ns > built for p in paths):
+            return None
+        h = hashlib.sha256(base_digest.encode())
+        h.update(" ".join(compile_args(entry)).encode())
+        for p in paths:
+            h.update(f"{p} {digests(p)}\n".encode())
+    except OSError:
+        return None
+    return "d" + h.hexdigest()
+
+
+def preprocessed_key(entry, clang, base_digest):
+    """The hash of the unit's preprocessed text (comments kept), flags and configuration, and the
+    text's size; (None, 0) if it does not preprocess (then clang-tidy runs and says why)."""
     r = subprocess.run(preprocess_args(entry, clang), cwd=entry["directory"], capture_output=True)
     if r.returncode != 0:
         return None, 0
     h = hashlib.sha256(base_digest.encode())
     h.update(" ".join(compile_args(entry)).encode())
     h.update(r.stdout)
-    return h.hexdigest(), len(r.stdout)
+    return "p" + h.hexdigest(), len(r.stdout)
+
+
+def unit_size(entry, deps):
+    """About how much the unit parses: the bytes of its source and headers when the build lists
+    them, else of its source alone."""
+    directory = entry["directory"]
+    try:
+        files = deps.get(object_of(entry)) or [entry["file"]]
+        return sum(os.path.getsize(os.path.join(directory, f)) for f in files)
+    except OSError:
+        return 0
 
 
 def findings_in(text, root, tracked):
@@ -123,29 +199,42 @@ def run_tidy(tidy, build, unit):
     return r.returncode, r.stdout + r.stderr, time.monotonic() - start
 
 
+def check_unit(args, build, entry, key, base_digest, cache_dir):
+    """(key, cached?, clang-tidy's exit status, output, seconds) of one unit; the key by the
+    preprocessed text when the build's dependency list gave none."""
+    if key is None:
+        key, _ = preprocessed_key(entry, args.clang, base_digest)
+    if key and not args.no_cache and os.path.exists(os.path.join(cache_dir, key)):
+        return key, True, 0, "", 0.0
+    return (key, False, *run_tidy(args.tidy, build, entry["file"]))
+
+
 def check_units(args, root, build, units, tracked, cache_dir):
-    """Preprocesses and hashes every unit, then runs clang-tidy on the ones not cached clean,
-    largest first; returns (findings, checked, cached, failed units)."""
+    """Runs clang-tidy on each unit not cached clean, smallest first; returns (findings, units
+    checked, units cached, units that failed without a finding in our files)."""
     base = config_digest(root, args.tidy)
+    deps, digests = ninja_deps(build), FileDigests()
+    # The product's units before the tests' and benchmarks', the smallest first: findings (a
+    # header's above all) arrive soonest, and a run stopped early has covered the most units of
+    # the product, each clean one cached for the next run.
+    todo = sorted((unit.startswith("tests/"), unit_size(e, deps), unit, e,
+                   deps_key(e, deps, digests, base)) for unit, e in units)
+    preprocessed = sum(1 for t in todo if t[4] is None)
+    print(f"run_clang_tidy: {len(units)} units ({len(units) - preprocessed} keyed by the build's "
+          f"dependency lists, {preprocessed} by their preprocessed text), {args.jobs} jobs, "
+          f"{args.tidy}", flush=True)
+    found, failed, checked, cached = {}, [], 0, 0
+    log = open(os.path.join(build, "clang-tidy.log"), "w")
     with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
-        keys = list(pool.map(lambda u: cache_key(u[1], args.clang, base), units))
-    todo, cached = [], 0
-    for (unit, _), (key, size) in zip(units, keys):
-        if key and not args.no_cache and os.path.exists(os.path.join(cache_dir, key)):
-            cached += 1
-        else:
-            todo.append((size, unit, key))
-    # The smallest units first: findings (a header's above all) arrive soonest, and a run stopped
-    # early has covered the most units, each clean one cached for the next run.
-    todo.sort()
-    print(f"run_clang_tidy: {len(units)} units, {cached} cached clean, {len(todo)} to check, "
-          f"{args.jobs} jobs, {args.tidy}", flush=True)
-    found, failed, log = {}, [], open(os.path.join(build, "clang-tidy.log"), "w")
-    with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
-        jobs = {pool.submit(run_tidy, args.tidy, build, unit): (unit, key) for _, unit, key in todo}
-        for n, done in enumerate(concurrent.futures.as_completed(jobs), 1):
-            unit, key = jobs[done]
-            rc, text, seconds = done.result()
+        jobs = {pool.submit(check_unit, args, build, e, key, base, cache_dir): unit
+                for _, _, unit, e, key in todo}
+        for done in concurrent.futures.as_completed(jobs):
+            unit = jobs[done]
+            key, hit, rc, text, seconds = done.result()
+            if hit:
+                cached += 1
+                continue
+            checked += 1
             log.write(f"=== {unit} (exit {rc}, {seconds:.0f} s)\n{text}\n")
             log.flush()
             mine = findings_in(text, root, tracked)
@@ -153,10 +242,11 @@ def check_units(args, root, build, units, tracked, cache_dir):
             if rc != 0 and not mine:
                 failed.append(unit)
             elif not mine and key:
-                open(os.path.join(cache_dir, key), "w").write(unit + "\n")
+                with open(os.path.join(cache_dir, key), "w") as f:
+                    f.write(unit + "\n")
             status = f"{len(mine)} findings" if mine else ("FAILED" if rc != 0 else "clean")
-            print(f"[{n}/{len(todo)}] {unit}: {status} ({seconds:.0f} s)", flush=True)
-    return found, len(todo), cached, failed
+            print(f"[{checked + cached}/{len(todo)}] {unit}: {status} ({seconds:.0f} s)", flush=True)
+    return found, checked, cached, failed
 
 
 def report(found, failed):
