@@ -13,7 +13,8 @@ unit's flags, the clang-tidy version and its input, which is either
     (ninja -t deps), when that object is newer than each of those files (nothing changed since,
     so the list is the unit's); reading them costs next to nothing; or otherwise
   - the unit preprocessed by clang with its own flags and comments kept (every NOLINT in it),
-    which costs a few seconds a unit.
+    which costs a few seconds a unit; the files it read are listed (a manifest), and the next
+    run keys the unit by their contents, preprocessing it only if one of them changed.
 A rerun only checks what changed.
 
 usage: tests/tools/run_clang_tidy.py [-j N] [--no-cache] [BUILD_DIR] [REGEX...]
@@ -136,9 +137,18 @@ class FileDigests:
         return self.known[path]
 
 
+def files_key(entry, paths, digests, base_digest, kind):
+    """The hash of the configuration, the unit's flags and the contents of `paths`."""
+    h = hashlib.sha256(base_digest.encode())
+    h.update(" ".join(compile_args(entry)).encode())
+    for p in paths:
+        h.update(f"{p} {digests(p)}\n".encode())
+    return kind + h.hexdigest()
+
+
 def deps_key(entry, deps, digests, base_digest):
-    """The hash of the unit's source and headers (the build's list), flags and configuration;
-    None when the build has no up-to-date object of the unit (its list may be out of date)."""
+    """The key of the unit's source and headers as the build lists them; None when the build has
+    no object of the unit newer than each of them (the list may be out of date)."""
     obj = object_of(entry)
     files = deps.get(obj) if obj else None
     if not files:
@@ -149,25 +159,61 @@ def deps_key(entry, deps, digests, base_digest):
         paths = [os.path.join(directory, f) for f in files]
         if any(os.stat(p).st_mtime_ns > built for p in paths):
             return None
-        h = hashlib.sha256(base_digest.encode())
-        h.update(" ".join(compile_args(entry)).encode())
-        for p in paths:
-            h.update(f"{p} {digests(p)}\n".encode())
+        return files_key(entry, paths, digests, base_digest, "d")
     except OSError:
         return None
-    return "d" + h.hexdigest()
+
+
+LINE_MARKER = re.compile(rb'^# \d+ "([^"<][^"]*)"', re.MULTILINE)
 
 
 def preprocessed_key(entry, clang, base_digest):
-    """The hash of the unit's preprocessed text (comments kept), flags and configuration, and the
-    text's size; (None, 0) if it does not preprocess (then clang-tidy runs and says why)."""
+    """The key of the unit's preprocessed text (comments kept), flags and configuration, and the
+    files the text came from (its line markers); (None, []) if it does not preprocess (then
+    clang-tidy runs and says why)."""
     r = subprocess.run(preprocess_args(entry, clang), cwd=entry["directory"], capture_output=True)
     if r.returncode != 0:
-        return None, 0
+        return None, []
     h = hashlib.sha256(base_digest.encode())
     h.update(" ".join(compile_args(entry)).encode())
     h.update(r.stdout)
-    return "p" + h.hexdigest(), len(r.stdout)
+    files = dict.fromkeys(os.path.join(entry["directory"], m.decode(errors="replace"))
+                          for m in LINE_MARKER.findall(r.stdout))
+    return "p" + h.hexdigest(), [f for f in files if os.path.isfile(f)]
+
+
+def manifest_path(cache_dir, entry):
+    """Where the files of the unit's last preprocessing are listed (one path a line)."""
+    name = hashlib.sha256((entry["file"] + " ".join(compile_args(entry))).encode()).hexdigest()
+    return os.path.join(cache_dir, "manifests", name)
+
+
+def unit_keys(args, entry, key, digests, base_digest, cache_dir):
+    """The unit's cache keys: the build's dependency list's (`key`) when it holds; else the key of
+    the files its last preprocessing read (the manifest) when that one is cached (none of them
+    has changed since: as ccache's direct mode); else its preprocessed text's and its files'
+    (the manifest written anew)."""
+    if key is not None:
+        return [key]
+    manifest = manifest_path(cache_dir, entry)
+    try:
+        with open(manifest) as f:
+            listed = f.read().splitlines()
+        mkey = files_key(entry, listed, digests, base_digest, "m")
+        if os.path.exists(os.path.join(cache_dir, mkey)):
+            return [mkey]
+    except OSError:
+        pass
+    pkey, files = preprocessed_key(entry, args.clang, base_digest)
+    if pkey is None:
+        return []
+    os.makedirs(os.path.dirname(manifest), exist_ok=True)
+    with open(manifest, "w") as f:
+        f.write("".join(p + "\n" for p in files))
+    try:
+        return [pkey, files_key(entry, files, digests, base_digest, "m")]
+    except OSError:
+        return [pkey]
 
 
 def unit_size(entry, deps):
@@ -199,14 +245,19 @@ def run_tidy(tidy, build, unit):
     return r.returncode, r.stdout + r.stderr, time.monotonic() - start
 
 
-def check_unit(args, build, entry, key, base_digest, cache_dir):
-    """(key, cached?, clang-tidy's exit status, output, seconds) of one unit; the key by the
-    preprocessed text when the build's dependency list gave none."""
-    if key is None:
-        key, _ = preprocessed_key(entry, args.clang, base_digest)
-    if key and not args.no_cache and os.path.exists(os.path.join(cache_dir, key)):
-        return key, True, 0, "", 0.0
-    return (key, False, *run_tidy(args.tidy, build, entry["file"]))
+def check_unit(args, build, entry, key, digests, base_digest, cache_dir):
+    """(the unit's keys, cached?, clang-tidy's exit status, output, seconds)."""
+    keys = unit_keys(args, entry, key, digests, base_digest, cache_dir)
+    if not args.no_cache and any(os.path.exists(os.path.join(cache_dir, k)) for k in keys):
+        return keys, True, 0, "", 0.0
+    return (keys, False, *run_tidy(args.tidy, build, entry["file"]))
+
+
+def remember(cache_dir, keys, unit):
+    """Records the unit as clean under each of its keys."""
+    for key in keys:
+        with open(os.path.join(cache_dir, key), "w") as f:
+            f.write(unit + "\n")
 
 
 def check_units(args, root, build, units, tracked, cache_dir):
@@ -226,13 +277,14 @@ def check_units(args, root, build, units, tracked, cache_dir):
     found, failed, checked, cached = {}, [], 0, 0
     log = open(os.path.join(build, "clang-tidy.log"), "w")
     with concurrent.futures.ThreadPoolExecutor(max(1, args.jobs)) as pool:
-        jobs = {pool.submit(check_unit, args, build, e, key, base, cache_dir): unit
+        jobs = {pool.submit(check_unit, args, build, e, key, digests, base, cache_dir): unit
                 for _, _, unit, e, key in todo}
         for done in concurrent.futures.as_completed(jobs):
             unit = jobs[done]
-            key, hit, rc, text, seconds = done.result()
-            if hit:
+            keys, hit, rc, text, seconds = done.result()
+            if hit:  # under each key (a preprocessed unit's files key: no preprocessing next time)
                 cached += 1
+                remember(cache_dir, keys, unit)
                 continue
             checked += 1
             log.write(f"=== {unit} (exit {rc}, {seconds:.0f} s)\n{text}\n")
@@ -241,9 +293,8 @@ def check_units(args, root, build, units, tracked, cache_dir):
             found.update(mine)
             if rc != 0 and not mine:
                 failed.append(unit)
-            elif not mine and key:
-                with open(os.path.join(cache_dir, key), "w") as f:
-                    f.write(unit + "\n")
+            elif not mine:
+                remember(cache_dir, keys, unit)
             status = f"{len(mine)} findings" if mine else ("FAILED" if rc != 0 else "clean")
             print(f"[{checked + cached}/{len(todo)}] {unit}: {status} ({seconds:.0f} s)", flush=True)
     return found, checked, cached, failed
