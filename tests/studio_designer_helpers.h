@@ -1,10 +1,13 @@
-// Helpers of the designer QtTests (studio_designer_test, studio_guided_test): shared photos and
-// models, drops of model files on the viewport, and points of the prepared scene.
+// Helpers of the designer QtTests (studio_designer_test, studio_guided_test): the walk-through's
+// window and record, shared photos and models, drops of model files on the viewport, and points
+// of the prepared scene.
 #pragma once
 
 #include "document.h"
 #include "main_window.h"
 #include "viewport.h"
+
+#include "studio_workflow_steps.h"
 
 #include "inlay/engine/pipeline.h"
 
@@ -25,6 +28,42 @@ namespace inlay::test {
 using studio::Document;
 using studio::MainWindow;
 using studio::Viewport;
+
+// A designer walk-through: the main window shown as for a user, the record of its steps
+// (screenshots and figures.csv in `artifacts`, a folder of the build tree) and the timings it
+// measures ("figure,milliseconds" rows). GUI thread only.
+struct DesignerWalk {
+  explicit DesignerWalk(const QString& artifacts) : log(artifacts) {}
+
+  // Shows the window, opens `photo` (the steps' clock restarted) and waits up to `timeoutMs`
+  // until its scene is estimated; records the step "photo_opened". Empty, or what went wrong.
+  QString openPhoto(const QString& photo, int timeoutMs) {
+    if (!showForWorkflow(window)) return QStringLiteral("the window was not exposed");
+    log.restart();
+    if (!window.openPath(photo)) return QStringLiteral("could not open ") + photo;
+    if (!waitReady(window.document(), timeoutMs)) {
+      const QString error = window.document()->prepareError();
+      return error.isEmpty() ? QStringLiteral("the scene was not ready in time") : error;
+    }
+    if (!log.step(&window, QStringLiteral("photo_opened")))
+      return QStringLiteral("the screenshot of photo_opened was not written");
+    return {};
+  }
+
+  // Writes figures.csv (the timings, then each step's seconds) and prints both; false when the
+  // file could not be written.
+  bool report() const {
+    const bool written = log.writeFigures(QStringLiteral("figures.csv"), timings);
+    qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
+    qInfo("steps (name, seconds since the photo was opened): %s",
+          qPrintable(log.steps().join(QStringLiteral("; "))));
+    return written;
+  }
+
+  StepLog log;
+  MainWindow window;
+  QStringList timings;
+};
 
 inline QString sharedFile(const QString& relative) {
   const QString shared = qEnvironmentVariable("INLAY_SHARED_DIR");

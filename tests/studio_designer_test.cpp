@@ -88,19 +88,14 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   const QString shelf = dir_.filePath(QStringLiteral("shelf.obj"));
   QVERIFY(writeText(shelf, concaveShelfObj()));
 
-  StepLog log(QStringLiteral("studio_designer_artifacts"));
-  MainWindow window;
-  QVERIFY(inlay::test::showForWorkflow(window));
+  // --- 1. Open the photo: the scene is estimated ---
+  DesignerWalk walk(QStringLiteral("studio_designer_artifacts"));
+  const QString opened = walk.openPhoto(photo, waitMs(180000));
+  QVERIFY2(opened.isEmpty(), qPrintable(opened));
+  MainWindow& window = walk.window;
   Document* doc = window.document();
   Viewport* view = window.viewport();
-  QStringList timings;
-  auto step = [&](const QString& name) { QVERIFY(log.step(&window, name)); };
-
-  // --- 1. Open the photo: the scene is estimated ---
-  log.restart();
-  QVERIFY(window.openPath(photo));
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  step(QStringLiteral("photo_opened"));
+  auto step = [&](const QString& name) { QVERIFY(walk.log.step(&window, name)); };
 
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());
@@ -110,7 +105,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY(window.insertModelFile(gltf));
   QVERIFY(waitNoPendingModels(window, waitMs(30000)));
   QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
-  timings << QStringLiteral("insert_gltf_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("insert_gltf_ms,%1").arg(clock.elapsed());
   QCOMPARE(doc->objectCount(), 1);
   const ObjectKeys& inserted = doc->scene().objects[0];
   QCOMPARE(QString::fromStdString(inserted.name), QFileInfo(gltf).completeBaseName());
@@ -141,7 +136,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   clock.restart();
   QVERIFY(dropUrl(view, shelf, view->widgetFromImage(*floorAt).toPoint()));
   QTRY_COMPARE_WITH_TIMEOUT(doc->objectCount(), 2, waitMs(30000));
-  timings << QStringLiteral("drop_obj_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("drop_obj_ms,%1").arg(clock.elapsed());
   const ObjectKeys& dropped = doc->scene().objects[1];
   QCOMPARE(QString::fromStdString(dropped.name), QStringLiteral("shelf"));
   QVERIFY((dropped.basePx - *floorAt).norm() < 2.0);  // within the widget-to-image rounding
@@ -174,7 +169,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   clock.restart();
   window.propertiesDock()->yawBox()->setValue(35.0);
   window.propertiesDock()->heightBox()->setValue(1.2);
-  timings << QStringLiteral("turn_and_scale_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("turn_and_scale_ms,%1").arg(clock.elapsed());
   QCOMPARE(doc->scene().objects[1].yawDeg, 35.0);
   QCOMPARE(doc->scene().objects[1].heightM, 1.2);
   QCOMPARE(doc->undoStack()->count(), beforeArrange + 2);
@@ -226,7 +221,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
            qPrintable(QString::number(doc->scene().objects[1].yawDeg)));
   QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
-  timings << QStringLiteral("turn_handle_to_frame_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("turn_handle_to_frame_ms,%1").arg(clock.elapsed());
   const double h0 = doc->scene().objects[1].heightM;
   const std::optional<QPointF> heightAt = view->handlePos(Viewport::Handle::Height);
   QVERIFY(heightAt);
@@ -237,7 +232,7 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
            qPrintable(QString::number(doc->scene().objects[1].heightM)));
   QCOMPARE(doc->undoStack()->count(), beforeGesture + 2);
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
-  timings << QStringLiteral("height_handle_to_frame_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("height_handle_to_frame_ms,%1").arg(clock.elapsed());
   step(QStringLiteral("handles_turned_and_raised"));
 
   // --- Dragged near a wall, the shelf stands with its back against it, facing into the room ---
@@ -279,25 +274,25 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
                  QStringLiteral("%1 m from the wall, the half depth is %2").arg(toWall).arg(halfDepth)));
     QCOMPARE(doc->undoStack()->count(), beforeGesture + 1);
     QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
-    timings << QStringLiteral("snap_drag_to_frame_ms,%1").arg(clock.elapsed());
+    walk.timings << QStringLiteral("snap_drag_to_frame_ms,%1").arg(clock.elapsed());
     step(QStringLiteral("snapped_to_wall"));
   }
 
   // --- Render the final image (full size, one sample per pixel here: the binary's time is
   // short; studio_guided_test renders more) and export the composite ---
   {
-    const QString finalPath = log.filePath(QStringLiteral("final.png"));
+    const QString finalPath = walk.log.filePath(QStringLiteral("final.png"));
     QFile::remove(finalPath);
     QSignalSpy finished(&window, &MainWindow::finalImageFinished);
     clock.restart();
     QVERIFY(window.renderFinalImage(finalPath, 1));
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
-    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
+    walk.timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
     QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
     QCOMPARE(QImage(finalPath).size(),
              QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
     step(QStringLiteral("final_rendered"));
-    const QString exported = log.filePath(QStringLiteral("composite.png"));
+    const QString exported = walk.log.filePath(QStringLiteral("composite.png"));
     QFile::remove(exported);
     QVERIFY(window.exportComposite(exported));
     QCOMPARE(QImage(exported).size(),
@@ -313,13 +308,13 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
     window.undoAction()->trigger();
     ++undone;
   }
-  timings << QStringLiteral("undo_all_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("undo_all_ms,%1").arg(clock.elapsed());
   QCOMPARE(doc->objectCount(), 0);
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent(), waitMs(30000));
   step(QStringLiteral("all_undone"));
   clock.restart();
   for (int i = 0; i < undone; ++i) doc->undoStack()->redo();
-  timings << QStringLiteral("redo_all_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("redo_all_ms,%1").arg(clock.elapsed());
   QVERIFY(inlay::test::waitReady(doc, waitMs(180000)));
   QCOMPARE(objectsJson(doc), arranged);
   QCOMPARE(int(doc->prepared()->placements.size()), 4);
@@ -337,11 +332,8 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   QVERIFY(doc->undoStack()->canUndo());
   step(QStringLiteral("dropped_while_preparing"));
 
-  QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
-  qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
-  qInfo("steps (name, seconds since the photo was opened): %s",
-        qPrintable(log.steps().join(QStringLiteral("; "))));
-  qInfo("screenshots: %s", qPrintable(log.shots().join(QStringLiteral(" "))));
+  QVERIFY(walk.report());
+  qInfo("screenshots: %s", qPrintable(walk.log.shots().join(QStringLiteral(" "))));
 }
 
 void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {

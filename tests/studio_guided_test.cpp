@@ -51,17 +51,13 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   const QString photo = sharedFile(QStringLiteral("york/P1020833.jpg"));
   if (photo.isEmpty()) QSKIP("skipped: ../shared/york not present (needs ../shared/york/P1020833.jpg)");
   QSettings().remove(QStringLiteral("guide/done"));
-  StepLog log(QStringLiteral("studio_guided_artifacts"));
-  MainWindow window;
-  QVERIFY(inlay::test::showForWorkflow(window));
+  DesignerWalk walk(QStringLiteral("studio_guided_artifacts"));
+  const QString opened = walk.openPhoto(photo, waitMs(180000));
+  QVERIFY2(opened.isEmpty(), qPrintable(opened));
+  MainWindow& window = walk.window;
   Document* doc = window.document();
   Viewport* view = window.viewport();
-  QStringList timings;
-  auto step = [&](const QString& name) { QVERIFY(log.step(&window, name)); };
-  log.restart();
-  QVERIFY(window.openPath(photo));
-  QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  step(QStringLiteral("photo_opened"));
+  auto step = [&](const QString& name) { QVERIFY(walk.log.step(&window, name)); };
 
   // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
   StepsDock* steps = window.stepsDock();
@@ -91,7 +87,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   QCOMPARE(steps->currentStep(), int(StepsDock::Objects));
   window.toolAction(int(Viewport::Tool::Select))->trigger();
   QVERIFY2(inlay::test::waitReady(doc, waitMs(180000)), qPrintable(doc->prepareError()));
-  timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("accept_box_and_light_prepared_ms,%1").arg(clock.elapsed());
   step(QStringLiteral("box_accepted_light_outlined"));
 
   // --- A library chair dragged onto the floor ---
@@ -111,7 +107,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   QVERIFY(waitNoPendingModels(window, waitMs(30000)));
   QVERIFY2(window.lastModelError().isEmpty(), qPrintable(window.lastModelError()));
   QCOMPARE(doc->objectCount(), 1);
-  timings << QStringLiteral("library_chair_drop_ms,%1").arg(clock.elapsed());
+  walk.timings << QStringLiteral("library_chair_drop_ms,%1").arg(clock.elapsed());
   QVERIFY(steps->isDone(StepsDock::Objects));
   QCOMPARE(steps->currentStep(), int(StepsDock::Export));
   QTRY_VERIFY_WITH_TIMEOUT(window.renderer()->isCurrent() && window.renderer()->frameInfo().spp >= 2,
@@ -120,7 +116,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
 
   // --- Render Final Image: the photo's full size, written atomically; then all steps are done ---
   {
-    const QString finalPath = log.filePath(QStringLiteral("final.png"));
+    const QString finalPath = walk.log.filePath(QStringLiteral("final.png"));
     QFile::remove(finalPath);
     QSignalSpy finished(&window, &MainWindow::finalImageFinished);
     clock.restart();
@@ -129,7 +125,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
     QVERIFY(!window.renderFinalAction()->isEnabled());
     QVERIFY(!window.renderFinalImage(finalPath, 8));  // one at a time
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(180000));
-    timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
+    walk.timings << QStringLiteral("render_final_ms,%1").arg(clock.elapsed());
     QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
     const QImage written(finalPath);
     QCOMPARE(written.size(), QSize(doc->prepared()->camera.widthPx, doc->prepared()->camera.heightPx));
@@ -172,7 +168,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
 
   // --- Export the composite ---
   {
-    const QString exported = log.filePath(QStringLiteral("composite.jpg"));
+    const QString exported = walk.log.filePath(QStringLiteral("composite.jpg"));
     QFile::remove(exported);
     QVERIFY(window.exportComposite(exported));
     QCOMPARE(QImage(exported).size(),
@@ -180,10 +176,7 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
     step(QStringLiteral("exported"));
   }
 
-  QVERIFY(log.writeFigures(QStringLiteral("figures.csv"), timings));
-  qInfo("timings: %s", qPrintable(timings.join(QStringLiteral("; "))));
-  qInfo("steps (name, seconds since the photo was opened): %s",
-        qPrintable(log.steps().join(QStringLiteral("; "))));
+  QVERIFY(walk.report());
 }
 
 QTEST_MAIN(StudioGuidedTest)

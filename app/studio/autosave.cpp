@@ -19,7 +19,7 @@ namespace inlay::studio {
 namespace {
 
 QString settingsFolder() {
-  const QString folder = QFileInfo(QSettings().fileName()).absolutePath();
+  QString folder = QFileInfo(QSettings().fileName()).absolutePath();
   QDir().mkpath(folder);
   return folder;
 }

@@ -93,7 +93,7 @@ void FinalRender::takeFrame() {
   if (frame->final) startSaving(frame);
 }
 
-void FinalRender::startSaving(std::shared_ptr<const RenderFrame> frame) {
+void FinalRender::startSaving(const std::shared_ptr<const RenderFrame>& frame) {
   struct Result {
     Status status;
     std::shared_ptr<const ImageF> image;

@@ -62,7 +62,7 @@ class FinalRender : public QObject {
  private:
   class Sink;
   Q_INVOKABLE void takeFrame();
-  void startSaving(std::shared_ptr<const RenderFrame> frame);
+  void startSaving(const std::shared_ptr<const RenderFrame>& frame);
   void finish(bool ok, const QString& message);
 
   QString path_;

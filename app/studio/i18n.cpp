@@ -30,9 +30,9 @@ QString installedTranslationsDir() { return QString::fromStdString(findDataDir("
 }  // namespace
 
 QString chosenLanguage() {
-  const QString env = qEnvironmentVariable("INLAY_LANG").trimmed();
+  QString env = qEnvironmentVariable("INLAY_LANG").trimmed();
   if (!env.isEmpty()) return env;
-  const QString setting = QSettings().value(QStringLiteral("language")).toString().trimmed();
+  QString setting = QSettings().value(QStringLiteral("language")).toString().trimmed();
   if (!setting.isEmpty() && setting != QLatin1String("system")) return setting;
   // "de_DE" -> "de": our catalogues are per language, not per country.
   return QLocale::system().name().section(QLatin1Char('_'), 0, 0);

@@ -100,6 +100,7 @@ struct Patch {
 
 Patch brightPatch(const std::vector<BoxPixel>& px, int W, int H, size_t surfaceCount) {
   std::vector<double> v;
+  v.reserve(px.size());
   for (const auto& p : px) v.push_back(p.logLum);
   double lo = 0, hi = 0;
   const double thr = detail::otsuThreshold(v, &lo, &hi);

@@ -15,6 +15,8 @@
 // tests/bench/bench_big_photo.py runs this and plots it.
 //   QT_QPA_PLATFORM=offscreen build/tests/bench/bench_big_photo [--out DIR] [--mp 0.3,3,12]
 //       [--gestures 15] [--photo P]
+#include "studio_bench.h"
+
 #include "document.h"
 #include "main_window.h"
 #include "render_controller.h"
@@ -29,7 +31,6 @@
 #include <QFile>
 #include <QImageReader>
 #include <QImageWriter>
-#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextStream>
@@ -41,14 +42,9 @@
 
 using namespace inlay;
 using namespace inlay::studio;
+using namespace inlay::bench;
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 double msSince(const QElapsedTimer& t) { return double(t.nsecsElapsed()) * 1e-6; }
 
@@ -102,25 +98,13 @@ std::vector<double> gestureToFrame(MainWindow& w, int gestures, std::vector<doub
       default: ok = doc->setObjectHeight(0, start.heightM * (1.0 + 0.02 * k), nullptr, drag); break;
     }
     if (!ok) continue;
-    const quint64 wanted = r->requestedVersion();
-    if (!waitFor([&] { return r->isCurrent() && r->frameInfo().sceneVersion >= wanted; }, 20000))
-      continue;
+    if (!waitForFrameOf(*r, r->requestedVersion(), 20000)) continue;
     w.viewport()->repaint();  // on screen
     ms.push_back(msSince(t));
     cpuMs.push_back(processCpuMs() - cpu0);
     QTest::qWait(40);  // a user's gestures come tens of milliseconds apart
   }
   return ms;
-}
-
-std::vector<double> paintTimes(MainWindow& w, int count) {
-  Viewport* view = w.viewport();
-  view->clearPaintTimes();
-  for (int k = 0; k < count; ++k) {
-    view->repaint();
-    QTest::qWait(5);
-  }
-  return view->paintTimesMs();
 }
 
 struct Row {
@@ -133,9 +117,7 @@ struct Row {
 // One photo: open, prepare, first frame, paints, gestures. False when it could not be prepared.
 bool measure(const QString& photo, double megapixels, int gestures, std::vector<Row>& rows) {
   MainWindow w;
-  w.setInteractive(false);
-  w.resize(1280, 800);
-  w.show();
+  showBenchWindow(w);
   if (!QTest::qWaitForWindowExposed(&w)) return false;
   Document* doc = w.document();
   QElapsedTimer t;
@@ -171,13 +153,10 @@ bool measure(const QString& photo, double megapixels, int gestures, std::vector<
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
-  QStandardPaths::setTestModeEnabled(true);
-  QCoreApplication::setOrganizationName(QStringLiteral("InlayBench"));
-  QCoreApplication::setApplicationName(QStringLiteral("bench_big_photo"));
+  setUpBenchApplication("bench_big_photo");
   QCommandLineParser parser;
   parser.addHelpOption();
-  const QCommandLineOption outOpt(QStringLiteral("out"), QStringLiteral("Output folder."),
-                                  QStringLiteral("dir"), QStringLiteral("tests/bench/out"));
+  const QCommandLineOption outOpt = outFolderOption();
   const QCommandLineOption mpOpt(QStringLiteral("mp"), QStringLiteral("Megapixels, comma-separated."),
                                  QStringLiteral("list"), QStringLiteral("0.3,3,12"));
   const QCommandLineOption gesturesOpt(QStringLiteral("gestures"), QStringLiteral("Gestures per photo."),
@@ -187,13 +166,11 @@ int main(int argc, char** argv) {
   parser.addOptions({outOpt, mpOpt, gesturesOpt, photoOpt});
   parser.process(app);
 
-  const std::string scene = exampleScenePath();
-  if (scene.empty()) {
+  const QString example = examplePhotoPath();
+  if (example.isEmpty()) {
     std::fprintf(stderr, "bench_big_photo: the example is not found\n");
     return 2;
   }
-  const QString example =
-      QFileInfo(QString::fromStdString(scene)).absoluteDir().filePath(QStringLiteral("photo.png"));
   QString photo = parser.value(photoOpt);
   if (photo.isEmpty()) {
     const QString york = qEnvironmentVariable("INLAY_SHARED_DIR", QStringLiteral("../shared")) +

@@ -20,6 +20,8 @@
 //
 // usage: bench_denoise SCENE.json OUT_DIR WIDTH HEIGHT REF_SPP MAX_SPP THREADS [MATERIALS]
 //   MATERIALS: comma-separated subset of diffuse,glossy,mirror,glass,glowing (default: all)
+#include "material_cases.h"
+
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/render/composite.h"
@@ -38,6 +40,8 @@
 #include <fstream>
 
 using namespace inlay;
+using inlay::bench::MaterialCase;
+using inlay::bench::materialCases;
 
 namespace {
 
@@ -51,28 +55,6 @@ double processCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
-
-struct MaterialCase {
-  const char* name;
-  Material material;
-};
-
-std::vector<MaterialCase> materialCases() {
-  auto make = [](Material::Kind k, Vec3 albedo, double roughness = 0.3) {
-    Material m;
-    m.kind = k;
-    m.albedo = albedo;
-    m.roughness = roughness;
-    return m;
-  };
-  Material glow = make(Material::Kind::Emissive, Vec3::Zero());
-  glow.emission = Vec3(3.0, 2.4, 1.6);
-  return {{"diffuse", make(Material::Kind::Diffuse, Vec3(0.7, 0.7, 0.7))},
-          {"glossy", make(Material::Kind::Glossy, Vec3(0.6, 0.1, 0.1), 0.3)},
-          {"mirror", make(Material::Kind::Mirror, Vec3(0.9, 0.9, 0.9))},
-          {"glass", make(Material::Kind::Glass, Vec3(1, 1, 1))},
-          {"glowing", glow}};
 }
 
 double rmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& region) {

@@ -21,6 +21,8 @@
 //
 // usage: bench_render SCENE.json OUT_DIR [WIDTH HEIGHT REF_SPP MAX_SPP [PARTS]]
 //   PARTS: comma-separated subset of bvh,throughput,convergence,session (default: all)
+#include "material_cases.h"
+
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/render/composite.h"
@@ -39,6 +41,8 @@
 #include <unistd.h>
 
 using namespace inlay;
+using inlay::bench::MaterialCase;
+using inlay::bench::materialCases;
 
 namespace {
 
@@ -52,28 +56,6 @@ double residentMb() {
   long pages = 0, resident = 0;
   statm >> pages >> resident;
   return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
-
-struct MaterialCase {
-  const char* name;
-  Material material;
-};
-
-std::vector<MaterialCase> materialCases() {
-  auto make = [](Material::Kind k, Vec3 albedo, double roughness = 0.3) {
-    Material m;
-    m.kind = k;
-    m.albedo = albedo;
-    m.roughness = roughness;
-    return m;
-  };
-  Material glow = make(Material::Kind::Emissive, Vec3::Zero());
-  glow.emission = Vec3(3.0, 2.4, 1.6);
-  return {{"diffuse", make(Material::Kind::Diffuse, Vec3(0.7, 0.7, 0.7))},
-          {"glossy", make(Material::Kind::Glossy, Vec3(0.6, 0.1, 0.1), 0.3)},
-          {"mirror", make(Material::Kind::Mirror, Vec3(0.9, 0.9, 0.9))},
-          {"glass", make(Material::Kind::Glass, Vec3(1, 1, 1))},
-          {"glowing", glow}};
 }
 
 ImageF compositeFrom(const ImageF& photo, const DifferentialBuffers& withBuf,

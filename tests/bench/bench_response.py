@@ -249,14 +249,7 @@ def plot(path, summary, rows, chosen):
 
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
-    train = os.path.join(benchlib.shared_dir(), "scenes-train")
-    if not os.path.isdir(train):
-        print("skipped: no ../shared/scenes-train")
-        return 0
-    os.makedirs(out, exist_ok=True)
-    rooms = sorted(d for d in os.listdir(train) if os.path.isfile(os.path.join(train, d, "truth.json")))
-    if opt("--rooms", ""):
-        rooms = [r for r in rooms if r in opt("--rooms", "").split(",")]
+    train, _, rooms = benchlib.train_rooms(opt, out)
     seeds = opt("--seeds", "1,2,3").split(",") + ["plain"]
     cues = opt("--cues", "symmetry,colour,both").split(",")
     priors = [float(p) for p in opt("--priors", "0.02,0.2,2").split(",")]

@@ -116,16 +116,8 @@ def plot(path, rows):
 
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
-    train = os.path.join(benchlib.shared_dir(), "scenes-train")
-    if not os.path.isdir(train):
-        print("skipped: no ../shared/scenes-train")
-        return 0
+    train, harness, rooms = benchlib.train_rooms(opt, out)
     import cv2
-    os.makedirs(out, exist_ok=True)
-    harness = os.path.join(benchlib.shared_dir(), "tools", "harness.py")
-    rooms = sorted(d for d in os.listdir(train) if os.path.isfile(os.path.join(train, d, "truth.json")))
-    if opt("--rooms", ""):
-        rooms = [r for r in rooms if r in opt("--rooms", "").split(",")]
     candidates = ["srgb", "true"] + opt("--family", FAMILY).split(",")
     variants = br.make_variants(train, rooms, opt("--seeds", "1").split(","), os.path.join(out, "variants"))
     rows = []

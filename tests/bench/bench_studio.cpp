@@ -8,6 +8,8 @@
 // Each figure is the median over --runs runs. Writes bench_studio.csv (one row per sample) and
 // bench_studio.png (the samples against their index) into --out.
 //   QT_QPA_PLATFORM=offscreen build/tests/bench/bench_studio [--out DIR] [--runs 5] [--photo P]
+#include "studio_bench.h"
+
 #include "document.h"
 #include "main_window.h"
 #include "render_controller.h"
@@ -21,7 +23,6 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QPainter>
-#include <QStandardPaths>
 #include <QTest>
 #include <QTextStream>
 
@@ -31,14 +32,9 @@
 
 using namespace inlay;
 using namespace inlay::studio;
+using namespace inlay::bench;
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 void waitPrepared(Document* doc) {
   QElapsedTimer t;
@@ -53,13 +49,7 @@ std::vector<double> paintWhileRendering(MainWindow& w, int count) {
   const Vec2 base = doc->scene().objects[0].basePx;
   doc->moveObject(0, base + Vec2(1, 0));
   doc->moveObject(0, base);
-  Viewport* view = w.viewport();
-  view->clearPaintTimes();
-  for (int k = 0; k < count; ++k) {
-    view->repaint();
-    QTest::qWait(5);
-  }
-  return view->paintTimesMs();
+  return paintTimes(w, count);
 }
 
 // Milliseconds from each move to the first composite of that move.
@@ -73,9 +63,7 @@ std::vector<double> firstFrameAfterMoves(MainWindow& w, int moves) {
     QElapsedTimer t;
     t.start();
     if (!doc->moveObject(0, base + Vec2(-3.0 * k, 0.5 * k), drag)) break;
-    const quint64 wanted = r->requestedVersion();
-    while (!(r->isCurrent() && r->frameInfo().sceneVersion >= wanted) && t.elapsed() < 10000)
-      QTest::qWait(1);
+    waitForFrameOf(*r, r->requestedVersion(), 10000);
     ms.push_back(double(t.nsecsElapsed()) * 1e-6);
     QTest::qWait(30);  // a user's mouse moves come every few tens of milliseconds
   }
@@ -126,13 +114,10 @@ void plot(const std::map<QString, std::vector<double>>& series, const QString& p
 
 int main(int argc, char** argv) {
   QApplication app(argc, argv);
-  QStandardPaths::setTestModeEnabled(true);
-  QCoreApplication::setOrganizationName(QStringLiteral("InlayBench"));
-  QCoreApplication::setApplicationName(QStringLiteral("bench_studio"));
+  setUpBenchApplication("bench_studio");
   QCommandLineParser parser;
   parser.addHelpOption();
-  const QCommandLineOption outOpt(QStringLiteral("out"), QStringLiteral("Output folder."),
-                                  QStringLiteral("dir"), QStringLiteral("tests/bench/out"));
+  const QCommandLineOption outOpt = outFolderOption();
   const QCommandLineOption runsOpt(QStringLiteral("runs"), QStringLiteral("Runs."), QStringLiteral("n"),
                                    QStringLiteral("5"));
   const QCommandLineOption photoOpt(QStringLiteral("photo"), QStringLiteral("Photo."),
@@ -140,22 +125,17 @@ int main(int argc, char** argv) {
   parser.addOptions({outOpt, runsOpt, photoOpt});
   parser.process(app);
   QString photo = parser.value(photoOpt);
+  if (photo.isEmpty()) photo = examplePhotoPath();
   if (photo.isEmpty()) {
-    const std::string scene = exampleScenePath();
-    if (scene.empty()) {
-      std::fprintf(stderr, "bench_studio: the example is not found\n");
-      return 2;
-    }
-    photo = QFileInfo(QString::fromStdString(scene)).absoluteDir().filePath(QStringLiteral("photo.png"));
+    std::fprintf(stderr, "bench_studio: the example is not found\n");
+    return 2;
   }
   const int runs = std::max(1, parser.value(runsOpt).toInt());
   QDir().mkpath(parser.value(outOpt));
   const QDir out(parser.value(outOpt));
 
   MainWindow w;
-  w.setInteractive(false);
-  w.resize(1280, 800);
-  w.show();
+  showBenchWindow(w);
   if (!w.openPath(photo)) return 2;
   waitPrepared(w.document());
   if (!w.document()->isReady() || !w.insertBuiltin(QStringLiteral("builtin:sphere"))) {

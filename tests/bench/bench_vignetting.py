@@ -207,15 +207,7 @@ def plot(path, rows, readings):
 
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
-    train = os.path.join(benchlib.shared_dir(), "scenes-train")
-    if not os.path.isdir(train):
-        print("skipped: no ../shared/scenes-train")
-        return 0
-    os.makedirs(out, exist_ok=True)
-    harness = os.path.join(benchlib.shared_dir(), "tools", "harness.py")
-    rooms = sorted(d for d in os.listdir(train) if os.path.isfile(os.path.join(train, d, "truth.json")))
-    if opt("--rooms", ""):
-        rooms = [r for r in rooms if r in opt("--rooms", "").split(",")]
+    train, harness, rooms = benchlib.train_rooms(opt, out)
     seeds = opt("--seeds", "1").split(",")
     readings = opt("--readings", ",".join(READINGS)).split(",")
     seconds = float(opt("--seconds", "10"))

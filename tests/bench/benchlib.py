@@ -78,6 +78,23 @@ def scene_rooms(only, out):
     return sdir, harness, names
 
 
+def train_rooms(opt, out):
+    """(scenes-train folder, harness.py, the room names with a truth.json, only those named in
+    the comma-separated --rooms option when given), with the output folder `out` made; prints
+    "skipped" and exits 0 when ../shared/scenes-train is absent (a user's clone). For the
+    scripts that re-photograph each room through random cameras (camera_variants.py)."""
+    train = os.path.join(shared_dir(), "scenes-train")
+    if not os.path.isdir(train):
+        print("skipped: no ../shared/scenes-train")
+        sys.exit(0)
+    os.makedirs(out, exist_ok=True)
+    harness = os.path.join(shared_dir(), "tools", "harness.py")
+    rooms = sorted(d for d in os.listdir(train) if os.path.isfile(os.path.join(train, d, "truth.json")))
+    if opt("--rooms", ""):
+        rooms = [r for r in rooms if r in opt("--rooms", "").split(",")]
+    return train, harness, rooms
+
+
 def harness_baselines(harness, sdir):
     """The harness's uniform-object baseline scores, by room name."""
     out = subprocess.run([sys.executable, harness, "baselines", sdir], capture_output=True, text=True,

@@ -6,6 +6,8 @@
 # as crash-<what> once fixed: ctest replays it from then on.
 #
 # usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET (default 60)] [TARGET...]
+# Environment: CMAKE_CXX_COMPILER_LAUNCHER (e.g. ccache), INLAY_WERROR=ON (warnings fail the build,
+# as in CI's GCC trees: the Clang build is kept warning-clean with the same flags).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
@@ -15,7 +17,8 @@ if [ ${#targets[@]} -eq 0 ]; then targets=(scene_file mesh_obj mesh_ply mesh_glt
 
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON \
   -DBUILD_APP=OFF -DINLAY_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_COMPILER=clang \
-  ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} >/dev/null
+  ${CMAKE_CXX_COMPILER_LAUNCHER:+-DCMAKE_CXX_COMPILER_LAUNCHER=$CMAKE_CXX_COMPILER_LAUNCHER} \
+  ${INLAY_WERROR:+-DINLAY_WERROR=$INLAY_WERROR} >/dev/null
 cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
 
 summary=build-fuzz/fuzz_summary.csv

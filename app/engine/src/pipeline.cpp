@@ -204,7 +204,7 @@ Expected<std::vector<std::optional<Material>>> roomMaterialsOf(const RoomKeys& k
   std::vector<std::optional<Material>> out(room.surfaces.size());
   for (const auto& [name, k] : keys.materials) {
     const auto it = std::find_if(room.surfaces.begin(), room.surfaces.end(),
-                                 [&](const Surface& s) { return s.name == name; });
+                                 [&wanted = name](const Surface& s) { return s.name == wanted; });
     if (it == room.surfaces.end())
       return Error{"", "room.materials." + name, "this room has no surface '" + name + "'"};
     if (k.preset == "diffuse") continue;

@@ -69,7 +69,7 @@ class EdgeRefiner {
       const Vec2 p = a + s * t;
       std::array<double, kSteps> prof;
       for (int j = 0; j < kSteps; ++j) {
-        const Vec2 q = p + (j - kSteps / 2) * kStep * n;
+        const Vec2 q = p + (j - kCentre) * kStep * n;
         prof[j] = sample(gx_, q) * n.x() + sample(gy_, q) * n.y();
       }
       int best = 1;
@@ -79,7 +79,7 @@ class EdgeRefiner {
                    y2 = polarity * prof[best + 1];
       const double curv = y0 - 2 * y1 + y2;
       if (!(y1 > kMinGradient) || !(curv < 0)) continue;
-      const double off = (best - kSteps / 2 + 0.5 * (y0 - y2) / curv) * kStep;
+      const double off = (best - kCentre + 0.5 * (y0 - y2) / curv) * kStep;
       pts.push_back(p + off * n);
       w.push_back(y1);
     }
@@ -100,9 +100,10 @@ class EdgeRefiner {
   }
 
  private:
-  static constexpr int kSteps = 9;           // profile samples across the segment
-  static constexpr double kStep = 0.5;       // pixels between them: +-2 px
-  static constexpr double kMinGradient = 8;  // one grey level per pixel (Sobel 3 x 3 gains 8)
+  static constexpr int kSteps = 9;            // profile samples across the segment
+  static constexpr int kCentre = kSteps / 2;  // the sample on the segment (kSteps is odd)
+  static constexpr double kStep = 0.5;        // pixels between them: +-2 px
+  static constexpr double kMinGradient = 8;   // one grey level per pixel (Sobel 3 x 3 gains 8)
 
   static double sample(const cv::Mat& m, const Vec2& q) {
     const double x = std::clamp(q.x(), 0.0, m.cols - 1.001), y = std::clamp(q.y(), 0.0, m.rows - 1.001);

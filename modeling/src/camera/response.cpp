@@ -366,7 +366,7 @@ struct Fit {
 };
 
 // Nelder-Mead from `start` (a few hundred evaluations at most).
-Vec3 nelderMead(const Fit& f, Vec3 start, double& value, const CancelToken* cancel,
+Vec3 nelderMead(const Fit& f, const Vec3& start, double& value, const CancelToken* cancel,
                 const std::function<void(double)>& improved) {
   std::array<Vec3, 4> p;
   std::array<double, 4> v;

@@ -137,6 +137,7 @@ cv::Mat labelsFromStrokes(const StrokeMasks& m, const Strokes& bg, const cv::Rec
     const double closeGap = std::max(8.0, 4.0 * radius + 2.0);
     if ((stroke.front() - stroke.back()).norm() > closeGap) continue;
     std::vector<cv::Point> poly;
+    poly.reserve(stroke.size());
     for (const Vec2& q : stroke)
       poly.emplace_back(int(std::floor(q.x())) - roi.x, int(std::floor(q.y())) - roi.y);
     cv::fillPoly(inside, std::vector<std::vector<cv::Point>>{poly}, cv::Scalar(255));

@@ -582,6 +582,7 @@ void addObjFacesWithAttributes(TriangleMesh& m, const ObjData& d, ObjAttributes 
   };
   for (const auto& face : d.faces) {
     std::vector<uint32_t> ids;
+    ids.reserve(face.size());
     for (const ObjCorner& c : face) ids.push_back(vertexOf(c));
     addFace(m, ids);
   }
@@ -597,6 +598,7 @@ TriangleMesh readObj(const std::string& text, const std::string& path, const Mes
     m.positions = std::move(d.v);
     for (const auto& face : d.faces) {
       std::vector<uint32_t> ids;
+      ids.reserve(face.size());
       for (const ObjCorner& c : face) ids.push_back(uint32_t(c.v));
       addFace(m, ids);
     }
@@ -792,7 +794,7 @@ PlyHeader readPlyHeader(const std::string& data) {
   if (data.compare(0, 3, "ply") != 0 || data.size() < 4 || (data[3] != '\n' && data[3] != '\r'))
     fail("header", "not a PLY file (missing 'ply' magic)");
   const size_t endHeader = data.find("end_header");
-  if (endHeader == std::string::npos || endHeader > (1 << 20)) fail("header", "no 'end_header' line");
+  if (endHeader > (1 << 20)) fail("header", "no 'end_header' line");  // not found: npos
   PlyHeader h;
   h.bodyPos = data.find('\n', endHeader);
   if (h.bodyPos == std::string::npos) h.bodyPos = data.size();

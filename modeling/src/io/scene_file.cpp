@@ -216,7 +216,7 @@ Eigen::Matrix<double, N, 1> vec(const json& j, const std::string& path) {
   return v;
 }
 Vec3 nonNegativeRgb(const json& j, const std::string& path) {
-  const Vec3 v = vec<3>(j, path);
+  Vec3 v = vec<3>(j, path);
   for (int i = 0; i < 3; ++i)
     if (v[i] < 0) fail(child(path, size_t(i)), "must be >= 0");
   return v;

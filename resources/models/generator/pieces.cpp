@@ -48,7 +48,7 @@ Affine rotX(float deg) { return Affine(Eigen::AngleAxisf(deg * kDeg, Vec3f::Unit
 class PieceBuilder {
  public:
   PieceBuilder(std::string name, std::string title, std::string category, std::string note,
-               Vec3f nominal) {
+               const Vec3f& nominal) {
     piece_.name = std::move(name), piece_.title = std::move(title),
     piece_.category = std::move(category);
     piece_.materialNote = std::move(note), piece_.nominalSizeM = nominal;

@@ -91,7 +91,7 @@ Eigen::Vector2f edgeNormal(const std::vector<Eigen::Vector2f>& profile, size_t e
 // edge's own at a crease.
 Eigen::Vector2f profileNormal(const std::vector<Eigen::Vector2f>& profile, size_t edge, size_t point,
                               float creaseCos) {
-  const Eigen::Vector2f own = edgeNormal(profile, edge);
+  Eigen::Vector2f own = edgeNormal(profile, edge);           // not const: returned by move
   const size_t other = point == edge ? edge - 1 : edge + 1;  // the neighbouring edge at `point`
   if ((point == edge && edge == 0) || (point != edge && edge + 2 >= profile.size())) return own;
   if ((profile[other + 1] - profile[other]).squaredNorm() <= 0.f) return own;
@@ -118,7 +118,7 @@ TriangleMesh lathe(const std::vector<Eigen::Vector2f>& profile, int sides, float
   for (const auto& p : profile) rMax = std::max(rMax, p.x());
   float along = 0.f;  // arc length up the profile: the v texture coordinate
   for (size_t e = 0; e + 1 < profile.size(); ++e) {
-    const Eigen::Vector2f p0 = profile[e], p1 = profile[e + 1];
+    const Eigen::Vector2f &p0 = profile[e], &p1 = profile[e + 1];
     const float length = (p1 - p0).norm();
     if (length <= 0.f || (p0.x() <= 0.f && p1.x() <= 0.f)) continue;
     // One ring per end of this edge (its own normals: creases stay sharp, smooth ones agree).
