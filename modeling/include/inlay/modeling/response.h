@@ -99,16 +99,33 @@ struct ResponseEstimateOptions {
   //     symmetric lens/pixel blur of a step), which a wrong curve bends (works for grey edges);
   //   Colour: the pixels across an edge are mixtures of its two colours, on a line in linear
   //     RGB, which a wrong curve bends (Lin, Gu, Yamazaki, Shum 2004; needs coloured edges);
-  //   Both: the sum of the two.
-  enum class Cue { Symmetry, Colour, Both };
-  Cue cue = Cue::Colour;  // chosen by bench_response.py (docs/camera-response.md)
-  // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
-  // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
-  double priorWeight = 2.0;  // chosen on half A by bench_response.py
-  int minEdges = 8;          // fewer clean edges: sRGB with a warning
-  // The fitted curve is kept only when it lowers the edges' residual by at least this fraction
-  // of sRGB's; otherwise sRGB (the edges show no curve clearly different from it).
-  double minImprovement = 0.1;
+  //   Both: the sum of the two;
+  //   Noise: the photo's noise level against its codes is a power law of the linear radiance
+  //     (shot noise, or a renderer's sampling noise), which a wrong curve bends (Matsushita and
+  //     Lin 2007); needs flat regions over a range of codes and measurable noise.
+  enum class Cue { Symmetry, Colour, Both, Noise };
+  Cue cue = Cue::Noise;  // chosen on half A by bench_response.py (docs/camera-response.md)
+  // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
+  // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
+  // half A by bench_response.py).
+  std::optional<double> priorWeight;
+  // The same for toe and shoulder (a Gaussian prior on toe / 0.25 and log(1 + shoulder) / 1.5).
+  // Unset: edge cues as priorWeight, noise 0 (the noise cue sees toes and shoulders; the power
+  // hardly).
+  std::optional<double> shapePriorWeight;
+  int minEdges = 8;  // fewer clean edges: sRGB with a warning
+  // The fitted curve is kept only when it lowers the cue's residual by at least this fraction
+  // of sRGB's; otherwise sRGB (the photo shows no curve clearly different from it). Unset: the
+  // cue's default (edge cues 0.1, noise 0.5).
+  std::optional<double> minImprovement;
+  // The three numbers above with the cue's defaults filled in.
+  double priorWeightOrDefault() const { return priorWeight.value_or(cue == Cue::Noise ? 0.1 : 2.0); }
+  double shapePriorWeightOrDefault() const {
+    return shapePriorWeight.value_or(cue == Cue::Noise ? 0.0 : priorWeightOrDefault());
+  }
+  double minImprovementOrDefault() const {
+    return minImprovement.value_or(cue == Cue::Noise ? 0.5 : 0.1);
+  }
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
@@ -120,7 +137,8 @@ struct ResponseEstimate {
   CameraResponse response;  // sRGB when undetermined
   bool determined = false;  // false: the photo could not determine it (see warnings)
   std::vector<std::string> warnings;
-  int edgesUsed = 0;  // clean edges the fit used
+  int edgesUsed = 0;  // clean edges the fit used (edge cues)
+  int noiseBins = 0;  // code bins of the measured noise level (noise cue)
   int segmentsFound = 0;
   double objective = 0;      // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;  // the same for plain sRGB
