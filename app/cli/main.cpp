@@ -348,11 +348,14 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
       return st.error();
   if (!progress.quiet()) {
     const auto& e = prepared->responseEstimate;
-    std::fprintf(stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
-                 e ? (" (estimated from " + std::to_string(e->edgesUsed) + " edges in " +
-                      std::to_string(int(std::lround(1000 * e->seconds))) + " ms)")
-                         .c_str()
-                   : " (camera.response)");
+    std::fprintf(
+        stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
+        e ? (" (estimated from " +
+             (e->noiseBins > 0 ? "the photo's noise at " + std::to_string(e->noiseBins) + " levels"
+                               : std::to_string(e->edgesUsed) + " edges") +
+             " in " + std::to_string(int(std::lround(1000 * e->seconds))) + " ms)")
+                .c_str()
+          : " (camera.response)");
   }
   return prepared;
 }

@@ -26,7 +26,9 @@ struct BlockPoint {
 // max(8, 10 % of the mean), none near clipping.
 void flatBlocksOf(const std::vector<unsigned char>& codes, int W, int H, int c,
                   std::vector<BlockPoint>& out) {
-  auto at = [&](int x, int y) { return double(codes[(size_t(y) * size_t(W) + size_t(x)) * 3 + size_t(c)]); };
+  auto at = [&](int x, int y) {
+    return double(codes[(size_t(y) * size_t(W) + size_t(x)) * 3 + size_t(c)]);
+  };
   for (int by = 1; by + kBlock < H; by += kBlock)
     for (int bx = 1; bx + kBlock < W; bx += kBlock) {
       double lo = 1e9, hi = -1e9, sum = 0, sum2 = 0;
@@ -67,10 +69,12 @@ NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int
   if (W > kBlock + 2 && H > kBlock + 2 && codes.size() >= size_t(W) * size_t(H) * 3)
     for (int c = 0; c < 3; ++c) flatBlocksOf(codes, W, H, c, points);
   out.flatBlocks = int(points.size());
-  std::sort(points.begin(), points.end(), [](const BlockPoint& a, const BlockPoint& b) { return a.code < b.code; });
+  std::sort(points.begin(), points.end(),
+            [](const BlockPoint& a, const BlockPoint& b) { return a.code < b.code; });
   const int bins = std::min(kMaxBins, int(points.size()) / kMinBlocksPerBin);
   for (int b = 0; b < bins; ++b) {
-    const size_t i0 = points.size() * size_t(b) / size_t(bins), i1 = points.size() * size_t(b + 1) / size_t(bins);
+    const size_t i0 = points.size() * size_t(b) / size_t(bins),
+                 i1 = points.size() * size_t(b + 1) / size_t(bins);
     std::vector<double> code, sigma;
     for (size_t i = i0; i < i1; ++i) code.push_back(points[i].code), sigma.push_back(points[i].sigma);
     out.bins.push_back({medianOf(code), medianOf(sigma), int(i1 - i0)});
@@ -127,7 +131,8 @@ double noiseLevelResidual(const NoiseLevel& level, const std::array<double, 256>
     v[i] = slope * slope * s * s;
   }
   // Scale both to at most 1 (the fit is scale-free; this keeps the matrix well conditioned).
-  const double xMax = *std::max_element(x.begin(), x.end()), vMax = *std::max_element(v.begin(), v.end());
+  const double xMax = *std::max_element(x.begin(), x.end()),
+               vMax = *std::max_element(v.begin(), v.end());
   for (size_t i = 0; i < n; ++i) x[i] /= xMax, v[i] = std::max(v[i] / vMax, 1e-12);
   const double r = bestQuadraticFit(x, v);
   return std::isfinite(r) ? r : 10.0;  // no admissible fit: as bad as it gets
