@@ -18,7 +18,8 @@
 // Parameters are clamped to ResponseParams' bounds, where f stays finite and strictly
 // monotone (f^-1 of every 8-bit code is a distinct finite float).
 //
-// estimateResponse() finds the toe_shoulder parameters from the photo's own edges (see there).
+// estimateResponse() finds the toe_shoulder parameters from the photo's own edges or its noise
+// level (see there).
 // Thread-safe: a CameraResponse is an immutable value.
 #pragma once
 
@@ -100,11 +101,15 @@ struct ResponseEstimateOptions {
   //   Colour: the pixels across an edge are mixtures of its two colours, on a line in linear
   //     RGB, which a wrong curve bends (Lin, Gu, Yamazaki, Shum 2004; needs coloured edges);
   //   Both: the sum of the two;
-  //   Noise: the photo's noise level against its codes is a power law of the linear radiance
-  //     (shot noise, or a renderer's sampling noise), which a wrong curve bends (Matsushita and
-  //     Lin 2007); needs flat regions over a range of codes and measurable noise.
+  //   Noise: the photo's noise variance, decoded, is a non-negative quadratic a + b x + c x^2
+  //     of the linear radiance (read, shot and gain or sampling noise), which a wrong curve
+  //     bends (Matsushita and Lin 2007); needs flat regions over a range of codes and
+  //     measurable noise.
   enum class Cue { Symmetry, Colour, Both, Noise };
-  Cue cue = Cue::Noise;  // chosen on half A by bench_response.py (docs/camera-response.md)
+  // The colour edges: the noise cue halves the curve error on the training cameras but its
+  // false shoulders on rendered photos ruin the inserted object (docs/camera-response.md), so
+  // it is not the default.
+  Cue cue = Cue::Colour;
   // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
   // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
   // half A by bench_response.py).
@@ -150,11 +155,13 @@ struct ResponseEstimate {
 };
 
 // The response of an 8/16-bit photo read as sRGB (`srgbDecodedRgb`: LoadedImage::linearRgb of
-// such a file), from its straight edges alone: line segments are found (lines.h), each
-// segment's pixels within 4 px are kept when both sides are flat, unclipped and differ, and the
+// such a file), from the photo alone. Edge cues: line segments are found (lines.h), each
+// segment's pixels within 4 px are kept when both sides are flat, unclipped and differ. Noise
+// cue: the noise level of flat 8 x 8 blocks against their codes (noise_level.h). The
 // toe_shoulder parameters minimise the chosen cue's residual plus the prior (a grid, then
 // Nelder-Mead). Undetermined (returns sRGB, determined false, a warning saying why): a nearly
-// flat or nearly binary photo, one mostly clipped, or fewer than minEdges clean edges.
+// flat or nearly binary photo, one mostly clipped, fewer than minEdges clean edges (edge cues),
+// or too few flat regions or no measurable noise (noise cue).
 ResponseEstimate estimateResponse(const ImageF& srgbDecodedRgb,
                                   const ResponseEstimateOptions& options = {});
 
