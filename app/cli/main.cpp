@@ -41,9 +41,9 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
-  inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue symmetry|colour|both] [--prior W]
+  inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
                                                      the camera response (camera.response, or
-                                                     estimated from the photo's edges): family,
+                                                     estimated from the photo): family,
                                                      parameters, warnings and the 256 codes'
                                                      linear values; --cue and --prior tune the
                                                      estimate (diagnostics)
@@ -128,7 +128,7 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo, cue = "colour", report;
+  std::string lightsJson, replaceLights, replaceAlbedo, cue, report;  // cue: empty = the default
   std::optional<double> prior, minImprovement;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
@@ -348,11 +348,14 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
       return st.error();
   if (!progress.quiet()) {
     const auto& e = prepared->responseEstimate;
-    std::fprintf(stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
-                 e ? (" (estimated from " + std::to_string(e->edgesUsed) + " edges in " +
-                      std::to_string(int(std::lround(1000 * e->seconds))) + " ms)")
-                         .c_str()
-                   : " (camera.response)");
+    std::fprintf(
+        stderr, "inlay-cli: camera response: %s%s\n", prepared->response.describe().c_str(),
+        e ? (" (estimated from " +
+             (e->noiseBins > 0 ? "the photo's noise at " + std::to_string(e->noiseBins) + " levels"
+                               : std::to_string(e->edgesUsed) + " edges") +
+             " in " + std::to_string(int(std::lround(1000 * e->seconds))) + " ms)")
+                .c_str()
+          : " (camera.response)");
   }
   return prepared;
 }
@@ -628,16 +631,26 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
   return 0;
 }
 
+const char* cueName(ResponseEstimateOptions::Cue cue) {
+  using Cue = ResponseEstimateOptions::Cue;
+  return cue == Cue::Noise      ? "noise"
+         : cue == Cue::Symmetry ? "symmetry"
+         : cue == Cue::Colour   ? "colour"
+                                : "both";
+}
+
 // RESPONSE.json: the camera response of a scene's photo (its camera.response, estimated when
 // "auto") or of a bare photo (estimated), with the 256 codes' linear values.
 int commandResponse(const std::string& input, const Args& a) {
   if (a.output.empty()) return usageError("response needs -o RESPONSE.json");
   ResponseEstimateOptions o;
   o.cancel = &gCancel;
-  if (a.cue == "symmetry") o.cue = ResponseEstimateOptions::Cue::Symmetry;
+  if (a.cue.empty()) {
+  } else if (a.cue == "symmetry") o.cue = ResponseEstimateOptions::Cue::Symmetry;
   else if (a.cue == "colour") o.cue = ResponseEstimateOptions::Cue::Colour;
   else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
-  else return usageError("--cue " + a.cue + ": expected 'symmetry', 'colour' or 'both'");
+  else if (a.cue == "noise") o.cue = ResponseEstimateOptions::Cue::Noise;
+  else return usageError("--cue " + a.cue + ": expected 'noise', 'symmetry', 'colour' or 'both'");
   if (a.prior) o.priorWeight = *a.prior;
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
   if (!a.evaluateAt.empty()) {
@@ -682,9 +695,12 @@ int commandResponse(const std::string& input, const Args& a) {
     for (const auto& [sec, obj] : e.history) history.push_back({sec, obj});
     j["estimate"] = {{"determined", e.determined},
                      {"decision", e.decision},
-                     {"cue", a.cue},
-                     {"prior_weight", o.priorWeight},
+                     {"cue", cueName(o.cue)},
+                     {"prior_weight", o.priorWeightOrDefault()},
+                     {"shape_prior_weight", o.shapePriorWeightOrDefault()},
+                     {"min_improvement", o.minImprovementOrDefault()},
                      {"edges_used", e.edgesUsed},
+                     {"noise_bins", e.noiseBins},
                      {"segments_found", e.segmentsFound},
                      {"objective", e.objective},
                      {"srgb_objective", e.srgbObjective},

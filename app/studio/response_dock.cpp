@@ -96,7 +96,12 @@ void ResponseDock::refresh() {
   curve_->setResponse(prepared->response);
   QString text = QString::fromStdString(prepared->response.describe());
   if (const auto& e = prepared->responseEstimate) {
-    text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
+    if (e->noiseBins > 0)
+      text += tr("\nEstimated from the photo's noise (%1 levels) in %2 ms.")
+                  .arg(e->noiseBins)
+                  .arg(qRound(1000 * e->seconds));
+    else
+      text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
     if (e->determined && e->decision != "fitted")
       text += QStringLiteral("\n") + QString::fromStdString(e->decision);
     for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);

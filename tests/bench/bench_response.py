@@ -17,10 +17,12 @@ all three channels, clipped code 255 left out).
 --harness N (instead of the curves): harness.py's object RMSE of the first N half-B variants
 rendered (--seconds S, default 20) with camera.response "srgb", "auto" and the true curve's
 nearest toe_shoulder member, and the last again on the same camera with its vignetting off
-(does vignetting matter once the curve is right?), to OUT/response_harness.csv.
+(does vignetting matter once the curve is right?), and the rooms' plain photos with "auto"
+(the object RMSE a camera is compared with), to OUT/response_harness.csv; --modes picks among
+plain, srgb, auto, true_curve, true_curve_no_vignetting.
 
-The setting is chosen on half A (odd rooms t01, t03, ... t13) by the median curve error and
-reported on half B (even rooms), so no setting is tuned to the rooms it is judged on. Fit time
+The setting is chosen on half A (odd rooms t01, t03, ... t13) by the median curve error (ties: the
+mean) and reported on half B (even rooms), so no setting is tuned to the rooms it is judged on. Fit time
 is inlay-cli's own measurement of the estimate (seconds in RESPONSE.json).
 
 Writes OUT/response.csv (one row per photo and setting), OUT/response_summary.csv (per setting
@@ -30,7 +32,7 @@ setting's curves on B).
 
 usage: bench_response.py INLAY_CLI [--out DIR] [--seeds 1,2,3] [--cues symmetry,colour,both]
                          [--priors 0.02,0.2,2] [--settings colour@0.2,symmetry@0.02] [--rooms t01,t02]
-                         [--harness N --seconds S]
+                         [--harness N --seconds S --modes plain,srgb,auto,true_curve]
 """
 import json, os, statistics, subprocess, sys
 
@@ -104,20 +106,33 @@ def true_family_params(cam):
     return best[1]
 
 
-def harness_runs(cli, variants, count, seconds, out):
+def harness_runs(cli, variants, count, seconds, out, modes):
     """Object RMSE by harness.py with camera.response srgb, auto and the true curve's nearest
-    family member, on the first `count` half-B variants (random cameras only)."""
+    family member (and that curve without the camera's vignetting), on the first `count` half-B
+    variants (random cameras), and each of their rooms' plain photo with auto (mode plain)."""
     harness = os.path.join(benchlib.shared_dir(), "tools", "harness.py")
     rows = []
     picked = [v for v in variants if v[1] != "plain" and int(v[0][1:]) % 2 == 0][:count]
+    if "plain" in modes:
+        rooms = []
+        for v in picked:
+            rooms += [v[0]] if v[0] not in rooms else []
+        picked = [v for r in rooms for v in variants if v[0] == r and v[1] == "plain"] + picked
     train = os.path.join(benchlib.shared_dir(), "scenes-train")
     for room, seed, d in picked:
         cam = json.load(open(os.path.join(d, "camera_variant.json")))
-        p, t, s = true_family_params(cam)
-        true_curve = {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s}
-        flat = without_vignetting(os.path.join(train, room), d, 1000 * int(seed) + int(room[1:]), d + "-novignette")
-        for mode, response, d in (("srgb", "srgb", d), ("auto", "auto", d), ("true_curve", true_curve, d),
-                                  ("true_curve_no_vignetting", true_curve, flat)):
+        todo = []
+        if seed == "plain":
+            todo = [("plain", "auto", d)]
+        else:
+            p, t, s = true_family_params(cam)
+            true_curve = {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s}
+            todo = [("srgb", "srgb", d), ("auto", "auto", d), ("true_curve", true_curve, d)]
+            if "true_curve_no_vignetting" in modes:
+                flat = without_vignetting(os.path.join(train, room), d, 1000 * int(seed) + int(room[1:]),
+                                          d + "-novignette")
+                todo.append(("true_curve_no_vignetting", true_curve, flat))
+        for mode, response, d in [m for m in todo if m[0] in modes]:
             work = os.path.join(out, "harness", "%s-s%s-%s" % (room, seed, mode))
             os.makedirs(work, exist_ok=True)
             sf = os.path.join(work, "scene.json")
@@ -258,7 +273,8 @@ def main():
         settings = [("srgb", 0.0)] + [(x.split("@")[0], float(x.split("@")[1])) for x in opt("--settings", "").split(",")]
     variants = make_variants(train, rooms, seeds, os.path.join(out, "variants"))
     if int(opt("--harness", "0")) > 0:
-        harness_runs(cli, variants, int(opt("--harness", "0")), float(opt("--seconds", "20")), out)
+        modes = opt("--modes", "plain,srgb,auto,true_curve,true_curve_no_vignetting").split(",")
+        harness_runs(cli, variants, int(opt("--harness", "0")), float(opt("--seconds", "20")), out, modes)
         return 0
     rows = []
     for room, seed, d in variants:
@@ -286,7 +302,7 @@ def main():
                        [{k: v for k, v in r.items() if k not in ("table", "dir")} for r in rows])
     summary = summarise(rows)
     a_rows = [s for s in summary if s["half"] == "A" and s["setting"] != "srgb"]
-    chosen = min(a_rows, key=lambda s: s["median_curve_error"])["setting"] if a_rows else "srgb"
+    chosen = min(a_rows, key=lambda s: (s["median_curve_error"], s["mean_curve_error"]))["setting"] if a_rows else "srgb"
     for s in summary:
         s["chosen_on_A"] = s["setting"] == chosen
     benchlib.write_csv(os.path.join(out, "response_summary.csv"), summary, table="response")

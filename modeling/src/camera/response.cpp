@@ -2,6 +2,7 @@
 #include "inlay/modeling/response.h"
 
 #include "lines.h"
+#include "noise_level.h"
 
 #include <algorithm>
 #include <chrono>
@@ -321,6 +322,7 @@ EdgeResiduals residualsOf(const Edge& edge, const std::array<double, 256>& g) {
 
 struct Fit {
   const std::vector<Edge>* edges;
+  const detail::NoiseLevel* noise;
   ResponseEstimateOptions options;
 
   static ResponseParams paramsOf(const Vec3& x) {
@@ -330,11 +332,13 @@ struct Fit {
     q.shoulder = std::expm1(std::max(0.0, x[2]));
     return q.clamped();
   }
-  // Mean robust edge residual (without the prior).
+  // The cue's residual (without the prior): the noise level's distance from a power law, or
+  // the mean robust edge residual.
   double data(const ResponseParams& q) const {
     const CameraResponse f = CameraResponse::toeShoulder(q);
     std::array<double, 256> g;
     for (int k = 0; k < 256; ++k) g[size_t(k)] = f.table8()[size_t(k)];
+    if (options.cue == ResponseEstimateOptions::Cue::Noise) return detail::noiseLevelResidual(*noise, g);
     double sum = 0;
     int n = 0;
     for (const Edge& e : *edges) {
@@ -353,15 +357,17 @@ struct Fit {
     }
     return n ? sum / n : 0;
   }
-  static double prior(const Vec3& x) {
+  // The pull toward sRGB: on the power, and on the toe and shoulder.
+  double prior(const Vec3& x) const {
     const double p = (x[0] - 1) / 0.25, t = x[1] / 0.25, s = std::max(0.0, x[2]) / 1.5;
-    return p * p + t * t + s * s;
+    return options.priorWeightOrDefault() * p * p +
+           options.shapePriorWeightOrDefault() * (t * t + s * s);
   }
   double operator()(const Vec3& x) const {
     const Vec3 lo(ResponseParams::kMinPower, 0, 0),
         hi(ResponseParams::kMaxPower, ResponseParams::kMaxToe, std::log1p(ResponseParams::kMaxShoulder));
     const Vec3 c = x.cwiseMax(lo).cwiseMin(hi);
-    return data(paramsOf(c)) + options.priorWeight * prior(c) + 10 * (x - c).squaredNorm();
+    return data(paramsOf(c)) + prior(c) + 10 * (x - c).squaredNorm();
   }
 };
 
@@ -440,6 +446,30 @@ std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
   return {};
 }
 
+// The photo's clean straight edges between two flat regions; why they cannot determine a
+// curve, or empty.
+std::string cleanEdgesOf(const ImageF& img, const std::vector<unsigned char>& codes,
+                         const ResponseEstimateOptions& options, std::vector<Edge>& edges,
+                         int& segmentsFound) {
+  const auto lines = detail::detectLineSegments(img, 1024, options.maxSegments, options.cancel);
+  segmentsFound = int(lines.segments.size());
+  int lo = 255, hi = 0;
+  for (const LineSegment& s : lines.segments) {
+    if (options.cancel && options.cancel->shouldStop()) break;
+    if (s.lengthPx() < options.minEdgeLengthPx) continue;
+    Edge e;
+    if (!cleanEdge(profileOf(codes, img.width, img.height, s.aPx, s.bPx), e)) continue;
+    lo = std::min(lo, e.lumaLo), hi = std::max(hi, e.lumaHi);
+    edges.push_back(std::move(e));
+  }
+  if (int(edges.size()) < options.minEdges)
+    return "too few clean edges between flat regions (" + std::to_string(edges.size()) + " of " +
+           std::to_string(options.minEdges) + " needed)";
+  if (hi - lo < 48)
+    return "the edges cover only codes " + std::to_string(lo) + " to " + std::to_string(hi);
+  return {};
+}
+
 }  // namespace
 
 ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptions& options) {
@@ -462,28 +492,20 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   const std::vector<unsigned char> codes = srgbCodesOf(img);
   if (std::string why = photoIsUndetermined(codes); !why.empty()) return undetermined(why);
 
-  // Clean straight edges.
-  const auto lines = detail::detectLineSegments(img, 1024, options.maxSegments, options.cancel);
-  out.segmentsFound = int(lines.segments.size());
   std::vector<Edge> edges;
-  int lo = 255, hi = 0;
-  for (const LineSegment& s : lines.segments) {
-    if (options.cancel && options.cancel->shouldStop()) break;
-    if (s.lengthPx() < options.minEdgeLengthPx) continue;
-    Edge e;
-    if (!cleanEdge(profileOf(codes, img.width, img.height, s.aPx, s.bPx), e)) continue;
-    lo = std::min(lo, e.lumaLo), hi = std::max(hi, e.lumaHi);
-    edges.push_back(std::move(e));
+  detail::NoiseLevel noise;
+  if (options.cue == ResponseEstimateOptions::Cue::Noise) {
+    noise = detail::measureNoiseLevel(codes, img.width, img.height);
+    out.noiseBins = int(noise.bins.size());
+    if (!noise.undetermined.empty()) return undetermined(noise.undetermined);
+  } else if (std::string why = cleanEdgesOf(img, codes, options, edges, out.segmentsFound);
+             !why.empty()) {
+    out.edgesUsed = int(edges.size());
+    return undetermined(why);
   }
   out.edgesUsed = int(edges.size());
-  if (int(edges.size()) < options.minEdges)
-    return undetermined("too few clean edges between flat regions (" + std::to_string(edges.size()) +
-                        " of " + std::to_string(options.minEdges) + " needed)");
-  if (hi - lo < 48)
-    return undetermined("the edges cover only codes " + std::to_string(lo) + " to " +
-                        std::to_string(hi));
 
-  Fit fit{&edges, options};
+  Fit fit{&edges, &noise, options};
   out.srgbObjective = fit.data(ResponseParams{});
   if (options.evaluateAt) {
     out.response = CameraResponse::toeShoulder(*options.evaluateAt);
@@ -512,11 +534,13 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   out.objective = fit.data(q);
   out.determined = true;
   out.decision = "fitted";
-  if (!(out.objective <= (1 - options.minImprovement) * out.srgbObjective)) {
+  if (!(out.objective <= (1 - options.minImprovementOrDefault()) * out.srgbObjective)) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
-                  "kept sRGB: the fitted %s lowers the edge residual only from %.4f to %.4f",
-                  out.response.describe().c_str(), out.srgbObjective, out.objective);
+                  "kept sRGB: the fitted %s lowers the %s residual only from %.4f to %.4f",
+                  out.response.describe().c_str(),
+                  options.cue == ResponseEstimateOptions::Cue::Noise ? "noise level" : "edge",
+                  out.srgbObjective, out.objective);
     out.decision = buf;
     out.response = CameraResponse::srgb();
     out.objective = out.srgbObjective;

@@ -18,7 +18,8 @@
 // Parameters are clamped to ResponseParams' bounds, where f stays finite and strictly
 // monotone (f^-1 of every 8-bit code is a distinct finite float).
 //
-// estimateResponse() finds the toe_shoulder parameters from the photo's own edges (see there).
+// estimateResponse() finds the toe_shoulder parameters from the photo's own edges or its noise
+// level (see there).
 // Thread-safe: a CameraResponse is an immutable value.
 #pragma once
 
@@ -99,16 +100,37 @@ struct ResponseEstimateOptions {
   //     symmetric lens/pixel blur of a step), which a wrong curve bends (works for grey edges);
   //   Colour: the pixels across an edge are mixtures of its two colours, on a line in linear
   //     RGB, which a wrong curve bends (Lin, Gu, Yamazaki, Shum 2004; needs coloured edges);
-  //   Both: the sum of the two.
-  enum class Cue { Symmetry, Colour, Both };
-  Cue cue = Cue::Colour;  // chosen by bench_response.py (docs/camera-response.md)
-  // Weight of the pull toward sRGB (a Gaussian prior on power, toe and log(1 + shoulder) with
-  // unit scales 0.25, 0.25, 1.5), relative to the mean edge residual.
-  double priorWeight = 2.0;  // chosen on half A by bench_response.py
-  int minEdges = 8;          // fewer clean edges: sRGB with a warning
-  // The fitted curve is kept only when it lowers the edges' residual by at least this fraction
-  // of sRGB's; otherwise sRGB (the edges show no curve clearly different from it).
-  double minImprovement = 0.1;
+  //   Both: the sum of the two;
+  //   Noise: the photo's noise variance, decoded, is a non-negative quadratic a + b x + c x^2
+  //     of the linear radiance (read, shot and gain or sampling noise), which a wrong curve
+  //     bends (Matsushita and Lin 2007); needs flat regions over a range of codes and
+  //     measurable noise.
+  enum class Cue { Symmetry, Colour, Both, Noise };
+  // The colour edges: the noise cue cuts the mean curve error on the training cameras by 40 % but its
+  // false shoulders on rendered photos ruin the inserted object (docs/camera-response.md), so
+  // it is not the default.
+  Cue cue = Cue::Colour;
+  // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
+  // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
+  // half A by bench_response.py).
+  std::optional<double> priorWeight;
+  // The same for toe and shoulder (a Gaussian prior on toe / 0.25 and log(1 + shoulder) / 1.5).
+  // Unset: edge cues as priorWeight, noise 0 (the noise cue sees toes and shoulders; the power
+  // hardly).
+  std::optional<double> shapePriorWeight;
+  int minEdges = 8;  // fewer clean edges: sRGB with a warning
+  // The fitted curve is kept only when it lowers the cue's residual by at least this fraction
+  // of sRGB's; otherwise sRGB (the photo shows no curve clearly different from it). Unset: the
+  // cue's default (edge cues 0.1, noise 0.5).
+  std::optional<double> minImprovement;
+  // The three numbers above with the cue's defaults filled in.
+  double priorWeightOrDefault() const { return priorWeight.value_or(cue == Cue::Noise ? 0.1 : 2.0); }
+  double shapePriorWeightOrDefault() const {
+    return shapePriorWeight.value_or(cue == Cue::Noise ? 0.0 : priorWeightOrDefault());
+  }
+  double minImprovementOrDefault() const {
+    return minImprovement.value_or(cue == Cue::Noise ? 0.5 : 0.1);
+  }
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
@@ -120,7 +142,8 @@ struct ResponseEstimate {
   CameraResponse response;  // sRGB when undetermined
   bool determined = false;  // false: the photo could not determine it (see warnings)
   std::vector<std::string> warnings;
-  int edgesUsed = 0;  // clean edges the fit used
+  int edgesUsed = 0;  // clean edges the fit used (edge cues)
+  int noiseBins = 0;  // code bins of the measured noise level (noise cue)
   int segmentsFound = 0;
   double objective = 0;      // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;  // the same for plain sRGB
@@ -132,11 +155,13 @@ struct ResponseEstimate {
 };
 
 // The response of an 8/16-bit photo read as sRGB (`srgbDecodedRgb`: LoadedImage::linearRgb of
-// such a file), from its straight edges alone: line segments are found (lines.h), each
-// segment's pixels within 4 px are kept when both sides are flat, unclipped and differ, and the
+// such a file), from the photo alone. Edge cues: line segments are found (lines.h), each
+// segment's pixels within 4 px are kept when both sides are flat, unclipped and differ. Noise
+// cue: the noise level of flat 8 x 8 blocks against their codes (noise_level.h). The
 // toe_shoulder parameters minimise the chosen cue's residual plus the prior (a grid, then
 // Nelder-Mead). Undetermined (returns sRGB, determined false, a warning saying why): a nearly
-// flat or nearly binary photo, one mostly clipped, or fewer than minEdges clean edges.
+// flat or nearly binary photo, one mostly clipped, fewer than minEdges clean edges (edge cues),
+// or too few flat regions or no measurable noise (noise cue).
 ResponseEstimate estimateResponse(const ImageF& srgbDecodedRgb,
                                   const ResponseEstimateOptions& options = {});
 
