@@ -107,6 +107,8 @@ class StudioMaterialsLiveTest : public QObject {
 
  private:
   bool waitRefined(int minSpp);
+  // Sets View > Denoise Preview and waits for a frame of `minSpp` that is (or is not) denoised.
+  bool showDenoised(bool on, int minSpp);
   QImage composite() const {
     return window_->renderer()->compositeImage().convertToFormat(QImage::Format_RGB32);
   }
@@ -136,6 +138,19 @@ bool StudioMaterialsLiveTest::waitRefined(int minSpp) {
   return r->isCurrent() && r->frameInfo().spp >= minSpp;
 }
 
+bool StudioMaterialsLiveTest::showDenoised(bool on, int minSpp) {
+  RenderController* r = window_->renderer();
+  r->setDenoise(on);
+  auto shown = [&] {
+    return r->isCurrent() && r->frameInfo().spp >= minSpp && r->frameInfo().frame &&
+           r->frameInfo().frame->denoised == on;
+  };
+  QElapsedTimer t;
+  t.start();
+  while (!shown() && t.elapsed() < waitMs(60000)) QTest::qWait(20);
+  return shown();
+}
+
 void StudioMaterialsLiveTest::shot(const QString& name) {
   const QString path = artifacts_.filePath(QStringLiteral("materials_%1.png").arg(name));
   QVERIFY2(window_->viewport()->grab().save(path), qPrintable(path));
@@ -157,7 +172,14 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
   const Vec2 home = doc->scene().objects[0].basePx;
   const QPoint step(90, -6);  // across the floor, clear of the sphere's own pixels (~55 px wide)
   const Vec2 away = home + Vec2(step.x(), step.y());
-  QVERIFY(waitRefined(2));
+  // The preview is denoised by default (View > Denoise Preview). The material checks below are
+  // made on the raw preview (as before the denoiser existed: a count of pixels unlike the diffuse
+  // sphere, which the raw render's grain inflates), and the denoised preview must look like the
+  // raw one, not like the diffuse sphere; the drags run with the denoiser on.
+  QVERIFY2(renderer->denoise(), "the denoised preview is off by default");
+  QVERIFY(showDenoised(true, 2));
+  const QImage diffuseDenoised = composite();
+  QVERIFY(showDenoised(false, 2));
   const QImage photo = renderer->photoImage().convertToFormat(QImage::Format_RGB32);
   const QImage diffuse = composite();
   QCOMPARE(diffuse.size(), photo.size());
@@ -176,7 +198,7 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
     props->presetBox()->setCurrentIndex(index);
     Q_EMIT props->presetBox()->activated(index);  // as a user's choice does
     QCOMPARE(QString::fromStdString(doc->scene().objects[0].material.preset), preset);
-    QVERIFY(waitRefined(2));
+    QVERIFY(showDenoised(false, 2));
     const QImage before = composite();
     shot(preset + QStringLiteral("_before"));
     const Mask mask = objectMask(before, photo, home);
@@ -193,6 +215,23 @@ void StudioMaterialsLiveTest::materialsFollowTheDrag() {
       QVERIFY2(floor > diffuseFloor + 8,
                qPrintable(QStringLiteral("floor %1 vs %2").arg(floor).arg(diffuseFloor)));
     else QVERIFY2(unlike > count(both) / 5, qPrintable(QString::number(unlike)));
+
+    // (d) The denoised preview shows the same material: closer to the raw preview of it than to
+    // the denoised diffuse sphere (the old guides, the mirror's own surface, made it diffuse).
+    QVERIFY(showDenoised(true, 2));
+    const QImage denoised = composite();
+    const double toRaw = meanDiff(denoised, before, both),
+                 toDiffuse = meanDiff(denoised, diffuseDenoised, both);
+    qInfo(
+        "%s denoised: mean difference from its raw preview %.1f, from the denoised diffuse sphere %.1f; "
+        "%d of %d pixels unlike the denoised diffuse sphere",
+        qPrintable(preset), toRaw, toDiffuse, differing(denoised, diffuseDenoised, both, 60),
+        count(both));
+    QVERIFY2(toRaw < toDiffuse, qPrintable(QStringLiteral("%1 vs %2").arg(toRaw).arg(toDiffuse)));
+    if (preset == QLatin1String("emissive"))
+      QVERIFY2(floorBrightness(denoised, home, both) > diffuseFloor + 8,
+               "the denoised floor is not lit");
+    shot(preset + QStringLiteral("_denoised"));
 
     // Drag the sphere across the floor and catch the first frame of its new place.
     QImage first;

@@ -270,7 +270,7 @@ void MainWindow::createActions() {
   connect(beforeAct_, &QAction::toggled, viewport_, &Viewport::setShowBefore);
   denoiseAct_ = new QAction(this);
   denoiseAct_->setCheckable(true);
-  denoiseAct_->setChecked(QSettings().value(QStringLiteral("denoisePreview"), false).toBool());
+  denoiseAct_->setChecked(QSettings().value(QStringLiteral("denoisePreview"), true).toBool());
   renderer_->setDenoise(denoiseAct_->isChecked());
   connect(denoiseAct_, &QAction::toggled, this, [this](bool on) {
     QSettings().setValue(QStringLiteral("denoisePreview"), on);

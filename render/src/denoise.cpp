@@ -17,6 +17,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
 
 // The filter's loops carry no dependence between iterations (GCC: skip the run-time alias checks
 // that would stop the vectoriser; render/CMakeLists.txt adds -fno-trapping-math so the weights'
@@ -53,11 +56,21 @@ inline float expNeg(float e) {
 
 float finiteOr0(float v) { return std::isfinite(v) ? std::clamp(v, -kMaxValue, kMaxValue) : 0.f; }
 
+// The arena of `threads` threads (0 = all cores), made once per thread count and kept: a
+// frame's filter runs about ten parallel loops, and a new arena per loop costs its start-up.
+tbb::task_arena& arenaFor(int threads) {
+  static std::mutex mutex;
+  static std::map<int, std::unique_ptr<tbb::task_arena>> arenas;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::unique_ptr<tbb::task_arena>& a = arenas[std::max(0, threads)];
+  if (!a) a = std::make_unique<tbb::task_arena>(threads > 0 ? threads : int(tbb::task_arena::automatic));
+  return *a;
+}
+
 // Runs body(y0, y1) over blocks of rows on `threads` threads (0 = all cores).
 template <class Body>
 void forRows(int height, int threads, const Body& body) {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  arenaFor(threads).execute([&] {
     parallelFor(tbb::blocked_range<int>(0, height, 8),
                 [&](const tbb::blocked_range<int>& r) { body(r.begin(), r.end()); });
   });
@@ -136,19 +149,26 @@ Plane blur3(const Plane& p, int w, int h, int threads) {
 // The planes of X / albedo, its variance, the mask, the raw X and its standard error.
 struct Signal {
   Plane y[3], var, mask, x[3], stdX, albedoMean;
+  Plane kind;      // mask + 2 x specular fraction: the edge stop between surface kinds
+  Plane invSigma;  // 1 / the luminance stop (the object's, the room's or the specular one's)
 };
 
-Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g, int threads) {
+Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g, const DenoiseOptions& o) {
+  const int threads = o.threads;
   const int w = in.withObjects->width, h = in.withObjects->height;
   const size_t n = size_t(w) * h;
   Signal s;
   for (int c = 0; c < 3; ++c) s.y[c].resize(n), s.x[c].resize(n);
-  s.var.resize(n), s.mask.resize(n), s.albedoMean.resize(n);
+  s.var.resize(n), s.mask.resize(n), s.albedoMean.resize(n), s.kind.resize(n), s.invSigma.resize(n);
   Plane varX(n);
   forRows(h, threads, [&](int r0, int r1) {
     for (size_t i = size_t(r0) * w; i < size_t(r1) * w; ++i) {
       const float m = std::clamp(finiteOr0(in.mask->data[i]), 0.f, 1.f);
+      const float spec = g.specular.size() == n ? g.specular[i] : 0.f;
       s.mask[i] = m;
+      s.kind[i] = m + 2.f * spec;
+      const float sigma = m * o.sigmaLuminanceObject + (1.f - m) * o.sigmaLuminance;
+      s.invSigma[i] = 1.f / (spec * o.sigmaLuminanceSpecular + (1.f - spec) * sigma);
       float am = 0;
       for (int c = 0; c < 3; ++c) {
         const float x = finiteOr0(finiteOr0(in.withObjects->data[i * 3 + c]) -
@@ -171,12 +191,17 @@ Signal signalOf(const DenoiseInput& in, const DenoiseGuides& g, int threads) {
   return s;
 }
 
+// A run of pixels [begin, end) in a row.
+struct Span {
+  int begin = 0, end = 0;
+};
+
 // One à-trous level with step `step`: y, var -> yOut, varOut on the rows [y0, y1).
 struct Level {
   const DenoiseGuides& g;
   const DenoiseOptions& o;
   const Signal& s;
-  const std::vector<uint8_t>& rowActive;
+  const std::vector<Span>& rowSpan;  // the active pixels of each row lie in [begin, end)
   int w, h, step;
   const Plane* y;  // [3], this level's input
   const Plane* var;
@@ -189,19 +214,23 @@ struct Level {
     for (auto& v : ysum) v.resize(width);
     for (int row = y0; row < y1; ++row) {
       const size_t base = size_t(row) * w;
-      if (!rowActive[size_t(row)]) {
-        for (int c = 0; c < 3; ++c) std::copy_n(&y[c][base], w, &yOut[c][base]);
-        std::copy_n(&(*var)[base], w, &(*varOut)[base]);
-        continue;
+      // Pixels out of the span are untouched and out of reach of any touched pixel: their
+      // delta is zero, and so is every neighbour's; they pass through.
+      const Span span = rowSpan[size_t(row)];
+      for (int c = 0; c < 3; ++c) {
+        std::copy_n(&y[c][base], span.begin, &yOut[c][base]);
+        std::copy_n(&y[c][base + span.end], w - span.end, &yOut[c][base + span.end]);
       }
-      for (int x = 0; x < w; ++x) {
+      std::copy_n(&(*var)[base], span.begin, &(*varOut)[base]);
+      std::copy_n(&(*var)[base + span.end], w - span.end, &(*varOut)[base + span.end]);
+      if (span.begin >= span.end) continue;
+      for (int x = span.begin; x < span.end; ++x) {
         const size_t i = base + x;
         constexpr float kCentre = 0.25f;  // h(0)^2 of the kernel (1/4, 1/2, 1/4)
         wsum[x] = kCentre;
         for (int c = 0; c < 3; ++c) ysum[c][x] = kCentre * y[c][i];
         vsum[x] = kCentre * kCentre * (*var)[i];
-        const float sigma = s.mask[i] * o.sigmaLuminanceObject + (1.f - s.mask[i]) * o.sigmaLuminance;
-        invLum[x] = 1.f / (sigma * std::sqrt((*var)[i]) + 1e-20f);
+        invLum[x] = s.invSigma[i] / (std::sqrt((*var)[i]) + 1e-20f);
         invPlane[x] = 1.f / (o.sigmaPlane * std::max(g.distance[i], 1e-6f));
       }
       for (int dy = -1; dy <= 1; ++dy) {
@@ -209,10 +238,10 @@ struct Level {
         if (rr < 0 || rr >= h) continue;
         for (int dx = -1; dx <= 1; ++dx)
           if (dx || dy)
-            tap(base, size_t(rr) * w, dx * step, (dx ? 0.5f : 1.f) * (dy ? 0.5f : 1.f) * 0.25f,
+            tap(base, size_t(rr) * w, dx * step, (dx ? 0.5f : 1.f) * (dy ? 0.5f : 1.f) * 0.25f, span,
                 wsum.data(), ysum, vsum.data(), invLum.data(), invPlane.data());
       }
-      for (int x = 0; x < w; ++x) {
+      for (int x = span.begin; x < span.end; ++x) {
         const size_t i = base + x;
         const float inv = 1.f / wsum[x];  // >= the centre's weight
         for (int c = 0; c < 3; ++c) yOut[c][i] = ysum[c][x] * inv;
@@ -223,9 +252,9 @@ struct Level {
 
   // Adds the neighbour at (x + ox, row rr) of every pixel x of the row at `base`. Row pointers
   // (the pixel's `_i`, the neighbour's `_j`) keep every access affine, so the loop vectorises.
-  void tap(size_t base, size_t nbase, int ox, float k, float* wsum, std::vector<float>* ysum,
+  void tap(size_t base, size_t nbase, int ox, float k, Span span, float* wsum, std::vector<float>* ysum,
            float* vsum, const float* invLum, const float* invPlane) const {
-    const int x0 = std::max(0, -ox), x1 = std::min(w, w - ox);
+    const int x0 = std::max(span.begin, -ox), x1 = std::min(span.end, w - ox);
     const float sn = o.sigmaNormal, invA = 1.f / o.sigmaAlbedo, invM = 1.f / o.sigmaMask;
     const size_t nb = nbase + size_t(ox);  // x + ox >= 0 on [x0, x1)
     const float *y0i = y[0].data() + base, *y1i = y[1].data() + base, *y2i = y[2].data() + base;
@@ -243,7 +272,7 @@ struct Level {
                 *a2i = g.albedo[2].data() + base;
     const float *a0j = g.albedo[0].data() + nb, *a1j = g.albedo[1].data() + nb,
                 *a2j = g.albedo[2].data() + nb;
-    const float *mi = s.mask.data() + base, *mj = s.mask.data() + nb;
+    const float *mi = s.kind.data() + base, *mj = s.kind.data() + nb;
     float *ws = wsum, *vs = vsum, *s0 = ysum[0].data(), *s1 = ysum[1].data(), *s2 = ysum[2].data();
     // The sums are the row's own scratch, never one of the planes read: no alias checks needed.
     INLAY_IVDEP
@@ -346,20 +375,24 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
   if (!sizesMatch(in)) return in.withObjects ? *in.withObjects : ImageF();
   const int w = in.withObjects->width, h = in.withObjects->height;
   const std::vector<uint8_t> active = activePixels(in, denoiseReachPx(options));
-  std::vector<uint8_t> rowActive(size_t(h), 0);
-  for (int y = 0; y < h; ++y)
-    rowActive[size_t(y)] = std::any_of(active.begin() + ptrdiff_t(y) * w,
-                                       active.begin() + ptrdiff_t(y + 1) * w,
-                                       [](uint8_t a) { return a != 0; });
-  if (std::none_of(rowActive.begin(), rowActive.end(), [](uint8_t a) { return a != 0; }))
-    return *in.withObjects;
-  const Signal s = signalOf(in, *in.guides, options.threads);
+  std::vector<Span> rowSpan(static_cast<size_t>(h));
+  bool any = false;
+  for (int y = 0; y < h; ++y) {
+    const uint8_t* row = active.data() + size_t(y) * w;
+    Span& sp = rowSpan[size_t(y)];
+    while (sp.begin < w && !row[sp.begin]) ++sp.begin;
+    sp.end = w;
+    while (sp.end > sp.begin && !row[sp.end - 1]) --sp.end;
+    if (sp.begin >= sp.end) sp = Span{0, 0};
+    any = any || sp.begin < sp.end;
+  }
+  if (!any) return *in.withObjects;
+  const Signal s = signalOf(in, *in.guides, options);
   Plane ping[3] = {s.y[0], s.y[1], s.y[2]}, pong[3];
   Plane pingVar = s.var, pongVar(s.var.size());
   for (auto& p : pong) p.resize(s.var.size());
   for (int level = 0; level < std::clamp(options.levels, 0, 12); ++level) {
-    const Level step{*in.guides, options, s,        rowActive, w,       h,
-                     1 << level, ping,    &pingVar, pong,      &pongVar};
+    const Level step{*in.guides, options, s, rowSpan, w, h, 1 << level, ping, &pingVar, pong, &pongVar};
     forRows(h, options.threads, [&](int y0, int y1) { step.rows(y0, y1); });
     for (int c = 0; c < 3; ++c) std::swap(ping[c], pong[c]);
     std::swap(pingVar, pongVar);
@@ -367,10 +400,41 @@ ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options)
   return writeBack(in, s, ping, active, options.clampSigmas, options.threads);
 }
 
+DenoiseGuides denoiseGuidesFromBuffers(const DifferentialBuffers& b, int threads) {
+  DenoiseGuides g;
+  if (!b.hasGuides()) return g;
+  g.width = b.width, g.height = b.height;
+  const size_t n = size_t(b.width) * b.height;
+  for (int c = 0; c < 3; ++c) g.albedo[c].resize(n), g.normal[c].resize(n), g.position[c].resize(n);
+  g.distance.resize(n), g.specular.resize(n);
+  forRows(b.height, threads, [&](int y0, int y1) {
+    for (size_t i = size_t(y0) * b.width; i < size_t(y1) * b.width; ++i) {
+      const float records = b.sumGuideDistance.data[i * 3 + 1];
+      const float inv = records > 0 ? 1.f / records : 0.f;
+      float nn = 0;
+      for (int c = 0; c < 3; ++c)
+        nn += b.sumGuideNormal.data[i * 3 + c] * b.sumGuideNormal.data[i * 3 + c];
+      const float invN = nn > 1e-12f && std::isfinite(nn) ? 1.f / std::sqrt(nn) : 0.f;
+      for (int c = 0; c < 3; ++c) {
+        const float a = b.sumGuideAlbedo.data[i * 3 + c] * inv;
+        g.albedo[c][i] = records > 0 && std::isfinite(a) ? std::clamp(a, 0.f, 1.f) : 1.f;
+        g.normal[c][i] = b.sumGuideNormal.data[i * 3 + c] * invN;
+        g.position[c][i] = finiteOr0(b.sumGuidePosition.data[i * 3 + c] * inv);
+      }
+      const float d = b.sumGuideDistance.data[i * 3] * inv;
+      g.distance[i] = records > 0 && std::isfinite(d) ? std::max(d, 1e-6f) : 1e6f;
+      g.specular[i] = std::clamp(b.sumGuideDistance.data[i * 3 + 2] * inv, 0.f, 1.f);
+    }
+  });
+  return g;
+}
+
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
                   DenoiseGuides* guides, const DenoiseOptions& options) {
   const int w = frame.withObjects.width, h = frame.withObjects.height;
-  if (guides->width != w || guides->height != h)
+  if (buffers.hasGuides() && buffers.width == w && buffers.height == h)
+    *guides = denoiseGuidesFromBuffers(buffers, options.threads);  // they refine with the samples
+  else if (guides->width != w || guides->height != h)
     *guides = renderDenoiseGuides(tracer, w, h, options.threads);
   DenoiseInput in;
   in.withObjects = &frame.withObjects;

@@ -615,7 +615,24 @@ struct PathTracer::Impl {
   bool forEachTile(int width, int height, int threads, const CancelToken* cancel,
                    RenderTile&& renderTile) const;
 
-  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, bool* firstHitIsObject) const;
+  // What one sample's camera path tells about its pixel besides radiance: whether its first hit
+  // is an object (the mask), and, when wanted, the denoiser's guide: the first surface along the
+  // camera's specular chain (smooth mirror and glass, near-smooth metal and frosted glass) that
+  // is not specular, i.e. what the pixel shows.
+  struct PrimaryRecord {
+    bool objectFirst = false;
+    bool wantGuide = false;     // DifferentialBuffers::hasGuides()
+    bool guideOpen = true;      // still on the camera's specular chain
+    Vec3 chain = Vec3::Ones();  // product of the specular reflectances met so far
+    double length = 0;          // path length so far, metres
+    Vec3 albedo = Vec3::Ones(), normal = Vec3::Zero(), point = Vec3::Zero();
+    double distance = 1e6;  // no hit: far away
+    bool specular = false;  // the chain met a specular surface before the guide's
+  };
+  struct GuideSums;
+  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec) const;
+  void recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const;
+  bool guideReflectance(const Hit& hit, Vec3* albedo) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
 
   // tracePath's steps.
@@ -720,11 +737,12 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 // A path as named steps: cast the ray; part at an object; end at an emitter or on the photo;
 // otherwise the surface's BSDF, next-event estimation, and the next direction.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
-                                 bool* firstHitIsObject) const {
+                                 PrimaryRecord* rec) const {
   for (;; ++st.depth) {
     const Hit hit = castPathRay(mode, st, rng, out);
+    if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
-      if (st.depth == 0 && firstHitIsObject) *firstHitIsObject = true;
+      if (st.depth == 0 && rec) rec->objectFirst = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
       // and with the same depth-indexed random dimensions; this path goes on with the objects.
       tracePath(Mode::WithoutOnly, st, rng, out, nullptr);
@@ -773,6 +791,52 @@ void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& h
                                                                          st.lastNormal, hit.point));
   if (w > 0)
     addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(l.radiance) * w), st.depth >= 2));
+}
+
+// The guide of a path vertex on the camera's specular chain (PrimaryRecord): a specular
+// surface multiplies the chain's reflectance and leaves the chain open (its own values stay as
+// the fallback should the path end there); anything else closes it.
+void PathTracer::Impl::recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const {
+  if (hit.kind == Hit::Kind::None) {
+    rec.guideOpen = false;
+    if (st.depth == 0) return;  // nothing seen: the defaults (albedo 1, far away)
+    rec.albedo = rec.chain;     // a reflection of nothing: keep the specular surface's place
+    return;
+  }
+  rec.length += (hit.point - st.origin).norm();
+  Vec3 reflectance = Vec3::Ones();
+  const bool specular = guideReflectance(hit, &reflectance);
+  const Vec3 n = hit.shadingNormal.dot(st.dir) > 0 ? Vec3(-hit.shadingNormal) : hit.shadingNormal;
+  const Vec3 albedo = rec.chain.cwiseProduct(reflectance);
+  if (albedo.allFinite() && n.allFinite() && hit.point.allFinite() && std::isfinite(rec.length)) {
+    rec.albedo = albedo.cwiseMax(0.0).cwiseMin(1.0);
+    rec.normal = n;
+    rec.point = hit.point;
+    rec.distance = std::max(rec.length, 1e-6);
+  }
+  if (specular) rec.chain = albedo;
+  rec.specular = rec.specular || specular;
+  rec.guideOpen = specular && st.depth < options.maxDepth;
+}
+
+// The reflectance the denoiser divides by at a hit (the projected photo albedo on the room, a
+// material's colour; 1 for glass, lights and emitters); true when the surface is specular
+// (smooth, or rough below kGuideSpecularRoughness): the pixel then shows what lies beyond it.
+bool PathTracer::Impl::guideReflectance(const Hit& hit, Vec3* albedo) const {
+  constexpr double kGuideSpecularRoughness = 0.1;
+  using K = Material::Kind;
+  if (hit.kind == Hit::Kind::Room) {
+    const Material* m = roomMaterial(hit.index);  // glossy keeps the projected albedo
+    const bool mirror = m && m->kind == K::Mirror;
+    *albedo = mirror ? m->albedo : scene.roomAlbedo.albedoAtPixel(hit.index, hit.photoPixel);
+    return mirror;
+  }
+  if (hit.kind != Hit::Kind::Object) return false;
+  const Material& m = objects[size_t(hit.index)].materialOf(hit.prim);
+  const bool transparent = m.kind == K::Glass || m.kind == K::RoughGlass || m.kind == K::Emissive;
+  if (!transparent) *albedo = m.albedo;
+  return m.kind == K::Mirror || m.kind == K::Glass ||
+         ((m.kind == K::Conductor || m.kind == K::RoughGlass) && m.roughness < kGuideSpecularRoughness);
 }
 
 // A bounce that lands on room the camera sees takes the photo's radiance there (all the light
@@ -1054,6 +1118,16 @@ void DifferentialBuffers::clear() {
   std::fill(sumChange.data.begin(), sumChange.data.end(), 0.f);
   std::fill(sumChangeSq.data.begin(), sumChangeSq.data.end(), 0.f);
   std::fill(samples.begin(), samples.end(), 0);
+  for (ImageF* g : {&sumGuideAlbedo, &sumGuideNormal, &sumGuidePosition, &sumGuideDistance})
+    std::fill(g->data.begin(), g->data.end(), 0.f);
+}
+
+void DifferentialBuffers::enableGuides() {
+  if (hasGuides()) return;
+  sumGuideAlbedo = ImageF(width, height, 3);
+  sumGuideNormal = ImageF(width, height, 3);
+  sumGuidePosition = ImageF(width, height, 3);
+  sumGuideDistance = ImageF(width, height, 3);
 }
 
 namespace {
@@ -1244,6 +1318,25 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
 }
 
+// One pixel's guide records, summed in double (DifferentialBuffers' guide sums).
+struct PathTracer::Impl::GuideSums {
+  Vec3 albedo = Vec3::Zero(), normal = Vec3::Zero(), point = Vec3::Zero();
+  double distance = 0, count = 0, specular = 0;
+  void add(const PrimaryRecord& r) {
+    albedo += r.albedo, normal += r.normal, point += r.point;
+    distance += r.distance, count += 1, specular += r.specular ? 1 : 0;
+  }
+  void addTo(DifferentialBuffers& b, int x, int y) const {
+    float* a = b.sumGuideAlbedo.pixel(x, y);
+    float* n = b.sumGuideNormal.pixel(x, y);
+    float* p = b.sumGuidePosition.pixel(x, y);
+    for (int c = 0; c < 3; ++c)
+      a[c] += float(albedo[c]), n[c] += float(normal[c]), p[c] += float(point[c]);
+    float* d = b.sumGuideDistance.pixel(x, y);
+    d[0] += float(distance), d[1] += float(count), d[2] += float(specular);
+  }
+};
+
 // One pixel's samples [firstSample, firstSample + count), summed in double and added to the
 // buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
 void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample,
@@ -1254,6 +1347,7 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
   const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
   Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
   double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
+  GuideSums guide;
   const Vec3 photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
   for (int k = 0; k < count; ++k) {
     const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
@@ -1263,9 +1357,12 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
     st.origin = eye;
     st.dir = cam.directionThroughPixel(px);
     Sums sums;
-    bool objectFirst = false;
-    tracePath(Mode::Shared, st, rng, sums, &objectFirst);
+    PrimaryRecord rec;
+    rec.wantGuide = buffers.hasGuides();
+    tracePath(Mode::Shared, st, rng, sums, &rec);
+    const bool objectFirst = rec.objectFirst;
     tileCounters += sums.counters;
+    if (rec.wantGuide) guide.add(rec);
     if (!sums.with.allFinite() || !sums.without.allFinite()) {
       nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
       continue;  // dropped: counts as a sample of zero in both renders
@@ -1290,6 +1387,7 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
   buffers.sumMask.at(x, y) += float(sumMask);
   buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
   buffers.samples[size_t(y) * buffers.width + x] += count;
+  if (buffers.hasGuides()) guide.addTo(buffers, x, y);
 }
 
 // Renders the pixels of [x0,x1) x [y0,y1) (clipped to the buffers) by `renderOne(x, y, counters)`

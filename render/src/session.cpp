@@ -262,7 +262,7 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt, c
   bool converged = false;                   // every pixel met the noise target before the sample cap
   bool pendingFrame = false;                // samples added since the last frame published
   std::shared_ptr<const RenderFrame> last;  // the last frame published for this version
-  DenoiseGuides guides;  // SessionOptions::denoise: made at the version's first full frame
+  DenoiseGuides guides;  // SessionOptions::denoise: from `full`'s guide sums, per frame
   auto send = [&](std::shared_ptr<const RenderFrame> frame) {
     if (!last && opt.seconds > 0) {
       const double left = opt.seconds - std::chrono::duration<double>(Clock::now() - pickedUp).count();
@@ -353,7 +353,11 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt, c
       send(std::move(frame));
       continue;
     }
-    if (full.width != w) full = DifferentialBuffers(w, h);
+    if (full.width != w) {
+      full = DifferentialBuffers(w, h);
+      // The denoiser's guides come from the render's own camera paths (render/denoise.h).
+      if (opt.denoise != SessionOptions::Denoise::Off) full.enableGuides();
+    }
     if (opt.noiseTarget > 0 && spp >= std::min(opt.quietSamples, opt.targetSpp))
       break;  // adaptive from here
     const std::vector<int> counts = focusedCounts(full, fullWaves, work.sampleCount, opt);

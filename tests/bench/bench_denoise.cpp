@@ -10,9 +10,12 @@
 //   object_rmse (pixels the reference mask covers
 //   more than half), surroundings_rmse (pixels outside the object where the reference composite
 //   differs from the photo by more than 2e-3: shadow and bounce light), their pixel counts.
-// - timing.csv: per material, the guides' milliseconds (one ray per pixel, once per scene
-//   version) and the filter's (median of 7 runs on the 4-spp frame) at W x H on THREADS threads,
+// - timing.csv: per material, the camera-ray guides' milliseconds (renderDenoiseGuides, one ray
+//   per pixel, what the session used to pay once per scene version; for comparison), the
+//   median milliseconds of reading the render's own guides out of the buffers (per frame,
+//   included in the denoised rows' time) and the filter's (median of 7 runs on the 4-spp frame) at W x H on THREADS threads,
 //   wall and process CPU time over THREADS,
+//   the baseline's (baselineMs, interleaved with the filter's runs: the ratio is robust to load),
 //   and the reference's own estimated RMSE on the object and the surroundings (linear, from its
 //   per-pixel variance): the floor under the curves.
 //
@@ -27,6 +30,10 @@
 #include "inlay/render/composite.h"
 #include "inlay/render/denoise.h"
 #include "inlay/render/path_tracer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/ximgproc/edge_filter.hpp>
@@ -55,6 +62,44 @@ double processCpuSeconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// The timing baseline, in the same process on the same threads: the filter's data flow without
+// its edge stops (five levels of a 3 x 3 binomial blur of the three delta planes and the
+// variance, rows in parallel). filter_ms / baseline_ms is comparable between loaded and idle runs.
+double baselineMs(int w, int h, int threads) {
+  const size_t n = size_t(w) * h;
+  std::vector<std::vector<float>> in(4, std::vector<float>(n, 0.5f)), out = in;
+  tbb::task_arena arena(threads > 0 ? threads : int(tbb::task_arena::automatic));
+  const auto t0 = Clock::now();
+  for (int level = 0; level < 5; ++level) {
+    const int step = 1 << level;
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<int>(0, h, 8), [&](const tbb::blocked_range<int>& r) {
+        for (int y = r.begin(); y < r.end(); ++y)
+          for (size_t p = 0; p < in.size(); ++p) {
+            float* o = out[p].data() + size_t(y) * w;
+            for (int x = 0; x < w; ++x) {
+              float sum = 0, ws = 0;
+              for (int dy = -1; dy <= 1; ++dy) {
+                const int yy = y + dy * step;
+                if (yy < 0 || yy >= h) continue;
+                const float* row = in[p].data() + size_t(yy) * w;
+                for (int dx = -1; dx <= 1; ++dx) {
+                  const int xx = x + dx * step;
+                  if (xx < 0 || xx >= w) continue;
+                  const float k = (dx ? 0.5f : 1.f) * (dy ? 0.5f : 1.f);
+                  sum += k * row[xx], ws += k;
+                }
+              }
+              o[x] = sum / ws;
+            }
+          }
+      });
+    });
+    std::swap(in, out);
+  }
+  return secondsSince(t0) * 1e3 + 0.0 * in[0][0];
 }
 
 double rmse(const ImageF& a, const ImageF& b, const std::vector<size_t>& region) {
@@ -134,11 +179,13 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
     return std::sqrt(sum / double(std::max<size_t>(1, region.size())));
   };
   auto t0 = Clock::now();
-  const DenoiseGuides guides = renderDenoiseGuides(tracer, w, h, threads);
-  const double guidesMs = secondsSince(t0) * 1e3;
+  (void)renderDenoiseGuides(tracer, w, h, threads);  // the camera-ray guides, timed for comparison
+  const double rayGuidesMs = secondsSince(t0) * 1e3;
   DifferentialBuffers b(w, h);
+  b.enableGuides();  // the guides come from the render's own paths
+  std::vector<double> guidesMs;
   double seconds = 0, cpu = 0;
-  std::vector<double> filterMs, filterCpuMs;
+  std::vector<double> filterMs, filterCpuMs, baseMs;
   for (int spp = 0, step = 1; spp < maxSpp; step = spp) {
     t0 = Clock::now();
     double c0 = processCpuSeconds();
@@ -150,6 +197,8 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
     const ImageF raw = differentialComposite(photo, with, without, mask);
     t0 = Clock::now();
     c0 = processCpuSeconds();
+    const DenoiseGuides guides = denoiseGuidesFromBuffers(b, threads);
+    guidesMs.push_back(secondsSince(t0) * 1e3);
     const ImageF dw = denoisedWith(b, with, without, mask, guides, threads);
     const double ms = secondsSince(t0) * 1e3,
                  filterCpu = (processCpuSeconds() - c0) / std::max(1, threads);
@@ -160,6 +209,7 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
         (void)denoisedWith(b, with, without, mask, guides, threads);
         filterMs.push_back(secondsSince(t0) * 1e3);
         filterCpuMs.push_back((processCpuSeconds() - c1) * 1e3 / std::max(1, threads));
+        baseMs.push_back(baselineMs(w, h, threads));
       }
     const ImageF den = differentialComposite(photo, dw, without, mask);
     t0 = Clock::now();
@@ -181,13 +231,19 @@ void runCase(const MaterialCase& mc, const RenderScene& base, const ImageF& phot
   }
   std::sort(filterMs.begin(), filterMs.end());
   std::sort(filterCpuMs.begin(), filterCpuMs.end());
-  timing << mc.name << ',' << w << ',' << h << ',' << threads << ',' << guidesMs << ','
+  std::sort(guidesMs.begin(), guidesMs.end());
+  std::sort(baseMs.begin(), baseMs.end());
+  timing << mc.name << ',' << w << ',' << h << ',' << threads << ',' << rayGuidesMs << ','
+         << guidesMs[guidesMs.size() / 2] << ','
          << (filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]) << ','
-         << (filterCpuMs.empty() ? 0.0 : filterCpuMs[filterCpuMs.size() / 2]) << ',' << refError(object)
-         << ',' << refError(around) << '\n';
+         << (filterCpuMs.empty() ? 0.0 : filterCpuMs[filterCpuMs.size() / 2]) << ','
+         << (baseMs.empty() ? 0.0 : baseMs[baseMs.size() / 2]) << ',' << refError(object) << ','
+         << refError(around) << '\n';
   timing.flush();
-  std::fprintf(stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms\n", mc.name,
-               object.size(), around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2]);
+  std::fprintf(
+      stderr, "%s: object %zu px, surroundings %zu px, filter %.1f ms (median), baseline %.1f ms\n",
+      mc.name, object.size(), around.size(), filterMs.empty() ? 0.0 : filterMs[filterMs.size() / 2],
+      baseMs.empty() ? 0.0 : baseMs[baseMs.size() / 2]);
 }
 
 }  // namespace
@@ -213,7 +269,7 @@ int main(int argc, char** argv) {
   if (!csv || !timing) return std::fprintf(stderr, "%s: cannot write\n", out.c_str()), 2;
   csv << "material,mode,spp,seconds,cpu_seconds_per_thread,object_rmse,surroundings_rmse,object_px,surroundings_px\n";
   timing
-      << "material,width,height,threads,guides_ms,filter_ms,filter_cpu_ms_per_thread,reference_object_error,reference_surroundings_error\n";
+      << "material,width,height,threads,ray_guides_ms,buffer_guides_ms,filter_ms,filter_cpu_ms_per_thread,baseline_ms,reference_object_error,reference_surroundings_error\n";
   // The materials to run, as ",a,b,": built by append (GCC 12 warns falsely on "," + string).
   std::string only;
   if (argc > 8) only.append(",").append(argv[8]).append(",");

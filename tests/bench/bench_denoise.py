@@ -66,11 +66,12 @@ def report(out):
         print("| %s | %s | %s | %s | %s | %.4f | %.4f |" % (r["material"], r["mode"], r["s_to_object_0.01"],
               r["s_to_surroundings_0.01"], r["s_to_surroundings_0.005"], r["object_rmse_at_1s"],
               r["surroundings_rmse_at_1s"]))
-    print("\n| material | size | threads | guides ms (once per version) | filter ms (median of 7), wall | CPU per thread | reference's own error, object / surroundings |")
-    print("|---|---|---|---|---|---|---|")
+    print("\n| material | size | threads | camera-ray guides ms (no longer used) | guides from the render, ms per frame | filter ms (median of 7), wall | CPU per thread | filter / baseline | reference's own error, object / surroundings |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for r in csv.DictReader(open(os.path.join(out, "timing.csv"))):
-        print("| %s | %sx%s | %s | %.1f | %.1f | %.1f | %.4f / %.4f |" % (r["material"], r["width"], r["height"], r["threads"],
-              float(r["guides_ms"]), float(r["filter_ms"]), float(r["filter_cpu_ms_per_thread"]), float(r["reference_object_error"]),
+        print("| %s | %sx%s | %s | %.1f | %.1f | %.1f | %.1f | %.2f | %.4f / %.4f |" % (r["material"], r["width"], r["height"], r["threads"],
+              float(r["ray_guides_ms"]), float(r["buffer_guides_ms"]), float(r["filter_ms"]), float(r["filter_cpu_ms_per_thread"]),
+              float(r["filter_ms"]) / max(1e-9, float(r["baseline_ms"])), float(r["reference_object_error"]),
               float(r["reference_surroundings_error"])))
     plot(out, runs, materials)
 

@@ -38,12 +38,21 @@ struct DenoiseGuides {
   std::vector<float> normal[3];    // unit shading normal facing the camera (world)
   std::vector<float> position[3];  // world position of the hit, metres
   std::vector<float> distance;     // from the camera, metres (> 0)
+  // Fraction of the pixel's samples that show it through a smooth mirror or glass (the tracer's
+  // guides; empty: none, as from renderDenoiseGuides).
+  std::vector<float> specular;
   bool empty() const { return width <= 0 || height <= 0; }
 };
 
 // The guides of a W x H frame (the camera's pixel frame scaled to W x H), one ray per pixel
 // centre through `tracer`'s scene with the objects; parallel with `threads` (0 = all cores).
 DenoiseGuides renderDenoiseGuides(const PathTracer& tracer, int width, int height, int threads = 0);
+
+// The guides the path tracer recorded as it rendered (DifferentialBuffers::enableGuides): per
+// pixel the mean over its samples of what the camera path shows past any smooth mirror or glass
+// (normals renormalised). Pixels without samples get albedo 1, normal 0, distance 1e6. Empty
+// when the buffers hold no guides.
+DenoiseGuides denoiseGuidesFromBuffers(const DifferentialBuffers& buffers, int threads = 0);
 
 struct DenoiseOptions {
   int levels = 5;  // à-trous levels (steps 1, 2, 4, ...): reach 2^levels - 1 px
@@ -53,11 +62,14 @@ struct DenoiseOptions {
   // dense shading a looser one.
   float sigmaLuminance = 2.f;
   float sigmaLuminanceObject = 4.f;
+  // ... and on pixels seen through a smooth mirror or glass (DenoiseGuides::specular): what they
+  // show is a whole scene squeezed into few pixels, so a tight stop keeps its detail.
+  float sigmaLuminanceSpecular = 1.f;
   float sigmaNormal = 16.f;  // edge stop on normals: exp(-sigma (1 - n_i . n_j))
   float sigmaPlane = 0.02f;  // edge stop on the distance from the pixel's tangent plane,
                              // relative to its distance from the camera
   float sigmaAlbedo = 0.1f;  // edge stop on the albedo (sum of |difference| over RGB)
-  float sigmaMask = 0.1f;    // edge stop on the object mask
+  float sigmaMask = 0.1f;    // edge stop on the object mask (and on the specular fraction)
   float clampSigmas = 3.f;   // the change is at most this many standard errors
   int threads = 0;           // 0 = all cores
 };
@@ -80,8 +92,10 @@ struct DenoiseInput {
 ImageF denoiseWithObjects(const DenoiseInput& in, const DenoiseOptions& options = {});
 
 // The render session's hook (SessionOptions::denoise): replaces frame.withObjects by its
-// denoised version and sets frame.denoised. The guides are made from `tracer` on first use (or
-// when the frame's size changed) and kept in *guides for the version's later frames.
+// denoised version and sets frame.denoised. The guides are the buffers' own when they hold
+// them (denoiseGuidesFromBuffers, renewed every frame); otherwise they are made from `tracer`
+// on first use (or when the frame's size changed, one camera ray per pixel) and kept in *guides
+// for the version's later frames.
 void denoiseFrame(RenderFrame& frame, const DifferentialBuffers& buffers, const PathTracer& tracer,
                   DenoiseGuides* guides, const DenoiseOptions& options);
 // The same with the default options on `threads` threads (the session's one-line hook).

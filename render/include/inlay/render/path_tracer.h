@@ -95,10 +95,27 @@ struct DifferentialBuffers {
   ImageF sumChange;          // W x H x 3
   ImageF sumChangeSq;        // W x H x 1, sum of |change|^2 (mean over RGB)
   std::vector<int> samples;  // per pixel
+  // The denoiser's guides (render/denoise.h), summed over samples; empty (0 x 0) unless
+  // enableGuides() was called, and then the radiance sums above are the same bits as without.
+  // Each sample's camera path records the first surface along its specular chain (smooth
+  // mirror and glass, metal and frosted glass of roughness below 0.1) that is not specular,
+  // i.e. what the pixel shows: its albedo (times the chain's reflectances; 1 for glass, lights
+  // and emitters, and where the path meets nothing), its shading normal facing the path, its
+  // world position, and the path's length to it (1e6 for no hit); and whether it was seen
+  // through a specular surface.
+  ImageF sumGuideAlbedo;    // W x H x 3
+  ImageF sumGuideNormal;    // W x H x 3 (a sum of unit vectors)
+  ImageF sumGuidePosition;  // W x H x 3, metres
+  ImageF sumGuideDistance;  // W x H x 3: path length (metres), records, records that met a
+                            // specular surface first
 
   DifferentialBuffers() = default;
   DifferentialBuffers(int w, int h);
   void clear();
+  void enableGuides();
+  bool hasGuides() const {
+    return sumGuideDistance.width == width && width > 0 && !sumGuideDistance.data.empty();
+  }
   // Means (W x H x 3, x 3, x 1) with unsampled pixels left 0.
   ImageF meanWith() const;
   ImageF meanWithout() const;
