@@ -1,13 +1,15 @@
 """Preparation against photo size: dev rooms upscaled x k (the photo resized by bicubic
 interpolation, every pixel coordinate of the scene file scaled by k), prepared and rendered by
 inlay-cli; each stage's seconds (--report) and the object and surroundings RMSE against the
-room's ground truth after the composite is area-averaged back to the room's own size
-(../shared/tools/harness.py score). The working copy (--working-mp, default 0.5 MP) makes the
+room's ground truth (../shared/tools/harness.py score) of the composite brought back to the
+room's own size: its linear layer (--layers, without grain) area-averaged k x k, then encoded
+to sRGB 8-bit (the dev rooms' response). Averaging the 8-bit composite instead would average
+encoded noise (darker than the encoded mean) and the grain, which differ with k. The working copy (--working-mp, default 0.5 MP) makes the
 image stages cost about the same at every size; the scores show what that costs in accuracy.
 
   INLAY_SHARED_DIR=../shared /usr/bin/python3 tests/bench/bench_prepare_sizes.py build
-      [--scenes d1,d4,d6] [--scales 1,4,7] [--spp 64] [--seeds 1,2] [--working-mp 0.5]
-      [--threads 2] [--out DIR] [--plot-only]
+      [--scenes d1,d4,d6] [--scales 1,4,7] [--spp 64] [--seeds 1] [--working-mp 0.5]
+      [--threads 2] [--out DIR] [--append] [--plot-only]
 
 Each room renders with about the same samples per room pixel at every scale (--spp at x1,
 spp / k^2 at x k, at least 1); at x1 it renders once per seed in --seeds (the render's own
@@ -15,7 +17,8 @@ noise between seeds is the scale against which the other sizes' scores are read)
 Writes bench_prepare_sizes.csv (scene, scale, seed, width, height, megapixels, stage, seconds,
 working size) and bench_prepare_sizes_scores.csv (scene, scale, seed, megapixels, prepare
 seconds, object_rmse, around_rmse), and bench_prepare_sizes.png under DIR (default
-tests/bench/out). Upscaled photos live in a temporary folder and are never kept."""
+tests/bench/out); --append adds to the CSVs already there (another room or scale later).
+Upscaled photos live in a temporary folder and are never kept."""
 import json, os, shutil, subprocess, sys, tempfile, time
 
 import benchlib
@@ -62,23 +65,35 @@ def upscale_scene(scene, k, folder):
     return s
 
 
+def composite_at_room_size(layers, k, png):
+    """The linear composite layer of `layers` area-averaged k x k, sRGB-encoded to 8-bit `png`."""
+    import cv2
+    import numpy as np
+    import OpenImageIO as oiio
+    inp = oiio.ImageInput.open(layers)
+    lin = inp.read_image(oiio.FLOAT)[:, :, :3]  # the first part: "composite"
+    inp.close()
+    h, w = lin.shape[0] // k, lin.shape[1] // k
+    lin = lin[:h * k, :w * k].reshape(h, k, w, k, 3).mean(axis=(1, 3))
+    lin = np.clip(np.nan_to_num(lin), 0, 1)
+    enc = np.where(lin <= 0.0031308, 12.92 * lin, 1.055 * np.power(lin, 1 / 2.4) - 0.055)
+    cv2.imwrite(png, np.round(enc * 255)[:, :, ::-1].astype(np.uint8))
+
+
 def run_one(cli, room_dir, scene, k, seed, spp, opt, work):
     """Prepares and renders one scene; its stage records and scores."""
-    import cv2
     path = os.path.join(work, "scene.json")
     json.dump(scene, open(path, "w"), indent=1)
     comp, report = os.path.join(work, "comp.png"), os.path.join(work, "report.json")
+    layers = os.path.join(work, "layers.exr")
     cmd = ["nice", "-n", "10", cli, "render", path, "-o", comp, "--spp", str(spp), "--noise", "0",
            "--seed", str(seed), "--quiet", "--threads", opt("--threads", "2"), "--report", report,
-           "--working-mp", opt("--working-mp", "0.5")]
+           "--working-mp", opt("--working-mp", "0.5"), "--layers", layers]
     t0 = time.time()
     subprocess.run(cmd, check=True)
     wall = time.time() - t0
     stages = json.load(open(report))["stages"]
-    if k > 1:  # scored at the room's own size, like a user looking at the same framing
-        img = cv2.imread(comp, cv2.IMREAD_UNCHANGED)
-        small = cv2.resize(img, (img.shape[1] // k, img.shape[0] // k), interpolation=cv2.INTER_AREA)
-        cv2.imwrite(comp, small)
+    composite_at_room_size(layers, k, comp)  # scored at the room's own size
     sys.path.insert(0, os.path.join(benchlib.shared_dir(), "tools"))
     import harness
     return stages, harness.score(room_dir, comp), wall
@@ -90,8 +105,11 @@ def measure(build, opt, out):
     import harness
     cli = os.path.join(build, "app", "inlay-cli")
     spp = int(opt("--spp", "64"))
-    seeds = [int(s) for s in opt("--seeds", "1,2").split(",")]
+    seeds = [int(s) for s in opt("--seeds", "1").split(",")]
     stage_rows, score_rows = [], []
+    if "--append" in sys.argv and os.path.exists(os.path.join(out, "bench_prepare_sizes_scores.csv")):
+        stage_rows = benchlib.read_csv(os.path.join(out, "bench_prepare_sizes.csv"))
+        score_rows = benchlib.read_csv(os.path.join(out, "bench_prepare_sizes_scores.csv"))
     for room in rooms:
         base = harness.make_scene(os.path.join(sdir, room), "assisted", 60.0)
         for k in [int(v) for v in opt("--scales", "1,4,7").split(",")]:
@@ -113,7 +131,8 @@ def measure(build, opt, out):
                     row = {"scene": room, "scale": k, "seed": seed, "megapixels": round(mp, 3),
                            "prepare_s": round(prep, 2), "wall_s": round(wall, 1),
                            "object_rmse": round(sc.get("object_rmse", float("nan")), 5),
-                           "around_rmse": round(sc.get("around_rmse", float("nan")), 5)}
+                           "around_rmse": round(sc.get("around_rmse", float("nan")), 5),
+                           "outside_rmse": round(sc.get("outside_rmse", float("nan")), 6)}
                     print(json.dumps(row), flush=True)
                     score_rows.append(row)
                     benchlib.write_csv(os.path.join(out, "bench_prepare_sizes.csv"), stage_rows)
