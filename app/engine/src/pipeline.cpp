@@ -514,10 +514,6 @@ struct Preparation {
     for (Vec2& q : pts) q = toWork(q);
     return pts;
   }
-  std::vector<std::vector<Vec2>> toWork(std::vector<std::vector<Vec2>> strokes) const {
-    for (auto& stroke : strokes) stroke = toWork(std::move(stroke));
-    return strokes;
-  }
   ShaftKeys toWork(ShaftKeys shaft) const {
     for (auto* box : {&shaft.shaftBoxPx, &shaft.sourceBoxPx})
       if (*box && work.reduced) {
@@ -541,20 +537,57 @@ std::string countOf(size_t n, const std::string& thing) {
   return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
 }
 
-// An occluder's matte found on the working copy, at the photo's size: its alpha by joint
-// bilateral upsampling with the photo as the guide (the matte's edge follows the photo's), its
-// box and lowest point scaled.
-OccluderMatte matteAtPhotoSize(const Preparation& p, OccluderMatte m) {
+// An occluder's matte needs the photo's own detail (a table top a few pixels thick decides
+// whether the table is a slab; a working copy's matte upsampled made d6's 4 cm top 55 cm thick):
+// on a reduced photo it is found on the region of its scribbles (their box with a margin) cut
+// from the photo, at the photo's size up to kMatteMaxPixels (reduced beyond, its alpha brought
+// back by joint bilateral upsampling), and pasted into a matte of the photo's size.
+constexpr double kMatteMaxPixels = 1e6;
+
+Expected<OccluderMatte> matteOnRegion(const Preparation& p, const OccluderKeys& o,
+                                      const std::string& key) {
   const ImageF& photo = p.ps.photo.linearRgb;
-  m.alphaPx = jointBilateralUpsample(m.alphaPx, p.work.photo, photo);
-  for (float& a : m.alphaPx.data) a = a > 0 ? std::min(a, 1.f) : 0.f;  // NaN to 0
-  const double sx = p.work.sx, sy = p.work.sy;
-  m.boxPx = {std::max(0, int(std::floor(m.boxPx[0] / sx))),
-             std::max(0, int(std::floor(m.boxPx[1] / sy))),
-             std::min(photo.width, int(std::ceil(m.boxPx[2] / sx))),
-             std::min(photo.height, int(std::ceil(m.boxPx[3] / sy)))};
-  m.lowestPx = Vec2(m.lowestPx.x() / sx, m.lowestPx.y() / sy);
-  return m;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
+    for (const auto& stroke : *strokes)
+      for (const Vec2& q : stroke)
+        if (q.allFinite())
+          x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+          y1 = std::max(y1, q.y());
+  if (!(x1 >= x0 && y1 >= y0))  // no usable stroke: the matting says why
+    return matteFromScribbles(p.workPhoto(), o.foregroundScribblesPx, o.backgroundScribblesPx, key);
+  const double margin = std::max(16.0, 0.1 * std::max(x1 - x0, y1 - y0));
+  const int ix0 = std::clamp(int(std::floor(x0 - margin)), 0, photo.width - 1);
+  const int iy0 = std::clamp(int(std::floor(y0 - margin)), 0, photo.height - 1);
+  const int cw = std::clamp(int(std::ceil(x1 + margin)), ix0 + 1, photo.width) - ix0;
+  const int ch = std::clamp(int(std::ceil(y1 + margin)), iy0 + 1, photo.height) - iy0;
+  ImageF crop(cw, ch, photo.channels);
+  for (int y = 0; y < ch; ++y)
+    std::copy_n(photo.pixel(ix0, iy0 + y), size_t(cw) * photo.channels, crop.pixel(0, y));
+  const auto [rw, rh] = workingSizeFor(cw, ch, kMatteMaxPixels);
+  const ImageF region = rw == cw && rh == ch ? crop : resizeImage(crop, rw, rh);
+  const double sx = double(rw) / cw, sy = double(rh) / ch;
+  const auto inRegion = [&](std::vector<std::vector<Vec2>> strokes) {
+    for (auto& stroke : strokes)
+      for (Vec2& q : stroke) q = Vec2((q.x() - ix0) * sx, (q.y() - iy0) * sy);
+    return strokes;
+  };
+  auto m = matteFromScribbles(region, inRegion(o.foregroundScribblesPx),
+                              inRegion(o.backgroundScribblesPx), key);
+  if (!m) return m;
+  ImageF alpha = region.width == cw ? m->alphaPx : jointBilateralUpsample(m->alphaPx, region, crop);
+  OccluderMatte out = *m;
+  out.alphaPx = ImageF(photo.width, photo.height, 1, 0.f);
+  for (int y = 0; y < ch; ++y)
+    for (int x = 0; x < cw; ++x) {
+      const float a = alpha.at(x, y);
+      out.alphaPx.at(ix0 + x, iy0 + y) = a > 0 ? std::min(a, 1.f) : 0.f;  // NaN to 0
+    }
+  out.boxPx = {ix0 + int(std::floor(m->boxPx[0] / sx)), iy0 + int(std::floor(m->boxPx[1] / sy)),
+               std::min(photo.width, ix0 + int(std::ceil(m->boxPx[2] / sx))),
+               std::min(photo.height, iy0 + int(std::ceil(m->boxPx[3] / sy)))};
+  out.lowestPx = Vec2(ix0 + m->lowestPx.x() / sx, iy0 + m->lowestPx.y() / sy);
+  return out;
 }
 
 // --- Why a scene does not need a stage (empty: it does) ---
@@ -682,10 +715,11 @@ Status occluderMattes(Preparation& p, std::string& detail) {
   for (size_t i = 0; i < p.doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     const OccluderKeys& o = p.doc.occluders[i];
-    auto matte = matteFromScribbles(p.workPhoto(), p.toWork(o.foregroundScribblesPx),
-                                    p.toWork(o.backgroundScribblesPx), key);
+    auto matte = p.work.reduced ? matteOnRegion(p, o, key)
+                                : matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx,
+                                                     o.backgroundScribblesPx, key);
     if (!matte) return matte.error();
-    p.mattes.push_back(p.work.reduced ? matteAtPhotoSize(p, std::move(*matte)) : std::move(*matte));
+    p.mattes.push_back(std::move(*matte));
     if (p.cancelled()) return cancelledError();
   }
   for (size_t i = 0; i < p.mattes.size(); ++i) {
@@ -890,25 +924,30 @@ std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vecto
 // upsampling of their ratio to the photo (a smooth factor but at shadow edges, which the photo
 // guides), times the photo, so they keep its full-size texture; the gathered light (smooth) and
 // the suns' bounce bilinearly; and each pixel's surface cast again through the photo's pixel
-// centres. The decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped) stay at
+// centres. The decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped) and the
+// albedos only diagnostics read (see below) stay at
 // the working size.
 Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
   LightingEstimate& L = p.ps.lighting;
   const ImageF& photo = p.ps.photo.linearRgb;
   const ImageF& low = p.work.photo;
   const auto t = Clock::now();
-  // The four maps share the upsampling's weights (they depend on the photo only).
-  std::vector<ImageF*> maps;
-  for (ImageF* img : {&L.albedo, &L.retinexAlbedo, &L.physicalAlbedo, &L.direct})
-    if (img->width == low.width && img->height == low.height) maps.push_back(img);
+  // The maps share the upsampling's weights (they depend on the photo only). The fit's albedo
+  // is read at the photo's size only for a sun's clipped patch (radianceForBounces); Retinex's
+  // only by `inlay-cli decompose`, which works at the photo's size.
+  std::vector<ImageF*> maps{&L.albedo, &L.direct};
+  if (!L.suns.empty()) maps.push_back(&L.physicalAlbedo);
+  maps.erase(
+      std::remove_if(maps.begin(), maps.end(),
+                     [&](const ImageF* m) { return m->width != low.width || m->height != low.height; }),
+      maps.end());
   JointBilateralOptions ratio;
   ratio.ratio = true;
   std::vector<ImageF> up =
       jointBilateralUpsample(std::vector<const ImageF*>(maps.begin(), maps.end()), low, photo, ratio);
   for (size_t k = 0; k < maps.size(); ++k) {
     // Albedos in [0, 1]; the direct light and the fit's albedo >= 0 (NaN to 0).
-    const float highest =
-        maps[k] == &L.albedo || maps[k] == &L.retinexAlbedo ? 1.f : std::numeric_limits<float>::max();
+    const float highest = maps[k] == &L.albedo ? 1.f : std::numeric_limits<float>::max();
     for (float& v : up[k].data) v = v > 0 ? std::min(v, highest) : 0.f;
     *maps[k] = std::move(up[k]);
   }
@@ -1015,7 +1054,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       {"working copy", nullptr, nullptr, makeWorkingCopy, At::Working},
       {"camera", "camera", nullptr, findCamera, At::Photo},
       {"layout", "room", nullptr, boxFromBackWall},
-      {"occluders", nullptr, noOccluders, occluderMattes, At::Working},
+      {"occluders", nullptr, noOccluders, occluderMattes, At::Photo},
       {"surfaces", nullptr, noSurfaces, buildSurfaces},
       {"room", nullptr, nullptr, assembleRoom},
       {"lights", "lighting", nullptr, lightsFromMarks, At::Working},

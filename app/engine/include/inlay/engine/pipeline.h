@@ -69,7 +69,8 @@ struct PreparedScene {
   SceneGeometry geometry;
   // Lights and suns refined when the refinement ran. Its images are at the photo's size (from
   // the working copy by the "photo size" stage), except the decomposition's inputs
-  // (decomposeStart, decomposeValid, decomposeClipped), which stay at workingPx.
+  // (decomposeStart, decomposeValid, decomposeClipped), Retinex's albedo (retinexAlbedo) and,
+  // in a room without a sun, the fit's albedo (physicalAlbedo): they stay at workingPx.
   LightingEstimate lighting;
   // The lights and suns before the refinement (the estimate's radiance fit at the outlined or
   // placed positions), and what the refinement did (empty history when it did not run).
@@ -94,8 +95,9 @@ inline constexpr double kWorkingMaxPixels = 0.5e6;
 
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
-  // The image stages (occluder mattes, the lights' mask, shafts, lighting, sun ratio, refine,
-  // refit) run on the photo area-averaged to at most this many pixels, their maps brought back
+  // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
+  // photo area-averaged to at most this many pixels (occluder mattes on their scribbles' region
+  // of the photo, at up to 1 MP), their maps brought back
   // to the photo's size by guided upsampling; the render and composite stay at the photo's
   // size. <= 0: every stage at the photo's own size.
   double workingMaxPixels = kWorkingMaxPixels;
