@@ -99,7 +99,8 @@ TEST(BigPhoto, PreparesOnAWorkingCopyAndRendersAtThePhotosSize) {
     if (count[id] < size_t(W) * H / 20) continue;
     const Vec3 mean = sum[id] / double(count[id]);
     EXPECT_LT((mean - L.surfaceMeanAlbedo[id]).cwiseAbs().maxCoeff(), 0.03)
-        << "surface " << id << ": " << mean.transpose() << " against " << L.surfaceMeanAlbedo[id].transpose();
+        << "surface " << id << ": " << mean.transpose() << " against "
+        << L.surfaceMeanAlbedo[id].transpose();
     ++checked;
   }
   EXPECT_GE(checked, 3);

@@ -145,13 +145,19 @@ def plot(out):
     with benchlib.figure(os.path.join(out, "bench_prepare_sizes.png"), 1, 2, figsize=(12, 4.5)) as ax:
         if ax is None:
             return
+        import statistics
         rooms = sorted({r["scene"] for r in scores})
-        for room in rooms:
+        for n, room in enumerate(rooms):
             rs = [r for r in scores if r["scene"] == room]
-            xs = [float(r["megapixels"]) for r in rs]
-            ax[0].plot(xs, [float(r["prepare_s"]) for r in rs], "o-", label=room)
-            ax[1].plot(xs, [float(r["object_rmse"]) for r in rs], "o-", label=room + " object")
-            ax[1].plot(xs, [float(r["around_rmse"]) for r in rs], "x--", label=room + " surroundings")
+            mps = sorted({float(r["megapixels"]) for r in rs})
+            med = lambda key, mp: statistics.median(float(r[key]) for r in rs if float(r["megapixels"]) == mp)
+            colour = "C%d" % n
+            ax[0].plot(mps, [med("prepare_s", mp) for mp in mps], "o-", color=colour, label=room)
+            ax[1].plot(mps, [med("object_rmse", mp) for mp in mps], "o-", color=colour, label=room + " object")
+            ax[1].plot(mps, [med("around_rmse", mp) for mp in mps], "x--", color=colour, label=room + " surroundings")
+            for key, ax_i in (("prepare_s", 0), ("object_rmse", 1), ("around_rmse", 1)):  # every seed
+                ax[ax_i].plot([float(r["megapixels"]) for r in rs], [float(r[key]) for r in rs], ".",
+                              color=colour, alpha=0.5)
         for a in ax:
             a.set_xscale("log")
             a.set_xlabel("photo megapixels (dev room upscaled x1, x4, x7)")
