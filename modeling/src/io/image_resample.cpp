@@ -37,9 +37,9 @@ inline float logLuminance(const float* g, int channels) {
 // Along one axis: per full-size index, the first low index of its window and the window's
 // spatial weights (2 radius of them; outside the image: weight 0, index clamped).
 struct AxisWindow {
-  int n = 0;                    // window length (2 radius)
-  std::vector<int> first;       // per full index
-  std::vector<float> weight;    // per full index, n each
+  int n = 0;                  // window length (2 radius)
+  std::vector<int> first;     // per full index
+  std::vector<float> weight;  // per full index, n each
 };
 AxisWindow axisWindow(int full, int low, int radius, double sigma) {
   AxisWindow a;
@@ -53,7 +53,8 @@ AxisWindow axisWindow(int full, int low, int radius, double sigma) {
     for (int k = 0; k < a.n; ++k) {
       const int j = a.first[size_t(i)] + k;
       const double d = j - u;
-      a.weight[size_t(i) * a.n + k] = j < 0 || j >= low ? 0.f : float(std::exp(-d * d / (2 * sigma * sigma)));
+      a.weight[size_t(i) * a.n + k] = j < 0 || j >= low ? 0.f
+                                                        : float(std::exp(-d * d / (2 * sigma * sigma)));
     }
   }
   return a;
@@ -65,7 +66,8 @@ struct LowValues {
   std::vector<float> value, plain;  // plain: the value itself (finite)
   std::vector<uint8_t> isRatio;
 };
-LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired, const JointBilateralOptions& o) {
+LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired,
+                      const JointBilateralOptions& o) {
   LowValues v;
   const size_t n = low.data.size();
   v.value.resize(n);
@@ -76,7 +78,8 @@ LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired, co
     for (int c = 0; c < C; ++c) {
       const size_t i = p * size_t(C) + size_t(c);
       const float t = std::isfinite(low.data[i]) ? low.data[i] : 0.f;
-      const float g = guideOf(&lowGuide.data[p * size_t(lowGuide.channels)], lowGuide.channels, c, paired);
+      const float g =
+          guideOf(&lowGuide.data[p * size_t(lowGuide.channels)], lowGuide.channels, c, paired);
       const bool ratio = o.ratio && std::isfinite(g) && g > o.darkGuide;
       v.value[i] = ratio ? t / g : t;
       v.plain[i] = t;
@@ -99,8 +102,9 @@ struct PixelTaps {
 
 }  // namespace
 
-std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& lows, const ImageF& lowGuide,
-                                           const ImageF& fullGuide, const JointBilateralOptions& o) {
+std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& lows,
+                                           const ImageF& lowGuide, const ImageF& fullGuide,
+                                           const JointBilateralOptions& o) {
   std::vector<ImageF> out;
   const int w = lowGuide.width, h = lowGuide.height, W = fullGuide.width, H = fullGuide.height;
   const int r = std::max(1, o.radius);
@@ -113,7 +117,8 @@ std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& low
   constexpr int kTable = 1024;
   const double sr = std::max(1e-3, o.sigmaRange), step = 4 * sr / kTable;
   std::vector<float> rangeTable(kTable);
-  for (int k = 0; k < kTable; ++k) rangeTable[size_t(k)] = float(std::exp(-0.5 * std::pow(k * step / sr, 2)));
+  for (int k = 0; k < kTable; ++k)
+    rangeTable[size_t(k)] = float(std::exp(-0.5 * std::pow(k * step / sr, 2)));
   std::vector<LowValues> values;
   for (const ImageF* low : lows) {
     const bool paired = lowGuide.channels == low->channels && fullGuide.channels == low->channels;
@@ -173,7 +178,8 @@ ImageF jointBilateralUpsample(const ImageF& low, const ImageF& lowGuide, const I
   if (low.empty() || fullGuide.empty() || lowGuide.width != w || lowGuide.height != h ||
       (W <= w && H <= h))
     return low.empty() || fullGuide.empty() ? low : resizeImage(low, W, H);
-  return std::move(jointBilateralUpsample(std::vector<const ImageF*>{&low}, lowGuide, fullGuide, o).front());
+  return std::move(
+      jointBilateralUpsample(std::vector<const ImageF*>{&low}, lowGuide, fullGuide, o).front());
 }
 
 }  // namespace inlay

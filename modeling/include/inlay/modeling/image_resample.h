@@ -29,17 +29,18 @@ std::array<int, 2> workingSizeFor(int width, int height, double maxPixels);
 // its mean is used. A pixel whose result is not finite takes the spatial average of `low`. An empty input
 // or a `fullGuide` no larger than `lowGuide` returns `low` resized (resizeImage's rules).
 struct JointBilateralOptions {
-  int radius = 1;              // low pixels (1: the 2 x 2 around the pixel)
-  double sigmaSpatial = 1.0;   // low pixels
-  double sigmaRange = 0.25;    // natural log of the guide
+  int radius = 1;             // low pixels (1: the 2 x 2 around the pixel)
+  double sigmaSpatial = 1.0;  // low pixels
+  double sigmaRange = 0.25;   // natural log of the guide
   bool ratio = false;
-  double darkGuide = 2e-3;     // linear guide value
+  double darkGuide = 2e-3;  // linear guide value
 };
 ImageF jointBilateralUpsample(const ImageF& low, const ImageF& lowGuide, const ImageF& fullGuide,
                               const JointBilateralOptions& options = {});
 // The same for several images of the guide's low size at once (the weights, which depend on the
 // guide only, are found once per pixel). Each must be lowGuide's size; fullGuide larger.
-std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& lows, const ImageF& lowGuide,
-                                           const ImageF& fullGuide, const JointBilateralOptions& options = {});
+std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& lows,
+                                           const ImageF& lowGuide, const ImageF& fullGuide,
+                                           const JointBilateralOptions& options = {});
 
 }  // namespace inlay
