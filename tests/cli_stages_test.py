@@ -14,8 +14,9 @@ usage: cli_stages_test.py INLAY_CLI
 import json, os, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-STAGES = ["photo", "response", "camera", "layout", "occluders", "surfaces", "room", "lights", "shafts",
-          "lighting", "sun ratio", "refine", "lighting refit", "render scene", "objects", "grain"]
+STAGES = ["photo", "response", "working copy", "camera", "layout", "occluders", "surfaces", "room", "lights",
+          "shafts", "lighting", "sun ratio", "refine", "lighting refit", "photo size", "render scene", "objects",
+          "grain"]
 
 
 def render(cli, scene, out, name):
@@ -63,7 +64,7 @@ def main():
     out = tempfile.mkdtemp(prefix="inlay_stages_")
     failures = []
     not_marked = {"occluders": "none marked", "surfaces": "none marked", "shafts": "no sun marked",
-                  "sun ratio": "no sun marked"}
+                  "sun ratio": "no sun marked", "photo size": "the working copy is the photo"}
     lines, report, lights = render(cli, example, out, "example")
     check("example", lines, report, lights, ["photo", "camera", "lighting", "refine", "objects"], not_marked, failures)
     if not lights["refinement"]["ran"]:

@@ -459,15 +459,22 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
     }
   }
   const std::vector<std::string> expected = {
-      "photo",  "response", "camera",    "layout", "occluders",      "surfaces",     "room",    "lights",
-      "shafts", "lighting", "sun ratio", "refine", "lighting refit", "render scene", "objects", "grain"};
+      "photo",    "response",       "working copy", "camera",       "layout",   "occluders",
+      "surfaces", "room",           "lights",       "shafts",       "lighting", "sun ratio",
+      "refine",   "lighting refit", "photo size",   "render scene", "objects",  "grain"};
   EXPECT_EQ(names, expected);
-  for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio"})
+  for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio", "photo size"})
     EXPECT_FALSE(stageNamed(*ps, skipped)->ran) << skipped;
   for (const char* ran : {"photo", "camera", "lighting", "refine", "objects"})
     EXPECT_TRUE(stageNamed(*ps, ran)->ran) << ran;
   EXPECT_EQ(describeStage(*stageNamed(*ps, "shafts")), "shafts: skipped, no sun marked");
   EXPECT_EQ(describeStage(*stageNamed(*ps, "occluders")), "occluders: skipped, none marked");
+  // The example (512 x 384) is smaller than the working size: every stage at the photo's size.
+  EXPECT_EQ(ps->workingPx, (std::array<int, 2>{512, 384}));
+  EXPECT_EQ(describeStage(*stageNamed(*ps, "photo size")),
+            "photo size: skipped, the working copy is the photo");
+  for (const StageRecord& s : ps->stages) EXPECT_FALSE(s.reducedImage) << s.name;
+  EXPECT_EQ(stageNamed(*ps, "lighting")->workingWidth, 512);
   EXPECT_EQ(stageNamed(*ps, "camera")->detail, "the file's vanishing points and back wall");
   const std::string refine = describeStage(*stageNamed(*ps, "refine"));
   EXPECT_EQ(refine.rfind("refine: ", 0), 0u) << refine;

@@ -91,6 +91,11 @@ Render options:
                           photo's size) instead of the estimate's
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
+  --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
+                          shafts, lighting, refinement) work on the photo reduced to at most M
+                          megapixels (default 0.5; 0: the photo's own size); their maps are
+                          brought back to the photo's size, the render and composite stay at
+                          it (decompose always works at the photo's size)
   --verbose               list every stage of the preparation on stderr: its seconds, or why it
                           was skipped ("shafts: skipped, no sun marked")
   --quiet                 no progress on stderr
@@ -134,6 +139,7 @@ struct Args {
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
+  std::optional<double> workingMp;  // --working-mp
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -172,7 +178,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--direct" || s == "--gathered" || s == "--method" || s == "--scene" || s == "--spp" ||
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
-        s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report") {
+        s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report" ||
+        s == "--working-mp") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -189,7 +196,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--min-improvement") {
+      else if (s == "--working-mp") {
+        a.workingMp = parseNumber<double>(*v);
+        if (!a.workingMp) return "--working-mp: '" + *v + "' is not a non-negative number of megapixels";
+      } else if (s == "--min-improvement") {
         a.minImprovement = parseNumber<double>(*v);
         if (!a.minImprovement || *a.minImprovement >= 1)
           return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
@@ -293,6 +303,7 @@ nlohmann::json stagesJson(const std::vector<StageRecord>& stages) {
     nlohmann::json j = {{"name", s.name}, {"ran", s.ran}};
     if (s.ran) j["seconds"] = s.seconds;
     else j["skipped"] = s.reason;
+    if (s.workingWidth > 0) j["working_px"] = {s.workingWidth, s.workingHeight};
     if (!s.detail.empty()) j["detail"] = s.detail;
     out.push_back(std::move(j));
   }
@@ -311,7 +322,11 @@ nlohmann::json stageSecondsJson(const std::vector<StageRecord>& stages) {
 nlohmann::json prepareReport(const PreparedScene& ps) {
   double total = 0;
   for (const StageRecord& s : ps.stages) total += s.seconds;
-  return {{"stages", stagesJson(ps.stages)}, {"seconds", total}, {"warnings", ps.warnings}};
+  return {{"stages", stagesJson(ps.stages)},
+          {"seconds", total},
+          {"photo_px", {ps.photo.linearRgb.width, ps.photo.linearRgb.height}},
+          {"working_px", {ps.workingPx[0], ps.workingPx[1]}},
+          {"warnings", ps.warnings}};
 }
 
 Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args& a, Progress& progress) {
@@ -331,6 +346,10 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.threads = a.threads.value_or(0);
   po.progress = [&](const std::string& stage, double f) { progress.stage(stage, f); };
   po.refineLights = !a.initialLights;
+  // decompose writes the decomposition itself: at the photo's own size.
+  po.workingMaxPixels = a.command == "decompose" ? 0.0
+                        : a.workingMp            ? *a.workingMp * 1e6
+                                                 : kWorkingMaxPixels;
   auto prepared = prepareScene(loaded->doc, po);
   if (!prepared) {
     Error e = prepared.error();

@@ -31,6 +31,8 @@
 #include <QFile>
 #include <QImageReader>
 #include <QImageWriter>
+#include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextStream>
@@ -114,15 +116,20 @@ struct Row {
   double ms;
 };
 
+bool fail(const QString& photo, const char* why) {
+  std::fprintf(stderr, "bench_big_photo: %s: %s\n", qPrintable(photo), why);
+  return false;
+}
+
 // One photo: open, prepare, first frame, paints, gestures. False when it could not be prepared.
 bool measure(const QString& photo, double megapixels, int gestures, std::vector<Row>& rows) {
   MainWindow w;
   showBenchWindow(w);
-  if (!QTest::qWaitForWindowExposed(&w)) return false;
+  if (!QTest::qWaitForWindowExposed(&w)) return fail(photo, "the window was not exposed");
   Document* doc = w.document();
   QElapsedTimer t;
   t.start();
-  if (!w.openPath(photo)) return false;
+  if (!w.openPath(photo)) return fail(photo, "openPath refused it");
   w.viewport()->repaint();
   const QSize size = w.renderer()->photoImage().size();
   auto add = [&](const QString& figure, double ms) { rows.push_back({megapixels, size, figure, ms}); };
@@ -135,12 +142,18 @@ bool measure(const QString& photo, double megapixels, int gestures, std::vector<
   }
   add(QStringLiteral("prepare_ms"), msSince(t));
   t.restart();
-  if (!waitFor([&] { return w.renderer()->hasFrame(); }, 600000)) return false;
+  if (!waitFor([&] { return w.renderer()->hasFrame(); }, 600000))
+    return fail(photo, "no first frame in 10 min");
   w.viewport()->repaint();
   add(QStringLiteral("first_frame_ms"), msSince(t));
   const QSize preview = w.renderer()->previewSize();
   add(QStringLiteral("preview_megapixels"), double(preview.width()) * preview.height() * 1e-6);
-  if (!w.insertBuiltin(QStringLiteral("builtin:sphere"))) return false;
+  if (!w.insertBuiltin(QStringLiteral("builtin:sphere"))) {
+    // Open, prepare and first frame stand; the arranging figures need an object.
+    std::fprintf(stderr, "bench_big_photo: %s: no sphere inserted (%s): no paint or gesture figures\n",
+                 qPrintable(photo), qPrintable(w.statusBar()->currentMessage()));
+    return true;
+  }
   waitFor([&] { return w.renderer()->isCurrent(); }, 60000);
   for (double ms : paintTimes(w, 30)) add(QStringLiteral("paint_ms"), ms);
   std::vector<double> cpu;
@@ -207,6 +220,8 @@ int main(int argc, char** argv) {
   for (const QString& item : parser.value(mpOpt).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
     const double mp = item.toDouble();
     const QString path = upscaled(source, mp, QDir(tmp.path()));
+    if (path.isEmpty())
+      std::fprintf(stderr, "bench_big_photo: the %.1f MP photo could not be written\n", mp);
     if (path.isEmpty() || !measure(path, mp, gestures, rows)) {
       std::fprintf(stderr, "bench_big_photo: %.1f MP failed\n", mp);
       return 1;

@@ -3,18 +3,23 @@
 #include "inlay/engine/data_dirs.h"
 
 #include "inlay/modeling/estimate_camera.h"
+#include "inlay/modeling/image_resample.h"
 #include "inlay/modeling/occluder.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/lighting/sun_ratio.h"
 #include "inlay/render/composite.h"
 #include "inlay/render/gltf_export.h"
 #include "inlay/render/grain.h"
+#include "inlay/render/path_tracer.h"
+#include "inlay/render/scene.h"
+#include "inlay/modeling/parallel.h"
 #include "inlay/modeling/subdivide.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -144,14 +149,16 @@ std::vector<uint8_t> usableDirect(const LightingEstimate& l, const ImageF& light
 
 // Each sun's strength from the ratio of its lit patch to the same surface's shadow (sun_ratio.h);
 // the gathered light keeps the patch's bounce at the new strength. Light outlines are no data.
-void sunsFromShadowRatio(PreparedScene& ps, const ImageF& lightMask) {
+// `photoLinear`, `camera` and `lightMask` are the working copy's (the lighting's pixel frame).
+void sunsFromShadowRatio(PreparedScene& ps, const ImageF& photoLinear, const Camera& camera,
+                         const ImageF& lightMask) {
   LightingEstimate& L = ps.lighting;
-  ImageF photo = ps.photo.linearRgb;
+  ImageF photo = photoLinear;
   for (int y = 0; y < photo.height && !lightMask.empty(); ++y)
     for (int x = 0; x < photo.width; ++x)
       if (lightMask.at(x, y) > 0.5f) photo.setRgb(x, y, Vec3::Constant(1e9));
   for (size_t k = 0; k < L.suns.size(); ++k) {
-    auto r = sunStrengthFromShadowRatio(photo, ps.camera, ps.geometry, L.gathered, L.lights, L.suns[k]);
+    auto r = sunStrengthFromShadowRatio(photo, camera, ps.geometry, L.gathered, L.lights, L.suns[k]);
     if (!r) {
       ps.warnings.push_back("sun " + std::to_string(k) +
                             ": strength kept as estimated: " + r.error().reason);
@@ -443,10 +450,26 @@ std::string describeStage(const StageRecord& stage) {
   if (!stage.ran) return stage.name + ": skipped, " + stage.reason;
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.3f s", stage.seconds);
-  return stage.name + ": " + seconds + (stage.detail.empty() ? "" : " (" + stage.detail + ")");
+  std::string line = stage.name + ": " + seconds +
+                     (stage.detail.empty() ? "" : " (" + stage.detail + ")");
+  if (stage.reducedImage)
+    line += " at " + std::to_string(stage.workingWidth) + " x " + std::to_string(stage.workingHeight) +
+            " px";
+  return line;
 }
 
 namespace {
+
+// The photo the image stages (occluder mattes, the lights' mask, shafts, lighting, sun ratio,
+// refine, refit) work on: the photo area-averaged to PrepareOptions::workingMaxPixels, with the
+// camera and every pixel coordinate scaled to it; or, when the photo has no more pixels, the
+// photo itself (then every stage gets exactly what it got before there was a working copy).
+struct WorkingCopy {
+  bool reduced = false;
+  double sx = 1, sy = 1;  // working pixels per photo pixel, per axis
+  ImageF photo;           // the reduced photo (empty when not reduced)
+  ImageF photoLightMask;  // the lights' mask at the photo's size (when reduced)
+};
 
 // What the stages of prepareScene() hand on to each other besides the PreparedScene they fill.
 struct Preparation {
@@ -468,6 +491,39 @@ struct Preparation {
   std::vector<SunLight> suns;               // from the shafts
   LightingOptions lightingOptions;          // the lighting stage's, again for its refit
   bool refined = false;                     // the refinement ran
+  WorkingCopy work;
+  // The image size a stage worked at when it is neither the photo's nor the working copy's
+  // (the camera estimate reduces the photo itself); set by the stage, read by runStage.
+  std::array<int, 2> stagePx{};
+
+  // The image the image stages read, and the camera in its pixels.
+  const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
+  Camera workCamera() const {
+    if (!work.reduced) return ps.camera;
+    Camera c = ps.camera;
+    c.widthPx = work.photo.width;
+    c.heightPx = work.photo.height;
+    c.focalPx *= work.sx;
+    c.principalPx = toWork(ps.camera.principalPx);
+    return c;
+  }
+  Vec2 toWork(const Vec2& px) const {
+    return work.reduced ? Vec2(px.x() * work.sx, px.y() * work.sy) : px;
+  }
+  std::vector<Vec2> toWork(std::vector<Vec2> pts) const {
+    for (Vec2& q : pts) q = toWork(q);
+    return pts;
+  }
+  ShaftKeys toWork(ShaftKeys shaft) const {
+    for (auto* box : {&shaft.shaftBoxPx, &shaft.sourceBoxPx})
+      if (*box && work.reduced) {
+        auto& b = **box;
+        b = {b[0] * work.sx, b[1] * work.sy, b[2] * work.sx, b[3] * work.sy};
+      }
+    return shaft;
+  }
+  // The pixels showing an outlined light, at the photo's own size.
+  const ImageF& photoLightMask() const { return work.reduced ? work.photoLightMask : lightMask; }
 
   bool cancelled() const { return opt.cancel && opt.cancel->shouldStop(); }
   // The refinement holds light i where the estimate put it.
@@ -481,6 +537,59 @@ Error cancelledError() { return Error{"", "", "cancelled"}; }
 // "1 light", "2 lights".
 std::string countOf(size_t n, const std::string& thing) {
   return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+
+// An occluder's matte needs the photo's own detail (a table top a few pixels thick decides
+// whether the table is a slab; a working copy's matte upsampled made d6's 4 cm top 55 cm thick):
+// on a reduced photo it is found on the region of its scribbles (their box with a margin) cut
+// from the photo, at the photo's size up to kMatteMaxPixels (reduced beyond, its alpha brought
+// back by joint bilateral upsampling), and pasted into a matte of the photo's size.
+constexpr double kMatteMaxPixels = 1e6;
+
+Expected<OccluderMatte> matteOnRegion(const Preparation& p, const OccluderKeys& o,
+                                      const std::string& key) {
+  const ImageF& photo = p.ps.photo.linearRgb;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
+    for (const auto& stroke : *strokes)
+      for (const Vec2& q : stroke)
+        if (q.allFinite())
+          x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+          y1 = std::max(y1, q.y());
+  if (!(x1 >= x0 && y1 >= y0))  // no usable stroke: the matting says why
+    return matteFromScribbles(p.workPhoto(), o.foregroundScribblesPx, o.backgroundScribblesPx, key);
+  const double margin = std::max(16.0, 0.1 * std::max(x1 - x0, y1 - y0));
+  const int ix0 = std::clamp(int(std::floor(x0 - margin)), 0, photo.width - 1);
+  const int iy0 = std::clamp(int(std::floor(y0 - margin)), 0, photo.height - 1);
+  const int cw = std::clamp(int(std::ceil(x1 + margin)), ix0 + 1, photo.width) - ix0;
+  const int ch = std::clamp(int(std::ceil(y1 + margin)), iy0 + 1, photo.height) - iy0;
+  ImageF crop(cw, ch, photo.channels);
+  for (int y = 0; y < ch; ++y)
+    std::copy_n(photo.pixel(ix0, iy0 + y), size_t(cw) * photo.channels, crop.pixel(0, y));
+  const auto [rw, rh] = workingSizeFor(cw, ch, kMatteMaxPixels);
+  const ImageF region = rw == cw && rh == ch ? crop : resizeImage(crop, rw, rh);
+  const double sx = double(rw) / cw, sy = double(rh) / ch;
+  const auto inRegion = [&](std::vector<std::vector<Vec2>> strokes) {
+    for (auto& stroke : strokes)
+      for (Vec2& q : stroke) q = Vec2((q.x() - ix0) * sx, (q.y() - iy0) * sy);
+    return strokes;
+  };
+  auto m = matteFromScribbles(region, inRegion(o.foregroundScribblesPx),
+                              inRegion(o.backgroundScribblesPx), key);
+  if (!m) return m;
+  ImageF alpha = region.width == cw ? m->alphaPx : jointBilateralUpsample(m->alphaPx, region, crop);
+  OccluderMatte out = *m;
+  out.alphaPx = ImageF(photo.width, photo.height, 1, 0.f);
+  for (int y = 0; y < ch; ++y)
+    for (int x = 0; x < cw; ++x) {
+      const float a = alpha.at(x, y);
+      out.alphaPx.at(ix0 + x, iy0 + y) = a > 0 ? std::min(a, 1.f) : 0.f;  // NaN to 0
+    }
+  out.boxPx = {ix0 + int(std::floor(m->boxPx[0] / sx)), iy0 + int(std::floor(m->boxPx[1] / sy)),
+               std::min(photo.width, ix0 + int(std::ceil(m->boxPx[2] / sx))),
+               std::min(photo.height, iy0 + int(std::ceil(m->boxPx[3] / sy)))};
+  out.lowestPx = Vec2(ix0 + m->lowestPx.x() / sx, iy0 + m->lowestPx.y() / sy);
+  return out;
 }
 
 // --- Why a scene does not need a stage (empty: it does) ---
@@ -510,6 +619,10 @@ std::string refineNotNeeded(const Preparation& p) {
   }
   if (!allLocked) return "";
   return anyGiven ? "every light locked or given (\"refine\": false)" : "every light locked";
+}
+
+std::string photoSizeNotNeeded(const Preparation& p) {
+  return p.work.reduced ? "" : "the working copy is the photo";
 }
 
 std::string refitNotNeeded(const Preparation& p) {
@@ -545,12 +658,33 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   return {};
 }
 
+// The working copy (WorkingCopy), made once the response has linearised the photo.
+Status makeWorkingCopy(Preparation& p, std::string& detail) {
+  const ImageF& photo = p.ps.photo.linearRgb;
+  const auto [w, h] = workingSizeFor(photo.width, photo.height, p.opt.workingMaxPixels);
+  WorkingCopy& wc = p.work;
+  wc.reduced = w != photo.width || h != photo.height;
+  if (wc.reduced) {
+    wc.sx = double(w) / photo.width;
+    wc.sy = double(h) / photo.height;
+    wc.photo = resizeImage(photo, w, h);
+  }
+  p.ps.workingPx = {w, h};
+  detail = wc.reduced ? "the photo area-averaged" : "the photo's own size";
+  return {};
+}
+
 Status findCamera(Preparation& p, std::string& detail) {
   auto cl = cameraAndLayoutOf(p.doc.camera, p.doc.layout, p.ps.photo, false, p.opt.cancel);
   if (!cl) return cl.error();
   p.ps.camera = cl->camera;
   p.layoutCorners = cl->backWallPx;
   detail = cl->estimate ? "estimated from the photo" : "the file's vanishing points and back wall";
+  if (cl->estimate) {  // the estimate reduces the photo itself (EstimateOptions::maxWorkingSidePx)
+    const ImageF& photo = p.ps.photo.linearRgb;
+    const double s = cl->estimate->workingScale;
+    p.stagePx = {int(std::lround(photo.width * s)), int(std::lround(photo.height * s))};
+  }
   p.ps.cameraEstimate = std::move(cl->estimate);
   for (const auto& w : cl->warnings) p.ps.warnings.push_back(w);
   return {};
@@ -583,8 +717,9 @@ Status occluderMattes(Preparation& p, std::string& detail) {
   for (size_t i = 0; i < p.doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     const OccluderKeys& o = p.doc.occluders[i];
-    auto matte =
-        matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx, o.backgroundScribblesPx, key);
+    auto matte = p.work.reduced ? matteOnRegion(p, o, key)
+                                : matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx,
+                                                     o.backgroundScribblesPx, key);
     if (!matte) return matte.error();
     p.mattes.push_back(std::move(*matte));
     if (p.cancelled()) return cancelledError();
@@ -653,7 +788,12 @@ Status lightsFromMarks(Preparation& p, std::string& detail) {
   }
   if (p.lights.empty())
     p.ps.warnings.push_back("lights: none given; the objects are lit by the room's gathered light only");
-  p.lightMask = rasterizeLights(ps.photo.linearRgb.width, ps.photo.linearRgb.height, p.outlines, 2);
+  std::vector<std::vector<Vec2>> workOutlines;
+  for (const auto& o : p.outlines) workOutlines.push_back(p.toWork(o));
+  p.lightMask = rasterizeLights(p.workPhoto().width, p.workPhoto().height, workOutlines, 2);
+  if (p.work.reduced)  // the same margin at the photo's size, for the render's bounces
+    p.work.photoLightMask = rasterizeLights(ps.photo.linearRgb.width, ps.photo.linearRgb.height,
+                                            p.outlines, int(std::lround(2 / p.work.sx)));
   detail = std::to_string(p.outlines.size()) + " outlined, " +
            std::to_string(p.lights.size() - p.outlines.size()) + " placed in 3D";
   return {};
@@ -682,7 +822,7 @@ bool addSkyOfUnseenWindow(Preparation& p, size_t i, const SunLight& sun) {
 Status sunsFromShafts(Preparation& p, std::string& detail) {
   size_t skies = 0;
   for (size_t i = 0; i < p.doc.shafts.size(); ++i) {
-    auto shaft = sunFromShaft(p.doc.shafts[i], p.ps.photo.linearRgb, p.ps.camera, p.ps.geometry,
+    auto shaft = sunFromShaft(p.toWork(p.doc.shafts[i]), p.workPhoto(), p.workCamera(), p.ps.geometry,
                               "shafts[" + std::to_string(i) + "]");
     if (!shaft) return shaft.error();
     p.suns.push_back(shaft->sun);
@@ -701,7 +841,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.cancel = p.opt.cancel;
   lo.threads = p.opt.threads;
   lo.seed += p.opt.seed;
-  auto lighting = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, p.lights, p.estimated,
+  auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
@@ -713,7 +853,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
 }
 
 Status sunsFromRatio(Preparation& p, std::string& detail) {
-  sunsFromShadowRatio(p.ps, p.lightMask);
+  sunsFromShadowRatio(p.ps, p.workPhoto(), p.workCamera(), p.lightMask);
   detail = countOf(p.ps.lighting.suns.size(), "sun");
   return {};
 }
@@ -736,7 +876,7 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   if (!ro.cancel) ro.cancel = p.opt.cancel;
   ro.nonMatteSurfaces = p.nonMatte;
   ro.sunBounce = ps.lighting.sunBounce;
-  auto refined = refineLights(ps.camera, ps.geometry, ps.lighting.albedo, ps.lighting.direct,
+  auto refined = refineLights(p.workCamera(), ps.geometry, ps.lighting.albedo, ps.lighting.direct,
                               usableDirect(ps.lighting, p.lightMask), ps.lighting.lights, specs,
                               ps.lighting.suns, ro);
   if (!refined) return p.cancelled() ? cancelledError() : refined.error();
@@ -761,12 +901,92 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   std::vector<bool> fitAgain(p.estimated);
   for (size_t i = 0; i < fitAgain.size() && i < p.doc.lights.size(); ++i)
     fitAgain[i] = p.estimated[i] && !p.doc.lights[i].lock;
-  auto again = estimateLighting(ps.photo.linearRgb, ps.camera, ps.geometry, ps.lighting.lights, fitAgain,
+  auto again = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, ps.lighting.lights, fitAgain,
                                 p.lightMask, ps.lighting.suns, p.lightingOptions);
   if (!again) return p.cancelled() ? cancelledError() : again.error();
   ps.lighting = std::move(*again);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
   detail = "a light moved";
+  return {};
+}
+
+// The surface each photo pixel's centre shows, from the working copy's (`working`): where the
+// working pixel and its eight neighbours show one surface, that surface; elsewhere (edges
+// between surfaces) the pixel's own ray is cast. A surface narrower than a working pixel that
+// no working pixel centre hits is not seen.
+std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vector<int>& working) {
+  const int W = p.ps.photo.linearRgb.width, H = p.ps.photo.linearRgb.height;
+  const int w = p.work.photo.width, h = p.work.photo.height;
+  std::vector<int> ids(size_t(W) * H, -1);
+  if (working.size() != size_t(w) * h) return ids;
+  const RoomTracer tracer(p.ps.geometry);
+  const Camera& camera = p.ps.camera;
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const int ly = std::min(h - 1, int((y + 0.5) * p.work.sy));
+      for (int x = 0; x < W; ++x) {
+        const int lx = std::min(w - 1, int((x + 0.5) * p.work.sx));
+        const int id = working[size_t(ly) * w + lx];
+        bool uniform = true;
+        for (int dy = -1; dy <= 1 && uniform; ++dy)
+          for (int dx = -1; dx <= 1 && uniform; ++dx) {
+            const int qx = std::clamp(lx + dx, 0, w - 1), qy = std::clamp(ly + dy, 0, h - 1);
+            uniform = working[size_t(qy) * w + qx] == id;
+          }
+        if (uniform) {
+          ids[size_t(y) * W + x] = id;
+          continue;
+        }
+        const auto hit = tracer.intersect(camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)), 1e-6);
+        if (hit) ids[size_t(y) * W + x] = hit->surfaceId;
+      }
+    }
+  });
+  return ids;
+}
+
+// The lighting's maps, estimated on the working copy, at the photo's size for the render and
+// the composite: the albedo, the direct light and the fit's albedos by joint bilateral
+// upsampling of their ratio to the photo (a smooth factor but at shadow edges, which the photo
+// guides), times the photo, so they keep its full-size texture; the gathered light (smooth) and
+// the suns' bounce bilinearly; and each pixel's surface cast again through the photo's pixel
+// centres. The decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped) and the
+// albedos only diagnostics read (see below) stay at
+// the working size.
+Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
+  LightingEstimate& L = p.ps.lighting;
+  const ImageF& photo = p.ps.photo.linearRgb;
+  const ImageF& low = p.work.photo;
+  const auto t = Clock::now();
+  // The maps share the upsampling's weights (they depend on the photo only). The fit's albedo
+  // is read at the photo's size only for a sun's clipped patch (radianceForBounces); Retinex's
+  // only by `inlay-cli decompose`, which works at the photo's size.
+  std::vector<ImageF*> maps{&L.albedo, &L.direct};
+  if (!L.suns.empty()) maps.push_back(&L.physicalAlbedo);
+  maps.erase(
+      std::remove_if(maps.begin(), maps.end(),
+                     [&](const ImageF* m) { return m->width != low.width || m->height != low.height; }),
+      maps.end());
+  JointBilateralOptions ratio;
+  ratio.ratio = true;
+  std::vector<ImageF> up =
+      jointBilateralUpsample(std::vector<const ImageF*>(maps.begin(), maps.end()), low, photo, ratio);
+  for (size_t k = 0; k < maps.size(); ++k) {
+    // Albedos in [0, 1]; the direct light and the fit's albedo >= 0 (NaN to 0).
+    const float highest = maps[k] == &L.albedo ? 1.f : std::numeric_limits<float>::max();
+    for (float& v : up[k].data) v = v > 0 ? std::min(v, highest) : 0.f;
+    *maps[k] = std::move(up[k]);
+  }
+  if (!L.gathered.empty()) L.gathered = resizeImage(L.gathered, photo.width, photo.height);
+  for (ImageF& b : L.sunBounce)
+    if (!b.empty()) b = resizeImage(b, photo.width, photo.height);
+  if (p.cancelled()) return cancelledError();
+  const double mapsSeconds = secondsSince(t);
+  L.firstSurfacePerPixel = firstSurfacesAtPhotoSize(p, L.firstSurfacePerPixel);
+  char buf[120];
+  std::snprintf(buf, sizeof buf, "from %d x %d px: maps %.2f s, surfaces cast %.2f s", low.width,
+                low.height, mapsSeconds, secondsSince(t) - mapsSeconds);
+  detail = buf;
   return {};
 }
 
@@ -793,7 +1013,7 @@ Status buildRenderScene(Preparation& p, std::string&) {
   rs.roomAlbedo.photoRadianceUsable.assign(size_t(W) * H, 1);
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
-      if (p.lightMask.at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
+      if (p.photoLightMask().at(x, y) > 0.5f) rs.roomAlbedo.photoRadianceUsable[size_t(y) * W + x] = 0;
   return {};
 }
 
@@ -822,6 +1042,8 @@ struct Stage {
   const char* progress;
   std::string (*notNeeded)(const Preparation&);
   Status (*run)(Preparation&, std::string& detail);
+  // The image it works at (StageRecord::workingWidth): none, the photo's size, the working copy.
+  enum class At { None, Photo, Working } at = At::None;
 };
 
 // Runs `stage` when the scene needs it and records its seconds, or records why it was skipped.
@@ -832,9 +1054,17 @@ Status runStage(const Stage& stage, Preparation& p) {
   if (record.reason.empty()) {
     if (stage.progress && p.opt.progress) p.opt.progress(stage.progress, 0);
     const auto t = Clock::now();
+    p.stagePx = {0, 0};
     if (Status st = stage.run(p, record.detail); !st) return st;
     record.ran = true;
     record.seconds = secondsSince(t);
+    const ImageF& photo = p.ps.photo.linearRgb;
+    std::array<int, 2> px = p.stagePx;
+    if (px[0] == 0 && stage.at == Stage::At::Photo) px = {photo.width, photo.height};
+    if (px[0] == 0 && stage.at == Stage::At::Working) px = {p.workPhoto().width, p.workPhoto().height};
+    record.workingWidth = px[0];
+    record.workingHeight = px[1];
+    record.reducedImage = px[0] > 0 && (px[0] != photo.width || px[1] != photo.height);
   }
   p.ps.stages.push_back(std::move(record));
   return p.cancelled() ? Status(cancelledError()) : Status();
@@ -843,23 +1073,26 @@ Status runStage(const Stage& stage, Preparation& p) {
 }  // namespace
 
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+  using At = Stage::At;
   static const Stage kStages[] = {
-      {"photo", "photo", nullptr, loadPhoto},
-      {"response", nullptr, nullptr, chooseResponse},
-      {"camera", "camera", nullptr, findCamera},
+      {"photo", "photo", nullptr, loadPhoto, At::Photo},
+      {"response", nullptr, nullptr, chooseResponse, At::Photo},
+      {"working copy", nullptr, nullptr, makeWorkingCopy, At::Working},
+      {"camera", "camera", nullptr, findCamera, At::Photo},
       {"layout", "room", nullptr, boxFromBackWall},
-      {"occluders", nullptr, noOccluders, occluderMattes},
+      {"occluders", nullptr, noOccluders, occluderMattes, At::Photo},
       {"surfaces", nullptr, noSurfaces, buildSurfaces},
       {"room", nullptr, nullptr, assembleRoom},
-      {"lights", "lighting", nullptr, lightsFromMarks},
-      {"shafts", nullptr, noShafts, sunsFromShafts},
-      {"lighting", nullptr, nullptr, estimateTheLighting},
-      {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio},
-      {"refine", "refine", refineNotNeeded, refineTheLights},
-      {"lighting refit", "lighting", refitNotNeeded, refitTheLighting},
-      {"render scene", "objects", nullptr, buildRenderScene},
+      {"lights", "lighting", nullptr, lightsFromMarks, At::Working},
+      {"shafts", nullptr, noShafts, sunsFromShafts, At::Working},
+      {"lighting", nullptr, nullptr, estimateTheLighting, At::Working},
+      {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio, At::Working},
+      {"refine", "refine", refineNotNeeded, refineTheLights, At::Working},
+      {"lighting refit", "lighting", refitNotNeeded, refitTheLighting, At::Working},
+      {"photo size", "objects", photoSizeNotNeeded, lightingAtPhotoSize, At::Photo},
+      {"render scene", "objects", nullptr, buildRenderScene, At::Photo},
       {"objects", nullptr, noObjects, placeTheObjects},
-      {"grain", nullptr, nullptr, measureGrain},
+      {"grain", nullptr, nullptr, measureGrain, At::Photo},
   };
   Preparation p(doc, opt);
   for (const Stage& stage : kStages)

@@ -1,5 +1,6 @@
 // Image input and output through OpenImageIO (the only unit that includes it).
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/parallel.h"
 #include "inlay/modeling/response.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -705,23 +706,29 @@ ImageF resizeImage(const ImageF& src, int width, int height) {
   if (width == src.width && height == src.height) return src;
   const int C = src.channels;
   const AxisTaps tx = axisTaps(src.width, width), ty = axisTaps(src.height, height);
+  // Rows in parallel: each output row is summed in the same order as on one thread, so the
+  // result does not depend on the thread count.
   ImageF tmp(width, src.height, C);  // horizontal pass
-  for (int y = 0; y < src.height; ++y)
-    for (int x = 0; x < width; ++x) {
-      float* d = tmp.pixel(x, y);
-      for (int k = tx.begin[x]; k < tx.begin[x + 1]; ++k) {
-        const float* s = src.pixel(tx.idx[k], y);
-        for (int c = 0; c < C; ++c) d[c] += tx.w[k] * s[c];
+  parallelFor(tbb::blocked_range<int>(0, src.height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        float* d = tmp.pixel(x, y);
+        for (int k = tx.begin[x]; k < tx.begin[x + 1]; ++k) {
+          const float* s = src.pixel(tx.idx[k], y);
+          for (int c = 0; c < C; ++c) d[c] += tx.w[k] * s[c];
+        }
       }
-    }
+  });
   ImageF dst(width, height, C);  // vertical pass
-  for (int y = 0; y < height; ++y)
-    for (int k = ty.begin[y]; k < ty.begin[y + 1]; ++k) {
-      const float wk = ty.w[k];
-      const float* srow = tmp.pixel(0, ty.idx[k]);
-      float* drow = dst.pixel(0, y);
-      for (size_t i = 0; i < size_t(width) * size_t(C); ++i) drow[i] += wk * srow[i];
-    }
+  parallelFor(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int k = ty.begin[y]; k < ty.begin[y + 1]; ++k) {
+        const float wk = ty.w[k];
+        const float* srow = tmp.pixel(0, ty.idx[k]);
+        float* drow = dst.pixel(0, y);
+        for (size_t i = 0; i < size_t(width) * size_t(C); ++i) drow[i] += wk * srow[i];
+      }
+  });
   return dst;
 }
 

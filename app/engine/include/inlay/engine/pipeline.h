@@ -17,6 +17,7 @@
 #include "inlay/render/scene.h"
 #include "inlay/render/session.h"
 
+#include <array>
 #include <functional>
 #include <map>
 #include <memory>
@@ -25,8 +26,9 @@
 
 namespace inlay {
 
-// One stage of prepareScene() (photo, response, camera, layout, occluders, surfaces, room,
-// lights, shafts, lighting, sun ratio, refine, lighting refit, render scene, objects, grain):
+// One stage of prepareScene() (photo, response, working copy, camera, layout, occluders,
+// surfaces, room, lights, shafts, lighting, sun ratio, refine, lighting refit, photo size,
+// render scene, objects, grain):
 // what it took, or why the scene did not need it ("shafts": "no sun marked"). A skipped stage
 // does none of its work.
 struct StageRecord {
@@ -35,14 +37,23 @@ struct StageRecord {
   double seconds = 0;  // wall seconds, when it ran
   std::string reason;  // why it was skipped; empty when it ran
   std::string detail;  // what it did, when it ran (may be empty): "estimated from the photo"
+  // The image size it worked at, when it ran and works on an image (0 x 0: it works on none,
+  // as layout, room, objects): the photo's, the working copy's (PrepareOptions::
+  // workingMaxPixels) or its own (the camera estimate reduces the photo itself).
+  int workingWidth = 0, workingHeight = 0;
+  bool reducedImage = false;  // that size is smaller than the photo's
 };
 // One line for a log: "camera: 0.84 s (estimated from the photo)", "shafts: skipped, no sun
-// marked".
+// marked"; a stage that worked on a reduced image says its size: "lighting: 20.1 s (1 light,
+// 0 suns) at 816 x 612 px".
 std::string describeStage(const StageRecord& stage);
 
 struct PreparedScene {
   SceneDoc doc;
   LoadedImage photo;  // linear RGB (decoded by `response`), oriented
+  // The size of the working copy the image stages ran on (PrepareOptions::workingMaxPixels):
+  // the photo's own size when it has no more pixels.
+  std::array<int, 2> workingPx{};
   // How the photo's codes map to radiance (camera.response, estimated when "auto"); the
   // composite is encoded with it (SaveOptions::response), so untouched pixels keep their codes.
   // Linear for EXR/HDR photos.
@@ -56,7 +67,11 @@ struct PreparedScene {
   std::optional<CameraEstimate> cameraEstimate;
   std::vector<Extrusion> extrusions;
   SceneGeometry geometry;
-  LightingEstimate lighting;  // lights and suns: refined when the refinement ran
+  // Lights and suns refined when the refinement ran. Its images are at the photo's size (from
+  // the working copy by the "photo size" stage), except the decomposition's inputs
+  // (decomposeStart, decomposeValid, decomposeClipped), Retinex's albedo (retinexAlbedo) and,
+  // in a room without a sun, the fit's albedo (physicalAlbedo): they stay at workingPx.
+  LightingEstimate lighting;
   // The lights and suns before the refinement (the estimate's radiance fit at the outlined or
   // placed positions), and what the refinement did (empty history when it did not run).
   std::vector<AreaLight> initialLights;
@@ -73,8 +88,19 @@ struct PreparedScene {
   std::vector<StageRecord> stages;
 };
 
+// The working copy's default size: the image stages of a bigger photo run on it (about 816 x 612
+// for a 4:3 photo); dev rooms (512 x 384) and York photos (632 x 474) are smaller, so run on
+// the photo itself.
+inline constexpr double kWorkingMaxPixels = 0.5e6;
+
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
+  // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
+  // photo area-averaged to at most this many pixels (occluder mattes on their scribbles' region
+  // of the photo, at up to 1 MP), their maps brought back
+  // to the photo's size by guided upsampling; the render and composite stay at the photo's
+  // size. <= 0: every stage at the photo's own size.
+  double workingMaxPixels = kWorkingMaxPixels;
   // stage name ("photo", "camera", "room", "lighting", "refine", "objects": coarser than
   // PreparedScene::stages) and fraction in [0,1]; called on the calling thread.
   std::function<void(const std::string& stage, double fraction)> progress;
