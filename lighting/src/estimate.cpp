@@ -365,8 +365,10 @@ struct LightingFit {
   };
   std::vector<SunPatch> sunPatches;
 
-  // 4. The light fit's pixels and unknowns.
+  // 4. The light fit's pixels and unknowns, and the photo it fits (fitPhoto: the mean over a small
+  // window of the same surface, LightingOptions::fitWindow).
   std::vector<size_t> candidates;
+  ImageF fitPhoto;
   std::vector<bool> refine;
   std::vector<std::array<double, 3>> rho;
   std::vector<std::array<double, 3>> L;
@@ -411,6 +413,7 @@ struct LightingFit {
   void gatherAll();
   void gatherUnseenPatches();
   bool chooseFitPixels();
+  void averageFitPhoto();
   void chooseGatherSamples();
   bool gatherAndFit();
   void predictUnseenFromFit();
@@ -736,6 +739,7 @@ bool LightingFit::chooseFitPixels() {
       candidates.push_back(idx);
     }
   if (candidates.empty()) return false;
+  averageFitPhoto();
   std::mt19937 rng(opt.seed);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   if (candidates.size() > size_t(opt.fitPixels)) candidates.resize(size_t(opt.fitPixels));
@@ -747,6 +751,37 @@ bool LightingFit::chooseFitPixels() {
   rho.assign(S, {0.5, 0.5, 0.5});
   L.assign(C, {0, 0, 0});
   return true;
+}
+
+// The photo the light fit reads: per pixel the mean over the (2 fitWindow + 1)^2 pixels around it
+// that show the same surface, are finite and neither a light nor clipped (a clipped pixel keeps
+// its own value: a lower bound). The fit compares logarithms, and the log of a noisy value is
+// biased low (by about half its relative variance, more under the robust loss, which discounts
+// the rare bright samples of a path-traced or high-ISO photo): averaging first removes most of it.
+void LightingFit::averageFitPhoto() {
+  fitPhoto = photo;
+  const int r = std::max(0, opt.fitWindow);
+  // Rooms with a sun keep the pixels as they are: the fit ties the sun's strength to its clipped
+  // patch's bounce and the window's clipped gain pixel by pixel next to the beam's sharp edge
+  // (averaged, AClippedSunPatchsBounceTellsTheSunsStrength and
+  // ClippedSunPatchDoesNotShareTheWindowsGain fail), as they keep two plain passes.
+  if (r == 0 || K > 0) return;
+  auto usable = [&](int x, int y, int surface) {
+    return ps[size_t(y) * W + x].surface == surface && !isLight(x, y) && !saturated(x, y);
+  };
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < W; ++x) {
+        const int s = ps[size_t(y) * W + x].surface;
+        if (s < 0 || !usable(x, y, s)) continue;
+        Vec3 sum = Vec3::Zero();
+        int n = 0;
+        for (int yy = std::max(0, y - r); yy <= std::min(H - 1, y + r); ++yy)
+          for (int xx = std::max(0, x - r); xx <= std::min(W - 1, x + r); ++xx)
+            if (usable(xx, yy, s)) sum += photo.rgb(xx, yy), ++n;
+        if (n > 0) fitPhoto.setRgb(x, y, Vec3(sum / n));
+      }
+  });
 }
 
 // The gather's rays per pixel when not given: from a pilot on up to 64 grid points, for the
@@ -859,7 +894,7 @@ double LightingFit::fitStartRadiance() const {
     for (size_t j = 0; j < C; ++j) esum += E[idx * C + j];
     if (esum < 1e-6) continue;
     const int x = int(idx % W), y = int(idx / W);
-    const double b = luminance(photo.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
+    const double b = luminance(fitPhoto.rgb(x, y)), g = luminance(out.gathered.rgb(x, y));
     ratios.push_back(std::max(0.0, b / 0.6 - g) / esum);
   }
   double start = 1.0;
@@ -900,7 +935,7 @@ void LightingFit::fitChannel(int c, double& cost) {
     const int s = ps[idx].surface;
     std::vector<double> e(C);
     for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
-    const double b = photo.at(x, y, c);
+    const double b = fitPhoto.at(x, y, c);
     std::vector<double*> blocks{&rho[s][c]};
     for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
     if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);

@@ -52,7 +52,12 @@ struct LightingOptions {
   int maxPasses = 5;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
-  int fitPixels = 6000;          // pixels sampled for the fit
+  int fitPixels = 6000;  // pixels sampled for the fit
+  // The fit reads each pixel as the mean of the photo over the (2 fitWindow + 1)^2 pixels around
+  // it on the same surface (0: the pixel alone): the log of a noisy or finely textured pixel is
+  // biased low, which made the albedo too dark and the lights too bright (estimate.cpp; chosen on
+  // half A of the training rooms, docs/generalization.md).
+  int fitWindow = 4;
   double saturatedAbove = 0.98;  // linear value treated as clipped
   // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
   // the model (a light or opening it lacks, wrong geometry): its albedo comes from the photo's
