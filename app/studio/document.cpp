@@ -584,7 +584,7 @@ std::optional<Vec2> Document::spotBeside(int index) const {
   const Vec3 base = prepared_->placements[size_t(index)].baseWorld;
   const double step = 1.15 * std::max({size->x(), size->z(), 0.05});
   for (const Vec3& dir : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)}) {
-    const std::optional<Vec2> px = cam.project(base + step * dir);
+    std::optional<Vec2> px = cam.project(base + step * dir);
     if (!px || px->x() < 0 || px->y() < 0 || px->x() >= cam.widthPx || px->y() >= cam.heightPx) continue;
     const auto hit = prepared_->geometry.intersect(cam.rayThroughPixel(*px), /*supportsOnly=*/true);
     // The same level (a duplicate on a table top stays on it, not on the floor beside it).

@@ -1021,7 +1021,7 @@ void MainWindow::insertModelDialog() {
   if (!path.isEmpty()) insertModelFile(path);
 }
 
-bool MainWindow::insertModelFile(const QString& path, std::optional<Vec2> dropPx) {
+bool MainWindow::insertModelFile(const QString& path, const std::optional<Vec2>& dropPx) {
   lastModelError_.clear();
   const QString name = QFileInfo(path).fileName();
   if (document_->scene().photo.empty()) {
@@ -1049,7 +1049,7 @@ bool MainWindow::insertModelFile(const QString& path, std::optional<Vec2> dropPx
   return true;
 }
 
-void MainWindow::onModelLoaded(const ModelLoadResult& result, std::optional<Vec2> dropPx) {
+void MainWindow::onModelLoaded(const ModelLoadResult& result, const std::optional<Vec2>& dropPx) {
   if (!result.model) return refuseModel(result.error);
   addRecentFile(result.model->path, kRecentModelsKey);
   if (document_->state() == Document::State::Preparing) {

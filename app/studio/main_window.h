@@ -92,7 +92,7 @@ class MainWindow : public QMainWindow {
   // in once it is ready. A refusal (unreadable, too large, flat, no place to stand) is a dialog
   // naming the file and the reason. Returns false when refused at once (not a model file, no
   // photo open).
-  bool insertModelFile(const QString& path, std::optional<Vec2> dropPx = std::nullopt);
+  bool insertModelFile(const QString& path, const std::optional<Vec2>& dropPx = std::nullopt);
   // Model files being read or waiting for the scene (the tests wait for 0).
   int pendingModelCount() const { return int(loaders_.size() + waitingModels_.size()); }
   // The last refusal of insertModelFile (for tests; cleared by the next call).
@@ -163,7 +163,7 @@ class MainWindow : public QMainWindow {
   void showError(const QString& title, const QString& text);
   void addRecentFile(const QString& path, const char* key = "recentFiles");
   // A model file read by the worker: inserted now, kept until the scene is ready, or refused.
-  void onModelLoaded(const ModelLoadResult& result, std::optional<Vec2> dropPx);
+  void onModelLoaded(const ModelLoadResult& result, const std::optional<Vec2>& dropPx);
   bool placeModel(const ModelImport& model, std::optional<Vec2> dropPx);
   void refuseModel(const QString& text);
   void rebuildRecentMenu();

@@ -72,8 +72,8 @@ class Refinement {
  public:
   Refinement(const RoomTracer& tracer, std::vector<GridPixel> px, std::vector<AreaLight> lights,
              const std::vector<LightRefineSpec>& specs, std::vector<SunLight> suns,
-             std::vector<std::vector<Vec3>> sunE, const LightRefineOptions& opt, Vec3 boxLo,
-             Vec3 boxSize)
+             std::vector<std::vector<Vec3>> sunE, const LightRefineOptions& opt, const Vec3& boxLo,
+             const Vec3& boxSize)
       : tracer_(tracer),
         px_(std::move(px)),
         lights_(std::move(lights)),

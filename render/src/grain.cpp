@@ -74,7 +74,8 @@ PatchResponse patchResponse(double widthPx, int P) {
   Eigen::MatrixXd C(n, n), X(n, 3);
   const double c0 = 0.5 * (P - 1);
   for (int i = 0; i < n; ++i) {
-    X(i, 0) = 1, X(i, 1) = i % P - c0, X(i, 2) = i / P - c0;
+    const int column = i % P, row = i / P;  // of the patch's pixel i
+    X(i, 0) = 1, X(i, 1) = column - c0, X(i, 2) = row - c0;
     for (int j = 0; j < n; ++j)
       C(i, j) = lagCorrelation(k, i % P - j % P) * lagCorrelation(k, i / P - j / P);
   }
@@ -227,6 +228,7 @@ std::vector<Bin> envelopeBins(const std::vector<Patch>& patches, int c, const No
     Bin bin;
     bin.intensity = patches[members[members.size() / 2]].mean[size_t(c)];
     std::vector<double> v;
+    v.reserve(members.size());
     for (size_t m : members) v.push_back(patches[m].residual[size_t(c)]);
     const size_t q = std::min(v.size() - 1, size_t(opt.envelopeQuantile * double(v.size())));
     std::nth_element(v.begin(), v.begin() + long(q), v.end());

@@ -767,13 +767,13 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
 
 Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng,
                                   Sums& out) const {
-  const RTCScene s = mode == Mode::WithoutOnly ? withoutScene : withScene;
+  RTCScene s = mode == Mode::WithoutOnly ? withoutScene : withScene;  // (a pointer)
   const uint32_t cardDim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex + 7;
   if (options.rayLog)
     logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir,
            st.tNear, 3.4e38);
   const int64_t t0 = rayClockNs();
-  const Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
+  Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
   const int64_t spentNs = rayClockNs() - t0;
   if (st.depth == 0) ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
   else ++out.counters.bounceRays, out.counters.bounceNs += spentNs;

@@ -147,7 +147,7 @@ Vec3 ProjectedAlbedo::lookup(int surfaceId, const Vec3& pointWorld) const {
 Vec3 ProjectedAlbedo::albedoAtPixel(int surfaceId, std::optional<size_t> i) const {
   const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean.size();
   // No mean for this id (the host gave none): a neutral grey rather than black or white.
-  const Vec3 fallback = haveMean ? surfaceMean[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
+  Vec3 fallback = haveMean ? surfaceMean[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
   if (albedo.channels < 1 || !i) return fallback;
   return albedo.rgb(int(*i % size_t(albedo.width)), int(*i / size_t(albedo.width)));
 }

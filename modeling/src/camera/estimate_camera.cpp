@@ -396,8 +396,9 @@ SearchOutput search(const std::vector<Seg>& segs, const Prior& prior, int iterat
     triples.push_back({i, j, k});
   }
   // Rungs: f from 0.25 to 6 times the long side (phi 0.5 .. 12), and the prior itself.
-  std::vector<double> rungs;
   constexpr int kRungs = 14;
+  std::vector<double> rungs;
+  rungs.reserve(kRungs + 1);
   for (int r = 0; r < kRungs; ++r) rungs.push_back(0.5 * std::pow(24.0, r / double(kRungs - 1)));
   rungs.push_back(std::exp(prior.logPhi0));
   double bestSoFar = -1e300;
@@ -467,7 +468,7 @@ Triplet ordered(const Triplet& tr, const std::array<int, 3>& order) {
 // direction when it is farther than that (or at infinity).
 Vec2 scenePixel(const Vec3& h, const Vec2& principal) {
   if (std::abs(h.z()) > 1e-300) {
-    const Vec2 p(h.x() / h.z(), h.y() / h.z());
+    Vec2 p(h.x() / h.z(), h.y() / h.z());
     if (p.allFinite() && (p - principal).norm() < 1e7) return p;
   }
   const Vec2 dir(h.x() - principal.x() * h.z(), h.y() - principal.y() * h.z());

@@ -187,8 +187,8 @@ Status checkImage(const std::string& path, const ImageF& img) {
 
 // Writes a temporary file beside `path`, reads it back completely (a short write shows up as a
 // decode error), then renames it over `path`.
-Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc bufType,
-                            const void* pixels) {
+Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec,
+                            const OIIO::TypeDesc& bufType, const void* pixels) {
   removeStaleTemps(path);
   const fs::path temp = tempPathBeside(path);
   std::error_code ec;
@@ -222,8 +222,8 @@ Status writeViaVerifiedTemp(const std::string& path, const OIIO::ImageSpec& spec
 // in memory, then writes the bytes through writeFileAtomically, whose every write is checked:
 // OpenImageIO's file writers do not all report a short write (a full disk left a truncated PNG
 // and returned success), so they never touch the target folder themselves.
-Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc bufType,
-                       const void* pixels) {
+Status writeAtomically(const std::string& path, const OIIO::ImageSpec& spec,
+                       const OIIO::TypeDesc& bufType, const void* pixels) {
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return Error{path, "", oiioError("no writer for this file type", OIIO::geterror())};
   // TIFF seeks back to patch its directories, which OpenImageIO 2.4's in-memory proxy gets

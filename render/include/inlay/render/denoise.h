@@ -31,6 +31,9 @@
 namespace inlay {
 
 // What each pixel centre's camera ray meets first, in the scene with the objects.
+// (clang-tidy 14 reports the '__i0' of the implicitly defined copy of the array members below:
+// the compiler's loop variable, not a name of ours.)
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 struct DenoiseGuides {
   int width = 0, height = 0;
   // Planes of W x H floats each (structure of arrays: the filter's loops vectorise).
