@@ -99,7 +99,8 @@ inline RenderScene manyLightsScene(int w, int h, int count, double brightLe, dou
   const int rows = (count + cols - 1) / cols;
   const double half = 0.12, y = box.ceilingM - 0.01;
   for (int k = 0; k < count; ++k) {
-    const double fx = (k % cols + 0.5) / cols, fz = (k / cols + 0.5) / rows;
+    const int column = k % cols, row = k / cols;
+    const double fx = (column + 0.5) / cols, fz = (row + 0.5) / rows;
     const Vec3 c(box.xLeftM + 0.2 + fx * (box.xRightM - box.xLeftM - 0.4), y,
                  box.zBackM + 0.2 + fz * (box.zRearM - box.zBackM - 0.4));
     // U x V = x x z = -y: the light shines down.

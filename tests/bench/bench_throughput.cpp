@@ -225,6 +225,7 @@ std::vector<LoggedRay> logRays(const RenderScene& scene, TracerOptions opt) {
 double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, LoggedRay::Type type,
                    int repeats, size_t* count) {
   std::vector<double> t;
+  t.reserve(size_t(std::max(0, repeats)));
   for (int r = 0; r < repeats; ++r) t.push_back(bare.cast(rays, type, count));
   return median(t);
 }

@@ -14,7 +14,7 @@ struct MaterialCase {
 };
 
 inline std::vector<MaterialCase> materialCases() {
-  auto make = [](Material::Kind k, Vec3 albedo, double roughness = 0.3) {
+  auto make = [](Material::Kind k, const Vec3& albedo, double roughness = 0.3) {
     Material m;
     m.kind = k;
     m.albedo = albedo;

@@ -13,6 +13,8 @@ const char* extensionFor(const uint8_t* d, size_t n) {
     return n >= len && std::memcmp(d, magic, len) == 0;
   };
   if (starts("\xFF\xD8", 2)) return ".jpg";
+  // The TIFF magics hold a NUL; `len` says how many bytes to compare.
+  // NOLINTNEXTLINE(bugprone-string-literal-with-embedded-nul)
   if (starts("II*\0", 4) || starts("MM\0*", 4)) return ".tif";
   if (starts("\x76\x2F\x31\x01", 4)) return ".exr";
   if (starts("#?", 2)) return ".hdr";

@@ -25,7 +25,7 @@ inline const std::filesystem::path& scratchDir() {
 }
 
 inline std::string writeInput(const std::string& name, const uint8_t* data, size_t size) {
-  const std::string path = (scratchDir() / name).string();
+  std::string path = (scratchDir() / name).string();
   std::ofstream(path, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(data), std::streamsize(size));
   return path;
