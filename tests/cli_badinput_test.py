@@ -71,7 +71,7 @@ def main():
         check("render refuses bad camera.response", r.returncode == 2 and key in r.stderr, r.stderr)
     r = run(cli, "response", photo)
     check("response needs -o", r.returncode == 2 and "-o" in r.stderr, r.stderr)
-    r = run(cli, "response", photo, "-o", out, "--cue", "noise")
+    r = run(cli, "response", photo, "-o", out, "--cue", "wavelet")
     check("response bad --cue", r.returncode == 2 and "--cue" in r.stderr, r.stderr)
 
     # The README's first command: `demo` renders the bundled example wherever it is run from.
