@@ -190,6 +190,20 @@ void expectSane(const ResponseEstimate& e) {
   EXPECT_GE(e.seconds, 0);
 }
 
+// `photo` is refused before any cue looks at it: every cue gives a sane, undetermined curve and
+// one warning that names `reason`.
+void expectRefusedByEveryCue(const ImageF& photo, const std::string& reason) {
+  for (const ResponseEstimateOptions::Cue cue : kEstimateCues) {
+    ResponseEstimateOptions o;
+    o.cue = cue;
+    const ResponseEstimate e = estimateResponse(photo, o);
+    expectSane(e);
+    EXPECT_FALSE(e.determined);
+    ASSERT_EQ(e.warnings.size(), 1u);
+    EXPECT_NE(e.warnings[0].find(reason), std::string::npos) << e.warnings[0];
+  }
+}
+
 // A smooth grey ramp (many levels, no edges, no noise) estimated with `cue`: it must give a sane,
 // undetermined curve and exactly one warning, which the caller checks for its reason.
 std::string warningOnASmoothRamp(ResponseEstimateOptions::Cue cue) {
@@ -317,30 +331,14 @@ TEST(ResponseEstimate, ANearlyBinaryPhotoIsUndeterminedWithAWarning) {
     for (int x = 0; x < 200; ++x)
       binary.setRgb(x, y,
                     Vec3::Constant(((x / 17 + y / 13) % 2) ? srgbToLinear(0.8f) : srgbToLinear(0.1f)));
-  for (const ResponseEstimateOptions::Cue cue : kEstimateCues) {  // the photo is refused before any cue
-    ResponseEstimateOptions o;
-    o.cue = cue;
-    const ResponseEstimate e = estimateResponse(binary, o);
-    expectSane(e);
-    EXPECT_FALSE(e.determined);
-    ASSERT_EQ(e.warnings.size(), 1u);
-    EXPECT_NE(e.warnings[0].find("binary"), std::string::npos) << e.warnings[0];
-  }
+  expectRefusedByEveryCue(binary, "binary");  // the photo is refused before any cue
 }
 
 TEST(ResponseEstimate, AHeavilyClippedPhotoIsUndeterminedWithAWarning) {
   // The synthetic photo five stops over: nearly everything white.
   ImageF photo = syntheticPhoto(CameraResponse::srgb(), 0.002, 7);
   for (float& v : photo.data) v = std::min(1.f, v * 12);
-  for (const ResponseEstimateOptions::Cue cue : kEstimateCues) {  // the photo is refused before any cue
-    ResponseEstimateOptions o;
-    o.cue = cue;
-    const ResponseEstimate e = estimateResponse(photo, o);
-    expectSane(e);
-    EXPECT_FALSE(e.determined);
-    ASSERT_EQ(e.warnings.size(), 1u);
-    EXPECT_NE(e.warnings[0].find("clipped"), std::string::npos) << e.warnings[0];
-  }
+  expectRefusedByEveryCue(photo, "clipped");  // the photo is refused before any cue
 }
 
 TEST(ResponseEstimate, APhotoWithoutStraightEdgesIsUndeterminedWithAWarning) {
