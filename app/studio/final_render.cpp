@@ -1,6 +1,7 @@
 #include "final_render.h"
 
 #include "frame_sink.h"
+#include "image_convert.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -97,6 +98,7 @@ void FinalRender::startSaving(const std::shared_ptr<const RenderFrame>& frame) {
   struct Result {
     Status status;
     std::shared_ptr<const ImageF> image;
+    QImage shown;
   };
   auto result = std::make_shared<Result>();
   const std::shared_ptr<const PreparedScene> context = context_;
@@ -106,6 +108,9 @@ void FinalRender::startSaving(const std::shared_ptr<const RenderFrame>& frame) {
     SaveOptions save;  // 8-bit files through the photo's camera response (its codes kept)
     save.response = outputResponseOf(*context);
     result->status = saveImage(file, *composite, save);  // atomic: temporary file and rename
+    if (result->status.ok())  // what the viewport shows of it: the codes of an 8-bit file
+      result->shown = save.response ? encoded8FromLinear(*composite, *save.response)
+                                    : srgb8FromLinear(*composite);
     result->image = std::move(composite);
   });
   connect(saver_, &QThread::finished, this, [this, result, frame] {
@@ -114,6 +119,7 @@ void FinalRender::startSaving(const std::shared_ptr<const RenderFrame>& frame) {
     if (!result->status.ok())
       return finish(false, QString::fromStdString(result->status.error().message()));
     composite_ = result->image;
+    shown_ = result->shown;
     finish(
         true,
         tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s")

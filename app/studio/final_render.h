@@ -12,6 +12,7 @@
 
 #include "inlay/engine/pipeline.h"
 
+#include <QImage>
 #include <QObject>
 #include <QString>
 
@@ -44,8 +45,11 @@ class FinalRender : public QObject {
   bool running() const { return !finished_; }
   bool cancelled() const { return cancelled_; }
   const Progress& progress() const { return progress_; }
-  // The image written (8-bit as saved, for the caller to show); null until finished.
+  // The image written (linear, as composited); null until finished.
   std::shared_ptr<const ImageF> composite() const { return composite_; }
+  // The same for the screen: 8-bit through the photo's camera response (the codes an 8-bit
+  // file holds; sRGB for a linear photo); null until finished.
+  const QImage& shownImage() const { return shown_; }
   // The session options the render uses (for the docs and tests).
   static SessionOptions optionsFor(const PreparedScene& scene, int maxSpp = 0);
 
@@ -72,6 +76,7 @@ class FinalRender : public QObject {
   bool cancelled_ = false;
   bool finished_ = false;
   std::shared_ptr<const ImageF> composite_;
+  QImage shown_;
   QThread* saver_ = nullptr;
   // Declared last: destroyed first (joins the render thread before the sink goes).
   std::unique_ptr<Sink> sink_;

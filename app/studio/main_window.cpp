@@ -510,6 +510,8 @@ void MainWindow::updateUndoActions() {
 }
 
 void MainWindow::onDocumentChanged(const ChangeEvent& event) {
+  // An edit (anything but a selection or a file name) ends the final image's showing.
+  if (event.what & ~unsigned(ChangeEvent::Selection | ChangeEvent::FilePath)) dropFinalImage();
   if (event.has(ChangeEvent::FilePath) || event.has(ChangeEvent::SceneReplaced)) updateTitle();
   if (event.has(ChangeEvent::PrepareStarted)) {
     delete progress_;
@@ -601,6 +603,14 @@ void MainWindow::onFrame() {
     return;
   }
   const CompositeImage& f = renderer_->frameInfo();
+  if (viewport_->showsFinalImage()) {  // the final render's figures, not the preview's
+    sppLabel_->setText(tr("final, %1 spp").arg(finalFigures_.spp));
+    rateLabel_->setText(tr("– samples/s"));
+    errorLabel_->setText(tr("error %1").arg(finalFigures_.estimatedError, 0, 'f', 4));
+    timeLabel_->setText(tr("%1 s").arg(finalFigures_.seconds, 0, 'f', 1));
+    exportAct_->setEnabled(true);
+    return;
+  }
   sppLabel_->setText(f.resolutionDivider > 1 ? tr("preview 1/%1").arg(f.resolutionDivider)
                      : f.final               ? tr("%1 spp, done").arg(f.spp)
                                              : tr("%1 spp").arg(f.spp));
@@ -741,10 +751,10 @@ void MainWindow::exportCompositeDialog() {
 // gets the chosen type's. Empty when the user cancels.
 QString MainWindow::askImagePath(const QString& title, const QString& suggestion) {
   QString selected;
-  const QString png = tr("PNG image (*.png)"), jpeg = tr("JPEG image (*.jpg *.jpeg)"),
-                tiff = tr("TIFF image (*.tif *.tiff)"), exr = tr("OpenEXR, linear (*.exr)");
-  QString path = QFileDialog::getSaveFileName(
-      this, title, suggestion, QStringList{png, jpeg, tiff, exr}.join(QStringLiteral(";;")), &selected);
+  const QStringList filters = compositeImageFilters();
+  const QString &jpeg = filters[1], &tiff = filters[2], &exr = filters[3];
+  QString path = QFileDialog::getSaveFileName(this, title, suggestion,
+                                              filters.join(QStringLiteral(";;")), &selected);
   if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
   return path + (selected == jpeg   ? QStringLiteral(".jpg")
                  : selected == tiff ? QStringLiteral(".tif")
@@ -752,8 +762,14 @@ QString MainWindow::askImagePath(const QString& title, const QString& suggestion
                                     : QStringLiteral(".png"));
 }
 
+QStringList MainWindow::compositeImageFilters() {
+  return {tr("PNG image (*.png)"), tr("JPEG image (*.jpg *.jpeg)"), tr("TIFF image (*.tif *.tiff)"),
+          tr("OpenEXR, linear (*.exr)")};
+}
+
 bool MainWindow::exportComposite(const QString& path) {
-  const std::shared_ptr<const ImageF> linear = renderer_->compositeLinear();
+  const std::shared_ptr<const ImageF> linear = finalLinear_ ? finalLinear_
+                                                            : renderer_->compositeLinear();
   if (!linear) {
     showError(tr("Nothing to export"), tr("The composite has not been rendered yet."));
     return false;
@@ -767,7 +783,10 @@ bool MainWindow::exportComposite(const QString& path) {
     return false;
   }
   const QSize preview = renderer_->previewSize();
-  if (prepared && preview.width() < prepared->camera.widthPx)
+  if (finalLinear_)
+    statusBar()->showMessage(tr("Exported %1 (the final render)").arg(QDir::toNativeSeparators(path)),
+                             5000);
+  else if (prepared && preview.width() < prepared->camera.widthPx)
     // A big photo's preview is smaller than the photo: say so, and where the full size is.
     statusBar()->showMessage(
         tr("Exported %1 (%2 spp, the preview's %3 × %4; Render Final Image writes the photo's full size)")
@@ -880,19 +899,47 @@ void MainWindow::onFinalRenderFinished(bool ok, const QString& message) {
   }
   const QString path = finalRender_ ? finalRender_->path() : QString();
   const bool cancelled = finalRender_ && finalRender_->cancelled();
+  if (ok && finalRender_) showFinalImage(*finalRender_);
   if (finalRender_) finalRender_->deleteLater();
   finalRender_ = nullptr;
   renderer_->setPaused(false);
   renderFinalAct_->setEnabled(document_->isReady());
   if (ok) {
     stepsDock_->markExported(path);
-    statusBar()->showMessage(message, 15000);
+    statusBar()->showMessage(finalShownText_);  // stays until the next edit
+    statusBar()->setToolTip(message);
   } else if (cancelled) {
     statusBar()->showMessage(message, 8000);
   } else {
     showError(tr("Cannot write the final image"), message);
   }
   Q_EMIT finalImageFinished(ok, message);
+}
+
+void MainWindow::showFinalImage(const FinalRender& render) {
+  const QImage& image = render.shownImage();
+  if (image.isNull()) return;
+  const QString file = QFileInfo(render.path()).fileName();
+  finalFigures_ = render.progress();
+  finalLinear_ = render.composite();
+  finalShownText_ = tr("Final render shown (%1, %2 × %3); the next edit returns to the live preview.")
+                        .arg(file)
+                        .arg(image.width())
+                        .arg(image.height());
+  viewport_->setFinalImage(image, tr("Final render (%1 × %2, saved as %3): shown until the next edit")
+                                      .arg(image.width())
+                                      .arg(image.height())
+                                      .arg(file));
+  onFrame();
+}
+
+void MainWindow::dropFinalImage() {
+  if (finalShownText_.isEmpty() && !viewport_->showsFinalImage()) return;
+  viewport_->setFinalImage(QImage());
+  finalLinear_.reset();
+  if (statusBar()->currentMessage() == finalShownText_) statusBar()->clearMessage();
+  finalShownText_.clear();
+  onFrame();
 }
 
 void MainWindow::exportSceneGltfDialog() {

@@ -76,7 +76,8 @@ class MainWindow : public QMainWindow {
   bool openEmbeddedExample();
   // Writes the scene file; returns false (after telling the user) on failure.
   bool saveTo(const QString& path);
-  // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear);
+  // Writes the newest composite (format by extension: .png/.jpg/.tif 8-bit sRGB, .exr linear):
+  // the final render while the viewport shows it, else the preview's;
   // returns false (after telling the user) on failure.
   bool exportComposite(const QString& path);
   // Writes the layer the viewport shows (8-bit sRGB: .png, .jpg, .tif) atomically; returns
@@ -129,6 +130,8 @@ class MainWindow : public QMainWindow {
   bool saveAsDialog();
   void exportCompositeDialog();
   QString askImagePath(const QString& title, const QString& suggestion);
+  // The save dialog's file types for a composite: PNG, JPEG, TIFF, linear EXR (in that order).
+  static QStringList compositeImageFilters();
   void exportLayerDialog();
   void exportSceneGltfDialog();
   void renderFinalDialog();
@@ -170,6 +173,9 @@ class MainWindow : public QMainWindow {
   bool maybeSave();
   void createStepsDock();
   void onFinalRenderFinished(bool ok, const QString& message);
+  // The finished final image in the viewport (and the status bar says so) until the next edit.
+  void showFinalImage(const FinalRender& render);
+  void dropFinalImage();
 
   Document* document_;
   RenderController* renderer_;
@@ -182,6 +188,9 @@ class MainWindow : public QMainWindow {
   StepsDock* stepsDock_ = nullptr;
   QPointer<FinalRender> finalRender_;
   QPointer<QProgressDialog> finalProgress_;
+  std::shared_ptr<const ImageF> finalLinear_;  // the shown final image (Export Composite writes it)
+  FinalRender::Progress finalFigures_;         // the shown final image's figures
+  QString finalShownText_;  // the status line while the final image is shown (empty: not shown)
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;

@@ -343,9 +343,11 @@ QString Viewport::toolHint() const {
 }
 
 const QImage& Viewport::shownImage() {
-  if (showBefore_ || (layer_ == Layer::Composite && !renderer_->hasFrame()) || layer_ == Layer::Photo)
-    return renderer_->photoImage();
-  if (layer_ == Layer::Composite) return renderer_->compositeImage();
+  if (showBefore_ || layer_ == Layer::Photo) return renderer_->photoImage();
+  if (layer_ == Layer::Composite) {
+    if (!finalImage_.isNull()) return finalImage_;
+    return renderer_->hasFrame() ? renderer_->compositeImage() : renderer_->photoImage();
+  }
   layerImage_ = renderer_->layerImage(layer_);
   return layerImage_.isNull() ? renderer_->photoImage() : layerImage_;
 }
@@ -752,6 +754,10 @@ void Viewport::paintStatus(QPainter& p) {
       break;
     case Document::State::Ready:
       if (showBefore_) banner = tr("Before: the photo without objects");
+      else if (!finalImage_.isNull() && layer_ == Layer::Composite) {
+        banner = finalCaption_;
+        bannerColour = QColor(170, 240, 170);
+      }
       break;
   }
   auto box = [&](const QRectF& area, const QString& text, const QColor& colour, int flags) {
@@ -794,6 +800,13 @@ void Viewport::setSplitView(bool on) {
   if (split_ == on) return;
   split_ = on;
   draggingSplit_ = false;
+  update();
+}
+
+void Viewport::setFinalImage(const QImage& image, const QString& caption) {
+  if (image.isNull() && finalImage_.isNull()) return;
+  finalImage_ = image;
+  finalCaption_ = caption;
   update();
 }
 

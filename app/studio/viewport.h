@@ -104,6 +104,11 @@ class Viewport : public QWidget {
   double splitFraction() const { return splitFraction_; }
   // The divider's x in widget coordinates.
   double splitWidgetX() const;
+  // The finished final render shown in place of the preview composite (the Composite layer,
+  // the split's right side), with a banner saying so; null: the preview. The window sets it
+  // when Render Final Image finishes and clears it at the next edit.
+  const QImage& finalImage() const { return finalImage_; }
+  bool showsFinalImage() const { return !finalImage_.isNull(); }
   // True while the loupe is drawn (a corner drag).
   bool loupeShown() const { return dragCorner_ >= 0; }
   // The outline points of the Light / Surface tool not yet committed (image pixels).
@@ -124,6 +129,8 @@ class Viewport : public QWidget {
   void setShowVanishingLines(bool show);
   void setSplitView(bool on);
   void setSplitFraction(double fraction);  // clamped to [0, 1]
+  // The final image to show (null clears it); `caption`: the banner's text.
+  void setFinalImage(const QImage& image, const QString& caption = {});
   // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
   void commitToolInput();
   void cancelToolInput();
@@ -227,6 +234,8 @@ class Viewport : public QWidget {
   QImage scaledImage_[2];
   qint64 scaledKey_[2] = {0, 0};
   int lastSlot_ = 0;
+  QImage finalImage_;  // the finished final render (full resolution), shown until an edit
+  QString finalCaption_;
   QImage layerImage_;  // keeps the image of a non-composite layer alive during a paint
   std::vector<double> paintTimesMs_;
 };
