@@ -9,6 +9,9 @@
 #include "viewport.h"
 
 #include <QAction>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QUndoStack>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -54,6 +57,9 @@ class StudioFinalImageTest : public QObject {
   void finalImageIsShownUntilTheNextEdit();
   void splitShowsTheFinalImageRightOfTheDivider();
   void saveDialogOffersEveryFormat();
+  void openingAnotherSceneAsksWhileFinalRenders();
+  void closingAsksWhileFinalRenders();
+  void closingWhilePreparingDoesNotHang();
   void cleanupTestCase() { window_.reset(); }
 
  private:
@@ -146,6 +152,97 @@ void StudioFinalImageTest::saveDialogOffersEveryFormat() {
   const QString filters = MainWindow::compositeImageFilters().join(QStringLiteral(";;"));
   for (const char* ext : {"*.png", "*.jpg", "*.tif", "*.exr"})
     QVERIFY2(filters.contains(QLatin1String(ext)), ext);
+}
+
+namespace {
+
+// The window's open "cancel the final render?" question's button `name`, or null.
+QPushButton* questionButton(MainWindow* w, const char* name) {
+  auto* box = w->findChild<QMessageBox*>(QStringLiteral("finalRenderQuestion"));
+  return box && box->isVisible() ? box->findChild<QPushButton*>(QLatin1String(name)) : nullptr;
+}
+
+}  // namespace
+
+// Opening another scene while a final render runs asks first: Keep Rendering leaves both as
+// they were; Cancel the Render and Open stops it (nothing written) and opens the scene.
+void StudioFinalImageTest::openingAnotherSceneAsksWhileFinalRenders() {
+  MainWindow* w = window_.get();
+  Document* doc = w->document();
+  QVERIFY2(waitReady(doc, waitMs(120000)), qPrintable(doc->prepareError()));
+  QVERIFY(doc->undoStack()->count() > 0);  // the cube of the first test
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("open.png"));
+  QSignalSpy finished(w, &MainWindow::finalImageFinished);
+  QVERIFY(w->renderFinalImage(path));
+  w->setInteractive(true);
+  // No event loop runs between the start and the clicks: the render cannot have ended.
+  QVERIFY(!w->openPath(exampleScene()));
+  QPushButton* keep = questionButton(w, "keepRenderingButton");
+  QVERIFY(keep && questionButton(w, "cancelRenderButton"));
+  QCOMPARE(questionButton(w, "cancelRenderButton")->text(),
+           QStringLiteral("Cancel the Render and Open"));
+  keep->click();
+  QVERIFY(w->finalRender() && w->finalRender()->running());
+  QVERIFY(doc->undoStack()->count() > 0);  // the scene was not replaced
+  QVERIFY(!w->openPath(exampleScene()));
+  QPushButton* stop = questionButton(w, "cancelRenderButton");
+  QVERIFY(stop);
+  stop->click();
+  QCOMPARE(finished.count(), 1);
+  QVERIFY(!finished.first()[0].toBool());
+  QVERIFY(!w->finalRender());
+  QTRY_COMPARE_WITH_TIMEOUT(doc->undoStack()->count(), 0, waitMs(10000));  // opened afresh
+  w->setInteractive(false);
+  QVERIFY(!QFile::exists(path));
+  QVERIFY2(waitReady(doc, waitMs(120000)), qPrintable(doc->prepareError()));
+}
+
+// Closing (the close button, File > Quit) while a final render runs asks: Keep Rendering keeps
+// the window and the render; Cancel the Render and Close stops it and closes.
+void StudioFinalImageTest::closingAsksWhileFinalRenders() {
+  MainWindow* w = window_.get();
+  QVERIFY2(waitReady(w->document(), waitMs(120000)), qPrintable(w->document()->prepareError()));
+  QVERIFY(w->document()->undoStack()->isClean());  // no "save changes?" question on close
+  QTemporaryDir dir;
+  const QString path = dir.filePath(QStringLiteral("close.png"));
+  QSignalSpy finished(w, &MainWindow::finalImageFinished);
+  QVERIFY(w->renderFinalImage(path));
+  w->setInteractive(true);
+  QVERIFY(!w->close());
+  QPushButton* keep = questionButton(w, "keepRenderingButton");
+  QVERIFY(keep);
+  keep->click();
+  QVERIFY(w->isVisible());
+  QVERIFY(w->finalRender() && w->finalRender()->running());
+  QCOMPARE(finished.count(), 0);
+  w->quitAction()->trigger();
+  QPushButton* stop = questionButton(w, "cancelRenderButton");
+  QVERIFY(stop);
+  QCOMPARE(stop->text(), QStringLiteral("Cancel the Render and Close"));
+  stop->click();
+  QCOMPARE(finished.count(), 1);
+  QVERIFY(!finished.first()[0].toBool());
+  QTRY_VERIFY_WITH_TIMEOUT(!w->isVisible(), waitMs(10000));
+  QVERIFY(!QFile::exists(path));
+  w->setInteractive(false);
+}
+
+// A window closed and destroyed while its scene prepares returns (the preparation is
+// cancelled and joined), as one with a final render running does.
+void StudioFinalImageTest::closingWhilePreparingDoesNotHang() {
+  auto w = std::make_unique<MainWindow>();
+  w->setInteractive(false);
+  w->show();
+  QVERIFY(QTest::qWaitForWindowExposed(w.get()));
+  QVERIFY(w->openPath(exampleScene()));
+  QCOMPARE(w->document()->state(), Document::State::Preparing);
+  QElapsedTimer clock;
+  clock.start();
+  QVERIFY(w->close());
+  w.reset();
+  qInfo("closed and destroyed while preparing in %lld ms", clock.elapsed());
+  QVERIFY2(clock.elapsed() < waitMs(30000), qPrintable(QString::number(clock.elapsed())));
 }
 
 QTEST_MAIN(StudioFinalImageTest)

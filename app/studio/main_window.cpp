@@ -165,6 +165,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
+  // A final render still running (a non-interactive close): stopped and joined without
+  // reporting to this half-destroyed window.
+  if (finalRender_) {
+    QObject::disconnect(finalRender_, nullptr, this, nullptr);
+    delete finalRender_;
+  }
   // A model still being read: its thread ends by itself (it touches no window); wait for it.
   for (QThread* t : std::as_const(loaders_)) {
     QObject::disconnect(t, nullptr, this, nullptr);
@@ -649,6 +655,8 @@ void MainWindow::showError(const QString& title, const QString& text) {
 }
 
 bool MainWindow::openPath(const QString& path) {
+  if (!settleFinalRender(tr("Cancel the Render and Open"), [this, path] { openPath(path); }))
+    return false;
   const QFileInfo info(path);
   if (!info.exists()) {
     showError(tr("Cannot open"), tr("%1: no such file").arg(path));
@@ -1281,7 +1289,47 @@ bool MainWindow::maybeSave() {
   return answer == QMessageBox::Discard;
 }
 
+bool MainWindow::settleFinalRender(const QString& proceedText, const std::function<void()>& proceed) {
+  // None, or cancelled and writing its file (that ends by itself; the destructor waits for it).
+  if (!finalRender_ || finalRender_->cancelled()) return true;
+  if (!interactive_) {
+    finalRender_->cancel();
+    return true;
+  }
+  delete finalQuestion_;  // asked again (a second close): the newest question's action wins
+  finalQuestion_ = new QMessageBox(
+      QMessageBox::Question, tr("Render Final Image"),
+      tr("The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing "
+         "is written then, and an earlier file of that name stays as it was.")
+          .arg(QFileInfo(finalRender_->path()).fileName())
+          .arg(qRound(finalRender_->progress().fraction * 100)),
+      QMessageBox::NoButton, this);
+  finalQuestion_->setObjectName(QStringLiteral("finalRenderQuestion"));
+  QPushButton* stop = finalQuestion_->addButton(proceedText, QMessageBox::DestructiveRole);
+  stop->setObjectName(QStringLiteral("cancelRenderButton"));
+  QPushButton* keep = finalQuestion_->addButton(tr("Keep Rendering"), QMessageBox::RejectRole);
+  keep->setObjectName(QStringLiteral("keepRenderingButton"));
+  finalQuestion_->setDefaultButton(keep);
+  finalQuestion_->setEscapeButton(keep);
+  finalQuestion_->setAttribute(Qt::WA_DeleteOnClose);
+  connect(finalQuestion_, &QMessageBox::buttonClicked, this, [this, stop, proceed](QAbstractButton* b) {
+    if (b != stop) return;
+    if (finalRender_) finalRender_->cancel();
+    // After the box has closed: `proceed` may close this window or open another scene.
+    QMetaObject::invokeMethod(this, proceed, Qt::QueuedConnection);
+  });
+  // The render may end while the question is open: the question is moot then.
+  connect(this, &MainWindow::finalImageFinished, finalQuestion_,
+          [box = finalQuestion_.data()] { box->done(QMessageBox::Cancel); });
+  finalQuestion_->open();
+  return false;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!settleFinalRender(tr("Cancel the Render and Close"), [this] { close(); })) {
+    event->ignore();
+    return;
+  }
   if (!maybeSave()) {
     event->ignore();
     return;

@@ -13,12 +13,14 @@
 #include <QPointer>
 #include <QTemporaryDir>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
 class QAction;
 class QLabel;
 class QMenu;
+class QMessageBox;
 class QProgressDialog;
 class QThread;
 class QToolBar;
@@ -67,7 +69,9 @@ class MainWindow : public QMainWindow {
   bool restoreRecovery();
 
   // Opens a scene file (.json) or a bare photo (anything else). Problems are shown in a
-  // (non-blocking) message box; returns false when nothing was opened.
+  // (non-blocking) message box; returns false when nothing was opened. While a final render
+  // runs, an interactive window first asks (see settleFinalRender) and opens once the render
+  // is cancelled; false meanwhile.
   bool openPath(const QString& path);
   // The bundled example: exampleScenePath(), or the copy embedded in the program.
   bool openExample();
@@ -111,11 +115,18 @@ class MainWindow : public QMainWindow {
   // a render already running, an unknown extension or a missing folder. finalImageFinished
   // follows every start. `maxSpp` > 0 caps the samples per pixel (tests, drafts).
   bool renderFinalImage(const QString& path, int maxSpp = 0);
+  // A final render under way while the window closes or another scene opens: true when there
+  // is none (or it is already stopping) and the caller goes on now. Non-interactive: cancels it
+  // and returns true. Interactive: opens a question (objectName "finalRenderQuestion"; buttons
+  // `proceedText`, e.g. "Cancel the Render and Close", and "Keep Rendering") and returns false;
+  // `proceed` runs once the user chose to cancel the render.
+  bool settleFinalRender(const QString& proceedText, const std::function<void()>& proceed);
   // The final render under way (null when none).
   FinalRender* finalRender() const { return finalRender_; }
   QAction* renderFinalAction() const { return renderFinalAct_; }
   QAction* splitAction() const { return splitAct_; }
   QAction* exportAction() const { return exportAct_; }
+  QAction* quitAction() const { return quitAct_; }
   StepsDock* stepsDock() const { return stepsDock_; }
   // Shows modal questions (unsaved changes, errors)? Off for --screenshot and tests.
   void setInteractive(bool interactive) { interactive_ = interactive; }
@@ -188,6 +199,7 @@ class MainWindow : public QMainWindow {
   StepsDock* stepsDock_ = nullptr;
   QPointer<FinalRender> finalRender_;
   QPointer<QProgressDialog> finalProgress_;
+  QPointer<QMessageBox> finalQuestion_;        // "cancel the final render?" while it is open
   std::shared_ptr<const ImageF> finalLinear_;  // the shown final image (Export Composite writes it)
   FinalRender::Progress finalFigures_;         // the shown final image's figures
   QString finalShownText_;  // the status line while the final image is shown (empty: not shown)
