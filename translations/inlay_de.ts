@@ -1790,7 +1790,7 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
     </message>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="97"/>
-        <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s</source>
+        <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s corners</source>
         <translation>geschätzt: prüfen, ob die Ecken der Rückwand auf denen des Raums sitzen</translation>
     </message>
     <message>
@@ -1805,7 +1805,7 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
     </message>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="102"/>
-        <source>not found: drag the back wall&apos;s corners onto the room&apos;s</source>
+        <source>not found: drag the back wall&apos;s corners onto the room&apos;s corners</source>
         <translation>nicht gefunden: die Ecken der Rückwand auf die des Raums ziehen</translation>
     </message>
     <message>

@@ -1790,7 +1790,7 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
     </message>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="97"/>
-        <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s</source>
+        <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s corners</source>
         <translation>estimée : vérifiez que les coins du mur du fond sont sur ceux de la pièce</translation>
     </message>
     <message>
@@ -1805,7 +1805,7 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
     </message>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="102"/>
-        <source>not found: drag the back wall&apos;s corners onto the room&apos;s</source>
+        <source>not found: drag the back wall&apos;s corners onto the room&apos;s corners</source>
         <translation>introuvable : faites glisser les coins du mur du fond sur ceux de la pièce</translation>
     </message>
     <message>

@@ -8,6 +8,7 @@
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QSpacerItem>
 
 namespace inlay::studio {
 
@@ -27,8 +28,10 @@ StepsDock::StepsDock(Document* document, const Actions& actions, QWidget* parent
     r.title = new QLabel(body);
     r.state = new QLabel(body);
     r.state->setWordWrap(true);
-    r.state->setMinimumHeight(2 * r.state->fontMetrics().lineSpacing() + 2);  // two lines never clip
     r.state->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    r.state->setContentsMargins(0, 0, 0, 6);  // a little air before the next step
+    r.state->setObjectName(QStringLiteral("stepState%1").arg(i + 1));
+    r.title->setObjectName(QStringLiteral("stepTitle%1").arg(i + 1));
     r.button = new QPushButton(body);
     r.button->setObjectName(QStringLiteral("stepButton%1").arg(i + 1));
     connect(r.button, &QPushButton::clicked, this, [this, i] {
@@ -40,7 +43,10 @@ StepsDock::StepsDock(Document* document, const Actions& actions, QWidget* parent
     grid->addWidget(r.button, 2 * i, 2);
     grid->addWidget(r.state, 2 * i + 1, 1, 1, 2);
   }
+  // The rows at their own heights, the dock's spare height below the last one.
+  grid->addItem(new QSpacerItem(0, 0, QSizePolicy::Minimum, QSizePolicy::Expanding), 2 * kStepCount, 0);
   grid->setRowStretch(2 * kStepCount, 1);
+  body->installEventFilter(this);  // its width decides how many lines each state takes
   setWidget(body);
   for (QAction* a : {actions_.openPhoto, actions_.acceptBox, actions_.outlineLight, actions_.insertModel,
                      actions_.renderFinal})
@@ -92,10 +98,12 @@ void StepsDock::refresh() {
   if (!photo) showRow(Room, false, tr("no photo yet"), tr("Open Photo…"), actions_.openPhoto);
   else if (document_->backWallIsUsers()) showRow(Room, true, tr("the box is yours"), {}, nullptr);
   else if (document_->shownBackWallPx())
-    showRow(Room, false, tr("estimated: check that the back wall's corners sit on the room's"),
+    showRow(Room, false, tr("estimated: check that the back wall's corners sit on the room's corners"),
             tr("Accept the Box"), actions_.acceptBox);
   else if (preparing) showRow(Room, false, tr("being estimated…"), {}, nullptr);
-  else showRow(Room, false, tr("not found: drag the back wall's corners onto the room's"), {}, nullptr);
+  else
+    showRow(Room, false, tr("not found: drag the back wall's corners onto the room's corners"), {},
+            nullptr);
   // 2 Lights (outlined lights and sun shafts).
   const int lights = int(doc.lights.size() + doc.shafts.size());
   if (lights == 0)
@@ -129,10 +137,34 @@ void StepsDock::refresh() {
         QStringLiteral("QLabel { border-radius: 11px; color: white; background: %1; }").arg(disc));
     r.state->setEnabled(i <= current || done_[size_t(i)]);
   }
+  fitStateHeights();
   if (current == kStepCount && !announced_) {
     announced_ = true;
     Q_EMIT allDone();
   }
+}
+
+// A dock does not pass height-for-width on to its widget: each state's label gets the height
+// its wrapped text needs at its width, so no line is cut off however narrow the dock is.
+void StepsDock::fitStateHeights() {
+  for (Row& r : rows_) {
+    const int w = r.state->width();
+    if (w <= 0) continue;
+    // Not QLabel::heightForWidth: that never returns less than the minimum height set here.
+    const QMargins m = r.state->contentsMargins();
+    const int h = r.state->fontMetrics()
+                      .boundingRect(QRect(0, 0, w - m.left() - m.right(), 1 << 20),
+                                    Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, r.state->text())
+                      .height() +
+                  m.top() + m.bottom();
+    if (h != r.state->minimumHeight()) r.state->setMinimumHeight(h);
+  }
+}
+
+bool StepsDock::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == widget() && (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest))
+    QMetaObject::invokeMethod(this, &StepsDock::fitStateHeights, Qt::QueuedConnection);
+  return QDockWidget::eventFilter(watched, event);
 }
 
 void StepsDock::changeEvent(QEvent* event) {

@@ -61,6 +61,7 @@ class StepsDock : public QDockWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   struct Row {
@@ -74,6 +75,7 @@ class StepsDock : public QDockWidget {
   void refresh();
   void showRow(Step step, bool done, const QString& state, const QString& buttonText, QAction* action);
   void retranslate();
+  void fitStateHeights();
 
   Document* document_;
   Actions actions_;

@@ -1,0 +1,128 @@
+// The Steps dock on a freshly opened photo (the bundled example's photo, estimated from
+// scratch): every step's title, state and button fit (no line of a wrapped state cut off, no
+// squeezed title or button) at the default window size and in a narrow dock, in English,
+// German and French. The dock's pictures go to studio_steps_dock_artifacts/ in the build tree.
+#include "document.h"
+#include "i18n.h"
+#include "main_window.h"
+#include "steps_dock.h"
+
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QtTest>
+
+#include "studio_test_support.h"
+#include "studio_workflow_steps.h"
+
+using namespace inlay;
+using namespace inlay::studio;
+using namespace inlay::test;
+
+namespace {
+
+// The height `label`'s text takes wrapped at the label's width (QLabel::heightForWidth never
+// answers less than the label's minimum height, so it cannot tell a gap).
+int neededHeight(const QLabel* label) {
+  const QMargins m = label->contentsMargins();
+  return label->fontMetrics()
+             .boundingRect(QRect(0, 0, label->width() - m.left() - m.right(), 1 << 20),
+                           Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, label->text())
+             .height() +
+         m.top() + m.bottom();
+}
+
+// What does not fit in the dock now (empty: everything does).
+QString clipped(const StepsDock* steps) {
+  const QWidget* body = steps->widget();
+  QStringList problems;
+  for (int i = 1; i <= StepsDock::kStepCount; ++i) {
+    const auto* state = body->findChild<QLabel*>(QStringLiteral("stepState%1").arg(i));
+    const auto* title = body->findChild<QLabel*>(QStringLiteral("stepTitle%1").arg(i));
+    const auto* button = body->findChild<QPushButton*>(QStringLiteral("stepButton%1").arg(i));
+    if (!state || !title || !button) return QStringLiteral("step %1's widgets are missing").arg(i);
+    if (state->height() < neededHeight(state))
+      problems << QStringLiteral("step %1's state \"%2\" needs %3 px, has %4")
+                      .arg(i)
+                      .arg(state->text())
+                      .arg(neededHeight(state))
+                      .arg(state->height());
+    if (state->height() > neededHeight(state) + state->fontMetrics().lineSpacing())
+      problems << QStringLiteral("step %1's state \"%2\" has %3 px, needs only %4 (a gap)")
+                      .arg(i)
+                      .arg(state->text())
+                      .arg(state->height())
+                      .arg(neededHeight(state));
+    if (state->geometry().bottom() >= body->height() || state->geometry().right() >= body->width())
+      problems << QStringLiteral("step %1's state is outside the dock").arg(i);
+    const auto* next = body->findChild<QLabel*>(QStringLiteral("stepTitle%1").arg(i + 1));
+    const int number = title->fontMetrics().lineSpacing() * 2;
+    if (next && next->geometry().top() - state->geometry().bottom() > number)
+      problems << QStringLiteral("a gap of %1 px after step %2")
+                      .arg(next->geometry().top() - state->geometry().bottom())
+                      .arg(i);
+    if (title->width() < title->sizeHint().width())
+      problems << QStringLiteral("step %1's title \"%2\" squeezed").arg(i).arg(title->text());
+    if (button->isVisible() &&
+        (button->width() < button->sizeHint().width() || button->geometry().right() >= body->width()))
+      problems << QStringLiteral("step %1's button \"%2\" clipped").arg(i).arg(button->text());
+  }
+  return problems.join(QStringLiteral("; "));
+}
+
+}  // namespace
+
+class StudioStepsDockTest : public QObject {
+  Q_OBJECT
+
+ private Q_SLOTS:
+  void initTestCase();
+  void everyStepFitsInEveryLanguage();
+  void cleanupTestCase() { removeTranslators(); }
+};
+
+void StudioStepsDockTest::initTestCase() {
+  QStandardPaths::setTestModeEnabled(true);
+  QCoreApplication::setOrganizationName(QStringLiteral("InlayTest"));
+  QCoreApplication::setApplicationName(QStringLiteral("studio_steps_dock_test"));
+  QSettings().clear();
+}
+
+void StudioStepsDockTest::everyStepFitsInEveryLanguage() {
+  const QString scene = exampleScene();
+  if (scene.isEmpty()) QSKIP("the bundled example is not found");
+  const QString photo = QFileInfo(scene).absoluteDir().filePath(QStringLiteral("photo.png"));
+  MainWindow window;
+  QVERIFY(showForWorkflow(window));  // 1280 × 800, the workflow tests' window
+  QVERIFY(window.openPath(photo));
+  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  StepsDock* steps = window.stepsDock();
+  QVERIFY(steps->isVisible());
+  QVERIFY2(steps->stateText(StepsDock::Room).endsWith(QStringLiteral("the room's corners")),
+           qPrintable(steps->stateText(StepsDock::Room)));
+  StepLog shots(QStringLiteral("studio_steps_dock_artifacts"));
+  const int defaultWidth = steps->width();
+  for (const char* language : {"en", "de", "fr"}) {
+    if (QByteArray(language) == "en") removeTranslators();
+    else QVERIFY2(installTranslators(QLatin1String(language)), language);
+    // The dock has retranslated itself (QEvent::LanguageChange is delivered by the event loop).
+    QTRY_COMPARE(steps->windowTitle(), StepsDock::tr("Steps"));
+    for (const bool narrow : {false, true}) {
+      // Narrow: floated and made as narrow as it goes (its own minimum width).
+      steps->setFloating(narrow);
+      if (narrow) steps->resize(120, 420);
+      else window.resizeDocks({steps}, {defaultWidth}, Qt::Horizontal);
+      QString problems;
+      QTRY_VERIFY2(
+          (problems = clipped(steps)).isEmpty(),
+          qPrintable(QStringLiteral("%1 at %2 px: %3").arg(language).arg(steps->width()).arg(problems)));
+      QVERIFY(shots.shot(steps, QStringLiteral("steps_%1_%2px").arg(language).arg(steps->width())));
+    }
+  }
+  steps->setFloating(false);
+  QVERIFY(shots.shot(&window, QStringLiteral("window_fr")));
+}
+
+QTEST_MAIN(StudioStepsDockTest)
+#include "studio_steps_dock_test.moc"
