@@ -1,12 +1,13 @@
 // The Steps dock on a freshly opened photo (the bundled example's photo, estimated from
 // scratch): every step's title, state and button fit (no line of a wrapped state cut off, no
 // squeezed title or button) at the default window size and in a narrow dock, in English,
-// German and French. The dock's pictures go to studio_steps_dock_artifacts/ in the build tree.
+// German and French; the Camera Response dock's notes fit as well. The dock's pictures go to studio_steps_dock_artifacts/ in the build tree.
 #include "document.h"
 #include "i18n.h"
 #include "main_window.h"
 #include "steps_dock.h"
 
+#include <QDockWidget>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -121,6 +122,18 @@ void StudioStepsDockTest::everyStepFitsInEveryLanguage() {
     }
   }
   steps->setFloating(false);
+  // The Camera Response dock's notes below its curve are not cut off either.
+  auto* info = window.findChild<QLabel*>(QStringLiteral("responseInfo"));
+  QVERIFY(info && !info->text().isEmpty());
+  // ... and that dock follows the switch to French as well.
+  QCOMPARE(window.findChild<QDockWidget*>(QStringLiteral("responseDock"))->windowTitle(),
+           QStringLiteral("Réponse de l'appareil"));
+  QTRY_VERIFY2(
+      info->height() >= neededHeight(info) && info->geometry().bottom() < info->parentWidget()->height(),
+      qPrintable(QStringLiteral("%1 px for %2 px of \"%3\"")
+                     .arg(info->height())
+                     .arg(neededHeight(info))
+                     .arg(info->text())));
   QVERIFY(shots.shot(&window, QStringLiteral("window_fr")));
 }
 

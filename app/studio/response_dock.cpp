@@ -1,6 +1,9 @@
 #include "response_dock.h"
 
+#include "wrapped_labels.h"
+
 #include <QComboBox>
+#include <QEvent>
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,7 +14,7 @@ namespace inlay::studio {
 // The decode curve (code 0..255 across, linear 0..1 up) over the sRGB curve for reference.
 class ResponseCurveView : public QWidget {
  public:
-  explicit ResponseCurveView(QWidget* parent) : QWidget(parent) { setMinimumSize(200, 160); }
+  explicit ResponseCurveView(QWidget* parent) : QWidget(parent) { setMinimumSize(160, 90); }
   void setResponse(const CameraResponse& r) {
     response_ = r;
     update();
@@ -49,25 +52,39 @@ class ResponseCurveView : public QWidget {
 };
 
 ResponseDock::ResponseDock(Document* document, QWidget* parent)
-    : QDockWidget(tr("Camera Response"), parent), document_(document) {
+    : QDockWidget(parent), document_(document) {
   setObjectName(QStringLiteral("responseDock"));
   auto* body = new QWidget(this);
   auto* layout = new QVBoxLayout(body);
   choice_ = new QComboBox(body);
-  choice_->addItem(tr("Auto (estimated from the photo)"));
-  choice_->addItem(tr("sRGB"));
-  choice_->addItem(tr("Linear"));
-  choice_->addItem(tr("Explicit (from the scene file)"));
-  choice_->setToolTip(tr("How the photo's pixel values map to light (camera.response)"));
+  for (int i = 0; i < 4; ++i) choice_->addItem(QString());
   curve_ = new ResponseCurveView(body);
   info_ = new QLabel(body);
   info_->setWordWrap(true);
+  info_->setObjectName(QStringLiteral("responseInfo"));
   layout->addWidget(choice_);
   layout->addWidget(curve_, 1);
   layout->addWidget(info_);
   setWidget(body);
+  fitter_ = new WrappedLabelFitter(body, {info_});  // the notes below the curve never cut off
   connect(choice_, &QComboBox::activated, this, &ResponseDock::choose);
   connect(document_, &Document::changed, this, [this](const ChangeEvent&) { refresh(); });
+  retranslate();
+}
+
+void ResponseDock::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslate();
+  QDockWidget::changeEvent(event);
+}
+
+// The title, the choices and the notes in the current language (a language switch at run time).
+void ResponseDock::retranslate() {
+  setWindowTitle(tr("Camera Response"));
+  choice_->setItemText(0, tr("Auto (estimated from the photo)"));
+  choice_->setItemText(1, tr("sRGB"));
+  choice_->setItemText(2, tr("Linear"));
+  choice_->setItemText(3, tr("Explicit (from the scene file)"));
+  choice_->setToolTip(tr("How the photo's pixel values map to light (camera.response)"));
   refresh();
 }
 
@@ -91,6 +108,7 @@ void ResponseDock::refresh() {
   const PreparedScene* prepared = document_->prepared();
   if (!prepared) {
     info_->setText(tr("Preparing the scene..."));
+    fitter_->fit();
     return;
   }
   curve_->setResponse(prepared->response);
@@ -107,6 +125,7 @@ void ResponseDock::refresh() {
     for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);
   }
   info_->setText(text);
+  fitter_->fit();
 }
 
 }  // namespace inlay::studio

@@ -1,7 +1,7 @@
 // The camera response dock: the curve the photo is decoded with (code -> linear radiance, the
 // estimate's or camera.response's) and a choice of Auto / sRGB / Linear, each one undo step
 // through Document::setCameraResponse. Redrawn from the document's state on each change.
-// GUI thread only.
+// Retranslates on QEvent::LanguageChange. GUI thread only.
 #pragma once
 
 #include "document.h"
@@ -13,6 +13,8 @@ class QLabel;
 
 namespace inlay::studio {
 
+class WrappedLabelFitter;
+
 class ResponseCurveView;
 
 class ResponseDock : public QDockWidget {
@@ -20,7 +22,11 @@ class ResponseDock : public QDockWidget {
  public:
   ResponseDock(Document* document, QWidget* parent = nullptr);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslate();
   void refresh();
   void choose(int index);
 
@@ -28,6 +34,7 @@ class ResponseDock : public QDockWidget {
   QComboBox* choice_;
   QLabel* info_;
   ResponseCurveView* curve_;
+  WrappedLabelFitter* fitter_ = nullptr;
 };
 
 }  // namespace inlay::studio

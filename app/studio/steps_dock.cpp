@@ -1,6 +1,7 @@
 #include "steps_dock.h"
 
 #include "document.h"
+#include "wrapped_labels.h"
 
 #include <QAction>
 #include <QEvent>
@@ -46,8 +47,10 @@ StepsDock::StepsDock(Document* document, const Actions& actions, QWidget* parent
   // The rows at their own heights, the dock's spare height below the last one.
   grid->addItem(new QSpacerItem(0, 0, QSizePolicy::Minimum, QSizePolicy::Expanding), 2 * kStepCount, 0);
   grid->setRowStretch(2 * kStepCount, 1);
-  body->installEventFilter(this);  // its width decides how many lines each state takes
   setWidget(body);
+  QList<QLabel*> states;  // each as tall as its text wrapped at the dock's width
+  for (const Row& r : rows_) states << r.state;
+  fitter_ = new WrappedLabelFitter(body, states);
   for (QAction* a : {actions_.openPhoto, actions_.acceptBox, actions_.outlineLight, actions_.insertModel,
                      actions_.renderFinal})
     if (a) connect(a, &QAction::changed, this, &StepsDock::refresh);
@@ -137,34 +140,11 @@ void StepsDock::refresh() {
         QStringLiteral("QLabel { border-radius: 11px; color: white; background: %1; }").arg(disc));
     r.state->setEnabled(i <= current || done_[size_t(i)]);
   }
-  fitStateHeights();
+  if (fitter_) fitter_->fit();
   if (current == kStepCount && !announced_) {
     announced_ = true;
     Q_EMIT allDone();
   }
-}
-
-// A dock does not pass height-for-width on to its widget: each state's label gets the height
-// its wrapped text needs at its width, so no line is cut off however narrow the dock is.
-void StepsDock::fitStateHeights() {
-  for (Row& r : rows_) {
-    const int w = r.state->width();
-    if (w <= 0) continue;
-    // Not QLabel::heightForWidth: that never returns less than the minimum height set here.
-    const QMargins m = r.state->contentsMargins();
-    const int h = r.state->fontMetrics()
-                      .boundingRect(QRect(0, 0, w - m.left() - m.right(), 1 << 20),
-                                    Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, r.state->text())
-                      .height() +
-                  m.top() + m.bottom();
-    if (h != r.state->minimumHeight()) r.state->setMinimumHeight(h);
-  }
-}
-
-bool StepsDock::eventFilter(QObject* watched, QEvent* event) {
-  if (watched == widget() && (event->type() == QEvent::Resize || event->type() == QEvent::LayoutRequest))
-    QMetaObject::invokeMethod(this, &StepsDock::fitStateHeights, Qt::QueuedConnection);
-  return QDockWidget::eventFilter(watched, event);
 }
 
 void StepsDock::changeEvent(QEvent* event) {

@@ -22,6 +22,8 @@ class QPushButton;
 
 namespace inlay::studio {
 
+class WrappedLabelFitter;
+
 class Document;
 struct ChangeEvent;
 
@@ -61,7 +63,6 @@ class StepsDock : public QDockWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
-  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   struct Row {
@@ -75,14 +76,14 @@ class StepsDock : public QDockWidget {
   void refresh();
   void showRow(Step step, bool done, const QString& state, const QString& buttonText, QAction* action);
   void retranslate();
-  void fitStateHeights();
 
   Document* document_;
   Actions actions_;
   std::array<Row, kStepCount> rows_;
   std::array<bool, kStepCount> done_{};
   QString exportedPath_;
-  bool announced_ = false;  // allDone() was emitted for this document
+  WrappedLabelFitter* fitter_ = nullptr;  // the states' heights (see wrapped_labels.h)
+  bool announced_ = false;                // allDone() was emitted for this document
 };
 
 }  // namespace inlay::studio
