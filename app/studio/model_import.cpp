@@ -1,7 +1,13 @@
 #include "model_import.h"
 
+#include <QDir>
+#include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLocale>
+#include <QRegularExpression>
 
 #include <cmath>
 
@@ -44,6 +50,71 @@ void chooseHeight(ModelImport& m, const MeshFileInfo& info, double defaultHeight
                  "%1 says it is %2 high, an absurd size: it was inserted "
                  "%3 high instead (change Height in Properties).")
                  .arg(m.name, heightText(own), height);
+}
+
+// The JSON of a .gltf file or of a .glb's first chunk (empty when it is not readable).
+QJsonObject gltfJson(const QString& path) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) return {};
+  QByteArray bytes = f.read(64 << 20);
+  if (bytes.startsWith("glTF")) {  // binary: a 12-byte header, then the JSON chunk
+    if (bytes.size() < 20) return {};
+    const quint32 length = quint32(uchar(bytes[12])) | quint32(uchar(bytes[13])) << 8 |
+                           quint32(uchar(bytes[14])) << 16 | quint32(uchar(bytes[15])) << 24;
+    bytes = bytes.mid(20, int(std::min<quint32>(length, quint32(bytes.size() - 20))));
+  }
+  return QJsonDocument::fromJson(bytes).object();
+}
+
+// Image textures the model names: Inlay renders its materials' own values, never the images,
+// so the user is told (and told which named files are missing altogether).
+QStringList textureNotes(const QString& path, const QString& shown) {
+  const QFileInfo file(path);
+  const QString suffix = file.suffix().toLower();
+  QStringList missing;
+  int images = 0;  // named images that are there (or embedded)
+  auto note = [&](const QString& image) {
+    if (image.startsWith(QLatin1String("data:")) || file.dir().exists(image)) ++images;
+    else missing << image;
+  };
+  if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb")) {
+    const QJsonObject json = gltfJson(path);
+    for (const QJsonValue& image : json.value(QLatin1String("images")).toArray()) {
+      const QString uri = image.toObject().value(QLatin1String("uri")).toString();
+      if (!uri.isEmpty()) note(uri);
+      else ++images;  // in a buffer of the file
+    }
+  } else if (suffix == QLatin1String("obj")) {
+    QFile obj(path);
+    if (!obj.open(QIODevice::ReadOnly | QIODevice::Text)) return {};
+    for (int n = 0; n < 100000 && !obj.atEnd(); ++n) {
+      const QString line = QString::fromUtf8(obj.readLine()).trimmed();
+      if (!line.startsWith(QLatin1String("mtllib "))) continue;
+      const QString mtl = line.mid(7).trimmed();
+      QFile lib(file.dir().filePath(mtl));
+      if (!lib.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        missing << mtl;
+        continue;
+      }
+      static const QRegularExpression map(
+          QStringLiteral("^\\s*(map_\\w+|bump|disp)\\s+(?:-\\S+\\s+\\S+\\s+)*(\\S.*)$"));
+      for (const QString& l : QString::fromUtf8(lib.read(8 << 20)).split(QLatin1Char('\n')))
+        if (const QRegularExpressionMatch m = map.match(l.trimmed()); m.hasMatch())
+          note(m.captured(2).trimmed());
+    }
+  }
+  QStringList notes;
+  if (!missing.isEmpty())
+    notes << ModelImportText::tr(
+                 "%1 names files that are not beside it (%2): its materials' own "
+                 "colours are used, or a grey default.")
+                 .arg(shown, missing.join(QStringLiteral(", ")));
+  if (images > 0)
+    notes << ModelImportText::tr(
+                 "%1's image textures are not rendered: Inlay uses its materials' "
+                 "base colour, metallic and roughness values.")
+                 .arg(shown);
+  return notes;
 }
 
 }  // namespace
@@ -116,6 +187,7 @@ ModelLoadResult loadModelForInsert(const QString& path, double defaultHeightM,
   m.triangles = mesh->triangles.size();
   if (mesh->normals.empty())
     m.notes << ModelImportText::tr("%1 has no normals: it is shaded flat.").arg(shown);
+  m.notes << textureNotes(m.path, shown);
   m.mesh = std::make_shared<const TriangleMesh>(std::move(mesh.value()));
   chooseHeight(m, info, defaultHeightM);
   out.model = std::move(m);
