@@ -1,7 +1,8 @@
 // The Steps dock on a freshly opened photo (the bundled example's photo, estimated from
 // scratch): every step's title, state and button fit (no line of a wrapped state cut off, no
 // squeezed title or button) at the default window size and in a narrow dock, in English,
-// German and French; the Camera Response dock's notes fit as well. The dock's pictures go to studio_steps_dock_artifacts/ in the build tree.
+// German and French; the Camera Response dock's notes fit as well, and the preparation's
+// progress dialog counts the seconds with a busy bar while a stage reports no fraction. The dock's pictures go to studio_steps_dock_artifacts/ in the build tree.
 #include "document.h"
 #include "i18n.h"
 #include "main_window.h"
@@ -9,6 +10,8 @@
 
 #include <QDockWidget>
 #include <QLabel>
+#include <QPointer>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -97,6 +100,17 @@ void StudioStepsDockTest::everyStepFitsInEveryLanguage() {
   MainWindow window;
   QVERIFY(showForWorkflow(window));  // 1280 × 800, the workflow tests' window
   QVERIFY(window.openPath(photo));
+  {
+    // The preparation's dialog: a busy bar until a stage reports a fraction, and the seconds
+    // ticking (the lighting stage reports only its end: a bar at 0 % for a minute looked frozen).
+    QPointer<QProgressDialog> dialog = window.findChild<QProgressDialog*>();
+    QVERIFY(dialog);
+    QCOMPARE(dialog->maximum(), 0);
+    QVERIFY2(dialog->labelText().endsWith(QStringLiteral(" 0 s")), qPrintable(dialog->labelText()));
+    QTRY_VERIFY2_WITH_TIMEOUT(window.document()->state() != Document::State::Preparing ||
+                                  (dialog && !dialog->labelText().endsWith(QStringLiteral(" 0 s"))),
+                              qPrintable(dialog ? dialog->labelText() : QString()), waitMs(120000));
+  }
   QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
   StepsDock* steps = window.stepsDock();
   QVERIFY(steps->isVisible());

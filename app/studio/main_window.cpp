@@ -36,6 +36,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QThread>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -138,10 +139,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(document_, &Document::changed, this, &MainWindow::onDocumentChanged);
   connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this] { updateTitle(); });
   connect(document_, &Document::prepareProgress, this, [this](const QString& stage, double f) {
-    if (!progress_) return;
-    progress_->setLabelText(tr("Preparing the scene: %1…").arg(stageText(stage)));
-    progress_->setValue(int(std::clamp(f, 0.0, 1.0) * 999));
+    prepareStage_ = stage;
+    prepareFraction_ = f;
+    showPrepareProgress();
   });
+  // The seconds tick on while a stage reports no fraction: the dialog never looks frozen.
+  prepareTicker_ = new QTimer(this);
+  prepareTicker_->setInterval(1000);
+  connect(prepareTicker_, &QTimer::timeout, this, &MainWindow::showPrepareProgress);
   connect(renderer_, &RenderController::frameUpdated, this, &MainWindow::onFrame);
   connect(viewport_, &Viewport::statusMessage, this, [this](const QString& m) {
     if (m.isEmpty()) statusBar()->clearMessage();
@@ -526,10 +531,16 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     // Not modal: a modal QProgressDialog::setValue() runs processEvents(), and the progress
     // slot would re-enter. Edits are refused by the document while it prepares anyway.
     progress_->setWindowModality(Qt::NonModal);
-    progress_->setMinimumDuration(interactive_ ? 500 : 1000000000);
+    // At once: a message that comes later (a refused model) must open above it, not below.
+    progress_->setMinimumDuration(interactive_ ? 0 : 1000000000);
     progress_->setAutoClose(false);
     progress_->setAutoReset(false);
     connect(progress_, &QProgressDialog::canceled, document_, &Document::cancelPrepare);
+    prepareStage_.clear();
+    prepareFraction_ = 0;
+    prepareClock_.start();
+    prepareTicker_->start();
+    showPrepareProgress();
     statusBar()->showMessage(tr("Preparing the scene…"));
     statusBar()->setToolTip(QString());
   }
@@ -539,6 +550,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   }
   if (event.has(ChangeEvent::Marks)) reportFailure_ = false;
   if (event.has(ChangeEvent::PrepareFinished)) {
+    prepareTicker_->stop();
     if (progress_) {
       progress_->hide();
       progress_->deleteLater();
@@ -598,6 +610,22 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
   saveAct_->setEnabled(document_->state() != Document::State::Empty ||
                        !document_->scene().photo.empty());
   saveAsAct_->setEnabled(saveAct_->isEnabled());
+}
+
+// The preparation's dialog: the stage, the seconds since it began, and the stage's fraction
+// (a busy bar while the stage has reported none: the lighting, for one, reports only its end).
+void MainWindow::showPrepareProgress() {
+  if (!progress_) return;
+  const QString stage = prepareStage_.isEmpty()
+                            ? tr("Preparing the scene…")
+                            : tr("Preparing the scene: %1…").arg(stageText(prepareStage_));
+  progress_->setLabelText(stage + QStringLiteral("  %1 s").arg(prepareClock_.elapsed() / 1000));
+  if (prepareFraction_ > 0) {
+    if (progress_->maximum() == 0) progress_->setRange(0, 1000);
+    progress_->setValue(int(std::clamp(prepareFraction_, 0.0, 1.0) * 999));
+  } else if (progress_->maximum() != 0) {
+    progress_->setRange(0, 0);
+  }
 }
 
 void MainWindow::onFrame() {

@@ -8,6 +8,7 @@
 
 #include "inlay/modeling/core.h"
 
+#include <QElapsedTimer>
 #include <QList>
 #include <QMainWindow>
 #include <QPointer>
@@ -23,6 +24,7 @@ class QMenu;
 class QMessageBox;
 class QProgressDialog;
 class QThread;
+class QTimer;
 class QToolBar;
 
 namespace inlay::studio {
@@ -173,6 +175,7 @@ class MainWindow : public QMainWindow {
   void updateUndoActions();
   void onDocumentChanged(const ChangeEvent& event);
   void onFrame();
+  void showPrepareProgress();
   void updateTitle();
   void showError(const QString& title, const QString& text);
   void addRecentFile(const QString& path, const char* key = "recentFiles");
@@ -206,6 +209,10 @@ class MainWindow : public QMainWindow {
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;
+  QTimer* prepareTicker_ = nullptr;  // the preparation dialog's seconds
+  QElapsedTimer prepareClock_;
+  QString prepareStage_;  // the stage the preparation reported last, and its fraction
+  double prepareFraction_ = 0;
   std::unique_ptr<QTemporaryDir> exampleCopy_;  // the embedded example, unpacked
   bool interactive_ = true;
   // Insert Model…: the threads reading model files, and models read while the scene prepared.
