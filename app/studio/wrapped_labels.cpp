@@ -8,7 +8,12 @@ namespace inlay::studio {
 
 WrappedLabelFitter::WrappedLabelFitter(QWidget* container, const QList<QLabel*>& labels)
     : QObject(container), container_(container) {
-  for (QLabel* l : labels) labels_ << l;
+  for (QLabel* l : labels) {
+    labels_ << l;
+    // Its width is the layout's to give (a long note must not widen the dock and squeeze the
+    // viewport); only its height follows its text.
+    l->setSizePolicy(QSizePolicy::Ignored, l->sizePolicy().verticalPolicy());
+  }
   container_->installEventFilter(this);
 }
 

@@ -3,7 +3,8 @@
 // label either has its last lines cut off or keeps a gap once its text gets shorter. A
 // WrappedLabelFitter watches the dock's widget (its resizes and layout requests) and sets each
 // of its labels' minimum height to what the label's text takes wrapped at the label's width.
-// GUI thread only.
+// Their width is the layout's (horizontal size policy Ignored): a long text never widens the
+// dock. GUI thread only.
 #pragma once
 
 #include <QList>
