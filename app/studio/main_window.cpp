@@ -679,7 +679,11 @@ void MainWindow::showError(const QString& title, const QString& text) {
   // Window-modal and asynchronous: never blocks a caller (or a test) in a nested event loop.
   auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
   box->setAttribute(Qt::WA_DeleteOnClose);
+  // A progress dialog not shown yet would open later on top of the message: shown first.
+  for (QProgressDialog* d : {progress_.data(), finalProgress_.data()})
+    if (d && !d->isVisible()) d->show();
   box->open();
+  box->raise();
 }
 
 bool MainWindow::openPath(const QString& path) {
