@@ -5,6 +5,7 @@
 
 #include "document.h"
 #include "main_window.h"
+#include "render_controller.h"
 #include "viewport.h"
 
 #include "studio_workflow_steps.h"
@@ -45,9 +46,30 @@ struct DesignerWalk {
       const QString error = window.document()->prepareError();
       return error.isEmpty() ? QStringLiteral("the scene was not ready in time") : error;
     }
-    if (!log.step(&window, QStringLiteral("photo_opened")))
+    if (!step(QStringLiteral("photo_opened"), timeoutMs))
       return QStringLiteral("the screenshot of photo_opened was not written");
     return {};
+  }
+
+  // Waits (up to `timeoutMs`) until the viewport shows the current scene rendered at full
+  // preview resolution (not a 1/4 preview of a few samples), so a step's screenshot shows what
+  // the step did; returns at once while the scene is not ready (there is no render then).
+  // False when it timed out (the shot is taken anyway; the test goes on).
+  bool settle(int timeoutMs) {
+    const auto* r = window.renderer();
+    if (!window.document()->isReady()) return true;
+    return QTest::qWaitFor(
+        [r] {
+          return r->isCurrent() && r->hasFrame() && r->frameInfo().resolutionDivider == 1 &&
+                 r->frameInfo().spp >= 2;
+        },
+        timeoutMs);
+  }
+  // Records the step (its time first) and its screenshot once settled.
+  bool step(const QString& name, int timeoutMs) {
+    return log.step(&window, name, [this, name, timeoutMs] {
+      if (!settle(timeoutMs)) qInfo("%s: shot before the preview settled", qPrintable(name));
+    });
   }
 
   // Writes figures.csv (the timings, then each step's seconds) and prints both; false when the

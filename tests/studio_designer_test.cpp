@@ -95,7 +95,8 @@ void StudioDesignerTest::modelsInsertDropArrangeUndoRedo() {
   MainWindow& window = walk.window;
   Document* doc = window.document();
   Viewport* view = window.viewport();
-  auto step = [&](const QString& name) { QVERIFY(walk.log.step(&window, name)); };
+  // Each step's screenshot once the preview shows its result (the time is taken before).
+  auto step = [&](const QString& name) { QVERIFY(walk.step(name, waitMs(60000))); };
 
   // --- 2. Insert Model… with a glTF file: named after it, its own size (glTF is in metres) ---
   QVERIFY(window.insertModelAction()->isEnabled());

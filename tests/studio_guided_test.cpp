@@ -57,7 +57,8 @@ void StudioGuidedTest::guidedFirstCompositeOnAYorkPhoto() {
   MainWindow& window = walk.window;
   Document* doc = window.document();
   Viewport* view = window.viewport();
-  auto step = [&](const QString& name) { QVERIFY(walk.log.step(&window, name)); };
+  // Each step's screenshot once the preview shows its result (the time is taken before).
+  auto step = [&](const QString& name) { QVERIFY(walk.step(name, waitMs(60000))); };
 
   // --- The Steps panel: the box estimated, no lights, no objects, nothing exported ---
   StepsDock* steps = window.stepsDock();

@@ -15,6 +15,8 @@
 #include <QTextStream>
 #include <QWidget>
 
+#include <functional>
+
 namespace inlay::test {
 
 // Shows the window at the workflow tests' size, non-interactive (no modal questions); true once
@@ -37,9 +39,12 @@ inline bool waitReady(studio::Document* doc, int timeoutMs) {
 class StepLog {
  public:
   // folder: created under the test binary's folder (the build tree's tests/).
+  // Screenshots of an earlier run (NN_step.png) are removed: the folder shows this run only.
   explicit StepLog(const QString& folder) : dir_(QCoreApplication::applicationDirPath()) {
     dir_.mkpath(folder);
     dir_.cd(folder);
+    for (const QString& old : dir_.entryList({QStringLiteral("[0-9][0-9]_*.png")}, QDir::Files))
+      dir_.remove(old);
     clock_.start();
   }
 
@@ -53,9 +58,11 @@ class StepLog {
     shots_ << path;
     return w->grab().save(path);
   }
-  // Records the step's seconds since restart() and its screenshot.
-  bool step(QWidget* w, const QString& name) {
+  // Records the step's seconds since restart() and its screenshot; `settle` (when given) runs
+  // in between, so that the time is the step's own and the shot shows its result.
+  bool step(QWidget* w, const QString& name, const std::function<void()>& settle = {}) {
     steps_ << QStringLiteral("%1,%2").arg(name).arg(clock_.elapsed() / 1000.0, 0, 'f', 2);
+    if (settle) settle();
     return shot(w, name);
   }
   const QStringList& steps() const { return steps_; }
