@@ -15,6 +15,8 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QToolBar>
+#include <QToolButton>
 #include <QtTest>
 
 #include "studio_test_support.h"
@@ -148,6 +150,17 @@ void StudioStepsDockTest::everyStepFitsInEveryLanguage() {
                      .arg(info->height())
                      .arg(neededHeight(info))
                      .arg(info->text())));
+  // The toolbar's buttons take their French texts' widths once the relayout after the switch
+  // has run (a screenshot taken before it cuts "Dessus de table ou marche" at both ends).
+  auto* toolbar = window.findChild<QToolBar*>(QStringLiteral("mainToolBar"));
+  QVERIFY(toolbar);
+  auto squeezed = [toolbar] {
+    QStringList out;
+    for (const QToolButton* b : toolbar->findChildren<QToolButton*>())
+      if (b->isVisible() && b->width() < b->sizeHint().width()) out << b->text();
+    return out.join(QStringLiteral(", "));
+  };
+  QTRY_VERIFY2(squeezed().isEmpty(), qPrintable(squeezed()));
   QVERIFY(shots.shot(&window, QStringLiteral("window_fr")));
 }
 
