@@ -212,6 +212,8 @@ void StudioFinalImageTest::closingAsksWhileFinalRenders() {
   QVERIFY(!w->close());
   QPushButton* keep = questionButton(w, "keepRenderingButton");
   QVERIFY(keep);
+  StepLog shots(QStringLiteral("studio_final_image_artifacts/close_question"));
+  QVERIFY(shots.shot(keep->window(), QStringLiteral("close_question")));
   keep->click();
   QVERIFY(w->isVisible());
   QVERIFY(w->finalRender() && w->finalRender()->running());
