@@ -35,6 +35,9 @@ struct StageRecord {
   std::string name;
   bool ran = false;
   double seconds = 0;  // wall seconds, when it ran
+  // CPU seconds of the whole process (all threads) while it ran: steadier than `seconds` on a
+  // loaded machine; cpuSeconds / seconds is about the threads it kept busy.
+  double cpuSeconds = 0;
   std::string reason;  // why it was skipped; empty when it ran
   std::string detail;  // what it did, when it ran (may be empty): "estimated from the photo"
   // The image size it worked at, when it ran and works on an image (0 x 0: it works on none,
