@@ -1113,7 +1113,9 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {
   if (!photo.wasSrgbEncoded)
     return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
-  return measurePhotoNoise(photo.linearRgb);
+  NoiseMeasureOptions o;
+  o.maxPatches = kGrainMaxPatches;
+  return measurePhotoNoise(photo.linearRgb, o);
 }
 
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain) {
