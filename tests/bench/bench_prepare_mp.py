@@ -5,8 +5,11 @@ each stage's seconds (the report), the preparation's sum, the first frame (the f
 the progress CSV: one sample in every pixel, at the photo's size) and the run's wall time.
 
   /usr/bin/python3 tests/bench/bench_prepare_mp.py build [--scene FILE] [--mp 0.3,3,12]
-      [--repeats 3] [--threads 2] [--working-mp 0.5] [--label NAME] [--out DIR] [--plot-only]
+      [--repeats 3] [--threads 2] [--working-mp 0.5] [--initial-lights] [--label NAME] [--out DIR]
+      [--plot-only]
 
+--initial-lights passes inlay-cli's (the refinement and the refit skipped: the working copy's
+lighting, which the photo's size does not change, once instead of twice; halves a run).
 --scene defaults to the bundled example (resources/example/scene.json: two outlined lights,
 a sphere). --label names the run (e.g. "before", "after"): runs of other labels already in
 the CSV are kept, so one figure and one table compare them. Writes bench_prepare_mp.csv (one
@@ -69,6 +72,8 @@ def run_once(cli, scene, opt, work):
     cmd = ["nice", "-n", "10", cli, "render", scene, "-o", os.path.join(work, "comp.png"), "--spp", "1",
            "--noise", "0", "--quiet", "--threads", opt("--threads", "2"), "--report", report,
            "--progress-csv", progress, "--working-mp", opt("--working-mp", "0.5")]
+    if "--initial-lights" in sys.argv:  # no refine and refit (lighting-bound, on the working copy)
+        cmd.append("--initial-lights")
     t0 = time.time()
     subprocess.run(cmd, check=True)
     wall = time.time() - t0
