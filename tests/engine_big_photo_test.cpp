@@ -11,10 +11,32 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <string>
 
 namespace inlay {
 namespace {
+
+// The process's peak resident memory (VmHWM of /proc/self/status), bytes; 0 when unknown.
+double peakMemoryBytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) * 1024.0;  // kB
+  return 0;
+}
+
+// Sets the peak back to the memory resident now (Linux: "5" to /proc/self/clear_refs), so a
+// test's peak is its own and not an earlier test's; false when the system does not allow it.
+bool resetPeakMemory() {
+  std::ofstream refs("/proc/self/clear_refs");
+  refs << "5";
+  refs.flush();
+  return bool(refs);
+}
 
 // The example scene photographed `k` times larger: its photo enlarged and saved as a JPEG in
 // `dir`, its pixel keys scaled.
@@ -46,8 +68,27 @@ TEST(BigPhoto, PreparesOnAWorkingCopyAndRendersAtThePhotosSize) {
   for (LightKeys& l : doc.lights) l.lock = true;  // no refinement and refit: the test's time
   PrepareOptions opt;
   opt.workingMaxPixels = 0.03e6;  // small, for the test's time; the default is kWorkingMaxPixels
+  const bool peakReset = resetPeakMemory();
+  const double before = peakMemoryBytes();
   auto ps = prepareScene(doc, opt);
   ASSERT_TRUE(ps.ok()) << ps.error().message();
+  // Memory: the prepared scene holds the photo and about half a dozen maps of its size (albedo,
+  // direct and gathered light, the bounces' radiance, the surface per pixel); the preparation's
+  // peak stays within 12 photos' worth of float RGB (a stage that kept a double copy of every
+  // map, or several full-size temporaries at once, would not).
+  const double photoBytes = double(W) * H * 3 * sizeof(float);
+#if defined(__SANITIZE_ADDRESS__)
+  const bool sanitized = true;  // ASan's shadow and quarantine are not the preparation's
+#else
+  const bool sanitized = false;
+#endif
+  if (peakReset && before > 0 && !sanitized) {
+    EXPECT_LT(peakMemoryBytes() - before, 12 * photoBytes)
+        << "peak " << peakMemoryBytes() / 1e6 << " MB, before " << before / 1e6 << " MB";
+  }
+  std::printf("prepared %d x %d: peak memory %.0f MB above the %.0f MB before (%.1f photos)\n", W, H,
+              (peakMemoryBytes() - before) / 1e6, before / 1e6,
+              (peakMemoryBytes() - before) / photoBytes);
   const std::array<int, 2> work = workingSizeFor(W, H, opt.workingMaxPixels);
   EXPECT_EQ(ps->workingPx, work);
   EXPECT_LT(work[0], W / 10);

@@ -184,6 +184,38 @@ TEST(Engine, ALinearPhotoGetsNoGrain) {
   std::filesystem::remove_all(dir);
 }
 
+// A big photo's grain is measured on a sparser grid of patches (kGrainMaxPatches): on a 4.3 MP
+// photo it finds the noise level and the grain's width that every patch finds.
+TEST(Engine, ABigPhotosGrainFromFewerPatchesIsTheSame) {
+  ImageF noisy(2400, 1800, 3);
+  uint32_t state = 5;
+  for (int y = 0; y < noisy.height; ++y)
+    for (int x = 0; x < noisy.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        state = state * 1664525u + 1013904223u;
+        noisy.at(x, y, c) = 0.05f + 0.7f * float(x + y) / float(noisy.width + noisy.height) +
+                            0.04f * (float(state >> 8) / 16777216.f - 0.5f);
+      }
+  const auto dir = test::tempDir("big_grain");
+  const std::string path = (dir / "photo.png").string();
+  ASSERT_TRUE(saveImage(path, noisy).ok());
+  auto photo = loadImage(path);
+  ASSERT_TRUE(photo.ok());
+  const PhotoNoise sparse = photoNoiseOf(*photo);
+  NoiseMeasureOptions every;
+  ASSERT_GE(every.maxPatches, 4 * kGrainMaxPatches);
+  const PhotoNoise full = measurePhotoNoise(photo->linearRgb, every);
+  ASSERT_FALSE(sparse.empty() || full.empty()) << describeNoise(sparse);
+  EXPECT_LT(sparse.patchesUsed[1], full.patchesUsed[1] / 2);  // it did measure fewer
+  for (int c = 0; c < 3; ++c)
+    for (double intensity : {0.1, 0.3, 0.6}) {
+      const double a = sparse.sigma(c, intensity), b = full.sigma(c, intensity);
+      EXPECT_NEAR(a, b, 0.05 * b) << "channel " << c << " at " << intensity;
+    }
+  EXPECT_NEAR(sparse.grainWidthPx, full.grainWidthPx, 0.1);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Engine, ObjectChangesThePhotoNearItAndStaysFinite) {
   auto ps = preparedExample();
   ASSERT_TRUE(ps.ok()) << ps.error().message();

@@ -280,6 +280,27 @@ TEST(ImageIo, SixteenBitPngIsDecodedFromSrgb) {
   EXPECT_NEAR(loaded->linearRgb.at(2, 0, 1), 1.f, 1e-6);
 }
 
+// 8-bit photos are decoded through a table of the 256 codes: every code gives the sRGB curve's
+// value, and encodes back to itself (the response stage re-reads the codes through srgbCode8).
+TEST(ImageIo, EveryEightBitCodeDecodesThroughTheSrgbCurve) {
+  const auto dir = test::tempDir("codes8");
+  ImageF img(16, 16, 3);
+  const auto codeAt = [](int k, int c) { return c == 0 ? k : c == 1 ? 255 - k : (k * 7) % 256; };
+  for (int k = 0; k < 256; ++k)
+    for (int c = 0; c < 3; ++c) img.at(k % 16, k / 16, c) = srgbToLinear(float(codeAt(k, c)) / 255.f);
+  const auto path = (dir / "codes.png").string();
+  ASSERT_TRUE(saveImage(path, img).ok());
+  auto loaded = loadImage(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error().message();
+  EXPECT_EQ(loaded->sourceBitsPerChannel, 8);
+  for (int k = 0; k < 256; ++k)
+    for (int c = 0; c < 3; ++c) {
+      const float v = loaded->linearRgb.at(k % 16, k / 16, c);
+      const float want = srgbToLinear(float(codeAt(k, c)) / 255.f);
+      ASSERT_NEAR(v, want, 1e-6f * want + 1e-12f) << "code " << codeAt(k, c);
+      ASSERT_EQ(int(srgbCode8(v)), codeAt(k, c));
+    }
+}
 // Writes a JPEG of quadrants() with the given EXIF orientation and returns the loaded image.
 Expected<LoadedImage> loadOriented(const fs::path& dir, int orientation) {
   const auto plain = dir / "plain.jpg";

@@ -301,8 +301,12 @@ nlohmann::json stagesJson(const std::vector<StageRecord>& stages) {
   nlohmann::json out = nlohmann::json::array();
   for (const StageRecord& s : stages) {
     nlohmann::json j = {{"name", s.name}, {"ran", s.ran}};
-    if (s.ran) j["seconds"] = s.seconds;
-    else j["skipped"] = s.reason;
+    if (s.ran) {
+      j["seconds"] = s.seconds;
+      j["cpu_seconds"] = s.cpuSeconds;
+    } else {
+      j["skipped"] = s.reason;
+    }
     if (s.workingWidth > 0) j["working_px"] = {s.workingWidth, s.workingHeight};
     if (!s.detail.empty()) j["detail"] = s.detail;
     out.push_back(std::move(j));

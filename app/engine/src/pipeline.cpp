@@ -41,6 +41,13 @@ Error inFileKeys(Error e) {
 
 using Clock = std::chrono::steady_clock;
 
+// User and system CPU seconds of the process, every thread.
+double processCpuSeconds() {
+  timespec ts{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0;
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
@@ -448,8 +455,8 @@ RenderScene shownRenderScene(const PreparedScene& scene) {
 
 std::string describeStage(const StageRecord& stage) {
   if (!stage.ran) return stage.name + ": skipped, " + stage.reason;
-  char seconds[32];
-  std::snprintf(seconds, sizeof seconds, "%.3f s", stage.seconds);
+  char seconds[48];
+  std::snprintf(seconds, sizeof seconds, "%.3f s, CPU %.3f s", stage.seconds, stage.cpuSeconds);
   std::string line = stage.name + ": " + seconds +
                      (stage.detail.empty() ? "" : " (" + stage.detail + ")");
   if (stage.reducedImage)
@@ -1054,10 +1061,12 @@ Status runStage(const Stage& stage, Preparation& p) {
   if (record.reason.empty()) {
     if (stage.progress && p.opt.progress) p.opt.progress(stage.progress, 0);
     const auto t = Clock::now();
+    const double cpu0 = processCpuSeconds();
     p.stagePx = {0, 0};
     if (Status st = stage.run(p, record.detail); !st) return st;
     record.ran = true;
     record.seconds = secondsSince(t);
+    record.cpuSeconds = processCpuSeconds() - cpu0;
     const ImageF& photo = p.ps.photo.linearRgb;
     std::array<int, 2> px = p.stagePx;
     if (px[0] == 0 && stage.at == Stage::At::Photo) px = {photo.width, photo.height};
@@ -1104,7 +1113,9 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {
   if (!photo.wasSrgbEncoded)
     return PhotoNoise{{}, 0, 0, {}, {"a linear photo (EXR, HDR) gets no grain"}};
-  return measurePhotoNoise(photo.linearRgb);
+  NoiseMeasureOptions o;
+  o.maxPatches = kGrainMaxPatches;
+  return measurePhotoNoise(photo.linearRgb, o);
 }
 
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain) {

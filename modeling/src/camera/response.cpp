@@ -3,6 +3,7 @@
 
 #include "lines.h"
 #include "noise_level.h"
+#include "inlay/modeling/parallel.h"
 
 #include <algorithm>
 #include <chrono>
@@ -124,26 +125,34 @@ unsigned char CameraResponse::encodeCode8(float v) const {
                          thresholds8_.begin());
 }
 
+// Rows in parallel (each value on its own: the result does not depend on the threads).
 std::vector<unsigned char> srgbCodesOf(const ImageF& img) {
   std::vector<unsigned char> codes(img.pixelCount() * 3);
-  for (size_t i = 0; i < img.pixelCount(); ++i)
-    for (int c = 0; c < 3; ++c)
-      codes[i * 3 + size_t(c)] =
-          srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
+  const size_t W = size_t(std::max(0, img.width));
+  parallelFor(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& rows) {
+    for (size_t i = size_t(rows.begin()) * W; i < size_t(rows.end()) * W; ++i)
+      for (int c = 0; c < 3; ++c)
+        codes[i * 3 + size_t(c)] =
+            srgbCode8(img.data[i * size_t(img.channels) + size_t(img.channels >= 3 ? c : 0)]);
+  });
   return codes;
 }
 
 void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& response) {
   const auto& table = response.table8();
-  for (float& v : img.data) {
-    if (bitsPerChannel <= 8) {
-      v = table[srgbCode8(v)];
-    } else {
-      const double levels = std::exp2(std::min(bitsPerChannel, 16)) - 1;
-      const double e = std::round(linearToSrgb(double(v)) * levels) / levels;
-      v = float(response.decode(e));
+  const double levels = std::exp2(std::min(bitsPerChannel, 16)) - 1;
+  const size_t rowValues = size_t(std::max(0, img.width)) * size_t(img.channels);
+  parallelFor(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& rows) {
+    for (size_t i = size_t(rows.begin()) * rowValues; i < size_t(rows.end()) * rowValues; ++i) {
+      float& v = img.data[i];
+      if (bitsPerChannel <= 8) {
+        v = table[srgbCode8(v)];
+      } else {
+        const double e = std::round(linearToSrgb(double(v)) * levels) / levels;
+        v = float(response.decode(e));
+      }
     }
-  }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------

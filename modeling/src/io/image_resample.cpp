@@ -60,19 +60,15 @@ AxisWindow axisWindow(int full, int low, int radius, double sigma) {
   return a;
 }
 
-// Per low pixel and channel: the value to spread (a ratio to the guide, or the value itself)
-// and whether it is a ratio.
-struct LowValues {
-  std::vector<float> value, plain;  // plain: the value itself (finite)
-  std::vector<uint8_t> isRatio;
+// Per low pixel and channel: the value to spread (a ratio to the guide, or the value itself),
+// whether it is a ratio, and the value itself (finite), side by side for the taps' reads.
+struct LowValue {
+  float value = 0, plain = 0;
+  bool isRatio = false;
 };
-LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired,
-                      const JointBilateralOptions& o) {
-  LowValues v;
-  const size_t n = low.data.size();
-  v.value.resize(n);
-  v.plain.resize(n);
-  v.isRatio.assign(n, 0);
+std::vector<LowValue> lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired,
+                                  const JointBilateralOptions& o) {
+  std::vector<LowValue> v(low.data.size());
   const int C = low.channels;
   for (size_t p = 0; p < low.pixelCount(); ++p)
     for (int c = 0; c < C; ++c) {
@@ -81,9 +77,7 @@ LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired,
       const float g =
           guideOf(&lowGuide.data[p * size_t(lowGuide.channels)], lowGuide.channels, c, paired);
       const bool ratio = o.ratio && std::isfinite(g) && g > o.darkGuide;
-      v.value[i] = ratio ? t / g : t;
-      v.plain[i] = t;
-      v.isRatio[i] = ratio;
+      v[i] = {ratio ? t / g : t, t, ratio};
     }
   return v;
 }
@@ -92,11 +86,13 @@ LowValues lowValuesOf(const ImageF& low, const ImageF& lowGuide, bool paired,
 
 namespace {
 
-// One full-size row's taps: per pixel, the low pixels of its window and their joint weights
-// (spatial x range), and the spatial weights alone (for a pixel no neighbour resembles).
+// One pixel's taps: the low pixels of its window and their joint weights (spatial x range), and
+// the spatial weights alone (for a pixel no neighbour resembles). Sized once per task.
 struct PixelTaps {
+  explicit PixelTaps(int most) : q(size_t(most)), joint(size_t(most)), spatial(size_t(most)) {}
   std::vector<size_t> q;
   std::vector<float> joint, spatial;
+  int n = 0;
   float jointTotal = 0, spatialTotal = 0;
 };
 
@@ -119,19 +115,19 @@ std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& low
   std::vector<float> rangeTable(kTable);
   for (int k = 0; k < kTable; ++k)
     rangeTable[size_t(k)] = float(std::exp(-0.5 * std::pow(k * step / sr, 2)));
-  std::vector<LowValues> values;
+  std::vector<std::vector<LowValue>> values;
   for (const ImageF* low : lows) {
     const bool paired = lowGuide.channels == low->channels && fullGuide.channels == low->channels;
     values.push_back(lowValuesOf(*low, lowGuide, paired, o));
     out.emplace_back(W, H, low->channels);
   }
   parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
-    PixelTaps t;
+    PixelTaps t(ax.n * ay.n);
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < W; ++x) {
         const float* g = fullGuide.pixel(x, y);
         const float here = logLuminance(g, fullGuide.channels);
-        t.q.clear(), t.joint.clear(), t.spatial.clear();
+        t.n = 0;
         t.jointTotal = t.spatialTotal = 0;
         for (int ky = 0; ky < ay.n; ++ky) {
           const float wy = ay.weight[size_t(y) * ay.n + ky];
@@ -143,28 +139,35 @@ std::vector<ImageF> jointBilateralUpsample(const std::vector<const ImageF*>& low
             const size_t q = row + size_t(ax.first[size_t(x)] + kx);
             const int bin = int(std::fabs(here - lowLog[q]) / step);
             const float wj = bin < kTable ? ws * rangeTable[size_t(bin)] : 0.f;
-            t.q.push_back(q), t.joint.push_back(wj), t.spatial.push_back(ws);
+            t.q[size_t(t.n)] = q, t.joint[size_t(t.n)] = wj, t.spatial[size_t(t.n)] = ws;
+            ++t.n;
             t.jointTotal += wj, t.spatialTotal += ws;
           }
         }
         // No neighbour like this pixel (a guide value the working copy never shows): distance only.
         const bool range = t.jointTotal > 1e-6f * t.spatialTotal;
-        const std::vector<float>& wt = range ? t.joint : t.spatial;
+        const float* wt = range ? t.joint.data() : t.spatial.data();
         const float total = range ? t.jointTotal : t.spatialTotal;
         for (size_t k = 0; k < lows.size(); ++k) {
           const int C = lows[k]->channels;
           const bool paired = lowGuide.channels == C && fullGuide.channels == C;
+          const LowValue* lv = values[k].data();
           for (int c = 0; c < C; ++c) {
             const float gc = guideOf(g, fullGuide.channels, c, paired);
-            float sum = 0, plain = 0;
-            for (size_t m = 0; m < t.q.size(); ++m) {
-              const size_t i = t.q[m] * size_t(C) + size_t(c);
-              const float v = values[k].value[i];
-              sum += wt[m] * (values[k].isRatio[i] ? v * gc : v);
-              plain += t.spatial[m] * values[k].plain[i];
+            float sum = 0;
+            for (int m = 0; m < t.n; ++m) {
+              const LowValue& l = lv[t.q[size_t(m)] * size_t(C) + size_t(c)];
+              sum += wt[m] * (l.isRatio ? l.value * gc : l.value);
             }
             const float v = sum / total;
-            out[k].at(x, y, c) = std::isfinite(v) ? v : plain / t.spatialTotal;
+            if (std::isfinite(v)) {
+              out[k].at(x, y, c) = v;
+              continue;
+            }
+            float plain = 0;  // rare: the spatial average of the values themselves
+            for (int m = 0; m < t.n; ++m)
+              plain += t.spatial[size_t(m)] * lv[t.q[size_t(m)] * size_t(C) + size_t(c)].plain;
+            out[k].at(x, y, c) = plain / t.spatialTotal;
           }
         }
       }
