@@ -181,6 +181,7 @@ TEST(Extrusion, HeightBySingleViewMetrologyAndPlacementOnTop) {
   const double h = 0.75;
   std::vector<Vec3> top = {{-0.5, h, -3.3}, {0.5, h, -3.3}, {0.5, h, -2.7}, {-0.5, h, -2.7}};
   std::vector<Vec2> outline;
+  outline.reserve(top.size());
   for (const auto& p : top) outline.push_back(*c.project(p));
   const Vec2 click = *c.project(Vec3(top[0].x(), 0, top[0].z()));
   const auto ex = extrusionFromOutline(c, outline, click, "surfaces[0]");

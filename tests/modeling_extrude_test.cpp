@@ -109,6 +109,7 @@ TEST(Extrude, EitherOrientationGivesTheSameClosedSolid) {
   std::vector<Vec3> L = {{-0.5, h, -3.3}, {0.5, h, -3.3}, {0.5, h, -3.0},
                          {0.0, h, -3.0},  {0.0, h, -2.7}, {-0.5, h, -2.7}};
   std::vector<Vec2> lpx;
+  lpx.reserve(L.size());
   for (const auto& p : L) lpx.push_back(*c.project(p));
   const auto l = extrusionFromOutline(c, lpx, t.click, "surfaces[0]");
   ASSERT_TRUE(l.ok()) << l.error().message();

@@ -20,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path writeFile(const fs::path& dir, const std::string& name, const std::string& bytes) {
-  const fs::path p = dir / name;
+  fs::path p = dir / name;
   std::ofstream out(p, std::ios::binary);
   out.write(bytes.data(), std::streamsize(bytes.size()));
   return p;
@@ -523,6 +523,7 @@ void expectTriangulates(const std::vector<Eigen::Vector2d>& poly) {
   const Eigen::Vector3d u = Eigen::Vector3d(1, 0.5, 0.2).normalized();
   const Eigen::Vector3d v = u.cross(Eigen::Vector3d(0.1, 0.2, 1)).normalized().cross(u).normalized();
   std::vector<Vec3f> corners;
+  corners.reserve(poly.size());
   for (const auto& q : poly) corners.push_back((origin + q.x() * u + q.y() * v).cast<float>());
   const auto tris = triangulatePolygon(corners);
   ASSERT_EQ(tris.size(), poly.size() - 2);
@@ -551,6 +552,7 @@ TEST(MeshPolygon, ConcaveUShapedFace) {
   std::vector<Eigen::Vector2d> cw = {{0, 0}, {0, 2}, {1, 2}, {1, 1}, {2, 1}, {2, 2}, {3, 2}, {3, 0}};
   const std::vector<Vec3f> corners = [&] {
     std::vector<Vec3f> c;
+    c.reserve(cw.size());
     for (const auto& q : cw) c.emplace_back(float(q.x()), 0.f, float(q.y()));  // on the floor
     return c;
   }();

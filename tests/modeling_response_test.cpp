@@ -111,8 +111,10 @@ ImageF syntheticPhoto(const CameraResponse& truth, double noise, uint32_t seed, 
     double a, hw, hh;
     Vec3 rgb;
   };
+  const int rectCount = 36;
   std::vector<Rect> rects;
-  for (int i = 0; i < 36; ++i)
+  rects.reserve(rectCount);
+  for (int i = 0; i < rectCount; ++i)
     rects.push_back({Vec2(U(rng) * W, U(rng) * H), 0.1 + 0.6 * U(rng), 12 + 40 * U(rng), 8 + 30 * U(rng),
                      Vec3(0.03 + 0.85 * U(rng), 0.03 + 0.85 * U(rng), 0.03 + 0.85 * U(rng))});
   ImageF lin(W, H, 3);

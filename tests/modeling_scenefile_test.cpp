@@ -23,7 +23,7 @@ void writeText(const fs::path& p, const std::string& text) {
 
 // A folder with a photo and a mesh the scene files below refer to.
 fs::path sceneDir(const std::string& name) {
-  const fs::path dir = test::tempDir("scene_" + name);
+  fs::path dir = test::tempDir("scene_" + name);
   writeText(dir / "room.jpg", "not decoded by the scene reader");
   writeText(dir / "models" / "chair.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   return dir;

@@ -207,6 +207,7 @@ std::vector<size_t> uvsPerPosition(const TriangleMesh& m, const std::vector<size
     uvs[{m.positions[i].x(), m.positions[i].y(), m.positions[i].z()}].insert(
         {m.uvs[i].x(), m.uvs[i].y()});
   std::vector<size_t> sizes;
+  sizes.reserve(uvs.size());
   for (const auto& [p, set] : uvs) sizes.push_back(set.size());
   std::sort(sizes.begin(), sizes.end());
   return sizes;

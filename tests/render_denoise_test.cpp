@@ -6,6 +6,7 @@
 #include "inlay/render/denoise.h"
 #include "inlay/render/session.h"
 #include "render_test_scenes.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -283,7 +284,7 @@ TEST_F(DenoiseScene, UntouchedPixelsStayThePhotoBitForBit) {
                  r.with.rgb(xx, yy) != r.without.rgb(xx, yy);
         }
       const size_t i = size_t(y) * kW + x;
-      const bool same = std::memcmp(&den.data[i * 3], &photo.data[i * 3], 3 * sizeof(float)) == 0;
+      const bool same = test::sameBits(&den.data[i * 3], &photo.data[i * 3], 3);
       const bool zeroDelta = r.mask.data[i] == 0 && out.rgb(x, y) == r.without.rgb(x, y);
       if (!near) {
         EXPECT_TRUE(same) << x << "," << y;
@@ -292,7 +293,7 @@ TEST_F(DenoiseScene, UntouchedPixelsStayThePhotoBitForBit) {
         EXPECT_TRUE(same) << x << "," << y;
       }
       farPx += !near;
-      changedPx += std::memcmp(&den.data[i * 3], &raw.data[i * 3], 3 * sizeof(float)) != 0;
+      changedPx += !test::sameBits(&den.data[i * 3], &raw.data[i * 3], 3);
     }
   EXPECT_GT(farPx, 20);       // the test covers some pixels out of reach
   EXPECT_GT(changedPx, 100);  // and the filter did change the object and its shadow
@@ -495,8 +496,8 @@ TEST(DenoiseSession, FramesAreDenoisedAndKeepUntouchedPixels) {
     const bool untouched = frames[0]->withObjects.rgb(int(i % w), int(i / w)) ==
                                frames[0]->withoutObjects.rgb(int(i % w), int(i / w)) &&
                            frames[0]->mask.data[i] == 0;
-    const bool same = std::memcmp(&frames[0]->withObjects.data[i * 3],
-                                  &frames[1]->withObjects.data[i * 3], 3 * sizeof(float)) == 0;
+    const bool same =
+        test::sameBits(&frames[0]->withObjects.data[i * 3], &frames[1]->withObjects.data[i * 3], 3);
     changed += !same;
     if (untouched && frames[1]->withObjects.rgb(int(i % w), int(i / w)) ==
                          frames[1]->withoutObjects.rgb(int(i % w), int(i / w))) {

@@ -7,7 +7,6 @@
 #include "inlay/render/grain.h"
 
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <random>
 
@@ -139,8 +138,7 @@ TEST(Grain, NoNoiseNoGrain) {
   const ImageF composite = differentialComposite(clean, with, without, mask);
   ImageF grained = composite;
   addGrainTo(grained, clean, with, without, mask, m, 1);
-  EXPECT_EQ(
-      0, std::memcmp(grained.data.data(), composite.data.data(), composite.data.size() * sizeof(float)));
+  EXPECT_TRUE(test::sameBits(grained.data.data(), composite.data.data(), composite.data.size()));
 }
 
 PhotoNoise constantNoise(double sigma, double widthPx = 0, double rho = 0) {
@@ -214,7 +212,7 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
   addGrainTo(out, f.photo, f.with, f.without, f.mask, n, 3);
   ImageF again = composite;
   addGrainTo(again, f.photo, f.with, f.without, f.mask, n, 3);
-  EXPECT_EQ(0, std::memcmp(out.data.data(), again.data.data(), out.data.size() * sizeof(float)));
+  EXPECT_TRUE(test::sameBits(out.data.data(), again.data.data(), out.data.size()));
 
   double s = 0, ss = 0, cnt = 0;
   for (int y = 0; y < kH; ++y)
@@ -223,8 +221,7 @@ TEST(Grain, ObjectGetsFullSigmaShadowKeepsPhotoNoiseUntouchedStaysBitForBit) {
         const bool object = f.mask.at(x, y) > 0,
                    changed = object || f.with.at(x, y, c) != f.without.at(x, y, c);
         if (!changed) {
-          ASSERT_EQ(0, std::memcmp(out.pixel(x, y) + c, photo.pixel(x, y) + c, sizeof(float)))
-              << x << "," << y;
+          ASSERT_TRUE(test::sameBits(out.pixel(x, y) + c, photo.pixel(x, y) + c, 1)) << x << "," << y;
         } else if (object) {
           const double d = out.at(x, y, c) - 0.5;
           s += d, ss += d * d, cnt += 1;

@@ -106,8 +106,10 @@ TEST(SessionTorture, RapidEditsFromManyThreadsKeepFramesInOrder) {
   // Bursts with short pauses, so frames are delivered between edits (a storm with no pause
   // would only test cancellation).
   constexpr int kMovesPerThread = 2000, kLightEdits = 150, kCancels = 600;
+  constexpr int kMovers = 2;  // threads moving the objects; one more edits lights, one cancels
   std::vector<std::thread> threads;
-  for (int t = 0; t < 2; ++t)
+  threads.reserve(kMovers + 2);
+  for (int t = 0; t < kMovers; ++t)
     threads.emplace_back([&, t] {
       std::mt19937 rng(100 + t);
       std::uniform_real_distribution<double> x(-0.8, 0.8);

@@ -34,8 +34,8 @@ using namespace inlay::studio;
 namespace {
 
 QString exampleScene() {
-  const QString fromSource = qEnvironmentVariable("INLAY_SOURCE_DIR") +
-                             QStringLiteral("/resources/example/scene.json");
+  QString fromSource = qEnvironmentVariable("INLAY_SOURCE_DIR") +
+                       QStringLiteral("/resources/example/scene.json");
   if (!qEnvironmentVariable("INLAY_SOURCE_DIR").isEmpty() && QFile::exists(fromSource))
     return fromSource;
   return QString::fromStdString(exampleScenePath());

@@ -120,7 +120,7 @@ void StudioWorkflowTest::newUserWorkflow() {
   step(QStringLiteral("box_accepted"));
 
   // --- 3. Drag the bottom-left corner: one undo step, the loupe shows while dragging ---
-  const Vec2 corner = estimated[3];
+  const Vec2& corner = estimated[3];
   const QPoint from = view->widgetFromImage(corner).toPoint();
   const Vec2 targetPx = corner + Vec2(6, -5);
   const QPoint to = view->widgetFromImage(targetPx).toPoint();

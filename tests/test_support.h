@@ -1,7 +1,10 @@
 // Helpers shared by the GoogleTest suites.
 #pragma once
 
+#include <bit>
 #include <csignal>
+#include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +44,14 @@ inline size_t countFiles(const std::filesystem::path& dir) {
   size_t n = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
   return n;
+}
+
+// Bit-for-bit equality of n floats, compared as their bit patterns: +0 and -0 differ and a NaN
+// equals the same NaN, as "the photo's own bits, unchanged" means (== on floats says otherwise).
+inline bool sameBits(const float* a, const float* b, size_t n) {
+  for (size_t i = 0; i < n; ++i)
+    if (std::bit_cast<uint32_t>(a[i]) != std::bit_cast<uint32_t>(b[i])) return false;
+  return true;
 }
 
 // Caps the size of files this process may write, so a write fails part-way as on a full disk

@@ -101,7 +101,8 @@ void plot(const std::map<QString, std::vector<double>>& series, const QString& p
   for (const auto& [name, v] : series) {
     p.setPen(QPen(colours[c % 4], 1.5));
     for (size_t i = 0; i + 1 < v.size(); ++i) p.drawLine(at(i, v[i]), at(i + 1, v[i + 1]));
-    p.drawText(QPointF(area.left() + 10, area.bottom() + 25 + 15 * (c % 2)) + QPointF(400 * (c / 2), 0),
+    const int legendRow = c % 2, legendColumn = c / 2;  // the legend: two rows, then a new column
+    p.drawText(QPointF(area.left() + 10 + 400 * legendColumn, area.bottom() + 25 + 15 * legendRow),
                QStringLiteral("%1 (median %2 ms)").arg(name).arg(median(v), 0, 'f', 2));
     ++c;
   }
