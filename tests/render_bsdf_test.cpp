@@ -85,6 +85,51 @@ TEST(SampleRng, FastPathMatchesTheReferenceBitForBit) {
     }
 }
 
+// Lambert's closed form of the projected solid angle a triangle subtends at o (normal n):
+// half the sum over its edges of the edge's angle times n . the unit normal of its plane.
+double projectedSolidAngle(const std::array<Vec3, 3>& c, const Vec3& o, const Vec3& n) {
+  double sum = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 a = (c[size_t(i)] - o).normalized(), b = (c[size_t((i + 1) % 3)] - o).normalized();
+    sum += std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * n.dot(a.cross(b).normalized());
+  }
+  return 0.5 * std::abs(sum);
+}
+
+// Sampling a spherical triangle (the area lights' sampler): every point lies on the triangle,
+// and integrating cos theta with pdf 1 / solidAngle gives Lambert's closed form, for a near,
+// a far, a thin and a grazing triangle.
+TEST(SphericalTriangleSampling, UniformInSolidAngle) {
+  const Vec3 o(0.1, -0.2, 0.05), n(0, 0, 1);
+  const std::array<std::array<Vec3, 3>, 4> triangles = {{
+      {Vec3(-0.5, -0.4, 1.0), Vec3(0.7, -0.3, 1.1), Vec3(0.1, 0.6, 0.9)},  // near
+      {Vec3(10, 10, 30), Vec3(10.5, 10, 30), Vec3(10, 10.4, 30.2)},        // far
+      {Vec3(-2, 0, 1), Vec3(2, 0.02, 1), Vec3(0, 0.05, 1.3)},              // thin
+      {Vec3(-1, 0.5, 0.06), Vec3(1, 0.5, 0.07), Vec3(0.2, 3, 0.4)},        // grazing
+  }};
+  for (const auto& c : triangles) {
+    const SphericalTriangle t(c[0], c[1], c[2], o);
+    ASSERT_GT(t.solidAngle, 0);
+    const Vec3 planeN = (c[1] - c[0]).cross(c[2] - c[0]).normalized();
+    const int count = 1 << 14;
+    double sum = 0;
+    for (int i = 0; i < count; ++i) {
+      const auto u = SampleRng(3, 5, uint32_t(i), 11).get2(1);
+      const Vec3 y = t.sample(u[0], u[1]);
+      ASSERT_TRUE(y.allFinite());
+      ASSERT_NEAR((y - c[0]).dot(planeN), 0.0, 1e-9 * (1 + y.norm()));
+      // Inside: the barycentric weights are all >= 0.
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 e = c[size_t((k + 1) % 3)] - c[size_t(k)];
+        ASSERT_GE(e.cross(y - c[size_t(k)]).dot(planeN), -1e-9 * e.squaredNorm());
+      }
+      sum += std::max(0.0, n.dot((y - o).normalized()));
+    }
+    const double expected = projectedSolidAngle(c, o, n), estimate = sum * t.solidAngle / count;
+    EXPECT_NEAR(estimate, expected, 2e-3 * expected) << c[0].transpose();
+  }
+}
+
 TEST(BsdfFurnace, AlbedoNeverAboveOneAndLosslessNearOne) {
   struct Case {
     const char* name;

@@ -232,22 +232,18 @@ struct SphericalTriangle {
     solidAngle = sa;
   }
 
-  static double angleBetween(const Vec3& v1, const Vec3& v2) {
-    if (v1.dot(v2) < 0) return kPi - 2.0 * std::asin(std::min(1.0, (v1 + v2).norm() / 2));
-    return 2.0 * std::asin(std::min(1.0, (v2 - v1).norm() / 2));
-  }
-
-  // The point on the triangle in the sampled direction.
+  // The point on the triangle in the sampled direction. Arvo's inversion needs the corner
+  // angle alpha at a only as its cosine and sine (a dot and a cross product of the great
+  // circles' normals, no inverse trigonometry), and the sub-triangle's area u0 x solidAngle
+  // (the same solid angle the pdf uses): one sincos in all.
   Vec3 sample(double u0, double u1) const {
-    const Vec3 uab = nab.normalized(), ubc = nbc.normalized(), uca = nca.normalized();
-    const double alpha = angleBetween(uab, -uca);
-    const double beta = angleBetween(ubc, -uab);
-    const double gamma = angleBetween(uca, -ubc);
-    const double areaPi = alpha + beta + gamma;
-    const double apPi = kPi + u0 * (areaPi - kPi);
-    const double cosA = std::cos(alpha), sinA = std::sin(alpha);
-    const double sinPhi = std::sin(apPi) * cosA - std::cos(apPi) * sinA;
-    const double cosPhi = std::cos(apPi) * cosA + std::sin(apPi) * sinA;
+    const Vec3 uab = nab.normalized(), uca = nca.normalized();
+    const double cosA = std::clamp(-uab.dot(uca), -1.0, 1.0), sinA = uab.cross(uca).norm();
+    // sin and cos of pi + u0 solidAngle (the sub-triangle's angle sum).
+    const double sub = u0 * solidAngle;
+    const double sinAp = -std::sin(sub), cosAp = -std::cos(sub);
+    const double sinPhi = sinAp * cosA - cosAp * sinA;
+    const double cosPhi = cosAp * cosA + sinAp * sinA;
     const double k1 = cosPhi + cosA;
     const double k2 = sinPhi - sinA * a.dot(b);
     double cosBp = (k2 + (k2 * cosPhi - k1 * sinPhi) * cosA) / ((k2 * sinPhi + k1 * cosPhi) * sinA);
