@@ -126,7 +126,9 @@ TEST(SphericalTriangleSampling, UniformInSolidAngle) {
       sum += std::max(0.0, n.dot((y - o).normalized()));
     }
     const double expected = projectedSolidAngle(c, o, n), estimate = sum * t.solidAngle / count;
-    EXPECT_NEAR(estimate, expected, 2e-3 * expected) << c[0].transpose();
+    // The stratified estimate lands within 1e-6 of it; a sub-area 3 % off misses by 3e-3 to 2e-2
+    // on all but the far triangle.
+    EXPECT_NEAR(estimate, expected, 1e-4 * expected) << c[0].transpose();
   }
 }
 
