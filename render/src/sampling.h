@@ -24,24 +24,28 @@ inline uint32_t pcgHash(uint32_t v) {
   return (word >> 22u) ^ word;
 }
 
-inline uint32_t reverseBits(uint32_t x) {
-  x = (x << 16) | (x >> 16);
-  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+inline constexpr uint32_t reverseBits(uint32_t x) {
+  x = __builtin_bswap32(x);  // the bytes in one instruction, then the bits inside each byte
   x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
   x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
   x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
   return x;
 }
 
-// Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling").
-inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
-  x = reverseBits(x);
+// Laine and Karras' permutation, the core of the scramble below: it mixes each bit only into
+// higher ones, so on reversed bits it is a nested uniform (Owen) scramble.
+inline uint32_t laineKarras(uint32_t x, uint32_t seed) {
   x += seed;
   x ^= x * 0x6c50b47cu;
   x ^= x * 0xb82f1e52u;
   x ^= x * 0xc7afe638u;
   x ^= x * 0x8d22f6e6u;
-  return reverseBits(x);
+  return x;
+}
+
+// Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling").
+inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
 // The first two Sobol' dimensions (a (0,2)-sequence in base 2).
@@ -59,6 +63,26 @@ inline uint32_t sobol1(uint32_t i) {
   for (; i; i &= i - 1) r ^= kSobol1.v[__builtin_ctz(i)];
   return r;
 }
+// reverseBits(sobol1(i)) a byte of i at a time: table[b][v] is the XOR of the reversed
+// direction numbers of the bits set in v, placed as byte b (four lookups instead of a loop over
+// up to 32 bits and a reversal).
+struct Sobol1ReversedTable {
+  uint32_t byByte[4][256];
+  constexpr Sobol1ReversedTable() : byByte() {
+    for (int b = 0; b < 4; ++b)
+      for (int v = 0; v < 256; ++v) {
+        uint32_t r = 0;
+        for (int j = 0; j < 8; ++j)
+          if (v & (1 << j)) r ^= reverseBits(kSobol1.v[8 * b + j]);
+        byByte[b][v] = r;
+      }
+  }
+};
+inline constexpr Sobol1ReversedTable kSobol1Reversed{};
+inline uint32_t reversedSobol1(uint32_t i) {
+  const auto& t = kSobol1Reversed.byByte;
+  return t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
+}
 
 // Random numbers as a pure function of (pixel x, y, sample, dimension, seed): every render
 // replays exactly and the with-object and without-object paths share them. Dimensions come in
@@ -71,7 +95,16 @@ class SampleRng {
   SampleRng(uint32_t x, uint32_t y, uint32_t sample, uint32_t seed)
       : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))), sample_(sample) {}
   // Dimensions 2 pair and 2 pair + 1, uniform in [0, 1)^2.
+  // The same bits as getReference2() with fewer steps: the scramble's first reversal undoes
+  // sobol0's, and sobol1 comes reversed from a table.
   std::array<double, 2> get2(uint32_t pair) const {
+    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
+    const uint32_t index = nestedUniformScramble(sample_, pairSeed);
+    return {toUnit(reverseBits(laineKarras(index, pcgHash(pairSeed)))),
+            toUnit(reverseBits(laineKarras(reversedSobol1(index), pcgHash(pairSeed + 1u))))};
+  }
+  // get2() as Burley's paper writes it (the tests hold get2() to it).
+  std::array<double, 2> getReference2(uint32_t pair) const {
     const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
     const uint32_t index = nestedUniformScramble(sample_, pairSeed);
     return {toUnit(nestedUniformScramble(sobol0(index), pcgHash(pairSeed))),
@@ -199,22 +232,18 @@ struct SphericalTriangle {
     solidAngle = sa;
   }
 
-  static double angleBetween(const Vec3& v1, const Vec3& v2) {
-    if (v1.dot(v2) < 0) return kPi - 2.0 * std::asin(std::min(1.0, (v1 + v2).norm() / 2));
-    return 2.0 * std::asin(std::min(1.0, (v2 - v1).norm() / 2));
-  }
-
-  // The point on the triangle in the sampled direction.
+  // The point on the triangle in the sampled direction. Arvo's inversion needs the corner
+  // angle alpha at a only as its cosine and sine (a dot and a cross product of the great
+  // circles' normals, no inverse trigonometry), and the sub-triangle's area u0 x solidAngle
+  // (the same solid angle the pdf uses): one sincos in all.
   Vec3 sample(double u0, double u1) const {
-    const Vec3 uab = nab.normalized(), ubc = nbc.normalized(), uca = nca.normalized();
-    const double alpha = angleBetween(uab, -uca);
-    const double beta = angleBetween(ubc, -uab);
-    const double gamma = angleBetween(uca, -ubc);
-    const double areaPi = alpha + beta + gamma;
-    const double apPi = kPi + u0 * (areaPi - kPi);
-    const double cosA = std::cos(alpha), sinA = std::sin(alpha);
-    const double sinPhi = std::sin(apPi) * cosA - std::cos(apPi) * sinA;
-    const double cosPhi = std::cos(apPi) * cosA + std::sin(apPi) * sinA;
+    const Vec3 uab = nab.normalized(), uca = nca.normalized();
+    const double cosA = std::clamp(-uab.dot(uca), -1.0, 1.0), sinA = uab.cross(uca).norm();
+    // sin and cos of pi + u0 solidAngle (the sub-triangle's angle sum).
+    const double sub = u0 * solidAngle;
+    const double sinAp = -std::sin(sub), cosAp = -std::cos(sub);
+    const double sinPhi = sinAp * cosA - cosAp * sinA;
+    const double cosPhi = cosAp * cosA + sinAp * sinA;
     const double k1 = cosPhi + cosA;
     const double k2 = sinPhi - sinA * a.dot(b);
     double cosBp = (k2 + (k2 * cosPhi - k1 * sinPhi) * cosA) / ((k2 * sinPhi + k1 * cosPhi) * sinA);

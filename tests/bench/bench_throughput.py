@@ -83,6 +83,10 @@ def main():
             a.legend(fontsize=7)
         ax[1].set_ylim(bottom=0)
         ax[2].set_ylim(bottom=0)
+        if not any(data[l]["lights"] for l in labels):  # --parts without lights: say so, not an empty plot
+            ax[2].clear()
+            ax[2].text(0.5, 0.5, "lights: not run (--parts)", ha="center", va="center", transform=ax[2].transAxes)
+            ax[2].set_axis_off()
 
 
 if __name__ == "__main__":
