@@ -12,6 +12,7 @@
 // repainted it. Writes DIR/gestures.csv (gesture, denoise, index, ms, cpu_ms: the process's CPU
 // time over the same span) and prints gesture, denoise, median and p90 per gesture.
 //   QT_QPA_PLATFORM=offscreen build/tests/bench/bench_gestures [--out DIR] [--reps 20]
+//       [--only move,yaw,...] [--denoise off|on|both]
 // tests/bench/bench_gestures.py runs it and plots the figure.
 #include "studio_bench.h"
 
@@ -68,37 +69,41 @@ class GestureBench {
     const int o = chairIndex();
     const ObjectKeys start = doc_.scene().objects[size_t(o)];
     const int drag = Document::newDragId();
-    for (int k = 0; k < reps; ++k)
+    for (int k = 0; k < reps && wants("move"); ++k)
       time("move", [&] { return doc_.moveObject(o, start.basePx + Vec2(-3.0 * (k % 6 + 1), 1.0), drag); });
-    doc_.undoStack()->undo();
+    if (doc_.undoStack()->canUndo()) doc_.undoStack()->undo();
     const int turn = Document::newDragId();
-    for (int k = 0; k < reps; ++k)
+    for (int k = 0; k < reps && wants("yaw"); ++k)
       time("yaw", [&] { return doc_.setObjectYaw(o, start.yawDeg + 7.0 * (k + 1), nullptr, turn); });
-    doc_.undoStack()->undo();
+    if (doc_.undoStack()->canUndo()) doc_.undoStack()->undo();
     const int scale = Document::newDragId();
-    for (int k = 0; k < reps; ++k)
+    for (int k = 0; k < reps && wants("height"); ++k)
       time("height", [&] {
         return doc_.setObjectHeight(o, start.heightM * (1.0 + 0.02 * (k % 6 + 1)), nullptr, scale);
       });
-    doc_.undoStack()->undo();
+    if (doc_.undoStack()->canUndo()) doc_.undoStack()->undo();
     for (int k = 0; k < reps; ++k) {
-      time("duplicate", [&] { return doc_.duplicateObject(o); });
-      undo();
-      time("delete", [&] { return doc_.removeObject(o); });
-      undo();
-      time("hide", [&] { return doc_.setObjectHidden(o, true); });
-      time("hide", [&] { return doc_.setObjectHidden(o, false); });
+      if (wants("duplicate") && time("duplicate", [&] { return doc_.duplicateObject(o); })) undo();
+      if (wants("delete") && time("delete", [&] { return doc_.removeObject(o); })) undo();
+      if (wants("hide") && time("hide", [&] { return doc_.setObjectHidden(o, true); }))
+        time("hide", [&] { return doc_.setObjectHidden(o, false); });
       MaterialKeys m;
       m.albedo = Vec3(0.2 + 0.03 * k, 0.5, 0.7);
-      time("material", [&] { return doc_.setMaterial(o, m); });
-      undo();
-      time("insert", [&] { return doc_.insertObject(insertKeys(k), chair_); });
-      undo();
+      if (wants("material") && time("material", [&] { return doc_.setMaterial(o, m); })) undo();
+      if (wants("insert") && time("insert", [&] { return doc_.insertObject(insertKeys(k), chair_); }))
+        undo();
     }
   }
   const std::vector<Sample>& samples() const { return samples_; }
+  // Only these gestures are made (empty: all); a left-out undo leaves its edit in place.
+  void setOnly(const QStringList& only) { only_ = only; }
 
  private:
+  // The move, yaw and height drags each end with an untimed undo; every other gesture's undo is
+  // timed as "undo" when undo is wanted (and made, untimed, when not).
+  bool wants(const char* gesture) const {
+    return only_.isEmpty() || only_.contains(QString::fromLatin1(gesture));
+  }
   int chairIndex() const { return doc_.objectCount() - 1; }
   ObjectKeys insertKeys(int k) const {
     ObjectKeys keys = chairKeys_;
@@ -107,12 +112,13 @@ class GestureBench {
   }
   void undo() {
     time("undo", [&] {
-      doc_.undoStack()->undo();
+      if (doc_.undoStack()->canUndo()) doc_.undoStack()->undo();
       return true;
     });
   }
-  // Times one edit to its frame on screen; an edit refused or a frame that never came is left out.
-  void time(const char* gesture, const std::function<bool()>& edit) {
+  // Times one edit to its frame on screen; an edit refused or a frame that never came is left out
+  // (false when refused).
+  bool time(const char* gesture, const std::function<bool()>& edit) {
     RenderController& r = *w_.renderer();
     QElapsedTimer t;
     t.start();
@@ -126,6 +132,7 @@ class GestureBench {
       std::fprintf(stderr, "bench_gestures: %s %s\n", gesture, ok ? "gave no frame" : "was refused");
     }
     QTest::qWait(40);  // a user's gestures come tens of milliseconds apart
+    return ok;
   }
 
   MainWindow& w_;
@@ -133,6 +140,7 @@ class GestureBench {
   std::shared_ptr<const TriangleMesh> chair_;
   ObjectKeys chairKeys_;
   bool denoise_ = false;
+  QStringList only_;
   std::vector<Sample> samples_;
 };
 
@@ -188,7 +196,12 @@ int main(int argc, char** argv) {
   const QCommandLineOption outOpt = outFolderOption();
   const QCommandLineOption repsOpt(QStringLiteral("reps"), QStringLiteral("Repetitions per gesture."),
                                    QStringLiteral("n"), QStringLiteral("20"));
-  parser.addOptions({outOpt, repsOpt});
+  const QCommandLineOption onlyOpt(QStringLiteral("only"),
+                                   QStringLiteral("Comma-separated gestures to make (profiling)."),
+                                   QStringLiteral("list"));
+  const QCommandLineOption denoiseOpt(QStringLiteral("denoise"), QStringLiteral("off, on or both."),
+                                      QStringLiteral("mode"), QStringLiteral("both"));
+  parser.addOptions({outOpt, repsOpt, onlyOpt, denoiseOpt});
   parser.process(app);
   const std::string scene = exampleScenePath();
   if (scene.empty()) {
@@ -211,8 +224,10 @@ int main(int argc, char** argv) {
 
   GestureBench bench(w, chair, chairKeys);
   const int reps = std::max(1, parser.value(repsOpt).toInt());
-  bench.run(false, reps);
-  bench.run(true, reps);
+  if (parser.isSet(onlyOpt)) bench.setOnly(parser.value(onlyOpt).split(QLatin1Char(',')));
+  const QString denoise = parser.value(denoiseOpt);
+  if (denoise != QLatin1String("on")) bench.run(false, reps);
+  if (denoise != QLatin1String("off")) bench.run(true, reps);
   if (!writeCsv(out.filePath(QStringLiteral("gestures.csv")), bench.samples())) return 1;
 
   std::map<std::pair<QString, bool>, std::vector<double>> by;
