@@ -76,6 +76,9 @@ class RenderController : public QObject {
   // taken and the preview starts again from the current scene when unpaused.
   void setPaused(bool paused);
   bool paused() const { return paused_; }
+  // PathTracers the preview's session has made (RenderSession::tracerBuilds; 0 before the
+  // first): a move makes none (tests).
+  uint64_t tracerBuilds() const;
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -86,6 +89,8 @@ class RenderController : public QObject {
   Q_INVOKABLE void takeFrame();  // by name from the render thread (see the constructor)
   void startScene();
   void request(uint64_t version);
+  // Gives the session the preview scene of `prepared` (a new tracer) and requests its version.
+  void requestScene(const PreparedScene& prepared);
   // The render scene of the preview: the shown objects, the camera scaled to previewSize_.
   RenderScene previewScene(const PreparedScene& prepared) const;
 
@@ -96,6 +101,9 @@ class RenderController : public QObject {
   bool denoise_ = false;
   bool paused_ = false;
   QSize previewSize_;  // of the current prepared scene
+  // Per object, whether the scene last given to the session left it out (hidden): a rename
+  // (ObjectShown without a change of hidden) then restarts nothing.
+  std::vector<bool> hiddenSent_;
   // layerImage()'s cache: per layer, the source it was made from.
   struct CachedLayer {
     const void* source = nullptr;

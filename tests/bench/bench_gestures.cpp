@@ -70,7 +70,8 @@ class GestureBench {
     const ObjectKeys start = doc_.scene().objects[size_t(o)];
     const int drag = Document::newDragId();
     for (int k = 0; k < reps && wants("move"); ++k)
-      time("move", [&] { return doc_.moveObject(o, start.basePx + Vec2(-3.0 * (k % 6 + 1), 1.0), drag); });
+      time("move",
+           [&] { return doc_.moveObject(o, start.basePx + Vec2(-3.0 * (k % 6 + 1), 1.0), drag); });
     if (doc_.undoStack()->canUndo()) doc_.undoStack()->undo();
     const int turn = Document::newDragId();
     for (int k = 0; k < reps && wants("yaw"); ++k)
@@ -152,7 +153,8 @@ double quantile(std::vector<double> v, double q) {
 
 // The library's chair, read as a drop from the Library dock reads it, standing on the floor.
 bool insertChair(MainWindow& w, std::shared_ptr<const TriangleMesh>* mesh, ObjectKeys* keys) {
-  const QString path = QDir(QString::fromStdString(modelLibraryDir())).filePath(QStringLiteral("chair.glb"));
+  const QString path =
+      QDir(QString::fromStdString(modelLibraryDir())).filePath(QStringLiteral("chair.glb"));
   const ModelLoadResult loaded = loadModelForInsert(path, kDefaultModelHeightM);
   const std::optional<Vec2> at = w.document()->supportPointNear(Vec2(330, 300));
   if (!loaded.model || !at) {
@@ -216,7 +218,8 @@ int main(int argc, char** argv) {
   if (!w.openPath(QString::fromStdString(scene))) return 2;
   QElapsedTimer prep;
   prep.start();
-  while (w.document()->state() == Document::State::Preparing && prep.elapsed() < 300000) QTest::qWait(20);
+  while (w.document()->state() == Document::State::Preparing && prep.elapsed() < 300000)
+    QTest::qWait(20);
   std::shared_ptr<const TriangleMesh> chair;
   ObjectKeys chairKeys;
   if (!w.document()->isReady() || !insertChair(w, &chair, &chairKeys)) return 2;
