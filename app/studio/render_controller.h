@@ -42,6 +42,9 @@ class RenderController : public QObject {
   // a reduced size of about this many pixels, drawn scaled up to the photo's size; Render Final
   // Image renders at the photo's full size.
   static constexpr double kPreviewMaxPixels = 1.0e6;
+  // The first preview wave after an edit samples blocks of this many pixels a side
+  // (SessionOptions::startDivider; halving to full resolution).
+  static constexpr int kFirstPreviewDivider = 16;
   // The preview's size for a photo of `width` x `height` (the photo's own up to kPreviewMaxPixels).
   static QSize previewSizeFor(int width, int height);
 
