@@ -282,6 +282,30 @@ TEST(Grain, DifferentSeedsDifferentGrain) {
       EXPECT_NEAR((a.at(150, y, c) - clean.at(150, y, c)) / 0.02, grainAt(n, 150, y, c, 1), 1e-3);
 }
 
+// The whole frame's field drawn once (the studio's preview) gives every frame the same bits as
+// drawing the grain per frame over its changed box; a field of another size is not used.
+TEST(Grain, WholeFrameFieldGivesTheSameBits) {
+  const Frame f = objectShadowBounce(cleanScene());
+  for (const PhotoNoise& n : {constantNoise(0.02, 0.8, 0.5), constantNoise(0.01, 0.0, 0.0)}) {
+    RenderFrame frame;
+    frame.width = kW, frame.height = kH;
+    frame.withObjects = f.with, frame.withoutObjects = f.without, frame.mask = f.mask;
+    const ImageF clean = differentialComposite(f.photo, f.with, f.without, f.mask);
+    ImageF drawn = clean, cached = clean, wrongSize = clean;
+    addGrain(drawn, f.photo, frame, n, 5);
+    const ImageF field = grainField(n, kW, kH, 5);
+    ASSERT_EQ(field.width, kW);
+    addGrain(cached, f.photo, frame, n, 5, &field);
+    EXPECT_EQ(0, std::memcmp(drawn.data.data(), cached.data.data(), drawn.data.size() * sizeof(float)));
+    EXPECT_NE(0, std::memcmp(drawn.data.data(), clean.data.data(), drawn.data.size() * sizeof(float)));
+    const ImageF small = grainField(n, kW / 2, kH, 5);
+    addGrain(wrongSize, f.photo, frame, n, 5, &small);
+    EXPECT_EQ(0,
+              std::memcmp(drawn.data.data(), wrongSize.data.data(), drawn.data.size() * sizeof(float)));
+  }
+  EXPECT_TRUE(grainField(PhotoNoise{}, kW, kH, 5).empty());
+}
+
 void expectFinite(const ImageF& im) {
   for (float v : im.data) ASSERT_TRUE(std::isfinite(v));
 }

@@ -2,6 +2,8 @@
 
 #include "image_convert.h"
 
+#include "inlay/render/grain.h"
+
 namespace inlay::studio {
 
 CompositeSink::CompositeSink(std::function<void()> notify) : notify_(std::move(notify)) {}
@@ -22,6 +24,7 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
 void CompositeSink::setContext(std::shared_ptr<const PreparedScene> context, uint64_t minVersion) {
   std::lock_guard lock(mutex_);
   context_ = std::move(context);
+  grainField_.reset();
   minVersion_.store(minVersion);
   pending_.reset();
 }
@@ -42,13 +45,26 @@ std::optional<CompositeImage> CompositeSink::take() {
 void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   if (!frame || frame->sceneVersion < minVersion_.load()) return;
   std::shared_ptr<const PreparedScene> context;
+  std::shared_ptr<const ImageF> field;
   {
     std::lock_guard lock(mutex_);
     context = context_;
+    field = grainField_;
   }
   if (!context || frame->width != context->photo.linearRgb.width ||
       frame->height != context->photo.linearRgb.height)
     return;  // a frame of a scene the GUI no longer shows
+  // A coarse preview (blocks of d x d pixels, replaced within milliseconds) gets no grain: the
+  // first frame after an edit comes sooner. Full-resolution frames get the grain compositeOf
+  // gives, read from the context's field (drawn once per context, not per frame).
+  const RenderKeys& keys = context->doc.render;
+  const bool grain = frame->resolutionDivider == 1 && keys.grain && !context->photoNoise.empty();
+  if (grain && !field) {
+    field = std::make_shared<const ImageF>(
+        grainField(context->photoNoise, frame->width, frame->height, keys.seed));
+    std::lock_guard lock(mutex_);
+    if (context == context_) grainField_ = field;
+  }
 
   CompositeImage image;
   image.sceneVersion = frame->sceneVersion;
@@ -58,7 +74,9 @@ void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   image.estimatedError = frame->estimatedError;
   image.final = frame->final;
   image.frame = frame;
-  auto linear = std::make_shared<ImageF>(compositeOf(*context, *frame));
+  auto linear = std::make_shared<ImageF>(compositeOf(context->photo.linearRgb, keys.exposure, *frame,
+                                                     grain ? &context->photoNoise : nullptr, keys.seed,
+                                                     field.get()));
   // compositeOf already applied the scene's exposure.
   image.srgb8 = encoded8FromLinear(*linear, context->response, 0.0);
   image.linear = std::move(linear);

@@ -58,6 +58,9 @@ class CompositeSink : public FrameSink {
   std::atomic<uint64_t> minVersion_{0};
   std::mutex mutex_;  // guards context_, pending_
   std::shared_ptr<const PreparedScene> context_;
+  // The grain fields of context_ (render/grain.h grainField), made on its first full-resolution
+  // frame; null until then.
+  std::shared_ptr<const ImageF> grainField_;
   std::optional<CompositeImage> pending_;
 };
 

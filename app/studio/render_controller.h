@@ -42,6 +42,9 @@ class RenderController : public QObject {
   // a reduced size of about this many pixels, drawn scaled up to the photo's size; Render Final
   // Image renders at the photo's full size.
   static constexpr double kPreviewMaxPixels = 1.0e6;
+  // The first preview wave after an edit samples blocks of this many pixels a side
+  // (SessionOptions::startDivider; halving to full resolution).
+  static constexpr int kFirstPreviewDivider = 16;
   // The preview's size for a photo of `width` x `height` (the photo's own up to kPreviewMaxPixels).
   static QSize previewSizeFor(int width, int height);
 
@@ -76,6 +79,9 @@ class RenderController : public QObject {
   // taken and the preview starts again from the current scene when unpaused.
   void setPaused(bool paused);
   bool paused() const { return paused_; }
+  // PathTracers the preview's session has made (RenderSession::tracerBuilds; 0 before the
+  // first): a move makes none (tests).
+  uint64_t tracerBuilds() const;
 
  Q_SIGNALS:
   // A new composite is in compositeImage(), or the images were cleared.
@@ -86,6 +92,8 @@ class RenderController : public QObject {
   Q_INVOKABLE void takeFrame();  // by name from the render thread (see the constructor)
   void startScene();
   void request(uint64_t version);
+  // Gives the session the preview scene of `prepared` (a new tracer) and requests its version.
+  void requestScene(const PreparedScene& prepared);
   // The render scene of the preview: the shown objects, the camera scaled to previewSize_.
   RenderScene previewScene(const PreparedScene& prepared) const;
 
@@ -96,6 +104,9 @@ class RenderController : public QObject {
   bool denoise_ = false;
   bool paused_ = false;
   QSize previewSize_;  // of the current prepared scene
+  // Per object, whether the scene last given to the session left it out (hidden): a rename
+  // (ObjectShown without a change of hidden) then restarts nothing.
+  std::vector<bool> hiddenSent_;
   // layerImage()'s cache: per layer, the source it was made from.
   struct CachedLayer {
     const void* source = nullptr;

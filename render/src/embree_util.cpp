@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <map>
+#include <mutex>
 
 namespace inlay::detail {
 
@@ -17,6 +19,83 @@ RTCDevice newDevice() {
   INLAY_CHECK(device != nullptr);
   rtcSetDeviceErrorFunction(device, onEmbreeError, nullptr);
   return device;
+}
+
+namespace {
+
+// sharedObjectBvh's cache: per mesh address, the mesh it was built for (to tell a freed mesh's
+// address reused by a new one) and its BVH.
+struct ObjectBvhCache {
+  std::mutex mutex;
+  RTCDevice device = nullptr;
+  struct Entry {
+    std::weak_ptr<const TriangleMesh> mesh;
+    RTCScene scene = nullptr;
+  };
+  std::map<const TriangleMesh*, Entry> entries;
+  uint64_t builds = 0;
+
+  RTCDevice deviceLocked() {
+    if (!device) device = newDevice();
+    return device;
+  }
+  // Drops the BVHs of meshes that are gone (a tracer that still instances one holds its own
+  // reference).
+  void purgeLocked() {
+    for (auto it = entries.begin(); it != entries.end();) {
+      if (!it->second.mesh.expired()) {
+        ++it;
+        continue;
+      }
+      if (it->second.scene) rtcReleaseScene(it->second.scene);
+      it = entries.erase(it);
+    }
+  }
+  RTCScene buildLocked(const TriangleMesh& mesh) {
+    ++builds;
+    RTCScene scene = rtcNewScene(deviceLocked());
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    if (!attachTriangles(device, scene, 0, mesh)) {
+      rtcReleaseScene(scene);
+      return nullptr;
+    }
+    rtcCommitScene(scene);
+    return scene;
+  }
+};
+
+// Never destroyed: a tracer may be released during static destruction.
+ObjectBvhCache& objectBvhCache() {
+  static auto* cache = new ObjectBvhCache;
+  return *cache;
+}
+
+}  // namespace
+
+RTCDevice sharedTracerDevice() {
+  ObjectBvhCache& c = objectBvhCache();
+  std::lock_guard lock(c.mutex);
+  RTCDevice device = c.deviceLocked();
+  rtcRetainDevice(device);
+  return device;
+}
+
+RTCScene sharedObjectBvh(const std::shared_ptr<const TriangleMesh>& mesh) {
+  if (!mesh) return nullptr;
+  ObjectBvhCache& c = objectBvhCache();
+  std::lock_guard lock(c.mutex);
+  c.purgeLocked();
+  auto it = c.entries.find(mesh.get());
+  if (it == c.entries.end())
+    it = c.entries.emplace(mesh.get(), ObjectBvhCache::Entry{mesh, c.buildLocked(*mesh)}).first;
+  if (it->second.scene) rtcRetainScene(it->second.scene);
+  return it->second.scene;
+}
+
+uint64_t sharedObjectBvhBuilds() {
+  ObjectBvhCache& c = objectBvhCache();
+  std::lock_guard lock(c.mutex);
+  return c.builds;
 }
 
 bool attachTriangles(RTCDevice device, RTCScene scene, unsigned geomId, const TriangleMesh& mesh) {

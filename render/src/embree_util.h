@@ -9,7 +9,9 @@
 #include <xmmintrin.h>
 
 #include <array>
+#include <cstdint>
 #include <limits>
+#include <memory>
 
 namespace inlay::detail {
 
@@ -32,6 +34,18 @@ class DenormalsOffScope {
 
 // A new Embree device; aborts (a bug or a broken install) when Embree cannot start.
 RTCDevice newDevice();
+
+// The Embree device every PathTracer of the process builds in (retained for the caller: release
+// it), so that they can share the object BVHs below.
+RTCDevice sharedTracerDevice();
+// The committed object-space BVH of `mesh` in sharedTracerDevice(), retained for the caller
+// (release it); null when the mesh has nothing to attach. Built once per mesh while the mesh
+// lives (the cache holds it by address and checks the mesh is still the one it built): a tracer
+// rebuilt after an edit that kept an object's mesh (a material, hide, insert, delete or undo)
+// instances the BVH it had. Meshes are immutable (shared_ptr<const>). Thread-safe.
+RTCScene sharedObjectBvh(const std::shared_ptr<const TriangleMesh>& mesh);
+// Object BVHs sharedObjectBvh() built so far in this process.
+uint64_t sharedObjectBvhBuilds();
 
 // Adds triangles (positions in the scene's frame) as geometry `geomId` of `scene`.
 // Skips empty meshes. Returns false when the mesh had nothing to add.

@@ -492,8 +492,15 @@ double renderSigmaLinear(const RenderFrame& frame, int x, int y) {
 
 }  // namespace
 
+ImageF grainField(const PhotoNoise& noise, int width, int height, uint32_t seed) {
+  if (noise.empty() || width <= 0 || height <= 0) return {};
+  // Each pixel's sums run over the same hashed noise in the same order whatever the box, so
+  // the whole frame's fields hold every box's bits.
+  return grainFields(noise, Box{0, 0, width, height}, seed);
+}
+
 void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& frame,
-              const PhotoNoise& noise, uint32_t seed) {
+              const PhotoNoise& noise, uint32_t seed, const ImageF* field) {
   const ImageF &with = frame.withObjects, &without = frame.withoutObjects, &mask = frame.mask;
   const int W = composite.width, H = composite.height;
   INLAY_CHECK(photoLinear.width == W && photoLinear.height == H && photoLinear.channels >= 3);
@@ -505,7 +512,10 @@ void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& f
   if (noise.empty() || composite.channels < 3) return;
   const Box box = changedBox(with, without, mask);
   if (box.empty()) return;
-  const ImageF grain = grainFields(noise, box, seed);
+  const bool whole = field && field->width == W && field->height == H && field->channels == 3;
+  const ImageF drawn = whole ? ImageF() : grainFields(noise, box, seed);
+  const ImageF& grain = whole ? *field : drawn;
+  const int gx = whole ? 0 : box.x0, gy = whole ? 0 : box.y0;  // the grain image's origin
   parallelFor(tbb::blocked_range<int>(box.y0, box.y1), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = box.x0; x < box.x1; ++x) {
@@ -518,7 +528,7 @@ void addGrain(ImageF& composite, const ImageF& photoLinear, const RenderFrame& f
           const double sOut = noise.sigma(c, v), sPhoto = noise.sigma(c, photoLinear.at(x, y, c));
           const double missing = sOut * sOut - (1 - mm) * (1 - mm) * sPhoto * sPhoto - sRender * sRender;
           if (!(missing > 0) || !std::isfinite(missing)) continue;
-          const double g = double(v) + std::sqrt(missing) * grain.at(x - box.x0, y - box.y0, c);
+          const double g = double(v) + std::sqrt(missing) * grain.at(x - gx, y - gy, c);
           if (std::isfinite(g)) v = float(std::max(0.0, g));
         }
       }

@@ -1193,8 +1193,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   };
   d.scene = scene;
   d.options = options;
-  GgxAlbedoTable::instance();  // built here (~30 ms, once per process), never mid-frame
-  d.device = newDevice();
+  GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
+  d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -1229,10 +1229,9 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     o.mesh = src.meshObject;
     o.material = src.material;
     if (o.mesh && !o.mesh->empty()) {
-      o.scene = rtcNewScene(d.device);
-      rtcSetSceneBuildQuality(o.scene, RTC_BUILD_QUALITY_HIGH);
-      if (attachTriangles(d.device, o.scene, 0, *o.mesh)) {
-        rtcCommitScene(o.scene);
+      // Built once per mesh: a tracer rebuilt after an edit instances the BVH it had.
+      o.scene = sharedObjectBvh(o.mesh);
+      if (o.scene) {
         o.instance = rtcNewGeometry(d.device, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(o.instance, o.scene);
       }
@@ -1289,6 +1288,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
 PathTracer::~PathTracer() = default;
 
 const RenderScene& PathTracer::scene() const { return impl_->scene; }
+
+uint64_t PathTracer::objectBvhBuilds() { return sharedObjectBvhBuilds(); }
 
 PathTracer::Stats PathTracer::stats() const {
   Stats s;

@@ -198,6 +198,7 @@ struct RenderSession::Impl {
   uint64_t doneVersion = 0;  // last version finished (target, time limit or cancel())
   bool working = false;
   bool stop = false;
+  uint64_t tracerBuilds = 0;
   CancelToken token;  // cancel and the per-version time limit, polled per pixel
   std::thread thread;
 
@@ -225,6 +226,7 @@ void RenderSession::Impl::run() {
     const uint64_t v = version;
     const bool rebuildNow = rebuild || !tracer;
     rebuild = false;
+    if (rebuildNow) ++tracerBuilds;
     std::map<size_t, Mat4> moves;
     if (rebuildNow) moves = movesSinceScene;
     else moves = pendingMoves;
@@ -273,6 +275,9 @@ void RenderSession::Impl::renderVersion(uint64_t v, const SessionOptions& opt, c
   };
   // The full-resolution buffers as a frame (final: the version's last).
   auto publishFull = [&](bool final) {
+    // An edit (or cancel()) came during the wave: its frame would be dropped as stale, and the
+    // means, the denoiser and the sink's composite would only delay the new version's first frame.
+    if (token.cancelled()) return;
     auto frame = std::make_shared<RenderFrame>();
     frame->sceneVersion = v;
     frame->width = w, frame->height = h;
@@ -465,6 +470,11 @@ void RenderSession::cancel() {
 uint64_t RenderSession::version() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->version;
+}
+
+uint64_t RenderSession::tracerBuilds() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->tracerBuilds;
 }
 
 bool RenderSession::busy() const {

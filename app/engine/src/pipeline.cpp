@@ -290,9 +290,9 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
 }
 
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
-                   const PhotoNoise* grain, uint32_t grainSeed) {
+                   const PhotoNoise* grain, uint32_t grainSeed, const ImageF* grainField) {
   ImageF c = differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask);
-  if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed);
+  if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed, grainField);
   applyExposure(c, exposureStops);
   return c;
 }

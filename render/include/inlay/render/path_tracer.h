@@ -130,6 +130,11 @@ class PathTracer {
   PathTracer& operator=(const PathTracer&) = delete;
 
   const RenderScene& scene() const;
+  // Object BVHs built so far by every tracer of the process. An object's BVH (object space) is
+  // built once per mesh while the mesh lives and shared by the tracers that instance it, so a
+  // tracer made again after an edit that kept the meshes (a material, hide, insert or delete of
+  // another object, undo) builds none (tests count them).
+  static uint64_t objectBvhBuilds();
   // Moves object `index` (an instance transform update; its BVH is not rebuilt).
   void setObjectTransform(size_t index, const Mat4& worldFromObject);
 

@@ -147,6 +147,9 @@ class RenderSession {
   void cancel();  // stop rendering the current version (state: idle)
   uint64_t version() const;
   bool busy() const;
+  // PathTracers this session has made so far: one per setScene (or tracer option change) that the
+  // render thread picked up; a move (setObjectTransform) makes none (tests count them).
+  uint64_t tracerBuilds() const;
 
  private:
   struct Impl;

@@ -196,9 +196,11 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool wi
 // from camera.response), or null (plain sRGB) for a linear EXR/HDR photo.
 const CameraResponse* outputResponseOf(const PreparedScene& scene);
 // The same from just what it needs (for a render thread that holds no PreparedScene); `grain`
-// null: no grain.
+// null: no grain. `grainField`: grainField(*grain, W, H, grainSeed) computed once for many
+// frames (render/grain.h; the same bits, without drawing the grain per frame).
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
-                   const PhotoNoise* grain = nullptr, uint32_t grainSeed = 1);
+                   const PhotoNoise* grain = nullptr, uint32_t grainSeed = 1,
+                   const ImageF* grainField = nullptr);
 
 // An object's mesh as the scene file asks for it: loaded (mesh key), then smoothly subdivided
 // by its `subdivide` levels (Catmull-Clark for quad meshes, Loop for triangles). Errors are keyed
