@@ -6,6 +6,8 @@ Per room the harness writes the assisted scene file (harness.py scene, the room'
 and inlay-cli renders it with the same seed and exactly --spp samples (uniform, default 16, the
 generalisation benchmark's budget), scored by harness.py score (object RMSE, sRGB [0,1]):
   estimated       everything as Inlay estimates it (the benchmark's number)
+  estimated_long  the same at --long-spp samples (default 128): the product's error without
+                  most of the benchmark's render noise
   true_intensity  our lights where we put them, each with its true light's power (the truth's
                   radiance x its area / our light's area, in the photo's units)
   true_lights     the true lights (truth.json's corners and radiance): true places and power
@@ -25,10 +27,12 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
                                                            is right: swapped in that order)
   albedo      E0^2 - E(true_albedo)^2
   response    E0^2 - E(true_response)^2
-  noise       E(all_true)^2 - E(all_true_long)^2         (our render's noise at --spp)
+  noise       E0^2 - E(estimated_long)^2                 (our render's noise at --spp)
   floor       E(all_true_long)^2  (what stays with every swappable component true and the render
                                    converged: geometry, the renderer against Cycles, the truth's
                                    own Monte-Carlo noise, JPEG)
+The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
+noise itself, not its share of the error).
   interaction E0^2 minus all of the above (components that cancel or add up; may be negative)
 
 Writes OUT/error_budget.csv (one row per room), OUT/error_budget.png (per room: each
@@ -38,7 +42,8 @@ processes can split the rooms and the last to finish writes the union (--rows-on
 CSV and plot from OUT/rows/ without measuring).
 
 usage: bench_error_budget.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--spp 16]
-                             [--long-spp 128] [--rows-only]
+                             [--long-spp 128] [--rows-only] [--reuse]
+  --reuse      keep the composites already in OUT (render only the missing ones)
 """
 import json, os, subprocess, sys, time
 
@@ -90,8 +95,11 @@ def with_true_power(ours, truth):
     return out + [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[len(out):]]
 
 
-def render(cli, scene, png, spp, extra, log):
-    """inlay-cli render with exactly `spp` samples, seed 1; the wall seconds, or None on failure."""
+def render(cli, scene, png, spp, extra, log, reuse=False):
+    """inlay-cli render with exactly `spp` samples, seed 1; the wall seconds (0 when `reuse` kept
+    an existing composite), or None on failure."""
+    if reuse and os.path.exists(png):
+        return 0.0
     t = time.monotonic()
     cmd = [cli, "render", scene, "-o", png, "--quiet", "--seed", "1", "--spp", str(spp), "--seconds", "0",
            "--noise", "0"] + extra
@@ -140,7 +148,7 @@ def box_error(report, truth):
         return {}
 
 
-def measure_room(cli, tools, room_dir, out, spp, long_spp, log):
+def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
     """One room's renders and scores: {config: object RMSE}, plus the geometry measures."""
     room = os.path.basename(room_dir)
     truth = json.load(open(os.path.join(room_dir, "truth.json")))
@@ -158,14 +166,15 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log):
            "response_estimated": family}
     seconds = {}
     t = render(cli, scene, p("estimated.png"), spp, ["--lights-json", p("lights.json"), "--report", p("report.json"),
-                                                    "--layers", p("layers.exr")], log)
+                                                    "--layers", p("layers.exr")], log, reuse)
     if t is None:
         return row
     seconds["estimated"] = t
     ours = json.load(open(p("lights.json")))["refined"]
     json.dump({"lights": with_true_power(ours, truth)}, open(p("true_power.json"), "w"), indent=1)
     alb = os.path.join(room_dir, "albedo.exr")
-    runs = {"true_intensity": (scene, spp, ["--replace-lights", p("true_power.json")]),
+    runs = {"estimated_long": (scene, long_spp, []),
+            "true_intensity": (scene, spp, ["--replace-lights", p("true_power.json")]),
             "true_lights": (scene, spp, ["--replace-lights", p("true_lights.json")]),
             "true_albedo": (scene, spp, ["--replace-albedo", alb]),
             "true_response": (p("scene_srgb.json"), spp, []),
@@ -175,13 +184,15 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log):
     if family == "srgb":
         del runs["true_response"]  # the same scene as estimated: nothing to swap
     for name, (sf, n, extra) in runs.items():
-        t = render(cli, sf, p(name + ".png"), n, extra, log)
+        t = render(cli, sf, p(name + ".png"), n, extra, log, reuse)
         if t is not None:
             seconds[name] = t
+    prev_path = os.path.join(out, "rows", room + ".json")
+    prev = json.load(open(prev_path)) if os.path.exists(prev_path) else {}
     for name in seconds:
         sc = score(tools, room_dir, p(name + ".png"))
         row[name + "_rmse"] = round(sc["object_rmse"], 4)
-        row[name + "_s"] = round(seconds[name], 1)
+        row[name + "_s"] = round(seconds[name], 1) if seconds[name] > 0 else prev.get(name + "_s", "")
     if "true_response_rmse" not in row and "estimated_rmse" in row:
         row["true_response_rmse"] = row["estimated_rmse"]
     row["noise_rms"] = noise_rms(p("all_true.png"), p("all_true_long.png"), room_dir)
@@ -203,13 +214,13 @@ def noise_rms(a_png, b_png, room_dir):
 def budget(row):
     """Each component's share of the estimated squared error (see the docstring)."""
     e = lambda k: row.get(k + "_rmse")
-    if any(not isinstance(e(k), float) for k in ("estimated", "true_intensity", "true_lights", "true_albedo",
+    if any(not isinstance(e(k), float) for k in ("estimated", "estimated_long", "true_intensity", "true_lights", "true_albedo",
                                                    "true_response", "all_true", "all_true_long")):
         return {}
     e0 = e("estimated") ** 2
     parts = {"intensity": e0 - e("true_intensity") ** 2, "places": e("true_intensity") ** 2 - e("true_lights") ** 2,
              "albedo": e0 - e("true_albedo") ** 2, "response": e0 - e("true_response") ** 2,
-             "noise": e("all_true") ** 2 - e("all_true_long") ** 2, "floor": e("all_true_long") ** 2}
+             "noise": e0 - e("estimated_long") ** 2, "floor": e("all_true_long") ** 2}
     parts["interaction"] = e0 - sum(parts.values())
     return {"share_" + k: round(v / e0, 3) for k, v in parts.items()}
 
@@ -249,13 +260,13 @@ def main():
         with open(os.path.join(out, "failures.log"), "a") as log:
             for room in names:
                 row = measure_room(cli, tools, os.path.join(sdir, room), out, int(opt("--spp", "16")),
-                                   int(opt("--long-spp", "128")), log)
+                                   int(opt("--long-spp", "128")), log, "--reuse" in sys.argv[1:])
                 json.dump(row, open(os.path.join(rows_dir, room + ".json"), "w"))
                 print(json.dumps(row), flush=True)
     rows = [json.load(open(os.path.join(rows_dir, f))) for f in sorted(os.listdir(rows_dir)) if f.endswith(".json")]
     if not rows:
         return 1
-    cols = ["room", "material", "lights", "estimated_rmse", "true_intensity_rmse", "true_lights_rmse",
+    cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "true_intensity_rmse", "true_lights_rmse",
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
