@@ -8,6 +8,8 @@ generalisation benchmark's budget), scored by harness.py score (object RMSE, sRG
   estimated       everything as Inlay estimates it (the benchmark's number)
   estimated_long  the same at --long-spp samples (default 128): the product's error without
                   most of the benchmark's render noise
+  no_grain        the same without the photo's grain on the object (--no-grain; the truth has a
+                  grain of its own, independent of ours, so ours adds to the error)
   true_intensity  our lights where we put them, each with its true light's power (the truth's
                   radiance x its area / our light's area, in the photo's units)
   true_lights     the true lights (truth.json's corners and radiance): true places and power
@@ -28,12 +30,14 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
   albedo      E0^2 - E(true_albedo)^2
   response    E0^2 - E(true_response)^2
   noise       E0^2 - E(estimated_long)^2                 (our render's noise at --spp)
+  grain       E0^2 - E(no_grain)^2                       (the grain render.grain adds)
   floor       E(all_true_long)^2  (what stays with every swappable component true and the render
                                    converged: geometry, the renderer against Cycles, the truth's
                                    own Monte-Carlo noise, JPEG)
-The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
-noise itself, not its share of the error).
   interaction E0^2 minus all of the above (components that cancel or add up; may be negative)
+The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
+noise itself, not its share of the error). A light the truth puts beyond our rear wall (the box
+closes 0.5 m behind the camera) is partly hidden by it: `places` is then negative.
 
 Writes OUT/error_budget.csv (one row per room), OUT/error_budget.png (per room: each
 component's share), docs/bench/error_budget.md; every composite, scene file and lights file
@@ -56,7 +60,7 @@ import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
 HALF_A = ["t%02d" % k for k in range(1, 15, 2)]
-COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "floor", "interaction"]
+COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "grain", "floor", "interaction"]
 
 
 def rooms_of(only):
@@ -174,6 +178,7 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
     json.dump({"lights": with_true_power(ours, truth)}, open(p("true_power.json"), "w"), indent=1)
     alb = os.path.join(room_dir, "albedo.exr")
     runs = {"estimated_long": (scene, long_spp, []),
+            "no_grain": (scene, spp, ["--no-grain"]),
             "true_intensity": (scene, spp, ["--replace-lights", p("true_power.json")]),
             "true_lights": (scene, spp, ["--replace-lights", p("true_lights.json")]),
             "true_albedo": (scene, spp, ["--replace-albedo", alb]),
@@ -215,12 +220,12 @@ def budget(row):
     """Each component's share of the estimated squared error (see the docstring)."""
     e = lambda k: row.get(k + "_rmse")
     if any(not isinstance(e(k), float) for k in ("estimated", "estimated_long", "true_intensity", "true_lights", "true_albedo",
-                                                   "true_response", "all_true", "all_true_long")):
+                                                   "true_response", "all_true", "all_true_long", "no_grain")):
         return {}
     e0 = e("estimated") ** 2
     parts = {"intensity": e0 - e("true_intensity") ** 2, "places": e("true_intensity") ** 2 - e("true_lights") ** 2,
              "albedo": e0 - e("true_albedo") ** 2, "response": e0 - e("true_response") ** 2,
-             "noise": e0 - e("estimated_long") ** 2, "floor": e("all_true_long") ** 2}
+             "noise": e0 - e("estimated_long") ** 2, "grain": e0 - e("no_grain") ** 2, "floor": e("all_true_long") ** 2}
     parts["interaction"] = e0 - sum(parts.values())
     return {"share_" + k: round(v / e0, 3) for k, v in parts.items()}
 
@@ -266,7 +271,7 @@ def main():
     rows = [json.load(open(os.path.join(rows_dir, f))) for f in sorted(os.listdir(rows_dir)) if f.endswith(".json")]
     if not rows:
         return 1
-    cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "true_intensity_rmse", "true_lights_rmse",
+    cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "no_grain_rmse", "true_intensity_rmse", "true_lights_rmse",
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
