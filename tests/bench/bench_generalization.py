@@ -339,13 +339,16 @@ def plot(out, rows):
                     plain = r["camera"] == "plain"
                     if isinstance(r.get("object_rmse"), float):
                         ax[0].plot(room_i, r["object_rmse"], "s" if plain else "o", color="C0" if plain else "C1", alpha=1 if plain else 0.6)
+                    if isinstance(r.get("object_rmse_long"), float):  # --long-spp: the same at more samples
+                        ax[0].plot(room_i, r["object_rmse_long"], "x", color="C2" if plain else "C3", ms=8)
                     if isinstance(r.get("light_worst_ratio"), float):
                         ax[1].plot(room_i, r["light_worst_ratio"], "s" if plain else "o", color="C0" if plain else "C1", alpha=1 if plain else 0.6)
                     for m, c, dx in (("ours", "C2", -0.15), ("retinex", "C3", 0.15)):
                         if isinstance(r.get("albedo_%s_mae" % m), float):
                             ax[2].plot(room_i + dx, r["albedo_%s_mae" % m], "s" if plain else "o", color=c, alpha=1 if plain else 0.5)
             ax[0].axhline(0.03, ls="--", color="grey")
-            ax[0].set(ylabel="object RMSE (sRGB)", title="object RMSE: plain (squares), random cameras (dots)")
+            ax[0].set(ylabel="object RMSE (sRGB)",
+                      title="object RMSE: plain (squares), random cameras (dots), --long-spp (crosses)")
             ax[1].axhline(1.0, ls="--", color="grey")
             ax[1].set(yscale="log", ylabel="ours / true luminance (worst light)", title="light intensity")
             ax[2].axhline(0.05, ls="--", color="grey")
