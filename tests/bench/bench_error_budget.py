@@ -231,7 +231,7 @@ def budget(row):
 
 
 def plot(out, rows):
-    rows = [r for r in rows if "share_floor" in r]
+    rows = [r for r in rows if all("share_" + c in r for c in COMPONENTS)]
     if not rows:
         return
     cols = min(4, len(rows))
