@@ -35,8 +35,9 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
   --long-spp M  with --spp: also render each variant at M samples (same seed, uniform) and score
                 it: object_rmse_long, object_rmse_adjusted_long, around_rmse_long (and their
                 medians). At 16 samples render noise is half or more of the object's squared
-                error on glossy, glass and mirror objects (bench_error_budget.py): the _long
-                columns are the product's error with little of the benchmark's noise
+                error where the object is glossy or lit from behind the camera (t01, t07;
+                bench_error_budget.py), not on glass: the _long columns are the product's
+                error with little of the benchmark's noise
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
