@@ -26,12 +26,18 @@ against run time: object RMSE against render wall seconds, albedo MAE against de
 response error against its seconds); prints Markdown tables per half.
 
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
-                               [--seconds S] [--spp N] [--no-albedo] [--no-plain] [--rescore]
+                               [--seconds S] [--spp N [--long-spp M]] [--no-albedo] [--no-plain] [--rescore]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
   --spp N       render exactly N samples per pixel instead (no clock, uniform sampling): the
                 fair comparison of two builds on a loaded machine (the clock gives fewer samples
                 when other jobs run); both runs share seed 1 and so their noise pattern
+  --long-spp M  with --spp: also render each variant at M samples (same seed, uniform) and score
+                it: object_rmse_long, object_rmse_adjusted_long, around_rmse_long (and their
+                medians). At 16 samples render noise is half or more of the object's squared
+                error where the object is glossy or lit from behind the camera (t01, t07;
+                bench_error_budget.py), not on glass: the _long columns are the product's
+                error with little of the benchmark's noise
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
@@ -235,12 +241,33 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     s = json.loads(so)
     for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing"):
         row[k] = round(s[k], 4)
+    if o["spp"] and o["long_spp"]:
+        row.update(long_render(cli, tools, scene, vdir, os.path.join(out, tag + "_long.png"), o))
     if os.path.exists(lj):
         row.update(light_errors(lj, truth, cam))
     if o["albedo"]:
         row.update(albedo_scores(cli, tools, vdir, scene, out, tag, o["rescore"]))
     row.update(response_error(cli, o["has_response"], scene, os.path.join(out, tag + "_response.json"),
                               cam, o["rescore"]))
+    return row
+
+
+def long_render(cli, tools, scene, vdir, comp, o):
+    """The `_long` columns: the variant rendered at --long-spp samples (seed 1, uniform), scored."""
+    row = {}
+    if not (o["rescore"] and os.path.exists(comp)):
+        if os.path.exists(comp):
+            os.remove(comp)
+        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1", "--spp", str(o["long_spp"]),
+                                "--seconds", "0", "--noise", "0"], timeout=7200)
+        row["render_long_wall_s"] = round(secs, 2)
+        if rc != 0:
+            row["error_long"] = err.strip()[-300:]
+            return row
+    rc, _, so, _ = run([PY, os.path.join(tools, "harness.py"), "score", vdir, comp])
+    s = json.loads(so)
+    for k in ("object_rmse", "object_rmse_adjusted", "around_rmse"):
+        row[k + "_long"] = round(s[k], 4)
     return row
 
 
@@ -263,10 +290,11 @@ def summarise(rows):
                 continue
             s = {"half": h, "camera": kind, "runs": len(sel)}
             for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing",
-                      "light_intensity_error", "albedo_ours_mae", "albedo_retinex_mae", "response_error",
+                      "object_rmse_long", "object_rmse_adjusted_long", "around_rmse_long", "light_intensity_error", "albedo_ours_mae", "albedo_retinex_mae", "response_error",
                       "render_wall_s", "decompose_ours_s"):
                 s["median_" + k] = med(sel, k)
             s["max_object_rmse"] = max(numbers(sel, "object_rmse"), default="")
+            s["max_object_rmse_long"] = max(numbers(sel, "object_rmse_long"), default="")
             ours, ret = numbers(sel, "albedo_ours_mae"), numbers(sel, "albedo_retinex_mae")
             if ours:
                 s["mean_albedo_ours_mae"] = round(statistics.mean(ours), 4)
@@ -282,7 +310,8 @@ def summarise(rows):
 
 
 def print_tables(rows, summary):
-    cols = ["room", "camera", "curve", "lights", "object_rmse", "object_rmse_adjusted", "around_rmse",
+    cols = ["room", "camera", "curve", "lights", "object_rmse", "object_rmse_adjusted", "object_rmse_long",
+            "object_rmse_adjusted_long", "around_rmse",
             "around_rmse_do_nothing", "light_intensity_error", "light_worst_ratio", "albedo_ours_mae",
             "albedo_retinex_mae", "response_error", "render_wall_s"]
     for h in ("A", "B"):
@@ -311,13 +340,16 @@ def plot(out, rows):
                     plain = r["camera"] == "plain"
                     if isinstance(r.get("object_rmse"), float):
                         ax[0].plot(room_i, r["object_rmse"], "s" if plain else "o", color="C0" if plain else "C1", alpha=1 if plain else 0.6)
+                    if isinstance(r.get("object_rmse_long"), float):  # --long-spp: the same at more samples
+                        ax[0].plot(room_i, r["object_rmse_long"], "x", color="C2" if plain else "C3", ms=8)
                     if isinstance(r.get("light_worst_ratio"), float):
                         ax[1].plot(room_i, r["light_worst_ratio"], "s" if plain else "o", color="C0" if plain else "C1", alpha=1 if plain else 0.6)
                     for m, c, dx in (("ours", "C2", -0.15), ("retinex", "C3", 0.15)):
                         if isinstance(r.get("albedo_%s_mae" % m), float):
                             ax[2].plot(room_i + dx, r["albedo_%s_mae" % m], "s" if plain else "o", color=c, alpha=1 if plain else 0.5)
             ax[0].axhline(0.03, ls="--", color="grey")
-            ax[0].set(ylabel="object RMSE (sRGB)", title="object RMSE: plain (squares), random cameras (dots)")
+            ax[0].set(ylabel="object RMSE (sRGB)",
+                      title="object RMSE: plain (squares), random cameras (dots), --long-spp (crosses)")
             ax[1].axhline(1.0, ls="--", color="grey")
             ax[1].set(yscale="log", ylabel="ours / true luminance (worst light)", title="light intensity")
             ax[2].axhline(0.05, ls="--", color="grey")
@@ -347,7 +379,7 @@ def main():
     os.makedirs(os.path.join(out, "variants"), exist_ok=True)
     kinds = ([] if "--no-plain" in argv else ["plain"]) + ["s%d" % k for k in range(1, int(opt("--cameras", "3")) + 1)]
     rc, _, help_text, help_err = run([cli, "--help"])
-    o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
+    o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
          "has_response": "inlay-cli response" in help_text + help_err}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     rows = []
@@ -394,7 +426,7 @@ def read_rows(path):
     return rows
 
 
-COMPARED = ["object_rmse", "object_rmse_adjusted", "around_rmse", "light_intensity_error", "light_worst_ratio",
+COMPARED = ["object_rmse", "object_rmse_adjusted", "object_rmse_long", "around_rmse", "light_intensity_error", "light_worst_ratio",
             "albedo_ours_mae", "albedo_retinex_mae"]
 
 
