@@ -106,10 +106,10 @@ struct ResponseEstimateOptions {
   //     bends (Matsushita and Lin 2007); needs flat regions over a range of codes and
   //     measurable noise.
   enum class Cue { Symmetry, Colour, Both, Noise };
-  // The colour edges. The noise cue with its evidence gate (minSrgbResidual) fits the
-  // sigmoid cameras' curves and keeps sRGB on every plain render; "auto" takes whichever
-  // gives the lower object RMSE on half A (docs/camera-response.md).
-  Cue cue = Cue::Colour;
+  // The noise level with its evidence gate (minSrgbResidual): it keeps sRGB on every plain
+  // render and lowers half A's object RMSE under random cameras, where the colour edges (the
+  // old default) keep sRGB on every photo (docs/camera-response.md).
+  Cue cue = Cue::Noise;
   // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
   // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
   // half A by bench_response.py).
