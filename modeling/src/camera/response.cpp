@@ -364,11 +364,9 @@ struct Fit {
     return options.priorWeightOrDefault() * p * p +
            options.shapePriorWeightOrDefault() * (t * t + s * s);
   }
-  bool shoulderFree = true;  // false: the shoulder is held at 0
   double operator()(const Vec3& x) const {
     const Vec3 lo(ResponseParams::kMinPower, 0, 0),
-        hi(ResponseParams::kMaxPower, ResponseParams::kMaxToe,
-           shoulderFree ? std::log1p(ResponseParams::kMaxShoulder) : 0.0);
+        hi(ResponseParams::kMaxPower, ResponseParams::kMaxToe, std::log1p(ResponseParams::kMaxShoulder));
     const Vec3 c = x.cwiseMax(lo).cwiseMin(hi);
     return data(paramsOf(c)) + prior(c) + 10 * (x - c).squaredNorm();
   }
@@ -427,7 +425,7 @@ std::optional<ResponseParams> searchParams(const Fit& fit, const CancelToken* ca
   Vec3 bestX(1, 0, 0);
   for (double p = 0.4; p <= 1.61; p += 0.1)
     for (double t : {0.0, 0.1, 0.25, 0.5, 1.0})
-      for (double s = 0; s <= (fit.shoulderFree ? 6.01 : 0.0); s += 1) {
+      for (double s = 0; s <= 6.01; s += 1) {
         if (cancel && cancel->shouldStop()) return std::nullopt;
         const Vec3 x(p, t, s);
         const double v = fit(x);
@@ -436,9 +434,7 @@ std::optional<ResponseParams> searchParams(const Fit& fit, const CancelToken* ca
   double value = best;
   const Vec3 x = nelderMead(fit, bestX, value, cancel, improved);
   if (value < best) bestX = x;
-  Vec3 c = bestX.cwiseMax(Vec3(ResponseParams::kMinPower, 0, 0));
-  if (!fit.shoulderFree) c[2] = 0;
-  return Fit::paramsOf(c);
+  return Fit::paramsOf(bestX.cwiseMax(Vec3(ResponseParams::kMinPower, 0, 0)));
 }
 
 // Which parameter of `q` lies at (within 5 % of the range of) a bound of the family, or empty.
