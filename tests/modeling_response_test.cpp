@@ -257,7 +257,8 @@ TEST(ResponseEstimate, NoiseCueRecoversToesAndShouldersOfSyntheticPhotos) {
   for (size_t i = 0; i < std::size(truths); ++i) {
     const CameraResponse truth = CameraResponse::toeShoulder(truths[i]);
     ResponseEstimateOptions o;
-    o.cue = ResponseEstimateOptions::Cue::Noise;  // with its defaults (prior, acceptance margin)
+    o.cue = ResponseEstimateOptions::Cue::Noise;  // with its prior and acceptance margin
+    o.minSrgbResidual = 0;  // the cue itself: the evidence gate (tuned on rooms) has its own test
     const ResponseEstimate e = estimateResponse(syntheticPhoto(truth, 0.02, uint32_t(21 + i)), o);
     expectSane(e);
     ASSERT_TRUE(e.determined) << (e.warnings.empty() ? "" : e.warnings[0]);
@@ -270,6 +271,72 @@ TEST(ResponseEstimate, NoiseCueRecoversToesAndShouldersOfSyntheticPhotos) {
     EXPECT_LE(err, std::max(0.02, 0.6 * srgbErr))
         << truth.describe() << " estimated as " << e.response.describe();
   }
+}
+
+// The evidence gate: the noise cue fits a curve only when sRGB's residual reaches
+// minSrgbResidual; just below it, sRGB is kept with a warning saying why.
+TEST(ResponseEstimate, NoiseCueFitsACurveOnlyWithEnoughEvidenceAgainstSrgb) {
+  const ImageF photo = syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.0, 8.0}), 0.02, 22);
+  ResponseEstimateOptions o;
+  o.cue = ResponseEstimateOptions::Cue::Noise;
+  o.minSrgbResidual = 0;
+  const ResponseEstimate free = estimateResponse(photo, o);
+  expectSane(free);
+  ASSERT_TRUE(free.determined);
+  ASSERT_NE(free.response, CameraResponse::srgb()) << free.decision;
+  EXPECT_TRUE(free.warnings.empty());
+  EXPECT_GT(free.srgbObjective, 0);
+
+  o.minSrgbResidual = 0.99 * free.srgbObjective;  // enough evidence: the same curve
+  const ResponseEstimate enough = estimateResponse(photo, o);
+  EXPECT_EQ(enough.response, free.response);
+  EXPECT_EQ(enough.decision, "fitted");
+
+  o.minSrgbResidual = 1.01 * free.srgbObjective;  // not enough: sRGB and one warning
+  const ResponseEstimate weak = estimateResponse(photo, o);
+  expectSane(weak);
+  EXPECT_TRUE(weak.determined);
+  EXPECT_EQ(weak.response, CameraResponse::srgb());
+  EXPECT_EQ(weak.objective, weak.srgbObjective);
+  ASSERT_EQ(weak.warnings.size(), 1u);
+  EXPECT_NE(weak.warnings[0].find("evidence"), std::string::npos) << weak.warnings[0];
+  EXPECT_EQ(weak.decision.rfind("kept sRGB", 0), 0u) << weak.decision;
+}
+
+// Photos through curves at the corners of the family (the strongest toe, shoulder and powers):
+// the estimate stays a finite, strictly increasing curve, and says when it is at a bound.
+TEST(ResponseEstimate, CurvesAtTheFamilysBoundsGiveFiniteMonotoneCurvesAndABoundIsReported) {
+  const ResponseParams truths[] = {
+      {1.0, 0.0, ResponseParams::kMaxShoulder},
+      {ResponseParams::kMaxPower, ResponseParams::kMaxToe, ResponseParams::kMaxShoulder},
+      {ResponseParams::kMinPower, 0.0, ResponseParams::kMaxShoulder}};
+  for (size_t i = 0; i < std::size(truths); ++i) {
+    const CameraResponse truth = CameraResponse::toeShoulder(truths[i]);
+    ResponseEstimateOptions o;
+    o.cue = ResponseEstimateOptions::Cue::Noise;
+    const ResponseEstimate e = estimateResponse(syntheticPhoto(truth, 0.02, uint32_t(31 + i)), o);
+    expectSane(e);
+    std::printf("noise cue, truth %s: estimate %s, %s\n", truth.describe().c_str(),
+                e.response.describe().c_str(),
+                e.warnings.empty() ? "no warning" : e.warnings[0].c_str());
+    const bool atBound = e.response.params().shoulder >= 0.95 * ResponseParams::kMaxShoulder ||
+                         e.response.params().toe >= 0.95 * ResponseParams::kMaxToe;
+    if (atBound) {
+      ASSERT_EQ(e.warnings.size(), 1u) << e.response.describe();
+      EXPECT_NE(e.warnings[0].find("bound"), std::string::npos) << e.warnings[0];
+    }
+  }
+  // A toe and a shoulder of 20 that the noise cue (without its evidence gate) reads as the
+  // longest shoulder the family holds: the estimate says so.
+  ResponseEstimateOptions o;
+  o.cue = ResponseEstimateOptions::Cue::Noise;
+  o.minSrgbResidual = 0;
+  const ResponseEstimate e =
+      estimateResponse(syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.3, 20.0}), 0.02, 23), o);
+  expectSane(e);
+  EXPECT_GE(e.response.params().shoulder, 0.95 * ResponseParams::kMaxShoulder) << e.decision;
+  ASSERT_EQ(e.warnings.size(), 1u);
+  EXPECT_NE(e.warnings[0].find("bound"), std::string::npos) << e.warnings[0];
 }
 
 TEST(ResponseEstimate, NoiseCueOnALinearPhotoGivesAFiniteMonotoneCurveNoWorseThanSrgb) {

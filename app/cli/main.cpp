@@ -42,6 +42,7 @@ constexpr const char* kUsage = R"(Usage:
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
   inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
+                   [--min-improvement F] [--min-srgb-residual R] [--evaluate-at P,T,S]
                                                      the camera response (camera.response, or
                                                      estimated from the photo): family,
                                                      parameters, warnings and the 256 codes'
@@ -134,7 +135,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, cue, report;  // cue: empty = the default
-  std::optional<double> prior, minImprovement;
+  std::optional<double> prior, minImprovement, minSrgbResidual;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
@@ -179,7 +180,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report" ||
-        s == "--working-mp") {
+        s == "--min-srgb-residual" || s == "--working-mp") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -203,6 +204,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         a.minImprovement = parseNumber<double>(*v);
         if (!a.minImprovement || *a.minImprovement >= 1)
           return "--min-improvement: '" + *v + "' is not a number in [0, 1)";
+      } else if (s == "--min-srgb-residual") {
+        a.minSrgbResidual = parseNumber<double>(*v);
+        if (!a.minSrgbResidual) return "--min-srgb-residual: '" + *v + "' is not a non-negative number";
       } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -415,6 +419,8 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
           {"stages", stagesJson(ps.stages)},
           {"suns_initial", sunsJson(ps.initialSuns)},
           {"suns_refined", sunsJson(ps.lighting.suns)},
+          {"vignetting",  // the light fit's residual read as 1 - v r^2 (a diagnostic, not applied)
+           {{"v", ps.lighting.vignetting}, {"residual_ratio", ps.lighting.vignettingResidualRatio}}},
           {"refinement",
            {{"ran", !r.history.empty()},
             {"seconds", r.seconds},
@@ -676,6 +682,7 @@ int commandResponse(const std::string& input, const Args& a) {
   else return usageError("--cue " + a.cue + ": expected 'noise', 'symmetry', 'colour' or 'both'");
   if (a.prior) o.priorWeight = *a.prior;
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
+  if (a.minSrgbResidual) o.minSrgbResidual = *a.minSrgbResidual;
   if (!a.evaluateAt.empty()) {
     ResponseParams q;
     if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
@@ -722,6 +729,7 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"prior_weight", o.priorWeightOrDefault()},
                      {"shape_prior_weight", o.shapePriorWeightOrDefault()},
                      {"min_improvement", o.minImprovementOrDefault()},
+                     {"min_srgb_residual", o.minSrgbResidualOrDefault()},
                      {"edges_used", e.edgesUsed},
                      {"noise_bins", e.noiseBins},
                      {"segments_found", e.segmentsFound},
@@ -730,6 +738,9 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"seconds", e.seconds},
                      {"cpu_seconds", e.cpuSeconds},
                      {"history", history}};
+    json level = json::array();
+    for (const auto& [code, sigma] : e.noiseLevel) level.push_back({code, sigma});
+    j["estimate"]["noise_level"] = level;
   }
   if (auto st = writeFileAtomically(a.output, j.dump(1) + "\n"); !st) return inputError(st.error());
   if (!a.quiet) {

@@ -27,6 +27,7 @@ response error against its seconds); prints Markdown tables per half.
 
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
                                [--seconds S] [--spp N [--long-spp M]] [--no-albedo] [--no-plain] [--rescore]
+                               [--variants ROOM_CAMERA,...]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
   --spp N       render exactly N samples per pixel instead (no clock, uniform sampling): the
@@ -38,6 +39,8 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 error where the object is glossy or lit from behind the camera (t01, t07;
                 bench_error_budget.py), not on glass: the _long columns are the product's
                 error with little of the benchmark's noise
+  --variants t03_s1,t11_s2  measure only these room_camera variants (e.g. the photos where two
+                builds choose different responses; merge with the other build's rows by --from-csv)
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
@@ -392,8 +395,11 @@ def main():
         rows = [merged[k] for k in sorted(merged)]
         benchlib.write_csv(os.path.join(out, "generalization.csv"), rows)
         names = []
+    only = set(filter(None, opt("--variants", "").split(",")))
     for name in names:
         for kind in kinds:
+            if only and "%s_%s" % (name, kind) not in only:
+                continue
             vdir = variant(tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind)
             row = measure(cli, tools, os.path.join(sdir, name), vdir, kind, out, o)
             rows.append(row)

@@ -13,6 +13,7 @@
 #include <functional>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace inlay {
 
@@ -425,6 +426,69 @@ Vec3 nelderMead(const Fit& f, const Vec3& start, double& value, const CancelToke
   return p[b];
 }
 
+// The parameters minimising `fit`: a coarse grid, then Nelder-Mead from its best point; none
+// when cancelled.
+std::optional<ResponseParams> searchParams(const Fit& fit, const CancelToken* cancel,
+                                           const std::function<void(double)>& improved) {
+  double best = std::numeric_limits<double>::infinity();
+  Vec3 bestX(1, 0, 0);
+  for (double p = 0.4; p <= 1.61; p += 0.1)
+    for (double t : {0.0, 0.1, 0.25, 0.5, 1.0})
+      for (double s = 0; s <= 6.01; s += 1) {
+        if (cancel && cancel->shouldStop()) return std::nullopt;
+        const Vec3 x(p, t, s);
+        const double v = fit(x);
+        if (v < best) best = v, bestX = x, improved(v);
+      }
+  double value = best;
+  const Vec3 x = nelderMead(fit, bestX, value, cancel, improved);
+  if (value < best) bestX = x;
+  return Fit::paramsOf(bestX.cwiseMax(Vec3(ResponseParams::kMinPower, 0, 0)));
+}
+
+// Which parameter of `q` lies at (within 5 % of the range of) a bound of the family, or empty.
+std::string atBoundOf(const ResponseParams& q) {
+  using P = ResponseParams;
+  const double powerSlack = 0.05 * (P::kMaxPower - P::kMinPower);
+  if (q.power <= P::kMinPower + powerSlack || q.power >= P::kMaxPower - powerSlack) return "power";
+  if (q.toe >= 0.95 * P::kMaxToe) return "toe";
+  if (q.shoulder >= 0.95 * P::kMaxShoulder) return "shoulder";
+  return {};
+}
+
+// Keeps the fitted curve in `out` only when it lowers the cue's residual enough and the cue
+// shows enough evidence against sRGB; otherwise sRGB, with the reason in `decision` (and a
+// warning when only the evidence was missing).
+void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& out) {
+  const bool noiseCue = options.cue == ResponseEstimateOptions::Cue::Noise;
+  char buf[320];
+  out.decision = "fitted";
+  if (!(out.objective <= (1 - options.minImprovementOrDefault()) * out.srgbObjective)) {
+    std::snprintf(buf, sizeof buf,
+                  "kept sRGB: the fitted %s lowers the %s residual only from %.4f to %.4f",
+                  out.response.describe().c_str(), noiseCue ? "noise level" : "edge", out.srgbObjective,
+                  out.objective);
+    out.decision = buf;
+  } else if (out.srgbObjective < options.minSrgbResidualOrDefault()) {
+    std::snprintf(buf, sizeof buf,
+                  "kept sRGB: the %s residual of sRGB, %.4f, is within what photos read rightly as "
+                  "sRGB show (below %.2f), so the fitted %s is not trusted",
+                  noiseCue ? "noise level" : "edge", out.srgbObjective,
+                  options.minSrgbResidualOrDefault(), out.response.describe().c_str());
+    out.decision = buf;
+    out.warnings.push_back("camera response: too little evidence for a curve other than sRGB (" +
+                           out.decision.substr(std::string("kept sRGB: ").size()) + ")");
+  }
+  if (out.decision != "fitted") {
+    out.response = CameraResponse::srgb();
+    out.objective = out.srgbObjective;
+  } else if (const std::string bound = atBoundOf(out.response.params()); !bound.empty()) {
+    out.warnings.push_back("camera response: the fitted " + out.response.describe() +
+                           " lies at the family's bound (" + bound +
+                           "): the camera's curve may be stronger than the family holds");
+  }
+}
+
 double threadCpuSeconds() {
   timespec ts{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -523,37 +587,15 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
     out.seconds = seconds();
     return out;
   }
-  // A coarse grid, then Nelder-Mead from its best point.
-  double best = std::numeric_limits<double>::infinity();
-  Vec3 bestX(1, 0, 0);
   auto improved = [&](double v) { out.history.emplace_back(seconds(), v); };
-  for (double p = 0.4; p <= 1.61; p += 0.1)
-    for (double t : {0.0, 0.1, 0.25, 0.5, 1.0})
-      for (double s = 0; s <= 6.01; s += 1) {
-        if (options.cancel && options.cancel->shouldStop()) return undetermined("cancelled");
-        const Vec3 x(p, t, s);
-        const double v = fit(x);
-        if (v < best) best = v, bestX = x, improved(v);
-      }
-  double value = best;
-  const Vec3 x = nelderMead(fit, bestX, value, options.cancel, improved);
-  if (value < best) bestX = x, best = value;
-  const ResponseParams q = Fit::paramsOf(bestX.cwiseMax(Vec3(ResponseParams::kMinPower, 0, 0)));
-  out.response = CameraResponse::toeShoulder(q);
-  out.objective = fit.data(q);
+  const std::optional<ResponseParams> fitted = searchParams(fit, options.cancel, improved);
+  if (!fitted) return undetermined("cancelled");
+  if (options.cue == ResponseEstimateOptions::Cue::Noise)
+    for (const detail::NoiseBin& b : noise.bins) out.noiseLevel.push_back({b.code, b.sigma});
+  out.response = CameraResponse::toeShoulder(*fitted);
+  out.objective = fit.data(*fitted);
   out.determined = true;
-  out.decision = "fitted";
-  if (!(out.objective <= (1 - options.minImprovementOrDefault()) * out.srgbObjective)) {
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "kept sRGB: the fitted %s lowers the %s residual only from %.4f to %.4f",
-                  out.response.describe().c_str(),
-                  options.cue == ResponseEstimateOptions::Cue::Noise ? "noise level" : "edge",
-                  out.srgbObjective, out.objective);
-    out.decision = buf;
-    out.response = CameraResponse::srgb();
-    out.objective = out.srgbObjective;
-  }
+  acceptOrKeepSrgb(options, out);
   out.seconds = seconds();
   out.cpuSeconds = threadCpuSeconds() - cpu0;
   return out;

@@ -106,10 +106,10 @@ struct ResponseEstimateOptions {
   //     bends (Matsushita and Lin 2007); needs flat regions over a range of codes and
   //     measurable noise.
   enum class Cue { Symmetry, Colour, Both, Noise };
-  // The colour edges: the noise cue cuts the mean curve error on the training cameras by 40 % but its
-  // false shoulders on rendered photos ruin the inserted object (docs/camera-response.md), so
-  // it is not the default.
-  Cue cue = Cue::Colour;
+  // The noise level with its evidence gate (minSrgbResidual): it keeps sRGB on every plain
+  // render and lowers half A's object RMSE under random cameras, where the colour edges (the
+  // old default) keep sRGB on every photo (docs/camera-response.md).
+  Cue cue = Cue::Noise;
   // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
   // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
   // half A by bench_response.py).
@@ -131,6 +131,16 @@ struct ResponseEstimateOptions {
   double minImprovementOrDefault() const {
     return minImprovement.value_or(cue == Cue::Noise ? 0.5 : 0.1);
   }
+  // Noise cue: a curve is fitted only when sRGB's residual is at least this (the RMS log
+  // deviation of the decoded noise variance from a quadratic), i.e. when the noise contradicts
+  // sRGB more than it does on any photo that is sRGB (half A's plain photos and the dev rooms
+  // leave up to 0.48: a rendered photo's noise depends on how each pixel is lit, not on its
+  // brightness alone, which a long shoulder mimics). Unset: 0.5 for the noise cue
+  // (docs/camera-response.md), 0 (no check) for the edge cues.
+  std::optional<double> minSrgbResidual;
+  double minSrgbResidualOrDefault() const {
+    return minSrgbResidual.value_or(cue == Cue::Noise ? 0.5 : 0.0);
+  }
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
@@ -147,7 +157,9 @@ struct ResponseEstimate {
   int segmentsFound = 0;
   double objective = 0;      // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;  // the same for plain sRGB
-  std::string decision;      // why this curve: "fitted", or why sRGB was kept
+  // Noise cue: the measured noise level (code, sigma in codes) per bin, increasing code.
+  std::vector<std::array<double, 2>> noiseLevel;
+  std::string decision;  // why this curve: "fitted", or why sRGB was kept
   double seconds = 0;
   double cpuSeconds = 0;  // this thread's CPU time (what an idle core would take)
   // The fit's objective (with prior) against seconds: one row per improvement.
