@@ -59,23 +59,7 @@ sys.path.insert(0, HERE)
 import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
-HALF_A = ["t%02d" % k for k in range(1, 15, 2)]
 COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "grain", "floor", "interaction"]
-
-
-def rooms_of(only):
-    """(scenes-train folder, tools folder, room names filtered by `only`: names, A or B)."""
-    shared = benchlib.shared_dir()
-    sdir, tools = os.path.join(shared, "scenes-train"), os.path.join(shared, "tools")
-    if not os.path.isdir(sdir):
-        print("skipped: no ../shared/scenes-train")
-        sys.exit(0)
-    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
-    if only in ("A", "B"):
-        names = [n for n in names if (n in HALF_A) == (only == "A")]
-    elif only:
-        names = [n for n in names if n in only.split(",")]
-    return sdir, tools, names
 
 
 def quad_area(corners):
@@ -165,7 +149,7 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
     json.dump({"lights": true_lights(truth)}, open(p("true_lights.json"), "w"), indent=1)
     resp = subprocess.run([cli, "response", scene, "-o", p("response.json"), "--quiet"], capture_output=True, text=True)
     family = json.load(open(p("response.json"))).get("description", "?") if resp.returncode == 0 else "?"
-    row = {"room": room, "half": "A" if room in HALF_A else "B", "material": truth["object"]["material"]["type"],
+    row = {"room": room, "half": benchlib.half(room), "material": truth["object"]["material"]["type"],
            "lights": "+".join(L["view_status"] for L in truth["lights"]), "table": bool(truth.get("table")),
            "response_estimated": family}
     seconds = {}
@@ -258,7 +242,7 @@ def plot(out, rows):
 
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
-    sdir, tools, names = rooms_of(opt("--rooms", "A"))
+    sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
     rows_dir = os.path.join(out, "rows")
     os.makedirs(rows_dir, exist_ok=True)
     if "--rows-only" not in sys.argv[1:]:

@@ -58,7 +58,6 @@ sys.path.insert(0, HERE)
 import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
-HALF_A = ["t%02d" % k for k in range(1, 15, 2)]
 
 
 def run(cmd, timeout=None):
@@ -69,25 +68,6 @@ def run(cmd, timeout=None):
     except subprocess.TimeoutExpired:
         return 124, time.monotonic() - t, "", "timed out"
     return p.returncode, time.monotonic() - t, p.stdout, p.stderr
-
-
-def half(room):
-    return "A" if room[:3] in HALF_A else "B"
-
-
-def train_rooms(only):
-    """(scenes-train folder, tools folder, room names filtered by `only`: prefixes, A or B)."""
-    shared = benchlib.shared_dir()
-    sdir, tools = os.path.join(shared, "scenes-train"), os.path.join(shared, "tools")
-    if not os.path.isdir(sdir):
-        print("skipped: no ../shared/scenes-train")
-        sys.exit(0)
-    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
-    if only in ("A", "B"):
-        names = [n for n in names if half(n) == only]
-    elif only:
-        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
-    return sdir, tools, names
 
 
 def variant(tools, room_dir, vdir, kind):
@@ -221,7 +201,7 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     tag = "%s_%s" % (room, kind)
     truth = json.load(open(os.path.join(room_dir, "truth.json")))
     cam = json.load(open(os.path.join(vdir, "camera_variant.json")))
-    row = {"room": room, "half": half(room), "camera": kind, "curve": cam["curve"],
+    row = {"room": room, "half": benchlib.half(room), "camera": kind, "curve": cam["curve"],
            "lights": "+".join(sorted({l["view_status"] for l in truth["lights"]} | ({"sun"} if truth.get("sun") else set()))),
            "material": truth["object"]["material"]["type"], "support": truth["object"]["support"],
            "table": bool(truth.get("table"))}
@@ -359,7 +339,7 @@ def plot(out, rows):
             ax[2].set(ylabel="albedo MAE", title="albedo: ours (green) against Retinex (red)")
             for a in ax:
                 a.set_xticks(x)
-                a.set_xticklabels(["%s%s" % (r, "A" if half(r) == "A" else "B") for r in rooms], fontsize=7)
+                a.set_xticklabels(["%s%s" % (r, benchlib.half(r)) for r in rooms], fontsize=7)
     with benchlib.figure(os.path.join(out, "generalization_time.png"), 1, 3, figsize=(17, 4.5)) as ax:
         if ax is not None:
             for pane, (tk, ek, title) in enumerate((("render_wall_s", "object_rmse", "object RMSE against render wall s"),
@@ -378,7 +358,7 @@ def plot(out, rows):
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     argv = sys.argv[1:]
-    sdir, tools, names = train_rooms(opt("--rooms", ""))
+    sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", ""))
     os.makedirs(os.path.join(out, "variants"), exist_ok=True)
     kinds = ([] if "--no-plain" in argv else ["plain"]) + ["s%d" % k for k in range(1, int(opt("--cameras", "3")) + 1)]
     rc, _, help_text, help_err = run([cli, "--help"])

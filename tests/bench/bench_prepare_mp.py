@@ -21,16 +21,6 @@ import csv, json, math, os, statistics, subprocess, sys, tempfile, time
 import benchlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-PX_KEYS = {("camera", "focal_px"), ("camera", "principal_px"), ("camera", "vanishing_points_px"),
-           ("layout", "back_wall_px")}
-
-
-def scaled(value, k):
-    if isinstance(value, list):
-        return [scaled(v, k) for v in value]
-    return value * k
-
-
 def resized_scene(scene_path, mp, folder):
     """The scene file of its photo resized to about `mp` megapixels (aspect kept), pixel keys scaled."""
     import cv2
@@ -45,21 +35,7 @@ def resized_scene(scene_path, mp, folder):
     path = os.path.join(folder, "photo_%gmp.jpg" % mp)
     cv2.imwrite(path, big, [cv2.IMWRITE_JPEG_QUALITY, 95])
     scene["photo"] = path
-    for section, key in PX_KEYS:
-        if key in scene.get(section, {}):
-            scene[section][key] = scaled(scene[section][key], k)
-    for light in scene.get("lights", []):
-        if light.get("kind") == "polygon_px":
-            light["points"] = scaled(light["points"], k)
-    for obj in scene.get("objects", []):
-        obj["base_px"] = scaled(obj["base_px"], k)
-    for surface in scene.get("surfaces", []):
-        for key in ("outline_px", "height_click_px", "base_px", "profile_px"):
-            if key in surface:
-                surface[key] = scaled(surface[key], k)
-    for occ in scene.get("occluders", []):
-        for key in ("foreground_scribbles_px", "background_scribbles_px"):
-            occ[key] = scaled(occ[key], k)
+    benchlib.scale_scene_pixels(scene, k)
     out = os.path.join(folder, "scene_%gmp.json" % mp)
     json.dump(scene, open(out, "w"), indent=1)
     return out, w, h

@@ -25,17 +25,6 @@ import json, os, shutil, subprocess, sys, tempfile, time
 
 import benchlib
 
-PX_KEYS = {("camera", "focal_px"), ("camera", "principal_px"), ("camera", "vanishing_points_px"),
-           ("layout", "back_wall_px")}
-
-
-def scaled(value, k):
-    """Every number in a (nested) list of pixel coordinates times k."""
-    if isinstance(value, list):
-        return [scaled(v, k) for v in value]
-    return value * k
-
-
 def upscale_scene(scene, k, folder):
     """The scene file of a room photographed k times larger: the photo resized, pixel keys scaled."""
     import cv2
@@ -45,25 +34,7 @@ def upscale_scene(scene, k, folder):
     cv2.imwrite(path, big)
     s = json.loads(json.dumps(scene))
     s["photo"] = path
-    for section, key in PX_KEYS:
-        if key in s.get(section, {}):
-            s[section][key] = scaled(s[section][key], k)
-    for light in s.get("lights", []):
-        if light.get("kind") == "polygon_px":
-            light["points"] = scaled(light["points"], k)
-    for shaft in s.get("shafts", []):
-        for key in ("shaft_box_px", "source_box_px"):
-            if key in shaft:
-                shaft[key] = scaled(shaft[key], k)
-    for surface in s.get("surfaces", []):
-        for key in ("outline_px", "height_click_px", "base_px", "profile_px"):
-            if key in surface:
-                surface[key] = scaled(surface[key], k)
-    for occ in s.get("occluders", []):
-        for key in ("foreground_scribbles_px", "background_scribbles_px"):
-            occ[key] = scaled(occ[key], k)
-    for obj in s.get("objects", []):
-        obj["base_px"] = scaled(obj["base_px"], k)
+    benchlib.scale_scene_pixels(s, k)
     return s
 
 

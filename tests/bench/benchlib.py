@@ -95,6 +95,66 @@ def train_rooms(opt, out):
     return train, harness, rooms
 
 
+PX_KEYS = {("camera", "focal_px"), ("camera", "principal_px"), ("camera", "vanishing_points_px"),
+           ("layout", "back_wall_px")}
+
+
+def scaled(value, k):
+    """Every number in a (nested) list of pixel coordinates times k."""
+    if isinstance(value, list):
+        return [scaled(v, k) for v in value]
+    return value * k
+
+
+def scale_scene_pixels(scene, k):
+    """Every pixel key of a scene file's dict (camera, layout, outlined lights, shafts, surfaces,
+    occluder scribbles, objects' bases) times k, in place: the scene of its photo resized k times."""
+    for section, key in PX_KEYS:
+        if key in scene.get(section, {}):
+            scene[section][key] = scaled(scene[section][key], k)
+    for light in scene.get("lights", []):
+        if light.get("kind") == "polygon_px":
+            light["points"] = scaled(light["points"], k)
+    for shaft in scene.get("shafts", []):
+        for key in ("shaft_box_px", "source_box_px"):
+            if key in shaft:
+                shaft[key] = scaled(shaft[key], k)
+    for surface in scene.get("surfaces", []):
+        for key in ("outline_px", "height_click_px", "base_px", "profile_px"):
+            if key in surface:
+                surface[key] = scaled(surface[key], k)
+    for occ in scene.get("occluders", []):
+        for key in ("foreground_scribbles_px", "background_scribbles_px"):
+            occ[key] = scaled(occ[key], k)
+    for obj in scene.get("objects", []):
+        obj["base_px"] = scaled(obj["base_px"], k)
+    return scene
+
+
+HALF_A = ["t%02d" % k for k in range(1, 15, 2)]  # scenes-train: odd rooms choose, even rooms report
+
+
+def half(room):
+    """"A" (odd rooms: settings are chosen on them) or "B" (even rooms: held out)."""
+    return "A" if room[:3] in HALF_A else "B"
+
+
+def train_rooms_of(only):
+    """(scenes-train folder, tools folder, room names with a truth.json filtered by `only`: "A",
+    "B" or comma-separated name prefixes); prints "skipped" and exits 0 without ../shared."""
+    shared = shared_dir()
+    sdir, tools = os.path.join(shared, "scenes-train"), os.path.join(shared, "tools")
+    if not os.path.isdir(sdir):
+        print("skipped: no ../shared/scenes-train")
+        sys.exit(0)
+    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
+    if only in ("A", "B"):
+        names = [n for n in names if half(n) == only]
+    elif only:
+        names = [n for n in names if any(n.startswith(p) for p in only.split(","))]
+    return sdir, tools, names
+
+
 def harness_baselines(harness, sdir):
     """The harness's uniform-object baseline scores, by room name."""
     out = subprocess.run([sys.executable, harness, "baselines", sdir], capture_output=True, text=True,
