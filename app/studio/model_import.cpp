@@ -79,7 +79,7 @@ QStringList textureNotes(const QString& path, const QString& shown) {
   };
   if (suffix == QLatin1String("gltf") || suffix == QLatin1String("glb")) {
     const QJsonObject json = gltfJson(path);
-    for (const QJsonValue& image : json.value(QLatin1String("images")).toArray()) {
+    for (const auto& image : json.value(QLatin1String("images")).toArray()) {
       const QString uri = image.toObject().value(QLatin1String("uri")).toString();
       if (!uri.isEmpty()) note(uri);
       else ++images;  // in a buffer of the file
