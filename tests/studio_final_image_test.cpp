@@ -4,6 +4,7 @@
 // dialog offers PNG, JPEG, TIFF and EXR. Screenshots in studio_final_image_artifacts/ of the
 // build tree.
 #include "document.h"
+#include "final_render.h"
 #include "main_window.h"
 #include "render_controller.h"
 #include "viewport.h"
@@ -91,6 +92,10 @@ void StudioFinalImageTest::finalImageIsShownUntilTheNextEdit() {
   QVERIFY(w->renderFinalImage(finalPath, 4));
   QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, waitMs(120000));
   QVERIFY2(finished.first()[0].toBool(), qPrintable(finished.first()[1].toString()));
+  // The final frame is denoised (a few samples come out clean) and says so.
+  QCOMPARE(FinalRender::optionsFor(*doc->prepared()).denoise, SessionOptions::Denoise::Final);
+  QVERIFY2(finished.first()[1].toString().contains(QStringLiteral("before denoising")),
+           qPrintable(finished.first()[1].toString()));
 
   // Shown at the photo's full size, the codes of the file written (the PNG's rounding aside).
   Viewport* view = w->viewport();

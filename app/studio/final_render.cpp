@@ -44,6 +44,10 @@ SessionOptions FinalRender::optionsFor(const PreparedScene& scene, int maxSpp) {
   so.startDivider = 1;  // no preview: every wave counts
   so.focusOnChanges = true;
   so.noiseTarget = scene.doc.render.noise;
+  // The final frame is denoised (render/denoise.h): a capped or timed render comes out clean,
+  // and the filter's strength falls with the samples, so one that reached the noise target is
+  // the render's own. Pixels the objects do not change stay the photo's bits.
+  so.denoise = SessionOptions::Denoise::Final;
   return so;
 }
 
@@ -120,16 +124,18 @@ void FinalRender::startSaving(const std::shared_ptr<const RenderFrame>& frame) {
       return finish(false, QString::fromStdString(result->status.error().message()));
     composite_ = result->image;
     shown_ = result->shown;
-    finish(
-        true,
-        tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s")
-            .arg(QDir::toNativeSeparators(path_))
-            .arg(frame->width)
-            .arg(frame->height)
-            .arg(frame->spp)
-            .arg(frame->meanSpp, 0, 'f', 1)
-            .arg(frame->estimatedError, 0, 'f', 4)
-            .arg(frame->seconds, 0, 'f', 1));
+    finish(true, (frame->denoised
+                      ? tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated "
+                           "error %6 before denoising, %7 s")
+                      : tr("Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated "
+                           "error %6, %7 s"))
+                     .arg(QDir::toNativeSeparators(path_))
+                     .arg(frame->width)
+                     .arg(frame->height)
+                     .arg(frame->spp)
+                     .arg(frame->meanSpp, 0, 'f', 1)
+                     .arg(frame->estimatedError, 0, 'f', 4)
+                     .arg(frame->seconds, 0, 'f', 1));
   });
   saver_->start();
 }
