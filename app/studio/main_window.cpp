@@ -3,6 +3,7 @@
 #include "autosave.h"
 #include "docks.h"
 #include "final_render.h"
+#include "status_bar.h"
 #include "steps_dock.h"
 #include "library_dock.h"
 #include "log_dock.h"
@@ -123,10 +124,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   errorLabel_ = new QLabel(this);
   timeLabel_ = new QLabel(this);
   zoomLabel_ = new QLabel(this);
-  for (QLabel* l : {sppLabel_, rateLabel_, errorLabel_, timeLabel_, zoomLabel_}) {
-    l->setMinimumWidth(90);
-    statusBar()->addPermanentWidget(l);
-  }
+  // Transient messages wrap in the bar (status_bar.h); in a narrow window the rate goes first,
+  // then the zoom, then the time.
+  statusBar_ = new StatusBar(this);
+  setStatusBar(statusBar_);
+  statusBar_->addField(sppLabel_, 0);
+  statusBar_->addField(rateLabel_, 1);
+  statusBar_->addField(errorLabel_, 0);
+  statusBar_->addField(timeLabel_, 3);
+  statusBar_->addField(zoomLabel_, 2);
   auto showZoom = [this](double zoom) { zoomLabel_->setText(tr("%1 %").arg(qRound(zoom * 100))); };
   connect(viewport_, &Viewport::zoomChanged, this, showZoom);
   showZoom(viewport_->zoom());
@@ -509,7 +515,21 @@ void MainWindow::retranslate() {
   mainToolBar_->setWindowTitle(tr("Main"));
   updateUndoActions();
   updateTitle();
+  fitStatusFields();
+  showFinalTexts();
   onFrame();
+}
+
+// The status bar's fields as wide as the widest text each shows in this language, so the
+// message beside them does not re-wrap at every frame.
+void MainWindow::fitStatusFields() {
+  statusBar_->setFieldSamples(sppLabel_, {tr("preview 1/%1").arg(16), tr("%1 spp, done").arg(1024),
+                                          tr("final, %1 spp").arg(256), tr("– spp")});
+  statusBar_->setFieldSamples(rateLabel_,
+                              {tr("%1 M samples/s").arg(10.0, 0, 'f', 2), tr("– samples/s")});
+  statusBar_->setFieldSamples(errorLabel_, {tr("error %1").arg(0.0, 0, 'f', 4), tr("error –")});
+  statusBar_->setFieldSamples(timeLabel_, {tr("%1 s").arg(100.0, 0, 'f', 1), tr("– s")});
+  statusBar_->setFieldSamples(zoomLabel_, {tr("%1 %").arg(800)});
 }
 
 void MainWindow::updateUndoActions() {
@@ -959,18 +979,29 @@ void MainWindow::onFinalRenderFinished(bool ok, const QString& message) {
 void MainWindow::showFinalImage(const FinalRender& render) {
   const QImage& image = render.shownImage();
   if (image.isNull()) return;
-  const QString file = QFileInfo(render.path()).fileName();
   finalFigures_ = render.progress();
   finalLinear_ = render.composite();
-  finalShownText_ = tr("Final render shown (%1, %2 × %3); the next edit returns to the live preview.")
-                        .arg(file)
-                        .arg(image.width())
-                        .arg(image.height());
-  viewport_->setFinalImage(image, tr("Final render (%1 × %2, saved as %3): shown until the next edit")
-                                      .arg(image.width())
-                                      .arg(image.height())
-                                      .arg(file));
+  finalFile_ = QFileInfo(render.path()).fileName();
+  viewport_->setFinalImage(image);
+  showFinalTexts();
   onFrame();
+}
+
+// The final image's banner and status line, in the current language (again after a switch).
+void MainWindow::showFinalTexts() {
+  if (!viewport_->showsFinalImage()) return;
+  const QSize size = viewport_->finalImage().size();
+  const QString before = finalShownText_;
+  finalShownText_ = tr("Final render shown (%1, %2 × %3); the next edit returns to the live preview.")
+                        .arg(finalFile_)
+                        .arg(size.width())
+                        .arg(size.height());
+  viewport_->setFinalCaption(tr("Final render (%1 × %2, saved as %3): shown until the next edit")
+                                 .arg(size.width())
+                                 .arg(size.height())
+                                 .arg(finalFile_));
+  if (!before.isEmpty() && statusBar()->currentMessage() == before)
+    statusBar()->showMessage(finalShownText_);
 }
 
 void MainWindow::dropFinalImage() {

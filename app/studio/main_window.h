@@ -38,6 +38,7 @@ class PropertiesDock;
 class ResponseDock;
 class RenderController;
 class SceneTreeDock;
+class StatusBar;
 class Viewport;
 struct ChangeEvent;
 
@@ -189,6 +190,8 @@ class MainWindow : public QMainWindow {
   void onFinalRenderFinished(bool ok, const QString& message);
   // The finished final image in the viewport (and the status bar says so) until the next edit.
   void showFinalImage(const FinalRender& render);
+  void showFinalTexts();
+  void fitStatusFields();
   void dropFinalImage();
 
   Document* document_;
@@ -206,6 +209,7 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const ImageF> finalLinear_;  // the shown final image (Export Composite writes it)
   FinalRender::Progress finalFigures_;         // the shown final image's figures
   QString finalShownText_;  // the status line while the final image is shown (empty: not shown)
+  QString finalFile_;       // the shown final image's file name
   Autosaver* autosaver_;
   bool reportFailure_ = true;  // a failed preparation after an open gets a dialog
   QPointer<QProgressDialog> progress_;
@@ -265,6 +269,7 @@ class MainWindow : public QMainWindow {
   QAction* denoiseAct_ = nullptr;  // View > Denoise Preview (QSettings "denoisePreview")
   QAction* aboutAct_ = nullptr;
 
+  StatusBar* statusBar_ = nullptr;
   QLabel* sppLabel_ = nullptr;
   QLabel* rateLabel_ = nullptr;
   QLabel* errorLabel_ = nullptr;

@@ -810,6 +810,12 @@ void Viewport::setFinalImage(const QImage& image, const QString& caption) {
   update();
 }
 
+void Viewport::setFinalCaption(const QString& caption) {
+  if (caption == finalCaption_) return;
+  finalCaption_ = caption;
+  update();
+}
+
 void Viewport::setSplitFraction(double fraction) {
   splitFraction_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 0.5;
   update();

@@ -131,6 +131,9 @@ class Viewport : public QWidget {
   void setSplitFraction(double fraction);  // clamped to [0, 1]
   // The final image to show (null clears it); `caption`: the banner's text.
   void setFinalImage(const QImage& image, const QString& caption = {});
+  // The banner's text over the shown final image (a change of language).
+  void setFinalCaption(const QString& caption);
+  const QString& finalCaption() const { return finalCaption_; }
   // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
   void commitToolInput();
   void cancelToolInput();
