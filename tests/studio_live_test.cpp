@@ -442,7 +442,7 @@ void StudioLiveTest::roomSurfaceMaterial() {
   PropertiesDock* dock = window_->propertiesDock();
   QComboBox* surface = dock->roomSurfaceBox();
   QVERIFY(surface->isEnabled());
-  const int floor = surface->findText(QStringLiteral("floor"));
+  const int floor = surface->findData(QStringLiteral("floor"));  // shown as "Floor"
   QVERIFY(floor >= 0);
   surface->setCurrentIndex(floor);
   QCOMPARE(dock->roomPresetBox()->currentData().toString(), QStringLiteral("diffuse"));
@@ -473,7 +473,7 @@ void StudioLiveTest::roomSurfaceMaterial() {
   QVERIFY(loaded.ok());
   QCOMPARE(loaded->doc.room.materials.at("floor").roughness, 0.35);
   // A mirror on the left wall; back to matte by undo, and by choosing Matte.
-  const int wall = surface->findText(QStringLiteral("wall_left"));
+  const int wall = surface->findData(QStringLiteral("wall_left"));
   QVERIFY(wall >= 0);
   surface->setCurrentIndex(wall);
   dock->roomPresetBox()->setCurrentIndex(2);
@@ -481,7 +481,7 @@ void StudioLiveTest::roomSurfaceMaterial() {
   QCOMPARE(doc->scene().room.materials.at("wall_left").preset, std::string("mirror"));
   doc->undoStack()->undo();
   QVERIFY(!doc->scene().room.materials.count("wall_left"));
-  surface->setCurrentIndex(surface->findText(QStringLiteral("floor")));
+  surface->setCurrentIndex(surface->findData(QStringLiteral("floor")));
   QCOMPARE(dock->roomPresetBox()->currentData().toString(), QStringLiteral("glossy"));
   dock->roomPresetBox()->setCurrentIndex(0);
   Q_EMIT dock->roomPresetBox()->activated(0);

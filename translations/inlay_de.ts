@@ -17,8 +17,8 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="298"/>
-        <location filename="../app/studio/document.cpp" line="328"/>
+        <location filename="../app/studio/document.cpp" line="297"/>
+        <location filename="../app/studio/document.cpp" line="327"/>
         <source>Preparation was cancelled.</source>
         <translation>Die Vorbereitung wurde abgebrochen.</translation>
     </message>
@@ -28,49 +28,49 @@
         <translation>Es gibt kein Objekt %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="497"/>
+        <location filename="../app/studio/document.cpp" line="498"/>
         <source>The scene is still being prepared.</source>
         <translation>Die Szene wird noch vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="498"/>
+        <location filename="../app/studio/document.cpp" line="499"/>
         <source>The scene could not be prepared.</source>
         <translation>Die Szene konnte nicht vorbereitet werden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="384"/>
-        <location filename="../app/studio/document.cpp" line="789"/>
-        <location filename="../app/studio/document.cpp" line="971"/>
+        <location filename="../app/studio/document.cpp" line="383"/>
+        <location filename="../app/studio/document.cpp" line="790"/>
+        <location filename="../app/studio/document.cpp" line="970"/>
         <location filename="../app/studio/document.cpp" line="1028"/>
         <source>The position is not a number.</source>
         <translation>Die Position ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="386"/>
-        <location filename="../app/studio/document.cpp" line="509"/>
-        <location filename="../app/studio/document.cpp" line="526"/>
+        <location filename="../app/studio/document.cpp" line="385"/>
+        <location filename="../app/studio/document.cpp" line="510"/>
+        <location filename="../app/studio/document.cpp" line="527"/>
         <source>The height must be greater than zero.</source>
         <translation>Die Höhe muss größer als null sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="407"/>
-        <location filename="../app/studio/document.cpp" line="438"/>
+        <location filename="../app/studio/document.cpp" line="406"/>
+        <location filename="../app/studio/document.cpp" line="437"/>
         <source>Move object %1</source>
         <translation>Objekt %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="414"/>
+        <location filename="../app/studio/document.cpp" line="413"/>
         <source>Change height of object %1</source>
         <translation>Höhe von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="420"/>
-        <location filename="../app/studio/document.cpp" line="432"/>
+        <location filename="../app/studio/document.cpp" line="419"/>
+        <location filename="../app/studio/document.cpp" line="431"/>
         <source>The turn is not a number.</source>
         <translation>Die Drehung ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="425"/>
+        <location filename="../app/studio/document.cpp" line="424"/>
         <source>Turn object %1</source>
         <translation>Objekt %1 drehen</translation>
     </message>
@@ -84,113 +84,113 @@
         <translation type="vanished">Objekt %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="524"/>
+        <location filename="../app/studio/document.cpp" line="525"/>
         <source>The model has no triangles.</source>
         <translation>Das Modell hat keine Dreiecke.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="532"/>
+        <location filename="../app/studio/document.cpp" line="533"/>
         <source>object %1</source>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="533"/>
+        <location filename="../app/studio/document.cpp" line="535"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="550"/>
+        <location filename="../app/studio/document.cpp" line="553"/>
         <source>Duplicate %1</source>
         <translation>%1 duplizieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="598"/>
+        <location filename="../app/studio/document.cpp" line="601"/>
         <source>Rename %1</source>
         <translation>%1 umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="608"/>
         <source>Hide %1</source>
         <translation>%1 ausblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="608"/>
         <source>Show %1</source>
         <translation>%1 einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="613"/>
+        <location filename="../app/studio/document.cpp" line="616"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="614"/>
+        <location filename="../app/studio/document.cpp" line="617"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="652"/>
+        <location filename="../app/studio/document.cpp" line="655"/>
         <source>Delete object %1</source>
         <translation>Objekt %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="754"/>
+        <location filename="../app/studio/document.cpp" line="755"/>
         <source>Open a photo first.</source>
         <translation>Öffnen Sie zuerst ein Foto.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="774"/>
+        <location filename="../app/studio/document.cpp" line="775"/>
         <source>There is no estimated box yet.</source>
         <translation>Es gibt noch keinen geschätzten Raum.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="779"/>
+        <location filename="../app/studio/document.cpp" line="780"/>
         <source>Accept the estimated box</source>
         <translation>Geschätzten Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="785"/>
+        <location filename="../app/studio/document.cpp" line="786"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="795"/>
+        <location filename="../app/studio/document.cpp" line="796"/>
         <source>Move a corner of the back wall</source>
         <translation>Ecke der Rückwand verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="801"/>
+        <location filename="../app/studio/document.cpp" line="802"/>
         <source>Estimate the box again</source>
         <translation>Raum neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="806"/>
+        <location filename="../app/studio/document.cpp" line="807"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="814"/>
+        <location filename="../app/studio/document.cpp" line="815"/>
         <source>Outline light %1</source>
         <translation>Lampe %1 umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="820"/>
+        <location filename="../app/studio/document.cpp" line="821"/>
         <location filename="../app/studio/document.cpp" line="991"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="828"/>
+        <location filename="../app/studio/document.cpp" line="829"/>
         <source>Add shaft %1</source>
         <translation>Sonnenstrahl %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="835"/>
+        <location filename="../app/studio/document.cpp" line="836"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="844"/>
+        <location filename="../app/studio/document.cpp" line="845"/>
         <source>Add surface %1</source>
         <translation>Fläche %1 hinzufügen</translation>
     </message>
@@ -205,53 +205,53 @@
         <translation>Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="867"/>
+        <location filename="../app/studio/document.cpp" line="866"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="873"/>
+        <location filename="../app/studio/document.cpp" line="872"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Strich zu Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="884"/>
+        <location filename="../app/studio/document.cpp" line="883"/>
         <source>There is no such mark.</source>
         <translation>Diese Markierung gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="891"/>
+        <location filename="../app/studio/document.cpp" line="890"/>
         <source>Delete light %1</source>
         <translation>Lampe %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="892"/>
+        <location filename="../app/studio/document.cpp" line="891"/>
         <source>Delete shaft %1</source>
         <translation>Sonnenstrahl %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="893"/>
+        <location filename="../app/studio/document.cpp" line="892"/>
         <source>Delete surface %1</source>
         <translation>Fläche %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="894"/>
+        <location filename="../app/studio/document.cpp" line="893"/>
         <source>Delete occluder %1</source>
         <translation>Verdecker %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="974"/>
+        <location filename="../app/studio/document.cpp" line="973"/>
         <source>There is no such point.</source>
         <translation>Diesen Punkt gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="982"/>
+        <location filename="../app/studio/document.cpp" line="981"/>
         <location filename="../app/studio/document.cpp" line="1000"/>
         <source>The outline would lose its area.</source>
         <translation>Der Umriss würde seine Fläche verlieren.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="983"/>
+        <location filename="../app/studio/document.cpp" line="982"/>
         <source>Reshape light %1</source>
         <translation>Licht %1 umformen</translation>
     </message>
@@ -281,32 +281,32 @@
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1034"/>
+        <location filename="../app/studio/document.cpp" line="1036"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Die beiden Linien liegen auf einer Geraden: Zeichnen Sie zwei verschiedene Kanten.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1043"/>
+        <location filename="../app/studio/document.cpp" line="1045"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 zeichnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1044"/>
+        <location filename="../app/studio/document.cpp" line="1046"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1058"/>
+        <location filename="../app/studio/document.cpp" line="1060"/>
         <source>The room has no surface %1.</source>
         <translation>Der Raum hat keine Fläche %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1061"/>
+        <location filename="../app/studio/document.cpp" line="1063"/>
         <source>Unknown material.</source>
         <translation>Unbekanntes Material.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1064"/>
+        <location filename="../app/studio/document.cpp" line="1066"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>Die Rauheit muss zwischen 0 und 1 liegen.</translation>
     </message>
@@ -324,12 +324,17 @@
 <context>
     <name>inlay::studio::FinalRender</name>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="73"/>
+        <location filename="../app/studio/final_render.cpp" line="80"/>
         <source>Render Final Image cancelled; nothing was written.</source>
         <translation>Endgültiges Bild abgebrochen; nichts wurde geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="115"/>
+        <location filename="../app/studio/final_render.cpp" line="128"/>
+        <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6 before denoising, %7 s</source>
+        <translation>%1 geschrieben: %2 × %3, höchstens %4 Samples pro Pixel (%5 im Mittel), geschätzter Fehler %6 vor dem Entrauschen, %7 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/final_render.cpp" line="130"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s</source>
         <translation>%1 geschrieben: %2 × %3, höchstens %4 Samples pro Pixel (%5 im Mittel), geschätzter Fehler %6, %7 s</translation>
     </message>
@@ -337,47 +342,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="195"/>
+        <location filename="../app/studio/docks.cpp" line="219"/>
         <source>Layers</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="196"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Composite</source>
         <translation>Komposit</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="196"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Photo</source>
         <translation>Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="197"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Albedo</source>
         <translation>Albedo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="197"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>Direct light</source>
         <translation>Direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>With objects</source>
         <translation>Mit Objekten</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>Without objects</source>
         <translation>Ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="222"/>
         <source>Mask</source>
         <translation>Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="222"/>
         <source>Difference</source>
         <translation>Differenz</translation>
     </message>
@@ -445,17 +450,22 @@
         <translation>Teppich</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="101"/>
+        <location filename="../app/studio/library_dock.cpp" line="106"/>
         <source>Library</source>
         <translation>Bibliothek</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="104"/>
+        <location filename="../app/studio/library_dock.cpp" line="109"/>
+        <source>no library.json in $INLAY_MODELS_DIR, &lt;prefix&gt;/share/inlay/models or resources/models</source>
+        <translation>keine library.json in $INLAY_MODELS_DIR, &lt;prefix&gt;/share/inlay/models oder resources/models</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/library_dock.cpp" line="112"/>
         <source>The model library could not be shown: %1</source>
         <translation>Die Modellbibliothek kann nicht angezeigt werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="110"/>
+        <location filename="../app/studio/library_dock.cpp" line="118"/>
         <source>%1
 %2 × %3 × %4 m (width × depth × height)
 Drag it into the photo.</source>
@@ -465,412 +475,447 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::LogDock</name>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="29"/>
+        <source>Log</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="37"/>
+        <source>%1 The scene could not be prepared: %2</source>
+        <translation>%1 Die Szene konnte nicht vorbereitet werden: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="44"/>
+        <source>%1 Prepared the scene in %2 s:</source>
+        <translation>%1 Szene in %2 s vorbereitet:</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="47"/>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="86"/>
+        <location filename="../app/studio/main_window.cpp" line="89"/>
         <source>Reading the photo</source>
         <translation>Foto wird gelesen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="87"/>
+        <location filename="../app/studio/main_window.cpp" line="90"/>
         <source>Estimating the camera</source>
         <translation>Kamera wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="88"/>
+        <location filename="../app/studio/main_window.cpp" line="91"/>
         <source>Fitting the room</source>
         <translation>Raum wird angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="89"/>
+        <location filename="../app/studio/main_window.cpp" line="92"/>
         <source>Estimating the lighting</source>
         <translation>Beleuchtung wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="90"/>
+        <location filename="../app/studio/main_window.cpp" line="93"/>
         <source>Placing the objects</source>
         <translation>Objekte werden platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Samples pro Pixel des angezeigten Komposits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="463"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="464"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Render time since the last change</source>
         <translation>Renderzeit seit der letzten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="125"/>
+        <location filename="../app/studio/main_window.cpp" line="136"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="138"/>
+        <location filename="../app/studio/main_window.cpp" line="641"/>
         <source>Preparing the scene: %1…</source>
         <translation>Szene wird vorbereitet: %1 …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="443"/>
         <source>&amp;Open Scene…</source>
         <translation>Szene &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>Open a scene file (.json)</source>
         <translation>Eine Szenendatei (.json) öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>Open &amp;Photo…</source>
         <translation>&amp;Foto öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>Start a new scene from a photo</source>
         <translation>Eine neue Szene aus einem Foto beginnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="416"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>Open &amp;Example</source>
         <translation>&amp;Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="417"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>&amp;Export Composite…</source>
         <translation>Komposit &amp;exportieren …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Angezeigte &amp;Ebene exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="421"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Szene als &amp;glTF exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="490"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Raum, Lichter, Kamera und Objekte als glTF 2.0 schreiben, um in Blender weiterzuarbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="427"/>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="539"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>&amp;Redo</source>
         <translation>Wi&amp;ederholen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="428"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>Insert &amp;Sphere</source>
         <translation>&amp;Kugel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="454"/>
+        <location filename="../app/studio/main_window.cpp" line="491"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="429"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Insert &amp;Cube</source>
         <translation>&amp;Würfel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="455"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Delete the selected object or mark</source>
         <translation>Das ausgewählte Objekt oder die ausgewählte Markierung löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="440"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="441"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="442"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="443"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Vorher (nur Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="457"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Geschätzten &amp;Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Die geschätzte Rückwand als Ihre behalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Raum &amp;neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Forget your corners of the back wall</source>
         <translation>Ihre Ecken der Rückwand verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>Szene erneut &amp;vorbereiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="483"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>&amp;Render Final Image…</source>
         <translation>Endgültiges Bild &amp;rendern…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="423"/>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Das Komposit in der vollen Auflösung des Fotos rendern, bis es rauschfrei ist, dann speichern (PNG, JPEG, TIFF oder EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="425"/>
+        <location filename="../app/studio/main_window.cpp" line="455"/>
         <source>Before/After &amp;Split</source>
         <translation>Vorher/Nachher-&amp;Teilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="426"/>
+        <location filename="../app/studio/main_window.cpp" line="457"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>Links einer Trennlinie das Foto, rechts das Komposit; die Trennlinie lässt sich ziehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>Insert &amp;Model…</source>
         <translation>&amp;Modell einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <location filename="../app/studio/main_window.cpp" line="464"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Ein 3D-Modell (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) auf den Boden stellen; oder die Datei dort ablegen, wo es stehen soll</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="434"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;uplizieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="435"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Eine Kopie des gewählten Objekts daneben stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="436"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Re&amp;name…</source>
         <translation>&amp;Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="437"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Das gewählte Objekt umbenennen (in der Szenenliste)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="438"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>&amp;Hide or Show</source>
         <translation>Aus- oder &amp;Einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="439"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Das gewählte Objekt aus dem Rendering ausblenden oder wieder einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <source>&amp;Denoise Preview</source>
+        <translation>Vorschau &amp;entrauschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="482"/>
+        <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
+        <translation>Das Rauschen des Renderings glätten, wo die Objekte das Foto ändern (der Rest bleibt das Foto)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Fluchtlinien (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="508"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="539"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
+        <location filename="../app/studio/main_window.cpp" line="640"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="929"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
-        <location filename="../app/studio/main_window.cpp" line="1206"/>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
+        <location filename="../app/studio/main_window.cpp" line="1349"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="524"/>
+        <location filename="../app/studio/main_window.cpp" line="583"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="592"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -878,442 +923,491 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="621"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1: Die Szene ließ sich nicht vorbereiten, das Modell hat also keinen Platz.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="579"/>
+        <location filename="../app/studio/main_window.cpp" line="527"/>
+        <location filename="../app/studio/main_window.cpp" line="661"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="654"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
+        <location filename="../app/studio/main_window.cpp" line="676"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="663"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="582"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="664"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="586"/>
+        <location filename="../app/studio/main_window.cpp" line="527"/>
+        <location filename="../app/studio/main_window.cpp" line="653"/>
+        <source>final, %1 spp</source>
+        <translation>endgültig, %1 spp</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="526"/>
+        <location filename="../app/studio/main_window.cpp" line="668"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="587"/>
+        <location filename="../app/studio/main_window.cpp" line="526"/>
+        <location filename="../app/studio/main_window.cpp" line="669"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="588"/>
+        <location filename="../app/studio/main_window.cpp" line="670"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="589"/>
+        <location filename="../app/studio/main_window.cpp" line="1365"/>
+        <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
+        <translation>Das endgültige Bild %1 wird noch gerendert (%2 % fertig). Das Rendern abbrechen? Dann wird nichts geschrieben, und eine frühere Datei dieses Namens bleibt, wie sie war.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1373"/>
+        <source>Keep Rendering</source>
+        <translation>Weiter rendern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <source>Cancel the Render and Close</source>
+        <translation>Rendern abbrechen und schließen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="655"/>
+        <location filename="../app/studio/main_window.cpp" line="671"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="675"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="593"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="656"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="603"/>
+        <location filename="../app/studio/main_window.cpp" line="687"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="606"/>
+        <location filename="../app/studio/main_window.cpp" line="688"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="607"/>
+        <location filename="../app/studio/main_window.cpp" line="689"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="626"/>
+        <location filename="../app/studio/main_window.cpp" line="710"/>
+        <source>Cancel the Render and Open</source>
+        <translation>Rendern abbrechen und öffnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="626"/>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="632"/>
+        <location filename="../app/studio/main_window.cpp" line="720"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="651"/>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="749"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="651"/>
+        <location filename="../app/studio/main_window.cpp" line="739"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="749"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="759"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="672"/>
+        <location filename="../app/studio/main_window.cpp" line="760"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="679"/>
+        <location filename="../app/studio/main_window.cpp" line="767"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="680"/>
+        <location filename="../app/studio/main_window.cpp" line="768"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="775"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="779"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="795"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="795"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="715"/>
-        <location filename="../app/studio/main_window.cpp" line="736"/>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
-        <location filename="../app/studio/main_window.cpp" line="928"/>
+        <location filename="../app/studio/main_window.cpp" line="803"/>
+        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
+        <location filename="../app/studio/main_window.cpp" line="1061"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="715"/>
-        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="803"/>
+        <location filename="../app/studio/main_window.cpp" line="834"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="797"/>
-        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1050"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="797"/>
-        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1050"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
-        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1051"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="827"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="744"/>
+        <location filename="../app/studio/main_window.cpp" line="842"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <location filename="../app/studio/main_window.cpp" line="847"/>
+        <source>Exported %1 (the final render)</source>
+        <translation>%1 exportiert (das endgültige Bild)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="852"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exportiert (%2 spp, die Vorschau mit %3 × %4; Endgültiges Bild rendern schreibt die volle Größe des Fotos)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="757"/>
+        <location filename="../app/studio/main_window.cpp" line="860"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="782"/>
+        <location filename="../app/studio/main_window.cpp" line="883"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Alle vier Schritte erledigt. Ansicht &gt; Schritte zeigt sie wieder.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="788"/>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="889"/>
+        <location filename="../app/studio/main_window.cpp" line="904"/>
         <source>Nothing to render</source>
         <translation>Nichts zu rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="799"/>
-        <location filename="../app/studio/main_window.cpp" line="839"/>
+        <location filename="../app/studio/main_window.cpp" line="897"/>
+        <location filename="../app/studio/main_window.cpp" line="930"/>
+        <location filename="../app/studio/main_window.cpp" line="1364"/>
         <source>Render Final Image</source>
         <translation>Endgültiges Bild rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="818"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
         <source>A final image is being rendered already.</source>
         <translation>Ein endgültiges Bild wird bereits gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="825"/>
-        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="915"/>
+        <location filename="../app/studio/main_window.cpp" line="920"/>
         <source>Cannot render the final image</source>
         <translation>Das endgültige Bild kann nicht gerendert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="916"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1: bitte eine .png-, .jpg-, .tif- oder .exr-Datei wählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="831"/>
+        <location filename="../app/studio/main_window.cpp" line="921"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1: der Ordner %2 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
-        <location filename="../app/studio/main_window.cpp" line="858"/>
+        <location filename="../app/studio/main_window.cpp" line="929"/>
+        <location filename="../app/studio/main_window.cpp" line="950"/>
         <source>Rendering the final image…</source>
         <translation>Das endgültige Bild wird gerendert…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="846"/>
+        <location filename="../app/studio/main_window.cpp" line="938"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Endgültiges Bild: höchstens %1 Samples pro Pixel, geschätzter Fehler %2 (Ziel %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="880"/>
+        <location filename="../app/studio/main_window.cpp" line="974"/>
         <source>Cannot write the final image</source>
         <translation>Das endgültige Bild kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
+        <translation>Endgültiges Bild angezeigt (%1, %2 × %3); die nächste Änderung kehrt zur Live-Vorschau zurück.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
+        <translation>Endgültiges Bild (%1 × %2, gespeichert als %3): angezeigt bis zur nächsten Änderung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1018"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="1018"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="888"/>
+        <location filename="../app/studio/main_window.cpp" line="1019"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="788"/>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="889"/>
+        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="1037"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="1049"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="928"/>
+        <location filename="../app/studio/main_window.cpp" line="1061"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="935"/>
+        <location filename="../app/studio/main_window.cpp" line="1068"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="936"/>
         <source>%1: cannot write (%2)</source>
-        <translation>%1: kann nicht geschrieben werden (%2)</translation>
+        <translation type="vanished">%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="908"/>
-        <location filename="../app/studio/main_window.cpp" line="939"/>
+        <location filename="../app/studio/main_window.cpp" line="1040"/>
+        <location filename="../app/studio/main_window.cpp" line="1071"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="964"/>
+        <location filename="../app/studio/main_window.cpp" line="1101"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="965"/>
+        <location filename="../app/studio/main_window.cpp" line="1102"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="974"/>
+        <location filename="../app/studio/main_window.cpp" line="1111"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1138"/>
         <source>Insert Model</source>
         <translation>Modell einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1007"/>
+        <location filename="../app/studio/main_window.cpp" line="1146"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1011"/>
+        <location filename="../app/studio/main_window.cpp" line="1150"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1027"/>
+        <location filename="../app/studio/main_window.cpp" line="1165"/>
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1037"/>
+        <location filename="../app/studio/main_window.cpp" line="1175"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1047"/>
+        <location filename="../app/studio/main_window.cpp" line="1187"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1048"/>
+        <location filename="../app/studio/main_window.cpp" line="1189"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1063"/>
+        <location filename="../app/studio/main_window.cpp" line="1204"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1077"/>
+        <location filename="../app/studio/main_window.cpp" line="1219"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1080"/>
+        <location filename="../app/studio/main_window.cpp" line="1223"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1081"/>
+        <location filename="../app/studio/main_window.cpp" line="1224"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1090"/>
+        <location filename="../app/studio/main_window.cpp" line="1233"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1108"/>
+        <location filename="../app/studio/main_window.cpp" line="1253"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1138"/>
+        <location filename="../app/studio/main_window.cpp" line="1283"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1140"/>
+        <location filename="../app/studio/main_window.cpp" line="1285"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1166"/>
+        <location filename="../app/studio/main_window.cpp" line="1310"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1169"/>
+        <location filename="../app/studio/main_window.cpp" line="1313"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1170"/>
+        <location filename="../app/studio/main_window.cpp" line="1314"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1174"/>
+        <location filename="../app/studio/main_window.cpp" line="1318"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1175"/>
+        <location filename="../app/studio/main_window.cpp" line="1319"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1193"/>
+        <location filename="../app/studio/main_window.cpp" line="1336"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1199"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1206"/>
+        <location filename="../app/studio/main_window.cpp" line="1349"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -1321,72 +1415,82 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ModelImportText</name>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="12"/>
+        <location filename="../app/studio/model_import.cpp" line="18"/>
         <source>%1 km</source>
         <translation>%1 km</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="13"/>
+        <location filename="../app/studio/model_import.cpp" line="19"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="14"/>
+        <location filename="../app/studio/model_import.cpp" line="20"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="15"/>
+        <location filename="../app/studio/model_import.cpp" line="21"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="16"/>
+        <location filename="../app/studio/model_import.cpp" line="22"/>
         <source>%1 µm</source>
         <translation>%1 µm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="31"/>
+        <location filename="../app/studio/model_import.cpp" line="37"/>
         <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
         <translation>%1-Dateien nennen ihre Einheit nicht: %2 wurde auf %3 Höhe skaliert (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="42"/>
+        <location filename="../app/studio/model_import.cpp" line="49"/>
         <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
         <translation>%1 gibt %2 Höhe an, eine absurde Größe: Es wurde stattdessen %3 hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="63"/>
+        <location filename="../app/studio/model_import.cpp" line="108"/>
+        <source>%1 names files that are not beside it (%2): its materials&apos; own colours are used, or a grey default.</source>
+        <translation>%1 nennt Dateien, die nicht daneben liegen (%2): die eigenen Farben seiner Materialien werden verwendet, sonst ein Grau.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <source>%1&apos;s image textures are not rendered: Inlay uses its materials&apos; base colour, metallic and roughness values.</source>
+        <translation>Die Bildtexturen von %1 werden nicht gerendert: Inlay verwendet Grundfarbe, Metallizität und Rauheit seiner Materialien.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="136"/>
         <source>3D models (%1)</source>
         <translation>3D-Modelle (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="64"/>
+        <location filename="../app/studio/model_import.cpp" line="137"/>
         <source>All files (*)</source>
         <translation>Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="78"/>
+        <location filename="../app/studio/model_import.cpp" line="151"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="96"/>
+        <location filename="../app/studio/model_import.cpp" line="169"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="99"/>
+        <location filename="../app/studio/model_import.cpp" line="173"/>
         <source>(Inlay inserts models of up to %1 triangles.)</source>
         <translation>(Inlay fügt Modelle mit bis zu %1 Dreiecken ein.)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="104"/>
+        <location filename="../app/studio/model_import.cpp" line="178"/>
         <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
         <translation>%1: Das Modell ist flach (es hat keine Höhe) und kann daher nicht im Raum stehen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <location filename="../app/studio/model_import.cpp" line="189"/>
         <source>%1 has no normals: it is shaded flat.</source>
         <translation>%1 hat keine Normalen: Es wird flach schattiert.</translation>
     </message>
@@ -1402,191 +1506,231 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="325"/>
+        <location filename="../app/studio/docks.cpp" line="351"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="330"/>
+        <location filename="../app/studio/docks.cpp" line="356"/>
         <source>Name:</source>
         <translation>Name:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="331"/>
+        <location filename="../app/studio/docks.cpp" line="357"/>
         <source>Render:</source>
         <translation>Rendern:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="332"/>
+        <location filename="../app/studio/docks.cpp" line="358"/>
         <source>Shown</source>
         <translation>Sichtbar</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="333"/>
+        <location filename="../app/studio/docks.cpp" line="359"/>
         <source>A hidden object stays in the scene but is not rendered</source>
         <translation>Ein ausgeblendetes Objekt bleibt in der Szene, wird aber nicht gerendert</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="334"/>
+        <location filename="../app/studio/docks.cpp" line="360"/>
         <source>Size (W × D × H):</source>
         <translation>Größe (B × T × H):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="335"/>
+        <location filename="../app/studio/docks.cpp" line="361"/>
         <source>Width × depth × height in metres, as placed (before its turn)</source>
         <translation>Breite × Tiefe × Höhe in Metern, wie platziert (vor der Drehung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="337"/>
+        <location filename="../app/studio/docks.cpp" line="363"/>
         <source>The photo pixel the centre of the object&apos;s base stands on</source>
         <translation>Der Fotopixel, auf dem die Mitte der Standfläche des Objekts steht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="342"/>
+        <location filename="../app/studio/docks.cpp" line="368"/>
         <source>Surface:</source>
         <translation>Fläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="343"/>
+        <location filename="../app/studio/docks.cpp" line="369"/>
         <source>Finish:</source>
         <translation>Oberfläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="344"/>
+        <location filename="../app/studio/docks.cpp" line="370"/>
         <source>Roughness:</source>
         <translation>Rauheit:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="345"/>
-        <location filename="../app/studio/docks.cpp" line="357"/>
+        <location filename="../app/studio/docks.cpp" line="371"/>
+        <location filename="../app/studio/docks.cpp" line="383"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="346"/>
+        <location filename="../app/studio/docks.cpp" line="372"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
         <source>Diffuse</source>
         <translation>Matt (diffus)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Glossy</source>
         <translation>Glänzend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Mirror</source>
         <translation>Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
         <source>Metal</source>
         <translation>Metall</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Glass</source>
         <translation>Glas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Frosted glass</source>
         <translation>Milchglas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Emissive</source>
         <translation>Leuchtend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>From the file</source>
         <translation>Aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="350"/>
+        <location filename="../app/studio/docks.cpp" line="376"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Reflexionsgrad der Objektoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="336"/>
+        <location filename="../app/studio/docks.cpp" line="362"/>
         <source>Base (px):</source>
         <translation>Fußpunkt (px):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="338"/>
-        <location filename="../app/studio/docks.cpp" line="356"/>
+        <location filename="../app/studio/docks.cpp" line="48"/>
+        <source>Floor</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="49"/>
+        <source>Ceiling</source>
+        <translation>Decke</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="50"/>
+        <source>Left wall</source>
+        <translation>Linke Wand</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="51"/>
+        <source>Right wall</source>
+        <translation>Rechte Wand</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="52"/>
+        <source>Back wall</source>
+        <translation>Rückwand</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="53"/>
+        <source>Wall behind the camera</source>
+        <translation>Wand hinter der Kamera</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="57"/>
+        <source>Surface %1, top</source>
+        <translation>Fläche %1, oben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="58"/>
+        <source>Surface %1, sides</source>
+        <translation>Fläche %1, Seiten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="364"/>
+        <location filename="../app/studio/docks.cpp" line="382"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="339"/>
+        <location filename="../app/studio/docks.cpp" line="365"/>
         <source>Turn:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="340"/>
+        <location filename="../app/studio/docks.cpp" line="366"/>
         <source>Material:</source>
         <translation>Material:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="341"/>
+        <location filename="../app/studio/docks.cpp" line="367"/>
         <source>Colour:</source>
         <translation>Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="351"/>
+        <location filename="../app/studio/docks.cpp" line="377"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Raumfläche&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Matte</source>
         <translation>Matt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="354"/>
+        <location filename="../app/studio/docks.cpp" line="380"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Eine echte Fläche im Foto, die spiegelt: ein glänzender Boden, ein Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="355"/>
+        <location filename="../app/studio/docks.cpp" line="381"/>
         <source>&lt;b&gt;New models&lt;/b&gt;</source>
         <translation>&lt;b&gt;Neue Modelle&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="358"/>
+        <location filename="../app/studio/docks.cpp" line="385"/>
         <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
         <translation>Die Höhe, die ein Modell erhält, wenn seine Datei keine Einheit nennt (OBJ, PLY, 3DS) oder eine absurde Größe angibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="413"/>
+        <location filename="../app/studio/docks.cpp" line="444"/>
         <source>No object selected</source>
         <translation>Kein Objekt ausgewählt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="420"/>
+        <location filename="../app/studio/docks.cpp" line="451"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="424"/>
+        <location filename="../app/studio/docks.cpp" line="455"/>
         <source>%1 × %2 × %3 m</source>
         <translation>%1 × %2 × %3 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="428"/>
+        <location filename="../app/studio/docks.cpp" line="459"/>
         <source>– (the scene is being prepared)</source>
         <translation>– (die Szene wird vorbereitet)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="473"/>
+        <location filename="../app/studio/docks.cpp" line="503"/>
         <source>Object colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -1594,7 +1738,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="29"/>
+        <location filename="../app/studio/response_dock.cpp" line="32"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
@@ -1602,42 +1746,49 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="51"/>
+        <location filename="../app/studio/response_dock.cpp" line="82"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="56"/>
+        <location filename="../app/studio/response_dock.cpp" line="83"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="57"/>
+        <location filename="../app/studio/response_dock.cpp" line="84"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="58"/>
+        <location filename="../app/studio/response_dock.cpp" line="85"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="59"/>
+        <location filename="../app/studio/response_dock.cpp" line="86"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="60"/>
+        <location filename="../app/studio/response_dock.cpp" line="87"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <location filename="../app/studio/response_dock.cpp" line="110"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="98"/>
+        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <source>
+Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
+        <translation>
+Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>
 Estimated from %1 edges in %2 ms.</source>
         <translation>
@@ -1647,117 +1798,132 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="36"/>
+        <location filename="../app/studio/docks.cpp" line="37"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="37"/>
+        <location filename="../app/studio/docks.cpp" line="38"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="96"/>
+        <location filename="../app/studio/docks.cpp" line="63"/>
+        <source>table top or step</source>
+        <translation>Tischplatte oder Stufe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="64"/>
+        <source>box</source>
+        <translation>Quader</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="65"/>
+        <source>stairs</source>
+        <translation>Treppe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="121"/>
         <source>Scene</source>
         <translation>Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="97"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Item</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="97"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="101"/>
+        <location filename="../app/studio/docks.cpp" line="126"/>
         <source>Room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="104"/>
+        <location filename="../app/studio/docks.cpp" line="129"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="134"/>
         <source>back wall given</source>
         <translation>Rückwand vorgegeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="134"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="112"/>
+        <location filename="../app/studio/docks.cpp" line="137"/>
         <source>Lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="115"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>outline on the photo</source>
         <translation>Umriss im Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="117"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>rectangle in 3D</source>
         <translation>Rechteck im Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="131"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Shafts</source>
         <translation>Sonnenstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="131"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="132"/>
+        <location filename="../app/studio/docks.cpp" line="158"/>
         <source>sunlit patch and its window</source>
         <translation>Sonnenfleck und sein Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="133"/>
+        <location filename="../app/studio/docks.cpp" line="159"/>
         <source>Surfaces</source>
         <translation>Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="133"/>
+        <location filename="../app/studio/docks.cpp" line="159"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="135"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Occluders</source>
         <translation>Verdecker</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="135"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Occluder %1</source>
         <translation>Verdecker %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="137"/>
+        <location filename="../app/studio/docks.cpp" line="162"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 Striche davor, %2 dahinter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="166"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="147"/>
+        <location filename="../app/studio/docks.cpp" line="171"/>
         <source>hidden: %1</source>
         <translation>ausgeblendet: %1</translation>
     </message>
@@ -1766,7 +1932,7 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation type="vanished">Objekt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="145"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1774,52 +1940,52 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::StepsDock</name>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <location filename="../app/studio/steps_dock.cpp" line="101"/>
         <source>no photo yet</source>
         <translation>noch kein Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <location filename="../app/studio/steps_dock.cpp" line="101"/>
         <source>Open Photo…</source>
         <translation>Foto öffnen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="95"/>
+        <location filename="../app/studio/steps_dock.cpp" line="102"/>
         <source>the box is yours</source>
         <translation>Ihre eigene Box</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="97"/>
+        <location filename="../app/studio/steps_dock.cpp" line="104"/>
         <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s corners</source>
         <translation>geschätzt: prüfen, ob die Ecken der Rückwand auf denen des Raums sitzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="98"/>
+        <location filename="../app/studio/steps_dock.cpp" line="105"/>
         <source>Accept the Box</source>
         <translation>Box übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="100"/>
+        <location filename="../app/studio/steps_dock.cpp" line="106"/>
         <source>being estimated…</source>
         <translation>wird geschätzt…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="102"/>
+        <location filename="../app/studio/steps_dock.cpp" line="108"/>
         <source>not found: drag the back wall&apos;s corners onto the room&apos;s corners</source>
         <translation>nicht gefunden: die Ecken der Rückwand auf die des Raums ziehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
         <source>none: objects are lit by gathered light only</source>
         <translation>keine: Objekte werden nur vom gesammelten Licht beleuchtet</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
         <source>Outline a Light</source>
         <translation>Licht umreißen</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/steps_dock.cpp" line="109"/>
+        <location filename="../app/studio/steps_dock.cpp" line="115"/>
         <source>%n outlined</source>
         <translation>
             <numerusform>%n umrissen</numerusform>
@@ -1827,17 +1993,17 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
         <source>none yet (or drag one from the Library)</source>
         <translation>noch keine (oder eines aus der Bibliothek ziehen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
         <source>Insert Model…</source>
         <translation>Modell einfügen…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/steps_dock.cpp" line="116"/>
+        <location filename="../app/studio/steps_dock.cpp" line="121"/>
         <source>%n in the photo</source>
         <translation>
             <numerusform>%n im Foto</numerusform>
@@ -1845,42 +2011,42 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <location filename="../app/studio/steps_dock.cpp" line="124"/>
         <source>not yet</source>
         <translation>noch nicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <location filename="../app/studio/steps_dock.cpp" line="124"/>
         <source>Render Final Image…</source>
         <translation>Endgültiges Bild rendern…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="121"/>
+        <location filename="../app/studio/steps_dock.cpp" line="126"/>
         <source>written to %1</source>
         <translation>nach %1 geschrieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="149"/>
+        <location filename="../app/studio/steps_dock.cpp" line="156"/>
         <source>Steps</source>
         <translation>Schritte</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1888,178 +2054,178 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="323"/>
+        <location filename="../app/studio/viewport.cpp" line="320"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="322"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="327"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="328"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="331"/>
+        <location filename="../app/studio/viewport.cpp" line="328"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="332"/>
+        <location filename="../app/studio/viewport.cpp" line="329"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="334"/>
+        <location filename="../app/studio/viewport.cpp" line="331"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="339"/>
+        <location filename="../app/studio/viewport.cpp" line="337"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Ziehen Sie entlang einer Kante in %1-Richtung (die Tasten X, Y, Z wählen sie).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="340"/>
+        <location filename="../app/studio/viewport.cpp" line="339"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Ziehen Sie nun entlang einer zweiten Kante in %1-Richtung.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="433"/>
+        <location filename="../app/studio/viewport.cpp" line="435"/>
         <source>Back wall (yours)</source>
         <translation>Rückwand (Ihre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="433"/>
+        <location filename="../app/studio/viewport.cpp" line="435"/>
         <source>Back wall (estimated)</source>
         <translation>Rückwand (geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="491"/>
+        <location filename="../app/studio/viewport.cpp" line="492"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="529"/>
+        <location filename="../app/studio/viewport.cpp" line="531"/>
         <source>%1: %2 px</source>
         <translation>%1: %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="558"/>
+        <location filename="../app/studio/viewport.cpp" line="564"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="572"/>
+        <location filename="../app/studio/viewport.cpp" line="578"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="587"/>
+        <location filename="../app/studio/viewport.cpp" line="593"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="646"/>
+        <location filename="../app/studio/viewport.cpp" line="654"/>
         <source>%1 hidden</source>
         <translation>%1 ausgeblendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="738"/>
+        <location filename="../app/studio/viewport.cpp" line="747"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="741"/>
+        <location filename="../app/studio/viewport.cpp" line="749"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="745"/>
+        <location filename="../app/studio/viewport.cpp" line="753"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="748"/>
+        <location filename="../app/studio/viewport.cpp" line="756"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="766"/>
+        <location filename="../app/studio/viewport.cpp" line="779"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="770"/>
+        <location filename="../app/studio/viewport.cpp" line="783"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <location filename="../app/studio/viewport.cpp" line="842"/>
         <source>Before</source>
         <translation>Vorher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <location filename="../app/studio/viewport.cpp" line="842"/>
         <source>After</source>
         <translation>Nachher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="899"/>
+        <location filename="../app/studio/viewport.cpp" line="929"/>
         <source>the left wall</source>
         <translation>der linken Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="900"/>
+        <location filename="../app/studio/viewport.cpp" line="930"/>
         <source>the right wall</source>
         <translation>der rechten Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="901"/>
+        <location filename="../app/studio/viewport.cpp" line="931"/>
         <source>the back wall</source>
         <translation>der Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="902"/>
+        <location filename="../app/studio/viewport.cpp" line="932"/>
         <source>the wall behind the camera</source>
         <translation>der Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="903"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Mit dem Rücken an %1 (Umschalt gedrückt halten: frei platzieren).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="923"/>
+        <location filename="../app/studio/viewport.cpp" line="954"/>
         <source>Turned %1°</source>
         <translation>Gedreht auf %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="964"/>
         <source>Height %1 m</source>
         <translation>Höhe %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="969"/>
+        <location filename="../app/studio/viewport.cpp" line="997"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="892"/>
-        <location filename="../app/studio/viewport.cpp" line="1295"/>
+        <location filename="../app/studio/viewport.cpp" line="922"/>
+        <location filename="../app/studio/viewport.cpp" line="1320"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1227"/>
+        <location filename="../app/studio/viewport.cpp" line="1253"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
@@ -2067,42 +2233,48 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="49"/>
+        <location filename="../app/studio/main.cpp" line="52"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="54"/>
+        <location filename="../app/studio/main.cpp" line="57"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="58"/>
+        <location filename="../app/studio/main.cpp" line="61"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="62"/>
+        <location filename="../app/studio/main.cpp" line="65"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="66"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Instead: render seconds of the shown frame to wait for.</source>
+        <translation>Stattdessen: Render-Sekunden des angezeigten Bildes, auf die gewartet wird.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="73"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="94"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="93"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
+        <location filename="../app/studio/main.cpp" line="109"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

@@ -17,45 +17,45 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="298"/>
-        <location filename="../app/studio/document.cpp" line="328"/>
+        <location filename="../app/studio/document.cpp" line="297"/>
+        <location filename="../app/studio/document.cpp" line="327"/>
         <source>Preparation was cancelled.</source>
         <translation>La préparation a été annulée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="384"/>
-        <location filename="../app/studio/document.cpp" line="789"/>
-        <location filename="../app/studio/document.cpp" line="971"/>
+        <location filename="../app/studio/document.cpp" line="383"/>
+        <location filename="../app/studio/document.cpp" line="790"/>
+        <location filename="../app/studio/document.cpp" line="970"/>
         <location filename="../app/studio/document.cpp" line="1028"/>
         <source>The position is not a number.</source>
         <translation>La position n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="386"/>
-        <location filename="../app/studio/document.cpp" line="509"/>
-        <location filename="../app/studio/document.cpp" line="526"/>
+        <location filename="../app/studio/document.cpp" line="385"/>
+        <location filename="../app/studio/document.cpp" line="510"/>
+        <location filename="../app/studio/document.cpp" line="527"/>
         <source>The height must be greater than zero.</source>
         <translation>La hauteur doit être supérieure à zéro.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="407"/>
-        <location filename="../app/studio/document.cpp" line="438"/>
+        <location filename="../app/studio/document.cpp" line="406"/>
+        <location filename="../app/studio/document.cpp" line="437"/>
         <source>Move object %1</source>
         <translation>Déplacer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="414"/>
+        <location filename="../app/studio/document.cpp" line="413"/>
         <source>Change height of object %1</source>
         <translation>Changer la hauteur de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="420"/>
-        <location filename="../app/studio/document.cpp" line="432"/>
+        <location filename="../app/studio/document.cpp" line="419"/>
+        <location filename="../app/studio/document.cpp" line="431"/>
         <source>The turn is not a number.</source>
         <translation>La rotation n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="425"/>
+        <location filename="../app/studio/document.cpp" line="424"/>
         <source>Turn object %1</source>
         <translation>Tourner l&apos;objet %1</translation>
     </message>
@@ -70,12 +70,12 @@
         <translation>Il n&apos;y a pas d&apos;objet %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="497"/>
+        <location filename="../app/studio/document.cpp" line="498"/>
         <source>The scene is still being prepared.</source>
         <translation>La scène est encore en préparation.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="498"/>
+        <location filename="../app/studio/document.cpp" line="499"/>
         <source>The scene could not be prepared.</source>
         <translation>La scène n&apos;a pas pu être préparée.</translation>
     </message>
@@ -84,113 +84,113 @@
         <translation type="vanished">Insérer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="524"/>
+        <location filename="../app/studio/document.cpp" line="525"/>
         <source>The model has no triangles.</source>
         <translation>Le modèle n&apos;a aucun triangle.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="532"/>
+        <location filename="../app/studio/document.cpp" line="533"/>
         <source>object %1</source>
         <translation>objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="533"/>
+        <location filename="../app/studio/document.cpp" line="535"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="550"/>
+        <location filename="../app/studio/document.cpp" line="553"/>
         <source>Duplicate %1</source>
         <translation>Dupliquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="598"/>
+        <location filename="../app/studio/document.cpp" line="601"/>
         <source>Rename %1</source>
         <translation>Renommer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="608"/>
         <source>Hide %1</source>
         <translation>Masquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="605"/>
+        <location filename="../app/studio/document.cpp" line="608"/>
         <source>Show %1</source>
         <translation>Afficher %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="613"/>
+        <location filename="../app/studio/document.cpp" line="616"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="614"/>
+        <location filename="../app/studio/document.cpp" line="617"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="652"/>
+        <location filename="../app/studio/document.cpp" line="655"/>
         <source>Delete object %1</source>
         <translation>Supprimer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="754"/>
+        <location filename="../app/studio/document.cpp" line="755"/>
         <source>Open a photo first.</source>
         <translation>Ouvrez d&apos;abord une photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="774"/>
+        <location filename="../app/studio/document.cpp" line="775"/>
         <source>There is no estimated box yet.</source>
         <translation>Il n&apos;y a pas encore de pièce estimée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="779"/>
+        <location filename="../app/studio/document.cpp" line="780"/>
         <source>Accept the estimated box</source>
         <translation>Accepter la pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="785"/>
+        <location filename="../app/studio/document.cpp" line="786"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Ce coin du mur du fond n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="795"/>
+        <location filename="../app/studio/document.cpp" line="796"/>
         <source>Move a corner of the back wall</source>
         <translation>Déplacer un coin du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="801"/>
+        <location filename="../app/studio/document.cpp" line="802"/>
         <source>Estimate the box again</source>
         <translation>Estimer à nouveau la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="806"/>
+        <location filename="../app/studio/document.cpp" line="807"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une lampe doit compter au moins trois points entourant une surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="814"/>
+        <location filename="../app/studio/document.cpp" line="815"/>
         <source>Outline light %1</source>
         <translation>Détourer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="820"/>
+        <location filename="../app/studio/document.cpp" line="821"/>
         <location filename="../app/studio/document.cpp" line="991"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Chaque cadre d&apos;un rayon de soleil doit mesurer au moins deux pixels de large et de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="828"/>
+        <location filename="../app/studio/document.cpp" line="829"/>
         <source>Add shaft %1</source>
         <translation>Ajouter le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="835"/>
+        <location filename="../app/studio/document.cpp" line="836"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une surface doit compter au moins trois points entourant une aire.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="844"/>
+        <location filename="../app/studio/document.cpp" line="845"/>
         <source>Add surface %1</source>
         <translation>Ajouter la surface %1</translation>
     </message>
@@ -205,53 +205,53 @@
         <translation>Ajouter le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="867"/>
+        <location filename="../app/studio/document.cpp" line="866"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Ce masque d&apos;avant-plan n&apos;existe pas, ou le trait est vide.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="873"/>
+        <location filename="../app/studio/document.cpp" line="872"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Ajouter un trait au masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="884"/>
+        <location filename="../app/studio/document.cpp" line="883"/>
         <source>There is no such mark.</source>
         <translation>Ce repère n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="891"/>
+        <location filename="../app/studio/document.cpp" line="890"/>
         <source>Delete light %1</source>
         <translation>Supprimer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="892"/>
+        <location filename="../app/studio/document.cpp" line="891"/>
         <source>Delete shaft %1</source>
         <translation>Supprimer le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="893"/>
+        <location filename="../app/studio/document.cpp" line="892"/>
         <source>Delete surface %1</source>
         <translation>Supprimer la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="894"/>
+        <location filename="../app/studio/document.cpp" line="893"/>
         <source>Delete occluder %1</source>
         <translation>Supprimer le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="974"/>
+        <location filename="../app/studio/document.cpp" line="973"/>
         <source>There is no such point.</source>
         <translation>Ce point n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="982"/>
+        <location filename="../app/studio/document.cpp" line="981"/>
         <location filename="../app/studio/document.cpp" line="1000"/>
         <source>The outline would lose its area.</source>
         <translation>Le contour perdrait sa surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="983"/>
+        <location filename="../app/studio/document.cpp" line="982"/>
         <source>Reshape light %1</source>
         <translation>Remodeler la lumière %1</translation>
     </message>
@@ -281,32 +281,32 @@
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1034"/>
+        <location filename="../app/studio/document.cpp" line="1036"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Les deux lignes sont sur une même droite : tracez deux arêtes différentes.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1043"/>
+        <location filename="../app/studio/document.cpp" line="1045"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Tracer les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1044"/>
+        <location filename="../app/studio/document.cpp" line="1046"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Oublier les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1058"/>
+        <location filename="../app/studio/document.cpp" line="1060"/>
         <source>The room has no surface %1.</source>
         <translation>La pièce n’a pas de surface %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1061"/>
+        <location filename="../app/studio/document.cpp" line="1063"/>
         <source>Unknown material.</source>
         <translation>Matériau inconnu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1064"/>
+        <location filename="../app/studio/document.cpp" line="1066"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>La rugosité doit être comprise entre 0 et 1.</translation>
     </message>
@@ -324,12 +324,17 @@
 <context>
     <name>inlay::studio::FinalRender</name>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="73"/>
+        <location filename="../app/studio/final_render.cpp" line="80"/>
         <source>Render Final Image cancelled; nothing was written.</source>
         <translation>Image finale annulée ; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="115"/>
+        <location filename="../app/studio/final_render.cpp" line="128"/>
+        <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6 before denoising, %7 s</source>
+        <translation>%1 écrit : %2 × %3, %4 échantillons par pixel au plus (%5 en moyenne), erreur estimée %6 avant débruitage, %7 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/final_render.cpp" line="130"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s</source>
         <translation>%1 écrit : %2 × %3, %4 échantillons par pixel au plus (%5 en moyenne), erreur estimée %6, %7 s</translation>
     </message>
@@ -337,47 +342,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="195"/>
+        <location filename="../app/studio/docks.cpp" line="219"/>
         <source>Layers</source>
         <translation>Calques</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="196"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Composite</source>
         <translation>Composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="196"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Photo</source>
         <translation>Photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="197"/>
+        <location filename="../app/studio/docks.cpp" line="220"/>
         <source>Albedo</source>
         <translation>Albédo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="197"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>Direct light</source>
         <translation>Lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>With objects</source>
         <translation>Avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="198"/>
+        <location filename="../app/studio/docks.cpp" line="221"/>
         <source>Without objects</source>
         <translation>Sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="222"/>
         <source>Mask</source>
         <translation>Masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="199"/>
+        <location filename="../app/studio/docks.cpp" line="222"/>
         <source>Difference</source>
         <translation>Différence</translation>
     </message>
@@ -445,17 +450,22 @@
         <translation>Tapis</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="101"/>
+        <location filename="../app/studio/library_dock.cpp" line="106"/>
         <source>Library</source>
         <translation>Bibliothèque de modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="104"/>
+        <location filename="../app/studio/library_dock.cpp" line="109"/>
+        <source>no library.json in $INLAY_MODELS_DIR, &lt;prefix&gt;/share/inlay/models or resources/models</source>
+        <translation>aucun library.json dans $INLAY_MODELS_DIR, &lt;prefix&gt;/share/inlay/models ni resources/models</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/library_dock.cpp" line="112"/>
         <source>The model library could not be shown: %1</source>
         <translation>La bibliothèque de modèles ne peut pas être affichée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/library_dock.cpp" line="110"/>
+        <location filename="../app/studio/library_dock.cpp" line="118"/>
         <source>%1
 %2 × %3 × %4 m (width × depth × height)
 Drag it into the photo.</source>
@@ -465,412 +475,447 @@ Faites-le glisser dans la photo.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::LogDock</name>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="29"/>
+        <source>Log</source>
+        <translation>Journal</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="37"/>
+        <source>%1 The scene could not be prepared: %2</source>
+        <translation>%1 La scène n&apos;a pas pu être préparée : %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="44"/>
+        <source>%1 Prepared the scene in %2 s:</source>
+        <translation>%1 Scène préparée en %2 s :</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/log_dock.cpp" line="47"/>
+        <source>warning: %1</source>
+        <translation>avertissement : %1</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="86"/>
+        <location filename="../app/studio/main_window.cpp" line="89"/>
         <source>Reading the photo</source>
         <translation>Lecture de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="87"/>
+        <location filename="../app/studio/main_window.cpp" line="90"/>
         <source>Estimating the camera</source>
         <translation>Estimation de l&apos;appareil photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="88"/>
+        <location filename="../app/studio/main_window.cpp" line="91"/>
         <source>Fitting the room</source>
         <translation>Ajustement de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="89"/>
+        <location filename="../app/studio/main_window.cpp" line="92"/>
         <source>Estimating the lighting</source>
         <translation>Estimation de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="90"/>
+        <location filename="../app/studio/main_window.cpp" line="93"/>
         <source>Placing the objects</source>
         <translation>Placement des objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Échantillons par pixel de la composition affichée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Échantillons par seconde du rendu (millions)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="463"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Erreur estimée (RMSE en sRGB) là où les objets modifient la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="464"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Render time since the last change</source>
         <translation>Temps de rendu depuis la dernière modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="125"/>
+        <location filename="../app/studio/main_window.cpp" line="136"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="138"/>
+        <location filename="../app/studio/main_window.cpp" line="641"/>
         <source>Preparing the scene: %1…</source>
         <translation>Préparation de la scène : %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="414"/>
+        <location filename="../app/studio/main_window.cpp" line="443"/>
         <source>&amp;Open Scene…</source>
         <translation>&amp;Ouvrir une scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>Open a scene file (.json)</source>
         <translation>Ouvrir un fichier de scène (.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="415"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>Open &amp;Photo…</source>
         <translation>Ouvrir une &amp;photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>Start a new scene from a photo</source>
         <translation>Commencer une nouvelle scène à partir d&apos;une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="416"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>Open &amp;Example</source>
         <translation>Ouvrir l&apos;&amp;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="417"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="418"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>Save &amp;As…</source>
         <translation>Enregistrer &amp;sous…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="419"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>&amp;Export Composite…</source>
         <translation>E&amp;xporter la composition…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Écrire la composition actuelle en PNG, JPEG, TIFF ou EXR</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="420"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Exporter le &amp;calque affiché…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Écrire le calque affiché (albédo, masque, …) en image 8 bits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="421"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Exporter la scène en &amp;glTF…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="490"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Écrire la pièce, ses lumières, la caméra et les objets en glTF 2.0, pour continuer dans Blender</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="427"/>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="539"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="428"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>Insert &amp;Sphere</source>
         <translation>Insérer une &amp;sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="454"/>
+        <location filename="../app/studio/main_window.cpp" line="491"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Poser une sphère sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="429"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Insert &amp;Cube</source>
         <translation>Insérer un &amp;cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="455"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Poser un cube sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="430"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Delete the selected object or mark</source>
         <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="440"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="441"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="442"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="443"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="457"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>P&amp;réparer à nouveau la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="483"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="422"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>&amp;Render Final Image…</source>
         <translation>&amp;Rendre l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="423"/>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Rendre le composite à la pleine résolution de la photo jusqu&apos;à ce qu&apos;il soit net, puis l&apos;enregistrer (PNG, JPEG, TIFF ou EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="425"/>
+        <location filename="../app/studio/main_window.cpp" line="455"/>
         <source>Before/After &amp;Split</source>
         <translation>&amp;Partage avant/après</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="426"/>
+        <location filename="../app/studio/main_window.cpp" line="457"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>La photo à gauche d&apos;une séparation, le composite à droite ; faites glisser la séparation</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="431"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>Insert &amp;Model…</source>
         <translation>Insérer un &amp;modèle…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="432"/>
+        <location filename="../app/studio/main_window.cpp" line="464"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Poser un modèle 3D (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) au sol ; ou déposer le fichier là où il doit se tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="434"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;upliquer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="435"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Poser une copie de l&apos;objet choisi à côté de lui</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="436"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Re&amp;name…</source>
         <translation>Re&amp;nommer…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="437"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Renommer l&apos;objet choisi (dans la liste de la scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="438"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>&amp;Hide or Show</source>
         <translation>&amp;Masquer ou afficher</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="439"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Masquer l&apos;objet choisi du rendu, ou l&apos;afficher à nouveau</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <source>&amp;Denoise Preview</source>
+        <translation>&amp;Débruiter l&apos;aperçu</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="482"/>
+        <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
+        <translation>Lisser le bruit du rendu là où les objets changent la photo (le reste reste la photo)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Lignes de fuite (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="508"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="539"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Annuler : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="540"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="564"/>
+        <location filename="../app/studio/main_window.cpp" line="640"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="549"/>
+        <location filename="../app/studio/main_window.cpp" line="929"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
-        <location filename="../app/studio/main_window.cpp" line="1206"/>
+        <location filename="../app/studio/main_window.cpp" line="550"/>
+        <location filename="../app/studio/main_window.cpp" line="1349"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="524"/>
+        <location filename="../app/studio/main_window.cpp" line="583"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="592"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -878,442 +923,491 @@ Faites-le glisser dans la photo.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="563"/>
+        <location filename="../app/studio/main_window.cpp" line="621"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="579"/>
+        <location filename="../app/studio/main_window.cpp" line="527"/>
+        <location filename="../app/studio/main_window.cpp" line="661"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="580"/>
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="654"/>
+        <location filename="../app/studio/main_window.cpp" line="662"/>
+        <location filename="../app/studio/main_window.cpp" line="676"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="581"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="663"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="582"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="664"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="586"/>
+        <location filename="../app/studio/main_window.cpp" line="527"/>
+        <location filename="../app/studio/main_window.cpp" line="653"/>
+        <source>final, %1 spp</source>
+        <translation>final, %1 éch./px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="526"/>
+        <location filename="../app/studio/main_window.cpp" line="668"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="587"/>
+        <location filename="../app/studio/main_window.cpp" line="526"/>
+        <location filename="../app/studio/main_window.cpp" line="669"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="588"/>
+        <location filename="../app/studio/main_window.cpp" line="670"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="589"/>
+        <location filename="../app/studio/main_window.cpp" line="1365"/>
+        <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
+        <translation>L&apos;image finale %1 est encore en cours de rendu (%2 % fait). Annuler le rendu ? Rien n&apos;est alors écrit, et un fichier antérieur de ce nom reste tel quel.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1373"/>
+        <source>Keep Rendering</source>
+        <translation>Continuer le rendu</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <source>Cancel the Render and Close</source>
+        <translation>Annuler le rendu et fermer</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="655"/>
+        <location filename="../app/studio/main_window.cpp" line="671"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="591"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="675"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="593"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="656"/>
+        <location filename="../app/studio/main_window.cpp" line="677"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="603"/>
+        <location filename="../app/studio/main_window.cpp" line="687"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="606"/>
+        <location filename="../app/studio/main_window.cpp" line="688"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="607"/>
+        <location filename="../app/studio/main_window.cpp" line="689"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="626"/>
+        <location filename="../app/studio/main_window.cpp" line="710"/>
+        <source>Cancel the Render and Open</source>
+        <translation>Annuler le rendu et ouvrir</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="626"/>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="632"/>
+        <location filename="../app/studio/main_window.cpp" line="720"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="651"/>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="749"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="651"/>
+        <location filename="../app/studio/main_window.cpp" line="739"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="749"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="759"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="672"/>
+        <location filename="../app/studio/main_window.cpp" line="760"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="679"/>
+        <location filename="../app/studio/main_window.cpp" line="767"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="680"/>
+        <location filename="../app/studio/main_window.cpp" line="768"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="775"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="779"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="706"/>
+        <location filename="../app/studio/main_window.cpp" line="795"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="707"/>
+        <location filename="../app/studio/main_window.cpp" line="795"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="715"/>
-        <location filename="../app/studio/main_window.cpp" line="736"/>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
-        <location filename="../app/studio/main_window.cpp" line="928"/>
+        <location filename="../app/studio/main_window.cpp" line="803"/>
+        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
+        <location filename="../app/studio/main_window.cpp" line="1061"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="715"/>
-        <location filename="../app/studio/main_window.cpp" line="736"/>
+        <location filename="../app/studio/main_window.cpp" line="803"/>
+        <location filename="../app/studio/main_window.cpp" line="834"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="797"/>
-        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1050"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="719"/>
-        <location filename="../app/studio/main_window.cpp" line="797"/>
-        <location filename="../app/studio/main_window.cpp" line="917"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1050"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
-        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="1051"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="827"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="721"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="744"/>
+        <location filename="../app/studio/main_window.cpp" line="842"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="750"/>
+        <location filename="../app/studio/main_window.cpp" line="847"/>
+        <source>Exported %1 (the final render)</source>
+        <translation>%1 exporté (l&apos;image finale)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="852"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exporté (%2 spp, l&apos;aperçu en %3 × %4 ; Rendre l&apos;image finale écrit la pleine taille de la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="757"/>
+        <location filename="../app/studio/main_window.cpp" line="860"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="782"/>
+        <location filename="../app/studio/main_window.cpp" line="883"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Les quatre étapes sont faites. Affichage &gt; Étapes les montre à nouveau.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="788"/>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
+        <location filename="../app/studio/main_window.cpp" line="889"/>
+        <location filename="../app/studio/main_window.cpp" line="904"/>
         <source>Nothing to render</source>
         <translation>Rien à rendre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="799"/>
-        <location filename="../app/studio/main_window.cpp" line="839"/>
+        <location filename="../app/studio/main_window.cpp" line="897"/>
+        <location filename="../app/studio/main_window.cpp" line="930"/>
+        <location filename="../app/studio/main_window.cpp" line="1364"/>
         <source>Render Final Image</source>
         <translation>Rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="818"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
         <source>A final image is being rendered already.</source>
         <translation>Une image finale est déjà en cours de rendu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="825"/>
-        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="915"/>
+        <location filename="../app/studio/main_window.cpp" line="920"/>
         <source>Cannot render the final image</source>
         <translation>Impossible de rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
+        <location filename="../app/studio/main_window.cpp" line="916"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1 : choisissez un fichier .png, .jpg, .tif ou .exr.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="831"/>
+        <location filename="../app/studio/main_window.cpp" line="921"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1 : le dossier %2 n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="838"/>
-        <location filename="../app/studio/main_window.cpp" line="858"/>
+        <location filename="../app/studio/main_window.cpp" line="929"/>
+        <location filename="../app/studio/main_window.cpp" line="950"/>
         <source>Rendering the final image…</source>
         <translation>Rendu de l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="846"/>
+        <location filename="../app/studio/main_window.cpp" line="938"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Image finale : %1 échantillons par pixel au plus, erreur estimée %2 (cible %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="880"/>
+        <location filename="../app/studio/main_window.cpp" line="974"/>
         <source>Cannot write the final image</source>
         <translation>Impossible d&apos;écrire l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
+        <translation>Image finale affichée (%1, %2 × %3) ; la prochaine modification revient à l&apos;aperçu en direct.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
+        <translation>Image finale (%1 × %2, enregistrée sous %3) : affichée jusqu&apos;à la prochaine modification</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1018"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="887"/>
+        <location filename="../app/studio/main_window.cpp" line="1018"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="888"/>
+        <location filename="../app/studio/main_window.cpp" line="1019"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="788"/>
-        <location filename="../app/studio/main_window.cpp" line="814"/>
-        <location filename="../app/studio/main_window.cpp" line="899"/>
+        <location filename="../app/studio/main_window.cpp" line="889"/>
+        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="1030"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="905"/>
+        <location filename="../app/studio/main_window.cpp" line="1037"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="1049"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="928"/>
+        <location filename="../app/studio/main_window.cpp" line="1061"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="935"/>
+        <location filename="../app/studio/main_window.cpp" line="1068"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="936"/>
         <source>%1: cannot write (%2)</source>
-        <translation>%1 : écriture impossible (%2)</translation>
+        <translation type="vanished">%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="908"/>
-        <location filename="../app/studio/main_window.cpp" line="939"/>
+        <location filename="../app/studio/main_window.cpp" line="1040"/>
+        <location filename="../app/studio/main_window.cpp" line="1071"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="964"/>
+        <location filename="../app/studio/main_window.cpp" line="1101"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="965"/>
+        <location filename="../app/studio/main_window.cpp" line="1102"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="974"/>
+        <location filename="../app/studio/main_window.cpp" line="1111"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1138"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1007"/>
+        <location filename="../app/studio/main_window.cpp" line="1146"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1011"/>
+        <location filename="../app/studio/main_window.cpp" line="1150"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1027"/>
+        <location filename="../app/studio/main_window.cpp" line="1165"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1037"/>
+        <location filename="../app/studio/main_window.cpp" line="1175"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1047"/>
+        <location filename="../app/studio/main_window.cpp" line="1187"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1048"/>
+        <location filename="../app/studio/main_window.cpp" line="1189"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1063"/>
+        <location filename="../app/studio/main_window.cpp" line="1204"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1077"/>
+        <location filename="../app/studio/main_window.cpp" line="1219"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1080"/>
+        <location filename="../app/studio/main_window.cpp" line="1223"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1081"/>
+        <location filename="../app/studio/main_window.cpp" line="1224"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1090"/>
+        <location filename="../app/studio/main_window.cpp" line="1233"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1108"/>
+        <location filename="../app/studio/main_window.cpp" line="1253"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1138"/>
+        <location filename="../app/studio/main_window.cpp" line="1283"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1140"/>
+        <location filename="../app/studio/main_window.cpp" line="1285"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1166"/>
+        <location filename="../app/studio/main_window.cpp" line="1310"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1169"/>
+        <location filename="../app/studio/main_window.cpp" line="1313"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1170"/>
+        <location filename="../app/studio/main_window.cpp" line="1314"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1174"/>
+        <location filename="../app/studio/main_window.cpp" line="1318"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1175"/>
+        <location filename="../app/studio/main_window.cpp" line="1319"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1193"/>
+        <location filename="../app/studio/main_window.cpp" line="1336"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1199"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1206"/>
+        <location filename="../app/studio/main_window.cpp" line="1349"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -1321,72 +1415,82 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ModelImportText</name>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="12"/>
+        <location filename="../app/studio/model_import.cpp" line="18"/>
         <source>%1 km</source>
         <translation>%1 km</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="13"/>
+        <location filename="../app/studio/model_import.cpp" line="19"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="14"/>
+        <location filename="../app/studio/model_import.cpp" line="20"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="15"/>
+        <location filename="../app/studio/model_import.cpp" line="21"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="16"/>
+        <location filename="../app/studio/model_import.cpp" line="22"/>
         <source>%1 µm</source>
         <translation>%1 µm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="31"/>
+        <location filename="../app/studio/model_import.cpp" line="37"/>
         <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
         <translation>Les fichiers %1 n&apos;indiquent pas leur unité : %2 a été mis à l&apos;échelle à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="42"/>
+        <location filename="../app/studio/model_import.cpp" line="49"/>
         <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
         <translation>%1 se dit haut de %2, une taille absurde : il a été inséré à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="63"/>
+        <location filename="../app/studio/model_import.cpp" line="108"/>
+        <source>%1 names files that are not beside it (%2): its materials&apos; own colours are used, or a grey default.</source>
+        <translation>%1 cite des fichiers absents à côté de lui (%2) : les couleurs propres de ses matériaux sont utilisées, sinon un gris.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <source>%1&apos;s image textures are not rendered: Inlay uses its materials&apos; base colour, metallic and roughness values.</source>
+        <translation>Les textures d&apos;image de %1 ne sont pas rendues : Inlay utilise la couleur de base, le métal et la rugosité de ses matériaux.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/model_import.cpp" line="136"/>
         <source>3D models (%1)</source>
         <translation>Modèles 3D (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="64"/>
+        <location filename="../app/studio/model_import.cpp" line="137"/>
         <source>All files (*)</source>
         <translation>Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="78"/>
+        <location filename="../app/studio/model_import.cpp" line="151"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="96"/>
+        <location filename="../app/studio/model_import.cpp" line="169"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="99"/>
+        <location filename="../app/studio/model_import.cpp" line="173"/>
         <source>(Inlay inserts models of up to %1 triangles.)</source>
         <translation>(Inlay insère des modèles jusqu&apos;à %1 triangles.)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="104"/>
+        <location filename="../app/studio/model_import.cpp" line="178"/>
         <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
         <translation>%1 : le modèle est plat (il n&apos;a pas de hauteur) et ne peut donc pas se tenir dans la pièce.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <location filename="../app/studio/model_import.cpp" line="189"/>
         <source>%1 has no normals: it is shaded flat.</source>
         <translation>%1 n&apos;a pas de normales : il est ombré à plat.</translation>
     </message>
@@ -1402,191 +1506,231 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="325"/>
+        <location filename="../app/studio/docks.cpp" line="351"/>
         <source>Properties</source>
         <translation>Propriétés</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="330"/>
+        <location filename="../app/studio/docks.cpp" line="356"/>
         <source>Name:</source>
         <translation>Nom :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="331"/>
+        <location filename="../app/studio/docks.cpp" line="357"/>
         <source>Render:</source>
         <translation>Rendu :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="332"/>
+        <location filename="../app/studio/docks.cpp" line="358"/>
         <source>Shown</source>
         <translation>Affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="333"/>
+        <location filename="../app/studio/docks.cpp" line="359"/>
         <source>A hidden object stays in the scene but is not rendered</source>
         <translation>Un objet masqué reste dans la scène mais n&apos;est pas rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="334"/>
+        <location filename="../app/studio/docks.cpp" line="360"/>
         <source>Size (W × D × H):</source>
         <translation>Taille (L × P × H) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="335"/>
+        <location filename="../app/studio/docks.cpp" line="361"/>
         <source>Width × depth × height in metres, as placed (before its turn)</source>
         <translation>Largeur × profondeur × hauteur en mètres, telle que placée (avant sa rotation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="337"/>
+        <location filename="../app/studio/docks.cpp" line="363"/>
         <source>The photo pixel the centre of the object&apos;s base stands on</source>
         <translation>Le pixel de la photo sur lequel repose le centre de la base de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="342"/>
+        <location filename="../app/studio/docks.cpp" line="368"/>
         <source>Surface:</source>
         <translation>Surface :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="343"/>
+        <location filename="../app/studio/docks.cpp" line="369"/>
         <source>Finish:</source>
         <translation>Finition :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="344"/>
+        <location filename="../app/studio/docks.cpp" line="370"/>
         <source>Roughness:</source>
         <translation>Rugosité :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="345"/>
-        <location filename="../app/studio/docks.cpp" line="357"/>
+        <location filename="../app/studio/docks.cpp" line="371"/>
+        <location filename="../app/studio/docks.cpp" line="383"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="346"/>
+        <location filename="../app/studio/docks.cpp" line="372"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
         <source>Diffuse</source>
         <translation>Diffus</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Glossy</source>
         <translation>Brillant</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Mirror</source>
         <translation>Miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="347"/>
+        <location filename="../app/studio/docks.cpp" line="373"/>
         <source>Metal</source>
         <translation>Métal</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Glass</source>
         <translation>Verre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Frosted glass</source>
         <translation>Verre dépoli</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>Emissive</source>
         <translation>Émissif</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="348"/>
+        <location filename="../app/studio/docks.cpp" line="374"/>
         <source>From the file</source>
         <translation>Celui du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="350"/>
+        <location filename="../app/studio/docks.cpp" line="376"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Réflectance de la surface de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="336"/>
+        <location filename="../app/studio/docks.cpp" line="362"/>
         <source>Base (px):</source>
         <translation>Base (px) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="338"/>
-        <location filename="../app/studio/docks.cpp" line="356"/>
+        <location filename="../app/studio/docks.cpp" line="48"/>
+        <source>Floor</source>
+        <translation>Sol</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="49"/>
+        <source>Ceiling</source>
+        <translation>Plafond</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="50"/>
+        <source>Left wall</source>
+        <translation>Mur de gauche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="51"/>
+        <source>Right wall</source>
+        <translation>Mur de droite</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="52"/>
+        <source>Back wall</source>
+        <translation>Mur du fond</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="53"/>
+        <source>Wall behind the camera</source>
+        <translation>Mur derrière l&apos;appareil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="57"/>
+        <source>Surface %1, top</source>
+        <translation>Surface %1, dessus</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="58"/>
+        <source>Surface %1, sides</source>
+        <translation>Surface %1, côtés</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="364"/>
+        <location filename="../app/studio/docks.cpp" line="382"/>
         <source>Height:</source>
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="339"/>
+        <location filename="../app/studio/docks.cpp" line="365"/>
         <source>Turn:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="340"/>
+        <location filename="../app/studio/docks.cpp" line="366"/>
         <source>Material:</source>
         <translation>Matériau :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="341"/>
+        <location filename="../app/studio/docks.cpp" line="367"/>
         <source>Colour:</source>
         <translation>Couleur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="351"/>
+        <location filename="../app/studio/docks.cpp" line="377"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Surface de la pièce&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="352"/>
+        <location filename="../app/studio/docks.cpp" line="378"/>
         <source>Matte</source>
         <translation>Mat</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="354"/>
+        <location filename="../app/studio/docks.cpp" line="380"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Une vraie surface de la photo qui réfléchit : un sol brillant, un miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="355"/>
+        <location filename="../app/studio/docks.cpp" line="381"/>
         <source>&lt;b&gt;New models&lt;/b&gt;</source>
         <translation>&lt;b&gt;Nouveaux modèles&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="358"/>
+        <location filename="../app/studio/docks.cpp" line="385"/>
         <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
         <translation>La hauteur que reçoit un modèle quand son fichier n&apos;indique pas d&apos;unité (OBJ, PLY, 3DS) ou une taille absurde</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="413"/>
+        <location filename="../app/studio/docks.cpp" line="444"/>
         <source>No object selected</source>
         <translation>Aucun objet sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="420"/>
+        <location filename="../app/studio/docks.cpp" line="451"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objet %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="424"/>
+        <location filename="../app/studio/docks.cpp" line="455"/>
         <source>%1 × %2 × %3 m</source>
         <translation>%1 × %2 × %3 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="428"/>
+        <location filename="../app/studio/docks.cpp" line="459"/>
         <source>– (the scene is being prepared)</source>
         <translation>– (la scène est en préparation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="473"/>
+        <location filename="../app/studio/docks.cpp" line="503"/>
         <source>Object colour</source>
         <translation>Couleur de l&apos;objet</translation>
     </message>
@@ -1594,7 +1738,7 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="29"/>
+        <location filename="../app/studio/response_dock.cpp" line="32"/>
         <source>code</source>
         <translation>code</translation>
     </message>
@@ -1602,42 +1746,49 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="51"/>
+        <location filename="../app/studio/response_dock.cpp" line="82"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="56"/>
+        <location filename="../app/studio/response_dock.cpp" line="83"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="57"/>
+        <location filename="../app/studio/response_dock.cpp" line="84"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="58"/>
+        <location filename="../app/studio/response_dock.cpp" line="85"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="59"/>
+        <location filename="../app/studio/response_dock.cpp" line="86"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="60"/>
+        <location filename="../app/studio/response_dock.cpp" line="87"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <location filename="../app/studio/response_dock.cpp" line="110"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="98"/>
+        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <source>
+Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
+        <translation>
+Estimée à partir du bruit de la photo (%1 niveaux) en %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>
 Estimated from %1 edges in %2 ms.</source>
         <translation>
@@ -1647,117 +1798,132 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="36"/>
+        <location filename="../app/studio/docks.cpp" line="37"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="37"/>
+        <location filename="../app/studio/docks.cpp" line="38"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="96"/>
+        <location filename="../app/studio/docks.cpp" line="63"/>
+        <source>table top or step</source>
+        <translation>dessus de table ou marche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="64"/>
+        <source>box</source>
+        <translation>boîte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="65"/>
+        <source>stairs</source>
+        <translation>escalier</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/docks.cpp" line="121"/>
         <source>Scene</source>
         <translation>Scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="97"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Item</source>
         <translation>Élément</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="97"/>
+        <location filename="../app/studio/docks.cpp" line="122"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="101"/>
+        <location filename="../app/studio/docks.cpp" line="126"/>
         <source>Room</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="104"/>
+        <location filename="../app/studio/docks.cpp" line="129"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="134"/>
         <source>back wall given</source>
         <translation>mur du fond donné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="109"/>
+        <location filename="../app/studio/docks.cpp" line="134"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="112"/>
+        <location filename="../app/studio/docks.cpp" line="137"/>
         <source>Lights</source>
         <translation>Lampes</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="115"/>
+        <location filename="../app/studio/docks.cpp" line="142"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="116"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>outline on the photo</source>
         <translation>contour sur la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="117"/>
+        <location filename="../app/studio/docks.cpp" line="143"/>
         <source>rectangle in 3D</source>
         <translation>rectangle en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="131"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Shafts</source>
         <translation>Rayons de soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="131"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="132"/>
+        <location filename="../app/studio/docks.cpp" line="158"/>
         <source>sunlit patch and its window</source>
         <translation>tache de soleil et sa fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="133"/>
+        <location filename="../app/studio/docks.cpp" line="159"/>
         <source>Surfaces</source>
         <translation>Surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="133"/>
+        <location filename="../app/studio/docks.cpp" line="159"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="135"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Occluders</source>
         <translation>Masques d&apos;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="135"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Occluder %1</source>
         <translation>Masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="137"/>
+        <location filename="../app/studio/docks.cpp" line="162"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 traits devant, %2 derrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="166"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="147"/>
+        <location filename="../app/studio/docks.cpp" line="171"/>
         <source>hidden: %1</source>
         <translation>masqué : %1</translation>
     </message>
@@ -1766,7 +1932,7 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation type="vanished">Objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="145"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -1774,52 +1940,52 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::StepsDock</name>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <location filename="../app/studio/steps_dock.cpp" line="101"/>
         <source>no photo yet</source>
         <translation>pas encore de photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="93"/>
+        <location filename="../app/studio/steps_dock.cpp" line="101"/>
         <source>Open Photo…</source>
         <translation>Ouvrir une photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="95"/>
+        <location filename="../app/studio/steps_dock.cpp" line="102"/>
         <source>the box is yours</source>
         <translation>la boîte est la vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="97"/>
+        <location filename="../app/studio/steps_dock.cpp" line="104"/>
         <source>estimated: check that the back wall&apos;s corners sit on the room&apos;s corners</source>
         <translation>estimée : vérifiez que les coins du mur du fond sont sur ceux de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="98"/>
+        <location filename="../app/studio/steps_dock.cpp" line="105"/>
         <source>Accept the Box</source>
         <translation>Accepter la boîte</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="100"/>
+        <location filename="../app/studio/steps_dock.cpp" line="106"/>
         <source>being estimated…</source>
         <translation>en cours d&apos;estimation…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="102"/>
+        <location filename="../app/studio/steps_dock.cpp" line="108"/>
         <source>not found: drag the back wall&apos;s corners onto the room&apos;s corners</source>
         <translation>introuvable : faites glisser les coins du mur du fond sur ceux de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
         <source>none: objects are lit by gathered light only</source>
         <translation>aucune : les objets ne sont éclairés que par la lumière recueillie</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="106"/>
+        <location filename="../app/studio/steps_dock.cpp" line="113"/>
         <source>Outline a Light</source>
         <translation>Détourer une lumière</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/steps_dock.cpp" line="109"/>
+        <location filename="../app/studio/steps_dock.cpp" line="115"/>
         <source>%n outlined</source>
         <translation>
             <numerusform>%n détourée</numerusform>
@@ -1827,17 +1993,17 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
         <source>none yet (or drag one from the Library)</source>
         <translation>aucun pour l&apos;instant (ou faites-en glisser un de la Bibliothèque)</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="113"/>
+        <location filename="../app/studio/steps_dock.cpp" line="119"/>
         <source>Insert Model…</source>
         <translation>Insérer un modèle…</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/steps_dock.cpp" line="116"/>
+        <location filename="../app/studio/steps_dock.cpp" line="121"/>
         <source>%n in the photo</source>
         <translation>
             <numerusform>%n dans la photo</numerusform>
@@ -1845,42 +2011,42 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <location filename="../app/studio/steps_dock.cpp" line="124"/>
         <source>not yet</source>
         <translation>pas encore</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="119"/>
+        <location filename="../app/studio/steps_dock.cpp" line="124"/>
         <source>Render Final Image…</source>
         <translation>Rendre l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="121"/>
+        <location filename="../app/studio/steps_dock.cpp" line="126"/>
         <source>written to %1</source>
         <translation>écrite dans %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="149"/>
+        <location filename="../app/studio/steps_dock.cpp" line="156"/>
         <source>Steps</source>
         <translation>Étapes</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Room</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Lights</source>
         <translation>Lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/steps_dock.cpp" line="150"/>
+        <location filename="../app/studio/steps_dock.cpp" line="157"/>
         <source>Export</source>
         <translation>Export</translation>
     </message>
@@ -1888,178 +2054,178 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="323"/>
+        <location filename="../app/studio/viewport.cpp" line="320"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="322"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="327"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="328"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="331"/>
+        <location filename="../app/studio/viewport.cpp" line="328"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="332"/>
+        <location filename="../app/studio/viewport.cpp" line="329"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="334"/>
+        <location filename="../app/studio/viewport.cpp" line="331"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="339"/>
+        <location filename="../app/studio/viewport.cpp" line="337"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Faites glisser le long d’une arête dans la direction %1 (les touches X, Y, Z la choisissent).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="340"/>
+        <location filename="../app/studio/viewport.cpp" line="339"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Faites maintenant glisser le long d’une deuxième arête dans la direction %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="433"/>
+        <location filename="../app/studio/viewport.cpp" line="435"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="433"/>
+        <location filename="../app/studio/viewport.cpp" line="435"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="491"/>
+        <location filename="../app/studio/viewport.cpp" line="492"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="529"/>
+        <location filename="../app/studio/viewport.cpp" line="531"/>
         <source>%1: %2 px</source>
         <translation>%1 : %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="558"/>
+        <location filename="../app/studio/viewport.cpp" line="564"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="572"/>
+        <location filename="../app/studio/viewport.cpp" line="578"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="587"/>
+        <location filename="../app/studio/viewport.cpp" line="593"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="646"/>
+        <location filename="../app/studio/viewport.cpp" line="654"/>
         <source>%1 hidden</source>
         <translation>%1 masqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="738"/>
+        <location filename="../app/studio/viewport.cpp" line="747"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="741"/>
+        <location filename="../app/studio/viewport.cpp" line="749"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="745"/>
+        <location filename="../app/studio/viewport.cpp" line="753"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="748"/>
+        <location filename="../app/studio/viewport.cpp" line="756"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="766"/>
+        <location filename="../app/studio/viewport.cpp" line="779"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="770"/>
+        <location filename="../app/studio/viewport.cpp" line="783"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <location filename="../app/studio/viewport.cpp" line="842"/>
         <source>Before</source>
         <translation>Avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="815"/>
+        <location filename="../app/studio/viewport.cpp" line="842"/>
         <source>After</source>
         <translation>Après</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="899"/>
+        <location filename="../app/studio/viewport.cpp" line="929"/>
         <source>the left wall</source>
         <translation>le mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="900"/>
+        <location filename="../app/studio/viewport.cpp" line="930"/>
         <source>the right wall</source>
         <translation>le mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="901"/>
+        <location filename="../app/studio/viewport.cpp" line="931"/>
         <source>the back wall</source>
         <translation>le mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="902"/>
+        <location filename="../app/studio/viewport.cpp" line="932"/>
         <source>the wall behind the camera</source>
         <translation>le mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="903"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="923"/>
+        <location filename="../app/studio/viewport.cpp" line="954"/>
         <source>Turned %1°</source>
         <translation>Tourné à %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="964"/>
         <source>Height %1 m</source>
         <translation>Hauteur %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="969"/>
+        <location filename="../app/studio/viewport.cpp" line="997"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="892"/>
-        <location filename="../app/studio/viewport.cpp" line="1295"/>
+        <location filename="../app/studio/viewport.cpp" line="922"/>
+        <location filename="../app/studio/viewport.cpp" line="1320"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1227"/>
+        <location filename="../app/studio/viewport.cpp" line="1253"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
@@ -2067,42 +2233,48 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="49"/>
+        <location filename="../app/studio/main.cpp" line="52"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="54"/>
+        <location filename="../app/studio/main.cpp" line="57"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="58"/>
+        <location filename="../app/studio/main.cpp" line="61"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="62"/>
+        <location filename="../app/studio/main.cpp" line="65"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="66"/>
+        <location filename="../app/studio/main.cpp" line="69"/>
+        <source>Instead: render seconds of the shown frame to wait for.</source>
+        <translation>À la place : secondes de rendu de l&apos;image affichée à attendre.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="73"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="86"/>
+        <location filename="../app/studio/main.cpp" line="94"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="93"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
+        <location filename="../app/studio/main.cpp" line="109"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

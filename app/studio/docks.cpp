@@ -19,6 +19,7 @@
 #include <QListWidget>
 #include <QPushButton>
 #include <QSettings>
+#include <QRegularExpression>
 #include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -39,6 +40,31 @@ QString meshName(const ObjectKeys& o) {
 }
 
 const char* const kDefaultHeightKey = "insert/defaultModelHeightM";
+
+// A real surface of the room as the user reads it ("floor", "wall_left", "surface_0_top": the
+// engine's names, which the scene file's room.materials keys keep).
+QString roomSurfaceTitle(const QString& name) {
+  static const QRegularExpression marked(QStringLiteral("^surface_(\\d+)_(top|side)$"));
+  if (name == QLatin1String("floor")) return PropertiesDock::tr("Floor");
+  if (name == QLatin1String("ceiling")) return PropertiesDock::tr("Ceiling");
+  if (name == QLatin1String("wall_left")) return PropertiesDock::tr("Left wall");
+  if (name == QLatin1String("wall_right")) return PropertiesDock::tr("Right wall");
+  if (name == QLatin1String("wall_back")) return PropertiesDock::tr("Back wall");
+  if (name == QLatin1String("wall_rear")) return PropertiesDock::tr("Wall behind the camera");
+  const QRegularExpressionMatch m = marked.match(name);
+  if (!m.hasMatch()) return name;
+  const int number = m.captured(1).toInt() + 1;  // as the Scene dock counts the surfaces
+  return m.captured(2) == QLatin1String("top") ? PropertiesDock::tr("Surface %1, top").arg(number)
+                                               : PropertiesDock::tr("Surface %1, sides").arg(number);
+}
+
+// A marked surface's kind (scene file: "extrusion", "box", "stairs") as the Scene dock shows it.
+QString surfaceKindTitle(const std::string& kind) {
+  if (kind == "extrusion") return SceneTreeDock::tr("table top or step");
+  if (kind == "box") return SceneTreeDock::tr("box");
+  if (kind == "stairs") return SceneTreeDock::tr("stairs");
+  return QString::fromStdString(kind);
+}
 
 QColor displayColour(const Vec3& linear) {
   auto enc = [](double v) { return int(srgbCode8(float(v))); };
@@ -131,7 +157,7 @@ void SceneTreeDock::rebuild() {
   addMarks(tr("Shafts"), doc.shafts.size(), MarkKind::Shaft, tr("Shaft %1"),
            [](size_t) { return tr("sunlit patch and its window"); });
   addMarks(tr("Surfaces"), doc.surfaces.size(), MarkKind::Surface, tr("Surface %1"),
-           [&](size_t i) { return QString::fromStdString(doc.surfaces[i].kind); });
+           [&](size_t i) { return surfaceKindTitle(doc.surfaces[i].kind); });
   addMarks(tr("Occluders"), doc.occluders.size(), MarkKind::Occluder, tr("Occluder %1"), [&](size_t i) {
     return tr("%1 strokes in front, %2 behind")
         .arg(doc.occluders[i].foregroundScribblesPx.size())
@@ -362,20 +388,23 @@ void PropertiesDock::retranslate() {
 
 void PropertiesDock::refreshRoom() {
   const std::vector<std::string> names = document_->roomSurfaceNames();
-  const QString current = roomSurface_->currentText();
+  const QString current = roomSurface_->currentData().toString();
   {
     const QSignalBlocker block(roomSurface_);
     roomSurface_->clear();
-    for (const std::string& n : names) roomSurface_->addItem(QString::fromStdString(n));
+    for (const std::string& n : names) {
+      const QString name = QString::fromStdString(n);
+      roomSurface_->addItem(roomSurfaceTitle(name), name);  // shown in the language, keyed by name
+    }
     roomSurface_->setCurrentIndex(
-        std::max(0, roomSurface_->findText(current.isEmpty() ? QStringLiteral("floor") : current)));
+        std::max(0, roomSurface_->findData(current.isEmpty() ? QStringLiteral("floor") : current)));
   }
   const bool editable = !names.empty();
   for (QWidget* w : {static_cast<QWidget*>(roomSurface_), static_cast<QWidget*>(roomPreset_),
                      static_cast<QWidget*>(roomRoughness_)})
     w->setEnabled(editable);
   const auto& materials = document_->scene().room.materials;
-  const auto it = materials.find(roomSurface_->currentText().toStdString());
+  const auto it = materials.find(roomSurface_->currentData().toString().toStdString());
   const QSignalBlocker b1(roomPreset_), b2(roomRoughness_);
   const QString preset = it == materials.end() ? QStringLiteral("diffuse")
                                                : QString::fromStdString(it->second.preset);
@@ -385,7 +414,7 @@ void PropertiesDock::refreshRoom() {
 }
 
 void PropertiesDock::editRoomMaterial() {
-  const std::string surface = roomSurface_->currentText().toStdString();
+  const std::string surface = roomSurface_->currentData().toString().toStdString();
   const QString preset = roomPreset_->currentData().toString();
   std::optional<RoomMaterialKeys> material;
   if (preset != QLatin1String("diffuse")) {

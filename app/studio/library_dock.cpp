@@ -84,8 +84,7 @@ QString LibraryDock::translatedTitle(const QString& englishTitle) {
 void LibraryDock::load() {
   const std::string dir = modelsDir_.isEmpty() ? modelLibraryDir() : modelsDir_.toStdString();
   if (dir.empty()) {
-    problem_ = QStringLiteral(
-        "no library.json in $INLAY_MODELS_DIR, <prefix>/share/inlay/models or resources/models");
+    missing_ = true;
     return;
   }
   auto pieces = loadModelLibrary(dir);
@@ -105,9 +104,12 @@ void LibraryDock::load() {
 
 void LibraryDock::retranslate() {
   setWindowTitle(tr("Library"));
-  message_->setVisible(!problem_.isEmpty());
-  if (!problem_.isEmpty())
-    message_->setText(tr("The model library could not be shown: %1").arg(problem_));
+  const QString problem =
+      missing_
+          ? tr("no library.json in $INLAY_MODELS_DIR, <prefix>/share/inlay/models or resources/models")
+          : problem_;
+  message_->setVisible(!problem.isEmpty());
+  if (!problem.isEmpty()) message_->setText(tr("The model library could not be shown: %1").arg(problem));
   for (int i = 0; i < list_->count(); ++i) {
     QListWidgetItem* item = list_->item(i);
     const QString title = translatedTitle(item->data(kRoleTitle).toString());

@@ -48,7 +48,8 @@ class LibraryDock : public QDockWidget {
   void retranslate();
 
   QString modelsDir_;
-  QString problem_;  // why the library could not be shown (untranslated detail)
+  QString problem_;       // why the library could not be read (the reader's own words)
+  bool missing_ = false;  // no library folder was found
   LibraryList* list_;
   QLabel* message_;
 };

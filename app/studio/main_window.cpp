@@ -649,14 +649,6 @@ void MainWindow::showPrepareProgress() {
 }
 
 void MainWindow::onFrame() {
-  if (!renderer_->hasFrame()) {
-    sppLabel_->setText(tr("– spp"));
-    rateLabel_->setText(tr("– samples/s"));
-    errorLabel_->setText(tr("error –"));
-    timeLabel_->setText(tr("– s"));
-    return;
-  }
-  const CompositeImage& f = renderer_->frameInfo();
   if (viewport_->showsFinalImage()) {  // the final render's figures, not the preview's
     sppLabel_->setText(tr("final, %1 spp").arg(finalFigures_.spp));
     rateLabel_->setText(tr("– samples/s"));
@@ -665,6 +657,14 @@ void MainWindow::onFrame() {
     exportAct_->setEnabled(true);
     return;
   }
+  if (!renderer_->hasFrame()) {
+    sppLabel_->setText(tr("– spp"));
+    rateLabel_->setText(tr("– samples/s"));
+    errorLabel_->setText(tr("error –"));
+    timeLabel_->setText(tr("– s"));
+    return;
+  }
+  const CompositeImage& f = renderer_->frameInfo();
   sppLabel_->setText(f.resolutionDivider > 1 ? tr("preview 1/%1").arg(f.resolutionDivider)
                      : f.final               ? tr("%1 spp, done").arg(f.spp)
                                              : tr("%1 spp").arg(f.spp));
