@@ -60,7 +60,7 @@ if wants steps; then
   mkdir -p "$OUT/designer"
   cp "$art"/[0-9][0-9]_*.png "$art/figures.csv" "$art/final.png" "$OUT/designer/"
   montage -label '%t' "$OUT"/designer/[0-9][0-9]_*.png -tile 4x -geometry 640x400+6+6 \
-    -pointsize 15 -background white "$OUT/designer_steps.png"
+    -pointsize 15 -background white -depth 8 "$OUT/designer_steps.png"
   say "wrote $OUT/designer_steps.png"
 fi
 
