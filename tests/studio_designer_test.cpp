@@ -431,6 +431,18 @@ void StudioDesignerTest::badModelFilesGetMessagesOrSaneDefaults() {
   QCOMPARE(window->document()->objectCount(), objects + 1);
   QCOMPARE(window->document()->scene().objects.back().heightM, defaultModelHeightM());
   QCOMPARE(window->document()->undoStack()->count(), steps + 1);
+  // Lower than the ceiling but wider than the whole room (a 40 m x 2 m slab, as a teapot that
+  // says 6 m is): the default height too, and its own height keeps a model the room holds.
+  const QString slab = write(QStringLiteral("slab.gltf"), boxGltf(40, 2, 1));
+  QVERIFY(window->insertModelFile(slab));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QCOMPARE(window->document()->objectCount(), objects + 2);
+  QCOMPARE(window->document()->scene().objects.back().heightM, defaultModelHeightM());
+  const QString stool = write(QStringLiteral("stool.gltf"), boxGltf(0.4, 0.45, 0.4));
+  QVERIFY(window->insertModelFile(stool));
+  QVERIFY(waitNoPendingModels(*window, waitMs(10000)));
+  QCOMPARE(window->document()->objectCount(), objects + 3);
+  QVERIFY(std::abs(window->document()->scene().objects.back().heightM - 0.45) < 1e-6);
 }
 
 void StudioDesignerTest::dropOnATableTopStandsOnIt() {

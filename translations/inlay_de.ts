@@ -905,7 +905,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="550"/>
-        <location filename="../app/studio/main_window.cpp" line="1349"/>
+        <location filename="../app/studio/main_window.cpp" line="1374"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
@@ -977,17 +977,17 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1365"/>
+        <location filename="../app/studio/main_window.cpp" line="1390"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>Das endgültige Bild %1 wird noch gerendert (%2 % fertig). Das Rendern abbrechen? Dann wird nichts geschrieben, und eine frühere Datei dieses Namens bleibt, wie sie war.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1373"/>
+        <location filename="../app/studio/main_window.cpp" line="1398"/>
         <source>Keep Rendering</source>
         <translation>Weiter rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <location filename="../app/studio/main_window.cpp" line="1417"/>
         <source>Cancel the Render and Close</source>
         <translation>Rendern abbrechen und schließen</translation>
     </message>
@@ -1178,7 +1178,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
     <message>
         <location filename="../app/studio/main_window.cpp" line="897"/>
         <location filename="../app/studio/main_window.cpp" line="930"/>
-        <location filename="../app/studio/main_window.cpp" line="1364"/>
+        <location filename="../app/studio/main_window.cpp" line="1389"/>
         <source>Render Final Image</source>
         <translation>Endgültiges Bild rendern</translation>
     </message>
@@ -1322,92 +1322,97 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1187"/>
+        <location filename="../app/studio/main_window.cpp" line="1216"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1189"/>
+        <location filename="../app/studio/main_window.cpp" line="1218"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1204"/>
+        <location filename="../app/studio/main_window.cpp" line="1188"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1219"/>
+        <location filename="../app/studio/main_window.cpp" line="1201"/>
+        <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 ist in seiner eigenen Größe %2 m breit, breiter als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1244"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1223"/>
+        <location filename="../app/studio/main_window.cpp" line="1248"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1224"/>
+        <location filename="../app/studio/main_window.cpp" line="1249"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1233"/>
+        <location filename="../app/studio/main_window.cpp" line="1258"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1253"/>
+        <location filename="../app/studio/main_window.cpp" line="1278"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1283"/>
+        <location filename="../app/studio/main_window.cpp" line="1308"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1285"/>
+        <location filename="../app/studio/main_window.cpp" line="1310"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1310"/>
+        <location filename="../app/studio/main_window.cpp" line="1335"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1313"/>
+        <location filename="../app/studio/main_window.cpp" line="1338"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1314"/>
+        <location filename="../app/studio/main_window.cpp" line="1339"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1318"/>
+        <location filename="../app/studio/main_window.cpp" line="1343"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1319"/>
+        <location filename="../app/studio/main_window.cpp" line="1344"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1336"/>
+        <location filename="../app/studio/main_window.cpp" line="1361"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1342"/>
+        <location filename="../app/studio/main_window.cpp" line="1367"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1349"/>
+        <location filename="../app/studio/main_window.cpp" line="1374"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>

@@ -905,7 +905,7 @@ Faites-le glisser dans la photo.</translation>
     </message>
     <message>
         <location filename="../app/studio/main_window.cpp" line="550"/>
-        <location filename="../app/studio/main_window.cpp" line="1349"/>
+        <location filename="../app/studio/main_window.cpp" line="1374"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
@@ -977,17 +977,17 @@ Faites-le glisser dans la photo.</translation>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1365"/>
+        <location filename="../app/studio/main_window.cpp" line="1390"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>L&apos;image finale %1 est encore en cours de rendu (%2 % fait). Annuler le rendu ? Rien n&apos;est alors écrit, et un fichier antérieur de ce nom reste tel quel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1373"/>
+        <location filename="../app/studio/main_window.cpp" line="1398"/>
         <source>Keep Rendering</source>
         <translation>Continuer le rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <location filename="../app/studio/main_window.cpp" line="1417"/>
         <source>Cancel the Render and Close</source>
         <translation>Annuler le rendu et fermer</translation>
     </message>
@@ -1178,7 +1178,7 @@ Faites-le glisser dans la photo.</translation>
     <message>
         <location filename="../app/studio/main_window.cpp" line="897"/>
         <location filename="../app/studio/main_window.cpp" line="930"/>
-        <location filename="../app/studio/main_window.cpp" line="1364"/>
+        <location filename="../app/studio/main_window.cpp" line="1389"/>
         <source>Render Final Image</source>
         <translation>Rendre l&apos;image finale</translation>
     </message>
@@ -1322,92 +1322,97 @@ Faites-le glisser dans la photo.</translation>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1187"/>
+        <location filename="../app/studio/main_window.cpp" line="1216"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1189"/>
+        <location filename="../app/studio/main_window.cpp" line="1218"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1204"/>
+        <location filename="../app/studio/main_window.cpp" line="1188"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1219"/>
+        <location filename="../app/studio/main_window.cpp" line="1201"/>
+        <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
+        <translation>%1 mesure %2 m de large à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="1244"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1223"/>
+        <location filename="../app/studio/main_window.cpp" line="1248"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1224"/>
+        <location filename="../app/studio/main_window.cpp" line="1249"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1233"/>
+        <location filename="../app/studio/main_window.cpp" line="1258"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1253"/>
+        <location filename="../app/studio/main_window.cpp" line="1278"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1283"/>
+        <location filename="../app/studio/main_window.cpp" line="1308"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1285"/>
+        <location filename="../app/studio/main_window.cpp" line="1310"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1310"/>
+        <location filename="../app/studio/main_window.cpp" line="1335"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1313"/>
+        <location filename="../app/studio/main_window.cpp" line="1338"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1314"/>
+        <location filename="../app/studio/main_window.cpp" line="1339"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1318"/>
+        <location filename="../app/studio/main_window.cpp" line="1343"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1319"/>
+        <location filename="../app/studio/main_window.cpp" line="1344"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1336"/>
+        <location filename="../app/studio/main_window.cpp" line="1361"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1342"/>
+        <location filename="../app/studio/main_window.cpp" line="1367"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1349"/>
+        <location filename="../app/studio/main_window.cpp" line="1374"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>

@@ -1178,6 +1178,35 @@ void MainWindow::onModelLoaded(const ModelLoadResult& result, const std::optiona
   placeModel(*result.model, dropPx);
 }
 
+// Why a model at its own size (heightM high) cannot stand in the prepared room, if it cannot:
+// taller than the ceiling, or wider than the room's longest side.
+std::optional<QString> MainWindow::ownSizeMisfit(const ModelImport& model, double heightM) const {
+  if (!document_->prepared()) return std::nullopt;
+  const RoomBox& box = document_->prepared()->box;
+  const double defaultM = defaultModelHeightM();
+  if (box.ceilingM > 0 && heightM > box.ceilingM)
+    return tr("%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted "
+              "%4 m high instead (change Height in Properties).")
+        .arg(model.name)
+        .arg(heightM, 0, 'f', 2)
+        .arg(box.ceilingM, 0, 'f', 2)
+        .arg(defaultM, 0, 'f', 2);
+  const Eigen::AlignedBox3f b = model.mesh->bounds();
+  const double units = meshHeightUnits(*model.mesh);
+  if (!(units > 0)) return std::nullopt;
+  const double widthM = heightM / units *
+                        double(std::max(b.max().x() - b.min().x(), b.max().z() - b.min().z()));
+  const double roomM = std::max(box.xRightM - box.xLeftM, box.zRearM - box.zBackM);
+  if (roomM > 0 && widthM > roomM)
+    return tr("%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted "
+              "%4 m high instead (change Height in Properties).")
+        .arg(model.name)
+        .arg(widthM, 0, 'f', 2)
+        .arg(roomM, 0, 'f', 2)
+        .arg(defaultM, 0, 'f', 2);
+  return std::nullopt;
+}
+
 bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx) {
   const QString file = QFileInfo(model.path).fileName();
   const std::optional<Vec2> at = dropPx ? document_->supportPointNear(*dropPx)
@@ -1197,18 +1226,14 @@ bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx
   keys.heightM = model.heightM;
   QStringList notes = model.notes;
   bool ownSize = model.ownSize;
-  // A size the file states but the room cannot hold (a teapot taller than the ceiling) is a
-  // unit mistake of the file as much as 1 km is.
-  const double ceilingM = document_->prepared() ? document_->prepared()->box.ceilingM : 0.0;
-  if (ownSize && ceilingM > 0 && keys.heightM > ceilingM) {
-    notes << tr("%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted "
-                "%4 m high instead (change Height in Properties).")
-                 .arg(model.name)
-                 .arg(keys.heightM, 0, 'f', 2)
-                 .arg(ceilingM, 0, 'f', 2)
-                 .arg(defaultModelHeightM(), 0, 'f', 2);
-    keys.heightM = defaultModelHeightM();
-    ownSize = false;
+  // A size the file states but the room cannot hold (a teapot taller than the ceiling, or
+  // wider than the whole room) is a unit mistake of the file as much as 1 km is.
+  if (ownSize) {
+    if (const auto why = ownSizeMisfit(model, keys.heightM)) {
+      notes << *why;
+      keys.heightM = defaultModelHeightM();
+      ownSize = false;
+    }
   }
   // The file's own materials when it has any (a glTF's PBR values, an OBJ's MTL).
   const bool hasMaterials = !model.mesh->materials.empty() &&

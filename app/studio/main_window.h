@@ -182,6 +182,7 @@ class MainWindow : public QMainWindow {
   void addRecentFile(const QString& path, const char* key = "recentFiles");
   // A model file read by the worker: inserted now, kept until the scene is ready, or refused.
   void onModelLoaded(const ModelLoadResult& result, const std::optional<Vec2>& dropPx);
+  std::optional<QString> ownSizeMisfit(const ModelImport& model, double heightM) const;
   bool placeModel(const ModelImport& model, std::optional<Vec2> dropPx);
   void refuseModel(const QString& text);
   void rebuildRecentMenu();
