@@ -293,13 +293,10 @@ struct PathTracer::Impl {
     if (id < surfaceCount) {
       hit.kind = Hit::Kind::Room;
       hit.index = int(id);
-      const TriangleMesh& m = scene_surface(id);
-      const auto& tri = m.triangles[rh.hit.primID];
-      const Vec3 a = m.positions[tri[0]].cast<double>(), b = m.positions[tri[1]].cast<double>(),
-                 c = m.positions[tri[2]].cast<double>();
-      hit.geometricNormal = safeNormal((b - a).cross(c - a), dir);
+      const RoomTriangle& tri = roomTriangles[id][rh.hit.primID];
+      hit.geometricNormal = tri.normalValid ? tri.normal : Vec3(-dir);  // safeNormal()
       hit.shadingNormal = hit.geometricNormal;
-      hit.roundOffM = triangleRoundOff(a, b, c);
+      hit.roundOffM = tri.roundOffM;
       hit.texel = room.texelShowing(hit.index, hit.point);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
@@ -339,7 +336,33 @@ struct PathTracer::Impl {
     return hit;
   }
 
-  const TriangleMesh& scene_surface(unsigned id) const { return scene.room.surfaces[id].meshWorld; }
+  // What intersect() needs of a room triangle, worked out once (the same arithmetic as per hit).
+  struct RoomTriangle {
+    Vec3 normal = Vec3::Zero();  // unit; see normalValid
+    double roundOffM = 0;
+    bool normalValid = false;  // false: a degenerate triangle, whose normal faces the ray
+  };
+  std::vector<std::vector<RoomTriangle>> roomTriangles;  // per surface, per triangle
+  void buildRoomTriangles() {
+    roomTriangles.resize(surfaceCount);
+    for (unsigned id = 0; id < surfaceCount; ++id) {
+      const TriangleMesh& m = scene.room.surfaces[id].meshWorld;
+      roomTriangles[id].resize(m.triangles.size());
+      for (size_t k = 0; k < m.triangles.size(); ++k) {
+        const auto& tri = m.triangles[k];
+        if (tri[0] >= m.positions.size() || tri[1] >= m.positions.size() || tri[2] >= m.positions.size())
+          continue;  // never attached (attachTriangles skips it)
+        const Vec3 a = m.positions[tri[0]].cast<double>(), b = m.positions[tri[1]].cast<double>(),
+                   c = m.positions[tri[2]].cast<double>();
+        const Vec3 n = (b - a).cross(c - a);
+        const double len = n.norm();
+        RoomTriangle& r = roomTriangles[id][k];
+        r.normalValid = len > 0 && std::isfinite(len);
+        if (r.normalValid) r.normal = n / len;
+        r.roundOffM = triangleRoundOff(a, b, c);
+      }
+    }
+  }
 
   static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
     const double len = n.norm();
@@ -1201,6 +1224,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
+  d.buildRoomTriangles();
   for (unsigned i = 0; i < d.surfaceCount; ++i) {
     attachTriangles(d.device, d.withScene, i, scene.room.surfaces[i].meshWorld);
     attachTriangles(d.device, d.withoutScene, i, scene.room.surfaces[i].meshWorld);
