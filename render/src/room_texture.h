@@ -1,0 +1,93 @@
+// Internal: the room's projective texture (ProjectedAlbedo) as the path tracer reads it at every
+// room hit. ProjectedAlbedo keeps a pixel's first surface, albedo, photo radiance and whether
+// that radiance is usable in four arrays, so a bounce landing on the room touched three or four
+// cache lines in different places of memory; here they sit in one 32-byte record per pixel (one
+// line), and the projection runs inline. Every answer is ProjectedAlbedo's to the bit
+// (pixelShowing, albedoAtPixel, radianceAtPixel: the same arithmetic in the same order).
+#pragma once
+
+#include "inlay/render/scene.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace inlay::detail {
+
+class RoomTexture {
+ public:
+  struct alignas(32) Texel {
+    float albedo[3];          // albedo.rgb() of the pixel
+    int32_t surface;          // firstSurfacePerPixel (-1: none)
+    float radiance[3];        // photoRadiance.rgb() of the pixel
+    uint32_t radianceUsable;  // radianceAtPixel() would answer true
+  };
+  static_assert(sizeof(Texel) == 32);
+
+  RoomTexture() = default;
+  explicit RoomTexture(const ProjectedAlbedo& pa) : surfaceMean_(pa.surfaceMean) {
+    const int w = pa.albedo.width, h = pa.albedo.height;
+    // pixelShowing()'s conditions for any answer at all.
+    if (pa.albedo.empty() || pa.firstSurfacePerPixel.size() != size_t(w) * h || pa.camera.widthPx <= 0 ||
+        pa.camera.heightPx <= 0)
+      return;
+    const ImageF& photo = pa.photoRadiance;
+    const bool photoUsable = photo.channels >= 3 && photo.width == w && photo.height == h &&
+                             pa.photoRadianceUsable.size() == size_t(w) * h;
+    texels_.resize(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t i = size_t(y) * w + x;
+        Texel& t = texels_[i];
+        const Vec3 a = pa.albedo.rgb(x, y);
+        const Vec3 r = photoUsable ? photo.rgb(x, y) : Vec3(Vec3::Zero());
+        for (int c = 0; c < 3; ++c) t.albedo[c] = float(a[c]), t.radiance[c] = float(r[c]);
+        t.surface = pa.firstSurfacePerPixel[i];
+        t.radianceUsable = photoUsable && pa.photoRadianceUsable[i] && r.allFinite();
+      }
+    cameraFromWorld_ = pa.camera.cameraFromWorld();
+    centre_ = pa.camera.centreWorld();
+    principal_ = pa.camera.principalPx;
+    focal_ = pa.camera.focalPx;
+    width_ = w, height_ = h;
+    cameraWidth_ = pa.camera.widthPx, cameraHeight_ = pa.camera.heightPx;
+  }
+
+  // ProjectedAlbedo::pixelShowing() as its texel; null where that is nullopt.
+  const Texel* texelShowing(int surfaceId, const Vec3& pointWorld) const {
+    if (texels_.empty()) return nullptr;
+    // Camera::project(), then pixelShowing()'s scaling and test.
+    const Vec3 c = cameraFromWorld_ * (pointWorld - centre_);
+    if (!(c.z() < -1e-12)) return nullptr;
+    const double inv = 1.0 / -c.z();
+    const double px = principal_.x() + focal_ * c.x() * inv, py = principal_.y() - focal_ * c.y() * inv;
+    const double x = px * double(width_) / cameraWidth_, y = py * double(height_) / cameraHeight_;
+    if (!(x >= 0 && y >= 0 && x < width_ && y < height_)) return nullptr;
+    const Texel& t =
+        texels_[size_t(std::min(height_ - 1, int(y))) * width_ + size_t(std::min(width_ - 1, int(x)))];
+    return t.surface == surfaceId ? &t : nullptr;
+  }
+  // ProjectedAlbedo::albedoAtPixel().
+  Vec3 albedo(int surfaceId, const Texel* t) const {
+    if (t) return Vec3(t->albedo[0], t->albedo[1], t->albedo[2]);
+    const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean_.size();
+    return haveMean ? surfaceMean_[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
+  }
+  // ProjectedAlbedo::radianceAtPixel().
+  static bool radiance(const Texel* t, Vec3* radiance) {
+    if (!t || !t->radianceUsable) return false;
+    *radiance = Vec3(t->radiance[0], t->radiance[1], t->radiance[2]).cwiseMax(0.0);
+    return true;
+  }
+
+ private:
+  std::vector<Texel> texels_;  // albedo.width x albedo.height; empty: no pixel shows anything
+  std::vector<Vec3> surfaceMean_;
+  Mat3 cameraFromWorld_ = Mat3::Identity();
+  Vec3 centre_ = Vec3::Zero();
+  Vec2 principal_ = Vec2::Zero();
+  double focal_ = 1;
+  int width_ = 0, height_ = 0, cameraWidth_ = 1, cameraHeight_ = 1;
+};
+
+}  // namespace inlay::detail
