@@ -32,6 +32,9 @@ against full's, and the median against render seconds); prints the tables.
 
 usage: bench_camera_budget.py INLAY_CLI [--out DIR] [--rooms A|B|t01,t03] [--cameras 3]
                               [--readings full,true_curve,...] [--spp 16] [--rescore]
+                              [--from-csv F1,F2,...]
+  --from-csv  measure nothing: summarise and plot the rows of these camera_budget.csv files (e.g.
+              runs that split the rooms between two processes)
 """
 import copy, importlib.util, json, os, statistics, subprocess, sys, time
 
@@ -134,7 +137,7 @@ def insert(cli, vdir, work, response, spp, rescore):
     return row
 
 
-def measure(cli, cv, room_dir, seeds, readings, out, spp, rescore):
+def measure(cli, cv, room_dir, seeds, readings, out, spp, rescore, progress):
     room = os.path.basename(room_dir)
     rows = []
     todo = [("plain", "plain")] if "plain" in readings else []
@@ -147,7 +150,12 @@ def measure(cli, cv, room_dir, seeds, readings, out, spp, rescore):
         else:
             cam = photograph(cv, room_dir, vdir, int(kind[1:]), "full" if reading == "true_curve" else reading)
         if reading == "jpeg" and not cam_of(cv, int(kind[1:]))["jpeg_quality"]:
-            continue  # the camera writes no JPEG: the reading is `full`
+            # the camera writes no JPEG: the reading is `full` (its row, not rendered again)
+            same = next((dict(r) for r in rows if r["camera"] == kind and r["reading"] == "full"), None)
+            if same:
+                same.update({"reading": "jpeg", "note": "no JPEG: the full camera's run"})
+                rows.append(same)
+            continue
         response = None
         if reading == "true_curve":
             p, t, s = br.true_family_params(cam)
@@ -158,7 +166,15 @@ def measure(cli, cv, room_dir, seeds, readings, out, spp, rescore):
                           rescore))
         rows.append(row)
         print(json.dumps(row), flush=True)
+        progress(rows)
     return rows
+
+
+def num(v):
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        return v
 
 
 def cam_of(cv, seed):
@@ -172,16 +188,23 @@ def summarise(rows, readings):
             if r["reading"] == "full" and isinstance(r.get("object_rmse"), float)}
     plain = [r["object_rmse"] for r in rows if r["reading"] == "plain" and isinstance(r.get("object_rmse"), float)]
     pm = statistics.median(plain) if plain else float("nan")
+    wanted = [r for r in readings if r != "plain"]
+    have = {}
+    for r in rows:
+        if isinstance(r.get("object_rmse"), float):
+            have.setdefault((r["room"], r["camera"]), set()).add(r["reading"])
+    complete = {k for k, got in have.items() if k[1] != "plain" and all(w in got for w in wanted)}
     out = []
     for reading in readings:
         sel = [r for r in rows if r["reading"] == reading and isinstance(r.get("object_rmse"), float)]
         if not sel:
             continue
-        # a reading skipped because it equals `full` (no JPEG) counts as full's value
         vals = {(r["room"], r["camera"]): r["object_rmse"] for r in sel}
-        if reading not in ("plain", "full"):
-            vals = {k: vals.get(k, v) for k, v in full.items()}
+        if reading != "plain":  # only the variants every reading measured (a run may be cut short)
+            vals = {k: v for k, v in vals.items() if k in complete}
         v = list(vals.values())
+        if not v:
+            continue
         d = [vals[k] - full[k] for k in vals if k in full]
         s = {"reading": reading, "variants": len(v), "median_object_rmse": round(statistics.median(v), 4),
              "mean_object_rmse": round(statistics.mean(v), 4), "over_plain": round(statistics.median(v) / pm, 3),
@@ -229,10 +252,15 @@ def main():
     os.makedirs(out, exist_ok=True)
     cv = camera_tool()
     rows = []
+    if opt("--from-csv", ""):
+        names = []
+        for path in opt("--from-csv", "").split(","):
+            rows += [{k: num(v) for k, v in r.items()} for r in benchlib.read_csv(path)]
+        benchlib.write_csv(os.path.join(out, "camera_budget.csv"), rows)
     for name in names:
         rows += measure(cli, cv, os.path.join(sdir, name), seeds, readings, out, int(opt("--spp", "16")),
-                        "--rescore" in sys.argv)
-        benchlib.write_csv(os.path.join(out, "camera_budget.csv"), rows)
+                        "--rescore" in sys.argv, lambda done: benchlib.write_csv(
+                            os.path.join(out, "camera_budget.csv"), rows + done))
     summary = summarise(rows, readings)
     benchlib.write_csv(os.path.join(out, "camera_budget_summary.csv"), summary)
     cols = ["reading", "variants", "median_object_rmse", "mean_object_rmse", "over_plain", "median_change_vs_full",
