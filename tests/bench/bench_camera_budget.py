@@ -186,14 +186,16 @@ def summarise(rows, readings):
     median, and the median change against `full` on the same variants."""
     full = {(r["room"], r["camera"]): r["object_rmse"] for r in rows
             if r["reading"] == "full" and isinstance(r.get("object_rmse"), float)}
-    plain = [r["object_rmse"] for r in rows if r["reading"] == "plain" and isinstance(r.get("object_rmse"), float)]
-    pm = statistics.median(plain) if plain else float("nan")
     wanted = [r for r in readings if r != "plain"]
     have = {}
     for r in rows:
         if isinstance(r.get("object_rmse"), float):
             have.setdefault((r["room"], r["camera"]), set()).add(r["reading"])
     complete = {k for k, got in have.items() if k[1] != "plain" and all(w in got for w in wanted)}
+    rooms = {k[0] for k in complete}
+    plain = [r["object_rmse"] for r in rows if r["reading"] == "plain" and r["room"] in rooms
+             and isinstance(r.get("object_rmse"), float)]
+    pm = statistics.median(plain) if plain else float("nan")
     out = []
     for reading in readings:
         sel = [r for r in rows if r["reading"] == reading and isinstance(r.get("object_rmse"), float)]
@@ -202,6 +204,8 @@ def summarise(rows, readings):
         vals = {(r["room"], r["camera"]): r["object_rmse"] for r in sel}
         if reading != "plain":  # only the variants every reading measured (a run may be cut short)
             vals = {k: v for k, v in vals.items() if k in complete}
+        else:
+            vals = {k: v for k, v in vals.items() if k[0] in rooms}
         v = list(vals.values())
         if not v:
             continue
@@ -221,18 +225,19 @@ def plot(path, rows, summary):
     with benchlib.figure(path, 1, 2, figsize=(13, 5)) as ax:
         if ax is None:
             return
-        for i, s in enumerate(x for x in summary if x["reading"] not in ("plain", "full")):
+        colour = {name: "C%d" % i for i, name in enumerate(READINGS)}
+        for s in (x for x in summary if x["reading"] not in ("plain", "full")):
             pts = [(full[(r["room"], r["camera"])], r["object_rmse"]) for r in rows
                    if r["reading"] == s["reading"] and (r["room"], r["camera"]) in full
                    and isinstance(r.get("object_rmse"), float)]
-            ax[0].plot([p[0] for p in pts], [p[1] for p in pts], "o", color="C%d" % i, label=s["reading"])
+            ax[0].plot([p[0] for p in pts], [p[1] for p in pts], "o", color=colour[s["reading"]], label=s["reading"])
         lim = max(list(full.values()) + [0.1]) * 1.05
         ax[0].plot([0, lim], [0, lim], "k--", lw=0.8)
         ax[0].set(xlabel="object RMSE, full camera (auto)", ylabel="object RMSE, component swapped for the truth",
                   title="one camera component set right (below the line: it cost that much)")
         ax[0].legend(fontsize=7)
-        for i, s in enumerate(summary):
-            ax[1].plot(s["median_render_s"], s["median_object_rmse"], "o", color="C%d" % i)
+        for s in summary:
+            ax[1].plot(s["median_render_s"], s["median_object_rmse"], "o", color=colour[s["reading"]])
             ax[1].annotate(s["reading"], (s["median_render_s"], s["median_object_rmse"]), fontsize=7)
         ax[1].set(xlabel="median render wall s", ylabel="median object RMSE",
                   title="median object RMSE per reading against run time")
