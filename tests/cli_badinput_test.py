@@ -73,6 +73,12 @@ def main():
     check("response needs -o", r.returncode == 2 and "-o" in r.stderr, r.stderr)
     r = run(cli, "response", photo, "-o", out, "--cue", "wavelet")
     check("response bad --cue", r.returncode == 2 and "--cue" in r.stderr, r.stderr)
+    for q in ("0", "1.5", "nan", "x"):
+        r = run(cli, "response", photo, "-o", out, "--noise-quantile", q)
+        check("response bad --noise-quantile " + q, r.returncode == 2 and "--noise-quantile" in r.stderr, r.stderr)
+    r = run(cli, "response", photo, "-o", out, "--quiet", "--cue", "noise", "--noise-quantile", "0.25")
+    check("response --noise-quantile 0.25", r.returncode == 0 and json.load(open(out))["estimate"]["noise_quantile"] == 0.25,
+          r.stderr)
 
     # The README's first command: `demo` renders the bundled example wherever it is run from.
     demo = os.path.join(tmp, "example.png")

@@ -42,7 +42,8 @@ constexpr const char* kUsage = R"(Usage:
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
   inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
-                   [--min-improvement F] [--min-srgb-residual R] [--evaluate-at P,T,S]
+                   [--min-improvement F] [--min-srgb-residual R] [--noise-quantile Q]
+                   [--evaluate-at P,T,S]
                                                      the camera response (camera.response, or
                                                      estimated from the photo): family,
                                                      parameters, warnings and the 256 codes'
@@ -135,7 +136,7 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, cue, report;  // cue: empty = the default
-  std::optional<double> prior, minImprovement, minSrgbResidual;
+  std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
@@ -180,7 +181,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report" ||
-        s == "--min-srgb-residual" || s == "--working-mp") {
+        s == "--min-srgb-residual" || s == "--noise-quantile" || s == "--working-mp") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -207,6 +208,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       } else if (s == "--min-srgb-residual") {
         a.minSrgbResidual = parseNumber<double>(*v);
         if (!a.minSrgbResidual) return "--min-srgb-residual: '" + *v + "' is not a non-negative number";
+      } else if (s == "--noise-quantile") {
+        a.noiseQuantile = parseNumber<double>(*v);
+        if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
+          return "--noise-quantile: '" + *v + "' is not a number in (0, 1]";
       } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -683,6 +688,7 @@ int commandResponse(const std::string& input, const Args& a) {
   if (a.prior) o.priorWeight = *a.prior;
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
   if (a.minSrgbResidual) o.minSrgbResidual = *a.minSrgbResidual;
+  if (a.noiseQuantile) o.noiseQuantile = *a.noiseQuantile;
   if (!a.evaluateAt.empty()) {
     ResponseParams q;
     if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
@@ -730,6 +736,7 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"shape_prior_weight", o.shapePriorWeightOrDefault()},
                      {"min_improvement", o.minImprovementOrDefault()},
                      {"min_srgb_residual", o.minSrgbResidualOrDefault()},
+                     {"noise_quantile", o.noiseQuantileOrDefault()},
                      {"edges_used", e.edgesUsed},
                      {"noise_bins", e.noiseBins},
                      {"segments_found", e.segmentsFound},

@@ -49,10 +49,14 @@ void flatBlocksOf(const std::vector<unsigned char>& codes, int W, int H, int c,
     }
 }
 
-double medianOf(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-  return v[v.size() / 2];
+// The q-quantile (nearest rank) of a non-empty list; q = 0.5 is the median.
+double quantileOf(std::vector<double> v, double q) {
+  const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return v[k];
 }
+
+double medianOf(std::vector<double> v) { return quantileOf(std::move(v), 0.5); }
 
 // g at a fractional code, by linear interpolation.
 double at(const std::array<double, 256>& g, double code) {
@@ -63,8 +67,10 @@ double at(const std::array<double, 256>& g, double code) {
 
 }  // namespace
 
-NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int H) {
+NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int H,
+                             double sigmaQuantile) {
   NoiseLevel out;
+  const double q = std::isnan(sigmaQuantile) ? 0.5 : std::clamp(sigmaQuantile, 0.0, 1.0);
   std::vector<BlockPoint> points;
   if (W > kBlock + 2 && H > kBlock + 2 && codes.size() >= size_t(W) * size_t(H) * 3)
     for (int c = 0; c < 3; ++c) flatBlocksOf(codes, W, H, c, points);
@@ -77,7 +83,7 @@ NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int
                  i1 = points.size() * size_t(b + 1) / size_t(bins);
     std::vector<double> code, sigma;
     for (size_t i = i0; i < i1; ++i) code.push_back(points[i].code), sigma.push_back(points[i].sigma);
-    out.bins.push_back({medianOf(code), medianOf(sigma), int(i1 - i0)});
+    out.bins.push_back({medianOf(code), quantileOf(sigma, q), int(i1 - i0)});
   }
   if (int(out.bins.size()) < kMinBins) {
     out.undetermined = "too few flat regions to measure the noise (" + std::to_string(points.size()) +

@@ -32,8 +32,11 @@ struct NoiseLevel {
 // Every channel's 8 x 8 blocks that are flat (apart from a linear gradient) and unclipped give
 // one (mean code, noise) point: the RMS of the residual of each pixel against its four
 // neighbours' mean. The points are split into up to 12 bins of equal count by code; each bin's
-// medians form the noise level function. `codes`: W x H x 3 interleaved 8-bit codes.
-NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int H);
+// median code and the `sigmaQuantile` quantile of its blocks' noise (0.5: the median; lower: the
+// lower envelope, which texture and uneven lighting inflate less) form the noise level function.
+// `codes`: W x H x 3 interleaved 8-bit codes; sigmaQuantile is clamped to [0, 1] (NaN: 0.5).
+NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int H,
+                             double sigmaQuantile = 0.5);
 
 // How far the noise level, decoded by `g` (code -> linear, 256 strictly increasing values), is
 // from a variance a + b x + c x^2 with a, b, c >= 0 (best fit, relative to each bin's

@@ -568,7 +568,7 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   std::vector<Edge> edges;
   detail::NoiseLevel noise;
   if (options.cue == ResponseEstimateOptions::Cue::Noise) {
-    noise = detail::measureNoiseLevel(codes, img.width, img.height);
+    noise = detail::measureNoiseLevel(codes, img.width, img.height, options.noiseQuantileOrDefault());
     out.noiseBins = int(noise.bins.size());
     if (!noise.undetermined.empty()) return undetermined(noise.undetermined);
   } else if (std::string why = cleanEdgesOf(img, codes, options, edges, out.segmentsFound);

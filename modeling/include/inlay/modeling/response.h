@@ -141,6 +141,12 @@ struct ResponseEstimateOptions {
   double minSrgbResidualOrDefault() const {
     return minSrgbResidual.value_or(cue == Cue::Noise ? 0.5 : 0.0);
   }
+  // Noise cue: the quantile of the flat blocks' noise that stands for each code bin (0.5: the
+  // median). Texture and a rendered photo's uneven lighting only add variance to a block, so a
+  // lower quantile follows the sensor's noise more closely. Unset: kDefaultNoiseQuantile.
+  std::optional<double> noiseQuantile;
+  static constexpr double kDefaultNoiseQuantile = 0.5;
+  double noiseQuantileOrDefault() const { return noiseQuantile.value_or(kDefaultNoiseQuantile); }
   int maxSegments = 300;        // line segments considered (the longest)
   double minEdgeLengthPx = 20;  // shorter segments are skipped
   const CancelToken* cancel = nullptr;
