@@ -352,8 +352,9 @@ TEST(LightRefine, AnOutlinedLightStaysWithinItsOutlinesUncertainty) {
   ASSERT_TRUE(finiteLights(*res));
   const Vec3 d0 = res->lights[0].centre() - start[0].centre();
   EXPECT_LE(d0.cwiseAbs().maxCoeff(), specs[0].maxDisplacementM + 1e-9);
-  const double free1 = (start[1].centre() - r.truth[1].centre()).norm();
-  EXPECT_LT((res->lights[1].centre() - r.truth[1].centre()).norm(), 0.5 * free1);
+  // The other light, placed in 3D, is not held.
+  EXPECT_GT((res->lights[1].centre() - start[1].centre()).cwiseAbs().maxCoeff(),
+            2 * specs[0].maxDisplacementM);
 
   // The bound's two regimes, and no bound without an outline or a usable camera.
   const Vec2 p = *r.camera.project(start[0].centre());
@@ -362,6 +363,7 @@ TEST(LightRefine, AnOutlinedLightStaysWithinItsOutlinesUncertainty) {
   EXPECT_NEAR(outlineDisplacementBoundM(r.camera, start[0], onePixel, o),
               o.outlineUncertaintyPx * metresPerPx, 1e-12);
   const std::vector<Vec2> wide = {p, p + Vec2(60, 0), p + Vec2(60, 80)};
+  o.outlineUncertaintyFraction = 0.25;
   EXPECT_NEAR(outlineDisplacementBoundM(r.camera, start[0], wide, o),
               o.outlineUncertaintyFraction * 100 * metresPerPx, 1e-12);
   EXPECT_TRUE(std::isinf(outlineDisplacementBoundM(r.camera, start[0], {}, o)));
