@@ -927,7 +927,7 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   if (p.opt.keepBetterFit && refitIsWorse(ps.lighting.fitRmsLog, again->fitRmsLog)) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
-                  "the refined lights fit the photo worse (log residual %.4f against %.4f): the "
+                  "the refined lights fit the photo worse (log residual %.5f against %.5f): the "
                   "lights as first estimated are kept",
                   again->fitRmsLog, ps.lighting.fitRmsLog);
     ps.warnings.push_back(std::string("lighting (refit): ") + buf);
