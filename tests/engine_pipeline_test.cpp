@@ -416,7 +416,7 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
 
 // After the refinement the lighting is fitted again; the preparation keeps whichever of the
 // first estimate and that refit explains the photo better (the smaller LightingEstimate::
-// fitRmsLog), and says so when it keeps the first. An outlined light never moves farther than
+// fitRmsLog), and says so in the refit stage's detail when it keeps the first. An outlined light never moves farther than
 // its outline's uncertainty (lighting/refine.h, outlineDisplacementBoundM).
 TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
   const SceneDoc doc = exampleDoc();
@@ -429,8 +429,9 @@ TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
   const double refit = refitted->lighting.fitRmsLog;
   ASSERT_TRUE(std::isfinite(refit) && std::isfinite(kept->lighting.fitRmsLog));
   bool warned = false;
-  for (const auto& w : kept->warnings)
-    warned = warned || w.find("first estimated are kept") != std::string::npos;
+  for (const auto& stage : kept->stages)
+    warned = warned || stage.detail.find("first estimate fits the photo better") != std::string::npos;
+  for (const auto& w : kept->warnings) EXPECT_EQ(w.find("first estimate"), std::string::npos) << w;
   // Kept: the first estimate, which fits better than the refit; else the refit itself.
   const auto& chosen = warned ? kept->initialLights : refitted->renderScene.lights;
   if (warned) EXPECT_LT(kept->lighting.fitRmsLog, refit);

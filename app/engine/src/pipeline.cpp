@@ -925,15 +925,16 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   if (!again) return p.cancelled() ? cancelledError() : again.error();
   // ps.lighting is still the first estimate's fit (the refinement changed only its lights).
   if (p.opt.keepBetterFit && refitIsWorse(ps.lighting.fitRmsLog, again->fitRmsLog)) {
+    // A routine self-check, not something the user must act on: the stage's detail (the
+    // report, --verbose, the studio's log) says it, the warnings do not.
     char buf[200];
     std::snprintf(buf, sizeof buf,
-                  "the refined lights fit the photo worse (log residual %.5f against %.5f): the "
-                  "lights as first estimated are kept",
-                  again->fitRmsLog, ps.lighting.fitRmsLog);
-    ps.warnings.push_back(std::string("lighting (refit): ") + buf);
+                  "a light moved; the first estimate fits the photo better (log residual %.5f "
+                  "against %.5f) and is kept",
+                  ps.lighting.fitRmsLog, again->fitRmsLog);
     ps.lighting.lights = ps.initialLights;
     ps.lighting.suns = ps.initialSuns;
-    detail = "a light moved; the first estimate fits better and is kept";
+    detail = buf;
     return {};
   }
   ps.lighting = std::move(*again);
