@@ -380,11 +380,13 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   ASSERT_FALSE(ps->refinement.history.empty());
   EXPECT_LE(ps->refinement.finalObjective, ps->refinement.initialObjective);
   ASSERT_EQ(ps->renderScene.lights.size(), ps->initialLights.size());
+  // The render takes the preparation's lights: refined and fitted again, or the first estimate
+  // when that fits the photo better (the next test).
   bool anyChanged = false;
   for (size_t j = 0; j < ps->initialLights.size(); ++j) {
-    EXPECT_EQ(ps->renderScene.lights[j].centre(), ps->refinement.lights[j].centre());
+    EXPECT_EQ(ps->renderScene.lights[j].centre(), ps->lighting.lights[j].centre());
     EXPECT_EQ(ps->renderScene.lights[j].radiance, ps->lighting.lights[j].radiance);
-    anyChanged = anyChanged || ps->renderScene.lights[j].radiance != ps->initialLights[j].radiance;
+    anyChanged = anyChanged || ps->refinement.lights[j].radiance != ps->initialLights[j].radiance;
   }
   EXPECT_TRUE(anyChanged);
 
@@ -393,7 +395,8 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   ASSERT_TRUE(locked.ok());
   EXPECT_EQ(locked->renderScene.lights[0].radiance, locked->initialLights[0].radiance);
   EXPECT_EQ(locked->renderScene.lights[0].centre(), locked->initialLights[0].centre());
-  EXPECT_NE(locked->renderScene.lights[1].radiance, locked->initialLights[1].radiance);
+  EXPECT_EQ(locked->refinement.lights[0].radiance, locked->initialLights[0].radiance);
+  EXPECT_NE(locked->refinement.lights[1].radiance, locked->initialLights[1].radiance);
 
   PrepareOptions initial;
   initial.refineLights = false;
@@ -409,6 +412,44 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
   }
   for (size_t j = 0; j < unrefined->initialLights.size(); ++j)
     EXPECT_EQ(unrefined->renderScene.lights[j].radiance, unrefined->initialLights[j].radiance);
+}
+
+// After the refinement the lighting is fitted again; the preparation keeps whichever of the
+// first estimate and that refit explains the photo better (the smaller LightingEstimate::
+// fitRmsLog), and says so in the refit stage's detail when it keeps the first. An outlined light never moves farther than
+// its outline's uncertainty (lighting/refine.h, outlineDisplacementBoundM).
+TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
+  const SceneDoc doc = exampleDoc();
+  auto kept = preparedExample();
+  ASSERT_TRUE(kept.ok()) << kept.error().message();
+  PrepareOptions always;
+  always.keepBetterFit = false;
+  auto refitted = prepareScene(doc, always);
+  ASSERT_TRUE(refitted.ok());
+  const double refit = refitted->lighting.fitRmsLog;
+  ASSERT_TRUE(std::isfinite(refit) && std::isfinite(kept->lighting.fitRmsLog));
+  bool warned = false;
+  for (const auto& stage : kept->stages)
+    warned = warned || stage.detail.find("first estimate fits the photo better") != std::string::npos;
+  for (const auto& w : kept->warnings) EXPECT_EQ(w.find("first estimate"), std::string::npos) << w;
+  // Kept: the first estimate, which fits better than the refit; else the refit itself.
+  const auto& chosen = warned ? kept->initialLights : refitted->renderScene.lights;
+  if (warned) EXPECT_LT(kept->lighting.fitRmsLog, refit);
+  else EXPECT_EQ(kept->lighting.fitRmsLog, refit);
+  ASSERT_EQ(kept->renderScene.lights.size(), chosen.size());
+  for (size_t j = 0; j < chosen.size(); ++j) {
+    EXPECT_EQ(kept->renderScene.lights[j].radiance, chosen[j].radiance) << j;
+    EXPECT_EQ(kept->renderScene.lights[j].centre(), chosen[j].centre()) << j;
+  }
+  // The example's lights are outlined: each refined one stays within its outline's bound.
+  const PreparedScene& r = *refitted;
+  for (size_t j = 0; j < doc.lights.size(); ++j) {
+    if (doc.lights[j].kind != LightKeys::Kind::PolygonPx) continue;
+    const double bound =
+        outlineDisplacementBoundM(r.camera, r.initialLights[j], doc.lights[j].pointsPx, {});
+    const Vec3 moved = r.refinement.lights[j].centre() - r.initialLights[j].centre();
+    EXPECT_LE(moved.cwiseAbs().maxCoeff(), bound + 1e-9) << j;
+  }
 }
 
 }  // namespace

@@ -801,3 +801,75 @@ TEST(Lighting, ResidualShowsTheVignettingPutOnAPhoto) {
 
 }  // namespace
 }  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// A ceiling panel behind the camera (out of view), centred at x, between the camera and the
+// wall behind it.
+AreaLight panelBehindCamera(double x, const Vec3& radiance) {
+  AreaLight L;
+  const double y = 2.699;
+  L.cornersWorld = {Vec3(x - 0.25, y, 0.05), Vec3(x - 0.25, y, 0.4), Vec3(x + 0.25, y, 0.4),
+                    Vec3(x + 0.25, y, 0.05)};
+  if (L.normal().y() > 0) std::swap(L.cornersWorld[1], L.cornersWorld[3]);
+  L.radiance = radiance;
+  return L;
+}
+
+// Several estimated lights out of view share one radiance (LightingOptions::tieLightsOutOfView),
+// with a note; the light in view keeps its own; off, each has its own. Stiff: two lights at one
+// place, and a light the photo has no light of (the room lit by the others), stay finite.
+TEST(Lighting, LightsOutOfViewShareOneRadiance) {
+  SyntheticRoom r = makeRoom(Vec3(8, 8, 8), 1);
+  // The room's panel moved to the back of the ceiling, where the photo shows it.
+  for (auto& c : r.light.cornersWorld) c.z() -= 1.8;
+  r.lightOutlinePx.clear();
+  for (const Vec3& c : r.light.cornersWorld) r.lightOutlinePx.push_back(*r.camera.project(c));
+  const auto seen = r.camera.project(r.light.centre());
+  ASSERT_TRUE(seen && seen->y() > 0 && seen->y() < r.camera.heightPx);
+  const AreaLight left = panelBehindCamera(-1.2, Vec3(10, 10, 10)),
+                  right = panelBehindCamera(1.2, Vec3(30, 30, 30));
+  ASSERT_LT(r.camera.depthOf(left.centre()), 0);  // behind the camera: out of view
+  r.photo = renderRoom(r, {r.light, left, right}, {}, 16);
+  LightingOptions opt;
+  opt.gatherSamples = 16;
+  opt.gatherStride = 3;
+  opt.objective = false;
+  std::vector<AreaLight> given = {r.light, left, right};
+  for (auto& L : given) L.radiance = Vec3(1, 1, 1);
+  const ImageF mask = lightMaskOf(r);
+  auto tied = estimateLighting(r.photo, r.camera, r.geometry, given, {true, true, true}, mask, {}, opt);
+  ASSERT_TRUE(tied.ok()) << tied.error().message();
+  EXPECT_EQ(tied->lights[1].radiance, tied->lights[2].radiance);
+  EXPECT_NE(tied->lights[0].radiance, tied->lights[1].radiance);
+  bool noted = false;
+  for (const auto& n : tied->notes)
+    noted = noted || n.find("lights 1, 2 are out of view") != std::string::npos;
+  EXPECT_TRUE(noted);
+  for (const auto& L : tied->lights) EXPECT_TRUE(L.radiance.allFinite() && L.radiance.minCoeff() >= 0);
+
+  LightingOptions free = opt;
+  free.tieLightsOutOfView = false;
+  auto untied =
+      estimateLighting(r.photo, r.camera, r.geometry, given, {true, true, true}, mask, {}, free);
+  ASSERT_TRUE(untied.ok());
+  EXPECT_NE(untied->lights[1].radiance, untied->lights[2].radiance);
+  for (const auto& L : untied->lights) EXPECT_TRUE(L.radiance.allFinite() && L.radiance.minCoeff() >= 0);
+
+  // Two lights at one place, and the photo without the left light's light: finite.
+  {
+    auto twin = estimateLighting(r.photo, r.camera, r.geometry, {given[0], given[2], given[2]},
+                                 {true, true, true}, mask, {}, opt);
+    ASSERT_TRUE(twin.ok());
+    for (const auto& L : twin->lights) EXPECT_TRUE(L.radiance.allFinite() && L.radiance.minCoeff() >= 0);
+  }
+  const ImageF withoutLeft = renderRoom(r, {r.light, right}, {}, 8);
+  auto dark =
+      estimateLighting(withoutLeft, r.camera, r.geometry, given, {true, true, true}, mask, {}, opt);
+  ASSERT_TRUE(dark.ok());
+  for (const auto& L : dark->lights) EXPECT_TRUE(L.radiance.allFinite() && L.radiance.minCoeff() >= 0);
+}
+
+}  // namespace
+}  // namespace inlay

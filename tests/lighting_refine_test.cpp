@@ -321,3 +321,118 @@ TEST(LightRefine, MarkedSurfacesAreLeftOutOfTheFit) {
 
 }  // namespace
 }  // namespace inlay
+
+namespace inlay {
+namespace {
+
+// The outline of `L` on the photo: its corners projected (all in view in the test room).
+std::vector<Vec2> outlineOf(const Camera& camera, const AreaLight& L) {
+  std::vector<Vec2> px;
+  for (const Vec3& c : L.cornersWorld)
+    if (auto q = camera.project(c)) px.push_back(*q);
+  return px;
+}
+
+// An outlined light moves no farther than its outline's uncertainty (the room's other light,
+// placed in 3D, stays free), and the bound follows the outline: a one-pixel outline gets the
+// pixel floor, a larger outline a fraction of its diagonal, a missing one none.
+TEST(LightRefine, AnOutlinedLightStaysWithinItsOutlinesUncertainty) {
+  const auto& r = room();
+  const auto start = perturbed(r.truth, 0.3, 1.0);
+  LightRefineOptions o;
+  o.prior = 1e-4;
+  std::vector<LightRefineSpec> specs(2);
+  specs[0].maxDisplacementM =
+      outlineDisplacementBoundM(r.camera, start[0], outlineOf(r.camera, start[0]), o);
+  ASSERT_TRUE(std::isfinite(specs[0].maxDisplacementM));
+  EXPECT_GT(specs[0].maxDisplacementM, 0.02);
+  EXPECT_LT(specs[0].maxDisplacementM, 0.3);  // the start is 0.3 m off: held short of the truth
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, specs, {}, o);
+  ASSERT_TRUE(res.ok()) << res.error().message();
+  ASSERT_TRUE(finiteLights(*res));
+  const Vec3 d0 = res->lights[0].centre() - start[0].centre();
+  EXPECT_LE(d0.cwiseAbs().maxCoeff(), specs[0].maxDisplacementM + 1e-9);
+  // The other light, placed in 3D, is not held.
+  EXPECT_GT((res->lights[1].centre() - start[1].centre()).cwiseAbs().maxCoeff(),
+            2 * specs[0].maxDisplacementM);
+
+  // The bound's two regimes, and no bound without an outline or a usable camera.
+  const Vec2 p = *r.camera.project(start[0].centre());
+  const double metresPerPx = (start[0].centre() - r.camera.centreWorld()).norm() / r.camera.focalPx;
+  const std::vector<Vec2> onePixel = {p, p + Vec2(1, 0), p + Vec2(0, 1)};
+  EXPECT_NEAR(outlineDisplacementBoundM(r.camera, start[0], onePixel, o),
+              o.outlineUncertaintyPx * metresPerPx, 1e-12);
+  const std::vector<Vec2> wide = {p, p + Vec2(60, 0), p + Vec2(60, 80)};
+  o.outlineUncertaintyFraction = 0.25;
+  EXPECT_NEAR(outlineDisplacementBoundM(r.camera, start[0], wide, o),
+              o.outlineUncertaintyFraction * 100 * metresPerPx, 1e-12);
+  EXPECT_TRUE(std::isinf(outlineDisplacementBoundM(r.camera, start[0], {}, o)));
+  Camera flat = r.camera;
+  flat.focalPx = 0;
+  EXPECT_TRUE(std::isinf(outlineDisplacementBoundM(flat, start[0], onePixel, o)));
+  const std::vector<Vec2> nan = {Vec2(NAN, 0), p};
+  const double b = outlineDisplacementBoundM(r.camera, start[0], nan, o);
+  EXPECT_FALSE(std::isnan(b));
+}
+
+// Stiff cases: a one-pixel outline pins the light (its range is below the derivative's step)
+// while its intensity is still fitted; two lights at the same place share the light without
+// NaN; a light whose power the data put at zero ends at zero, finite; a negative or NaN bound
+// is named.
+TEST(LightRefine, OutlineBoundsOnStiffInputStayFiniteAndAreNamedWhenBad) {
+  const auto& r = room();
+  LightRefineOptions o;
+  const auto start = perturbed(r.truth, 0.2, 1.5);
+  std::vector<LightRefineSpec> specs(2);
+  const Vec2 p = *r.camera.project(start[0].centre());
+  o.outlineUncertaintyPx = 0.01;  // below a millimetre at the light
+  specs[0].maxDisplacementM =
+      outlineDisplacementBoundM(r.camera, start[0], {p, p + Vec2(0.5, 0), p + Vec2(0, 0.5)}, o);
+  auto res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, start, specs, {}, o);
+  ASSERT_TRUE(res.ok()) << res.error().message();
+  ASSERT_TRUE(finiteLights(*res));
+  EXPECT_LT((res->lights[0].centre() - start[0].centre()).norm(), 1e-9);
+  EXPECT_GT((res->lights[0].radiance - start[0].radiance).norm(), 1e-3 * start[0].radiance.norm());
+
+  // Two lights at one place, both outlined (the same outline): their sum carries the light.
+  std::vector<AreaLight> twin = {r.truth[0], r.truth[0]};
+  std::vector<LightRefineSpec> twinSpecs(2);
+  for (auto& s : twinSpecs) s.maxDisplacementM = 0.05;
+  res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, twin, twinSpecs, {}, o);
+  ASSERT_TRUE(res.ok());
+  ASSERT_TRUE(finiteLights(*res));
+  for (const auto& L : res->lights)
+    EXPECT_LE((L.centre() - twin[0].centre()).cwiseAbs().maxCoeff(), 0.05 + 1e-9);
+
+  // The second light has no light in the data (a direct image of the first alone): zero, finite.
+  const RoomTracer tracer(r.geometry);
+  auto one = r.truth;
+  one[1].radiance = Vec3::Zero();
+  ImageF first(r.direct.width, r.direct.height, 3, 0.f);
+  for (int y = 0; y < first.height; ++y)
+    for (int x = 0; x < first.width; ++x) {
+      const auto h = tracer.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)), 1e-6);
+      if (!h) continue;
+      const double e = tracer.unitLightIrradianceOverPi(one[0], h->pointWorld + 1e-5 * h->normalWorld,
+                                                        h->normalWorld, 16,
+                                                        uint32_t(y * first.width + x));
+      first.setRgb(x, y, r.albedo.rgb(x, y).cwiseProduct(e * one[0].radiance));
+    }
+  std::vector<LightRefineSpec> held(2);
+  held[1].maxDisplacementM = 0.1;
+  res = refineLights(r.camera, r.geometry, r.albedo, first, {}, r.truth, held, {}, o);
+  ASSERT_TRUE(res.ok());
+  ASSERT_TRUE(finiteLights(*res));
+  EXPECT_LT(res->lights[1].radiance.maxCoeff(), 0.05 * r.truth[1].radiance.maxCoeff());
+
+  for (double bad : {-1.0, double(NAN)}) {
+    std::vector<LightRefineSpec> s(2);
+    s[1].maxDisplacementM = bad;
+    res = refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, r.truth, s, {}, o);
+    ASSERT_FALSE(res.ok());
+    EXPECT_EQ(res.error().key, "lights[1]");
+  }
+}
+
+}  // namespace
+}  // namespace inlay

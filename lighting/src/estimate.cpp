@@ -370,6 +370,9 @@ struct LightingFit {
   std::vector<size_t> candidates;
   ImageF fitPhoto;
   std::vector<bool> refine;
+  // Per area light: the light whose radiance it shares (LightingOptions::tieLightsOutOfView), or
+  // itself.
+  std::vector<size_t> tiedTo;
   std::vector<std::array<double, 3>> rho;
   std::vector<std::array<double, 3>> L;
 
@@ -419,6 +422,7 @@ struct LightingFit {
   void predictUnseenFromFit();
   bool fit();
   double fitStartRadiance() const;
+  void tieLightsOutOfView();
   void fitChannel(int c, double& cost);
   void storeFittedLights();
   void perPixelAlbedo();
@@ -748,6 +752,7 @@ bool LightingFit::chooseFitPixels() {
   out.suns = suns;
   refine.assign(C, true);
   for (size_t j = 0; j < J && j < refineIn.size(); ++j) refine[j] = refineIn[j];
+  tieLightsOutOfView();
   rho.assign(S, {0.5, 0.5, 0.5});
   L.assign(C, {0, 0, 0});
   return true;
@@ -885,6 +890,29 @@ void LightingFit::predictUnseenFromFit() {
   sunApart = K > 0;
 }
 
+// The estimated lights placed out of the photo's view share one radiance when there are several
+// (LightingOptions::tieLightsOutOfView): the photo shows only their sum on the walls, which the
+// fit cannot split between them (scenes-train t11). A note says so.
+void LightingFit::tieLightsOutOfView() {
+  tiedTo.resize(J);
+  std::vector<size_t> unseen;
+  for (size_t j = 0; j < J; ++j) {
+    tiedTo[j] = j;
+    const auto p = camera.project(lightsIn[j].centre());
+    const bool inView = p && p->x() >= 0 && p->y() >= 0 && p->x() <= camera.widthPx &&
+                        p->y() <= camera.heightPx;
+    if (refine[j] && !inView) unseen.push_back(j);
+  }
+  if (!opt.tieLightsOutOfView || unseen.size() < 2) return;
+  std::string list;
+  for (size_t j : unseen) {
+    tiedTo[j] = unseen.front();
+    list += (list.empty() ? "" : ", ") + std::to_string(j);
+  }
+  out.notes.push_back("lights " + list +
+                      " are out of view: they share one radiance (the photo shows only their sum)");
+}
+
 // The light fit's start: with albedo 0.6 everywhere, the median radiance that explains the
 // direct part.
 double LightingFit::fitStartRadiance() const {
@@ -935,6 +963,8 @@ void LightingFit::fitChannel(int c, double& cost) {
     const int s = ps[idx].surface;
     std::vector<double> e(C);
     for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
+    for (size_t j = 0; j < J; ++j)
+      if (tiedTo[j] != j) e[tiedTo[j]] += e[j], e[j] = 0;  // one radiance for the tied lights
     const double b = fitPhoto.at(x, y, c);
     std::vector<double*> blocks{&rho[s][c]};
     for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
@@ -973,7 +1003,7 @@ void LightingFit::fitChannel(int c, double& cost) {
     if (problem.HasParameterBlock(&L[j][c])) {
       problem.SetParameterLowerBound(&L[j][c], 0, 0.0);
       problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
-      if (!refine[j]) problem.SetParameterBlockConstant(&L[j][c]);
+      if (!refine[j] || (j < J && tiedTo[j] != j)) problem.SetParameterBlockConstant(&L[j][c]);
     }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
@@ -985,6 +1015,7 @@ void LightingFit::fitChannel(int c, double& cost) {
   if (!summary.IsSolutionUsable())
     out.notes.push_back("light fit (channel " + std::to_string(c) + ") failed: " + summary.message);
   cost += summary.final_cost;
+  for (size_t j = 0; j < J; ++j) L[j][c] = L[tiedTo[j]][c];
 }
 
 // The fitted radiances into out.lights and out.suns; the suns' bounce at the fitted strengths

@@ -273,6 +273,20 @@ class Refinement {
 
 }  // namespace
 
+double outlineDisplacementBoundM(const Camera& camera, const AreaLight& light,
+                                 const std::vector<Vec2>& outlinePx, const LightRefineOptions& options) {
+  constexpr double kFree = std::numeric_limits<double>::infinity();
+  if (outlinePx.empty() || !(camera.focalPx > 0) || !std::isfinite(camera.focalPx)) return kFree;
+  Vec2 lo = outlinePx.front(), hi = lo;
+  for (const Vec2& q : outlinePx) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  const double diagonalPx = (hi - lo).norm();
+  const double metresPerPx = (light.centre() - camera.centreWorld()).norm() / camera.focalPx;
+  const double uncertaintyPx = std::max(std::max(options.outlineUncertaintyPx, 0.0),
+                                        std::max(options.outlineUncertaintyFraction, 0.0) * diagonalPx);
+  const double bound = uncertaintyPx * metresPerPx;
+  return std::isfinite(bound) && bound >= 0 ? bound : kFree;
+}
+
 double refineRowWeight(double y, int height) {
   if (height <= 0) return 0;
   const double mid = 0.5 * height;
@@ -443,6 +457,22 @@ void boundsInRoom(const AreaLight& L, const Vec3& lo, const Vec3& hi, double mar
   }
 }
 
+// Narrows the centre interval [cLo, cHi] to within `radius` (metres) of `centre` along each
+// axis; an axis left narrower than `minRange` (the finite-difference step) is pinned there.
+void boundDisplacement(const Vec3& centre, double radius, const Vec3& minRange, Vec3* cLo, Vec3* cHi,
+                       std::vector<int>* pinned) {
+  if (!std::isfinite(radius)) return;
+  for (int a = 0; a < 3; ++a) {
+    if (std::find(pinned->begin(), pinned->end(), a) != pinned->end()) continue;
+    (*cLo)[a] = std::max((*cLo)[a], centre[a] - radius);
+    (*cHi)[a] = std::min((*cHi)[a], centre[a] + radius);
+    if (!((*cHi)[a] - (*cLo)[a] >= minRange[a])) {
+      (*cLo)[a] = (*cHi)[a] = centre[a];
+      pinned->push_back(a);
+    }
+  }
+}
+
 // The room box the lights stay in; light positions are normalised to it.
 struct RoomFrame {
   Vec3 lo, hi, size;
@@ -502,6 +532,8 @@ Expected<std::vector<FreeLight>> freeLightsInRoom(std::vector<AreaLight>& lights
           std::isfinite(s.positionWeight) && std::isfinite(s.intensityWeight) &&
           std::isfinite(s.sizeWeight)))
       return Error{"", key + ".weights", "weights must be finite and non-negative"};
+    if (!(s.maxDisplacementM >= 0))  // NaN or negative; infinity is free
+      return Error{"", key, "the largest displacement must be a non-negative number of metres"};
     L.radiance = L.radiance.cwiseMax(0.0);
     if (s.lock) continue;
     FreeLight f;
@@ -514,6 +546,8 @@ Expected<std::vector<FreeLight>> freeLightsInRoom(std::vector<AreaLight>& lights
                       " m to fit inside it");
     if (f.fixedAxes.size() == 3)
       notes.push_back(key + ": larger than the room in every direction; its position is kept");
+    boundDisplacement(moved, s.maxDisplacementM, opt.stepNormalised * room.size, &cLo, &cHi,
+                      &f.fixedAxes);
     for (auto& p : L.cornersWorld) p += moved - c;
     f.lo = (cLo - room.lo).cwiseQuotient(room.size);
     f.hi = (cHi - room.lo).cwiseQuotient(room.size);

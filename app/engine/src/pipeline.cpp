@@ -868,17 +868,22 @@ Status sunsFromRatio(Preparation& p, std::string& detail) {
 // The lights' positions and intensities against the photo's direct light (lighting/refine.h).
 Status refineTheLights(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
+  LightRefineOptions ro = p.opt.refine;
   std::vector<LightRefineSpec> specs(p.lights.size());
   for (size_t i = p.doc.lights.size(); i < specs.size(); ++i) specs[i].lock = true;
-  for (size_t i = 0; i < p.doc.lights.size(); ++i) {
+  for (size_t i = 0, outline = 0; i < p.doc.lights.size(); ++i) {
     const LightKeys& l = p.doc.lights[i];
     specs[i].lock = p.locked(i);
     specs[i].positionWeight = l.positionWeight;
     specs[i].intensityWeight = l.intensityWeight;
     specs[i].refineSize = l.refineSize;
     specs[i].sizeWeight = l.sizeWeight;
+    // An outlined light stays within its outline's uncertainty (working copy's pixels).
+    if (l.kind == LightKeys::Kind::PolygonPx && outline < p.outlines.size() && ro.holdOutlinedLights)
+      specs[i].maxDisplacementM =
+          outlineDisplacementBoundM(p.workCamera(), p.lights[i], p.toWork(p.outlines[outline]), ro);
+    outline += l.kind == LightKeys::Kind::PolygonPx ? 1 : 0;
   }
-  LightRefineOptions ro = p.opt.refine;
   ro.seed += p.opt.seed;
   if (!ro.cancel) ro.cancel = p.opt.cancel;
   ro.nonMatteSurfaces = p.nonMatte;
@@ -899,6 +904,13 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   return {};
 }
 
+// Whether the refit's residual against the photo is worse than the first estimate's; a
+// residual that is not a finite number never wins.
+bool refitIsWorse(double before, double after) {
+  if (!std::isfinite(after)) return std::isfinite(before);
+  return std::isfinite(before) && after > before;
+}
+
 // The albedo-intensity split rests on the shape of each light's irradiance over the room
 // (B = rho (L E + Gamma) is flat along rho / k, L k where E and Gamma look alike): with the
 // refined positions, the radiances, Gamma and the albedo are estimated again.
@@ -911,6 +923,20 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   auto again = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, ps.lighting.lights, fitAgain,
                                 p.lightMask, ps.lighting.suns, p.lightingOptions);
   if (!again) return p.cancelled() ? cancelledError() : again.error();
+  // ps.lighting is still the first estimate's fit (the refinement changed only its lights).
+  if (p.opt.keepBetterFit && refitIsWorse(ps.lighting.fitRmsLog, again->fitRmsLog)) {
+    // A routine self-check, not something the user must act on: the stage's detail (the
+    // report, --verbose, the studio's log) says it, the warnings do not.
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "a light moved; the first estimate fits the photo better (log residual %.5f "
+                  "against %.5f) and is kept",
+                  ps.lighting.fitRmsLog, again->fitRmsLog);
+    ps.lighting.lights = ps.initialLights;
+    ps.lighting.suns = ps.initialSuns;
+    detail = buf;
+    return {};
+  }
   ps.lighting = std::move(*again);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
   detail = "a light moved";

@@ -70,6 +70,10 @@ struct LightingOptions {
   RetinexOptions retinex;
   DecomposeOptions decompose;
   bool objective = true;
+  // Several estimated lights whose centres are out of the photo's view share one radiance (the
+  // first's): the photo shows only the sum of their light on the walls, and a free split drifts
+  // (scenes-train t11, docs/generalization.md). False: each gets its own.
+  bool tieLightsOutOfView = true;
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;

@@ -31,6 +31,7 @@
 #include "inlay/render/scene.h"
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,11 @@ struct LightRefineSpec {
   // sizeWeight |log factor|^2. Off by default: an outline drawn on the photo gives the size.
   bool refineSize = false;
   double sizeWeight = 10;
+  // The farthest its centre may move from where it came in along each world axis, in metres
+  // (infinity: anywhere in the room). An outlined light gets outlineDisplacementBoundM: the
+  // outline is the user's evidence of where the light is. An axis whose range is below the
+  // finite-difference step is pinned.
+  double maxDisplacementM = std::numeric_limits<double>::infinity();
 };
 
 struct LightRefineOptions {
@@ -58,6 +64,15 @@ struct LightRefineOptions {
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
   double marginM = 1e-3;         // lights keep this far inside the room's walls
   double sizeRange = 2;          // a refined size stays within [1/sizeRange, sizeRange] of the start
+  // Outlined lights stay within their outline's uncertainty (LightRefineSpec::maxDisplacementM
+  // from outlineDisplacementBoundM; the pipeline sets it); false: they move as freely as the
+  // lights placed in 3D. The uncertainty: this many pixels (of the image the refinement reads,
+  // the working copy), or this fraction of the outline's diagonal when that is more. Chosen on
+  // scenes-train half A (docs/generalization.md): t03's sconce, 1.15 times its true power when
+  // free, 1.13 with a quarter of its diagonal, 1.11 with a tenth, 1.09 with 3 px alone.
+  bool holdOutlinedLights = true;
+  double outlineUncertaintyPx = 3;
+  double outlineUncertaintyFraction = 0;
   uint32_t seed = 11;
   // Suns: with refineSuns their strengths (RGB irradianceOverPi) are unknowns solved with the
   // area lights' intensities, pulled toward the start with sunIntensityWeight (directions and
@@ -110,6 +125,14 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
                                          const std::vector<LightRefineSpec>& specs,
                                          const std::vector<SunLight>& suns = {},
                                          const LightRefineOptions& options = {});
+
+// How far (metres, per world axis) the centre of `light`, outlined on the photo by `outlinePx`
+// (the camera's pixels), may move in the refinement: the outline's uncertainty in pixels,
+// max(outlineUncertaintyPx, outlineUncertaintyFraction x the outline's bounding-box diagonal),
+// times the metres one pixel spans at the light (its distance from the camera over the focal
+// length). Infinity (free) when there is no outline or it or the light is not finite; never NaN.
+double outlineDisplacementBoundM(const Camera& camera, const AreaLight& light,
+                                 const std::vector<Vec2>& outlinePx, const LightRefineOptions& options);
 
 // The weight alpha of image row y (pixel centre y + 0.5) in an image of `height` rows.
 double refineRowWeight(double y, int height);

@@ -112,6 +112,11 @@ struct PrepareOptions {
   // renders with the initial lights.
   bool refineLights = true;
   LightRefineOptions refine;
+  // After the refinement the lighting is fitted again at the refined places; when that fit
+  // explains the photo worse than the first estimate (its robust log residual,
+  // LightingEstimate::fitRmsLog, is larger), the first estimate's lights are kept (a warning says
+  // so). False: the refit is always taken.
+  bool keepBetterFit = true;
   // With refineLights: each sun's strength from its lit patch against the shadowed pixels of
   // the same surface beside it (lighting/sun_ratio.h), which cancels the albedo; the gathered
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
