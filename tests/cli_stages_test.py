@@ -50,6 +50,15 @@ def check(name, lines, report, lights, ran, skipped, failures):
             failures.append("%s: stage %s: %s, expected skipped (%s)" % (name, s, by_name[s], reason))
         if "%s: skipped, %s" % (s, reason) not in lines:
             failures.append("%s: --verbose lacks '%s: skipped, %s'" % (name, s, reason))
+    for s in stages:  # the lighting stages' steps: named, timed, inside the stage's own seconds
+        if s["name"] in ("lighting", "lighting refit") and s["ran"]:
+            steps = s.get("steps", [])
+            if not steps or any(not (t["name"] and t["seconds"] >= 0 and t["cpu_seconds"] >= 0) for t in steps):
+                failures.append("%s: stage %s has no or bad steps: %s" % (name, s["name"], steps))
+            elif sum(t["cpu_seconds"] for t in steps) > s["cpu_seconds"] + 1e-9:
+                failures.append("%s: stage %s: its steps' CPU seconds exceed its own" % (name, s["name"]))
+            elif not any(l.startswith(s["name"] + ": ") and "; CPU s: surfaces " in l for l in lines):
+                failures.append("%s: --verbose does not list the steps of %s" % (name, s["name"]))
     ran_names = [s["name"] for s in stages if s["ran"]]
     if [n for n, _ in lights["stage_seconds"]] != ran_names:
         failures.append("%s: stage_seconds %s" % (name, lights["stage_seconds"]))

@@ -552,6 +552,25 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
   const std::string refine = describeStage(*stageNamed(*ps, "refine"));
   EXPECT_EQ(refine.rfind("refine: ", 0), 0u) << refine;
   EXPECT_NE(refine.find(" s (2 of 2 lights refined"), std::string::npos) << refine;
+  // The lighting stages say where their seconds went: disjoint steps inside the stage's time.
+  for (const char* name : {"lighting", "lighting refit"}) {
+    const StageRecord& lighting = *stageNamed(*ps, name);
+    if (!lighting.ran) continue;  // the refit: when a light moved
+    ASSERT_FALSE(lighting.steps.empty()) << name;
+    std::vector<std::string> steps;
+    double stepsCpu = 0, stepsWall = 0;
+    for (const StageStep& step : lighting.steps) {
+      steps.push_back(step.name);
+      stepsCpu += step.cpuSeconds, stepsWall += step.seconds;
+    }
+    EXPECT_EQ(steps.front(), "surfaces") << name;
+    EXPECT_NE(std::find(steps.begin(), steps.end(), "gather"), steps.end()) << name;
+    EXPECT_NE(std::find(steps.begin(), steps.end(), "decomposition"), steps.end()) << name;
+    EXPECT_LE(stepsCpu, lighting.cpuSeconds) << name;
+    EXPECT_LE(stepsWall, lighting.seconds) << name;
+    const std::string line = describeStage(lighting);
+    EXPECT_NE(line.find(" rays); CPU s: surfaces "), std::string::npos) << line;
+  }
   for (const Surface& s : ps->geometry.surfaces) EXPECT_NE(s.kind, SurfaceKind::OccluderCard);
   EXPECT_TRUE(ps->lighting.suns.empty());
 }

@@ -9,6 +9,8 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -797,6 +799,88 @@ TEST(Lighting, ResidualShowsTheVignettingPutOnAPhoto) {
   EXPECT_NEAR(strong.first, 0.35, 0.12);
   EXPECT_LT(strong.second, 0.95);
   EXPECT_LE(strong.second, 1.0);
+}
+
+// The gather's grid is capped (LightingOptions::gatherMaxPoints): the stride grows until the
+// grid fits, and no further.
+TEST(Lighting, TheGathersStrideKeepsItsGridWithinTheCap) {
+  auto points = [](int w, int h, int s) { return int64_t((w + s - 1) / s) * ((h + s - 1) / s); };
+  EXPECT_EQ(gatherStrideFor(640, 480, 4, 160 * 120), 4);  // a 0.3 MP photo: as before the cap
+  EXPECT_EQ(gatherStrideFor(512, 384, 4, 160 * 120), 4);
+  EXPECT_EQ(gatherStrideFor(816, 612, 4, 0), 4);  // no cap
+  EXPECT_EQ(gatherStrideFor(816, 612, 0, 0), 1);  // a stride of at least 1
+  EXPECT_EQ(gatherStrideFor(1, 1, 4, 160 * 120), 4);
+  EXPECT_EQ(gatherStrideFor(3, 2, 1, 1), 3);   // one point
+  EXPECT_EQ(gatherStrideFor(0, 5, 4, 10), 4);  // an empty photo: the stride as given
+  const std::array<std::array<int, 2>, 6> sizes = {
+      {{816, 612}, {4000, 3000}, {100000, 1}, {1, 100000}, {8000, 6000}, {46341, 46341}}};
+  for (const auto& [w, h] : sizes)
+    for (int cap : {1, 1000, 160 * 120}) {
+      const int s = gatherStrideFor(w, h, 4, cap);
+      EXPECT_LE(points(w, h, s), cap) << w << " x " << h << " cap " << cap;
+      if (s > 4) {
+        EXPECT_GT(points(w, h, s - 1), cap) << w << " x " << h << " cap " << cap;
+      }
+    }
+}
+
+// A capped grid is the grid of the stride it picks, bit for bit, and the steps' seconds are
+// reported (LightingEstimate::steps).
+TEST(Lighting, ACappedGatherIsTheSparserGrid) {
+  const SyntheticRoom r = makeRoom(Vec3(4, 4, 4), 8);
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok()) << light.error().message();
+  LightingOptions capped;
+  capped.gatherSamples = 16;
+  capped.threads = 1;
+  capped.gatherStride = 2;
+  capped.gatherMaxPoints = 40 * 30;  // 160 x 120 at stride 4
+  LightingOptions sparse = capped;
+  sparse.gatherStride = 4;
+  sparse.gatherMaxPoints = 0;
+  const auto a =
+      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, capped);
+  const auto b =
+      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, sparse);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(a->gatherStride, 4);
+  EXPECT_EQ(a->gatherPoints, 40 * 30);
+  EXPECT_EQ(a->lights[0].radiance, b->lights[0].radiance);
+  EXPECT_EQ(a->gathered.data, b->gathered.data);
+  EXPECT_EQ(a->albedo.data, b->albedo.data);
+  std::vector<std::string> names;
+  for (const LightingStepTime& step : a->steps) {
+    names.push_back(step.name);
+    EXPECT_TRUE(step.seconds >= 0 && step.cpuSeconds >= 0 && step.calls >= 1) << step.name;
+  }
+  for (const char* name : {"surfaces", "direct light", "gather", "light fit", "decomposition"})
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+}
+
+// A 1 x 1 photo and a strip 1500 x 2 (a working copy of an extreme panorama): finite output or
+// a clear error, never NaN.
+TEST(Lighting, OnePixelAndAStripPhotoStayFinite) {
+  const SyntheticRoom room = makeRoom(Vec3(4, 4, 4), 1);
+  for (const auto& [w, h] : std::array<std::array<int, 2>, 3>{{{1, 1}, {1500, 2}, {2, 900}}}) {
+    Camera camera = levelCamera(w, h, 0.5 * std::max(w, h), 1.5);
+    ImageF photo(w, h, 3, 0.f);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) photo.setRgb(x, y, Vec3(0.2 + 0.1 * x / w, 0.3, 0.25 + 0.1 * y / h));
+    LightingOptions opt;
+    opt.gatherSamples = 16;
+    const auto est =
+        estimateLighting(photo, camera, room.geometry, {room.light}, {true}, ImageF(), {}, opt);
+    if (!est.ok()) {
+      EXPECT_FALSE(est.error().message().empty());
+      continue;
+    }
+    for (float v : est->albedo.data)
+      ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1) << w << " x " << h;
+    for (float v : est->direct.data) ASSERT_TRUE(std::isfinite(v) && v >= 0) << w << " x " << h;
+    for (float v : est->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0) << w << " x " << h;
+    EXPECT_TRUE(est->lights[0].radiance.allFinite()) << w << " x " << h;
+    EXPECT_LE(int64_t(est->gatherPoints), int64_t(opt.gatherMaxPoints));
+  }
 }
 
 }  // namespace

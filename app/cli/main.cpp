@@ -318,6 +318,9 @@ nlohmann::json stagesJson(const std::vector<StageRecord>& stages) {
     }
     if (s.workingWidth > 0) j["working_px"] = {s.workingWidth, s.workingHeight};
     if (!s.detail.empty()) j["detail"] = s.detail;
+    for (const StageStep& step : s.steps)
+      j["steps"].push_back(
+          {{"name", step.name}, {"seconds", step.seconds}, {"cpu_seconds", step.cpuSeconds}});
     out.push_back(std::move(j));
   }
   return out;

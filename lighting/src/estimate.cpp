@@ -16,10 +16,12 @@
 #include <functional>
 #include <limits>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <numeric>
 #include <optional>
 #include <random>
+#include <time.h>
 
 namespace inlay {
 
@@ -30,6 +32,37 @@ struct PixelSurface {
   Vec3 point;
   Vec3 normal;
   double depth = 0;
+};
+
+// User and system CPU seconds of the process, every thread.
+double processCpuSeconds() {
+  timespec ts{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0;
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+// Adds the wall and CPU seconds of its lifetime to the step `name` of `steps` (LightingEstimate::
+// steps), which it appends on its first call.
+class StepTimer {
+ public:
+  StepTimer(std::vector<LightingStepTime>& steps, const char* name)
+      : steps_(steps), name_(name), t0_(std::chrono::steady_clock::now()), cpu0_(processCpuSeconds()) {}
+  StepTimer(const StepTimer&) = delete;
+  StepTimer& operator=(const StepTimer&) = delete;
+  ~StepTimer() {
+    auto it = std::find_if(steps_.begin(), steps_.end(),
+                           [&](const LightingStepTime& s) { return s.name == name_; });
+    if (it == steps_.end()) it = steps_.insert(steps_.end(), LightingStepTime{name_, 0, 0, 0});
+    it->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    it->cpuSeconds += processCpuSeconds() - cpu0_;
+    it->calls += 1;
+  }
+
+ private:
+  std::vector<LightingStepTime>& steps_;
+  const char* name_;
+  std::chrono::steady_clock::time_point t0_;
+  double cpu0_;
 };
 
 double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
@@ -296,7 +329,8 @@ struct LightingFit {
         K(sunsIn.size()),
         C(lightsGiven.size() + sunsIn.size()),
         tracer(geometryIn),
-        stride(std::max(1, options.gatherStride)),
+        stride(gatherStrideFor(photoIn.width, photoIn.height, options.gatherStride,
+                               options.gatherMaxPoints)),
         GW((W + stride - 1) / stride),
         GH((H + stride - 1) / stride),
         gatherSamples(options.gatherSamples) {}
@@ -743,10 +777,10 @@ bool LightingFit::chooseFitPixels() {
       candidates.push_back(idx);
     }
   if (candidates.empty()) return false;
-  averageFitPhoto();
   std::mt19937 rng(opt.seed);
   std::shuffle(candidates.begin(), candidates.end(), rng);
   if (candidates.size() > size_t(opt.fitPixels)) candidates.resize(size_t(opt.fitPixels));
+  averageFitPhoto();
 
   out.lights = lightsIn;
   out.suns = suns;
@@ -774,19 +808,21 @@ void LightingFit::averageFitPhoto() {
   auto usable = [&](int x, int y, int surface) {
     return ps[size_t(y) * W + x].surface == surface && !isLight(x, y) && !saturated(x, y);
   };
-  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y)
-      for (int x = 0; x < W; ++x) {
-        const int s = ps[size_t(y) * W + x].surface;
-        if (s < 0 || !usable(x, y, s)) continue;
-        Vec3 sum = Vec3::Zero();
-        int n = 0;
-        for (int yy = std::max(0, y - r); yy <= std::min(H - 1, y + r); ++yy)
-          for (int xx = std::max(0, x - r); xx <= std::min(W - 1, x + r); ++xx)
-            if (usable(xx, yy, s)) sum += photo.rgb(xx, yy), ++n;
-        if (n > 0) fitPhoto.setRgb(x, y, Vec3(sum / n));
-      }
-  });
+  // Only the fit's pixels are read: the mean at those, not at every pixel of the photo.
+  parallelFor(tbb::blocked_range<size_t>(0, candidates.size()),
+              [&](const tbb::blocked_range<size_t>& range) {
+                for (size_t i = range.begin(); i < range.end(); ++i) {
+                  const int x = int(candidates[i] % size_t(W)), y = int(candidates[i] / size_t(W));
+                  const int s = ps[candidates[i]].surface;
+                  if (s < 0 || !usable(x, y, s)) continue;
+                  Vec3 sum = Vec3::Zero();
+                  int n = 0;
+                  for (int yy = std::max(0, y - r); yy <= std::min(H - 1, y + r); ++yy)
+                    for (int xx = std::max(0, x - r); xx <= std::min(W - 1, x + r); ++xx)
+                      if (usable(xx, yy, s)) sum += photo.rgb(xx, yy), ++n;
+                  if (n > 0) fitPhoto.setRgb(x, y, Vec3(sum / n));
+                }
+              });
 }
 
 // The gather's rays per pixel when not given: from a pilot on up to 64 grid points, for the
@@ -810,6 +846,8 @@ void LightingFit::chooseGatherSamples() {
         go);
   }
   out.gatherSamples = gatherSamples;
+  out.gatherStride = stride;
+  out.gatherPoints = GW * GH;
 }
 
 // The gather-and-fit passes. Pass 1 guesses what the camera does not see from the mean of what
@@ -824,7 +862,10 @@ bool LightingFit::gatherAndFit() {
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
   for (int pass = 0; pass < passes; ++pass) {
-    gatherAll();
+    {
+      const StepTimer timer(out.steps, "gather");
+      gatherAll();
+    }
     const double r = pass >= 1 && K == 0 ? relax : 1.0;
     const double change = relaxGathered(out.gathered, previousGathered, r);
     previousGathered = out.gathered;
@@ -832,7 +873,11 @@ bool LightingFit::gatherAndFit() {
     // top of that.
     for (size_t c = 0; c < 3; ++c)
       previousGain[c] = clippedGainApplied[c] = r * clippedGainApplied[c] + (1 - r) * previousGain[c];
-    if (stop() || !fit()) return false;
+    if (stop()) return false;
+    {
+      const StepTimer timer(out.steps, "light fit");
+      if (!fit()) return false;
+    }
     out.passes = pass + 1;
     if (pass >= 2 && change < opt.passTolerance) break;
     if (pass == passes - 1) {
@@ -843,6 +888,7 @@ bool LightingFit::gatherAndFit() {
                             " passes (the walls the camera does not see are uncertain)");
       break;
     }
+    const StepTimer timer(out.steps, "unseen patches");
     predictUnseenFromFit();
   }
   return true;
@@ -1246,6 +1292,7 @@ ImageF Decomposer::anchoredRetinex(const ImageF& image, const std::vector<uint8_
 std::optional<Error> Decomposer::run() {
   LightingEstimate& out = f.out;
   masks();
+  std::optional<StepTimer> timer(std::in_place, out.steps, "retinex");
   // The baseline: Retinex of the photo alone.
   out.retinexAlbedo = anchoredRetinex(f.photo, validPhoto, false, nullptr);
   if (!f.opt.objective) {
@@ -1257,6 +1304,7 @@ std::optional<Error> Decomposer::run() {
   const ImageF rho0 = anchoredRetinex(f.shadingFree, valid, true, &out.retinexAlbedo);
   DecomposeOptions dopt = f.opt.decompose;
   if (!dopt.cancel) dopt.cancel = f.opt.cancel;
+  timer.emplace(out.steps, "decomposition");
   auto dec = decomposeIntrinsic(f.photo, out.gathered, rho0, valid, clipped, dopt);
   out.decomposeStart = rho0;
   out.decomposeValid = valid;
@@ -1297,6 +1345,17 @@ void Decomposer::surfaceMeanAlbedo() {
 
 }  // namespace
 
+int gatherStrideFor(int width, int height, int stride, int maxPoints) {
+  int s = std::max(1, stride);
+  if (maxPoints <= 0 || width <= 0 || height <= 0) return s;
+  auto points = [&](int k) { return int64_t((width + k - 1) / k) * int64_t((height + k - 1) / k); };
+  // From below the answer (the square grid's stride), up to the first that fits.
+  const double square = std::sqrt(double(width) * double(height) / double(maxPoints));
+  s = std::max(s, int(std::floor(square)));
+  while (points(s) > maxPoints && s < std::max(width, height)) ++s;
+  return s;
+}
+
 Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& camera,
                                             const SceneGeometry& geometry,
                                             const std::vector<AreaLight>& lightsIn,
@@ -1313,19 +1372,27 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   auto cancelled = [] { return Error{"", "", "cancelled"}; };
 
   LightingFit fit(photo, camera, geometry, lightsIn, refineIn, lightMask, suns, opt);
+  std::vector<LightingStepTime>& steps = fit.out.steps;
+  std::optional<StepTimer> timer(std::in_place, steps, "surfaces");
   fit.findPixelSurfaces();
   if (fit.stop()) return cancelled();
   if (!fit.measureSurfaceRadiance())
     return Error{"", "photo", "no pixel of the photo falls on the room"};
   fit.countClippedPixels();
+  timer.emplace(steps, "direct light");
   if (!fit.computeDirectLight()) return cancelled();
+  timer.emplace(steps, "fit pixels");
   if (!fit.chooseFitPixels())
     return Error{"", "photo", "every pixel of the room is black or saturated: nothing to fit"};
+  timer.emplace(steps, "gather");
   fit.chooseGatherSamples();
+  timer.reset();
   if (!fit.gatherAndFit()) return cancelled();
+  timer.emplace(steps, "per-pixel albedo");
   fit.perPixelAlbedo();
   fit.relativeFitResidual();
   fit.vignettingFromResidual();
+  timer.reset();
   Decomposer decomposer(fit);
   if (auto error = decomposer.run()) return *error;
   decomposer.surfaceMeanAlbedo();

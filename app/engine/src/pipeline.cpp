@@ -462,6 +462,10 @@ std::string describeStage(const StageRecord& stage) {
   if (stage.reducedImage)
     line += " at " + std::to_string(stage.workingWidth) + " x " + std::to_string(stage.workingHeight) +
             " px";
+  for (size_t i = 0; i < stage.steps.size(); ++i) {
+    std::snprintf(seconds, sizeof seconds, " %.2f", stage.steps[i].cpuSeconds);
+    line += (i == 0 ? "; CPU s: " : ", ") + stage.steps[i].name + seconds;
+  }
   return line;
 }
 
@@ -502,6 +506,7 @@ struct Preparation {
   // The image size a stage worked at when it is neither the photo's nor the working copy's
   // (the camera estimate reduces the photo itself); set by the stage, read by runStage.
   std::array<int, 2> stagePx{};
+  std::vector<StageStep> stageSteps;  // the steps a stage timed (StageRecord::steps), set by it
 
   // The image the image stages read, and the camera in its pixels.
   const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
@@ -542,6 +547,19 @@ struct Preparation {
 Error cancelledError() { return Error{"", "", "cancelled"}; }
 
 // "1 light", "2 lights".
+// A lighting estimate's step times (LightingEstimate::steps) as a stage's (StageRecord::steps).
+std::vector<StageStep> stepsOf(const LightingEstimate& e) {
+  std::vector<StageStep> out;
+  for (const LightingStepTime& s : e.steps) out.push_back({s.name, s.seconds, s.cpuSeconds});
+  return out;
+}
+
+// "5 passes, 11834 points x 36 rays": the gather-and-fit passes and each pass's gather.
+std::string gatherText(const LightingEstimate& e) {
+  return std::to_string(e.passes) + (e.passes == 1 ? " pass, " : " passes, ") +
+         std::to_string(e.gatherPoints) + " points x " + std::to_string(e.gatherSamples) + " rays";
+}
+
 std::string countOf(size_t n, const std::string& thing) {
   return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
 }
@@ -852,10 +870,12 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
+  p.stageSteps = stepsOf(ps.lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
-  detail = countOf(ps.lighting.lights.size(), "light") + ", " + countOf(ps.lighting.suns.size(), "sun");
+  detail = countOf(ps.lighting.lights.size(), "light") + ", " + countOf(ps.lighting.suns.size(), "sun") +
+           ", " + gatherText(ps.lighting);
   return {};
 }
 
@@ -938,8 +958,9 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
     return {};
   }
   ps.lighting = std::move(*again);
+  p.stageSteps = stepsOf(ps.lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
-  detail = "a light moved";
+  detail = "a light moved, " + gatherText(ps.lighting);
   return {};
 }
 
@@ -1089,7 +1110,9 @@ Status runStage(const Stage& stage, Preparation& p) {
     const auto t = Clock::now();
     const double cpu0 = processCpuSeconds();
     p.stagePx = {0, 0};
+    p.stageSteps.clear();
     if (Status st = stage.run(p, record.detail); !st) return st;
+    record.steps = std::move(p.stageSteps);
     record.ran = true;
     record.seconds = secondsSince(t);
     record.cpuSeconds = processCpuSeconds() - cpu0;

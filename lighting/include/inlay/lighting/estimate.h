@@ -34,6 +34,12 @@ struct LightingOptions {
   int gatherSamples = 0;
   double gatherNoise = 0.05;
   int gatherStride = 4;  // gather on every n-th pixel, interpolate between
+  // The gather's grid (and E_j's) has at most this many points: a larger photo (or working copy)
+  // gathers on a sparser grid, as many points over the room as a 640 x 480 photo's at stride 4
+  // (gatherStrideFor). The gathered light is smooth within a surface, so more points over the
+  // same room only cost time (a 0.5 MP working copy: 31 k points at stride 4, 1.6 times the
+  // gather of a 0.3 MP photo). 0: no cap.
+  int gatherMaxPoints = 160 * 120;
   // What the photo does not show radiates its albedo times the light gathered at its patch:
   // patches about room size / patchesAcrossRoom wide, patchSamples rays each, patchSweeps
   // radiosity sweeps (gather.h, SurfacePatches).
@@ -80,6 +86,15 @@ struct LightingOptions {
   const CancelToken* cancel = nullptr;
 };
 
+// The seconds one step of estimateLighting took (LightingEstimate::steps): wall and the process's
+// CPU seconds (every thread) summed over its calls.
+struct LightingStepTime {
+  std::string name;  // "surfaces", "direct light", "gather", "unseen patches", "light fit", ...
+  double seconds = 0;
+  double cpuSeconds = 0;
+  int calls = 0;
+};
+
 struct LightingEstimate {
   ImageF albedo;          // W x H x 3, reflectance in [0,1] (the decomposition's)
   ImageF retinexAlbedo;   // W x H x 3, colour Retinex scaled per channel to the fitted lights
@@ -111,7 +126,9 @@ struct LightingEstimate {
   double vignetting = 0;
   double vignettingResidualRatio = 1;
   int gatherSamples = 0;  // rays per gathered pixel used
-  int passes = 0;         // gather-and-fit passes run (LightingOptions::maxPasses)
+  int gatherStride = 0;   // the gather's stride used (gatherStrideFor) and its grid's points
+  int gatherPoints = 0;
+  int passes = 0;  // gather-and-fit passes run (LightingOptions::maxPasses)
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
@@ -121,6 +138,7 @@ struct LightingEstimate {
   // `gathered` at the fitted strength. Empty when no sunlit pixel is clipped.
   std::vector<ImageF> sunBounce;
   double seconds = 0;
+  std::vector<LightingStepTime> steps;  // where `seconds` went, in the order the steps first ran
   std::vector<std::string> notes;
 };
 
@@ -135,6 +153,11 @@ inline bool isNonMatte(const std::vector<bool>& nonMatte, int id) {
 Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& geometry,
                                      const std::vector<Vec2>& outlinePx,
                                      const std::string& keyForMessages);
+
+// The gather's stride on a width x height photo: `stride` (LightingOptions::gatherStride, at
+// least 1), or the smallest larger one whose grid, ceil(width / s) x ceil(height / s), has at
+// most `maxPoints` points (LightingOptions::gatherMaxPoints; <= 0: no cap).
+int gatherStrideFor(int width, int height, int stride, int maxPoints);
 
 // `lightMaskPx`: W x H x 1, 1 where a light is visible in the photo (excluded from gathering
 // and fitting); may be empty. `suns`: sunlight beams whose strength is fitted alongside the

@@ -31,6 +31,14 @@ namespace inlay {
 // render scene, objects, grain):
 // what it took, or why the scene did not need it ("shafts": "no sun marked"). A skipped stage
 // does none of its work.
+// One step inside a stage (StageRecord::steps): the lighting's surfaces, direct light, gather,
+// light fit, decomposition..., with its wall and CPU seconds summed over its calls.
+struct StageStep {
+  std::string name;
+  double seconds = 0;
+  double cpuSeconds = 0;
+};
+
 struct StageRecord {
   std::string name;
   bool ran = false;
@@ -44,11 +52,13 @@ struct StageRecord {
   // as layout, room, objects): the photo's, the working copy's (PrepareOptions::
   // workingMaxPixels) or its own (the camera estimate reduces the photo itself).
   int workingWidth = 0, workingHeight = 0;
-  bool reducedImage = false;  // that size is smaller than the photo's
+  bool reducedImage = false;     // that size is smaller than the photo's
+  std::vector<StageStep> steps;  // where its seconds went, when it tells (the lighting does)
 };
 // One line for a log: "camera: 0.84 s, CPU 1.52 s (estimated from the photo)", "shafts:
 // skipped, no sun marked"; a stage that worked on a reduced image says its size: "lighting:
-// 20.1 s, CPU 38.9 s (1 light, 0 suns) at 816 x 612 px".
+// 20.1 s, CPU 38.9 s (1 light, 0 suns) at 816 x 612 px"; a stage with steps lists their CPU
+// seconds after it: "; CPU s: surfaces 0.05, gather 3.10, ...".
 std::string describeStage(const StageRecord& stage);
 
 struct PreparedScene {
