@@ -44,6 +44,10 @@ def main():
     for v in ("-0.1", "1.5", "nan", "low"):
         r = run(cli, "render", "x.json", "--noise", v, "-o", "a.png")
         check("bad --noise " + v, r.returncode == 2 and "--noise" in r.stderr, r.stderr)
+    for v in ("-1", "nan", "inf", "bright"):
+        r = run(cli, "render", "x.json", "--clamp-indirect", v, "-o", "a.png")
+        check("bad --clamp-indirect " + v, r.returncode == 2 and "--clamp-indirect" in r.stderr, r.stderr)
+    check("help names --clamp-indirect", "--clamp-indirect" in run(cli, "--help").stdout)
     r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
     check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
 

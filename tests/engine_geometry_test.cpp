@@ -59,6 +59,35 @@ TEST(EngineGeometry, StairsAndAnOccluderCardFromTheSceneFile) {
   EXPECT_NEAR(placed->baseWorld.y(), 0.4, 1e-4);
 }
 
+// The unseen rear wall: by default 0.5 m behind the camera, pushed back behind a light the user
+// placed in 3D behind the camera (so the wall does not hide it); layout.rear_m sets it.
+TEST(EngineGeometry, TheRearWallEnclosesALightPlacedBehindTheCamera) {
+  PrepareOptions fast;
+  fast.refineLights = false;
+  fast.workingMaxPixels = 40'000;
+  SceneDoc doc = exampleDoc();
+  const double y = 2.2;  // under the example's ceiling
+  LightKeys behind;
+  behind.kind = LightKeys::Kind::RectM;
+  behind.cornersM = {Vec3(-0.3, y, 0.6), Vec3(0.3, y, 0.6), Vec3(0.3, y, 1.2), Vec3(-0.3, y, 1.2)};
+  behind.rgb = Vec3(3, 3, 3);
+  behind.refine = false;
+  doc.lights.push_back(behind);
+  auto enclosed = prepareScene(doc, fast);
+  ASSERT_TRUE(enclosed.ok()) << enclosed.error().message();
+  EXPECT_NEAR(enclosed->box.zRearM, 1.25, 1e-9);
+  bool rearWallThere = false;
+  for (const Surface& s : enclosed->geometry.surfaces)
+    if (s.kind == SurfaceKind::WallRear)
+      rearWallThere = std::abs(double(s.meshWorld.positions.front().z()) - 1.25) < 1e-5;
+  EXPECT_TRUE(rearWallThere);
+  // The user's distance wins, even in front of the light.
+  doc.layout.rearM = 0.9;
+  auto given = prepareScene(doc, fast);
+  ASSERT_TRUE(given.ok()) << given.error().message();
+  EXPECT_DOUBLE_EQ(given->box.zRearM, 0.9);
+}
+
 TEST(EngineGeometry, BadOccluderAndSurfaceInputNamesTheKey) {
   SceneDoc doc = exampleDoc();
   OccluderKeys occ;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 
@@ -173,6 +174,53 @@ TEST(Room, BadCornersAreNamed) {
   // Left and right swapped.
   const auto s = roomFromBackWall(c, {Vec2(500, 100), Vec2(100, 100), Vec2(100, 400), Vec2(500, 400)});
   EXPECT_FALSE(s.ok());
+}
+
+// The rear wall: the user's distance wins; otherwise the default, pushed back behind every light
+// placed in 3D behind the camera; never closer than 0.05 m, never NaN.
+TEST(Room, RearWallEnclosesPlacedLights) {
+  const std::vector<Vec3> none;
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(std::nullopt, 0.5, none), 0.5);
+  // A light 0.2 .. 0.8 m behind the camera: the wall stands 0.05 m behind its far edge.
+  const std::vector<Vec3> behind = {
+      {-0.3, 2.9, 0.2}, {0.3, 2.9, 0.2}, {0.3, 2.9, 0.8}, {-0.3, 2.9, 0.8}};
+  EXPECT_NEAR(rearWallDistanceM(std::nullopt, 0.5, behind), 0.85, 1e-12);
+  EXPECT_NEAR(rearWallDistanceM(std::nullopt, 0.5, behind, 0.0), 0.8, 1e-12);
+  // Lights in front of the camera, or exactly at it (z = 0), leave the default.
+  const std::vector<Vec3> front = {{-0.3, 2.9, -2}, {0.3, 2.9, -2}, {0.3, 2.9, -1}, {-0.3, 2.9, -1}};
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(std::nullopt, 0.5, front), 0.5);
+  const std::vector<Vec3> atCamera = {{0, 1.5, 0}, {0, 1.5, 0}, {0, 1.5, 0}, {0, 1.5, 0}};
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(std::nullopt, 0.5, atCamera), 0.5);
+  // A light just behind a camera that stands against its wall: the wall moves just behind it.
+  const std::vector<Vec3> touching = {{0, 2.5, 0.01}};
+  EXPECT_NEAR(rearWallDistanceM(std::nullopt, 0.0, touching), 0.06, 1e-12);
+  // The user's distance is kept even with a light beyond it (the user said where the wall is).
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(1.2, 0.5, behind), 1.2);
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(0.3, 0.5, behind), 0.3);
+  // A camera against its rear wall: never closer than 0.05 m.
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(0.0, 0.5, none), 0.05);
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(std::nullopt, -1.0, none), 0.05);
+  // Non-finite input never escapes.
+  const double nan = std::nan("");
+  const std::vector<Vec3> bad = {{nan, nan, nan}, {0, 0, std::numeric_limits<double>::infinity()}};
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(std::nullopt, 0.5, bad), 0.5);
+  EXPECT_DOUBLE_EQ(rearWallDistanceM(nan, nan, bad), 0.5);
+  // Far lights are enclosed however far (the box grows; it stays finite).
+  const std::vector<Vec3> far = {{0, 2.5, 40.0}};
+  EXPECT_NEAR(rearWallDistanceM(std::nullopt, 0.5, far), 40.05, 1e-9);
+}
+
+TEST(Room, RearWallDistanceReachesTheBox) {
+  const Camera c = syntheticCamera(0, -10, 0, 500);
+  const Vec3 w[4] = {{-2, 2.6, -5}, {2, 2.6, -5}, {2, 0, -5}, {-2, 0, -5}};
+  std::array<Vec2, 4> corners;
+  for (int i = 0; i < 4; ++i) corners[size_t(i)] = *c.project(w[i]);
+  RoomOptions o;
+  o.rearMarginM = rearWallDistanceM(std::nullopt, o.rearMarginM, {{0, 2.6, 1.1}});
+  const auto box = roomFromBackWall(c, corners, o);
+  ASSERT_TRUE(box.ok()) << box.error().message();
+  EXPECT_NEAR(box->zRearM, 1.15, 1e-9);
+  EXPECT_NEAR(box->zBackM, -5, 1e-6);
 }
 
 TEST(Extrusion, HeightBySingleViewMetrologyAndPlacementOnTop) {

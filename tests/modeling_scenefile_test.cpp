@@ -39,7 +39,7 @@ const char* kFullScene = R"({
     "principal_px": [256.0, 192.5],
     "vanishing_points_px": [[10000000.0, 190.0], [256.0, -9000.5], [250.0, 180.0]]
   },
-  "layout": { "back_wall_px": [[100, 50], [400, 52], [398, 300], [102, 298]] },
+  "layout": { "back_wall_px": [[100, 50], [400, 52], [398, 300], [102, 298]], "rear_m": 0.85 },
   "lights": [
     { "kind": "polygon_px", "points": [[200, 10], [300, 10], [300, 40], [200, 40]],
       "lock": true, "refine_size": true, "weights": { "position": 50, "intensity": 0.5, "size": 3 } },
@@ -87,6 +87,7 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
   if (a.layout.backWallPx) {
     for (int i = 0; i < 4; ++i) EXPECT_EQ((*a.layout.backWallPx)[i], (*b.layout.backWallPx)[i]);
   }
+  EXPECT_EQ(a.layout.rearM, b.layout.rearM);
   ASSERT_EQ(a.lights.size(), b.lights.size());
   for (size_t i = 0; i < a.lights.size(); ++i) {
     EXPECT_EQ(a.lights[i].kind, b.lights[i].kind);
@@ -162,6 +163,8 @@ TEST(SceneFile, FullSceneParsesEveryKey) {
   EXPECT_EQ(*d.camera.principalPx, Vec2(256.0, 192.5));
   EXPECT_EQ((*d.camera.vanishingPointsPx)[0], Vec2(1e7, 190.0));  // far away: kept as given
   EXPECT_EQ((*d.layout.backWallPx)[2], Vec2(398, 300));
+  ASSERT_TRUE(d.layout.rearM.has_value());
+  EXPECT_DOUBLE_EQ(*d.layout.rearM, 0.85);
   ASSERT_EQ(d.lights.size(), 2u);
   EXPECT_EQ(d.lights[0].kind, LightKeys::Kind::PolygonPx);
   EXPECT_EQ(d.lights[0].pointsPx.size(), 4u);
@@ -237,6 +240,25 @@ TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
 }
 
 // "room.materials": surfaces marked as a real mirror or a glossy floor, by surface name.
+// layout.rear_m alone (the back wall estimated) is kept on save; without it no layout is written.
+TEST(SceneFile, RearWallDistanceAloneRoundTrips) {
+  const fs::path dir = sceneDir("rear_m");
+  writeText(dir / "scene.json", R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg",
+                                    "layout": {"rear_m": 1.25}})");
+  auto r = loadSceneFile((dir / "scene.json").string());
+  ASSERT_TRUE(r.ok()) << r.error().message();
+  EXPECT_TRUE(r->warnings.empty());
+  EXPECT_FALSE(r->doc.layout.backWallPx.has_value());
+  ASSERT_TRUE(r->doc.layout.rearM.has_value());
+  EXPECT_DOUBLE_EQ(*r->doc.layout.rearM, 1.25);
+  const std::string text = sceneToJson(r->doc);
+  EXPECT_NE(text.find("\"rear_m\""), std::string::npos);
+  EXPECT_EQ(text.find("\"back_wall_px\""), std::string::npos);
+  SceneDoc noLayout = r->doc;
+  noLayout.layout.rearM.reset();
+  EXPECT_EQ(sceneToJson(noLayout).find("\"layout\""), std::string::npos);
+}
+
 TEST(SceneFile, RoomMaterialsParseAndRoundTrip) {
   const fs::path dir = sceneDir("room_materials");
   auto r = parseSceneJson(
@@ -427,6 +449,7 @@ TEST(SceneFile, MinimalSceneGetsDefaults) {
   EXPECT_FALSE(d.camera.focalPx.has_value());
   EXPECT_FALSE(d.camera.vanishingPointsPx.has_value());
   EXPECT_FALSE(d.layout.backWallPx.has_value());
+  EXPECT_FALSE(d.layout.rearM.has_value());
   EXPECT_TRUE(d.lights.empty() && d.objects.empty() && d.shafts.empty());
   EXPECT_EQ(d.render.spp, 256);
   EXPECT_EQ(d.render.noise, 0.004);
@@ -520,6 +543,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected an array"},
         BadCase{"back_wall", R"(, "layout": {"back_wall_px": [[1,2],[3,4],[5,6]]})",
                 "layout.back_wall_px", "expected 4 elements"},
+        BadCase{"rear_zero", R"(, "layout": {"rear_m": 0})", "layout.rear_m", "must be > 0"},
+        BadCase{"rear_negative", R"(, "layout": {"rear_m": -0.5})", "layout.rear_m", "must be > 0"},
+        BadCase{"rear_huge", R"(, "layout": {"rear_m": 1000})", "layout.rear_m", "at most 100 m"},
+        BadCase{"rear_type", R"(, "layout": {"rear_m": "far"})", "layout.rear_m", "expected a number"},
         BadCase{"lights_not_array", R"(, "lights": {})", "lights", "expected an array"},
         BadCase{"light_kind", R"(, "lights": [{"kind": "spot"}])", "lights[0].kind",
                 "unknown light kind"},

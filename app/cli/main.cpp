@@ -91,6 +91,9 @@ Render options:
                           or "lights"; the format --lights-json writes) instead of the estimate's
   --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
                           photo's size) instead of the estimate's
+  --clamp-indirect R      diagnostics: clamp each indirect sample's radiance to R (the photo's
+                          linear units; Cycles' "clamp indirect" times the exposure); default 0:
+                          off (unbiased)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
   --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
@@ -142,6 +145,7 @@ struct Args {
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;  // --working-mp
+  double clampIndirect = 0;         // --clamp-indirect (0: off)
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -181,7 +185,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report" ||
-        s == "--min-srgb-residual" || s == "--noise-quantile" || s == "--working-mp") {
+        s == "--min-srgb-residual" || s == "--noise-quantile" || s == "--working-mp" ||
+        s == "--clamp-indirect") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -212,6 +217,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         a.noiseQuantile = parseNumber<double>(*v);
         if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
           return "--noise-quantile: '" + *v + "' is not a number in (0, 1]";
+      } else if (s == "--clamp-indirect") {
+        const auto c = parseNumber<double>(*v);
+        if (!c) return "--clamp-indirect: '" + *v + "' is not a non-negative number";
+        a.clampIndirect = *c;
       } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -516,6 +525,7 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   so.seed = uint32_t(a.seed.value_or(int(ps.doc.render.seed)));
   so.threads = a.threads.value_or(0);
   so.startDivider = 1;  // no preview in batch mode
+  so.tracer.clampRadiance = a.clampIndirect;
   // Samples go where the objects change the photo; untouched pixels are revisited every fourth
   // wave (render/session.h).
   so.focusOnChanges = !a.noFocus;

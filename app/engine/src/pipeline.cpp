@@ -719,13 +719,20 @@ Status findCamera(Preparation& p, std::string& detail) {
 // room of ordinary proportions (a given one is an error).
 Status boxFromBackWall(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
-  auto box = roomFromBackWall(ps.camera, p.layoutCorners);
+  std::vector<Vec3> placed;  // the corners of the lights placed in 3D stay inside the box
+  for (const LightKeys& l : p.doc.lights)
+    if (l.kind == LightKeys::Kind::RectM)
+      placed.insert(placed.end(), l.cornersM.begin(), l.cornersM.end());
+  RoomOptions options;
+  options.rearMarginM = rearWallDistanceM(p.doc.layout.rearM, options.rearMarginM, placed);
+  auto box = roomFromBackWall(ps.camera, p.layoutCorners, options);
   if (!box && p.doc.layout.backWallPx) return box.error();
   if (box) {
     ps.box = *box;
     ps.backWallPx = p.layoutCorners;
   } else {
-    ps.box = RoomBox{-2.5, 2.5, -5.0, 0.5, std::max(2.6, p.doc.camera.heightM.value_or(1.6) + 0.5)};
+    ps.box = RoomBox{-2.5, 2.5, -5.0, options.rearMarginM,
+                     std::max(2.6, p.doc.camera.heightM.value_or(1.6) + 0.5)};
     ps.warnings.push_back("layout: the estimated back wall is unusable (" + box.error().reason +
                           "); using a 5 x 5.5 m room: give layout.back_wall_px");
   }

@@ -79,6 +79,16 @@ Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 
   return box;
 }
 
+double rearWallDistanceM(std::optional<double> givenM, double defaultM, const std::vector<Vec3>& inside,
+                         double clearanceM) {
+  constexpr double kMinM = 0.05;
+  if (givenM && std::isfinite(*givenM)) return std::max(*givenM, kMinM);
+  double rear = std::isfinite(defaultM) ? defaultM : 0.5;
+  for (const Vec3& p : inside)
+    if (std::isfinite(p.z()) && p.z() > 0) rear = std::max(rear, p.z() + std::max(clearanceM, 0.0));
+  return std::max(rear, kMinM);
+}
+
 std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box) {
   const Vec3 w[4] = {{box.xLeftM, box.ceilingM, box.zBackM},
                      {box.xRightM, box.ceilingM, box.zBackM},

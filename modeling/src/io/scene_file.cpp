@@ -509,13 +509,18 @@ class Reader {
 
   void readLayout(const json& j, LayoutKeys& l) {
     object(j, "layout");
-    knownKeys(j, "layout", {"back_wall_px"});
+    knownKeys(j, "layout", {"back_wall_px", "rear_m"});
     if (j.contains("back_wall_px")) {
       const std::string p = "layout.back_wall_px";
       const json& a = array(j["back_wall_px"], p, 4, 4);
       std::array<Vec2, 4> v;
       for (size_t i = 0; i < 4; ++i) v[i] = vec<2>(a[i], child(p, i));
       l.backWallPx = v;
+    }
+    if (j.contains("rear_m")) {
+      const double v = positive(j["rear_m"], "layout.rear_m");
+      if (v > 100) fail("layout.rear_m", "must be at most 100 m (got " + j["rear_m"].dump() + ")");
+      l.rearM = v;
     }
   }
 
@@ -996,10 +1001,15 @@ ojson buildJson(const SceneDoc& doc) {
   const bool anyResponse = c.response.mode != ResponseKeys::Mode::Auto;
   if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse)
     j["camera"] = cameraJson(c, anyLines);
-  if (doc.layout.backWallPx) {
-    ojson a = ojson::array();
-    for (const Vec2& v : *doc.layout.backWallPx) a.push_back(toJson(v));
-    j["layout"] = ojson{{"back_wall_px", a}};
+  if (doc.layout.backWallPx || doc.layout.rearM) {
+    ojson layout = ojson::object();
+    if (doc.layout.backWallPx) {
+      ojson a = ojson::array();
+      for (const Vec2& v : *doc.layout.backWallPx) a.push_back(toJson(v));
+      layout["back_wall_px"] = a;
+    }
+    if (doc.layout.rearM) layout["rear_m"] = *doc.layout.rearM;
+    j["layout"] = layout;
   }
   putList(j, "lights", doc.lights, lightJson);
   putList(j, "shafts", doc.shafts, shaftJson);

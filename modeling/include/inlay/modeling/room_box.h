@@ -11,6 +11,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace inlay {
 
@@ -30,6 +31,14 @@ struct RoomOptions {
 // the floor, a wall behind the camera, a degenerate quad).
 Expected<RoomBox> roomFromBackWall(const Camera& camera, const std::array<Vec2, 4>& cornersPx,
                                    const RoomOptions& options = {});
+
+// How far behind the camera the rear wall stands: `givenM` when the user gave it; otherwise
+// `defaultM`, pushed back so that every point of `inside` (the corners of lights placed in 3D)
+// lies at least `clearanceM` in front of it. A light at or in front of the camera changes
+// nothing. Never less than 0.05 m (a camera against its rear wall still has a closed box);
+// non-finite points are ignored.
+double rearWallDistanceM(std::optional<double> givenM, double defaultM, const std::vector<Vec3>& inside,
+                         double clearanceM = 0.05);
 
 // Where the back wall's corners appear in the photo (TL, TR, BR, BL); may lie outside it.
 std::array<Vec2, 4> backWallCornersPx(const Camera& camera, const RoomBox& box);

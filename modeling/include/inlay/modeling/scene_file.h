@@ -42,6 +42,9 @@ struct CameraKeys {
 struct LayoutKeys {
   // Top-left, top-right, bottom-right, bottom-left corners of the back wall.
   std::optional<std::array<Vec2, 4>> backWallPx;
+  // "rear_m": how far the unseen rear wall stands behind the camera (metres, > 0). Missing: the
+  // default margin, pushed back so that every light placed in 3D lies inside the box.
+  std::optional<double> rearM;
 };
 
 struct LightKeys {
