@@ -18,7 +18,7 @@ namespace inlay::studio {
 
 StatusMessage::StatusMessage(QWidget* parent) : QWidget(parent) {
   setObjectName(QStringLiteral("statusMessage"));
-  // As wide as the bar leaves it; as high as its lines (the bar follows).
+  // As wide as the bar leaves it; kMaxLines high.
   setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
 }
 
@@ -34,9 +34,8 @@ QString StatusMessage::toolTipText() const {
   return bar.isEmpty() ? text_ : text_ + QStringLiteral("\n\n") + bar;
 }
 
-int StatusMessage::linesHeight() const {
-  return int(std::max<qsizetype>(1, lines_.size())) * fontMetrics().lineSpacing();
-}
+// Always room for kMaxLines: the bar keeps its height whatever it shows.
+int StatusMessage::linesHeight() const { return kMaxLines * fontMetrics().lineSpacing(); }
 
 QSize StatusMessage::sizeHint() const { return {fontMetrics().averageCharWidth() * 40, linesHeight()}; }
 
@@ -45,9 +44,8 @@ QSize StatusMessage::minimumSizeHint() const {
 }
 
 // Word-wraps the text at the current width into at most kMaxLines lines; what does not fit
-// ends the last line as "…". The bar is asked to re-lay out when the number of lines changes.
+// ends the last line as "…".
 void StatusMessage::relayout() {
-  const qsizetype before = std::max<qsizetype>(1, lines_.size());
   lines_.clear();
   elided_ = false;
   QString text = text_;
@@ -73,7 +71,6 @@ void StatusMessage::relayout() {
     }
     layout.endLayout();
   }
-  if (std::max<qsizetype>(1, lines_.size()) != before) updateGeometry();
   update();
 }
 

@@ -4,8 +4,9 @@
 // QStatusBar draws a temporary message on one line left of its permanent fields and cuts it off
 // where the first field begins, so a long message (a model's notes, the final render's progress,
 // German and French above all) lost its end. Here the message is a StatusMessage: it wraps onto
-// more lines when one is not enough (the bar grows while it is shown) and only beyond kMaxLines
-// ends with "…", the whole text then in its tooltip. The fields (samples, rate, error, time,
+// a second line when one is not enough and only beyond kMaxLines ends with "…", the whole text
+// then in its tooltip. The bar is always kMaxLines high, so a message never moves the viewport
+// (a bar that grew with its message resized the photo under the user's cursor). The fields (samples, rate, error, time,
 // zoom) keep widths that do not follow every new figure, and in a narrow window the least
 // important ones make way so the message keeps at least kMinMessageWidth pixels.
 //
@@ -28,7 +29,7 @@ class StatusMessage : public QWidget {
   Q_OBJECT
 
  public:
-  static constexpr int kMaxLines = 3;
+  static constexpr int kMaxLines = 2;
 
   explicit StatusMessage(QWidget* parent = nullptr);
   void setText(const QString& text);
