@@ -950,6 +950,7 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   auto again = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, ps.lighting.lights, fitAgain,
                                 p.lightMask, ps.lighting.suns, p.lightingOptions);
   if (!again) return p.cancelled() ? cancelledError() : again.error();
+  p.stageSteps = stepsOf(*again);  // the refit's work, whichever fit is kept
   // ps.lighting is still the first estimate's fit (the refinement changed only its lights).
   if (p.opt.keepBetterFit && refitIsWorse(ps.lighting.fitRmsLog, again->fitRmsLog)) {
     // A routine self-check, not something the user must act on: the stage's detail (the
@@ -957,15 +958,14 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "a light moved; the first estimate fits the photo better (log residual %.5f "
-                  "against %.5f) and is kept",
+                  "against %.5f) and is kept; the refit took ",
                   ps.lighting.fitRmsLog, again->fitRmsLog);
     ps.lighting.lights = ps.initialLights;
     ps.lighting.suns = ps.initialSuns;
-    detail = buf;
+    detail = buf + gatherText(*again);
     return {};
   }
   ps.lighting = std::move(*again);
-  p.stageSteps = stepsOf(ps.lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
   detail = "a light moved, " + gatherText(ps.lighting);
   return {};
