@@ -252,7 +252,7 @@ def main():
                                    int(opt("--long-spp", "128")), log, "--reuse" in sys.argv[1:])
                 json.dump(row, open(os.path.join(rows_dir, room + ".json"), "w"))
                 print(json.dumps(row), flush=True)
-    rows = [json.load(open(os.path.join(rows_dir, f))) for f in sorted(os.listdir(rows_dir)) if f.endswith(".json")]
+    rows = benchlib.read_rows(rows_dir)
     if not rows:
         return 1
     cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "no_grain_rmse", "true_intensity_rmse", "true_lights_rmse",

@@ -208,7 +208,7 @@ def main():
                     row = rear_share({**json.load(open(prev_path)), **row})
                 json.dump(rear_share(row), open(prev_path, "w"))
                 print(json.dumps(row), flush=True)
-    rows = [json.load(open(os.path.join(rows_dir, f))) for f in sorted(os.listdir(rows_dir)) if f.endswith(".json")]
+    rows = benchlib.read_rows(rows_dir)
     if not rows:
         return 1
     cols = ["room", "material", "lights", "true_rear_m"] + [n + s for n in RUNS for s in ("_rmse", "_adjusted")]

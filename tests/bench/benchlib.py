@@ -228,6 +228,16 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
+def read_rows(rows_dir):
+    """The per-room result rows a resumable benchmark left in rows_dir (one JSON file each), by name."""
+    rows = []
+    for name in sorted(os.listdir(rows_dir)):
+        if name.endswith(".json"):
+            with open(os.path.join(rows_dir, name)) as f:
+                rows.append(json.load(f))
+    return rows
+
+
 if __name__ == "__main__":
     a = args(__doc__, 3)
     if a[0] != "table":
