@@ -208,22 +208,13 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     scene = os.path.join(out, tag + ".json")
     run([PY, os.path.join(tools, "harness.py"), "scene", vdir, scene, "--seconds", str(o["seconds"])])
     comp, lj = os.path.join(out, tag + ".png"), os.path.join(out, tag + "_lights.json")
-    if not (o["rescore"] and os.path.exists(comp)):
-        for f in (comp, lj):
-            if os.path.exists(f):
-                os.remove(f)
-        budget = (["--spp", str(o["spp"]), "--seconds", "0", "--noise", "0"] if o["spp"]
-                  else ["--spp", "100000", "--seconds", str(o["seconds"])])
-        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1", "--lights-json", lj] + budget,
-                               timeout=o["seconds"] * 4 + 1800)
-        row["render_wall_s"] = round(secs, 2)
-        if rc != 0:
-            row["error"] = err.strip()[-300:]
-            return row
-    rc, _, so, _ = run([PY, os.path.join(tools, "harness.py"), "score", vdir, comp])
-    s = json.loads(so)
-    for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing"):
-        row[k] = round(s[k], 4)
+    budget = (["--spp", str(o["spp"]), "--seconds", "0", "--noise", "0"] if o["spp"]
+              else ["--spp", "100000", "--seconds", str(o["seconds"])])
+    row.update(render_scored(cli, tools, scene, vdir, comp, ["--lights-json", lj] + budget, o["seconds"] * 4 + 1800,
+                             ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing"),
+                             o["rescore"], "", also_stale=(lj,)))
+    if "error" in row:
+        return row
     if o["spp"] and o["long_spp"]:
         row.update(long_render(cli, tools, scene, vdir, os.path.join(out, tag + "_long.png"), o))
     if os.path.exists(lj):
@@ -237,20 +228,28 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
 
 def long_render(cli, tools, scene, vdir, comp, o):
     """The `_long` columns: the variant rendered at --long-spp samples (seed 1, uniform), scored."""
+    return render_scored(cli, tools, scene, vdir, comp, ["--spp", str(o["long_spp"]), "--seconds", "0", "--noise", "0"],
+                         7200, ("object_rmse", "object_rmse_adjusted", "around_rmse"), o["rescore"], "_long")
+
+
+def render_scored(cli, tools, scene, vdir, comp, render_args, timeout, keys, rescore, suffix, also_stale=()):
+    """Renders `scene` to `comp` (seed 1; kept when rescoring and it exists) and scores it with the
+    harness: `keys` + suffix, the render's wall seconds as render<suffix>_wall_s, or error<suffix>."""
     row = {}
-    if not (o["rescore"] and os.path.exists(comp)):
-        if os.path.exists(comp):
-            os.remove(comp)
-        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1", "--spp", str(o["long_spp"]),
-                                "--seconds", "0", "--noise", "0"], timeout=7200)
-        row["render_long_wall_s"] = round(secs, 2)
+    if not (rescore and os.path.exists(comp)):
+        for f in (comp,) + tuple(also_stale):
+            if os.path.exists(f):
+                os.remove(f)
+        rc, secs, _, err = run([cli, "render", scene, "-o", comp, "--quiet", "--seed", "1"] + render_args,
+                               timeout=timeout)
+        row["render%s_wall_s" % suffix] = round(secs, 2)
         if rc != 0:
-            row["error_long"] = err.strip()[-300:]
+            row["error" + suffix] = err.strip()[-300:]
             return row
     rc, _, so, _ = run([PY, os.path.join(tools, "harness.py"), "score", vdir, comp])
     s = json.loads(so)
-    for k in ("object_rmse", "object_rmse_adjusted", "around_rmse"):
-        row[k + "_long"] = round(s[k], 4)
+    for k in keys:
+        row[k + suffix] = round(s[k], 4)
     return row
 
 
