@@ -129,6 +129,9 @@ class PathTracer {
   PathTracer(const PathTracer&) = delete;
   PathTracer& operator=(const PathTracer&) = delete;
 
+  // The tracer's copy of the scene. Its roomAlbedo keeps the camera, the surface means and the
+  // photo only: the albedo, first-surface and usable tables live in the tracer's room texture
+  // (read them from the RenderScene the tracer was made from).
   const RenderScene& scene() const;
   // Object BVHs built so far by every tracer of the process. An object's BVH (object space) is
   // built once per mesh while the mesh lives and shared by the tracers that instance it, so a
