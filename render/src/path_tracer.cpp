@@ -284,16 +284,20 @@ struct PathTracer::Impl {
     rtcInitIntersectContext(&ctx.base);
     ctx.u = cardU;
     rtcIntersect1(target, &ctx.base, &rh);
+    return hitFrom(rh.ray.tfar, rh.hit, origin, dir);
+  }
+  // The hit Embree found for the ray origin + t dir (tfar: its distance), set up for shading.
+  Hit hitFrom(float tfar, const RTCHit& h, const Vec3& origin, const Vec3& dir) const {
     Hit hit;
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-    hit.t = rh.ray.tfar;
+    if (h.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    hit.t = tfar;
     hit.point = origin + hit.t * dir;
-    const unsigned inst = rh.hit.instID[0];
-    const unsigned id = inst != RTC_INVALID_GEOMETRY_ID ? inst : rh.hit.geomID;
+    const unsigned inst = h.instID[0];
+    const unsigned id = inst != RTC_INVALID_GEOMETRY_ID ? inst : h.geomID;
     if (id < surfaceCount) {
       hit.kind = Hit::Kind::Room;
       hit.index = int(id);
-      const RoomTriangle& tri = roomTriangles[id][rh.hit.primID];
+      const RoomTriangle& tri = roomTriangles[id][h.primID];
       hit.geometricNormal = tri.normalValid ? tri.normal : Vec3(-dir);  // safeNormal()
       hit.shadingNormal = hit.geometricNormal;
       hit.roundOffM = tri.roundOffM;
@@ -306,10 +310,10 @@ struct PathTracer::Impl {
     } else {
       hit.kind = Hit::Kind::Object;
       hit.index = int(id - surfaceCount - lights.size());
-      hit.prim = rh.hit.primID;
+      hit.prim = h.primID;
       const ObjectData& o = objects[size_t(hit.index)];
       const TriangleMesh& m = *o.mesh;
-      const auto& tri = m.triangles[rh.hit.primID];
+      const auto& tri = m.triangles[h.primID];
       const Mat4& w = o.worldFromObject;
       auto toWorld = [&](const Vec3f& p) -> Vec3 {
         return w.topLeftCorner<3, 3>() * p.cast<double>() + w.topRightCorner<3, 1>();
@@ -322,7 +326,7 @@ struct PathTracer::Impl {
       hit.geometricNormal = ng;
       hit.shadingNormal = ng;
       if (o.shadingNormals) {
-        const double u = rh.hit.u, v = rh.hit.v;
+        const double u = h.u, v = h.v;
         const Vec3 nObj = (1.0 - u - v) * m.normals[tri[0]].cast<double>() +
                           u * m.normals[tri[1]].cast<double>() + v * m.normals[tri[2]].cast<double>();
         const Vec3 ns = o.normalFromObject * nObj;
@@ -627,11 +631,26 @@ struct PathTracer::Impl {
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
   };
 
+  struct PixelSums;
+  PixelSums startPixel(const DifferentialBuffers& buffers, int x, int y) const;
+  PathState cameraRay(const DifferentialBuffers& buffers, int x, int y, const SampleRng& rng) const;
+  void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
+                 const Hit* firstHit, RayCounters& tileCounters) const;
+  void storePixel(DifferentialBuffers& buffers, int x, int y, int count, const PixelSums& p) const;
   void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
                    RayCounters& tileCounters) const;
-  template <class RenderOne>
+  // Camera rays go in packets of kPacket pixels of a row, unless occluder cards are present
+  // (their filter reads one pass number per intersect context, not one per ray).
+  static constexpr int kPacket = 8;
+  bool packetsSupported = false;  // the Embree build and the CPU run rtcIntersect8 natively (AVX)
+  bool cameraPackets() const { return packetsSupported && !hasCards; }
+  void renderPacket(DifferentialBuffers& buffers, int x0, int y, int n, const int* first,
+                    const int* count, uint32_t seed, RayCounters& tileCounters) const;
+  void castCameraPacket(int n, const Vec3& eye, const Vec3* dirs, Hit* hits,
+                        RayCounters& tileCounters) const;
+  template <class RenderRun>
   bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
-                    const CancelToken* cancel, RenderOne&& renderOne) const;
+                    const CancelToken* cancel, RenderRun&& renderRun) const;
   mutable std::mutex arenaMutex;
   mutable std::shared_ptr<tbb::task_arena> arena;
   mutable int arenaThreads = -1;
@@ -655,7 +674,9 @@ struct PathTracer::Impl {
     bool specular = false;  // the chain met a specular surface before the guide's
   };
   struct GuideSums;
-  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec) const;
+  // firstHit: the camera ray's hit in withScene, cast already (in a packet), or null.
+  void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
+                 const Hit* firstHit = nullptr) const;
   void recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const;
   bool guideReflectance(const Hit& hit, Vec3* albedo) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
@@ -762,9 +783,9 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 // A path as named steps: cast the ray; part at an object; end at an emitter or on the photo;
 // otherwise the surface's BSDF, next-event estimation, and the next direction.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
-                                 PrimaryRecord* rec) const {
-  for (;; ++st.depth) {
-    const Hit hit = castPathRay(mode, st, rng, out);
+                                 PrimaryRecord* rec, const Hit* firstHit) const {
+  for (;; ++st.depth, firstHit = nullptr) {
+    const Hit hit = firstHit ? *firstHit : castPathRay(mode, st, rng, out);
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (st.depth == 0 && rec) rec->objectFirst = true;
@@ -803,6 +824,39 @@ Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRn
   if (st.depth == 0) ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
   else ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
   return hit;
+}
+
+// The camera rays eye + t dirs[k], k < n <= kPacket, in one rtcIntersect8 into withScene, their
+// hits set up as intersect() sets them up; counted (and timed, if asked) as camera rays.
+void PathTracer::Impl::castCameraPacket(int n, const Vec3& eye, const Vec3* dirs, Hit* hits,
+                                        RayCounters& tileCounters) const {
+  alignas(32) RTCRayHit8 rh;
+  alignas(32) int valid[kPacket];
+  for (int k = 0; k < kPacket; ++k) {
+    valid[k] = k < n ? -1 : 0;
+    const RTCRayHit one = makeRayHit(eye, dirs[std::min(k, n - 1)], 0, 3.4e38);
+    rh.ray.org_x[k] = one.ray.org_x, rh.ray.org_y[k] = one.ray.org_y, rh.ray.org_z[k] = one.ray.org_z;
+    rh.ray.dir_x[k] = one.ray.dir_x, rh.ray.dir_y[k] = one.ray.dir_y, rh.ray.dir_z[k] = one.ray.dir_z;
+    rh.ray.tnear[k] = one.ray.tnear, rh.ray.tfar[k] = one.ray.tfar;
+    rh.ray.time[k] = 0, rh.ray.mask[k] = one.ray.mask, rh.ray.id[k] = unsigned(k), rh.ray.flags[k] = 0;
+    rh.hit.geomID[k] = rh.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+    for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
+      rh.hit.instID[l][k] = RTC_INVALID_GEOMETRY_ID;
+    if (options.rayLog && k < n) logRay(LoggedRay::Type::Camera, withScene, eye, dirs[k], 0, 3.4e38);
+  }
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  const int64_t t0 = rayClockNs();
+  rtcIntersect8(valid, withScene, &ctx, &rh);
+  tileCounters.cameraNs += rayClockNs() - t0;
+  tileCounters.cameraRays += uint64_t(n);
+  for (int k = 0; k < n; ++k) {
+    RTCHit h;
+    h.geomID = rh.hit.geomID[k], h.primID = rh.hit.primID[k], h.instID[0] = rh.hit.instID[0][k];
+    h.u = rh.hit.u[k], h.v = rh.hit.v[k];
+    hits[k] = hitFrom(rh.ray.tfar[k], h, eye, dirs[k]);
+  }
 }
 
 // An area light the path meets: its radiance, weighted by MIS against NEE after a
@@ -1228,6 +1282,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   std::vector<uint8_t>().swap(copied.photoRadianceUsable);
   GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
   d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
+  d.packetsSupported = rtcGetDeviceProperty(d.device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -1372,65 +1427,127 @@ struct PathTracer::Impl::GuideSums {
   }
 };
 
-// One pixel's samples [firstSample, firstSample + count), summed in double and added to the
-// buffers once (so a pixel's sums do not depend on how its samples were grouped into tiles).
-void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample,
-                                   int count, uint32_t seed, RayCounters& tileCounters) const {
-  const Camera& cam = scene.camera;
-  const Vec3 eye = cam.centreWorld();
-  // Buffers may be a different size from the camera's pixel frame: scale into it.
-  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
-  Vec3 sumW = Vec3::Zero(), sumWo = Vec3::Zero(), sumC = Vec3::Zero();
-  double sumMask = 0, sumDiffSq = 0, sumCSq = 0;
+// One pixel's samples, summed in double and added to the buffers once (so a pixel's sums do not
+// depend on how its samples were grouped into tiles or packets).
+struct PathTracer::Impl::PixelSums {
+  Vec3 with = Vec3::Zero(), without = Vec3::Zero(), change = Vec3::Zero();
+  double mask = 0, diffSq = 0, changeSq = 0;
   GuideSums guide;
-  const Vec3 photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
-  for (int k = 0; k < count; ++k) {
-    const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
-    const auto jitter = rng.get2(0);
-    const Vec2 px((x + jitter[0]) * sx, (y + jitter[1]) * sy);
-    PathState st;
-    st.origin = eye;
-    st.dir = cam.directionThroughPixel(px);
-    Sums sums;
-    PrimaryRecord rec;
-    rec.wantGuide = buffers.hasGuides();
-    tracePath(Mode::Shared, st, rng, sums, &rec);
-    const bool objectFirst = rec.objectFirst;
-    tileCounters += sums.counters;
-    if (rec.wantGuide) guide.add(rec);
-    if (!sums.with.allFinite() || !sums.without.allFinite()) {
-      nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
-      continue;  // dropped: counts as a sample of zero in both renders
-    }
-    sumW += sums.with;
-    sumWo += sums.without;
-    sumMask += objectFirst ? 1.0 : 0.0;
-    sumDiffSq += (sums.with - sums.without).squaredNorm() / 3.0;
-    const Vec3 change = objectFirst ? Vec3(sums.with - photo) : Vec3(sums.with - sums.without);
-    sumC += change;
-    sumCSq += change.squaredNorm() / 3.0;
+  Vec3 photo = Vec3::Zero();  // the photo under the pixel (the change of an object pixel)
+};
+
+// The camera ray of sample `rng` through pixel (x, y) of the buffers (scaled into the camera's
+// pixel frame when the buffers are a different size).
+PathTracer::Impl::PathState PathTracer::Impl::cameraRay(const DifferentialBuffers& buffers, int x, int y,
+                                                        const SampleRng& rng) const {
+  const Camera& cam = scene.camera;
+  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  const auto jitter = rng.get2(0);
+  PathState st;
+  st.origin = cam.centreWorld();
+  st.dir = cam.directionThroughPixel(Vec2((x + jitter[0]) * sx, (y + jitter[1]) * sy));
+  return st;
+}
+
+// Traces one sample's path from `st` (its first hit given, or cast here) and adds it to `p`.
+void PathTracer::Impl::addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
+                                 const Hit* firstHit, RayCounters& tileCounters) const {
+  Sums sums;
+  PrimaryRecord rec;
+  rec.wantGuide = wantGuide;
+  tracePath(Mode::Shared, st, rng, sums, &rec, firstHit);
+  tileCounters += sums.counters;
+  if (rec.wantGuide) p.guide.add(rec);
+  if (!sums.with.allFinite() || !sums.without.allFinite()) {
+    nonFiniteSamples.fetch_add(1, std::memory_order_relaxed);
+    return;  // dropped: counts as a sample of zero in both renders
   }
+  p.with += sums.with;
+  p.without += sums.without;
+  p.mask += rec.objectFirst ? 1.0 : 0.0;
+  p.diffSq += (sums.with - sums.without).squaredNorm() / 3.0;
+  const Vec3 change = rec.objectFirst ? Vec3(sums.with - p.photo) : Vec3(sums.with - sums.without);
+  p.change += change;
+  p.changeSq += change.squaredNorm() / 3.0;
+}
+
+void PathTracer::Impl::storePixel(DifferentialBuffers& buffers, int x, int y, int count,
+                                  const PixelSums& p) const {
   float* w = buffers.sumWith.pixel(x, y);
   float* wo = buffers.sumWithout.pixel(x, y);
   float* ch = buffers.sumChange.pixel(x, y);
   for (int c = 0; c < 3; ++c) {
-    w[c] += float(sumW[c]);
-    wo[c] += float(sumWo[c]);
-    ch[c] += float(sumC[c]);
+    w[c] += float(p.with[c]);
+    wo[c] += float(p.without[c]);
+    ch[c] += float(p.change[c]);
   }
-  buffers.sumChangeSq.at(x, y) += float(sumCSq);
-  buffers.sumMask.at(x, y) += float(sumMask);
-  buffers.sumDiffSq.at(x, y) += float(sumDiffSq);
+  buffers.sumChangeSq.at(x, y) += float(p.changeSq);
+  buffers.sumMask.at(x, y) += float(p.mask);
+  buffers.sumDiffSq.at(x, y) += float(p.diffSq);
   buffers.samples[size_t(y) * buffers.width + x] += count;
-  if (buffers.hasGuides()) guide.addTo(buffers, x, y);
+  if (buffers.hasGuides()) p.guide.addTo(buffers, x, y);
+}
+
+PathTracer::Impl::PixelSums PathTracer::Impl::startPixel(const DifferentialBuffers& buffers, int x,
+                                                         int y) const {
+  const Camera& cam = scene.camera;
+  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  PixelSums p;
+  p.photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
+  return p;
+}
+
+// One pixel's samples [firstSample, firstSample + count), one ray at a time.
+void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample,
+                                   int count, uint32_t seed, RayCounters& tileCounters) const {
+  PixelSums p = startPixel(buffers, x, y);
+  for (int k = 0; k < count; ++k) {
+    const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
+    addSample(p, buffers.hasGuides(), cameraRay(buffers, x, y, rng), rng, nullptr, tileCounters);
+  }
+  storePixel(buffers, x, y, count, p);
+}
+
+// Pixels x0 .. x0 + n - 1 (n <= kPacket) of row y, pixel i's samples [first[i], first[i] +
+// count[i]): sample k of every pixel that has it leaves the camera in one packet, then each path
+// goes on alone. A pixel's sums are those renderPixel() gives when the packet finds the same hits.
+void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y, int n, const int* first,
+                                    const int* count, uint32_t seed, RayCounters& tileCounters) const {
+  std::array<PixelSums, kPacket> sums;
+  int most = 0;
+  for (int i = 0; i < n; ++i)
+    sums[size_t(i)] = startPixel(buffers, x0 + i, y), most = std::max(most, count[i]);
+  for (int k = 0; k < most; ++k) {
+    auto rngOf = [&](int i) {
+      return SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
+    };
+    std::array<PathState, kPacket> rays;
+    std::array<Vec3, kPacket> dirs;
+    std::array<int, kPacket> pixel;
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      if (k >= count[i]) continue;
+      rays[size_t(m)] = cameraRay(buffers, x0 + i, y, rngOf(i));
+      dirs[size_t(m)] = rays[size_t(m)].dir, pixel[size_t(m)] = i, ++m;
+    }
+    std::array<Hit, kPacket> hits;
+    castCameraPacket(m, rays[0].origin, dirs.data(), hits.data(), tileCounters);
+    for (int j = 0; j < m; ++j) {
+      const int i = pixel[size_t(j)];
+      addSample(sums[size_t(i)], buffers.hasGuides(), rays[size_t(j)], rngOf(i), &hits[size_t(j)],
+                tileCounters);
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);
 }
 
 // Renders the pixels of [x0,x1) x [y0,y1) (clipped to the buffers) by `renderOne(x, y, counters)`
 // with flush-to-zero on and the ray counters published once at the end; false when `cancel`
 // stopped it (checked per pixel).
-template <class RenderOne>
+template <class RenderRun>
 bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
-                                    const CancelToken* cancel, RenderOne&& renderOne) const {
+                                    const CancelToken* cancel, RenderRun&& renderRun) const {
   INLAY_CHECK(buffers.width > 0 && buffers.height > 0 &&
               buffers.samples.size() == size_t(buffers.width) * buffers.height);
   x0 = std::max(0, x0), y0 = std::max(0, y0);
@@ -1444,9 +1561,9 @@ bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, 
     ~Publish() { d.counters.add(c); }
   } publish{*this, rectCounters};
   for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
+    for (int x = x0; x < x1; x += kPacket) {
       if (cancel && cancel->shouldStop()) return false;
-      renderOne(x, y, rectCounters);
+      renderRun(x, y, std::min(kPacket, x1 - x), rectCounters);
     }
   return true;
 }
@@ -1491,9 +1608,14 @@ bool PathTracer::Impl::forEachTile(int width, int height, int threads, const Can
 bool PathTracer::renderRect(DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
                             int firstSample, int count, uint32_t seed, const CancelToken* cancel) const {
   const Impl& d = *impl_;
-  return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
-    d.renderPixel(buffers, x, y, firstSample, count, seed, counters);
-  });
+  std::array<int, Impl::kPacket> firsts, counts;
+  firsts.fill(firstSample), counts.fill(count);
+  return d.renderPixels(
+      buffers, x0, y0, x1, y1, cancel, [&](int x, int y, int n, RayCounters& counters) {
+        if (d.cameraPackets())
+          return d.renderPacket(buffers, x, y, n, firsts.data(), counts.data(), seed, counters);
+        for (int i = 0; i < n; ++i) d.renderPixel(buffers, x + i, y, firstSample, count, seed, counters);
+      });
 }
 
 bool PathTracer::render(DifferentialBuffers& buffers, int firstSample, int count, uint32_t seed,
@@ -1510,10 +1632,20 @@ bool PathTracer::renderCounts(DifferentialBuffers& buffers, const std::vector<in
   INLAY_CHECK(counts.size() == buffers.samples.size());
   return d.forEachTile(
       buffers.width, buffers.height, threads, cancel, [&](int x0, int y0, int x1, int y1) {
-        return d.renderPixels(buffers, x0, y0, x1, y1, cancel, [&](int x, int y, RayCounters& counters) {
-          const size_t i = size_t(y) * buffers.width + x;
-          if (counts[i] > 0) d.renderPixel(buffers, x, y, buffers.samples[i], counts[i], seed, counters);
-        });
+        return d.renderPixels(
+            buffers, x0, y0, x1, y1, cancel, [&](int x, int y, int n, RayCounters& counters) {
+              const size_t at = size_t(y) * buffers.width + x;
+              std::array<int, Impl::kPacket> firsts{}, runCounts{};
+              for (int i = 0; i < n; ++i)
+                firsts[size_t(i)] = buffers.samples[at + size_t(i)],
+                runCounts[size_t(i)] = std::max(0, counts[at + size_t(i)]);
+              if (d.cameraPackets())
+                return d.renderPacket(buffers, x, y, n, firsts.data(), runCounts.data(), seed, counters);
+              for (int i = 0; i < n; ++i)
+                if (runCounts[size_t(i)] > 0)
+                  d.renderPixel(buffers, x + i, y, firsts[size_t(i)], runCounts[size_t(i)], seed,
+                                counters);
+            });
       });
 }
 

@@ -10,7 +10,9 @@
 //             untimed frame's CPU time);
 //     bounce: the rest of the full frame (its camera rays at the camera rate, and NEE, taken off).
 //   The bare loop casts the very rays the frame cast (TracerOptions::rayLog), each type on its
-//   own, rtcIntersect1 / rtcOccluded1 into scenes built here from the same RenderScene (room
+//   own, as the renderer cast them (rtcIntersect8 for its camera packets, rtcIntersect1 /
+//   rtcOccluded1 for the rest; the single-ray figure of every type is printed too) into scenes
+//   built here from the same RenderScene (room
 //   surfaces, light quads, one instanced BVH per object; the sun scenes without box walls and
 //   emitters), nothing else in the loop.
 // - triangles.csv: CPU milliseconds per sample of the full frame, and of its rays in the bare
@@ -124,32 +126,28 @@ class BareScenes {
   BareScenes(const BareScenes&) = delete;
   BareScenes& operator=(const BareScenes&) = delete;
 
-  // Casts the logged rays of `type`; thread CPU seconds, and their count into *count.
-  double cast(const std::vector<LoggedRay>& rays, LoggedRay::Type type, size_t* count) const {
+  // Casts the logged rays of `type`; thread CPU seconds, and their count into *count. As cast:
+  // camera rays into the scene with the objects go in packets of 8 as the renderer casts them
+  // (8 pixels of a row, logged one after the other: exact for a frame whose width is a multiple
+  // of 8), the rest one by one; otherwise every ray alone (rtcIntersect1 / rtcOccluded1).
+  double cast(const std::vector<LoggedRay>& rays, LoggedRay::Type type, bool asCast,
+              size_t* count) const {
     const unsigned csr = _mm_getcsr();
     _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
     _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
     size_t n = 0;
     unsigned hits = 0;
     const double t0 = threadSeconds();
-    for (const LoggedRay& r : rays) {
+    for (size_t i = 0; i < rays.size(); ++i) {
+      const LoggedRay& r = rays[i];
       if (r.type != type) continue;
-      ++n;
-      RTCIntersectContext ctx;
-      rtcInitIntersectContext(&ctx);
-      RTCRayHit rh;
-      rh.ray.org_x = r.org[0], rh.ray.org_y = r.org[1], rh.ray.org_z = r.org[2];
-      rh.ray.dir_x = r.dir[0], rh.ray.dir_y = r.dir[1], rh.ray.dir_z = r.dir[2];
-      rh.ray.tnear = r.tnear, rh.ray.tfar = r.tfar;
-      rh.ray.time = 0, rh.ray.mask = 0xFFFFFFFFu, rh.ray.id = 0, rh.ray.flags = 0;
-      RTCScene s = targets_[int(r.target)];
-      if (type == LoggedRay::Type::Shadow) {
-        rtcOccluded1(s, &ctx, &rh.ray);
-        hits += rh.ray.tfar < 0;
+      const int run = asCast ? cameraRun(rays, i) : 1;
+      if (run > 1) {
+        hits += castPacket(&r, run);
+        n += size_t(run), i += size_t(run) - 1;
       } else {
-        rh.hit.geomID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(s, &ctx, &rh);
-        hits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        hits += castOne(r);
+        ++n;
       }
     }
     const double seconds = threadSeconds() - t0;
@@ -160,6 +158,54 @@ class BareScenes {
   }
 
  private:
+  // How many camera rays into the scene with the objects follow one another from rays[i] (at
+  // most 8; 0 or 1: cast alone).
+  static int cameraRun(const std::vector<LoggedRay>& rays, size_t i) {
+    int n = 0;
+    while (n < 8 && i + size_t(n) < rays.size() && rays[i + size_t(n)].type == LoggedRay::Type::Camera &&
+           rays[i + size_t(n)].target == LoggedRay::Target::With)
+      ++n;
+    return n;
+  }
+  unsigned castOne(const LoggedRay& r) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRayHit rh;
+    rh.ray.org_x = r.org[0], rh.ray.org_y = r.org[1], rh.ray.org_z = r.org[2];
+    rh.ray.dir_x = r.dir[0], rh.ray.dir_y = r.dir[1], rh.ray.dir_z = r.dir[2];
+    rh.ray.tnear = r.tnear, rh.ray.tfar = r.tfar;
+    rh.ray.time = 0, rh.ray.mask = 0xFFFFFFFFu, rh.ray.id = 0, rh.ray.flags = 0;
+    RTCScene s = targets_[int(r.target)];
+    if (r.type == LoggedRay::Type::Shadow) {
+      rtcOccluded1(s, &ctx, &rh.ray);
+      return rh.ray.tfar < 0;
+    }
+    rh.hit.geomID = rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(s, &ctx, &rh);
+    return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+  }
+  // Rays r[0 .. n-1] (n <= 8, one target, closest hits) in one rtcIntersect8.
+  unsigned castPacket(const LoggedRay* r, int n) const {
+    alignas(32) RTCRayHit8 rh;
+    alignas(32) int valid[8];
+    for (int k = 0; k < 8; ++k) {
+      const LoggedRay& q = r[std::min(k, n - 1)];
+      valid[k] = k < n ? -1 : 0;
+      rh.ray.org_x[k] = q.org[0], rh.ray.org_y[k] = q.org[1], rh.ray.org_z[k] = q.org[2];
+      rh.ray.dir_x[k] = q.dir[0], rh.ray.dir_y[k] = q.dir[1], rh.ray.dir_z[k] = q.dir[2];
+      rh.ray.tnear[k] = q.tnear, rh.ray.tfar[k] = q.tfar;
+      rh.ray.time[k] = 0, rh.ray.mask[k] = 0xFFFFFFFFu, rh.ray.id[k] = 0, rh.ray.flags[k] = 0;
+      rh.hit.geomID[k] = rh.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+    }
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect8(valid, targets_[int(r[0].target)], &ctx, &rh);
+    unsigned hits = 0;
+    for (int k = 0; k < n; ++k) hits += rh.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+    return hits;
+  }
+
   RTCDevice device_;
   RTCScene targets_[4] = {};  // indexed by LoggedRay::Target
   std::vector<RTCScene> objects_;
@@ -223,10 +269,10 @@ std::vector<LoggedRay> logRays(const RenderScene& scene, TracerOptions opt) {
 }
 
 double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, LoggedRay::Type type,
-                   int repeats, size_t* count) {
+                   int repeats, size_t* count, bool asCast = true) {
   std::vector<double> t;
   t.reserve(size_t(std::max(0, repeats)));
-  for (int r = 0; r < repeats; ++r) t.push_back(bare.cast(rays, type, count));
+  for (int r = 0; r < repeats; ++r) t.push_back(bare.cast(rays, type, asCast, count));
   return median(t);
 }
 
@@ -260,11 +306,15 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
     if (n != r.count)
       std::fprintf(stderr, "warning: %s: %zu rays logged, %llu counted\n", r.name, n,
                    static_cast<unsigned long long>(r.count));
+    const double single = double(n) / bareSeconds(bare, *r.rays, r.type, repeats, &n, false);
     const double ours = double(r.count) / r.seconds, plain = double(n) / bareS;
-    csv << r.name << ',' << r.count << ',' << ours << ',' << plain << ',' << ours / plain << '\n';
-    std::printf("%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f\n",
-                r.name, static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6,
-                ours / plain);
+    csv << r.name << ',' << r.count << ',' << ours << ',' << plain << ',' << ours / plain << ','
+        << single << ',' << ours / single << '\n';
+    std::printf(
+        "%-7s %9llu rays  renderer %6.2f M/s/thread  bare Embree %6.2f M/s/thread  ratio %.3f"
+        "  (bare one ray at a time %6.2f, ratio %.3f)\n",
+        r.name, static_cast<unsigned long long>(r.count), ours * 1e-6, plain * 1e-6, ours / plain,
+        single * 1e-6, ours / single);
   }
   std::printf(
       "frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
@@ -436,7 +486,9 @@ int main(int argc, char** argv) {
     return csv;
   };
   if (parts.find("types") != std::string::npos) {
-    auto csv = open("types.csv", "type,rays,renderer_per_s_per_thread,bare_per_s_per_thread,ratio");
+    auto csv = open("types.csv",
+                    "type,rays,renderer_per_s_per_thread,bare_per_s_per_thread,ratio,"
+                    "bare_single_per_s_per_thread,ratio_single");
     types(scene, repeats, csv);
   }
   if (parts.find("waves") != std::string::npos) {

@@ -38,12 +38,15 @@ def main():
 
     if data[label]["types"]:
         benchlib.write_table("throughput", data[label]["types"], source=os.path.join(root, label, "types.csv"))
-    print("| run | type | rays | renderer M rays/s/thread | bare Embree M rays/s/thread | ratio |")
-    print("|---|---|---|---|---|---|")
+    print("| run | type | rays | renderer M rays/s/thread | bare Embree M rays/s/thread | ratio "
+          "| bare, one ray at a time | ratio to it |")
+    print("|---|---|---|---|---|---|---|---|")
     for l in labels:
         for r in data[l]["types"]:
+            single = (f"{float(r['bare_single_per_s_per_thread']) * 1e-6:.2f} | {float(r['ratio_single']):.2f}"
+                      if r.get("ratio_single") else "- | -")  # runs before the camera packets
             print(f"| {l} | {r['type']} | {r['rays']} | {float(r['renderer_per_s_per_thread']) * 1e-6:.2f} | "
-                  f"{float(r['bare_per_s_per_thread']) * 1e-6:.2f} | {float(r['ratio']):.2f} |")
+                  f"{float(r['bare_per_s_per_thread']) * 1e-6:.2f} | {float(r['ratio']):.2f} | {single} |")
     for part, key in (("triangles", "triangles"), ("lights", "lights")):
         print(f"\n| run | {key} | ms/spp | bare Embree ms/spp |")
         print("|---|---|---|---|")
