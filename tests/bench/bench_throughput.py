@@ -59,10 +59,15 @@ def main():
             return
         types = ["camera", "bounce", "shadow"]
         width = 0.8 / max(1, len(labels))
+        single_shown = False
         for i, l in enumerate(labels):
             rows = {r["type"]: r for r in data[l]["types"]}
             xs = [k + i * width for k in range(len(types)) if types[k] in rows]
             ax[0].bar(xs, [float(rows[t]["ratio"]) for t in types if t in rows], width, label=l)
+            if all(rows[t].get("ratio_single") for t in types if t in rows):  # runs since the camera packets
+                ax[0].plot(xs, [float(rows[t]["ratio_single"]) for t in types if t in rows], "k_", ms=14, mew=2,
+                           label="against the bare loop one ray at a time" if not single_shown else None)
+                single_shown = True
         ax[0].axhline(0.6, color="k", ls="--", lw=1, label="target 0.6")
         ax[0].set_xticks([k + 0.4 - width / 2 for k in range(len(types))], types)
         ax[0].set_title("renderer / bare Embree, rays per s per thread")
