@@ -4,7 +4,10 @@
 // list items, spin box suffixes, the status bar, the final image's banner) are collected in
 // English, then after View > Language French and German; a text that is still the English one
 // fails the test unless it is the same word in that language (kSameInLanguage) or no text
-// (numbers, file names). Switching back to English gives the English texts again. The engine's
+// (numbers, file names). The undo history (two edits, one undone) follows too: every command's
+// text, the Edit menu's Undo/Redo entries and the toolbar buttons' tooltips are the new
+// language's, built from the command's source text. Switching back to English gives the
+// English texts again. The engine's
 // own diagnostics (the Camera Response dock's notes, the Log dock's stage lines) are English by
 // design and not collected.
 #include "docks.h"
@@ -29,6 +32,8 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
@@ -152,6 +157,44 @@ QStringList stillEnglish(const Texts& english, const Texts& now, const QString& 
   return out;
 }
 
+QString translated(const char* context, const char* source) {
+  return QCoreApplication::translate(context, source);
+}
+
+QStringList historyTexts(MainWindow& window) {
+  QStringList out;
+  const QUndoStack* stack = window.document()->undoStack();
+  for (int i = 0; i < stack->count(); ++i) out << stack->command(i)->text();
+  return out;
+}
+
+// The tooltip of the toolbar button that triggers `action`.
+QString toolTipOf(MainWindow& window, QAction* action) {
+  for (QToolBar* bar : window.findChildren<QToolBar*>())
+    if (auto* b = qobject_cast<QToolButton*>(bar->widgetForAction(action))) return b->toolTip();
+  return {};
+}
+
+// The history made by everyTextFollowsTheLanguage (object 1's height changed, then its turn,
+// the turn undone) in the current language, against the catalogue and the English texts.
+void checkHistory(MainWindow& window, const QStringList& english, const QString& language) {
+  const char* doc = "inlay::studio::Document";
+  const char* win = "inlay::studio::MainWindow";
+  const QString height = translated(doc, "Change height of object %1").arg(1);
+  const QString turn = translated(doc, "Turn object %1").arg(1);
+  QVERIFY2(height != QLatin1String("Change height of object 1"), qPrintable(language));
+  QCOMPARE(historyTexts(window), QStringList({height, turn}));
+  for (int i = 0; i < english.size(); ++i)
+    QVERIFY2(historyTexts(window)[i] != english[i],
+             qPrintable(language + QLatin1Char(' ') + english[i]));
+  QCOMPARE(window.undoAction()->text(), translated(win, "&Undo %1").arg(height));
+  QCOMPARE(window.redoAction()->text(), translated(win, "&Redo %1").arg(turn));
+  QVERIFY2(toolTipOf(window, window.undoAction()).contains(height),
+           qPrintable(toolTipOf(window, window.undoAction())));
+  QVERIFY2(toolTipOf(window, window.redoAction()).contains(turn),
+           qPrintable(toolTipOf(window, window.redoAction())));
+}
+
 void switchTo(const QString& language, MainWindow& window) {
   if (language == QLatin1String("en")) removeTranslators();
   else QVERIFY2(installTranslators(language), qPrintable(language));
@@ -188,6 +231,16 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
   QVERIFY(window.openPath(scene));
   QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
   window.document()->setSelectedObject(0);
+  // An undo history: two edits, the second undone (so both Undo and Redo name one).
+  QString why;
+  QVERIFY2(
+      window.document()->setObjectHeight(0, 1.25 * window.document()->scene().objects[0].heightM, &why),
+      qPrintable(why));
+  QVERIFY2(window.document()->setObjectYaw(0, 30.0, &why), qPrintable(why));
+  window.document()->undoStack()->undo();
+  const QStringList englishHistory = historyTexts(window);
+  QCOMPARE(englishHistory,
+           QStringList({QStringLiteral("Change height of object 1"), QStringLiteral("Turn object 1")}));
   // A final image shown: its banner and status line.
   QTemporaryDir dir;
   QSignalSpy finished(&window, &MainWindow::finalImageFinished);
@@ -209,6 +262,8 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
     const QStringList left = stillEnglish(english, now, language);
     QVERIFY2(left.isEmpty(), qPrintable(language + QStringLiteral(" still English: ") +
                                         left.join(QStringLiteral("; "))));
+    checkHistory(window, englishHistory, language);
+    if (QTest::currentTestFailed()) return;
     QVERIFY(shots.shot(&window, QStringLiteral("window_%1").arg(language)));
   }
   // Known texts that stayed English before: the room surface and the final image's banner.
@@ -224,6 +279,7 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
     if (again.count(where) && again.at(where) != text)
       changed << QStringLiteral("%1: \"%2\" (was \"%3\")").arg(where, again.at(where), text);
   QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QStringLiteral("; "))));
+  QCOMPARE(historyTexts(window), englishHistory);
 }
 
 QTEST_MAIN(StudioTranslationTest)

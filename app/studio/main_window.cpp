@@ -513,6 +513,7 @@ void MainWindow::retranslate() {
   systemLanguageAct_->setText(tr("System Default"));
   helpMenu_->setTitle(tr("&Help"));
   mainToolBar_->setWindowTitle(tr("Main"));
+  document_->retranslateHistory();  // the commands' texts first: the actions are built from them
   updateUndoActions();
   updateTitle();
   fitStatusFields();
