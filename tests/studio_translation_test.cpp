@@ -10,9 +10,16 @@
 // English texts again. The engine's
 // own diagnostics (the Camera Response dock's notes, the Log dock's stage lines) are English by
 // design and not collected.
+//
+// The engine's messages follow the language too (engineMessagesFollowTheLanguage): every engine
+// sentence the studio knows has a German and a French translation; in French a refused model
+// file's dialog (an OBJ with a NaN) and a preparation warning (no light outlined) in the status
+// bar, its tooltip and the Log dock are French, while the engine still writes English.
 #include "docks.h"
 #include "document.h"
+#include "engine_text.h"
 #include "i18n.h"
+#include "log_dock.h"
 #include "main_window.h"
 #include "status_bar.h"
 #include "steps_dock.h"
@@ -27,6 +34,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
@@ -212,6 +220,7 @@ class StudioTranslationTest : public QObject {
  private Q_SLOTS:
   void initTestCase();
   void everyTextFollowsTheLanguage();
+  void engineMessagesFollowTheLanguage();
   void cleanupTestCase() { removeTranslators(); }
 };
 
@@ -280,6 +289,77 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
       changed << QStringLiteral("%1: \"%2\" (was \"%3\")").arg(where, again.at(where), text);
   QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QStringLiteral("; "))));
   QCOMPARE(historyTexts(window), englishHistory);
+}
+
+void StudioTranslationTest::engineMessagesFollowTheLanguage() {
+  const char* ctx = "inlay::studio::EngineText";
+  // Every sentence and head the studio knows is in both catalogues (the same text only where it
+  // is the same in that language).
+  const std::map<QString, QStringList> same = {{QStringLiteral("fr"), {QStringLiteral("face %1")}},
+                                               {QStringLiteral("de"), {QStringLiteral("%1: %2")}}};
+  for (const QString& language : {QStringLiteral("fr"), QStringLiteral("de")}) {
+    QVERIFY(installTranslators(language));
+    for (const QString& t : engineTemplates())
+      if (!same.at(language).contains(t))
+        QVERIFY2(QCoreApplication::translate(ctx, t.toUtf8().constData()) != t,
+                 qPrintable(language + QStringLiteral(": ") + t));
+  }
+  // Messages as the engine composes them: heads, keys and nested reasons; an unknown sentence
+  // stays whole and English rather than half translated.
+  QVERIFY(installTranslators(QStringLiteral("fr")));
+  QCOMPARE(engineText(QStringLiteral("objects[0].mesh: line 2: non-finite coordinate 'nan'")),
+           QStringLiteral("objects[0].mesh : ligne 2 : coordonnée non finie « nan »"));
+  QCOMPARE(engineText(QStringLiteral("lighting: gathered light still changed by 12% in the last of 4 "
+                                     "passes (the walls the camera does not see are uncertain)")),
+           QStringLiteral("éclairage : la lumière réfléchie a encore changé de 12 % à la dernière des 4 "
+                          "passes (les murs que la caméra ne voit pas sont incertains)"));
+  QCOMPARE(engineText(QStringLiteral("lighting: a note the studio does not know")),
+           QStringLiteral("lighting: a note the studio does not know"));
+
+  const QString scene = exampleScene();
+  if (scene.isEmpty()) QSKIP("the bundled example is not found");
+  MainWindow window;
+  QVERIFY(showForWorkflow(window));
+  switchTo(QStringLiteral("fr"), window);
+  QVERIFY(window.openPath(scene));
+  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  StepLog shots(QStringLiteral("studio_translation_artifacts/engine"));
+
+  // A refused model file: the dialog names the file, the line and the reason in French.
+  QTemporaryDir dir;
+  const QString nan = dir.filePath(QStringLiteral("nan.obj"));
+  {
+    QFile f(nan);
+    QVERIFY(f.open(QIODevice::WriteOnly) && f.write("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") > 0);
+  }
+  window.setInteractive(true);
+  QVERIFY(window.insertModelFile(nan));
+  QMessageBox* box = nullptr;
+  QTRY_VERIFY_WITH_TIMEOUT((box = window.findChild<QMessageBox*>()) && box->isVisible(), waitMs(30000));
+  window.setInteractive(false);
+  QCOMPARE(box->windowTitle(), translated("inlay::studio::MainWindow", "Cannot insert the model"));
+  QVERIFY2(box->text().contains(QStringLiteral("nan.obj")) &&
+               box->text().contains(QStringLiteral("ligne 2 : coordonnée non finie « nan »")),
+           qPrintable(box->text()));
+  QVERIFY(shots.shot(box, QStringLiteral("refused_model_fr")));
+  box->close();
+
+  // A preparation warning: no light outlined (the engine's warning stays English for the CLI).
+  while (!window.document()->scene().lights.empty())
+    QVERIFY(window.document()->removeMark(MarkKind::Light, 0));
+  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  const QString english =
+      QStringLiteral("lights: none given; the objects are lit by the room's gathered light only");
+  const QString french = QStringLiteral(
+      "lumières : aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce");
+  QVERIFY2(window.document()->warnings().contains(english),
+           qPrintable(window.document()->warnings().join(QLatin1Char('\n'))));
+  QVERIFY2(window.statusBar()->toolTip().contains(french), qPrintable(window.statusBar()->toolTip()));
+  QVERIFY(!window.statusBar()->toolTip().contains(english));
+  const QString log = window.logDock()->text();
+  QVERIFY2(log.contains(QStringLiteral("avertissement : ") + french), qPrintable(log));
+  QVERIFY(shots.shot(&window, QStringLiteral("warning_fr")));
+  removeTranslators();
 }
 
 QTEST_MAIN(StudioTranslationTest)
