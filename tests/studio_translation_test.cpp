@@ -47,6 +47,7 @@
 #include <QtTest>
 
 #include <map>
+#include <memory>
 
 #include "studio_test_support.h"
 #include "studio_workflow_steps.h"
@@ -221,8 +222,28 @@ class StudioTranslationTest : public QObject {
   void initTestCase();
   void everyTextFollowsTheLanguage();
   void engineMessagesFollowTheLanguage();
-  void cleanupTestCase() { removeTranslators(); }
+  void cleanupTestCase() {
+    window_.reset();
+    removeTranslators();
+  }
+
+ private:
+  // The bundled example shown and prepared, once for both functions; null when it is missing
+  // or could not be prepared.
+  MainWindow* preparedExample();
+
+  std::unique_ptr<MainWindow> window_;
 };
+
+MainWindow* StudioTranslationTest::preparedExample() {
+  if (!window_) {
+    const QString scene = exampleScene();
+    if (scene.isEmpty()) return nullptr;
+    window_ = std::make_unique<MainWindow>();
+    if (!showForWorkflow(*window_) || !window_->openPath(scene)) return nullptr;
+  }
+  return waitReady(window_->document(), waitMs(120000)) ? window_.get() : nullptr;
+}
 
 void StudioTranslationTest::initTestCase() {
   QStandardPaths::setTestModeEnabled(true);
@@ -232,13 +253,10 @@ void StudioTranslationTest::initTestCase() {
 }
 
 void StudioTranslationTest::everyTextFollowsTheLanguage() {
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
+  if (exampleScene().isEmpty()) QSKIP("the bundled example is not found");
   removeTranslators();
-  MainWindow window;
-  QVERIFY(showForWorkflow(window));
-  QVERIFY(window.openPath(scene));
-  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  QVERIFY(preparedExample());
+  MainWindow& window = *window_;
   window.document()->setSelectedObject(0);
   // An undo history: two edits, the second undone (so both Undo and Redo name one).
   QString why;
@@ -316,13 +334,12 @@ void StudioTranslationTest::engineMessagesFollowTheLanguage() {
   QCOMPARE(engineText(QStringLiteral("lighting: a note the studio does not know")),
            QStringLiteral("lighting: a note the studio does not know"));
 
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
-  MainWindow window;
-  QVERIFY(showForWorkflow(window));
+  // The example as everyTextFollowsTheLanguage left it (or opened now when run alone).
+  if (exampleScene().isEmpty()) QSKIP("the bundled example is not found");
+  removeTranslators();
+  QVERIFY(preparedExample());
+  MainWindow& window = *window_;
   switchTo(QStringLiteral("fr"), window);
-  QVERIFY(window.openPath(scene));
-  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
   StepLog shots(QStringLiteral("studio_translation_artifacts/engine"));
 
   // A refused model file: the dialog names the file, the line and the reason in French.
