@@ -4,12 +4,22 @@
 // list items, spin box suffixes, the status bar, the final image's banner) are collected in
 // English, then after View > Language French and German; a text that is still the English one
 // fails the test unless it is the same word in that language (kSameInLanguage) or no text
-// (numbers, file names). Switching back to English gives the English texts again. The engine's
+// (numbers, file names). The undo history (two edits, one undone) follows too: every command's
+// text, the Edit menu's Undo/Redo entries and the toolbar buttons' tooltips are the new
+// language's, built from the command's source text. Switching back to English gives the
+// English texts again. The engine's
 // own diagnostics (the Camera Response dock's notes, the Log dock's stage lines) are English by
 // design and not collected.
+//
+// The engine's messages follow the language too (engineMessagesFollowTheLanguage): every engine
+// sentence the studio knows has a German and a French translation; in French a refused model
+// file's dialog (an OBJ with a NaN) and a preparation warning (no light outlined) in the status
+// bar, its tooltip and the Log dock are French, while the engine still writes English.
 #include "docks.h"
 #include "document.h"
+#include "engine_text.h"
 #include "i18n.h"
+#include "log_dock.h"
 #include "main_window.h"
 #include "status_bar.h"
 #include "steps_dock.h"
@@ -24,16 +34,20 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabBar>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
 
 #include <map>
+#include <memory>
 
 #include "studio_test_support.h"
 #include "studio_workflow_steps.h"
@@ -152,6 +166,44 @@ QStringList stillEnglish(const Texts& english, const Texts& now, const QString& 
   return out;
 }
 
+QString translated(const char* context, const char* source) {
+  return QCoreApplication::translate(context, source);
+}
+
+QStringList historyTexts(MainWindow& window) {
+  QStringList out;
+  const QUndoStack* stack = window.document()->undoStack();
+  for (int i = 0; i < stack->count(); ++i) out << stack->command(i)->text();
+  return out;
+}
+
+// The tooltip of the toolbar button that triggers `action`.
+QString toolTipOf(MainWindow& window, QAction* action) {
+  for (QToolBar* bar : window.findChildren<QToolBar*>())
+    if (auto* b = qobject_cast<QToolButton*>(bar->widgetForAction(action))) return b->toolTip();
+  return {};
+}
+
+// The history made by everyTextFollowsTheLanguage (object 1's height changed, then its turn,
+// the turn undone) in the current language, against the catalogue and the English texts.
+void checkHistory(MainWindow& window, const QStringList& english, const QString& language) {
+  const char* doc = "inlay::studio::Document";
+  const char* win = "inlay::studio::MainWindow";
+  const QString height = translated(doc, "Change height of object %1").arg(1);
+  const QString turn = translated(doc, "Turn object %1").arg(1);
+  QVERIFY2(height != QLatin1String("Change height of object 1"), qPrintable(language));
+  QCOMPARE(historyTexts(window), QStringList({height, turn}));
+  for (int i = 0; i < english.size(); ++i)
+    QVERIFY2(historyTexts(window)[i] != english[i],
+             qPrintable(language + QLatin1Char(' ') + english[i]));
+  QCOMPARE(window.undoAction()->text(), translated(win, "&Undo %1").arg(height));
+  QCOMPARE(window.redoAction()->text(), translated(win, "&Redo %1").arg(turn));
+  QVERIFY2(toolTipOf(window, window.undoAction()).contains(height),
+           qPrintable(toolTipOf(window, window.undoAction())));
+  QVERIFY2(toolTipOf(window, window.redoAction()).contains(turn),
+           qPrintable(toolTipOf(window, window.redoAction())));
+}
+
 void switchTo(const QString& language, MainWindow& window) {
   if (language == QLatin1String("en")) removeTranslators();
   else QVERIFY2(installTranslators(language), qPrintable(language));
@@ -169,8 +221,29 @@ class StudioTranslationTest : public QObject {
  private Q_SLOTS:
   void initTestCase();
   void everyTextFollowsTheLanguage();
-  void cleanupTestCase() { removeTranslators(); }
+  void engineMessagesFollowTheLanguage();
+  void cleanupTestCase() {
+    window_.reset();
+    removeTranslators();
+  }
+
+ private:
+  // The bundled example shown and prepared, once for both functions; null when it is missing
+  // or could not be prepared.
+  MainWindow* preparedExample();
+
+  std::unique_ptr<MainWindow> window_;
 };
+
+MainWindow* StudioTranslationTest::preparedExample() {
+  if (!window_) {
+    const QString scene = exampleScene();
+    if (scene.isEmpty()) return nullptr;
+    window_ = std::make_unique<MainWindow>();
+    if (!showForWorkflow(*window_) || !window_->openPath(scene)) return nullptr;
+  }
+  return waitReady(window_->document(), waitMs(120000)) ? window_.get() : nullptr;
+}
 
 void StudioTranslationTest::initTestCase() {
   QStandardPaths::setTestModeEnabled(true);
@@ -180,14 +253,21 @@ void StudioTranslationTest::initTestCase() {
 }
 
 void StudioTranslationTest::everyTextFollowsTheLanguage() {
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
+  if (exampleScene().isEmpty()) QSKIP("the bundled example is not found");
   removeTranslators();
-  MainWindow window;
-  QVERIFY(showForWorkflow(window));
-  QVERIFY(window.openPath(scene));
-  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  QVERIFY(preparedExample());
+  MainWindow& window = *window_;
   window.document()->setSelectedObject(0);
+  // An undo history: two edits, the second undone (so both Undo and Redo name one).
+  QString why;
+  QVERIFY2(
+      window.document()->setObjectHeight(0, 1.25 * window.document()->scene().objects[0].heightM, &why),
+      qPrintable(why));
+  QVERIFY2(window.document()->setObjectYaw(0, 30.0, &why), qPrintable(why));
+  window.document()->undoStack()->undo();
+  const QStringList englishHistory = historyTexts(window);
+  QCOMPARE(englishHistory,
+           QStringList({QStringLiteral("Change height of object 1"), QStringLiteral("Turn object 1")}));
   // A final image shown: its banner and status line.
   QTemporaryDir dir;
   QSignalSpy finished(&window, &MainWindow::finalImageFinished);
@@ -209,6 +289,8 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
     const QStringList left = stillEnglish(english, now, language);
     QVERIFY2(left.isEmpty(), qPrintable(language + QStringLiteral(" still English: ") +
                                         left.join(QStringLiteral("; "))));
+    checkHistory(window, englishHistory, language);
+    if (QTest::currentTestFailed()) return;
     QVERIFY(shots.shot(&window, QStringLiteral("window_%1").arg(language)));
   }
   // Known texts that stayed English before: the room surface and the final image's banner.
@@ -224,6 +306,77 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
     if (again.count(where) && again.at(where) != text)
       changed << QStringLiteral("%1: \"%2\" (was \"%3\")").arg(where, again.at(where), text);
   QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QStringLiteral("; "))));
+  QCOMPARE(historyTexts(window), englishHistory);
+}
+
+void StudioTranslationTest::engineMessagesFollowTheLanguage() {
+  const char* ctx = "inlay::studio::EngineText";
+  // Every sentence and head the studio knows is in both catalogues (the same text only where it
+  // is the same in that language).
+  const std::map<QString, QStringList> same = {{QStringLiteral("fr"), {QStringLiteral("face %1")}},
+                                               {QStringLiteral("de"), {QStringLiteral("%1: %2")}}};
+  for (const QString& language : {QStringLiteral("fr"), QStringLiteral("de")}) {
+    QVERIFY(installTranslators(language));
+    for (const QString& t : engineTemplates())
+      if (!same.at(language).contains(t))
+        QVERIFY2(QCoreApplication::translate(ctx, t.toUtf8().constData()) != t,
+                 qPrintable(language + QStringLiteral(": ") + t));
+  }
+  // Messages as the engine composes them: heads, keys and nested reasons; an unknown sentence
+  // stays whole and English rather than half translated.
+  QVERIFY(installTranslators(QStringLiteral("fr")));
+  QCOMPARE(engineText(QStringLiteral("objects[0].mesh: line 2: non-finite coordinate 'nan'")),
+           QStringLiteral("objects[0].mesh : ligne 2 : coordonnée non finie « nan »"));
+  QCOMPARE(engineText(QStringLiteral("lighting: gathered light still changed by 12% in the last of 4 "
+                                     "passes (the walls the camera does not see are uncertain)")),
+           QStringLiteral("éclairage : la lumière réfléchie a encore changé de 12 % à la dernière des 4 "
+                          "passes (les murs que la caméra ne voit pas sont incertains)"));
+  QCOMPARE(engineText(QStringLiteral("lighting: a note the studio does not know")),
+           QStringLiteral("lighting: a note the studio does not know"));
+
+  // The example as everyTextFollowsTheLanguage left it (or opened now when run alone).
+  if (exampleScene().isEmpty()) QSKIP("the bundled example is not found");
+  removeTranslators();
+  QVERIFY(preparedExample());
+  MainWindow& window = *window_;
+  switchTo(QStringLiteral("fr"), window);
+  StepLog shots(QStringLiteral("studio_translation_artifacts/engine"));
+
+  // A refused model file: the dialog names the file, the line and the reason in French.
+  QTemporaryDir dir;
+  const QString nan = dir.filePath(QStringLiteral("nan.obj"));
+  {
+    QFile f(nan);
+    QVERIFY(f.open(QIODevice::WriteOnly) && f.write("v 0 0 0\nv 1 nan 0\nv 0 1 0\nf 1 2 3\n") > 0);
+  }
+  window.setInteractive(true);
+  QVERIFY(window.insertModelFile(nan));
+  QMessageBox* box = nullptr;
+  QTRY_VERIFY_WITH_TIMEOUT((box = window.findChild<QMessageBox*>()) && box->isVisible(), waitMs(30000));
+  window.setInteractive(false);
+  QCOMPARE(box->windowTitle(), translated("inlay::studio::MainWindow", "Cannot insert the model"));
+  QVERIFY2(box->text().contains(QStringLiteral("nan.obj")) &&
+               box->text().contains(QStringLiteral("ligne 2 : coordonnée non finie « nan »")),
+           qPrintable(box->text()));
+  QVERIFY(shots.shot(box, QStringLiteral("refused_model_fr")));
+  box->close();
+
+  // A preparation warning: no light outlined (the engine's warning stays English for the CLI).
+  while (!window.document()->scene().lights.empty())
+    QVERIFY(window.document()->removeMark(MarkKind::Light, 0));
+  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  const QString english =
+      QStringLiteral("lights: none given; the objects are lit by the room's gathered light only");
+  const QString french = QStringLiteral(
+      "lumières : aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce");
+  QVERIFY2(window.document()->warnings().contains(english),
+           qPrintable(window.document()->warnings().join(QLatin1Char('\n'))));
+  QVERIFY2(window.statusBar()->toolTip().contains(french), qPrintable(window.statusBar()->toolTip()));
+  QVERIFY(!window.statusBar()->toolTip().contains(english));
+  const QString log = window.logDock()->text();
+  QVERIFY2(log.contains(QStringLiteral("avertissement : ") + french), qPrintable(log));
+  QVERIFY(shots.shot(&window, QStringLiteral("warning_fr")));
+  removeTranslators();
 }
 
 QTEST_MAIN(StudioTranslationTest)

@@ -17,65 +17,65 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="297"/>
-        <location filename="../app/studio/document.cpp" line="327"/>
+        <location filename="../app/studio/document.cpp" line="307"/>
+        <location filename="../app/studio/document.cpp" line="337"/>
         <source>Preparation was cancelled.</source>
         <translation>Die Vorbereitung wurde abgebrochen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="496"/>
+        <location filename="../app/studio/document.cpp" line="511"/>
         <source>There is no object %1.</source>
         <translation>Es gibt kein Objekt %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="498"/>
+        <location filename="../app/studio/document.cpp" line="513"/>
         <source>The scene is still being prepared.</source>
         <translation>Die Szene wird noch vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="499"/>
+        <location filename="../app/studio/document.cpp" line="514"/>
         <source>The scene could not be prepared.</source>
         <translation>Die Szene konnte nicht vorbereitet werden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="383"/>
-        <location filename="../app/studio/document.cpp" line="790"/>
-        <location filename="../app/studio/document.cpp" line="970"/>
-        <location filename="../app/studio/document.cpp" line="1028"/>
+        <location filename="../app/studio/document.cpp" line="393"/>
+        <location filename="../app/studio/document.cpp" line="827"/>
+        <location filename="../app/studio/document.cpp" line="1015"/>
+        <location filename="../app/studio/document.cpp" line="1074"/>
         <source>The position is not a number.</source>
         <translation>Die Position ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="385"/>
-        <location filename="../app/studio/document.cpp" line="510"/>
-        <location filename="../app/studio/document.cpp" line="527"/>
+        <location filename="../app/studio/document.cpp" line="395"/>
+        <location filename="../app/studio/document.cpp" line="525"/>
+        <location filename="../app/studio/document.cpp" line="542"/>
         <source>The height must be greater than zero.</source>
         <translation>Die Höhe muss größer als null sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="406"/>
-        <location filename="../app/studio/document.cpp" line="437"/>
+        <location filename="../app/studio/document.cpp" line="417"/>
+        <location filename="../app/studio/document.cpp" line="451"/>
         <source>Move object %1</source>
         <translation>Objekt %1 verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="413"/>
+        <location filename="../app/studio/document.cpp" line="425"/>
         <source>Change height of object %1</source>
         <translation>Höhe von Objekt %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="419"/>
         <location filename="../app/studio/document.cpp" line="431"/>
+        <location filename="../app/studio/document.cpp" line="444"/>
         <source>The turn is not a number.</source>
         <translation>Die Drehung ist keine Zahl.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="424"/>
+        <location filename="../app/studio/document.cpp" line="437"/>
         <source>Turn object %1</source>
         <translation>Objekt %1 drehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="481"/>
+        <location filename="../app/studio/document.cpp" line="496"/>
         <source>Change material of object %1</source>
         <translation>Material von Objekt %1 ändern</translation>
     </message>
@@ -84,241 +84,481 @@
         <translation type="vanished">Objekt %1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="525"/>
+        <location filename="../app/studio/document.cpp" line="540"/>
         <source>The model has no triangles.</source>
         <translation>Das Modell hat keine Dreiecke.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="533"/>
+        <location filename="../app/studio/document.cpp" line="548"/>
         <source>object %1</source>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="535"/>
+        <location filename="../app/studio/document.cpp" line="551"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="553"/>
+        <location filename="../app/studio/document.cpp" line="569"/>
         <source>Duplicate %1</source>
         <translation>%1 duplizieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="601"/>
+        <location filename="../app/studio/document.cpp" line="619"/>
         <source>Rename %1</source>
         <translation>%1 umbenennen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="608"/>
+        <location filename="../app/studio/document.cpp" line="627"/>
         <source>Hide %1</source>
         <translation>%1 ausblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="608"/>
+        <location filename="../app/studio/document.cpp" line="627"/>
         <source>Show %1</source>
         <translation>%1 einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="616"/>
+        <location filename="../app/studio/document.cpp" line="635"/>
+        <location filename="../app/studio/document.cpp" line="652"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="617"/>
+        <location filename="../app/studio/document.cpp" line="636"/>
+        <location filename="../app/studio/document.cpp" line="653"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="655"/>
+        <location filename="../app/studio/document.cpp" line="691"/>
         <source>Delete object %1</source>
         <translation>Objekt %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="755"/>
+        <location filename="../app/studio/document.cpp" line="791"/>
         <source>Open a photo first.</source>
         <translation>Öffnen Sie zuerst ein Foto.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="775"/>
+        <location filename="../app/studio/document.cpp" line="811"/>
         <source>There is no estimated box yet.</source>
         <translation>Es gibt noch keinen geschätzten Raum.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="780"/>
+        <location filename="../app/studio/document.cpp" line="817"/>
         <source>Accept the estimated box</source>
         <translation>Geschätzten Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="786"/>
+        <location filename="../app/studio/document.cpp" line="823"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Diese Ecke der Rückwand gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="796"/>
+        <location filename="../app/studio/document.cpp" line="834"/>
         <source>Move a corner of the back wall</source>
         <translation>Ecke der Rückwand verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="802"/>
+        <location filename="../app/studio/document.cpp" line="841"/>
         <source>Estimate the box again</source>
         <translation>Raum neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="807"/>
+        <location filename="../app/studio/document.cpp" line="846"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Lampe braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="815"/>
+        <location filename="../app/studio/document.cpp" line="855"/>
         <source>Outline light %1</source>
         <translation>Lampe %1 umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="821"/>
-        <location filename="../app/studio/document.cpp" line="991"/>
+        <location filename="../app/studio/document.cpp" line="861"/>
+        <location filename="../app/studio/document.cpp" line="1037"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Jeder Rahmen eines Sonnenstrahls muss mindestens zwei Pixel breit und hoch sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="829"/>
+        <location filename="../app/studio/document.cpp" line="870"/>
         <source>Add shaft %1</source>
         <translation>Sonnenstrahl %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="836"/>
+        <location filename="../app/studio/document.cpp" line="877"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Der Umriss einer Fläche braucht mindestens drei Punkte um eine Fläche.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="845"/>
+        <location filename="../app/studio/document.cpp" line="887"/>
         <source>Add surface %1</source>
         <translation>Fläche %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="855"/>
+        <location filename="../app/studio/document.cpp" line="897"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Ein Verdecker braucht einen Strich über dem, was davor ist, und einen über dem, was dahinter ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="860"/>
+        <location filename="../app/studio/document.cpp" line="903"/>
         <source>Add occluder %1</source>
         <translation>Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="866"/>
+        <location filename="../app/studio/document.cpp" line="909"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Diesen Verdecker gibt es nicht, oder der Strich ist leer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="872"/>
+        <location filename="../app/studio/document.cpp" line="916"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Strich zu Verdecker %1 hinzufügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="883"/>
+        <location filename="../app/studio/document.cpp" line="927"/>
         <source>There is no such mark.</source>
         <translation>Diese Markierung gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="890"/>
+        <location filename="../app/studio/document.cpp" line="935"/>
         <source>Delete light %1</source>
         <translation>Lampe %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="891"/>
+        <location filename="../app/studio/document.cpp" line="936"/>
         <source>Delete shaft %1</source>
         <translation>Sonnenstrahl %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="892"/>
+        <location filename="../app/studio/document.cpp" line="937"/>
         <source>Delete surface %1</source>
         <translation>Fläche %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="893"/>
+        <location filename="../app/studio/document.cpp" line="938"/>
         <source>Delete occluder %1</source>
         <translation>Verdecker %1 löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="973"/>
+        <location filename="../app/studio/document.cpp" line="1018"/>
         <source>There is no such point.</source>
         <translation>Diesen Punkt gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="981"/>
-        <location filename="../app/studio/document.cpp" line="1000"/>
+        <location filename="../app/studio/document.cpp" line="1027"/>
+        <location filename="../app/studio/document.cpp" line="1046"/>
         <source>The outline would lose its area.</source>
         <translation>Der Umriss würde seine Fläche verlieren.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="982"/>
+        <location filename="../app/studio/document.cpp" line="1028"/>
         <source>Reshape light %1</source>
         <translation>Licht %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="992"/>
+        <location filename="../app/studio/document.cpp" line="1038"/>
         <source>Reshape shaft %1</source>
         <translation>Lichtschacht %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1001"/>
+        <location filename="../app/studio/document.cpp" line="1047"/>
         <source>Reshape surface %1</source>
         <translation>Fläche %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1009"/>
+        <location filename="../app/studio/document.cpp" line="1055"/>
         <source>Reshape occluder %1</source>
         <translation>Verdecker %1 umformen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1025"/>
+        <location filename="../app/studio/document.cpp" line="1071"/>
         <source>There is no such axis.</source>
         <translation>Diese Achse gibt es nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1030"/>
+        <location filename="../app/studio/document.cpp" line="1076"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1036"/>
+        <location filename="../app/studio/document.cpp" line="1082"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Die beiden Linien liegen auf einer Geraden: Zeichnen Sie zwei verschiedene Kanten.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1045"/>
+        <location filename="../app/studio/document.cpp" line="1091"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 zeichnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1046"/>
+        <location filename="../app/studio/document.cpp" line="1092"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Fluchtlinien für %1 verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1060"/>
+        <location filename="../app/studio/document.cpp" line="1106"/>
         <source>The room has no surface %1.</source>
         <translation>Der Raum hat keine Fläche %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1063"/>
+        <location filename="../app/studio/document.cpp" line="1109"/>
         <source>Unknown material.</source>
         <translation>Unbekanntes Material.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1066"/>
+        <location filename="../app/studio/document.cpp" line="1112"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>Die Rauheit muss zwischen 0 und 1 liegen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1070"/>
+        <location filename="../app/studio/document.cpp" line="1118"/>
         <source>Change the material of %1</source>
         <translation>Material von %1 ändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1076"/>
+        <location filename="../app/studio/document.cpp" line="1126"/>
         <source>Change the camera response</source>
         <translation>Kamerakennlinie ändern</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::EngineText</name>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="20"/>
+        <source>empty file</source>
+        <translation>leere Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="21"/>
+        <source>cannot open for reading</source>
+        <translation>kann nicht zum Lesen geöffnet werden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <source>read failed</source>
+        <translation>Lesen fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <source>no triangles</source>
+        <translation>keine Dreiecke</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <source>import failed: %1</source>
+        <translation>Import fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <source>non-finite coordinate &apos;%1&apos;</source>
+        <translation>nicht endliche Koordinate „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <source>non-finite coordinate</source>
+        <translation>nicht endliche Koordinate</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <source>malformed number &apos;%1&apos;</source>
+        <translation>fehlerhafte Zahl „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <source>malformed face index &apos;%1&apos;</source>
+        <translation>fehlerhafter Flächenindex „%1“</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <source>face corner without a vertex index</source>
+        <translation>Flächenecke ohne Eckpunktindex</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <source>face index 0 (OBJ indices start at 1)</source>
+        <translation>Flächenindex 0 (OBJ-Indizes beginnen bei 1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <source>a face needs at least 3 vertices</source>
+        <translation>eine Fläche braucht mindestens 3 Eckpunkte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <source>more than %1 triangles</source>
+        <translation>mehr als %1 Dreiecke</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <source>more than %1 vertices</source>
+        <translation>mehr als %1 Eckpunkte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <source>%1 vertices exceed the limit of %2</source>
+        <translation>%1 Eckpunkte überschreiten die Grenze von %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <source>&apos;%1&apos; needs %2 numbers</source>
+        <translation>„%1“ braucht %2 Zahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <source>not a PLY file (missing &apos;ply&apos; magic)</source>
+        <translation>keine PLY-Datei (die Kennung „ply“ fehlt)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <source>not a GLB file</source>
+        <translation>keine GLB-Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <source>invalid glTF JSON</source>
+        <translation>ungültiges glTF-JSON</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <source>buffer file not found: %1</source>
+        <translation>Pufferdatei nicht gefunden: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <source>none given; the objects are lit by the room&apos;s gathered light only</source>
+        <translation>keine angegeben; die Objekte werden nur vom gesammelten Licht des Raums beleuchtet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <source>ignored, the photo is already linear (EXR/HDR)</source>
+        <translation>ignoriert, das Foto ist bereits linear (EXR/HDR)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
+        <translation>die geschätzte Rückwand ist unbrauchbar (%1); ein Raum von 5 x 5,5 m wird verwendet: layout.back_wall_px angeben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="47"/>
+        <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
+        <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Brennweite aus der Annahme, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
+        <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Standardbrennweite, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="55"/>
+        <source>strength kept as estimated: %1</source>
+        <translation>Stärke wie geschätzt beibehalten: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
+        <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
+        <translation>das Fenster, durch das die Sonne scheint, ist nicht im Bild; sein Himmel ist ein Licht von %1 x %2 m auf %3 (woher der Strahl kam), seine Stärke angepasst (zur Wahl source_box_px angeben oder das Fenster als Licht umranden)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="60"/>
+        <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
+        <translation>die Maske von %1 zeigt an %2 von %3 Punkten den Boden unter der Platte, also ist sie eine %4 m dicke Platte (zur Wahl thickness_m angeben; 0: massiv)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="64"/>
+        <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
+        <translation>das gesammelte Licht änderte sich im letzten von %2 Durchgängen noch um %1 % (die Wände, die die Kamera nicht sieht, sind unsicher)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
+        <translation>die Lichter %1 sind nicht im Bild: sie teilen sich eine Strahldichte (das Foto zeigt nur ihre Summe)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="70"/>
+        <source>outside the room; moved %1 m to fit inside it</source>
+        <translation>außerhalb des Raums; um %1 m verschoben, damit es hineinpasst</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <source>larger than the room in every direction; its position is kept</source>
+        <translation>in jeder Richtung größer als der Raum; seine Position wird beibehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
+        <translation>%1 beleuchtet nichts vom Raum, den das Foto zeigt: seine Stärke bleibt beim Startwert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
+        <translation>das direkte Licht des Fotos ist schwarz: die Lichter werden an Dunkelheit angepasst</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <source>light refinement failed (%1): the start is kept</source>
+        <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <source>line %1</source>
+        <translation>Zeile %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <source>header line %1</source>
+        <translation>Kopfzeile %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>vertex %1</source>
+        <translation>Eckpunkt %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>face %1</source>
+        <translation>Fläche %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>sun %1</source>
+        <translation>Sonne %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <source>lights</source>
+        <translation>Lichter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <source>estimate</source>
+        <translation>Schätzung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <source>lighting</source>
+        <translation>Beleuchtung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <source>lighting (refit)</source>
+        <translation>Beleuchtung (neu angepasst)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <source>light refinement</source>
+        <translation>Verfeinerung der Lichter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <source>layout</source>
+        <translation>Raumaufteilung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -477,22 +717,22 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::LogDock</name>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="29"/>
+        <location filename="../app/studio/log_dock.cpp" line="30"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="37"/>
+        <location filename="../app/studio/log_dock.cpp" line="38"/>
         <source>%1 The scene could not be prepared: %2</source>
         <translation>%1 Die Szene konnte nicht vorbereitet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="44"/>
+        <location filename="../app/studio/log_dock.cpp" line="45"/>
         <source>%1 Prepared the scene in %2 s:</source>
         <translation>%1 Szene in %2 s vorbereitet:</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="47"/>
+        <location filename="../app/studio/log_dock.cpp" line="48"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -500,422 +740,422 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="89"/>
+        <location filename="../app/studio/main_window.cpp" line="90"/>
         <source>Reading the photo</source>
         <translation>Foto wird gelesen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="90"/>
+        <location filename="../app/studio/main_window.cpp" line="91"/>
         <source>Estimating the camera</source>
         <translation>Kamera wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="91"/>
+        <location filename="../app/studio/main_window.cpp" line="92"/>
         <source>Fitting the room</source>
         <translation>Raum wird angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="92"/>
+        <location filename="../app/studio/main_window.cpp" line="93"/>
         <source>Estimating the lighting</source>
         <translation>Beleuchtung wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="93"/>
+        <location filename="../app/studio/main_window.cpp" line="94"/>
         <source>Placing the objects</source>
         <translation>Objekte werden platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Samples pro Pixel des angezeigten Komposits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="501"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Render time since the last change</source>
         <translation>Renderzeit seit der letzten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="136"/>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="137"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="641"/>
+        <location filename="../app/studio/main_window.cpp" line="644"/>
         <source>Preparing the scene: %1…</source>
         <translation>Szene wird vorbereitet: %1 …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="443"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>&amp;Open Scene…</source>
         <translation>Szene &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>Open a scene file (.json)</source>
         <translation>Eine Szenendatei (.json) öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>Open &amp;Photo…</source>
         <translation>&amp;Foto öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Start a new scene from a photo</source>
         <translation>Eine neue Szene aus einem Foto beginnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>Open &amp;Example</source>
         <translation>&amp;Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>&amp;Export Composite…</source>
         <translation>Komposit &amp;exportieren …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Angezeigte &amp;Ebene exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="489"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Szene als &amp;glTF exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
+        <location filename="../app/studio/main_window.cpp" line="491"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Raum, Lichter, Kamera und Objekte als glTF 2.0 schreiben, um in Blender weiterzuarbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="539"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="540"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Redo</source>
         <translation>Wi&amp;ederholen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Insert &amp;Sphere</source>
         <translation>&amp;Kugel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>Insert &amp;Cube</source>
         <translation>&amp;Würfel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Delete the selected object or mark</source>
         <translation>Das ausgewählte Objekt oder die ausgewählte Markierung löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Vorher (nur Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="494"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Geschätzten &amp;Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Die geschätzte Rückwand als Ihre behalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Raum &amp;neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Forget your corners of the back wall</source>
         <translation>Ihre Ecken der Rückwand verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>Szene erneut &amp;vorbereiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="479"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
         <source>&amp;Render Final Image…</source>
         <translation>Endgültiges Bild &amp;rendern…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="454"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Das Komposit in der vollen Auflösung des Fotos rendern, bis es rauschfrei ist, dann speichern (PNG, JPEG, TIFF oder EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="455"/>
+        <location filename="../app/studio/main_window.cpp" line="456"/>
         <source>Before/After &amp;Split</source>
         <translation>Vorher/Nachher-&amp;Teilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="457"/>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>Links einer Trennlinie das Foto, rechts das Komposit; die Trennlinie lässt sich ziehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="463"/>
         <source>Insert &amp;Model…</source>
         <translation>&amp;Modell einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="464"/>
+        <location filename="../app/studio/main_window.cpp" line="465"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Ein 3D-Modell (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) auf den Boden stellen; oder die Datei dort ablegen, wo es stehen soll</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;uplizieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Eine Kopie des gewählten Objekts daneben stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Re&amp;name…</source>
         <translation>&amp;Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Das gewählte Objekt umbenennen (in der Szenenliste)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>&amp;Hide or Show</source>
         <translation>Aus- oder &amp;Einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Das gewählte Objekt aus dem Rendering ausblenden oder wieder einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <location filename="../app/studio/main_window.cpp" line="481"/>
         <source>&amp;Denoise Preview</source>
         <translation>Vorschau &amp;entrauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="482"/>
+        <location filename="../app/studio/main_window.cpp" line="483"/>
         <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
         <translation>Das Rauschen des Renderings glätten, wo die Objekte das Foto ändern (der Rest bleibt das Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Fluchtlinien (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="508"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="508"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="509"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="512"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="515"/>
+        <location filename="../app/studio/main_window.cpp" line="516"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="539"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="540"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
-        <location filename="../app/studio/main_window.cpp" line="564"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="566"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
-        <location filename="../app/studio/main_window.cpp" line="929"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="932"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="550"/>
-        <location filename="../app/studio/main_window.cpp" line="1374"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="1377"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="583"/>
+        <location filename="../app/studio/main_window.cpp" line="586"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="595"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -923,351 +1163,351 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="621"/>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1: Die Szene ließ sich nicht vorbereiten, das Modell hat also keinen Platz.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="527"/>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="664"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="654"/>
-        <location filename="../app/studio/main_window.cpp" line="662"/>
-        <location filename="../app/studio/main_window.cpp" line="676"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="665"/>
+        <location filename="../app/studio/main_window.cpp" line="679"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
-        <location filename="../app/studio/main_window.cpp" line="663"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="666"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="664"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="667"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="527"/>
-        <location filename="../app/studio/main_window.cpp" line="653"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="656"/>
         <source>final, %1 spp</source>
         <translation>endgültig, %1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="526"/>
-        <location filename="../app/studio/main_window.cpp" line="668"/>
+        <location filename="../app/studio/main_window.cpp" line="528"/>
+        <location filename="../app/studio/main_window.cpp" line="671"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="526"/>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
+        <location filename="../app/studio/main_window.cpp" line="528"/>
+        <location filename="../app/studio/main_window.cpp" line="672"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="670"/>
+        <location filename="../app/studio/main_window.cpp" line="673"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1390"/>
+        <location filename="../app/studio/main_window.cpp" line="1393"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>Das endgültige Bild %1 wird noch gerendert (%2 % fertig). Das Rendern abbrechen? Dann wird nichts geschrieben, und eine frühere Datei dieses Namens bleibt, wie sie war.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1398"/>
+        <location filename="../app/studio/main_window.cpp" line="1401"/>
         <source>Keep Rendering</source>
         <translation>Weiter rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1417"/>
+        <location filename="../app/studio/main_window.cpp" line="1420"/>
         <source>Cancel the Render and Close</source>
         <translation>Rendern abbrechen und schließen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
-        <location filename="../app/studio/main_window.cpp" line="655"/>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="674"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="656"/>
-        <location filename="../app/studio/main_window.cpp" line="677"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="680"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="689"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="710"/>
+        <location filename="../app/studio/main_window.cpp" line="713"/>
         <source>Cancel the Render and Open</source>
         <translation>Rendern abbrechen und öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="714"/>
+        <location filename="../app/studio/main_window.cpp" line="717"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="714"/>
+        <location filename="../app/studio/main_window.cpp" line="717"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
+        <location filename="../app/studio/main_window.cpp" line="723"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
-        <location filename="../app/studio/main_window.cpp" line="749"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="752"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="749"/>
+        <location filename="../app/studio/main_window.cpp" line="752"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="759"/>
+        <location filename="../app/studio/main_window.cpp" line="762"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="760"/>
+        <location filename="../app/studio/main_window.cpp" line="763"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="767"/>
+        <location filename="../app/studio/main_window.cpp" line="770"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="768"/>
+        <location filename="../app/studio/main_window.cpp" line="771"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="775"/>
+        <location filename="../app/studio/main_window.cpp" line="778"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="779"/>
+        <location filename="../app/studio/main_window.cpp" line="782"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="795"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="795"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="803"/>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
-        <location filename="../app/studio/main_window.cpp" line="1030"/>
-        <location filename="../app/studio/main_window.cpp" line="1061"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="837"/>
+        <location filename="../app/studio/main_window.cpp" line="1033"/>
+        <location filename="../app/studio/main_window.cpp" line="1064"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="803"/>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="837"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1050"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1050"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1051"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="827"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="809"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="842"/>
+        <location filename="../app/studio/main_window.cpp" line="845"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="847"/>
+        <location filename="../app/studio/main_window.cpp" line="850"/>
         <source>Exported %1 (the final render)</source>
         <translation>%1 exportiert (das endgültige Bild)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="852"/>
+        <location filename="../app/studio/main_window.cpp" line="855"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exportiert (%2 spp, die Vorschau mit %3 × %4; Endgültiges Bild rendern schreibt die volle Größe des Fotos)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="860"/>
+        <location filename="../app/studio/main_window.cpp" line="863"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="883"/>
+        <location filename="../app/studio/main_window.cpp" line="886"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Alle vier Schritte erledigt. Ansicht &gt; Schritte zeigt sie wieder.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="889"/>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="892"/>
+        <location filename="../app/studio/main_window.cpp" line="907"/>
         <source>Nothing to render</source>
         <translation>Nichts zu rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="897"/>
-        <location filename="../app/studio/main_window.cpp" line="930"/>
-        <location filename="../app/studio/main_window.cpp" line="1389"/>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
+        <location filename="../app/studio/main_window.cpp" line="1392"/>
         <source>Render Final Image</source>
         <translation>Endgültiges Bild rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="911"/>
         <source>A final image is being rendered already.</source>
         <translation>Ein endgültiges Bild wird bereits gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="915"/>
-        <location filename="../app/studio/main_window.cpp" line="920"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <location filename="../app/studio/main_window.cpp" line="923"/>
         <source>Cannot render the final image</source>
         <translation>Das endgültige Bild kann nicht gerendert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="919"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1: bitte eine .png-, .jpg-, .tif- oder .exr-Datei wählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="921"/>
+        <location filename="../app/studio/main_window.cpp" line="924"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1: der Ordner %2 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="929"/>
-        <location filename="../app/studio/main_window.cpp" line="950"/>
+        <location filename="../app/studio/main_window.cpp" line="932"/>
+        <location filename="../app/studio/main_window.cpp" line="953"/>
         <source>Rendering the final image…</source>
         <translation>Das endgültige Bild wird gerendert…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="938"/>
+        <location filename="../app/studio/main_window.cpp" line="941"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Endgültiges Bild: höchstens %1 Samples pro Pixel, geschätzter Fehler %2 (Ziel %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="974"/>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
         <source>Cannot write the final image</source>
         <translation>Das endgültige Bild kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <location filename="../app/studio/main_window.cpp" line="998"/>
         <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
         <translation>Endgültiges Bild angezeigt (%1, %2 × %3); die nächste Änderung kehrt zur Live-Vorschau zurück.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1002"/>
         <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
         <translation>Endgültiges Bild (%1 × %2, gespeichert als %3): angezeigt bis zur nächsten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1021"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1021"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1019"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="889"/>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
-        <location filename="../app/studio/main_window.cpp" line="1030"/>
+        <location filename="../app/studio/main_window.cpp" line="892"/>
+        <location filename="../app/studio/main_window.cpp" line="907"/>
+        <location filename="../app/studio/main_window.cpp" line="1033"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1037"/>
+        <location filename="../app/studio/main_window.cpp" line="1040"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1049"/>
+        <location filename="../app/studio/main_window.cpp" line="1052"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1061"/>
+        <location filename="../app/studio/main_window.cpp" line="1064"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1068"/>
+        <location filename="../app/studio/main_window.cpp" line="1071"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
@@ -1276,143 +1516,143 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation type="vanished">%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1040"/>
-        <location filename="../app/studio/main_window.cpp" line="1071"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
+        <location filename="../app/studio/main_window.cpp" line="1074"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1101"/>
+        <location filename="../app/studio/main_window.cpp" line="1104"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1102"/>
+        <location filename="../app/studio/main_window.cpp" line="1105"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1111"/>
+        <location filename="../app/studio/main_window.cpp" line="1114"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1138"/>
+        <location filename="../app/studio/main_window.cpp" line="1141"/>
         <source>Insert Model</source>
         <translation>Modell einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1146"/>
+        <location filename="../app/studio/main_window.cpp" line="1149"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1150"/>
+        <location filename="../app/studio/main_window.cpp" line="1153"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1165"/>
+        <location filename="../app/studio/main_window.cpp" line="1168"/>
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1175"/>
+        <location filename="../app/studio/main_window.cpp" line="1178"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1216"/>
+        <location filename="../app/studio/main_window.cpp" line="1219"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1218"/>
+        <location filename="../app/studio/main_window.cpp" line="1221"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1188"/>
+        <location filename="../app/studio/main_window.cpp" line="1191"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1201"/>
+        <location filename="../app/studio/main_window.cpp" line="1204"/>
         <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m breit, breiter als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1244"/>
+        <location filename="../app/studio/main_window.cpp" line="1247"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1248"/>
+        <location filename="../app/studio/main_window.cpp" line="1251"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1249"/>
+        <location filename="../app/studio/main_window.cpp" line="1252"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1258"/>
+        <location filename="../app/studio/main_window.cpp" line="1261"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1278"/>
+        <location filename="../app/studio/main_window.cpp" line="1281"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1308"/>
+        <location filename="../app/studio/main_window.cpp" line="1311"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1310"/>
+        <location filename="../app/studio/main_window.cpp" line="1313"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1335"/>
+        <location filename="../app/studio/main_window.cpp" line="1338"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1338"/>
+        <location filename="../app/studio/main_window.cpp" line="1341"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1339"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1343"/>
+        <location filename="../app/studio/main_window.cpp" line="1346"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1344"/>
+        <location filename="../app/studio/main_window.cpp" line="1347"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1361"/>
+        <location filename="../app/studio/main_window.cpp" line="1364"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1367"/>
+        <location filename="../app/studio/main_window.cpp" line="1370"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1374"/>
+        <location filename="../app/studio/main_window.cpp" line="1377"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -1420,82 +1660,82 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ModelImportText</name>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="18"/>
+        <location filename="../app/studio/model_import.cpp" line="19"/>
         <source>%1 km</source>
         <translation>%1 km</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="19"/>
+        <location filename="../app/studio/model_import.cpp" line="20"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="20"/>
+        <location filename="../app/studio/model_import.cpp" line="21"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="21"/>
+        <location filename="../app/studio/model_import.cpp" line="22"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="22"/>
+        <location filename="../app/studio/model_import.cpp" line="23"/>
         <source>%1 µm</source>
         <translation>%1 µm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="37"/>
+        <location filename="../app/studio/model_import.cpp" line="38"/>
         <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
         <translation>%1-Dateien nennen ihre Einheit nicht: %2 wurde auf %3 Höhe skaliert (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="49"/>
+        <location filename="../app/studio/model_import.cpp" line="50"/>
         <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
         <translation>%1 gibt %2 Höhe an, eine absurde Größe: Es wurde stattdessen %3 hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="108"/>
+        <location filename="../app/studio/model_import.cpp" line="109"/>
         <source>%1 names files that are not beside it (%2): its materials&apos; own colours are used, or a grey default.</source>
         <translation>%1 nennt Dateien, die nicht daneben liegen (%2): die eigenen Farben seiner Materialien werden verwendet, sonst ein Grau.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <location filename="../app/studio/model_import.cpp" line="114"/>
         <source>%1&apos;s image textures are not rendered: Inlay uses its materials&apos; base colour, metallic and roughness values.</source>
         <translation>Die Bildtexturen von %1 werden nicht gerendert: Inlay verwendet Grundfarbe, Metallizität und Rauheit seiner Materialien.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="136"/>
+        <location filename="../app/studio/model_import.cpp" line="137"/>
         <source>3D models (%1)</source>
         <translation>3D-Modelle (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="137"/>
+        <location filename="../app/studio/model_import.cpp" line="138"/>
         <source>All files (*)</source>
         <translation>Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="151"/>
+        <location filename="../app/studio/model_import.cpp" line="152"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="169"/>
+        <location filename="../app/studio/model_import.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="173"/>
+        <location filename="../app/studio/model_import.cpp" line="174"/>
         <source>(Inlay inserts models of up to %1 triangles.)</source>
         <translation>(Inlay fügt Modelle mit bis zu %1 Dreiecken ein.)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="178"/>
+        <location filename="../app/studio/model_import.cpp" line="179"/>
         <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
         <translation>%1: Das Modell ist flach (es hat keine Höhe) und kann daher nicht im Raum stehen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="189"/>
+        <location filename="../app/studio/model_import.cpp" line="190"/>
         <source>%1 has no normals: it is shaded flat.</source>
         <translation>%1 hat keine Normalen: Es wird flach schattiert.</translation>
     </message>
@@ -2059,178 +2299,178 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="320"/>
+        <location filename="../app/studio/viewport.cpp" line="321"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="322"/>
+        <location filename="../app/studio/viewport.cpp" line="323"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="324"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="326"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="328"/>
+        <location filename="../app/studio/viewport.cpp" line="329"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="329"/>
+        <location filename="../app/studio/viewport.cpp" line="330"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="331"/>
+        <location filename="../app/studio/viewport.cpp" line="332"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="337"/>
+        <location filename="../app/studio/viewport.cpp" line="338"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Ziehen Sie entlang einer Kante in %1-Richtung (die Tasten X, Y, Z wählen sie).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="339"/>
+        <location filename="../app/studio/viewport.cpp" line="340"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Ziehen Sie nun entlang einer zweiten Kante in %1-Richtung.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="435"/>
+        <location filename="../app/studio/viewport.cpp" line="436"/>
         <source>Back wall (yours)</source>
         <translation>Rückwand (Ihre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="435"/>
+        <location filename="../app/studio/viewport.cpp" line="436"/>
         <source>Back wall (estimated)</source>
         <translation>Rückwand (geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="492"/>
+        <location filename="../app/studio/viewport.cpp" line="493"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="531"/>
+        <location filename="../app/studio/viewport.cpp" line="532"/>
         <source>%1: %2 px</source>
         <translation>%1: %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="564"/>
+        <location filename="../app/studio/viewport.cpp" line="565"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="578"/>
+        <location filename="../app/studio/viewport.cpp" line="579"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="593"/>
+        <location filename="../app/studio/viewport.cpp" line="594"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="654"/>
+        <location filename="../app/studio/viewport.cpp" line="655"/>
         <source>%1 hidden</source>
         <translation>%1 ausgeblendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="747"/>
+        <location filename="../app/studio/viewport.cpp" line="748"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="749"/>
+        <location filename="../app/studio/viewport.cpp" line="750"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="753"/>
+        <location filename="../app/studio/viewport.cpp" line="754"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="756"/>
+        <location filename="../app/studio/viewport.cpp" line="757"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="779"/>
+        <location filename="../app/studio/viewport.cpp" line="780"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="783"/>
+        <location filename="../app/studio/viewport.cpp" line="784"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="842"/>
+        <location filename="../app/studio/viewport.cpp" line="843"/>
         <source>Before</source>
         <translation>Vorher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="842"/>
+        <location filename="../app/studio/viewport.cpp" line="843"/>
         <source>After</source>
         <translation>Nachher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="929"/>
+        <location filename="../app/studio/viewport.cpp" line="930"/>
         <source>the left wall</source>
         <translation>der linken Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="931"/>
         <source>the right wall</source>
         <translation>der rechten Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="931"/>
+        <location filename="../app/studio/viewport.cpp" line="932"/>
         <source>the back wall</source>
         <translation>der Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="932"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>the wall behind the camera</source>
         <translation>der Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="934"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Mit dem Rücken an %1 (Umschalt gedrückt halten: frei platzieren).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="954"/>
+        <location filename="../app/studio/viewport.cpp" line="955"/>
         <source>Turned %1°</source>
         <translation>Gedreht auf %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="964"/>
+        <location filename="../app/studio/viewport.cpp" line="965"/>
         <source>Height %1 m</source>
         <translation>Höhe %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="997"/>
+        <location filename="../app/studio/viewport.cpp" line="998"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="922"/>
-        <location filename="../app/studio/viewport.cpp" line="1320"/>
+        <location filename="../app/studio/viewport.cpp" line="923"/>
+        <location filename="../app/studio/viewport.cpp" line="1321"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1253"/>
+        <location filename="../app/studio/viewport.cpp" line="1254"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>

@@ -17,65 +17,65 @@
 <context>
     <name>inlay::studio::Document</name>
     <message>
-        <location filename="../app/studio/document.cpp" line="297"/>
-        <location filename="../app/studio/document.cpp" line="327"/>
+        <location filename="../app/studio/document.cpp" line="307"/>
+        <location filename="../app/studio/document.cpp" line="337"/>
         <source>Preparation was cancelled.</source>
         <translation>La préparation a été annulée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="383"/>
-        <location filename="../app/studio/document.cpp" line="790"/>
-        <location filename="../app/studio/document.cpp" line="970"/>
-        <location filename="../app/studio/document.cpp" line="1028"/>
+        <location filename="../app/studio/document.cpp" line="393"/>
+        <location filename="../app/studio/document.cpp" line="827"/>
+        <location filename="../app/studio/document.cpp" line="1015"/>
+        <location filename="../app/studio/document.cpp" line="1074"/>
         <source>The position is not a number.</source>
         <translation>La position n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="385"/>
-        <location filename="../app/studio/document.cpp" line="510"/>
-        <location filename="../app/studio/document.cpp" line="527"/>
+        <location filename="../app/studio/document.cpp" line="395"/>
+        <location filename="../app/studio/document.cpp" line="525"/>
+        <location filename="../app/studio/document.cpp" line="542"/>
         <source>The height must be greater than zero.</source>
         <translation>La hauteur doit être supérieure à zéro.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="406"/>
-        <location filename="../app/studio/document.cpp" line="437"/>
+        <location filename="../app/studio/document.cpp" line="417"/>
+        <location filename="../app/studio/document.cpp" line="451"/>
         <source>Move object %1</source>
         <translation>Déplacer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="413"/>
+        <location filename="../app/studio/document.cpp" line="425"/>
         <source>Change height of object %1</source>
         <translation>Changer la hauteur de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="419"/>
         <location filename="../app/studio/document.cpp" line="431"/>
+        <location filename="../app/studio/document.cpp" line="444"/>
         <source>The turn is not a number.</source>
         <translation>La rotation n&apos;est pas un nombre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="424"/>
+        <location filename="../app/studio/document.cpp" line="437"/>
         <source>Turn object %1</source>
         <translation>Tourner l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="481"/>
+        <location filename="../app/studio/document.cpp" line="496"/>
         <source>Change material of object %1</source>
         <translation>Changer le matériau de l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="496"/>
+        <location filename="../app/studio/document.cpp" line="511"/>
         <source>There is no object %1.</source>
         <translation>Il n&apos;y a pas d&apos;objet %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="498"/>
+        <location filename="../app/studio/document.cpp" line="513"/>
         <source>The scene is still being prepared.</source>
         <translation>La scène est encore en préparation.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="499"/>
+        <location filename="../app/studio/document.cpp" line="514"/>
         <source>The scene could not be prepared.</source>
         <translation>La scène n&apos;a pas pu être préparée.</translation>
     </message>
@@ -84,241 +84,481 @@
         <translation type="vanished">Insérer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="525"/>
+        <location filename="../app/studio/document.cpp" line="540"/>
         <source>The model has no triangles.</source>
         <translation>Le modèle n&apos;a aucun triangle.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="533"/>
+        <location filename="../app/studio/document.cpp" line="548"/>
         <source>object %1</source>
         <translation>objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="535"/>
+        <location filename="../app/studio/document.cpp" line="551"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="553"/>
+        <location filename="../app/studio/document.cpp" line="569"/>
         <source>Duplicate %1</source>
         <translation>Dupliquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="601"/>
+        <location filename="../app/studio/document.cpp" line="619"/>
         <source>Rename %1</source>
         <translation>Renommer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="608"/>
+        <location filename="../app/studio/document.cpp" line="627"/>
         <source>Hide %1</source>
         <translation>Masquer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="608"/>
+        <location filename="../app/studio/document.cpp" line="627"/>
         <source>Show %1</source>
         <translation>Afficher %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="616"/>
+        <location filename="../app/studio/document.cpp" line="635"/>
+        <location filename="../app/studio/document.cpp" line="652"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="617"/>
+        <location filename="../app/studio/document.cpp" line="636"/>
+        <location filename="../app/studio/document.cpp" line="653"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="655"/>
+        <location filename="../app/studio/document.cpp" line="691"/>
         <source>Delete object %1</source>
         <translation>Supprimer l&apos;objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="755"/>
+        <location filename="../app/studio/document.cpp" line="791"/>
         <source>Open a photo first.</source>
         <translation>Ouvrez d&apos;abord une photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="775"/>
+        <location filename="../app/studio/document.cpp" line="811"/>
         <source>There is no estimated box yet.</source>
         <translation>Il n&apos;y a pas encore de pièce estimée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="780"/>
+        <location filename="../app/studio/document.cpp" line="817"/>
         <source>Accept the estimated box</source>
         <translation>Accepter la pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="786"/>
+        <location filename="../app/studio/document.cpp" line="823"/>
         <source>There is no such corner of the back wall.</source>
         <translation>Ce coin du mur du fond n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="796"/>
+        <location filename="../app/studio/document.cpp" line="834"/>
         <source>Move a corner of the back wall</source>
         <translation>Déplacer un coin du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="802"/>
+        <location filename="../app/studio/document.cpp" line="841"/>
         <source>Estimate the box again</source>
         <translation>Estimer à nouveau la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="807"/>
+        <location filename="../app/studio/document.cpp" line="846"/>
         <source>A light&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une lampe doit compter au moins trois points entourant une surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="815"/>
+        <location filename="../app/studio/document.cpp" line="855"/>
         <source>Outline light %1</source>
         <translation>Détourer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="821"/>
-        <location filename="../app/studio/document.cpp" line="991"/>
+        <location filename="../app/studio/document.cpp" line="861"/>
+        <location filename="../app/studio/document.cpp" line="1037"/>
         <source>Each box of a shaft must be at least two pixels wide and high.</source>
         <translation>Chaque cadre d&apos;un rayon de soleil doit mesurer au moins deux pixels de large et de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="829"/>
+        <location filename="../app/studio/document.cpp" line="870"/>
         <source>Add shaft %1</source>
         <translation>Ajouter le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="836"/>
+        <location filename="../app/studio/document.cpp" line="877"/>
         <source>A surface&apos;s outline needs at least three points around an area.</source>
         <translation>Le contour d&apos;une surface doit compter au moins trois points entourant une aire.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="845"/>
+        <location filename="../app/studio/document.cpp" line="887"/>
         <source>Add surface %1</source>
         <translation>Ajouter la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="855"/>
+        <location filename="../app/studio/document.cpp" line="897"/>
         <source>An occluder needs a stroke over the thing in front and one over what is behind it.</source>
         <translation>Un masque d&apos;avant-plan demande un trait sur ce qui est devant et un sur ce qui est derrière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="860"/>
+        <location filename="../app/studio/document.cpp" line="903"/>
         <source>Add occluder %1</source>
         <translation>Ajouter le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="866"/>
+        <location filename="../app/studio/document.cpp" line="909"/>
         <source>There is no such occluder, or the stroke is empty.</source>
         <translation>Ce masque d&apos;avant-plan n&apos;existe pas, ou le trait est vide.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="872"/>
+        <location filename="../app/studio/document.cpp" line="916"/>
         <source>Add a stroke to occluder %1</source>
         <translation>Ajouter un trait au masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="883"/>
+        <location filename="../app/studio/document.cpp" line="927"/>
         <source>There is no such mark.</source>
         <translation>Ce repère n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="890"/>
+        <location filename="../app/studio/document.cpp" line="935"/>
         <source>Delete light %1</source>
         <translation>Supprimer la lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="891"/>
+        <location filename="../app/studio/document.cpp" line="936"/>
         <source>Delete shaft %1</source>
         <translation>Supprimer le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="892"/>
+        <location filename="../app/studio/document.cpp" line="937"/>
         <source>Delete surface %1</source>
         <translation>Supprimer la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="893"/>
+        <location filename="../app/studio/document.cpp" line="938"/>
         <source>Delete occluder %1</source>
         <translation>Supprimer le masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="973"/>
+        <location filename="../app/studio/document.cpp" line="1018"/>
         <source>There is no such point.</source>
         <translation>Ce point n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="981"/>
-        <location filename="../app/studio/document.cpp" line="1000"/>
+        <location filename="../app/studio/document.cpp" line="1027"/>
+        <location filename="../app/studio/document.cpp" line="1046"/>
         <source>The outline would lose its area.</source>
         <translation>Le contour perdrait sa surface.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="982"/>
+        <location filename="../app/studio/document.cpp" line="1028"/>
         <source>Reshape light %1</source>
         <translation>Remodeler la lumière %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="992"/>
+        <location filename="../app/studio/document.cpp" line="1038"/>
         <source>Reshape shaft %1</source>
         <translation>Remodeler le rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1001"/>
+        <location filename="../app/studio/document.cpp" line="1047"/>
         <source>Reshape surface %1</source>
         <translation>Remodeler la surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1009"/>
+        <location filename="../app/studio/document.cpp" line="1055"/>
         <source>Reshape occluder %1</source>
         <translation>Remodeler l’occultant %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1025"/>
+        <location filename="../app/studio/document.cpp" line="1071"/>
         <source>There is no such axis.</source>
         <translation>Cet axe n’existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1030"/>
+        <location filename="../app/studio/document.cpp" line="1076"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1036"/>
+        <location filename="../app/studio/document.cpp" line="1082"/>
         <source>The two lines lie on one line: draw two different edges.</source>
         <translation>Les deux lignes sont sur une même droite : tracez deux arêtes différentes.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1045"/>
+        <location filename="../app/studio/document.cpp" line="1091"/>
         <source>Draw the %1 vanishing lines</source>
         <translation>Tracer les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1046"/>
+        <location filename="../app/studio/document.cpp" line="1092"/>
         <source>Forget the %1 vanishing lines</source>
         <translation>Oublier les lignes de fuite %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1060"/>
+        <location filename="../app/studio/document.cpp" line="1106"/>
         <source>The room has no surface %1.</source>
         <translation>La pièce n’a pas de surface %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1063"/>
+        <location filename="../app/studio/document.cpp" line="1109"/>
         <source>Unknown material.</source>
         <translation>Matériau inconnu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1066"/>
+        <location filename="../app/studio/document.cpp" line="1112"/>
         <source>The roughness must lie between 0 and 1.</source>
         <translation>La rugosité doit être comprise entre 0 et 1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1070"/>
+        <location filename="../app/studio/document.cpp" line="1118"/>
         <source>Change the material of %1</source>
         <translation>Changer le matériau de %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/document.cpp" line="1076"/>
+        <location filename="../app/studio/document.cpp" line="1126"/>
         <source>Change the camera response</source>
         <translation>Changer la réponse de l&apos;appareil</translation>
+    </message>
+</context>
+<context>
+    <name>inlay::studio::EngineText</name>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="20"/>
+        <source>empty file</source>
+        <translation>fichier vide</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="21"/>
+        <source>cannot open for reading</source>
+        <translation>impossible de l&apos;ouvrir en lecture</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <source>read failed</source>
+        <translation>la lecture a échoué</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <source>no triangles</source>
+        <translation>aucun triangle</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <source>import failed: %1</source>
+        <translation>l&apos;import a échoué : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <source>non-finite coordinate &apos;%1&apos;</source>
+        <translation>coordonnée non finie « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <source>non-finite coordinate</source>
+        <translation>coordonnée non finie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <source>malformed number &apos;%1&apos;</source>
+        <translation>nombre mal formé « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <source>malformed face index &apos;%1&apos;</source>
+        <translation>indice de face mal formé « %1 »</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <source>face corner without a vertex index</source>
+        <translation>coin de face sans indice de sommet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <source>face index 0 (OBJ indices start at 1)</source>
+        <translation>indice de face 0 (les indices OBJ commencent à 1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <source>a face needs at least 3 vertices</source>
+        <translation>une face demande au moins 3 sommets</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <source>more than %1 triangles</source>
+        <translation>plus de %1 triangles</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <source>more than %1 vertices</source>
+        <translation>plus de %1 sommets</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <source>%1 vertices exceed the limit of %2</source>
+        <translation>%1 sommets dépassent la limite de %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <source>&apos;%1&apos; needs %2 numbers</source>
+        <translation>« %1 » demande %2 nombres</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <source>not a PLY file (missing &apos;ply&apos; magic)</source>
+        <translation>pas un fichier PLY (la signature « ply » manque)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <source>not a GLB file</source>
+        <translation>pas un fichier GLB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <source>invalid glTF JSON</source>
+        <translation>JSON glTF invalide</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <source>buffer file not found: %1</source>
+        <translation>fichier de tampon introuvable : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <source>none given; the objects are lit by the room&apos;s gathered light only</source>
+        <translation>aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <source>ignored, the photo is already linear (EXR/HDR)</source>
+        <translation>ignorée, la photo est déjà linéaire (EXR/HDR)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
+        <translation>le mur du fond estimé est inutilisable (%1) ; une pièce de 5 x 5,5 m est utilisée : indiquez layout.back_wall_px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="47"/>
+        <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
+        <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale a priori, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
+        <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale par défaut, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="55"/>
+        <source>strength kept as estimated: %1</source>
+        <translation>intensité gardée telle qu&apos;estimée : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
+        <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
+        <translation>la fenêtre par laquelle entre le soleil est hors champ ; son ciel est une lumière de %1 x %2 m sur %3 (d&apos;où vient le faisceau), d&apos;intensité ajustée (indiquez source_box_px, ou détourez la fenêtre comme lumière, pour choisir)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="60"/>
+        <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
+        <translation>le masque de %1 montre le sol sous le plateau en %2 points sur %3 : c&apos;est une plaque de %4 m d&apos;épaisseur (indiquez thickness_m pour choisir ; 0 : plein)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="64"/>
+        <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
+        <translation>la lumière réfléchie a encore changé de %1 % à la dernière des %2 passes (les murs que la caméra ne voit pas sont incertains)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
+        <translation>les lumières %1 sont hors champ : elles partagent une même radiance (la photo ne montre que leur somme)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="70"/>
+        <source>outside the room; moved %1 m to fit inside it</source>
+        <translation>hors de la pièce ; déplacée de %1 m pour y tenir</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <source>larger than the room in every direction; its position is kept</source>
+        <translation>plus grande que la pièce dans toutes les directions ; sa position est gardée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
+        <translation>%1 n&apos;éclaire rien de la pièce que montre la photo : son intensité reste à sa valeur de départ</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
+        <translation>la lumière directe de la photo est noire : les lumières sont ajustées sur l&apos;obscurité</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <source>light refinement failed (%1): the start is kept</source>
+        <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <source>line %1</source>
+        <translation>ligne %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <source>header line %1</source>
+        <translation>ligne d&apos;en-tête %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>vertex %1</source>
+        <translation>sommet %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>face %1</source>
+        <translation>face %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>sun %1</source>
+        <translation>soleil %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <source>lights</source>
+        <translation>lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <source>estimate</source>
+        <translation>estimation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <source>lighting</source>
+        <translation>éclairage</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <source>lighting (refit)</source>
+        <translation>éclairage (réajusté)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <source>light refinement</source>
+        <translation>affinage des lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <source>layout</source>
+        <translation>disposition</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
     </message>
 </context>
 <context>
@@ -477,22 +717,22 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::LogDock</name>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="29"/>
+        <location filename="../app/studio/log_dock.cpp" line="30"/>
         <source>Log</source>
         <translation>Journal</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="37"/>
+        <location filename="../app/studio/log_dock.cpp" line="38"/>
         <source>%1 The scene could not be prepared: %2</source>
         <translation>%1 La scène n&apos;a pas pu être préparée : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="44"/>
+        <location filename="../app/studio/log_dock.cpp" line="45"/>
         <source>%1 Prepared the scene in %2 s:</source>
         <translation>%1 Scène préparée en %2 s :</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="47"/>
+        <location filename="../app/studio/log_dock.cpp" line="48"/>
         <source>warning: %1</source>
         <translation>avertissement : %1</translation>
     </message>
@@ -500,422 +740,422 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::MainWindow</name>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="89"/>
+        <location filename="../app/studio/main_window.cpp" line="90"/>
         <source>Reading the photo</source>
         <translation>Lecture de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="90"/>
+        <location filename="../app/studio/main_window.cpp" line="91"/>
         <source>Estimating the camera</source>
         <translation>Estimation de l&apos;appareil photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="91"/>
+        <location filename="../app/studio/main_window.cpp" line="92"/>
         <source>Fitting the room</source>
         <translation>Ajustement de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="92"/>
+        <location filename="../app/studio/main_window.cpp" line="93"/>
         <source>Estimating the lighting</source>
         <translation>Estimation de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="93"/>
+        <location filename="../app/studio/main_window.cpp" line="94"/>
         <source>Placing the objects</source>
         <translation>Placement des objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Échantillons par pixel de la composition affichée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Échantillons par seconde du rendu (millions)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Erreur estimée (RMSE en sRGB) là où les objets modifient la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="501"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Render time since the last change</source>
         <translation>Temps de rendu depuis la dernière modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="136"/>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="137"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="641"/>
+        <location filename="../app/studio/main_window.cpp" line="644"/>
         <source>Preparing the scene: %1…</source>
         <translation>Préparation de la scène : %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="443"/>
+        <location filename="../app/studio/main_window.cpp" line="444"/>
         <source>&amp;Open Scene…</source>
         <translation>&amp;Ouvrir une scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>Open a scene file (.json)</source>
         <translation>Ouvrir un fichier de scène (.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>Open &amp;Photo…</source>
         <translation>Ouvrir une &amp;photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Start a new scene from a photo</source>
         <translation>Commencer une nouvelle scène à partir d&apos;une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>Open &amp;Example</source>
         <translation>Ouvrir l&apos;&amp;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>Save &amp;As…</source>
         <translation>Enregistrer &amp;sous…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>&amp;Export Composite…</source>
         <translation>E&amp;xporter la composition…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Écrire la composition actuelle en PNG, JPEG, TIFF ou EXR</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Exporter le &amp;calque affiché…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="488"/>
+        <location filename="../app/studio/main_window.cpp" line="489"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Écrire le calque affiché (albédo, masque, …) en image 8 bits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Exporter la scène en &amp;glTF…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="490"/>
+        <location filename="../app/studio/main_window.cpp" line="491"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Écrire la pièce, ses lumières, la caméra et les objets en glTF 2.0, pour continuer dans Blender</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="539"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="540"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>Insert &amp;Sphere</source>
         <translation>Insérer une &amp;sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Poser une sphère sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>Insert &amp;Cube</source>
         <translation>Insérer un &amp;cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Poser un cube sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Delete the selected object or mark</source>
         <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="494"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>P&amp;réparer à nouveau la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="479"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
         <source>&amp;Render Final Image…</source>
         <translation>&amp;Rendre l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="453"/>
+        <location filename="../app/studio/main_window.cpp" line="454"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Rendre le composite à la pleine résolution de la photo jusqu&apos;à ce qu&apos;il soit net, puis l&apos;enregistrer (PNG, JPEG, TIFF ou EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="455"/>
+        <location filename="../app/studio/main_window.cpp" line="456"/>
         <source>Before/After &amp;Split</source>
         <translation>&amp;Partage avant/après</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="457"/>
+        <location filename="../app/studio/main_window.cpp" line="458"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>La photo à gauche d&apos;une séparation, le composite à droite ; faites glisser la séparation</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="463"/>
         <source>Insert &amp;Model…</source>
         <translation>Insérer un &amp;modèle…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="464"/>
+        <location filename="../app/studio/main_window.cpp" line="465"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Poser un modèle 3D (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) au sol ; ou déposer le fichier là où il doit se tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="466"/>
+        <location filename="../app/studio/main_window.cpp" line="467"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;upliquer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Poser une copie de l&apos;objet choisi à côté de lui</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Re&amp;name…</source>
         <translation>Re&amp;nommer…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Renommer l&apos;objet choisi (dans la liste de la scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>&amp;Hide or Show</source>
         <translation>&amp;Masquer ou afficher</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Masquer l&apos;objet choisi du rendu, ou l&apos;afficher à nouveau</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <location filename="../app/studio/main_window.cpp" line="481"/>
         <source>&amp;Denoise Preview</source>
         <translation>&amp;Débruiter l&apos;aperçu</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="482"/>
+        <location filename="../app/studio/main_window.cpp" line="483"/>
         <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
         <translation>Lisser le bruit du rendu là où les objets changent la photo (le reste reste la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Lignes de fuite (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="507"/>
+        <location filename="../app/studio/main_window.cpp" line="508"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="508"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="509"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="512"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="515"/>
+        <location filename="../app/studio/main_window.cpp" line="516"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="539"/>
+        <location filename="../app/studio/main_window.cpp" line="541"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Annuler : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="540"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
-        <location filename="../app/studio/main_window.cpp" line="564"/>
-        <location filename="../app/studio/main_window.cpp" line="640"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="566"/>
+        <location filename="../app/studio/main_window.cpp" line="643"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="549"/>
-        <location filename="../app/studio/main_window.cpp" line="929"/>
+        <location filename="../app/studio/main_window.cpp" line="551"/>
+        <location filename="../app/studio/main_window.cpp" line="932"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="550"/>
-        <location filename="../app/studio/main_window.cpp" line="1374"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="1377"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="583"/>
+        <location filename="../app/studio/main_window.cpp" line="586"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="592"/>
+        <location filename="../app/studio/main_window.cpp" line="595"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -923,351 +1163,351 @@ Faites-le glisser dans la photo.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="621"/>
+        <location filename="../app/studio/main_window.cpp" line="624"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="527"/>
-        <location filename="../app/studio/main_window.cpp" line="661"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="664"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="654"/>
-        <location filename="../app/studio/main_window.cpp" line="662"/>
-        <location filename="../app/studio/main_window.cpp" line="676"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
+        <location filename="../app/studio/main_window.cpp" line="665"/>
+        <location filename="../app/studio/main_window.cpp" line="679"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
-        <location filename="../app/studio/main_window.cpp" line="663"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="666"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="664"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="667"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="527"/>
-        <location filename="../app/studio/main_window.cpp" line="653"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="656"/>
         <source>final, %1 spp</source>
         <translation>final, %1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="526"/>
-        <location filename="../app/studio/main_window.cpp" line="668"/>
+        <location filename="../app/studio/main_window.cpp" line="528"/>
+        <location filename="../app/studio/main_window.cpp" line="671"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="526"/>
-        <location filename="../app/studio/main_window.cpp" line="669"/>
+        <location filename="../app/studio/main_window.cpp" line="528"/>
+        <location filename="../app/studio/main_window.cpp" line="672"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="670"/>
+        <location filename="../app/studio/main_window.cpp" line="673"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1390"/>
+        <location filename="../app/studio/main_window.cpp" line="1393"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>L&apos;image finale %1 est encore en cours de rendu (%2 % fait). Annuler le rendu ? Rien n&apos;est alors écrit, et un fichier antérieur de ce nom reste tel quel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1398"/>
+        <location filename="../app/studio/main_window.cpp" line="1401"/>
         <source>Keep Rendering</source>
         <translation>Continuer le rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1417"/>
+        <location filename="../app/studio/main_window.cpp" line="1420"/>
         <source>Cancel the Render and Close</source>
         <translation>Annuler le rendu et fermer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="530"/>
-        <location filename="../app/studio/main_window.cpp" line="655"/>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="674"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="675"/>
+        <location filename="../app/studio/main_window.cpp" line="531"/>
+        <location filename="../app/studio/main_window.cpp" line="678"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="656"/>
-        <location filename="../app/studio/main_window.cpp" line="677"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="680"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="687"/>
+        <location filename="../app/studio/main_window.cpp" line="690"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="688"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="689"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="710"/>
+        <location filename="../app/studio/main_window.cpp" line="713"/>
         <source>Cancel the Render and Open</source>
         <translation>Annuler le rendu et ouvrir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="714"/>
+        <location filename="../app/studio/main_window.cpp" line="717"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="714"/>
+        <location filename="../app/studio/main_window.cpp" line="717"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="720"/>
+        <location filename="../app/studio/main_window.cpp" line="723"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
-        <location filename="../app/studio/main_window.cpp" line="749"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="752"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="739"/>
+        <location filename="../app/studio/main_window.cpp" line="742"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="749"/>
+        <location filename="../app/studio/main_window.cpp" line="752"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="759"/>
+        <location filename="../app/studio/main_window.cpp" line="762"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="760"/>
+        <location filename="../app/studio/main_window.cpp" line="763"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="767"/>
+        <location filename="../app/studio/main_window.cpp" line="770"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="768"/>
+        <location filename="../app/studio/main_window.cpp" line="771"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="775"/>
+        <location filename="../app/studio/main_window.cpp" line="778"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="779"/>
+        <location filename="../app/studio/main_window.cpp" line="782"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="795"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="795"/>
+        <location filename="../app/studio/main_window.cpp" line="798"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="803"/>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
-        <location filename="../app/studio/main_window.cpp" line="1030"/>
-        <location filename="../app/studio/main_window.cpp" line="1061"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="837"/>
+        <location filename="../app/studio/main_window.cpp" line="1033"/>
+        <location filename="../app/studio/main_window.cpp" line="1064"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="803"/>
-        <location filename="../app/studio/main_window.cpp" line="834"/>
+        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="837"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1050"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1050"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="826"/>
-        <location filename="../app/studio/main_window.cpp" line="1051"/>
+        <location filename="../app/studio/main_window.cpp" line="829"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="827"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
+        <location filename="../app/studio/main_window.cpp" line="809"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="842"/>
+        <location filename="../app/studio/main_window.cpp" line="845"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="847"/>
+        <location filename="../app/studio/main_window.cpp" line="850"/>
         <source>Exported %1 (the final render)</source>
         <translation>%1 exporté (l&apos;image finale)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="852"/>
+        <location filename="../app/studio/main_window.cpp" line="855"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exporté (%2 spp, l&apos;aperçu en %3 × %4 ; Rendre l&apos;image finale écrit la pleine taille de la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="860"/>
+        <location filename="../app/studio/main_window.cpp" line="863"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="883"/>
+        <location filename="../app/studio/main_window.cpp" line="886"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Les quatre étapes sont faites. Affichage &gt; Étapes les montre à nouveau.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="889"/>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
+        <location filename="../app/studio/main_window.cpp" line="892"/>
+        <location filename="../app/studio/main_window.cpp" line="907"/>
         <source>Nothing to render</source>
         <translation>Rien à rendre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="897"/>
-        <location filename="../app/studio/main_window.cpp" line="930"/>
-        <location filename="../app/studio/main_window.cpp" line="1389"/>
+        <location filename="../app/studio/main_window.cpp" line="900"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
+        <location filename="../app/studio/main_window.cpp" line="1392"/>
         <source>Render Final Image</source>
         <translation>Rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="911"/>
         <source>A final image is being rendered already.</source>
         <translation>Une image finale est déjà en cours de rendu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="915"/>
-        <location filename="../app/studio/main_window.cpp" line="920"/>
+        <location filename="../app/studio/main_window.cpp" line="918"/>
+        <location filename="../app/studio/main_window.cpp" line="923"/>
         <source>Cannot render the final image</source>
         <translation>Impossible de rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="916"/>
+        <location filename="../app/studio/main_window.cpp" line="919"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1 : choisissez un fichier .png, .jpg, .tif ou .exr.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="921"/>
+        <location filename="../app/studio/main_window.cpp" line="924"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1 : le dossier %2 n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="929"/>
-        <location filename="../app/studio/main_window.cpp" line="950"/>
+        <location filename="../app/studio/main_window.cpp" line="932"/>
+        <location filename="../app/studio/main_window.cpp" line="953"/>
         <source>Rendering the final image…</source>
         <translation>Rendu de l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="938"/>
+        <location filename="../app/studio/main_window.cpp" line="941"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Image finale : %1 échantillons par pixel au plus, erreur estimée %2 (cible %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="974"/>
+        <location filename="../app/studio/main_window.cpp" line="977"/>
         <source>Cannot write the final image</source>
         <translation>Impossible d&apos;écrire l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="995"/>
+        <location filename="../app/studio/main_window.cpp" line="998"/>
         <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
         <translation>Image finale affichée (%1, %2 × %3) ; la prochaine modification revient à l&apos;aperçu en direct.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="999"/>
+        <location filename="../app/studio/main_window.cpp" line="1002"/>
         <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
         <translation>Image finale (%1 × %2, enregistrée sous %3) : affichée jusqu&apos;à la prochaine modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1021"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1018"/>
+        <location filename="../app/studio/main_window.cpp" line="1021"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1019"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="889"/>
-        <location filename="../app/studio/main_window.cpp" line="904"/>
-        <location filename="../app/studio/main_window.cpp" line="1030"/>
+        <location filename="../app/studio/main_window.cpp" line="892"/>
+        <location filename="../app/studio/main_window.cpp" line="907"/>
+        <location filename="../app/studio/main_window.cpp" line="1033"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1037"/>
+        <location filename="../app/studio/main_window.cpp" line="1040"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1049"/>
+        <location filename="../app/studio/main_window.cpp" line="1052"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1061"/>
+        <location filename="../app/studio/main_window.cpp" line="1064"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1068"/>
+        <location filename="../app/studio/main_window.cpp" line="1071"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
@@ -1276,143 +1516,143 @@ Faites-le glisser dans la photo.</translation>
         <translation type="vanished">%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1040"/>
-        <location filename="../app/studio/main_window.cpp" line="1071"/>
+        <location filename="../app/studio/main_window.cpp" line="1043"/>
+        <location filename="../app/studio/main_window.cpp" line="1074"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1101"/>
+        <location filename="../app/studio/main_window.cpp" line="1104"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1102"/>
+        <location filename="../app/studio/main_window.cpp" line="1105"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1111"/>
+        <location filename="../app/studio/main_window.cpp" line="1114"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1138"/>
+        <location filename="../app/studio/main_window.cpp" line="1141"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1146"/>
+        <location filename="../app/studio/main_window.cpp" line="1149"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1150"/>
+        <location filename="../app/studio/main_window.cpp" line="1153"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1165"/>
+        <location filename="../app/studio/main_window.cpp" line="1168"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1175"/>
+        <location filename="../app/studio/main_window.cpp" line="1178"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1216"/>
+        <location filename="../app/studio/main_window.cpp" line="1219"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1218"/>
+        <location filename="../app/studio/main_window.cpp" line="1221"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1188"/>
+        <location filename="../app/studio/main_window.cpp" line="1191"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1201"/>
+        <location filename="../app/studio/main_window.cpp" line="1204"/>
         <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de large à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1244"/>
+        <location filename="../app/studio/main_window.cpp" line="1247"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1248"/>
+        <location filename="../app/studio/main_window.cpp" line="1251"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1249"/>
+        <location filename="../app/studio/main_window.cpp" line="1252"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1258"/>
+        <location filename="../app/studio/main_window.cpp" line="1261"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1278"/>
+        <location filename="../app/studio/main_window.cpp" line="1281"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1308"/>
+        <location filename="../app/studio/main_window.cpp" line="1311"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1310"/>
+        <location filename="../app/studio/main_window.cpp" line="1313"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1335"/>
+        <location filename="../app/studio/main_window.cpp" line="1338"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1338"/>
+        <location filename="../app/studio/main_window.cpp" line="1341"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1339"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1343"/>
+        <location filename="../app/studio/main_window.cpp" line="1346"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1344"/>
+        <location filename="../app/studio/main_window.cpp" line="1347"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1361"/>
+        <location filename="../app/studio/main_window.cpp" line="1364"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1367"/>
+        <location filename="../app/studio/main_window.cpp" line="1370"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1374"/>
+        <location filename="../app/studio/main_window.cpp" line="1377"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -1420,82 +1660,82 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ModelImportText</name>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="18"/>
+        <location filename="../app/studio/model_import.cpp" line="19"/>
         <source>%1 km</source>
         <translation>%1 km</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="19"/>
+        <location filename="../app/studio/model_import.cpp" line="20"/>
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="20"/>
+        <location filename="../app/studio/model_import.cpp" line="21"/>
         <source>%1 cm</source>
         <translation>%1 cm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="21"/>
+        <location filename="../app/studio/model_import.cpp" line="22"/>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="22"/>
+        <location filename="../app/studio/model_import.cpp" line="23"/>
         <source>%1 µm</source>
         <translation>%1 µm</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="37"/>
+        <location filename="../app/studio/model_import.cpp" line="38"/>
         <source>%1 files do not state their unit: %2 was scaled to %3 high (change Height in Properties).</source>
         <translation>Les fichiers %1 n&apos;indiquent pas leur unité : %2 a été mis à l&apos;échelle à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="49"/>
+        <location filename="../app/studio/model_import.cpp" line="50"/>
         <source>%1 says it is %2 high, an absurd size: it was inserted %3 high instead (change Height in Properties).</source>
         <translation>%1 se dit haut de %2, une taille absurde : il a été inséré à %3 de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="108"/>
+        <location filename="../app/studio/model_import.cpp" line="109"/>
         <source>%1 names files that are not beside it (%2): its materials&apos; own colours are used, or a grey default.</source>
         <translation>%1 cite des fichiers absents à côté de lui (%2) : les couleurs propres de ses matériaux sont utilisées, sinon un gris.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="113"/>
+        <location filename="../app/studio/model_import.cpp" line="114"/>
         <source>%1&apos;s image textures are not rendered: Inlay uses its materials&apos; base colour, metallic and roughness values.</source>
         <translation>Les textures d&apos;image de %1 ne sont pas rendues : Inlay utilise la couleur de base, le métal et la rugosité de ses matériaux.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="136"/>
+        <location filename="../app/studio/model_import.cpp" line="137"/>
         <source>3D models (%1)</source>
         <translation>Modèles 3D (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="137"/>
+        <location filename="../app/studio/model_import.cpp" line="138"/>
         <source>All files (*)</source>
         <translation>Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="151"/>
+        <location filename="../app/studio/model_import.cpp" line="152"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="169"/>
+        <location filename="../app/studio/model_import.cpp" line="170"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="173"/>
+        <location filename="../app/studio/model_import.cpp" line="174"/>
         <source>(Inlay inserts models of up to %1 triangles.)</source>
         <translation>(Inlay insère des modèles jusqu&apos;à %1 triangles.)</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="178"/>
+        <location filename="../app/studio/model_import.cpp" line="179"/>
         <source>%1: the model is flat (it has no height), so it cannot stand in the room.</source>
         <translation>%1 : le modèle est plat (il n&apos;a pas de hauteur) et ne peut donc pas se tenir dans la pièce.</translation>
     </message>
     <message>
-        <location filename="../app/studio/model_import.cpp" line="189"/>
+        <location filename="../app/studio/model_import.cpp" line="190"/>
         <source>%1 has no normals: it is shaded flat.</source>
         <translation>%1 n&apos;a pas de normales : il est ombré à plat.</translation>
     </message>
@@ -2059,178 +2299,178 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="320"/>
+        <location filename="../app/studio/viewport.cpp" line="321"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="322"/>
+        <location filename="../app/studio/viewport.cpp" line="323"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="324"/>
+        <location filename="../app/studio/viewport.cpp" line="325"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="326"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="328"/>
+        <location filename="../app/studio/viewport.cpp" line="329"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="329"/>
+        <location filename="../app/studio/viewport.cpp" line="330"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="331"/>
+        <location filename="../app/studio/viewport.cpp" line="332"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="337"/>
+        <location filename="../app/studio/viewport.cpp" line="338"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Faites glisser le long d’une arête dans la direction %1 (les touches X, Y, Z la choisissent).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="339"/>
+        <location filename="../app/studio/viewport.cpp" line="340"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Faites maintenant glisser le long d’une deuxième arête dans la direction %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="435"/>
+        <location filename="../app/studio/viewport.cpp" line="436"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="435"/>
+        <location filename="../app/studio/viewport.cpp" line="436"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="492"/>
+        <location filename="../app/studio/viewport.cpp" line="493"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="531"/>
+        <location filename="../app/studio/viewport.cpp" line="532"/>
         <source>%1: %2 px</source>
         <translation>%1 : %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="564"/>
+        <location filename="../app/studio/viewport.cpp" line="565"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="578"/>
+        <location filename="../app/studio/viewport.cpp" line="579"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="593"/>
+        <location filename="../app/studio/viewport.cpp" line="594"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="654"/>
+        <location filename="../app/studio/viewport.cpp" line="655"/>
         <source>%1 hidden</source>
         <translation>%1 masqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="747"/>
+        <location filename="../app/studio/viewport.cpp" line="748"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="749"/>
+        <location filename="../app/studio/viewport.cpp" line="750"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="753"/>
+        <location filename="../app/studio/viewport.cpp" line="754"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="756"/>
+        <location filename="../app/studio/viewport.cpp" line="757"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="779"/>
+        <location filename="../app/studio/viewport.cpp" line="780"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="783"/>
+        <location filename="../app/studio/viewport.cpp" line="784"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="842"/>
+        <location filename="../app/studio/viewport.cpp" line="843"/>
         <source>Before</source>
         <translation>Avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="842"/>
+        <location filename="../app/studio/viewport.cpp" line="843"/>
         <source>After</source>
         <translation>Après</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="929"/>
+        <location filename="../app/studio/viewport.cpp" line="930"/>
         <source>the left wall</source>
         <translation>le mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="931"/>
         <source>the right wall</source>
         <translation>le mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="931"/>
+        <location filename="../app/studio/viewport.cpp" line="932"/>
         <source>the back wall</source>
         <translation>le mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="932"/>
+        <location filename="../app/studio/viewport.cpp" line="933"/>
         <source>the wall behind the camera</source>
         <translation>le mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="934"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="954"/>
+        <location filename="../app/studio/viewport.cpp" line="955"/>
         <source>Turned %1°</source>
         <translation>Tourné à %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="964"/>
+        <location filename="../app/studio/viewport.cpp" line="965"/>
         <source>Height %1 m</source>
         <translation>Hauteur %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="997"/>
+        <location filename="../app/studio/viewport.cpp" line="998"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="922"/>
-        <location filename="../app/studio/viewport.cpp" line="1320"/>
+        <location filename="../app/studio/viewport.cpp" line="923"/>
+        <location filename="../app/studio/viewport.cpp" line="1321"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1253"/>
+        <location filename="../app/studio/viewport.cpp" line="1254"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>

@@ -85,12 +85,22 @@ bool operator==(const SceneMarks& a, const SceneMarks& b) {
   return sceneToJson(x) == sceneToJson(y);
 }
 
+// A command whose text is built again in the current language on retranslate().
+class TextCommand : public QUndoCommand {
+ public:
+  explicit TextCommand(UndoText text) : text_(std::move(text)) { retranslate(); }
+  void retranslate() { setText(text_ ? text_() : QString()); }
+
+ private:
+  UndoText text_;
+};
+
 // One undoable change of the scene's marks (a corner, a light, a shaft, ...). Moves of one drag
 // share a merge id and collapse into one command; one that ends where it started is obsolete.
-class MarksCommand : public QUndoCommand {
+class MarksCommand : public TextCommand {
  public:
-  MarksCommand(Document* doc, SceneMarks before, SceneMarks after, int mergeId, const QString& text)
-      : QUndoCommand(text),
+  MarksCommand(Document* doc, SceneMarks before, SceneMarks after, int mergeId, UndoText text)
+      : TextCommand(std::move(text)),
         doc_(doc),
         before_(std::move(before)),
         after_(std::move(after)),
@@ -118,11 +128,11 @@ class MarksCommand : public QUndoCommand {
 // One undoable change of one object's keys (placement and/or material). Moves of one drag share
 // a merge id and collapse into one command; a command whose before equals its after is
 // obsolete and leaves the stack.
-class ObjectEditCommand : public QUndoCommand {
+class ObjectEditCommand : public TextCommand {
  public:
   ObjectEditCommand(Document* doc, int index, ObjectKeys before, ObjectKeys after, int mergeId,
-                    const QString& text)
-      : QUndoCommand(text),
+                    UndoText text)
+      : TextCommand(std::move(text)),
         doc_(doc),
         index_(index),
         before_(std::move(before)),
@@ -151,11 +161,11 @@ class ObjectEditCommand : public QUndoCommand {
 
 // Inserting (or, with `insert` false, removing) one object. Undo does the opposite. The mesh
 // is kept here so redo never reloads a file.
-class ObjectListCommand : public QUndoCommand {
+class ObjectListCommand : public TextCommand {
  public:
   ObjectListCommand(Document* doc, bool insert, int index, ObjectKeys keys,
-                    std::shared_ptr<const TriangleMesh> mesh, const QString& text)
-      : QUndoCommand(text),
+                    std::shared_ptr<const TriangleMesh> mesh, UndoText text)
+      : TextCommand(std::move(text)),
         doc_(doc),
         insert_(insert),
         index_(index),
@@ -372,7 +382,7 @@ void Document::setSelectedMark(std::optional<MarkRef> mark) {
   Q_EMIT changed({ChangeEvent::Selection});
 }
 
-bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text,
+bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, UndoText text,
                           QString* reason) {
   auto fail = [&](const QString& why) {
     if (reason) *reason = why;
@@ -395,7 +405,7 @@ bool Document::editObject(int index, const ObjectKeys& keys, int mergeId, const 
     if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
   }
   if (sameObject(current, keys)) return true;  // nothing to do
-  undo_.push(new ObjectEditCommand(this, index, current, keys, mergeId, text));
+  undo_.push(new ObjectEditCommand(this, index, current, keys, mergeId, std::move(text)));
   return true;
 }
 
@@ -403,14 +413,16 @@ bool Document::moveObject(int index, const Vec2& basePx, int dragId, QString* re
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.basePx = basePx;
-  return editObject(index, keys, dragId, tr("Move object %1").arg(index + 1), reason);
+  return editObject(
+      index, keys, dragId, [n = index + 1] { return tr("Move object %1").arg(n); }, reason);
 }
 
 bool Document::setObjectHeight(int index, double heightM, QString* reason, int dragId) {
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.heightM = heightM;
-  return editObject(index, keys, dragId, tr("Change height of object %1").arg(index + 1), reason);
+  return editObject(
+      index, keys, dragId, [n = index + 1] { return tr("Change height of object %1").arg(n); }, reason);
 }
 
 bool Document::setObjectYaw(int index, double yawDeg, QString* reason, int dragId) {
@@ -421,7 +433,8 @@ bool Document::setObjectYaw(int index, double yawDeg, QString* reason, int dragI
   }
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.yawDeg = yawDeg;
-  return editObject(index, keys, dragId, tr("Turn object %1").arg(index + 1), reason);
+  return editObject(
+      index, keys, dragId, [n = index + 1] { return tr("Turn object %1").arg(n); }, reason);
 }
 
 bool Document::moveAndTurnObject(int index, const Vec2& basePx, double yawDeg, int dragId,
@@ -434,7 +447,8 @@ bool Document::moveAndTurnObject(int index, const Vec2& basePx, double yawDeg, i
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.basePx = basePx;
   keys.yawDeg = yawDeg;
-  return editObject(index, keys, dragId, tr("Move object %1").arg(index + 1), reason);
+  return editObject(
+      index, keys, dragId, [n = index + 1] { return tr("Move object %1").arg(n); }, reason);
 }
 
 std::optional<Document::WallSnap> Document::wallSnap(int index, const Vec2& basePx) const {
@@ -478,7 +492,8 @@ bool Document::setMaterial(int index, const MaterialKeys& material, QString* rea
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.material = material;
-  return editObject(index, keys, 0, tr("Change material of object %1").arg(index + 1), reason);
+  return editObject(
+      index, keys, 0, [n = index + 1] { return tr("Change material of object %1").arg(n); }, reason);
 }
 
 std::optional<Vec2> Document::freeStandingPointPx() const {
@@ -530,9 +545,10 @@ bool Document::insertObject(const ObjectKeys& keys, std::shared_ptr<const Triang
                                                  keys.basePx, keys.heightM, keys.yawDeg, key);
   if (!placed.ok()) return fail(QString::fromStdString(placed.error().message()));
   const int index = objectCount();
-  const QString name = keys.name.empty() ? tr("object %1").arg(index + 1)
-                                         : QString::fromStdString(keys.name);
-  undo_.push(new ObjectListCommand(this, true, index, keys, std::move(mesh), tr("Insert %1").arg(name)));
+  UndoText name = [n = index + 1] { return tr("object %1").arg(n); };
+  if (!keys.name.empty()) name = [fixed = QString::fromStdString(keys.name)] { return fixed; };
+  undo_.push(new ObjectListCommand(this, true, index, keys, std::move(mesh),
+                                   [name] { return tr("Insert %1").arg(name()); }));
   return true;
 }
 
@@ -549,8 +565,9 @@ bool Document::duplicateObject(int index, QString* reason) {
       prepared_->renderScene.objects[size_t(index)].meshObject;
   copy.basePx = spotBeside(index).value_or(copy.basePx);
   const int at = objectCount();
-  undo_.push(
-      new ObjectListCommand(this, true, at, copy, mesh, tr("Duplicate %1").arg(objectName(index))));
+  undo_.push(new ObjectListCommand(this, true, at, copy, mesh, [name = objectNameText(index)] {
+    return tr("Duplicate %1").arg(name());
+  }));
   return true;
 }
 
@@ -596,17 +613,36 @@ std::optional<Vec2> Document::spotBeside(int index) const {
 bool Document::renameObject(int index, const QString& name, QString* reason) {
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
-  const QString before = objectName(index);
+  UndoText before = objectNameText(index);
   keys.name = name.trimmed().toStdString();
-  return editObject(index, keys, 0, tr("Rename %1").arg(before), reason);
+  return editObject(
+      index, keys, 0, [before] { return tr("Rename %1").arg(before()); }, reason);
 }
 
 bool Document::setObjectHidden(int index, bool hidden, QString* reason) {
   if (index < 0 || index >= objectCount()) return editObject(index, {}, 0, {}, reason);
   ObjectKeys keys = doc_.objects[size_t(index)];
   keys.hidden = hidden;
-  return editObject(index, keys, 0, (hidden ? tr("Hide %1") : tr("Show %1")).arg(objectName(index)),
-                    reason);
+  UndoText text = [hidden, name = objectNameText(index)] {
+    return (hidden ? tr("Hide %1") : tr("Show %1")).arg(name());
+  };
+  return editObject(index, keys, 0, std::move(text), reason);
+}
+
+UndoText Document::objectNameText(int index) const {
+  if (index >= 0 && index < objectCount() && doc_.objects[size_t(index)].name.empty()) {
+    const std::string& mesh = doc_.objects[size_t(index)].mesh;
+    if (mesh == "builtin:sphere") return [] { return tr("sphere"); };
+    if (mesh == "builtin:cube") return [] { return tr("cube"); };
+  }
+  return [fixed = objectName(index)] { return fixed; };
+}
+
+void Document::retranslateHistory() {
+  // The stack hands out const commands; each is one of ours, created non-const by a push.
+  for (int i = 0; i < undo_.count(); ++i)
+    if (const auto* c = dynamic_cast<const TextCommand*>(undo_.command(i)))
+      const_cast<TextCommand*>(c)->retranslate();
 }
 
 QString Document::objectName(int index) const {
@@ -652,7 +688,7 @@ bool Document::removeObject(int index, QString* reason) {
   if (const QString why = whyObjectsCannotChange(index); !why.isEmpty()) return fail(why);
   undo_.push(new ObjectListCommand(this, false, index, doc_.objects[size_t(index)],
                                    prepared_->renderScene.objects[size_t(index)].meshObject,
-                                   tr("Delete object %1").arg(index + 1)));
+                                   [n = index + 1] { return tr("Delete object %1").arg(n); }));
   return true;
 }
 
@@ -750,14 +786,14 @@ std::optional<std::array<Vec2, 4>> Document::shownBackWallPx() const {
   return estimatedBackWallPx_;
 }
 
-bool Document::editMarks(const SceneMarks& after, int mergeId, const QString& text, QString* reason) {
+bool Document::editMarks(const SceneMarks& after, int mergeId, UndoText text, QString* reason) {
   if (doc_.photo.empty()) {
     if (reason) *reason = tr("Open a photo first.");
     return false;
   }
   SceneMarks before = marks();
   if (before == after) return true;
-  undo_.push(new MarksCommand(this, std::move(before), after, mergeId, text));
+  undo_.push(new MarksCommand(this, std::move(before), after, mergeId, std::move(text)));
   return true;
 }
 
@@ -777,7 +813,8 @@ bool Document::acceptEstimatedBox(QString* reason) {
   }
   SceneMarks m = marks();
   m.layout.backWallPx = *shown;
-  return editMarks(m, 0, tr("Accept the estimated box"), reason);
+  return editMarks(
+      m, 0, [] { return tr("Accept the estimated box"); }, reason);
 }
 
 bool Document::setBackWallCorner(int corner, const Vec2& px, int dragId, QString* reason) {
@@ -793,13 +830,15 @@ bool Document::setBackWallCorner(int corner, const Vec2& px, int dragId, QString
   (*corners)[size_t(corner)] = px;
   SceneMarks m = marks();
   m.layout.backWallPx = *corners;
-  return editMarks(m, dragId, tr("Move a corner of the back wall"), reason);
+  return editMarks(
+      m, dragId, [] { return tr("Move a corner of the back wall"); }, reason);
 }
 
 bool Document::resetBackWall(QString* reason) {
   SceneMarks m = marks();
   m.layout.backWallPx.reset();
-  return editMarks(m, 0, tr("Estimate the box again"), reason);
+  return editMarks(
+      m, 0, [] { return tr("Estimate the box again"); }, reason);
 }
 
 bool Document::addLight(const std::vector<Vec2>& outlinePx, QString* reason) {
@@ -812,7 +851,8 @@ bool Document::addLight(const std::vector<Vec2>& outlinePx, QString* reason) {
   light.kind = LightKeys::Kind::PolygonPx;
   light.pointsPx = outlinePx;
   m.lights.push_back(light);
-  return editMarks(m, 0, tr("Outline light %1").arg(m.lights.size()), reason);
+  return editMarks(
+      m, 0, [n = int(m.lights.size())] { return tr("Outline light %1").arg(n); }, reason);
 }
 
 bool Document::addShaft(const std::array<double, 4>& shaftBoxPx,
@@ -826,7 +866,8 @@ bool Document::addShaft(const std::array<double, 4>& shaftBoxPx,
   shaft.shaftBoxPx = shaftBoxPx;
   shaft.sourceBoxPx = sourceBoxPx;
   m.shafts.push_back(shaft);
-  return editMarks(m, 0, tr("Add shaft %1").arg(m.shafts.size()), reason);
+  return editMarks(
+      m, 0, [n = int(m.shafts.size())] { return tr("Add shaft %1").arg(n); }, reason);
 }
 
 bool Document::addExtrusion(const std::vector<Vec2>& outlinePx, const Vec2& heightClickPx,
@@ -842,7 +883,8 @@ bool Document::addExtrusion(const std::vector<Vec2>& outlinePx, const Vec2& heig
   surface.outlinePx = outlinePx;
   surface.heightClickPx = heightClickPx;
   m.surfaces.push_back(surface);
-  return editMarks(m, 0, tr("Add surface %1").arg(m.surfaces.size()), reason);
+  return editMarks(
+      m, 0, [n = int(m.surfaces.size())] { return tr("Add surface %1").arg(n); }, reason);
 }
 
 bool Document::addOccluder(const OccluderKeys& occluder, QString* reason) {
@@ -857,7 +899,8 @@ bool Document::addOccluder(const OccluderKeys& occluder, QString* reason) {
   }
   SceneMarks m = marks();
   m.occluders.push_back(occluder);
-  return editMarks(m, 0, tr("Add occluder %1").arg(m.occluders.size()), reason);
+  return editMarks(
+      m, 0, [n = int(m.occluders.size())] { return tr("Add occluder %1").arg(n); }, reason);
 }
 
 bool Document::addOccluderStroke(int index, bool foreground, const std::vector<Vec2>& strokePx,
@@ -869,7 +912,8 @@ bool Document::addOccluderStroke(int index, bool foreground, const std::vector<V
   SceneMarks m = marks();
   OccluderKeys& o = m.occluders[size_t(index)];
   (foreground ? o.foregroundScribblesPx : o.backgroundScribblesPx).push_back(strokePx);
-  return editMarks(m, 0, tr("Add a stroke to occluder %1").arg(index + 1), reason);
+  return editMarks(
+      m, 0, [n = index + 1] { return tr("Add a stroke to occluder %1").arg(n); }, reason);
 }
 
 bool Document::removeMark(MarkRef mark, QString* reason) {
@@ -878,19 +922,20 @@ bool Document::removeMark(MarkRef mark, QString* reason) {
 
 bool Document::removeMark(MarkKind kind, int index, QString* reason) {
   SceneMarks m = marks();
-  auto erase = [&](auto& list, const QString& text) {
+  auto erase = [&](auto& list, const char* source) {
     if (index < 0 || index >= int(list.size())) {
       if (reason) *reason = tr("There is no such mark.");
       return false;
     }
     list.erase(list.begin() + index);
-    return editMarks(m, 0, text.arg(index + 1), reason);
+    return editMarks(
+        m, 0, [source, n = index + 1] { return tr(source).arg(n); }, reason);
   };
   switch (kind) {
-    case MarkKind::Light: return erase(m.lights, tr("Delete light %1"));
-    case MarkKind::Shaft: return erase(m.shafts, tr("Delete shaft %1"));
-    case MarkKind::Surface: return erase(m.surfaces, tr("Delete surface %1"));
-    case MarkKind::Occluder: return erase(m.occluders, tr("Delete occluder %1"));
+    case MarkKind::Light: return erase(m.lights, QT_TR_NOOP("Delete light %1"));
+    case MarkKind::Shaft: return erase(m.shafts, QT_TR_NOOP("Delete shaft %1"));
+    case MarkKind::Surface: return erase(m.surfaces, QT_TR_NOOP("Delete surface %1"));
+    case MarkKind::Occluder: return erase(m.occluders, QT_TR_NOOP("Delete occluder %1"));
   }
   return false;
 }
@@ -971,7 +1016,8 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
   SceneMarks m = marks();
   const size_t i = size_t(mark.index);
   const QString noPoint = tr("There is no such point.");
-  QString text;
+  UndoText text;
+  const int n = mark.index + 1;
   switch (mark.kind) {
     case MarkKind::Light: {
       if (mark.index < 0 || i >= m.lights.size()) return fail(noPoint);
@@ -979,7 +1025,7 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
       if (point < 0 || size_t(point) >= pts.size()) return fail(noPoint);
       pts[size_t(point)] = px;
       if (std::abs(doubleArea(pts)) < 4.0) return fail(tr("The outline would lose its area."));
-      text = tr("Reshape light %1").arg(mark.index + 1);
+      text = [n] { return tr("Reshape light %1").arg(n); };
       break;
     }
     case MarkKind::Shaft: {
@@ -989,7 +1035,7 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
       box = boxWithCorner(*box, point % 4, px);
       if (!validBox(*box))
         return fail(tr("Each box of a shaft must be at least two pixels wide and high."));
-      text = tr("Reshape shaft %1").arg(mark.index + 1);
+      text = [n] { return tr("Reshape shaft %1").arg(n); };
       break;
     }
     case MarkKind::Surface: {
@@ -998,7 +1044,7 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
       if (point < 0 || size_t(point) > s.outlinePx.size() || s.outlinePx.empty()) return fail(noPoint);
       (size_t(point) == s.outlinePx.size() ? s.heightClickPx : s.outlinePx[size_t(point)]) = px;
       if (std::abs(doubleArea(s.outlinePx)) < 4.0) return fail(tr("The outline would lose its area."));
-      text = tr("Reshape surface %1").arg(mark.index + 1);
+      text = [n] { return tr("Reshape surface %1").arg(n); };
       break;
     }
     case MarkKind::Occluder: {
@@ -1006,12 +1052,12 @@ bool Document::moveMarkPoint(MarkRef mark, int point, const Vec2& px, int dragId
       const std::vector<Vec2*> points = occluderPoints(m.occluders[i]);
       if (point < 0 || size_t(point) >= points.size()) return fail(noPoint);
       *points[size_t(point)] = px;
-      text = tr("Reshape occluder %1").arg(mark.index + 1);
+      text = [n] { return tr("Reshape occluder %1").arg(n); };
       break;
     }
   }
   const std::optional<MarkRef> keep = selectedMark_;
-  const bool ok = editMarks(m, dragId, text, reason);
+  const bool ok = editMarks(m, dragId, std::move(text), reason);
   if (ok && keep == mark) setSelectedMark(mark);  // reshaping keeps the mark selected
   return ok;
 }
@@ -1041,10 +1087,10 @@ bool Document::setVanishingLines(int axis, const std::optional<std::array<Vec2, 
   // asks for the camera to be re-estimated around them.
   if (segmentsPx) m.camera.vanishingPointsPx.reset();
   const char* const names[3] = {"x", "y", "z"};
-  return editMarks(m, 0,
-                   segmentsPx ? tr("Draw the %1 vanishing lines").arg(QLatin1String(names[axis]))
-                              : tr("Forget the %1 vanishing lines").arg(QLatin1String(names[axis])),
-                   reason);
+  const QLatin1String name(names[axis]);
+  UndoText text = [name] { return tr("Draw the %1 vanishing lines").arg(name); };
+  if (!segmentsPx) text = [name] { return tr("Forget the %1 vanishing lines").arg(name); };
+  return editMarks(m, 0, std::move(text), reason);
 }
 
 std::vector<std::string> Document::roomSurfaceNames() const { return roomSurfaceNames_; }
@@ -1067,13 +1113,17 @@ bool Document::setRoomMaterial(const std::string& surface,
   SceneMarks m = marks();
   if (material) m.room.materials[surface] = *material;
   else m.room.materials.erase(surface);
-  return editMarks(m, 0, tr("Change the material of %1").arg(QString::fromStdString(surface)), reason);
+  return editMarks(
+      m, 0,
+      [name = QString::fromStdString(surface)] { return tr("Change the material of %1").arg(name); },
+      reason);
 }
 
 bool Document::setCameraResponse(const ResponseKeys& response, QString* reason) {
   SceneMarks m = marks();
   m.camera.response = response;
-  return editMarks(m, 0, tr("Change the camera response"), reason);
+  return editMarks(
+      m, 0, [] { return tr("Change the camera response"); }, reason);
 }
 
 }  // namespace inlay::studio

@@ -23,10 +23,17 @@
 #include <QThread>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
 namespace inlay::studio {
+
+// An undo step's text as a recipe rather than a string: it calls tr() with the command's
+// source text and arguments (numbers, a user's name) each time it is asked, so the history,
+// the Edit menu's Undo/Redo entries and their tooltips follow a change of language
+// (Document::retranslateHistory).
+using UndoText = std::function<QString()>;
 
 class PrepareWorker;
 struct PrepareResult;
@@ -111,6 +118,9 @@ class Document : public QObject {
   QStringList warnings() const { return warnings_; }
   QString filePath() const { return filePath_; }
   QUndoStack* undoStack() { return &undo_; }
+  // Sets every command's text again in the current language (on QEvent::LanguageChange,
+  // before the Undo/Redo actions take their texts from the stack).
+  void retranslateHistory();
   int selectedObject() const { return selected_; }
   void setSelectedObject(int index);  // -1: none; not undoable; deselects the mark
   // The selected mark (a light, shaft, surface or occluder), if any; selecting one deselects
@@ -245,14 +255,14 @@ class Document : public QObject {
   friend class ObjectListCommand;
   friend class MarksCommand;
   // Validates and pushes a change of the marks (see the mark edits).
-  bool editMarks(const SceneMarks& after, int mergeId, const QString& text, QString* reason);
+  bool editMarks(const SceneMarks& after, int mergeId, UndoText text, QString* reason);
   // Replaces the marks and restarts preparation (from an undo command).
   void applyMarks(const SceneMarks& marks);
   // An object edit while nothing is prepared (undo during preparation): the keys are the
   // document's, so preparation restarts with them.
   void changeObjectsUnprepared(std::vector<ObjectKeys> objects, int selected);
   // Validates `keys` for object `index` and pushes the command (see the edit functions).
-  bool editObject(int index, const ObjectKeys& keys, int mergeId, const QString& text, QString* reason);
+  bool editObject(int index, const ObjectKeys& keys, int mergeId, UndoText text, QString* reason);
   // Applies object keys already known to be valid (from an undo command).
   void applyObject(int index, const ObjectKeys& keys);
   // Insert / remove one object everywhere it is mirrored (from an undo command).
@@ -261,6 +271,8 @@ class Document : public QObject {
   void onPrepared(const PrepareResult& result);
   // "chair" -> "chair 2" (or the next number no object has).
   QString uniqueName(const QString& base) const;
+  // objectName(index) as an undo text: a user's or file's name stays, "sphere" follows the language.
+  UndoText objectNameText(int index) const;
   // A base pixel beside object `index` on the same surface level (for a duplicate).
   std::optional<Vec2> spotBeside(int index) const;
   // Applies the object edits made while the scene was being prepared to the new PreparedScene;

@@ -1,4 +1,5 @@
 #include "log_dock.h"
+#include "engine_text.h"
 
 #include <QEvent>
 #include <QFontDatabase>
@@ -34,7 +35,7 @@ void LogDock::onDocumentChanged(const ChangeEvent& event) {
   const PreparedScene* prepared = document_->prepared();
   if (document_->state() == Document::State::Failed) {
     log_->appendPlainText(
-        tr("%1 The scene could not be prepared: %2").arg(now, document_->prepareError()));
+        tr("%1 The scene could not be prepared: %2").arg(now, engineText(document_->prepareError())));
     return;
   }
   if (document_->state() != Document::State::Ready || !prepared)
@@ -44,7 +45,7 @@ void LogDock::onDocumentChanged(const ChangeEvent& event) {
   QStringList lines{tr("%1 Prepared the scene in %2 s:").arg(now).arg(seconds, 0, 'f', 2)};
   // The warnings first: the stages, one short line each, end the block where the view scrolls.
   for (const QString& w : document_->warnings())
-    lines << QStringLiteral("  ") + tr("warning: %1").arg(w);
+    lines << QStringLiteral("  ") + tr("warning: %1").arg(engineText(w));
   for (const StageRecord& s : prepared->stages)
     lines << QStringLiteral("  ") + QString::fromStdString(describeStage(s));
   log_->appendPlainText(lines.join(QLatin1Char('\n')));

@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "engine_text.h"
 
 #include "autosave.h"
 #include "docks.h"
@@ -513,6 +514,7 @@ void MainWindow::retranslate() {
   systemLanguageAct_->setText(tr("System Default"));
   helpMenu_->setTitle(tr("&Help"));
   mainToolBar_->setWindowTitle(tr("Main"));
+  document_->retranslateHistory();  // the commands' texts first: the actions are built from them
   updateUndoActions();
   updateTitle();
   fitStatusFields();
@@ -580,13 +582,14 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
     switch (document_->state()) {
       case Document::State::Failed:
         // After an open: a dialog. After an edit of the marks: the viewport's banner says it.
-        if (reportFailure_) showError(tr("The scene could not be prepared"), document_->prepareError());
-        else statusBar()->showMessage(document_->prepareError(), 10000);
+        if (reportFailure_)
+          showError(tr("The scene could not be prepared"), engineText(document_->prepareError()));
+        else statusBar()->showMessage(engineText(document_->prepareError()), 10000);
         break;
       case Document::State::Ready:
         if (!document_->warnings().isEmpty()) {
           // The first note in the bar, all of them in its tooltip.
-          const QStringList& w = document_->warnings();
+          const QStringList w = engineTexts(document_->warnings());
           statusBar()->showMessage(
               w.size() == 1 ? w.first()
                             : tr("%1 (and %n more)", nullptr, int(w.size() - 1)).arg(w.first()),
@@ -594,7 +597,7 @@ void MainWindow::onDocumentChanged(const ChangeEvent& event) {
           statusBar()->setToolTip(w.join(QLatin1Char('\n')));
         }
         break;
-      default: statusBar()->showMessage(document_->prepareError(), 5000); break;
+      default: statusBar()->showMessage(engineText(document_->prepareError()), 5000); break;
     }
   }
   const bool ready = document_->isReady();
@@ -717,7 +720,7 @@ bool MainWindow::openPath(const QString& path) {
   if (info.suffix().compare(QLatin1String("json"), Qt::CaseInsensitive) == 0) {
     QString error;
     if (!document_->openSceneFile(info.absoluteFilePath(), &error)) {
-      showError(tr("Cannot open the scene"), error);
+      showError(tr("Cannot open the scene"), engineText(error));
       return false;
     }
   } else {
@@ -1241,7 +1244,7 @@ bool MainWindow::placeModel(const ModelImport& model, std::optional<Vec2> dropPx
   keys.material.preset = hasMaterials ? "asset" : "diffuse";
   QString reason;
   if (!document_->insertObject(keys, model.mesh, &reason)) {
-    refuseModel(tr("%1: %2").arg(file, reason));
+    refuseModel(tr("%1: %2").arg(file, engineText(reason)));
     return false;
   }
   QString message =

@@ -61,6 +61,7 @@ class MainWindow : public QMainWindow {
   QMenu* toolsMenu() const { return toolsMenu_; }
   QMenu* editMenu() const { return editMenu_; }
   QAction* undoAction() const { return undoAct_; }
+  QAction* redoAction() const { return redoAct_; }
   // The action that picks a tool of the viewport (Viewport::Tool as int).
   QAction* toolAction(int tool) const;
   QAction* acceptBoxAction() const { return acceptBoxAct_; }

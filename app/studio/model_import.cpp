@@ -1,4 +1,5 @@
 #include "model_import.h"
+#include "engine_text.h"
 
 #include <QDir>
 #include <QFile>
@@ -167,7 +168,7 @@ ModelLoadResult loadModelForInsert(const QString& path, double defaultHeightM,
   if (!mesh.ok()) {
     const Error& e = mesh.error();
     out.error = ModelImportText::tr("%1: %2").arg(
-        shown, QString::fromStdString(e.key.empty() ? e.reason : e.key + ": " + e.reason));
+        shown, engineText(QString::fromStdString(e.key.empty() ? e.reason : e.key + ": " + e.reason)));
     if (e.reason.find("exceed") != std::string::npos || e.reason.find("more than") != std::string::npos)
       out.error += QLatin1Char(' ') +
                    ModelImportText::tr("(Inlay inserts models of up to %1 triangles.)")

@@ -1,4 +1,5 @@
 #include "viewport.h"
+#include "engine_text.h"
 
 #include "document.h"
 #include "model_import.h"
@@ -746,7 +747,7 @@ void Viewport::paintStatus(QPainter& p) {
   switch (document_->state()) {
     case Document::State::Preparing: banner = tr("Preparing the scene…"); break;
     case Document::State::Failed:
-      banner = tr("The scene could not be prepared: %1").arg(document_->prepareError());
+      banner = tr("The scene could not be prepared: %1").arg(engineText(document_->prepareError()));
       bannerColour = QColor(255, 140, 140);
       break;
     case Document::State::Empty:

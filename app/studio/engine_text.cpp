@@ -1,0 +1,171 @@
+#include "engine_text.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+#include <optional>
+#include <vector>
+
+namespace inlay::studio {
+namespace {
+
+constexpr const char* kContext = "inlay::studio::EngineText";
+
+// The engine's sentences a studio user meets, exactly as the engine writes them, with %1, %2,
+// ... (in order) where it puts a number, a key, a name or a nested reason. Keep in step with
+// the engine's strings (modeling/src/io/mesh.cpp, app/engine/src/pipeline.cpp,
+// lighting/src/estimate.cpp and refine.cpp): a sentence changed there stays English here.
+const char* const kSentences[] = {
+    // Model files refused by the readers (the studio adds the file name).
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "empty file"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "cannot open for reading"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "read failed"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "no triangles"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "import failed: %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "non-finite coordinate '%1'"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "non-finite coordinate"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "malformed number '%1'"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "malformed face index '%1'"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "face corner without a vertex index"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "face index 0 (OBJ indices start at 1)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "a face needs at least 3 vertices"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "more than %1 triangles"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "more than %1 vertices"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 vertices exceed the limit of %2"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "'%1' needs %2 numbers"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "not a PLY file (missing 'ply' magic)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "not a GLB file"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "invalid glTF JSON"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "buffer file not found: %1"),
+    // The preparation's warnings.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "none given; the objects are lit by the room's gathered light only"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "ignored, the photo is already linear (EXR/HDR)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give "
+                      "layout.back_wall_px"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the photo shows no clear room structure; the camera is a fallback (prior "
+                      "focal length, upright): give camera.vanishing_points_px for a reliable "
+                      "result"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the photo shows no clear room structure; the camera is a fallback (default "
+                      "focal length, upright): give camera.vanishing_points_px for a reliable "
+                      "result"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "strength kept as estimated: %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the window the sun comes through is out of view; its sky is a light of %1 x "
+                      "%2 m on the %3 (where the beam came from), its intensity fitted (give "
+                      "source_box_px, or outline the window as a light, to choose)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "%1's matte shows the floor under the top at %2 of %3 points, so it is a "
+                      "slab %4 m thick (give thickness_m to choose; 0: solid)"),
+    // The lighting's notes.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "gathered light still changed by %1% in the last of %2 passes (the walls the "
+                      "camera does not see are uncertain)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "lights %1 are out of view: they share one radiance (the photo shows only "
+                      "their sum)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "outside the room; moved %1 m to fit inside it"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "larger than the room in every direction; its position is kept"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "%1 lights none of the room the photo shows: its intensity stays at its start"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the photo's direct light is black: the lights are fitted to darkness"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement failed (%1): the start is kept"),
+};
+
+// Heads of "HEAD: REST" that are words rather than keys: translated, then the rest.
+const char* const kHeads[] = {
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "line %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "header line %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "vertex %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "face %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "sun %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lights"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "estimate"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting (refit)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "layout"),
+};
+
+struct Pattern {
+  const char* source;
+  QRegularExpression re;
+};
+
+// "more than %1 triangles" -> ^more than (.+?) triangles$
+QRegularExpression patternOf(const QString& source) {
+  static const QRegularExpression placeholder(QStringLiteral("%\\d"));
+  QString re = QStringLiteral("^");
+  qsizetype at = 0;
+  for (auto it = placeholder.globalMatch(source); it.hasNext();) {
+    const QRegularExpressionMatch m = it.next();
+    re += QRegularExpression::escape(source.mid(at, m.capturedStart() - at)) + QStringLiteral("(.+?)");
+    at = m.capturedEnd();
+  }
+  re += QRegularExpression::escape(source.mid(at)) + QStringLiteral("$");
+  return QRegularExpression(re, QRegularExpression::DotMatchesEverythingOption);
+}
+
+template <size_t N>
+std::vector<Pattern> patternsOf(const char* const (&sources)[N]) {
+  std::vector<Pattern> out;
+  for (const char* s : sources) out.push_back({s, patternOf(QString::fromUtf8(s))});
+  return out;
+}
+
+// `text` translated when one of `patterns` matches it whole; its parts translated in turn.
+std::optional<QString> translateWhole(const QString& text, const std::vector<Pattern>& patterns) {
+  for (const Pattern& p : patterns) {
+    const QRegularExpressionMatch m = p.re.match(text);
+    if (!m.hasMatch()) continue;
+    QString out = QCoreApplication::translate(kContext, p.source);
+    for (int i = 1; i <= m.lastCapturedIndex(); ++i) out = out.arg(engineText(m.captured(i)));
+    return out;
+  }
+  return std::nullopt;
+}
+
+// A head the engine puts before ": ": a file or a scene key ("objects[1].mesh", no spaces).
+bool isKeyOrFile(const QString& head) {
+  return !head.isEmpty() && (!head.contains(QLatin1Char(' ')) || head.contains(QLatin1Char('/')));
+}
+
+}  // namespace
+
+QString engineText(const QString& english) {
+  static const std::vector<Pattern> sentences = patternsOf(kSentences);
+  static const std::vector<Pattern> heads = patternsOf(kHeads);
+  if (std::optional<QString> whole = translateWhole(english, sentences)) return *whole;
+  const qsizetype colon = english.indexOf(QStringLiteral(": "));
+  if (colon <= 0) return english;
+  const QString head = english.left(colon);
+  const QString rest = english.mid(colon + 2);
+  std::optional<QString> shownHead = translateWhole(head, heads);
+  if (!shownHead && !isKeyOrFile(head)) return english;
+  const QString shownRest = engineText(rest);
+  if (shownRest == rest) return english;  // never a translated head before an English sentence
+  // "%1: %2": French puts a space before the colon.
+  return QCoreApplication::translate("inlay::studio::EngineText", "%1: %2")
+      .arg(shownHead.value_or(head), shownRest);
+}
+
+QStringList engineTexts(const QStringList& english) {
+  QStringList out;
+  for (const QString& e : english) out << engineText(e);
+  return out;
+}
+
+QStringList engineTemplates() {
+  QStringList out;
+  for (const char* s : kSentences) out << QString::fromUtf8(s);
+  for (const char* s : kHeads) out << QString::fromUtf8(s);
+  out << QStringLiteral("%1: %2");
+  return out;
+}
+
+}  // namespace inlay::studio
