@@ -106,6 +106,8 @@ struct LogResidual {
   std::vector<BounceTerm> bounce;
 };
 
+}  // namespace
+
 // Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls and
 // the ceiling (painted, usually alike) the weighted mean of the seen walls, anything else the
 // mean of every seen surface; mid grey when nothing is seen.
@@ -127,6 +129,8 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
   }
   return out;
 }
+
+namespace {
 
 // The radiance the fitted model gives the clipped sunlit pixels: the surface's albedo times
 // (lights + the gathered light [+ suns]). With the suns, at least the photo's clipped value;

@@ -154,6 +154,13 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
                                      const std::vector<Vec2>& outlinePx,
                                      const std::string& keyForMessages);
 
+// The albedo of the surfaces the camera does not see (`weight[s]` = 0, e.g. their seen pixel
+// count): walls and the ceiling take the weighted mean of the walls it sees (the room's mean
+// when it sees none), any other surface the room's mean (0.5 grey when nothing is seen); a seen
+// surface keeps `albedo[s]`. One entry per surface of `geometry`.
+std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
+                                 const std::vector<double>& weight);
+
 // The gather's stride on a width x height photo: `stride` (LightingOptions::gatherStride, at
 // least 1), or the smallest larger one whose grid, ceil(width / s) x ceil(height / s), has at
 // most `maxPoints` points (LightingOptions::gatherMaxPoints; <= 0: no cap).
