@@ -529,7 +529,7 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
       if (n[s] > 0) sum[s] /= n[s];
     // What the camera does not see takes the product's rule, applied to the new albedo (not
     // the estimate's guess: an all-true oracle must not keep the estimated unseen ceiling).
-    rs.roomAlbedo.surfaceMean = albedoOfUnseen(rs.room, sum, n);
+    rs.roomAlbedo.surfaceMean = albedoOfUnseen(rs.room, sum, n, kUnseenCeilingAlbedo);
   }
   if (!a.surfaceAlbedo.empty()) return applySurfaceAlbedo(rs, a.surfaceAlbedo);
   return {};
