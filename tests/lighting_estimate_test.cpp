@@ -742,6 +742,37 @@ TEST(Lighting, AnOutlineOffItsWallSaysWhichPointAndWhatToDrag) {
 // search would compare curves by: the photo's true radiance leaves less of it than the same
 // photo through a power curve either way (the lights' fall-off is fixed by the geometry, so a
 // bent photo cannot be matched by other albedos and strengths), and it is scale-free.
+// What the render gives the surfaces the camera does not see. Box order: floor, ceiling,
+// wall_left, wall_right, wall_back, wall_rear. An unseen ceiling over dark (tiled) walls is a
+// white ceiling, not the walls' grey (which made an object lit from above 6-9 % too dark); over
+// walls brighter than that it is the walls' mean; unseen walls stay the seen walls' mean.
+TEST(Lighting, AnUnseenCeilingIsAWhiteCeilingOverDarkWalls) {
+  const SceneGeometry geometry = emptyRoom().geometry;
+  ASSERT_EQ(geometry.surfaces.size(), 6u);
+  ASSERT_EQ(geometry.surfaces[1].kind, SurfaceKind::Ceiling);
+  const std::vector<double> seen = {100, 0, 0, 50, 150, 0};  // floor, right and back walls
+  std::vector<Vec3> albedo(6, Vec3::Zero());
+  albedo[0] = Vec3(0.4, 0.3, 0.2), albedo[3] = Vec3(0.3, 0.3, 0.35), albedo[4] = Vec3(0.34, 0.34, 0.39);
+  const std::vector<Vec3> dark = albedoOfUnseen(geometry, albedo, seen, kUnseenCeilingAlbedo);
+  const Vec3 wallMean = (50 * albedo[3] + 150 * albedo[4]) / 200;
+  EXPECT_TRUE(dark[1].isApprox(Vec3::Constant(kUnseenCeilingAlbedo), 1e-12)) << dark[1].transpose();
+  EXPECT_TRUE(dark[2].isApprox(wallMean, 1e-12)) << dark[2].transpose();
+  EXPECT_TRUE(dark[5].isApprox(wallMean, 1e-12)) << dark[5].transpose();
+  EXPECT_TRUE(dark[0].isApprox(albedo[0], 1e-12));
+
+  albedo[3] = Vec3(0.85, 0.82, 0.8), albedo[4] = Vec3(0.8, 0.8, 0.78);  // bright walls
+  const std::vector<Vec3> bright = albedoOfUnseen(geometry, albedo, seen, kUnseenCeilingAlbedo);
+  EXPECT_TRUE(bright[1].isApprox((50 * albedo[3] + 150 * albedo[4]) / 200, 1e-12))
+      << bright[1].transpose();
+
+  const std::vector<Vec3> seenCeiling =
+      albedoOfUnseen(geometry, albedo, {1, 1, 1, 1, 1, 1}, kUnseenCeilingAlbedo);
+  EXPECT_TRUE(seenCeiling[1].isApprox(albedo[1], 1e-12));  // a seen ceiling keeps its own (black)
+  // The light fit's own model (no floor): the walls' mean, as before.
+  albedo[3] = Vec3(0.3, 0.3, 0.35), albedo[4] = Vec3(0.34, 0.34, 0.39);
+  EXPECT_TRUE(albedoOfUnseen(geometry, albedo, seen)[1].isApprox(wallMean, 1e-12));
+}
+
 TEST(Lighting, FitResidualIsLowestForTheTrueRadiance) {
   const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 32);
   LightingOptions opt;

@@ -3,6 +3,7 @@
 // 1 internal failure or interruption.
 #include "batch.h"
 #include "inlay/engine/pipeline.h"
+#include "inlay/lighting/estimate.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
@@ -90,7 +91,10 @@ Render options:
   --replace-lights FILE   diagnostics: render with the area lights of FILE (its "refined" list,
                           or "lights"; the format --lights-json writes) instead of the estimate's
   --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
-                          photo's size) instead of the estimate's
+                          photo's size) instead of the estimate's; the surfaces the camera
+                          does not see take its walls' mean (the product's rule)
+  --surface-albedo FILE   diagnostics: {"ceiling": [r, g, b], ...}: the albedo of each named
+                          room surface where the camera does not see it
   --clamp-indirect R      diagnostics: clamp each indirect sample's radiance to R (the photo's
                           linear units; Cycles' "clamp indirect" times the exposure); default 0:
                           off (unbiased)
@@ -138,7 +142,8 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo, cue, report;  // cue: empty = the default
+  std::string lightsJson, replaceLights, replaceAlbedo, surfaceAlbedo, cue,
+      report;  // cue: empty = the default
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
@@ -184,9 +189,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--direct" || s == "--gathered" || s == "--method" || s == "--scene" || s == "--spp" ||
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
-        s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" || s == "--report" ||
-        s == "--min-srgb-residual" || s == "--noise-quantile" || s == "--working-mp" ||
-        s == "--clamp-indirect") {
+        s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
+        s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
+        s == "--working-mp" || s == "--clamp-indirect") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -201,6 +206,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--report") a.report = *v;
       else if (s == "--replace-lights") a.replaceLights = *v;
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
+      else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
       else if (s == "--working-mp") {
@@ -452,6 +458,28 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
             {"notes", r.notes}}}};
 }
 
+// --surface-albedo FILE.json (diagnostics): {"ceiling": [r, g, b], ...}, the albedo the render
+// gives each named room surface where the camera does not see it.
+Status applySurfaceAlbedo(RenderScene& rs, const std::string& path) {
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object())
+    return Error{path, "--surface-albedo", "expected a JSON object {\"ceiling\": [r, g, b], ...}"};
+  for (const auto& [name, v] : j.items()) {
+    const auto it = std::find_if(rs.room.surfaces.begin(), rs.room.surfaces.end(),
+                                 [&](const Surface& sf) { return sf.name == name; });
+    if (it == rs.room.surfaces.end())
+      return Error{path, name, "no room surface of this name (floor, ceiling, wall_left, ...)"};
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      return Error{path, name, "expected three numbers in [0, 1]"};
+    const Vec3 rgb(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+    if (!(rgb.minCoeff() >= 0 && rgb.maxCoeff() <= 1))
+      return Error{path, name, "expected three numbers in [0, 1]"};
+    rs.roomAlbedo.surfaceMean[size_t(it - rs.room.surfaces.begin())] = rgb;
+  }
+  return {};
+}
+
 // --replace-lights / --replace-albedo (diagnostics: which of lights and albedo limits the error).
 Status applyReplacements(PreparedScene& ps, const Args& a) {
   RenderScene& rs = ps.renderScene;
@@ -498,8 +526,12 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
       n[size_t(s)] += 1;
     }
     for (size_t s = 0; s < sum.size(); ++s)
-      if (n[s] > 0) rs.roomAlbedo.surfaceMean[s] = sum[s] / n[s];
+      if (n[s] > 0) sum[s] /= n[s];
+    // What the camera does not see takes the product's rule, applied to the new albedo (not
+    // the estimate's guess: an all-true oracle must not keep the estimated unseen ceiling).
+    rs.roomAlbedo.surfaceMean = albedoOfUnseen(rs.room, sum, n, kUnseenCeilingAlbedo);
   }
+  if (!a.surfaceAlbedo.empty()) return applySurfaceAlbedo(rs, a.surfaceAlbedo);
   return {};
 }
 

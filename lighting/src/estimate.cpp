@@ -106,11 +106,14 @@ struct LogResidual {
   std::vector<BounceTerm> bounce;
 };
 
-// Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls and
-// the ceiling (painted, usually alike) the weighted mean of the seen walls, anything else the
-// mean of every seen surface; mid grey when nothing is seen.
+}  // namespace
+
+// Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls the
+// weighted mean of the seen walls, the ceiling that or `ceilingAtLeast` grey when that is
+// darker, anything else the mean of every seen surface; mid grey when nothing
+// is seen.
 std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
-                                 const std::vector<double>& weight) {
+                                 const std::vector<double>& weight, double ceilingAtLeast) {
   Vec3 wallSum = Vec3::Zero(), roomSum = Vec3::Zero();
   double wallN = 0, roomN = 0;
   for (size_t s = 0; s < albedo.size(); ++s) {
@@ -120,13 +123,20 @@ std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vecto
   }
   const Vec3 roomMean = roomN > 0 ? Vec3(roomSum / roomN) : Vec3(0.5, 0.5, 0.5);
   const Vec3 wallMean = wallN > 0 ? Vec3(wallSum / wallN) : roomMean;
+  const Vec3 ceiling = luminance(wallMean) >= ceilingAtLeast ? wallMean
+                                                             : Vec3(Vec3::Constant(ceilingAtLeast));
   std::vector<Vec3> out(albedo.size());
   for (size_t s = 0; s < albedo.size(); ++s) {
     const SurfaceKind k = geometry.surfaces[s].kind;
-    out[s] = weight[s] > 0 ? albedo[s] : (isWall(k) || k == SurfaceKind::Ceiling ? wallMean : roomMean);
+    out[s] = weight[s] > 0               ? albedo[s]
+             : k == SurfaceKind::Ceiling ? ceiling
+             : isWall(k)                 ? wallMean
+                                         : roomMean;
   }
   return out;
 }
+
+namespace {
 
 // The radiance the fitted model gives the clipped sunlit pixels: the surface's albedo times
 // (lights + the gathered light [+ suns]). With the suns, at least the photo's clipped value;
@@ -1340,7 +1350,7 @@ void Decomposer::surfaceMeanAlbedo() {
   std::vector<Vec3> meanSeen(S, Vec3::Zero());
   for (size_t s = 0; s < S; ++s)
     if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
-  f.out.surfaceMeanAlbedo = albedoOfUnseen(f.geometry, meanSeen, albedoCount);
+  f.out.surfaceMeanAlbedo = albedoOfUnseen(f.geometry, meanSeen, albedoCount, kUnseenCeilingAlbedo);
 }
 
 }  // namespace

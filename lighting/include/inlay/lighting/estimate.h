@@ -154,6 +154,25 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
                                      const std::vector<Vec2>& outlinePx,
                                      const std::string& keyForMessages);
 
+// The least albedo an unseen ceiling is given (neutral grey; its luminance): ceilings are painted
+// white far more often than walls are, so the walls' mean is a poor guess for them in a room
+// with dark or tiled walls. 0.77 is the median of half A's seven ceilings (scenes-train t01..t13:
+// 0.71-0.86 against walls of 0.34-0.81); an object lit from above by a ceiling the photo does
+// not show came out 6-9 % too dark in linear light with the walls' mean (docs/generalization.md,
+// "The ~6 % darker diffuse object").
+inline constexpr double kUnseenCeilingAlbedo = 0.77;
+
+// The albedo of the surfaces the camera does not see (`weight[s]` = 0, e.g. their seen pixel
+// count): walls take the weighted mean of the walls it sees (the room's mean when it sees none),
+// the ceiling the same or, when that is darker (luminance), `ceilingAtLeast` grey; any other
+// surface the room's mean (0.5 grey when nothing is seen); a seen surface keeps `albedo[s]`.
+// One entry per surface of `geometry`. The render's room takes kUnseenCeilingAlbedo
+// (LightingEstimate::surfaceMeanAlbedo); the light fit's own model of the unseen room passes 0
+// (its per-surface albedos are its passes' intermediate scale: an absolute floor there moved
+// the fitted lights, e.g. a sky through an unseen window 2.0 times its radiance instead of 1.4).
+std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
+                                 const std::vector<double>& weight, double ceilingAtLeast = 0);
+
 // The gather's stride on a width x height photo: `stride` (LightingOptions::gatherStride, at
 // least 1), or the smallest larger one whose grid, ceil(width / s) x ceil(height / s), has at
 // most `maxPoints` points (LightingOptions::gatherMaxPoints; <= 0: no cap).
