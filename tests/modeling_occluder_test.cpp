@@ -4,6 +4,7 @@
 #include "inlay/modeling/occluder.h"
 #include "test_support.h"
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -153,26 +154,29 @@ TEST(Occluder, CardStandsAtTheFloorDepthOfTheLowestPoint) {
   EXPECT_NE(bad.error().message().find("horizon"), std::string::npos);
 }
 
-// d6_behind_table: the table's matte from the harness's scribbles against labels.png == 7.
-TEST(Occluder, TableMatteOfTheOcclusionScene) {
-  INLAY_REQUIRE_SHARED();
+// d6_behind_table's photo, its table's label (labels.png == 7) and the harness's scribbles:
+// three strokes across the table (at 25, 50 and 80 % of its height, crossing the gaps between
+// the legs), one loop 20 px around it.
+struct D6Table {
+  ImageF photo, labels;
+  std::vector<std::vector<Vec2>> fg, bg;
+  int y1 = 0;  // the table's lowest row
+  bool isTable(int x, int y) const { return std::lround(linearToSrgb(labels.at(x, y, 0)) * 255) == 7; }
+  bool load();
+};
+
+bool D6Table::load() {
   const std::string dir = test::sharedDir() + "/scenes/d6_behind_table/";
   const auto photoFile = loadImage(dir + "photo.png");
-  ASSERT_TRUE(photoFile.ok()) << photoFile.error().message();
-  const ImageF* photo = &photoFile->linearRgb;
-
-  const auto labels = loadImage(dir + "labels.png");
-  ASSERT_TRUE(labels.ok());
-  const ImageF& L = labels->linearRgb;
-  // Scribbles as the harness makes them: three strokes across the table (at 25, 50 and 80% of
-  // its height, crossing the gaps between the legs), one loop 20 px around it.
-  int x0 = L.width, x1 = 0, y0 = L.height, y1 = 0;
-  auto isTable = [&](int x, int y) { return std::lround(linearToSrgb(L.at(x, y, 0)) * 255) == 7; };
+  const auto labelFile = loadImage(dir + "labels.png");
+  if (!photoFile.ok() || !labelFile.ok()) return false;
+  photo = photoFile->linearRgb, labels = labelFile->linearRgb;
+  const ImageF& L = labels;
+  int x0 = L.width, x1 = 0, y0 = L.height;
   for (int y = 0; y < L.height; ++y)
     for (int x = 0; x < L.width; ++x)
       if (isTable(x, y))
         x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-  ASSERT_LT(x0, x1);
   // The harness strokes rows of the table mask eroded by a 9 x 9 square, end to end.
   auto inEroded = [&](int x, int y) {
     for (int dy = -4; dy <= 4; ++dy)
@@ -182,12 +186,12 @@ TEST(Occluder, TableMatteOfTheOcclusionScene) {
       }
     return true;
   };
-  int e0 = L.height, e1 = -1;
+  int e0 = L.height, e1 = -1, ex0 = L.width, ex1 = -1;
   for (int y = y0; y <= y1; ++y)
     for (int x = x0; x <= x1; ++x)
-      if (inEroded(x, y)) e0 = std::min(e0, y), e1 = std::max(e1, y);
-  ASSERT_LE(e0, e1);
-  std::vector<std::vector<Vec2>> fg;
+      if (inEroded(x, y))
+        e0 = std::min(e0, y), e1 = std::max(e1, y), ex0 = std::min(ex0, x), ex1 = std::max(ex1, x);
+  if (e1 < e0) return false;
   for (double q : {0.25, 0.5, 0.8}) {
     const int y = e0 + int(q * (e1 - e0));
     int a = -1, b = -1;
@@ -195,32 +199,76 @@ TEST(Occluder, TableMatteOfTheOcclusionScene) {
       if (inEroded(x, y)) b = x, a = a < 0 ? x : a;
     if (a >= 0) fg.push_back({{a + 0.5, y + 0.5}, {b + 0.5, y + 0.5}});
   }
-  ASSERT_FALSE(fg.empty());
   // The loop: 20 px around the eroded mask's box, clipped to the photo.
-  int ex0 = L.width, ex1 = -1;
-  for (int y = e0; y <= e1; ++y)
-    for (int x = x0; x <= x1; ++x)
-      if (inEroded(x, y)) ex0 = std::min(ex0, x), ex1 = std::max(ex1, x);
   const double bx0 = std::max(0, ex0 - 20), bx1 = std::min(L.width - 1, ex1 + 20);
   const double by0 = std::max(0, e0 - 20), by1 = std::min(L.height - 1, e1 + 20);
-  const std::vector<std::vector<Vec2>> bg = {
-      {{bx0, by0}, {bx1, by0}, {bx1, by1}, {bx0, by1}, {bx0, by0}}};
-  const auto m = matteFromScribbles(*photo, fg, bg, "occluders[0]");
-  ASSERT_TRUE(m.ok()) << m.error().message();
+  bg = {{{bx0, by0}, {bx1, by0}, {bx1, by1}, {bx0, by1}, {bx0, by0}}};
+  return !fg.empty();
+}
+
+// The matte's overlap with the table (label 7) at k times the label's size: {of the union, of
+// the table}.
+std::array<double, 2> tableOverlap(const D6Table& d, const ImageF& alpha, int k) {
   double inter = 0, uni = 0, table = 0;
-  for (int y = 0; y < L.height; ++y)
-    for (int x = 0; x < L.width; ++x) {
-      const bool a = m->alphaPx.at(x, y) >= 0.5f, t = isTable(x, y);
-      inter += a && t;
-      uni += a || t;
-      table += t;
+  for (int y = 0; y < alpha.height; ++y)
+    for (int x = 0; x < alpha.width; ++x) {
+      const bool a = alpha.at(x, y) >= 0.5f, t = d.isTable(x / k, y / k);
+      inter += a && t, uni += a || t, table += t;
     }
+  return {inter / uni, inter / table};
+}
+
+// d6_behind_table: the table's matte from the harness's scribbles against labels.png == 7.
+TEST(Occluder, TableMatteOfTheOcclusionScene) {
+  INLAY_REQUIRE_SHARED();
+  D6Table d;
+  ASSERT_TRUE(d.load());
+  const auto m = matteFromScribbles(d.photo, d.fg, d.bg, "occluders[0]");
+  ASSERT_TRUE(m.ok()) << m.error().message();
+  const auto [iou, recall] = tableOverlap(d, m->alphaPx, 1);
   // The strokes cross the floor between the legs: that floor must stay out of the matte.
-  EXPECT_GT(inter / table, 0.95);
-  EXPECT_GT(inter / uni, 0.9);
+  EXPECT_GT(recall, 0.95);
+  EXPECT_GT(iou, 0.9);
   // The legs leave the photo at its bottom row, where the loop runs (sure background): the
   // lowest point stays a few pixels above.
-  EXPECT_NEAR(m->lowestPx.y(), y1 + 1.0, 12.0);
+  EXPECT_NEAR(m->lowestPx.y(), d.y1 + 1.0, 12.0);
+}
+
+// Issue #18: the same photo 4 times larger (2048 x 1536, a phone photo's scale) and its
+// scribbles scaled give the same matte. Matted at its own size, the pixel sizes (stroke radius,
+// trimap band) were a quarter of the table's scale: the floor between the legs stayed in the
+// matte (IoU 0.65 against 0.95) and the table's 4 cm top became a 22 cm slab (object RMSE 0.108
+// against 0.029). Now a photo larger than MatteOptions::referenceLongSidePx is matted at that
+// scale on its scribbles' region.
+TEST(Occluder, TableMatteDoesNotDependOnThePhotosSize) {
+  INLAY_REQUIRE_SHARED();
+  D6Table d;
+  ASSERT_TRUE(d.load());
+  const auto small = matteFromScribbles(d.photo, d.fg, d.bg, "occluders[0]");
+  ASSERT_TRUE(small.ok()) << small.error().message();
+  constexpr int k = 4;
+  auto scaled = [](std::vector<std::vector<Vec2>> strokes) {  // as the benchmarks scale them
+    for (auto& stroke : strokes)
+      for (Vec2& q : stroke) q *= double(k);
+    return strokes;
+  };
+  const ImageF bigPhoto = resizeImage(d.photo, k * d.photo.width, k * d.photo.height);
+  const auto big = matteFromScribbles(bigPhoto, scaled(d.fg), scaled(d.bg), "occluders[0]");
+  ASSERT_TRUE(big.ok()) << big.error().message();
+  const auto [iou, recall] = tableOverlap(d, big->alphaPx, k);
+  EXPECT_GT(recall, 0.95);
+  EXPECT_GT(iou, 0.9);
+  // Brought back to the photo's own pixels, the two mattes put few pixels on different sides.
+  const ImageF back = resizeImage(big->alphaPx, d.photo.width, d.photo.height);
+  int differ = 0, covered = 0;
+  for (int y = 0; y < back.height; ++y)
+    for (int x = 0; x < back.width; ++x) {
+      differ += (back.at(x, y) >= 0.5f) != (small->alphaPx.at(x, y) >= 0.5f);
+      covered += small->alphaPx.at(x, y) >= 0.5f;
+    }
+  EXPECT_LT(differ, 0.05 * covered);
+  EXPECT_NEAR(big->lowestPx.y() / k, d.y1 + 1.0, 12.0);  // as at its own size (legs leave the photo)
+  EXPECT_NEAR(big->boxPx[1] / double(k), small->boxPx[1], 3.0);  // the top's upper edge
 }
 
 }  // namespace

@@ -564,59 +564,6 @@ std::string countOf(size_t n, const std::string& thing) {
   return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
 }
 
-// An occluder's matte needs the photo's own detail (a table top a few pixels thick decides
-// whether the table is a slab; a working copy's matte upsampled made d6's 4 cm top 55 cm thick):
-// on a reduced photo it is found on the region of its scribbles (their box with a margin) cut
-// from the photo, at the photo's size up to kMatteMaxPixels (reduced beyond, its alpha brought
-// back by joint bilateral upsampling), and pasted into a matte of the photo's size.
-constexpr double kMatteMaxPixels = 1e6;
-
-Expected<OccluderMatte> matteOnRegion(const Preparation& p, const OccluderKeys& o,
-                                      const std::string& key) {
-  const ImageF& photo = p.ps.photo.linearRgb;
-  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-  for (const auto* strokes : {&o.foregroundScribblesPx, &o.backgroundScribblesPx})
-    for (const auto& stroke : *strokes)
-      for (const Vec2& q : stroke)
-        if (q.allFinite())
-          x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
-          y1 = std::max(y1, q.y());
-  if (!(x1 >= x0 && y1 >= y0))  // no usable stroke: the matting says why
-    return matteFromScribbles(p.workPhoto(), o.foregroundScribblesPx, o.backgroundScribblesPx, key);
-  const double margin = std::max(16.0, 0.1 * std::max(x1 - x0, y1 - y0));
-  const int ix0 = std::clamp(int(std::floor(x0 - margin)), 0, photo.width - 1);
-  const int iy0 = std::clamp(int(std::floor(y0 - margin)), 0, photo.height - 1);
-  const int cw = std::clamp(int(std::ceil(x1 + margin)), ix0 + 1, photo.width) - ix0;
-  const int ch = std::clamp(int(std::ceil(y1 + margin)), iy0 + 1, photo.height) - iy0;
-  ImageF crop(cw, ch, photo.channels);
-  for (int y = 0; y < ch; ++y)
-    std::copy_n(photo.pixel(ix0, iy0 + y), size_t(cw) * photo.channels, crop.pixel(0, y));
-  const auto [rw, rh] = workingSizeFor(cw, ch, kMatteMaxPixels);
-  const ImageF region = rw == cw && rh == ch ? crop : resizeImage(crop, rw, rh);
-  const double sx = double(rw) / cw, sy = double(rh) / ch;
-  const auto inRegion = [&](std::vector<std::vector<Vec2>> strokes) {
-    for (auto& stroke : strokes)
-      for (Vec2& q : stroke) q = Vec2((q.x() - ix0) * sx, (q.y() - iy0) * sy);
-    return strokes;
-  };
-  auto m = matteFromScribbles(region, inRegion(o.foregroundScribblesPx),
-                              inRegion(o.backgroundScribblesPx), key);
-  if (!m) return m;
-  ImageF alpha = region.width == cw ? m->alphaPx : jointBilateralUpsample(m->alphaPx, region, crop);
-  OccluderMatte out = *m;
-  out.alphaPx = ImageF(photo.width, photo.height, 1, 0.f);
-  for (int y = 0; y < ch; ++y)
-    for (int x = 0; x < cw; ++x) {
-      const float a = alpha.at(x, y);
-      out.alphaPx.at(ix0 + x, iy0 + y) = a > 0 ? std::min(a, 1.f) : 0.f;  // NaN to 0
-    }
-  out.boxPx = {ix0 + int(std::floor(m->boxPx[0] / sx)), iy0 + int(std::floor(m->boxPx[1] / sy)),
-               std::min(photo.width, ix0 + int(std::ceil(m->boxPx[2] / sx))),
-               std::min(photo.height, iy0 + int(std::ceil(m->boxPx[3] / sy)))};
-  out.lowestPx = Vec2(ix0 + m->lowestPx.x() / sx, iy0 + m->lowestPx.y() / sy);
-  return out;
-}
-
 // --- Why a scene does not need a stage (empty: it does) ---
 
 std::string noOccluders(const Preparation& p) { return p.doc.occluders.empty() ? "none marked" : ""; }
@@ -749,9 +696,10 @@ Status occluderMattes(Preparation& p, std::string& detail) {
   for (size_t i = 0; i < p.doc.occluders.size(); ++i) {
     const std::string key = "occluders[" + std::to_string(i) + "]";
     const OccluderKeys& o = p.doc.occluders[i];
-    auto matte = p.work.reduced ? matteOnRegion(p, o, key)
-                                : matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx,
-                                                     o.backgroundScribblesPx, key);
+    // At the scale of a 640-pixel photo whatever the photo's size (MatteOptions): a bigger
+    // photo's matte on its scribbles' region, reduced, and brought back to its pixels.
+    auto matte =
+        matteFromScribbles(p.ps.photo.linearRgb, o.foregroundScribblesPx, o.backgroundScribblesPx, key);
     if (!matte) return matte.error();
     p.mattes.push_back(std::move(*matte));
     if (p.cancelled()) return cancelledError();

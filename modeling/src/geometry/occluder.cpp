@@ -1,5 +1,8 @@
 #include "inlay/modeling/occluder.h"
 
+#include "inlay/modeling/image_io.h"
+#include "inlay/modeling/image_resample.h"
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 // After core.hpp: alphamat.hpp uses CV_EXPORTS_W without including what defines it.
@@ -315,13 +318,12 @@ Status findLowestPoint(OccluderMatte& out, const MatteKeys& keys) {
   return Error{"", keys.fg, "the matte has no pixel at least half covered"};
 }
 
-}  // namespace
-
 // Check and rasterise the strokes, cut the object from its surroundings in a region around them
 // (GrabCut seeded by the strokes, gap pixels of foreground strokes relabelled by colour), then
 // matte the cut's border band (information flow) and find where the matte stands on the floor.
-Expected<OccluderMatte> matteFromScribbles(const ImageF& photo, const Strokes& fg, const Strokes& bg,
-                                           const std::string& key, const MatteOptions& opt) {
+// Every pixel size of `opt` is taken in the photo's own pixels.
+Expected<OccluderMatte> matteAtOwnScale(const ImageF& photo, const Strokes& fg, const Strokes& bg,
+                                        const std::string& key, const MatteOptions& opt) {
   const MatteKeys keys{key, key + ".foreground_scribbles_px", key + ".background_scribbles_px"};
   INLAY_CHECK(photo.channels >= 3 && photo.width > 0 && photo.height > 0);
   if (Status s = checkStrokes(fg, bg, keys); !s) return s.error();
@@ -355,6 +357,79 @@ Expected<OccluderMatte> matteFromScribbles(const ImageF& photo, const Strokes& f
   if (Status s = storeMatte(out, *alpha8, trimap, cut.roi, W, H, keys); !s) return s.error();
   if (Status s = findLowestPoint(out, keys); !s) return s.error();
   return out;
+}
+
+// The scribbles' region of a photo larger than the reference: their box grown by what
+// workRegion grows it by at the reference's scale (and a pixel more), so the cut sees what it
+// sees in the photo at that scale; within the photo; empty without a finite point or when the
+// box misses the photo.
+cv::Rect scribbleRegion(const Strokes& fg, const Strokes& bg, int W, int H, double reduce,
+                        const MatteOptions& opt) {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const Strokes* strokes : {&fg, &bg})
+    for (const auto& stroke : *strokes)
+      for (const Vec2& q : stroke)
+        if (q.allFinite())
+          x0 = std::min(x0, q.x()), y0 = std::min(y0, q.y()), x1 = std::max(x1, q.x()),
+          y1 = std::max(y1, q.y());
+  if (!(x1 >= x0 && y1 >= y0) || x1 < 0 || y1 < 0 || x0 > W || y0 > H) return {};
+  const double stroke = (std::max(0, opt.strokeRadiusPx) + 2) / reduce;
+  const double f = std::max(0.0, opt.marginFraction);
+  const double mx = std::max(16.0 / reduce, f * (x1 - x0 + 2 * stroke)) + stroke + 1 / reduce;
+  const double my = std::max(16.0 / reduce, f * (y1 - y0 + 2 * stroke)) + stroke + 1 / reduce;
+  const int ix0 = std::clamp(int(std::floor(x0 - mx)), 0, W - 1);
+  const int iy0 = std::clamp(int(std::floor(y0 - my)), 0, H - 1);
+  const int ix1 = std::clamp(int(std::ceil(x1 + mx)), ix0 + 1, W);
+  const int iy1 = std::clamp(int(std::ceil(y1 + my)), iy0 + 1, H);
+  return cv::Rect(ix0, iy0, ix1 - ix0, iy1 - iy0);
+}
+
+// The matte of a photo larger than the reference, found on its scribbles' region reduced to the
+// reference's scale and brought back (joint bilateral upsampling guided by the photo), pasted
+// into a matte of the photo's size; box and lowest point in the photo's pixels.
+Expected<OccluderMatte> matteAtReferenceScale(const ImageF& photo, const Strokes& fg, const Strokes& bg,
+                                              const std::string& key, const MatteOptions& opt,
+                                              double reduce) {
+  const cv::Rect r = scribbleRegion(fg, bg, photo.width, photo.height, reduce, opt);
+  if (r.empty()) return matteAtOwnScale(photo, fg, bg, key, opt);  // it says what is wrong
+  ImageF crop(r.width, r.height, photo.channels);
+  for (int y = 0; y < r.height; ++y)
+    std::copy_n(photo.pixel(r.x, r.y + y), size_t(r.width) * photo.channels, crop.pixel(0, y));
+  const int rw = std::max(1, int(std::lround(r.width * reduce)));
+  const int rh = std::max(1, int(std::lround(r.height * reduce)));
+  const ImageF region = resizeImage(crop, rw, rh);
+  const double sx = double(rw) / r.width, sy = double(rh) / r.height;
+  const auto inRegion = [&](Strokes strokes) {
+    for (auto& stroke : strokes)
+      for (Vec2& q : stroke) q = Vec2((q.x() - r.x) * sx, (q.y() - r.y) * sy);
+    return strokes;
+  };
+  auto m = matteAtOwnScale(region, inRegion(fg), inRegion(bg), key, opt);
+  if (!m) return m;
+  const ImageF alpha = jointBilateralUpsample(m->alphaPx, region, crop);
+  OccluderMatte out = *m;
+  out.alphaPx = ImageF(photo.width, photo.height, 1, 0.f);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const float a = alpha.at(x, y);
+      out.alphaPx.at(r.x + x, r.y + y) = a > 0 ? std::min(a, 1.f) : 0.f;  // NaN to 0
+    }
+  out.boxPx = {r.x + int(std::floor(m->boxPx[0] / sx)), r.y + int(std::floor(m->boxPx[1] / sy)),
+               std::min(photo.width, r.x + int(std::ceil(m->boxPx[2] / sx))),
+               std::min(photo.height, r.y + int(std::ceil(m->boxPx[3] / sy)))};
+  out.lowestPx = Vec2(r.x + m->lowestPx.x() / sx, r.y + m->lowestPx.y() / sy);
+  return out;
+}
+
+}  // namespace
+
+Expected<OccluderMatte> matteFromScribbles(const ImageF& photo, const Strokes& fg, const Strokes& bg,
+                                           const std::string& key, const MatteOptions& opt) {
+  INLAY_CHECK(photo.channels >= 3 && photo.width > 0 && photo.height > 0);
+  const int longSide = std::max(photo.width, photo.height);
+  if (opt.referenceLongSidePx <= 0 || longSide <= opt.referenceLongSidePx)
+    return matteAtOwnScale(photo, fg, bg, key, opt);
+  return matteAtReferenceScale(photo, fg, bg, key, opt, double(opt.referenceLongSidePx) / longSide);
 }
 
 Expected<Surface> occluderCard(const Camera& camera, const OccluderMatte& matte, int groupIndex,

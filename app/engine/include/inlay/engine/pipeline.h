@@ -109,8 +109,8 @@ inline constexpr double kWorkingMaxPixels = 0.5e6;
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
   // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
-  // photo area-averaged to at most this many pixels (occluder mattes on their scribbles' region
-  // of the photo, at up to 1 MP), their maps brought back
+  // photo area-averaged to at most this many pixels (occluder mattes, whatever this is, at the
+  // scale of a 640-pixel photo on their scribbles' region: MatteOptions), their maps brought back
   // to the photo's size by guided upsampling; the render and composite stay at the photo's
   // size. <= 0: every stage at the photo's own size.
   double workingMaxPixels = kWorkingMaxPixels;
