@@ -63,6 +63,19 @@ TEST(LayoutRules, BoxSizeIsTheRoomBuildersAndTheRulesSayWhich) {
   // Narrower than half the camera's height: no room for the photographer.
   const auto sliver = cornersOf(c, -0.4, -0.2, -3, 2.4);
   EXPECT_EQ(detail::implausibility(c, sliver, false, rules).rule, detail::Implausible::kWidth);
+  // Under a ceiling the photo shows, 14 m by 14 m (9.3 camera heights both ways, ceiling 2.8
+  // heights up, so the ceiling rule passes it): the floor crease is on furniture. Not against the
+  // sky; and a corridor, deep but narrow, is kept unless it replaces a refused box (then both
+  // sizes must be within the bound).
+  const auto lounge = cornersOf(c, -7, 7, -14, 4.2);
+  const auto l = detail::implausibility(c, lounge, true, rules);
+  EXPECT_EQ(l.rule, detail::Implausible::kExtent);
+  EXPECT_NE(l.why.find("14.0 m deep and 14.0 m wide"), std::string::npos) << l.why;
+  EXPECT_FALSE(detail::implausibility(c, lounge, false, rules));
+  const auto corridor = cornersOf(c, -2, 2, -20, 2.7);
+  EXPECT_FALSE(detail::implausibility(c, corridor, true, rules));
+  EXPECT_EQ(detail::implausibility(c, corridor, true, rules, true).rule, detail::Implausible::kExtent);
+  EXPECT_FALSE(detail::implausibility(c, ordinary, true, rules, true));
   // Scale-free: the same photo of a room twice the size, from twice the height, is as plausible.
   Camera tall = c;
   tall.heightM = 3.0;

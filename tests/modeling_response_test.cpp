@@ -303,6 +303,73 @@ TEST(ResponseEstimate, NoiseCueFitsACurveOnlyWithEnoughEvidenceAgainstSrgb) {
   EXPECT_EQ(weak.decision.rfind("kept sRGB", 0), 0u) << weak.decision;
 }
 
+// The stops a curve spans between codes 128 and 254 (sRGB 2.2).
+double topHalfStops(const CameraResponse& r) {
+  return std::log2(r.decode(254 / 255.0) / r.decode(128 / 255.0));
+}
+
+// A photo whose noise suggests a long shoulder (a shoulder of 8 read as one of several hundred,
+// more than maxTopStops over codes 128-254): the curve is kept while the noise is measured at
+// minTopLevels code bins in the bright half, and refused (sRGB and a warning that says why) when
+// fewer bins show it, as when a blown sky leaves the bright half unmeasured.
+TEST(ResponseEstimate, AShoulderTheNoiseDoesNotShowEnoughIsRefusedWithAWarning) {
+  const ImageF photo = syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.0, 8.0}), 0.02, 52);
+  ResponseEstimateOptions o;
+  o.cue = ResponseEstimateOptions::Cue::Noise;
+  o.minSrgbResidual = 0;  // the gate under test is the shoulder's, not the evidence's
+  const ResponseEstimate shown = estimateResponse(photo, o);
+  expectSane(shown);
+  ASSERT_EQ(shown.decision, "fitted");
+  const double stops = topHalfStops(shown.response);
+  int topLevels = 0;
+  for (const auto& bin : shown.noiseLevel) topLevels += bin[0] >= 128;
+  std::printf("fitted %s, %.1f stops over codes 128-254, %d bright bins\n",
+              shown.response.describe().c_str(), stops, topLevels);
+  ASSERT_GT(stops, o.maxTopStops) << "the photo must suggest a long shoulder";
+  ASSERT_GE(topLevels, o.minTopLevels);
+
+  o.minTopLevels = topLevels + 1;  // the bright half shown one bin short
+  const ResponseEstimate e = estimateResponse(photo, o);
+  expectSane(e);
+  EXPECT_EQ(e.response, CameraResponse::srgb());
+  EXPECT_EQ(e.objective, e.srgbObjective);
+  EXPECT_EQ(e.decision.rfind("kept sRGB", 0), 0u) << e.decision;
+  ASSERT_EQ(e.warnings.size(), 1u);
+  EXPECT_NE(e.warnings[0].find("implausible"), std::string::npos) << e.warnings[0];
+  EXPECT_NE(e.warnings[0].find("only " + std::to_string(topLevels) + " code level"), std::string::npos)
+      << e.warnings[0];
+
+  o.maxTopStops = stops + 0.1;  // a bound the curve is within: kept whatever the bins
+  o.minTopLevels = topLevels + 1;
+  EXPECT_EQ(estimateResponse(photo, o).response, shown.response);
+}
+
+// Legitimate curves within the bound (a lower gamma with a contrast toe and shoulder, top half
+// 4.3 stops; a pure shoulder of 8, 5.0 stops) are kept: the same fit with the rule and without it
+// (the noise cue reads the shoulder of 8 as a longer one, 7.7 stops, and the photo's noise shows
+// the bright half at 12 bins, so that is kept too).
+TEST(ResponseEstimate, AContrastCurveWithinTheStopsBoundIsKept) {
+  const ResponseParams truths[] = {{0.9, 0.3, 20.0}, {1.0, 0.0, 8.0}};
+  for (size_t i = 0; i < std::size(truths); ++i) {
+    const CameraResponse truth = CameraResponse::toeShoulder(truths[i]);
+    ASSERT_LT(topHalfStops(truth), ResponseEstimateOptions{}.maxTopStops);
+    ResponseEstimateOptions o;
+    o.cue = ResponseEstimateOptions::Cue::Noise;
+    o.minSrgbResidual = 0;
+    const ImageF photo = syntheticPhoto(truth, 0.02, uint32_t(51 + i));
+    const ResponseEstimate e = estimateResponse(photo, o);
+    expectSane(e);
+    std::printf("truth %s (%.1f stops): estimate %s (%.1f stops), %s\n", truth.describe().c_str(),
+                topHalfStops(truth), e.response.describe().c_str(), topHalfStops(e.response),
+                e.decision.c_str());
+    EXPECT_EQ(e.decision, "fitted");
+    EXPECT_NE(e.response, CameraResponse::srgb());
+    for (const std::string& w : e.warnings) EXPECT_EQ(w.find("implausible"), std::string::npos) << w;
+    o.maxTopStops = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(estimateResponse(photo, o).response, e.response);
+  }
+}
+
 // Photos through curves at the corners of the family (the strongest toe, shoulder and powers):
 // the estimate stays a finite, strictly increasing curve, and says when it is at a bound.
 TEST(ResponseEstimate, CurvesAtTheFamilysBoundsGiveFiniteMonotoneCurvesAndABoundIsReported) {

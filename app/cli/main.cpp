@@ -44,7 +44,7 @@ constexpr const char* kUsage = R"(Usage:
                                                      back wall; --scene keeps what it fixes
   inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
                    [--min-improvement F] [--min-srgb-residual R] [--noise-quantile Q]
-                   [--evaluate-at P,T,S]
+                   [--max-top-stops S] [--evaluate-at P,T,S]
                                                      the camera response (camera.response, or
                                                      estimated from the photo): family,
                                                      parameters, warnings and the 256 codes'
@@ -144,7 +144,7 @@ struct Args {
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, surfaceAlbedo, cue,
       report;  // cue: empty = the default
-  std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile;
+  std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
@@ -191,7 +191,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
-        s == "--working-mp" || s == "--clamp-indirect") {
+        s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -219,6 +219,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       } else if (s == "--min-srgb-residual") {
         a.minSrgbResidual = parseNumber<double>(*v);
         if (!a.minSrgbResidual) return "--min-srgb-residual: '" + *v + "' is not a non-negative number";
+      } else if (s == "--max-top-stops") {
+        a.maxTopStops = parseNumber<double>(*v);
+        if (!a.maxTopStops) return "--max-top-stops: '" + *v + "' is not a non-negative number of stops";
       } else if (s == "--noise-quantile") {
         a.noiseQuantile = parseNumber<double>(*v);
         if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
@@ -734,6 +737,7 @@ int commandResponse(const std::string& input, const Args& a) {
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
   if (a.minSrgbResidual) o.minSrgbResidual = *a.minSrgbResidual;
   if (a.noiseQuantile) o.noiseQuantile = *a.noiseQuantile;
+  if (a.maxTopStops) o.maxTopStops = *a.maxTopStops;
   if (!a.evaluateAt.empty()) {
     ResponseParams q;
     if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
@@ -782,6 +786,8 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"min_improvement", o.minImprovementOrDefault()},
                      {"min_srgb_residual", o.minSrgbResidualOrDefault()},
                      {"noise_quantile", o.noiseQuantileOrDefault()},
+                     {"max_top_stops", o.maxTopStops},
+                     {"min_top_levels", o.minTopLevels},
                      {"edges_used", e.edgesUsed},
                      {"noise_bins", e.noiseBins},
                      {"segments_found", e.segmentsFound},

@@ -224,7 +224,7 @@ class LayoutSearch {
   Implausible implausible(const std::array<double, 4>& t, const Score& s) const {
     std::array<Vec2, 4> c;
     if (!corners(t, c)) return {};
-    return implausibility(cam(), c, topHeld_ || showsCeiling(s), rules_);
+    return implausibility(cam(), c, topHeld_ || showsCeiling(s), rules_, refuse_);
   }
   // From now on score() refuses implausible boxes (the search's second pass); topHeld: the top
   // edge is held where the photo shows a ceiling crease.
@@ -802,7 +802,7 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   std::array<Vec2, 4> refusedCorners;
   search.corners(best.second, refusedCorners);
   const BoxSize refused = boxSizeOf(cam, refusedCorners);
-  const bool holdTop = why.rule == Implausible::kCeiling;
+  const bool holdTop = why.rule == Implausible::kCeiling || why.rule == Implausible::kExtent;
   if (holdTop) {
     lp.isFixed[0] = true;
     lp.t[0] = best.second[0];
@@ -867,7 +867,7 @@ BoxSize boxSizeOf(const Camera& cam, const std::array<Vec2, 4>& c) {
 }
 
 Implausible implausibility(const Camera& cam, const std::array<Vec2, 4>& c, bool showsCeiling,
-                           const BoxRules& r) {
+                           const BoxRules& r, bool replacing) {
   const BoxSize b = boxSizeOf(cam, c);
   if (!b.ok) return {};  // not a box at all: the room builder says why
   const double h = cam.heightM;
@@ -899,6 +899,15 @@ Implausible implausibility(const Camera& cam, const std::array<Vec2, 4>& c, bool
                   "the top of furniture or a sill",
                   b.ceilingM, b.ceilingM / h, b.depthM);
     return {Implausible::kCeiling, buf};
+  }
+  const double extent = replacing ? std::max(b.depthM, b.widthM) : std::min(b.depthM, b.widthM);
+  if (showsCeiling && extent > r.maxRoomOverEye * h) {
+    std::snprintf(buf, sizeof buf,
+                  "under the ceiling crease the photo shows, a room %.1f m deep and %.1f m wide "
+                  "(%s more than %.0f camera heights) means the floor crease lies on furniture, "
+                  "a sill or a window's rail",
+                  b.depthM, b.widthM, replacing ? "one" : "both", r.maxRoomOverEye);
+    return {Implausible::kExtent, buf};
   }
   return {};
 }

@@ -34,22 +34,34 @@ BoxSize boxSizeOf(const Camera& camera, const std::array<Vec2, 4>& cornersPx);
 //    the top of furniture or a sill taken for the floor, which is what makes a box tens of
 //    metres deep. The search then holds the top edge and looks for the floor crease lower down.
 //  - width: a room narrower than minWidthOverEye camera heights cannot hold the photographer.
+//  - extent: under a ceiling the photo shows, a room more than maxRoomOverEye camera heights
+//    both deep and wide (a corridor is legitimately deep: York P1080033, 19 m by 7.9 m). A
+//    lounge's or office's floor crease is mostly hidden behind furniture; the best-supported line
+//    near the horizon is then a sill, a cabinet's base or a window's rail, the back wall lands
+//    far away and the side wall out of view follows it (York P1040845: 14 m by 14 m under a
+//    4.2 m ceiling). A box that replaces a refused one (`replacing`: the photo's best evidence
+//    has misled once) must keep both sizes within the bound, else the search, which has no
+//    evidence for the hidden crease, stops just inside it; it then looks for the floor crease
+//    lower down, between the furniture. 6 (9.6 m at 1.6 m) was chosen on York half A (even
+//    indices): its accepted indoor boxes are at most 4.9 camera heights in their smaller size;
+//    at 8, P1040845's replacement was 14.1 m by 12.8 m, the bound's own size.
 struct BoxRules {
   double horizonSigmaRad = 0;
   double creaseSigmaPx = 1;
   double depthFactor = 2;
   double maxCeilingOverEye = 3;
   double minWidthOverEye = 0.5;
+  double maxRoomOverEye = 6;
 };
 // Which rule refuses a box (none: plausible) and why, as a sentence fragment with the box's
 // metres. showsCeiling: the photo shows the top edge as a ceiling crease (else the ceiling rule
 // does not apply: the top of a facade against the sky is no ceiling).
 struct Implausible {
-  enum Rule { kNone, kDepth, kWidth, kCeiling } rule = kNone;
+  enum Rule { kNone, kDepth, kWidth, kCeiling, kExtent } rule = kNone;
   std::string why;
   explicit operator bool() const { return rule != kNone; }
 };
 Implausible implausibility(const Camera& camera, const std::array<Vec2, 4>& cornersPx, bool showsCeiling,
-                           const BoxRules& rules);
+                           const BoxRules& rules, bool replacing = false);
 
 }  // namespace inlay::detail

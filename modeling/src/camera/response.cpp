@@ -456,9 +456,32 @@ std::string atBoundOf(const ResponseParams& q) {
   return {};
 }
 
-// Keeps the fitted curve in `out` only when it lowers the cue's residual enough and the cue
-// shows enough evidence against sRGB; otherwise sRGB, with the reason in `decision` (and a
-// warning when only the evidence was missing).
+// The stops a response spans between codes 128 and 254 (sRGB: 2.2).
+double topHalfStops(const CameraResponse& r) {
+  return std::log2(std::max(r.decode(254 / 255.0), 1e-30) / std::max(r.decode(128 / 255.0), 1e-30));
+}
+
+// Why the fitted curve claims more about the bright half of the codes than the photo shows
+// (ResponseEstimateOptions::maxTopStops), as a "kept sRGB: ..." decision; empty when it does not.
+std::string unsupportedShoulder(const ResponseEstimateOptions& options, const ResponseEstimate& out) {
+  const double stops = topHalfStops(out.response);
+  if (!(stops > options.maxTopStops)) return {};
+  int levels = 0;
+  for (const auto& bin : out.noiseLevel) levels += bin[0] >= 128 ? 1 : 0;
+  if (levels >= options.minTopLevels) return {};
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "kept sRGB: the fitted %s spans %.1f stops between codes 128 and 254 (sRGB 2.2, "
+                "at most %.0f trusted), but the photo's noise was measured at only %d code "
+                "level%s in that half (%d needed), so the shoulder is an extrapolation",
+                out.response.describe().c_str(), stops, options.maxTopStops, levels,
+                levels == 1 ? "" : "s", options.minTopLevels);
+  return buf;
+}
+
+// Keeps the fitted curve in `out` only when it lowers the cue's residual enough, the cue shows
+// enough evidence against sRGB and its shoulder is measured rather than extrapolated; otherwise
+// sRGB, with the reason in `decision` (and a warning when only the evidence was missing).
 void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& out) {
   const bool noiseCue = options.cue == ResponseEstimateOptions::Cue::Noise;
   char buf[320];
@@ -478,6 +501,10 @@ void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& 
     out.decision = buf;
     out.warnings.push_back("camera response: too little evidence for a curve other than sRGB (" +
                            out.decision.substr(std::string("kept sRGB: ").size()) + ")");
+  } else if (std::string why = unsupportedShoulder(options, out); !why.empty()) {
+    out.decision = why;
+    out.warnings.push_back("camera response: an implausible curve was refused (" +
+                           why.substr(std::string("kept sRGB: ").size()) + "); using sRGB");
   }
   if (out.decision != "fitted") {
     out.response = CameraResponse::srgb();

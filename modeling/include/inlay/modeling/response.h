@@ -141,6 +141,17 @@ struct ResponseEstimateOptions {
   double minSrgbResidualOrDefault() const {
     return minSrgbResidual.value_or(cue == Cue::Noise ? 0.5 : 0.0);
   }
+  // A fitted curve must show what it claims about the bright half of the codes: one that spans
+  // more than maxTopStops stops between codes 128 and 254 (sRGB spans 2.2; a real camera's
+  // shoulder adds two to three) is kept only when the photo's noise was measured at no fewer
+  // than minTopLevels code bins in that half (three points show a bend, two only a slope).
+  // Otherwise the long shoulder is an extrapolation from the dark half (a blown sky beside dark
+  // ground: York P1030004 got 7.8 stops from one bright bin): sRGB, with a warning saying why.
+  // 6 stops is the plausibility bound of bench_response_york.py; random cameras' S-curves span
+  // up to 8.6 stops and are kept where their noise reaches the top half (chosen on half A of
+  // the camera variants, docs/camera-response.md).
+  double maxTopStops = 6;
+  int minTopLevels = 3;
   // Noise cue: the quantile of the flat blocks' noise that stands for each code bin (0.5: the
   // median). Texture and a rendered photo's uneven lighting only add variance to a block, so a
   // lower quantile follows the sensor's noise more closely. Unset: kDefaultNoiseQuantile.
