@@ -305,7 +305,8 @@ def plot_clamp_grid(out, summary):
             return
         for h, col in (("A", "C0"), ("B", "C1"), ("dev", "C2")):
             for kind, mk in (("plain", "s"), ("cameras", "o")):
-                sel = [s for s in summary if s["half"] == h and s["camera"] == kind]
+                sel = sorted((s for s in summary if s["half"] == h and s["camera"] == kind),
+                             key=lambda s: s["clamp"] if s["clamp"] > 0 else 32)
                 if not sel:
                     continue
                 xs = [s["clamp"] if s["clamp"] > 0 else 32 for s in sel]  # off drawn at 32
@@ -323,6 +324,23 @@ def plot_clamp_grid(out, summary):
         for a in ax:
             if a.get_legend_handles_labels()[0]:
                 a.legend(fontsize=7)
+
+
+def print_clamp_pivot(rows):
+    """Markdown per half: a row per variant, a column per clamp (object RMSE / around RMSE)."""
+    clamps = sorted({r["clamp"] for r in rows})
+    for h in ("A", "B", "dev"):
+        sel = [r for r in rows if r["half"] == h]
+        if not sel:
+            continue
+        print("\n### Half %s: object RMSE / around RMSE per clamp\n" % h)
+        print("| variant | " + " | ".join(clamp_label(c) for c in clamps) + " |\n|---|" + "---|" * len(clamps))
+        for v in sorted({(r["room"], r["camera"]) for r in sel}):
+            cells = []
+            for c in clamps:
+                r = next((x for x in sel if (x["room"], x["camera"]) == v and x["clamp"] == c), {})
+                cells.append("%s / %s" % (r.get("object_rmse", "-"), r.get("around_rmse", "-")))
+            print("| %s_%s | %s |" % (v[0], v[1], " | ".join(cells)))
 
 
 def run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid, dev=False):
@@ -345,6 +363,7 @@ def run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid, dev=False):
     print("\n| %s |\n|%s" % (" | ".join(keys), "---|" * len(keys)))
     for s in summary:
         print("| " + " | ".join(str(s.get(k, "")) for k in keys) + " |")
+    print_clamp_pivot(rows)
     plot_clamp_grid(out, summary)
     print("wrote", os.path.join(out, "clamp_grid.csv"))
     return 0
