@@ -129,6 +129,9 @@ def main():
                                                            "background_scribbles_px": [[[10, 10], [50, 10]]]}]),
          "occluders[0].foreground_scribbles_px"),
         ("grain not a boolean", lambda s: s.setdefault("render", {}).update(grain="yes"), "render.grain"),
+        ("clamp negative", lambda s: s.setdefault("render", {}).update(clamp_indirect=-2), "render.clamp_indirect"),
+        ("clamp a word", lambda s: s.setdefault("render", {}).update(clamp_indirect="bright"), "render.clamp_indirect"),
+        ("clamp NaN", "NaN", "render.clamp_indirect"),
     ]
     out = os.path.join(tmp, "keep.png")
     for name, mutate, key in cases:
@@ -136,6 +139,9 @@ def main():
             p = os.path.join(tmp, "huge.json")
             txt = json.dumps(dict(base, photo=photo)).replace('"height_m": 1.6', '"height_m": 1e999')
             open(p, "w").write(txt)
+        elif mutate == "NaN":  # Python's json writes NaN, which is not JSON: the reader must say where
+            p = os.path.join(tmp, "nan_clamp.json")
+            open(p, "w").write(json.dumps(dict(base, photo=photo, render={"clamp_indirect": float("nan")})))
         else:
             p = scene(mutate, name.replace(" ", "_"))
         open(out, "wb").write(b"users file")

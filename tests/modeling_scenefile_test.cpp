@@ -66,7 +66,7 @@ const char* kFullScene = R"({
     { "mesh": "builtin:cube", "base_px": [100, 290], "subdivide": 2,
       "material": { "preset": "emissive", "rgb": [3, 2, 1] } }
   ],
-  "render": { "spp": 64, "seconds": 12.5, "noise": 0.01, "exposure": -0.5, "seed": 7, "grain": false }
+  "render": { "spp": 64, "seconds": 12.5, "noise": 0.01, "exposure": -0.5, "seed": 7, "grain": false, "clamp_indirect": 6.5 }
 })";
 
 void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
@@ -147,6 +147,7 @@ void expectDocsEqual(const SceneDoc& a, const SceneDoc& b) {
   EXPECT_EQ(a.render.noise, b.render.noise);
   EXPECT_EQ(a.render.seed, b.render.seed);
   EXPECT_EQ(a.render.grain, b.render.grain);
+  EXPECT_EQ(a.render.clampIndirect, b.render.clampIndirect);
 }
 
 TEST(SceneFile, FullSceneParsesEveryKey) {
@@ -241,6 +242,29 @@ TEST(SceneFile, SaveAndLoadRoundTripsEveryKey) {
 
 // "room.materials": surfaces marked as a real mirror or a glossy floor, by surface name.
 // layout.rear_m alone (the back wall estimated) is kept on save; without it no layout is written.
+// render.clamp_indirect: a number of times white or "off" (0); the default when missing; kept on
+// save ("off" written for 0).
+TEST(SceneFile, ClampIndirectOffNumberAndDefault) {
+  const fs::path dir = sceneDir("clamp");
+  auto parse = [&](const std::string& render) {
+    return parseSceneJson(
+        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "render": )" + render + "}",
+        dir.string(), "scene.json");
+  };
+  auto off = parse(R"({"clamp_indirect": "off"})");
+  ASSERT_TRUE(off.ok()) << off.error().message();
+  EXPECT_EQ(off->doc.render.clampIndirect, 0.0);
+  auto four = parse(R"({"clamp_indirect": 4})");
+  ASSERT_TRUE(four.ok()) << four.error().message();
+  EXPECT_EQ(four->doc.render.clampIndirect, 4.0);
+  auto none = parse("{}");
+  ASSERT_TRUE(none.ok()) << none.error().message();
+  EXPECT_EQ(none->doc.render.clampIndirect, RenderKeys::kDefaultClampIndirect);
+  SceneDoc d = four->doc;
+  d.render.clampIndirect = 0;
+  EXPECT_NE(sceneToJson(d).find("\"clamp_indirect\": \"off\""), std::string::npos);
+}
+
 TEST(SceneFile, RearWallDistanceAloneRoundTrips) {
   const fs::path dir = sceneDir("rear_m");
   writeText(dir / "scene.json", R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg",
@@ -666,6 +690,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"grain_string", R"(, "render": {"grain": "yes"})", "render.grain",
                 "expected true or false, got a string"},
         BadCase{"grain_number", R"(, "render": {"grain": 1})", "render.grain", "expected true or false"},
+        BadCase{"clamp_negative", R"(, "render": {"clamp_indirect": -1})", "render.clamp_indirect",
+                "times white"},
+        BadCase{"clamp_string", R"(, "render": {"clamp_indirect": "high"})", "render.clamp_indirect",
+                "\"off\""},
+        BadCase{"clamp_nan", R"(, "render": {"clamp_indirect": NaN})", "render.clamp_indirect", ""},
+        BadCase{"clamp_infinite", R"(, "render": {"clamp_indirect": 1e999})", "render.clamp_indirect",
+                "out of range"},
+        BadCase{"clamp_bool", R"(, "render": {"clamp_indirect": true})", "render.clamp_indirect",
+                "times white"},
         BadCase{"exposure_bool", R"(, "render": {"exposure": true})", "render.exposure",
                 "expected a number, got a boolean"},
         BadCase{"invalid_json", R"(, "render": {"spp": 4,}})", "render", "invalid JSON"}),

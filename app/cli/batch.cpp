@@ -297,6 +297,7 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   so.startDivider = 1;
   so.focusOnChanges = true;
   so.noiseTarget = args_.noise.value_or(doc.render.noise);
+  so.tracer.clampRadiance = doc.render.clampIndirect;
   so.denoise = args_.denoise ? SessionOptions::Denoise::Final : SessionOptions::Denoise::Off;
   LastFrameSink sink;
   {

@@ -95,9 +95,9 @@ Render options:
                           does not see take its walls' mean (the product's rule)
   --surface-albedo FILE   diagnostics: {"ceiling": [r, g, b], ...}: the albedo of each named
                           room surface where the camera does not see it
-  --clamp-indirect R      diagnostics: clamp each indirect sample's radiance to R (the photo's
-                          linear units; Cycles' "clamp indirect" times the exposure); default 0:
-                          off (unbiased)
+  --clamp-indirect R      clamp each sample's light after the first bounce to R times white (the
+                          photo's linear units, as Cycles' "clamp indirect"); 0 or "off": no
+                          clamp (default: the scene's render.clamp_indirect)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
   --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
@@ -149,8 +149,8 @@ struct Args {
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
   std::optional<double> seconds, noise;
-  std::optional<double> workingMp;  // --working-mp
-  double clampIndirect = 0;         // --clamp-indirect (0: off)
+  std::optional<double> workingMp;      // --working-mp
+  std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -227,8 +227,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
           return "--noise-quantile: '" + *v + "' is not a number in (0, 1]";
       } else if (s == "--clamp-indirect") {
-        const auto c = parseNumber<double>(*v);
-        if (!c) return "--clamp-indirect: '" + *v + "' is not a non-negative number";
+        const auto c = *v == "off" ? std::optional<double>(0.0) : parseNumber<double>(*v);
+        if (!c) return "--clamp-indirect: '" + *v + "' is not a non-negative number or \"off\"";
         a.clampIndirect = *c;
       } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
@@ -560,7 +560,8 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   so.seed = uint32_t(a.seed.value_or(int(ps.doc.render.seed)));
   so.threads = a.threads.value_or(0);
   so.startDivider = 1;  // no preview in batch mode
-  so.tracer.clampRadiance = a.clampIndirect;
+  if (a.clampIndirect) ps.doc.render.clampIndirect = *a.clampIndirect;
+  so.tracer.clampRadiance = ps.doc.render.clampIndirect;
   // Samples go where the objects change the photo; untouched pixels are revisited every fourth
   // wave (render/session.h).
   so.focusOnChanges = !a.noFocus;

@@ -44,6 +44,7 @@ SessionOptions FinalRender::optionsFor(const PreparedScene& scene, int maxSpp) {
   so.startDivider = 1;  // no preview: every wave counts
   so.focusOnChanges = true;
   so.noiseTarget = scene.doc.render.noise;
+  so.tracer.clampRadiance = scene.doc.render.clampIndirect;  // as the preview
   // The final frame is denoised (render/denoise.h): a capped or timed render comes out clean,
   // and the filter's strength falls with the samples, so one that reached the noise target is
   // the render's own. Pixels the objects do not change stay the photo's bits.

@@ -73,6 +73,7 @@ void RenderController::startScene() {
   options.targetSpp = std::max(1, prepared->doc.render.spp);
   options.seconds = prepared->doc.render.seconds.value_or(0.0);
   options.seed = prepared->doc.render.seed;
+  options.tracer.clampRadiance = prepared->doc.render.clampIndirect;  // as the final render
   // Samples go where the objects change the photo (the part a user watches while dragging).
   options.focusOnChanges = true;
   // The first frame after an edit: one sample per 16 x 16 block (a quarter of the 8 x 8 wave's

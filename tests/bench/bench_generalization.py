@@ -45,6 +45,14 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
                 write the tables, summary and plots of their union to OUT
+  --clamp-grid 0,1,2,4,8  measure the clamp of indirect light (render.clamp_indirect, times white)
+                instead: each variant is prepared once by `inlay-cli batch` and rendered at every
+                value of the grid (0: off; same --spp, seed 1, uniform), each composite scored.
+                Writes OUT/clamp_grid.csv (one row per variant and clamp: object RMSE, adjusted,
+                around, render_s), OUT/clamp_grid_summary.csv (median and worst per half, camera
+                kind and clamp) and OUT/clamp_grid.png (object RMSE against the clamp and against
+                render seconds, per half); needs --spp. With --dev: the six dev rooms of
+                ../shared/scenes instead (their own photos, half "dev"; --rooms d1,d5 picks some)
   --baseline D  also compare with another build's run in folder D (its generalization.csv):
                 prints both halves' medians side by side, writes OUT/generalization_vs_baseline.csv
                 and OUT/generalization_vs_baseline.png (per room, baseline against this run)
@@ -226,6 +234,141 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     return row
 
 
+def clamp_label(c):
+    return "off" if c == 0 else "%g" % c
+
+
+def measure_clamp_grid(cli, tools, room_dir, vdir, kind, out, o, grid):
+    """Rows of one variant at every clamp of `grid`: one `inlay-cli batch` (the scene prepared
+    once), a line per clamp, each composite scored by the harness. render_s: a line's seconds
+    (the gap between outputs; the first line's excludes the preparation batch reports)."""
+    room = os.path.basename(room_dir)
+    tag = "%s_%s" % (room, kind)
+    scene = os.path.join(out, tag + ".json")
+    run([PY, os.path.join(tools, "harness.py"), "scene", vdir, scene, "--seconds", str(o["seconds"])])
+    comps = [os.path.join(out, "%s_clamp_%s.png" % (tag, clamp_label(c))) for c in grid]
+    manifest = os.path.join(out, tag + "_clamp.jsonl")
+    with open(manifest, "w") as f:
+        for c, comp in zip(grid, comps):
+            f.write(json.dumps({"scene": scene, "output": comp, "render": {"clamp_indirect": c}}) + "\n")
+    if not o["rescore"]:
+        for comp in comps:
+            if os.path.exists(comp):
+                os.remove(comp)
+    start = time.time()
+    rc, secs, _, err = run([cli, "batch", manifest, "--spp", str(o["spp"]), "--seconds", "0", "--noise", "0",
+                            "--seed", "1"], timeout=7200)
+    m = re.search(r"prepared .*\(([0-9.]+) s,", err)
+    prev = start + (float(m.group(1)) if m else 0.0)
+    rows = []
+    for c, comp in zip(grid, comps):
+        half = "dev" if room.startswith("d") else benchlib.half(room)
+        row = {"room": room, "half": half, "camera": kind, "clamp": c, "batch_wall_s": round(secs, 2)}
+        if not os.path.exists(comp):
+            row["error"] = (err.strip() or "batch exit %d" % rc)[-300:]
+            rows.append(row)
+            continue
+        t = os.path.getmtime(comp)
+        row["render_s"] = round(t - prev, 2)
+        prev = t
+        _, _, so, _ = run([PY, os.path.join(tools, "harness.py"), "score", vdir, comp])
+        sc = json.loads(so)
+        for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing"):
+            row[k] = round(sc[k], 4)
+        rows.append(row)
+    return rows
+
+
+def summarise_clamp_grid(rows):
+    """Median and worst per half, camera kind (plain, cameras, all) and clamp."""
+    out = []
+    for h in ("A", "B", "dev"):
+        for kind in ("plain", "cameras", "all"):
+            for c in sorted({r["clamp"] for r in rows}):
+                sel = [r for r in rows if r["half"] == h and r["clamp"] == c and
+                       (kind == "all" or (r["camera"] == "plain") == (kind == "plain"))]
+                if not numbers(sel, "object_rmse"):
+                    continue
+                s = {"half": h, "camera": kind, "clamp": c, "runs": len(numbers(sel, "object_rmse"))}
+                for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "render_s"):
+                    s["median_" + k] = med(sel, k)
+                s["max_object_rmse"] = max(numbers(sel, "object_rmse"))
+                s["max_around_rmse"] = max(numbers(sel, "around_rmse"))
+                out.append(s)
+    return out
+
+
+def plot_clamp_grid(out, summary):
+    """Object RMSE (median and worst) against the clamp and against render seconds, per half."""
+    with benchlib.figure(os.path.join(out, "clamp_grid.png"), 1, 2, figsize=(12, 4.5)) as ax:
+        if ax is None:
+            return
+        for h, col in (("A", "C0"), ("B", "C1"), ("dev", "C2")):
+            for kind, mk in (("plain", "s"), ("cameras", "o")):
+                sel = sorted((s for s in summary if s["half"] == h and s["camera"] == kind),
+                             key=lambda s: s["clamp"] if s["clamp"] > 0 else 32)
+                if not sel:
+                    continue
+                xs = [s["clamp"] if s["clamp"] > 0 else 32 for s in sel]  # off drawn at 32
+                lab = "half %s %s" % (h, kind)
+                ax[0].plot(xs, [s["median_object_rmse"] for s in sel], mk + "-", color=col, label=lab + " median")
+                ax[0].plot(xs, [s["max_object_rmse"] for s in sel], mk + ":", color=col, alpha=0.6, label=lab + " worst")
+                ax[1].plot([s["median_render_s"] for s in sel], [s["median_object_rmse"] for s in sel], mk, color=col,
+                           label=lab)
+                for s in sel:
+                    ax[1].annotate(clamp_label(s["clamp"]), (s["median_render_s"], s["median_object_rmse"]), fontsize=7)
+        ax[0].set(xscale="log", xlabel="clamp of indirect light (times white; 'off' drawn at 32)",
+                  ylabel="object RMSE (sRGB)", title="object RMSE against the clamp")
+        ax[1].set(xlabel="median render seconds per composite", ylabel="median object RMSE",
+                  title="object RMSE against render time (labels: clamp)")
+        for a in ax:
+            if a.get_legend_handles_labels()[0]:
+                a.legend(fontsize=7)
+
+
+def print_clamp_pivot(rows):
+    """Markdown per half: a row per variant, a column per clamp (object RMSE / around RMSE)."""
+    clamps = sorted({r["clamp"] for r in rows})
+    for h in ("A", "B", "dev"):
+        sel = [r for r in rows if r["half"] == h]
+        if not sel:
+            continue
+        print("\n### Half %s: object RMSE / around RMSE per clamp\n" % h)
+        print("| variant | " + " | ".join(clamp_label(c) for c in clamps) + " |\n|---|" + "---|" * len(clamps))
+        for v in sorted({(r["room"], r["camera"]) for r in sel}):
+            cells = []
+            for c in clamps:
+                r = next((x for x in sel if (x["room"], x["camera"]) == v and x["clamp"] == c), {})
+                cells.append("%s / %s" % (r.get("object_rmse", "-"), r.get("around_rmse", "-")))
+            print("| %s_%s | %s |" % (v[0], v[1], " | ".join(cells)))
+
+
+def run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid, dev=False):
+    """The --clamp-grid run over rooms x cameras (dev: the dev rooms' own photos, plain only)."""
+    rows = []
+    for name in names:
+        for kind in (["plain"] if dev else kinds):
+            vdir = (os.path.join(sdir, name) if dev else
+                    variant(tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind))
+            for row in measure_clamp_grid(cli, tools, os.path.join(sdir, name), vdir, kind, out, o, grid):
+                rows.append(row)
+                print(json.dumps(row), flush=True)
+            benchlib.write_csv(os.path.join(out, "clamp_grid.csv"), rows)
+    if not rows:
+        print("no rooms")
+        return 1
+    summary = summarise_clamp_grid(rows)
+    benchlib.write_csv(os.path.join(out, "clamp_grid_summary.csv"), summary)
+    keys = list(summary[0]) if summary else []
+    print("\n| %s |\n|%s" % (" | ".join(keys), "---|" * len(keys)))
+    for s in summary:
+        print("| " + " | ".join(str(s.get(k, "")) for k in keys) + " |")
+    print_clamp_pivot(rows)
+    plot_clamp_grid(out, summary)
+    print("wrote", os.path.join(out, "clamp_grid.csv"))
+    return 0
+
+
 def long_render(cli, tools, scene, vdir, comp, o):
     """The `_long` columns: the variant rendered at --long-spp samples (seed 1, uniform), scored."""
     return render_scored(cli, tools, scene, vdir, comp, ["--spp", str(o["long_spp"]), "--seconds", "0", "--noise", "0"],
@@ -364,6 +507,15 @@ def main():
     o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
          "has_response": "inlay-cli response" in help_text + help_err}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
+    if opt("--clamp-grid", ""):
+        if not o["spp"]:
+            print("--clamp-grid needs --spp")
+            return 2
+        grid = [float(c) if c != "off" else 0.0 for c in opt("--clamp-grid", "").split(",")]
+        if "--dev" in argv:
+            sdir, _, names = benchlib.scene_rooms(opt("--rooms", ""), out)
+            return run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid, dev=True)
+        return run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid)
     rows = []
     if opt("--from-csv", ""):
         merged = {}

@@ -190,6 +190,15 @@ long long integer(const json& j, const std::string& path) {
   }
   fail(path, std::string("expected an integer, got ") + typeName(j));
 }
+// render.clamp_indirect: multiples of white (>= 0; 0 is off) or the string "off".
+double clampIndirect(const json& j, const std::string& path) {
+  const char* what = "a number of times white (0 or \"off\": no clamp; e.g. 4)";
+  if (j.is_string() && j.get<std::string>() == "off") return 0.0;
+  if (!j.is_number()) fail(path, std::string("expected ") + what + ", got " + j.dump());
+  const double v = j.get<double>();
+  if (!std::isfinite(v) || v < 0) fail(path, std::string("expected ") + what + ", got " + j.dump());
+  return v;
+}
 bool boolean(const json& j, const std::string& path) {
   if (!j.is_boolean()) fail(path, std::string("expected true or false, got ") + typeName(j));
   return j.get<bool>();
@@ -766,7 +775,7 @@ class Reader {
   void readRender(const json& j, RenderKeys& r) {
     const std::string p = "render";
     object(j, p);
-    knownKeys(j, p, {"spp", "seconds", "noise", "exposure", "seed", "grain"});
+    knownKeys(j, p, {"spp", "seconds", "noise", "exposure", "seed", "grain", "clamp_indirect"});
     if (j.contains("spp")) {
       const long long spp = integer(j["spp"], child(p, "spp"));
       if (spp < 1) fail(child(p, "spp"), "must be >= 1 (got " + std::to_string(spp) + ")");
@@ -790,6 +799,8 @@ class Reader {
       r.seed = unsigned(seed);
     }
     if (j.contains("grain")) r.grain = boolean(j["grain"], child(p, "grain"));
+    if (j.contains("clamp_indirect"))
+      r.clampIndirect = clampIndirect(j["clamp_indirect"], child(p, "clamp_indirect"));
   }
 
   std::string file_;
@@ -976,6 +987,7 @@ ojson renderJson(const RenderKeys& render) {
   r["exposure"] = render.exposure;
   r["seed"] = render.seed;
   r["grain"] = render.grain;
+  r["clamp_indirect"] = render.clampIndirect > 0 ? ojson(render.clampIndirect) : ojson("off");
   return r;
 }
 
