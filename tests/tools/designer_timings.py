@@ -12,7 +12,7 @@ GESTURES = [
     ("turn_handle_to_frame_ms", "turn handle drag to the current frame"),
     ("height_handle_to_frame_ms", "height handle drag to the current frame"),
     ("snap_drag_to_frame_ms", "drag to the wall (snapped) to the current frame"),
-    ("render_final_ms", "Render Final Image (8 spp, denoised) until written and shown"),
+    ("render_final_ms", "Render Final Image (2 spp, denoised) until written and shown"),
     ("undo_all_ms", "undo everything"),
     ("redo_all_ms", "redo everything"),
 ]
