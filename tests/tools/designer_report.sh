@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Everything issue #17's closing note shows, from a build of a clean clone:
+#   OUTDIR/guided_steps.png        the guided start's screenshots (box, light, library chair, final)
+#   OUTDIR/guided/                 its screenshots, figures.csv, final.png
 #   OUTDIR/designer_steps.png      the designer test's step screenshots on one contact sheet
 #   OUTDIR/designer/               the screenshots themselves, figures.csv, final.png
 #   OUTDIR/library_thumbnails.png  the model library's thumbnails, rendered by Inlay's renderer
@@ -39,7 +41,7 @@ if [[ ! -f "$INLAY_SHARED_DIR/york/P1020833.jpg" ]]; then
 fi
 
 targets=()
-wants steps && targets+=(studio_designer_test)
+wants steps && targets+=(studio_guided_test studio_designer_test)
 wants library && targets+=(inlay-make-library)
 wants bench && targets+=(bench_big_photo)
 if [[ ${#targets[@]} -gt 0 ]]; then
@@ -47,21 +49,27 @@ if [[ ${#targets[@]} -gt 0 ]]; then
   nice -n 5 cmake --build "$BUILD" -j2 --target "${targets[@]}" >&2
 fi
 
-# The designer test's walk (issue #17's steps on a York photo), then its contact sheet.
-if wants steps; then
-  say "running studio_designer_test (a few minutes)"
-  art="$BUILD/tests/studio_designer_artifacts"
+# A studio test's walk, then its screenshots on one contact sheet: the guided start (the box
+# accepted, a light outlined, a library chair dragged in, final, split, export) and the designer
+# test's (models inserted, dropped, arranged, final, export, undo and redo all).
+walk() {  # walk TEST FUNCTION NAME
+  local test=$1 function=$2 name=$3 art="$BUILD/tests/${1%_test}_artifacts"
+  say "running $test (a minute or more)"
   (cd "$BUILD/tests" && QT_QPA_PLATFORM=offscreen INLAY_SOURCE_DIR="$REPO" \
-    ./studio_designer_test modelsInsertDropArrangeUndoRedo > "$OUT/designer_test.log" 2>&1) || {
-    say "studio_designer_test failed: see $OUT/designer_test.log"
+    ./"$test" ${function:+"$function"} > "$OUT/${name}_test.log" 2>&1) || {
+    say "$test failed: see $OUT/${name}_test.log"
     exit 1
   }
-  rm -rf "$OUT/designer"
-  mkdir -p "$OUT/designer"
-  cp "$art"/[0-9][0-9]_*.png "$art/figures.csv" "$art/final.png" "$OUT/designer/"
-  montage -label '%t' "$OUT"/designer/[0-9][0-9]_*.png -tile 4x -geometry 640x400+6+6 \
-    -pointsize 15 -background white -depth 8 "$OUT/designer_steps.png"
-  say "wrote $OUT/designer_steps.png"
+  rm -rf "${OUT:?}/$name"
+  mkdir -p "$OUT/$name"
+  cp "$art"/[0-9][0-9]_*.png "$art/figures.csv" "$art/final.png" "$OUT/$name/"
+  montage -label '%t' "$OUT/$name"/[0-9][0-9]_*.png -tile 4x -geometry 640x400+6+6 \
+    -pointsize 15 -background white -depth 8 "$OUT/${name}_steps.png"
+  say "wrote $OUT/${name}_steps.png"
+}
+if wants steps; then
+  walk studio_guided_test "" guided
+  walk studio_designer_test modelsInsertDropArrangeUndoRedo designer
 fi
 
 # The library rebuilt and its thumbnails rendered into the bundled example by Inlay's renderer.

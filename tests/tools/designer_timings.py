@@ -1,6 +1,6 @@
 """The timing table of issue #17's closing note, in Markdown, from what designer_report.sh
-collected in OUTDIR: the designer test's steps (designer/figures.csv) and bench_big_photo's
-medians (bench/bench_big_photo_summary.csv).
+collected in OUTDIR: the guided start's and the designer test's steps (guided/figures.csv,
+designer/figures.csv) and bench_big_photo's medians (bench/bench_big_photo_summary.csv).
 
   /usr/bin/python3 tests/tools/designer_timings.py OUTDIR > OUTDIR/timings.md"""
 import csv, os, sys
@@ -12,7 +12,9 @@ GESTURES = [
     ("turn_handle_to_frame_ms", "turn handle drag to the current frame"),
     ("height_handle_to_frame_ms", "height handle drag to the current frame"),
     ("snap_drag_to_frame_ms", "drag to the wall (snapped) to the current frame"),
-    ("render_final_ms", "Render Final Image (2 spp, denoised) until written and shown"),
+    ("render_final_ms", "Render Final Image (denoised; 8 spp in the guided start, 2 in the walk) until written and shown"),
+    ("accept_box_and_light_prepared_ms", "the box accepted and a light outlined until prepared"),
+    ("library_chair_drop_ms", "a library chair dragged in until it stands there"),
     ("undo_all_ms", "undo everything"),
     ("redo_all_ms", "redo everything"),
 ]
@@ -23,9 +25,9 @@ def read_figures(path):
         return {r["figure"]: float(r["value"]) for r in csv.DictReader(f)}
 
 
-def designer_table(path):
+def walk_table(path, title):
     fig = read_figures(path)
-    lines = ["### The designer test's walk (`studio_designer_test`, a York photo, 640 × 480)", "",
+    lines = ["### %s, a York photo, 640 × 480" % title, "",
              "| step | seconds since the photo was opened |", "|---|---|"]
     for key, value in fig.items():
         if key.startswith("step_seconds_"):
@@ -65,7 +67,10 @@ def main():
         sys.exit(__doc__)
     out = sys.argv[1]
     lines = []
-    for name, table in [(os.path.join(out, "designer", "figures.csv"), designer_table),
+    guided = lambda path: walk_table(path, "The guided start (`studio_guided_test`)")
+    designer = lambda path: walk_table(path, "The designer test's walk (`studio_designer_test`)")
+    for name, table in [(os.path.join(out, "guided", "figures.csv"), guided),
+                        (os.path.join(out, "designer", "figures.csv"), designer),
                         (os.path.join(out, "bench", "bench_big_photo_summary.csv"), bench_table)]:
         if os.path.exists(name):
             lines += table(name) + [""]
