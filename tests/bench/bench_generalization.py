@@ -343,17 +343,26 @@ def print_clamp_pivot(rows):
             print("| %s_%s | %s |" % (v[0], v[1], " | ".join(cells)))
 
 
+def room_variants(tools, sdir, names, kinds, out, only=(), dev=False):
+    """(room, camera kind, the variant's folder) for every room and kind, in order; the variant
+    drawn (or reused) under OUT/variants. only: "room_kind" names to keep (empty: all). dev: the
+    rooms' own folders (the dev rooms' photos, no variant drawn)."""
+    for name in names:
+        for kind in kinds:
+            if only and "%s_%s" % (name, kind) not in only:
+                continue
+            yield name, kind, (os.path.join(sdir, name) if dev else variant(
+                tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind))
+
+
 def run_clamp_grid(cli, tools, sdir, names, kinds, out, o, grid, dev=False):
     """The --clamp-grid run over rooms x cameras (dev: the dev rooms' own photos, plain only)."""
     rows = []
-    for name in names:
-        for kind in (["plain"] if dev else kinds):
-            vdir = (os.path.join(sdir, name) if dev else
-                    variant(tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind))
-            for row in measure_clamp_grid(cli, tools, os.path.join(sdir, name), vdir, kind, out, o, grid):
-                rows.append(row)
-                print(json.dumps(row), flush=True)
-            benchlib.write_csv(os.path.join(out, "clamp_grid.csv"), rows)
+    for name, kind, vdir in room_variants(tools, sdir, names, ["plain"] if dev else kinds, out, dev=dev):
+        for row in measure_clamp_grid(cli, tools, os.path.join(sdir, name), vdir, kind, out, o, grid):
+            rows.append(row)
+            print(json.dumps(row), flush=True)
+        benchlib.write_csv(os.path.join(out, "clamp_grid.csv"), rows)
     if not rows:
         print("no rooms")
         return 1
@@ -527,15 +536,11 @@ def main():
         benchlib.write_csv(os.path.join(out, "generalization.csv"), rows)
         names = []
     only = set(filter(None, opt("--variants", "").split(",")))
-    for name in names:
-        for kind in kinds:
-            if only and "%s_%s" % (name, kind) not in only:
-                continue
-            vdir = variant(tools, os.path.join(sdir, name), os.path.join(out, "variants", "%s_%s" % (name, kind)), kind)
-            row = measure(cli, tools, os.path.join(sdir, name), vdir, kind, out, o)
-            rows.append(row)
-            print(json.dumps(row), flush=True)
-            benchlib.write_csv(os.path.join(out, "generalization.csv"), rows)
+    for name, kind, vdir in room_variants(tools, sdir, names, kinds, out, only):
+        row = measure(cli, tools, os.path.join(sdir, name), vdir, kind, out, o)
+        rows.append(row)
+        print(json.dumps(row), flush=True)
+        benchlib.write_csv(os.path.join(out, "generalization.csv"), rows)
     if not rows:
         print("no rooms")
         return 1
