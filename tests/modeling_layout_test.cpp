@@ -178,5 +178,150 @@ TEST(LayoutRules, ASillThatWouldMakeTheBox17mDeepIsRefused) {
   for (int i = 0; i < 4; ++i) EXPECT_LT((kept->backWallPx[i] - free->backWallPx[i]).norm(), 1e-6);
 }
 
+// Furniture tops (issue #16, York round), on segments in photo pixels: x lines (family 0) and
+// verticals (family 1).
+LineSegment seg(double ax, double ay, double bx, double by, int family) {
+  LineSegment s;
+  s.aPx = Vec2(ax, ay);
+  s.bPx = Vec2(bx, by);
+  s.family = family;
+  return s;
+}
+
+TEST(FurnitureTops, LegsHangFromATopAndDoorFramesStandOnACrease) {
+  const std::vector<LineSegment> segs = {
+      seg(100, 200, 300, 200, 0),  // a table's top, its two legs hanging from it
+      seg(110, 201, 110, 260, 1), seg(290, 202, 290, 262, 1),
+      seg(100, 300, 300, 301, 0),  // a floor crease, two door frames standing on it
+      seg(150, 180, 150, 299, 1), seg(200, 181, 200, 300, 1),
+      seg(400, 250, 600, 250, 0),  // a crease with a pillar in front of it, detected in two pieces
+      seg(500, 100, 500, 249, 1), seg(500, 252, 500, 400, 1),
+      seg(700, 350, 900, 350, 0),  // a crease on a glossy floor: a frame and its reflection
+      seg(750, 250, 750, 349, 1), seg(751, 351, 751, 420, 1),
+      seg(100, 420, 300, 420, 0),  // a line with no vertical near it (a rug's edge)
+  };
+  const std::vector<bool> top = detail::furnitureTops(segs, 4);
+  ASSERT_EQ(top.size(), segs.size());
+  EXPECT_TRUE(top[0]);
+  EXPECT_FALSE(top[3]);
+  EXPECT_FALSE(top[6]);
+  EXPECT_FALSE(top[9]);
+  EXPECT_FALSE(top[12]);
+  for (size_t i = 0; i < segs.size(); ++i) {
+    if (segs[i].family != 0) {
+      EXPECT_FALSE(top[i]) << i;
+    }
+  }
+  // More standing than hanging: a crease with a cabinet's leg reflected once but two frames on it.
+  std::vector<LineSegment> mixed = {seg(100, 300, 300, 300, 0), seg(120, 301, 120, 340, 1),
+                                    seg(150, 180, 150, 299, 1), seg(250, 150, 250, 299, 1)};
+  EXPECT_FALSE(detail::furnitureTops(mixed, 4)[0]);
+  // The user's lines are theirs: never a top.
+  mixed = {seg(100, 200, 300, 200, 0), seg(110, 201, 110, 260, 1)};
+  mixed[0].userGiven = true;
+  EXPECT_FALSE(detail::furnitureTops(mixed, 4)[0]);
+  EXPECT_TRUE(detail::furnitureTops({}, 4).empty());
+}
+
+// A 5 m wide, 2.7 m high room, its back wall 5 m ahead, seen whole above the floor (the
+// ceiling crease, the back wall's corners, ceiling panels) and the lines that fix the camera
+// (the left wall's window, floor tiles near the camera). The floor crease is added by each test.
+std::vector<LineSegment> roomWithoutFloorCrease(const Camera& c) {
+  Lines l{c, {}};
+  const double xl = -2.5, xr = 2.5, zb = -5, hc = 2.7;
+  l.add({xl, hc, zb}, {xr, hc, zb}, 0);
+  for (double x : {xl, xr}) l.add({x, 0.05, zb}, {x, hc, zb}, 1);
+  for (double x : {xl, xr}) l.add({x, hc, zb}, {x, hc, -2.5}, 2);
+  for (double z = -4.5; z <= -3; z += 0.5) l.add({xl + 0.3, hc, z}, {xr - 0.3, hc, z}, 0);
+  for (double x = -1.5; x <= 1.5; x += 1) l.add({x, hc, zb + 0.2}, {x, hc, -3}, 2);
+  for (double y : {1.0, 2.1}) l.add({xl, y, -4.5}, {xl, y, -3.5}, 2);
+  for (double z : {-4.5, -3.5}) l.add({xl, 1.0, z}, {xl, 2.1, z}, 1);
+  for (double x = -1.5; x <= 1.5; x += 1) l.add({x, 0, -2.6}, {x, 0, -1.6}, 2);
+  return l.segs;
+}
+
+// A sofa against the back wall, 4.4 m wide, 0.85 m high and 0.9 m deep, hides all but the
+// ends of the floor crease; its seat's front edge and its back's top are long x lines, its arms' front edges hang
+// from it to the floor. With `arms` false only its top is seen.
+void addSofa(const Camera& c, std::vector<LineSegment>& segs, bool arms) {
+  Lines l{c, {}};
+  const double zb = -5, zf = -4.1, hs = 0.85;
+  l.add({-2.2, hs, zf}, {2.2, hs, zf}, 0);
+  l.add({-2.2, hs + 0.1, zb + 0.15}, {2.2, hs + 0.1, zb + 0.15}, 0);
+  if (arms)
+    for (double x : {-2.2, -1.9, 1.9, 2.2}) l.add({x, hs - 0.02, zf}, {x, 0.02, zf}, 1);
+  for (double x0 : {-2.5, 2.25}) l.add({x0, 0, zb}, {x0 + 0.25, 0, zb}, 0);
+  for (double x : {-2.5, 2.5}) l.add({x, 0, zb}, {x, 0, -3.6}, 2);
+  segs.insert(segs.end(), l.segs.begin(), l.segs.end());
+}
+
+detail::BoxSize boxOf(const Expected<CameraEstimate>& e) {
+  return e.ok() ? detail::boxSizeOf(e->camera, e->backWallPx) : detail::BoxSize{};
+}
+
+bool warned(const CameraEstimate& e, const std::string& part) {
+  for (const std::string& w : e.warnings)
+    if (w.find(part) != std::string::npos) return true;
+  return false;
+}
+
+TEST(FloorCrease, ASofaHidingTheCreaseIsNotTakenForIt) {
+  const Camera c = roomCamera();
+  std::vector<LineSegment> segs = roomWithoutFloorCrease(c);
+  addSofa(c, segs, true);
+  const auto e = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  const detail::BoxSize got = boxOf(e),
+                        want = detail::boxSizeOf(e->camera, cornersOf(c, -2.5, 2.5, -5, 2.7));
+  ASSERT_TRUE(got.ok && want.ok);
+  EXPECT_NEAR(got.depthM, want.depthM, 0.05 * want.depthM) << "focal " << e->camera.focalPx;
+  EXPECT_FALSE(warned(*e, "no floor crease is seen")) << ::testing::PrintToString(e->warnings);
+  // Its arms not seen (nothing hangs from the seat: no top), the crease's pieces, the side
+  // walls' floor creases and the back wall's corners still outweigh the seat on these lines.
+  std::vector<LineSegment> topOnly = roomWithoutFloorCrease(c);
+  addSofa(c, topOnly, false);
+  const auto t = estimateCameraFromSegments(640, 480, topOnly);
+  ASSERT_TRUE(t.ok()) << t.error().message();
+  EXPECT_NEAR(boxOf(t).depthM, want.depthM, 0.05 * want.depthM);
+}
+
+TEST(FloorCrease, APillarInFrontOfTheCreaseLeavesItWhereItIs) {
+  const Camera c = roomCamera();
+  std::vector<LineSegment> segs = roomWithoutFloorCrease(c);
+  Lines l{c, {}};
+  // The crease seen left and right of a 0.6 m pillar 2 m in front of the wall; the pillar's
+  // edges run from the floor to the ceiling, crossing the crease in the photo.
+  l.add({-2.5, 0, -5}, {-0.4, 0, -5}, 0);
+  l.add({0.5, 0, -5}, {2.5, 0, -5}, 0);
+  for (double x : {-0.3, 0.3}) l.add({x, 0.02, -3}, {x, 2.68, -3}, 1);
+  segs.insert(segs.end(), l.segs.begin(), l.segs.end());
+  const auto e = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  const detail::BoxSize got = boxOf(e),
+                        want = detail::boxSizeOf(e->camera, cornersOf(c, -2.5, 2.5, -5, 2.7));
+  ASSERT_TRUE(got.ok && want.ok);
+  EXPECT_NEAR(got.depthM, want.depthM, 0.05 * want.depthM);
+  EXPECT_GT(got.widthM, 3.0);  // not a sliver between the pillar's edges
+  EXPECT_FALSE(warned(*e, "no floor crease is seen"));
+}
+
+TEST(FloorCrease, NoCreaseAtAllIsAWarningNamingTheCorners) {
+  const Camera c = roomCamera();
+  const auto e = estimateCameraFromSegments(640, 480, roomWithoutFloorCrease(c));
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  for (const Vec2& p : e->backWallPx) EXPECT_TRUE(p.allFinite());
+  ASSERT_TRUE(warned(*e, "box layout: no floor crease is seen"))
+      << ::testing::PrintToString(e->warnings) << " " << boxOf(e).depthM << " "
+      << e->backWallPx[2].transpose() << " " << e->backWallPx[3].transpose();
+  EXPECT_TRUE(warned(*e, "drag the back wall's bottom corners"));
+  // A placed crease is the user's: no warning.
+  EstimateCorrection placed;
+  placed.backWallCornersPx[2] = e->backWallPx[2];
+  placed.backWallCornersPx[3] = e->backWallPx[3];
+  const auto kept = correctEstimate(*e, placed);
+  ASSERT_TRUE(kept.ok()) << kept.error().message();
+  EXPECT_FALSE(warned(*kept, "no floor crease is seen"));
+}
+
 }  // namespace
 }  // namespace inlay

@@ -806,6 +806,7 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   e.layoutScore = lr.ok ? lr.score01 : 0.0;
   if (!lr.ok) e.warnings.push_back("box layout: " + lr.problem + "; the back wall is a default");
   if (!lr.refused.empty()) e.warnings.push_back("box layout: " + lr.refused);
+  if (!lr.unseenCrease.empty()) e.warnings.push_back("box layout: " + lr.unseenCrease);
   // A box the room builder accepts, or an ordinary room in front of the camera.
   if (!roomFromBackWall(e.camera, e.backWallPx).ok()) {
     bool anyFixed = false;

@@ -68,6 +68,13 @@ bool dehom(const Vec3& h, Vec2& out) {
   return out.allFinite();
 }
 
+// A vertical edge's end within this many layout pixels of a horizontal segment meets it
+// (furnitureTops).
+constexpr double kTopTolLayoutPx = 3;
+// Verticals whose line passes this share of the diagonal from the forward vanishing point
+// could be a floor's receding lines: they say nothing about furniture tops.
+constexpr double kForwardShare = 0.03;
+
 // A crease seen only as contrast counts a little less than a detected segment.
 constexpr double kContrastWeight = 0.8;
 
@@ -207,8 +214,9 @@ class LayoutSearch {
   struct Score {
     double total = -1e300;
     double edgeSupported = 0, edgeVisible = 0, regionSigned = 0, regionTotal = 0;
-    double topSupported = 0, topVisible = 0;  // the back wall's top edge alone
-    double ceilingZ = 0, ceilingY = 0;        // receding and vertical line samples on the ceiling
+    double topSupported = 0, topVisible = 0;        // the back wall's top edge alone
+    double bottomSupported = 0, bottomVisible = 0;  // its bottom edge, the floor crease
+    double ceilingZ = 0, ceilingY = 0;              // receding and vertical line samples on the ceiling
   };
 
   // Whether the photo shows the box's top edge as a ceiling crease: at least half of its visible
@@ -261,6 +269,10 @@ class LayoutSearch {
       if (i == 0) {
         s.topSupported = sup;
         s.topVisible = len;
+      }
+      if (i == 2) {
+        s.bottomSupported = sup;
+        s.bottomVisible = len;
       }
     }
     // Faces: inside the quad is the back wall, else the sector around vz between corner rays.
@@ -333,10 +345,12 @@ class LayoutSearch {
     if (memo.valid && memo.full == full && memo.a == a && memo.b == b) return memo.value;
     const double len = (b - a).norm();
     const int n = std::max(2, int(len / 4.0));
-    const double floor = full ? kContrastWeight * contrastAlong(f, a, b) : 0.0;
+    // Slot 2 is the back wall's bottom edge, the floor crease: no furniture top supports it.
+    const bool crease = slot == 2;
+    const double floor = full ? kContrastWeight * contrastAlong(f, a, b, false, crease) : 0.0;
+    const EvidenceMap& ev = crease ? floorEvidence_ : evidence_[f];
     double sum = 0;
-    for (int k = 0; k < n; ++k)
-      sum += std::max(floor, double(evidence_[f].at(a + (b - a) * ((k + 0.5) / n))));
+    for (int k = 0; k < n; ++k) sum += std::max(floor, double(ev.at(a + (b - a) * ((k + 0.5) / n))));
     memo = {true, full, a, b, sum / n * len};
     return memo.value;
   }
@@ -362,7 +376,7 @@ class LayoutSearch {
       Vec2 a = (base - 4 * diag_ * dir.normalized()) * ws_,
            b = (base + 4 * diag_ * dir.normalized()) * ws_;
       double sum = 0;
-      if (clipToRect(a, b, W_ * ws_, H_ * ws_)) sum = contrastAlong(i < 2 ? 0 : 1, a, b, true);
+      if (clipToRect(a, b, W_ * ws_, H_ * ws_)) sum = contrastAlong(i < 2 ? 0 : 1, a, b, true, i == 1);
       prof.push_back({t, sum});
     }
     std::vector<std::pair<double, double>> peaks;  // (sum, param)
@@ -379,14 +393,16 @@ class LayoutSearch {
   // lineContrast of the segment a-b (layout pixels) of a family-f line.
   // longestRun: instead, the length (layout pixels) of its longest stretch that is an edge (a
   // line through the photo crosses other surfaces beyond the back wall's corners).
-  double contrastAlong(int f, const Vec2& a, const Vec2& b, bool longestRun = false) const {
+  // floorCrease: the floor crease's contrast (floorAcross_; f is 0).
+  double contrastAlong(int f, const Vec2& a, const Vec2& b, bool longestRun = false,
+                       bool floorCrease = false) const {
     if (across_[f].empty()) return 0;
     const double len = (b - a).norm();
     const int n = int(len / kContrastStepPx);
     if (n < 2) return 0;
     std::vector<float>& v = scratch_;
     v.clear();
-    const cv::Mat& m = across_[f];
+    const cv::Mat& m = floorCrease && !floorAcross_.empty() ? floorAcross_ : across_[f];
     for (int k = 0; k < n; ++k) {
       const Vec2 q = a + (b - a) * ((k + 0.5) / n);
       const int x = std::clamp(int(q.x()), 0, m.cols - 1), y = std::clamp(int(q.y()), 0, m.rows - 1);
@@ -435,42 +451,66 @@ class LayoutSearch {
     }
   }
 
-  void buildEvidence() {
-    markBright();
-    const int w = std::max(1, int(std::lround(W_ * ws_))), h = std::max(1, int(std::lround(H_ * ws_)));
-    for (int f = 0; f < 3; ++f) {
-      cv::Mat mask(h, w, CV_8U, cv::Scalar(255));
+  // The evidence map of family f (evidence_): exp(-d^2 / 2 sigma^2) of the distance to the
+  // family's segments and, for x and y, to the far ends of receding lines. floorCrease: for the
+  // back wall's bottom edge, without the furniture's tops (furnitureTops).
+  cv::Mat evidenceOf(int f, int w, int h, bool floorCrease) const {
+    cv::Mat mask(h, w, CV_8U, cv::Scalar(255));
+    for (size_t i = 0; i < in_.segments->size(); ++i) {
+      const LineSegment& s = (*in_.segments)[i];
+      if (s.family == f && !s.userGiven && !bright_[i] && !(floorCrease && top_[i]))
+        cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
+                 cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
+    }
+    // Receding (z) lines of a floor, ceiling or side wall end where the back wall begins:
+    // their far ends mark the back wall's edges, drawn as short x strokes (top and bottom
+    // edges) and y strokes (side edges).
+    if (f == 0 || f == 1)
       for (size_t i = 0; i < in_.segments->size(); ++i) {
         const LineSegment& s = (*in_.segments)[i];
-        if (s.family == f && !s.userGiven && !bright_[i])
-          cv::line(mask, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
-                   cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(0), 1);
+        if (s.family != 2 || s.userGiven || bright_[i]) continue;
+        const Vec2 far = farEnd(s);
+        const Vec3& hv = f == 0 ? hx_ : hy_;
+        Vec2 dir(hv.x() - far.x() * hv.z(), hv.y() - far.y() * hv.z());
+        if (dir.norm() < 1e-12) continue;
+        dir = dir.normalized() * (4.0 / ws_);
+        const Vec2 a = (far - dir) * ws_, b = (far + dir) * ws_;
+        cv::line(mask, cv::Point2d(a.x() - 0.5, a.y() - 0.5), cv::Point2d(b.x() - 0.5, b.y() - 0.5),
+                 cv::Scalar(0), 1);
       }
-      // Receding (z) lines of a floor, ceiling or side wall end where the back wall begins:
-      // their far ends mark the back wall's edges, drawn as short x strokes (top and bottom
-      // edges) and y strokes (side edges).
-      if (f == 0 || f == 1)
-        for (size_t i = 0; i < in_.segments->size(); ++i) {
-          const LineSegment& s = (*in_.segments)[i];
-          if (s.family != 2 || s.userGiven || bright_[i]) continue;
-          const Vec2 far = farEnd(s);
-          const Vec3& hv = f == 0 ? hx_ : hy_;
-          Vec2 dir(hv.x() - far.x() * hv.z(), hv.y() - far.y() * hv.z());
-          if (dir.norm() < 1e-12) continue;
-          dir = dir.normalized() * (4.0 / ws_);
-          const Vec2 a = (far - dir) * ws_, b = (far + dir) * ws_;
-          cv::line(mask, cv::Point2d(a.x() - 0.5, a.y() - 0.5), cv::Point2d(b.x() - 0.5, b.y() - 0.5),
-                   cv::Scalar(0), 1);
-        }
-      cv::Mat dist;
-      cv::distanceTransform(mask, dist, cv::DIST_L2, 3);
-      constexpr double kSigma = 1.2;  // working pixels
-      cv::Mat e;
-      cv::multiply(dist, dist, e, -1.0 / (2 * kSigma * kSigma));
-      cv::exp(e, evidence_[f].e);
+    cv::Mat dist;
+    cv::distanceTransform(mask, dist, cv::DIST_L2, 3);
+    constexpr double kSigma = 1.2;  // working pixels
+    cv::Mat e;
+    cv::multiply(dist, dist, e, -1.0 / (2 * kSigma * kSigma));
+    cv::exp(e, e);
+    return e;
+  }
+
+  // The contrast across x lines for the floor crease: none within 2 layout pixels of a
+  // furniture top (its edge is the top's, not the crease's).
+  void buildFloorAcross() {
+    floorAcross_ = across_[0].clone();
+    cv::Mat near(floorAcross_.size(), CV_8U, cv::Scalar(0));
+    for (size_t i = 0; i < in_.segments->size(); ++i) {
+      if (!top_[i]) continue;
+      const LineSegment& s = (*in_.segments)[i];
+      cv::line(near, cv::Point2d(s.aPx.x() * ws_ - 0.5, s.aPx.y() * ws_ - 0.5),
+               cv::Point2d(s.bPx.x() * ws_ - 0.5, s.bPx.y() * ws_ - 0.5), cv::Scalar(255), 5);
     }
-    if (in_.edges && in_.edges->gx.cols == w && in_.edges->gx.rows == h)
+    floorAcross_.setTo(0.f, near);
+  }
+
+  void buildEvidence() {
+    markBright();
+    top_ = furnitureTops(*in_.segments, kTopTolLayoutPx / ws_, vz_, kForwardShare * diag_);
+    const int w = std::max(1, int(std::lround(W_ * ws_))), h = std::max(1, int(std::lround(H_ * ws_)));
+    for (int f = 0; f < 3; ++f) evidence_[f].e = evidenceOf(f, w, h, false);
+    floorEvidence_.e = evidenceOf(0, w, h, true);
+    if (in_.edges && in_.edges->gx.cols == w && in_.edges->gx.rows == h) {
       for (int f = 0; f < 3; ++f) buildAcross(f);
+      buildFloorAcross();
+    }
     // Samples every 4 working pixels, at most about 400 in all.
     double total = 0;
     for (const LineSegment& s : *in_.segments)
@@ -541,7 +581,10 @@ class LayoutSearch {
   Vec2 vz_, uX_, uY_;
   std::array<double, 4> lo_{}, hi_{}, default_{}, outside_{};
   EvidenceMap evidence_[3];
-  cv::Mat across_[3];  // per family: the gradient across that family's line through each pixel
+  EvidenceMap floorEvidence_;  // family 0 without the furniture's tops: the floor crease's
+  cv::Mat across_[3];
+  cv::Mat
+      floorAcross_;  // across_[0] without the furniture's tops  // per family: the gradient across that family's line through each pixel
   mutable std::vector<float> scratch_;
   struct EdgeMemo {
     bool valid = false, full = false;
@@ -550,6 +593,7 @@ class LayoutSearch {
   };
   mutable std::array<EdgeMemo, 8> memo_;  // edgeSupport's last value per edge slot
   std::vector<bool> bright_;              // per segment: outlines a saturated patch (markBright)
+  std::vector<bool> top_;                 // per segment: a furniture top (furnitureTops)
   std::vector<Sample> samples_;
 };
 
@@ -827,6 +871,22 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   return true;
 }
 
+// When the automatic box's floor crease is in view but nothing in the photo marks it (every
+// candidate hidden behind furniture, or no horizontal line below the horizon at all): a
+// sentence for CameraEstimate::warnings naming the corners to drag; empty otherwise.
+std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<Vec2, 4>& c) {
+  constexpr double kSeenShare = 0.05;  // a twentieth of the edge on a line or a step in brightness
+  if (!(s.bottomVisible > 0) || s.bottomSupported >= kSeenShare * s.bottomVisible) return {};
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "no floor crease is seen along the back wall's bottom edge (%.0f%% of it on a line "
+                "or an edge in the photo): the room's depth is a guess; drag the back wall's "
+                "bottom corners, now at (%.0f, %.0f) and (%.0f, %.0f), onto the crease where the "
+                "floor meets the far wall",
+                100 * s.bottomSupported / s.bottomVisible, c[3].x(), c[3].y(), c[2].x(), c[2].y());
+  return buf;
+}
+
 // The share of the box the photo supports: its visible edges' support and its faces' agreement
 // with the line orientation.
 double supportedShare(const LayoutSearch::Score& best) {
@@ -836,6 +896,66 @@ double supportedShare(const LayoutSearch::Score& best) {
 }
 
 }  // namespace
+
+namespace {
+
+// Whether segment v's line passes within `px` of the forward vanishing point: below it, a floor's
+// receding lines (tiles, boards) look vertical and may have been taken for verticals.
+bool alongForward(const LineSegment& v, const std::optional<Vec2>& forwardPx, double px) {
+  if (!forwardPx) return false;
+  const Vec2 d = v.bPx - v.aPx;
+  const double len = d.norm();
+  if (!(len > 0)) return false;
+  const Vec2 r = *forwardPx - v.aPx;
+  return std::abs(d.x() * r.y() - d.y() * r.x()) / len < px;
+}
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+}  // namespace
+
+std::vector<bool> furnitureTops(const std::vector<LineSegment>& segs, double tolPx,
+                                const std::optional<Vec2>& forwardPx, double ambiguousPx) {
+  std::vector<bool> top(segs.size(), false);
+  struct End {
+    Vec2 at;
+    double length;
+  };
+  for (size_t i = 0; i < segs.size(); ++i) {
+    const LineSegment& s = segs[i];
+    if (s.family != 0 || s.userGiven) continue;
+    std::vector<End> hanging, standing;
+    for (const LineSegment& v : segs) {
+      if (v.family != 1 || v.userGiven || alongForward(v, forwardPx, ambiguousPx)) continue;
+      // Image y grows downwards: `up` is the vertical's upper end, `down` its lower.
+      const bool aUp = v.aPx.y() < v.bPx.y();
+      const Vec2& up = aUp ? v.aPx : v.bPx;
+      const Vec2& down = aUp ? v.bPx : v.aPx;
+      const double du = distanceToSegment(up, s.aPx, s.bPx), dd = distanceToSegment(down, s.aPx, s.bPx);
+      if (du <= tolPx && dd > tolPx) hanging.push_back({up, v.lengthPx()});
+      else if (dd <= tolPx && du > tolPx) standing.push_back({down, v.lengthPx()});
+    }
+    // A vertical split where it crosses the segment (a pillar in front of it; on a glossy
+    // floor, a door frame and its reflection) is one edge crossing: it counts for neither.
+    double hangs = 0, stands = 0;
+    std::vector<bool> paired(standing.size(), false);
+    for (const End& h : hanging) {
+      bool crossing = false;
+      for (size_t k = 0; k < standing.size() && !crossing; ++k)
+        if (!paired[k] && (standing[k].at - h.at).norm() <= 2 * tolPx) crossing = paired[k] = true;
+      if (!crossing) hangs += h.length;
+    }
+    for (size_t k = 0; k < standing.size(); ++k)
+      if (!paired[k]) stands += standing[k].length;
+    top[i] = hangs > stands;
+  }
+  return top;
+}
 
 BoxSize boxSizeOf(const Camera& cam, const std::array<Vec2, 4>& c) {
   BoxSize b;
@@ -942,6 +1062,7 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   out.cornersPx = c;
   out.ok = true;
   out.score01 = supportedShare(best.first);
+  if (!lp.isFixed[1] && !in.startCornersPx) out.unseenCrease = unseenCreaseWarning(best.first, c);
   return out;
 }
 

@@ -3,10 +3,13 @@
 #pragma once
 
 #include "inlay/modeling/camera.h"
+#include "inlay/modeling/line_segment.h"
 
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace inlay::detail {
 
@@ -63,5 +66,20 @@ struct Implausible {
 };
 Implausible implausibility(const Camera& camera, const std::array<Vec2, 4>& cornersPx, bool showsCeiling,
                            const BoxRules& rules, bool replacing = false);
+
+// Which horizontal (family 0) segments are the tops of furniture rather than a floor crease
+// (issue #16, York round). Things stand on a floor crease: the vertical (family 1) edges that
+// meet a crease end there from above (a door's frame, a cabinet against the wall, the wall's own
+// corner). From a table's or a shelf's top, a sill or a counter, vertical edges hang down (legs,
+// sides, a cabinet's front) and end lower, on the floor in front of the wall. A segment is a top
+// when more length of vertical edges hangs from it than stands on it: an end of the vertical
+// within tolPx of the segment, the vertical reaching at least tolPx further on its other side.
+// Verticals that cross a segment (a pillar or a chair in front of the crease) count for
+// neither, and so do verticals whose line passes within ambiguousPx of the forward vanishing
+// point forwardPx (below it a tiled floor's receding lines look vertical: the checkered
+// training rooms). Per segment; false for other families and for the user's lines.
+std::vector<bool> furnitureTops(const std::vector<LineSegment>& segments, double tolPx,
+                                const std::optional<Vec2>& forwardPx = std::nullopt,
+                                double ambiguousPx = 0);
 
 }  // namespace inlay::detail
