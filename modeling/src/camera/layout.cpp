@@ -874,19 +874,24 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
 // When the automatic box's floor crease is in view but nothing in the photo marks it (every
 // candidate hidden behind furniture, or no horizontal line below the horizon at all): a
 // sentence for CameraEstimate::warnings naming the corners to drag; empty otherwise.
-std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<Vec2, 4>& c) {
+std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<Vec2, 4>& c, double W,
+                                double H) {
   // Under 2 % of the edge on a line or a step in brightness. Chosen on York half A: no box a user
   // accepts warns (a facade's faint base along a sidewalk, P1080005, has 3 %).
   constexpr double kSeenShare = 0.02;
   if (!(s.bottomVisible > 0) || s.bottomSupported >= kSeenShare * s.bottomVisible) return {};
-  char buf[400];
-  std::snprintf(buf, sizeof buf,
-                "no floor crease is seen along the back wall's bottom edge (%.0f%% of it on a line "
-                "or an edge in the photo): the room's depth is a guess; drag the back wall's "
-                "bottom corners, now at (%.0f, %.0f) and (%.0f, %.0f), onto the crease where the "
-                "floor meets the far wall",
-                100 * s.bottomSupported / s.bottomVisible, c[3].x(), c[3].y(), c[2].x(), c[2].y());
-  return buf;
+  auto where = [&](const Vec2& p) {
+    char b[96];
+    const bool inside = p.x() >= 0 && p.y() >= 0 && p.x() <= W && p.y() <= H;
+    std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", p.x(), p.y(), inside ? "" : ", outside the photo");
+    return std::string(b);
+  };
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%.0f%%", 100 * s.bottomSupported / s.bottomVisible);
+  return "no floor crease is seen along the back wall's bottom edge (" + std::string(buf) +
+         " of it on a line or an edge in the photo): the room's depth is a guess; drag the back "
+         "wall's bottom corners, now at " +
+         where(c[3]) + " and " + where(c[2]) + ", onto the crease where the floor meets the far wall";
 }
 
 // The share of the box the photo supports: its visible edges' support and its faces' agreement
@@ -1064,7 +1069,7 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   out.cornersPx = c;
   out.ok = true;
   out.score01 = supportedShare(best.first);
-  if (!lp.isFixed[1] && !in.startCornersPx) out.unseenCrease = unseenCreaseWarning(best.first, c);
+  if (!lp.isFixed[1] && !in.startCornersPx) out.unseenCrease = unseenCreaseWarning(best.first, c, W, H);
   return out;
 }
 
