@@ -83,6 +83,13 @@ def main():
     r = run(cli, "response", photo, "-o", out, "--quiet", "--cue", "noise", "--noise-quantile", "0.25")
     check("response --noise-quantile 0.25", r.returncode == 0 and json.load(open(out))["estimate"]["noise_quantile"] == 0.25,
           r.stderr)
+    for d in ("-0.1", "1.5", "nan", "x"):
+        r = run(cli, "response", photo, "-o", out, "--max-dark-fill", d)
+        check("response bad --max-dark-fill " + d, r.returncode == 2 and "--max-dark-fill" in r.stderr, r.stderr)
+    r = run(cli, "response", photo, "-o", out, "--quiet", "--max-dark-fill", "0.12")
+    est = json.load(open(out)).get("estimate", {}) if r.returncode == 0 else {}
+    check("response --max-dark-fill 0.12", est.get("max_dark_fill") == 0.12 and 0 <= est.get("dark_fill", -1) <= 1
+          and isinstance(est.get("dark_fill_evidence"), bool), r.stderr + json.dumps(est)[:300])
 
     # The README's first command: `demo` renders the bundled example wherever it is run from.
     demo = os.path.join(tmp, "example.png")

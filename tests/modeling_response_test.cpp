@@ -477,6 +477,96 @@ TEST(ResponseEstimate, AHeavilyClippedPhotoIsUndeterminedWithAWarning) {
   expectRefusedByEveryCue(photo, "clipped");  // the photo is refused before any cue
 }
 
+// The shadows' contrast evidence (ResponseEstimateOptions::maxDarkFill): darkFill is the 1st
+// percentile of the sRGB-decoded luminance over the median. 5 % of the rows at code 30, the rest
+// a ramp from code 100 to 200 (its median near code 148): darkFill is srgb(30) / srgb(~148).
+TEST(ResponseEstimate, DarkFillIsTheShadowsPercentileOverTheMedian) {
+  const int W = 202, H = 200;
+  ImageF photo(W, H, 3);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      photo.setRgb(x, y, Vec3::Constant(srgbToLinear(float(y < H / 20 ? 30 : 100 + x / 2) / 255.f)));
+  const ResponseEstimate e = estimateResponse(photo);  // noise-free: undetermined, darkFill set
+  expectSane(e);
+  const double dark = srgbToLinear(30 / 255.f);
+  EXPECT_GE(e.darkFill, dark / srgbToLinear(150 / 255.f));
+  EXPECT_LE(e.darkFill, dark / srgbToLinear(146 / 255.f));
+  EXPECT_FALSE(e.darkFillEvidence);
+}
+
+// With the contrast evidence on, a photo whose shadows are darker than maxDarkFill gets the noise
+// cue's curve although sRGB's residual is below the evidence gate, and only then; the smaller
+// improvement it needs (darkFillMinImprovement) is still needed. Off by default.
+TEST(ResponseEstimate, DarkShadowsOpenTheEvidenceGateOnlyWhenAskedFor) {
+  const ImageF photo = syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.0, 8.0}), 0.02, 22);
+  ResponseEstimateOptions o;
+  o.cue = ResponseEstimateOptions::Cue::Noise;
+  o.minSrgbResidual = 0;
+  const ResponseEstimate free = estimateResponse(photo, o);
+  ASSERT_EQ(free.decision, "fitted");
+  ASSERT_GT(free.darkFill, 0);
+  ASSERT_LT(free.darkFill, 1);
+  const double improvement = 1 - free.objective / free.srgbObjective;
+
+  o.minSrgbResidual = 1.01 * free.srgbObjective;  // the gate closed
+  EXPECT_EQ(estimateResponse(photo, o).response, CameraResponse::srgb()) << "off by default";
+  o.maxDarkFill = 1.01 * free.darkFill;  // the shadows darker than that: evidence
+  const ResponseEstimate dark = estimateResponse(photo, o);
+  expectSane(dark);
+  EXPECT_EQ(dark.response, free.response);
+  EXPECT_EQ(dark.decision, "fitted");
+  EXPECT_TRUE(dark.darkFillEvidence);
+  EXPECT_TRUE(dark.warnings.empty());
+
+  o.maxDarkFill = 0.99 * free.darkFill;  // the shadows as light as that: no evidence
+  const ResponseEstimate light = estimateResponse(photo, o);
+  expectSane(light);
+  EXPECT_EQ(light.response, CameraResponse::srgb());
+  EXPECT_FALSE(light.darkFillEvidence);
+  ASSERT_EQ(light.warnings.size(), 1u);
+  EXPECT_NE(light.warnings[0].find("evidence"), std::string::npos) << light.warnings[0];
+
+  o.maxDarkFill = 1.01 * free.darkFill;
+  o.darkFillMinImprovement = std::min(0.99, improvement + 0.01);  // the fit not good enough
+  const ResponseEstimate weak = estimateResponse(photo, o);
+  EXPECT_EQ(weak.response, CameraResponse::srgb());
+  EXPECT_EQ(weak.decision.rfind("kept sRGB", 0), 0u) << weak.decision;
+
+  ResponseEstimateOptions edges;  // the edge cues do not use it
+  edges.cue = ResponseEstimateOptions::Cue::Colour;
+  edges.maxDarkFill = 1;
+  EXPECT_FALSE(estimateResponse(photo, edges).darkFillEvidence);
+}
+
+// Stiff cases: a photo black at its median (refused as clipped before the dark fill is taken:
+// it stays 1, no evidence) and a noisy photo whose darkest 5 % is code 0 (darkFill 0, the
+// evidence at its extreme, the only thing that opens the gate): finite, monotone curves.
+TEST(ResponseEstimate, DarkFillAtItsExtremesGivesSaneCurves) {
+  ImageF black = syntheticPhoto(CameraResponse::srgb(), 0.02, 9);
+  for (int y = 0; y < black.height; ++y)
+    for (int x = 0; x < black.width * 3 / 5; ++x) black.setRgb(x, y, Vec3::Zero());
+  ResponseEstimateOptions o;
+  o.cue = ResponseEstimateOptions::Cue::Noise;
+  o.maxDarkFill = 0.5;
+  const ResponseEstimate b = estimateResponse(black, o);
+  expectSane(b);
+  EXPECT_FALSE(b.determined);
+  EXPECT_EQ(b.darkFill, 1);
+  EXPECT_FALSE(b.darkFillEvidence);
+
+  ImageF deep = syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.0, 8.0}), 0.02, 10);
+  for (int y = 0; y < deep.height / 20; ++y)
+    for (int x = 0; x < deep.width; ++x) deep.setRgb(x, y, Vec3::Zero());
+  o.maxDarkFill = 1;
+  o.minSrgbResidual = 1e9;  // only the dark fill can open the gate
+  o.darkFillMinImprovement = 0;
+  const ResponseEstimate d = estimateResponse(deep, o);
+  expectSane(d);
+  EXPECT_EQ(d.darkFill, 0);
+  EXPECT_TRUE(d.darkFillEvidence) << d.decision;
+  EXPECT_TRUE(std::isfinite(d.srgbObjective));
+}
+
 TEST(ResponseEstimate, APhotoWithoutStraightEdgesIsUndeterminedWithAWarning) {
   // A smooth gradient: many grey levels, no edges.
   const std::string warning = warningOnASmoothRamp(ResponseEstimateOptions::Cue::Colour);

@@ -44,7 +44,7 @@ constexpr const char* kUsage = R"(Usage:
                                                      back wall; --scene keeps what it fixes
   inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
                    [--min-improvement F] [--min-srgb-residual R] [--noise-quantile Q]
-                   [--max-top-stops S] [--evaluate-at P,T,S]
+                   [--max-top-stops S] [--max-dark-fill D] [--evaluate-at P,T,S]
                                                      the camera response (camera.response, or
                                                      estimated from the photo): family,
                                                      parameters, warnings and the 256 codes'
@@ -144,7 +144,7 @@ struct Args {
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, surfaceAlbedo, cue,
       report;  // cue: empty = the default
-  std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops;
+  std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations;
@@ -191,7 +191,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
-        s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect") {
+        s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
+        s == "--max-dark-fill") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -222,6 +223,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       } else if (s == "--max-top-stops") {
         a.maxTopStops = parseNumber<double>(*v);
         if (!a.maxTopStops) return "--max-top-stops: '" + *v + "' is not a non-negative number of stops";
+      } else if (s == "--max-dark-fill") {
+        a.maxDarkFill = parseNumber<double>(*v);
+        if (!a.maxDarkFill || *a.maxDarkFill > 1)
+          return "--max-dark-fill: '" + *v + "' is not a number in [0, 1] (0: off)";
       } else if (s == "--noise-quantile") {
         a.noiseQuantile = parseNumber<double>(*v);
         if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
@@ -739,6 +744,7 @@ int commandResponse(const std::string& input, const Args& a) {
   if (a.minSrgbResidual) o.minSrgbResidual = *a.minSrgbResidual;
   if (a.noiseQuantile) o.noiseQuantile = *a.noiseQuantile;
   if (a.maxTopStops) o.maxTopStops = *a.maxTopStops;
+  if (a.maxDarkFill) o.maxDarkFill = *a.maxDarkFill;
   if (!a.evaluateAt.empty()) {
     ResponseParams q;
     if (std::sscanf(a.evaluateAt.c_str(), "%lf,%lf,%lf", &q.power, &q.toe, &q.shoulder) != 3)
@@ -789,6 +795,10 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"noise_quantile", o.noiseQuantileOrDefault()},
                      {"max_top_stops", o.maxTopStops},
                      {"min_top_levels", o.minTopLevels},
+                     {"max_dark_fill", o.maxDarkFill.value_or(0.0)},
+                     {"dark_fill_min_improvement", o.darkFillMinImprovement},
+                     {"dark_fill", e.darkFill},
+                     {"dark_fill_evidence", e.darkFillEvidence},
                      {"edges_used", e.edgesUsed},
                      {"noise_bins", e.noiseBins},
                      {"segments_found", e.segmentsFound},

@@ -479,20 +479,51 @@ std::string unsupportedShoulder(const ResponseEstimateOptions& options, const Re
   return buf;
 }
 
-// Keeps the fitted curve in `out` only when it lowers the cue's residual enough, the cue shows
-// enough evidence against sRGB and its shoulder is measured rather than extrapolated; otherwise
-// sRGB, with the reason in `decision` (and a warning when only the evidence was missing).
+// The 1st percentile of the pixels' sRGB-decoded luminance (the mean of the three channels'
+// linear values) over its median, in [0, 1]; 1 (no evidence of contrast) when the median is black.
+double darkFillOf(const std::vector<unsigned char>& codes) {
+  const size_t n = codes.size() / 3;
+  if (n == 0) return 1;
+  std::array<double, 256> lin{};
+  for (int k = 0; k < 256; ++k) lin[size_t(k)] = srgbToLinear(float(k) / 255.f);
+  std::vector<float> luminance(n);
+  for (size_t i = 0; i < n; ++i) {
+    const unsigned char* c = &codes[i * 3];
+    luminance[i] = float((lin[c[0]] + lin[c[1]] + lin[c[2]]) / 3);
+  }
+  auto quantile = [&](double q) {
+    const auto at = luminance.begin() + std::ptrdiff_t(q * double(n - 1));
+    std::nth_element(luminance.begin(), at, luminance.end());
+    return double(*at);
+  };
+  const double median = quantile(0.5), dark = quantile(0.01);
+  return median > 0 ? std::clamp(dark / median, 0.0, 1.0) : 1.0;
+}
+
+// Whether the photo's shadows show a contrast curve (ResponseEstimateOptions::maxDarkFill).
+bool darkFillShowsContrast(const ResponseEstimateOptions& options, const ResponseEstimate& out) {
+  return options.cue == ResponseEstimateOptions::Cue::Noise && options.darkFillOn() &&
+         out.darkFill < *options.maxDarkFill;
+}
+
+// Keeps the fitted curve in `out` only when it lowers the cue's residual enough, the cue (or
+// the shadows' contrast) shows enough evidence against sRGB and its shoulder is measured rather
+// than extrapolated; otherwise sRGB, with the reason in `decision` (and a warning when only the
+// evidence was missing).
 void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& out) {
   const bool noiseCue = options.cue == ResponseEstimateOptions::Cue::Noise;
+  const bool contrast = darkFillShowsContrast(options, out);
+  const double minImprovement = contrast ? options.darkFillMinImprovement
+                                         : options.minImprovementOrDefault();
   char buf[320];
   out.decision = "fitted";
-  if (!(out.objective <= (1 - options.minImprovementOrDefault()) * out.srgbObjective)) {
+  if (!(out.objective <= (1 - minImprovement) * out.srgbObjective)) {
     std::snprintf(buf, sizeof buf,
                   "kept sRGB: the fitted %s lowers the %s residual only from %.4f to %.4f",
                   out.response.describe().c_str(), noiseCue ? "noise level" : "edge", out.srgbObjective,
                   out.objective);
     out.decision = buf;
-  } else if (out.srgbObjective < options.minSrgbResidualOrDefault()) {
+  } else if (out.srgbObjective < options.minSrgbResidualOrDefault() && !contrast) {
     std::snprintf(buf, sizeof buf,
                   "kept sRGB: the %s residual of sRGB, %.4f, is within what photos read rightly as "
                   "sRGB show (below %.2f), so the fitted %s is not trusted",
@@ -506,6 +537,8 @@ void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& 
     out.warnings.push_back("camera response: an implausible curve was refused (" +
                            why.substr(std::string("kept sRGB: ").size()) + "); using sRGB");
   }
+  out.darkFillEvidence = contrast && out.decision == "fitted" &&
+                         out.srgbObjective < options.minSrgbResidualOrDefault();
   if (out.decision != "fitted") {
     out.response = CameraResponse::srgb();
     out.objective = out.srgbObjective;
@@ -591,6 +624,7 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
   if (img.width <= 0 || img.height <= 0 || img.empty()) return undetermined("the photo is empty");
   const std::vector<unsigned char> codes = srgbCodesOf(img);
   if (std::string why = photoIsUndetermined(codes); !why.empty()) return undetermined(why);
+  out.darkFill = darkFillOf(codes);
 
   std::vector<Edge> edges;
   detail::NoiseLevel noise;

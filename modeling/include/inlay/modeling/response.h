@@ -152,6 +152,20 @@ struct ResponseEstimateOptions {
   // the camera variants, docs/camera-response.md).
   double maxTopStops = 6;
   int minTopLevels = 3;
+  // Noise cue, opt-in: the contrast evidence of the photo's shadows. darkFill (see
+  // ResponseEstimate) is the 1st percentile of the pixels' sRGB-decoded luminance over its
+  // median: in a closed room the light reflected by its walls fills the shadows, so a photo
+  // whose shadows read darker than maxDarkFill of the median under sRGB has been through a
+  // contrast curve. Such a photo gets the noise cue's curve without the evidence gate
+  // (minSrgbResidual) when it lowers the residual by darkFillMinImprovement (instead of
+  // minImprovement); the shoulder rule above still applies. Unset or 0: off (the default).
+  // Measured (docs/camera-response.md): every plain render of the training rooms and every
+  // dev room is above 0.14, so 0.12 keeps them sRGB and gives the sigmoid cameras their curve;
+  // but every York photo is below 0.09 (real rooms have dark things in them), so on real
+  // photos it would take the gate away, which is why it is off by default.
+  std::optional<double> maxDarkFill;
+  double darkFillMinImprovement = 0.2;
+  bool darkFillOn() const { return maxDarkFill.value_or(0.0) > 0; }
   // Noise cue: the quantile of the flat blocks' noise that stands for each code bin (0.5: the
   // median). Texture and a rendered photo's uneven lighting only add variance to a block, so a
   // lower quantile follows the sensor's noise more closely. Unset: kDefaultNoiseQuantile.
@@ -176,6 +190,12 @@ struct ResponseEstimate {
   double srgbObjective = 0;  // the same for plain sRGB
   // Noise cue: the measured noise level (code, sigma in codes) per bin, increasing code.
   std::vector<std::array<double, 2>> noiseLevel;
+  // The photo's 1st percentile of sRGB-decoded luminance over its median, in [0, 1] (1 when
+  // the median is black); ResponseEstimateOptions::maxDarkFill.
+  double darkFill = 1;
+  // The curve was accepted on the shadows' contrast evidence (darkFill below maxDarkFill)
+  // rather than on the noise residual's evidence gate.
+  bool darkFillEvidence = false;
   std::string decision;  // why this curve: "fitted", or why sRGB was kept
   double seconds = 0;
   double cpuSeconds = 0;  // this thread's CPU time (what an idle core would take)
