@@ -14,8 +14,9 @@ sampling, seed 1) and once more with --denoise at the first one; in the harness'
 A composite worse than doing nothing at few samples and better at more is render noise; one that
 stays worse is a wrong shadow, bounce or caustic.
 
-usage: bench_surroundings.py INLAY_CLI [--out DIR] [--rooms t01,t05,...] [--spp 16,128]
+usage: bench_surroundings.py INLAY_CLI [--out DIR] [--rooms t01,t05,d4,...] [--spp 16,128]
                              [--no-denoise] [--rescore]
+  --rooms     training rooms (t01) or dev rooms by their prefix (d4: ../shared/scenes/d4_*)
   --rescore   reuse the composites and layers already in OUT (only re-score)
 Writes OUT/surroundings.csv and OUT/surroundings.png (around RMSE per room and sample count
 against doing nothing); prints the table.
@@ -116,6 +117,17 @@ def plot(out, rows):
         ax.legend(fontsize=8)
 
 
+def room_directory(shared, sdir, room):
+    """A training room (t04) under scenes-train, or a dev room (d4) under scenes by its prefix."""
+    if room.startswith("d"):
+        dev = os.path.join(shared, "scenes")
+        for name in sorted(os.listdir(dev)):
+            if name.split("_")[0] == room:
+                return os.path.join(dev, name)
+        raise SystemExit("no dev room %s under %s" % (room, dev))
+    return os.path.join(sdir, room)
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     os.makedirs(out, exist_ok=True)
@@ -130,7 +142,7 @@ def main():
     spps = [int(s) for s in opt("--spp", "16,128").split(",")]
     rows = []
     for room in rooms:
-        room_dir = os.path.join(sdir, room)
+        room_dir = room_directory(shared, sdir, room)
         scene = os.path.join(out, room + ".json")
         subprocess.run([PY, os.path.join(tools, "harness.py"), "scene", room_dir, scene], check=True,
                        capture_output=True)
