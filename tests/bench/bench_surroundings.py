@@ -16,7 +16,8 @@ stays worse is a wrong shadow, bounce or caustic.
 
 usage: bench_surroundings.py INLAY_CLI [--out DIR] [--rooms t01,t05,d4,...] [--spp 16,128]
                              [--no-denoise] [--rescore] [--baseline OTHER_OUT]
-  --rooms     training rooms (t01) or dev rooms by their prefix (d4: ../shared/scenes/d4_*)
+  --rooms     training rooms (t01), dev rooms by their prefix (d4: ../shared/scenes/d4_*) or room
+              folders by path (a camera_variants.py variant of a room)
   --rescore   reuse the composites and layers already in OUT (only re-score)
   --baseline  another build's OUT: also writes OUT/surroundings_vs_baseline.csv/.png (around and
               object RMSE per room and sample count, baseline -> this run, and doing nothing)
@@ -120,7 +121,10 @@ def plot(out, rows):
 
 
 def room_directory(shared, sdir, room):
-    """A training room (t04) under scenes-train, or a dev room (d4) under scenes by its prefix."""
+    """A training room (t04) under scenes-train, a dev room (d4) under scenes by its prefix, or a
+    room folder given by its path (a camera_variants.py variant)."""
+    if os.path.isdir(room):
+        return os.path.abspath(room)
     if room.startswith("d"):
         dev = os.path.join(shared, "scenes")
         for name in sorted(os.listdir(dev)):
