@@ -7,11 +7,13 @@
 namespace inlay {
 
 ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObjects,
-                             const ImageF& withoutObjects, const ImageF& mask) {
+                             const ImageF& withoutObjects, const ImageF& mask, const ImageF* unclipped) {
   const int w = photoLinear.width, h = photoLinear.height, ch = photoLinear.channels;
   INLAY_CHECK(withObjects.width == w && withObjects.height == h && withObjects.channels == 3);
   INLAY_CHECK(withoutObjects.width == w && withoutObjects.height == h && withoutObjects.channels == 3);
   INLAY_CHECK(mask.empty() || (mask.width == w && mask.height == h && mask.channels >= 1));
+  if (unclipped && (unclipped->width != w || unclipped->height != h || unclipped->channels < 3))
+    unclipped = nullptr;  // not this photo's: the photo alone
   ImageF out = photoLinear;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
@@ -28,7 +30,9 @@ ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObject
           continue;
         }
         const double mm = std::isfinite(m) ? std::clamp(double(m), 0.0, 1.0) : 0.0;
-        const double v = mm * io[rc] + (1.0 - mm) * (double(photo) + double(io[rc]) - double(in[rc]));
+        const float model = unclipped ? unclipped->at(x, y, c) : photo;
+        const double base = std::isfinite(model) && model > photo ? double(model) : double(photo);
+        const double v = mm * io[rc] + (1.0 - mm) * (base + double(io[rc]) - double(in[rc]));
         o[c] = std::isfinite(v) && v > 0 ? float(v) : 0.f;
       }
     }
