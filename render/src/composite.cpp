@@ -6,6 +6,19 @@
 
 namespace inlay {
 
+namespace {
+
+// Whether the photo clips pixel (x, y): the unclipped radiance exceeds it in some channel.
+bool clippedAt(const ImageF& unclipped, const float* photo, int x, int y) {
+  for (int c = 0; c < 3; ++c) {
+    const float u = unclipped.at(x, y, c);
+    if (std::isfinite(u) && u > photo[c]) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObjects,
                              const ImageF& withoutObjects, const ImageF& mask, const ImageF* unclipped) {
   const int w = photoLinear.width, h = photoLinear.height, ch = photoLinear.channels;
@@ -21,6 +34,7 @@ ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObject
       const float* io = withObjects.pixel(x, y);
       const float* in = withoutObjects.pixel(x, y);
       float* o = out.pixel(x, y);
+      const bool clipped = unclipped && clippedAt(*unclipped, o, x, y);
       for (int c = 0; c < std::min(ch, 3); ++c) {  // further channels (alpha) kept
         const int rc = c;
         const float photo = o[c];
@@ -30,8 +44,10 @@ ImageF differentialComposite(const ImageF& photoLinear, const ImageF& withObject
           continue;
         }
         const double mm = std::isfinite(m) ? std::clamp(double(m), 0.0, 1.0) : 0.0;
-        const float model = unclipped ? unclipped->at(x, y, c) : photo;
-        const double base = std::isfinite(model) && model > photo ? double(model) : double(photo);
+        // A pixel the photo clips: its value is at least the room's without the objects (the
+        // render's, in every channel), so the objects' change is taken over that.
+        const double base = clipped && std::isfinite(in[rc]) ? std::max(double(photo), double(in[rc]))
+                                                             : double(photo);
         const double v = mm * io[rc] + (1.0 - mm) * (base + double(io[rc]) - double(in[rc]));
         o[c] = std::isfinite(v) && v > 0 ? float(v) : 0.f;
       }

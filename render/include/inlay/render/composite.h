@@ -5,11 +5,12 @@
 // photo. Negative results are clamped to 0; nothing non-finite is produced.
 //
 // `unclipped` (optional, W x H x >= 3): the room's radiance where the photo clips it (the light
-// model's, ProjectedAlbedo::photoRadiance: a sunlit patch many times the clip level). Where
-// the objects change a pixel, I_b is the larger of the photo and it, channel by channel: an
-// object's shadow on a clipped patch is then I_obj (the render's own shadow) instead of
-// clip + I_obj - I_noobj, which goes far below zero in the clipped channels and leaves a black or
-// coloured hole. Untouched pixels stay the photo bit for bit.
+// model's, ProjectedAlbedo::photoRadiance: a sunlit patch many times the clip level); it marks the
+// clipped pixels (above the photo in some channel). Where the objects change such a pixel, I_b
+// is the larger of the photo and I_noobj, channel by channel: an object's shadow on a clipped
+// patch is then I_obj (the render's own shadow) instead of clip + I_obj - I_noobj, which goes far
+// below zero in the clipped channels and leaves a black or coloured hole. Untouched pixels stay
+// the photo bit for bit.
 #pragma once
 
 #include "inlay/modeling/image.h"
