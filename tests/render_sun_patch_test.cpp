@@ -138,9 +138,10 @@ struct Rendered {
   ImageF with, without, mask;
 };
 
-Rendered renderOf(const RenderScene& s, bool patchNee, int spp, uint32_t seed) {
+Rendered renderOf(const RenderScene& s, bool patchNee, int spp, uint32_t seed, double clamp = 0) {
   TracerOptions opt;
   opt.sunPatchNee = patchNee;
+  opt.clampRadiance = clamp;
   PathTracer tracer(s, opt);
   DifferentialBuffers b(s.camera.widthPx, s.camera.heightPx);
   EXPECT_TRUE(tracer.render(b, 0, spp, seed));
@@ -168,11 +169,11 @@ ObjectStats objectStats(const Rendered& r, const Rendered& reference) {
 // The patch 50 times the rest (clipped everywhere, the model's radiance): with NEE toward it the
 // object's light converges to what BSDF sampling alone converges to (no bias), and at 8 samples
 // it is much less noisy.
-void expectSameLightLessNoise(const RenderScene& s, const char* label) {
-  const Rendered reference = renderOf(s, true, 256, 99);
-  const Rendered referenceOff = renderOf(s, false, 256, 98);
-  const ObjectStats on = objectStats(renderOf(s, true, 8, 1), reference);
-  const ObjectStats off = objectStats(renderOf(s, false, 8, 1), reference);
+void expectSameLightLessNoise(const RenderScene& s, const char* label, double clamp = 0) {
+  const Rendered reference = renderOf(s, true, 256, 99, clamp);
+  const Rendered referenceOff = renderOf(s, false, 256, 98, clamp);
+  const ObjectStats on = objectStats(renderOf(s, true, 8, 1, clamp), reference);
+  const ObjectStats off = objectStats(renderOf(s, false, 8, 1, clamp), reference);
   const double refOn = objectStats(reference, reference).mean,
                refOff = objectStats(referenceOff, reference).mean;
   std::printf(
@@ -192,6 +193,12 @@ TEST(SunPatchNee, ABrightPatchLightsTheObjectWithoutFireflies) {
 TEST(SunPatchNee, GrazingSunStaysFiniteAndUnbiased) {
   expectSameLightLessNoise(patchRoom(48, 36, 10.0, Vec3(1, -std::tan(2 * test::kPi / 180), 0)),
                            "grazing");
+}
+
+// With the clamp of indirect light on (the product's default, 1), NEE toward the patch is made at
+// the camera's first hit only (deeper landings are clamped): both still converge to one value.
+TEST(SunPatchNee, WithTheClampOnlyTheFirstHitSamplesThePatch) {
+  expectSameLightLessNoise(patchRoom(48, 36, 10.0, Vec3(1, -1, 0.3)), "clamp 1", 1.0);
 }
 
 // No sun, or a patch the photo shows black (no light in it): the tracer builds no patch light

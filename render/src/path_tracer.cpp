@@ -728,6 +728,13 @@ struct PathTracer::Impl {
   void addSunPatchSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                          const SampleRng& rng, Sums& out) const;
   double sunPatchWeight(const PathState& st, const Hit& hit) const;
+  // Whether a non-specular vertex at `depth` makes NEE toward the sunlit patches: at the camera's
+  // first hit, whose bounce lands unclamped; deeper, only with the clamp of indirect light off
+  // (with it on, a landing two or more surfaces from the camera is clamped anyway, and the extra
+  // shadow ray at every vertex doubled d4's render time for little).
+  bool sunPatchNeeAt(int depth) const {
+    return !sunPatches.empty() && (depth == 0 || options.clampRadiance <= 0);
+  }
   void buildSunPatches();
   bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
@@ -1014,7 +1021,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
     const int64_t neeStart = rayClockNs();
     addSourceSample(mode, st, v, lobe, rng, out);
     addSunLight(mode, st, v, lobe, out);
-    if (!sunPatches.empty()) addSunPatchSample(mode, st, v, lobe, rng, out);
+    if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
     out.counters.neeNs += rayClockNs() - neeStart;
   }
   const auto uDir = rng.get2(v.dim / 2 + 1);
@@ -1143,7 +1150,7 @@ void PathTracer::Impl::addSunPatchSample(Mode mode, const PathState& st, const V
 // The MIS weight of a bounce's landing on room the photo shows, against NEE to the sunlit
 // patches: 1 off the patches and after a specular vertex (which made no NEE).
 double PathTracer::Impl::sunPatchWeight(const PathState& st, const Hit& hit) const {
-  if (st.lastSpecular || !hit.texel) return 1.0;
+  if (st.lastSpecular || !hit.texel || !sunPatchNeeAt(st.depth - 1)) return 1.0;
   const double pdfArea = sunPatches.pdfArea(room.indexOf(hit.texel));
   if (!(pdfArea > 0)) return 1.0;
   const Vec3 w = hit.point - st.lastPoint;
