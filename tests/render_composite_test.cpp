@@ -68,6 +68,35 @@ TEST(Composite, ClampsNegativeAndNeverProducesNonFinite) {
   EXPECT_EQ(out.at(0, 0, 0), 0.f);  // 0.1 + 0 - 1 clamps to 0
 }
 
+// An object's shadow on a sunlit patch the photo clips (1.0 in red and green, the model's
+// radiance 6 there): the photo + with - without would be 1 + 0.4 - 6 < 0 in the clipped
+// channels (a black or blue hole); with the unclipped radiance the shadow is the render's 0.4.
+// Untouched clipped pixels stay the photo's 1.0, bit for bit; an unclipped image of another size
+// is ignored; a NaN in it marks nothing (the photo as before).
+TEST(Composite, ShadowOnAClippedPatchUsesTheUnclippedRadiance) {
+  ImageF photo(3, 1, 3, 1.0f), with(3, 1, 3, 6.0f), without(3, 1, 3, 6.0f), unclipped(3, 1, 3, 6.0f);
+  for (int x = 0; x < 3; ++x)  // blue is not clipped
+    photo.at(x, 0, 2) = 0.8f, unclipped.at(x, 0, 2) = 0.8f, with.at(x, 0, 2) = 0.8f,
+                   without.at(x, 0, 2) = 0.8f;
+  with.setRgb(0, 0, Vec3(0.4, 0.4, 0.3));  // in the shadow
+  without.setRgb(0, 0, Vec3(6.0, 6.0, 0.8));
+  for (int c = 0; c < 3; ++c) unclipped.at(2, 0, c) = std::nanf("");
+  with.setRgb(2, 0, Vec3(0.4, 0.4, 0.3));
+  without.setRgb(2, 0, Vec3(6.0, 6.0, 0.8));
+  const ImageF noMask;
+  const ImageF plain = differentialComposite(photo, with, without, noMask);
+  EXPECT_EQ(plain.at(0, 0, 0), 0.f);  // the hole the change removes
+  const ImageF out = differentialComposite(photo, with, without, noMask, &unclipped);
+  EXPECT_NEAR(out.at(0, 0, 0), 0.4f, 1e-6);
+  EXPECT_NEAR(out.at(0, 0, 1), 0.4f, 1e-6);
+  EXPECT_NEAR(out.at(0, 0, 2), 0.3f, 1e-6);  // blue, not clipped: the photo's 0.8 + 0.3 - 0.8
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(out.at(1, 0, c), photo.at(1, 0, c));  // untouched
+  EXPECT_EQ(out.at(2, 0, 0), 0.f);  // a NaN model marks nothing: the photo's 1 + 0.4 - 6, clamped
+  const ImageF small(2, 1, 3, 6.0f);
+  EXPECT_TRUE(std::memcmp(differentialComposite(photo, with, without, noMask, &small).data.data(),
+                          plain.data.data(), plain.data.size() * sizeof(float)) == 0);
+}
+
 TEST(Composite, FullMaskShowsTheRender) {
   const ImageF photo = filled(4, 4, 3, 7, 1.f), with = filled(4, 4, 3, 8, 1.f),
                without = filled(4, 4, 3, 9, 1.f);

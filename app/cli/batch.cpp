@@ -314,7 +314,8 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   if (!frame || frame->spp == 0) return Error{line.output, "", "the renderer produced no frame"};
   // As `inlay-cli render` writes it: the line's grain and exposure, the photo's response.
   const ImageF composite = compositeOf(ps.photo.linearRgb, doc.render.exposure, *frame,
-                                       doc.render.grain ? &ps.photoNoise : nullptr, doc.render.seed);
+                                       doc.render.grain ? &ps.photoNoise : nullptr, doc.render.seed,
+                                       nullptr, &ps.renderScene.roomAlbedo.photoRadiance);
   SaveOptions save;
   save.response = outputResponseOf(ps);
   std::error_code ec;

@@ -54,6 +54,7 @@
 #include "embree_util.h"
 #include "room_texture.h"
 #include "sampling.h"
+#include "sun_patch.h"
 
 #include "inlay/render/path_tracer.h"
 
@@ -79,6 +80,9 @@ namespace {
 constexpr int kTileSize = 16;
 constexpr uint32_t kDimsPerVertex = 8;
 constexpr uint32_t kFirstVertexDim = 2;  // dimensions 0, 1: the pixel jitter
+// The sunlit patches' NEE (addSunPatchSample) draws its numbers from pairs far above the
+// vertices' (kSunPatchPair + 2 depth and + 1): rooms without a patch keep their noise pattern.
+constexpr uint32_t kSunPatchPair = 1u << 20;
 
 enum class Mode { Shared, WithOnly, WithoutOnly };
 
@@ -203,6 +207,7 @@ struct PathTracer::Impl {
   RTCScene sunWithScene = nullptr;
   RTCScene sunWithoutScene = nullptr;
   std::vector<SunData> suns;
+  SunPatchLight sunPatches;  // the sunlit room the photo shows, a light for NEE (may be empty)
   unsigned surfaceCount = 0;
   bool hasCards = false;  // some room surface is an occluder card with a matte (its filters set)
   std::vector<LightData> lights;
@@ -720,6 +725,17 @@ struct PathTracer::Impl {
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SampleRng& rng, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
+  void addSunPatchSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                         const SampleRng& rng, Sums& out) const;
+  double sunPatchWeight(const PathState& st, const Hit& hit) const;
+  // Whether a non-specular vertex at `depth` makes NEE toward the sunlit patches: at the camera's
+  // first hit, whose bounce lands unclamped; deeper, only with the clamp of indirect light off
+  // (with it on, a landing two or more surfaces from the camera is clamped anyway, and the extra
+  // shadow ray at every vertex doubled d4's render time for little).
+  bool sunPatchNeeAt(int depth) const {
+    return !sunPatches.empty() && (depth == 0 || options.clampRadiance <= 0);
+  }
+  void buildSunPatches();
   bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
@@ -937,7 +953,10 @@ bool PathTracer::Impl::endsOnPhoto(Mode mode, PathState& st, const Hit& hit, con
     return false;
   Vec3 photo;
   if (!RoomTexture::radiance(hit.texel, &photo)) return false;
+  if (!sunPatches.empty()) photo *= sunPatchWeight(st, hit);
   addTo(mode, out, clampIndirect(Vec3(st.throughput.cwiseProduct(photo)), st.depth >= 2));
+  // The objects' change at this point is found by this bounce alone (NEE to a sunlit patch
+  // takes the photo's part only), so it keeps its full weight.
   if (mode == Mode::WithOnly) addObjectsEffect(st, rng, out);
   return true;
 }
@@ -1002,6 +1021,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
     const int64_t neeStart = rayClockNs();
     addSourceSample(mode, st, v, lobe, rng, out);
     addSunLight(mode, st, v, lobe, out);
+    if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
     out.counters.neeNs += rayClockNs() - neeStart;
   }
   const auto uDir = rng.get2(v.dim / 2 + 1);
@@ -1092,6 +1112,92 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
   } else {
     addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
   }
+}
+
+// The sunlit patches the photo shows (sun_patch.h): a point picked on them by power, its photo
+// radiance as a bounce landing there would read it, MIS-weighted against the BSDF (whose landing
+// on a patch texel sunPatchWeight weighs), with a shadow ray. What the objects change on the patch
+// (their shadow on it) is left to the bounce (endsOnPhoto, addObjectsEffect).
+void PathTracer::Impl::addSunPatchSample(Mode mode, const PathState& st, const Vertex& v,
+                                         const Lobe& lobe, const SampleRng& rng, Sums& out) const {
+  const uint32_t pair = kSunPatchPair + 2 * uint32_t(st.depth);
+  const auto u = rng.get2(pair);
+  const SunPatchLight::Sample p = sunPatches.sample(u[0], u[1], rng.get2(pair + 1)[0]);
+  if (!(p.pdfArea > 0)) return;
+  Vec3 w = p.y - v.point;
+  const double d2 = w.squaredNorm(), d = std::sqrt(d2);
+  if (d > 0) w /= d;
+  const double cosY = -p.normal.dot(w);
+  const bool above = w.dot(v.ngFacing) > 0;
+  const Vec3 wLocal = lobe.frame.toLocal(w);
+  if (!(d > 2 * v.eps && cosY > 0 && (above || lobe.bsdf.transmits()) && (wLocal.z() > 0) == above))
+    return;
+  double pdfBsdf = 0;
+  const Vec3 fcos = lobe.bsdf.eval(lobe.woLocal, wLocal, &pdfBsdf);
+  if (!(fcos.maxCoeff() > 0)) return;
+  const double pdfLight = p.pdfArea * d2 / cosY;
+  if (!(pdfLight > 0) || !std::isfinite(pdfLight)) return;
+  const Vec3 c = clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
+                                    (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
+                               st.depth >= 1);
+  const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
+  Vec3 ws = p.y - o;
+  const double ds = ws.norm();
+  ws /= ds;
+  addUnlessBlocked(mode, withScene, withoutScene, o, ws, ds * (1.0 - 1e-4), c, out);
+}
+
+// The MIS weight of a bounce's landing on room the photo shows, against NEE to the sunlit
+// patches: 1 off the patches and after a specular vertex (which made no NEE).
+double PathTracer::Impl::sunPatchWeight(const PathState& st, const Hit& hit) const {
+  if (st.lastSpecular || !hit.texel || !sunPatchNeeAt(st.depth - 1)) return 1.0;
+  const double pdfArea = sunPatches.pdfArea(room.indexOf(hit.texel));
+  if (!(pdfArea > 0)) return 1.0;
+  const Vec3 w = hit.point - st.lastPoint;
+  const double d2 = w.squaredNorm();
+  const double cosY = std::abs(hit.geometricNormal.dot(st.dir));
+  if (!(cosY > 0) || !(d2 > 0)) return 1.0;
+  return powerHeuristic(st.lastPdf, pdfArea * d2 / cosY);
+}
+
+// The texels that show a sunlit patch (inside a sun's lit mask, on a Lambertian room surface
+// the sun faces, with a usable photo radiance) become the patch light. One camera ray per
+// texel of the lit masks finds the surface each shows.
+void PathTracer::Impl::buildSunPatches() {
+  const int w = room.width(), h = room.height();
+  const Camera& cam = scene.roomAlbedo.camera;
+  if (suns.empty() || w <= 0 || h <= 0 || cam.widthPx <= 0 || cam.heightPx <= 0) return;
+  auto inSomeMask = [&](const Vec2& px) {
+    for (const SunData& sd : suns) {
+      const ImageF& m = sd.sun->litMask;
+      if (m.empty()) return true;
+      const int mx = int(px.x() * m.width / cam.widthPx), my = int(px.y() * m.height / cam.heightPx);
+      if (mx >= 0 && my >= 0 && mx < m.width && my < m.height && m.at(mx, my, 0) > 0) return true;
+    }
+    return false;
+  };
+  std::vector<SunPatchLight::Footprint> footprints;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const size_t i = size_t(y) * size_t(w) + size_t(x);
+      const RoomTexture::Texel& t = room.texel(i);
+      const Vec2 px((x + 0.5) * cam.widthPx / w, (y + 0.5) * cam.heightPx / h);
+      if (!t.radianceUsable || t.surface < 0 || roomMaterial(t.surface) || !inSomeMask(px)) continue;
+      const Hit hit = intersect(withoutScene, cam.centreWorld(), cam.directionThroughPixel(px), 0);
+      if (hit.kind != Hit::Kind::Room || hit.texel != &t) continue;
+      const Vec3 n = hit.geometricNormal.dot(hit.point - cam.centreWorld()) > 0
+                         ? Vec3(-hit.geometricNormal)
+                         : hit.geometricNormal;
+      const bool lit = std::any_of(suns.begin(), suns.end(), [&](const SunData& sd) {
+        return sd.toSun.dot(n) > 0 && sd.sun->beamAt(hit.point) > 0;
+      });
+      if (!lit) continue;
+      auto f = texelFootprint(cam, w, h, x, y, hit.point, n);
+      if (!f) continue;
+      f->radiance = Vec3(t.radiance[0], t.radiance[1], t.radiance[2]);
+      footprints.push_back(*f);
+    }
+  sunPatches = SunPatchLight(std::move(footprints), room.texelCount());
 }
 
 // Suns: parallel light, a delta direction (never found by BSDF sampling, so no MIS).
@@ -1372,6 +1478,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     rtcCommitScene(d.sunWithScene);
     rtcCommitScene(d.sunWithoutScene);
   }
+  if (d.options.sunPatchNee) d.buildSunPatches();
 }
 
 PathTracer::~PathTracer() = default;

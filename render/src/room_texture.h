@@ -73,6 +73,13 @@ class RoomTexture {
     const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean_.size();
     return haveMean ? surfaceMean_[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
   }
+  // The grid (the albedo's pixels) and its records, by index y * width() + x.
+  int width() const { return texels_.empty() ? 0 : width_; }
+  int height() const { return texels_.empty() ? 0 : height_; }
+  size_t texelCount() const { return texels_.size(); }
+  const Texel& texel(size_t i) const { return texels_[i]; }
+  // The index of a texel texelShowing() returned.
+  size_t indexOf(const Texel* t) const { return size_t(t - texels_.data()); }
   // ProjectedAlbedo::radianceAtPixel().
   static bool radiance(const Texel* t, Vec3* radiance) {
     if (!t || !t->radianceUsable) return false;

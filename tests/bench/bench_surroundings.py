@@ -14,9 +14,13 @@ sampling, seed 1) and once more with --denoise at the first one; in the harness'
 A composite worse than doing nothing at few samples and better at more is render noise; one that
 stays worse is a wrong shadow, bounce or caustic.
 
-usage: bench_surroundings.py INLAY_CLI [--out DIR] [--rooms t01,t05,...] [--spp 16,128]
-                             [--no-denoise] [--rescore]
+usage: bench_surroundings.py INLAY_CLI [--out DIR] [--rooms t01,t05,d4,...] [--spp 16,128]
+                             [--no-denoise] [--rescore] [--baseline OTHER_OUT]
+  --rooms     training rooms (t01), dev rooms by their prefix (d4: ../shared/scenes/d4_*) or room
+              folders by path (a camera_variants.py variant of a room)
   --rescore   reuse the composites and layers already in OUT (only re-score)
+  --baseline  another build's OUT: also writes OUT/surroundings_vs_baseline.csv/.png (around and
+              object RMSE per room and sample count, baseline -> this run, and doing nothing)
 Writes OUT/surroundings.csv and OUT/surroundings.png (around RMSE per room and sample count
 against doing nothing); prints the table.
 """
@@ -116,6 +120,55 @@ def plot(out, rows):
         ax.legend(fontsize=8)
 
 
+def room_directory(shared, sdir, room):
+    """A training room (t04) under scenes-train, a dev room (d4) under scenes by its prefix, or a
+    room folder given by its path (a camera_variants.py variant)."""
+    if os.path.isdir(room):
+        return os.path.abspath(room)
+    if room.startswith("d"):
+        dev = os.path.join(shared, "scenes")
+        for name in sorted(os.listdir(dev)):
+            if name.split("_")[0] == room:
+                return os.path.join(dev, name)
+        raise SystemExit("no dev room %s under %s" % (room, dev))
+    return os.path.join(sdir, room)
+
+
+def compare(out, rows, baseline_dir):
+    """This run's rows against another build's surroundings.csv: a CSV and a two-panel plot."""
+    base = {(r["room"], int(r["spp"]), r["denoise"] == "True"): r
+            for r in benchlib.read_csv(os.path.join(baseline_dir, "surroundings.csv"))}
+    table = []
+    for r in rows:
+        b = base.get((r["room"], int(r["spp"]), bool(r["denoise"])))
+        if b is None or "around_rmse" not in r:
+            continue
+        table.append({"room": r["room"], "spp": r["spp"], "denoise": r["denoise"],
+                      "around_baseline": float(b["around_rmse"]), "around": r["around_rmse"],
+                      "around_do_nothing": r["around_rmse_do_nothing"],
+                      "object_baseline": float(b["object_rmse"]), "object": r["object_rmse"],
+                      "render_wall_s_baseline": b.get("render_wall_s", ""),
+                      "render_wall_s": r.get("render_wall_s", "")})
+    benchlib.write_csv(os.path.join(out, "surroundings_vs_baseline.csv"), table)
+    with benchlib.figure(os.path.join(out, "surroundings_vs_baseline.png"), 1, 2, figsize=(11, 4)) as axes:
+        if axes is None:
+            return table
+        labels = ["%s\n%d spp" % (t["room"].split("_")[0], t["spp"]) for t in table]
+        x = np.arange(len(table))
+        for ax, key, title in ((axes[0], "around", "around the object"), (axes[1], "object", "the object")):
+            ax.bar(x - 0.27, [t[key + "_baseline"] for t in table], 0.27, label="baseline")
+            ax.bar(x, [t[key] for t in table], 0.27, label="this build")
+            if key == "around":
+                ax.bar(x + 0.27, [t["around_do_nothing"] for t in table], 0.27, color="grey",
+                       label="do nothing")
+            ax.set_xticks(x)
+            ax.set_xticklabels(labels, fontsize=8)
+            ax.set_ylabel("RMSE (sRGB)")
+            ax.set_title(title)
+            ax.legend(fontsize=8)
+    return table
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     os.makedirs(out, exist_ok=True)
@@ -130,7 +183,7 @@ def main():
     spps = [int(s) for s in opt("--spp", "16,128").split(",")]
     rows = []
     for room in rooms:
-        room_dir = os.path.join(sdir, room)
+        room_dir = room_directory(shared, sdir, room)
         scene = os.path.join(out, room + ".json")
         subprocess.run([PY, os.path.join(tools, "harness.py"), "scene", room_dir, scene], check=True,
                        capture_output=True)
@@ -146,6 +199,13 @@ def main():
         print("| %s | %s | %s | %s | %s | %s | %s | %s | %s |" % tuple(
             r.get(k, "") for k in ("room", "spp", "denoise", "around_rmse", "around_rmse_do_nothing", "effect_ratio",
                                    "effect_corr", "change_rms", "truth_change_rms")))
+    if opt("--baseline", None):
+        print("\n| room | spp | around: baseline -> this | do nothing | object: baseline -> this |")
+        print("|---|---|---|---|---|")
+        for t in compare(out, rows, opt("--baseline", None)):
+            print("| %s | %d | %.4f -> %.4f | %.4f | %.4f -> %.4f |" % (
+                t["room"], t["spp"], t["around_baseline"], t["around"], t["around_do_nothing"],
+                t["object_baseline"], t["object"]))
 
 
 if __name__ == "__main__":

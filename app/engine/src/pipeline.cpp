@@ -290,8 +290,10 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
 }
 
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
-                   const PhotoNoise* grain, uint32_t grainSeed, const ImageF* grainField) {
-  ImageF c = differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask);
+                   const PhotoNoise* grain, uint32_t grainSeed, const ImageF* grainField,
+                   const ImageF* unclipped) {
+  ImageF c =
+      differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask, unclipped);
   if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed, grainField);
   applyExposure(c, exposureStops);
   return c;
@@ -1125,7 +1127,8 @@ PhotoNoise photoNoiseOf(const LoadedImage& photo) {
 ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool withGrain) {
   const bool grain = withGrain && scene.doc.render.grain;
   return compositeOf(scene.photo.linearRgb, scene.doc.render.exposure, frame,
-                     grain ? &scene.photoNoise : nullptr, scene.doc.render.seed);
+                     grain ? &scene.photoNoise : nullptr, scene.doc.render.seed, nullptr,
+                     &scene.renderScene.roomAlbedo.photoRadiance);
 }
 
 const CameraResponse* outputResponseOf(const PreparedScene& scene) {

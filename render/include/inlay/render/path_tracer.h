@@ -30,6 +30,10 @@ struct TracerOptions {
   bool timeRays = false;         // time every ray by type (benchmarks: two clock reads per ray)
   bool roughGlassNee = true;     // next-event estimation (with MIS) at rough glass; false: found
                                  // by BSDF sampling alone (for comparison; suns then miss it)
+  // Next-event estimation (with MIS) toward the sunlit patches the photo shows (the texels of
+  // a sun's lit mask that bounces read the photo's radiance at): without it a bounce finds such
+  // a bright patch by BSDF sampling alone, as fireflies. Scenes without a sun are unaffected.
+  bool sunPatchNee = true;
   // How next-event estimation picks one light (area light or emissive object) per vertex:
   // Spatial weighs every source by power over squared distance, skipping those behind the
   // vertex (O(n) per vertex, each weight computed once); Power draws from a table proportional

@@ -212,10 +212,12 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool wi
 const CameraResponse* outputResponseOf(const PreparedScene& scene);
 // The same from just what it needs (for a render thread that holds no PreparedScene); `grain`
 // null: no grain. `grainField`: grainField(*grain, W, H, grainSeed) computed once for many
-// frames (render/grain.h; the same bits, without drawing the grain per frame).
+// frames (render/grain.h; the same bits, without drawing the grain per frame). `unclipped`: the
+// room's radiance where the photo clips it (differentialComposite; the prepared scene's
+// renderScene.roomAlbedo.photoRadiance), or null.
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
                    const PhotoNoise* grain = nullptr, uint32_t grainSeed = 1,
-                   const ImageF* grainField = nullptr);
+                   const ImageF* grainField = nullptr, const ImageF* unclipped = nullptr);
 
 // An object's mesh as the scene file asks for it: loaded (mesh key), then smoothly subdivided
 // by its `subdivide` levels (Catmull-Clark for quad meshes, Loop for triangles). Errors are keyed
