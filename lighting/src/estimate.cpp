@@ -50,6 +50,14 @@ struct PointRays {
   int rays = 0;
 };
 
+// Per ray of a PointRays that lands where the camera does not see: its patch (SurfacePatches::
+// find, -1: none) and its unit direct light from each area light and sun (e[k * C + j]), the
+// parts of radianceAt's prediction there that stay the same through an estimate's passes.
+struct UnseenLights {
+  std::vector<int> patch;
+  std::vector<double> e;
+};
+
 // FNV-1a over 64-bit words (a tail shorter than a word padded with zeros).
 class Fingerprint {
  public:
@@ -510,6 +518,10 @@ struct LightingFit {
   // given them: LightingOptions::reuseRays). `tracing`: this estimate fills them.
   std::shared_ptr<const LightingRays> rays;  // what the passes read
   std::shared_ptr<LightingRays> traced;      // what this estimate traces (null: rays reused)
+  // The unseen rays' patches and unit direct light (this estimate's lights), per grid point and
+  // per sweep and patch: filled by the first pass that predicts the unseen room, read by the rest.
+  std::vector<UnseenLights> gridLights;
+  std::vector<std::vector<UnseenLights>> patchLights;
 
   bool stop() const { return opt.cancel && opt.cancel->shouldStop(); }
   bool isLight(int x, int y) const { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; }
@@ -543,6 +555,12 @@ struct LightingFit {
   Vec3 radianceAt(const SurfaceHit& h, uint32_t sampleId) const;
   Vec3 seenRadiance(size_t idx) const;
   Vec3 unseenRadiance(const SurfaceHit& h, uint32_t sampleId) const;
+  UnseenLights unseenLightsOf(const PointRays& r) const;
+  Vec3 unseenRadianceOf(const SurfaceHit& h, int patch, const double* e) const;
+  std::vector<UnseenLights> unseenLightsOfAll(const std::vector<PointRays>& points) const;
+  template <class Seen, class Unseen>
+  Vec3 meanOverRays(const PointRays& r, const Seen& seen, const Unseen& unseen,
+                    const UnseenLights* lit) const;
   Vec3 clippedRadianceOf(size_t idx) const;
   ImageF sunBounceImage(size_t k, int surface);
   uint64_t fingerprintOfRays() const;
@@ -552,7 +570,8 @@ struct LightingFit {
   void traceGridRays();
   void tracePatchRays(const SurfacePatches& P);
   template <class Seen, class Unseen>
-  ImageF gatherImage(const Seen& seen, const Unseen& unseen);
+  ImageF gatherImage(const Seen& seen, const Unseen& unseen,
+                     const std::vector<UnseenLights>* lit = nullptr);
   void gatherAll();
   void gatherUnseenPatches();
   bool chooseFitPixels();
@@ -759,18 +778,45 @@ Vec3 LightingFit::seenRadiance(size_t idx) const {
 // then the room model's prediction.
 Vec3 LightingFit::unseenRadiance(const SurfaceHit& h, uint32_t sampleId) const {
   if (!model.active) return surfaceRadiance[h.surfaceId];
-  // Unseen: albedo times (direct light from the fitted lights + the light gathered at its
-  // patch, or the surface's mean where no patch was made).
-  const int patch = model.patches.find(h);
+  PointRays one;
+  one.unseen.push_back({h, sampleId});
+  const UnseenLights lit = unseenLightsOf(one);
+  return unseenRadianceOf(h, lit.patch[0], lit.e.data());
+}
+
+// The patch and unit direct light of each unseen ray of `r` (UnseenLights).
+UnseenLights LightingFit::unseenLightsOf(const PointRays& r) const {
+  UnseenLights lit;
+  lit.patch.resize(r.unseen.size());
+  lit.e.resize(r.unseen.size() * C);
+  for (size_t k = 0; k < r.unseen.size(); ++k) {
+    const SurfaceHit& h = r.unseen[k].hit;
+    const Vec3 p = h.pointWorld + 1e-5 * h.normalWorld;
+    lit.patch[k] = model.patches.find(h);
+    for (size_t j = 0; j < J; ++j)
+      lit.e[k * C + j] = tracer.unitLightIrradianceOverPi(lightsIn[j], p, h.normalWorld, 1,
+                                                          r.unseen[k].sampleId * 31u + uint32_t(j));
+    for (size_t s = 0; s < K; ++s)
+      lit.e[k * C + J + s] = unitSunIrradianceOverPi(tracer, geometry, suns[s], p, h.normalWorld);
+  }
+  return lit;
+}
+
+std::vector<UnseenLights> LightingFit::unseenLightsOfAll(const std::vector<PointRays>& points) const {
+  std::vector<UnseenLights> lit(points.size());
+  parallelFor(tbb::blocked_range<size_t>(0, points.size()), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) lit[i] = unseenLightsOf(points[i]);
+  });
+  return lit;
+}
+
+// The predicted radiance at an unseen point: albedo times (direct light from the fitted lights
+// + the light gathered at its patch, or the surface's mean where no patch was made), from its
+// patch and unit direct light `e` (C values).
+Vec3 LightingFit::unseenRadianceOf(const SurfaceHit& h, int patch, const double* e) const {
   Vec3 irradiance = patch >= 0 ? model.patches.gamma[size_t(patch)] : model.gammaMean[h.surfaceId];
-  for (size_t j = 0; j < J; ++j)
-    irradiance += model.lights[j] *
-                  tracer.unitLightIrradianceOverPi(lightsIn[j], h.pointWorld + 1e-5 * h.normalWorld,
-                                                   h.normalWorld, 1, sampleId * 31u + uint32_t(j));
-  for (size_t k = 0; k < K && !sunApart; ++k)
-    irradiance += model.lights[J + k] * unitSunIrradianceOverPi(tracer, geometry, suns[k],
-                                                                h.pointWorld + 1e-5 * h.normalWorld,
-                                                                h.normalWorld);
+  for (size_t j = 0; j < J; ++j) irradiance += model.lights[j] * e[j];
+  for (size_t k = 0; k < K && !sunApart; ++k) irradiance += model.lights[J + k] * e[J + k];
   return model.rho[h.surfaceId].cwiseProduct(irradiance);
 }
 
@@ -803,17 +849,21 @@ ImageF LightingFit::sunBounceImage(size_t k, int surface) {
 }
 
 // The mean of `seen` (per photo pixel) and `unseen` (per hit and sampleId) over a point's rays;
-// a ray that left the room, or a radiance that is not finite, counts as 0.
+// a ray that left the room, or a radiance that is not finite, counts as 0. `lit`: the rays'
+// UnseenLights, when `unseen` is the room model's prediction (unseenRadiance): read instead.
 template <class Seen, class Unseen>
-Vec3 meanOverRays(const PointRays& r, const Seen& seen, const Unseen& unseen) {
+Vec3 LightingFit::meanOverRays(const PointRays& r, const Seen& seen, const Unseen& unseen,
+                               const UnseenLights* lit) const {
   Vec3 sum = Vec3::Zero();
   for (const int32_t idx : r.seen) {
-    const Vec3 L = seen(size_t(idx));
-    if (L.allFinite()) sum += L;
+    const Vec3 radiance = seen(size_t(idx));
+    if (radiance.allFinite()) sum += radiance;
   }
-  for (const UnseenRay& u : r.unseen) {
-    const Vec3 L = unseen(u.hit, u.sampleId);
-    if (L.allFinite()) sum += L;
+  for (size_t k = 0; k < r.unseen.size(); ++k) {
+    const UnseenRay& u = r.unseen[k];
+    const Vec3 radiance = lit ? unseenRadianceOf(u.hit, lit->patch[k], &lit->e[k * C])
+                              : Vec3(unseen(u.hit, u.sampleId));
+    if (radiance.allFinite()) sum += radiance;
   }
   return r.rays > 0 ? Vec3(sum / r.rays) : Vec3(Vec3::Zero());
 }
@@ -893,13 +943,16 @@ void LightingFit::traceGridRays() {
 // The light `seen` and `unseen` send to every pixel (radianceAt split at seenPixel): gathered on
 // the grid from its traced rays, spread to the pixels.
 template <class Seen, class Unseen>
-ImageF LightingFit::gatherImage(const Seen& seen, const Unseen& unseen) {
+ImageF LightingFit::gatherImage(const Seen& seen, const Unseen& unseen,
+                                const std::vector<UnseenLights>* lit) {
   traceGridRays();
   std::vector<Vec3> grid(gridSurface.size(), Vec3::Zero());
   if (rays->grid.size() == grid.size())
     parallelFor(tbb::blocked_range<size_t>(0, grid.size()), [&](const tbb::blocked_range<size_t>& r) {
       for (size_t g = r.begin(); g < r.end(); ++g)
-        if (gridSurface[g] >= 0) grid[g] = meanOverRays(rays->grid[g], seen, unseen);
+        if (gridSurface[g] >= 0)
+          grid[g] = meanOverRays(rays->grid[g], seen, unseen,
+                                 lit && lit->size() == grid.size() ? &(*lit)[g] : nullptr);
     });
   const RadianceAt radiance = [&](const SurfaceHit& h, uint32_t id) -> Vec3 {
     const long px = seenPixel(h);
@@ -922,8 +975,11 @@ ImageF LightingFit::gatherImage(const Seen& seen, const Unseen& unseen) {
 // Gamma from the photo (and the model where it does not tell), the light from clipped pixels
 // apart, and (pass 2 with a sun) each sunlit patch's bounce per unit strength.
 void LightingFit::gatherAll() {
+  traceGridRays();
+  if (model.active && gridLights.empty() && !stop()) gridLights = unseenLightsOfAll(rays->grid);
   out.gathered = gatherImage([this](size_t idx) { return seenRadiance(idx); },
-                             [this](const SurfaceHit& h, uint32_t id) { return unseenRadiance(h, id); });
+                             [this](const SurfaceHit& h, uint32_t id) { return unseenRadiance(h, id); },
+                             model.active ? &gridLights : nullptr);
   if (fitClipped)
     gatheredClipped = gatherImage([this](size_t idx) { return clippedRadianceOf(idx); },
                                   [](const SurfaceHit&, uint32_t) { return Vec3(Vec3::Zero()); });
@@ -952,7 +1008,9 @@ void LightingFit::gatherAll() {
 void LightingFit::gatherUnseenPatches() {
   const double roomSize = std::max({geometry.box.xRightM - geometry.box.xLeftM,
                                     geometry.box.zRearM - geometry.box.zBackM, geometry.box.ceilingM});
-  model.patches = makeSurfacePatches(geometry, std::max(0.05, roomSize / opt.patchesAcrossRoom));
+  // The same patches every pass (only their light changes): made once.
+  if (model.patches.point.empty())
+    model.patches = makeSurfacePatches(geometry, std::max(0.05, roomSize / opt.patchesAcrossRoom));
   SurfacePatches& P = model.patches;
   for (size_t i = 0; i < P.point.size(); ++i) P.gamma[i] = model.gammaMean[size_t(P.surface[i])];
   tracePatchRays(P);
@@ -960,10 +1018,15 @@ void LightingFit::gatherUnseenPatches() {
   std::vector<Vec3> next(P.point.size());
   auto seen = [this](size_t idx) { return seenRadiance(idx); };
   auto unseen = [this](const SurfaceHit& h, uint32_t id) { return unseenRadiance(h, id); };
+  if (patchLights.empty())
+    for (const std::vector<PointRays>& sweepRays : rays->patchSweeps)
+      patchLights.push_back(unseenLightsOfAll(sweepRays));
   for (int sweep = 0; sweep < opt.patchSweeps; ++sweep) {
     const std::vector<PointRays>& sweepRays = rays->patchSweeps[size_t(sweep)];
+    const std::vector<UnseenLights>& lit = patchLights[size_t(sweep)];
     parallelFor(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i < r.end(); ++i) next[i] = meanOverRays(sweepRays[i], seen, unseen);
+      for (size_t i = r.begin(); i < r.end(); ++i)
+        next[i] = meanOverRays(sweepRays[i], seen, unseen, &lit[i]);
     });
     std::swap(P.gamma, next);
   }
