@@ -986,5 +986,115 @@ TEST(Lighting, LightsOutOfViewShareOneRadiance) {
   for (const auto& L : dark->lights) EXPECT_TRUE(L.radiance.allFinite() && L.radiance.minCoeff() >= 0);
 }
 
+// The largest |a - b| / max(|b|, floor) over two images' values (0 when both are empty).
+double largestRelativeDifference(const ImageF& a, const ImageF& b, double floor) {
+  EXPECT_EQ(a.data.size(), b.data.size());
+  double worst = 0;
+  for (size_t i = 0; i < std::min(a.data.size(), b.data.size()); ++i)
+    worst = std::max(
+        worst, std::abs(double(a.data[i]) - b.data[i]) / std::max(std::abs(double(b.data[i])), floor));
+  return worst;
+}
+
+// The refit after the lights' refinement replays the first estimate's rays (their hits do not
+// depend on the lights): with a light moved 15 cm it gives the lights, gathered light and albedo
+// of an estimate that traces its own rays, up to the order of the sums. Here with clipped pixels
+// (their gathered light apart, its gain fitted) and an unseen rear wall (the patches' sweeps).
+TEST(Lighting, ARefitReplayingTheFirstEstimatesRaysGivesWhatTracingGives) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 16);
+  const ImageF mask = lightMaskOf(r);
+  // Exposed so that a tenth of the room clips (ClippedPixelsSendMoreLightThanTheyShow).
+  std::vector<float> room;
+  for (int y = 0; y < r.photo.height; ++y)
+    for (int x = 0; x < r.photo.width; ++x)
+      if (mask.at(x, y) < 0.5f) room.push_back(r.photo.at(x, y, 1));
+  std::nth_element(room.begin(), room.begin() + long(room.size() * 9 / 10), room.end());
+  const float exposure = 1.f / room[room.size() * 9 / 10];
+  ImageF photo = r.photo;
+  for (float& v : photo.data) v = std::min(1.f, v * exposure);
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok());
+  LightingOptions opt;
+  opt.gatherSamples = 16;
+  opt.gatherStride = 3;
+  opt.threads = 2;
+  const auto first = estimateLighting(photo, r.camera, r.geometry, {*light}, {true}, mask, {}, opt);
+  ASSERT_TRUE(first.ok()) << first.error().message();
+  ASSERT_TRUE(first->rays);
+  EXPECT_FALSE(first->raysReused);
+  AreaLight moved = first->lights[0];
+  for (Vec3& c : moved.cornersWorld) c += Vec3(0.15, 0, -0.1);
+  const auto traced = estimateLighting(photo, r.camera, r.geometry, {moved}, {true}, mask, {}, opt);
+  LightingOptions replay = opt;
+  replay.reuseRays = first->rays;
+  const auto replayed = estimateLighting(photo, r.camera, r.geometry, {moved}, {true}, mask, {}, replay);
+  ASSERT_TRUE(traced.ok() && replayed.ok());
+  EXPECT_FALSE(traced->raysReused);
+  EXPECT_TRUE(replayed->raysReused);
+  EXPECT_EQ(replayed->rays, first->rays);
+  EXPECT_EQ(replayed->passes, traced->passes);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(replayed->lights[0].radiance[c] / traced->lights[0].radiance[c], 1.0, 1e-6) << c;
+  EXPECT_NEAR(replayed->fitRmsLog, traced->fitRmsLog, 1e-6);
+  EXPECT_LT(largestRelativeDifference(replayed->gathered, traced->gathered, 1e-3), 1e-5);
+  EXPECT_LT(largestRelativeDifference(replayed->physicalAlbedo, traced->physicalAlbedo, 1e-3), 1e-5);
+  EXPECT_LT(largestRelativeDifference(replayed->albedo, traced->albedo, 1e-2), 1e-3);
+  // The moved light changed the estimate: the replay is not the first estimate returned again.
+  EXPECT_GT(std::abs(traced->lights[0].radiance[1] / first->lights[0].radiance[1] - 1), 1e-4);
+}
+
+// Rays traced for another photo, camera or room are not replayed: the estimate traces its own
+// and gives exactly what it gives without them. A sun room: its sunlit patch's bounce is
+// gathered from the rays too.
+TEST(Lighting, RaysOfAnotherPhotoCameraOrRoomAreTracedAgain) {
+  SyntheticRoom r = emptyRoom();
+  const SunLight sun = sunThroughWindow(r, Vec3(5, 4.6, 4)).sun;
+  r.photo = renderRoom(r, {}, {sun}, 8);
+  ImageF photo = r.photo;
+  for (float& v : photo.data) v = std::min(v, 1.f);
+  LightingOptions opt;
+  opt.gatherSamples = 16;
+  opt.gatherStride = 3;
+  opt.threads = 2;
+  const auto plain = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  ASSERT_TRUE(plain.ok()) << plain.error().message();
+  ImageF brighter = photo;
+  brighter.data[size_t(brighter.data.size() / 2)] += 0.01f;  // one value of one pixel
+  const auto other = estimateLighting(brighter, r.camera, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  ASSERT_TRUE(other.ok());
+  Camera turned = r.camera;
+  turned.focalPx *= 1.001;
+  const auto otherCamera = estimateLighting(photo, turned, r.geometry, {}, {}, ImageF(), {sun}, opt);
+  SyntheticRoom wider = emptyRoom();
+  RoomBox box = wider.geometry.box;
+  box.xRightM += 0.01;
+  const SceneGeometry otherRoom = buildSceneGeometry(box, {});
+  const auto roomRays = estimateLighting(photo, r.camera, otherRoom, {}, {}, ImageF(), {sun}, opt);
+  ASSERT_TRUE(otherCamera.ok() && roomRays.ok());
+  const char* what[] = {"another photo", "another camera", "another room"};
+  int k = 0;
+  for (const auto* given : {&*other, &*otherCamera, &*roomRays}) {
+    SCOPED_TRACE(what[k++]);
+    LightingOptions reuse = opt;
+    reuse.reuseRays = given->rays;
+    const auto again = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, reuse);
+    ASSERT_TRUE(again.ok());
+    EXPECT_FALSE(again->raysReused);
+    EXPECT_NE(again->rays, given->rays);
+    EXPECT_EQ(again->suns[0].irradianceOverPi, plain->suns[0].irradianceOverPi);
+    EXPECT_EQ(again->gathered.data, plain->gathered.data);
+  }
+  // Its own rays are replayed, and give the same sun.
+  LightingOptions own = opt;
+  own.reuseRays = plain->rays;
+  const auto replayed = estimateLighting(photo, r.camera, r.geometry, {}, {}, ImageF(), {sun}, own);
+  ASSERT_TRUE(replayed.ok());
+  EXPECT_TRUE(replayed->raysReused);
+  ASSERT_EQ(replayed->sunBounce.size(), plain->sunBounce.size());
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(replayed->suns[0].irradianceOverPi[c] / plain->suns[0].irradianceOverPi[c], 1.0, 1e-6);
+  EXPECT_LT(largestRelativeDifference(replayed->gathered, plain->gathered, 1e-3), 1e-5);
+}
+
 }  // namespace
 }  // namespace inlay

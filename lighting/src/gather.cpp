@@ -7,18 +7,6 @@ namespace inlay {
 
 namespace {
 
-inline uint32_t hash32(uint32_t x) {
-  x ^= x >> 16;
-  x *= 0x7feb352dU;
-  x ^= x >> 15;
-  x *= 0x846ca68bU;
-  x ^= x >> 16;
-  return x;
-}
-inline double uniform(uint32_t a, uint32_t b, uint32_t c) {
-  return (hash32(a ^ hash32(b ^ hash32(c))) >> 8) * (1.0 / 16777216.0);
-}
-
 double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
 
 }  // namespace
@@ -26,28 +14,17 @@ double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.072
 GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point, const Vec3& normal,
                                     int samples, uint32_t pixelId, uint32_t seed,
                                     const RadianceAt& radianceAt) {
-  const int nSide = std::max(1, int(std::lround(std::sqrt(double(std::max(samples, 1))))));
-  const Vec3 t = (std::abs(normal.x()) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)).cross(normal).normalized();
-  const Vec3 b = normal.cross(t);
   Vec3 sum = Vec3::Zero(), sum2 = Vec3::Zero();
-  for (int i = 0; i < nSide; ++i)
-    for (int k = 0; k < nSide; ++k) {
-      const uint32_t s = uint32_t(i * nSide + k);
-      const double u1 = (i + uniform(pixelId, seed, 2 * s)) / nSide;
-      const double u2 = (k + uniform(pixelId, seed, 2 * s + 1)) / nSide;
-      const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
-      const Vec3 d =
-          (r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1 - u1)) * normal)
-              .normalized();
-      const auto h = tracer.intersect(Ray{point + 1e-5 * normal, d}, 1e-5);
-      Vec3 L = Vec3::Zero();
-      if (h) L = radianceAt(*h, pixelId * 1024u + s);
-      if (!L.allFinite()) L = Vec3::Zero();
-      sum += L;
-      sum2 += L.cwiseProduct(L);
-    }
+  forEachGatherRay(tracer, point, normal, samples, pixelId, seed,
+                   [&](const SurfaceHit* h, uint32_t sampleId) {
+                     Vec3 L = Vec3::Zero();
+                     if (h) L = radianceAt(*h, sampleId);
+                     if (!L.allFinite()) L = Vec3::Zero();
+                     sum += L;
+                     sum2 += L.cwiseProduct(L);
+                   });
   GatherSample g;
-  g.rays = nSide * nSide;
+  g.rays = gatherRaysPerSide(samples) * gatherRaysPerSide(samples);
   g.mean = sum / g.rays;
   // The spread of the strata as if independent: an upper bound for the stratified estimate.
   const Vec3 var = (sum2 / g.rays - g.mean.cwiseProduct(g.mean)).cwiseMax(0.0);

@@ -6,7 +6,7 @@ the progress CSV: one sample in every pixel, at the photo's size) and the run's 
 
   /usr/bin/python3 tests/bench/bench_prepare_mp.py build [--scene FILE] [--mp 0.3,3,12]
       [--repeats 3] [--threads 2] [--working-mp 0.5] [--initial-lights] [--label NAME] [--out DIR]
-      [--plot-only]
+      [--append] [--plot-only]
 
 --initial-lights passes inlay-cli's (the refinement and the refit skipped: the working copy's
 lighting, which the photo's size does not change, once instead of twice; halves a run).
@@ -15,7 +15,11 @@ a sphere). --label names the run (e.g. "before", "after"): runs of other labels 
 the CSV are kept, so one figure and one table compare them. Writes bench_prepare_mp.csv (one
 row per label, size, run and stage), bench_prepare_mp_summary.csv (medians per label, size and
 stage, wall and CPU seconds (all threads); the table docs/bench/prepare_mp.md) and bench_prepare_mp.png under DIR (default
-tests/bench/out). Resized photos live in a temporary folder and are never kept."""
+tests/bench/out). Resized photos live in a temporary folder and are never kept.
+The lighting stage and its refit also get a row per step of theirs (the report's "steps":
+"lighting: gather", "lighting refit: light fit", ...; not in the preparation's sum).
+--append keeps the label's earlier runs (numbered on): two builds' runs alternate on a loaded
+machine by calling each in turn with --repeats 1 --append, into one DIR."""
 import csv, json, math, os, statistics, subprocess, sys, tempfile, time
 
 import benchlib
@@ -53,25 +57,30 @@ def run_once(cli, scene, opt, work):
     t0 = time.time()
     subprocess.run(cmd, check=True)
     wall = time.time() - t0
-    stages = [(s["name"], s["seconds"], s.get("cpu_seconds", float("nan")))
-              for s in json.load(open(report))["stages"] if s.get("ran")]
+    ran = [s for s in json.load(open(report))["stages"] if s.get("ran")]
+    stages = [(s["name"], s["seconds"], s.get("cpu_seconds", float("nan"))) for s in ran]
+    steps = [("%s: %s" % (s["name"], t["name"]), t.get("seconds", float("nan")), t.get("cpu_seconds", float("nan")))
+             for s in ran for t in s.get("steps", [])]
     rows = benchlib.read_csv(progress)
     first = float(rows[0]["seconds"]) if rows else float("nan")
-    return stages, first, wall
+    return stages, steps, first, wall
 
 
 def measure(build, opt, out, label):
     cli = os.path.join(build, "app", "inlay-cli")
     scene = opt("--scene", os.path.join(HERE, "..", "..", "resources", "example", "scene.json"))
     path = os.path.join(out, "bench_prepare_mp.csv")
-    rows = [r for r in benchlib.read_csv(path) if r["label"] != label] if os.path.exists(path) else []
+    rows = benchlib.read_csv(path) if os.path.exists(path) else []
+    if "--append" not in sys.argv:
+        rows = [r for r in rows if r["label"] != label]
     for mp in [float(v) for v in opt("--mp", "0.3,3,12").split(",")]:
         with tempfile.TemporaryDirectory() as work:
             sfile, w, h = resized_scene(scene, mp, work)
-            for run in range(int(opt("--repeats", "3"))):
-                stages, first, wall = run_once(cli, sfile, opt, work)
+            done = len({r["run"] for r in rows if r["label"] == label and float(r["megapixels"]) == mp})
+            for run in range(done, done + int(opt("--repeats", "3"))):
+                stages, steps, first, wall = run_once(cli, sfile, opt, work)
                 base = {"label": label, "megapixels": mp, "width": w, "height": h, "run": run}
-                for name, s, cpu in stages:
+                for name, s, cpu in stages + steps:
                     rows.append(dict(base, stage=name, seconds=round(s, 4), cpu_seconds=round(cpu, 4)))
                 prep, prep_cpu = sum(s[1] for s in stages), sum(s[2] for s in stages)
                 rows.append(dict(base, stage="prepare (sum)", seconds=round(prep, 4), cpu_seconds=round(prep_cpu, 4)))
@@ -125,7 +134,7 @@ def plot(out, table, labels, mps):
         ax[0].set_title("preparation and first frame against photo size")
         big = mps[-1]
         skip = {"prepare (sum)", "wall", "first frame"}
-        stages = [s for s in dict.fromkeys(r["stage"] for r in table) if s not in skip]
+        stages = [s for s in dict.fromkeys(r["stage"] for r in table) if s not in skip and ": " not in s]
         width = 0.8 / max(1, len(labels))
         for n, label in enumerate(labels):
             vals = [next((r["%g MP CPU (s)" % big] for r in table if r["label"] == label and r["stage"] == s), 0)

@@ -556,10 +556,12 @@ std::vector<StageStep> stepsOf(const LightingEstimate& e) {
   return out;
 }
 
-// "5 passes, 11834 points x 36 rays": the gather-and-fit passes and each pass's gather.
+// "5 passes, 11834 points x 36 rays": the gather-and-fit passes and each pass's gather ("3
+// passes, the first estimate's rays replayed, ...": LightingEstimate::raysReused).
 std::string gatherText(const LightingEstimate& e) {
   return std::to_string(e.passes) + (e.passes == 1 ? " pass, " : " passes, ") +
-         std::to_string(e.gatherPoints) + " points x " + std::to_string(e.gatherSamples) + " rays";
+         (e.raysReused ? "the first estimate's rays replayed, " : "") + std::to_string(e.gatherPoints) +
+         " points x " + std::to_string(e.gatherSamples) + " rays";
 }
 
 std::string countOf(size_t n, const std::string& thing) {
@@ -897,8 +899,12 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   std::vector<bool> fitAgain(p.estimated);
   for (size_t i = 0; i < fitAgain.size() && i < p.doc.lights.size(); ++i)
     fitAgain[i] = p.estimated[i] && !p.doc.lights[i].lock;
+  // The same photo, camera, room and mask as the first estimate: its rays' hits are replayed
+  // (they do not depend on the lights), and only the radiances along them computed again.
+  LightingOptions lo = p.lightingOptions;
+  lo.reuseRays = ps.lighting.rays;
   auto again = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, ps.lighting.lights, fitAgain,
-                                p.lightMask, ps.lighting.suns, p.lightingOptions);
+                                p.lightMask, ps.lighting.suns, lo);
   if (!again) return p.cancelled() ? cancelledError() : again.error();
   p.stageSteps = stepsOf(*again);  // the refit's work, whichever fit is kept
   // ps.lighting is still the first estimate's fit (the refinement changed only its lights).
@@ -1110,8 +1116,11 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       {"grain", nullptr, nullptr, measureGrain, At::Photo},
   };
   Preparation p(doc, opt);
-  for (const Stage& stage : kStages)
+  for (const Stage& stage : kStages) {
     if (Status st = runStage(stage, p); !st) return st.error();
+    // The lighting's rays (tens of MB) serve only its refit: dropped before the photo-size maps.
+    if (stage.run == refitTheLighting) p.ps.lighting.rays.reset();
+  }
   if (opt.progress) opt.progress("objects", 1);
   return std::move(p.ps);
 }

@@ -23,10 +23,17 @@
 #include "inlay/render/scene.h"
 
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace inlay {
+
+// The rays an estimate traced for its gather and for the light gathered at the room's patches
+// (estimate.cpp): their hits, kept so that a second estimate of the same photo, camera, room and
+// lights' mask (the refit after the lights' refinement) replays them instead of tracing them
+// again (LightingOptions::reuseRays). The hits do not depend on the lights.
+struct LightingRays;
 
 struct LightingOptions {
   // Cosine-weighted rays per gathered pixel (gather.h); 0: chosen from a pilot so that Gamma's
@@ -83,6 +90,11 @@ struct LightingOptions {
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;
+  // An earlier estimate's rays (LightingEstimate::rays). Used only when they were traced for the
+  // same photo, lights' mask, camera, room, gather grid and samples, patches and seed (checked by
+  // a fingerprint of all of them; otherwise the estimate traces its own): the estimate is then
+  // the one it would compute tracing them, up to the order of its sums.
+  std::shared_ptr<const LightingRays> reuseRays;
   const CancelToken* cancel = nullptr;
 };
 
@@ -129,6 +141,11 @@ struct LightingEstimate {
   int gatherStride = 0;   // the gather's stride used (gatherStrideFor) and its grid's points
   int gatherPoints = 0;
   int passes = 0;  // gather-and-fit passes run (LightingOptions::maxPasses)
+  // The rays this estimate traced or replayed (for LightingOptions::reuseRays of a refit; about
+  // 70 bytes per ray that lands where the camera does not see, 4 per ray that it does: tens of
+  // MB, dropped by the preparation once the refit ran). raysReused: replayed, not traced.
+  std::shared_ptr<const LightingRays> rays;
+  bool raysReused = false;
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();

@@ -13,6 +13,8 @@
 #include "inlay/modeling/geometry.h"
 #include "inlay/render/path_tracer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -28,6 +30,51 @@ struct GatherSample {
   Vec3 standardError = Vec3::Zero();  // per channel, from the spread of the strata (conservative)
   int rays = 0;
 };
+
+// The gather's rays per side of its k x k strata for `samples` rays (k = round(sqrt(samples)),
+// at least 1): a gather casts k^2 rays.
+inline int gatherRaysPerSide(int samples) {
+  return std::max(1, int(std::lround(std::sqrt(double(std::max(samples, 1))))));
+}
+
+namespace detail {
+inline uint32_t gatherHash32(uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7feb352dU;
+  x ^= x >> 15;
+  x *= 0x846ca68bU;
+  x ^= x >> 16;
+  return x;
+}
+inline double gatherUniform(uint32_t a, uint32_t b, uint32_t c) {
+  return (gatherHash32(a ^ gatherHash32(b ^ gatherHash32(c))) >> 8) * (1.0 / 16777216.0);
+}
+}  // namespace detail
+
+// Casts the rays gatherIrradianceOverPi casts at a point (the same directions, in the same order)
+// and calls visit(const SurfaceHit* hit, uint32_t sampleId) for each: hit is nullptr where the ray
+// left the room, sampleId the one gatherIrradianceOverPi hands to RadianceAt. A caller that
+// gathers the same point again with other radiances keeps the hits instead of tracing them again
+// (estimate.cpp's GatherRays).
+template <class Visit>
+void forEachGatherRay(const RoomTracer& tracer, const Vec3& point, const Vec3& normal, int samples,
+                      uint32_t pixelId, uint32_t seed, Visit&& visit) {
+  const int nSide = gatherRaysPerSide(samples);
+  const Vec3 t = (std::abs(normal.x()) > 0.9 ? Vec3(0, 1, 0) : Vec3(1, 0, 0)).cross(normal).normalized();
+  const Vec3 b = normal.cross(t);
+  for (int i = 0; i < nSide; ++i)
+    for (int k = 0; k < nSide; ++k) {
+      const uint32_t s = uint32_t(i * nSide + k);
+      const double u1 = (i + detail::gatherUniform(pixelId, seed, 2 * s)) / nSide;
+      const double u2 = (k + detail::gatherUniform(pixelId, seed, 2 * s + 1)) / nSide;
+      const double r = std::sqrt(u1), phi = 2 * M_PI * u2;
+      const Vec3 d =
+          (r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1 - u1)) * normal)
+              .normalized();
+      const auto h = tracer.intersect(Ray{point + 1e-5 * normal, d}, 1e-5);
+      visit(h ? &*h : static_cast<const SurfaceHit*>(nullptr), pixelId * 1024u + s);
+    }
+}
 
 // Gathers at a room point. `point`, `normal`: world frame, normal unit and facing the room.
 GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point, const Vec3& normal,
