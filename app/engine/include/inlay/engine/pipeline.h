@@ -106,6 +106,10 @@ struct PreparedScene {
 // the photo itself.
 inline constexpr double kWorkingMaxPixels = 0.5e6;
 
+// PrepareOptions::keepBetterFitTolerance's default (0: any larger residual keeps the first
+// estimate; tests/bench/bench_refit_tolerance.py measures the residual's spread over seeds).
+inline constexpr double kKeepBetterFitTolerance = 0.0;
+
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
   // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
@@ -124,9 +128,14 @@ struct PrepareOptions {
   LightRefineOptions refine;
   // After the refinement the lighting is fitted again at the refined places; when that fit
   // explains the photo worse than the first estimate (its robust log residual,
-  // LightingEstimate::fitRmsLog, is larger), the first estimate's lights are kept (a warning says
-  // so). False: the refit is always taken.
+  // LightingEstimate::fitRmsLog, is larger by more than `keepBetterFitTolerance` of the first's),
+  // the first estimate's lights are kept (the refit stage's detail says so). False: the refit is
+  // always taken.
   bool keepBetterFit = true;
+  // The relative excess of the refit's residual over the first estimate's that is still a tie
+  // (the refit is kept): the fit residual's own spread over the gather's seeds
+  // (kKeepBetterFitTolerance). 0: any larger residual keeps the first estimate.
+  double keepBetterFitTolerance = kKeepBetterFitTolerance;
   // With refineLights: each sun's strength from its lit patch against the shadowed pixels of
   // the same surface beside it (lighting/sun_ratio.h), which cancels the albedo; the gathered
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
@@ -171,6 +180,12 @@ ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
 
 // Everything needed to render `doc`. Errors name the scene file's key and the reason.
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});
+
+// PrepareOptions::keepBetterFit's test: whether the refit's robust log residual `refit` is worse
+// than the first estimate's `first` by more than `tolerance` of it (a relative tie keeps the
+// refit). A residual that is not finite never wins; a negative or NaN tolerance counts as 0, an
+// infinite one keeps every finite refit.
+bool refitFitsWorse(double first, double refit, double tolerance);
 
 // Meshes by file (resolved path and subdivision levels), shared between object sets.
 using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
