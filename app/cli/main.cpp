@@ -17,6 +17,7 @@
 #include <cctype>
 #include <chrono>
 #include <csignal>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -107,6 +108,9 @@ Render options:
                           diagnostics: the refit after the light refinement is kept unless its
                           log residual is larger than the first estimate's by more than F of it
                           (default 0)
+  --fit-unseen-ceiling R,G,B
+                          diagnostics: the albedo the light fit's model gives a ceiling the
+                          photo does not show (default: the seen walls' mean)
   --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
                           shafts, lighting, refinement) work on the photo reduced to at most M
                           megapixels (default 0.5; 0: the photo's own size); their maps are
@@ -156,6 +160,7 @@ struct Args {
   bool initialLights = false;
   std::optional<int> spp, seed, threads, iterations, prepareSeed;
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
+  std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
@@ -200,7 +205,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
         s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
-        s == "--prepare-seed" || s == "--keep-better-fit-tolerance") {
+        s == "--prepare-seed" || s == "--keep-better-fit-tolerance" || s == "--fit-unseen-ceiling") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -218,7 +223,14 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--keep-better-fit-tolerance") {
+      else if (s == "--fit-unseen-ceiling") {
+        double r = -1, g = -1, b = -1;
+        char tail = 0;
+        if (std::sscanf(v->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
+            !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
+          return "--fit-unseen-ceiling: '" + *v + "' is not three non-negative numbers R,G,B";
+        a.fitUnseenCeiling = Vec3(r, g, b);
+      } else if (s == "--keep-better-fit-tolerance") {
         a.keepBetterFitTolerance = parseNumber<double>(*v);
         if (!a.keepBetterFitTolerance)
           return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
@@ -396,6 +408,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.refineLights = !a.initialLights;
   if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
+  if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   // decompose writes the decomposition itself: at the photo's own size.
   po.workingMaxPixels = a.command == "decompose" ? 0.0
                         : a.workingMp            ? *a.workingMp * 1e6

@@ -821,6 +821,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.cancel = p.opt.cancel;
   lo.threads = p.opt.threads;
   lo.seed += p.opt.seed;
+  lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();

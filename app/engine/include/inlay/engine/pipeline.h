@@ -151,6 +151,8 @@ struct PrepareOptions {
   // never the render seed (render.seed, --seed): renders of one scene with different render
   // seeds share one prepared scene, so they converge to one image.
   uint32_t seed = 0;
+  // Diagnostics: LightingOptions::fitUnseenCeilingAlbedo (negative: the product's rule).
+  Vec3 fitUnseenCeilingAlbedo = Vec3::Constant(-1);
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
