@@ -107,7 +107,7 @@ Render options:
   --keep-better-fit-tolerance F
                           diagnostics: the refit after the light refinement is kept unless its
                           log residual is larger than the first estimate's by more than F of it
-                          (default 0)
+                          (default 0.016: twice the residual's spread over seeds)
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)
