@@ -48,6 +48,13 @@ def main():
         r = run(cli, "render", "x.json", "--clamp-indirect", v, "-o", "a.png")
         check("bad --clamp-indirect " + v, r.returncode == 2 and "--clamp-indirect" in r.stderr, r.stderr)
     check("help names --clamp-indirect", "--clamp-indirect" in run(cli, "--help").stdout)
+    # Diagnostics of the preparation: a bad value exits 2 naming the flag.
+    for flag, values in (("--keep-better-fit-tolerance", ("-1", "nan", "inf", "low")),
+                         ("--prepare-seed", ("-1", "x")),
+                         ("--fit-unseen-ceiling", ("0.5,0.5", "0.5,0.5,0.5,0.5", "0.5,-1,0.5", "nan,0.5,0.5", "white"))):
+        for v in values:
+            r = run(cli, "render", "x.json", flag, v, "-o", "a.png")
+            check("bad %s %s" % (flag, v), r.returncode == 2 and flag in r.stderr, r.stderr)
     r = run(cli, "render", os.path.join(tmp, "missing.json"), "-o", os.path.join(tmp, "o.png"))
     check("missing scene", r.returncode == 2 and "missing.json" in r.stderr, r.stderr)
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace inlay {
 namespace {
@@ -414,10 +415,11 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
     EXPECT_EQ(unrefined->renderScene.lights[j].radiance, unrefined->initialLights[j].radiance);
 }
 
-// After the refinement the lighting is fitted again; the preparation keeps whichever of the
-// first estimate and that refit explains the photo better (the smaller LightingEstimate::
-// fitRmsLog), and says so in the refit stage's detail when it keeps the first. An outlined light never moves farther than
-// its outline's uncertainty (lighting/refine.h, outlineDisplacementBoundM).
+// After the refinement the lighting is fitted again; the preparation keeps the refit unless the
+// first estimate explains the photo better (LightingEstimate::fitRmsLog smaller by more than
+// PrepareOptions::keepBetterFitTolerance), and the refit stage's detail says which it kept with
+// both residuals. An outlined light never moves farther than its outline's uncertainty
+// (lighting/refine.h, outlineDisplacementBoundM).
 TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
   const SceneDoc doc = exampleDoc();
   auto kept = preparedExample();
@@ -429,12 +431,17 @@ TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
   const double refit = refitted->lighting.fitRmsLog;
   ASSERT_TRUE(std::isfinite(refit) && std::isfinite(kept->lighting.fitRmsLog));
   bool warned = false;
-  for (const auto& stage : kept->stages)
+  bool saidRefitKept = false;
+  for (const auto& stage : kept->stages) {
     warned = warned || stage.detail.find("first estimate fits the photo better") != std::string::npos;
+    saidRefitKept = saidRefitKept ||
+                    stage.detail.find("the refit is kept (log residual") != std::string::npos;
+  }
+  EXPECT_NE(warned, saidRefitKept);  // the detail names exactly one choice
   for (const auto& w : kept->warnings) EXPECT_EQ(w.find("first estimate"), std::string::npos) << w;
   // Kept: the first estimate, which fits better than the refit; else the refit itself.
   const auto& chosen = warned ? kept->initialLights : refitted->renderScene.lights;
-  if (warned) EXPECT_LT(kept->lighting.fitRmsLog, refit);
+  if (warned) EXPECT_LT(kept->lighting.fitRmsLog * (1 + kKeepBetterFitTolerance), refit);
   else EXPECT_EQ(kept->lighting.fitRmsLog, refit);
   ASSERT_EQ(kept->renderScene.lights.size(), chosen.size());
   for (size_t j = 0; j < chosen.size(); ++j) {
@@ -450,6 +457,33 @@ TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
     const Vec3 moved = r.refinement.lights[j].centre() - r.initialLights[j].centre();
     EXPECT_LE(moved.cwiseAbs().maxCoeff(), bound + 1e-9) << j;
   }
+}
+
+// The keep-better-fit rule on its own, with extreme residuals and tolerances: a relative tie
+// keeps the refit, a residual that is not finite never wins, a tolerance that is negative or NaN
+// counts as 0 (an infinite one keeps every finite refit); never a NaN decision.
+TEST(Engine, TheRefitIsKeptUnlessItFitsWorseByMoreThanTheTolerance) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(refitFitsWorse(0.1, 0.1, 0.0));      // equal: the refit
+  EXPECT_TRUE(refitFitsWorse(0.1, 0.1001, 0.0));    // any excess without a tolerance
+  EXPECT_FALSE(refitFitsWorse(0.1, 0.1001, 0.01));  // within 1 %: a tie, the refit
+  EXPECT_TRUE(refitFitsWorse(0.1, 0.1011, 0.01));   // beyond it: the first estimate
+  EXPECT_FALSE(refitFitsWorse(0.1, 0.05, 0.0));     // better: the refit
+  EXPECT_FALSE(refitFitsWorse(0.0, 0.0, 0.01));     // a perfect fit both times
+  EXPECT_TRUE(refitFitsWorse(0.0, 1e-300, 0.01));   // nothing is within a tolerance of zero
+  EXPECT_TRUE(refitFitsWorse(0.1, nan, 0.01));      // the refit failed: the first estimate
+  EXPECT_TRUE(refitFitsWorse(0.1, inf, 1e9));
+  EXPECT_FALSE(refitFitsWorse(nan, 0.1, 0.01));  // the first failed: the refit
+  EXPECT_FALSE(refitFitsWorse(inf, inf, 0.01));  // neither finite: the refit (the stage ran)
+  EXPECT_FALSE(refitFitsWorse(nan, nan, 0.01));
+  EXPECT_TRUE(refitFitsWorse(0.1, 0.1001, -5.0));  // a negative tolerance is 0
+  EXPECT_TRUE(refitFitsWorse(0.1, 0.1001, nan));   // so is one that is not a number
+  EXPECT_TRUE(refitFitsWorse(0.1, 0.1001, -inf));
+  EXPECT_FALSE(refitFitsWorse(0.1, 1e6, inf));   // an infinite tolerance keeps every finite refit
+  EXPECT_TRUE(refitFitsWorse(1e308, inf, 1.0));  // no overflow to a tie
+  EXPECT_GE(kKeepBetterFitTolerance, 0.0);
+  EXPECT_LT(kKeepBetterFitTolerance, 0.1);  // below t05's 10 %: half A's one real trigger stays
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <random>
 
@@ -1094,6 +1095,63 @@ TEST(Lighting, RaysOfAnotherPhotoCameraOrRoomAreTracedAgain) {
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(replayed->suns[0].irradianceOverPi[c] / plain->suns[0].irradianceOverPi[c], 1.0, 1e-6);
   EXPECT_LT(largestRelativeDifference(replayed->gathered, plain->gathered, 1e-3), 1e-5);
+}
+
+// The light fit's model of a ceiling the camera does not see (LightingOptions::
+// fitUnseenCeilingAlbedo, a diagnostic oracle): a sconce in a room with dark walls under a white
+// ceiling that the photo does not show. The fit explains each surface as rho (L E + Gamma), and
+// only the part of Gamma the photo shows (the seen walls' radiance) has an absolute scale; the
+// unseen ceiling's bounce is proportional to L itself (from the previous pass's lights). So the
+// brighter the fit's unseen ceiling, the brighter the fitted light: here 0.94 times the truth
+// with the walls' mean (the product's rule) and about 2 times with the true white ceiling, the
+// passes feeding the light's own bounce back (docs/generalization.md, "The lights' intensity
+// and the unseen ceiling"; t09 0.75 -> 1.14). A ceiling override that is negative or not finite
+// is no override: the same lights, finite.
+TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
+  SyntheticRoom r = emptyRoom();
+  r.camera.worldFromCamera = Eigen::AngleAxisd(-14 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  const Vec3 wall(0.3, 0.3, 0.3), ceiling(0.85, 0.85, 0.85);
+  r.albedo = {Vec3(0.3, 0.3, 0.3), ceiling, wall, wall, wall, wall};
+  // A 0.3 x 0.3 m sconce on the back wall, 2 m up (0.7 m under the ceiling), facing the camera.
+  const double z = -5.499;
+  r.light.cornersWorld = {Vec3(0.85, 1.85, z), Vec3(1.15, 1.85, z), Vec3(1.15, 2.15, z),
+                          Vec3(0.85, 2.15, z)};
+  if (r.light.normal().z() < 0) std::swap(r.light.cornersWorld[1], r.light.cornersWorld[3]);
+  r.light.radiance = Vec3(60, 60, 60);
+  for (const Vec3& c : r.light.cornersWorld) {
+    const auto p = r.camera.project(c);
+    ASSERT_TRUE(p && p->x() > 0 && p->x() < 160 && p->y() > 0 && p->y() < 120);  // in view
+    r.lightOutlinePx.push_back(*p);
+  }
+  r.photo = renderRoom(r, {r.light}, {}, 32);
+  int ceilingPixels = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int px = 0; px < 160; ++px) {
+      const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(px + 0.5, y + 0.5)));
+      ceilingPixels += h && r.geometry.surfaces[size_t(h->surfaceId)].kind == SurfaceKind::Ceiling;
+    }
+  ASSERT_EQ(ceilingPixels, 0);  // the photo shows no ceiling
+  LightingOptions opt;
+  opt.gatherSamples = 32;
+  opt.gatherStride = 4;
+  auto ratioWith = [&](const Vec3& fitCeiling) {
+    LightingOptions o = opt;
+    o.fitUnseenCeilingAlbedo = fitCeiling;
+    const auto est =
+        estimateLighting(r.photo, r.camera, r.geometry, {r.light}, {true}, lightMaskOf(r), {}, o);
+    EXPECT_TRUE(est.ok()) << est.error().message();
+    if (!est.ok()) return std::numeric_limits<double>::quiet_NaN();
+    for (float v : est->albedo.data) EXPECT_TRUE(std::isfinite(v));
+    return est->lights[0].radiance[1] / r.light.radiance[1];
+  };
+  const double rule = ratioWith(Vec3::Constant(-1)), truth = ratioWith(ceiling);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::printf("sconce / truth: walls' mean in the fit %.3f, true ceiling %.3f\n", rule, truth);
+  ASSERT_TRUE(std::isfinite(rule) && std::isfinite(truth) && rule > 0 && truth > 0);
+  EXPECT_LT(rule, truth);                           // the dark ceiling makes the light darker
+  EXPECT_NEAR(rule, 1.0, 0.2);                      // the product's rule on this room
+  EXPECT_EQ(ratioWith(Vec3(nan, 0.5, 0.5)), rule);  // not an override: the rule, the same seed
+  EXPECT_EQ(ratioWith(Vec3(0.5, -0.1, 0.5)), rule);
 }
 
 }  // namespace

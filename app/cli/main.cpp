@@ -17,6 +17,7 @@
 #include <cctype>
 #include <chrono>
 #include <csignal>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -100,6 +101,16 @@ Render options:
                           clamp (default: the scene's render.clamp_indirect)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
+  --prepare-seed K        diagnostics: the preparation's own randomness (the lighting fit's
+                          gather, the refinement's samples), added to each stage's seed
+                          (default 0); --seed is the render's only
+  --keep-better-fit-tolerance F
+                          diagnostics: the refit after the light refinement is kept unless its
+                          log residual is larger than the first estimate's by more than F of it
+                          (default 0.016: twice the residual's spread over seeds)
+  --fit-unseen-ceiling R,G,B
+                          diagnostics: the albedo the light fit's model gives a ceiling the
+                          photo does not show (default: the seen walls' mean)
   --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
                           shafts, lighting, refinement) work on the photo reduced to at most M
                           megapixels (default 0.5; 0: the photo's own size); their maps are
@@ -147,7 +158,9 @@ struct Args {
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
-  std::optional<int> spp, seed, threads, iterations;
+  std::optional<int> spp, seed, threads, iterations, prepareSeed;
+  std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
+  std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
@@ -192,7 +205,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
         s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
-        s == "--max-dark-fill") {
+        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
+        s == "--fit-unseen-ceiling") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -210,7 +224,18 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--working-mp") {
+      else if (s == "--fit-unseen-ceiling") {
+        double r = -1, g = -1, b = -1;
+        char tail = 0;
+        if (std::sscanf(v->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
+            !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
+          return "--fit-unseen-ceiling: '" + *v + "' is not three non-negative numbers R,G,B";
+        a.fitUnseenCeiling = Vec3(r, g, b);
+      } else if (s == "--keep-better-fit-tolerance") {
+        a.keepBetterFitTolerance = parseNumber<double>(*v);
+        if (!a.keepBetterFitTolerance)
+          return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
+      } else if (s == "--working-mp") {
         a.workingMp = parseNumber<double>(*v);
         if (!a.workingMp) return "--working-mp: '" + *v + "' is not a non-negative number of megapixels";
       } else if (s == "--min-improvement") {
@@ -251,6 +276,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
           if (*n < 1) return "--spp must be at least 1";
           a.spp = n;
         } else if (s == "--seed") a.seed = n;
+        else if (s == "--prepare-seed") a.prepareSeed = n;
         else if (s == "--iterations") {
           if (*n < 1) return "--iterations must be at least 1";
           a.iterations = n;
@@ -385,6 +411,9 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.threads = a.threads.value_or(0);
   po.progress = [&](const std::string& stage, double f) { progress.stage(stage, f); };
   po.refineLights = !a.initialLights;
+  if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
+  if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
+  if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   // decompose writes the decomposition itself: at the photo's own size.
   po.workingMaxPixels = a.command == "decompose" ? 0.0
                         : a.workingMp            ? *a.workingMp * 1e6

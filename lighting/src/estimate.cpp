@@ -1212,6 +1212,10 @@ void LightingFit::predictUnseenFromFit() {
     weight[s] = n[s] > 0 ? 1.0 : 0.0;
   }
   model.rho = albedoOfUnseen(geometry, fitted, weight);
+  if ((opt.fitUnseenCeilingAlbedo.array() >= 0).all() && opt.fitUnseenCeilingAlbedo.allFinite())
+    for (size_t s = 0; s < S; ++s)
+      if (weight[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
+        model.rho[s] = opt.fitUnseenCeilingAlbedo;
   if (!clippedInBeam.empty()) {
     beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
                                          out.lights, out.suns, true);

@@ -825,6 +825,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.cancel = p.opt.cancel;
   lo.threads = p.opt.threads;
   lo.seed += p.opt.seed;
+  lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
@@ -883,13 +884,6 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   return {};
 }
 
-// Whether the refit's residual against the photo is worse than the first estimate's; a
-// residual that is not a finite number never wins.
-bool refitIsWorse(double before, double after) {
-  if (!std::isfinite(after)) return std::isfinite(before);
-  return std::isfinite(before) && after > before;
-}
-
 // The albedo-intensity split rests on the shape of each light's irradiance over the room
 // (B = rho (L E + Gamma) is flat along rho / k, L k where E and Gamma look alike): with the
 // refined positions, the radiances, Gamma and the albedo are estimated again.
@@ -908,7 +902,8 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   if (!again) return p.cancelled() ? cancelledError() : again.error();
   p.stageSteps = stepsOf(*again);  // the refit's work, whichever fit is kept
   // ps.lighting is still the first estimate's fit (the refinement changed only its lights).
-  if (p.opt.keepBetterFit && refitIsWorse(ps.lighting.fitRmsLog, again->fitRmsLog)) {
+  const double first = ps.lighting.fitRmsLog;
+  if (p.opt.keepBetterFit && refitFitsWorse(first, again->fitRmsLog, p.opt.keepBetterFitTolerance)) {
     // A routine self-check, not something the user must act on: the stage's detail (the
     // report, --verbose, the studio's log) says it, the warnings do not.
     char buf[200];
@@ -923,7 +918,12 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   }
   ps.lighting = std::move(*again);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
-  detail = "a light moved, " + gatherText(ps.lighting);
+  char buf[160];
+  std::snprintf(
+      buf, sizeof buf,
+      "a light moved; the refit is kept (log residual %.5f against the first estimate's %.5f), ",
+      ps.lighting.fitRmsLog, first);
+  detail = buf + gatherText(ps.lighting);
   return {};
 }
 
@@ -1145,6 +1145,13 @@ const CameraResponse* outputResponseOf(const PreparedScene& scene) {
   const bool linearPhoto = scene.response.family() == ResponseFamily::Linear &&
                            !scene.photo.wasSrgbEncoded;
   return linearPhoto ? nullptr : &scene.response;
+}
+
+bool refitFitsWorse(double before, double after, double tolerance) {
+  // before * (1 + tol) is infinite for an infinite tolerance: every finite refit is kept.
+  if (!std::isfinite(after)) return std::isfinite(before);
+  const double tol = std::isnan(tolerance) ? 0.0 : std::max(0.0, tolerance);
+  return std::isfinite(before) && after > before * (1 + tol);
 }
 
 }  // namespace inlay

@@ -87,6 +87,11 @@ struct LightingOptions {
   // first's): the photo shows only the sum of their light on the walls, and a free split drifts
   // (scenes-train t11, docs/generalization.md). False: each gets its own.
   bool tieLightsOutOfView = true;
+  // Diagnostics (an oracle): when every channel is >= 0, the albedo the fit's own model of the
+  // room gives a ceiling the camera does not see (its passes' unseen patches), instead of the
+  // walls' mean (albedoOfUnseen). The fitted lights follow it (docs/generalization.md, "The
+  // lights' intensity and the unseen ceiling"). Negative: the product's rule.
+  Vec3 fitUnseenCeilingAlbedo = Vec3::Constant(-1);
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;
