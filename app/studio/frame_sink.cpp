@@ -74,10 +74,11 @@ void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   image.estimatedError = frame->estimatedError;
   image.final = frame->final;
   image.frame = frame;
-  auto linear = std::make_shared<ImageF>(compositeOf(context->photo.linearRgb, keys.exposure, *frame,
-                                                     grain ? &context->photoNoise : nullptr, keys.seed,
-                                                     field.get()));
-  // compositeOf already applied the scene's exposure.
+  auto linear = std::make_shared<ImageF>(compositeOf(
+      context->photo.linearRgb, keys.exposure, *frame, grain ? &context->photoNoise : nullptr, keys.seed,
+      field.get(), &context->renderScene.roomAlbedo.photoRadiance));
+  // compositeOf already applied the scene's exposure. The room's unclipped radiance makes an
+  // object's shadow on a clipped sunlit patch the same in the live frames as in the final render.
   image.srgb8 = encoded8FromLinear(*linear, context->response, 0.0);
   image.linear = std::move(linear);
 
