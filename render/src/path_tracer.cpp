@@ -623,6 +623,7 @@ struct PathTracer::Impl {
     double tNear = 0;
     Vec3 throughput = Vec3::Ones();
     int depth = 0;                   // index of the vertex the ray will find (0: the camera ray's hit)
+    int glassVertices = 0;           // smooth glass vertices passed (TracerOptions::maxGlassDepth)
     bool lastSpecular = true;        // camera rays count as specular: lights seen directly count
     double lastPdf = 0;              // solid-angle pdf of the last non-specular bounce (MIS)
     Vec3 lastPoint = Vec3::Zero();   // the vertex of that bounce (MIS: the light pdf seen from it)
@@ -799,7 +800,11 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (endsOnPhoto(mode, st, hit, rng, out)) return;
     SurfaceBsdf bsdf;
     if (!surfaceBsdf(mode, st, hit, out, &bsdf)) return;  // a glowing object ends the path
-    if (st.depth >= options.maxDepth) return;
+    const bool glass = bsdf.kind == Material::Kind::Glass;
+    if (glass ? st.glassVertices >= options.maxGlassDepth
+              : st.depth - st.glassVertices >= options.maxDepth)
+      return;
+    st.glassVertices += glass ? 1 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     const bool goesOn = bsdf.nonSpecular() ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
@@ -1126,25 +1131,14 @@ bool PathTracer::Impl::reflectMirror(PathState& st, const Vertex& v, const Surfa
   return true;
 }
 
-// Smooth dielectric, clear (no absorption): reflect or refract by the Fresnel weight. False
-// when the direction lands on the wrong side of the real surface.
+// Smooth dielectric, clear (no absorption): reflect or refract by the Fresnel weight
+// (sampleSmoothGlass: never lost at a shading normal's silhouette).
 bool PathTracer::Impl::scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const {
   // Entering when the ray comes from the outward side.
   const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
-  Vec3 n = v.ns;  // faces the incoming side
-  double cosI = v.wo.dot(n);
-  if (cosI <= 0) n = v.ngFacing, cosI = v.wo.dot(n);
-  double cosT = 0;
-  const double f = fresnelDielectric(cosI, eta, &cosT);
-  if (v.pickAndLobe[1] < f) {
-    st.dir = reflect(v.wo, n).normalized();
-    st.origin = v.point + v.eps * v.ngFacing;
-    if (st.dir.dot(v.ngFacing) <= 0) return false;
-  } else {
-    st.dir = (-v.wo / eta + (cosI / eta - cosT) * n).normalized();
-    st.origin = v.point - v.eps * v.ngFacing;
-    if (st.dir.dot(v.ngFacing) >= 0) return false;
-  }
+  const SmoothGlassSample s = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, v.pickAndLobe[1]);
+  st.dir = s.dir;
+  st.origin = v.point + (s.reflected ? v.eps : -v.eps) * v.ngFacing;
   st.lastSpecular = true;
   st.lastPdf = 0;
   return true;
