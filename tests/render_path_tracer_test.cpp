@@ -176,6 +176,17 @@ TEST(Glass, SlabTransmitsFresnelSeries) {
 // Smooth glass vertices count apart from maxDepth (TracerOptions::maxGlassDepth): with a single
 // bounce allowed elsewhere, the slab still passes its light and its inner reflections (the path
 // crosses two faces and up to ten more inside); counted in maxDepth the slab was black.
+// Splitting at the camera's first glass vertex (the default) keeps the same expectation as the
+// Fresnel choice: both give the slab's series.
+TEST(Glass, SplitAtTheCameraKeepsTheSlabsTransmission) {
+  TracerOptions opt;
+  opt.maxDepth = 16;
+  ASSERT_TRUE(opt.splitGlassAtCamera);
+  expectSlabTransmitsFresnelSeries(opt);
+  opt.splitGlassAtCamera = false;
+  expectSlabTransmitsFresnelSeries(opt);
+}
+
 TEST(Glass, GlassVerticesCountApartFromTheBounces) {
   TracerOptions opt;
   opt.maxDepth = 1;

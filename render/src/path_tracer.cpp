@@ -723,6 +723,8 @@ struct PathTracer::Impl {
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
   bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
+  bool splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                  const SampleRng& rng, Sums& out) const;
   bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
 };
 
@@ -807,8 +809,10 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     st.glassVertices += glass ? 1 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+    const bool split = glass && st.depth == 0 && options.splitGlassAtCamera;
     const bool goesOn = bsdf.nonSpecular() ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
                         : bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
+                        : split                               ? splitGlass(mode, st, v, bsdf, rng, out)
                                                               : scatterGlass(st, v, bsdf);
     if (!goesOn) return;
     st.tNear = 0;
@@ -1139,6 +1143,34 @@ bool PathTracer::Impl::scatterGlass(PathState& st, const Vertex& v, const Surfac
   const SmoothGlassSample s = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, v.pickAndLobe[1]);
   st.dir = s.dir;
   st.origin = v.point + (s.reflected ? v.eps : -v.eps) * v.ngFacing;
+  st.lastSpecular = true;
+  st.lastPdf = 0;
+  return true;
+}
+
+// The camera's first smooth-glass vertex, split (TracerOptions::splitGlassAtCamera): the
+// reflection is traced as a branch of weight F and this path goes on refracted with weight
+// 1 - F, instead of one of them picked with those probabilities (whose choice was half of a
+// glass object's noise at 16 samples). Total internal reflection, or F = 0, has nothing to
+// split.
+bool PathTracer::Impl::splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                                  const SampleRng& rng, Sums& out) const {
+  const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+  const SmoothGlassSample r = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, 0.0);
+  const SmoothGlassSample t = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, std::nextafter(1.0, 0.0));
+  if (!r.reflected || t.reflected) return scatterGlass(st, v, bsdf);
+  PathState branch = st;
+  branch.dir = r.dir;
+  branch.origin = v.point + v.eps * v.ngFacing;
+  branch.throughput *= r.fresnel;
+  branch.lastSpecular = true;
+  branch.lastPdf = 0;
+  branch.tNear = 0;
+  ++branch.depth;
+  tracePath(mode, branch, rng, out, nullptr);
+  st.dir = t.dir;
+  st.origin = v.point - v.eps * v.ngFacing;
+  st.throughput *= 1.0 - t.fresnel;
   st.lastSpecular = true;
   st.lastPdf = 0;
   return true;

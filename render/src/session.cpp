@@ -442,7 +442,8 @@ void RenderSession::setOptions(const SessionOptions& options) {
   const TracerOptions& a = impl_->options.tracer;
   const TracerOptions& b = options.tracer;
   if (a.maxDepth != b.maxDepth || a.maxGlassDepth != b.maxGlassDepth ||
-      a.russianRouletteDepth != b.russianRouletteDepth || a.clampRadiance != b.clampRadiance)
+      a.splitGlassAtCamera != b.splitGlassAtCamera || a.russianRouletteDepth != b.russianRouletteDepth ||
+      a.clampRadiance != b.clampRadiance)
     impl_->rebuild = true;
   impl_->options = options;
   impl_->token.cancel();
