@@ -296,5 +296,82 @@ TEST(BsdfReciprocity, DiffuseAndConductorAreSymmetric) {
   EXPECT_GT(asymmetricGlossy, 50);
 }
 
+// Smooth glass (sampleSmoothGlass): Snell's law and the Fresnel split at stiff indices, total
+// internal reflection, and a shading normal that would send the ray to the wrong side.
+Vec3 refractedBySnell(const Vec3& wo, double eta) {  // flat interface, normal +z
+  const double sinT = std::sqrt(1 - wo.z() * wo.z()) / eta;
+  const Vec3 t = Vec3(-wo.x(), -wo.y(), 0).normalized();
+  return Vec3(sinT * t.x(), sinT * t.y(), -std::sqrt(std::max(0.0, 1 - sinT * sinT)));
+}
+
+TEST(SmoothGlass, FresnelAndSnellAtStiffIndices) {
+  const Vec3 n(0, 0, 1);
+  for (double eta : {1.0001, 1.5, 4.0, 1 / 1.5}) {
+    const double f0 = (eta - 1) * (eta - 1) / ((eta + 1) * (eta + 1));  // normal incidence
+    const SmoothGlassSample head = sampleSmoothGlass(Vec3(0, 0, 1), n, n, eta, 0.999999);
+    EXPECT_NEAR(head.fresnel, f0, 1e-12) << eta;
+    EXPECT_NEAR((head.dir - Vec3(0, 0, -1)).norm(), 0.0, 1e-12) << eta;
+    for (double theta : {10.0, 35.0, 40.0}) {  // below the critical angle of 1 / 1.5 (41.8)
+      const Vec3 wo = direction(theta);
+      const SmoothGlassSample t = sampleSmoothGlass(wo, n, n, eta, 0.999999);
+      ASSERT_FALSE(t.reflected) << eta << " " << theta;
+      EXPECT_LT((t.dir - refractedBySnell(wo, eta)).norm(), 1e-9) << eta << " " << theta;
+      const SmoothGlassSample r = sampleSmoothGlass(wo, n, n, eta, 0.0);
+      ASSERT_TRUE(r.reflected);
+      EXPECT_LT((r.dir - reflect(wo, n)).norm(), 1e-12);
+      // Fresnel's equations in the angles alone (an independent form of the same law).
+      const double ti = theta * kPi / 180, tt = std::asin(std::sin(ti) / eta);
+      const double rs = std::pow(std::sin(ti - tt) / std::sin(ti + tt), 2);
+      const double rp = std::pow(std::tan(ti - tt) / std::tan(ti + tt), 2);
+      EXPECT_NEAR(t.fresnel, 0.5 * (rs + rp), 1e-9) << eta << " " << theta;
+    }
+  }
+  // Almost no interface: nothing reflected, the ray goes straight on.
+  const Vec3 wo = direction(60);
+  const SmoothGlassSample t = sampleSmoothGlass(wo, n, n, 1.0001, 0.5);
+  EXPECT_LT(t.fresnel, 1e-6);
+  EXPECT_LT((t.dir + wo).norm(), 1e-3);
+}
+
+TEST(SmoothGlass, TotalInternalReflectionAlwaysReflects) {
+  const Vec3 n(0, 0, 1);
+  const double eta = 1 / 1.5, critical = std::asin(eta) * 180 / kPi;  // 41.81 degrees
+  for (double theta : {critical + 0.01, 50.0, 89.9})
+    for (double u : {0.0, 0.5, 0.999999}) {
+      const SmoothGlassSample s = sampleSmoothGlass(direction(theta), n, n, eta, u);
+      EXPECT_EQ(s.fresnel, 1.0);
+      EXPECT_TRUE(s.reflected);
+      EXPECT_LT((s.dir - reflect(direction(theta), n)).norm(), 1e-12);
+    }
+  const SmoothGlassSample below = sampleSmoothGlass(direction(critical - 0.5), n, n, eta, 0.999999);
+  EXPECT_FALSE(below.reflected);
+}
+
+// An interpolated normal tilted far from the facet's (a coarse mesh's silhouette): every sample
+// leaves on the side it says (reflected above the real surface, refracted below), none is
+// lost, and an untilted normal is left alone.
+TEST(SmoothGlass, ShadingNormalNeverSendsTheRayToTheWrongSide) {
+  const Vec3 ng(0, 0, 1);
+  int fixedReflections = 0;
+  for (double tilt : {0.0, 20.0, 45.0, 70.0})
+    for (double theta : {0.0, 30.0, 60.0, 80.0, 89.0})
+      for (double phi : {0.0, 1.0, 3.14159})
+        for (double eta : {1.5, 1 / 1.5})
+          for (double u : {0.0, 0.3, 0.999999}) {
+            const Vec3 ns = direction(tilt, 0.0), wo = direction(theta, phi);
+            const Vec3 nr = reflectableNormal(wo, ng, ns);
+            EXPECT_NEAR(nr.norm(), 1.0, 1e-9);
+            EXPECT_GE(reflect(wo, nr).dot(ng), std::min(0.9 * wo.z(), 0.01) - 1e-9);
+            if (reflect(wo, ns).z() >= std::min(0.9 * wo.z(), 0.01)) EXPECT_EQ(nr, ns);
+            else ++fixedReflections;
+            const SmoothGlassSample s = sampleSmoothGlass(wo, ng, ns, eta, u);
+            ASSERT_TRUE(s.dir.allFinite());
+            EXPECT_NEAR(s.dir.norm(), 1.0, 1e-9);
+            EXPECT_EQ(s.reflected, s.dir.z() > 0) << tilt << " " << theta << " " << u;
+            EXPECT_NE(s.dir.z(), 0.0);
+          }
+  EXPECT_GT(fixedReflections, 10);  // the grid does reach the case the fix is for
+}
+
 }  // namespace
 }  // namespace inlay::detail

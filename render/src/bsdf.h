@@ -263,6 +263,60 @@ inline BsdfSample sampleRoughGlass(const Vec3& wo, double alpha, double eta, dou
   return s;
 }
 
+// A shading normal ns (unit, on wo's side of the geometric normal ng) whose mirror reflection of
+// wo leaves the surface: ns itself when reflect(wo, ns) rises at least min(0.9 wo.ng, 0.01)
+// above the real surface (a reflection may always be as shallow as the incoming ray), else the
+// half vector of wo and that reflection lifted, keeping its azimuth, to exactly that elevation.
+// At an interpolated normal's silhouette the mirror direction otherwise points into the
+// surface, and a path that ends there is black (the dark outline a low-polygon glass object had).
+inline Vec3 reflectableNormal(const Vec3& wo, const Vec3& ng, const Vec3& ns) {
+  const Vec3 r = reflect(wo, ns);
+  const double floor = std::min(0.9 * wo.dot(ng), 0.01);
+  if (r.dot(ng) >= floor) return ns;
+  const Vec3 along = r - r.dot(ng) * ng;  // r's tangential part: its azimuth
+  const double len = along.norm();
+  const double lift = std::max(floor, 0.0);
+  const Vec3 tangent = len > 1e-12 ? Vec3(along / len) : Vec3(-(wo - wo.dot(ng) * ng).normalized());
+  const Vec3 lifted = std::sqrt(std::max(0.0, 1.0 - lift * lift)) * tangent + lift * ng;
+  const Vec3 h = wo + lifted;
+  const double hn = h.norm();
+  return hn > 1e-12 && h.allFinite() ? Vec3(h / hn) : ng;
+}
+
+// A smooth dielectric interface (clear: no absorption) hit from wo: the reflected or refracted
+// direction, chosen with the Fresnel probability by u in [0, 1) (so the weight is 1 either way;
+// radiance is not scaled by eta^2, which cancels on the way out of a closed object). eta = n on
+// the far side of the interface / n on wo's side; ngFacing the geometric normal on wo's side,
+// ns the shading normal (the geometric one without vertex normals), turned to wo's side too.
+// The shading normal is made reflectable first (reflectableNormal); where it would still send
+// the refracted ray out on wo's side of the real surface (or a reflection below it), the
+// geometric normal decides instead: a sample is never lost, so the object never turns black at
+// its outline. `reflected` says which side the direction leaves on.
+struct SmoothGlassSample {
+  Vec3 dir = Vec3::Zero();
+  bool reflected = false;
+  double fresnel = 0;  // the reflectance that chose
+};
+inline SmoothGlassSample sampleSmoothGlassWith(const Vec3& wo, const Vec3& n, double eta, double u) {
+  SmoothGlassSample s;
+  const double cosI = std::max(0.0, wo.dot(n));
+  double cosT = 0;
+  s.fresnel = fresnelDielectric(cosI, eta, &cosT);
+  s.reflected = u < s.fresnel;
+  s.dir = s.reflected ? reflect(wo, n) : Vec3(-wo / eta + (cosI / eta - cosT) * n);
+  s.dir.normalize();
+  return s;
+}
+inline SmoothGlassSample sampleSmoothGlass(const Vec3& wo, const Vec3& ngFacing, const Vec3& ns,
+                                           double eta, double u) {
+  Vec3 n = ns.dot(ngFacing) > 0 && wo.dot(ns) > 0 ? reflectableNormal(wo, ngFacing, ns) : ngFacing;
+  SmoothGlassSample s = sampleSmoothGlassWith(wo, n, eta, u);
+  const double side = s.dir.dot(ngFacing);
+  if (!(s.reflected ? side > 0 : side < 0) || !s.dir.allFinite())
+    s = sampleSmoothGlassWith(wo, ngFacing, eta, u);
+  return s;
+}
+
 inline Vec3 SurfaceBsdf::eval(const Vec3& wo, const Vec3& wi, double* pdf) const {
   if (kind == Material::Kind::RoughGlass) return roughGlassEval(wo, wi, alpha, eta, pdf);
   return evalReflecting(wo, wi, pdf);

@@ -628,6 +628,7 @@ struct PathTracer::Impl {
     double tNear = 0;
     Vec3 throughput = Vec3::Ones();
     int depth = 0;                   // index of the vertex the ray will find (0: the camera ray's hit)
+    int glassVertices = 0;           // smooth glass vertices passed (TracerOptions::maxGlassDepth)
     bool lastSpecular = true;        // camera rays count as specular: lights seen directly count
     double lastPdf = 0;              // solid-angle pdf of the last non-specular bounce (MIS)
     Vec3 lastPoint = Vec3::Zero();   // the vertex of that bounce (MIS: the light pdf seen from it)
@@ -738,6 +739,8 @@ struct PathTracer::Impl {
   void buildSunPatches();
   bool reflectMirror(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
+  bool splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                  const SampleRng& rng, Sums& out) const;
   bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
 };
 
@@ -815,11 +818,17 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     if (endsOnPhoto(mode, st, hit, rng, out)) return;
     SurfaceBsdf bsdf;
     if (!surfaceBsdf(mode, st, hit, out, &bsdf)) return;  // a glowing object ends the path
-    if (st.depth >= options.maxDepth) return;
+    const bool glass = bsdf.kind == Material::Kind::Glass;
+    if (glass ? st.glassVertices >= options.maxGlassDepth
+              : st.depth - st.glassVertices >= options.maxDepth)
+      return;
+    st.glassVertices += glass ? 1 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+    const bool split = glass && st.depth == 0 && options.splitGlassAtCamera;
     const bool goesOn = bsdf.nonSpecular() ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
                         : bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
+                        : split                               ? splitGlass(mode, st, v, bsdf, rng, out)
                                                               : scatterGlass(st, v, bsdf);
     if (!goesOn) return;
     st.tNear = 0;
@@ -1232,25 +1241,42 @@ bool PathTracer::Impl::reflectMirror(PathState& st, const Vertex& v, const Surfa
   return true;
 }
 
-// Smooth dielectric, clear (no absorption): reflect or refract by the Fresnel weight. False
-// when the direction lands on the wrong side of the real surface.
+// Smooth dielectric, clear (no absorption): reflect or refract by the Fresnel weight
+// (sampleSmoothGlass: never lost at a shading normal's silhouette).
 bool PathTracer::Impl::scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const {
   // Entering when the ray comes from the outward side.
   const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
-  Vec3 n = v.ns;  // faces the incoming side
-  double cosI = v.wo.dot(n);
-  if (cosI <= 0) n = v.ngFacing, cosI = v.wo.dot(n);
-  double cosT = 0;
-  const double f = fresnelDielectric(cosI, eta, &cosT);
-  if (v.pickAndLobe[1] < f) {
-    st.dir = reflect(v.wo, n).normalized();
-    st.origin = v.point + v.eps * v.ngFacing;
-    if (st.dir.dot(v.ngFacing) <= 0) return false;
-  } else {
-    st.dir = (-v.wo / eta + (cosI / eta - cosT) * n).normalized();
-    st.origin = v.point - v.eps * v.ngFacing;
-    if (st.dir.dot(v.ngFacing) >= 0) return false;
-  }
+  const SmoothGlassSample s = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, v.pickAndLobe[1]);
+  st.dir = s.dir;
+  st.origin = v.point + (s.reflected ? v.eps : -v.eps) * v.ngFacing;
+  st.lastSpecular = true;
+  st.lastPdf = 0;
+  return true;
+}
+
+// The camera's first smooth-glass vertex, split (TracerOptions::splitGlassAtCamera): the
+// reflection is traced as a branch of weight F and this path goes on refracted with weight
+// 1 - F, instead of one of them picked with those probabilities (whose choice was half of a
+// glass object's noise at 16 samples). Total internal reflection, or F = 0, has nothing to
+// split.
+bool PathTracer::Impl::splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                                  const SampleRng& rng, Sums& out) const {
+  const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+  const SmoothGlassSample r = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, 0.0);
+  const SmoothGlassSample t = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, std::nextafter(1.0, 0.0));
+  if (!r.reflected || t.reflected) return scatterGlass(st, v, bsdf);
+  PathState branch = st;
+  branch.dir = r.dir;
+  branch.origin = v.point + v.eps * v.ngFacing;
+  branch.throughput *= r.fresnel;
+  branch.lastSpecular = true;
+  branch.lastPdf = 0;
+  branch.tNear = 0;
+  ++branch.depth;
+  tracePath(mode, branch, rng, out, nullptr);
+  st.dir = t.dir;
+  st.origin = v.point - v.eps * v.ngFacing;
+  st.throughput *= 1.0 - t.fresnel;
   st.lastSpecular = true;
   st.lastPdf = 0;
   return true;

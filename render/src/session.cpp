@@ -441,7 +441,8 @@ void RenderSession::setOptions(const SessionOptions& options) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   const TracerOptions& a = impl_->options.tracer;
   const TracerOptions& b = options.tracer;
-  if (a.maxDepth != b.maxDepth || a.russianRouletteDepth != b.russianRouletteDepth ||
+  if (a.maxDepth != b.maxDepth || a.maxGlassDepth != b.maxGlassDepth ||
+      a.splitGlassAtCamera != b.splitGlassAtCamera || a.russianRouletteDepth != b.russianRouletteDepth ||
       a.clampRadiance != b.clampRadiance)
     impl_->rebuild = true;
   impl_->options = options;
