@@ -83,6 +83,17 @@ ImageF lightMaskOf(const SyntheticRoom& r) {
   return m;
 }
 
+// The exposure that clips a tenth of the room at 1 (the green channel's 90th percentile outside
+// the light's mask brought to 1).
+float exposureClippingATenth(const SyntheticRoom& r, const ImageF& mask) {
+  std::vector<float> room;
+  for (int y = 0; y < r.photo.height; ++y)
+    for (int x = 0; x < r.photo.width; ++x)
+      if (mask.at(x, y) < 0.5f) room.push_back(r.photo.at(x, y, 1));
+  std::nth_element(room.begin(), room.begin() + long(room.size() * 9 / 10), room.end());
+  return 1.f / room[room.size() * 9 / 10];
+}
+
 TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
   const Vec3 trueRadiance(6.0, 5.0, 4.0);
   const SyntheticRoom r = makeRoom(trueRadiance, 64);
@@ -149,12 +160,7 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
 TEST(Lighting, ClippedPixelsSendMoreLightThanTheyShow) {
   const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 64);
   const ImageF mask = lightMaskOf(r);
-  std::vector<float> room;
-  for (int y = 0; y < r.photo.height; ++y)
-    for (int x = 0; x < r.photo.width; ++x)
-      if (mask.at(x, y) < 0.5f) room.push_back(r.photo.at(x, y, 1));
-  std::nth_element(room.begin(), room.begin() + long(room.size() * 9 / 10), room.end());
-  const float exposure = 1.f / room[room.size() * 9 / 10];
+  const float exposure = exposureClippingATenth(r, mask);
   ImageF photo = r.photo;
   double excess = 0, clipped = 0;  // the clipped pixels' true radiance over what they show
   for (float& v : photo.data) {
@@ -1005,12 +1011,7 @@ TEST(Lighting, ARefitReplayingTheFirstEstimatesRaysGivesWhatTracingGives) {
   const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 16);
   const ImageF mask = lightMaskOf(r);
   // Exposed so that a tenth of the room clips (ClippedPixelsSendMoreLightThanTheyShow).
-  std::vector<float> room;
-  for (int y = 0; y < r.photo.height; ++y)
-    for (int x = 0; x < r.photo.width; ++x)
-      if (mask.at(x, y) < 0.5f) room.push_back(r.photo.at(x, y, 1));
-  std::nth_element(room.begin(), room.begin() + long(room.size() * 9 / 10), room.end());
-  const float exposure = 1.f / room[room.size() * 9 / 10];
+  const float exposure = exposureClippingATenth(r, mask);
   ImageF photo = r.photo;
   for (float& v : photo.data) v = std::min(1.f, v * exposure);
   auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
