@@ -55,6 +55,7 @@ class StudioDocumentTest : public QObject {
   void srgbEncodingHasKnownValues();
   void sinkDropsOldVersionsAndNotifiesOnce();
   void sinkCompositeOfUntouchedSceneIsThePhoto();
+  void sinkShadowOnAClippedSunPatchIsTheRendersShadow();
   void dragMergesAndReturningIsObsolete();
   void cancelDropsTheResult();
   void saveAsRewritesRelativePaths();
@@ -140,6 +141,24 @@ void StudioDocumentTest::sinkCompositeOfUntouchedSceneIsThePhoto() {
   const std::optional<CompositeImage> obj = sink.take();
   QVERIFY(obj);
   QCOMPARE(qRed(obj->srgb8.pixel(0, 0)), 255);
+}
+
+// A sun's patch clips in the photo (1.0, its radiance 6): an object's shadow there is the
+// render's shadow (0.4) in the live frames as in the final render, not clip + 0.4 - 6 (black).
+// The composite context carries the room's unclipped radiance only for a scene with a sun.
+void StudioDocumentTest::sinkShadowOnAClippedSunPatchIsTheRendersShadow() {
+  PreparedScene scene;
+  scene.photo.linearRgb = ImageF(4, 3, 3, 1.f);
+  scene.renderScene.roomAlbedo.photoRadiance = ImageF(4, 3, 3, 6.f);
+  QVERIFY(CompositeSink::compositeContextOf(scene)->renderScene.roomAlbedo.photoRadiance.empty());
+  scene.renderScene.suns.push_back(SunLight{});
+  CompositeSink sink([] {});
+  sink.setContext(CompositeSink::compositeContextOf(scene), 1);
+  sink.onFrame(makeFrame(1, ImageF(4, 3, 3, 0.4f), ImageF(4, 3, 3, 6.f), 0.f));
+  const std::optional<CompositeImage> got = sink.take();
+  QVERIFY(got);
+  QCOMPARE(got->linear->at(2, 1, 0), 0.4f);
+  QCOMPARE(got->linear->at(2, 1, 2), 0.4f);
 }
 
 // The sink encodes the composite through the photo's camera response (untouched pixels show the

@@ -18,6 +18,10 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
   context->photoNoise = scene.photoNoise;
   context->camera = scene.camera;
   context->box = scene.box;
+  // The room's unclipped radiance, which the composite takes over a clipped sunlit patch: it
+  // differs from the photo only where a sun's patch clips, so only a scene with a sun needs it.
+  if (!scene.renderScene.suns.empty())
+    context->renderScene.roomAlbedo.photoRadiance = scene.renderScene.roomAlbedo.photoRadiance;
   return context;
 }
 

@@ -95,6 +95,9 @@ void RenderController::startScene() {
     reduced->photo.linearRgb =
         resizeImage(context->photo.linearRgb, previewSize_.width(), previewSize_.height());
     reduced->camera = scaledCamera(context->camera, previewSize_.width(), previewSize_.height());
+    ImageF& unclipped = reduced->renderScene.roomAlbedo.photoRadiance;
+    if (!unclipped.empty())
+      unclipped = resizeImage(unclipped, previewSize_.width(), previewSize_.height());
     context = std::move(reduced);
   }
   sink_->setContext(std::move(context), requestedVersion_ + 1);
