@@ -110,8 +110,6 @@ class StepTimer {
   double cpu0_;
 };
 
-double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
-
 // The light a sun's clipped sunlit patch on one surface bounces to a pixel: sun strength x the
 // patch surface's albedo x `g` (the gathered irradiance / pi of that patch under a unit sun and
 // unit albedo). `rhoBlock` and `sunBlock` index the residual's parameter blocks.

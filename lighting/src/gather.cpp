@@ -5,12 +5,6 @@
 
 namespace inlay {
 
-namespace {
-
-double luminance(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
-
-}  // namespace
-
 GatherSample gatherIrradianceOverPi(const RoomTracer& tracer, const Vec3& point, const Vec3& normal,
                                     int samples, uint32_t pixelId, uint32_t seed,
                                     const RadianceAt& radianceAt) {

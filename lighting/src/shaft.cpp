@@ -36,7 +36,7 @@ Expected<std::vector<BoxPixel>> boxPixels(const std::array<double, 4>& box, cons
     for (int x = x0; x < x1; ++x) {
       const Vec3 c = photo.rgb(x, y);
       if (!c.allFinite()) continue;
-      const double lum = 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z();
+      const double lum = luminance(c);
       const Ray r = camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
       const auto h = geometry.intersect(r);
       if (!h) continue;

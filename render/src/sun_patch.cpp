@@ -9,8 +9,6 @@ namespace inlay::detail {
 
 namespace {
 
-double luminanceOf(const Vec3& c) { return 0.2126 * c.x() + 0.7152 * c.y() + 0.0722 * c.z(); }
-
 // Where the ray from the camera through pixel position px meets the plane; nullopt when it
 // runs parallel to it or meets it behind the camera.
 std::optional<Vec3> onPlane(const Camera& camera, const Vec2& px, const Vec3& planePoint,
@@ -29,7 +27,7 @@ SunPatchLight::SunPatchLight(std::vector<Footprint> footprints, size_t texelCoun
   std::vector<double> power;
   for (Footprint& f : footprints) {
     const double area = f.edgeU.cross(f.edgeV).norm();
-    const double p = area * luminanceOf(f.radiance.cwiseMax(0.0));
+    const double p = area * luminance(f.radiance.cwiseMax(0.0));
     const bool finite = f.corner.allFinite() && f.edgeU.allFinite() && f.edgeV.allFinite() &&
                         f.normal.allFinite() && f.radiance.allFinite();
     if (!finite || f.texel >= texelCount || !(area > 0) || !(p > 0) || !std::isfinite(p)) continue;

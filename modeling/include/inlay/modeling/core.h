@@ -25,6 +25,11 @@ using Mat4 = Eigen::Matrix4d;
 using Vec3f = Eigen::Vector3f;
 using Vec2f = Eigen::Vector2f;
 
+// The Rec. 709 luminance of a linear RGB triple.
+inline double luminance(const Vec3& rgb) {
+  return 0.2126 * rgb.x() + 0.7152 * rgb.y() + 0.0722 * rgb.z();
+}
+
 // A bug (a broken invariant, never bad input): print the condition and where, then abort.
 #define INLAY_CHECK(cond)                                                                             \
   do {                                                                                                \
