@@ -223,38 +223,6 @@ TEST(FurnitureTops, LegsHangFromATopAndDoorFramesStandOnACrease) {
   EXPECT_TRUE(detail::furnitureTops({}, 4).empty());
 }
 
-// A face hanging from a segment onto a line below it (issue #16, third York round): a ledge
-// under windows, its front standing on the floor.
-TEST(FurnitureTops, AFaceHangingOntoALineBelowMakesATopWhateverStandsOnIt) {
-  // The ledge's top (0), the windows' frames standing on it (1-3), the ledge's base on the
-  // floor (4) and its front's two ends (5, 6).
-  std::vector<LineSegment> segs = {seg(100, 200, 500, 200, 0), seg(150, 60, 150, 199, 1),
-                                   seg(300, 60, 300, 199, 1),  seg(450, 60, 450, 199, 1),
-                                   seg(100, 250, 500, 250, 0), seg(105, 201, 105, 249, 1),
-                                   seg(495, 201, 495, 249, 1)};
-  std::vector<bool> top = detail::furnitureTops(segs, 4);
-  EXPECT_TRUE(top[0]);
-  EXPECT_FALSE(top[4]);  // the base: the front's ends stand on it, nothing hangs from it
-  // One edge landing on a line is not a face (a lamp's post on a kerb), nor two at one place.
-  std::vector<LineSegment> one(segs.begin(), segs.end() - 1);
-  EXPECT_FALSE(detail::furnitureTops(one, 4)[0]);
-  std::vector<LineSegment> together = one;
-  together.push_back(seg(107, 201, 107, 249, 1));
-  EXPECT_FALSE(detail::furnitureTops(together, 4)[0]);
-  // The edges hanging into the floor with no line below them: still not a top (the frames
-  // standing on it outweigh them), as before.
-  std::vector<LineSegment> noBase = segs;
-  noBase.erase(noBase.begin() + 4);
-  EXPECT_FALSE(detail::furnitureTops(noBase, 4)[0]);
-  // On a glossy floor, door frames reflected onto the reflected baseboard cross the crease:
-  // they are no face. The floor crease (0), two frames and their reflections (1-4), the
-  // baseboard's top reflected (5).
-  const std::vector<LineSegment> glossy = {seg(100, 300, 500, 300, 0), seg(150, 150, 150, 299, 1),
-                                           seg(151, 302, 151, 360, 1), seg(450, 150, 450, 299, 1),
-                                           seg(449, 302, 449, 360, 1), seg(100, 360, 500, 360, 0)};
-  EXPECT_FALSE(detail::furnitureTops(glossy, 4)[0]);
-}
-
 TEST(FurnitureTops, DegenerateLinesMakeNoTop) {
   // Only horizontal lines, only vertical lines, a zero-length segment, unassigned segments.
   const std::vector<LineSegment> flat = {seg(0, 10, 100, 10, 0), seg(0, 20, 100, 20, 0),
@@ -349,29 +317,6 @@ TEST(FloorCrease, APillarInFrontOfTheCreaseLeavesItWhereItIs) {
   EXPECT_NEAR(got.depthM, want.depthM, 0.05 * want.depthM);
   EXPECT_GT(got.widthM, 3.0);  // not a sliver between the pillar's edges
   EXPECT_FALSE(warned(*e, "no floor crease is seen"));
-}
-
-// A ledge 0.7 m high, 0.3 m in front of the back wall and across its whole width (York
-// P1020872's covered walkway, P1020928's sills behind the desks) hides the floor crease; the
-// windows' frames stand on its top, its front's ends and joints stand on its base. Its top,
-// taken for the floor, makes the box about 9 m deep; the floor ends at its base, 4.7 m away.
-TEST(FloorCrease, ALedgesTopIsNotTakenForTheCreaseButItsBase) {
-  const Camera c = roomCamera();
-  std::vector<LineSegment> segs = roomWithoutFloorCrease(c);
-  Lines l{c, {}};
-  const double zf = -4.7, hl = 0.7;
-  l.add({-2.5, hl, zf}, {2.5, hl, zf}, 0);
-  l.add({-2.5, 0, zf}, {2.5, 0, zf}, 0);
-  for (double x = -2.0; x <= 2.0; x += 1.0) l.add({x, hl + 0.02, zf}, {x, 2.1, zf}, 1);
-  for (double x : {-2.4, -1.2, 0.0, 1.2, 2.4}) l.add({x, hl - 0.02, zf}, {x, 0.02, zf}, 1);
-  for (double x : {-2.5, 2.5}) l.add({x, 0, zf}, {x, 0, -3.6}, 2);
-  segs.insert(segs.end(), l.segs.begin(), l.segs.end());
-  const auto e = estimateCameraFromSegments(640, 480, segs);
-  ASSERT_TRUE(e.ok()) << e.error().message();
-  const detail::BoxSize got = boxOf(e),
-                        want = detail::boxSizeOf(e->camera, cornersOf(c, -2.5, 2.5, zf, 2.7));
-  ASSERT_TRUE(got.ok && want.ok);
-  EXPECT_NEAR(got.depthM, want.depthM, 0.05 * want.depthM) << "focal " << e->camera.focalPx;
 }
 
 TEST(FloorCrease, NoCreaseAtAllIsAWarningNamingTheCorners) {

@@ -924,74 +924,42 @@ double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
   return (p - (a + t * d)).norm();
 }
 
-// A vertical edge's end that meets a horizontal segment: where, and the vertical's length and
-// lower end.
-struct End {
-  Vec2 at, lower;
-  double length;
-};
-
-// The verticals meeting segment s (furnitureTops): hanging from it (upper end on it, the rest
-// below) and standing on it (lower end on it, the rest above).
-void endsMeeting(const LineSegment& s, const std::vector<LineSegment>& segs, double tolPx,
-                 const std::optional<Vec2>& forwardPx, double ambiguousPx, std::vector<End>& hanging,
-                 std::vector<End>& standing) {
-  hanging.clear();
-  standing.clear();
-  for (const LineSegment& v : segs) {
-    if (v.family != 1 || v.userGiven || alongForward(v, forwardPx, ambiguousPx)) continue;
-    // Image y grows downwards: `up` is the vertical's upper end, `down` its lower.
-    const bool aUp = v.aPx.y() < v.bPx.y();
-    const Vec2& up = aUp ? v.aPx : v.bPx;
-    const Vec2& down = aUp ? v.bPx : v.aPx;
-    const double du = distanceToSegment(up, s.aPx, s.bPx), dd = distanceToSegment(down, s.aPx, s.bPx);
-    if (du <= tolPx && dd > tolPx) hanging.push_back({up, down, v.lengthPx()});
-    else if (dd <= tolPx && du > tolPx) standing.push_back({down, down, v.lengthPx()});
-  }
-}
-
-// Whether point p lies within tolPx of a horizontal (family 0) segment other than segs[self].
-bool onAnotherHorizontal(const Vec2& p, const std::vector<LineSegment>& segs, size_t self,
-                         double tolPx) {
-  for (size_t k = 0; k < segs.size(); ++k)
-    if (k != self && segs[k].family == 0 && !segs[k].userGiven &&
-        distanceToSegment(p, segs[k].aPx, segs[k].bPx) <= tolPx)
-      return true;
-  return false;
-}
-
 }  // namespace
 
 std::vector<bool> furnitureTops(const std::vector<LineSegment>& segs, double tolPx,
                                 const std::optional<Vec2>& forwardPx, double ambiguousPx) {
   std::vector<bool> top(segs.size(), false);
-  std::vector<End> hanging, standing;
+  struct End {
+    Vec2 at;
+    double length;
+  };
   for (size_t i = 0; i < segs.size(); ++i) {
     const LineSegment& s = segs[i];
     if (s.family != 0 || s.userGiven) continue;
-    endsMeeting(s, segs, tolPx, forwardPx, ambiguousPx, hanging, standing);
+    std::vector<End> hanging, standing;
+    for (const LineSegment& v : segs) {
+      if (v.family != 1 || v.userGiven || alongForward(v, forwardPx, ambiguousPx)) continue;
+      // Image y grows downwards: `up` is the vertical's upper end, `down` its lower.
+      const bool aUp = v.aPx.y() < v.bPx.y();
+      const Vec2& up = aUp ? v.aPx : v.bPx;
+      const Vec2& down = aUp ? v.bPx : v.aPx;
+      const double du = distanceToSegment(up, s.aPx, s.bPx), dd = distanceToSegment(down, s.aPx, s.bPx);
+      if (du <= tolPx && dd > tolPx) hanging.push_back({up, v.lengthPx()});
+      else if (dd <= tolPx && du > tolPx) standing.push_back({down, v.lengthPx()});
+    }
     // A vertical split where it crosses the segment (a pillar in front of it; on a glossy
     // floor, a door frame and its reflection) is one edge crossing: it counts for neither.
     double hangs = 0, stands = 0;
     std::vector<bool> paired(standing.size(), false);
-    std::vector<double> faceEdgesX;  // hanging verticals landing on a lower horizontal line
     for (const End& h : hanging) {
       bool crossing = false;
       for (size_t k = 0; k < standing.size() && !crossing; ++k)
         if (!paired[k] && (standing[k].at - h.at).norm() <= 2 * tolPx) crossing = paired[k] = true;
-      if (crossing) continue;
-      hangs += h.length;
-      if (onAnotherHorizontal(h.lower, segs, i, tolPx)) faceEdgesX.push_back(h.at.x());
+      if (!crossing) hangs += h.length;
     }
     for (size_t k = 0; k < standing.size(); ++k)
       if (!paired[k]) stands += standing[k].length;
-    // A face hangs from the segment down to a line below it (a ledge's, a sill's wall, a low
-    // wall's, a counter's or a parapet's front, standing on the floor): at least two of its
-    // vertical edges, apart, land on that line. Whatever stands on the segment (a window's
-    // frames on a sill), the floor lies lower.
-    const auto [lo, hi] = std::minmax_element(faceEdgesX.begin(), faceEdgesX.end());
-    const bool face = faceEdgesX.size() >= 2 && *hi - *lo > 2 * tolPx;
-    top[i] = hangs > stands || face;
+    top[i] = hangs > stands;
   }
   return top;
 }

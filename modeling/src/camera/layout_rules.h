@@ -77,12 +77,7 @@ Implausible implausibility(const Camera& camera, const std::array<Vec2, 4>& corn
 // Verticals that cross a segment (a pillar or a chair in front of the crease) count for
 // neither, and so do verticals whose line passes within ambiguousPx of the forward vanishing
 // point forwardPx (below it a tiled floor's receding lines look vertical: the checkered
-// training rooms). A segment is also a top, whatever stands on it, when a face hangs from it
-// onto a horizontal line below (issue #16, third York round): at least two of the hanging
-// verticals, more than 2 tolPx apart, end within tolPx of another horizontal segment. That is
-// the front of something standing on the floor (a ledge under windows, a low wall, a parapet, a
-// counter); the floor lies at or below its base, never on its top. Per segment; false for other
-// families and for the user's lines.
+// training rooms). Per segment; false for other families and for the user's lines.
 std::vector<bool> furnitureTops(const std::vector<LineSegment>& segments, double tolPx,
                                 const std::optional<Vec2>& forwardPx = std::nullopt,
                                 double ambiguousPx = 0);
