@@ -3,7 +3,7 @@
 numpy, OpenCV and matplotlib).
 
 usage: york_contact_sheet.py INLAY_CLI YORK_DIR [--out DIR] [--label NAME] [--verdicts CSV]
-                             [--cols N] [--thumb W] [--small PNG]
+                             [--cols N] [--thumb W] [--small PNG] [--rejected]
 
 Runs `INLAY_CLI estimate PHOTO -o CAMERA.json --quiet` on every photo of YORK_DIR (sorted by
 name; INLAY_CLI may be a build folder, then BUILD/app/inlay-cli) and draws the box it writes on a
@@ -24,7 +24,9 @@ on the sheet (green accept, red reject) and counted. Photos without a verdict sh
 
 Writes DIR/york_boxes_<label>.csv (per photo: exit status, seconds, focal length, box depth,
 width and ceiling in m, layout confidence, warnings, verdict) and DIR/york_boxes_<label>.png;
---small PNG also writes a 256-colour copy with half-size thumbnails (for the docs). Prints a JSON
+--small PNG also writes a 256-colour copy with half-size thumbnails (for the docs). --rejected:
+the sheet shows only the rejected boxes, each captioned with its failure class (the note's
+leading `[class]`), and the summary counts the classes. Prints a JSON
 summary (photos, failures, boxes refused as implausible, the accepted count per scene type and
 per half A (even indices) and B (odd) when verdicts are given).
 """
@@ -160,6 +162,12 @@ def caption(row):
     return "%d %s  %s" % (row["index"], row["image"].rsplit(".", 1)[0], dims)
 
 
+def failure_class(row):
+    """The failure class a rejected box's note starts with (`[class] ...`), else ""."""
+    note = row.get("note") or ""
+    return note[1:note.index("]")] if note.startswith("[") and "]" in note else ""
+
+
 def draw_sheet(path, york, drawn, cols, thumb):
     """One grid of thumbnails with the boxes; the caption's colour is the verdict's."""
     import matplotlib
@@ -186,7 +194,7 @@ def draw_sheet(path, york, drawn, cols, thumb):
         ax.set_ylim(H, 0)
         ax.set_axis_off()
         verdict = row.get("verdict") or "?"
-        ax.set_title(caption(row) + "  " + verdict, fontsize=6.2, pad=1.5,
+        ax.set_title(caption(row) + "  " + (failure_class(row) or verdict), fontsize=6.2, pad=1.5,
                      color=colours.get(verdict, "black"))
     fig.savefig(path, dpi=dpi)
     plt.close(fig)
@@ -230,11 +238,22 @@ def main():
     rows, drawn = run_all(cli, york, verdicts)
     benchlib.write_csv(os.path.join(out, "york_boxes_%s.csv" % label), rows, table="york_boxes_%s" % label)
     png = os.path.join(out, "york_boxes_%s.png" % label)
+    rejected = "--rejected" in a
+    if rejected:
+        drawn = [d for d in drawn if d[2].get("verdict") == "reject"]
+        png = os.path.join(out, "york_boxes_%s_rejected.png" % label)
     draw_sheet(png, york, drawn, cols, thumb)
     small = benchlib.option(a, "--small", "")
     if small:
         small_copy(png, small)
-    print(json.dumps(summary(rows), indent=1))
+    s = summary(rows)
+    if rejected:
+        s["rejected_by_class"] = {}
+        for r in rows:
+            if r.get("verdict") == "reject":
+                key = "%s (%s)" % (failure_class(r) or "?", r["scene"])
+                s["rejected_by_class"][key] = s["rejected_by_class"].get(key, 0) + 1
+    print(json.dumps(s, indent=1))
 
 
 if __name__ == "__main__":
