@@ -859,11 +859,11 @@ void PathTracer::Impl::castCameraPacket(int n, const Vec3& eye, const Vec3* dirs
   alignas(32) int valid[kPacket];
   for (int k = 0; k < kPacket; ++k) {
     valid[k] = k < n ? -1 : 0;
-    const RTCRayHit one = makeRayHit(eye, dirs[std::min(k, n - 1)], 0, 3.4e38);
-    rh.ray.org_x[k] = one.ray.org_x, rh.ray.org_y[k] = one.ray.org_y, rh.ray.org_z[k] = one.ray.org_z;
-    rh.ray.dir_x[k] = one.ray.dir_x, rh.ray.dir_y[k] = one.ray.dir_y, rh.ray.dir_z[k] = one.ray.dir_z;
-    rh.ray.tnear[k] = one.ray.tnear, rh.ray.tfar[k] = one.ray.tfar;
-    rh.ray.time[k] = 0, rh.ray.mask[k] = one.ray.mask, rh.ray.id[k] = unsigned(k), rh.ray.flags[k] = 0;
+    const RTCRay one = makeRay(eye, dirs[std::min(k, n - 1)], 0, 3.4e38);
+    rh.ray.org_x[k] = one.org_x, rh.ray.org_y[k] = one.org_y, rh.ray.org_z[k] = one.org_z;
+    rh.ray.dir_x[k] = one.dir_x, rh.ray.dir_y[k] = one.dir_y, rh.ray.dir_z[k] = one.dir_z;
+    rh.ray.tnear[k] = one.tnear, rh.ray.tfar[k] = one.tfar;
+    rh.ray.time[k] = 0, rh.ray.mask[k] = one.mask, rh.ray.id[k] = unsigned(k), rh.ray.flags[k] = 0;
     rh.hit.geomID[k] = rh.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
       rh.hit.instID[l][k] = RTC_INVALID_GEOMETRY_ID;
@@ -1191,7 +1191,8 @@ void PathTracer::Impl::buildSunPatches() {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       const RoomTexture::Texel& t = room.texel(i);
       const Vec2 px((x + 0.5) * cam.widthPx / w, (y + 0.5) * cam.heightPx / h);
-      if (!t.radianceUsable || t.surface < 0 || roomMaterial(t.surface) || !inSomeMask(px)) continue;
+      if (!t.radianceUsable() || t.surface() < 0 || roomMaterial(t.surface()) || !inSomeMask(px))
+        continue;
       const Hit hit = intersect(withoutScene, cam.centreWorld(), cam.directionThroughPixel(px), 0);
       if (hit.kind != Hit::Kind::Room || hit.texel != &t) continue;
       const Vec3 n = hit.geometricNormal.dot(hit.point - cam.centreWorld()) > 0
