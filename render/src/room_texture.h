@@ -64,6 +64,11 @@ class RoomTexture {
 
   // ProjectedAlbedo::pixelShowing() as its texel; null where that is nullopt.
   const Texel* texelShowing(int surfaceId, const Vec3& pointWorld) const {
+    return shows(texelAt(pointWorld), surfaceId);
+  }
+  // The texel the camera sees pointWorld in, whatever surface it shows (null: outside the
+  // photo or behind the camera); memory untouched, so that a caller can prefetch it.
+  const Texel* texelAt(const Vec3& pointWorld) const {
     if (texels_.empty()) return nullptr;
     // Camera::project(), then pixelShowing()'s scaling and test.
     const Vec3 c = cameraFromWorld_ * (pointWorld - centre_);
@@ -72,9 +77,12 @@ class RoomTexture {
     const double px = principal_.x() + focal_ * c.x() * inv, py = principal_.y() - focal_ * c.y() * inv;
     const double x = px * double(width_) / cameraWidth_, y = py * double(height_) / cameraHeight_;
     if (!(x >= 0 && y >= 0 && x < width_ && y < height_)) return nullptr;
-    const Texel& t =
-        texels_[size_t(std::min(height_ - 1, int(y))) * width_ + size_t(std::min(width_ - 1, int(x)))];
-    return t.surface() == surfaceId ? &t : nullptr;
+    return &texels_[size_t(std::min(height_ - 1, int(y))) * width_ +
+                    size_t(std::min(width_ - 1, int(x)))];
+  }
+  // texelAt()'s answer when it shows surface `surfaceId`, else null.
+  static const Texel* shows(const Texel* t, int surfaceId) {
+    return t && t->surface() == surfaceId ? t : nullptr;
   }
   // ProjectedAlbedo::albedoAtPixel().
   Vec3 albedo(int surfaceId, const Texel* t) const {
