@@ -77,7 +77,8 @@ TEST(SampleRng, FastPathMatchesTheReferenceBitForBit) {
     ASSERT_EQ(reversedSobol1(x), reverseBits(sobol1(x))) << x;
   }
   for (uint32_t sample : {0u, 1u, 2u, 3u, 17u, 255u, 256u, 65537u, 0x7fffffffu, 0xffffffffu})
-    for (uint32_t pair = 0; pair < 40; ++pair) {
+    for (uint32_t pair :
+         {0u, 1u, 2u, 3u, 5u, 10u, 21u, 39u, 254u, 255u, 256u, 257u, 1u << 20, 0xffffffffu}) {
       const SampleRng rng(pair * 37u, 11u + pair, sample, 0x9e3779b9u * pair);
       const auto fast = rng.get2(pair), reference = rng.getReference2(pair);
       ASSERT_EQ(fast[0], reference[0]) << sample << " " << pair;

@@ -68,20 +68,26 @@ inline FilterRay filterRay(const RTCFilterFunctionNArguments* args, unsigned k) 
           RTCRayN_tfar(args->ray, n, k)};
 }
 
+inline RTCRay makeRay(const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
+  RTCRay r;
+  r.org_x = float(origin.x());
+  r.org_y = float(origin.y());
+  r.org_z = float(origin.z());
+  r.dir_x = float(dir.x());
+  r.dir_y = float(dir.y());
+  r.dir_z = float(dir.z());
+  r.tnear = float(tNear);
+  r.tfar = tFar >= 3e38 ? std::numeric_limits<float>::infinity() : float(tFar);
+  r.time = 0;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
 inline RTCRayHit makeRayHit(const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
   RTCRayHit rh;
-  rh.ray.org_x = float(origin.x());
-  rh.ray.org_y = float(origin.y());
-  rh.ray.org_z = float(origin.z());
-  rh.ray.dir_x = float(dir.x());
-  rh.ray.dir_y = float(dir.y());
-  rh.ray.dir_z = float(dir.z());
-  rh.ray.tnear = float(tNear);
-  rh.ray.tfar = tFar >= 3e38 ? std::numeric_limits<float>::infinity() : float(tFar);
-  rh.ray.time = 0;
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
+  rh.ray = makeRay(origin, dir, tNear, tFar);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l) rh.hit.instID[l] = RTC_INVALID_GEOMETRY_ID;
@@ -90,11 +96,11 @@ inline RTCRayHit makeRayHit(const Vec3& origin, const Vec3& dir, double tNear, d
 
 // True when the ray segment (tNear, tFar) is blocked in `scene`.
 inline bool occluded(RTCScene scene, const Vec3& origin, const Vec3& dir, double tNear, double tFar) {
-  RTCRayHit rh = makeRayHit(origin, dir, tNear, tFar);
+  RTCRay ray = makeRay(origin, dir, tNear, tFar);  // an occlusion test reads no hit record
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  rtcOccluded1(scene, &ctx, &rh.ray);
-  return rh.ray.tfar < 0;  // Embree sets tfar = -inf on a hit
+  rtcOccluded1(scene, &ctx, &ray);
+  return ray.tfar < 0;  // Embree sets tfar = -inf on a hit
 }
 
 // Offset for a ray leaving a surface point: enough to clear float round-off of the hit point

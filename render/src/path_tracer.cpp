@@ -163,6 +163,9 @@ struct Hit {
   // triangle's coordinates (a 10 km object), so rays leave it at least this far off.
   double roundOffM = 0;
   const RoomTexture::Texel* texel = nullptr;  // room hits: the photo pixel that shows the point
+  // A hit set up with its texel unchecked (a bounce cast ahead, PathTracer::Impl::tracePath):
+  // the texel the point projects to, prefetched; checkTexel() then sets `texel`.
+  const RoomTexture::Texel* texelUnchecked = nullptr;
 };
 
 // A bound on Embree's float intersection error for a triangle with these corners.
@@ -282,17 +285,19 @@ struct PathTracer::Impl {
   }
 
   // The closest hit; occluder cards are passed where cardU >= their alpha (cardU < 0: never).
-  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear,
-                double cardU = -1) const {
+  // With `prefetchTexel`, a room hit's texel is prefetched and left unchecked (checkTexel()).
+  Hit intersect(RTCScene target, const Vec3& origin, const Vec3& dir, double tNear, double cardU = -1,
+                bool prefetchTexel = false) const {
     RTCRayHit rh = makeRayHit(origin, dir, tNear, 3.4e38);
     CardPassContext ctx;
     rtcInitIntersectContext(&ctx.base);
     ctx.u = cardU;
     rtcIntersect1(target, &ctx.base, &rh);
-    return hitFrom(rh.ray.tfar, rh.hit, origin, dir);
+    return hitFrom(rh.ray.tfar, rh.hit, origin, dir, prefetchTexel);
   }
   // The hit Embree found for the ray origin + t dir (tfar: its distance), set up for shading.
-  Hit hitFrom(float tfar, const RTCHit& h, const Vec3& origin, const Vec3& dir) const {
+  Hit hitFrom(float tfar, const RTCHit& h, const Vec3& origin, const Vec3& dir,
+              bool prefetchTexel = false) const {
     Hit hit;
     if (h.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.t = tfar;
@@ -306,7 +311,9 @@ struct PathTracer::Impl {
       hit.geometricNormal = tri.normalValid ? tri.normal : Vec3(-dir);  // safeNormal()
       hit.shadingNormal = hit.geometricNormal;
       hit.roundOffM = tri.roundOffM;
-      hit.texel = room.texelShowing(hit.index, hit.point);
+      const RoomTexture::Texel* t = room.texelAt(hit.point);
+      if (!prefetchTexel) hit.texel = RoomTexture::shows(t, hit.index);
+      else if ((hit.texelUnchecked = t)) __builtin_prefetch(t);
     } else if (id < surfaceCount + lights.size()) {
       hit.kind = Hit::Kind::Light;
       hit.index = int(id - surfaceCount);
@@ -371,6 +378,11 @@ struct PathTracer::Impl {
         r.roundOffM = triangleRoundOff(a, b, c);
       }
     }
+  }
+
+  // Sets the texel of a hit that hitFrom() left unchecked.
+  static void checkTexel(Hit& hit) {
+    if (hit.kind == Hit::Kind::Room) hit.texel = RoomTexture::shows(hit.texelUnchecked, hit.index);
   }
 
   static Vec3 safeNormal(const Vec3& n, const Vec3& dir) {
@@ -715,13 +727,16 @@ struct PathTracer::Impl {
     if (mode != Mode::WithoutOnly) out.with += c;
     if (mode != Mode::WithOnly) out.without += c;
   }
-  Hit castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out) const;
+  Hit castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out,
+                  bool prefetchTexel = false) const;
   void addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const;
   bool endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const;
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
   Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                          const SampleRng& rng, Sums& out) const;
+                          const SampleRng& rng, Sums& out, Hit* next) const;
+  bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
+                  const SampleRng& rng) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SampleRng& rng, Sums& out) const;
@@ -800,11 +815,15 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 }
 
 // A path as named steps: cast the ray; part at an object; end at an emitter or on the photo;
-// otherwise the surface's BSDF, next-event estimation, and the next direction.
+// otherwise the surface's BSDF, next-event estimation, and the next direction. A non-specular
+// vertex casts the next ray before its NEE (scatterNonSpecular), so the ray's hit waits here.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  PrimaryRecord* rec, const Hit* firstHit) const {
+  Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
+  bool castAhead = false;
   for (;; ++st.depth, firstHit = nullptr) {
-    const Hit hit = firstHit ? *firstHit : castPathRay(mode, st, rng, out);
+    Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
+    if (std::exchange(castAhead, false)) checkTexel(hit);
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (st.depth == 0 && rec) rec->objectFirst = true;
@@ -825,26 +844,30 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     st.glassVertices += glass ? 1 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
+    if (bsdf.nonSpecular()) {
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead)) return;
+      castAhead = true;
+      continue;
+    }
     const bool split = glass && st.depth == 0 && options.splitGlassAtCamera;
-    const bool goesOn = bsdf.nonSpecular() ? scatterNonSpecular(mode, st, v, bsdf, rng, out)
-                        : bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
-                        : split                               ? splitGlass(mode, st, v, bsdf, rng, out)
-                                                              : scatterGlass(st, v, bsdf);
+    const bool goesOn = bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
+                        : split                             ? splitGlass(mode, st, v, bsdf, rng, out)
+                                                            : scatterGlass(st, v, bsdf);
     if (!goesOn) return;
     st.tNear = 0;
     if (!survivesRoulette(st, v, rng)) return;
   }
 }
 
-Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng,
-                                  Sums& out) const {
+Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out,
+                                  bool prefetchTexel) const {
   RTCScene s = mode == Mode::WithoutOnly ? withoutScene : withScene;  // (a pointer)
   const uint32_t cardDim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex + 7;
   if (options.rayLog)
     logRay(st.depth == 0 ? LoggedRay::Type::Camera : LoggedRay::Type::Bounce, s, st.origin, st.dir,
            st.tNear, 3.4e38);
   const int64_t t0 = rayClockNs();
-  Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0);
+  Hit hit = intersect(s, st.origin, st.dir, st.tNear, hasCards ? rng.get(cardDim) : -1.0, prefetchTexel);
   const int64_t spentNs = rayClockNs() - t0;
   if (st.depth == 0) ++out.counters.cameraRays, out.counters.cameraNs += spentNs;
   else ++out.counters.bounceRays, out.counters.bounceNs += spentNs;
@@ -859,11 +882,11 @@ void PathTracer::Impl::castCameraPacket(int n, const Vec3& eye, const Vec3* dirs
   alignas(32) int valid[kPacket];
   for (int k = 0; k < kPacket; ++k) {
     valid[k] = k < n ? -1 : 0;
-    const RTCRayHit one = makeRayHit(eye, dirs[std::min(k, n - 1)], 0, 3.4e38);
-    rh.ray.org_x[k] = one.ray.org_x, rh.ray.org_y[k] = one.ray.org_y, rh.ray.org_z[k] = one.ray.org_z;
-    rh.ray.dir_x[k] = one.ray.dir_x, rh.ray.dir_y[k] = one.ray.dir_y, rh.ray.dir_z[k] = one.ray.dir_z;
-    rh.ray.tnear[k] = one.ray.tnear, rh.ray.tfar[k] = one.ray.tfar;
-    rh.ray.time[k] = 0, rh.ray.mask[k] = one.ray.mask, rh.ray.id[k] = unsigned(k), rh.ray.flags[k] = 0;
+    const RTCRay one = makeRay(eye, dirs[std::min(k, n - 1)], 0, 3.4e38);
+    rh.ray.org_x[k] = one.org_x, rh.ray.org_y[k] = one.org_y, rh.ray.org_z[k] = one.org_z;
+    rh.ray.dir_x[k] = one.dir_x, rh.ray.dir_y[k] = one.dir_y, rh.ray.dir_z[k] = one.dir_z;
+    rh.ray.tnear[k] = one.tnear, rh.ray.tfar[k] = one.tfar;
+    rh.ray.time[k] = 0, rh.ray.mask[k] = one.mask, rh.ray.id[k] = unsigned(k), rh.ray.flags[k] = 0;
     rh.hit.geomID[k] = rh.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
     for (unsigned l = 0; l < RTC_MAX_INSTANCE_LEVEL_COUNT; ++l)
       rh.hit.instID[l][k] = RTC_INVALID_GEOMETRY_ID;
@@ -1016,16 +1039,26 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
   return v;
 }
 
-// A non-specular vertex: next-event estimation (a light source, the suns), then a direction
-// from the BSDF. False when the path ends here.
+// A non-specular vertex: a direction from the BSDF and the roulette; the ray in that direction
+// cast at once into *next (its room texel prefetched, not yet read), then next-event estimation
+// (a light source, the suns), whose work hides the texel's cache miss. The same rays and sums as
+// NEE first: the direction and the roulette draw their own dimensions. False when the path ends
+// here.
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
-                                          const SurfaceBsdf& bsdf, const SampleRng& rng,
-                                          Sums& out) const {
+                                          const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
+                                          Hit* next) const {
   const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
   const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
   const bool nee = !bsdf.transmits() || options.roughGlassNee;
+  PathState after = st;
+  const bool goesOn = bounceFrom(after, v, lobe, nee, rng) && survivesRoulette(after, v, rng);
+  if (goesOn) {
+    PathState ray = after;
+    ++ray.depth;
+    *next = castPathRay(mode, ray, rng, out, true);
+  }
   if (nee) {
     const int64_t neeStart = rayClockNs();
     addSourceSample(mode, st, v, lobe, rng, out);
@@ -1033,10 +1066,18 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
     if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
     out.counters.neeNs += rayClockNs() - neeStart;
   }
+  if (goesOn) st = after;
+  return goesOn;
+}
+
+// The next ray from a non-specular vertex, sampled from its BSDF, into `st`; false when the
+// path ends here.
+bool PathTracer::Impl::bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
+                                  const SampleRng& rng) const {
   const auto uDir = rng.get2(v.dim / 2 + 1);
-  const BsdfSample s = bsdf.sample(lobe.woLocal, v.pickAndLobe[1], uDir[0], uDir[1]);
+  const BsdfSample s = lobe.bsdf.sample(lobe.woLocal, v.pickAndLobe[1], uDir[0], uDir[1]);
   if (!s.valid) return false;
-  st.dir = frame.toWorld(s.dir).normalized();
+  st.dir = lobe.frame.toWorld(s.dir).normalized();
   const bool reflected = s.dir.z() > 0;
   // A shading normal may send it to the wrong side of the real surface: end the path.
   if ((st.dir.dot(v.ngFacing) > 0) != reflected) return false;
@@ -1046,6 +1087,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   st.lastPoint = v.point;
   st.lastNormal = lobe.selectNormal;
   st.origin = v.point + (reflected ? v.eps : -v.eps) * v.ngFacing;
+  st.tNear = 0;
   return true;
 }
 
@@ -1191,7 +1233,8 @@ void PathTracer::Impl::buildSunPatches() {
       const size_t i = size_t(y) * size_t(w) + size_t(x);
       const RoomTexture::Texel& t = room.texel(i);
       const Vec2 px((x + 0.5) * cam.widthPx / w, (y + 0.5) * cam.heightPx / h);
-      if (!t.radianceUsable || t.surface < 0 || roomMaterial(t.surface) || !inSomeMask(px)) continue;
+      if (!t.radianceUsable() || t.surface() < 0 || roomMaterial(t.surface()) || !inSomeMask(px))
+        continue;
       const Hit hit = intersect(withoutScene, cam.centreWorld(), cam.directionThroughPixel(px), 0);
       if (hit.kind != Hit::Kind::Room || hit.texel != &t) continue;
       const Vec3 n = hit.geometricNormal.dot(hit.point - cam.centreWorld()) > 0

@@ -1,14 +1,18 @@
 // Internal: the room's projective texture (ProjectedAlbedo) as the path tracer reads it at every
 // room hit. ProjectedAlbedo keeps a pixel's first surface, albedo, photo radiance and whether
 // that radiance is usable in four arrays, so a bounce landing on the room touched three or four
-// cache lines in different places of memory; here they sit in one 32-byte record per pixel (one
-// line), and the projection runs inline. Every answer is ProjectedAlbedo's to the bit
-// (pixelShowing, albedoAtPixel, radianceAtPixel: the same arithmetic in the same order).
+// cache lines in different places of memory. Here what every room hit reads (the surface, to
+// test the projection) and what a bounce that ends on the photo reads (its radiance) sit in one
+// 16-byte record per pixel, and the albedo, read only where a path goes on from the room (camera
+// hits, mostly: coherent), in a table of its own; the projection runs inline. Every answer is
+// ProjectedAlbedo's to the bit (pixelShowing, albedoAtPixel, radianceAtPixel: the same
+// arithmetic in the same order).
 #pragma once
 
 #include "inlay/render/scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,13 +20,15 @@ namespace inlay::detail {
 
 class RoomTexture {
  public:
-  struct alignas(32) Texel {
-    float albedo[3];          // albedo.rgb() of the pixel
-    int32_t surface;          // firstSurfacePerPixel (-1: none)
-    float radiance[3];        // photoRadiance.rgb() of the pixel
-    uint32_t radianceUsable;  // radianceAtPixel() would answer true
+  struct alignas(16) Texel {
+    float radiance[3];  // photoRadiance.rgb() of the pixel
+    // firstSurfacePerPixel (-1: none) + 1, shifted left by one; the low bit: radianceAtPixel()
+    // would answer true.
+    uint32_t surfaceAndUsable;
+    int surface() const { return int(surfaceAndUsable >> 1) - 1; }
+    bool radianceUsable() const { return surfaceAndUsable & 1u; }
   };
-  static_assert(sizeof(Texel) == 32);
+  static_assert(sizeof(Texel) == 16);
 
   RoomTexture() = default;
   explicit RoomTexture(const ProjectedAlbedo& pa) : surfaceMean_(pa.surfaceMean) {
@@ -35,15 +41,18 @@ class RoomTexture {
     const bool photoUsable = photo.channels >= 3 && photo.width == w && photo.height == h &&
                              pa.photoRadianceUsable.size() == size_t(w) * h;
     texels_.resize(size_t(w) * h);
+    albedo_.resize(size_t(w) * h);
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
         const size_t i = size_t(y) * w + x;
         Texel& t = texels_[i];
         const Vec3 a = pa.albedo.rgb(x, y);
         const Vec3 r = photoUsable ? photo.rgb(x, y) : Vec3(Vec3::Zero());
-        for (int c = 0; c < 3; ++c) t.albedo[c] = float(a[c]), t.radiance[c] = float(r[c]);
-        t.surface = pa.firstSurfacePerPixel[i];
-        t.radianceUsable = photoUsable && pa.photoRadianceUsable[i] && r.allFinite();
+        for (int c = 0; c < 3; ++c) albedo_[i][size_t(c)] = float(a[c]), t.radiance[c] = float(r[c]);
+        const bool usable = photoUsable && pa.photoRadianceUsable[i] && r.allFinite();
+        // Surface ids are below 2^30 (a room has tens); a larger one would not fit.
+        const int32_t surface = std::clamp(pa.firstSurfacePerPixel[i], -1, (1 << 30) - 2);
+        t.surfaceAndUsable = (uint32_t(surface + 1) << 1) | (usable ? 1u : 0u);
       }
     cameraFromWorld_ = pa.camera.cameraFromWorld();
     centre_ = pa.camera.centreWorld();
@@ -55,6 +64,11 @@ class RoomTexture {
 
   // ProjectedAlbedo::pixelShowing() as its texel; null where that is nullopt.
   const Texel* texelShowing(int surfaceId, const Vec3& pointWorld) const {
+    return shows(texelAt(pointWorld), surfaceId);
+  }
+  // The texel the camera sees pointWorld in, whatever surface it shows (null: outside the
+  // photo or behind the camera); memory untouched, so that a caller can prefetch it.
+  const Texel* texelAt(const Vec3& pointWorld) const {
     if (texels_.empty()) return nullptr;
     // Camera::project(), then pixelShowing()'s scaling and test.
     const Vec3 c = cameraFromWorld_ * (pointWorld - centre_);
@@ -63,13 +77,19 @@ class RoomTexture {
     const double px = principal_.x() + focal_ * c.x() * inv, py = principal_.y() - focal_ * c.y() * inv;
     const double x = px * double(width_) / cameraWidth_, y = py * double(height_) / cameraHeight_;
     if (!(x >= 0 && y >= 0 && x < width_ && y < height_)) return nullptr;
-    const Texel& t =
-        texels_[size_t(std::min(height_ - 1, int(y))) * width_ + size_t(std::min(width_ - 1, int(x)))];
-    return t.surface == surfaceId ? &t : nullptr;
+    return &texels_[size_t(std::min(height_ - 1, int(y))) * width_ +
+                    size_t(std::min(width_ - 1, int(x)))];
+  }
+  // texelAt()'s answer when it shows surface `surfaceId`, else null.
+  static const Texel* shows(const Texel* t, int surfaceId) {
+    return t && t->surface() == surfaceId ? t : nullptr;
   }
   // ProjectedAlbedo::albedoAtPixel().
   Vec3 albedo(int surfaceId, const Texel* t) const {
-    if (t) return Vec3(t->albedo[0], t->albedo[1], t->albedo[2]);
+    if (t) {
+      const std::array<float, 3>& a = albedo_[indexOf(t)];
+      return Vec3(a[0], a[1], a[2]);
+    }
     const bool haveMean = surfaceId >= 0 && size_t(surfaceId) < surfaceMean_.size();
     return haveMean ? surfaceMean_[size_t(surfaceId)] : Vec3(0.5, 0.5, 0.5);
   }
@@ -82,13 +102,14 @@ class RoomTexture {
   size_t indexOf(const Texel* t) const { return size_t(t - texels_.data()); }
   // ProjectedAlbedo::radianceAtPixel().
   static bool radiance(const Texel* t, Vec3* radiance) {
-    if (!t || !t->radianceUsable) return false;
+    if (!t || !t->radianceUsable()) return false;
     *radiance = Vec3(t->radiance[0], t->radiance[1], t->radiance[2]).cwiseMax(0.0);
     return true;
   }
 
  private:
   std::vector<Texel> texels_;  // albedo.width x albedo.height; empty: no pixel shows anything
+  std::vector<std::array<float, 3>> albedo_;  // albedo.rgb() of the pixels, as texels_
   std::vector<Vec3> surfaceMean_;
   Mat3 cameraFromWorld_ = Mat3::Identity();
   Vec3 centre_ = Vec3::Zero();

@@ -18,7 +18,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kLightOffsetM = 1e-3;
 
 // PCG-style 32-bit hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
-inline uint32_t pcgHash(uint32_t v) {
+constexpr uint32_t pcgHash(uint32_t v) {
   const uint32_t state = v * 747796405u + 2891336453u;
   const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
   return (word >> 22u) ^ word;
@@ -84,6 +84,16 @@ inline uint32_t reversedSobol1(uint32_t i) {
   return t[0][i & 0xffu] ^ t[1][(i >> 8) & 0xffu] ^ t[2][(i >> 16) & 0xffu] ^ t[3][i >> 24];
 }
 
+// pcgHash(pair) of the first pairs of dimensions (SampleRng::get2).
+struct PairHashes {
+  static constexpr uint32_t count = 256;
+  uint32_t hash[count];
+  constexpr PairHashes() : hash() {
+    for (uint32_t k = 0; k < count; ++k) hash[k] = pcgHash(k);
+  }
+};
+inline constexpr PairHashes kPairHashes{};
+
 // Random numbers as a pure function of (pixel x, y, sample, dimension, seed): every render
 // replays exactly and the with-object and without-object paths share them. Dimensions come in
 // pairs (2k, 2k+1), each pair an Owen-scrambled, index-shuffled 2D Sobol' point set per pixel
@@ -93,13 +103,17 @@ inline uint32_t reversedSobol1(uint32_t i) {
 class SampleRng {
  public:
   SampleRng(uint32_t x, uint32_t y, uint32_t sample, uint32_t seed)
-      : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))), sample_(sample) {}
+      : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))),
+        sample_(sample),
+        reversedSample_(reverseBits(sample)) {}
   // Dimensions 2 pair and 2 pair + 1, uniform in [0, 1)^2.
   // The same bits as getReference2() with fewer steps: the scramble's first reversal undoes
-  // sobol0's, and sobol1 comes reversed from a table.
+  // sobol0's, sobol1 comes reversed from a table, the sample index is reversed once per sample
+  // and the pair's hash of the first pairs (every path vertex's) comes from a table.
   std::array<double, 2> get2(uint32_t pair) const {
-    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
-    const uint32_t index = nestedUniformScramble(sample_, pairSeed);
+    const uint32_t pairHash = pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair);
+    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pairHash);
+    const uint32_t index = reverseBits(laineKarras(reversedSample_, pairSeed));
     return {toUnit(reverseBits(laineKarras(index, pcgHash(pairSeed)))),
             toUnit(reverseBits(laineKarras(reversedSobol1(index), pcgHash(pairSeed + 1u))))};
   }
@@ -117,6 +131,7 @@ class SampleRng {
   static double toUnit(uint32_t bits) { return double(bits >> 8) * (1.0 / 16777216.0); }
   uint32_t pixelKey_;
   uint32_t sample_;
+  uint32_t reversedSample_;  // reverseBits(sample_)
 };
 
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
