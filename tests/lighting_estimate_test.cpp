@@ -543,8 +543,9 @@ TEST(Lighting, TheBounceOfAClippedPatchTellsTheSunsStrength) {
     EXPECT_TRUE(fit->determined) << fit->warning;
     EXPECT_LT(errBounce, 0.3) << "exposure " << exposure;
     // From exposure 2 the clipped patch alone says far less (a fifth of the truth or below).
-    if (exposure >= 2)
+    if (exposure >= 2) {
       EXPECT_GT(fit->strength.minCoeff(), 2 * fit->lowerBound.maxCoeff()) << "exposure " << exposure;
+    }
   }
 }
 
