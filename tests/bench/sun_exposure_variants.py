@@ -14,6 +14,9 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ.get("INLAY_SHARED_DIR", "/work/shared"), "tools"))
 import camera_variants as cv  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import benchlib  # noqa: E402
+
 
 def main(args):
     if len(args) < 4 or "--gain" not in args:
@@ -22,12 +25,7 @@ def main(args):
     room, out, gain = args[0], args[1], float(args[args.index("--gain") + 1])
     truth = json.load(open(os.path.join(room, "truth.json")))
     scale = truth["exposure"]["scale"] * gain
-    os.makedirs(out, exist_ok=True)
-    for name in os.listdir(room):
-        if name not in ("photo.png", "photo.jpg", "truth.png", "camera_variant.json"):
-            link = os.path.join(out, name)
-            if not os.path.lexists(link):
-                os.symlink(os.path.abspath(os.path.join(room, name)), link)
+    benchlib.link_room_files(room, out)
     for exr, stem in (("photo_linear.exr", "photo"), ("truth_linear.exr", "truth")):
         pixels = np.round(cv.srgb(cv.read_exr(os.path.join(room, exr)) * scale) * 255).astype(np.uint8)
         cv.cv2.imwrite(os.path.join(out, stem + ".png"), np.ascontiguousarray(pixels[:, :, ::-1]))
