@@ -55,20 +55,21 @@ Expected<SunRatioResult> sunStrengthFromShadowRatio(const ImageF& photoLinear, c
 // A sun's strength from the light its clipped patch bounces onto the rest of the room.
 //
 // When the patch clips everywhere the ratio above has nothing to compare and the photo gives
-// only a lower bound: rho_p (S e + g) >= the clip level on the patch (rho_p: its surface's
-// albedo). What the patch bounces, S times `bounce` (the estimate's gathered irradiance / pi
+// only a lower bound: rho_p (S e + o) >= the clip level on the patch (rho_p: its surface's
+// albedo). What the patch bounces, S times b (`bounce`: the estimate's gathered irradiance / pi
 // per unit strength, straight and by way of the surfaces the camera does not see), reaches room
-// the photo shows unclipped:
-// there B = rho_s (o + S b), o the light that does not scale with the sun (the gathered light
-// less the bounce at the given strength, plus the area lights' direct light). Per channel, S is
-// the value on a logarithmic grid that makes each surface's albedo B / (o + S b) flattest (the
-// sum of |log albedo - its surface's median|, robust to texture) among the values the photo
-// allows: the patch clipped (with rho_p the median albedo of its surface outside the beam, at
-// that S: the albedo split stays consistent) and no surface's median albedo above 1. The
-// bounce scales with rho_p (its share of the given strength's rho_p). A channel is left as
+// the photo shows unclipped, where B = rho_s (o + S b), o the light that does not scale with the
+// sun (the gathered light less the bounce at the strengths it holds, plus the area lights'
+// direct light). One factor t scales the given strength (its colour kept: the clipped patch
+// tells none): on a logarithmic grid, the t that makes each surface's albedo B / (o + t S b)
+// flattest (the mean |log albedo - its surface's median|, robust to texture, summed over the
+// channels) among the t the photo allows in every channel: the patch clipped (rho_p the median
+// albedo of its surface outside the beam at that t: the albedo split stays consistent; the
+// bounce scales with rho_p) and no surface's median albedo above 1. The strength is left as
 // given (raised to the lower bound) when the bounce cannot tell: its share of those pixels'
-// light is small (another light swamps it), or the cost hardly changes across the grid
-// (`determined` false, `warning` says why).
+// light is small (another light swamps it), the cost falls to the grid's end, or it is as low
+// over a wide range (`determined` false, `warning` says why). Chosen on the dev sun room d4
+// (docs/generalization.md, "The sun's strength from the light its clipped patch bounces").
 struct SunBounceOptions {
   double saturatedAbove = 0.98;     // linear value treated as clipped
   int minPixels = 150;              // bounce pixels (and the patch's clipped pixels), at least
@@ -76,16 +77,18 @@ struct SunBounceOptions {
   int minSurfacePixels = 40;        // a surface with fewer bounce pixels is left out of the cost
   int beamGapPx = 15;               // bounce pixels keep this far from the beam
   double lowerBoundQuantile = 0.5;  // of the patch pixels' bounds (robust to its soft edge)
-  // The bounce's median share of the light on the bounce pixels at the best strength: below
-  // it, another light swamps the bounce and the channel is not determined.
+  // The bounce's share of the light on the bounce pixels at the best factor (the channels'
+  // mean): below it, another light swamps the bounce and the strength is not determined.
   double minBounceShare = 0.05;
   // Determined: the factors whose cost is within flatTolerance of the best's span at most
   // maxSpread (largest over smallest), and the best is not the grid's last allowed point.
   double flatTolerance = 0.01;
   double maxSpread = 4;
-  double maxFactor = 64;  // the grid spans [lower bound / 4, lower bound x maxFactor]
-  int steps = 121;        // grid points
-  int lightSamples = 8;   // points per area light for o
+  // The grid spans [b / 4, b x maxFactor] times the given strength, b the lower bound's largest
+  // factor over it (1 when nothing bounds it).
+  double maxFactor = 64;
+  int steps = 121;       // grid points
+  int lightSamples = 8;  // points per area light for o
   uint32_t seed = 7;
 };
 
