@@ -175,19 +175,21 @@ std::optional<Vec3> sunFromBounce(PreparedScene& ps, const ImageF& photo, const 
     ps.warnings.push_back(kept + "; its bounce does not tell it either: " + r.error().reason);
     return std::nullopt;
   }
-  char buf[240];
-  std::snprintf(buf, sizeof buf,
-                "sun %zu: %s; its strength from the light its patch bounces: %.3g %.3g %.3g "
-                "(estimated %.3g %.3g %.3g, the clipped patch's lower bound %.3g %.3g %.3g)",
-                k, ratioWhy.c_str(), r->strength[0], r->strength[1], r->strength[2],
-                L.suns[k].irradianceOverPi[0], L.suns[k].irradianceOverPi[1],
-                L.suns[k].irradianceOverPi[2], r->lowerBound[0], r->lowerBound[1], r->lowerBound[2]);
+  char buf[320];
+  if (r->determined)
+    std::snprintf(buf, sizeof buf,
+                  "sun %zu: %s; its strength from the light its patch bounces: %.3g %.3g %.3g "
+                  "(estimated %.3g %.3g %.3g, the clipped patch's lower bound %.3g %.3g %.3g)",
+                  k, ratioWhy.c_str(), r->strength[0], r->strength[1], r->strength[2],
+                  L.suns[k].irradianceOverPi[0], L.suns[k].irradianceOverPi[1],
+                  L.suns[k].irradianceOverPi[2], r->lowerBound[0], r->lowerBound[1], r->lowerBound[2]);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "sun %zu: %s; its patch's bounce does not tell it either (%s): kept as estimated, "
+                  "at least the clipped patch's lower bound: %.3g %.3g %.3g",
+                  k, ratioWhy.c_str(), r->warning.c_str(), r->strength[0], r->strength[1],
+                  r->strength[2]);
   ps.warnings.push_back(buf);
-  if (!r->determined)
-    ps.warnings.push_back("sun " + std::to_string(k) +
-                          ": its patch's bounce does not tell its strength (kept as estimated, at "
-                          "least the clipped patch's lower bound): " +
-                          r->warning);
   return r->strength;
 }
 
