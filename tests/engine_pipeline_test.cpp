@@ -364,6 +364,22 @@ TEST(Engine, AShaftsWindowOutOfViewBecomesALight) {
                ps->camera.project(sky.centre())->y() < photo->linearRgb.height &&
                ps->camera.project(sky.centre())->x() > 0 &&
                ps->camera.project(sky.centre())->x() < photo->linearRgb.width);
+  // The painted patch clips everywhere: the shadow ratio refuses it, and the sun's strength is
+  // asked of the light the patch bounces (PrepareOptions::sunsFromBounce), which says what it
+  // found or why it cannot tell.
+  auto sunWarning = [](const std::vector<std::string>& warnings) {
+    std::string all;
+    for (const std::string& w : warnings)
+      if (w.rfind("sun 0:", 0) == 0) all += w + "\n";
+    return all;
+  };
+  EXPECT_NE(sunWarning(ps->warnings).find("bounce"), std::string::npos) << sunWarning(ps->warnings);
+  PrepareOptions noBounce;
+  noBounce.sunsFromBounce = false;
+  auto ratioOnly = prepareScene(doc, noBounce);
+  ASSERT_TRUE(ratioOnly.ok()) << ratioOnly.error().message();
+  EXPECT_NE(sunWarning(ratioOnly->warnings).find("strength kept as estimated"), std::string::npos);
+  EXPECT_EQ(sunWarning(ratioOnly->warnings).find("bounce"), std::string::npos);
   // Turned off, no light is added.
   PrepareOptions off;
   off.skyThroughUnseenWindows = false;

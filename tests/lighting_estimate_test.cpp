@@ -59,13 +59,19 @@ ImageF renderRoom(const SyntheticRoom& r, const std::vector<AreaLight>& lights,
   return buf.meanWithout();
 }
 
+// A 0.8 x 0.8 m ceiling panel of radiance `radiance` facing down, 1 mm under emptyRoom's ceiling.
+AreaLight ceilingPanel(const Vec3& radiance) {
+  AreaLight l;
+  const double y = 2.699;
+  l.cornersWorld = {Vec3(-0.4, y, -3.4), Vec3(-0.4, y, -2.6), Vec3(0.4, y, -2.6), Vec3(0.4, y, -3.4)};
+  if (l.normal().y() > 0) std::swap(l.cornersWorld[1], l.cornersWorld[3]);
+  l.radiance = radiance;
+  return l;
+}
+
 SyntheticRoom makeRoom(const Vec3& radiance, int spp) {
   SyntheticRoom r = emptyRoom();
-  const double y = 2.699;
-  r.light.cornersWorld = {Vec3(-0.4, y, -3.4), Vec3(-0.4, y, -2.6), Vec3(0.4, y, -2.6),
-                          Vec3(0.4, y, -3.4)};
-  if (r.light.normal().y() > 0) std::swap(r.light.cornersWorld[1], r.light.cornersWorld[3]);
-  r.light.radiance = radiance;
+  r.light = ceilingPanel(radiance);
   for (const Vec3& c : r.light.cornersWorld) r.lightOutlinePx.push_back(*r.camera.project(c));
   r.photo = renderRoom(r, {r.light}, {}, spp);
   return r;
@@ -468,6 +474,154 @@ TEST(Lighting, TheSkyOfAWindowOutOfViewLightsTheRoom) {
     EXPECT_GT(with->lights[0].radiance[c] / sw.window.radiance[c], 0.6) << "channel " << c;
     EXPECT_LT(with->lights[0].radiance[c] / sw.window.radiance[c], 1.7) << "channel " << c;
   }
+}
+
+// d4's case, synthetic: the sun and the sky through a window in view (sunThroughWindow, the sky
+// given as no light: its clipped pixels carry it), the patch a flat colour that clips
+// everywhere, the photo exposed at 1, 2 and 4 times (the patch 2, 4 and 8 times the clip level).
+// The light the patch bounces onto the walls and ceiling, seen unclipped and shaped unlike the
+// sky's, tells the strength (sun_ratio.h, sunStrengthFromBounce).
+struct BounceCase {
+  SyntheticRoom room;
+  SunLight sun;  // the true sun, in the linear render's units
+  ImageF linear;
+};
+
+// The estimate's bounce of its one sun (sun_ratio.h's SunBounceImages).
+SunBounceImages bounceOf(const LightingEstimate& est) {
+  SunBounceImages b{est.sunBounce.at(0), ImageF(), Vec3::Zero()};
+  if (!est.sunBounceUnseen.empty())
+    b.unseen = est.sunBounceUnseen[0], b.unseenAt = est.sunBounceUnseenAt[0];
+  return b;
+}
+
+// `extra`: lights besides the sky's window (none: the sun and the sky alone).
+BounceCase sunAndSkyRoom(const std::vector<AreaLight>& extra = {}) {
+  BounceCase b;
+  b.room = emptyRoom();
+  b.room.albedo[0] = Vec3(0.6, 0.55, 0.5);  // a bright floor
+  const SunWindow sw = sunThroughWindow(b.room, Vec3(5, 4.6, 4));
+  b.sun = sw.sun;
+  std::vector<AreaLight> lights = extra;
+  lights.push_back(sw.window);
+  b.linear = renderRoom(b.room, lights, {b.sun}, 64);
+  return b;
+}
+
+ImageF exposed(const ImageF& linear, double exposure) {
+  ImageF photo = linear;
+  for (float& v : photo.data) v = std::min(float(v * exposure), 1.f);
+  return photo;
+}
+
+TEST(Lighting, TheBounceOfAClippedPatchTellsTheSunsStrength) {
+  const BounceCase b = sunAndSkyRoom();
+  const SyntheticRoom& r = b.room;
+  for (double exposure : {1.0, 2.0, 4.0}) {
+    const ImageF photo = exposed(b.linear, exposure);
+    const Vec3 truth = exposure * b.sun.irradianceOverPi;
+    const auto est = estimateSunRoom(photo, r, b.sun, 128);
+    ASSERT_TRUE(est.ok()) << est.error().message();
+    ASSERT_EQ(est->sunBounce.size(), 1u);
+    const auto fit = sunStrengthFromBounce(photo, r.camera, r.geometry, est->gathered, bounceOf(*est),
+                                           est->lights, est->suns[0]);
+    ASSERT_TRUE(fit.ok()) << fit.error().message();
+    double errEstimate = 0, errBounce = 0;
+    for (int c = 0; c < 3; ++c) {
+      std::printf("exposure %.0f channel %d: estimate %.3f, bounce %.3f (lower bound %.3f), true %.3f\n",
+                  exposure, c, est->suns[0].irradianceOverPi[c], fit->strength[c], fit->lowerBound[c],
+                  truth[c]);
+      EXPECT_GE(fit->strength[c], fit->lowerBound[c] * (1 - 1e-9));
+      errEstimate += std::abs(std::log(est->suns[0].irradianceOverPi[c] / truth[c])) / 3;
+      errBounce += std::abs(std::log(fit->strength[c] / truth[c])) / 3;
+    }
+    std::printf(
+        "exposure %.0f: mean |log(strength / truth)| estimate %.3f, bounce %.3f (share %.2f, "
+        "spread %.2f, %s)\n",
+        exposure, errEstimate, errBounce, fit->bounceShare, fit->spread,
+        fit->determined ? "determined" : fit->warning.c_str());
+    EXPECT_TRUE(fit->determined) << fit->warning;
+    EXPECT_LT(errBounce, 0.3) << "exposure " << exposure;
+    // From exposure 2 the clipped patch alone says far less (a fifth of the truth or below).
+    if (exposure >= 2) {
+      EXPECT_GT(fit->strength.minCoeff(), 2 * fit->lowerBound.maxCoeff()) << "exposure " << exposure;
+    }
+  }
+}
+
+// Stiff inputs: no bounce visible (everything outside the beam clipped), no clipped patch,
+// another light that swamps the bounce, no bounce at all, non-finite pixels, mismatched images
+// and a non-finite strength: a clear error or a finite strength with a warning, never a NaN.
+TEST(Lighting, TheBounceFitOnStiffInputsIsFiniteOrRefused) {
+  const BounceCase b = sunAndSkyRoom();
+  const SyntheticRoom& r = b.room;
+  const ImageF photo = exposed(b.linear, 2.0);
+  const auto est = estimateSunRoom(photo, r, b.sun, 32);
+  ASSERT_TRUE(est.ok()) << est.error().message();
+  ASSERT_EQ(est->sunBounce.size(), 1u);
+  const SunLight& sun = est->suns[0];
+  auto fit = [&](const ImageF& p, const ImageF& gathered, const ImageF& direct, const SunLight& s) {
+    SunBounceImages images = bounceOf(*est);
+    images.direct = direct;
+    return sunStrengthFromBounce(p, r.camera, r.geometry, gathered, images, est->lights, s);
+  };
+  // Everything outside the beam clipped: nothing shows the bounce.
+  ImageF allClipped = exposed(b.linear, 1e4);
+  auto none = fit(allClipped, est->gathered, est->sunBounce[0], sun);
+  ASSERT_FALSE(none.ok());
+  EXPECT_NE(none.error().reason.find("too few unclipped"), std::string::npos) << none.error().reason;
+  // Nothing clipped: no lower bound, nothing to do.
+  auto unclipped = fit(exposed(b.linear, 0.1), est->gathered, est->sunBounce[0], sun);
+  ASSERT_FALSE(unclipped.ok());
+  EXPECT_NE(unclipped.error().reason.find("clipped pixels on the patch"), std::string::npos);
+  // A bright ceiling panel (given, not fitted) swamps the bounce: kept (at least the bound), said.
+  const AreaLight panel = ceilingPanel(Vec3(300, 300, 300));
+  const BounceCase lamp = sunAndSkyRoom({panel});
+  std::vector<float> patch;
+  for (int y = 0; y < lamp.linear.height; ++y)
+    for (int x = 0; x < lamp.linear.width; ++x)
+      if (lamp.sun.litMask.at(x, y) > 0.9f) patch.push_back(lamp.linear.at(x, y, 1));
+  std::nth_element(patch.begin(), patch.begin() + long(patch.size() / 2), patch.end());
+  const ImageF lampPhoto = exposed(lamp.linear, 1.5 / patch[patch.size() / 2]);
+  LightingOptions lo;
+  lo.gatherSamples = 32;
+  lo.gatherStride = 2;
+  lo.threads = 2;
+  const auto lampEst =
+      estimateLighting(lampPhoto, r.camera, r.geometry, {panel}, {false}, ImageF(), {lamp.sun}, lo);
+  ASSERT_TRUE(lampEst.ok()) << lampEst.error().message();
+  ASSERT_EQ(lampEst->sunBounce.size(), 1u);
+  const auto bright = sunStrengthFromBounce(lampPhoto, r.camera, r.geometry, lampEst->gathered,
+                                            bounceOf(*lampEst), lampEst->lights, lampEst->suns[0]);
+  ASSERT_TRUE(bright.ok()) << bright.error().message();
+  std::printf("a bright panel: share %.3f, %s\n", bright->bounceShare, bright->warning.c_str());
+  EXPECT_NE(bright->warning.find("of the light on the room"), std::string::npos) << bright->warning;
+  EXPECT_FALSE(bright->determined);
+  const Vec3& lampSun = lampEst->suns[0].irradianceOverPi;
+  const double kept = std::max(1.0, (bright->lowerBound.array() / lampSun.array()).maxCoeff());
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(bright->strength[c], kept * lampSun[c], 1e-9 * lampSun[c]);
+  // No bounce at all (a black bounce image): the same.
+  auto flat = fit(photo, est->gathered, ImageF(photo.width, photo.height, 3, 0.f), sun);
+  ASSERT_TRUE(flat.ok()) << flat.error().message();
+  EXPECT_FALSE(flat->warning.empty());
+  EXPECT_TRUE(flat->strength.allFinite());
+  // NaN and infinite pixels in the photo, the gathered light and the bounce: finite.
+  ImageF nanPhoto = photo, nanGathered = est->gathered, nanBounce = est->sunBounce[0];
+  for (size_t i = 0; i < nanPhoto.data.size(); i += 7) nanPhoto.data[i] = std::nanf("");
+  for (size_t i = 3; i < nanGathered.data.size(); i += 11)
+    nanGathered.data[i] = std::numeric_limits<float>::infinity();
+  for (size_t i = 5; i < nanBounce.data.size(); i += 13) nanBounce.data[i] = std::nanf("");
+  auto withNan = fit(nanPhoto, nanGathered, nanBounce, sun);
+  ASSERT_TRUE(withNan.ok()) << withNan.error().message();
+  EXPECT_TRUE(withNan->strength.allFinite());
+  EXPECT_TRUE(withNan->lowerBound.allFinite());
+  // Mismatched images and a non-finite strength are named.
+  auto small = fit(photo, ImageF(3, 3, 3, 0.f), est->sunBounce[0], sun);
+  ASSERT_FALSE(small.ok());
+  EXPECT_EQ(small.error().key, "suns");
+  SunLight bad = sun;
+  bad.irradianceOverPi[1] = std::nan("");
+  EXPECT_FALSE(fit(photo, est->gathered, est->sunBounce[0], bad).ok());
 }
 
 // A tiled floor (bright tiles, dark grout) under a sun whose patch clips on the tiles: the

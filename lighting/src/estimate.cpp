@@ -462,6 +462,9 @@ struct LightingFit {
     std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
     std::vector<Vec3> lights;     // radiance per light
     SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
+    // With suns: the part of patches.gamma that the suns' light brought (their clipped patches'
+    // light and their direct light on unseen surfaces, bounced), at the strengths in `lights`.
+    std::vector<Vec3> sunGamma;
   } model;
   // Gain already given to clipped pixels' radiance (after the first fit): radianceAt returns
   // b (1 + gain) there, so the second pass predicts the unseen parts with the fitted light.
@@ -572,6 +575,8 @@ struct LightingFit {
                      const std::vector<UnseenLights>* lit = nullptr);
   void gatherAll();
   void gatherUnseenPatches();
+  void gatherUnseenSunPatches();
+  ImageF unseenSunBounceImage();
   bool chooseFitPixels();
   void averageFitPhoto();
   void chooseGatherSamples();
@@ -999,6 +1004,10 @@ void LightingFit::gatherAll() {
   for (size_t k = 0; k < K; ++k)
     for (size_t s = 0; s < S; ++s)
       if (patchOn[s * K + k]) sunPatches.push_back({k, int(s), sunBounceImage(k, int(s))});
+  if (K == 1 && !model.sunGamma.empty() && !sunPatches.empty()) {
+    out.sunBounceUnseen = {unseenSunBounceImage()};
+    out.sunBounceUnseenAt = {model.lights[J]};
+  }
 }
 
 // The light gathered at every patch of the room (radiosity by Jacobi sweeps from the surface
@@ -1028,6 +1037,57 @@ void LightingFit::gatherUnseenPatches() {
     });
     std::swap(P.gamma, next);
   }
+}
+
+// The suns' share of the unseen patches' gathered light (model.sunGamma): the same sweeps as
+// gatherUnseenPatches with the suns' light as the only source, read where the photo clips their
+// patch (the model's radiance there less its part without the suns) and, where the camera does
+// not see, the room model's albedo times the suns' direct light and this share.
+void LightingFit::gatherUnseenSunPatches() {
+  const SurfacePatches& P = model.patches;
+  std::vector<Vec3> gamma(P.point.size(), Vec3::Zero()), next(P.point.size());
+  for (int sweep = 0; sweep < opt.patchSweeps && size_t(sweep) < patchLights.size(); ++sweep) {
+    const std::vector<PointRays>& sweepRays = rays->patchSweeps[size_t(sweep)];
+    const std::vector<UnseenLights>& lit = patchLights[size_t(sweep)];
+    parallelFor(tbb::blocked_range<size_t>(0, P.point.size()), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i < r.end(); ++i) {
+        Vec3 sum = Vec3::Zero();
+        for (const int32_t idx : sweepRays[i].seen)
+          if (clippedInBeam[size_t(idx)])
+            sum += beamRadiance[size_t(idx)] - beamRadianceNoSun[size_t(idx)];
+        for (size_t k = 0; k < sweepRays[i].unseen.size(); ++k) {
+          const SurfaceHit& h = sweepRays[i].unseen[k].hit;
+          const int patch = lit[i].patch[k];
+          Vec3 irradiance = patch >= 0 ? gamma[size_t(patch)] : Vec3::Zero();
+          for (size_t j = 0; j < K; ++j) irradiance += model.lights[J + j] * lit[i].e[k * C + J + j];
+          const Vec3 radiance = model.rho[size_t(h.surfaceId)].cwiseProduct(irradiance);
+          if (radiance.allFinite()) sum += radiance;
+        }
+        next[i] = sweepRays[i].rays > 0 ? Vec3(sum / sweepRays[i].rays) : Vec3::Zero();
+      }
+    });
+    std::swap(gamma, next);
+  }
+  model.sunGamma = std::move(gamma);
+}
+
+// Per unit strength of the (one) sun: the light its share of the unseen patches' light
+// (model.sunGamma) sends to each pixel, through the room model's albedo where the camera does
+// not see (LightingEstimate::sunBounceUnseen).
+ImageF LightingFit::unseenSunBounceImage() {
+  const Vec3 strength = model.lights[J];
+  ImageF image =
+      gatherImage([](size_t) { return Vec3(Vec3::Zero()); },
+                  [this](const SurfaceHit& h, uint32_t) -> Vec3 {
+                    const int patch = model.patches.find(h);
+                    if (patch < 0 || size_t(patch) >= model.sunGamma.size()) return Vec3::Zero();
+                    return model.rho[size_t(h.surfaceId)].cwiseProduct(model.sunGamma[size_t(patch)]);
+                  });
+  for (size_t i = 0; i < image.data.size(); ++i) {
+    const double s = strength[int(i % 3)];
+    image.data[i] = s > 0 && std::isfinite(image.data[i]) ? float(image.data[i] / s) : 0.f;
+  }
+  return image;
 }
 
 // Each sweep's rays from every patch (once per estimate, or none when reused): sweep k casts
@@ -1224,6 +1284,7 @@ void LightingFit::predictUnseenFromFit() {
   for (const auto& l : out.lights) model.lights.push_back(l.radiance);
   for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
   gatherUnseenPatches();
+  if (K == 1) gatherUnseenSunPatches();
   // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun
   // part apart.
   sunApart = K > 0;

@@ -77,12 +77,7 @@ def photograph(cv, room_dir, out, seed, reading):
     r2 = ((xx + 0.5 - w / 2) ** 2 + (yy + 0.5 - h / 2) ** 2) / ((w / 2) ** 2 + (h / 2) ** 2)
     vignette = 1.0 - cam["vignetting"] * r2
     noise = rng.standard_normal(photo.shape)
-    os.makedirs(out, exist_ok=True)
-    for name in os.listdir(room_dir):
-        if name not in ("photo.png", "photo.jpg", "truth.png", "camera_variant.json"):
-            link = os.path.join(out, name)
-            if not os.path.lexists(link):
-                os.symlink(os.path.abspath(os.path.join(room_dir, name)), link)
+    benchlib.link_room_files(room_dir, out)
     scale = truth["exposure"]["scale"]
     for image, stem in ((photo, "photo"), (with_object, "truth")):
         if reading == "curve_srgb":

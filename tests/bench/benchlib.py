@@ -134,6 +134,16 @@ def scale_scene_pixels(scene, k):
 HALF_A = ["t%02d" % k for k in range(1, 15, 2)]  # scenes-train: odd rooms choose, even rooms report
 
 
+def link_room_files(room_dir, out, replaced=("photo.png", "photo.jpg", "truth.png", "camera_variant.json")):
+    """Symbolic links in `out` to every file of `room_dir` but the `replaced` ones (a variant of
+    the room re-encodes those)."""
+    os.makedirs(out, exist_ok=True)
+    for name in os.listdir(room_dir):
+        link = os.path.join(out, name)
+        if name not in replaced and not os.path.lexists(link):
+            os.symlink(os.path.abspath(os.path.join(room_dir, name)), link)
+
+
 def half(room):
     """"A" (odd rooms: settings are chosen on them) or "B" (even rooms: held out)."""
     return "A" if room[:3] in HALF_A else "B"

@@ -17,11 +17,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace inlay {
 
@@ -154,11 +156,49 @@ std::vector<uint8_t> usableDirect(const LightingEstimate& l, const ImageF& light
   return u;
 }
 
-// Each sun's strength from the ratio of its lit patch to the same surface's shadow (sun_ratio.h);
-// the gathered light keeps the patch's bounce at the new strength. Light outlines are no data.
+// Sun k's strength from its clipped patch's bounce (sun_ratio.h, sunStrengthFromBounce), when
+// the ratio could not tell it (`ratioWhy`); nothing when the sun has no bounce image (no clipped
+// patch) or the fit fails: the warnings say why.
+std::optional<Vec3> sunFromBounce(PreparedScene& ps, const ImageF& photo, const Camera& camera, size_t k,
+                                  const std::string& ratioWhy) {
+  const LightingEstimate& L = ps.lighting;
+  const std::string kept = "sun " + std::to_string(k) + ": strength kept as estimated: " + ratioWhy;
+  if (k >= L.sunBounce.size()) {
+    ps.warnings.push_back(kept);
+    return std::nullopt;
+  }
+  SunBounceImages images{L.sunBounce[k], ImageF(), Vec3::Zero()};
+  if (k < L.sunBounceUnseen.size() && k < L.sunBounceUnseenAt.size())
+    images.unseen = L.sunBounceUnseen[k], images.unseenAt = L.sunBounceUnseenAt[k];
+  auto r = sunStrengthFromBounce(photo, camera, ps.geometry, L.gathered, images, L.lights, L.suns[k]);
+  if (!r) {
+    ps.warnings.push_back(kept + "; its bounce does not tell it either: " + r.error().reason);
+    return std::nullopt;
+  }
+  char buf[320];
+  if (r->determined)
+    std::snprintf(buf, sizeof buf,
+                  "sun %zu: %s; its strength from the light its patch bounces: %.3g %.3g %.3g "
+                  "(estimated %.3g %.3g %.3g, the clipped patch's lower bound %.3g %.3g %.3g)",
+                  k, ratioWhy.c_str(), r->strength[0], r->strength[1], r->strength[2],
+                  L.suns[k].irradianceOverPi[0], L.suns[k].irradianceOverPi[1],
+                  L.suns[k].irradianceOverPi[2], r->lowerBound[0], r->lowerBound[1], r->lowerBound[2]);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "sun %zu: %s; its patch's bounce does not tell it either (%s): kept as estimated, "
+                  "at least the clipped patch's lower bound: %.3g %.3g %.3g",
+                  k, ratioWhy.c_str(), r->warning.c_str(), r->strength[0], r->strength[1],
+                  r->strength[2]);
+  ps.warnings.push_back(buf);
+  return r->strength;
+}
+
+// Each sun's strength from the ratio of its lit patch to the same surface's shadow (sun_ratio.h),
+// or, when the patch clips, from the light it bounces (PrepareOptions::sunsFromBounce); the
+// gathered light keeps the patch's bounce at the new strength. Light outlines are no data.
 // `photoLinear`, `camera` and `lightMask` are the working copy's (the lighting's pixel frame).
 void sunsFromShadowRatio(PreparedScene& ps, const ImageF& photoLinear, const Camera& camera,
-                         const ImageF& lightMask) {
+                         const ImageF& lightMask, bool fromBounce) {
   LightingEstimate& L = ps.lighting;
   ImageF photo = photoLinear;
   for (int y = 0; y < photo.height && !lightMask.empty(); ++y)
@@ -166,13 +206,24 @@ void sunsFromShadowRatio(PreparedScene& ps, const ImageF& photoLinear, const Cam
       if (lightMask.at(x, y) > 0.5f) photo.setRgb(x, y, Vec3::Constant(1e9));
   for (size_t k = 0; k < L.suns.size(); ++k) {
     auto r = sunStrengthFromShadowRatio(photo, camera, ps.geometry, L.gathered, L.lights, L.suns[k]);
-    if (!r) {
+    std::optional<Vec3> strength;
+    if (r) strength = r->strength;
+    else if (fromBounce && r.error().reason.find("clipped") != std::string::npos)
+      strength = sunFromBounce(ps, photo, camera, k, r.error().reason);
+    else
       ps.warnings.push_back("sun " + std::to_string(k) +
                             ": strength kept as estimated: " + r.error().reason);
-      continue;
+    if (!strength) continue;
+    // The bounce fit scales the light by way of the unseen surfaces too (held at sunBounceUnseenAt).
+    if (!r && k < L.sunBounceUnseen.size() && k < L.sunBounceUnseenAt.size() &&
+        L.sunBounceUnseen[k].data.size() == L.gathered.data.size()) {
+      const Vec3 unseenChange = *strength - L.sunBounceUnseenAt[k];
+      for (size_t i = 0; i < L.gathered.data.size(); ++i)
+        L.gathered.data[i] += float(unseenChange[int(i % 3)]) * L.sunBounceUnseen[k].data[i];
+      L.sunBounceUnseenAt[k] = *strength;
     }
-    const Vec3 change = r->strength - L.suns[k].irradianceOverPi;
-    L.suns[k].irradianceOverPi = r->strength;
+    const Vec3 change = *strength - L.suns[k].irradianceOverPi;
+    L.suns[k].irradianceOverPi = *strength;
     if (k < L.sunBounce.size() && L.sunBounce[k].width == L.gathered.width &&
         L.sunBounce[k].height == L.gathered.height)
       for (size_t i = 0; i < L.gathered.data.size(); ++i)
@@ -840,7 +891,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
 }
 
 Status sunsFromRatio(Preparation& p, std::string& detail) {
-  sunsFromShadowRatio(p.ps, p.workPhoto(), p.workCamera(), p.lightMask);
+  sunsFromShadowRatio(p.ps, p.workPhoto(), p.workCamera(), p.lightMask, p.opt.sunsFromBounce);
   detail = countOf(p.ps.lighting.suns.size(), "sun");
   return {};
 }

@@ -159,6 +159,14 @@ struct LightingEstimate {
   // radiance is albedo times the sun's irradiance, so it scales with the sun. Already in
   // `gathered` at the fitted strength. Empty when no sunlit pixel is clipped.
   std::vector<ImageF> sunBounce;
+  // Per sun (one sun only; empty otherwise or without sunBounce): W x H x 3, the irradiance / pi
+  // the sun's light sends to each pixel at unit strength by way of the surfaces the camera does
+  // not see, after bouncing there (their predicted radiance's part that the sun brought: its
+  // clipped patch's light and its direct light on them, through the room model's radiosity).
+  // `gathered` holds it at the strength sunBounceUnseenAt (the first pass's), not the fitted
+  // one: the light fit keeps it fixed; sun_ratio.h's bounce fit scales it.
+  std::vector<ImageF> sunBounceUnseen;
+  std::vector<Vec3> sunBounceUnseenAt;
   double seconds = 0;
   std::vector<LightingStepTime> steps;  // where `seconds` went, in the order the steps first ran
   std::vector<std::string> notes;

@@ -146,6 +146,11 @@ struct PrepareOptions {
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
   // ratio cannot be measured (a note says why).
   bool sunsFromShadowRatio = true;
+  // With sunsFromShadowRatio: when the ratio cannot be measured because the patch clips, the
+  // sun's strength from the light its patch bounces onto the room the photo shows unclipped
+  // (lighting/sun_ratio.h, sunStrengthFromBounce), at least the clipped patch's lower bound; a
+  // channel the bounce cannot tell keeps the estimate's strength (a warning says why).
+  bool sunsFromBounce = true;
   // A shaft whose window the photo does not show (no source_box_px, and the opening its beam
   // came through mostly out of view) lets the sky in through that window all the same: the
   // opening (lighting/shaft.h, openingOfBeam) becomes an area light whose intensity the lighting
