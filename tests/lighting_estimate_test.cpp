@@ -241,6 +241,7 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
 Expected<LightingEstimate> estimateSunRoom(const ImageF& photo, const SyntheticRoom& r,
                                            const SunLight& sun, int samples) {
   LightingOptions opt;
+  opt.gatherSunBounceUnseen = true;  // the bounce fit's term (computed only for it)
   opt.gatherSamples = samples;
   opt.gatherStride = 2;
   opt.threads = 2;
@@ -587,6 +588,7 @@ TEST(Lighting, TheBounceFitOnStiffInputsIsFiniteOrRefused) {
   lo.gatherSamples = 32;
   lo.gatherStride = 2;
   lo.threads = 2;
+  lo.gatherSunBounceUnseen = true;
   const auto lampEst =
       estimateLighting(lampPhoto, r.camera, r.geometry, {panel}, {false}, ImageF(), {lamp.sun}, lo);
   ASSERT_TRUE(lampEst.ok()) << lampEst.error().message();

@@ -86,6 +86,9 @@ Render options:
                           stay the photo bit for bit; default for demo, off for render)
   --no-denoise            the raw render (demo's default is --denoise)
   --initial-lights        render with the lights as estimated, before their refinement
+  --suns-from-bounce      diagnostics: a sun whose lit patch clips takes its strength from the
+                          light the patch bounces onto the room (off by default: it fails on
+                          held-out rooms, docs/generalization.md)
   --lights-json FILE      the lights before and after refinement (corners in metres, rgb in
                           the photo's linear units), the refinement's objective against time
                           and the seconds of each stage of the preparation
@@ -158,6 +161,7 @@ struct Args {
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
+  bool sunsFromBounce = false;  // --suns-from-bounce
   std::optional<int> spp, seed, threads, iterations, prepareSeed;
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
@@ -294,6 +298,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       a.denoise = s == "--denoise";
     } else if (s == "--initial-lights") {
       a.initialLights = true;
+    } else if (s == "--suns-from-bounce") {
+      a.sunsFromBounce = true;
     } else if (!s.empty() && s[0] == '-' && s != "-") {
       return "unknown option '" + s + "'";
     } else if (a.command.empty()) {
@@ -411,6 +417,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.threads = a.threads.value_or(0);
   po.progress = [&](const std::string& stage, double f) { progress.stage(stage, f); };
   po.refineLights = !a.initialLights;
+  po.sunsFromBounce = a.sunsFromBounce;
   if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;

@@ -1004,7 +1004,7 @@ void LightingFit::gatherAll() {
   for (size_t k = 0; k < K; ++k)
     for (size_t s = 0; s < S; ++s)
       if (patchOn[s * K + k]) sunPatches.push_back({k, int(s), sunBounceImage(k, int(s))});
-  if (K == 1 && !model.sunGamma.empty() && !sunPatches.empty()) {
+  if (opt.gatherSunBounceUnseen && K == 1 && !model.sunGamma.empty() && !sunPatches.empty()) {
     out.sunBounceUnseen = {unseenSunBounceImage()};
     out.sunBounceUnseenAt = {model.lights[J]};
   }

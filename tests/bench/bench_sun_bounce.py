@@ -10,9 +10,10 @@ patch clips more), its assisted scene (harness.py scene), and per CLI one prepar
 (`inlay-cli render --spp 1 --lights-json`): the refined sun's strength over the truth's (in the
 photo's units: truth.json's exposure scale times G), by luminance and per channel, and the
 warnings about the sun. Writes OUT/sun_bounce.csv and OUT/sun_bounce.png (ratio against gain per
-CLI); prints the table.
+CLI); prints the table. A CLI may carry options after it, in one argument: the bounce fit is off by
+default, so `"build/app/inlay-cli --suns-from-bounce"` measures it against `build/app/inlay-cli`.
 """
-import json, os, subprocess, sys
+import json, os, shlex, subprocess, sys
 
 import numpy as np
 
@@ -40,8 +41,9 @@ def measure(cli, label, room, scene, gain, out):
     """One row: the CLI's refined sun against the truth at `gain`."""
     tag = "%s_g%s" % (label, gain)
     lj, report = os.path.join(out, tag + "_lights.json"), os.path.join(out, tag + "_report.json")
-    p = subprocess.run([cli, "render", scene, "-o", os.path.join(out, tag + ".png"), "--spp", "1", "--seconds",
-                        "0", "--noise", "0", "--quiet", "--lights-json", lj, "--report", report],
+    command, options = shlex.split(cli)[0], shlex.split(cli)[1:]
+    p = subprocess.run([command, "render", scene, "-o", os.path.join(out, tag + ".png"), "--spp", "1", "--seconds",
+                        "0", "--noise", "0", "--quiet", "--lights-json", lj, "--report", report] + options,
                        capture_output=True, text=True)
     row = {"label": label, "gain": gain}
     if p.returncode != 0:

@@ -877,6 +877,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.threads = p.opt.threads;
   lo.seed += p.opt.seed;
   lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
+  lo.gatherSunBounceUnseen = p.opt.sunsFromShadowRatio && p.opt.sunsFromBounce;
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();

@@ -91,6 +91,10 @@ struct LightingOptions {
   // room gives a ceiling the camera does not see (its passes' unseen patches), instead of the
   // walls' mean (albedoOfUnseen). The fitted lights follow it (docs/generalization.md, "The
   // lights' intensity and the unseen ceiling"). Negative: the product's rule.
+  // One sun: also gather its light that reaches the seen room by way of the surfaces the camera
+  // does not see, per unit strength (LightingEstimate::sunBounceUnseen), for the bounce fit of a
+  // clipped sun (PrepareOptions::sunsFromBounce). Off: not computed (the fit never uses it).
+  bool gatherSunBounceUnseen = false;
   Vec3 fitUnseenCeilingAlbedo = Vec3::Constant(-1);
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.

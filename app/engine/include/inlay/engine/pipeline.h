@@ -149,8 +149,11 @@ struct PrepareOptions {
   // With sunsFromShadowRatio: when the ratio cannot be measured because the patch clips, the
   // sun's strength from the light its patch bounces onto the room the photo shows unclipped
   // (lighting/sun_ratio.h, sunStrengthFromBounce), at least the clipped patch's lower bound; a
-  // channel the bounce cannot tell keeps the estimate's strength (a warning says why).
-  bool sunsFromBounce = true;
+  // channel the bounce cannot tell keeps the estimate's strength (a warning says why). Off by
+  // default: chosen on d4 it held, but on the held-out sun rooms it made t04's object 0.070 ->
+  // 0.195 (docs/generalization.md, "The sun's strength from its patch's bounce"); the CLI's
+  // --suns-from-bounce turns it on for diagnostics.
+  bool sunsFromBounce = false;
   // A shaft whose window the photo does not show (no source_box_px, and the opening its beam
   // came through mostly out of view) lets the sky in through that window all the same: the
   // opening (lighting/shaft.h, openingOfBeam) becomes an area light whose intensity the lighting
