@@ -1092,7 +1092,8 @@ void LightingFit::tracePatchRays(const SurfacePatches& P) {
 void LightingFit::gatherUnseenBounce() {
   unseenBounce.clear(), bounceSurfaces.clear(), bounceAlbedo.clear();
   if (!opt.unseenBounceScalesWithLights || !model.active || J == 0 ||
-      gridLights.size() != gridSurface.size() || rays->grid.size() != gridSurface.size())
+      gridLights.size() != gridSurface.size() || rays->grid.size() != gridSurface.size() ||
+      std::none_of(bounceApart.begin(), bounceApart.end(), [](bool b) { return b; }))
     return;
   std::vector<int> index(S, -1);
   for (const PointRays& pr : rays->grid)
@@ -1118,8 +1119,6 @@ void LightingFit::gatherUnseenBounce() {
             }
         }
       });
-  static const double dbgScale = std::getenv("DBG_U") ? std::atof(std::getenv("DBG_U")) : 1.0;
-  for (double& v : grid) v *= dbgScale;
   unseenBounce.assign(size_t(W) * H * D, 0.f);
   spread(
       int(D), [&](size_t g, int d) { return grid[g * D + size_t(d)]; },
