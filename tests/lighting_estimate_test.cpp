@@ -1161,9 +1161,10 @@ double sconceRatio(const SyntheticRoom& r, const Vec3& fitCeiling, bool bounceSc
 // the unseen ceiling's bounce is proportional to L itself. Held fixed at the previous pass's
 // lights, the passes fed the light's own bounce back: with the true white ceiling in the fit the
 // sconce came out about 2 times the truth (docs/generalization.md, "The lights' intensity and the
-// unseen ceiling"). Taken as a term of the light (LightingOptions::unseenBounceScalesWithLights),
-// the true ceiling gives the true light. A ceiling override that is negative or not finite is no
-// override: the same lights, finite.
+// unseen ceiling"). Its first bounce taken as a term of the light (LightingOptions::
+// unseenBounceScalesWithLights), the true ceiling gives the light within 20 % (0.83: the higher
+// bounces stay fixed; docs/generalization.md, "The unseen room's bounce in the light fit"). A
+// ceiling override that is negative or not finite is no override: the same lights, finite.
 TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
   const SyntheticRoom r = sconceUnderAnUnseenCeiling();
   const Vec3 ceiling = r.albedo[1];
@@ -1173,9 +1174,12 @@ TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
   std::printf("sconce / truth: walls' mean in the fit %.3f, true ceiling %.3f (bounce fixed: %.3f)\n",
               rule, truth, fixedTruth);
   ASSERT_TRUE(std::isfinite(rule) && std::isfinite(truth) && rule > 0 && truth > 0);
-  EXPECT_LT(rule, truth);  // the dark ceiling makes the light darker
-  EXPECT_NEAR(rule, 1.0, 0.2);
-  EXPECT_NEAR(truth, 1.0, 0.15);  // with the bounce fixed: about 2
+  // The fit's dark ceiling (the walls' 0.3 against 0.85) bounces too little of the light: the
+  // light comes out brighter than with the true ceiling (with the bounce fixed it was darker,
+  // 0.94 against 2.07).
+  EXPECT_GT(rule, truth);
+  EXPECT_LT(rule, 1.6);
+  EXPECT_NEAR(truth, 1.0, 0.2);  // with the bounce fixed: about 2
   EXPECT_LT(std::abs(truth - 1), std::abs(fixedTruth - 1));
   EXPECT_EQ(sconceRatio(r, Vec3(nan, 0.5, 0.5), true), rule);  // not an override: the rule
   EXPECT_EQ(sconceRatio(r, Vec3(0.5, -0.1, 0.5), true), rule);
