@@ -532,7 +532,7 @@ struct LightingFit {
   // the pass that predicts the unseen room on: per pixel, area light j and surface u of
   // bounceSurfaces (the surfaces the gather's unseen rays hit), the unit direct light of j on u's
   // unseen points gathered at the pixel (unit radiance and albedo; W x H x J x U). The gathered
-  // light holds it at the room model's lights and albedos; the fit takes it at its own, each
+  // light leaves it out (gatherAll); the fit adds it at its own lights and albedos, each
   // surface's albedo written in the fit's unknowns (bounceAlbedo), so it scales with the lights
   // and with the albedo scale the fit chooses.
   std::vector<int> bounceSurfaces;
@@ -595,6 +595,8 @@ struct LightingFit {
   void gatherAll();
   void gatherUnseenPatches();
   void gatherUnseenBounce();
+  void sumUnseenBounce(const PointRays& pr, const UnseenLights& lit, const std::vector<int>& index,
+                       double* sum) const;
   UnseenAlbedo unseenAlbedoInFit(int surface) const;
   double bounceAlbedoOf(size_t u, int c, const std::vector<std::array<double, 3>>& rhoNow) const;
   double unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
@@ -1087,8 +1089,8 @@ void LightingFit::tracePatchRays(const SurfacePatches& P) {
 
 // The unseen room's first bounce apart (unseenBounce): on the grid, per unseen ray the unit
 // direct light of each area light at its hit (gridLights), summed per hit surface over the
-// point's rays; spread to the pixels. A pixel with no grid point on its surface (a sliver) keeps
-// 0: its Gamma holds the bounce at the room model's lights.
+// point's rays; spread to the pixels. A pixel with no grid point on its surface (a sliver)
+// traces its own rays, as the gather does there.
 void LightingFit::gatherUnseenBounce() {
   unseenBounce.clear(), bounceSurfaces.clear(), bounceAlbedo.clear();
   if (!opt.unseenBounceScalesWithLights || !model.active || J == 0 ||
@@ -1105,28 +1107,42 @@ void LightingFit::gatherUnseenBounce() {
   const size_t U = bounceSurfaces.size(), D = J * U;
   if (D == 0) return;
   std::vector<double> grid(gridSurface.size() * D, 0.0);
-  parallelFor(
-      tbb::blocked_range<size_t>(0, gridSurface.size()), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t g = r.begin(); g < r.end(); ++g) {
-          const PointRays& pr = rays->grid[g];
-          if (gridSurface[g] < 0 || pr.rays <= 0) continue;
-          for (size_t k = 0; k < pr.unseen.size(); ++k)
-            for (size_t j = 0; j < J; ++j) {
-              if (!bounceApart[j]) continue;
-              const double e = gridLights[g].e[k * C + j];
-              if (std::isfinite(e))
-                grid[g * D + j * U + size_t(index[size_t(pr.unseen[k].hit.surfaceId)])] += e / pr.rays;
-            }
-        }
-      });
+  parallelFor(tbb::blocked_range<size_t>(0, gridSurface.size()),
+              [&](const tbb::blocked_range<size_t>& r) {
+                for (size_t g = r.begin(); g < r.end(); ++g)
+                  if (gridSurface[g] >= 0)
+                    sumUnseenBounce(rays->grid[g], gridLights[g], index, &grid[g * D]);
+              });
   unseenBounce.assign(size_t(W) * H * D, 0.f);
   spread(
       int(D), [&](size_t g, int d) { return grid[g * D + size_t(d)]; },
       [&](int x, int y, const double* v) {
         for (size_t d = 0; d < D; ++d) unseenBounce[(size_t(y) * W + x) * D + d] = float(v[d]);
       },
-      [&](int, int, double* v) { std::fill(v, v + D, 0.0); });
+      [&](int x, int y, double* v) {
+        const PixelSurface& p = ps[size_t(y) * W + x];
+        const PointRays pr = traceRays(p.point, p.normal, gatherSamples, uint32_t(y * W + x), opt.seed);
+        std::fill(v, v + D, 0.0);
+        sumUnseenBounce(pr, unseenLightsOf(pr), index, v);
+      });
   for (const int u : bounceSurfaces) bounceAlbedo.push_back(unseenAlbedoInFit(u));
+}
+
+// Adds to `sum` (J x U values) the unit direct light of each area light whose bounce is apart at
+// the unseen hits of `pr` (their UnseenLights `lit`), per hit surface (`index`: its place in
+// bounceSurfaces, or -1), over all of the point's rays.
+void LightingFit::sumUnseenBounce(const PointRays& pr, const UnseenLights& lit,
+                                  const std::vector<int>& index, double* sum) const {
+  const size_t U = bounceSurfaces.size();
+  if (pr.rays <= 0 || lit.e.size() < pr.unseen.size() * C) return;
+  for (size_t k = 0; k < pr.unseen.size(); ++k) {
+    const int u = index[size_t(pr.unseen[k].hit.surfaceId)];
+    if (u < 0) continue;
+    for (size_t j = 0; j < J; ++j) {
+      const double e = lit.e[k * C + j];
+      if (bounceApart[j] && std::isfinite(e)) sum[j * U + size_t(u)] += e / pr.rays;
+    }
+  }
 }
 
 // UnseenAlbedo of `surface`: its own fitted albedo where the fit has its pixels; a ceiling the
