@@ -1264,12 +1264,14 @@ TEST(Lighting, RaysOfAnotherPhotoCameraOrRoomAreTracedAgain) {
 // passes feeding the light's own bounce back (docs/generalization.md, "The lights' intensity
 // and the unseen ceiling"; t09 0.75 -> 1.14). A ceiling override that is negative or not finite
 // is no override: the same lights, finite.
-TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
+// A sconce in view on dark walls (0.3) under a white ceiling (0.85) the photo does not show:
+// a 0.3 x 0.3 m panel on the back wall, 2 m up (0.7 m under the ceiling), radiance 60, rendered
+// with 32 samples.
+SyntheticRoom sconceUnderAnUnseenCeiling() {
   SyntheticRoom r = emptyRoom();
   r.camera.worldFromCamera = Eigen::AngleAxisd(-14 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
-  const Vec3 wall(0.3, 0.3, 0.3), ceiling(0.85, 0.85, 0.85);
-  r.albedo = {Vec3(0.3, 0.3, 0.3), ceiling, wall, wall, wall, wall};
-  // A 0.3 x 0.3 m sconce on the back wall, 2 m up (0.7 m under the ceiling), facing the camera.
+  const Vec3 wall(0.3, 0.3, 0.3);
+  r.albedo = {Vec3(0.3, 0.3, 0.3), Vec3(0.85, 0.85, 0.85), wall, wall, wall, wall};
   const double z = -5.499;
   r.light.cornersWorld = {Vec3(0.85, 1.85, z), Vec3(1.15, 1.85, z), Vec3(1.15, 2.15, z),
                           Vec3(0.85, 2.15, z)};
@@ -1277,8 +1279,8 @@ TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
   r.light.radiance = Vec3(60, 60, 60);
   for (const Vec3& c : r.light.cornersWorld) {
     const auto p = r.camera.project(c);
-    ASSERT_TRUE(p && p->x() > 0 && p->x() < 160 && p->y() > 0 && p->y() < 120);  // in view
-    r.lightOutlinePx.push_back(*p);
+    EXPECT_TRUE(p && p->x() > 0 && p->x() < 160 && p->y() > 0 && p->y() < 120);  // in view
+    if (p) r.lightOutlinePx.push_back(*p);
   }
   r.photo = renderRoom(r, {r.light}, {}, 32);
   int ceilingPixels = 0;
@@ -1287,28 +1289,92 @@ TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
       const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(px + 0.5, y + 0.5)));
       ceilingPixels += h && r.geometry.surfaces[size_t(h->surfaceId)].kind == SurfaceKind::Ceiling;
     }
-  ASSERT_EQ(ceilingPixels, 0);  // the photo shows no ceiling
-  LightingOptions opt;
-  opt.gatherSamples = 32;
-  opt.gatherStride = 4;
-  auto ratioWith = [&](const Vec3& fitCeiling) {
-    LightingOptions o = opt;
-    o.fitUnseenCeilingAlbedo = fitCeiling;
-    const auto est =
-        estimateLighting(r.photo, r.camera, r.geometry, {r.light}, {true}, lightMaskOf(r), {}, o);
-    EXPECT_TRUE(est.ok()) << est.error().message();
-    if (!est.ok()) return std::numeric_limits<double>::quiet_NaN();
-    for (float v : est->albedo.data) EXPECT_TRUE(std::isfinite(v));
-    return est->lights[0].radiance[1] / r.light.radiance[1];
-  };
-  const double rule = ratioWith(Vec3::Constant(-1)), truth = ratioWith(ceiling);
+  EXPECT_EQ(ceilingPixels, 0);  // the photo shows no ceiling
+  return r;
+}
+
+// The fitted sconce over the truth (green) with the fit's unseen ceiling `fitCeiling` (negative:
+// the product's rule) and the unseen bounce in the fit as a term of the light or not; NaN when
+// the estimate fails. Every albedo and gathered value finite.
+double sconceRatio(const SyntheticRoom& r, const Vec3& fitCeiling, bool bounceScales) {
+  LightingOptions o;
+  o.gatherSamples = 32;
+  o.gatherStride = 4;
+  o.fitUnseenCeilingAlbedo = fitCeiling;
+  o.unseenBounceScalesWithLights = bounceScales;
+  const auto est =
+      estimateLighting(r.photo, r.camera, r.geometry, {r.light}, {true}, lightMaskOf(r), {}, o);
+  EXPECT_TRUE(est.ok()) << est.error().message();
+  if (!est.ok()) return std::numeric_limits<double>::quiet_NaN();
+  for (float v : est->albedo.data) EXPECT_TRUE(std::isfinite(v));
+  for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
+  return est->lights[0].radiance[1] / r.light.radiance[1];
+}
+
+// The light fit's model of a ceiling the camera does not see (LightingOptions::
+// fitUnseenCeilingAlbedo, a diagnostic oracle). The fit explains each surface as rho (L E + Gamma),
+// and only the part of Gamma the photo shows (the seen walls' radiance) has an absolute scale;
+// the unseen ceiling's bounce is proportional to L itself. Held fixed at the previous pass's
+// lights, the passes fed the light's own bounce back: with the true white ceiling in the fit the
+// sconce came out about 2 times the truth (docs/generalization.md, "The lights' intensity and the
+// unseen ceiling"). Its first bounce taken as a term of the light (LightingOptions::
+// unseenBounceScalesWithLights), the true ceiling gives the light within 20 % (0.83: the higher
+// bounces stay fixed; docs/generalization.md, "The unseen room's bounce in the light fit"). A
+// ceiling override that is negative or not finite is no override: the same lights, finite.
+TEST(Lighting, TheUnseenCeilingInTheFitSetsTheLightsIntensity) {
+  const SyntheticRoom r = sconceUnderAnUnseenCeiling();
+  const Vec3 ceiling = r.albedo[1];
+  const double rule = sconceRatio(r, Vec3::Constant(-1), true), truth = sconceRatio(r, ceiling, true);
+  const double fixedTruth = sconceRatio(r, ceiling, false);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::printf("sconce / truth: walls' mean in the fit %.3f, true ceiling %.3f\n", rule, truth);
+  std::printf("sconce / truth: walls' mean in the fit %.3f, true ceiling %.3f (bounce fixed: %.3f)\n",
+              rule, truth, fixedTruth);
   ASSERT_TRUE(std::isfinite(rule) && std::isfinite(truth) && rule > 0 && truth > 0);
-  EXPECT_LT(rule, truth);                           // the dark ceiling makes the light darker
-  EXPECT_NEAR(rule, 1.0, 0.2);                      // the product's rule on this room
-  EXPECT_EQ(ratioWith(Vec3(nan, 0.5, 0.5)), rule);  // not an override: the rule, the same seed
-  EXPECT_EQ(ratioWith(Vec3(0.5, -0.1, 0.5)), rule);
+  // The fit's dark ceiling (the walls' 0.3 against 0.85) bounces too little of the light: the
+  // light comes out brighter than with the true ceiling (with the bounce fixed it was darker,
+  // 0.94 against 2.07).
+  EXPECT_GT(rule, truth);
+  EXPECT_LT(rule, 1.6);
+  EXPECT_NEAR(truth, 1.0, 0.2);  // with the bounce fixed: about 2
+  EXPECT_LT(std::abs(truth - 1), std::abs(fixedTruth - 1));
+  EXPECT_EQ(sconceRatio(r, Vec3(nan, 0.5, 0.5), true), rule);  // not an override: the rule
+  EXPECT_EQ(sconceRatio(r, Vec3(0.5, -0.1, 0.5), true), rule);
+}
+
+// The unseen bounce as a term of the light on stiff inputs: an unseen ceiling of albedo 0 (no
+// bounce from it), 1e6 (a bounce far beyond the photo), a light kept at radiance 0 and at 1e6,
+// and a photo of 4 x 3 pixels (almost all the room unseen): finite lights, albedo and Gamma.
+TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
+  const SyntheticRoom r = sconceUnderAnUnseenCeiling();
+  for (const double ceiling : {0.0, 1e6}) {
+    const double ratio = sconceRatio(r, Vec3::Constant(ceiling), true);
+    EXPECT_TRUE(std::isfinite(ratio) && ratio >= 0) << "unseen ceiling " << ceiling;
+  }
+  LightingOptions o;
+  o.gatherSamples = 16;
+  o.gatherStride = 4;
+  for (const double given : {0.0, 1e6}) {
+    AreaLight kept = r.light;
+    kept.radiance = Vec3::Constant(given);
+    const auto est =
+        estimateLighting(r.photo, r.camera, r.geometry, {kept}, {false}, lightMaskOf(r), {}, o);
+    ASSERT_TRUE(est.ok()) << est.error().message();
+    EXPECT_EQ(est->lights[0].radiance, kept.radiance);
+    for (float v : est->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1) << given;
+    for (float v : est->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0) << given;
+  }
+  Camera tiny = r.camera;
+  tiny.widthPx = 4, tiny.heightPx = 3, tiny.focalPx = 3, tiny.principalPx = Vec2(2, 1.5);
+  ImageF photo(4, 3, 3, 0.f);
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 4; ++x) photo.setRgb(x, y, Vec3(0.2 + 0.05 * x, 0.3, 0.25 + 0.05 * y));
+  const auto est = estimateLighting(photo, tiny, r.geometry, {r.light}, {true}, ImageF(), {}, o);
+  if (est.ok()) {
+    for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
+    EXPECT_TRUE(est->lights[0].radiance.allFinite());
+  } else {
+    EXPECT_FALSE(est.error().message().empty());
+  }
 }
 
 }  // namespace

@@ -58,6 +58,14 @@ struct UnseenLights {
   std::vector<double> e;
 };
 
+// The albedo the light fit gives a surface hit by the gather where the camera does not see it,
+// in its unknowns: a constant plus weighted fitted albedos (the surface's own where the fit has
+// its pixels, else the mean of the fitted walls or of every fitted surface, as albedoOfUnseen).
+struct UnseenAlbedo {
+  Vec3 constant = Vec3::Zero();
+  std::vector<std::pair<int, double>> fitted;  // (surface, weight)
+};
+
 // FNV-1a over 64-bit words (a tail shorter than a word padded with zeros).
 class Fingerprint {
  public:
@@ -523,6 +531,20 @@ struct LightingFit {
   // per sweep and patch: filled by the first pass that predicts the unseen room, read by the rest.
   std::vector<UnseenLights> gridLights;
   std::vector<std::vector<UnseenLights>> patchLights;
+  // The unseen room's first bounce apart (LightingOptions::unseenBounceScalesWithLights), from
+  // the pass that predicts the unseen room on: per pixel, area light j and surface u of
+  // bounceSurfaces (the surfaces the gather's unseen rays hit), the unit direct light of j on u's
+  // unseen points gathered at the pixel (unit radiance and albedo; W x H x J x U). The gathered
+  // light leaves it out (gatherAll); the fit adds it at its own lights and albedos, each
+  // surface's albedo written in the fit's unknowns (bounceAlbedo), so it scales with the lights
+  // and with the albedo scale the fit chooses.
+  std::vector<int> bounceSurfaces;
+  std::vector<UnseenAlbedo> bounceAlbedo;
+  std::vector<float> unseenBounce;
+  // While the gathered light is gathered without that first bounce (unseenRadianceOf).
+  bool withoutUnseenBounce = false;
+  // Per area light: its unseen bounce is apart (LightingOptions::unseenBounceOfLightsOutOfView).
+  std::vector<bool> bounceApart;
 
   bool stop() const { return opt.cancel && opt.cancel->shouldStop(); }
   bool isLight(int x, int y) const { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; }
@@ -577,6 +599,17 @@ struct LightingFit {
   void gatherUnseenPatches();
   void gatherUnseenSunPatches();
   ImageF unseenSunBounceImage();
+  void gatherUnseenBounce();
+  void sumUnseenBounce(const PointRays& pr, const UnseenLights& lit, const std::vector<int>& index,
+                       double* sum) const;
+  UnseenAlbedo unseenAlbedoInFit(int surface) const;
+  double bounceAlbedoOf(size_t u, int c, const std::vector<std::array<double, 3>>& rhoNow) const;
+  double unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+                        const std::vector<Vec3>& lights) const;
+  double fixedGathered(size_t idx, int c) const;
+  void addUnseenBounceTerms(size_t idx, int c, std::vector<double>& e, std::vector<BounceTerm>& bounce,
+                            const std::function<int(int surface)>& blockOf) const;
+  void moveUnseenBounceToFittedLights();
   bool chooseFitPixels();
   void averageFitPhoto();
   void chooseGatherSamples();
@@ -818,7 +851,8 @@ std::vector<UnseenLights> LightingFit::unseenLightsOfAll(const std::vector<Point
 // patch and unit direct light `e` (C values).
 Vec3 LightingFit::unseenRadianceOf(const SurfaceHit& h, int patch, const double* e) const {
   Vec3 irradiance = patch >= 0 ? model.patches.gamma[size_t(patch)] : model.gammaMean[h.surfaceId];
-  for (size_t j = 0; j < J; ++j) irradiance += model.lights[j] * e[j];
+  for (size_t j = 0; j < J; ++j)
+    if (!withoutUnseenBounce || !bounceApart[j]) irradiance += model.lights[j] * e[j];
   for (size_t k = 0; k < K && !sunApart; ++k) irradiance += model.lights[J + k] * e[J + k];
   return model.rho[h.surfaceId].cwiseProduct(irradiance);
 }
@@ -980,9 +1014,12 @@ ImageF LightingFit::gatherImage(const Seen& seen, const Unseen& unseen,
 void LightingFit::gatherAll() {
   traceGridRays();
   if (model.active && gridLights.empty() && !stop()) gridLights = unseenLightsOfAll(rays->grid);
+  gatherUnseenBounce();
+  withoutUnseenBounce = !unseenBounce.empty();
   out.gathered = gatherImage([this](size_t idx) { return seenRadiance(idx); },
                              [this](const SurfaceHit& h, uint32_t id) { return unseenRadiance(h, id); },
                              model.active ? &gridLights : nullptr);
+  withoutUnseenBounce = false;
   if (fitClipped)
     gatheredClipped = gatherImage([this](size_t idx) { return clippedRadianceOf(idx); },
                                   [](const SurfaceHit&, uint32_t) { return Vec3(Vec3::Zero()); });
@@ -1108,6 +1145,163 @@ void LightingFit::tracePatchRays(const SurfacePatches& P) {
     });
   }
   if (!stop()) traced->patchSweeps = std::move(sweepRays);
+}
+
+// The unseen room's first bounce apart (unseenBounce): on the grid, per unseen ray the unit
+// direct light of each area light at its hit (gridLights), summed per hit surface over the
+// point's rays; spread to the pixels. A pixel with no grid point on its surface (a sliver)
+// traces its own rays, as the gather does there.
+void LightingFit::gatherUnseenBounce() {
+  unseenBounce.clear(), bounceSurfaces.clear(), bounceAlbedo.clear();
+  if (!opt.unseenBounceScalesWithLights || !model.active || J == 0 ||
+      gridLights.size() != gridSurface.size() || rays->grid.size() != gridSurface.size() ||
+      std::none_of(bounceApart.begin(), bounceApart.end(), [](bool b) { return b; }))
+    return;
+  std::vector<int> index(S, -1);
+  for (const PointRays& pr : rays->grid)
+    for (const UnseenRay& u : pr.unseen)
+      if (index[size_t(u.hit.surfaceId)] < 0) {
+        index[size_t(u.hit.surfaceId)] = int(bounceSurfaces.size());
+        bounceSurfaces.push_back(u.hit.surfaceId);
+      }
+  const size_t U = bounceSurfaces.size(), D = J * U;
+  if (D == 0) return;
+  std::vector<double> grid(gridSurface.size() * D, 0.0);
+  parallelFor(tbb::blocked_range<size_t>(0, gridSurface.size()),
+              [&](const tbb::blocked_range<size_t>& r) {
+                for (size_t g = r.begin(); g < r.end(); ++g)
+                  if (gridSurface[g] >= 0)
+                    sumUnseenBounce(rays->grid[g], gridLights[g], index, &grid[g * D]);
+              });
+  unseenBounce.assign(size_t(W) * H * D, 0.f);
+  spread(
+      int(D), [&](size_t g, int d) { return grid[g * D + size_t(d)]; },
+      [&](int x, int y, const double* v) {
+        for (size_t d = 0; d < D; ++d) unseenBounce[(size_t(y) * W + x) * D + d] = float(v[d]);
+      },
+      [&](int x, int y, double* v) {
+        const PixelSurface& p = ps[size_t(y) * W + x];
+        const PointRays pr = traceRays(p.point, p.normal, gatherSamples, uint32_t(y * W + x), opt.seed);
+        std::fill(v, v + D, 0.0);
+        sumUnseenBounce(pr, unseenLightsOf(pr), index, v);
+      });
+  for (const int u : bounceSurfaces) bounceAlbedo.push_back(unseenAlbedoInFit(u));
+}
+
+// Adds to `sum` (J x U values) the unit direct light of each area light whose bounce is apart at
+// the unseen hits of `pr` (their UnseenLights `lit`), per hit surface (`index`: its place in
+// bounceSurfaces, or -1), over all of the point's rays.
+void LightingFit::sumUnseenBounce(const PointRays& pr, const UnseenLights& lit,
+                                  const std::vector<int>& index, double* sum) const {
+  const size_t U = bounceSurfaces.size();
+  if (pr.rays <= 0 || lit.e.size() < pr.unseen.size() * C) return;
+  for (size_t k = 0; k < pr.unseen.size(); ++k) {
+    const int u = index[size_t(pr.unseen[k].hit.surfaceId)];
+    if (u < 0) continue;
+    for (size_t j = 0; j < J; ++j) {
+      const double e = lit.e[k * C + j];
+      if (bounceApart[j] && std::isfinite(e)) sum[j * U + size_t(u)] += e / pr.rays;
+    }
+  }
+}
+
+// UnseenAlbedo of `surface`: its own fitted albedo where the fit has its pixels; a ceiling the
+// fit's model is told (LightingOptions::fitUnseenCeilingAlbedo) that constant; a wall or
+// ceiling the mean of the fitted walls, anything else (or when no wall is fitted) the mean of
+// every fitted surface; mid grey when the fit has none.
+UnseenAlbedo LightingFit::unseenAlbedoInFit(int surface) const {
+  std::vector<bool> fitted(S, false);
+  for (size_t idx : candidates) fitted[size_t(ps[idx].surface)] = true;
+  UnseenAlbedo a;
+  if (fitted[size_t(surface)]) {
+    a.fitted.emplace_back(surface, 1.0);
+    return a;
+  }
+  const SurfaceKind kind = geometry.surfaces[size_t(surface)].kind;
+  const Vec3& told = opt.fitUnseenCeilingAlbedo;
+  if (kind == SurfaceKind::Ceiling && (told.array() >= 0).all() && told.allFinite()) {
+    a.constant = told;
+    return a;
+  }
+  std::vector<int> walls, all;
+  for (size_t s = 0; s < S; ++s)
+    if (fitted[s]) {
+      all.push_back(int(s));
+      if (isWall(geometry.surfaces[s].kind)) walls.push_back(int(s));
+    }
+  const bool wallLike = isWall(kind) || kind == SurfaceKind::Ceiling;
+  const std::vector<int>& from = wallLike && !walls.empty() ? walls : all;
+  for (const int s : from) a.fitted.emplace_back(s, 1.0 / double(from.size()));
+  if (from.empty()) a.constant = Vec3::Constant(0.5);
+  return a;
+}
+
+// Channel c of bounce surface u's albedo (bounceAlbedo) at the fitted albedos `rhoNow`.
+double LightingFit::bounceAlbedoOf(size_t u, int c,
+                                   const std::vector<std::array<double, 3>>& rhoNow) const {
+  double a = bounceAlbedo[u].constant[c];
+  for (const auto& [s, w] : bounceAlbedo[u].fitted) a += w * rhoNow[size_t(s)][size_t(c)];
+  return a;
+}
+
+// The unseen bounce at pixel `idx`, channel c, with the albedos `rhoNow` and area lights'
+// radiances `lights` (0 when it is not apart).
+double LightingFit::unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+                                   const std::vector<Vec3>& lights) const {
+  const size_t U = bounceSurfaces.size();
+  if (unseenBounce.empty() || U == 0) return 0.0;
+  double sum = 0;
+  for (size_t u = 0; u < U; ++u) {
+    const double a = bounceAlbedoOf(u, c, rhoNow);
+    for (size_t j = 0; j < J; ++j) sum += lights[j][c] * a * double(unseenBounce[(idx * J + j) * U + u]);
+  }
+  return std::isfinite(sum) ? sum : 0.0;
+}
+
+// The part of Gamma the fit takes as fixed: the gathered light, which holds no unseen first
+// bounce while that is apart (gatherAll), at least 0.
+double LightingFit::fixedGathered(size_t idx, int c) const {
+  const double g = out.gathered.at(int(idx % size_t(W)), int(idx / size_t(W)), c);
+  return std::isfinite(g) ? std::max(0.0, g) : 0.0;
+}
+
+// The unseen bounce at pixel `idx`, channel c, as terms of the fit: a constant albedo adds to the
+// light's e_j, a fitted one is a bounce term (light x albedo x g) on that albedo's block
+// (`blockOf`: the residual's block of a surface's albedo, added when new).
+void LightingFit::addUnseenBounceTerms(size_t idx, int c, std::vector<double>& e,
+                                       std::vector<BounceTerm>& bounce,
+                                       const std::function<int(int surface)>& blockOf) const {
+  const size_t U = bounceSurfaces.size();
+  if (unseenBounce.empty() || U == 0) return;
+  for (size_t j = 0; j < J; ++j)
+    for (size_t u = 0; u < U; ++u) {
+      const double g = unseenBounce[(idx * J + j) * U + u];
+      if (!(g > 0) || !std::isfinite(g)) continue;
+      e[tiedTo[j]] += bounceAlbedo[u].constant[c] * g;
+      for (const auto& [s, w] : bounceAlbedo[u].fitted) {
+        const int rhoBlock = blockOf(s), lightBlock = int(1 + tiedTo[j]);
+        auto same = [&](const BounceTerm& t) {
+          return t.rhoBlock == rhoBlock && t.sunBlock == lightBlock;
+        };
+        const auto it = std::find_if(bounce.begin(), bounce.end(), same);
+        if (it != bounce.end()) it->g += w * g;
+        else bounce.push_back({rhoBlock, lightBlock, w * g});
+      }
+    }
+}
+
+// The gathered light with the unseen bounce at the fitted radiances and albedos instead of the
+// room model's (what the fit used), so the albedo and the next pass see the same Gamma.
+void LightingFit::moveUnseenBounceToFittedLights() {
+  if (unseenBounce.empty()) return;
+  std::vector<Vec3> lights;
+  for (size_t j = 0; j < J; ++j) lights.push_back(out.lights[j].radiance);
+  for (size_t idx = 0; idx < size_t(W) * H; ++idx) {
+    if (ps[idx].surface < 0) continue;
+    const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
+    for (int c = 0; c < 3; ++c)
+      out.gathered.at(x, y, c) = float(fixedGathered(idx, c) + unseenBounceAt(idx, c, rho, lights));
+  }
 }
 
 // Step 4: the pixels the light fit uses and its unknowns. Clipped pixels count only inside a
@@ -1295,12 +1489,14 @@ void LightingFit::predictUnseenFromFit() {
 // fit cannot split between them (scenes-train t11). A note says so.
 void LightingFit::tieLightsOutOfView() {
   tiedTo.resize(J);
+  bounceApart.assign(J, false);
   std::vector<size_t> unseen;
   for (size_t j = 0; j < J; ++j) {
     tiedTo[j] = j;
     const auto p = camera.project(lightsIn[j].centre());
     const bool inView = p && p->x() >= 0 && p->y() >= 0 && p->x() <= camera.widthPx &&
                         p->y() <= camera.heightPx;
+    bounceApart[j] = inView || opt.unseenBounceOfLightsOutOfView;
     if (refine[j] && !inView) unseen.push_back(j);
   }
   if (!opt.tieLightsOutOfView || unseen.size() < 2) return;
@@ -1377,6 +1573,13 @@ std::string LightingFit::fitChannel(int c, double& cost) {
     std::vector<double*> blocks{&rho[s][c]};
     for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
     if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
+    // The residual's block of a surface's albedo (added when new).
+    auto blockOf = [&](int surface) {
+      const auto it = std::find(blocks.begin(), blocks.end(), &rho[size_t(surface)][c]);
+      if (it != blocks.end()) return int(it - blocks.begin());
+      blocks.push_back(&rho[size_t(surface)][c]);
+      return int(blocks.size()) - 1;
+    };
     // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
     std::vector<BounceTerm> bounce;
     for (const SunPatch& sp : sunPatches) {
@@ -1384,15 +1587,12 @@ std::string LightingFit::fitChannel(int c, double& cost) {
       t.g = sp.g.at(x, y, 0);
       if (!(t.g > 0)) continue;
       t.sunBlock = int(1 + J + sp.sun);
-      t.rhoBlock = 0;
-      if (sp.surface != s) {
-        t.rhoBlock = int(blocks.size());
-        blocks.push_back(&rho[size_t(sp.surface)][c]);
-      }
+      t.rhoBlock = blockOf(sp.surface);
       bounce.push_back(t);
     }
+    addUnseenBounceTerms(idx, c, e, bounce, blockOf);
     auto* f = new LogResidualCost(
-        LogResidual(std::log(std::max(1e-6, b)), out.gathered.at(x, y, c), e, b >= opt.saturatedAbove,
+        LogResidual(std::log(std::max(1e-6, b)), fixedGathered(idx, c), e, b >= opt.saturatedAbove,
                     fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)),
         int(blocks.size()));
     problem.AddResidualBlock(f, loss, blocks);
@@ -1433,6 +1633,7 @@ void LightingFit::storeFittedLights() {
     if (!r.allFinite()) r = lightsIn[j].radiance;
     out.lights[j].radiance = r.cwiseMax(0.0);
   }
+  moveUnseenBounceToFittedLights();
   for (size_t k = 0; k < K; ++k) {
     Vec3 r(L[J + k][0], L[J + k][1], L[J + k][2]);
     if (!r.allFinite()) r = Vec3::Zero();

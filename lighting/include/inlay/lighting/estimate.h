@@ -96,6 +96,16 @@ struct LightingOptions {
   // clipped sun (PrepareOptions::sunsFromBounce). Off: not computed (the fit never uses it).
   bool gatherSunBounceUnseen = false;
   Vec3 fitUnseenCeilingAlbedo = Vec3::Constant(-1);
+  // From the second pass on, the light the walls the camera does not see bounce from each area
+  // light's direct light (their albedo x that light's unit irradiance, gathered per unit
+  // radiance) enters the fit as a term proportional to that light, E_j + U_j, instead of a fixed
+  // part of Gamma at the previous pass's radiance: the fit then sees that this part of Gamma has
+  // no scale of its own (docs/generalization.md, "The unseen room's bounce in the light fit").
+  // False: the fixed part, as before (diagnostics).
+  bool unseenBounceScalesWithLights = true;
+  // The same for a light whose centre is out of the photo's view (false: its unseen bounce stays
+  // a fixed part of Gamma).
+  bool unseenBounceOfLightsOutOfView = false;
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;
