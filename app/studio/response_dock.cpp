@@ -1,5 +1,6 @@
 #include "response_dock.h"
 
+#include "engine_text.h"
 #include "wrapped_labels.h"
 
 #include <QComboBox>
@@ -7,6 +8,7 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace inlay::studio {
@@ -51,6 +53,78 @@ class ResponseCurveView : public QWidget {
   CameraResponse response_;
 };
 
+namespace {
+
+// What the dock's note says was decided, in one plain sentence (the dock's language).
+QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
+  using Mode = ResponseKeys::Mode;
+  if (mode == Mode::Srgb)
+    return ResponseDock::tr("Uses the standard sRGB curve, as chosen in the list.");
+  if (mode == Mode::Linear)
+    return ResponseDock::tr(
+        "Uses a straight (linear) curve, as chosen in the list: the photo's values "
+        "are read as light directly.");
+  if (mode != Mode::Auto) return ResponseDock::tr("Uses the curve given in the scene file.");
+  const auto& e = prepared.responseEstimate;
+  if (!e) return ResponseDock::tr("The photo already holds light values (EXR/HDR): it needs no curve.");
+  const bool noise = e->noiseBins > 0;
+  if (!e->determined)
+    return ResponseDock::tr(
+        "Kept the standard sRGB curve: the photo does not show enough to estimate "
+        "its own tone curve.");
+  if (e->decision != "fitted")
+    return noise ? ResponseDock::tr(
+                       "Kept the standard sRGB curve: the photo's noise does not show a "
+                       "different tone curve clearly.")
+                 : ResponseDock::tr(
+                       "Kept the standard sRGB curve: the photo's edges do not show a "
+                       "different tone curve clearly.");
+  return noise ? ResponseDock::tr(
+                     "Uses the tone curve estimated from the photo's noise; it differs "
+                     "from the standard sRGB curve (dashed).")
+               : ResponseDock::tr(
+                     "Uses the tone curve estimated from the photo's edges; it differs "
+                     "from the standard sRGB curve (dashed).");
+}
+
+// What the user can do about it, or empty when the curve is the user's own choice.
+QString adviceOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
+  const auto& e = prepared.responseEstimate;
+  if (mode != ResponseKeys::Mode::Auto || !e) return {};
+  if (e->determined && e->decision == "fitted")
+    return ResponseDock::tr(
+        "If the inserted objects look too bright or too flat against the room, "
+        "choose sRGB in the list above and compare.");
+  return ResponseDock::tr(
+      "If the photo was edited, or comes from a phone with strong contrast, its "
+      "curve may still differ: choose Linear in the list above (it reads the "
+      "photo's contrast as softer) and compare the objects' shading.");
+}
+
+// The technical figures: the curve, what the estimate measured and why it decided so (the
+// engine's sentences in the dock's language).
+QString detailsOf(const PreparedScene& prepared) {
+  QStringList lines{
+      ResponseDock::tr("Curve: %1").arg(QString::fromStdString(prepared.response.describe()))};
+  if (const auto& e = prepared.responseEstimate) {
+    if (e->noiseBins > 0)
+      lines << ResponseDock::tr("Estimated from the photo's noise (%1 levels) in %2 ms.")
+                   .arg(e->noiseBins)
+                   .arg(qRound(1000 * e->seconds));
+    else
+      lines << ResponseDock::tr("Estimated from %1 edges in %2 ms.")
+                   .arg(e->edgesUsed)
+                   .arg(qRound(1000 * e->seconds));
+    // A warning repeats the decision's reason; the decision alone when nothing warned.
+    if (e->determined && e->decision != "fitted" && e->warnings.empty())
+      lines << engineText(QString::fromStdString(e->decision));
+    for (const auto& w : e->warnings) lines << engineText(QString::fromStdString(w));
+  }
+  return lines.join(QLatin1Char('\n'));
+}
+
+}  // namespace
+
 ResponseDock::ResponseDock(Document* document, QWidget* parent)
     : QDockWidget(parent), document_(document) {
   setObjectName(QStringLiteral("responseDock"));
@@ -62,12 +136,30 @@ ResponseDock::ResponseDock(Document* document, QWidget* parent)
   info_ = new QLabel(body);
   info_->setWordWrap(true);
   info_->setObjectName(QStringLiteral("responseInfo"));
+  detailsButton_ = new QToolButton(body);
+  detailsButton_->setObjectName(QStringLiteral("responseDetailsButton"));
+  detailsButton_->setCheckable(true);
+  detailsButton_->setAutoRaise(true);
+  detailsButton_->setArrowType(Qt::RightArrow);
+  detailsButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  details_ = new QLabel(body);
+  details_->setWordWrap(true);
+  details_->setObjectName(QStringLiteral("responseDetails"));
+  details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  details_->setVisible(false);
   layout->addWidget(choice_);
   layout->addWidget(curve_, 1);
   layout->addWidget(info_);
+  layout->addWidget(detailsButton_);
+  layout->addWidget(details_);
   setWidget(body);
-  fitter_ = new WrappedLabelFitter(body, {info_});  // the notes below the curve never cut off
+  fitter_ = new WrappedLabelFitter(body, {info_, details_});  // the notes never cut off
   connect(choice_, &QComboBox::activated, this, &ResponseDock::choose);
+  connect(detailsButton_, &QToolButton::toggled, this, [this](bool open) {
+    detailsButton_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    details_->setVisible(open);
+    fitter_->fit();
+  });
   connect(document_, &Document::changed, this, [this](const ChangeEvent&) { refresh(); });
   retranslate();
 }
@@ -85,6 +177,8 @@ void ResponseDock::retranslate() {
   choice_->setItemText(2, tr("Linear"));
   choice_->setItemText(3, tr("Explicit (from the scene file)"));
   choice_->setToolTip(tr("How the photo's pixel values map to light (camera.response)"));
+  detailsButton_->setText(tr("Details"));
+  detailsButton_->setToolTip(tr("The curve's parameters and what the estimate measured"));
   refresh();
 }
 
@@ -99,6 +193,8 @@ void ResponseDock::choose(int index) {
   if (!document_->setCameraResponse(keys, &why)) info_->setText(why);
 }
 
+// The note: what was decided and what the user can do, the figures behind "Details" (and in
+// the note's tooltip).
 void ResponseDock::refresh() {
   const ResponseKeys::Mode mode = document_->scene().camera.response.mode;
   choice_->setCurrentIndex(mode == ResponseKeys::Mode::Auto     ? 0
@@ -108,23 +204,18 @@ void ResponseDock::refresh() {
   const PreparedScene* prepared = document_->prepared();
   if (!prepared) {
     info_->setText(tr("Preparing the scene..."));
+    info_->setToolTip(QString());
     fitter_->fit();
     return;
   }
   curve_->setResponse(prepared->response);
-  QString text = QString::fromStdString(prepared->response.describe());
-  if (const auto& e = prepared->responseEstimate) {
-    if (e->noiseBins > 0)
-      text += tr("\nEstimated from the photo's noise (%1 levels) in %2 ms.")
-                  .arg(e->noiseBins)
-                  .arg(qRound(1000 * e->seconds));
-    else
-      text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
-    if (e->determined && e->decision != "fitted")
-      text += QStringLiteral("\n") + QString::fromStdString(e->decision);
-    for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);
-  }
+  QString text = decisionOf(mode, *prepared);
+  if (const QString advice = adviceOf(mode, *prepared); !advice.isEmpty())
+    text += QStringLiteral("\n") + advice;
+  const QString details = detailsOf(*prepared);
   info_->setText(text);
+  info_->setToolTip(details);
+  details_->setText(details);
   fitter_->fit();
 }
 
