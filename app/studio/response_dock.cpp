@@ -8,6 +8,8 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScrollArea>
+#include <QSettings>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -54,6 +56,9 @@ class ResponseCurveView : public QWidget {
 };
 
 namespace {
+
+// Whether "Details" was open when the studio last closed (it opens so again).
+constexpr const char* kDetailsOpenKey = "responseDock/detailsOpen";
 
 // What the dock's note says was decided, in one plain sentence (the dock's language).
 QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
@@ -123,6 +128,31 @@ QString detailsOf(const PreparedScene& prepared) {
   return lines.join(QLatin1Char('\n'));
 }
 
+// The dock's scroll area: it asks for all of its content's height but insists only on the part
+// above `scrolling` (the curve, the note and the Details button always show; the details
+// scroll when the dock is shorter), and asks again whenever the content's layout changes.
+class NotesScrollArea : public QScrollArea {
+ public:
+  NotesScrollArea(QWidget* parent, QWidget* scrolling) : QScrollArea(parent), scrolling_(scrolling) {}
+  QSize sizeHint() const override { return widget() ? widget()->sizeHint() : QScrollArea::sizeHint(); }
+  QSize minimumSizeHint() const override {
+    if (!widget()) return QScrollArea::minimumSizeHint();
+    QSize s = widget()->minimumSizeHint();
+    if (scrolling_->isVisibleTo(widget()))
+      s.rheight() -= scrolling_->minimumHeight() + widget()->layout()->spacing();
+    return s;
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (watched == widget() && event->type() == QEvent::LayoutRequest) updateGeometry();
+    return QScrollArea::eventFilter(watched, event);
+  }
+
+ private:
+  QWidget* scrolling_;
+};
+
 }  // namespace
 
 ResponseDock::ResponseDock(Document* document, QWidget* parent)
@@ -135,6 +165,7 @@ ResponseDock::ResponseDock(Document* document, QWidget* parent)
   curve_ = new ResponseCurveView(body);
   info_ = new QLabel(body);
   info_->setWordWrap(true);
+  info_->setTextFormat(Qt::RichText);
   info_->setObjectName(QStringLiteral("responseInfo"));
   detailsButton_ = new QToolButton(body);
   detailsButton_->setObjectName(QStringLiteral("responseDetailsButton"));
@@ -152,14 +183,22 @@ ResponseDock::ResponseDock(Document* document, QWidget* parent)
   layout->addWidget(info_);
   layout->addWidget(detailsButton_);
   layout->addWidget(details_);
-  setWidget(body);
+  // The details scroll rather than get cut off when the dock is too short for them.
+  auto* scroll = new NotesScrollArea(this, details_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setWidget(body);
+  setWidget(scroll);
   fitter_ = new WrappedLabelFitter(body, {info_, details_});  // the notes never cut off
   connect(choice_, &QComboBox::activated, this, &ResponseDock::choose);
   connect(detailsButton_, &QToolButton::toggled, this, [this](bool open) {
     detailsButton_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
     details_->setVisible(open);
+    QSettings().setValue(QLatin1String(kDetailsOpenKey), open);
     fitter_->fit();
   });
+  detailsButton_->setChecked(QSettings().value(QLatin1String(kDetailsOpenKey), false).toBool());
   connect(document_, &Document::changed, this, [this](const ChangeEvent&) { refresh(); });
   retranslate();
 }
@@ -190,7 +229,7 @@ void ResponseDock::choose(int index) {
   keys.mode = modes[index];
   if (keys == document_->scene().camera.response) return;
   QString why;
-  if (!document_->setCameraResponse(keys, &why)) info_->setText(why);
+  if (!document_->setCameraResponse(keys, &why)) info_->setText(why.toHtmlEscaped());
 }
 
 // The note: what was decided and what the user can do, the figures behind "Details" (and in
@@ -203,15 +242,16 @@ void ResponseDock::refresh() {
                                                                 : 3);
   const PreparedScene* prepared = document_->prepared();
   if (!prepared) {
-    info_->setText(tr("Preparing the scene..."));
+    info_->setText(tr("Preparing the scene...").toHtmlEscaped());
     info_->setToolTip(QString());
     fitter_->fit();
     return;
   }
   curve_->setResponse(prepared->response);
-  QString text = decisionOf(mode, *prepared);
+  // The decision in bold, the advice below it.
+  QString text = QStringLiteral("<b>%1</b>").arg(decisionOf(mode, *prepared).toHtmlEscaped());
   if (const QString advice = adviceOf(mode, *prepared); !advice.isEmpty())
-    text += QStringLiteral("\n") + advice;
+    text += QStringLiteral("<br>") + advice.toHtmlEscaped();
   const QString details = detailsOf(*prepared);
   info_->setText(text);
   info_->setToolTip(details);

@@ -2,7 +2,8 @@
 // estimate's or camera.response's) and a choice of Auto / sRGB / Linear, each one undo step
 // through Document::setCameraResponse. Below the curve a plain note says what was decided and
 // what the user can do about it; "Details" (and the note's tooltip) shows the technical figures:
-// the curve's parameters and the estimate's own reasons, translated by engineText(). Redrawn from the document's state on each change.
+// the curve's parameters and the estimate's own reasons, translated by engineText(); whether
+// it is open is kept in the settings (responseDock/detailsOpen). Redrawn from the document's state on each change.
 // Retranslates on QEvent::LanguageChange. GUI thread only.
 #pragma once
 
