@@ -63,6 +63,10 @@ constexpr const char* kDetailsOpenKey = "responseDock/detailsOpen";
 // What the dock's note says was decided, in one plain sentence (the dock's language).
 QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
   using Mode = ResponseKeys::Mode;
+  const auto& e = prepared.responseEstimate;
+  // An EXR/HDR photo is linear whatever the list says (the engine warns about a choice).
+  if (!prepared.photo.wasSrgbEncoded || (mode == Mode::Auto && !e))
+    return ResponseDock::tr("The photo already holds light values (EXR/HDR): it needs no curve.");
   if (mode == Mode::Srgb)
     return ResponseDock::tr("Uses the standard sRGB curve, as chosen in the list.");
   if (mode == Mode::Linear)
@@ -70,8 +74,6 @@ QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
         "Uses a straight (linear) curve, as chosen in the list: the photo's values "
         "are read as light directly.");
   if (mode != Mode::Auto) return ResponseDock::tr("Uses the curve given in the scene file.");
-  const auto& e = prepared.responseEstimate;
-  if (!e) return ResponseDock::tr("The photo already holds light values (EXR/HDR): it needs no curve.");
   const bool noise = e->noiseBins > 0;
   if (!e->determined)
     return ResponseDock::tr(
