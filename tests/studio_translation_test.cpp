@@ -431,6 +431,20 @@ void StudioTranslationTest::engineMessagesFollowTheLanguage() {
   switchTo(QStringLiteral("fr"), window);
   StepLog shots(QStringLiteral("studio_translation_artifacts/engine"));
 
+  // The Camera Response dock's details (the curve and the estimate's reasons) open in French.
+  auto* detailsButton = window.findChild<QToolButton*>(QStringLiteral("responseDetailsButton"));
+  auto* details = window.findChild<QLabel*>(QStringLiteral("responseDetails"));
+  QVERIFY(detailsButton && details);
+  QCOMPARE(detailsButton->text(), QStringLiteral("Détails"));
+  detailsButton->click();
+  QVERIFY(details->isVisibleTo(&window));
+  QVERIFY2(details->text().startsWith(QStringLiteral("Courbe : ")) &&
+               !details->text().contains(QStringLiteral("kept sRGB")) &&
+               !details->text().contains(QStringLiteral("camera response")),
+           qPrintable(details->text()));
+  detailsButton->click();
+  QVERIFY(!details->isVisibleTo(&window));
+
   // A refused model file: the dialog names the file, the line and the reason in French.
   QTemporaryDir dir;
   const QString nan = dir.filePath(QStringLiteral("nan.obj"));
