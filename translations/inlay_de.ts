@@ -326,237 +326,347 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="20"/>
+        <location filename="../app/studio/engine_text.cpp" line="21"/>
         <source>empty file</source>
         <translation>leere Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="21"/>
+        <location filename="../app/studio/engine_text.cpp" line="22"/>
         <source>cannot open for reading</source>
         <translation>kann nicht zum Lesen geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
         <source>read failed</source>
         <translation>Lesen fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <location filename="../app/studio/engine_text.cpp" line="24"/>
         <source>no triangles</source>
         <translation>keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <location filename="../app/studio/engine_text.cpp" line="25"/>
         <source>import failed: %1</source>
         <translation>Import fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <location filename="../app/studio/engine_text.cpp" line="26"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>nicht endliche Koordinate „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
         <source>non-finite coordinate</source>
         <translation>nicht endliche Koordinate</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>fehlerhafte Zahl „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>fehlerhafter Flächenindex „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
         <source>face corner without a vertex index</source>
         <translation>Flächenecke ohne Eckpunktindex</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>Flächenindex 0 (OBJ-Indizes beginnen bei 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
         <source>a face needs at least 3 vertices</source>
         <translation>eine Fläche braucht mindestens 3 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>more than %1 triangles</source>
         <translation>mehr als %1 Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>more than %1 vertices</source>
         <translation>mehr als %1 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 Eckpunkte überschreiten die Grenze von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>„%1“ braucht %2 Zahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>keine PLY-Datei (die Kennung „ply“ fehlt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>not a GLB file</source>
         <translation>keine GLB-Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>invalid glTF JSON</source>
         <translation>ungültiges glTF-JSON</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>buffer file not found: %1</source>
         <translation>Pufferdatei nicht gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>keine angegeben; die Objekte werden nur vom gesammelten Licht des Raums beleuchtet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignoriert, das Foto ist bereits linear (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>die geschätzte Rückwand ist unbrauchbar (%1); ein Raum von 5 x 5,5 m wird verwendet: layout.back_wall_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="47"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Brennweite aus der Annahme, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <location filename="../app/studio/engine_text.cpp" line="52"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Standardbrennweite, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="55"/>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
         <source>strength kept as estimated: %1</source>
         <translation>Stärke wie geschätzt beibehalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="56"/>
+        <location filename="../app/studio/engine_text.cpp" line="57"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>das Fenster, durch das die Sonne scheint, ist nicht im Bild; sein Himmel ist ein Licht von %1 x %2 m auf %3 (woher der Strahl kam), seine Stärke angepasst (zur Wahl source_box_px angeben oder das Fenster als Licht umranden)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="60"/>
+        <location filename="../app/studio/engine_text.cpp" line="61"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>die Maske von %1 zeigt an %2 von %3 Punkten den Boden unter der Platte, also ist sie eine %4 m dicke Platte (zur Wahl thickness_m angeben; 0: massiv)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="64"/>
+        <location filename="../app/studio/engine_text.cpp" line="65"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>das gesammelte Licht änderte sich im letzten von %2 Durchgängen noch um %1 % (die Wände, die die Kamera nicht sieht, sind unsicher)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <location filename="../app/studio/engine_text.cpp" line="68"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>die Lichter %1 sind nicht im Bild: sie teilen sich eine Strahldichte (das Foto zeigt nur ihre Summe)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="70"/>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>außerhalb des Raums; um %1 m verschoben, damit es hineinpasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <location filename="../app/studio/engine_text.cpp" line="72"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>in jeder Richtung größer als der Raum; seine Position wird beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <location filename="../app/studio/engine_text.cpp" line="74"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 beleuchtet nichts vom Raum, den das Foto zeigt: seine Stärke bleibt beim Startwert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <location filename="../app/studio/engine_text.cpp" line="76"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>das direkte Licht des Fotos ist schwarz: die Lichter werden an Dunkelheit angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="78"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
         <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <source>noise level</source>
+        <translation>Rauschpegel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <source>edge</source>
+        <translation>Kanten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
+        <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
+        <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
+        <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
+        <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <source>too little evidence for a curve other than sRGB (%1)</source>
+        <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <source>an implausible curve was refused (%1); using sRGB</source>
+        <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
+        <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <source>%1; using sRGB (give camera.response to choose)</source>
+        <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <source>the photo is empty</source>
+        <translation>das Foto ist leer</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <source>most of the photo is clipped to black or white</source>
+        <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <source>the photo is nearly one flat colour</source>
+        <translation>das Foto ist fast eine einzige flache Farbe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <source>the photo is nearly binary (%1 grey levels in use)</source>
+        <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <source>too few clean edges between flat regions (%1 of %2 needed)</source>
+        <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <source>the edges cover only codes %1 to %2</source>
+        <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
+        <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <source>the flat regions cover too few codes to measure the noise against them</source>
+        <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <source>the photo shows no measurable noise</source>
+        <translation>das Foto zeigt kein messbares Rauschen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="130"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <source>camera response</source>
+        <translation>Kamerakennlinie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <source>kept sRGB</source>
+        <translation>sRGB beibehalten</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -564,17 +674,17 @@
 <context>
     <name>inlay::studio::FinalRender</name>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="80"/>
+        <location filename="../app/studio/final_render.cpp" line="81"/>
         <source>Render Final Image cancelled; nothing was written.</source>
         <translation>Endgültiges Bild abgebrochen; nichts wurde geschrieben.</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="128"/>
+        <location filename="../app/studio/final_render.cpp" line="129"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6 before denoising, %7 s</source>
         <translation>%1 geschrieben: %2 × %3, höchstens %4 Samples pro Pixel (%5 im Mittel), geschätzter Fehler %6 vor dem Entrauschen, %7 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="130"/>
+        <location filename="../app/studio/final_render.cpp" line="131"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s</source>
         <translation>%1 geschrieben: %2 × %3, höchstens %4 Samples pro Pixel (%5 im Mittel), geschätzter Fehler %6, %7 s</translation>
     </message>
@@ -1983,7 +2093,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="32"/>
+        <location filename="../app/studio/response_dock.cpp" line="36"/>
         <source>code</source>
         <translation>Code</translation>
     </message>
@@ -1991,52 +2101,130 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="82"/>
+        <location filename="../app/studio/response_dock.cpp" line="71"/>
+        <source>Uses the standard sRGB curve, as chosen in the list.</source>
+        <translation>Verwendet die übliche sRGB-Kurve, wie in der Liste gewählt.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="73"/>
+        <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
+        <translation>Verwendet eine gerade (lineare) Kurve, wie in der Liste gewählt: die Werte des Fotos werden direkt als Licht gelesen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="76"/>
+        <source>Uses the curve given in the scene file.</source>
+        <translation>Verwendet die Kurve aus der Szenendatei.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="69"/>
+        <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
+        <translation>Das Foto enthält bereits Lichtwerte (EXR/HDR): es braucht keine Kurve.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="79"/>
+        <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
+        <translation>Die übliche sRGB-Kurve wurde beibehalten: das Foto zeigt zu wenig, um seine eigene Tonwertkurve zu schätzen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
+        <translation>Die übliche sRGB-Kurve wurde beibehalten: das Rauschen des Fotos zeigt keine andere Tonwertkurve deutlich.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
+        <translation>Die übliche sRGB-Kurve wurde beibehalten: die Kanten des Fotos zeigen keine andere Tonwertkurve deutlich.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="89"/>
+        <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
+        <translation>Verwendet die aus dem Rauschen des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
+        <translation>Verwendet die aus den Kanten des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="102"/>
+        <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
+        <translation>Wirken die eingefügten Objekte neben dem Raum zu hell oder zu flach, wählen Sie oben in der Liste sRGB und vergleichen Sie.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
+        <translation>Wurde das Foto bearbeitet oder stammt es von einem Handy mit starkem Kontrast, kann seine Kurve trotzdem abweichen: wählen Sie oben in der Liste Linear (es liest den Kontrast des Fotos weicher) und vergleichen Sie die Schattierung der Objekte.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <source>Curve: %1</source>
+        <translation>Kurve: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
+        <translation>Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <source>Estimated from %1 edges in %2 ms.</source>
+        <translation>Aus %1 Kanten geschätzt in %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="215"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <location filename="../app/studio/response_dock.cpp" line="216"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <location filename="../app/studio/response_dock.cpp" line="217"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="85"/>
+        <location filename="../app/studio/response_dock.cpp" line="218"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <location filename="../app/studio/response_dock.cpp" line="219"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="87"/>
+        <location filename="../app/studio/response_dock.cpp" line="220"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="110"/>
+        <location filename="../app/studio/response_dock.cpp" line="221"/>
+        <source>Details</source>
+        <translation>Details</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="222"/>
+        <source>The curve&apos;s parameters and what the estimate measured</source>
+        <translation>Die Parameter der Kurve und was die Schätzung gemessen hat</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="247"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="118"/>
         <source>
 Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
-        <translation>
+        <translation type="vanished">
 Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>
 Estimated from %1 edges in %2 ms.</source>
-        <translation>
+        <translation type="vanished">
 Aus %1 Kanten in %2 ms geschätzt.</translation>
     </message>
 </context>

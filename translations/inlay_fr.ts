@@ -326,237 +326,347 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="20"/>
+        <location filename="../app/studio/engine_text.cpp" line="21"/>
         <source>empty file</source>
         <translation>fichier vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="21"/>
+        <location filename="../app/studio/engine_text.cpp" line="22"/>
         <source>cannot open for reading</source>
         <translation>impossible de l&apos;ouvrir en lecture</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
         <source>read failed</source>
         <translation>la lecture a échoué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <location filename="../app/studio/engine_text.cpp" line="24"/>
         <source>no triangles</source>
         <translation>aucun triangle</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <location filename="../app/studio/engine_text.cpp" line="25"/>
         <source>import failed: %1</source>
         <translation>l&apos;import a échoué : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <location filename="../app/studio/engine_text.cpp" line="26"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>coordonnée non finie « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
         <source>non-finite coordinate</source>
         <translation>coordonnée non finie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>nombre mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>indice de face mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
         <source>face corner without a vertex index</source>
         <translation>coin de face sans indice de sommet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>indice de face 0 (les indices OBJ commencent à 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
         <source>a face needs at least 3 vertices</source>
         <translation>une face demande au moins 3 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>more than %1 triangles</source>
         <translation>plus de %1 triangles</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>more than %1 vertices</source>
         <translation>plus de %1 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 sommets dépassent la limite de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>« %1 » demande %2 nombres</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>pas un fichier PLY (la signature « ply » manque)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>not a GLB file</source>
         <translation>pas un fichier GLB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>invalid glTF JSON</source>
         <translation>JSON glTF invalide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>buffer file not found: %1</source>
         <translation>fichier de tampon introuvable : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignorée, la photo est déjà linéaire (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>le mur du fond estimé est inutilisable (%1) ; une pièce de 5 x 5,5 m est utilisée : indiquez layout.back_wall_px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="47"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale a priori, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <location filename="../app/studio/engine_text.cpp" line="52"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale par défaut, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="55"/>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
         <source>strength kept as estimated: %1</source>
         <translation>intensité gardée telle qu&apos;estimée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="56"/>
+        <location filename="../app/studio/engine_text.cpp" line="57"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>la fenêtre par laquelle entre le soleil est hors champ ; son ciel est une lumière de %1 x %2 m sur %3 (d&apos;où vient le faisceau), d&apos;intensité ajustée (indiquez source_box_px, ou détourez la fenêtre comme lumière, pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="60"/>
+        <location filename="../app/studio/engine_text.cpp" line="61"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>le masque de %1 montre le sol sous le plateau en %2 points sur %3 : c&apos;est une plaque de %4 m d&apos;épaisseur (indiquez thickness_m pour choisir ; 0 : plein)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="64"/>
+        <location filename="../app/studio/engine_text.cpp" line="65"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>la lumière réfléchie a encore changé de %1 % à la dernière des %2 passes (les murs que la caméra ne voit pas sont incertains)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <location filename="../app/studio/engine_text.cpp" line="68"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>les lumières %1 sont hors champ : elles partagent une même radiance (la photo ne montre que leur somme)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="70"/>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>hors de la pièce ; déplacée de %1 m pour y tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <location filename="../app/studio/engine_text.cpp" line="72"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>plus grande que la pièce dans toutes les directions ; sa position est gardée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <location filename="../app/studio/engine_text.cpp" line="74"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 n&apos;éclaire rien de la pièce que montre la photo : son intensité reste à sa valeur de départ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <location filename="../app/studio/engine_text.cpp" line="76"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>la lumière directe de la photo est noire : les lumières sont ajustées sur l&apos;obscurité</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="78"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
         <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <source>noise level</source>
+        <translation>niveau de bruit</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <source>edge</source>
+        <translation>contours</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
+        <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
+        <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
+        <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
+        <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <source>too little evidence for a curve other than sRGB (%1)</source>
+        <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <source>an implausible curve was refused (%1); using sRGB</source>
+        <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
+        <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <source>%1; using sRGB (give camera.response to choose)</source>
+        <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <source>the photo is empty</source>
+        <translation>la photo est vide</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <source>most of the photo is clipped to black or white</source>
+        <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <source>the photo is nearly one flat colour</source>
+        <translation>la photo est presque d&apos;une seule couleur unie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <source>the photo is nearly binary (%1 grey levels in use)</source>
+        <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <source>too few clean edges between flat regions (%1 of %2 needed)</source>
+        <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <source>the edges cover only codes %1 to %2</source>
+        <translation>les contours ne couvrent que les codes %1 à %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <source>cancelled</source>
+        <translation>annulée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
+        <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <source>the flat regions cover too few codes to measure the noise against them</source>
+        <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <source>the photo shows no measurable noise</source>
+        <translation>la photo ne montre aucun bruit mesurable</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="130"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <source>camera response</source>
+        <translation>réponse de l&apos;appareil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <source>kept sRGB</source>
+        <translation>sRGB conservée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -564,17 +674,17 @@
 <context>
     <name>inlay::studio::FinalRender</name>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="80"/>
+        <location filename="../app/studio/final_render.cpp" line="81"/>
         <source>Render Final Image cancelled; nothing was written.</source>
         <translation>Image finale annulée ; rien n&apos;a été écrit.</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="128"/>
+        <location filename="../app/studio/final_render.cpp" line="129"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6 before denoising, %7 s</source>
         <translation>%1 écrit : %2 × %3, %4 échantillons par pixel au plus (%5 en moyenne), erreur estimée %6 avant débruitage, %7 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/final_render.cpp" line="130"/>
+        <location filename="../app/studio/final_render.cpp" line="131"/>
         <source>Wrote %1: %2 × %3, %4 samples per pixel at most (%5 on average), estimated error %6, %7 s</source>
         <translation>%1 écrit : %2 × %3, %4 échantillons par pixel au plus (%5 en moyenne), erreur estimée %6, %7 s</translation>
     </message>
@@ -1983,7 +2093,7 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="32"/>
+        <location filename="../app/studio/response_dock.cpp" line="36"/>
         <source>code</source>
         <translation>code</translation>
     </message>
@@ -1991,52 +2101,130 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="82"/>
+        <location filename="../app/studio/response_dock.cpp" line="71"/>
+        <source>Uses the standard sRGB curve, as chosen in the list.</source>
+        <translation>Utilise la courbe sRGB standard, choisie dans la liste.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="73"/>
+        <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
+        <translation>Utilise une courbe droite (linéaire), choisie dans la liste : les valeurs de la photo sont lues directement comme de la lumière.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="76"/>
+        <source>Uses the curve given in the scene file.</source>
+        <translation>Utilise la courbe indiquée dans le fichier de scène.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="69"/>
+        <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
+        <translation>La photo contient déjà des valeurs de lumière (EXR/HDR) : elle n&apos;a besoin d&apos;aucune courbe.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="79"/>
+        <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
+        <translation>La courbe sRGB standard est conservée : la photo n&apos;en montre pas assez pour estimer sa propre courbe de tons.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
+        <translation>La courbe sRGB standard est conservée : le bruit de la photo ne montre pas clairement une autre courbe de tons.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
+        <translation>La courbe sRGB standard est conservée : les contours de la photo ne montrent pas clairement une autre courbe de tons.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="89"/>
+        <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
+        <translation>Utilise la courbe de tons estimée d&apos;après le bruit de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
+        <translation>Utilise la courbe de tons estimée d&apos;après les contours de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="102"/>
+        <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
+        <translation>Si les objets insérés paraissent trop clairs ou trop plats par rapport à la pièce, choisissez sRGB dans la liste ci-dessus et comparez.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
+        <translation>Si la photo a été retouchée, ou vient d&apos;un téléphone au contraste marqué, sa courbe peut tout de même différer : choisissez Linéaire dans la liste ci-dessus (elle lit le contraste de la photo plus doux) et comparez l&apos;ombrage des objets.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <source>Curve: %1</source>
+        <translation>Courbe : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
+        <translation>Estimée d&apos;après le bruit de la photo (%1 niveaux) en %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <source>Estimated from %1 edges in %2 ms.</source>
+        <translation>Estimée d&apos;après %1 contours en %2 ms.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="215"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <location filename="../app/studio/response_dock.cpp" line="216"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <location filename="../app/studio/response_dock.cpp" line="217"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="85"/>
+        <location filename="../app/studio/response_dock.cpp" line="218"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <location filename="../app/studio/response_dock.cpp" line="219"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="87"/>
+        <location filename="../app/studio/response_dock.cpp" line="220"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="110"/>
+        <location filename="../app/studio/response_dock.cpp" line="221"/>
+        <source>Details</source>
+        <translation>Détails</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="222"/>
+        <source>The curve&apos;s parameters and what the estimate measured</source>
+        <translation>Les paramètres de la courbe et ce que l&apos;estimation a mesuré</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="247"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="118"/>
         <source>
 Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
-        <translation>
+        <translation type="vanished">
 Estimée à partir du bruit de la photo (%1 niveaux) en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>
 Estimated from %1 edges in %2 ms.</source>
-        <translation>
+        <translation type="vanished">
 Estimée à partir de %1 arêtes en %2 ms.</translation>
     </message>
 </context>

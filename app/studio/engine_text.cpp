@@ -14,7 +14,8 @@ constexpr const char* kContext = "inlay::studio::EngineText";
 // The engine's sentences a studio user meets, exactly as the engine writes them, with %1, %2,
 // ... (in order) where it puts a number, a key, a name or a nested reason. Keep in step with
 // the engine's strings (modeling/src/io/mesh.cpp, app/engine/src/pipeline.cpp,
-// lighting/src/estimate.cpp and refine.cpp): a sentence changed there stays English here.
+// lighting/src/estimate.cpp and refine.cpp, modeling/src/camera/response.cpp and
+// noise_level.cpp): a sentence changed there stays English here.
 const char* const kSentences[] = {
     // Model files refused by the readers (the studio adds the file name).
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "empty file"),
@@ -75,6 +76,44 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the photo's direct light is black: the lights are fitted to darkness"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement failed (%1): the start is kept"),
+    // The camera response estimate's decisions and warnings (modeling/src/camera/response.cpp
+    // and noise_level.cpp; the Camera Response dock's details). studio_translation_test forces
+    // each of them out of the estimate and fails on one that stays English.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "noise level"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "edge"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the fitted %1 lowers the %2 residual only from %3 to %4"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the %1 residual of sRGB, %2, is within what photos read rightly as sRGB "
+                      "show (below %3), so the fitted %4 is not trusted"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most "
+                      "%3 trusted), but the photo's noise was measured at only %4 code level in "
+                      "that half (%5 needed), so the shoulder is an extrapolation"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most "
+                      "%3 trusted), but the photo's noise was measured at only %4 code levels in "
+                      "that half (%5 needed), so the shoulder is an extrapolation"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "too little evidence for a curve other than sRGB (%1)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "an implausible curve was refused (%1); using sRGB"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the fitted %1 lies at the family's bound (%2): the camera's curve may be "
+                      "stronger than the family holds"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1; using sRGB (give camera.response to choose)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo is empty"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "most of the photo is clipped to black or white"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo is nearly one flat colour"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo is nearly binary (%1 grey levels in use)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "too few clean edges between flat regions (%1 of %2 needed)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the edges cover only codes %1 to %2"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "cancelled"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "too few flat regions to measure the noise (%1 flat 8 x 8 blocks)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the flat regions cover too few codes to measure the noise against them"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo shows no measurable noise"),
 };
 
 // Heads of "HEAD: REST" that are words rather than keys: translated, then the rest.
@@ -90,6 +129,8 @@ const char* const kHeads[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting (refit)"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "layout"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "camera response"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "kept sRGB"),
 };
 
 struct Pattern {

@@ -1,5 +1,6 @@
 #include "response_dock.h"
 
+#include "engine_text.h"
 #include "wrapped_labels.h"
 
 #include <QComboBox>
@@ -7,6 +8,9 @@
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScrollArea>
+#include <QSettings>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace inlay::studio {
@@ -51,6 +55,108 @@ class ResponseCurveView : public QWidget {
   CameraResponse response_;
 };
 
+namespace {
+
+// Whether "Details" was open when the studio last closed (it opens so again).
+constexpr const char* kDetailsOpenKey = "responseDock/detailsOpen";
+
+// What the dock's note says was decided, in one plain sentence (the dock's language).
+QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
+  using Mode = ResponseKeys::Mode;
+  const auto& e = prepared.responseEstimate;
+  // An EXR/HDR photo is linear whatever the list says (the engine warns about a choice).
+  if (!prepared.photo.wasSrgbEncoded || (mode == Mode::Auto && !e))
+    return ResponseDock::tr("The photo already holds light values (EXR/HDR): it needs no curve.");
+  if (mode == Mode::Srgb)
+    return ResponseDock::tr("Uses the standard sRGB curve, as chosen in the list.");
+  if (mode == Mode::Linear)
+    return ResponseDock::tr(
+        "Uses a straight (linear) curve, as chosen in the list: the photo's values "
+        "are read as light directly.");
+  if (mode != Mode::Auto) return ResponseDock::tr("Uses the curve given in the scene file.");
+  const bool noise = e->noiseBins > 0;
+  if (!e->determined)
+    return ResponseDock::tr(
+        "Kept the standard sRGB curve: the photo does not show enough to estimate "
+        "its own tone curve.");
+  if (e->decision != "fitted")
+    return noise ? ResponseDock::tr(
+                       "Kept the standard sRGB curve: the photo's noise does not show a "
+                       "different tone curve clearly.")
+                 : ResponseDock::tr(
+                       "Kept the standard sRGB curve: the photo's edges do not show a "
+                       "different tone curve clearly.");
+  return noise ? ResponseDock::tr(
+                     "Uses the tone curve estimated from the photo's noise; it differs "
+                     "from the standard sRGB curve (dashed).")
+               : ResponseDock::tr(
+                     "Uses the tone curve estimated from the photo's edges; it differs "
+                     "from the standard sRGB curve (dashed).");
+}
+
+// What the user can do about it, or empty when the curve is the user's own choice.
+QString adviceOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
+  const auto& e = prepared.responseEstimate;
+  if (mode != ResponseKeys::Mode::Auto || !e) return {};
+  if (e->determined && e->decision == "fitted")
+    return ResponseDock::tr(
+        "If the inserted objects look too bright or too flat against the room, "
+        "choose sRGB in the list above and compare.");
+  return ResponseDock::tr(
+      "If the photo was edited, or comes from a phone with strong contrast, its "
+      "curve may still differ: choose Linear in the list above (it reads the "
+      "photo's contrast as softer) and compare the objects' shading.");
+}
+
+// The technical figures: the curve, what the estimate measured and why it decided so (the
+// engine's sentences in the dock's language).
+QString detailsOf(const PreparedScene& prepared) {
+  QStringList lines{
+      ResponseDock::tr("Curve: %1").arg(QString::fromStdString(prepared.response.describe()))};
+  if (const auto& e = prepared.responseEstimate) {
+    if (e->noiseBins > 0)
+      lines << ResponseDock::tr("Estimated from the photo's noise (%1 levels) in %2 ms.")
+                   .arg(e->noiseBins)
+                   .arg(qRound(1000 * e->seconds));
+    else
+      lines << ResponseDock::tr("Estimated from %1 edges in %2 ms.")
+                   .arg(e->edgesUsed)
+                   .arg(qRound(1000 * e->seconds));
+    // A warning repeats the decision's reason; the decision alone when nothing warned.
+    if (e->determined && e->decision != "fitted" && e->warnings.empty())
+      lines << engineText(QString::fromStdString(e->decision));
+    for (const auto& w : e->warnings) lines << engineText(QString::fromStdString(w));
+  }
+  return lines.join(QLatin1Char('\n'));
+}
+
+// The dock's scroll area: it asks for all of its content's height but insists only on the part
+// above `scrolling` (the curve, the note and the Details button always show; the details
+// scroll when the dock is shorter), and asks again whenever the content's layout changes.
+class NotesScrollArea : public QScrollArea {
+ public:
+  NotesScrollArea(QWidget* parent, QWidget* scrolling) : QScrollArea(parent), scrolling_(scrolling) {}
+  QSize sizeHint() const override { return widget() ? widget()->sizeHint() : QScrollArea::sizeHint(); }
+  QSize minimumSizeHint() const override {
+    if (!widget()) return QScrollArea::minimumSizeHint();
+    QSize s = widget()->minimumSizeHint();
+    if (scrolling_->isVisibleTo(widget()))
+      s.rheight() -= scrolling_->minimumHeight() + widget()->layout()->spacing();
+    return s;
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (watched == widget() && event->type() == QEvent::LayoutRequest) updateGeometry();
+    return QScrollArea::eventFilter(watched, event);
+  }
+
+ private:
+  QWidget* scrolling_;
+};
+
+}  // namespace
+
 ResponseDock::ResponseDock(Document* document, QWidget* parent)
     : QDockWidget(parent), document_(document) {
   setObjectName(QStringLiteral("responseDock"));
@@ -61,13 +167,40 @@ ResponseDock::ResponseDock(Document* document, QWidget* parent)
   curve_ = new ResponseCurveView(body);
   info_ = new QLabel(body);
   info_->setWordWrap(true);
+  info_->setTextFormat(Qt::RichText);
   info_->setObjectName(QStringLiteral("responseInfo"));
+  detailsButton_ = new QToolButton(body);
+  detailsButton_->setObjectName(QStringLiteral("responseDetailsButton"));
+  detailsButton_->setCheckable(true);
+  detailsButton_->setAutoRaise(true);
+  detailsButton_->setArrowType(Qt::RightArrow);
+  detailsButton_->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  details_ = new QLabel(body);
+  details_->setWordWrap(true);
+  details_->setObjectName(QStringLiteral("responseDetails"));
+  details_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  details_->setVisible(false);
   layout->addWidget(choice_);
   layout->addWidget(curve_, 1);
   layout->addWidget(info_);
-  setWidget(body);
-  fitter_ = new WrappedLabelFitter(body, {info_});  // the notes below the curve never cut off
+  layout->addWidget(detailsButton_);
+  layout->addWidget(details_);
+  // The details scroll rather than get cut off when the dock is too short for them.
+  auto* scroll = new NotesScrollArea(this, details_);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setWidget(body);
+  setWidget(scroll);
+  fitter_ = new WrappedLabelFitter(body, {info_, details_});  // the notes never cut off
   connect(choice_, &QComboBox::activated, this, &ResponseDock::choose);
+  connect(detailsButton_, &QToolButton::toggled, this, [this](bool open) {
+    detailsButton_->setArrowType(open ? Qt::DownArrow : Qt::RightArrow);
+    details_->setVisible(open);
+    QSettings().setValue(QLatin1String(kDetailsOpenKey), open);
+    fitter_->fit();
+  });
+  detailsButton_->setChecked(QSettings().value(QLatin1String(kDetailsOpenKey), false).toBool());
   connect(document_, &Document::changed, this, [this](const ChangeEvent&) { refresh(); });
   retranslate();
 }
@@ -85,6 +218,8 @@ void ResponseDock::retranslate() {
   choice_->setItemText(2, tr("Linear"));
   choice_->setItemText(3, tr("Explicit (from the scene file)"));
   choice_->setToolTip(tr("How the photo's pixel values map to light (camera.response)"));
+  detailsButton_->setText(tr("Details"));
+  detailsButton_->setToolTip(tr("The curve's parameters and what the estimate measured"));
   refresh();
 }
 
@@ -96,9 +231,11 @@ void ResponseDock::choose(int index) {
   keys.mode = modes[index];
   if (keys == document_->scene().camera.response) return;
   QString why;
-  if (!document_->setCameraResponse(keys, &why)) info_->setText(why);
+  if (!document_->setCameraResponse(keys, &why)) info_->setText(why.toHtmlEscaped());
 }
 
+// The note: what was decided and what the user can do, the figures behind "Details" (and in
+// the note's tooltip).
 void ResponseDock::refresh() {
   const ResponseKeys::Mode mode = document_->scene().camera.response.mode;
   choice_->setCurrentIndex(mode == ResponseKeys::Mode::Auto     ? 0
@@ -107,24 +244,20 @@ void ResponseDock::refresh() {
                                                                 : 3);
   const PreparedScene* prepared = document_->prepared();
   if (!prepared) {
-    info_->setText(tr("Preparing the scene..."));
+    info_->setText(tr("Preparing the scene...").toHtmlEscaped());
+    info_->setToolTip(QString());
     fitter_->fit();
     return;
   }
   curve_->setResponse(prepared->response);
-  QString text = QString::fromStdString(prepared->response.describe());
-  if (const auto& e = prepared->responseEstimate) {
-    if (e->noiseBins > 0)
-      text += tr("\nEstimated from the photo's noise (%1 levels) in %2 ms.")
-                  .arg(e->noiseBins)
-                  .arg(qRound(1000 * e->seconds));
-    else
-      text += tr("\nEstimated from %1 edges in %2 ms.").arg(e->edgesUsed).arg(qRound(1000 * e->seconds));
-    if (e->determined && e->decision != "fitted")
-      text += QStringLiteral("\n") + QString::fromStdString(e->decision);
-    for (const auto& w : e->warnings) text += QStringLiteral("\n") + QString::fromStdString(w);
-  }
+  // The decision in bold, the advice below it.
+  QString text = QStringLiteral("<b>%1</b>").arg(decisionOf(mode, *prepared).toHtmlEscaped());
+  if (const QString advice = adviceOf(mode, *prepared); !advice.isEmpty())
+    text += QStringLiteral("<br>") + advice.toHtmlEscaped();
+  const QString details = detailsOf(*prepared);
   info_->setText(text);
+  info_->setToolTip(details);
+  details_->setText(details);
   fitter_->fit();
 }
 

@@ -1,6 +1,9 @@
 // The camera response dock: the curve the photo is decoded with (code -> linear radiance, the
 // estimate's or camera.response's) and a choice of Auto / sRGB / Linear, each one undo step
-// through Document::setCameraResponse. Redrawn from the document's state on each change.
+// through Document::setCameraResponse. Below the curve a plain note says what was decided and
+// what the user can do about it; "Details" (and the note's tooltip) shows the technical figures:
+// the curve's parameters and the estimate's own reasons, translated by engineText(); whether
+// it is open is kept in the settings (responseDock/detailsOpen). Redrawn from the document's state on each change.
 // Retranslates on QEvent::LanguageChange. GUI thread only.
 #pragma once
 
@@ -10,6 +13,7 @@
 
 class QComboBox;
 class QLabel;
+class QToolButton;
 
 namespace inlay::studio {
 
@@ -32,7 +36,9 @@ class ResponseDock : public QDockWidget {
 
   Document* document_;
   QComboBox* choice_;
-  QLabel* info_;
+  QLabel* info_;  // what was decided and what the user can do
+  QToolButton* detailsButton_;
+  QLabel* details_;  // the technical figures, shown by detailsButton_
   ResponseCurveView* curve_;
   WrappedLabelFitter* fitter_ = nullptr;
 };
