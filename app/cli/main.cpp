@@ -99,8 +99,9 @@ Render options:
   --clamp-indirect R      clamp each sample's light after the first bounce to R times white (the
                           photo's linear units, as Cycles' "clamp indirect"); 0 or "off": no
                           clamp (default: the scene's render.clamp_indirect)
-  --caustic-photons N     diagnostics: photons of the caustic pass for smooth glass objects
-                          (default 200000; 0: off, caustics by path tracing alone)
+  --caustic-photons N     photons of the caustic pass for smooth glass objects: the bright
+                          light a glass object focuses onto the room (200000 is the measured
+                          setting; default 0: off, caustics by path tracing alone)
   --caustic-radius F      diagnostics: the caustic photons' gather radius as a fraction of the
                           glass object's bounding radius (default 0.05)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why

@@ -24,7 +24,7 @@ class CausticMap {
   // Photons with a non-finite value or no flux are dropped; radius > 0 (metres).
   CausticMap(std::vector<CausticPhoton> photons, double radius);
   bool empty() const { return photons_.empty(); }
-  size_t size() const { return photons_.size(); }
+  size_t size() const { return photons_.size(); }  // after merging
   double radius() const { return radius_; }
   double totalFlux() const { return totalFlux_; }  // W, the photons' flux summed (mean over RGB)
   // Irradiance (W/m^2) at p on a surface facing n (unit, the side the path arrived from): the
@@ -33,7 +33,10 @@ class CausticMap {
   Vec3 irradiance(const Vec3& p, const Vec3& n) const;
 
  private:
+  static constexpr double kMergeCells = 6;  // merge cells per radius (merged())
   uint64_t cellKey(int64_t x, int64_t y, int64_t z) const;
+  uint64_t cellOf(const Vec3& p, double size) const;
+  std::vector<CausticPhoton> merged(std::vector<CausticPhoton> photons) const;
   std::vector<CausticPhoton> photons_;  // sorted by cell
   std::vector<uint64_t> keys_;          // each photon's cell, ascending
   double radius_ = 0;

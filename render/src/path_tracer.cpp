@@ -1360,9 +1360,10 @@ std::vector<PathTracer::Impl::GlassTarget> PathTracer::Impl::glassTargets() cons
 // threads), and builds the map with a radius of causticRadius x the smallest bounding radius.
 void PathTracer::Impl::buildCaustics() {
   caustics = CausticMap();
-  const std::vector<GlassTarget> targets = glassTargets();
   const size_t sources = lights.size() + suns.size();
-  if (options.causticPhotons <= 0 || targets.empty() || sources == 0 || !(options.causticRadius > 0)) return;
+  if (options.causticPhotons <= 0 || sources == 0 || !(options.causticRadius > 0)) return;
+  const std::vector<GlassTarget> targets = glassTargets();
+  if (targets.empty()) return;
   const uint32_t perPair =
       uint32_t(std::max<size_t>(1, size_t(options.causticPhotons) / (sources * targets.size())));
   std::vector<PhotonBatch> batches;

@@ -9,7 +9,8 @@ score (object RMSE, adjusted RMSE and the RMSE around the object, sRGB [0,1]):
   base            the baseline build (--baseline-cli), everything estimated, --spp samples
   estimated       this build, everything estimated, --spp samples (the benchmark's number),
                   with --estimated-args "ARGS" appended if given (e.g. "--caustic-radius 0.1")
-  no_caustic      estimated with the caustic photon pass off (--caustic-photons 0)
+  caustic         estimated with the caustic photon pass on (--caustic-photons 200000, or
+                  --caustic-args "ARGS" instead, e.g. "--caustic-photons 800000")
   estimated_long  this build, everything estimated, --long-spp samples, --no-grain: the product's
                   error without most of the render noise
   all_true_long   this build with the truth's lights (--replace-lights) and albedo
@@ -28,7 +29,7 @@ already there).
 
 usage: bench_glass.py INLAY_CLI [--baseline-cli OTHER_CLI] [--out DIR] [--rooms t05,t13,t02,t12]
                       [--spp 16] [--long-spp 128] [--runs base,estimated,...] [--reuse]
-                      [--estimated-args "ARGS"]
+                      [--estimated-args "ARGS"] [--caustic-args "ARGS"]
 """
 import json, os, subprocess, sys
 
@@ -39,7 +40,7 @@ import bench_error_budget as budget  # noqa: E402
 import bench_floor as floor  # noqa: E402
 
 PY = "/usr/bin/python3"
-RUNS = ["base", "estimated", "no_caustic", "estimated_long", "all_true_long", "cycles_clamp"]
+RUNS = ["base", "estimated", "caustic", "estimated_long", "all_true_long", "cycles_clamp"]
 
 
 def scenes_of(tools, room_dir, out, room, truth):
@@ -61,7 +62,7 @@ def measure_room(cli, base_cli, tools, room_dir, out, o, log):
     oracle = ["--replace-lights", lights, "--replace-albedo", os.path.join(room_dir, "albedo.exr"), "--no-grain"]
     clamp = float(truth.get("render", {}).get("clamp", {}).get("indirect", 10.0)) * truth["exposure"]["scale"]
     runs = {"base": (base_cli, scene, o["spp"], []), "estimated": (cli, scene, o["spp"], o["estimated_args"]),
-            "no_caustic": (cli, scene, o["spp"], ["--caustic-photons", "0"]),
+            "caustic": (cli, scene, o["spp"], o["caustic_args"]),
             "estimated_long": (cli, scene, o["long_spp"], ["--no-grain"]),
             "all_true_long": (cli, scene_rear, o["long_spp"], oracle),
             "cycles_clamp": (cli, scene_rear, o["long_spp"], oracle + ["--clamp-indirect", "%.6g" % clamp])}
@@ -154,7 +155,8 @@ def main():
     base = opt("--baseline-cli", None)
     o = {"spp": int(opt("--spp", "16")), "long_spp": int(opt("--long-spp", "128")),
          "runs": opt("--runs", ",".join(RUNS)).split(","), "reuse": "--reuse" in sys.argv[1:],
-         "estimated_args": opt("--estimated-args", "").split()}
+         "estimated_args": opt("--estimated-args", "").split(),
+         "caustic_args": opt("--caustic-args", "--caustic-photons 200000").split()}
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "t05,t13,t02,t12"))
     rows = []
     with open(os.path.join(out, "failures.log"), "a") as log:
@@ -164,7 +166,7 @@ def main():
             print(json.dumps(rows[-1]), flush=True)
             benchlib.write_csv(os.path.join(out, "glass.csv"), rows)
     plot(out, rows, [r for r in RUNS if r in o["runs"]])
-    crops(out, sdir, names, [r for r in ["base", "no_caustic", "estimated"] if r in o["runs"]])
+    crops(out, sdir, names, [r for r in ["base", "estimated", "caustic"] if r in o["runs"]])
     print("wrote", os.path.join(out, "glass.csv"))
     return 0
 
