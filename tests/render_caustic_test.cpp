@@ -165,9 +165,11 @@ TEST(CausticPhotons, BallsCausticCarriesThePathTracersEnergyOnce) {
   for (size_t i = 0; i < photons.with.pixelCount(); ++i) {
     if (reference.mask.data[i] != 0.f || photons.mask.data[i] != 0.f) continue;
     if (!(photons.with.data[i * 3] > 1.1 * photons.without.data[i * 3])) continue;
-    a += photons.with.data[i * 3], b += reference.with.data[i * 3], plain += reference.without.data[i * 3];
+    a += photons.with.data[i * 3], b += reference.with.data[i * 3],
+        plain += reference.without.data[i * 3];
   }
-  std::printf("[ caustic ] ball: spot with photons %.4f, path traced %.4f (no ball %.4f)\n", a, b, plain);
+  std::printf("[ caustic ] ball: spot with photons %.4f, path traced %.4f (no ball %.4f)\n", a, b,
+              plain);
   EXPECT_GT(b, 1.5 * plain) << "no caustic to compare";
   EXPECT_NEAR(a / b, 1.0, 0.05);
 }
@@ -199,8 +201,8 @@ TEST(CausticPhotons, StiffCasesStayFiniteAndCreateNoLight) {
     const PathTracer::CausticStats st = tracer.causticStats();
     // Flux out of the light's front: pi L A (an upper bound on what enters the sphere).
     const double emitted = test::kPi * 40 * 0.1 * 0.1;
-    std::printf("[ caustic ] %s: %zu photons, flux %.4f of at most %.4f W\n", c.name, st.photons, st.flux,
-                emitted);
+    std::printf("[ caustic ] %s: %zu photons, flux %.4f of at most %.4f W\n", c.name, st.photons,
+                st.flux, emitted);
     EXPECT_TRUE(std::isfinite(st.flux)) << c.name;
     EXPECT_LE(st.flux, emitted) << c.name;
     if (c.photons == 0) {
@@ -235,7 +237,8 @@ TEST(CausticPhotons, NoGlassNoPhotonsAndTheMapIsDeterministic) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   const double plainS = seconds(0), photonS = seconds(kPhotons);
-  std::printf("[ caustic ] tracer built in %.3f s without the photon pass, %.3f s with it\n", plainS, photonS);
+  std::printf("[ caustic ] tracer built in %.3f s without the photon pass, %.3f s with it\n", plainS,
+              photonS);
   const PathTracer a(glass, opt), b(glass, opt);
   EXPECT_GT(a.causticStats().photons, 0u);
   EXPECT_EQ(a.causticStats().photons, b.causticStats().photons);

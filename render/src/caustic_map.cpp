@@ -13,7 +13,9 @@ constexpr int64_t kCellBias = int64_t(1) << 20;  // 21 bits per axis: +-1e6 cell
 }  // namespace
 
 uint64_t CausticMap::cellKey(int64_t x, int64_t y, int64_t z) const {
-  auto axis = [](int64_t c) { return uint64_t(std::clamp<int64_t>(c + kCellBias, 0, 2 * kCellBias - 1)); };
+  auto axis = [](int64_t c) {
+    return uint64_t(std::clamp<int64_t>(c + kCellBias, 0, 2 * kCellBias - 1));
+  };
   return (axis(x) << 42) | (axis(y) << 21) | axis(z);
 }
 
@@ -21,7 +23,8 @@ CausticMap::CausticMap(std::vector<CausticPhoton> photons, double radius) {
   if (!(radius > 0) || !std::isfinite(radius)) return;
   radius_ = radius;
   std::erase_if(photons, [](const CausticPhoton& p) {
-    return !p.point.allFinite() || !p.normal.allFinite() || !p.flux.allFinite() || !(p.flux.maxCoeff() > 0);
+    return !p.point.allFinite() || !p.normal.allFinite() || !p.flux.allFinite() ||
+           !(p.flux.maxCoeff() > 0);
   });
   for (const CausticPhoton& p : photons) totalFlux_ += p.flux.mean();
   photons = merged(std::move(photons));

@@ -763,14 +763,15 @@ struct PathTracer::Impl {
   std::vector<GlassTarget> glassTargets() const;
   void buildCaustics();
   std::vector<CausticPhoton> emitPhotons(const GlassTarget& target, const PhotonBatch& batch) const;
-  bool photonFromLight(const LightData& l, const GlassTarget& target, const SampleRng& rng, uint32_t count,
-                       Vec3* origin, Vec3* dir, Vec3* flux) const;
+  bool photonFromLight(const LightData& l, const GlassTarget& target, const SampleRng& rng,
+                       uint32_t count, Vec3* origin, Vec3* dir, Vec3* flux) const;
   bool photonFromSun(const SunData& sun, const GlassTarget& target, const SampleRng& rng, uint32_t count,
                      Vec3* origin, Vec3* dir, Vec3* flux) const;
   void tracePhoton(const GlassTarget& target, Vec3 origin, Vec3 dir, const Vec3& flux,
                    const SampleRng& rng, std::vector<CausticPhoton>& out) const;
   Material::Kind photonSurface(const Hit& hit, double* ior) const;
-  void addCausticLight(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf, Sums& out) const;
+  void addCausticLight(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                       Sums& out) const;
 };
 
 void PathTracer::Impl::updateMeshLight(size_t i) {
@@ -919,7 +920,7 @@ void PathTracer::Impl::castCameraPacket(int n, const Vec3& eye, const Vec3* dirs
 void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const {
   const LightData& l = lights[size_t(hit.index)];
   const double cosL = -l.normal.dot(st.dir);
-  if (cosL <= 0) return;              // the black back of the light
+  if (cosL <= 0) return;             // the black back of the light
   if (st.causticChain == 2) return;  // the caustic map brought this light to the last vertex
   const double w = st.lastSpecular ? 1.0
                                    : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint,
@@ -1338,7 +1339,8 @@ std::vector<PathTracer::Impl::GlassTarget> PathTracer::Impl::glassTargets() cons
   auto isGlass = [](const Material& m) { return m.kind == Material::Kind::Glass; };
   for (size_t i = 0; i < objects.size(); ++i) {
     const ObjectData& o = objects[i];
-    if (!o.instance || !o.mesh || !(isGlass(o.material) || std::any_of(o.parts.begin(), o.parts.end(), isGlass)))
+    if (!o.instance || !o.mesh ||
+        !(isGlass(o.material) || std::any_of(o.parts.begin(), o.parts.end(), isGlass)))
       continue;
     const Mat3 linear = o.worldFromObject.topLeftCorner<3, 3>();
     const Vec3 shift = o.worldFromObject.topRightCorner<3, 1>();
@@ -1374,7 +1376,8 @@ void PathTracer::Impl::buildCaustics() {
         batches.push_back({t, src, first, std::min(kBatch, perPair - first), perPair});
   std::vector<std::vector<CausticPhoton>> landed(batches.size());
   parallelFor(tbb::blocked_range<size_t>(0, batches.size()), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t b = r.begin(); b < r.end(); ++b) landed[b] = emitPhotons(targets[batches[b].target], batches[b]);
+    for (size_t b = r.begin(); b < r.end(); ++b)
+      landed[b] = emitPhotons(targets[batches[b].target], batches[b]);
   });
   std::vector<CausticPhoton> photons;
   for (const auto& l : landed) photons.insert(photons.end(), l.begin(), l.end());
@@ -1394,7 +1397,8 @@ std::vector<CausticPhoton> PathTracer::Impl::emitPhotons(const GlassTarget& targ
     const bool emitted =
         batch.source < lights.size()
             ? photonFromLight(lights[batch.source], target, rng, batch.perPair, &origin, &dir, &flux)
-            : photonFromSun(suns[batch.source - lights.size()], target, rng, batch.perPair, &origin, &dir, &flux);
+            : photonFromSun(suns[batch.source - lights.size()], target, rng, batch.perPair, &origin,
+                            &dir, &flux);
     if (emitted) tracePhoton(target, origin, dir, flux, rng, out);
   }
   return out;
@@ -1403,8 +1407,9 @@ std::vector<CausticPhoton> PathTracer::Impl::emitPhotons(const GlassTarget& targ
 // A photon from area light l toward the target's sphere: a point uniform on the emitter, a
 // direction uniform in the cone the sphere fills from there (the whole front hemisphere, by
 // the cosine, when the point lies inside the sphere). Flux: L cos A Omega / count.
-bool PathTracer::Impl::photonFromLight(const LightData& l, const GlassTarget& target, const SampleRng& rng,
-                                       uint32_t count, Vec3* origin, Vec3* dir, Vec3* flux) const {
+bool PathTracer::Impl::photonFromLight(const LightData& l, const GlassTarget& target,
+                                       const SampleRng& rng, uint32_t count, Vec3* origin, Vec3* dir,
+                                       Vec3* flux) const {
   if (!(l.power > 0)) return false;
   const auto uPoint = rng.get2(0), uDir = rng.get2(1);
   *origin = sampleQuadUniform(l.emitter, uPoint[0], uPoint[1]);
@@ -1417,7 +1422,8 @@ bool PathTracer::Impl::photonFromLight(const LightData& l, const GlassTarget& ta
   } else {
     const double sinMax2 = std::min(1.0, target.radius * target.radius / (dist * dist));
     const double cosMax = std::sqrt(1.0 - sinMax2);
-    const double cosT = 1.0 - uDir[0] * (1.0 - cosMax), sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+    const double cosT = 1.0 - uDir[0] * (1.0 - cosMax),
+                 sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
     const double phi = 2.0 * kPi * uDir[1];
     *dir = Frame(toCentre / dist).toWorld(Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
     weight = l.normal.dot(*dir) * 2.0 * kPi * (1.0 - cosMax);
@@ -1434,7 +1440,8 @@ bool PathTracer::Impl::photonFromSun(const SunData& sun, const GlassTarget& targ
   const auto u = rng.get2(0);
   const double r = target.radius * std::sqrt(u[0]), phi = 2.0 * kPi * u[1];
   const Frame frame(sun.toSun);
-  *origin = target.centre + frame.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), 1.01 * target.radius));
+  *origin = target.centre +
+            frame.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), 1.01 * target.radius));
   *dir = -sun.toSun;
   const double beam = sun.sun->beamAt(*origin);
   if (!(beam > 0) || occluded(sunWithScene, *origin, sun.toSun, 0, 3.4e38)) return false;
@@ -1445,7 +1452,8 @@ bool PathTracer::Impl::photonFromSun(const SunData& sun, const GlassTarget& targ
 // What a photon meets: Glass (with its IOR), Diffuse (a Lambertian room surface or object),
 // or anything else (a light, a marked room surface, another material), which ends it.
 Material::Kind PathTracer::Impl::photonSurface(const Hit& hit, double* ior) const {
-  if (hit.kind == Hit::Kind::Room) return roomMaterial(hit.index) ? Material::Kind::Mirror : Material::Kind::Diffuse;
+  if (hit.kind == Hit::Kind::Room)
+    return roomMaterial(hit.index) ? Material::Kind::Mirror : Material::Kind::Diffuse;
   if (hit.kind != Hit::Kind::Object) return Material::Kind::Emissive;
   const Material& m = objects[size_t(hit.index)].materialOf(hit.prim);
   SurfaceBsdf bsdf;
@@ -1471,7 +1479,8 @@ void PathTracer::Impl::tracePhoton(const GlassTarget& target, Vec3 origin, Vec3 
     if (kind == Material::Kind::Diffuse && vertex > 0) return out.push_back({hit.point, ngFacing, flux});
     if (kind != Material::Kind::Glass || vertex >= options.maxGlassDepth) return;
     const Vec3 ns = hit.shadingNormal.dot(ngFacing) < 0 ? Vec3(-hit.shadingNormal) : hit.shadingNormal;
-    const SmoothGlassSample s = sampleSmoothGlass(wo, ngFacing, ns, front ? ior : 1.0 / ior, rng.get(4 + uint32_t(vertex)));
+    const SmoothGlassSample s =
+        sampleSmoothGlass(wo, ngFacing, ns, front ? ior : 1.0 / ior, rng.get(4 + uint32_t(vertex)));
     const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
     origin = hit.point + (s.reflected ? eps : -eps) * ngFacing;
     dir = s.dir;
@@ -1481,13 +1490,14 @@ void PathTracer::Impl::tracePhoton(const GlassTarget& target, Vec3 origin, Vec3 
 
 // The caustic map's light at a Lambertian vertex (with-objects sums only: the glass exists
 // there alone), as direct light is clamped: f = albedo / pi times the photons' irradiance.
-void PathTracer::Impl::addCausticLight(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                                       Sums& out) const {
+void PathTracer::Impl::addCausticLight(Mode mode, PathState& st, const Vertex& v,
+                                       const SurfaceBsdf& bsdf, Sums& out) const {
   st.causticChain = 1;
   if (mode == Mode::WithoutOnly) return;
   const Vec3 e = caustics.irradiance(v.point, v.ngFacing);
   if (!(e.maxCoeff() > 0)) return;
-  out.with += clampIndirect(Vec3(st.throughput.cwiseProduct(bsdf.albedo).cwiseProduct(e) / kPi), st.depth >= 1);
+  out.with +=
+      clampIndirect(Vec3(st.throughput.cwiseProduct(bsdf.albedo).cwiseProduct(e) / kPi), st.depth >= 1);
 }
 
 // The photo shows the room without the objects. A path that left an object and lands on room
