@@ -109,12 +109,9 @@ RenderScene slabScene(double ior) {
   s.roomAlbedo.surfaceMean[0] = Vec3::Constant(0.05);  // the floor
   s.lights.push_back(
       test::rectLight(Vec3(0, kLightM, -2.0), Vec3(0.05, 0, 0), Vec3(0, 0, 0.05), Vec3::Constant(200)));
-  InsertedObject slab;
-  slab.meshObject = test::boxMesh(RoomBox{-0.6, 0.6, -0.6, 0.6, kSlabM});
-  slab.worldFromObject = test::translation(Vec3(0, 0.8, -2.0));
-  slab.material.kind = Material::Kind::Glass;
-  slab.material.ior = ior;
-  s.objects.push_back(slab);
+  s.objects.push_back(test::placedObject(test::boxMesh(RoomBox{-0.6, 0.6, -0.6, 0.6, kSlabM}),
+                                         Vec3(0, 0.8, -2.0), Material::Kind::Glass));
+  s.objects.back().material.ior = ior;
   return s;
 }
 

@@ -149,6 +149,16 @@ inline Mat4 translation(const Vec3& t) {
   return m;
 }
 
+// An inserted object of `mesh` moved to `at`, of material `kind` (the material's other defaults).
+inline InsertedObject placedObject(std::shared_ptr<TriangleMesh> mesh, const Vec3& at,
+                                   Material::Kind kind) {
+  InsertedObject o;
+  o.meshObject = std::move(mesh);
+  o.worldFromObject = translation(at);
+  o.material.kind = kind;
+  return o;
+}
+
 // Bit-for-bit equality of two images (the differential render's zero-difference tests).
 inline bool sameBits(const ImageF& a, const ImageF& b) {
   return a.data.size() == b.data.size() &&
