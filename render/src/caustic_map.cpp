@@ -34,8 +34,13 @@ CausticMap::CausticMap(std::vector<CausticPhoton> photons, double radius) {
   std::iota(order.begin(), order.end(), size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return keys[a] < keys[b]; });
   photons_.reserve(photons.size());
-  keys_.reserve(photons.size());
-  for (size_t i : order) photons_.push_back(photons[i]), keys_.push_back(keys[i]);
+  cells_.reserve(photons.size());
+  for (size_t i : order) {
+    auto [cell, added] =
+        cells_.try_emplace(keys[i], uint32_t(photons_.size()), uint32_t(photons_.size()));
+    ++cell->second.second;
+    photons_.push_back(photons[i]);
+  }
   lo_ = Vec3::Constant(1e300), hi_ = Vec3::Constant(-1e300);
   for (const CausticPhoton& p : photons_) lo_ = lo_.cwiseMin(p.point), hi_ = hi_.cwiseMax(p.point);
   lo_ -= Vec3::Constant(radius_), hi_ += Vec3::Constant(radius_);
@@ -91,9 +96,10 @@ Vec3 CausticMap::irradiance(const Vec3& p, const Vec3& n) const {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dz = -1; dz <= 1; ++dz) {
         const uint64_t key = cellKey(int64_t(c.x()) + dx, int64_t(c.y()) + dy, int64_t(c.z()) + dz);
-        const auto range = std::equal_range(keys_.begin(), keys_.end(), key);
-        for (auto it = range.first; it != range.second; ++it) {
-          const CausticPhoton& ph = photons_[size_t(it - keys_.begin())];
+        const auto cell = cells_.find(key);
+        if (cell == cells_.end()) continue;
+        for (uint32_t k = cell->second.first; k < cell->second.second; ++k) {
+          const CausticPhoton& ph = photons_[k];
           const Vec3 d = ph.point - p;
           const double d2 = d.squaredNorm();
           if (d2 >= r2 || ph.normal.dot(n) <= 0.5 || std::abs(d.dot(n)) > 0.1 * radius_) continue;

@@ -8,6 +8,8 @@
 #include "inlay/modeling/core.h"
 
 #include <cstdint>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace inlay::detail {
@@ -37,8 +39,8 @@ class CausticMap {
   uint64_t cellKey(int64_t x, int64_t y, int64_t z) const;
   uint64_t cellOf(const Vec3& p, double size) const;
   std::vector<CausticPhoton> merged(std::vector<CausticPhoton> photons) const;
-  std::vector<CausticPhoton> photons_;  // sorted by cell
-  std::vector<uint64_t> keys_;          // each photon's cell, ascending
+  std::vector<CausticPhoton> photons_;  // sorted by cell (radius-sized cubes)
+  std::unordered_map<uint64_t, std::pair<uint32_t, uint32_t>> cells_;  // cell -> [first, end)
   double radius_ = 0;
   double totalFlux_ = 0;
   Vec3 lo_ = Vec3::Zero(), hi_ = Vec3::Zero();  // the photons' bounds, grown by the radius

@@ -27,7 +27,8 @@
 // scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; NEE and MIS on both
 // sides: lights behind the interface are reached through transmission), or Emissive (black
 // otherwise). Russian roulette from russianRouletteDepth with survival min(0.95, max
-// throughput).
+// throughput). With TracerOptions::causticPhotons, smooth glass objects' caustics come from a
+// photon map (the pass near the end of this file) at Lambertian vertices instead.
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
 // non-specular vertex with a shadow ray against what stands inside the room (extrusions, cards,
