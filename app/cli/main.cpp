@@ -584,6 +584,16 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
   return {};
 }
 
+// The path tracer's settings: the scene's clamp of indirect light, and the command line's caustic
+// photons (off unless asked).
+TracerOptions tracerOptions(const Args& a, double clampIndirect) {
+  TracerOptions t;
+  t.clampRadiance = clampIndirect;
+  if (a.causticPhotons) t.causticPhotons = *a.causticPhotons;
+  if (a.causticRadius) t.causticRadius = *a.causticRadius;
+  return t;
+}
+
 int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDefault = false) {
   if (a.output.empty()) return usageError("render needs -o OUT.png");
   Progress progress(a.quiet);
@@ -607,9 +617,7 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   so.threads = a.threads.value_or(0);
   so.startDivider = 1;  // no preview in batch mode
   if (a.clampIndirect) ps.doc.render.clampIndirect = *a.clampIndirect;
-  so.tracer.clampRadiance = ps.doc.render.clampIndirect;
-  if (a.causticPhotons) so.tracer.causticPhotons = *a.causticPhotons;
-  if (a.causticRadius) so.tracer.causticRadius = *a.causticRadius;
+  so.tracer = tracerOptions(a, ps.doc.render.clampIndirect);
   // Samples go where the objects change the photo; untouched pixels are revisited every fourth
   // wave (render/session.h).
   so.focusOnChanges = !a.noFocus;
