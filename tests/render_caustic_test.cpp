@@ -149,6 +149,23 @@ TEST(CausticPhotons, SlabPassesItsFresnelSeriesToTheFloor) {
   }
 }
 
+// A sun straight above the slab: the photons leave a disc across the beam (its parallel light
+// keeps the floor's solid angle, so the series alone, with the underside's inter-reflection).
+TEST(CausticPhotons, SunThroughTheSlabGivesItsFresnelSeries) {
+  RenderScene s = slabScene(1.5);
+  s.lights.clear();
+  SunLight sun;
+  sun.travelDirection = Vec3(0, -1, 0);
+  sun.irradianceOverPi = Vec3::Constant(2);
+  s.suns.push_back(sun);
+  const double r = 0.04, expected = (1 - r) / (1 + r) * (1 + 0.05 * 0.413 * 2 * r / (1 + r));
+  const Ratio got = slabRatio(s, 16, 1000000);
+  std::printf("[ caustic ] slab under a sun: with / without %.4f, series %.4f\n", got.withOverWithout,
+              expected);
+  EXPECT_TRUE(got.finite);
+  EXPECT_NEAR(got.withOverWithout, expected, 0.015);
+}
+
 // No double counting: the paths floor -> glass -> light that the photons bring are removed from
 // the path tracer. Around the ball's spot (the floor pixels the photons make 10 % brighter than
 // the room without the ball, grown by the map's blur) the floor carries the same light at 64
