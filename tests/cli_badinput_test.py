@@ -48,6 +48,11 @@ def main():
         r = run(cli, "render", "x.json", "--clamp-indirect", v, "-o", "a.png")
         check("bad --clamp-indirect " + v, r.returncode == 2 and "--clamp-indirect" in r.stderr, r.stderr)
     check("help names --clamp-indirect", "--clamp-indirect" in run(cli, "--help").stdout)
+    for flag, values in (("--caustic-photons", ("-1", "1.5", "many")), ("--caustic-radius", ("0", "-0.1", "nan"))):
+        for v in values:
+            r = run(cli, "render", "x.json", flag, v, "-o", "a.png")
+            check("bad %s %s" % (flag, v), r.returncode == 2 and flag in r.stderr, r.stderr)
+        check("help names " + flag, flag in run(cli, "--help").stdout)
     # Diagnostics of the preparation: a bad value exits 2 naming the flag.
     for flag, values in (("--keep-better-fit-tolerance", ("-1", "nan", "inf", "low")),
                          ("--prepare-seed", ("-1", "x")),

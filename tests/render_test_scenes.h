@@ -130,10 +130,33 @@ inline std::shared_ptr<TriangleMesh> sphereMesh(double r, int rings = 24, int se
   return m;
 }
 
+// A closed box of the given extent (x, y, z ranges as a RoomBox: ceilingM is its top, its
+// bottom at y = 0), faces wound outward, no vertex normals.
+inline std::shared_ptr<TriangleMesh> boxMesh(const RoomBox& extent) {
+  auto box = std::make_shared<TriangleMesh>();
+  for (const auto& f : boxFaces(extent)) {
+    TriangleMesh q = quadMesh(rectCorners(f.c, f.u, f.v));
+    std::swap(q.triangles[0][1], q.triangles[0][2]);  // box faces wind inward: turn them outward
+    std::swap(q.triangles[1][1], q.triangles[1][2]);
+    box->append(q);
+  }
+  return box;
+}
+
 inline Mat4 translation(const Vec3& t) {
   Mat4 m = Mat4::Identity();
   m.topRightCorner<3, 1>() = t;
   return m;
+}
+
+// An inserted object of `mesh` moved to `at`, of material `kind` (the material's other defaults).
+inline InsertedObject placedObject(std::shared_ptr<TriangleMesh> mesh, const Vec3& at,
+                                   Material::Kind kind) {
+  InsertedObject o;
+  o.meshObject = std::move(mesh);
+  o.worldFromObject = translation(at);
+  o.material.kind = kind;
+  return o;
 }
 
 // Bit-for-bit equality of two images (the differential render's zero-difference tests).

@@ -102,6 +102,11 @@ Render options:
   --clamp-indirect R      clamp each sample's light after the first bounce to R times white (the
                           photo's linear units, as Cycles' "clamp indirect"); 0 or "off": no
                           clamp (default: the scene's render.clamp_indirect)
+  --caustic-photons N     photons of the caustic pass for smooth glass objects: the bright
+                          light a glass object focuses onto the room (200000 is the measured
+                          setting; default 0: off, caustics by path tracing alone)
+  --caustic-radius F      diagnostics: the caustic photons' gather radius as a fraction of the
+                          glass object's bounding radius (default 0.05)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
   --prepare-seed K        diagnostics: the preparation's own randomness (the lighting fit's
@@ -168,6 +173,8 @@ struct Args {
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
+  std::optional<int> causticPhotons;    // --caustic-photons
+  std::optional<double> causticRadius;  // --caustic-radius
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -210,7 +217,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
         s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
         s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--fit-unseen-ceiling") {
+        s == "--fit-unseen-ceiling" || s == "--caustic-photons" || s == "--caustic-radius") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -264,6 +271,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         const auto c = *v == "off" ? std::optional<double>(0.0) : parseNumber<double>(*v);
         if (!c) return "--clamp-indirect: '" + *v + "' is not a non-negative number or \"off\"";
         a.clampIndirect = *c;
+      } else if (s == "--caustic-radius") {
+        a.causticRadius = parseNumber<double>(*v);
+        if (!a.causticRadius || !(*a.causticRadius > 0))
+          return "--caustic-radius: '" + *v + "' is not a positive fraction";
       } else if (s == "--prior") {
         a.prior = parseNumber<double>(*v);
         if (!a.prior) return "--prior: '" + *v + "' is not a non-negative number";
@@ -281,6 +292,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
           a.spp = n;
         } else if (s == "--seed") a.seed = n;
         else if (s == "--prepare-seed") a.prepareSeed = n;
+        else if (s == "--caustic-photons") a.causticPhotons = n;
         else if (s == "--iterations") {
           if (*n < 1) return "--iterations must be at least 1";
           a.iterations = n;
@@ -579,6 +591,16 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
   return {};
 }
 
+// The path tracer's settings: the scene's clamp of indirect light, and the command line's caustic
+// photons (off unless asked).
+TracerOptions tracerOptions(const Args& a, double clampIndirect) {
+  TracerOptions t;
+  t.clampRadiance = clampIndirect;
+  if (a.causticPhotons) t.causticPhotons = *a.causticPhotons;
+  if (a.causticRadius) t.causticRadius = *a.causticRadius;
+  return t;
+}
+
 int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDefault = false) {
   if (a.output.empty()) return usageError("render needs -o OUT.png");
   Progress progress(a.quiet);
@@ -602,7 +624,7 @@ int commandRender(const std::string& scenePath, const Args& a, bool denoiseByDef
   so.threads = a.threads.value_or(0);
   so.startDivider = 1;  // no preview in batch mode
   if (a.clampIndirect) ps.doc.render.clampIndirect = *a.clampIndirect;
-  so.tracer.clampRadiance = ps.doc.render.clampIndirect;
+  so.tracer = tracerOptions(a, ps.doc.render.clampIndirect);
   // Samples go where the objects change the photo; untouched pixels are revisited every fourth
   // wave (render/session.h).
   so.focusOnChanges = !a.noFocus;

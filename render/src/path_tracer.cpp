@@ -27,7 +27,8 @@
 // scaling: it cancels on the way out), RoughGlass (Walter et al. 2007; NEE and MIS on both
 // sides: lights behind the interface are reached through transmission), or Emissive (black
 // otherwise). Russian roulette from russianRouletteDepth with survival min(0.95, max
-// throughput).
+// throughput). With TracerOptions::causticPhotons, smooth glass objects' caustics come from a
+// photon map (the pass near the end of this file) at Lambertian vertices instead.
 //
 // Suns (parallel light through an opening, masked to their beam) are added at every
 // non-specular vertex with a shadow ray against what stands inside the room (extrusions, cards,
@@ -51,6 +52,7 @@
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
 #include "bsdf.h"
+#include "caustic_map.h"
 #include "embree_util.h"
 #include "room_texture.h"
 #include "sampling.h"
@@ -211,6 +213,7 @@ struct PathTracer::Impl {
   RTCScene sunWithoutScene = nullptr;
   std::vector<SunData> suns;
   SunPatchLight sunPatches;  // the sunlit room the photo shows, a light for NEE (may be empty)
+  CausticMap caustics;       // photons through smooth glass (TracerOptions::causticPhotons)
   unsigned surfaceCount = 0;
   bool hasCards = false;  // some room surface is an occluder card with a matte (its filters set)
   std::vector<LightData> lights;
@@ -647,6 +650,10 @@ struct PathTracer::Impl {
     Vec3 lastNormal = Vec3::Zero();  // its geometric normal on the side the path left from; zero
                                      // after a transmitting BSDF (light selection saw every side)
     bool noPhotoAtFirstHit = false;  // the first hit is path traced (addObjectsEffect)
+    // The caustic map's part of the path: 1 when the last non-glass vertex was Lambertian and
+    // took the map's light, 2 when smooth glass vertices alone followed it (an area light met
+    // now is the map's light already), 0 otherwise.
+    uint8_t causticChain = 0;
   };
 
   struct PixelSums;
@@ -757,6 +764,30 @@ struct PathTracer::Impl {
   bool splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                   const SampleRng& rng, Sums& out) const;
   bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
+
+  // The caustic photon pass (TracerOptions::causticPhotons).
+  struct GlassTarget {
+    size_t object = 0;
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+  };
+  struct PhotonBatch {
+    size_t target = 0;  // into the glass targets
+    size_t source = 0;  // area light, then suns
+    uint32_t first = 0, count = 0, perPair = 1;
+  };
+  std::vector<GlassTarget> glassTargets() const;
+  void buildCaustics();
+  std::vector<CausticPhoton> emitPhotons(const GlassTarget& target, const PhotonBatch& batch) const;
+  bool photonFromLight(const LightData& l, const GlassTarget& target, const SampleRng& rng,
+                       uint32_t count, Vec3* origin, Vec3* dir, Vec3* flux) const;
+  bool photonFromSun(const SunData& sun, const GlassTarget& target, const SampleRng& rng, uint32_t count,
+                     Vec3* origin, Vec3* dir, Vec3* flux) const;
+  void tracePhoton(const GlassTarget& target, Vec3 origin, Vec3 dir, const Vec3& flux,
+                   const SampleRng& rng, std::vector<CausticPhoton>& out) const;
+  Material::Kind photonSurface(const Hit& hit, double* ior) const;
+  void addCausticLight(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
+                       Sums& out) const;
 };
 
 void PathTracer::Impl::updateMeshLight(size_t i) {
@@ -842,6 +873,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
               : st.depth - st.glassVertices >= options.maxDepth)
       return;
     st.glassVertices += glass ? 1 : 0;
+    st.causticChain = glass && st.causticChain != 0 ? 2 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
@@ -912,7 +944,8 @@ void PathTracer::Impl::castCameraPacket(int n, const Vec3& eye, const Vec3* dirs
 void PathTracer::Impl::addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const {
   const LightData& l = lights[size_t(hit.index)];
   const double cosL = -l.normal.dot(st.dir);
-  if (cosL <= 0) return;  // the black back of the light
+  if (cosL <= 0) return;             // the black back of the light
+  if (st.causticChain == 2) return;  // the caustic map brought this light to the last vertex
   const double w = st.lastSpecular ? 1.0
                                    : powerHeuristic(st.lastPdf, lightPdf(hit.index, st.lastPoint,
                                                                          st.lastNormal, hit.point));
@@ -1052,6 +1085,9 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   // transmits (rough glass): then every side counts (a zero normal says so).
   const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
   const bool nee = !bsdf.transmits() || options.roughGlassNee;
+  // The caustic map's light here marks the path (PathState::causticChain) before the bounce
+  // copies its state.
+  if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
   PathState after = st;
   const bool goesOn = bounceFrom(after, v, lobe, nee, rng) && survivesRoulette(after, v, rng);
   if (goesOn) {
@@ -1334,6 +1370,182 @@ bool PathTracer::Impl::survivesRoulette(PathState& st, const Vertex& v, const Sa
   return true;
 }
 
+// The caustic photon pass (TracerOptions::causticPhotons). Light reaches a Lambertian point
+// through a smooth glass object along paths light -> glass ... glass -> point that the path
+// tracer finds only by BSDF sampling (next-event estimation's shadow ray is blocked by the
+// glass): rare hits on a small light, the caustic missing or fireflies. Photons from every area
+// light and sun, aimed at each glass object's bounding sphere, follow those paths from the
+// light's end; their density at a Lambertian vertex replaces the vertex's own paths through the
+// glass to an area light (PathState::causticChain), so each light path is counted once.
+
+// The inserted objects with a smooth glass material (any part), with their world bounding
+// spheres (the box's centre, the farthest vertex).
+std::vector<PathTracer::Impl::GlassTarget> PathTracer::Impl::glassTargets() const {
+  std::vector<GlassTarget> targets;
+  auto isGlass = [](const Material& m) { return m.kind == Material::Kind::Glass; };
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const ObjectData& o = objects[i];
+    if (!o.instance || !o.mesh ||
+        !(isGlass(o.material) || std::any_of(o.parts.begin(), o.parts.end(), isGlass)))
+      continue;
+    const Mat3 linear = o.worldFromObject.topLeftCorner<3, 3>();
+    const Vec3 shift = o.worldFromObject.topRightCorner<3, 1>();
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const Vec3f& p : o.mesh->positions) {
+      const Vec3 w = linear * p.cast<double>() + shift;
+      lo = lo.cwiseMin(w), hi = hi.cwiseMax(w);
+    }
+    GlassTarget t{i, 0.5 * (lo + hi), 0.0};
+    for (const Vec3f& p : o.mesh->positions)
+      t.radius = std::max(t.radius, (linear * p.cast<double>() + shift - t.centre).norm());
+    if (t.centre.allFinite() && t.radius > 0 && std::isfinite(t.radius)) targets.push_back(t);
+  }
+  return targets;
+}
+
+// Emits options.causticPhotons photons in all, an equal share per (source, glass object), in
+// parallel batches whose photons are concatenated in order (the map is the same whatever the
+// threads), and builds the map with a radius of causticRadius x the smallest bounding radius.
+void PathTracer::Impl::buildCaustics() {
+  caustics = CausticMap();
+  const size_t sources = lights.size() + suns.size();
+  if (options.causticPhotons <= 0 || sources == 0 || !(options.causticRadius > 0)) return;
+  const std::vector<GlassTarget> targets = glassTargets();
+  if (targets.empty()) return;
+  const uint32_t perPair =
+      uint32_t(std::max<size_t>(1, size_t(options.causticPhotons) / (sources * targets.size())));
+  std::vector<PhotonBatch> batches;
+  constexpr uint32_t kBatch = 4096;
+  for (size_t t = 0; t < targets.size(); ++t)
+    for (size_t src = 0; src < sources; ++src)
+      for (uint32_t first = 0; first < perPair; first += kBatch)
+        batches.push_back({t, src, first, std::min(kBatch, perPair - first), perPair});
+  std::vector<std::vector<CausticPhoton>> landed(batches.size());
+  parallelFor(tbb::blocked_range<size_t>(0, batches.size()), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t b = r.begin(); b < r.end(); ++b)
+      landed[b] = emitPhotons(targets[batches[b].target], batches[b]);
+  });
+  std::vector<CausticPhoton> photons;
+  for (const auto& l : landed) photons.insert(photons.end(), l.begin(), l.end());
+  double radius = 1e300;
+  for (const GlassTarget& t : targets) radius = std::min(radius, options.causticRadius * t.radius);
+  caustics = CausticMap(std::move(photons), radius);
+}
+
+// One batch: photon k of the pair (source, target) draws its numbers from SampleRng(k, target,
+// source, a fixed seed) and carries 1 / perPair of the flux the source sends into the sphere.
+std::vector<CausticPhoton> PathTracer::Impl::emitPhotons(const GlassTarget& target,
+                                                         const PhotonBatch& batch) const {
+  std::vector<CausticPhoton> out;
+  for (uint32_t k = batch.first; k < batch.first + batch.count; ++k) {
+    const SampleRng rng(k, uint32_t(batch.target), uint32_t(batch.source), 0x9e3779b9u);
+    Vec3 origin, dir, flux;
+    const bool emitted =
+        batch.source < lights.size()
+            ? photonFromLight(lights[batch.source], target, rng, batch.perPair, &origin, &dir, &flux)
+            : photonFromSun(suns[batch.source - lights.size()], target, rng, batch.perPair, &origin,
+                            &dir, &flux);
+    if (emitted) tracePhoton(target, origin, dir, flux, rng, out);
+  }
+  return out;
+}
+
+// A photon from area light l toward the target's sphere: a point uniform on the emitter, a
+// direction uniform in the cone the sphere fills from there (the whole front hemisphere, by
+// the cosine, when the point lies inside the sphere). Flux: L cos A Omega / count.
+bool PathTracer::Impl::photonFromLight(const LightData& l, const GlassTarget& target,
+                                       const SampleRng& rng, uint32_t count, Vec3* origin, Vec3* dir,
+                                       Vec3* flux) const {
+  if (!(l.power > 0)) return false;
+  const auto uPoint = rng.get2(0), uDir = rng.get2(1);
+  *origin = sampleQuadUniform(l.emitter, uPoint[0], uPoint[1]);
+  const Vec3 toCentre = target.centre - *origin;
+  const double dist = toCentre.norm();
+  double weight = 0;  // cos Omega, or pi for the cosine-weighted hemisphere
+  if (!(dist > target.radius)) {
+    *dir = Frame(l.normal).toWorld(sampleCosineHemisphere(uDir[0], uDir[1]));
+    weight = kPi;
+  } else {
+    const double sinMax2 = std::min(1.0, target.radius * target.radius / (dist * dist));
+    const double cosMax = std::sqrt(1.0 - sinMax2);
+    const double cosT = 1.0 - uDir[0] * (1.0 - cosMax),
+                 sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
+    const double phi = 2.0 * kPi * uDir[1];
+    *dir = Frame(toCentre / dist).toWorld(Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT));
+    weight = l.normal.dot(*dir) * 2.0 * kPi * (1.0 - cosMax);
+  }
+  *flux = l.radiance * (weight * l.area / count);
+  return weight > 0 && dir->allFinite() && flux->allFinite();
+}
+
+// A photon from a sun: a point uniform on the sphere's disc across the beam, started just
+// outside the sphere on the sun's side; none where the beam does not reach or something inside
+// the room stands between it and the opening. Flux: E_perp beam pi R^2 / count.
+bool PathTracer::Impl::photonFromSun(const SunData& sun, const GlassTarget& target, const SampleRng& rng,
+                                     uint32_t count, Vec3* origin, Vec3* dir, Vec3* flux) const {
+  const auto u = rng.get2(0);
+  const double r = target.radius * std::sqrt(u[0]), phi = 2.0 * kPi * u[1];
+  const Frame frame(sun.toSun);
+  *origin = target.centre +
+            frame.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), 1.01 * target.radius));
+  *dir = -sun.toSun;
+  const double beam = sun.sun->beamAt(*origin);
+  if (!(beam > 0) || occluded(sunWithScene, *origin, sun.toSun, 0, 3.4e38)) return false;
+  *flux = sun.irradianceOverPi * (kPi * beam * kPi * target.radius * target.radius / count);
+  return flux->allFinite();
+}
+
+// What a photon meets: Glass (with its IOR), Diffuse (a Lambertian room surface or object),
+// or anything else (a light, a marked room surface, another material), which ends it.
+Material::Kind PathTracer::Impl::photonSurface(const Hit& hit, double* ior) const {
+  if (hit.kind == Hit::Kind::Room)
+    return roomMaterial(hit.index) ? Material::Kind::Mirror : Material::Kind::Diffuse;
+  if (hit.kind != Hit::Kind::Object) return Material::Kind::Emissive;
+  const Material& m = objects[size_t(hit.index)].materialOf(hit.prim);
+  SurfaceBsdf bsdf;
+  setLobeParameters(m, bsdf);
+  *ior = bsdf.ior;
+  return m.kind;
+}
+
+// A photon's path: it must meet the target first (a photon aimed at another object's sphere
+// that meets this one first is that object's), then smooth glass (reflected or refracted by
+// the Fresnel weight, as scatterGlass) up to maxGlassDepth vertices, and is stored where it
+// lands on a Lambertian surface.
+void PathTracer::Impl::tracePhoton(const GlassTarget& target, Vec3 origin, Vec3 dir, const Vec3& flux,
+                                   const SampleRng& rng, std::vector<CausticPhoton>& out) const {
+  Hit hit = intersect(withScene, origin, dir, rayEpsilon(origin));
+  if (hit.kind != Hit::Kind::Object || size_t(hit.index) != target.object) return;
+  for (int vertex = 0;; ++vertex) {
+    double ior = 1.5;
+    const Material::Kind kind = photonSurface(hit, &ior);
+    const Vec3 wo = -dir, ng = hit.geometricNormal;
+    const bool front = wo.dot(ng) >= 0;
+    const Vec3 ngFacing = front ? ng : Vec3(-ng);
+    if (kind == Material::Kind::Diffuse && vertex > 0) return out.push_back({hit.point, ngFacing, flux});
+    if (kind != Material::Kind::Glass || vertex >= options.maxGlassDepth) return;
+    const Vec3 ns = hit.shadingNormal.dot(ngFacing) < 0 ? Vec3(-hit.shadingNormal) : hit.shadingNormal;
+    const SmoothGlassSample s =
+        sampleSmoothGlass(wo, ngFacing, ns, front ? ior : 1.0 / ior, rng.get(4 + uint32_t(vertex)));
+    const double eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
+    origin = hit.point + (s.reflected ? eps : -eps) * ngFacing;
+    dir = s.dir;
+    hit = intersect(withScene, origin, dir, 0);
+  }
+}
+
+// The caustic map's light at a Lambertian vertex (with-objects sums only: the glass exists
+// there alone), as direct light is clamped: f = albedo / pi times the photons' irradiance.
+void PathTracer::Impl::addCausticLight(Mode mode, PathState& st, const Vertex& v,
+                                       const SurfaceBsdf& bsdf, Sums& out) const {
+  st.causticChain = 1;
+  if (mode == Mode::WithoutOnly) return;
+  const Vec3 e = caustics.irradiance(v.point, v.ngFacing);
+  if (!(e.maxCoeff() > 0)) return;
+  out.with +=
+      clampIndirect(Vec3(st.throughput.cwiseProduct(bsdf.albedo).cwiseProduct(e) / kPi), st.depth >= 1);
+}
+
 // The photo shows the room without the objects. A path that left an object and lands on room
 // the camera sees needs that point's radiance in the scene WITH the objects: the photo's, plus
 // what the objects change there (the shadow they cast on it, the light they bounce onto it).
@@ -1548,6 +1760,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     rtcCommitScene(d.sunWithoutScene);
   }
   if (d.options.sunPatchNee) d.buildSunPatches();
+  d.buildCaustics();
 }
 
 PathTracer::~PathTracer() = default;
@@ -1582,6 +1795,15 @@ void PathTracer::setObjectTransform(size_t index, const Mat4& worldFromObject) {
   if (d.objects[index].meshLight >= 0) d.buildLightSelection();  // its area may have changed
   rtcCommitScene(d.withScene);
   if (d.sunWithScene) rtcCommitScene(d.sunWithScene);
+  d.buildCaustics();  // the glass moved, or what its caustic falls on
+}
+
+PathTracer::CausticStats PathTracer::causticStats() const {
+  CausticStats c;
+  c.photons = impl_->caustics.size();
+  c.radius = impl_->caustics.radius();
+  c.flux = impl_->caustics.totalFlux();
+  return c;
 }
 
 // One pixel's guide records, summed in double (DifferentialBuffers' guide sums).

@@ -443,7 +443,8 @@ void RenderSession::setOptions(const SessionOptions& options) {
   const TracerOptions& b = options.tracer;
   if (a.maxDepth != b.maxDepth || a.maxGlassDepth != b.maxGlassDepth ||
       a.splitGlassAtCamera != b.splitGlassAtCamera || a.russianRouletteDepth != b.russianRouletteDepth ||
-      a.clampRadiance != b.clampRadiance)
+      a.clampRadiance != b.clampRadiance || a.causticPhotons != b.causticPhotons ||
+      a.causticRadius != b.causticRadius)
     impl_->rebuild = true;
   impl_->options = options;
   impl_->token.cancel();

@@ -7,7 +7,10 @@ Per room the harness writes the assisted scene (harness.py scene, the room's own
 each run renders it with seed 1 and exactly the given samples (uniform), scored by harness.py
 score (object RMSE, adjusted RMSE and the RMSE around the object, sRGB [0,1]):
   base            the baseline build (--baseline-cli), everything estimated, --spp samples
-  estimated       this build, everything estimated, --spp samples (the benchmark's number)
+  estimated       this build, everything estimated, --spp samples (the benchmark's number),
+                  with --estimated-args "ARGS" appended if given (e.g. "--caustic-radius 0.1")
+  caustic         estimated with the caustic photon pass on (--caustic-photons 200000, or
+                  --caustic-args "ARGS" instead, e.g. "--caustic-photons 800000")
   estimated_long  this build, everything estimated, --long-spp samples, --no-grain: the product's
                   error without most of the render noise
   all_true_long   this build with the truth's lights (--replace-lights) and albedo
@@ -19,11 +22,14 @@ lights and albedo E(estimated_long)^2 - E(all_true_long)^2, the floor E(all_true
 renderer against Cycles with everything swappable true: its clamp, its caustics, the room the
 object shows), of which clamp E(all_true_long)^2 - E(cycles_clamp)^2.
 
-Writes OUT/glass.csv (a row per room), OUT/glass.png (object RMSE per room and run) and keeps
-every composite in OUT (--reuse keeps those already there).
+Writes OUT/glass.csv (a row per room), OUT/glass.png (object RMSE per room and run),
+OUT/glass_crops.png (per room, around the object: the truth, then each run at --spp, and below
+each its difference to the truth x4) and keeps every composite in OUT (--reuse keeps those
+already there).
 
 usage: bench_glass.py INLAY_CLI [--baseline-cli OTHER_CLI] [--out DIR] [--rooms t05,t13,t02,t12]
                       [--spp 16] [--long-spp 128] [--runs base,estimated,...] [--reuse]
+                      [--estimated-args "ARGS"] [--caustic-args "ARGS"]
 """
 import json, os, subprocess, sys
 
@@ -34,7 +40,7 @@ import bench_error_budget as budget  # noqa: E402
 import bench_floor as floor  # noqa: E402
 
 PY = "/usr/bin/python3"
-RUNS = ["base", "estimated", "estimated_long", "all_true_long", "cycles_clamp"]
+RUNS = ["base", "estimated", "caustic", "estimated_long", "all_true_long", "cycles_clamp"]
 
 
 def scenes_of(tools, room_dir, out, room, truth):
@@ -55,7 +61,8 @@ def measure_room(cli, base_cli, tools, room_dir, out, o, log):
     scene, scene_rear, lights = scenes_of(tools, room_dir, out, room, truth)
     oracle = ["--replace-lights", lights, "--replace-albedo", os.path.join(room_dir, "albedo.exr"), "--no-grain"]
     clamp = float(truth.get("render", {}).get("clamp", {}).get("indirect", 10.0)) * truth["exposure"]["scale"]
-    runs = {"base": (base_cli, scene, o["spp"], []), "estimated": (cli, scene, o["spp"], []),
+    runs = {"base": (base_cli, scene, o["spp"], []), "estimated": (cli, scene, o["spp"], o["estimated_args"]),
+            "caustic": (cli, scene, o["spp"], o["caustic_args"]),
             "estimated_long": (cli, scene, o["long_spp"], ["--no-grain"]),
             "all_true_long": (cli, scene_rear, o["long_spp"], oracle),
             "cycles_clamp": (cli, scene_rear, o["long_spp"], oracle + ["--clamp-indirect", "%.6g" % clamp])}
@@ -108,12 +115,48 @@ def plot(out, rows, runs):
         ax.legend(fontsize=8)
 
 
+def crops(out, sdir, names, runs):
+    """Per room: the truth and each run's composite around the object (its projected box grown by
+    half its size), and below each the difference to the truth x4 (grey: none)."""
+    import numpy as np
+    from PIL import Image
+    with benchlib.figure(os.path.join(out, "glass_crops.png"), 2 * len(names), 1 + len(runs),
+                         figsize=(2.2 * (1 + len(runs)), 2.0 * 2 * len(names)), squeeze=False) as ax:
+        if ax is None:
+            return
+        for i, room in enumerate(names):
+            truth_json = json.load(open(os.path.join(sdir, room, "truth.json")))
+            x0, y0, x1, y1 = truth_json["object"]["projected_bbox_2d"]
+            gx, gy = 0.5 * (x1 - x0), 0.5 * (y1 - y0)
+            truth = np.asarray(Image.open(os.path.join(sdir, room, "truth.png")).convert("RGB"), float) / 255
+            h, w = truth.shape[:2]
+            box = (max(0, int(x0 - gx)), max(0, int(y0 - gy)), min(w, int(x1 + gx)), min(h, int(y1 + gy)))
+            cut = lambda im: im[box[1]:box[3], box[0]:box[2]]
+            images = [("truth", truth)]
+            for run in runs:
+                png = os.path.join(out, "%s_%s.png" % (room, run))
+                if os.path.exists(png):
+                    images.append((run, np.asarray(Image.open(png).convert("RGB"), float) / 255))
+            for k in range(1 + len(runs)):
+                for a in (ax[2 * i][k], ax[2 * i + 1][k]):
+                    a.axis("off")
+                if k >= len(images):
+                    continue
+                name, im = images[k]
+                ax[2 * i][k].imshow(np.clip(cut(im), 0, 1))
+                ax[2 * i][k].set_title("%s %s" % (room, name), fontsize=8)
+                if k > 0:
+                    ax[2 * i + 1][k].imshow(np.clip(0.5 + 4 * (cut(im) - cut(truth)), 0, 1))
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     os.makedirs(out, exist_ok=True)
     base = opt("--baseline-cli", None)
     o = {"spp": int(opt("--spp", "16")), "long_spp": int(opt("--long-spp", "128")),
-         "runs": opt("--runs", ",".join(RUNS)).split(","), "reuse": "--reuse" in sys.argv[1:]}
+         "runs": opt("--runs", ",".join(RUNS)).split(","), "reuse": "--reuse" in sys.argv[1:],
+         "estimated_args": opt("--estimated-args", "").split(),
+         "caustic_args": opt("--caustic-args", "--caustic-photons 200000").split()}
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "t05,t13,t02,t12"))
     rows = []
     with open(os.path.join(out, "failures.log"), "a") as log:
@@ -123,6 +166,7 @@ def main():
             print(json.dumps(rows[-1]), flush=True)
             benchlib.write_csv(os.path.join(out, "glass.csv"), rows)
     plot(out, rows, [r for r in RUNS if r in o["runs"]])
+    crops(out, sdir, names, [r for r in ["base", "estimated", "caustic"] if r in o["runs"]])
     print("wrote", os.path.join(out, "glass.csv"))
     return 0
 
