@@ -930,7 +930,7 @@ TEST(Lighting, AWarmStartedLightFitNeedsFewerIterationsForTheSameLights) {
 // full-resolution decomposition's (within 0.01; a 2-sample render, so its noise is large).
 TEST(Lighting, AWorkingCopyAbove640x480IsDecomposedOnBlockMeans) {
   const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 2, 657);  // 657 x 492
-  ASSERT_GT(int64_t(r.photo.width) * r.photo.height, kLightingDecomposeMaxPixels);
+  ASSERT_GT(int64_t(r.photo.width) * r.photo.height, 640 * 480);
   auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
   ASSERT_TRUE(light.ok()) << light.error().message();
   LightingOptions blocks;
