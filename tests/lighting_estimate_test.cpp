@@ -896,34 +896,6 @@ TEST(Lighting, ACappedGatherIsTheSparserGrid) {
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
 }
 
-// Passes after the first start their light fit from the previous pass's (warmStartFit): fewer
-// solver iterations, the same lights and albedos within 1 %.
-TEST(Lighting, AWarmStartedLightFitNeedsFewerIterationsForTheSameLights) {
-  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 16);
-  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
-  ASSERT_TRUE(light.ok()) << light.error().message();
-  LightingOptions warm;
-  warm.gatherSamples = 16;
-  LightingOptions cold = warm;
-  cold.warmStartFit = false;
-  const auto a =
-      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, warm);
-  const auto b =
-      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, cold);
-  ASSERT_TRUE(a.ok() && b.ok());
-  ASSERT_GE(a->passes, 2);
-  EXPECT_EQ(a->passes, b->passes);
-  std::printf("light fit iterations: warm %d, cold %d\n", a->fitIterations, b->fitIterations);
-  EXPECT_LT(a->fitIterations, b->fitIterations);
-  for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(a->lights[0].radiance[c], b->lights[0].radiance[c], 0.01 * b->lights[0].radiance[c]);
-  for (size_t s = 0; s < a->surfaceMeanAlbedo.size(); ++s)
-    for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(a->surfaceMeanAlbedo[s][c], b->surfaceMeanAlbedo[s][c],
-                  0.01 * b->surfaceMeanAlbedo[s][c] + 1e-6)
-          << "surface " << s << " channel " << c;
-}
-
 // A working copy larger than a 640 x 480 photo is decomposed on 2 x 2 block means
 // (kLightingDecomposeMaxPixels; odd sizes leave partial blocks at the edges): its albedo stays in
 // [0, 1], finite, and each seen surface's mean as close to the true albedo as the

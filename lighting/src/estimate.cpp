@@ -507,7 +507,6 @@ struct LightingFit {
   std::vector<size_t> tiedTo;
   std::vector<std::array<double, 3>> rho;
   std::vector<std::array<double, 3>> L;
-  bool fitOnce = false;  // a pass's fit ran: the next starts from its radiances and albedos
   std::array<int, 3> fitIterations = {0, 0, 0};  // per channel, over the passes
 
   // 5. B / (sum L_j E_j + Gamma), unclamped, and sum L_j E_j / shading (green) per pixel.
@@ -580,7 +579,6 @@ struct LightingFit {
   bool gatherAndFit();
   void predictUnseenFromFit();
   bool fit();
-  void startFit();
   double fitStartRadiance() const;
   void tieLightsOutOfView();
   std::string fitChannel(int c, double& cost);
@@ -1279,7 +1277,12 @@ double LightingFit::fitStartRadiance() const {
 // as flat within a surface as the lights and Gamma allow (robust to texture). False when
 // cancelled.
 bool LightingFit::fit() {
-  startFit();
+  const double start = fitStartRadiance();
+  // A light kept as given starts (and stays) at its radiance; the others start at `start`.
+  for (size_t j = 0; j < C; ++j)
+    for (int c = 0; c < 3; ++c) L[j][c] = refine[j] ? start : std::max(0.0, lightsIn[j].radiance[c]);
+  for (auto& r : rho) r = {0.5, 0.5, 0.5};
+  clippedGain = {0, 0, 0};
   // The channels share no unknown: fitted side by side, each solver on one thread.
   std::array<double, 3> cost = {0, 0, 0};
   std::array<std::string, 3> failed;
@@ -1288,7 +1291,6 @@ bool LightingFit::fit() {
       if (!stop()) failed[size_t(c)] = fitChannel(c, cost[size_t(c)]);
   });
   if (stop()) return false;
-  fitOnce = true;
   for (const std::string& note : failed)
     if (!note.empty()) out.notes.push_back(note);
   out.fitIterations = fitIterations[0] + fitIterations[1] + fitIterations[2];
@@ -1296,29 +1298,6 @@ bool LightingFit::fit() {
   out.fitRmsLog = std::sqrt(2 * (cost[0] + cost[1] + cost[2]) / std::max(1.0, count));
   storeFittedLights();
   return true;
-}
-
-// The light fit's start. A light kept as given starts (and stays) at its radiance. The first
-// pass starts the others at fitStartRadiance and every albedo at 0.5; later passes
-// (LightingOptions::warmStartFit) from the previous pass's fit, whose Gamma differs from
-// theirs by the pass's change: a radiance or albedo that is not finite starts cold. The
-// clipped pixels' extra gain starts at 0 (the previous one is already in Gamma).
-void LightingFit::startFit() {
-  const bool warm = opt.warmStartFit && fitOnce;
-  double start = -1;  // computed once, when some unknown starts cold
-  for (size_t j = 0; j < C; ++j)
-    for (int c = 0; c < 3; ++c) {
-      if (!refine[j]) {
-        L[j][c] = std::max(0.0, lightsIn[j].radiance[c]);
-      } else if (!warm || !std::isfinite(L[j][c]) || L[j][c] < 0) {
-        if (start < 0) start = fitStartRadiance();
-        L[j][c] = start;
-      }
-    }
-  for (auto& r : rho)
-    for (double& v : r)
-      if (!warm || !std::isfinite(v)) v = 0.5;
-  clippedGain = {0, 0, 0};
 }
 
 // One channel of the light fit: per candidate pixel a LogResidual (Cauchy loss), the albedos,

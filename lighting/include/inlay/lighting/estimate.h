@@ -81,11 +81,6 @@ struct LightingOptions {
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
   int fitPixels = 6000;  // pixels sampled for the fit
-  // Each pass after the first starts its light fit from the previous pass's radiances and
-  // per-surface albedos (its Gamma differs by the pass's change) instead of the cold start of
-  // the first; fewer solver iterations (LightingEstimate::fitIterations). False: every pass
-  // starts cold.
-  bool warmStartFit = true;
   // The fit reads each pixel as the mean of the photo over the (2 fitWindow + 1)^2 pixels around
   // it on the same surface (0: the pixel alone): the log of a noisy or finely textured pixel is
   // biased low, which made the albedo too dark and the lights too bright (estimate.cpp; chosen on
