@@ -620,7 +620,7 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
     EXPECT_LE(stepsCpu, lighting.cpuSeconds) << name;
     EXPECT_LE(stepsWall, lighting.seconds) << name;
     const std::string line = describeStage(lighting);
-    EXPECT_NE(line.find(" rays); CPU s: surfaces "), std::string::npos) << line;
+    EXPECT_NE(line.find(" light fit iterations); CPU s: surfaces "), std::string::npos) << line;
   }
   for (const Surface& s : ps->geometry.surfaces) EXPECT_NE(s.kind, SurfaceKind::OccluderCard);
   EXPECT_TRUE(ps->lighting.suns.empty());

@@ -31,9 +31,10 @@ struct SyntheticRoom {
 // A 5 x 6 m room, 2.7 m high, camera 1.5 m up looking slightly down; a 0.8 x 0.8 m ceiling
 // panel of radiance `radiance`; rendered with `spp` samples (no objects).
 // The room, camera and albedos (no light, no photo).
-SyntheticRoom emptyRoom() {
+// `width`: the photo's width in pixels (4:3; the field of view of a 160-pixel one).
+SyntheticRoom emptyRoom(int width = 160) {
   SyntheticRoom r;
-  r.camera = levelCamera(160, 120, 130, 1.5);
+  r.camera = levelCamera(width, width * 3 / 4, 130.0 * width / 160, 1.5);
   r.camera.worldFromCamera = Eigen::AngleAxisd(-8 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
   RoomBox box;
   box.xLeftM = -2.5, box.xRightM = 2.5, box.zBackM = -5.5, box.zRearM = 0.5, box.ceilingM = 2.7;
@@ -69,8 +70,8 @@ AreaLight ceilingPanel(const Vec3& radiance) {
   return l;
 }
 
-SyntheticRoom makeRoom(const Vec3& radiance, int spp) {
-  SyntheticRoom r = emptyRoom();
+SyntheticRoom makeRoom(const Vec3& radiance, int spp, int width = 160) {
+  SyntheticRoom r = emptyRoom(width);
   r.light = ceilingPanel(radiance);
   for (const Vec3& c : r.light.cornersWorld) r.lightOutlinePx.push_back(*r.camera.project(c));
   r.photo = renderRoom(r, {r.light}, {}, spp);
@@ -1049,6 +1050,39 @@ TEST(Lighting, ACappedGatherIsTheSparserGrid) {
   }
   for (const char* name : {"surfaces", "direct light", "gather", "light fit", "decomposition"})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+}
+
+// A working copy larger than a 640 x 480 photo is decomposed on 2 x 2 block means
+// (kLightingDecomposeMaxPixels; odd sizes leave partial blocks at the edges): its albedo stays in
+// [0, 1], finite, and each seen surface's mean as close to the true albedo as the
+// full-resolution decomposition's (within 0.01; a 2-sample render, so its noise is large).
+TEST(Lighting, AWorkingCopyAbove640x480IsDecomposedOnBlockMeans) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 2, 657);  // 657 x 492
+  ASSERT_GT(int64_t(r.photo.width) * r.photo.height, 640 * 480);
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok()) << light.error().message();
+  LightingOptions blocks;
+  blocks.gatherSamples = 16;
+  LightingOptions full = blocks;
+  full.decompose.maxSolvePixels = 0;
+  const auto a =
+      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, blocks);
+  const auto b =
+      estimateLighting(r.photo, r.camera, r.geometry, {*light}, {true}, lightMaskOf(r), {}, full);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_NE(a->decomposeReport.find("solved on 2x2 blocks of the 657x492 photo"), std::string::npos)
+      << a->decomposeReport;
+  EXPECT_EQ(b->decomposeReport.find("blocks"), std::string::npos) << b->decomposeReport;
+  for (float v : a->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  for (float v : a->direct.data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
+  ASSERT_EQ(a->surfaceMeanAlbedo.size(), r.albedo.size());
+  ASSERT_EQ(b->surfaceMeanAlbedo.size(), r.albedo.size());
+  for (size_t s = 0; s < r.albedo.size(); ++s) {
+    const double errorBlocks = (a->surfaceMeanAlbedo[s] - r.albedo[s]).cwiseAbs().maxCoeff();
+    const double errorFull = (b->surfaceMeanAlbedo[s] - r.albedo[s]).cwiseAbs().maxCoeff();
+    std::printf("surface %zu: albedo error on blocks %.4f, full %.4f\n", s, errorBlocks, errorFull);
+    EXPECT_LE(errorBlocks, errorFull + 0.01) << "surface " << s;
+  }
 }
 
 // A 1 x 1 photo and a strip 1500 x 2 (a working copy of an extreme panorama): finite output or

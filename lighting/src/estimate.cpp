@@ -518,6 +518,7 @@ struct LightingFit {
   std::vector<size_t> tiedTo;
   std::vector<std::array<double, 3>> rho;
   std::vector<std::array<double, 3>> L;
+  std::array<int, 3> fitIterations = {0, 0, 0};  // per channel, over the passes
 
   // 5. B / (sum L_j E_j + Gamma), unclamped, and sum L_j E_j / shading (green) per pixel.
   ImageF shadingFree;
@@ -1549,6 +1550,7 @@ bool LightingFit::fit() {
   if (stop()) return false;
   for (const std::string& note : failed)
     if (!note.empty()) out.notes.push_back(note);
+  out.fitIterations = fitIterations[0] + fitIterations[1] + fitIterations[2];
   const double count = 3.0 * double(candidates.size());
   out.fitRmsLog = std::sqrt(2 * (cost[0] + cost[1] + cost[2]) / std::max(1.0, count));
   storeFittedLights();
@@ -1620,6 +1622,7 @@ std::string LightingFit::fitChannel(int c, double& cost) {
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   cost += summary.final_cost;
+  fitIterations[size_t(c)] += int(summary.iterations.size());
   for (size_t j = 0; j < J; ++j) L[j][c] = L[tiedTo[j]][c];
   if (summary.IsSolutionUsable()) return "";
   return "light fit (channel " + std::to_string(c) + ") failed: " + summary.message;

@@ -612,7 +612,8 @@ std::vector<StageStep> stepsOf(const LightingEstimate& e) {
 std::string gatherText(const LightingEstimate& e) {
   return std::to_string(e.passes) + (e.passes == 1 ? " pass, " : " passes, ") +
          (e.raysReused ? "the first estimate's rays replayed, " : "") + std::to_string(e.gatherPoints) +
-         " points x " + std::to_string(e.gatherSamples) + " rays";
+         " points x " + std::to_string(e.gatherSamples) + " rays, " + std::to_string(e.fitIterations) +
+         " light fit iterations";
 }
 
 std::string countOf(size_t n, const std::string& thing) {

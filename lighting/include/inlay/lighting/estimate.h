@@ -35,6 +35,21 @@ namespace inlay {
 // again (LightingOptions::reuseRays). The hits do not depend on the lights.
 struct LightingRays;
 
+// The decomposition of a working copy larger than a 640 x 480 photo runs on block means of at
+// most this many pixels, its change to the start carried back bilinearly
+// (DecomposeOptions::maxSolvePixels): 2 x 2 blocks at the 816 x 612 working copy of a 3 or 12 MP
+// photo, a quarter of the solver's work; every photo up to 640 x 480 (dev rooms, York photos,
+// the 0.3 MP example) is decomposed as before (docs/benchmarks.md, "The decomposition on block
+// means").
+inline constexpr long kLightingDecomposeMaxPixels = 640 * 480;
+
+// The lighting's decomposition options: the defaults with kLightingDecomposeMaxPixels.
+inline DecomposeOptions lightingDecomposeOptions() {
+  DecomposeOptions d;
+  d.maxSolvePixels = kLightingDecomposeMaxPixels;
+  return d;
+}
+
 struct LightingOptions {
   // Cosine-weighted rays per gathered pixel (gather.h); 0: chosen from a pilot so that Gamma's
   // relative standard error per gathered pixel is about gatherNoise.
@@ -81,7 +96,7 @@ struct LightingOptions {
   // The albedo: Retinex anchored to the fitted lights (the start), then the geometry-aware
   // objective (decompose.h) unless `objective` is false.
   RetinexOptions retinex;
-  DecomposeOptions decompose;
+  DecomposeOptions decompose = lightingDecomposeOptions();
   bool objective = true;
   // Several estimated lights whose centres are out of the photo's view share one radiance (the
   // first's): the photo shows only the sum of their light on the walls, and a free split drifts
@@ -159,7 +174,8 @@ struct LightingEstimate {
   int gatherSamples = 0;  // rays per gathered pixel used
   int gatherStride = 0;   // the gather's stride used (gatherStrideFor) and its grid's points
   int gatherPoints = 0;
-  int passes = 0;  // gather-and-fit passes run (LightingOptions::maxPasses)
+  int passes = 0;         // gather-and-fit passes run (LightingOptions::maxPasses)
+  int fitIterations = 0;  // the light fit's solver iterations, over its passes and channels
   // The rays this estimate traced or replayed (for LightingOptions::reuseRays of a refit; about
   // 70 bytes per ray that lands where the camera does not see, 4 per ray that it does: tens of
   // MB, dropped by the preparation once the refit ran). raysReused: replayed, not traced.
