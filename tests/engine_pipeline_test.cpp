@@ -439,9 +439,12 @@ TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {
 // (lighting/refine.h, outlineDisplacementBoundM).
 TEST(Engine, ThePreparationKeepsTheLightingThatFitsThePhotoBetter) {
   const SceneDoc doc = exampleDoc();
-  auto kept = preparedExample();
+  // The example's lights move less than refitMinLightMove: the refit is asked for here.
+  PrepareOptions refitting;
+  refitting.refitMinLightMove = 0;
+  auto kept = prepareScene(doc, refitting);
   ASSERT_TRUE(kept.ok()) << kept.error().message();
-  PrepareOptions always;
+  PrepareOptions always = refitting;
   always.keepBetterFit = false;
   auto refitted = prepareScene(doc, always);
   ASSERT_TRUE(refitted.ok());
@@ -653,6 +656,72 @@ TEST(Engine, ASceneWithEveryLightLockedSkipsTheRefinementAndItsRefit) {
   const auto example = preparedExample();
   ASSERT_TRUE(example.ok());
   EXPECT_TRUE(stageNamed(*example, "refine")->ran);
+}
+
+}  // namespace
+}  // namespace inlay
+
+namespace inlay {
+namespace {
+
+AreaLight squareLight(double side, const Vec3& at) {
+  AreaLight l;
+  l.cornersWorld = {at, at + Vec3(side, 0, 0), at + Vec3(side, 0, side), at + Vec3(0, 0, side)};
+  return l;
+}
+
+// PrepareOptions::refitMinLightMove's measure: a corner's largest move over its light's size
+// (the square root of its area), the largest over the lights; extreme and broken inputs give a
+// number that refits (infinite), never NaN.
+TEST(Engine, TheLargestLightMoveIsInUnitsOfEachLightsSize) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<AreaLight> lights{squareLight(1.0, {0, 2, 0}), squareLight(0.1, {1, 2, 1})};
+  EXPECT_EQ(largestLightMove(lights, lights), 0.0);
+  EXPECT_EQ(largestLightMove({}, {}), 0.0);
+  auto moved = lights;
+  for (Vec3& c : moved[0].cornersWorld) c.x() += 0.02;  // 2 % of the big light
+  EXPECT_NEAR(largestLightMove(lights, moved), 0.02, 1e-9);
+  moved[1].cornersWorld[2].z() += 0.01;  // one corner, 10 % of the small light
+  EXPECT_NEAR(largestLightMove(lights, moved), 0.1, 1e-9);
+  EXPECT_EQ(largestLightMove(lights, {lights[0]}), inf);  // not the same lights
+  auto degenerate = lights;
+  degenerate[1].cornersWorld.fill(Vec3(1, 2, 1));  // no area: any move is infinite
+  EXPECT_EQ(largestLightMove(degenerate, degenerate), 0.0);
+  EXPECT_EQ(largestLightMove(degenerate, lights), inf);
+  moved[0].cornersWorld[1].x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(largestLightMove(lights, moved), inf);
+  moved[0].cornersWorld[1].x() = 1e308;
+  EXPECT_EQ(largestLightMove(lights, moved), inf);
+}
+
+// The refit is skipped when the refinement moved no light by refitMinLightMove of its size (the
+// stage says by how much: the refined lights keep the first estimate's fit, one decomposition),
+// and runs when it moved one by more.
+TEST(Engine, TheRefitIsSkippedWhenTheLightsHardlyMoved) {
+  const auto example = preparedExample();
+  ASSERT_TRUE(example.ok());
+  const double move = largestLightMove(example->initialLights, example->refinement.lights);
+  ASSERT_GT(move, 0.0);  // the example's refinement moves its lights
+  ASSERT_TRUE(std::isfinite(move));
+  PrepareOptions skip, refit;
+  skip.refitMinLightMove = move * 1.01;
+  refit.refitMinLightMove = move * 0.99;
+  const uint64_t before = decompositionRuns();
+  auto skipped = prepareScene(exampleDoc(), skip);
+  ASSERT_TRUE(skipped.ok()) << skipped.error().message();
+  EXPECT_EQ(decompositionRuns(), before + 1);
+  const StageRecord* stage = stageNamed(*skipped, "lighting refit");
+  ASSERT_NE(stage, nullptr);
+  EXPECT_FALSE(stage->ran);
+  EXPECT_NE(describeStage(*stage).find("skipped, lights moved by at most"), std::string::npos)
+      << describeStage(*stage);
+  ASSERT_EQ(skipped->renderScene.lights.size(), skipped->refinement.lights.size());
+  for (size_t j = 0; j < skipped->refinement.lights.size(); ++j)
+    EXPECT_EQ(skipped->renderScene.lights[j].cornersWorld, skipped->refinement.lights[j].cornersWorld);
+  auto ran = prepareScene(exampleDoc(), refit);
+  ASSERT_TRUE(ran.ok()) << ran.error().message();
+  EXPECT_EQ(decompositionRuns(), before + 3);
+  EXPECT_TRUE(stageNamed(*ran, "lighting refit")->ran);
 }
 
 }  // namespace

@@ -116,6 +116,9 @@ Render options:
                           diagnostics: the refit after the light refinement is kept unless its
                           log residual is larger than the first estimate's by more than F of it
                           (default 0.016: twice the residual's spread over seeds)
+  --refit-min-move F      diagnostics: the lighting is fitted again after the light refinement
+                          only when a light's corner moved by at least F of the light's size
+                          (default 0.05; 0: any move over a millimetre)
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)
@@ -169,6 +172,7 @@ struct Args {
   bool sunsFromBounce = false;  // --suns-from-bounce
   std::optional<int> spp, seed, threads, iterations, prepareSeed;
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
+  std::optional<double> refitMinMove;            // --refit-min-move
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
@@ -217,7 +221,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
         s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
         s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--fit-unseen-ceiling" || s == "--caustic-photons" || s == "--caustic-radius") {
+        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
+        s == "--caustic-radius") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -246,6 +251,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         a.keepBetterFitTolerance = parseNumber<double>(*v);
         if (!a.keepBetterFitTolerance)
           return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
+      } else if (s == "--refit-min-move") {
+        a.refitMinMove = parseNumber<double>(*v);
+        if (!a.refitMinMove) return "--refit-min-move: '" + *v + "' is not a non-negative fraction";
       } else if (s == "--working-mp") {
         a.workingMp = parseNumber<double>(*v);
         if (!a.workingMp) return "--working-mp: '" + *v + "' is not a non-negative number of megapixels";
@@ -432,6 +440,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.sunsFromBounce = a.sunsFromBounce;
   if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
+  if (a.refitMinMove) po.refitMinLightMove = *a.refitMinMove;
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   // decompose writes the decomposition itself: at the photo's own size.
   po.workingMaxPixels = a.command == "decompose" ? 0.0

@@ -63,8 +63,8 @@ def prepare(cli, scene, out, tag, seed, reuse):
     if not (reuse and os.path.exists(rep) and os.path.exists(lj)):
         cmd = [cli, "render", scene, "-o", os.path.join(out, "%s_s%d.png" % (tag, seed)), "--quiet", "--spp", "1",
                "--seconds", "0", "--noise", "0", "--prepare-seed", str(seed), "--report", rep, "--lights-json", lj,
-               # the refit always taken: "refined" holds the refit's lights, "initial" the first's
-               "--keep-better-fit-tolerance", "1e9"]
+               # the refit always run and taken: "refined" holds the refit's lights, "initial" the first's
+               "--keep-better-fit-tolerance", "1e9", "--refit-min-move", "0"]
         if subprocess.run(cmd, capture_output=True, text=True, timeout=1800).returncode != 0:
             return None
     return rep, lj

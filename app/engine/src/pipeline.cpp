@@ -655,7 +655,13 @@ std::string photoSizeNotNeeded(const Preparation& p) {
 
 std::string refitNotNeeded(const Preparation& p) {
   if (!p.refined) return "the lights were not refined";
-  return lightsMoved(p.ps.initialLights, p.ps.lighting.lights) ? "" : "no light moved";
+  if (!lightsMoved(p.ps.initialLights, p.ps.lighting.lights)) return "no light moved";
+  const double move = largestLightMove(p.ps.initialLights, p.ps.lighting.lights);
+  if (!(move < p.opt.refitMinLightMove)) return "";  // NaN: refit
+  char buf[120];
+  std::snprintf(buf, sizeof buf, "lights moved by at most %.1f %% of their size (under %.1f %%)",
+                100 * move, 100 * p.opt.refitMinLightMove);
+  return buf;
 }
 
 // --- The stages' work ---
@@ -942,6 +948,7 @@ Status refineTheLights(Preparation& p, std::string& detail) {
 // refined positions, the radiances, Gamma and the albedo are estimated again.
 Status refitTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
+  const double move = largestLightMove(ps.initialLights, ps.lighting.lights);
   // A locked light keeps its intensity too.
   std::vector<bool> fitAgain(p.estimated);
   for (size_t i = 0; i < fitAgain.size() && i < p.doc.lights.size(); ++i)
@@ -959,11 +966,11 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   if (p.opt.keepBetterFit && refitFitsWorse(first, again->fitRmsLog, p.opt.keepBetterFitTolerance)) {
     // A routine self-check, not something the user must act on: the stage's detail (the
     // report, --verbose, the studio's log) says it, the warnings do not.
-    char buf[200];
+    char buf[240];
     std::snprintf(buf, sizeof buf,
-                  "a light moved; the first estimate fits the photo better (log residual %.5f "
-                  "against %.5f) and is kept; the refit took ",
-                  ps.lighting.fitRmsLog, again->fitRmsLog);
+                  "lights moved by at most %.1f %% of their size; the first estimate fits the photo "
+                  "better (log residual %.5f against %.5f) and is kept; the refit took ",
+                  100 * move, ps.lighting.fitRmsLog, again->fitRmsLog);
     ps.lighting.lights = ps.initialLights;
     ps.lighting.suns = ps.initialSuns;
     detail = buf + gatherText(*again);
@@ -971,11 +978,11 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   }
   ps.lighting = std::move(*again);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
-  char buf[160];
-  std::snprintf(
-      buf, sizeof buf,
-      "a light moved; the refit is kept (log residual %.5f against the first estimate's %.5f), ",
-      ps.lighting.fitRmsLog, first);
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "lights moved by at most %.1f %% of their size; the refit is kept (log residual "
+                "%.5f against the first estimate's %.5f), ",
+                100 * move, ps.lighting.fitRmsLog, first);
   detail = buf + gatherText(ps.lighting);
   return {};
 }
@@ -1205,6 +1212,24 @@ bool refitFitsWorse(double before, double after, double tolerance) {
   if (!std::isfinite(after)) return std::isfinite(before);
   const double tol = std::isnan(tolerance) ? 0.0 : std::max(0.0, tolerance);
   return std::isfinite(before) && after > before * (1 + tol);
+}
+
+double largestLightMove(const std::vector<AreaLight>& before, const std::vector<AreaLight>& after) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (before.size() != after.size()) return inf;
+  double largest = 0;
+  for (size_t j = 0; j < before.size(); ++j) {
+    const auto& b = before[j].cornersWorld;
+    double moved = 0;
+    for (size_t k = 0; k < 4; ++k) {
+      const double d = (b[k] - after[j].cornersWorld[k]).norm();
+      if (!std::isfinite(d)) return inf;
+      moved = std::max(moved, d);
+    }
+    const double size = std::sqrt(before[j].area());
+    if (moved > 0) largest = std::max(largest, size > 0 && std::isfinite(size) ? moved / size : inf);
+  }
+  return largest;
 }
 
 }  // namespace inlay

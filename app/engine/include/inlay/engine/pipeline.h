@@ -115,6 +115,10 @@ inline constexpr double kWorkingMaxPixels = 0.5e6;
 // tolerance for the refit").
 inline constexpr double kKeepBetterFitTolerance = 0.016;
 
+// PrepareOptions::refitMinLightMove's default (docs/benchmarks.md, "Skipping the light refit
+// when the lights hardly moved"): chosen on half A.
+inline constexpr double kRefitMinLightMove = 0.05;
+
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
   // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
@@ -141,6 +145,11 @@ struct PrepareOptions {
   // (the refit is kept): the fit residual's own spread over the gather's seeds
   // (kKeepBetterFitTolerance). 0: any larger residual keeps the first estimate.
   double keepBetterFitTolerance = kKeepBetterFitTolerance;
+  // The refit runs only when the refinement moved some light's corner by at least this fraction
+  // of that light's size (the square root of its area: largestLightMove); below it the refined
+  // lights keep the first estimate's fit of the room (albedo, indirect light) and the refit
+  // stage is reported skipped with the largest move. 0: every move over a millimetre refits.
+  double refitMinLightMove = kRefitMinLightMove;
   // With refineLights: each sun's strength from its lit patch against the shadowed pixels of
   // the same surface beside it (lighting/sun_ratio.h), which cancels the albedo; the gathered
   // light follows (its clipped patch's bounce scales with the sun). Kept as estimated when the
@@ -201,6 +210,12 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
 // refit). A residual that is not finite never wins; a negative or NaN tolerance counts as 0, an
 // infinite one keeps every finite refit.
 bool refitFitsWorse(double first, double refit, double tolerance);
+
+// PrepareOptions::refitMinLightMove's measure: over the lights, the largest distance a corner
+// moved from `before` to `after`, in units of that light's size (the square root of its area
+// before). Infinite when the lists differ in length, a light has no area but moved, or a corner
+// is not finite; 0 for no lights.
+double largestLightMove(const std::vector<AreaLight>& before, const std::vector<AreaLight>& after);
 
 // Meshes by file (resolved path and subdivision levels), shared between object sets.
 using MeshCache = std::map<std::string, std::shared_ptr<const TriangleMesh>>;
