@@ -695,8 +695,8 @@ TEST(Engine, TheLargestLightMoveIsInUnitsOfEachLightsSize) {
 }
 
 // The refit is skipped when the refinement moved no light by refitMinLightMove of its size (the
-// stage says by how much: the refined lights keep the first estimate's fit, one decomposition),
-// and runs when it moved one by more.
+// stage says by how much; the first estimate's lights are kept, one decomposition), and runs
+// when it moved one by more.
 TEST(Engine, TheRefitIsSkippedWhenTheLightsHardlyMoved) {
   const auto example = preparedExample();
   ASSERT_TRUE(example.ok());
@@ -715,9 +715,11 @@ TEST(Engine, TheRefitIsSkippedWhenTheLightsHardlyMoved) {
   EXPECT_FALSE(stage->ran);
   EXPECT_NE(describeStage(*stage).find("skipped, lights moved by at most"), std::string::npos)
       << describeStage(*stage);
-  ASSERT_EQ(skipped->renderScene.lights.size(), skipped->refinement.lights.size());
-  for (size_t j = 0; j < skipped->refinement.lights.size(); ++j)
-    EXPECT_EQ(skipped->renderScene.lights[j].cornersWorld, skipped->refinement.lights[j].cornersWorld);
+  ASSERT_EQ(skipped->renderScene.lights.size(), skipped->initialLights.size());
+  for (size_t j = 0; j < skipped->initialLights.size(); ++j) {
+    EXPECT_EQ(skipped->renderScene.lights[j].cornersWorld, skipped->initialLights[j].cornersWorld);
+    EXPECT_EQ(skipped->renderScene.lights[j].radiance, skipped->initialLights[j].radiance);
+  }
   auto ran = prepareScene(exampleDoc(), refit);
   ASSERT_TRUE(ran.ok()) << ran.error().message();
   EXPECT_EQ(decompositionRuns(), before + 3);

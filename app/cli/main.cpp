@@ -117,8 +117,9 @@ Render options:
                           log residual is larger than the first estimate's by more than F of it
                           (default 0.016: twice the residual's spread over seeds)
   --refit-min-move F      diagnostics: the lighting is fitted again after the light refinement
-                          only when a light's corner moved by at least F of the light's size
-                          (default 0.05; 0: any move over a millimetre)
+                          only when a light's corner moved by at least F of the light's size,
+                          else the first estimate's lights are kept (default 0.05; 0: any move
+                          over a millimetre refits)
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)

@@ -555,6 +555,9 @@ struct Preparation {
   std::vector<SunLight> suns;               // from the shafts
   LightingOptions lightingOptions;          // the lighting stage's, again for its refit
   bool refined = false;                     // the refinement ran
+  // The refinement's largest light move (largestLightMove); below PrepareOptions::
+  // refitMinLightMove the first estimate's lights are kept and the refit is skipped.
+  double refinedMove = 0;
   WorkingCopy work;
   // The image size a stage worked at when it is neither the photo's nor the working copy's
   // (the camera estimate reduces the photo itself); set by the stage, read by runStage.
@@ -653,14 +656,21 @@ std::string photoSizeNotNeeded(const Preparation& p) {
   return p.work.reduced ? "" : "the working copy is the photo";
 }
 
+// Whether the refinement moved the lights too little to fit the lighting again: then the first
+// estimate's lights are kept (refineTheLights).
+bool movedTooLittleToRefit(const Preparation& p) {
+  return p.refined && p.refinedMove < p.opt.refitMinLightMove;  // NaN: refit
+}
+
 std::string refitNotNeeded(const Preparation& p) {
   if (!p.refined) return "the lights were not refined";
-  if (!lightsMoved(p.ps.initialLights, p.ps.lighting.lights)) return "no light moved";
-  const double move = largestLightMove(p.ps.initialLights, p.ps.lighting.lights);
-  if (!(move < p.opt.refitMinLightMove)) return "";  // NaN: refit
-  char buf[120];
-  std::snprintf(buf, sizeof buf, "lights moved by at most %.1f %% of their size (under %.1f %%)",
-                100 * move, 100 * p.opt.refitMinLightMove);
+  if (!movedTooLittleToRefit(p))
+    return lightsMoved(p.ps.initialLights, p.ps.lighting.lights) ? "" : "no light moved";
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "lights moved by at most %.1f %% of their size (under %.1f %%): the first "
+                "estimate's lights are kept",
+                100 * p.refinedMove, 100 * p.opt.refitMinLightMove);
   return buf;
 }
 
@@ -936,6 +946,11 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   ps.lighting.suns = ps.refinement.suns;
   for (const auto& n : ps.refinement.notes) ps.warnings.push_back("light refinement: " + n);
   p.refined = true;
+  p.refinedMove = largestLightMove(ps.initialLights, ps.lighting.lights);
+  // The refinement fits the intensities to the direct light alone; the refit fits them again
+  // with the room's albedo and indirect light. A refinement that hardly moved the lights is
+  // not refitted (PrepareOptions::refitMinLightMove), so its intensities are not kept either.
+  if (movedTooLittleToRefit(p)) ps.lighting.lights = ps.initialLights;
   const auto locked =
       std::count_if(specs.begin(), specs.end(), [](const LightRefineSpec& s) { return s.lock; });
   detail = std::to_string(specs.size() - size_t(locked)) + " of " + countOf(specs.size(), "light") +
@@ -948,7 +963,7 @@ Status refineTheLights(Preparation& p, std::string& detail) {
 // refined positions, the radiances, Gamma and the albedo are estimated again.
 Status refitTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
-  const double move = largestLightMove(ps.initialLights, ps.lighting.lights);
+  const double move = p.refinedMove;
   // A locked light keeps its intensity too.
   std::vector<bool> fitAgain(p.estimated);
   for (size_t i = 0; i < fitAgain.size() && i < p.doc.lights.size(); ++i)
