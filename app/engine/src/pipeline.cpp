@@ -232,11 +232,21 @@ void sunsFromShadowRatio(PreparedScene& ps, const ImageF& photoLinear, const Cam
 }
 
 // Whether the refinement moved a light's corners by more than a millimetre.
+// The farthest any corner of a light moved (metres); infinity when a corner is not finite.
+double cornerMoveM(const AreaLight& before, const AreaLight& after) {
+  double moved = 0;
+  for (size_t k = 0; k < 4; ++k) {
+    const double d = (before.cornersWorld[k] - after.cornersWorld[k]).norm();
+    if (!std::isfinite(d)) return std::numeric_limits<double>::infinity();
+    moved = std::max(moved, d);
+  }
+  return moved;
+}
+
 bool lightsMoved(const std::vector<AreaLight>& before, const std::vector<AreaLight>& after) {
   if (before.size() != after.size()) return true;
   for (size_t j = 0; j < before.size(); ++j)
-    for (size_t k = 0; k < 4; ++k)
-      if ((before[j].cornersWorld[k] - after[j].cornersWorld[k]).norm() > 1e-3) return true;
+    if (cornerMoveM(before[j], after[j]) > 1e-3) return true;
   return false;
 }
 
@@ -1234,13 +1244,8 @@ double largestLightMove(const std::vector<AreaLight>& before, const std::vector<
   if (before.size() != after.size()) return inf;
   double largest = 0;
   for (size_t j = 0; j < before.size(); ++j) {
-    const auto& b = before[j].cornersWorld;
-    double moved = 0;
-    for (size_t k = 0; k < 4; ++k) {
-      const double d = (b[k] - after[j].cornersWorld[k]).norm();
-      if (!std::isfinite(d)) return inf;
-      moved = std::max(moved, d);
-    }
+    const double moved = cornerMoveM(before[j], after[j]);
+    if (!std::isfinite(moved)) return inf;
     const double size = std::sqrt(before[j].area());
     if (moved > 0) largest = std::max(largest, size > 0 && std::isfinite(size) ? moved / size : inf);
   }
