@@ -657,8 +657,14 @@ struct PathTracer::Impl {
   };
 
   struct PixelSums;
-  PixelSums startPixel(const DifferentialBuffers& buffers, int x, int y) const;
-  PathState cameraRay(const DifferentialBuffers& buffers, int x, int y, const SampleRng& rng) const;
+  void startPixel(const DifferentialBuffers& buffers, int x, int y, PixelSums& p) const;
+  // The buffers' pixel size in the camera's pixels (a preview's buffers are smaller).
+  struct PixelScale {
+    double x, y;
+  };
+  PixelScale pixelScale(const DifferentialBuffers& buffers) const;
+  Vec3 cameraDirection(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
+  PathState cameraRay(const Vec3& dir) const;
   void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
                  const Hit* firstHit, RayCounters& tileCounters) const;
   void storePixel(DifferentialBuffers& buffers, int x, int y, int count, const PixelSums& p) const;
@@ -1836,14 +1842,24 @@ struct PathTracer::Impl::PixelSums {
 
 // The camera ray of sample `rng` through pixel (x, y) of the buffers (scaled into the camera's
 // pixel frame when the buffers are a different size).
-PathTracer::Impl::PathState PathTracer::Impl::cameraRay(const DifferentialBuffers& buffers, int x, int y,
-                                                        const SampleRng& rng) const {
+PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuffers& buffers) const {
   const Camera& cam = scene.camera;
-  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
+  return {double(cam.widthPx) / buffers.width, double(cam.heightPx) / buffers.height};
+}
+
+// The direction of the camera ray of sample `rng` through pixel (x, y) of the buffers (scaled
+// into the camera's pixel frame by `scale`).
+Vec3 PathTracer::Impl::cameraDirection(int x, int y, const PixelScale& scale,
+                                       const SampleRng& rng) const {
   const auto jitter = rng.get2(0);
+  return scene.camera.directionThroughPixel(Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y));
+}
+
+// The camera ray in direction `dir`.
+PathTracer::Impl::PathState PathTracer::Impl::cameraRay(const Vec3& dir) const {
   PathState st;
-  st.origin = cam.centreWorld();
-  st.dir = cam.directionThroughPixel(Vec2((x + jitter[0]) * sx, (y + jitter[1]) * sy));
+  st.origin = scene.camera.centreWorld();
+  st.dir = dir;
   return st;
 }
 
@@ -1886,22 +1902,22 @@ void PathTracer::Impl::storePixel(DifferentialBuffers& buffers, int x, int y, in
   if (buffers.hasGuides()) p.guide.addTo(buffers, x, y);
 }
 
-PathTracer::Impl::PixelSums PathTracer::Impl::startPixel(const DifferentialBuffers& buffers, int x,
-                                                         int y) const {
-  const Camera& cam = scene.camera;
-  const double sx = double(cam.widthPx) / buffers.width, sy = double(cam.heightPx) / buffers.height;
-  PixelSums p;
-  p.photo = photoAt(int((x + 0.5) * sx), int((y + 0.5) * sy));
-  return p;
+// Sets up the sums `p` (zero, as constructed) of pixel (x, y) of the buffers.
+void PathTracer::Impl::startPixel(const DifferentialBuffers& buffers, int x, int y, PixelSums& p) const {
+  const PixelScale scale = pixelScale(buffers);
+  p.photo = photoAt(int((x + 0.5) * scale.x), int((y + 0.5) * scale.y));
 }
 
 // One pixel's samples [firstSample, firstSample + count), one ray at a time.
 void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample,
                                    int count, uint32_t seed, RayCounters& tileCounters) const {
-  PixelSums p = startPixel(buffers, x, y);
+  PixelSums p;
+  startPixel(buffers, x, y, p);
+  const PixelScale scale = pixelScale(buffers);
   for (int k = 0; k < count; ++k) {
     const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
-    addSample(p, buffers.hasGuides(), cameraRay(buffers, x, y, rng), rng, nullptr, tileCounters);
+    addSample(p, buffers.hasGuides(), cameraRay(cameraDirection(x, y, scale, rng)), rng, nullptr,
+              tileCounters);
   }
   storePixel(buffers, x, y, count, p);
 }
@@ -1914,26 +1930,25 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
   std::array<PixelSums, kPacket> sums;
   int most = 0;
   for (int i = 0; i < n; ++i)
-    sums[size_t(i)] = startPixel(buffers, x0 + i, y), most = std::max(most, count[i]);
+    startPixel(buffers, x0 + i, y, sums[size_t(i)]), most = std::max(most, count[i]);
+  const PixelScale scale = pixelScale(buffers);
   for (int k = 0; k < most; ++k) {
     auto rngOf = [&](int i) {
       return SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
     };
-    std::array<PathState, kPacket> rays;
     std::array<Vec3, kPacket> dirs;
     std::array<int, kPacket> pixel;
     int m = 0;
     for (int i = 0; i < n; ++i) {
       if (k >= count[i]) continue;
-      rays[size_t(m)] = cameraRay(buffers, x0 + i, y, rngOf(i));
-      dirs[size_t(m)] = rays[size_t(m)].dir, pixel[size_t(m)] = i, ++m;
+      dirs[size_t(m)] = cameraDirection(x0 + i, y, scale, rngOf(i)), pixel[size_t(m)] = i, ++m;
     }
     std::array<Hit, kPacket> hits;
-    castCameraPacket(m, rays[0].origin, dirs.data(), hits.data(), tileCounters);
+    castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
     for (int j = 0; j < m; ++j) {
       const int i = pixel[size_t(j)];
-      addSample(sums[size_t(i)], buffers.hasGuides(), rays[size_t(j)], rngOf(i), &hits[size_t(j)],
-                tileCounters);
+      addSample(sums[size_t(i)], buffers.hasGuides(), cameraRay(dirs[size_t(j)]), rngOf(i),
+                &hits[size_t(j)], tileCounters);
     }
   }
   for (int i = 0; i < n; ++i)
