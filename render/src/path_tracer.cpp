@@ -1848,8 +1848,6 @@ struct PathTracer::Impl::PixelSums {
   Vec3 photo;  // the photo under the pixel (the change of an object pixel)
 };
 
-// The camera ray of sample `rng` through pixel (x, y) of the buffers (scaled into the camera's
-// pixel frame when the buffers are a different size).
 PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuffers& buffers) const {
   const Camera& cam = scene.camera;
   return {double(cam.widthPx) / buffers.width, double(cam.heightPx) / buffers.height};
