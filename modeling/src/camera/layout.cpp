@@ -75,6 +75,16 @@ constexpr double kTopTolLayoutPx = 3;
 // could be a floor's receding lines: they say nothing about furniture tops.
 constexpr double kForwardShare = 0.03;
 
+// The share of a top edge that must lie on an edge for it to be a ceiling crease (showsCeiling).
+// A ceiling and a wall painted alike, lit alike, often meet in a faint crease: York P1020872's
+// covered area shows 44 % of it, receding lines above it (the ceiling's lights, the window
+// wall's head) outweighing vertical ones ten to one, and under it a floor crease on a ledge's top
+// 19.5 m away. It was 1/2; 1/3 was chosen on York half A (odd-numbered photos, even indices): the
+// lowest share no accepted box there notices, with a margin over its one accepted box whose top
+// edge has receding lines above it and little support (P1030001, a facade under power lines,
+// 28 %).
+constexpr double kCeilingSeenShare = 1.0 / 3;
+
 // A crease seen only as contrast counts a little less than a detected segment.
 constexpr double kContrastWeight = 0.8;
 
@@ -219,13 +229,13 @@ class LayoutSearch {
     double ceilingZ = 0, ceilingY = 0;              // receding and vertical line samples on the ceiling
   };
 
-  // Whether the photo shows the box's top edge as a ceiling crease: at least half of its visible
-  // part on an edge, and above it a ceiling: receding lines (panels, lights, beams; at least a
-  // quarter of the edge's length) outweighing vertical ones (a facade over a roofline, not a
-  // ceiling).
+  // Whether the photo shows the box's top edge as a ceiling crease: at least kCeilingSeenShare of
+  // its visible part on an edge, and above it a ceiling: receding lines (panels, lights, beams; at
+  // least a quarter of the edge's length) outweighing vertical ones (a facade over a roofline,
+  // not a ceiling).
   static bool showsCeiling(const Score& s) {
-    return s.topVisible > 0 && s.topSupported >= 0.5 * s.topVisible && s.ceilingZ > s.ceilingY &&
-           s.ceilingZ >= 0.25 * s.topVisible;
+    return s.topVisible > 0 && s.topSupported >= kCeilingSeenShare * s.topVisible &&
+           s.ceilingZ > s.ceilingY && s.ceilingZ >= 0.25 * s.topVisible;
   }
   // Why the box of parameters t (scored s) is implausible (BoxRules); empty when it is not.
   // With the top edge held (the search's second pass after a ceiling refusal) it is a ceiling.
