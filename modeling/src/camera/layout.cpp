@@ -75,6 +75,16 @@ constexpr double kTopTolLayoutPx = 3;
 // could be a floor's receding lines: they say nothing about furniture tops.
 constexpr double kForwardShare = 0.03;
 
+// The share of a top edge that must lie on an edge for it to be a ceiling crease (showsCeiling).
+// A ceiling and a wall painted alike, lit alike, often meet in a faint crease: York P1020872's
+// covered area shows 44 % of it, receding lines above it (the ceiling's lights, the window
+// wall's head) outweighing vertical ones ten to one, and under it a floor crease on a ledge's top
+// 19.5 m away. It was 1/2; 1/3 was chosen on York half A (odd-numbered photos, even indices): the
+// lowest share no accepted box there notices, with a margin over its one accepted box whose top
+// edge has receding lines above it and little support (P1030001, a facade under power lines,
+// 28 %).
+constexpr double kCeilingSeenShare = 1.0 / 3;
+
 // A crease seen only as contrast counts a little less than a detected segment.
 constexpr double kContrastWeight = 0.8;
 
@@ -219,13 +229,13 @@ class LayoutSearch {
     double ceilingZ = 0, ceilingY = 0;              // receding and vertical line samples on the ceiling
   };
 
-  // Whether the photo shows the box's top edge as a ceiling crease: at least half of its visible
-  // part on an edge, and above it a ceiling: receding lines (panels, lights, beams; at least a
-  // quarter of the edge's length) outweighing vertical ones (a facade over a roofline, not a
-  // ceiling).
+  // Whether the photo shows the box's top edge as a ceiling crease: at least kCeilingSeenShare of
+  // its visible part on an edge, and above it a ceiling: receding lines (panels, lights, beams; at
+  // least a quarter of the edge's length) outweighing vertical ones (a facade over a roofline,
+  // not a ceiling).
   static bool showsCeiling(const Score& s) {
-    return s.topVisible > 0 && s.topSupported >= 0.5 * s.topVisible && s.ceilingZ > s.ceilingY &&
-           s.ceilingZ >= 0.25 * s.topVisible;
+    return s.topVisible > 0 && s.topSupported >= kCeilingSeenShare * s.topVisible &&
+           s.ceilingZ > s.ceilingY && s.ceilingZ >= 0.25 * s.topVisible;
   }
   // Why the box of parameters t (scored s) is implausible (BoxRules); empty when it is not.
   // With the top edge held (the search's second pass after a ceiling refusal) it is a ceiling.
@@ -871,6 +881,15 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   return true;
 }
 
+// A corner in a warning: "(x, y)", or "(x, y), outside the photo".
+std::string cornerText(const Vec2& p, double W, double H) {
+  char b[96];
+  const bool inside = p.x() >= -0.5 && p.y() >= -0.5 && p.x() <= W + 0.5 &&
+                      p.y() <= H + 0.5;  // as printed
+  std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", p.x(), p.y(), inside ? "" : ", outside the photo");
+  return b;
+}
+
 // When the automatic box's floor crease is in view but nothing in the photo marks it (every
 // candidate hidden behind furniture, or no horizontal line below the horizon at all): a
 // sentence for CameraEstimate::warnings naming the corners to drag; empty otherwise.
@@ -880,18 +899,33 @@ std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<V
   // accepts warns (a facade's faint base along a sidewalk, P1080005, has 3 %).
   constexpr double kSeenShare = 0.02;
   if (!(s.bottomVisible > 0) || s.bottomSupported >= kSeenShare * s.bottomVisible) return {};
-  auto where = [&](const Vec2& p) {
-    char b[96];
-    const bool inside = p.x() >= 0 && p.y() >= 0 && p.x() <= W && p.y() <= H;
-    std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", p.x(), p.y(), inside ? "" : ", outside the photo");
-    return std::string(b);
-  };
   char buf[160];
   std::snprintf(buf, sizeof buf, "%.0f%%", 100 * s.bottomSupported / s.bottomVisible);
   return "no floor crease is seen along the back wall's bottom edge (" + std::string(buf) +
          " of it on a line or an edge in the photo): the room's depth is a guess; drag the back "
          "wall's bottom corners, now at " +
-         where(c[3]) + " and " + where(c[2]) + ", onto the crease where the floor meets the far wall";
+         cornerText(c[3], W, H) + " and " + cornerText(c[2], W, H) +
+         ", onto the crease where the floor meets the far wall";
+}
+
+// When the automatic box's floor crease lies below the photo (both bottom corners at or below its
+// bottom edge, no part of the crease in view): the box shows no floor, everything in the photo's
+// lower part is back wall. Right for a wall photographed from close by; wrong, and silent until
+// now, when the only lines below the eye are furniture (tops with legs hanging from them: no
+// crease to hold the edge; York P1080025, P1080049, P1040801, all rejected boxes). A sentence
+// for CameraEstimate::warnings; empty otherwise.
+std::string floorOutOfViewWarning(const LayoutSearch::Score& s, const Camera& cam,
+                                  const std::array<Vec2, 4>& c) {
+  const double W = cam.widthPx, H = cam.heightPx;
+  if (s.bottomVisible > 0 || !(c[2].y() >= H && c[3].y() >= H)) return {};
+  const BoxSize b = boxSizeOf(cam, c);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.1f m", b.depthM);
+  return "the back wall's foot lies below the photo (the wall " + std::string(b.ok ? buf : "?") +
+         " away): the box shows no floor, and everything in the photo's lower part is taken for "
+         "the back wall; if the photo shows the floor, drag the back wall's bottom corners, now at " +
+         cornerText(c[3], W, H) + " and " + cornerText(c[2], W, H) +
+         ", onto the crease where the floor meets the far wall";
 }
 
 // The share of the box the photo supports: its visible edges' support and its faces' agreement
@@ -1069,7 +1103,10 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   out.cornersPx = c;
   out.ok = true;
   out.score01 = supportedShare(best.first);
-  if (!lp.isFixed[1] && !in.startCornersPx) out.unseenCrease = unseenCreaseWarning(best.first, c, W, H);
+  if (!lp.isFixed[1] && !in.startCornersPx) {
+    out.unseenCrease = unseenCreaseWarning(best.first, c, W, H);
+    if (out.unseenCrease.empty()) out.unseenCrease = floorOutOfViewWarning(best.first, cam, c);
+  }
   return out;
 }
 

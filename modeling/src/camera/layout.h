@@ -53,8 +53,9 @@ struct LayoutResult {
   // When the best-supported box was refused as implausible: why, and what replaced it (a
   // sentence for CameraEstimate::warnings); empty otherwise.
   std::string refused;
-  // When the automatic box's floor crease is in view but nothing in the photo marks it: what
-  // to do (a sentence for CameraEstimate::warnings); empty otherwise.
+  // When the automatic box's floor crease is in view but nothing in the photo marks it, or lies
+  // below the photo (the box shows no floor): what to do (a sentence for
+  // CameraEstimate::warnings); empty otherwise.
   std::string unseenCrease;
 };
 
