@@ -582,6 +582,13 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
   QCOMPARE(stageLine(unknown),
            QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "
                           "template has)"));
+  // The decomposition's note when it stops at its cap (the example's preparation says it).
+  QCOMPARE(engineText(QStringLiteral(
+               "lighting: decomposition: not converged: stopped by the iteration cap after 30 "
+               "iterations (1.40 s): primal residual 3.40e-04, dual 6.53e-02, tolerance 1.0e-04")),
+           QStringLiteral("Beleuchtung: Zerlegung: nicht konvergiert: angehalten durch die "
+                          "Iterationsgrenze nach 30 Iterationen (1.40 s): primales Residuum "
+                          "3.40e-04, duales 6.53e-02, Toleranz 1.0e-04"));
   QVERIFY(installTranslators(QStringLiteral("fr")));
   QCOMPARE(stageLine(shafts), QStringLiteral("rayons de soleil : ignorée, aucun soleil marqué"));
   // Every stage's and step's name is translated (the same word only where it is in French).
@@ -615,6 +622,8 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
   const QString log = whole.mid(from);
   const PreparedScene* prepared = window.document()->prepared();
   QVERIFY(prepared && prepared->stages.size() >= 10);
+  for (const QString& w : window.document()->warnings())
+    QVERIFY2(!log.contains(w) && log.contains(engineText(w)), qPrintable(w));
   for (const StageRecord& s : prepared->stages) {
     const QString english = QString::fromStdString(describeStage(s));
     const QString german = stageLine(s);

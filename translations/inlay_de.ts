@@ -501,432 +501,457 @@
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
+        <translation>nicht konvergiert: angehalten durch %1 nach %2 Iterationen (%3 s): primales Residuum %4, duales %5, Toleranz %6</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the iteration cap</source>
+        <translation>die Iterationsgrenze</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>non-finite residuals</source>
+        <translation>nicht endliche Residuen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>cancellation</source>
+        <translation>den Abbruch</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>noise level</source>
         <translation>Rauschpegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>edge</source>
         <translation>Kanten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>none marked</source>
         <translation>keine markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>no sun marked</source>
         <translation>keine Sonne markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
         <source>none inserted</source>
         <translation>keine eingefügt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>turned off</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>no light marked</source>
         <translation>kein Licht markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="141"/>
         <source>every light locked</source>
         <translation>jedes Licht gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>the working copy is the photo</source>
         <translation>die Arbeitskopie ist das Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
         <source>the lights were not refined</source>
         <translation>die Lichter wurden nicht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>no light moved</source>
         <translation>kein Licht bewegt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="137"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>linear photo</source>
         <translation>lineares Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>the photo area-averaged</source>
         <translation>das Foto flächengemittelt verkleinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
         <source>the photo&apos;s own size</source>
         <translation>die eigene Größe des Fotos</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>estimated from the photo</source>
         <translation>aus dem Foto geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <source>decomposition</source>
+        <translation>Zerlegung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="264"/>
+        <location filename="../app/studio/engine_text.cpp" line="273"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2768,22 +2793,22 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Albedo je Pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
         <source>; CPU s: %1</source>
         <translation>; CPU-s: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="63"/>
+        <location filename="../app/studio/stage_text.cpp" line="65"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="64"/>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1: %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="71"/>
+        <location filename="../app/studio/stage_text.cpp" line="74"/>
         <source>at %1 x %2 px</source>
         <translation>bei %1 x %2 px</translation>
     </message>
@@ -3084,48 +3109,53 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="55"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="57"/>
+        <location filename="../app/studio/main.cpp" line="60"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="61"/>
+        <location filename="../app/studio/main.cpp" line="64"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="65"/>
+        <location filename="../app/studio/main.cpp" line="68"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>Stattdessen: Render-Sekunden des angezeigten Bildes, auf die gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="73"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
+        <source>Show the Log dock across the bottom of the window.</source>
+        <translation>Das Protokoll über die ganze Breite unten im Fenster zeigen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="79"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="82"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="94"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
-        <location filename="../app/studio/main.cpp" line="109"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
+        <location filename="../app/studio/main.cpp" line="116"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

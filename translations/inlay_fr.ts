@@ -501,432 +501,457 @@
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
+        <translation>non convergée : arrêtée par %1 après %2 itérations (%3 s) : résidu primal %4, dual %5, tolérance %6</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the iteration cap</source>
+        <translation>la limite d&apos;itérations</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>non-finite residuals</source>
+        <translation>des résidus non finis</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>cancellation</source>
+        <translation>l&apos;annulation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>noise level</source>
         <translation>niveau de bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>edge</source>
         <translation>contours</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>none marked</source>
         <translation>aucun marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>no sun marked</source>
         <translation>aucun soleil marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
         <source>none inserted</source>
         <translation>aucun inséré</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>turned off</source>
         <translation>désactivé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>no light marked</source>
         <translation>aucune lumière marquée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="141"/>
         <source>every light locked</source>
         <translation>chaque lumière verrouillée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>the working copy is the photo</source>
         <translation>la copie de travail est la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
         <source>the lights were not refined</source>
         <translation>les lumières n&apos;ont pas été affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>no light moved</source>
         <translation>aucune lumière déplacée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="137"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>linear photo</source>
         <translation>photo linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>the photo area-averaged</source>
         <translation>la photo réduite par moyenne de surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
         <source>the photo&apos;s own size</source>
         <translation>la taille propre de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>estimated from the photo</source>
         <translation>estimée d&apos;après la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <source>decomposition</source>
+        <translation>décomposition</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="264"/>
+        <location filename="../app/studio/engine_text.cpp" line="273"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -2768,22 +2793,22 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>albédo par pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
         <source>; CPU s: %1</source>
         <translation> ; s CPU : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="63"/>
+        <location filename="../app/studio/stage_text.cpp" line="65"/>
         <source>%1: skipped, %2</source>
         <translation>%1 : ignorée, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="64"/>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1 : %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="71"/>
+        <location filename="../app/studio/stage_text.cpp" line="74"/>
         <source>at %1 x %2 px</source>
         <translation>à %1 x %2 px</translation>
     </message>
@@ -3084,48 +3109,53 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="55"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="57"/>
+        <location filename="../app/studio/main.cpp" line="60"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="61"/>
+        <location filename="../app/studio/main.cpp" line="64"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="65"/>
+        <location filename="../app/studio/main.cpp" line="68"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>À la place : secondes de rendu de l&apos;image affichée à attendre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="73"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
+        <source>Show the Log dock across the bottom of the window.</source>
+        <translation>Afficher le journal sur toute la largeur du bas de la fenêtre.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="79"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="82"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="94"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
-        <location filename="../app/studio/main.cpp" line="109"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
+        <location filename="../app/studio/main.cpp" line="116"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

@@ -14,7 +14,7 @@ constexpr const char* kContext = "inlay::studio::EngineText";
 // The engine's sentences a studio user meets, exactly as the engine writes them, with %1, %2,
 // ... (in order) where it puts a number, a key, a name or a nested reason. Keep in step with
 // the engine's strings (modeling/src/io/mesh.cpp, app/engine/src/pipeline.cpp,
-// lighting/src/estimate.cpp and refine.cpp, modeling/src/camera/response.cpp and
+// lighting/src/estimate.cpp, refine.cpp and decompose.cpp, modeling/src/camera/response.cpp and
 // noise_level.cpp): a sentence changed there stays English here.
 const char* const kSentences[] = {
     // Model files refused by the readers (the studio adds the file name).
@@ -76,6 +76,14 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the photo's direct light is black: the lights are fitted to darkness"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement failed (%1): the start is kept"),
+    // The decomposition's report when it stops early (lighting/src/decompose.cpp; a lighting
+    // note under the head "decomposition").
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, "
+                      "dual %5, tolerance %6"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the iteration cap"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "non-finite residuals"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "cancellation"),
     // The camera response estimate's decisions and warnings (modeling/src/camera/response.cpp
     // and noise_level.cpp; the Camera Response dock's details). studio_translation_test forces
     // each of them out of the estimate and fails on one that stays English.
@@ -196,6 +204,7 @@ const char* const kHeads[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting (refit)"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "decomposition"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "layout"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "camera response"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "kept sRGB"),

@@ -52,7 +52,9 @@ QString stepsText(const std::vector<StageStep>& steps) {
   QStringList shown;
   for (const StageStep& s : steps)
     shown << QStringLiteral("%1 %2").arg(nameOf(s.name)).arg(s.cpuSeconds, 0, 'f', 2);
-  return shown.isEmpty() ? QString() : QCoreApplication::translate("inlay::studio::StageText", "; CPU s: %1").arg(shown.join(QStringLiteral(", ")));
+  return shown.isEmpty() ? QString()
+                         : QCoreApplication::translate("inlay::studio::StageText", "; CPU s: %1")
+                               .arg(shown.join(QStringLiteral(", ")));
 }
 
 }  // namespace
@@ -60,7 +62,8 @@ QString stepsText(const std::vector<StageStep>& steps) {
 QString stageLine(const StageRecord& stage) {
   const QString name = nameOf(stage.name);
   if (!stage.ran)
-    return QCoreApplication::translate("inlay::studio::StageText", "%1: skipped, %2").arg(name, engineStageText(QString::fromStdString(stage.reason)));
+    return QCoreApplication::translate("inlay::studio::StageText", "%1: skipped, %2")
+        .arg(name, engineStageText(QString::fromStdString(stage.reason)));
   QString line = QCoreApplication::translate("inlay::studio::StageText", "%1: %2 s, CPU %3 s")
                      .arg(name)
                      .arg(stage.seconds, 0, 'f', 3)
@@ -68,7 +71,9 @@ QString stageLine(const StageRecord& stage) {
   if (!stage.detail.empty())
     line += QStringLiteral(" (%1)").arg(engineStageText(QString::fromStdString(stage.detail)));
   if (stage.reducedImage)
-    line += QLatin1Char(' ') + QCoreApplication::translate("inlay::studio::StageText", "at %1 x %2 px").arg(stage.workingWidth).arg(stage.workingHeight);
+    line += QLatin1Char(' ') + QCoreApplication::translate("inlay::studio::StageText", "at %1 x %2 px")
+                                   .arg(stage.workingWidth)
+                                   .arg(stage.workingHeight);
   return line + stepsText(stage.steps);
 }
 
