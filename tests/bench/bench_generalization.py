@@ -559,6 +559,7 @@ def plot_samples(out, rows):
     with benchlib.figure(os.path.join(out, "generalization_samples.png"), 1, 2, figsize=(14, 4.8)) as ax:
         if ax is None:
             return
+        labelled = set()
         for i, room in enumerate(rooms):
             r = next(r for r in sel if r["room"] == room)
             c = "C0" if r["half"] == "A" else "C1"
@@ -566,7 +567,10 @@ def plot_samples(out, rows):
             for suffix, marker, label in runs:
                 e, t = r.get("object_rmse" + suffix), r.get("render%s_wall_s" % suffix)
                 if isinstance(e, float):
-                    ax[0].plot(i, e, marker, color=c, ms=7, label=label if i == 0 else None)
+                    ax[0].plot(i, e, marker, color="grey" if label not in labelled else c, ms=7,
+                               label=None if label in labelled else label)
+                    ax[0].plot(i, e, marker, color=c, ms=7)
+                    labelled.add(label)
                     if isinstance(t, float):
                         pts.append((t, e, marker))
             ax[1].plot([p[0] for p in pts], [p[1] for p in pts], "-", color=c, alpha=0.5)
