@@ -7,21 +7,24 @@
 // (numbers, file names). The undo history (two edits, one undone) follows too: every command's
 // text, the Edit menu's Undo/Redo entries and the toolbar buttons' tooltips are the new
 // language's, built from the command's source text. Switching back to English gives the
-// English texts again. The Log dock's stage lines (the engine's timings) are English by design
-// and not collected; the Camera Response dock's note is collected like any label.
+// English texts again. The Camera Response dock's note is collected like any label.
 //
 // The engine's messages follow the language too (engineMessagesFollowTheLanguage): every engine
 // sentence the studio knows has a German and a French translation; in French a refused model
 // file's dialog (an OBJ with a NaN) and a preparation warning (no light outlined) in the status
 // bar, its tooltip and the Log dock are French, while the engine still writes English. Every
 // sentence the camera response estimate writes, each forced out of it by a synthetic photo and
-// its options, is translated too (responseEstimateSentencesFollowTheLanguage).
+// its options, is translated too (responseEstimateSentencesFollowTheLanguage). The Log dock's
+// stage lines (what each stage of the preparation did, or why it was skipped) are the CLI's
+// `--verbose` lines in English and the language's in French and German, every part of them
+// (logStageLinesFollowTheLanguage).
 #include "docks.h"
 #include "document.h"
 #include "engine_text.h"
 #include "i18n.h"
 #include "log_dock.h"
 #include "main_window.h"
+#include "stage_text.h"
 #include "status_bar.h"
 #include "steps_dock.h"
 #include "viewport.h"
@@ -311,6 +314,7 @@ class StudioTranslationTest : public QObject {
   void everyTextFollowsTheLanguage();
   void engineMessagesFollowTheLanguage();
   void responseEstimateSentencesFollowTheLanguage();
+  void logStageLinesFollowTheLanguage();
   void cleanupTestCase() {
     window_.reset();
     removeTranslators();
@@ -402,8 +406,12 @@ void StudioTranslationTest::engineMessagesFollowTheLanguage() {
   const char* ctx = "inlay::studio::EngineText";
   // Every sentence and head the studio knows is in both catalogues (the same text only where it
   // is the same in that language).
-  const std::map<QString, QStringList> same = {{QStringLiteral("fr"), {QStringLiteral("face %1")}},
-                                               {QStringLiteral("de"), {QStringLiteral("%1: %2")}}};
+  const QStringList units = {QStringLiteral("%1 x %2 px"), QStringLiteral("%1 x %2 m")};
+  const std::map<QString, QStringList> same = {
+      {QStringLiteral("fr"), QStringList{QStringLiteral("face %1"), QStringLiteral("%1 surface"),
+                                         QStringLiteral("%1 surfaces"), QStringLiteral("%1 passes")} +
+                                 units},
+      {QStringLiteral("de"), QStringList{QStringLiteral("%1: %2")} + units}};
   for (const QString& language : {QStringLiteral("fr"), QStringLiteral("de")}) {
     QVERIFY(installTranslators(language));
     for (const QString& t : engineTemplates())
@@ -505,6 +513,132 @@ void StudioTranslationTest::responseEstimateSentencesFollowTheLanguage() {
            QStringLiteral("sRGB conservée : la courbe ajustée toe_shoulder (power 0.996, toe 0.541, "
                           "shoulder 6.11) ne réduit le résidu (niveau de bruit) que de 0.7113 "
                           "à 0.3843"));
+  removeTranslators();
+}
+
+namespace {
+
+StageRecord skippedStage(const char* name, const char* reason) {
+  StageRecord s;
+  s.name = name;
+  s.reason = reason;
+  return s;
+}
+
+StageRecord stageThatRan(const char* name, const char* detail) {
+  StageRecord s;
+  s.name = name;
+  s.ran = true;
+  s.seconds = 20.1;
+  s.cpuSeconds = 38.9;
+  s.detail = detail;
+  return s;
+}
+
+// Whether `english` (a stage's reason or detail) has words to translate: more than numbers, keys
+// ("camera.response") and the units x, px, m, s.
+bool hasWords(const QString& english) {
+  static const QRegularExpression word(QStringLiteral("(?<![\\w.])[A-Za-z]{2,}(?![\\w.])"));
+  for (auto it = word.globalMatch(english); it.hasNext();)
+    if (it.next().captured() != QLatin1String("px")) return true;
+  return false;
+}
+
+}  // namespace
+
+// The Log dock's stage lines: in English exactly the CLI's (describeStage); in German and French
+// the stage's name, the frame, the reason, every part of the detail and the lighting's steps.
+void StudioTranslationTest::logStageLinesFollowTheLanguage() {
+  StageRecord lighting = stageThatRan(
+      "lighting", "1 light, 0 suns, 5 passes, 11834 points x 36 rays, 12 light fit iterations");
+  lighting.reducedImage = true;
+  lighting.workingWidth = 816;
+  lighting.workingHeight = 612;
+  lighting.steps = {{"surfaces", 0.01, 0.05}, {"gather", 1.5, 3.1}};
+  const StageRecord refit = stageThatRan(
+      "lighting refit",
+      "lights moved by at most 7.5 % of their size; the first estimate fits the photo better (log "
+      "residual 0.05920 against 0.06510) and is kept; the refit took 3 passes, the first "
+      "estimate's rays replayed, 11834 points x 36 rays, 9 light fit iterations");
+  const StageRecord shafts = skippedStage("shafts", "no sun marked");
+  const StageRecord unknown = stageThatRan("camera", "estimated from the photo, a part no template has");
+  removeTranslators();
+  for (const StageRecord& s : {lighting, refit, shafts, unknown})
+    QCOMPARE(stageLine(s), QString::fromStdString(describeStage(s)));
+
+  QVERIFY(installTranslators(QStringLiteral("de")));
+  QCOMPARE(stageLine(shafts), QStringLiteral("Sonnenstrahlen: übersprungen, keine Sonne markiert"));
+  QCOMPARE(stageLine(lighting),
+           QStringLiteral("Beleuchtung: 20.100 s, CPU 38.900 s (1 Licht, 0 Sonnen, 5 Durchgänge, "
+                          "11834 Punkte x 36 Strahlen, 12 Iterationen der Lichtanpassung) bei 816 x "
+                          "612 px; CPU-s: Flächen 0.05, Sammeln 3.10"));
+  QCOMPARE(stageLine(refit),
+           QStringLiteral("Neuanpassung der Beleuchtung: 20.100 s, CPU 38.900 s (Lichter um höchstens "
+                          "7.5 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto "
+                          "(Log-Residuum 0.05920 gegen 0.06510) und bleibt; die Neuanpassung brauchte "
+                          "3 Durchgänge, die Strahlen der ersten Schätzung wiederverwendet, 11834 "
+                          "Punkte x 36 Strahlen, 9 Iterationen der Lichtanpassung)"));
+  // A detail with a part no template knows stays English whole, never half translated.
+  QCOMPARE(stageLine(unknown),
+           QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "
+                          "template has)"));
+  // The decomposition's note when it stops at its cap (the example's preparation says it).
+  QCOMPARE(engineText(QStringLiteral(
+               "lighting: decomposition: not converged: stopped by the iteration cap after 30 "
+               "iterations (1.40 s): primal residual 3.40e-04, dual 6.53e-02, tolerance 1.0e-04")),
+           QStringLiteral("Beleuchtung: Zerlegung: nicht konvergiert: angehalten durch die "
+                          "Iterationsgrenze nach 30 Iterationen (1.40 s): primales Residuum "
+                          "3.40e-04, duales 6.53e-02, Toleranz 1.0e-04"));
+  QVERIFY(installTranslators(QStringLiteral("fr")));
+  QCOMPARE(stageLine(shafts), QStringLiteral("rayons de soleil : ignorée, aucun soleil marqué"));
+  // Every stage's and step's name is translated (the same word only where it is in French).
+  const std::map<QString, QStringList> same = {
+      {QStringLiteral("fr"),
+       {QStringLiteral("photo"), QStringLiteral("surfaces"), QStringLiteral("grain")}},
+      {QStringLiteral("de"), {}}};
+  for (const QString& language : {QStringLiteral("fr"), QStringLiteral("de")}) {
+    QVERIFY(installTranslators(language));
+    for (const QString& n : stageNames())
+      if (!same.at(language).contains(n))
+        QVERIFY2(QCoreApplication::translate("inlay::studio::StageText", n.toUtf8().constData()) != n,
+                 qPrintable(language + QStringLiteral(": ") + n));
+  }
+
+  // The example prepared again under German: the Log dock shows each stage's German line, and
+  // no reason or detail with words in it is left English.
+  if (exampleScene().isEmpty()) QSKIP("the bundled example is not found");
+  removeTranslators();
+  QVERIFY(preparedExample());
+  MainWindow& window = *window_;
+  switchTo(QStringLiteral("de"), window);
+  window.document()->prepare();
+  QVERIFY2(waitReady(window.document(), waitMs(120000)), qPrintable(window.document()->prepareError()));
+  // The last preparation's block: from its first line ("HH:mm:ss Prepared the scene in ...").
+  const QString whole = window.logDock()->text();
+  static const QRegularExpression blockStart(QStringLiteral("^\\d\\d:\\d\\d:\\d\\d "),
+                                             QRegularExpression::MultilineOption);
+  qsizetype from = 0;
+  for (auto it = blockStart.globalMatch(whole); it.hasNext();) from = it.next().capturedStart();
+  const QString log = whole.mid(from);
+  const PreparedScene* prepared = window.document()->prepared();
+  QVERIFY(prepared && prepared->stages.size() >= 10);
+  for (const QString& w : window.document()->warnings())
+    QVERIFY2(!log.contains(w) && log.contains(engineText(w)), qPrintable(w));
+  for (const StageRecord& s : prepared->stages) {
+    const QString english = QString::fromStdString(describeStage(s));
+    const QString german = stageLine(s);
+    QVERIFY2(german != english, qPrintable(english));
+    QVERIFY2(log.contains(QStringLiteral("  ") + german + QLatin1Char('\n')) ||
+                 log.endsWith(QStringLiteral("  ") + german),
+             qPrintable(german + QStringLiteral(" not in the log:\n") + log));
+    QVERIFY2(!log.contains(english), qPrintable(english));
+    for (const std::string& part : {s.reason, s.detail}) {
+      const QString text = QString::fromStdString(part);
+      if (hasWords(text)) QVERIFY2(engineStageText(text) != text, qPrintable(english));
+    }
+  }
+  StepLog shots(QStringLiteral("studio_translation_artifacts/log"));
+  QVERIFY(shots.shot(window.logDock(), QStringLiteral("log_de")));
   removeTranslators();
 }
 

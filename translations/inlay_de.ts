@@ -501,172 +501,457 @@
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
+        <translation>nicht konvergiert: angehalten durch %1 nach %2 Iterationen (%3 s): primales Residuum %4, duales %5, Toleranz %6</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the iteration cap</source>
+        <translation>die Iterationsgrenze</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>non-finite residuals</source>
+        <translation>nicht endliche Residuen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>cancellation</source>
+        <translation>den Abbruch</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>noise level</source>
         <translation>Rauschpegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>edge</source>
         <translation>Kanten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <source>none marked</source>
+        <translation>keine markiert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <source>no sun marked</source>
+        <translation>keine Sonne markiert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <source>none inserted</source>
+        <translation>keine eingefügt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <source>the lights are kept as estimated (initial lights asked for)</source>
+        <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <source>turned off</source>
+        <translation>ausgeschaltet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
+        <source>no light marked</source>
+        <translation>kein Licht markiert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <source>every light locked or given (&quot;refine&quot;: false)</source>
+        <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <source>every light locked</source>
+        <translation>jedes Licht gesperrt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <source>the working copy is the photo</source>
+        <translation>die Arbeitskopie ist das Foto</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <source>the lights were not refined</source>
+        <translation>die Lichter wurden nicht verfeinert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <source>no light moved</source>
+        <translation>kein Licht bewegt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
+        <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <source>%1 x %2 px</source>
+        <translation>%1 x %2 px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <source>linear photo</source>
+        <translation>lineares Foto</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <source>estimated</source>
+        <translation>geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <source>the photo area-averaged</source>
+        <translation>das Foto flächengemittelt verkleinert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <source>the photo&apos;s own size</source>
+        <translation>die eigene Größe des Fotos</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <source>estimated from the photo</source>
+        <translation>aus dem Foto geschätzt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <source>the file&apos;s vanishing points and back wall</source>
+        <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <source>%1 x %2 m</source>
+        <translation>%1 x %2 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <source>%1 m high</source>
+        <translation>%1 m hoch</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <source>%1 matte</source>
+        <translation>%1 Maske</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <source>%1 mattes</source>
+        <translation>%1 Masken</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <source>%1 surface built</source>
+        <translation>%1 Fläche gebaut</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <source>%1 surfaces built</source>
+        <translation>%1 Flächen gebaut</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <source>%1 surface</source>
+        <translation>%1 Fläche</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <source>%1 surfaces</source>
+        <translation>%1 Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <source>%1 reflective</source>
+        <translation>%1 spiegelnd</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <source>%1 outlined</source>
+        <translation>%1 umrissen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <source>%1 placed in 3D</source>
+        <translation>%1 in 3D platziert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <source>%1 sun</source>
+        <translation>%1 Sonne</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <source>%1 suns</source>
+        <translation>%1 Sonnen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <source>%1 sky through an unseen window</source>
+        <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <source>%1 skies through unseen windows</source>
+        <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <source>%1 light</source>
+        <translation>%1 Licht</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <source>%1 lights</source>
+        <translation>%1 Lichter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <source>%1 pass</source>
+        <translation>%1 Durchgang</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <source>%1 passes</source>
+        <translation>%1 Durchgänge</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <source>the first estimate&apos;s rays replayed</source>
+        <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <source>%1 points x %2 rays</source>
+        <translation>%1 Punkte x %2 Strahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <source>%1 light fit iterations</source>
+        <translation>%1 Iterationen der Lichtanpassung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <source>%1 of %2 light refined</source>
+        <translation>%1 von %2 Licht verfeinert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <source>%1 of %2 lights refined</source>
+        <translation>%1 von %2 Lichtern verfeinert</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <source>%1 evaluation</source>
+        <translation>%1 Auswertung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <source>%1 evaluations</source>
+        <translation>%1 Auswertungen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
+        <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
+        <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <source>from %1 x %2 px: maps %3 s</source>
+        <translation>aus %1 x %2 px: Karten %3 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <source>surfaces cast %1 s</source>
+        <translation>Flächen je Pixel %1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <source>%1 object</source>
+        <translation>%1 Objekt</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <source>%1 objects</source>
+        <translation>%1 Objekte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <source>decomposition</source>
+        <translation>Zerlegung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="273"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -827,22 +1112,22 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::LogDock</name>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="30"/>
+        <location filename="../app/studio/log_dock.cpp" line="31"/>
         <source>Log</source>
         <translation>Protokoll</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="38"/>
+        <location filename="../app/studio/log_dock.cpp" line="39"/>
         <source>%1 The scene could not be prepared: %2</source>
         <translation>%1 Die Szene konnte nicht vorbereitet werden: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="45"/>
+        <location filename="../app/studio/log_dock.cpp" line="46"/>
         <source>%1 Prepared the scene in %2 s:</source>
         <translation>%1 Szene in %2 s vorbereitet:</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="48"/>
+        <location filename="../app/studio/log_dock.cpp" line="49"/>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -870,402 +1155,407 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation>Beleuchtung wird geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="94"/>
+        <location filename="../app/studio/main_window.cpp" line="95"/>
         <source>Placing the objects</source>
         <translation>Objekte werden platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Samples pro Pixel des angezeigten Komposits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Samples pro Sekunde des Renderers (Millionen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="501"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Geschätzter Fehler (RMSE in sRGB), wo die Objekte das Foto verändern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Render time since the last change</source>
         <translation>Renderzeit seit der letzten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="137"/>
-        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="138"/>
+        <location filename="../app/studio/main_window.cpp" line="535"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="644"/>
+        <location filename="../app/studio/main_window.cpp" line="645"/>
         <source>Preparing the scene: %1…</source>
         <translation>Szene wird vorbereitet: %1 …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>&amp;Open Scene…</source>
         <translation>Szene &amp;öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Open a scene file (.json)</source>
         <translation>Eine Szenendatei (.json) öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>Open &amp;Photo…</source>
         <translation>&amp;Foto öffnen …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
         <source>Start a new scene from a photo</source>
         <translation>Eine neue Szene aus einem Foto beginnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>Open &amp;Example</source>
         <translation>&amp;Beispiel öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>&amp;Save</source>
         <translation>&amp;Speichern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>Save &amp;As…</source>
         <translation>Speichern &amp;unter …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>&amp;Export Composite…</source>
         <translation>Komposit &amp;exportieren …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Das aktuelle Komposit als PNG, JPEG, TIFF oder EXR schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Angezeigte &amp;Ebene exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="490"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Die angezeigte Ebene (Albedo, Maske, …) als 8-Bit-Bild schreiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Szene als &amp;glTF exportieren…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Raum, Lichter, Kamera und Objekte als glTF 2.0 schreiben, um in Blender weiterzuarbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Undo</source>
         <translation>&amp;Rückgängig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="543"/>
         <source>&amp;Redo</source>
         <translation>Wi&amp;ederholen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>Insert &amp;Sphere</source>
         <translation>&amp;Kugel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Eine Kugel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>Insert &amp;Cube</source>
         <translation>&amp;Würfel einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Einen Würfel in der Bildmitte auf den Boden stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="463"/>
         <source>&amp;Delete</source>
         <translation>&amp;Löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="494"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Delete the selected object or mark</source>
         <translation>Das ausgewählte Objekt oder die ausgewählte Markierung löschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>Zoom &amp;In</source>
         <translation>Ver&amp;größern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>Zoom &amp;Out</source>
         <translation>Ver&amp;kleinern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Vorher (nur Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Zwischen dem Foto und dem Komposit mit den Objekten umschalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Geschätzten &amp;Raum übernehmen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Die geschätzte Rückwand als Ihre behalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Raum &amp;neu schätzen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Forget your corners of the back wall</source>
         <translation>Ihre Ecken der Rückwand verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="479"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>Szene erneut &amp;vorbereiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Kamera, Raum und Beleuchtung erneut schätzen (nach einem Abbruch)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <location filename="../app/studio/main_window.cpp" line="481"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>&amp;Fluchtlinien und Konfidenz</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Auswählen und verschieben</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Outline a &amp;Light</source>
         <translation>&amp;Lampe umreißen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>Sun &amp;Shaft</source>
         <translation>&amp;Sonnenstrahl</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Table Top or Step</source>
         <translation>&amp;Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;Occluder Strokes</source>
         <translation>&amp;Verdecker-Striche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>&amp;About Inlay</source>
         <translation>&amp;Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="94"/>
+        <source>Refining the lights</source>
+        <translation>Lichter verfeinern</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>&amp;Render Final Image…</source>
         <translation>Endgültiges Bild &amp;rendern…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="454"/>
+        <location filename="../app/studio/main_window.cpp" line="455"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Das Komposit in der vollen Auflösung des Fotos rendern, bis es rauschfrei ist, dann speichern (PNG, JPEG, TIFF oder EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="457"/>
         <source>Before/After &amp;Split</source>
         <translation>Vorher/Nachher-&amp;Teilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>Links einer Trennlinie das Foto, rechts das Komposit; die Trennlinie lässt sich ziehen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="463"/>
+        <location filename="../app/studio/main_window.cpp" line="464"/>
         <source>Insert &amp;Model…</source>
         <translation>&amp;Modell einfügen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Ein 3D-Modell (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) auf den Boden stellen; oder die Datei dort ablegen, wo es stehen soll</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;uplizieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Eine Kopie des gewählten Objekts daneben stellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>Re&amp;name…</source>
         <translation>&amp;Umbenennen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Das gewählte Objekt umbenennen (in der Szenenliste)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>&amp;Hide or Show</source>
         <translation>Aus- oder &amp;Einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Das gewählte Objekt aus dem Rendering ausblenden oder wieder einblenden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="481"/>
+        <location filename="../app/studio/main_window.cpp" line="482"/>
         <source>&amp;Denoise Preview</source>
         <translation>Vorschau &amp;entrauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
         <translation>Das Rauschen des Renderings glätten, wo die Objekte das Foto ändern (der Rest bleibt das Foto)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Fluchtlinien (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="508"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="509"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>Open &amp;Recent</source>
         <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;Edit</source>
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;Tools</source>
         <translation>&amp;Werkzeuge</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="512"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>&amp;View</source>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>System Default</source>
         <translation>Systemvorgabe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="515"/>
+        <location filename="../app/studio/main_window.cpp" line="516"/>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="516"/>
+        <location filename="../app/studio/main_window.cpp" line="517"/>
         <source>Main</source>
         <translation>Haupt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="543"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="551"/>
-        <location filename="../app/studio/main_window.cpp" line="566"/>
-        <location filename="../app/studio/main_window.cpp" line="643"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="567"/>
+        <location filename="../app/studio/main_window.cpp" line="644"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="551"/>
-        <location filename="../app/studio/main_window.cpp" line="932"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="552"/>
-        <location filename="../app/studio/main_window.cpp" line="1377"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="1378"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="586"/>
+        <location filename="../app/studio/main_window.cpp" line="587"/>
         <source>The scene could not be prepared</source>
         <translation>Die Szene konnte nicht vorbereitet werden</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="595"/>
+        <location filename="../app/studio/main_window.cpp" line="596"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (und %n weiterer Hinweis)</numerusform>
@@ -1273,351 +1563,351 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="625"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1: Die Szene ließ sich nicht vorbereiten, das Modell hat also keinen Platz.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="664"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="665"/>
         <source>– spp</source>
         <translation>– spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
-        <location filename="../app/studio/main_window.cpp" line="665"/>
-        <location filename="../app/studio/main_window.cpp" line="679"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="666"/>
+        <location filename="../app/studio/main_window.cpp" line="680"/>
         <source>– samples/s</source>
         <translation>– Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
-        <location filename="../app/studio/main_window.cpp" line="666"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="667"/>
         <source>error –</source>
         <translation>Fehler –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
-        <location filename="../app/studio/main_window.cpp" line="667"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="668"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="656"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
         <source>final, %1 spp</source>
         <translation>endgültig, %1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="528"/>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="672"/>
         <source>preview 1/%1</source>
         <translation>Vorschau 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="528"/>
-        <location filename="../app/studio/main_window.cpp" line="672"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="673"/>
         <source>%1 spp, done</source>
         <translation>%1 spp, fertig</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="673"/>
+        <location filename="../app/studio/main_window.cpp" line="674"/>
         <source>%1 spp</source>
         <translation>%1 spp</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1393"/>
+        <location filename="../app/studio/main_window.cpp" line="1394"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>Das endgültige Bild %1 wird noch gerendert (%2 % fertig). Das Rendern abbrechen? Dann wird nichts geschrieben, und eine frühere Datei dieses Namens bleibt, wie sie war.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1401"/>
+        <location filename="../app/studio/main_window.cpp" line="1402"/>
         <source>Keep Rendering</source>
         <translation>Weiter rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1420"/>
+        <location filename="../app/studio/main_window.cpp" line="1421"/>
         <source>Cancel the Render and Close</source>
         <translation>Rendern abbrechen und schließen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
-        <location filename="../app/studio/main_window.cpp" line="658"/>
-        <location filename="../app/studio/main_window.cpp" line="674"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="675"/>
         <source>error %1</source>
         <translation>Fehler %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="678"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="679"/>
         <source>%1 M samples/s</source>
         <translation>%1 Mio. Samples/s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
-        <location filename="../app/studio/main_window.cpp" line="659"/>
-        <location filename="../app/studio/main_window.cpp" line="680"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="660"/>
+        <location filename="../app/studio/main_window.cpp" line="681"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>%1 (new scene)</source>
         <translation>%1 (neue Szene)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="692"/>
+        <location filename="../app/studio/main_window.cpp" line="693"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="713"/>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>Cancel the Render and Open</source>
         <translation>Rendern abbrechen und öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="717"/>
+        <location filename="../app/studio/main_window.cpp" line="718"/>
         <source>Cannot open</source>
         <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="717"/>
+        <location filename="../app/studio/main_window.cpp" line="718"/>
         <source>%1: no such file</source>
         <translation>%1: Datei nicht vorhanden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="723"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>Cannot open the scene</source>
         <translation>Die Szene kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="743"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Cannot open the example</source>
         <translation>Das Beispiel kann nicht geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="743"/>
         <source>The example scene is not installed.</source>
         <translation>Die Beispielszene ist nicht installiert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Cannot write %1</source>
         <translation>%1 kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="763"/>
         <source>Open Scene</source>
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="763"/>
+        <location filename="../app/studio/main_window.cpp" line="764"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Inlay-Szenen (*.json);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="771"/>
         <source>Open Photo</source>
         <translation>Foto öffnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="771"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Fotos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="778"/>
+        <location filename="../app/studio/main_window.cpp" line="779"/>
         <source>Cannot save the scene</source>
         <translation>Die Szene kann nicht gespeichert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="782"/>
+        <location filename="../app/studio/main_window.cpp" line="783"/>
         <source>Saved %1</source>
         <translation>%1 gespeichert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
         <source>Save Scene As</source>
         <translation>Szene speichern unter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Inlay-Szenen (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
-        <location filename="../app/studio/main_window.cpp" line="837"/>
-        <location filename="../app/studio/main_window.cpp" line="1033"/>
-        <location filename="../app/studio/main_window.cpp" line="1064"/>
+        <location filename="../app/studio/main_window.cpp" line="807"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="1034"/>
+        <location filename="../app/studio/main_window.cpp" line="1065"/>
         <source>Nothing to export</source>
         <translation>Nichts zu exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
-        <location filename="../app/studio/main_window.cpp" line="837"/>
+        <location filename="../app/studio/main_window.cpp" line="807"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>The composite has not been rendered yet.</source>
         <translation>Das Komposit wurde noch nicht gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1053"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>PNG image (*.png)</source>
         <translation>PNG-Bild (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1053"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>JPEG-Bild (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1054"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1055"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>TIFF-Bild (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="831"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linear (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="809"/>
+        <location filename="../app/studio/main_window.cpp" line="810"/>
         <source>Export Composite</source>
         <translation>Komposit exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="846"/>
         <source>Cannot export the composite</source>
         <translation>Das Komposit kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="850"/>
+        <location filename="../app/studio/main_window.cpp" line="851"/>
         <source>Exported %1 (the final render)</source>
         <translation>%1 exportiert (das endgültige Bild)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="855"/>
+        <location filename="../app/studio/main_window.cpp" line="856"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exportiert (%2 spp, die Vorschau mit %3 × %4; Endgültiges Bild rendern schreibt die volle Größe des Fotos)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="863"/>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exportiert (%2 spp)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="886"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Alle vier Schritte erledigt. Ansicht &gt; Schritte zeigt sie wieder.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="892"/>
-        <location filename="../app/studio/main_window.cpp" line="907"/>
+        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
         <source>Nothing to render</source>
         <translation>Nichts zu rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="900"/>
-        <location filename="../app/studio/main_window.cpp" line="933"/>
-        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <location filename="../app/studio/main_window.cpp" line="901"/>
+        <location filename="../app/studio/main_window.cpp" line="934"/>
+        <location filename="../app/studio/main_window.cpp" line="1393"/>
         <source>Render Final Image</source>
         <translation>Endgültiges Bild rendern</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="911"/>
+        <location filename="../app/studio/main_window.cpp" line="912"/>
         <source>A final image is being rendered already.</source>
         <translation>Ein endgültiges Bild wird bereits gerendert.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="918"/>
-        <location filename="../app/studio/main_window.cpp" line="923"/>
+        <location filename="../app/studio/main_window.cpp" line="919"/>
+        <location filename="../app/studio/main_window.cpp" line="924"/>
         <source>Cannot render the final image</source>
         <translation>Das endgültige Bild kann nicht gerendert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="919"/>
+        <location filename="../app/studio/main_window.cpp" line="920"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1: bitte eine .png-, .jpg-, .tif- oder .exr-Datei wählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="924"/>
+        <location filename="../app/studio/main_window.cpp" line="925"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1: der Ordner %2 existiert nicht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="932"/>
-        <location filename="../app/studio/main_window.cpp" line="953"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
+        <location filename="../app/studio/main_window.cpp" line="954"/>
         <source>Rendering the final image…</source>
         <translation>Das endgültige Bild wird gerendert…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="941"/>
+        <location filename="../app/studio/main_window.cpp" line="942"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Endgültiges Bild: höchstens %1 Samples pro Pixel, geschätzter Fehler %2 (Ziel %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="977"/>
+        <location filename="../app/studio/main_window.cpp" line="978"/>
         <source>Cannot write the final image</source>
         <translation>Das endgültige Bild kann nicht geschrieben werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="998"/>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
         <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
         <translation>Endgültiges Bild angezeigt (%1, %2 × %3); die nächste Änderung kehrt zur Live-Vorschau zurück.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1002"/>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
         <translation>Endgültiges Bild (%1 × %2, gespeichert als %3): angezeigt bis zur nächsten Änderung</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1021"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, getrennte Dateien (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1021"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binär (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1022"/>
+        <location filename="../app/studio/main_window.cpp" line="1023"/>
         <source>Export Scene as glTF</source>
         <translation>Szene als glTF exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="892"/>
-        <location filename="../app/studio/main_window.cpp" line="907"/>
-        <location filename="../app/studio/main_window.cpp" line="1033"/>
+        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="1034"/>
         <source>The scene is not prepared yet.</source>
         <translation>Die Szene ist noch nicht vorbereitet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1040"/>
+        <location filename="../app/studio/main_window.cpp" line="1041"/>
         <source>Cannot export the scene</source>
         <translation>Die Szene kann nicht exportiert werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1052"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>Export Shown Layer</source>
         <translation>Angezeigte Ebene exportieren</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1064"/>
+        <location filename="../app/studio/main_window.cpp" line="1065"/>
         <source>This layer has not been made yet.</source>
         <translation>Diese Ebene wurde noch nicht berechnet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1071"/>
+        <location filename="../app/studio/main_window.cpp" line="1072"/>
         <source>Cannot export the layer</source>
         <translation>Die Ebene kann nicht exportiert werden</translation>
     </message>
@@ -1626,143 +1916,143 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation type="vanished">%1: kann nicht geschrieben werden (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1043"/>
-        <location filename="../app/studio/main_window.cpp" line="1074"/>
+        <location filename="../app/studio/main_window.cpp" line="1044"/>
+        <location filename="../app/studio/main_window.cpp" line="1075"/>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1104"/>
+        <location filename="../app/studio/main_window.cpp" line="1105"/>
         <source>About Inlay</source>
         <translation>Über Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1105"/>
+        <location filename="../app/studio/main_window.cpp" line="1106"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Fügt synthetische Objekte in ein gewöhnliches Foto ein: Ein Quaderraum wird an das Foto angepasst, seine Lichter und Reflexionsgrade werden geschätzt, und ein Pfadverfolger rendert die Objekte hinein (nach Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1114"/>
+        <location filename="../app/studio/main_window.cpp" line="1115"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>In der Bildmitte gibt es keinen Boden, auf dem ein Objekt stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1141"/>
+        <location filename="../app/studio/main_window.cpp" line="1142"/>
         <source>Insert Model</source>
         <translation>Modell einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1149"/>
+        <location filename="../app/studio/main_window.cpp" line="1150"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1: Zuerst ein Foto öffnen; das Modell braucht einen Raum, in dem es steht.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1153"/>
+        <location filename="../app/studio/main_window.cpp" line="1154"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1: keine Modelldatei, die Inlay liest (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1168"/>
+        <location filename="../app/studio/main_window.cpp" line="1169"/>
         <source>Reading %1…</source>
         <translation>%1 wird gelesen…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1178"/>
+        <location filename="../app/studio/main_window.cpp" line="1179"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 wird eingefügt, sobald die Szene vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1219"/>
+        <location filename="../app/studio/main_window.cpp" line="1220"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1: Unter der Ablagestelle gibt es keinen Boden, keine Tischplatte und keine Stufe, auf der es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1221"/>
+        <location filename="../app/studio/main_window.cpp" line="1222"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1: In der Mitte des Fotos gibt es keinen Boden, auf dem es stehen kann.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1191"/>
+        <location filename="../app/studio/main_window.cpp" line="1192"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m hoch, höher als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1204"/>
+        <location filename="../app/studio/main_window.cpp" line="1205"/>
         <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 ist in seiner eigenen Größe %2 m breit, breiter als der Raum (%3 m): Es wurde stattdessen %4 m hoch eingefügt (Höhe in den Eigenschaften ändern).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1247"/>
+        <location filename="../app/studio/main_window.cpp" line="1248"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1251"/>
+        <location filename="../app/studio/main_window.cpp" line="1252"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 eingefügt, %2 m hoch (seine eigene Größe).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1252"/>
+        <location filename="../app/studio/main_window.cpp" line="1253"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 eingefügt, %2 m hoch.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1261"/>
+        <location filename="../app/studio/main_window.cpp" line="1262"/>
         <source>Cannot insert the model</source>
         <translation>Das Modell lässt sich nicht einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1281"/>
+        <location filename="../app/studio/main_window.cpp" line="1282"/>
         <source>Select an object to rename.</source>
         <translation>Ein Objekt zum Umbenennen auswählen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1311"/>
+        <location filename="../app/studio/main_window.cpp" line="1312"/>
         <source>Models</source>
         <translation>Modelle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1313"/>
+        <location filename="../app/studio/main_window.cpp" line="1314"/>
         <source>Insert %1</source>
         <translation>%1 einfügen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1338"/>
+        <location filename="../app/studio/main_window.cpp" line="1339"/>
         <source>a new scene</source>
         <translation>einer neuen Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1341"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Restore unsaved work?</source>
         <translation>Ungesicherte Arbeit wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1342"/>
+        <location filename="../app/studio/main_window.cpp" line="1343"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay wurde nicht ordnungsgemäß beendet. Ungesicherte Arbeit an %1 wurde um %2 aufbewahrt. Wiederherstellen?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1346"/>
+        <location filename="../app/studio/main_window.cpp" line="1347"/>
         <source>&amp;Restore</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1347"/>
+        <location filename="../app/studio/main_window.cpp" line="1348"/>
         <source>&amp;Discard</source>
         <translation>&amp;Verwerfen</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1364"/>
+        <location filename="../app/studio/main_window.cpp" line="1365"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Die ungesicherte Arbeit kann nicht wiederhergestellt werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1370"/>
+        <location filename="../app/studio/main_window.cpp" line="1371"/>
         <source>Restored the unsaved work.</source>
         <translation>Die ungesicherte Arbeit wurde wiederhergestellt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1377"/>
+        <location filename="../app/studio/main_window.cpp" line="1378"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>Die Szene hat ungespeicherte Änderungen. Speichern?</translation>
     </message>
@@ -2371,6 +2661,159 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::StageText</name>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="15"/>
+        <source>photo</source>
+        <translation>Foto</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="16"/>
+        <source>response</source>
+        <translation>Kennlinie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="17"/>
+        <source>working copy</source>
+        <translation>Arbeitskopie</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="18"/>
+        <source>camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="19"/>
+        <source>layout</source>
+        <translation>Raumaufteilung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="20"/>
+        <source>occluders</source>
+        <translation>Verdecker</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="21"/>
+        <source>surfaces</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="22"/>
+        <source>room</source>
+        <translation>Raum</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="23"/>
+        <source>lights</source>
+        <translation>Lichter</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="24"/>
+        <source>shafts</source>
+        <translation>Sonnenstrahlen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="25"/>
+        <source>lighting</source>
+        <translation>Beleuchtung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="26"/>
+        <source>sun ratio</source>
+        <translation>Sonnenverhältnis</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="27"/>
+        <source>refine</source>
+        <translation>Verfeinerung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="28"/>
+        <source>lighting refit</source>
+        <translation>Neuanpassung der Beleuchtung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="29"/>
+        <source>photo size</source>
+        <translation>Fotogröße</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="30"/>
+        <source>render scene</source>
+        <translation>Render-Szene</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="31"/>
+        <source>objects</source>
+        <translation>Objekte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="32"/>
+        <source>grain</source>
+        <translation>Körnung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <source>gather</source>
+        <translation>Sammeln</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="35"/>
+        <source>light fit</source>
+        <translation>Lichtanpassung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <source>unseen patches</source>
+        <translation>unsichtbare Flächen</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <source>retinex</source>
+        <translation>Retinex</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <source>decomposition</source>
+        <translation>Zerlegung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <source>direct light</source>
+        <translation>direktes Licht</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <source>fit pixels</source>
+        <translation>Anpassungspixel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <source>per-pixel albedo</source>
+        <translation>Albedo je Pixel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <source>; CPU s: %1</source>
+        <translation>; CPU-s: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="65"/>
+        <source>%1: skipped, %2</source>
+        <translation>%1: übersprungen, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
+        <source>%1: %2 s, CPU %3 s</source>
+        <translation>%1: %2 s, CPU %3 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="74"/>
+        <source>at %1 x %2 px</source>
+        <translation>bei %1 x %2 px</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::StepsDock</name>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="101"/>
@@ -2666,48 +3109,53 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="55"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="57"/>
+        <location filename="../app/studio/main.cpp" line="60"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="61"/>
+        <location filename="../app/studio/main.cpp" line="64"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="65"/>
+        <location filename="../app/studio/main.cpp" line="68"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>Stattdessen: Render-Sekunden des angezeigten Bildes, auf die gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="73"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
+        <source>Show the Log dock across the bottom of the window.</source>
+        <translation>Das Protokoll über die ganze Breite unten im Fenster zeigen.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="79"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="82"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="94"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
-        <location filename="../app/studio/main.cpp" line="109"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
+        <location filename="../app/studio/main.cpp" line="116"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

@@ -501,172 +501,457 @@
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
+        <translation>non convergée : arrêtée par %1 après %2 itérations (%3 s) : résidu primal %4, dual %5, tolérance %6</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <source>the iteration cap</source>
+        <translation>la limite d&apos;itérations</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <source>non-finite residuals</source>
+        <translation>des résidus non finis</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <source>cancellation</source>
+        <translation>l&apos;annulation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>noise level</source>
         <translation>niveau de bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>edge</source>
         <translation>contours</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="105"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="103"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="105"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <source>none marked</source>
+        <translation>aucun marqué</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <source>no sun marked</source>
+        <translation>aucun soleil marqué</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <source>none inserted</source>
+        <translation>aucun inséré</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <source>the lights are kept as estimated (initial lights asked for)</source>
+        <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <source>turned off</source>
+        <translation>désactivé</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
+        <source>no light marked</source>
+        <translation>aucune lumière marquée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <source>every light locked or given (&quot;refine&quot;: false)</source>
+        <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <source>every light locked</source>
+        <translation>chaque lumière verrouillée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <source>the working copy is the photo</source>
+        <translation>la copie de travail est la photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <source>the lights were not refined</source>
+        <translation>les lumières n&apos;ont pas été affinées</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <source>no light moved</source>
+        <translation>aucune lumière déplacée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
+        <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <source>%1 x %2 px</source>
+        <translation>%1 x %2 px</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <source>linear photo</source>
+        <translation>photo linéaire</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <source>estimated</source>
+        <translation>estimée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <source>the photo area-averaged</source>
+        <translation>la photo réduite par moyenne de surface</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <source>the photo&apos;s own size</source>
+        <translation>la taille propre de la photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <source>estimated from the photo</source>
+        <translation>estimée d&apos;après la photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <source>the file&apos;s vanishing points and back wall</source>
+        <translation>points de fuite et mur du fond du fichier</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <source>%1 x %2 m</source>
+        <translation>%1 x %2 m</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <source>%1 m high</source>
+        <translation>%1 m de haut</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <source>%1 matte</source>
+        <translation>%1 masque</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <source>%1 mattes</source>
+        <translation>%1 masques</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <source>%1 surface built</source>
+        <translation>%1 surface construite</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <source>%1 surfaces built</source>
+        <translation>%1 surfaces construites</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <source>%1 surface</source>
+        <translation>%1 surface</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <source>%1 surfaces</source>
+        <translation>%1 surfaces</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <source>%1 reflective</source>
+        <translation>%1 réfléchissante(s)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <source>%1 outlined</source>
+        <translation>%1 détourée(s)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <source>%1 placed in 3D</source>
+        <translation>%1 placée(s) en 3D</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <source>%1 sun</source>
+        <translation>%1 soleil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <source>%1 suns</source>
+        <translation>%1 soleils</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <source>%1 sky through an unseen window</source>
+        <translation>%1 ciel par une fenêtre hors champ</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <source>%1 skies through unseen windows</source>
+        <translation>%1 ciels par des fenêtres hors champ</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <source>%1 light</source>
+        <translation>%1 lumière</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <source>%1 lights</source>
+        <translation>%1 lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <source>%1 pass</source>
+        <translation>%1 passe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <source>%1 passes</source>
+        <translation>%1 passes</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <source>the first estimate&apos;s rays replayed</source>
+        <translation>rayons de la première estimation rejoués</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <source>%1 points x %2 rays</source>
+        <translation>%1 points x %2 rayons</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <source>%1 light fit iterations</source>
+        <translation>%1 itérations de l&apos;ajustement des lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <source>%1 of %2 light refined</source>
+        <translation>%1 lumière sur %2 affinée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <source>%1 of %2 lights refined</source>
+        <translation>%1 lumières sur %2 affinées</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <source>%1 evaluation</source>
+        <translation>%1 évaluation</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <source>%1 evaluations</source>
+        <translation>%1 évaluations</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
+        <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
+        <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <source>from %1 x %2 px: maps %3 s</source>
+        <translation>depuis %1 x %2 px : cartes %3 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <source>surfaces cast %1 s</source>
+        <translation>surfaces par pixel %1 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <source>%1 object</source>
+        <translation>%1 objet</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <source>%1 objects</source>
+        <translation>%1 objets</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <source>none</source>
+        <translation>aucun</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <source>decomposition</source>
+        <translation>décomposition</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="273"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -827,22 +1112,22 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::LogDock</name>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="30"/>
+        <location filename="../app/studio/log_dock.cpp" line="31"/>
         <source>Log</source>
         <translation>Journal</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="38"/>
+        <location filename="../app/studio/log_dock.cpp" line="39"/>
         <source>%1 The scene could not be prepared: %2</source>
         <translation>%1 La scène n&apos;a pas pu être préparée : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="45"/>
+        <location filename="../app/studio/log_dock.cpp" line="46"/>
         <source>%1 Prepared the scene in %2 s:</source>
         <translation>%1 Scène préparée en %2 s :</translation>
     </message>
     <message>
-        <location filename="../app/studio/log_dock.cpp" line="48"/>
+        <location filename="../app/studio/log_dock.cpp" line="49"/>
         <source>warning: %1</source>
         <translation>avertissement : %1</translation>
     </message>
@@ -870,402 +1155,407 @@ Faites-le glisser dans la photo.</translation>
         <translation>Estimation de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="94"/>
+        <location filename="../app/studio/main_window.cpp" line="95"/>
         <source>Placing the objects</source>
         <translation>Placement des objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="499"/>
+        <location filename="../app/studio/main_window.cpp" line="500"/>
         <source>Samples per pixel of the shown composite</source>
         <translation>Échantillons par pixel de la composition affichée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="500"/>
+        <location filename="../app/studio/main_window.cpp" line="501"/>
         <source>Samples per second of the renderer (millions)</source>
         <translation>Échantillons par seconde du rendu (millions)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="501"/>
+        <location filename="../app/studio/main_window.cpp" line="502"/>
         <source>Estimated error (RMSE in sRGB) where the objects change the photo</source>
         <translation>Erreur estimée (RMSE en sRGB) là où les objets modifient la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="502"/>
+        <location filename="../app/studio/main_window.cpp" line="503"/>
         <source>Render time since the last change</source>
         <translation>Temps de rendu depuis la dernière modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="503"/>
+        <location filename="../app/studio/main_window.cpp" line="504"/>
         <source>Zoom</source>
         <translation>Zoom</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="137"/>
-        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="138"/>
+        <location filename="../app/studio/main_window.cpp" line="535"/>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="644"/>
+        <location filename="../app/studio/main_window.cpp" line="645"/>
         <source>Preparing the scene: %1…</source>
         <translation>Préparation de la scène : %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="444"/>
+        <location filename="../app/studio/main_window.cpp" line="445"/>
         <source>&amp;Open Scene…</source>
         <translation>&amp;Ouvrir une scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="485"/>
+        <location filename="../app/studio/main_window.cpp" line="486"/>
         <source>Open a scene file (.json)</source>
         <translation>Ouvrir un fichier de scène (.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="445"/>
+        <location filename="../app/studio/main_window.cpp" line="446"/>
         <source>Open &amp;Photo…</source>
         <translation>Ouvrir une &amp;photo…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="486"/>
+        <location filename="../app/studio/main_window.cpp" line="487"/>
         <source>Start a new scene from a photo</source>
         <translation>Commencer une nouvelle scène à partir d&apos;une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="446"/>
+        <location filename="../app/studio/main_window.cpp" line="447"/>
         <source>Open &amp;Example</source>
         <translation>Ouvrir l&apos;&amp;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="447"/>
+        <location filename="../app/studio/main_window.cpp" line="448"/>
         <source>&amp;Save</source>
         <translation>&amp;Enregistrer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="448"/>
+        <location filename="../app/studio/main_window.cpp" line="449"/>
         <source>Save &amp;As…</source>
         <translation>Enregistrer &amp;sous…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="449"/>
+        <location filename="../app/studio/main_window.cpp" line="450"/>
         <source>&amp;Export Composite…</source>
         <translation>E&amp;xporter la composition…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="487"/>
+        <location filename="../app/studio/main_window.cpp" line="488"/>
         <source>Write the current composite as PNG, JPEG, TIFF or EXR</source>
         <translation>Écrire la composition actuelle en PNG, JPEG, TIFF ou EXR</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="450"/>
+        <location filename="../app/studio/main_window.cpp" line="451"/>
         <source>Export Shown &amp;Layer…</source>
         <translation>Exporter le &amp;calque affiché…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="489"/>
+        <location filename="../app/studio/main_window.cpp" line="490"/>
         <source>Write the layer the viewport shows (albedo, mask, …) as an 8-bit image</source>
         <translation>Écrire le calque affiché (albédo, masque, …) en image 8 bits</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="451"/>
+        <location filename="../app/studio/main_window.cpp" line="452"/>
         <source>Export Scene as &amp;glTF…</source>
         <translation>Exporter la scène en &amp;glTF…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="491"/>
+        <location filename="../app/studio/main_window.cpp" line="492"/>
         <source>Write the room, its lights, the camera and the objects as glTF 2.0, to go on in Blender</source>
         <translation>Écrire la pièce, ses lumières, la caméra et les objets en glTF 2.0, pour continuer dans Blender</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="459"/>
+        <location filename="../app/studio/main_window.cpp" line="460"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="543"/>
         <source>&amp;Redo</source>
         <translation>&amp;Rétablir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="460"/>
+        <location filename="../app/studio/main_window.cpp" line="461"/>
         <source>Insert &amp;Sphere</source>
         <translation>Insérer une &amp;sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="492"/>
+        <location filename="../app/studio/main_window.cpp" line="493"/>
         <source>Stand a sphere on the floor in the middle of the photo</source>
         <translation>Poser une sphère sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="461"/>
+        <location filename="../app/studio/main_window.cpp" line="462"/>
         <source>Insert &amp;Cube</source>
         <translation>Insérer un &amp;cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="493"/>
+        <location filename="../app/studio/main_window.cpp" line="494"/>
         <source>Stand a cube on the floor in the middle of the photo</source>
         <translation>Poser un cube sur le sol au milieu de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="462"/>
+        <location filename="../app/studio/main_window.cpp" line="463"/>
         <source>&amp;Delete</source>
         <translation>&amp;Supprimer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="494"/>
+        <location filename="../app/studio/main_window.cpp" line="495"/>
         <source>Delete the selected object or mark</source>
         <translation>Supprimer l&apos;objet ou le repère sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="473"/>
+        <location filename="../app/studio/main_window.cpp" line="474"/>
         <source>Zoom &amp;In</source>
         <translation>Zoom &amp;avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="474"/>
+        <location filename="../app/studio/main_window.cpp" line="475"/>
         <source>Zoom &amp;Out</source>
         <translation>Zoom a&amp;rrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="475"/>
+        <location filename="../app/studio/main_window.cpp" line="476"/>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajuster à la fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="476"/>
+        <location filename="../app/studio/main_window.cpp" line="477"/>
         <source>&amp;Before (Photo Only)</source>
         <translation>&amp;Avant (photo seule)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="495"/>
+        <location filename="../app/studio/main_window.cpp" line="496"/>
         <source>Toggle between the photo and the composite with the objects</source>
         <translation>Basculer entre la photo et la composition avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="477"/>
+        <location filename="../app/studio/main_window.cpp" line="478"/>
         <source>&amp;Accept Estimated Box</source>
         <translation>Accepter la &amp;pièce estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="496"/>
+        <location filename="../app/studio/main_window.cpp" line="497"/>
         <source>Keep the estimated back wall as yours</source>
         <translation>Garder le mur du fond estimé comme le vôtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="478"/>
+        <location filename="../app/studio/main_window.cpp" line="479"/>
         <source>Estimate the &amp;Box Again</source>
         <translation>Estimer à nouveau la &amp;pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="497"/>
+        <location filename="../app/studio/main_window.cpp" line="498"/>
         <source>Forget your corners of the back wall</source>
         <translation>Oublier vos coins du mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="479"/>
+        <location filename="../app/studio/main_window.cpp" line="480"/>
         <source>&amp;Prepare the Scene Again</source>
         <translation>P&amp;réparer à nouveau la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="498"/>
+        <location filename="../app/studio/main_window.cpp" line="499"/>
         <source>Estimate the camera, room and lighting again (after a cancel)</source>
         <translation>Estimer à nouveau l&apos;appareil photo, la pièce et l&apos;éclairage (après une annulation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="480"/>
+        <location filename="../app/studio/main_window.cpp" line="481"/>
         <source>&amp;Vanishing Lines and Confidence</source>
         <translation>Lignes de &amp;fuite et confiance</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>&amp;Select and Move</source>
         <translation>&amp;Sélectionner et déplacer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="504"/>
+        <location filename="../app/studio/main_window.cpp" line="505"/>
         <source>Outline a &amp;Light</source>
         <translation>Détourer une &amp;lampe</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>Sun &amp;Shaft</source>
         <translation>Rayon de &amp;soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="505"/>
+        <location filename="../app/studio/main_window.cpp" line="506"/>
         <source>&amp;Table Top or Step</source>
         <translation>Dessus de &amp;table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;Occluder Strokes</source>
         <translation>Traits de masque d&apos;&amp;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="484"/>
+        <location filename="../app/studio/main_window.cpp" line="485"/>
         <source>&amp;About Inlay</source>
         <translation>À &amp;propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="452"/>
+        <location filename="../app/studio/main_window.cpp" line="94"/>
+        <source>Refining the lights</source>
+        <translation>Affinage des lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main_window.cpp" line="453"/>
         <source>&amp;Render Final Image…</source>
         <translation>&amp;Rendre l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="454"/>
+        <location filename="../app/studio/main_window.cpp" line="455"/>
         <source>Render the composite at the photo&apos;s full resolution until it is clean, then save it (PNG, JPEG, TIFF or EXR)</source>
         <translation>Rendre le composite à la pleine résolution de la photo jusqu&apos;à ce qu&apos;il soit net, puis l&apos;enregistrer (PNG, JPEG, TIFF ou EXR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="456"/>
+        <location filename="../app/studio/main_window.cpp" line="457"/>
         <source>Before/After &amp;Split</source>
         <translation>&amp;Partage avant/après</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="458"/>
+        <location filename="../app/studio/main_window.cpp" line="459"/>
         <source>The photo left of a divider, the composite right of it; drag the divider</source>
         <translation>La photo à gauche d&apos;une séparation, le composite à droite ; faites glisser la séparation</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="463"/>
+        <location filename="../app/studio/main_window.cpp" line="464"/>
         <source>Insert &amp;Model…</source>
         <translation>Insérer un &amp;modèle…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="465"/>
+        <location filename="../app/studio/main_window.cpp" line="466"/>
         <source>Stand a 3D model (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) on the floor; or drop the file where it should stand</source>
         <translation>Poser un modèle 3D (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS) au sol ; ou déposer le fichier là où il doit se tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="467"/>
+        <location filename="../app/studio/main_window.cpp" line="468"/>
         <source>D&amp;uplicate</source>
         <translation>D&amp;upliquer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="468"/>
+        <location filename="../app/studio/main_window.cpp" line="469"/>
         <source>Stand a copy of the selected object beside it</source>
         <translation>Poser une copie de l&apos;objet choisi à côté de lui</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="469"/>
+        <location filename="../app/studio/main_window.cpp" line="470"/>
         <source>Re&amp;name…</source>
         <translation>Re&amp;nommer…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="470"/>
+        <location filename="../app/studio/main_window.cpp" line="471"/>
         <source>Rename the selected object (in the Scene list)</source>
         <translation>Renommer l&apos;objet choisi (dans la liste de la scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="471"/>
+        <location filename="../app/studio/main_window.cpp" line="472"/>
         <source>&amp;Hide or Show</source>
         <translation>&amp;Masquer ou afficher</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="472"/>
+        <location filename="../app/studio/main_window.cpp" line="473"/>
         <source>Hide the selected object from the render, or show it again</source>
         <translation>Masquer l&apos;objet choisi du rendu, ou l&apos;afficher à nouveau</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="481"/>
+        <location filename="../app/studio/main_window.cpp" line="482"/>
         <source>&amp;Denoise Preview</source>
         <translation>&amp;Débruiter l&apos;aperçu</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="483"/>
+        <location filename="../app/studio/main_window.cpp" line="484"/>
         <source>Smooth the render&apos;s noise where the objects change the photo (the rest stays the photo)</source>
         <translation>Lisser le bruit du rendu là où les objets changent la photo (le reste reste la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="506"/>
+        <location filename="../app/studio/main_window.cpp" line="507"/>
         <source>&amp;Vanishing Lines (X, Y, Z)</source>
         <translation>&amp;Lignes de fuite (X, Y, Z)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="508"/>
+        <location filename="../app/studio/main_window.cpp" line="509"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="509"/>
+        <location filename="../app/studio/main_window.cpp" line="510"/>
         <source>Open &amp;Recent</source>
         <translation>Ouvrir un fichier &amp;récent</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="510"/>
+        <location filename="../app/studio/main_window.cpp" line="511"/>
         <source>&amp;Edit</source>
         <translation>&amp;Édition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="511"/>
+        <location filename="../app/studio/main_window.cpp" line="512"/>
         <source>&amp;Tools</source>
         <translation>&amp;Outils</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="512"/>
+        <location filename="../app/studio/main_window.cpp" line="513"/>
         <source>&amp;View</source>
         <translation>&amp;Affichage</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="513"/>
+        <location filename="../app/studio/main_window.cpp" line="514"/>
         <source>&amp;Language</source>
         <translation>&amp;Langue</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="514"/>
+        <location filename="../app/studio/main_window.cpp" line="515"/>
         <source>System Default</source>
         <translation>Langue du système</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="515"/>
+        <location filename="../app/studio/main_window.cpp" line="516"/>
         <source>&amp;Help</source>
         <translation>A&amp;ide</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="516"/>
+        <location filename="../app/studio/main_window.cpp" line="517"/>
         <source>Main</source>
         <translation>Principale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="541"/>
+        <location filename="../app/studio/main_window.cpp" line="542"/>
         <source>&amp;Undo %1</source>
         <translation>&amp;Annuler : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="542"/>
+        <location filename="../app/studio/main_window.cpp" line="543"/>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="551"/>
-        <location filename="../app/studio/main_window.cpp" line="566"/>
-        <location filename="../app/studio/main_window.cpp" line="643"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="567"/>
+        <location filename="../app/studio/main_window.cpp" line="644"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="551"/>
-        <location filename="../app/studio/main_window.cpp" line="932"/>
+        <location filename="../app/studio/main_window.cpp" line="552"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="552"/>
-        <location filename="../app/studio/main_window.cpp" line="1377"/>
+        <location filename="../app/studio/main_window.cpp" line="553"/>
+        <location filename="../app/studio/main_window.cpp" line="1378"/>
         <source>Inlay</source>
         <translation>Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="586"/>
+        <location filename="../app/studio/main_window.cpp" line="587"/>
         <source>The scene could not be prepared</source>
         <translation>La scène n&apos;a pas pu être préparée</translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/studio/main_window.cpp" line="595"/>
+        <location filename="../app/studio/main_window.cpp" line="596"/>
         <source>%1 (and %n more)</source>
         <translation>
             <numerusform>%1 (et %n autre)</numerusform>
@@ -1273,351 +1563,351 @@ Faites-le glisser dans la photo.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="624"/>
+        <location filename="../app/studio/main_window.cpp" line="625"/>
         <source>%1: the scene could not be prepared, so the model has nowhere to stand.</source>
         <translation>%1 : la scène n&apos;a pas pu être préparée, le modèle n&apos;a donc nulle part où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="664"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="665"/>
         <source>– spp</source>
         <translation>– éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="657"/>
-        <location filename="../app/studio/main_window.cpp" line="665"/>
-        <location filename="../app/studio/main_window.cpp" line="679"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="658"/>
+        <location filename="../app/studio/main_window.cpp" line="666"/>
+        <location filename="../app/studio/main_window.cpp" line="680"/>
         <source>– samples/s</source>
         <translation>– éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
-        <location filename="../app/studio/main_window.cpp" line="666"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="667"/>
         <source>error –</source>
         <translation>erreur –</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
-        <location filename="../app/studio/main_window.cpp" line="667"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="668"/>
         <source>– s</source>
         <translation>– s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="529"/>
-        <location filename="../app/studio/main_window.cpp" line="656"/>
+        <location filename="../app/studio/main_window.cpp" line="530"/>
+        <location filename="../app/studio/main_window.cpp" line="657"/>
         <source>final, %1 spp</source>
         <translation>final, %1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="528"/>
-        <location filename="../app/studio/main_window.cpp" line="671"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="672"/>
         <source>preview 1/%1</source>
         <translation>aperçu 1/%1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="528"/>
-        <location filename="../app/studio/main_window.cpp" line="672"/>
+        <location filename="../app/studio/main_window.cpp" line="529"/>
+        <location filename="../app/studio/main_window.cpp" line="673"/>
         <source>%1 spp, done</source>
         <translation>%1 éch./px, terminé</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="673"/>
+        <location filename="../app/studio/main_window.cpp" line="674"/>
         <source>%1 spp</source>
         <translation>%1 éch./px</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1393"/>
+        <location filename="../app/studio/main_window.cpp" line="1394"/>
         <source>The final image %1 is still being rendered (%2 % done). Cancel the render? Nothing is written then, and an earlier file of that name stays as it was.</source>
         <translation>L&apos;image finale %1 est encore en cours de rendu (%2 % fait). Annuler le rendu ? Rien n&apos;est alors écrit, et un fichier antérieur de ce nom reste tel quel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1401"/>
+        <location filename="../app/studio/main_window.cpp" line="1402"/>
         <source>Keep Rendering</source>
         <translation>Continuer le rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1420"/>
+        <location filename="../app/studio/main_window.cpp" line="1421"/>
         <source>Cancel the Render and Close</source>
         <translation>Annuler le rendu et fermer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="532"/>
-        <location filename="../app/studio/main_window.cpp" line="658"/>
-        <location filename="../app/studio/main_window.cpp" line="674"/>
+        <location filename="../app/studio/main_window.cpp" line="533"/>
+        <location filename="../app/studio/main_window.cpp" line="659"/>
+        <location filename="../app/studio/main_window.cpp" line="675"/>
         <source>error %1</source>
         <translation>erreur %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="531"/>
-        <location filename="../app/studio/main_window.cpp" line="678"/>
+        <location filename="../app/studio/main_window.cpp" line="532"/>
+        <location filename="../app/studio/main_window.cpp" line="679"/>
         <source>%1 M samples/s</source>
         <translation>%1 M éch./s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="533"/>
-        <location filename="../app/studio/main_window.cpp" line="659"/>
-        <location filename="../app/studio/main_window.cpp" line="680"/>
+        <location filename="../app/studio/main_window.cpp" line="534"/>
+        <location filename="../app/studio/main_window.cpp" line="660"/>
+        <location filename="../app/studio/main_window.cpp" line="681"/>
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="690"/>
+        <location filename="../app/studio/main_window.cpp" line="691"/>
         <source>%1 (new scene)</source>
         <translation>%1 (nouvelle scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="691"/>
+        <location filename="../app/studio/main_window.cpp" line="692"/>
         <source>Untitled</source>
         <translation>Sans titre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="692"/>
+        <location filename="../app/studio/main_window.cpp" line="693"/>
         <source>%1[*] — Inlay</source>
         <translation>%1[*] — Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="713"/>
+        <location filename="../app/studio/main_window.cpp" line="714"/>
         <source>Cancel the Render and Open</source>
         <translation>Annuler le rendu et ouvrir</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="717"/>
+        <location filename="../app/studio/main_window.cpp" line="718"/>
         <source>Cannot open</source>
         <translation>Ouverture impossible</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="717"/>
+        <location filename="../app/studio/main_window.cpp" line="718"/>
         <source>%1: no such file</source>
         <translation>%1 : fichier introuvable</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="723"/>
+        <location filename="../app/studio/main_window.cpp" line="724"/>
         <source>Cannot open the scene</source>
         <translation>Impossible d&apos;ouvrir la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="743"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Cannot open the example</source>
         <translation>Impossible d&apos;ouvrir l&apos;exemple</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="742"/>
+        <location filename="../app/studio/main_window.cpp" line="743"/>
         <source>The example scene is not installed.</source>
         <translation>La scène d&apos;exemple n&apos;est pas installée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="752"/>
+        <location filename="../app/studio/main_window.cpp" line="753"/>
         <source>Cannot write %1</source>
         <translation>Impossible d&apos;écrire %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="762"/>
+        <location filename="../app/studio/main_window.cpp" line="763"/>
         <source>Open Scene</source>
         <translation>Ouvrir une scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="763"/>
+        <location filename="../app/studio/main_window.cpp" line="764"/>
         <source>Inlay scenes (*.json);;All files (*)</source>
         <translation>Scènes Inlay (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="770"/>
+        <location filename="../app/studio/main_window.cpp" line="771"/>
         <source>Open Photo</source>
         <translation>Ouvrir une photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="771"/>
+        <location filename="../app/studio/main_window.cpp" line="772"/>
         <source>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;All files (*)</source>
         <translation>Photos (*.jpg *.jpeg *.png *.tif *.tiff *.exr *.hdr);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="778"/>
+        <location filename="../app/studio/main_window.cpp" line="779"/>
         <source>Cannot save the scene</source>
         <translation>Impossible d&apos;enregistrer la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="782"/>
+        <location filename="../app/studio/main_window.cpp" line="783"/>
         <source>Saved %1</source>
         <translation>%1 enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
         <source>Save Scene As</source>
         <translation>Enregistrer la scène sous</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="798"/>
+        <location filename="../app/studio/main_window.cpp" line="799"/>
         <source>Inlay scenes (*.json)</source>
         <translation>Scènes Inlay (*.json)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
-        <location filename="../app/studio/main_window.cpp" line="837"/>
-        <location filename="../app/studio/main_window.cpp" line="1033"/>
-        <location filename="../app/studio/main_window.cpp" line="1064"/>
+        <location filename="../app/studio/main_window.cpp" line="807"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
+        <location filename="../app/studio/main_window.cpp" line="1034"/>
+        <location filename="../app/studio/main_window.cpp" line="1065"/>
         <source>Nothing to export</source>
         <translation>Rien à exporter</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="806"/>
-        <location filename="../app/studio/main_window.cpp" line="837"/>
+        <location filename="../app/studio/main_window.cpp" line="807"/>
+        <location filename="../app/studio/main_window.cpp" line="838"/>
         <source>The composite has not been rendered yet.</source>
         <translation>La composition n&apos;a pas encore été rendue.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1053"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>PNG image (*.png)</source>
         <translation>Image PNG (*.png)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1053"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1054"/>
         <source>JPEG image (*.jpg *.jpeg)</source>
         <translation>Image JPEG (*.jpg *.jpeg)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="829"/>
-        <location filename="../app/studio/main_window.cpp" line="1054"/>
+        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="1055"/>
         <source>TIFF image (*.tif *.tiff)</source>
         <translation>Image TIFF (*.tif *.tiff)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="830"/>
+        <location filename="../app/studio/main_window.cpp" line="831"/>
         <source>OpenEXR, linear (*.exr)</source>
         <translation>OpenEXR, linéaire (*.exr)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="809"/>
+        <location filename="../app/studio/main_window.cpp" line="810"/>
         <source>Export Composite</source>
         <translation>Exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="845"/>
+        <location filename="../app/studio/main_window.cpp" line="846"/>
         <source>Cannot export the composite</source>
         <translation>Impossible d&apos;exporter la composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="850"/>
+        <location filename="../app/studio/main_window.cpp" line="851"/>
         <source>Exported %1 (the final render)</source>
         <translation>%1 exporté (l&apos;image finale)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="855"/>
+        <location filename="../app/studio/main_window.cpp" line="856"/>
         <source>Exported %1 (%2 spp, the preview&apos;s %3 × %4; Render Final Image writes the photo&apos;s full size)</source>
         <translation>%1 exporté (%2 spp, l&apos;aperçu en %3 × %4 ; Rendre l&apos;image finale écrit la pleine taille de la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="863"/>
+        <location filename="../app/studio/main_window.cpp" line="864"/>
         <source>Exported %1 (%2 spp)</source>
         <translation>%1 exporté (%2 éch./px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="886"/>
+        <location filename="../app/studio/main_window.cpp" line="887"/>
         <source>All four steps done. View &gt; Steps shows them again.</source>
         <translation>Les quatre étapes sont faites. Affichage &gt; Étapes les montre à nouveau.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="892"/>
-        <location filename="../app/studio/main_window.cpp" line="907"/>
+        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
         <source>Nothing to render</source>
         <translation>Rien à rendre</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="900"/>
-        <location filename="../app/studio/main_window.cpp" line="933"/>
-        <location filename="../app/studio/main_window.cpp" line="1392"/>
+        <location filename="../app/studio/main_window.cpp" line="901"/>
+        <location filename="../app/studio/main_window.cpp" line="934"/>
+        <location filename="../app/studio/main_window.cpp" line="1393"/>
         <source>Render Final Image</source>
         <translation>Rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="911"/>
+        <location filename="../app/studio/main_window.cpp" line="912"/>
         <source>A final image is being rendered already.</source>
         <translation>Une image finale est déjà en cours de rendu.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="918"/>
-        <location filename="../app/studio/main_window.cpp" line="923"/>
+        <location filename="../app/studio/main_window.cpp" line="919"/>
+        <location filename="../app/studio/main_window.cpp" line="924"/>
         <source>Cannot render the final image</source>
         <translation>Impossible de rendre l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="919"/>
+        <location filename="../app/studio/main_window.cpp" line="920"/>
         <source>%1: choose a .png, .jpg, .tif or .exr file.</source>
         <translation>%1 : choisissez un fichier .png, .jpg, .tif ou .exr.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="924"/>
+        <location filename="../app/studio/main_window.cpp" line="925"/>
         <source>%1: the folder %2 does not exist.</source>
         <translation>%1 : le dossier %2 n&apos;existe pas.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="932"/>
-        <location filename="../app/studio/main_window.cpp" line="953"/>
+        <location filename="../app/studio/main_window.cpp" line="933"/>
+        <location filename="../app/studio/main_window.cpp" line="954"/>
         <source>Rendering the final image…</source>
         <translation>Rendu de l&apos;image finale…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="941"/>
+        <location filename="../app/studio/main_window.cpp" line="942"/>
         <source>Rendering the final image: %1 samples per pixel at most, estimated error %2 (target %3), %4 s</source>
         <translation>Image finale : %1 échantillons par pixel au plus, erreur estimée %2 (cible %3), %4 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="977"/>
+        <location filename="../app/studio/main_window.cpp" line="978"/>
         <source>Cannot write the final image</source>
         <translation>Impossible d&apos;écrire l&apos;image finale</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="998"/>
+        <location filename="../app/studio/main_window.cpp" line="999"/>
         <source>Final render shown (%1, %2 × %3); the next edit returns to the live preview.</source>
         <translation>Image finale affichée (%1, %2 × %3) ; la prochaine modification revient à l&apos;aperçu en direct.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1002"/>
+        <location filename="../app/studio/main_window.cpp" line="1003"/>
         <source>Final render (%1 × %2, saved as %3): shown until the next edit</source>
         <translation>Image finale (%1 × %2, enregistrée sous %3) : affichée jusqu&apos;à la prochaine modification</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1021"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>glTF 2.0, separate files (*.gltf)</source>
         <translation>glTF 2.0, fichiers séparés (*.gltf)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1021"/>
+        <location filename="../app/studio/main_window.cpp" line="1022"/>
         <source>glTF 2.0, binary (*.glb)</source>
         <translation>glTF 2.0, binaire (*.glb)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1022"/>
+        <location filename="../app/studio/main_window.cpp" line="1023"/>
         <source>Export Scene as glTF</source>
         <translation>Exporter la scène en glTF</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="892"/>
-        <location filename="../app/studio/main_window.cpp" line="907"/>
-        <location filename="../app/studio/main_window.cpp" line="1033"/>
+        <location filename="../app/studio/main_window.cpp" line="893"/>
+        <location filename="../app/studio/main_window.cpp" line="908"/>
+        <location filename="../app/studio/main_window.cpp" line="1034"/>
         <source>The scene is not prepared yet.</source>
         <translation>La scène n’est pas encore préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1040"/>
+        <location filename="../app/studio/main_window.cpp" line="1041"/>
         <source>Cannot export the scene</source>
         <translation>Impossible d’exporter la scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1052"/>
+        <location filename="../app/studio/main_window.cpp" line="1053"/>
         <source>Export Shown Layer</source>
         <translation>Exporter le calque affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1064"/>
+        <location filename="../app/studio/main_window.cpp" line="1065"/>
         <source>This layer has not been made yet.</source>
         <translation>Ce calque n&apos;a pas encore été calculé.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1071"/>
+        <location filename="../app/studio/main_window.cpp" line="1072"/>
         <source>Cannot export the layer</source>
         <translation>Impossible d&apos;exporter le calque</translation>
     </message>
@@ -1626,143 +1916,143 @@ Faites-le glisser dans la photo.</translation>
         <translation type="vanished">%1 : écriture impossible (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1043"/>
-        <location filename="../app/studio/main_window.cpp" line="1074"/>
+        <location filename="../app/studio/main_window.cpp" line="1044"/>
+        <location filename="../app/studio/main_window.cpp" line="1075"/>
         <source>Exported %1</source>
         <translation>%1 exporté</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1104"/>
+        <location filename="../app/studio/main_window.cpp" line="1105"/>
         <source>About Inlay</source>
         <translation>À propos d’Inlay</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1105"/>
+        <location filename="../app/studio/main_window.cpp" line="1106"/>
         <source>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Inserts synthetic objects into an ordinary photograph: a box room is fitted to the photo, its lights and reflectance are estimated, and a path tracer renders the objects into it (after Karsch et al., 2011).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Inlay %1&lt;/h3&gt;&lt;p&gt;Insère des objets de synthèse dans une photographie ordinaire : une pièce en forme de boîte est ajustée à la photo, ses lampes et sa réflectance sont estimées, et un lancer de chemins y rend les objets (d’après Karsch et al., 2011).&lt;/p&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1114"/>
+        <location filename="../app/studio/main_window.cpp" line="1115"/>
         <source>There is no floor in the middle of the photo to stand an object on.</source>
         <translation>Il n&apos;y a pas de sol au milieu de la photo où poser un objet.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1141"/>
+        <location filename="../app/studio/main_window.cpp" line="1142"/>
         <source>Insert Model</source>
         <translation>Insérer un modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1149"/>
+        <location filename="../app/studio/main_window.cpp" line="1150"/>
         <source>%1: open a photo first; the model needs a room to stand in.</source>
         <translation>%1 : ouvrez d&apos;abord une photo ; le modèle a besoin d&apos;une pièce où se tenir.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1153"/>
+        <location filename="../app/studio/main_window.cpp" line="1154"/>
         <source>%1: not a model file Inlay reads (%2).</source>
         <translation>%1 : pas un fichier de modèle que lit Inlay (%2).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1168"/>
+        <location filename="../app/studio/main_window.cpp" line="1169"/>
         <source>Reading %1…</source>
         <translation>Lecture de %1…</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1178"/>
+        <location filename="../app/studio/main_window.cpp" line="1179"/>
         <source>%1 goes in once the scene is prepared.</source>
         <translation>%1 sera inséré dès que la scène sera prête.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1219"/>
+        <location filename="../app/studio/main_window.cpp" line="1220"/>
         <source>%1: there is no floor, table top or step under the drop point to stand it on.</source>
         <translation>%1 : il n&apos;y a ni sol, ni plateau, ni marche sous le point de dépôt pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1221"/>
+        <location filename="../app/studio/main_window.cpp" line="1222"/>
         <source>%1: there is no floor in the middle of the photo to stand it on.</source>
         <translation>%1 : il n&apos;y a pas de sol au milieu de la photo pour le poser.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1191"/>
+        <location filename="../app/studio/main_window.cpp" line="1192"/>
         <source>%1 is %2 m high at its own size, taller than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de haut à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1204"/>
+        <location filename="../app/studio/main_window.cpp" line="1205"/>
         <source>%1 is %2 m wide at its own size, wider than the room (%3 m): it was inserted %4 m high instead (change Height in Properties).</source>
         <translation>%1 mesure %2 m de large à sa propre taille, plus que la pièce (%3 m) : il a été inséré à %4 m de haut (modifiez la hauteur dans les Propriétés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1247"/>
+        <location filename="../app/studio/main_window.cpp" line="1248"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1251"/>
+        <location filename="../app/studio/main_window.cpp" line="1252"/>
         <source>Inserted %1, %2 m high (its own size).</source>
         <translation>%1 inséré, %2 m de haut (sa propre taille).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1252"/>
+        <location filename="../app/studio/main_window.cpp" line="1253"/>
         <source>Inserted %1, %2 m high.</source>
         <translation>%1 inséré, %2 m de haut.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1261"/>
+        <location filename="../app/studio/main_window.cpp" line="1262"/>
         <source>Cannot insert the model</source>
         <translation>Impossible d&apos;insérer le modèle</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1281"/>
+        <location filename="../app/studio/main_window.cpp" line="1282"/>
         <source>Select an object to rename.</source>
         <translation>Choisissez un objet à renommer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1311"/>
+        <location filename="../app/studio/main_window.cpp" line="1312"/>
         <source>Models</source>
         <translation>Modèles</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1313"/>
+        <location filename="../app/studio/main_window.cpp" line="1314"/>
         <source>Insert %1</source>
         <translation>Insérer %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1338"/>
+        <location filename="../app/studio/main_window.cpp" line="1339"/>
         <source>a new scene</source>
         <translation>une nouvelle scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1341"/>
+        <location filename="../app/studio/main_window.cpp" line="1342"/>
         <source>Restore unsaved work?</source>
         <translation>Restaurer le travail non enregistré ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1342"/>
+        <location filename="../app/studio/main_window.cpp" line="1343"/>
         <source>Inlay did not close properly. Unsaved work on %1 was kept at %2. Restore it?</source>
         <translation>Inlay ne s&apos;est pas fermé correctement. Le travail non enregistré sur %1 a été conservé à %2. Le restaurer ?</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1346"/>
+        <location filename="../app/studio/main_window.cpp" line="1347"/>
         <source>&amp;Restore</source>
         <translation>&amp;Restaurer</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1347"/>
+        <location filename="../app/studio/main_window.cpp" line="1348"/>
         <source>&amp;Discard</source>
         <translation>&amp;Abandonner</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1364"/>
+        <location filename="../app/studio/main_window.cpp" line="1365"/>
         <source>Cannot restore the unsaved work</source>
         <translation>Impossible de restaurer le travail non enregistré</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1370"/>
+        <location filename="../app/studio/main_window.cpp" line="1371"/>
         <source>Restored the unsaved work.</source>
         <translation>Le travail non enregistré a été restauré.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main_window.cpp" line="1377"/>
+        <location filename="../app/studio/main_window.cpp" line="1378"/>
         <source>The scene has unsaved changes. Save them?</source>
         <translation>La scène a des modifications non enregistrées. Les enregistrer ?</translation>
     </message>
@@ -2371,6 +2661,159 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
     </message>
 </context>
 <context>
+    <name>inlay::studio::StageText</name>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="15"/>
+        <source>photo</source>
+        <translation>photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="16"/>
+        <source>response</source>
+        <translation>réponse</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="17"/>
+        <source>working copy</source>
+        <translation>copie de travail</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="18"/>
+        <source>camera</source>
+        <translation>caméra</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="19"/>
+        <source>layout</source>
+        <translation>disposition</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="20"/>
+        <source>occluders</source>
+        <translation>masques d&apos;avant-plan</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="21"/>
+        <source>surfaces</source>
+        <translation>surfaces</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="22"/>
+        <source>room</source>
+        <translation>pièce</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="23"/>
+        <source>lights</source>
+        <translation>lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="24"/>
+        <source>shafts</source>
+        <translation>rayons de soleil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="25"/>
+        <source>lighting</source>
+        <translation>éclairage</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="26"/>
+        <source>sun ratio</source>
+        <translation>rapport d&apos;ombre du soleil</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="27"/>
+        <source>refine</source>
+        <translation>affinage</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="28"/>
+        <source>lighting refit</source>
+        <translation>réajustement de l&apos;éclairage</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="29"/>
+        <source>photo size</source>
+        <translation>taille de la photo</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="30"/>
+        <source>render scene</source>
+        <translation>scène de rendu</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="31"/>
+        <source>objects</source>
+        <translation>objets</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="32"/>
+        <source>grain</source>
+        <translation>grain</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <source>gather</source>
+        <translation>collecte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="35"/>
+        <source>light fit</source>
+        <translation>ajustement des lumières</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <source>unseen patches</source>
+        <translation>zones hors champ</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <source>retinex</source>
+        <translation>Retinex</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <source>decomposition</source>
+        <translation>décomposition</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <source>direct light</source>
+        <translation>lumière directe</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <source>fit pixels</source>
+        <translation>pixels de l&apos;ajustement</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <source>per-pixel albedo</source>
+        <translation>albédo par pixel</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <source>; CPU s: %1</source>
+        <translation> ; s CPU : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="65"/>
+        <source>%1: skipped, %2</source>
+        <translation>%1 : ignorée, %2</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
+        <source>%1: %2 s, CPU %3 s</source>
+        <translation>%1 : %2 s, CPU %3 s</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="74"/>
+        <source>at %1 x %2 px</source>
+        <translation>à %1 x %2 px</translation>
+    </message>
+</context>
+<context>
     <name>inlay::studio::StepsDock</name>
     <message>
         <location filename="../app/studio/steps_dock.cpp" line="101"/>
@@ -2666,48 +3109,53 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="52"/>
+        <location filename="../app/studio/main.cpp" line="55"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="57"/>
+        <location filename="../app/studio/main.cpp" line="60"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="61"/>
+        <location filename="../app/studio/main.cpp" line="64"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="65"/>
+        <location filename="../app/studio/main.cpp" line="68"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="69"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>À la place : secondes de rendu de l&apos;image affichée à attendre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="73"/>
+        <location filename="../app/studio/main.cpp" line="76"/>
+        <source>Show the Log dock across the bottom of the window.</source>
+        <translation>Afficher le journal sur toute la largeur du bas de la fenêtre.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/main.cpp" line="79"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="82"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="94"/>
+        <location filename="../app/studio/main.cpp" line="101"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
-        <location filename="../app/studio/main.cpp" line="109"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
+        <location filename="../app/studio/main.cpp" line="116"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

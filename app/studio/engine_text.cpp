@@ -14,7 +14,7 @@ constexpr const char* kContext = "inlay::studio::EngineText";
 // The engine's sentences a studio user meets, exactly as the engine writes them, with %1, %2,
 // ... (in order) where it puts a number, a key, a name or a nested reason. Keep in step with
 // the engine's strings (modeling/src/io/mesh.cpp, app/engine/src/pipeline.cpp,
-// lighting/src/estimate.cpp and refine.cpp, modeling/src/camera/response.cpp and
+// lighting/src/estimate.cpp, refine.cpp and decompose.cpp, modeling/src/camera/response.cpp and
 // noise_level.cpp): a sentence changed there stays English here.
 const char* const kSentences[] = {
     // Model files refused by the readers (the studio adds the file name).
@@ -76,6 +76,14 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the photo's direct light is black: the lights are fitted to darkness"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement failed (%1): the start is kept"),
+    // The decomposition's report when it stops early (lighting/src/decompose.cpp; a lighting
+    // note under the head "decomposition").
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, "
+                      "dual %5, tolerance %6"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the iteration cap"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "non-finite residuals"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "cancellation"),
     // The camera response estimate's decisions and warnings (modeling/src/camera/response.cpp
     // and noise_level.cpp; the Camera Response dock's details). studio_translation_test forces
     // each of them out of the estimate and fails on one that stays English.
@@ -116,6 +124,74 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo shows no measurable noise"),
 };
 
+// The preparation's stage lines (app/engine/src/pipeline.cpp: the reasons a scene skips a
+// stage, and the parts of what a stage did, which describeStage() joins with ", "). Matched by
+// engineStageText() only, never among the messages above: a short template such as "%1 lights"
+// would take a message's ending for its own.
+const char* const kStageTexts[] = {
+    // Why a stage was skipped.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "none marked"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "no sun marked"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "none inserted"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the lights are kept as estimated (initial lights asked for)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "turned off"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "no light marked"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "every light locked or given (\"refine\": false)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "every light locked"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the working copy is the photo"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the lights were not refined"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "no light moved"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "lights moved by at most %1 % of their size (under %2 %): the first "
+                      "estimate's lights are kept"),
+    // What a stage did, part by part.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 x %2 px"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "linear photo"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "estimated"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo area-averaged"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo's own size"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "estimated from the photo"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the file's vanishing points and back wall"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 x %2 m"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 m high"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 matte"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 mattes"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surface built"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surfaces built"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surface"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surfaces"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 reflective"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 outlined"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 placed in 3D"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 sun"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 suns"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 sky through an unseen window"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 skies through unseen windows"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 light"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 lights"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 pass"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 passes"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the first estimate's rays replayed"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 points x %2 rays"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 light fit iterations"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 of %2 light refined"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 of %2 lights refined"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 evaluation"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 evaluations"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "lights moved by at most %1 % of their size; the first estimate fits the "
+                      "photo better (log residual %2 against %3) and is kept; the refit took %4"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "lights moved by at most %1 % of their size; the refit is kept (log residual "
+                      "%2 against the first estimate's %3)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "from %1 x %2 px: maps %3 s"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "surfaces cast %1 s"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 object"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 objects"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "none"),
+};
+
 // Heads of "HEAD: REST" that are words rather than keys: translated, then the rest.
 const char* const kHeads[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "line %1"),
@@ -128,6 +204,7 @@ const char* const kHeads[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "lighting (refit)"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "light refinement"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "decomposition"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "layout"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "camera response"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "kept sRGB"),
@@ -159,13 +236,15 @@ std::vector<Pattern> patternsOf(const char* const (&sources)[N]) {
   return out;
 }
 
-// `text` translated when one of `patterns` matches it whole; its parts translated in turn.
-std::optional<QString> translateWhole(const QString& text, const std::vector<Pattern>& patterns) {
+// `text` translated when one of `patterns` matches it whole; its parts translated in turn by
+// `part`.
+std::optional<QString> translateWhole(const QString& text, const std::vector<Pattern>& patterns,
+                                      QString (*part)(const QString&) = engineText) {
   for (const Pattern& p : patterns) {
     const QRegularExpressionMatch m = p.re.match(text);
     if (!m.hasMatch()) continue;
     QString out = QCoreApplication::translate(kContext, p.source);
-    for (int i = 1; i <= m.lastCapturedIndex(); ++i) out = out.arg(engineText(m.captured(i)));
+    for (int i = 1; i <= m.lastCapturedIndex(); ++i) out = out.arg(part(m.captured(i)));
     return out;
   }
   return std::nullopt;
@@ -201,10 +280,39 @@ QStringList engineTexts(const QStringList& english) {
   return out;
 }
 
+namespace {
+
+const std::vector<Pattern>& stagePatterns() {
+  static const std::vector<Pattern> patterns = patternsOf(kStageTexts);
+  return patterns;
+}
+
+// One part of a stage's text (a number, "3 passes" inside a longer part) in the language; as it
+// is when no stage template matches it.
+QString stagePart(const QString& english) {
+  return translateWhole(english, stagePatterns(), stagePart).value_or(english);
+}
+
+}  // namespace
+
+QString engineStageText(const QString& english) {
+  const QString separator = QStringLiteral(", ");
+  QStringList parts = english.split(separator);
+  for (QString& part : parts) {
+    // A scene key ("camera.response": the curve the file gave) reads the same in every language.
+    if (!part.contains(QLatin1Char(' ')) && part.contains(QLatin1Char('.'))) continue;
+    std::optional<QString> shown = translateWhole(part, stagePatterns(), stagePart);
+    if (!shown) return english;  // never half translated
+    part = *shown;
+  }
+  return parts.join(separator);
+}
+
 QStringList engineTemplates() {
   QStringList out;
   for (const char* s : kSentences) out << QString::fromUtf8(s);
   for (const char* s : kHeads) out << QString::fromUtf8(s);
+  for (const char* s : kStageTexts) out << QString::fromUtf8(s);
   out << QStringLiteral("%1: %2");
   return out;
 }

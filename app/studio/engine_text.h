@@ -22,6 +22,11 @@ namespace inlay::studio {
 QString engineText(const QString& english);
 QStringList engineTexts(const QStringList& english);
 
+// The reason a preparation stage was skipped, or what it did (StageRecord::reason, ::detail:
+// parts joined by ", ", each a template of its own: "1 light, 0 suns, 5 passes, ..."), in the
+// current language; as it is (English) when one part matches no template.
+QString engineStageText(const QString& english);
+
 // The templates as the engine writes them (for the test that checks every one is translated).
 QStringList engineTemplates();
 

@@ -1,5 +1,6 @@
 #include "log_dock.h"
 #include "engine_text.h"
+#include "stage_text.h"
 
 #include <QEvent>
 #include <QFontDatabase>
@@ -46,8 +47,7 @@ void LogDock::onDocumentChanged(const ChangeEvent& event) {
   // The warnings first: the stages, one short line each, end the block where the view scrolls.
   for (const QString& w : document_->warnings())
     lines << QStringLiteral("  ") + tr("warning: %1").arg(engineText(w));
-  for (const StageRecord& s : prepared->stages)
-    lines << QStringLiteral("  ") + QString::fromStdString(describeStage(s));
+  for (const StageRecord& s : prepared->stages) lines << QStringLiteral("  ") + stageLine(s);
   log_->appendPlainText(lines.join(QLatin1Char('\n')));
 }
 

@@ -1,7 +1,7 @@
 // The log dock: after each preparation of the scene, what it did, stage by stage (each stage's
 // seconds, or why this scene skipped it: "shafts: skipped, no sun marked"), and its warnings;
-// or why it failed. Newest at the bottom; the same lines as `inlay-cli --verbose`. GUI thread
-// only.
+// or why it failed. Newest at the bottom; the same lines as `inlay-cli --verbose`, in the
+// studio's language (stage_text.h). GUI thread only.
 #pragma once
 
 #include "document.h"

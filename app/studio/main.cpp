@@ -3,6 +3,8 @@
 // --recover restores the work a crash left (Autosaver) without asking; without it the window asks.
 // --insert-model MODEL (repeatable) inserts a model file once the scene is prepared, as Insert
 // Model… does (OBJ, PLY, glTF, GLB, FBX, DAE, 3DS).
+// --show-log shows the Log dock across the bottom of the window (by default its tab is behind the
+// Camera Response dock's), for a screenshot of its lines.
 // Test hook: inlay --screenshot OUT.png [--wait-spp N | --wait-seconds S] [SCENE | PHOTO] opens
 // the scene, waits until the composite reaches N samples per pixel (default 4), or until the
 // shown frame was rendered for S seconds (or its render ends, or 60 s pass, times
@@ -11,6 +13,7 @@
 // written, showing the error), 1 when OUT.png could not be written.
 #include "document.h"
 #include "i18n.h"
+#include "log_dock.h"
 #include "main_window.h"
 #include "render_controller.h"
 
@@ -68,6 +71,9 @@ int main(int argc, char** argv) {
       QStringLiteral("wait-seconds"),
       QCoreApplication::translate("main", "Instead: render seconds of the shown frame to wait for."),
       QStringLiteral("s"));
+  const QCommandLineOption showLogOpt(
+      QStringLiteral("show-log"),
+      QCoreApplication::translate("main", "Show the Log dock across the bottom of the window."));
   const QCommandLineOption recoverOpt(
       QStringLiteral("recover"),
       QCoreApplication::translate("main", "Restore unsaved work left by a crash without asking."));
@@ -80,6 +86,7 @@ int main(int argc, char** argv) {
   parser.addOption(screenshotOpt);
   parser.addOption(waitSppOpt);
   parser.addOption(waitSecondsOpt);
+  parser.addOption(showLogOpt);
   // Not process(): a usage error exits with 2, as cli.md asks.
   if (!parser.parse(QCoreApplication::arguments())) {
     std::fprintf(stderr, "inlay: %s\n", qUtf8Printable(parser.errorText()));
@@ -115,6 +122,13 @@ int main(int argc, char** argv) {
   window.setInteractive(!screenshot);
   if (screenshot) window.resize(1280, 800);
   window.show();
+  if (parser.isSet(showLogOpt)) {  // across the bottom, where its lines are read whole
+    window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
+    window.logDock()->show();
+    // Once laid out: a dock added before the window's first layout keeps its minimum height.
+    QTimer::singleShot(0, &window,
+                       [&window] { window.resizeDocks({window.logDock()}, {300}, Qt::Vertical); });
+  }
   bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
   // Work a crash left behind replaces what was opened (after asking, unless --recover).
   if (parser.isSet(recoverOpt)) opened = window.restoreRecovery() || opened;

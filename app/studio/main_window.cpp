@@ -91,6 +91,7 @@ QString stageText(const QString& stage) {
   if (stage == QLatin1String("camera")) return MainWindow::tr("Estimating the camera");
   if (stage == QLatin1String("room")) return MainWindow::tr("Fitting the room");
   if (stage == QLatin1String("lighting")) return MainWindow::tr("Estimating the lighting");
+  if (stage == QLatin1String("refine")) return MainWindow::tr("Refining the lights");
   if (stage == QLatin1String("objects")) return MainWindow::tr("Placing the objects");
   return stage;
 }

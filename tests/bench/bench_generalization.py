@@ -26,7 +26,8 @@ against run time: object RMSE against render wall seconds, albedo MAE against de
 response error against its seconds); prints Markdown tables per half.
 
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
-                               [--seconds S] [--spp N [--long-spp M]] [--no-albedo] [--no-plain] [--rescore]
+                               [--seconds S] [--spp N [--long-spp M]] [--product [CAP]] [--no-albedo]
+                               [--no-plain] [--rescore]
                                [--variants ROOM_CAMERA,...]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
@@ -39,6 +40,15 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 error where the object is glossy or lit from behind the camera (t01, t07;
                 bench_error_budget.py), not on glass: the _long columns are the product's
                 error with little of the benchmark's noise
+  --product [CAP]  also render each variant as `inlay-cli render` does for a user by default: the
+                scene without render.spp and render.seconds (so the CLI's defaults: at most 256
+                samples, adaptive sampling until every pixel's estimated error is below
+                render.noise 0.004, no clock), seed 1, with only --seconds CAP (default 1800) as a
+                guard; scored: object_rmse_product, object_rmse_adjusted_product,
+                around_rmse_product, and what it took: product_spp (the samples per pixel it
+                stopped at), product_render_s (the render's own seconds), render_product_wall_s
+                (the command, preparation included), product_estimated_error (its final noise
+                estimate). With --spp the 16-sample columns are kept for comparison
   --variants t03_s1,t11_s2  measure only these room_camera variants (e.g. the photos where two
                 builds choose different responses; merge with the other build's rows by --from-csv)
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
@@ -225,6 +235,8 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
         return row
     if o["spp"] and o["long_spp"]:
         row.update(long_render(cli, tools, scene, vdir, os.path.join(out, tag + "_long.png"), o))
+    if o["product"]:
+        row.update(product_render(cli, tools, scene, vdir, os.path.join(out, tag + "_product"), o))
     if os.path.exists(lj):
         row.update(light_errors(lj, truth, cam))
     if o["albedo"]:
@@ -384,6 +396,30 @@ def long_render(cli, tools, scene, vdir, comp, o):
                          7200, ("object_rmse", "object_rmse_adjusted", "around_rmse"), o["rescore"], "_long")
 
 
+def product_render(cli, tools, scene, vdir, base, o):
+    """The `_product` columns: the variant rendered with the CLI's default stop rule (the scene
+    without render.spp and render.seconds; --seconds o["product"] only as a guard), scored, with
+    the samples and seconds it took (from its --progress-csv)."""
+    doc = json.load(open(scene))
+    for k in ("spp", "seconds"):
+        doc.get("render", {}).pop(k, None)
+    user_scene, progress = base + ".json", base + "_progress.csv"
+    with open(user_scene, "w") as f:
+        json.dump(doc, f, indent=1)
+    row = render_scored(cli, tools, user_scene, vdir, base + ".png",
+                        ["--seconds", "%g" % o["product"], "--progress-csv", progress], o["product"] * 2 + 600,
+                        ("object_rmse", "object_rmse_adjusted", "around_rmse"), o["rescore"], "_product",
+                        also_stale=(progress,))
+    if os.path.exists(progress):
+        import csv
+        last = list(csv.DictReader(open(progress)))[-1:]
+        if last:
+            row["product_spp"] = int(float(last[0]["spp"]))
+            row["product_render_s"] = round(float(last[0]["seconds"]), 2)
+            row["product_estimated_error"] = round(float(last[0]["estimated_error"]), 5)
+    return row
+
+
 def render_scored(cli, tools, scene, vdir, comp, render_args, timeout, keys, rescore, suffix, also_stale=()):
     """Renders `scene` to `comp` (seed 1; kept when rescoring and it exists) and scores it with the
     harness: `keys` + suffix, the render's wall seconds as render<suffix>_wall_s, or error<suffix>."""
@@ -425,10 +461,12 @@ def summarise(rows):
             s = {"half": h, "camera": kind, "runs": len(sel)}
             for k in ("object_rmse", "object_rmse_adjusted", "around_rmse", "around_rmse_do_nothing",
                       "object_rmse_long", "object_rmse_adjusted_long", "around_rmse_long", "light_intensity_error", "albedo_ours_mae", "albedo_retinex_mae", "response_error",
-                      "render_wall_s", "decompose_ours_s"):
+                      "render_wall_s", "decompose_ours_s", "object_rmse_product", "object_rmse_adjusted_product",
+                      "around_rmse_product", "product_spp", "product_render_s"):
                 s["median_" + k] = med(sel, k)
             s["max_object_rmse"] = max(numbers(sel, "object_rmse"), default="")
             s["max_object_rmse_long"] = max(numbers(sel, "object_rmse_long"), default="")
+            s["max_object_rmse_product"] = max(numbers(sel, "object_rmse_product"), default="")
             ours, ret = numbers(sel, "albedo_ours_mae"), numbers(sel, "albedo_retinex_mae")
             if ours:
                 s["mean_albedo_ours_mae"] = round(statistics.mean(ours), 4)
@@ -448,6 +486,9 @@ def print_tables(rows, summary):
             "object_rmse_adjusted_long", "around_rmse",
             "around_rmse_do_nothing", "light_intensity_error", "light_worst_ratio", "albedo_ours_mae",
             "albedo_retinex_mae", "response_error", "render_wall_s"]
+    if any("object_rmse_product" in r for r in rows):
+        cols += ["object_rmse_product", "object_rmse_adjusted_product", "around_rmse_product", "product_spp",
+                 "product_render_s"]
     for h in ("A", "B"):
         sel = [r for r in rows if r["half"] == h]
         if not sel:
@@ -506,6 +547,57 @@ def plot(out, rows):
                     ax[pane].legend(fontsize=7)
 
 
+def plot_samples(out, rows):
+    """With --long-spp (and --product): OUT/generalization_samples.png, per plain photo the object
+    RMSE at --spp, --long-spp and the CLI's default stop rule, and the same against the render
+    command's wall seconds (one line per room, preparation included in each)."""
+    runs = (("", "s", "--spp"), ("_long", "x", "--long-spp"), ("_product", "^", "default stop"))
+    sel = [r for r in rows if r["camera"] == "plain" and isinstance(r.get("object_rmse_long"), float)]
+    if not sel:
+        return
+    rooms = sorted({r["room"] for r in sel})
+    with benchlib.figure(os.path.join(out, "generalization_samples.png"), 1, 2, figsize=(14, 4.8)) as ax:
+        if ax is None:
+            return
+        labelled = set()
+        for i, room in enumerate(rooms):
+            r = next(r for r in sel if r["room"] == room)
+            c = "C0" if r["half"] == "A" else "C1"
+            pts = []
+            for suffix, marker, label in runs:
+                e, t = r.get("object_rmse" + suffix), r.get("render%s_wall_s" % suffix)
+                if isinstance(e, float):
+                    ax[0].plot(i, e, marker, color="grey" if label not in labelled else c, ms=7,
+                               label=None if label in labelled else label)
+                    ax[0].plot(i, e, marker, color=c, ms=7)
+                    labelled.add(label)
+                    if isinstance(t, float):
+                        pts.append((t, e, marker))
+            ax[1].plot([p[0] for p in pts], [p[1] for p in pts], "-", color=c, alpha=0.5)
+            for t, e, marker in pts:
+                ax[1].plot(t, e, marker, color=c, ms=7)
+            if pts:
+                ax[1].annotate(room, (pts[-1][0], pts[-1][1]), fontsize=7, xytext=(3, 3), textcoords="offset points")
+        for a in ax:
+            a.axhline(0.03, ls="--", color="grey")
+            a.axhline(0.08, ls=":", color="grey")
+        ax[0].set_xticks(np.arange(len(rooms)))
+        ax[0].set_xticklabels(["%s%s" % (r, benchlib.half(r)) for r in rooms], fontsize=7)
+        ax[0].set(ylabel="object RMSE (sRGB)", title="object RMSE per room (half A blue, B orange; target 0.03, worst 0.08)")
+        ax[0].legend(fontsize=7)
+        ax[1].set(xscale="log", xlabel="render command wall seconds (preparation included)", ylabel="object RMSE",
+                  title="error against run time: square --spp, cross --long-spp, triangle default stop")
+
+
+def product_cap(argv):
+    """--product [CAP]: the guard in seconds (default 1800); 0 without --product."""
+    if "--product" not in argv:
+        return 0.0
+    i = argv.index("--product")
+    nxt = argv[i + 1] if i + 1 < len(argv) else ""
+    return float(nxt) if re.fullmatch(r"[0-9.]+", nxt) else 1800.0
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     argv = sys.argv[1:]
@@ -513,7 +605,8 @@ def main():
     os.makedirs(os.path.join(out, "variants"), exist_ok=True)
     kinds = ([] if "--no-plain" in argv else ["plain"]) + ["s%d" % k for k in range(1, int(opt("--cameras", "3")) + 1)]
     rc, _, help_text, help_err = run([cli, "--help"])
-    o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
+    o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")),
+         "product": product_cap(argv), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
          "has_response": "inlay-cli response" in help_text + help_err}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     if opt("--clamp-grid", ""):
@@ -548,6 +641,7 @@ def main():
     benchlib.write_csv(os.path.join(out, "generalization_summary.csv"), summary, table="generalization")
     print_tables(rows, summary)
     plot(out, rows)
+    plot_samples(out, rows)
     if opt("--baseline", ""):
         compare(out, rows, os.path.abspath(opt("--baseline", "")))
     print("wrote", os.path.join(out, "generalization.csv"))

@@ -891,7 +891,8 @@ Status sunsFromShafts(Preparation& p, std::string& detail) {
     skies += addSkyOfUnseenWindow(p, i, shaft->sun);
   }
   detail = countOf(p.suns.size(), "sun");
-  if (skies > 0) detail += ", " + countOf(skies, "sky through an unseen window");
+  if (skies == 1) detail += ", 1 sky through an unseen window";
+  if (skies > 1) detail += ", " + std::to_string(skies) + " skies through unseen windows";
   return {};
 }
 
