@@ -18,6 +18,16 @@ generalisation benchmark's budget), scored by harness.py score (object RMSE, sRG
                   estimated) when the estimate already says sRGB
   all_true        true lights, true albedo and true response at --spp
   all_true_long   the same at --long-spp samples (default 128)
+A room with a sun whose window is out of view (its sky is a light Inlay adds after the scene
+file's, and one of the truth's lights here: the window's rectangle at the sky's radiance) also:
+  true_sky        our lights, the window's light at the truth's sky radiance (its place ours)
+  true_window     our lights, the window's light replaced by the truth's window and sky
+  true_patch      where the photo clips, the render's bounces read the truth's radiance
+                  (photo_linear.exr in the photo's units, --replace-radiance) instead of the
+                  light model's albedo x fitted sun: the sun's strength and colour as the
+                  sunlit patch bounces them
+  true_ceiling    the unseen ceiling's albedo the truth's (--surface-albedo)
+  sun_all_true    true_window, true_patch and true_ceiling together
 Geometry (the box, the table, the object's place) comes from the harness's assisted inputs (the
 truth's own vanishing points, corners and outlines) and cannot be swapped; its error is measured:
 the box's size against the truth's (the preparation's report) and the object mask's IoU against
@@ -35,6 +45,7 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
                                    converged: geometry, the renderer against Cycles, the truth's
                                    own Monte-Carlo noise, JPEG)
   interaction E0^2 minus all of the above (components that cancel or add up; may be negative)
+  sky, window, patch, ceiling, sun_all: E0^2 - E(true_sky)^2 and so on (sun rooms only)
 The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
 noise itself, not its share of the error). A light the truth puts beyond our rear wall (the box
 closes 0.5 m behind the camera) is partly hidden by it: `places` is then negative.
@@ -60,6 +71,7 @@ import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
 COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "grain", "floor", "interaction"]
+SUN_RUNS = ["true_sky", "true_window", "true_patch", "true_ceiling", "sun_all_true"]
 
 
 def quad_area(corners):
@@ -67,11 +79,33 @@ def quad_area(corners):
     return 0.5 * float(np.linalg.norm(np.cross(c[2] - c[0], c[3] - c[1])))
 
 
+def to_ours(truth, corners):
+    """World corners in Inlay's frame (camera at (0, h, 0))."""
+    cam = truth["camera"]["position"]
+    return [[p[0] - cam[0], p[1], p[2] - cam[2]] for p in corners]
+
+
+def sky_window(truth):
+    """The sky through a sun's window out of view as the truth has it (the window's rectangle,
+    emitting into the room at the sky's radiance, photo units), or None."""
+    sun = truth.get("sun") or {}
+    win, sky = sun.get("window", {}), sun.get("sky") or truth.get("spec", {}).get("sun", {}).get("sky")
+    if win.get("view_status") != "out_of_view" or not sky:
+        return None
+    c = np.array(to_ours(truth, win["world_corners"]), float)
+    if np.dot(np.cross(c[1] - c[0], c[3] - c[0]), win["inward_normal"]) < 0:
+        c = c[::-1]  # emit into the room (AreaLight's normal: (c1 - c0) x (c3 - c0))
+    rgb = np.array(sky["color"], float) * sky["strength"] * truth["exposure"]["scale"]
+    return {"corners": c.tolist(), "rgb": rgb.tolist()}
+
+
 def true_lights(truth):
-    """The truth's area lights in Inlay's frame (camera at (0, h, 0)) and the photo's units."""
-    cam, scale = truth["camera"]["position"], truth["exposure"]["scale"]
-    return [{"corners": [[p[0] - cam[0], p[1], p[2] - cam[2]] for p in L["world_corners"]],
-             "rgb": [v * scale for v in L["radiance_rgb"]]} for L in truth["lights"]]
+    """The truth's area lights in Inlay's frame and the photo's units; a sun's window out of view
+    last (Inlay adds its sky as a light after the scene file's)."""
+    scale = truth["exposure"]["scale"]
+    out = [{"corners": to_ours(truth, L["world_corners"]), "rgb": [v * scale for v in L["radiance_rgb"]]}
+           for L in truth["lights"]]
+    return out + [w for w in [sky_window(truth)] if w]
 
 
 def with_true_power(ours, truth):
@@ -81,6 +115,28 @@ def with_true_power(ours, truth):
         k = quad_area(t["corners"]) / max(quad_area(o["corners"]), 1e-9)
         out.append({"corners": o["corners"], "rgb": [v * k for v in t["rgb"]]})
     return out + [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[len(out):]]
+
+
+def sun_runs(truth, room_dir, ours, p, scene, spp):
+    """The sun room's swaps (see the docstring): {} unless a sun's window is out of view and we
+    added its light (the last of ours, after the truth's other lights)."""
+    win = sky_window(truth)
+    if not win or len(ours) <= len(truth["lights"]):
+        return {}
+    import OpenImageIO as oiio
+    keep = [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[:-1]]
+    json.dump({"lights": keep + [{"corners": ours[-1]["corners"], "rgb": win["rgb"]}]},
+              open(p("true_sky.json"), "w"), indent=1)
+    json.dump({"lights": keep + [win]}, open(p("true_window.json"), "w"), indent=1)
+    hdr = oiio.ImageBuf(os.path.join(room_dir, "photo_linear.exr"))
+    px = np.asarray(hdr.get_pixels(oiio.FLOAT))[..., :3] * truth["exposure"]["scale"]
+    oiio.ImageBuf(np.ascontiguousarray(px, np.float32)).write(p("true_radiance.exr"))
+    json.dump({"ceiling": truth["spec"]["materials"]["ceiling"]["color"]}, open(p("true_ceiling.json"), "w"))
+    patch, ceiling = ["--replace-radiance", p("true_radiance.exr")], ["--surface-albedo", p("true_ceiling.json")]
+    return {"true_sky": (scene, spp, ["--replace-lights", p("true_sky.json")]),
+            "true_window": (scene, spp, ["--replace-lights", p("true_window.json")]),
+            "true_patch": (scene, spp, patch), "true_ceiling": (scene, spp, ceiling),
+            "sun_all_true": (scene, spp, ["--replace-lights", p("true_window.json")] + patch + ceiling)}
 
 
 def render(cli, scene, png, spp, extra, log, reuse=False):
@@ -170,6 +226,7 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
             "all_true": (p("scene_srgb.json"), spp, ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb]),
             "all_true_long": (p("scene_srgb.json"), long_spp,
                               ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb])}
+    runs.update(sun_runs(truth, room_dir, ours, p, scene, spp))
     if family == "srgb":
         del runs["true_response"]  # the same scene as estimated: nothing to swap
     for name, (sf, n, extra) in runs.items():
@@ -211,6 +268,9 @@ def budget(row):
              "albedo": e0 - e("true_albedo") ** 2, "response": e0 - e("true_response") ** 2,
              "noise": e0 - e("estimated_long") ** 2, "grain": e0 - e("no_grain") ** 2, "floor": e("all_true_long") ** 2}
     parts["interaction"] = e0 - sum(parts.values())
+    for run in SUN_RUNS:  # sun rooms: each swap on its own, not part of the sum
+        if isinstance(e(run), float):
+            parts[run.replace("true_", "").replace("_true", "")] = e0 - e(run) ** 2
     return {"share_" + k: round(v / e0, 3) for k, v in parts.items()}
 
 
@@ -258,6 +318,9 @@ def main():
     cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "no_grain_rmse", "true_intensity_rmse", "true_lights_rmse",
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
+    if any(r.get("true_patch_rmse") not in (None, "") for r in rows):
+        cols += [k + "_rmse" for k in SUN_RUNS] + ["share_" + k.replace("true_", "").replace("_true", "")
+                                                  for k in SUN_RUNS]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
     plot(out, rows)
     print("wrote", os.path.join(out, "error_budget.csv"))
