@@ -1411,5 +1411,47 @@ TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
   }
 }
 
+// t04's albedos on the synthetic room: walls 0.45, a floor 0.5 the sun patch clips, a white
+// ceiling (0.88) the camera does not see, a blue sky through a window out of view and a warm sun
+// (t04's radiances). The fit, with its unseen ceiling the walls' mean, gets the sky within 10 %
+// (measured 0.95 / 0.99 / 1.08) and the sun within 20 % (0.83 / 0.83 / 0.89): t04's sky at
+// 0.57 of the truth is not this room's mechanism alone. Printed for the record, not asserted
+// (docs/generalization.md, "t10's object error, taken apart"): the truth's ceiling inside the fit
+// (fitUnseenCeilingAlbedo) makes the sky 1.8 times the truth here.
+TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
+  SyntheticRoom r = emptyRoom();
+  r.camera.worldFromCamera = Eigen::AngleAxisd(-32 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  const Vec3 wall(0.45, 0.45, 0.48);
+  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
+  SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7));
+  sw.window.radiance = Vec3(2.4, 3.05, 4.4);
+  r.photo = renderRoom(r, {sw.window}, {sw.sun}, 32);
+  ImageF photo = r.photo;
+  for (float& v : photo.data) v = std::min(v, 1.f);
+  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+  ASSERT_TRUE(opening.has_value());
+  ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
+  for (const bool trueCeiling : {false, true}) {
+    LightingOptions opt;
+    opt.gatherSamples = 128;
+    opt.gatherStride = 2;
+    opt.threads = 2;
+    if (trueCeiling) opt.fitUnseenCeilingAlbedo = r.albedo[1];
+    const auto est =
+        estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(), {sw.sun}, opt);
+    ASSERT_TRUE(est.ok()) << est.error().message();
+    const Vec3 sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+    const Vec3 sun = est->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
+    std::printf("%s: sky / true %.2f %.2f %.2f, sun / true %.2f %.2f %.2f\n",
+                trueCeiling ? "the truth's ceiling in the fit" : "the product", sky.x(), sky.y(),
+                sky.z(), sun.x(), sun.y(), sun.z());
+    if (trueCeiling) continue;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(sky[c], 1.0, 0.2) << "channel " << c;
+      EXPECT_NEAR(sun[c], 1.0, 0.3) << "channel " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace inlay

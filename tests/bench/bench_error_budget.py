@@ -28,6 +28,11 @@ file's, and one of the truth's lights here: the window's rectangle at the sky's 
                   sunlit patch bounces them
   true_ceiling    the unseen ceiling's albedo the truth's (--surface-albedo)
   sun_all_true    true_window, true_patch and true_ceiling together
+  fit_true_ceiling the light fit's model of the unseen ceiling the truth's colour
+                  (--fit-unseen-ceiling; the render's unseen ceiling stays the product's): the
+                  sky's and the sun's fitted strength as the ceiling sets them
+  floor_no_grain  all_true_long without our grain (--no-grain): what stays with every input
+                  true, less the grain we add independently of the truth's
 Geometry (the box, the table, the object's place) comes from the harness's assisted inputs (the
 truth's own vanishing points, corners and outlines) and cannot be swapped; its error is measured:
 the box's size against the truth's (the preparation's report) and the object mask's IoU against
@@ -45,13 +50,14 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
                                    converged: geometry, the renderer against Cycles, the truth's
                                    own Monte-Carlo noise, JPEG)
   interaction E0^2 minus all of the above (components that cancel or add up; may be negative)
-  sky, window, patch, ceiling, sun_all: E0^2 - E(true_sky)^2 and so on (sun rooms only)
+  sky, window, patch, ceiling, sun_all, fit_ceiling: E0^2 - E(true_sky)^2 and so on, each
+              on its own, not part of the sum (sun rooms only)
 The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
 noise itself, not its share of the error). A light the truth puts beyond our rear wall (the box
 closes 0.5 m behind the camera) is partly hidden by it: `places` is then negative.
 
 Writes OUT/error_budget.csv (one row per room), OUT/error_budget.png (per room: each
-component's share), docs/bench/error_budget.md; every composite, scene file and lights file
+component's share), OUT/error_budget_sun.png (sun rooms: the object's RMSE of each run), docs/bench/error_budget.md; every composite, scene file and lights file
 stays in OUT. Rooms run in the order given; each room's row is kept in OUT/rows/ so that two
 processes can split the rooms and the last to finish writes the union (--rows-only: write the
 CSV and plot from OUT/rows/ without measuring).
@@ -71,7 +77,7 @@ import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
 COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "grain", "floor", "interaction"]
-SUN_RUNS = ["true_sky", "true_window", "true_patch", "true_ceiling", "sun_all_true"]
+SUN_RUNS = ["true_sky", "true_window", "true_patch", "true_ceiling", "sun_all_true", "fit_true_ceiling"]
 
 
 def quad_area(corners):
@@ -117,7 +123,7 @@ def with_true_power(ours, truth):
     return out + [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[len(out):]]
 
 
-def sun_runs(truth, room_dir, ours, p, scene, spp):
+def sun_runs(truth, room_dir, ours, p, scene, spp, long_spp):
     """The sun room's swaps (see the docstring): {} unless a sun's window is out of view and we
     added its light (the last of ours, after the truth's other lights)."""
     win = sky_window(truth)
@@ -133,10 +139,15 @@ def sun_runs(truth, room_dir, ours, p, scene, spp):
     oiio.ImageBuf(np.ascontiguousarray(px, np.float32)).write(p("true_radiance.exr"))
     json.dump({"ceiling": truth["spec"]["materials"]["ceiling"]["color"]}, open(p("true_ceiling.json"), "w"))
     patch, ceiling = ["--replace-radiance", p("true_radiance.exr")], ["--surface-albedo", p("true_ceiling.json")]
+    fit_ceiling = ["--fit-unseen-ceiling", ",".join("%.4f" % v for v in truth["spec"]["materials"]["ceiling"]["color"])]
+    srgb, alb = p("scene_srgb.json"), os.path.join(room_dir, "albedo.exr")
     return {"true_sky": (scene, spp, ["--replace-lights", p("true_sky.json")]),
             "true_window": (scene, spp, ["--replace-lights", p("true_window.json")]),
             "true_patch": (scene, spp, patch), "true_ceiling": (scene, spp, ceiling),
-            "sun_all_true": (scene, spp, ["--replace-lights", p("true_window.json")] + patch + ceiling)}
+            "sun_all_true": (scene, spp, ["--replace-lights", p("true_window.json")] + patch + ceiling),
+            "fit_true_ceiling": (scene, spp, fit_ceiling),
+            "floor_no_grain": (srgb, long_spp, ["--no-grain", "--replace-lights", p("true_lights.json"), "--replace-albedo",
+                                                alb])}
 
 
 def render(cli, scene, png, spp, extra, log, reuse=False):
@@ -226,7 +237,7 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
             "all_true": (p("scene_srgb.json"), spp, ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb]),
             "all_true_long": (p("scene_srgb.json"), long_spp,
                               ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb])}
-    runs.update(sun_runs(truth, room_dir, ours, p, scene, spp))
+    runs.update(sun_runs(truth, room_dir, ours, p, scene, spp, long_spp))
     if family == "srgb":
         del runs["true_response"]  # the same scene as estimated: nothing to swap
     for name, (sf, n, extra) in runs.items():
@@ -300,6 +311,28 @@ def plot(out, rows):
             ax[k // cols][k % cols].axis("off")
 
 
+def plot_sun(out, rows):
+    """Sun rooms: the object's RMSE of each run, estimated to everything true."""
+    runs = ["estimated", "no_grain", "estimated_long"] + SUN_RUNS + ["true_albedo", "all_true_long", "floor_no_grain"]
+    rows = [r for r in rows if isinstance(r.get("true_patch_rmse"), float)]
+    if not rows:
+        return
+    with benchlib.figure(os.path.join(out, "error_budget_sun.png"), 1, len(rows), figsize=(4.6 * len(rows), 3.6),
+                         squeeze=False) as ax:
+        if ax is None:
+            return
+        for k, r in enumerate(rows):
+            a = ax[0][k]
+            v = [r.get(n + "_rmse") if isinstance(r.get(n + "_rmse"), float) else 0 for n in runs]
+            a.barh(range(len(v)), v, color=["C0"] * 3 + ["C1"] * len(SUN_RUNS) + ["C2"] * 3)
+            a.axvline(r["estimated_rmse"], color="k", lw=0.6)
+            a.set_yticks(range(len(v)))
+            a.set_yticklabels(runs, fontsize=8)
+            a.invert_yaxis()
+            a.set_title("%s: object RMSE per swap (16 spp; long: 128)" % r["room"], fontsize=8)
+            a.set_xlabel("object RMSE (sRGB)", fontsize=8)
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
@@ -319,10 +352,11 @@ def main():
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
     if any(r.get("true_patch_rmse") not in (None, "") for r in rows):
-        cols += [k + "_rmse" for k in SUN_RUNS] + ["share_" + k.replace("true_", "").replace("_true", "")
+        cols += [k + "_rmse" for k in SUN_RUNS + ["floor_no_grain"]] + ["share_" + k.replace("true_", "").replace("_true", "")
                                                   for k in SUN_RUNS]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
     plot(out, rows)
+    plot_sun(out, rows)
     print("wrote", os.path.join(out, "error_budget.csv"))
     return 0
 
