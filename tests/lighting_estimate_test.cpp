@@ -421,13 +421,25 @@ TEST(Lighting, TheBeamCarriedBackFindsItsWindow) {
 // marks it: the fit lit the room with the gathered light and the sun alone and made up the
 // difference with a bright albedo. The opening the beam came through (openingOfBeam), fitted as
 // a light, gives the sky its light back.
-TEST(Lighting, TheSkyOfAWindowOutOfViewLightsTheRoom) {
+// emptyRoom looking 32 degrees down: a window on its back wall is out of view.
+SyntheticRoom roomLookingDown() {
   SyntheticRoom r = emptyRoom();
   r.camera.worldFromCamera = Eigen::AngleAxisd(-32 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
-  const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4));
+  return r;
+}
+
+// `r` rendered with `sw`'s sky and sun (r.photo) and clipped at 1, as a photo has it.
+ImageF clippedSunPhoto(SyntheticRoom& r, const SunWindow& sw) {
   r.photo = renderRoom(r, {sw.window}, {sw.sun}, 32);
   ImageF photo = r.photo;
   for (float& v : photo.data) v = std::min(v, 1.f);
+  return photo;
+}
+
+TEST(Lighting, TheSkyOfAWindowOutOfViewLightsTheRoom) {
+  SyntheticRoom r = roomLookingDown();
+  const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4));
+  const ImageF photo = clippedSunPhoto(r, sw);
   const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
   ASSERT_TRUE(opening.has_value());
   ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
@@ -1419,15 +1431,12 @@ TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
 // (docs/generalization.md, "t10's object error, taken apart"): the truth's ceiling inside the fit
 // (fitUnseenCeilingAlbedo) makes the sky 1.8 times the truth here.
 TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
-  SyntheticRoom r = emptyRoom();
-  r.camera.worldFromCamera = Eigen::AngleAxisd(-32 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  SyntheticRoom r = roomLookingDown();
   const Vec3 wall(0.45, 0.45, 0.48);
   r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
   SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7));
   sw.window.radiance = Vec3(2.4, 3.05, 4.4);
-  r.photo = renderRoom(r, {sw.window}, {sw.sun}, 32);
-  ImageF photo = r.photo;
-  for (float& v : photo.data) v = std::min(v, 1.f);
+  const ImageF photo = clippedSunPhoto(r, sw);
   const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
   ASSERT_TRUE(opening.has_value());
   ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
