@@ -30,7 +30,8 @@ file's, and one of the truth's lights here: the window's rectangle at the sky's 
   sun_all_true    true_window, true_patch and true_ceiling together
   fit_true_ceiling the light fit's model of the unseen ceiling the truth's colour
                   (--fit-unseen-ceiling; the render's unseen ceiling stays the product's): the
-                  sky's and the sun's fitted strength as the ceiling sets them
+                  sky's and the sun's fitted strength as the ceiling sets them (its lights:
+                  OUT/ROOM_fit_true_ceiling_lights.json, ours: OUT/ROOM_lights.json)
   floor_no_grain  all_true_long without our grain (--no-grain): what stays with every input
                   true, less the grain we add independently of the truth's
 Geometry (the box, the table, the object's place) comes from the harness's assisted inputs (the
@@ -53,7 +54,10 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
   sky, window, patch, ceiling, sun_all, fit_ceiling: E0^2 - E(true_sky)^2 and so on, each
               on its own, not part of the sum (sun rooms only)
 The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
-noise itself, not its share of the error). A light the truth puts beyond our rear wall (the box
+noise itself, not its share of the error); truth_noise_rms the truth's own noise there (adjacent
+pixels' difference over sqrt 2), which no render shares; on sun rooms patch_clipped_share,
+patch_true_rgb and patch_ours_rgb: the sunlit patch's clipped share per channel and its median
+radiance, the truth's and our render's. A light the truth puts beyond our rear wall (the box
 closes 0.5 m behind the camera) is partly hidden by it: `places` is then negative.
 
 Writes OUT/error_budget.csv (one row per room), OUT/error_budget.png (per room: each
@@ -145,7 +149,7 @@ def sun_runs(truth, room_dir, ours, p, scene, spp, long_spp):
             "true_window": (scene, spp, ["--replace-lights", p("true_window.json")]),
             "true_patch": (scene, spp, patch), "true_ceiling": (scene, spp, ceiling),
             "sun_all_true": (scene, spp, ["--replace-lights", p("true_window.json")] + patch + ceiling),
-            "fit_true_ceiling": (scene, spp, fit_ceiling),
+            "fit_true_ceiling": (scene, spp, fit_ceiling + ["--lights-json", p("fit_true_ceiling_lights.json")]),
             "floor_no_grain": (srgb, long_spp, ["--no-grain", "--replace-lights", p("true_lights.json"), "--replace-albedo",
                                                 alb])}
 
@@ -254,9 +258,42 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
         row["true_response_rmse"] = row["estimated_rmse"]
     row["noise_rms"] = noise_rms(p("all_true.png"), p("all_true_long.png"), room_dir)
     row["object_mask_iou"] = mask_iou(p("layers.exr"), room_dir)
+    row["truth_noise_rms"] = truth_noise(room_dir)
+    row.update(sun_patch(room_dir, truth, p("layers.exr")))
     row.update(box_error(p("report.json"), truth))
     row.update(budget(row))
     return row
+
+
+def truth_noise(room_dir):
+    """The truth's own noise on the object: the RMS difference of horizontally adjacent object
+    pixels (coverage >= 250/255 for both) over sqrt 2, sRGB (an upper bound: edges add to it)."""
+    m = cv2.imread(os.path.join(room_dir, "object_mask.png"), cv2.IMREAD_GRAYSCALE) >= 250
+    t = cv2.imread(os.path.join(room_dir, "truth.png"), cv2.IMREAD_COLOR).astype(np.float64) / 255.0
+    dx = (t[:, 1:] - t[:, :-1])[m[:, :-1] & m[:, 1:]]
+    return round(float(np.sqrt(np.mean(dx ** 2)) / np.sqrt(2)), 4) if dx.size else ""
+
+
+def sun_patch(room_dir, truth, layers_exr):
+    """The sunlit floor patch (the truth's polygon, eroded 2 px): the share of its pixels the
+    photo clips per channel, and the median radiance there of the truth (photo units) and of our
+    render's room without objects (--layers), per channel."""
+    import OpenImageIO as oiio
+    poly = (truth.get("sun") or {}).get("floor_patch", {}).get("image_polygon")
+    if not poly or not os.path.exists(layers_exr):
+        return {}
+    m = np.zeros((truth["image"]["height"], truth["image"]["width"]), np.uint8)
+    cv2.fillPoly(m, [np.round(np.array(poly)).astype(np.int32)], 1)
+    m = cv2.erode(m, np.ones((5, 5), np.uint8)) > 0
+    photo = cv2.imread(os.path.join(room_dir, "photo.png"), cv2.IMREAD_COLOR)[..., ::-1]
+    hdr = np.asarray(oiio.ImageBuf(os.path.join(room_dir, "photo_linear.exr")).get_pixels(oiio.FLOAT))[..., :3]
+    lay = oiio.ImageBuf(layers_exr)
+    names = list(lay.spec().channelnames)
+    ours = np.asarray(lay.get_pixels(oiio.FLOAT))[..., [names.index("without_objects." + c) for c in "RGB"]]
+    fmt = lambda v: " ".join("%.3g" % x for x in v)
+    return {"patch_clipped_share": fmt((photo[m] >= 250).mean(0)),
+            "patch_true_rgb": fmt(np.median(hdr[m], 0) * truth["exposure"]["scale"]),
+            "patch_ours_rgb": fmt(np.median(ours[m], 0))}
 
 
 def noise_rms(a_png, b_png, room_dir):
@@ -352,6 +389,7 @@ def main():
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
     if any(r.get("true_patch_rmse") not in (None, "") for r in rows):
+        cols += ["truth_noise_rms", "patch_clipped_share", "patch_true_rgb", "patch_ours_rgb"]
         cols += [k + "_rmse" for k in SUN_RUNS + ["floor_no_grain"]] + ["share_" + k.replace("true_", "").replace("_true", "")
                                                   for k in SUN_RUNS]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
