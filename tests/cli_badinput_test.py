@@ -16,6 +16,28 @@ def run(cli, *args, timeout=300):
     return subprocess.run([cli, *args], capture_output=True, text=True, timeout=timeout)
 
 
+def check_replace_radiance(cli, scene, plain_png, tmp):
+    """--replace-radiance (diagnostics): the bounces off the photo's clipped pixels read the file's
+    radiance, so the composite changes (the scene as `plain_png` rendered it, 4 samples, seed 1);
+    a file missing or of another size exits 2 naming the file and the flag."""
+    import numpy as np
+    import OpenImageIO as oiio
+    import cv2
+    bright, small, out = (os.path.join(tmp, n) for n in ("radiance50.exr", "small.exr", "replaced.png"))
+    h, w = cv2.imread(plain_png).shape[:2]
+    oiio.ImageBuf(np.full((h, w, 3), 50, np.float32)).write(bright)
+    oiio.ImageBuf(np.full((10, 12, 3), 50, np.float32)).write(small)
+    again = os.path.join(tmp, "again.png")
+    run(cli, "render", scene, "-o", again, "--spp", "4", "--seed", "1", "--quiet")
+    r = run(cli, "render", scene, "-o", out, "--spp", "4", "--seed", "1", "--quiet", "--replace-radiance", bright)
+    changed = int((cv2.imread(out) != cv2.imread(again)).any(axis=2).sum()) if r.returncode == 0 else 0
+    check("--replace-radiance changes the bounces", r.returncode == 0 and changed > 20, "%d pixels; %s" % (changed, r.stderr))
+    for f, why in ((small, "not the photo's size"), (os.path.join(tmp, "none.exr"), "none.exr")):
+        r = run(cli, "render", scene, "-o", out, "--spp", "1", "--quiet", "--replace-radiance", f)
+        check("--replace-radiance " + why, r.returncode == 2 and "--replace-radiance" in r.stderr and why in r.stderr,
+              r.stderr)
+
+
 def main():
     cli = os.path.abspath(sys.argv[1])
     tmp = tempfile.mkdtemp(prefix="inlay_cli_")
@@ -204,6 +226,7 @@ def main():
     check("progress csv", len(rows) >= 2 and rows[0] == "seconds,spp,estimated_error" and rows[-1].split(",")[1] == "4", str(rows))
     check("layers", os.path.exists(exr) and os.path.getsize(exr) > 1000)
     check("no temp files left", not [f for f in os.listdir(tmp) if f.startswith(".") or ".tmp" in f], str(os.listdir(tmp)))
+    check_replace_radiance(cli, p, png, tmp)
 
     # Ctrl-C stops within a second or two and writes nothing. It is sent once the render is
     # under way (its first progress line): a fixed sleep raced the program's start under load,

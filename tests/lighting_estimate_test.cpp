@@ -203,22 +203,30 @@ TEST(Lighting, ClippedPixelsSendMoreLightThanTheyShow) {
 // not. Neither is given as a light: the window's light comes from its clipped pixels times the
 // fitted gain, which must be the sky's (radiance - 1), not one shared with the sunlit patch's
 // far smaller excess; then the floor's gathered light, and so its albedo, come out right.
-// A window in the back wall (x0..x1, y0..y1) and the sun through it onto the floor.
+// A window in the back wall (x -0.8..0.8, y 1.0..2.2), or in the left wall (z -3.6..-2.0, the
+// same heights: t04's and t10's side), and the sun through it onto the floor.
 struct SunWindow {
   AreaLight window;
   SunLight sun;
 };
 
-SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
-  const double x0 = -0.8, x1 = 0.8, y0 = 1.0, y1 = 2.2, zWall = r.geometry.box.zBackM + 1e-3;
+SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool leftWall = false) {
+  // The window spans u0..u1 along the wall (x on the back wall, z on the left) and y0..y1.
+  const double u0 = leftWall ? -3.6 : -0.8, u1 = leftWall ? -2.0 : 0.8, y0 = 1.0, y1 = 2.2;
+  const int axis = leftWall ? 0 : 2, along = leftWall ? 2 : 0;  // the wall's normal, along it
+  const double wall = leftWall ? r.geometry.box.xLeftM + 1e-3 : r.geometry.box.zBackM + 1e-3;
+  auto at = [&](double u, double y) {
+    Vec3 p;
+    p[axis] = wall, p[along] = u, p.y() = y;
+    return p;
+  };
   SunWindow out;
   AreaLight& window = out.window;
-  window.cornersWorld = {Vec3(x0, y0, zWall), Vec3(x1, y0, zWall), Vec3(x1, y1, zWall),
-                         Vec3(x0, y1, zWall)};
-  if (window.normal().z() < 0) std::swap(window.cornersWorld[1], window.cornersWorld[3]);
+  window.cornersWorld = {at(u0, y0), at(u1, y0), at(u1, y1), at(u0, y1)};
+  if (window.normal()[axis] < 0) std::swap(window.cornersWorld[1], window.cornersWorld[3]);
   window.radiance = Vec3(2.5, 3.0, 3.5);
   SunLight& sun = out.sun;
-  sun.travelDirection = Vec3(0.2, -1.0, 1.2).normalized();
+  sun.travelDirection = (leftWall ? Vec3(1.2, -1.0, 0.2) : Vec3(0.2, -1.0, 1.2)).normalized();
   sun.irradianceOverPi = sunStrength;
   sun.receiverPlane = Vec4(0, 1, 0, 0);
   sun.camera = r.camera;
@@ -230,8 +238,8 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength) {
       const Ray ray = r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
       if (!(ray.direction.y() < 0)) continue;
       const Vec3 q = ray.origin - ray.origin.y() / ray.direction.y() * ray.direction;
-      const Vec3 w = q - (q.z() - zWall) / sun.travelDirection.z() * sun.travelDirection;
-      const double inside = std::min({w.x() - x0, x1 - w.x(), w.y() - y0, y1 - w.y()});
+      const Vec3 w = q - (q[axis] - wall) / sun.travelDirection[axis] * sun.travelDirection;
+      const double inside = std::min({w[along] - u0, u1 - w[along], w.y() - y0, y1 - w.y()});
       sun.litMask.at(x, y) = float(std::clamp(inside / 0.1 + 0.5, 0.0, 1.0));
     }
   return out;
@@ -421,13 +429,25 @@ TEST(Lighting, TheBeamCarriedBackFindsItsWindow) {
 // marks it: the fit lit the room with the gathered light and the sun alone and made up the
 // difference with a bright albedo. The opening the beam came through (openingOfBeam), fitted as
 // a light, gives the sky its light back.
-TEST(Lighting, TheSkyOfAWindowOutOfViewLightsTheRoom) {
+// emptyRoom looking 32 degrees down: a window on its back wall is out of view.
+SyntheticRoom roomLookingDown() {
   SyntheticRoom r = emptyRoom();
   r.camera.worldFromCamera = Eigen::AngleAxisd(-32 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
-  const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4));
+  return r;
+}
+
+// `r` rendered with `sw`'s sky and sun (r.photo) and clipped at 1, as a photo has it.
+ImageF clippedSunPhoto(SyntheticRoom& r, const SunWindow& sw) {
   r.photo = renderRoom(r, {sw.window}, {sw.sun}, 32);
   ImageF photo = r.photo;
   for (float& v : photo.data) v = std::min(v, 1.f);
+  return photo;
+}
+
+TEST(Lighting, TheSkyOfAWindowOutOfViewLightsTheRoom) {
+  SyntheticRoom r = roomLookingDown();
+  const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4));
+  const ImageF photo = clippedSunPhoto(r, sw);
   const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
   ASSERT_TRUE(opening.has_value());
   ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
@@ -1408,6 +1428,94 @@ TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
     EXPECT_TRUE(est->lights[0].radiance.allFinite());
   } else {
     EXPECT_FALSE(est.error().message().empty());
+  }
+}
+
+// t04's albedos on the synthetic room: walls 0.45, a floor 0.5 the sun patch clips, a white
+// ceiling (0.88) the camera does not see, a blue sky through a window out of view and a warm sun
+// (t04's radiances). With the window in the back wall the fit, its unseen ceiling the walls'
+// mean, gets the sky within 10 % (measured 0.95 / 0.99 / 1.08) and the sun within 20 % (0.83 /
+// 0.83 / 0.89); with the window in the left wall (t04's and t10's side) both come out low, as on
+// t04 (sky 0.70 / 0.74 / 0.81, sun 0.61 / 0.63 / 0.70; not noise: the same with 512 gather
+// samples; not the opening's place: the true window is lower still, 0.63-0.72). The truth's
+// ceiling inside the fit (fitUnseenCeilingAlbedo), printed for the record, makes both too bright
+// (back 1.8, left 1.3-1.4). docs/generalization.md, "t10's object error, taken apart".
+TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
+  SyntheticRoom r = roomLookingDown();
+  const Vec3 wall(0.45, 0.45, 0.48);
+  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
+  for (const bool leftWall : {false, true}) {
+    SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7), leftWall);
+    sw.window.radiance = Vec3(2.4, 3.05, 4.4);
+    const ImageF photo = clippedSunPhoto(r, sw);
+    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+    ASSERT_TRUE(opening.has_value());
+    ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
+    for (const bool trueCeiling : {false, true}) {
+      LightingOptions opt;
+      opt.gatherSamples = 128;
+      opt.gatherStride = 2;
+      opt.threads = 2;
+      if (trueCeiling) opt.fitUnseenCeilingAlbedo = r.albedo[1];
+      const auto est = estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(),
+                                        {sw.sun}, opt);
+      ASSERT_TRUE(est.ok()) << est.error().message();
+      const Vec3 sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+      const Vec3 sun = est->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
+      std::printf("window in the %s wall, %s: sky / true %.2f %.2f %.2f, sun / true %.2f %.2f %.2f\n",
+                  leftWall ? "left" : "back",
+                  trueCeiling ? "the truth's ceiling in the fit" : "the product", sky.x(), sky.y(),
+                  sky.z(), sun.x(), sun.y(), sun.z());
+      if (trueCeiling) continue;
+      // The left wall's: a guard against worse (it is the case to fix).
+      const double tolerance = leftWall ? 0.35 : 0.2;
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(sky[c], 1.0, tolerance) << "channel " << c;
+        EXPECT_NEAR(sun[c], 1.0, tolerance + 0.1) << "channel " << c;
+      }
+    }
+  }
+}
+
+// The same rooms lit by the sky alone (no sun, no clipped patch: the fit's plain passes): the
+// sky of either window comes within 15 % (measured: back wall 1.09 / 1.09 / 1.10, left wall
+// 0.94 / 0.94 / 0.95). So the side window's low sky above comes with the sun's scheme (its
+// clipped patch, two plain passes); printed for the record, not asserted: with the sun, the
+// same fit stopped after 3 and 4 passes (LightingOptions::sunRoomPasses), which swings.
+TEST(Lighting, TheSkyOfASideWindowAloneIsFittedRight) {
+  SyntheticRoom r = roomLookingDown();
+  const Vec3 wall(0.45, 0.45, 0.48);
+  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
+  LightingOptions opt;
+  opt.gatherSamples = 128;
+  opt.gatherStride = 2;
+  opt.threads = 2;
+  for (const bool leftWall : {false, true}) {
+    SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7), leftWall);
+    sw.window.radiance = Vec3(2.4, 3.05, 4.4);
+    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+    ASSERT_TRUE(opening.has_value());
+    ImageF skyOnly = renderRoom(r, {sw.window}, {}, 32);
+    for (float& v : skyOnly.data) v = std::min(v, 1.f);
+    const auto est =
+        estimateLighting(skyOnly, r.camera, r.geometry, {opening->light}, {true}, ImageF(), {}, opt);
+    ASSERT_TRUE(est.ok()) << est.error().message();
+    const Vec3 sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+    std::printf("window in the %s wall, the sky alone: sky / true %.2f %.2f %.2f\n",
+                leftWall ? "left" : "back", sky.x(), sky.y(), sky.z());
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sky[c], 1.0, 0.15) << "channel " << c;
+    const ImageF photo = clippedSunPhoto(r, sw);
+    for (const int passes : {3, 4}) {
+      LightingOptions o = opt;
+      o.sunRoomPasses = passes;
+      const auto withSun =
+          estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(), {sw.sun}, o);
+      ASSERT_TRUE(withSun.ok()) << withSun.error().message();
+      const Vec3 s3 = withSun->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+      const Vec3 sun = withSun->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
+      std::printf("  with the sun, %d passes: sky / true %.2f %.2f %.2f, sun / true %.2f %.2f %.2f\n",
+                  passes, s3.x(), s3.y(), s3.z(), sun.x(), sun.y(), sun.z());
+    }
   }
 }
 

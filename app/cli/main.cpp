@@ -97,6 +97,9 @@ Render options:
   --replace-albedo FILE   diagnostics: render the room with this albedo (linear EXR, the
                           photo's size) instead of the estimate's; the surfaces the camera
                           does not see take its walls' mean (the product's rule)
+  --replace-radiance FILE diagnostics: where the photo clips, the render's bounces read this
+                          radiance (linear EXR, the photo's size and units) instead of the
+                          light model's (a sunlit patch: albedo x the fitted sun)
   --surface-albedo FILE   diagnostics: {"ceiling": [r, g, b], ...}: the albedo of each named
                           room surface where the camera does not see it
   --clamp-indirect R      clamp each sample's light after the first bounce to R times white (the
@@ -165,7 +168,7 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
-  std::string lightsJson, replaceLights, replaceAlbedo, surfaceAlbedo, cue,
+  std::string lightsJson, replaceLights, replaceAlbedo, replaceRadiance, surfaceAlbedo, cue,
       report;  // cue: empty = the default
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
@@ -218,12 +221,12 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--direct" || s == "--gathered" || s == "--method" || s == "--scene" || s == "--spp" ||
         s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
-        s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
-        s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
-        s == "--working-mp" || s == "--max-top-stops" || s == "--clamp-indirect" ||
-        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
-        s == "--caustic-radius") {
+        s == "--replace-radiance" || s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" ||
+        s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
+        s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
+        s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
+        s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
+        s == "--caustic-photons" || s == "--caustic-radius") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -238,6 +241,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--report") a.report = *v;
       else if (s == "--replace-lights") a.replaceLights = *v;
       else if (s == "--replace-albedo") a.replaceAlbedo = *v;
+      else if (s == "--replace-radiance") a.replaceRadiance = *v;
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
@@ -546,6 +550,26 @@ Status applySurfaceAlbedo(RenderScene& rs, const std::string& path) {
   return {};
 }
 
+// --replace-radiance FILE.exr (diagnostics): where the photo clips (a channel at 0.98 or more),
+// the radiance the render's bounces read is the file's (at least the photo's), not the light
+// model's: the truth's sunlit patch in place of the fitted sun's.
+Status applyRadiance(RenderScene& rs, const ImageF& photo, const std::string& path) {
+  auto img = loadImage(path);
+  if (!img) return img.error().underKey("--replace-radiance");
+  const ImageF& r = img->linearRgb;
+  ImageF& out = rs.roomAlbedo.photoRadiance;
+  if (r.width != photo.width || r.height != photo.height || out.width != photo.width ||
+      out.height != photo.height)
+    return Error{path, "--replace-radiance", "not the photo's size"};
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      const Vec3 v = r.rgb(x, y);
+      if (photo.rgb(x, y).maxCoeff() >= 0.98 && v.allFinite())
+        out.setRgb(x, y, v.cwiseMax(photo.rgb(x, y)));
+    }
+  return {};
+}
+
 // --replace-lights / --replace-albedo (diagnostics: which of lights and albedo limits the error).
 Status applyReplacements(PreparedScene& ps, const Args& a) {
   RenderScene& rs = ps.renderScene;
@@ -597,6 +621,8 @@ Status applyReplacements(PreparedScene& ps, const Args& a) {
     // the estimate's guess: an all-true oracle must not keep the estimated unseen ceiling).
     rs.roomAlbedo.surfaceMean = albedoOfUnseen(rs.room, sum, n, kUnseenCeilingAlbedo);
   }
+  if (!a.replaceRadiance.empty())
+    if (auto st = applyRadiance(rs, ps.photo.linearRgb, a.replaceRadiance); !st) return st;
   if (!a.surfaceAlbedo.empty()) return applySurfaceAlbedo(rs, a.surfaceAlbedo);
   return {};
 }

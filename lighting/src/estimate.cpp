@@ -1401,7 +1401,7 @@ bool LightingFit::gatherAndFit() {
   // scheme is made for two plain passes (mixing pass 1 into it counts the bounce twice, and more
   // passes drift the sun's strength down: 0.6 of the truth in
   // AClippedSunPatchsBounceTellsTheSunsStrength), so sun rooms keep them.
-  const int passes = K > 0 ? 2 : std::max(2, opt.maxPasses);
+  const int passes = K > 0 ? std::max(1, opt.sunRoomPasses) : std::max(2, opt.maxPasses);
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma

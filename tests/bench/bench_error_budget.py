@@ -18,6 +18,22 @@ generalisation benchmark's budget), scored by harness.py score (object RMSE, sRG
                   estimated) when the estimate already says sRGB
   all_true        true lights, true albedo and true response at --spp
   all_true_long   the same at --long-spp samples (default 128)
+A room with a sun whose window is out of view (its sky is a light Inlay adds after the scene
+file's, and one of the truth's lights here: the window's rectangle at the sky's radiance) also:
+  true_sky        our lights, the window's light at the truth's sky radiance (its place ours)
+  true_window     our lights, the window's light replaced by the truth's window and sky
+  true_patch      where the photo clips, the render's bounces read the truth's radiance
+                  (photo_linear.exr in the photo's units, --replace-radiance) instead of the
+                  light model's albedo x fitted sun: the sun's strength and colour as the
+                  sunlit patch bounces them
+  true_ceiling    the unseen ceiling's albedo the truth's (--surface-albedo)
+  sun_all_true    true_window, true_patch and true_ceiling together
+  fit_true_ceiling the light fit's model of the unseen ceiling the truth's colour
+                  (--fit-unseen-ceiling; the render's unseen ceiling stays the product's): the
+                  sky's and the sun's fitted strength as the ceiling sets them (its lights:
+                  OUT/ROOM_fit_true_ceiling_lights.json, ours: OUT/ROOM_lights.json)
+  floor_no_grain  all_true_long without our grain (--no-grain): what stays with every input
+                  true, less the grain we add independently of the truth's
 Geometry (the box, the table, the object's place) comes from the harness's assisted inputs (the
 truth's own vanishing points, corners and outlines) and cannot be swapped; its error is measured:
 the box's size against the truth's (the preparation's report) and the object mask's IoU against
@@ -35,12 +51,17 @@ The error budget, as shares of the estimated squared error E0^2 (RMSE^2 over the
                                    converged: geometry, the renderer against Cycles, the truth's
                                    own Monte-Carlo noise, JPEG)
   interaction E0^2 minus all of the above (components that cancel or add up; may be negative)
+  sky, window, patch, ceiling, sun_all, fit_ceiling: E0^2 - E(true_sky)^2 and so on, each
+              on its own, not part of the sum (sun rooms only)
 The column noise_rms is the RMS difference of all_true and all_true_long over the object (the
-noise itself, not its share of the error). A light the truth puts beyond our rear wall (the box
+noise itself, not its share of the error); truth_noise_rms the truth's own noise there (adjacent
+pixels' difference over sqrt 2), which no render shares; on sun rooms patch_clipped_share,
+patch_true_rgb and patch_ours_rgb: the sunlit patch's clipped share per channel and its median
+radiance, the truth's and our render's. A light the truth puts beyond our rear wall (the box
 closes 0.5 m behind the camera) is partly hidden by it: `places` is then negative.
 
 Writes OUT/error_budget.csv (one row per room), OUT/error_budget.png (per room: each
-component's share), docs/bench/error_budget.md; every composite, scene file and lights file
+component's share), OUT/error_budget_sun.png (sun rooms: the object's RMSE of each run), docs/bench/error_budget.md; every composite, scene file and lights file
 stays in OUT. Rooms run in the order given; each room's row is kept in OUT/rows/ so that two
 processes can split the rooms and the last to finish writes the union (--rows-only: write the
 CSV and plot from OUT/rows/ without measuring).
@@ -60,6 +81,7 @@ import benchlib  # noqa: E402
 
 PY = "/usr/bin/python3"
 COMPONENTS = ["intensity", "places", "albedo", "response", "noise", "grain", "floor", "interaction"]
+SUN_RUNS = ["true_sky", "true_window", "true_patch", "true_ceiling", "sun_all_true", "fit_true_ceiling"]
 
 
 def quad_area(corners):
@@ -67,11 +89,33 @@ def quad_area(corners):
     return 0.5 * float(np.linalg.norm(np.cross(c[2] - c[0], c[3] - c[1])))
 
 
+def to_ours(truth, corners):
+    """World corners in Inlay's frame (camera at (0, h, 0))."""
+    cam = truth["camera"]["position"]
+    return [[p[0] - cam[0], p[1], p[2] - cam[2]] for p in corners]
+
+
+def sky_window(truth):
+    """The sky through a sun's window out of view as the truth has it (the window's rectangle,
+    emitting into the room at the sky's radiance, photo units), or None."""
+    sun = truth.get("sun") or {}
+    win, sky = sun.get("window", {}), sun.get("sky") or truth.get("spec", {}).get("sun", {}).get("sky")
+    if win.get("view_status") != "out_of_view" or not sky:
+        return None
+    c = np.array(to_ours(truth, win["world_corners"]), float)
+    if np.dot(np.cross(c[1] - c[0], c[3] - c[0]), win["inward_normal"]) < 0:
+        c = c[::-1]  # emit into the room (AreaLight's normal: (c1 - c0) x (c3 - c0))
+    rgb = np.array(sky["color"], float) * sky["strength"] * truth["exposure"]["scale"]
+    return {"corners": c.tolist(), "rgb": rgb.tolist()}
+
+
 def true_lights(truth):
-    """The truth's area lights in Inlay's frame (camera at (0, h, 0)) and the photo's units."""
-    cam, scale = truth["camera"]["position"], truth["exposure"]["scale"]
-    return [{"corners": [[p[0] - cam[0], p[1], p[2] - cam[2]] for p in L["world_corners"]],
-             "rgb": [v * scale for v in L["radiance_rgb"]]} for L in truth["lights"]]
+    """The truth's area lights in Inlay's frame and the photo's units; a sun's window out of view
+    last (Inlay adds its sky as a light after the scene file's)."""
+    scale = truth["exposure"]["scale"]
+    out = [{"corners": to_ours(truth, L["world_corners"]), "rgb": [v * scale for v in L["radiance_rgb"]]}
+           for L in truth["lights"]]
+    return out + [w for w in [sky_window(truth)] if w]
 
 
 def with_true_power(ours, truth):
@@ -81,6 +125,33 @@ def with_true_power(ours, truth):
         k = quad_area(t["corners"]) / max(quad_area(o["corners"]), 1e-9)
         out.append({"corners": o["corners"], "rgb": [v * k for v in t["rgb"]]})
     return out + [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[len(out):]]
+
+
+def sun_runs(truth, room_dir, ours, p, scene, spp, long_spp):
+    """The sun room's swaps (see the docstring): {} unless a sun's window is out of view and we
+    added its light (the last of ours, after the truth's other lights)."""
+    win = sky_window(truth)
+    if not win or len(ours) <= len(truth["lights"]):
+        return {}
+    import OpenImageIO as oiio
+    keep = [{"corners": o["corners"], "rgb": o["rgb"]} for o in ours[:-1]]
+    json.dump({"lights": keep + [{"corners": ours[-1]["corners"], "rgb": win["rgb"]}]},
+              open(p("true_sky.json"), "w"), indent=1)
+    json.dump({"lights": keep + [win]}, open(p("true_window.json"), "w"), indent=1)
+    hdr = oiio.ImageBuf(os.path.join(room_dir, "photo_linear.exr"))
+    px = np.asarray(hdr.get_pixels(oiio.FLOAT))[..., :3] * truth["exposure"]["scale"]
+    oiio.ImageBuf(np.ascontiguousarray(px, np.float32)).write(p("true_radiance.exr"))
+    json.dump({"ceiling": truth["spec"]["materials"]["ceiling"]["color"]}, open(p("true_ceiling.json"), "w"))
+    patch, ceiling = ["--replace-radiance", p("true_radiance.exr")], ["--surface-albedo", p("true_ceiling.json")]
+    fit_ceiling = ["--fit-unseen-ceiling", ",".join("%.4f" % v for v in truth["spec"]["materials"]["ceiling"]["color"])]
+    srgb, alb = p("scene_srgb.json"), os.path.join(room_dir, "albedo.exr")
+    return {"true_sky": (scene, spp, ["--replace-lights", p("true_sky.json")]),
+            "true_window": (scene, spp, ["--replace-lights", p("true_window.json")]),
+            "true_patch": (scene, spp, patch), "true_ceiling": (scene, spp, ceiling),
+            "sun_all_true": (scene, spp, ["--replace-lights", p("true_window.json")] + patch + ceiling),
+            "fit_true_ceiling": (scene, spp, fit_ceiling + ["--lights-json", p("fit_true_ceiling_lights.json")]),
+            "floor_no_grain": (srgb, long_spp, ["--no-grain", "--replace-lights", p("true_lights.json"), "--replace-albedo",
+                                                alb])}
 
 
 def render(cli, scene, png, spp, extra, log, reuse=False):
@@ -170,6 +241,7 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
             "all_true": (p("scene_srgb.json"), spp, ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb]),
             "all_true_long": (p("scene_srgb.json"), long_spp,
                               ["--replace-lights", p("true_lights.json"), "--replace-albedo", alb])}
+    runs.update(sun_runs(truth, room_dir, ours, p, scene, spp, long_spp))
     if family == "srgb":
         del runs["true_response"]  # the same scene as estimated: nothing to swap
     for name, (sf, n, extra) in runs.items():
@@ -186,9 +258,42 @@ def measure_room(cli, tools, room_dir, out, spp, long_spp, log, reuse):
         row["true_response_rmse"] = row["estimated_rmse"]
     row["noise_rms"] = noise_rms(p("all_true.png"), p("all_true_long.png"), room_dir)
     row["object_mask_iou"] = mask_iou(p("layers.exr"), room_dir)
+    row["truth_noise_rms"] = truth_noise(room_dir)
+    row.update(sun_patch(room_dir, truth, p("layers.exr")))
     row.update(box_error(p("report.json"), truth))
     row.update(budget(row))
     return row
+
+
+def truth_noise(room_dir):
+    """The truth's own noise on the object: the RMS difference of horizontally adjacent object
+    pixels (coverage >= 250/255 for both) over sqrt 2, sRGB (an upper bound: edges add to it)."""
+    m = cv2.imread(os.path.join(room_dir, "object_mask.png"), cv2.IMREAD_GRAYSCALE) >= 250
+    t = cv2.imread(os.path.join(room_dir, "truth.png"), cv2.IMREAD_COLOR).astype(np.float64) / 255.0
+    dx = (t[:, 1:] - t[:, :-1])[m[:, :-1] & m[:, 1:]]
+    return round(float(np.sqrt(np.mean(dx ** 2)) / np.sqrt(2)), 4) if dx.size else ""
+
+
+def sun_patch(room_dir, truth, layers_exr):
+    """The sunlit floor patch (the truth's polygon, eroded 2 px): the share of its pixels the
+    photo clips per channel, and the median radiance there of the truth (photo units) and of our
+    render's room without objects (--layers), per channel."""
+    import OpenImageIO as oiio
+    poly = (truth.get("sun") or {}).get("floor_patch", {}).get("image_polygon")
+    if not poly or not os.path.exists(layers_exr):
+        return {}
+    m = np.zeros((truth["image"]["height"], truth["image"]["width"]), np.uint8)
+    cv2.fillPoly(m, [np.round(np.array(poly)).astype(np.int32)], 1)
+    m = cv2.erode(m, np.ones((5, 5), np.uint8)) > 0
+    photo = cv2.imread(os.path.join(room_dir, "photo.png"), cv2.IMREAD_COLOR)[..., ::-1]
+    hdr = np.asarray(oiio.ImageBuf(os.path.join(room_dir, "photo_linear.exr")).get_pixels(oiio.FLOAT))[..., :3]
+    lay = oiio.ImageBuf(layers_exr)
+    names = list(lay.spec().channelnames)
+    ours = np.asarray(lay.get_pixels(oiio.FLOAT))[..., [names.index("without_objects." + c) for c in "RGB"]]
+    fmt = lambda v: " ".join("%.3g" % x for x in v)
+    return {"patch_clipped_share": fmt((photo[m] >= 250).mean(0)),
+            "patch_true_rgb": fmt(np.median(hdr[m], 0) * truth["exposure"]["scale"]),
+            "patch_ours_rgb": fmt(np.median(ours[m], 0))}
 
 
 def noise_rms(a_png, b_png, room_dir):
@@ -211,6 +316,9 @@ def budget(row):
              "albedo": e0 - e("true_albedo") ** 2, "response": e0 - e("true_response") ** 2,
              "noise": e0 - e("estimated_long") ** 2, "grain": e0 - e("no_grain") ** 2, "floor": e("all_true_long") ** 2}
     parts["interaction"] = e0 - sum(parts.values())
+    for run in SUN_RUNS:  # sun rooms: each swap on its own, not part of the sum
+        if isinstance(e(run), float):
+            parts[run.replace("true_", "").replace("_true", "")] = e0 - e(run) ** 2
     return {"share_" + k: round(v / e0, 3) for k, v in parts.items()}
 
 
@@ -240,6 +348,28 @@ def plot(out, rows):
             ax[k // cols][k % cols].axis("off")
 
 
+def plot_sun(out, rows):
+    """Sun rooms: the object's RMSE of each run, estimated to everything true."""
+    runs = ["estimated", "no_grain", "estimated_long"] + SUN_RUNS + ["true_albedo", "all_true_long", "floor_no_grain"]
+    rows = [r for r in rows if isinstance(r.get("true_patch_rmse"), float)]
+    if not rows:
+        return
+    with benchlib.figure(os.path.join(out, "error_budget_sun.png"), 1, len(rows), figsize=(4.6 * len(rows), 3.6),
+                         squeeze=False) as ax:
+        if ax is None:
+            return
+        for k, r in enumerate(rows):
+            a = ax[0][k]
+            v = [r.get(n + "_rmse") if isinstance(r.get(n + "_rmse"), float) else 0 for n in runs]
+            a.barh(range(len(v)), v, color=["C0"] * 3 + ["C1"] * len(SUN_RUNS) + ["C2"] * 3)
+            a.axvline(r["estimated_rmse"], color="k", lw=0.6)
+            a.set_yticks(range(len(v)))
+            a.set_yticklabels(runs, fontsize=8)
+            a.invert_yaxis()
+            a.set_title("%s: object RMSE per swap (16 spp; long: 128)" % r["room"], fontsize=8)
+            a.set_xlabel("object RMSE (sRGB)", fontsize=8)
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
@@ -258,8 +388,13 @@ def main():
     cols = ["room", "material", "lights", "estimated_rmse", "estimated_long_rmse", "no_grain_rmse", "true_intensity_rmse", "true_lights_rmse",
             "true_albedo_rmse", "true_response_rmse", "all_true_rmse", "all_true_long_rmse", "noise_rms"]
     cols += ["share_" + c for c in COMPONENTS] + ["object_mask_iou", "box_depth_err_m"]
+    if any(r.get("true_patch_rmse") not in (None, "") for r in rows):
+        cols += ["truth_noise_rms", "patch_clipped_share", "patch_true_rgb", "patch_ours_rgb"]
+        cols += [k + "_rmse" for k in SUN_RUNS + ["floor_no_grain"]] + ["share_" + k.replace("true_", "").replace("_true", "")
+                                                  for k in SUN_RUNS]
     benchlib.write_csv(os.path.join(out, "error_budget.csv"), rows, table="error_budget", columns=cols)
     plot(out, rows)
+    plot_sun(out, rows)
     print("wrote", os.path.join(out, "error_budget.csv"))
     return 0
 

@@ -78,6 +78,9 @@ struct LightingOptions {
   // light too bright). Passes stop when the mean Gamma changes by less than passTolerance
   // (relative), after at most maxPasses. Rooms with a sun keep two plain passes (estimate.cpp).
   int maxPasses = 5;
+  // Diagnostics: the passes a room with a sun runs (its scheme is made for two; the answer is
+  // not a fixed point of the passes: docs/generalization.md, "t10's object error, taken apart").
+  int sunRoomPasses = 2;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
   int fitPixels = 6000;  // pixels sampled for the fit
