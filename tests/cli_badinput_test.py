@@ -78,7 +78,8 @@ def main():
     # Diagnostics of the preparation: a bad value exits 2 naming the flag.
     for flag, values in (("--keep-better-fit-tolerance", ("-1", "nan", "inf", "low")),
                          ("--prepare-seed", ("-1", "x")),
-                         ("--fit-unseen-ceiling", ("0.5,0.5", "0.5,0.5,0.5,0.5", "0.5,-1,0.5", "nan,0.5,0.5", "white"))):
+                         ("--fit-unseen-ceiling", ("0.5,0.5", "0.5,0.5,0.5,0.5", "0.5,-1,0.5", "nan,0.5,0.5", "white")),
+                         ("--unseen-ceiling", ("white", "", "FIT"))):
         for v in values:
             r = run(cli, "render", "x.json", flag, v, "-o", "a.png")
             check("bad %s %s" % (flag, v), r.returncode == 2 and flag in r.stderr, r.stderr)

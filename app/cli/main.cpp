@@ -126,6 +126,12 @@ Render options:
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)
+  --unseen-ceiling MODE    diagnostics: the albedo of a ceiling the photo does not show. fit
+                          (default): an unknown of the light fit, told by the light it bounces
+                          onto the seen room (the walls' mean where the photo does not tell it),
+                          the render's ceiling at least white grey as before; fit-render: the
+                          render takes the fit's estimate too; walls: the fit takes the seen
+                          walls' mean (the rule before)
   --working-mp M          the image stages of the preparation (occluder mattes, lights' mask,
                           shafts, lighting, refinement) work on the photo reduced to at most M
                           megapixels (default 0.5; 0: the photo's own size); their maps are
@@ -178,6 +184,7 @@ struct Args {
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
   std::optional<double> refitMinMove;            // --refit-min-move
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
+  std::string unseenCeiling = "fit";             // --unseen-ceiling walls|fit|fit-render
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
@@ -226,7 +233,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
         s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
         s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
-        s == "--caustic-photons" || s == "--caustic-radius") {
+        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -245,7 +252,11 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--fit-unseen-ceiling") {
+      else if (s == "--unseen-ceiling") {
+        if (*v != "walls" && *v != "fit" && *v != "fit-render")
+          return "--unseen-ceiling: '" + *v + "' is not walls, fit or fit-render";
+        a.unseenCeiling = *v;
+      } else if (s == "--fit-unseen-ceiling") {
         double r = -1, g = -1, b = -1;
         char tail = 0;
         if (std::sscanf(v->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
@@ -447,6 +458,8 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
   if (a.refitMinMove) po.refitMinLightMove = *a.refitMinMove;
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
+  po.fitUnseenCeiling = a.unseenCeiling != "walls";
+  po.renderFittedCeiling = a.unseenCeiling == "fit-render";
   // decompose writes the decomposition itself: at the photo's own size.
   po.workingMaxPixels = a.command == "decompose" ? 0.0
                         : a.workingMp            ? *a.workingMp * 1e6
@@ -494,6 +507,24 @@ nlohmann::json lightsJsonOf(const std::vector<AreaLight>& lights) {
   return a;
 }
 
+// --lights-json's "unseen_ceiling": the light fit's estimate of an unseen ceiling's albedo (null
+// where it made none), per channel whether the photo told it, and the albedo the render gives
+// the ceiling.
+nlohmann::json unseenCeilingJson(const PreparedScene& ps) {
+  const LightingEstimate& l = ps.lighting;
+  const Vec3& a = l.unseenCeilingAlbedo;
+  nlohmann::json rendered = nullptr;
+  for (size_t s = 0; s < ps.geometry.surfaces.size() && s < l.surfaceMeanAlbedo.size(); ++s)
+    if (ps.geometry.surfaces[s].kind == SurfaceKind::Ceiling) {
+      const Vec3& r = l.surfaceMeanAlbedo[s];
+      rendered = {r.x(), r.y(), r.z()};
+      break;
+    }
+  return {{"fitted", a.allFinite() ? nlohmann::json{a.x(), a.y(), a.z()} : nlohmann::json(nullptr)},
+          {"told", {l.unseenCeilingTold[0], l.unseenCeilingTold[1], l.unseenCeilingTold[2]}},
+          {"rendered", rendered}};
+}
+
 // --lights-json: the lights before and after refinement and what the refinement did.
 nlohmann::json lightsReport(const PreparedScene& ps) {
   using nlohmann::json;
@@ -512,6 +543,7 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
           {"stages", stagesJson(ps.stages)},
           {"suns_initial", sunsJson(ps.initialSuns)},
           {"suns_refined", sunsJson(ps.lighting.suns)},
+          {"unseen_ceiling", unseenCeilingJson(ps)},
           {"vignetting",  // the light fit's residual read as 1 - v r^2 (a diagnostic, not applied)
            {{"v", ps.lighting.vignetting}, {"residual_ratio", ps.lighting.vignettingResidualRatio}}},
           {"refinement",

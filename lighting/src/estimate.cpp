@@ -4,6 +4,7 @@
 
 #include "inlay/render/path_tracer.h"
 
+#include <Eigen/Cholesky>
 #include <ceres/ceres.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
@@ -193,6 +194,68 @@ class LogResidualCost final : public ceres::CostFunction {
  private:
   LogResidual r_;
 };
+
+// The weak prior of the unseen ceiling's albedo a the fit estimates (LightingOptions::
+// fitUnseenCeiling): w log(a / m), m = constant + sum_k weight_k rho_k the fitted walls' mean
+// (an UnseenAlbedo). Parameter blocks (one value each): params[0] a, then the walls' albedos in
+// the order of `weights`. Derivatives: d/d a = w / a, d/d rho_k = -w weight_k / m.
+class CeilingPriorCost final : public ceres::CostFunction {
+ public:
+  CeilingPriorCost(double w, double constant, std::vector<double> weights)
+      : w_(w), constant_(constant), weights_(std::move(weights)) {
+    for (size_t k = 0; k <= weights_.size(); ++k) mutable_parameter_block_sizes()->push_back(1);
+    set_num_residuals(1);
+  }
+  bool Evaluate(double const* const* params, double* residual, double** jacobians) const override {
+    double m = constant_;
+    for (size_t k = 0; k < weights_.size(); ++k) m += weights_[k] * params[1 + k][0];
+    m = std::max(m, 1e-9);
+    const double a = std::max(params[0][0], 1e-9);
+    residual[0] = w_ * std::log(a / m);
+    if (!jacobians) return true;
+    if (jacobians[0]) jacobians[0][0] = w_ / a;
+    for (size_t k = 0; k < weights_.size(); ++k)
+      if (jacobians[1 + k]) jacobians[1 + k][0] = -w_ * weights_[k] / m;
+    return true;
+  }
+
+ private:
+  double w_, constant_;
+  std::vector<double> weights_;
+};
+
+// The information a Gauss-Newton matrix `info` leaves to unknown k once every other unknown is
+// fitted alongside (the Schur complement info_kk - info_ko info_oo^-1 info_ok; a ridge of 1e-9 of
+// the mean diagonal keeps info_oo invertible where an unknown is told nothing); >= 0, 0 when
+// not finite.
+double schurInformation(const Eigen::MatrixXd& info, long k) {
+  const long n = info.rows();
+  if (k < 0 || k >= n) return 0;
+  std::vector<long> others;
+  for (long i = 0; i < n; ++i)
+    if (i != k) others.push_back(i);
+  const long m = long(others.size());
+  Eigen::MatrixXd oo(m, m);
+  Eigen::VectorXd ok(m);
+  for (long i = 0; i < m; ++i) {
+    ok[i] = info(others[size_t(i)], k);
+    for (long j = 0; j < m; ++j) oo(i, j) = info(others[size_t(i)], others[size_t(j)]);
+  }
+  const double ridge = 1e-9 * (info.trace() / double(n)) + 1e-300;
+  oo.diagonal().array() += ridge;
+  const double left = m > 0 ? info(k, k) - ok.dot(oo.ldlt().solve(ok)) : info(k, k);
+  return std::isfinite(left) ? std::max(0.0, left) : 0.0;
+}
+
+// J^T J of a Jacobian (a Gauss-Newton matrix; dense, the fit has few unknowns).
+Eigen::MatrixXd gaussNewtonMatrix(const ceres::CRSMatrix& jac) {
+  Eigen::MatrixXd info = Eigen::MatrixXd::Zero(jac.num_cols, jac.num_cols);
+  for (int r = 0; r < jac.num_rows; ++r)
+    for (int i = jac.rows[size_t(r)]; i < jac.rows[size_t(r) + 1]; ++i)
+      for (int j = jac.rows[size_t(r)]; j < jac.rows[size_t(r) + 1]; ++j)
+        info(jac.cols[size_t(i)], jac.cols[size_t(j)]) += jac.values[size_t(i)] * jac.values[size_t(j)];
+  return info;
+}
 
 }  // namespace
 
@@ -546,6 +609,12 @@ struct LightingFit {
   bool withoutUnseenBounce = false;
   // Per area light: its unseen bounce is apart (LightingOptions::unseenBounceOfLightsOutOfView).
   std::vector<bool> bounceApart;
+  // The unseen ceiling whose albedo the fit estimates (LightingOptions::fitUnseenCeiling; -1:
+  // none this pass): its rho entry is the unknown; its prior (the fitted walls' mean, in the
+  // fit's unknowns) and, per channel, whether the photo told it (false: it fell back to the prior).
+  int freeCeiling = -1;
+  UnseenAlbedo ceilingPrior;
+  std::array<bool, 3> ceilingTold = {false, false, false};
 
   bool stop() const { return opt.cancel && opt.cancel->shouldStop(); }
   bool isLight(int x, int y) const { return !lightMask.empty() && lightMask.at(x, y) > 0.5f; }
@@ -603,7 +672,16 @@ struct LightingFit {
   void gatherUnseenBounce();
   void sumUnseenBounce(const PointRays& pr, const UnseenLights& lit, const std::vector<int>& index,
                        double* sum) const;
+  std::vector<bool> fittedSurfaces() const;
+  int unseenCeilingUnknown() const;
+  UnseenAlbedo meanOfFitted(SurfaceKind kind) const;
   UnseenAlbedo unseenAlbedoInFit(int surface) const;
+  double priorCeilingAlbedo(int c) const;
+  double ceilingPriorWeight() const;
+  void constrainUnseenCeiling(ceres::Problem& problem, int c);
+  bool photoTellsCeiling(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>& data,
+                         int c);
+  void reportUnseenCeiling();
   double bounceAlbedoOf(size_t u, int c, const std::vector<std::array<double, 3>>& rhoNow) const;
   double unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
                         const std::vector<Vec3>& lights) const;
@@ -620,6 +698,9 @@ struct LightingFit {
   double fitStartRadiance() const;
   void tieLightsOutOfView();
   std::string fitChannel(int c, double& cost);
+  ceres::ResidualBlockId addPixelResidual(ceres::Problem& problem, size_t idx, int c,
+                                          ceres::LossFunction* loss);
+  void boundUnknowns(ceres::Problem& problem, int c);
   void storeFittedLights();
   void perPixelAlbedo();
   void relativeFitResidual();
@@ -1154,6 +1235,7 @@ void LightingFit::tracePatchRays(const SurfacePatches& P) {
 // traces its own rays, as the gather does there.
 void LightingFit::gatherUnseenBounce() {
   unseenBounce.clear(), bounceSurfaces.clear(), bounceAlbedo.clear();
+  freeCeiling = -1;
   if (!opt.unseenBounceScalesWithLights || !model.active || J == 0 ||
       gridLights.size() != gridSurface.size() || rays->grid.size() != gridSurface.size() ||
       std::none_of(bounceApart.begin(), bounceApart.end(), [](bool b) { return b; }))
@@ -1187,6 +1269,10 @@ void LightingFit::gatherUnseenBounce() {
         sumUnseenBounce(pr, unseenLightsOf(pr), index, v);
       });
   for (const int u : bounceSurfaces) bounceAlbedo.push_back(unseenAlbedoInFit(u));
+  const int unknown = unseenCeilingUnknown();
+  for (const UnseenAlbedo& a : bounceAlbedo)
+    if (unknown >= 0 && a.fitted.size() == 1 && a.fitted[0].first == unknown) freeCeiling = unknown;
+  if (freeCeiling >= 0) ceilingPrior = meanOfFitted(SurfaceKind::Ceiling);
 }
 
 // Adds to `sum` (J x U values) the unit direct light of each area light whose bounce is apart at
@@ -1206,15 +1292,50 @@ void LightingFit::sumUnseenBounce(const PointRays& pr, const UnseenLights& lit,
   }
 }
 
-// UnseenAlbedo of `surface`: its own fitted albedo where the fit has its pixels; a ceiling the
-// fit's model is told (LightingOptions::fitUnseenCeilingAlbedo) that constant; a wall or
-// ceiling the mean of the fitted walls, anything else (or when no wall is fitted) the mean of
-// every fitted surface; mid grey when the fit has none.
-UnseenAlbedo LightingFit::unseenAlbedoInFit(int surface) const {
+// Per surface: whether the light fit has pixels of it.
+std::vector<bool> LightingFit::fittedSurfaces() const {
   std::vector<bool> fitted(S, false);
   for (size_t idx : candidates) fitted[size_t(ps[idx].surface)] = true;
+  return fitted;
+}
+
+// The ceiling whose albedo the fit estimates (LightingOptions::fitUnseenCeiling): the first
+// ceiling surface the fit has no pixels of (several share its unknown); -1 when the option is
+// off, the fit's model is told the ceiling (fitUnseenCeilingAlbedo) or every ceiling is fitted.
+int LightingFit::unseenCeilingUnknown() const {
+  const Vec3& told = opt.fitUnseenCeilingAlbedo;
+  if (!opt.fitUnseenCeiling || ((told.array() >= 0).all() && told.allFinite())) return -1;
+  const std::vector<bool> fitted = fittedSurfaces();
+  for (size_t s = 0; s < S; ++s)
+    if (!fitted[s] && geometry.surfaces[s].kind == SurfaceKind::Ceiling) return int(s);
+  return -1;
+}
+
+// The albedo an unseen surface of `kind` takes from the fitted ones: a wall or ceiling the mean
+// of the fitted walls, anything else (or when no wall is fitted) the mean of every fitted
+// surface; mid grey when the fit has none (albedoOfUnseen's rule, in the fit's unknowns).
+UnseenAlbedo LightingFit::meanOfFitted(SurfaceKind kind) const {
+  const std::vector<bool> fitted = fittedSurfaces();
+  std::vector<int> walls, all;
+  for (size_t s = 0; s < S; ++s)
+    if (fitted[s]) {
+      all.push_back(int(s));
+      if (isWall(geometry.surfaces[s].kind)) walls.push_back(int(s));
+    }
+  const bool wallLike = isWall(kind) || kind == SurfaceKind::Ceiling;
+  const std::vector<int>& from = wallLike && !walls.empty() ? walls : all;
   UnseenAlbedo a;
-  if (fitted[size_t(surface)]) {
+  for (const int s : from) a.fitted.emplace_back(s, 1.0 / double(from.size()));
+  if (from.empty()) a.constant = Vec3::Constant(0.5);
+  return a;
+}
+
+// UnseenAlbedo of `surface`: its own fitted albedo where the fit has its pixels; a ceiling the
+// fit's model is told (LightingOptions::fitUnseenCeilingAlbedo) that constant; an unseen
+// ceiling the fit's unknown for it (unseenCeilingUnknown), else meanOfFitted.
+UnseenAlbedo LightingFit::unseenAlbedoInFit(int surface) const {
+  UnseenAlbedo a;
+  if (fittedSurfaces()[size_t(surface)]) {
     a.fitted.emplace_back(surface, 1.0);
     return a;
   }
@@ -1224,17 +1345,12 @@ UnseenAlbedo LightingFit::unseenAlbedoInFit(int surface) const {
     a.constant = told;
     return a;
   }
-  std::vector<int> walls, all;
-  for (size_t s = 0; s < S; ++s)
-    if (fitted[s]) {
-      all.push_back(int(s));
-      if (isWall(geometry.surfaces[s].kind)) walls.push_back(int(s));
-    }
-  const bool wallLike = isWall(kind) || kind == SurfaceKind::Ceiling;
-  const std::vector<int>& from = wallLike && !walls.empty() ? walls : all;
-  for (const int s : from) a.fitted.emplace_back(s, 1.0 / double(from.size()));
-  if (from.empty()) a.constant = Vec3::Constant(0.5);
-  return a;
+  const int unknown = kind == SurfaceKind::Ceiling ? unseenCeilingUnknown() : -1;
+  if (unknown >= 0) {
+    a.fitted.emplace_back(unknown, 1.0);
+    return a;
+  }
+  return meanOfFitted(kind);
 }
 
 // Channel c of bounce surface u's albedo (bounceAlbedo) at the fitted albedos `rhoNow`.
@@ -1469,6 +1585,12 @@ void LightingFit::predictUnseenFromFit() {
     for (size_t s = 0; s < S; ++s)
       if (weight[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
         model.rho[s] = opt.fitUnseenCeilingAlbedo;
+  // The unseen ceiling the fit estimated: its estimate (every unseen ceiling shares it).
+  if (freeCeiling >= 0)
+    for (size_t s = 0; s < S; ++s)
+      if (weight[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
+        model.rho[s] =
+            Vec3(rho[size_t(freeCeiling)][0], rho[size_t(freeCeiling)][1], rho[size_t(freeCeiling)][2]);
   if (!clippedInBeam.empty()) {
     beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
                                          out.lights, out.suns, true);
@@ -1483,6 +1605,31 @@ void LightingFit::predictUnseenFromFit() {
   // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun
   // part apart.
   sunApart = K > 0;
+}
+
+// The last pass's estimate of the unseen ceiling's albedo (LightingEstimate::unseenCeilingAlbedo,
+// unseenCeilingTold); a note names the channels the photo did not tell (they took the walls'
+// mean) and an estimate at a bound of [0.05, 1].
+void LightingFit::reportUnseenCeiling() {
+  if (freeCeiling < 0) return;
+  const auto& a = rho[size_t(freeCeiling)];
+  out.unseenCeilingAlbedo = Vec3(a[0], a[1], a[2]);
+  out.unseenCeilingTold = ceilingTold;
+  const char* names[] = {"red", "green", "blue"};
+  std::string untold, bound;
+  for (size_t c = 0; c < 3; ++c) {
+    if (!ceilingTold[c]) untold += std::string(untold.empty() ? "" : ", ") + names[c];
+    else if (a[c] <= 0.05 + 1e-6 || a[c] >= 1 - 1e-6)
+      bound += std::string(bound.empty() ? "" : ", ") + names[c];
+  }
+  char value[64];
+  std::snprintf(value, sizeof value, "%.2f, %.2f, %.2f", a[0], a[1], a[2]);
+  if (!untold.empty())
+    out.notes.push_back("the photo does not tell the unseen ceiling's albedo (" + untold +
+                        "): the seen walls' mean is used (" + value + ")");
+  if (!bound.empty())
+    out.notes.push_back("the unseen ceiling's albedo came out at a bound of [0.05, 1] (" + bound +
+                        "): " + value);
 }
 
 // The estimated lights placed out of the photo's view share one radiance when there are several
@@ -1557,48 +1704,50 @@ bool LightingFit::fit() {
   return true;
 }
 
-// One channel of the light fit: per candidate pixel a LogResidual (Cauchy loss), the albedos,
-// the lights and the clipped gain bounded; its final cost is added to `cost`. Returns why the
-// solver failed, or nothing.
-std::string LightingFit::fitChannel(int c, double& cost) {
-  ceres::Problem problem;
-  // One loss shared by every residual (the problem deletes it once).
-  ceres::LossFunction* loss = new ceres::CauchyLoss(0.15);
-  for (size_t idx : candidates) {
-    const int x = int(idx % W), y = int(idx / W);
-    const int s = ps[idx].surface;
-    std::vector<double> e(C);
-    for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
-    for (size_t j = 0; j < J; ++j)
-      if (tiedTo[j] != j) e[tiedTo[j]] += e[j], e[j] = 0;  // one radiance for the tied lights
-    const double b = fitPhoto.at(x, y, c);
-    std::vector<double*> blocks{&rho[s][c]};
-    for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
-    if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
-    // The residual's block of a surface's albedo (added when new).
-    auto blockOf = [&](int surface) {
-      const auto it = std::find(blocks.begin(), blocks.end(), &rho[size_t(surface)][c]);
-      if (it != blocks.end()) return int(it - blocks.begin());
-      blocks.push_back(&rho[size_t(surface)][c]);
-      return int(blocks.size()) - 1;
-    };
-    // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
-    std::vector<BounceTerm> bounce;
-    for (const SunPatch& sp : sunPatches) {
-      BounceTerm t;
-      t.g = sp.g.at(x, y, 0);
-      if (!(t.g > 0)) continue;
-      t.sunBlock = int(1 + J + sp.sun);
-      t.rhoBlock = blockOf(sp.surface);
-      bounce.push_back(t);
-    }
-    addUnseenBounceTerms(idx, c, e, bounce, blockOf);
-    auto* f = new LogResidualCost(
-        LogResidual(std::log(std::max(1e-6, b)), fixedGathered(idx, c), e, b >= opt.saturatedAbove,
-                    fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)),
-        int(blocks.size()));
-    problem.AddResidualBlock(f, loss, blocks);
+// The light fit's residual of candidate pixel `idx` in channel c (a LogResidual under `loss`):
+// its albedo, the lights (tied ones share one), the clipped gain, the suns' and the unseen
+// room's bounce terms.
+ceres::ResidualBlockId LightingFit::addPixelResidual(ceres::Problem& problem, size_t idx, int c,
+                                                     ceres::LossFunction* loss) {
+  const int x = int(idx % W), y = int(idx / W);
+  const int s = ps[idx].surface;
+  std::vector<double> e(C);
+  for (size_t j = 0; j < C; ++j) e[j] = E[idx * C + j];
+  for (size_t j = 0; j < J; ++j)
+    if (tiedTo[j] != j) e[tiedTo[j]] += e[j], e[j] = 0;  // one radiance for the tied lights
+  const double b = fitPhoto.at(x, y, c);
+  std::vector<double*> blocks{&rho[s][c]};
+  for (size_t j = 0; j < C; ++j) blocks.push_back(&L[j][c]);
+  if (fitClipped) blocks.push_back(&clippedGain[size_t(c)]);
+  // The residual's block of a surface's albedo (added when new).
+  auto blockOf = [&](int surface) {
+    const auto it = std::find(blocks.begin(), blocks.end(), &rho[size_t(surface)][c]);
+    if (it != blocks.end()) return int(it - blocks.begin());
+    blocks.push_back(&rho[size_t(surface)][c]);
+    return int(blocks.size()) - 1;
+  };
+  // A sun lights the pixel directly and by its sunlit patch's bounce (sun x patch albedo).
+  std::vector<BounceTerm> bounce;
+  for (const SunPatch& sp : sunPatches) {
+    BounceTerm t;
+    t.g = sp.g.at(x, y, 0);
+    if (!(t.g > 0)) continue;
+    t.sunBlock = int(1 + J + sp.sun);
+    t.rhoBlock = blockOf(sp.surface);
+    bounce.push_back(t);
   }
+  addUnseenBounceTerms(idx, c, e, bounce, blockOf);
+  auto* f = new LogResidualCost(
+      LogResidual(std::log(std::max(1e-6, b)), fixedGathered(idx, c), e, b >= opt.saturatedAbove,
+                  fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)),
+      int(blocks.size()));
+  return problem.AddResidualBlock(f, loss, blocks);
+}
+
+// The bounds of the light fit's unknowns in channel c: albedos in [0.02, 1], the clipped gain at
+// least undoing the gain already applied, lights in [0, 1e9]; a light kept as given or tied to
+// another is constant.
+void LightingFit::boundUnknowns(ceres::Problem& problem, int c) {
   for (size_t s = 0; s < S; ++s)
     if (problem.HasParameterBlock(&rho[s][c])) {
       problem.SetParameterLowerBound(&rho[s][c], 0, 0.02);
@@ -1614,6 +1763,20 @@ std::string LightingFit::fitChannel(int c, double& cost) {
       problem.SetParameterUpperBound(&L[j][c], 0, 1e9);
       if (!refine[j] || (j < J && tiedTo[j] != j)) problem.SetParameterBlockConstant(&L[j][c]);
     }
+}
+
+// One channel of the light fit: per candidate pixel a LogResidual (Cauchy loss), the albedos,
+// the lights and the clipped gain bounded, the unseen ceiling's albedo (when the fit estimates
+// it) given its prior and, where the photo does not tell it, held at that prior; its final cost
+// is added to `cost`. Returns why the solver failed, or nothing.
+std::string LightingFit::fitChannel(int c, double& cost) {
+  ceres::Problem problem;
+  // One loss shared by every residual (the problem deletes it once).
+  ceres::LossFunction* loss = new ceres::CauchyLoss(0.15);
+  std::vector<ceres::ResidualBlockId> data;
+  for (size_t idx : candidates) data.push_back(addPixelResidual(problem, idx, c, loss));
+  boundUnknowns(problem, c);
+  constrainUnseenCeiling(problem, c);
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = 100;
@@ -1621,11 +1784,82 @@ std::string LightingFit::fitChannel(int c, double& cost) {
   so.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
+  if (freeCeiling >= 0) {
+    ceilingTold[size_t(c)] = photoTellsCeiling(problem, data, c);
+    if (!ceilingTold[size_t(c)] && problem.HasParameterBlock(&rho[size_t(freeCeiling)][c])) {
+      rho[size_t(freeCeiling)][c] = priorCeilingAlbedo(c);
+      problem.SetParameterBlockConstant(&rho[size_t(freeCeiling)][c]);
+      fitIterations[size_t(c)] += int(summary.iterations.size());
+      ceres::Solve(so, &problem, &summary);
+    }
+  }
   cost += summary.final_cost;
   fitIterations[size_t(c)] += int(summary.iterations.size());
   for (size_t j = 0; j < J; ++j) L[j][c] = L[tiedTo[j]][c];
   if (summary.IsSolutionUsable()) return "";
   return "light fit (channel " + std::to_string(c) + ") failed: " + summary.message;
+}
+
+// LightingOptions::unseenCeilingPriorWeight, 0 when negative or not finite.
+double LightingFit::ceilingPriorWeight() const {
+  const double w = opt.unseenCeilingPriorWeight;
+  return std::isfinite(w) ? std::max(0.0, w) : 0.0;
+}
+
+// The prior of the unseen ceiling's albedo in channel c (the fitted walls' mean, ceilingPrior, at
+// the current albedos) within its bounds [0.05, 1]; 0.5 when not finite.
+double LightingFit::priorCeilingAlbedo(int c) const {
+  double m = ceilingPrior.constant[c];
+  for (const auto& [s, w] : ceilingPrior.fitted) m += w * rho[size_t(s)][size_t(c)];
+  return std::isfinite(m) ? std::clamp(m, 0.05, 1.0) : 0.5;
+}
+
+// The unseen ceiling's albedo in channel c as an unknown (when the fit estimates it and a pixel's
+// bounce term uses it): bounded to [0.05, 1], started at its prior, and the prior's residual
+// (CeilingPriorCost, weight LightingOptions::unseenCeilingPriorWeight, at least 0) on it and on
+// the fitted walls it reads.
+void LightingFit::constrainUnseenCeiling(ceres::Problem& problem, int c) {
+  if (freeCeiling < 0) return;
+  double* a = &rho[size_t(freeCeiling)][c];
+  if (!problem.HasParameterBlock(a)) return;
+  problem.SetParameterLowerBound(a, 0, 0.05);
+  problem.SetParameterUpperBound(a, 0, 1.0);
+  *a = priorCeilingAlbedo(c);
+  std::vector<double*> blocks{a};
+  std::vector<double> weights;
+  for (const auto& [s, w] : ceilingPrior.fitted)
+    if (problem.HasParameterBlock(&rho[size_t(s)][c])) {
+      blocks.push_back(&rho[size_t(s)][c]);
+      weights.push_back(w);
+    }
+  problem.AddResidualBlock(new CeilingPriorCost(ceilingPriorWeight(), ceilingPrior.constant[c], weights),
+                           nullptr, blocks);
+}
+
+// Whether the photo tells the unseen ceiling's albedo a in channel c more than its prior does:
+// the information the pixels' residuals `data` give log a at the fit, every other free unknown
+// fitted alongside (schurInformation of their Gauss-Newton matrix, the robust loss applied),
+// above the prior's w^2. False when it cannot be evaluated.
+bool LightingFit::photoTellsCeiling(ceres::Problem& problem,
+                                    const std::vector<ceres::ResidualBlockId>& data, int c) {
+  double* a = &rho[size_t(freeCeiling)][c];
+  if (!problem.HasParameterBlock(a) || problem.IsParameterBlockConstant(a)) return false;
+  ceres::Problem::EvaluateOptions eo;
+  eo.residual_blocks = data;
+  std::vector<double*> all;
+  problem.GetParameterBlocks(&all);
+  long k = -1;
+  for (double* p : all)
+    if (!problem.IsParameterBlockConstant(p)) {
+      if (p == a) k = long(eo.parameter_blocks.size());
+      eo.parameter_blocks.push_back(p);
+    }
+  ceres::CRSMatrix jac;
+  double total = 0;
+  if (!problem.Evaluate(eo, &total, nullptr, nullptr, &jac)) return false;
+  const double told = schurInformation(gaussNewtonMatrix(jac), k) * (*a) * (*a);
+  const double w = ceilingPriorWeight();
+  return std::isfinite(told) && told > w * w;
 }
 
 // The fitted radiances into out.lights and out.suns; the suns' bounce at the fitted strengths
@@ -1906,6 +2140,14 @@ void Decomposer::surfaceMeanAlbedo() {
   for (size_t s = 0; s < S; ++s)
     if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
   f.out.surfaceMeanAlbedo = albedoOfUnseen(f.geometry, meanSeen, albedoCount, kUnseenCeilingAlbedo);
+  if (!f.opt.renderFittedCeiling) return;
+  // The fit's estimate of an unseen ceiling where the photo told it (LightingOptions::
+  // renderFittedCeiling).
+  for (size_t s = 0; s < S; ++s)
+    if (albedoCount[s] == 0 && f.geometry.surfaces[s].kind == SurfaceKind::Ceiling)
+      for (int c = 0; c < 3; ++c)
+        if (f.out.unseenCeilingTold[size_t(c)] && std::isfinite(f.out.unseenCeilingAlbedo[c]))
+          f.out.surfaceMeanAlbedo[s][c] = f.out.unseenCeilingAlbedo[c];
 }
 
 }  // namespace
@@ -1954,6 +2196,7 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   fit.adoptOrTraceRays();
   timer.reset();
   if (!fit.gatherAndFit()) return cancelled();
+  fit.reportUnseenCeiling();
   timer.emplace(steps, "per-pixel albedo");
   fit.perPixelAlbedo();
   fit.relativeFitResidual();

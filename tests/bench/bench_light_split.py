@@ -14,9 +14,13 @@ and the lights too dark, and the reverse. Per plain room this script reads:
   (refined, or the first estimate kept), from `--lights-json` with the render cut to one sample;
 - on rooms whose photo shows no ceiling, the same lights with the fit's model of that ceiling set
   to the truth's colour (`--fit-unseen-ceiling`, an oracle).
+- the light fit's estimate of that unseen ceiling's albedo (`--lights-json`'s "unseen_ceiling",
+  luminance; empty where the CLI makes none) against the truth's, and whether the photo told it;
+  with --compare-walls also the run with the fit's ceiling the walls' mean (`--unseen-ceiling
+  walls`, the rule before the estimate).
 
 Usage:
-  bench_light_split.py CLI --out OUT [--rooms A|B|t03,...] [--reuse]
+  bench_light_split.py CLI --out OUT [--rooms A|B|t03,...] [--reuse] [--compare-walls]
 Writes OUT/light_split.csv (one row per room and surface), OUT/light_split_lights.csv (one row
 per room, run and light) and prints both tables.
 """
@@ -79,16 +83,22 @@ def split_rows(room, room_dir, pre):
 def light_rows(room, truth, lights_json, run_name):
     L = json.load(open(lights_json))
     s = truth["exposure"]["scale"]
+    ceiling = (L.get("unseen_ceiling") or {}).get("fitted")
+    told = (L.get("unseen_ceiling") or {}).get("told", [])
+    true_ceiling = float(np.array(truth["room"]["faces"]["ceiling"]["material"]["color"]) @ LUMA)
     out = []
     for k, t in enumerate(truth["lights"]):
         tr = np.array(t["radiance_rgb"]) * s @ LUMA
         out.append({"room": room, "run": run_name, "light": k, "view": t["view_status"],
                     "first_ratio": round(float(np.array(L["initial"][k]["rgb"]) @ LUMA / tr), 3),
-                    "product_ratio": round(float(np.array(L["refined"][k]["rgb"]) @ LUMA / tr), 3)})
+                    "product_ratio": round(float(np.array(L["refined"][k]["rgb"]) @ LUMA / tr), 3),
+                    "ceiling_fitted": round(float(np.array(ceiling) @ LUMA), 3) if ceiling else "",
+                    "ceiling_told": "".join("1" if x else "0" for x in told) if ceiling else "",
+                    "ceiling_true": round(true_ceiling, 3)})
     return out
 
 
-def measure(cli, tools, sdir, room, out, reuse):
+def measure(cli, tools, sdir, room, out, reuse, compare_walls=False):
     room_dir = os.path.join(sdir, room)
     vdir = gen.variant(tools, room_dir, os.path.join(out, "variants", room + "_plain"), "plain")
     scene = os.path.join(out, room + "_plain.json")
@@ -106,6 +116,8 @@ def measure(cli, tools, sdir, room, out, reuse):
     if not ((lab[..., 0] if lab.ndim == 3 else lab) == 2).any():
         colour = truth["room"]["faces"]["ceiling"]["material"]["color"]
         runs["true_ceiling_in_fit"] = ["--fit-unseen-ceiling", ",".join("%.4f" % c for c in colour)]
+        if compare_walls:
+            runs["walls_in_fit"] = ["--unseen-ceiling", "walls"]
     lights = []
     for name, extra in runs.items():
         lj = "%s_%s_lights.json" % (pre, name)
@@ -132,14 +144,15 @@ def main(argv):
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
     split, lights = [], []
     for room in names:
-        s, l = measure(cli, tools, sdir, room, out, "--reuse" in argv)
+        s, l = measure(cli, tools, sdir, room, out, "--reuse" in argv, "--compare-walls" in argv)
         split += s
         lights += l
         print(json.dumps({"room": room, "split": s, "lights": l}), flush=True)
     benchlib.write_csv(os.path.join(out, "light_split.csv"), split)
     benchlib.write_csv(os.path.join(out, "light_split_lights.csv"), lights)
     table(split, ["room", "surface", "pixels", "true_albedo", "albedo_ratio", "gathered_ratio", "direct_ratio"])
-    table(lights, ["room", "run", "light", "view", "first_ratio", "product_ratio"])
+    table(lights, ["room", "run", "light", "view", "first_ratio", "product_ratio", "ceiling_fitted", "ceiling_told",
+                   "ceiling_true"])
     return 0
 
 

@@ -905,6 +905,8 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.threads = p.opt.threads;
   lo.seed += p.opt.seed;
   lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
+  lo.fitUnseenCeiling = p.opt.fitUnseenCeiling;
+  lo.renderFittedCeiling = p.opt.renderFittedCeiling;
   lo.gatherSunBounceUnseen = p.opt.sunsFromShadowRatio && p.opt.sunsFromBounce;
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);

@@ -22,6 +22,7 @@
 #include "inlay/modeling/image.h"
 #include "inlay/render/scene.h"
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <string>
@@ -124,6 +125,19 @@ struct LightingOptions {
   // The same for a light whose centre is out of the photo's view (false: its unseen bounce stays
   // a fixed part of Gamma).
   bool unseenBounceOfLightsOutOfView = false;
+  // With that term: the albedo of a ceiling the camera does not see is an unknown of the fit (per
+  // channel, bounded to [0.05, 1]), told by the light it bounces onto the seen room, with a weak
+  // prior toward the fitted walls' mean: a residual unseenCeilingPriorWeight x log(ceiling /
+  // walls' mean) beside the pixels' log residuals (0.3: the fit's robust scale, 0.15, over a prior
+  // standard deviation of 0.5 in log albedo). Where the photo tells it less than the prior does,
+  // it falls back to the walls' mean and a note says so (docs/generalization.md, "The unseen
+  // ceiling's albedo as an unknown of the light fit"). False: the walls' mean, as before.
+  bool fitUnseenCeiling = true;
+  double unseenCeilingPriorWeight = 0.3;
+  // The render's unseen ceiling (LightingEstimate::surfaceMeanAlbedo): true, the fit's estimate
+  // where the photo told it (each channel); false (or not told), albedoOfUnseen's rule with
+  // kUnseenCeilingAlbedo.
+  bool renderFittedCeiling = false;
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;
@@ -160,6 +174,12 @@ struct LightingEstimate {
   std::vector<AreaLight> lights;                  // with fitted radiance
   std::vector<SunLight> suns;                     // with fitted strength
   std::vector<Vec3> surfaceMeanAlbedo;            // per surface id of the geometry
+  // The light fit's estimate of the albedo of a ceiling the camera does not see
+  // (LightingOptions::fitUnseenCeiling), in the fit's albedo scale; NaN when it made none (the
+  // photo shows the ceiling, no light's bounce is apart, or the option is off). Per channel:
+  // whether the photo told it (false: the walls' mean, the prior, was used).
+  Vec3 unseenCeilingAlbedo = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  std::array<bool, 3> unseenCeilingTold = {false, false, false};
   std::vector<int> firstSurfacePerPixel;  // W x H: the surface id each pixel centre shows (-1: none)
   double fitRmsLog = 0;                   // robust fit residual (log space)
   // How much of the photo the fitted model leaves unexplained, free of the photo's scale and

@@ -179,6 +179,9 @@ struct PrepareOptions {
   uint32_t seed = 0;
   // Diagnostics: LightingOptions::fitUnseenCeilingAlbedo (negative: the product's rule).
   Vec3 fitUnseenCeilingAlbedo = Vec3::Constant(-1);
+  // LightingOptions::fitUnseenCeiling and renderFittedCeiling (diagnostics: --unseen-ceiling).
+  bool fitUnseenCeiling = true;
+  bool renderFittedCeiling = false;
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
