@@ -571,9 +571,8 @@ struct LightingFit {
   bool measureSurfaceRadiance();
   void countClippedPixels();
   bool computeDirectLight();
-  void spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
-              const std::function<void(int x, int y, const double* v)>& store,
-              const std::function<void(int x, int y, double* v)>& compute);
+  template <class GridValue, class Store, class Compute>
+  void spread(int dims, const GridValue& gridValue, const Store& store, const Compute& compute);
   double lightE(const PixelSurface& p, size_t j, uint32_t id) const;
   long seenPixel(const SurfaceHit& h) const;
   Vec3 radianceAt(const SurfaceHit& h, uint32_t sampleId) const;
@@ -605,7 +604,7 @@ struct LightingFit {
                        double* sum) const;
   UnseenAlbedo unseenAlbedoInFit(int surface) const;
   double bounceAlbedoOf(size_t u, int c, const std::vector<std::array<double, 3>>& rhoNow) const;
-  double unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+  double unseenBounceAt(size_t idx, int c, const std::vector<double>& albedo,
                         const std::vector<Vec3>& lights) const;
   double fixedGathered(size_t idx, int c) const;
   void addUnseenBounceTerms(size_t idx, int c, std::vector<double>& e, std::vector<BounceTerm>& bounce,
@@ -744,9 +743,11 @@ bool LightingFit::computeDirectLight() {
 
 // Spreads grid values to every pixel with bilinear weights over the grid samples of the same
 // surface; `compute` fills a pixel whose neighbours are all on other surfaces (a sliver).
-void LightingFit::spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
-                         const std::function<void(int x, int y, const double* v)>& store,
-                         const std::function<void(int x, int y, double* v)>& compute) {
+// gridValue(g, d), store(x, y, const double* v) and compute(x, y, double* v) are called per
+// pixel and corner: templates, so that they inline.
+template <class GridValue, class Store, class Compute>
+void LightingFit::spread(int dims, const GridValue& gridValue, const Store& store,
+                         const Compute& compute) {
   parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> v(size_t(std::max(dims, 1)));
     for (int y = rows.begin(); y < rows.end(); ++y)
@@ -1245,15 +1246,15 @@ double LightingFit::bounceAlbedoOf(size_t u, int c,
   return a;
 }
 
-// The unseen bounce at pixel `idx`, channel c, with the albedos `rhoNow` and area lights'
-// radiances `lights` (0 when it is not apart).
-double LightingFit::unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+// The unseen bounce at pixel `idx`, channel c, with each unseen surface's albedo in channel c
+// (`albedo`, U values: bounceAlbedoOf) and the area lights' radiances `lights` (0 when it is not
+// apart).
+double LightingFit::unseenBounceAt(size_t idx, int c, const std::vector<double>& albedo,
                                    const std::vector<Vec3>& lights) const {
   const size_t U = bounceSurfaces.size();
-  if (unseenBounce.empty() || U == 0) return 0.0;
   double sum = 0;
   for (size_t u = 0; u < U; ++u) {
-    const double a = bounceAlbedoOf(u, c, rhoNow);
+    const double a = albedo[u];
     for (size_t j = 0; j < J; ++j) sum += lights[j][c] * a * double(unseenBounce[(idx * J + j) * U + u]);
   }
   return std::isfinite(sum) ? sum : 0.0;
@@ -1297,12 +1298,20 @@ void LightingFit::moveUnseenBounceToFittedLights() {
   if (unseenBounce.empty()) return;
   std::vector<Vec3> lights;
   for (size_t j = 0; j < J; ++j) lights.push_back(out.lights[j].radiance);
-  for (size_t idx = 0; idx < size_t(W) * H; ++idx) {
-    if (ps[idx].surface < 0) continue;
-    const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
-    for (int c = 0; c < 3; ++c)
-      out.gathered.at(x, y, c) = float(fixedGathered(idx, c) + unseenBounceAt(idx, c, rho, lights));
-  }
+  // The unseen surfaces' albedos once, not per pixel.
+  std::array<std::vector<double>, 3> albedo;
+  for (int c = 0; c < 3; ++c)
+    for (size_t u = 0; u < bounceSurfaces.size(); ++u)
+      albedo[size_t(c)].push_back(bounceAlbedoOf(u, c, rho));
+  parallelFor(tbb::blocked_range<size_t>(0, size_t(W) * H), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t idx = r.begin(); idx < r.end(); ++idx) {
+      if (ps[idx].surface < 0) continue;
+      const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
+      for (int c = 0; c < 3; ++c)
+        out.gathered.at(x, y, c) =
+            float(fixedGathered(idx, c) + unseenBounceAt(idx, c, albedo[size_t(c)], lights));
+    }
+  });
 }
 
 // Step 4: the pixels the light fit uses and its unknowns. Clipped pixels count only inside a
