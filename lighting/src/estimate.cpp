@@ -194,6 +194,29 @@ class LogResidualCost final : public ceres::CostFunction {
   LogResidual r_;
 };
 
+// What the first fit knows of the room, used in the second pass to predict the radiance of
+// what the camera does not see (the wall behind it, parts out of frame) instead of guessing
+// it from the mean of what it does see.
+struct RoomModel {
+  bool active = false;
+  std::vector<Vec3> rho;        // per surface
+  std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
+  std::vector<Vec3> lights;     // radiance per light
+  SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
+  // With suns: the part of patches.gamma that the suns' light brought (their clipped patches'
+  // light and their direct light on unseen surfaces, bounced), at the strengths in `lights`.
+  std::vector<Vec3> sunGamma;
+};
+
+// Where an estimate's passes stood when they stopped (LightingOptions::warmStart): the room model
+// its last pass predicted the unseen room from, that pass's Gamma before its fit (relaxed) and
+// the clipped pixels' gain in it.
+struct PassState {
+  RoomModel model;
+  ImageF gathered;
+  std::array<double, 3> clippedGainApplied = {0, 0, 0};
+};
+
 }  // namespace
 
 // The rays an estimate traced (LightingEstimate::rays): per gather grid point, and per radiosity
@@ -202,6 +225,7 @@ struct LightingRays {
   uint64_t key = 0;
   std::vector<PointRays> grid;
   std::vector<std::vector<PointRays>> patchSweeps;
+  std::optional<PassState> passes;  // the tracing estimate's, for a warm-started refit
 };
 
 // Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls the
@@ -461,19 +485,7 @@ struct LightingFit {
   // 2. Mean radiance of each surface where the photo shows it.
   std::vector<Vec3> surfaceRadiance;
 
-  // What the first fit knows of the room, used in the second pass to predict the radiance of
-  // what the camera does not see (the wall behind it, parts out of frame) instead of guessing
-  // it from the mean of what it does see.
-  struct RoomModel {
-    bool active = false;
-    std::vector<Vec3> rho;        // per surface
-    std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
-    std::vector<Vec3> lights;     // radiance per light
-    SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
-    // With suns: the part of patches.gamma that the suns' light brought (their clipped patches'
-    // light and their direct light on unseen surfaces, bounced), at the strengths in `lights`.
-    std::vector<Vec3> sunGamma;
-  } model;
+  RoomModel model;
   // Gain already given to clipped pixels' radiance (after the first fit): radianceAt returns
   // b (1 + gain) there, so the second pass predicts the unseen parts with the fitted light.
   std::array<double, 3> clippedGainApplied = {0, 0, 0};
@@ -614,6 +626,7 @@ struct LightingFit {
   void averageFitPhoto();
   void chooseGatherSamples();
   bool gatherAndFit();
+  bool startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain);
   void predictUnseenFromFit();
   bool fit();
   double fitStartRadiance() const;
@@ -1414,7 +1427,9 @@ bool LightingFit::gatherAndFit() {
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
-  for (int pass = 0; pass < passes; ++pass) {
+  // A warm start goes on from the earlier estimate's passes: its first pass is this one's second.
+  const int first = startWarm(previousGathered, previousGain) ? 1 : 0;
+  for (int pass = first; pass < passes; ++pass) {
     {
       const StepTimer timer(out.steps, "gather");
       gatherAll();
@@ -1431,19 +1446,36 @@ bool LightingFit::gatherAndFit() {
       const StepTimer timer(out.steps, "light fit");
       if (!fit()) return false;
     }
-    out.passes = pass + 1;
+    out.passes = pass + 1 - first;
     if (pass >= 2 && change < opt.passTolerance) break;
     if (pass == passes - 1) {
       if (passes > 2)
         out.notes.push_back("gathered light still changed by " +
                             std::to_string(int(std::lround(100 * change))) + "% in the last of " +
-                            std::to_string(passes) +
+                            std::to_string(passes - first) +
                             " passes (the walls the camera does not see are uncertain)");
       break;
     }
     const StepTimer timer(out.steps, "unseen patches");
     predictUnseenFromFit();
   }
+  if (traced && K == 0) traced->passes = PassState{model, previousGathered, previousGain};
+  return true;
+}
+
+// Adopts the passes of the estimate whose rays this one replays (LightingOptions::warmStart): its
+// room model, Gamma and clipped gain, so that the first pass predicts the unseen room as that
+// estimate's later passes did. Rooms with a sun keep their two plain passes. True when adopted.
+bool LightingFit::startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain) {
+  if (!opt.warmStart || K > 0 || !out.raysReused || !rays->passes) return false;
+  const PassState& state = *rays->passes;
+  if (!state.model.active || state.gathered.width != W || state.gathered.height != H ||
+      state.model.rho.size() != S || state.model.lights.size() != C)
+    return false;
+  model = state.model;
+  previousGathered = state.gathered;
+  previousGain = clippedGainApplied = state.clippedGainApplied;
+  out.warmStarted = true;
   return true;
 }
 
