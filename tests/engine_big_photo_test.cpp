@@ -72,8 +72,8 @@ TEST(BigPhoto, PreparesOnAWorkingCopyAndRendersAtThePhotosSize) {
   const double before = peakMemoryBytes();
   auto ps = prepareScene(doc, opt);
   ASSERT_TRUE(ps.ok()) << ps.error().message();
-  // Memory: the prepared scene holds the photo and about half a dozen maps of its size (albedo,
-  // direct and gathered light, the bounces' radiance, the surface per pixel); the preparation's
+  // Memory: the prepared scene holds the photo and a few maps of its size (albedo, the bounces'
+  // radiance, the surface per pixel); the preparation's
   // peak stays within 12 photos' worth of float RGB (a stage that kept a double copy of every
   // map, or several full-size temporaries at once, would not).
   const double photoBytes = double(W) * H * 3 * sizeof(float);
@@ -112,12 +112,15 @@ TEST(BigPhoto, PreparesOnAWorkingCopyAndRendersAtThePhotosSize) {
     EXPECT_FALSE(stages[name]->reducedImage) << name;
   }
 
-  // The maps the render reads are at the photo's size, finite, the albedo in [0, 1].
+  // The maps the render reads are at the photo's size, finite, the albedo in [0, 1]; those it
+  // does not read (the direct light, and the gathered light of a room without a sun) stay at the
+  // working copy's.
   const LightingEstimate& L = ps->lighting;
   const ImageF& radiance = ps->renderScene.roomAlbedo.photoRadiance;
-  for (const ImageF* img : {&L.albedo, &L.direct, &L.gathered, &radiance}) {
-    ASSERT_EQ(img->width, W);
-    ASSERT_EQ(img->height, H);
+  for (const ImageF* img : {&L.albedo, &radiance, &L.direct, &L.gathered}) {
+    const bool full = img == &L.albedo || img == &radiance;
+    ASSERT_EQ(img->width, full ? W : work[0]);
+    ASSERT_EQ(img->height, full ? H : work[1]);
     for (float v : img->data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
   }
   for (float v : L.albedo.data) ASSERT_LE(v, 1.f);

@@ -724,6 +724,9 @@ TEST(Engine, TheRefitIsSkippedWhenTheLightsHardlyMoved) {
   ASSERT_TRUE(ran.ok()) << ran.error().message();
   EXPECT_EQ(decompositionRuns(), before + 3);
   EXPECT_TRUE(stageNamed(*ran, "lighting refit")->ran);
+  // The refit goes on from the first estimate's passes (LightingOptions::warmStart).
+  EXPECT_NE(describeStage(*stageNamed(*ran, "lighting refit")).find("going on from its passes"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "render_controller.h"
 
 #include "image_convert.h"
+#include "inlay/modeling/image_io.h"
 
 #include <QImageReader>
 
@@ -219,7 +220,10 @@ QImage RenderController::layerImage(Layer layer) {
       image = srgb8FromLinear(prepared->lighting.albedo, 0.0);
       break;
     case Layer::DirectLight:
-      image = encoded8FromLinear(prepared->lighting.direct, response, exposure);
+      // The preparation keeps the direct light at its working copy's size.
+      image = encoded8FromLinear(resizeImage(prepared->lighting.direct, prepared->photo.linearRgb.width,
+                                             prepared->photo.linearRgb.height),
+                                 response, exposure);
       break;
     case Layer::WithObjects: image = encoded8FromLinear(frame->withObjects, response, exposure); break;
     case Layer::WithoutObjects:

@@ -257,6 +257,29 @@ Eigen::MatrixXd gaussNewtonMatrix(const ceres::CRSMatrix& jac) {
   return info;
 }
 
+// What the first fit knows of the room, used in the second pass to predict the radiance of
+// what the camera does not see (the wall behind it, parts out of frame) instead of guessing
+// it from the mean of what it does see.
+struct RoomModel {
+  bool active = false;
+  std::vector<Vec3> rho;        // per surface
+  std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
+  std::vector<Vec3> lights;     // radiance per light
+  SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
+  // With suns: the part of patches.gamma that the suns' light brought (their clipped patches'
+  // light and their direct light on unseen surfaces, bounced), at the strengths in `lights`.
+  std::vector<Vec3> sunGamma;
+};
+
+// Where an estimate's passes stood when they stopped (LightingOptions::warmStart): the room model
+// its last pass predicted the unseen room from, that pass's Gamma before its fit (relaxed) and
+// the clipped pixels' gain in it.
+struct PassState {
+  RoomModel model;
+  ImageF gathered;
+  std::array<double, 3> clippedGainApplied = {0, 0, 0};
+};
+
 }  // namespace
 
 // The rays an estimate traced (LightingEstimate::rays): per gather grid point, and per radiosity
@@ -265,6 +288,7 @@ struct LightingRays {
   uint64_t key = 0;
   std::vector<PointRays> grid;
   std::vector<std::vector<PointRays>> patchSweeps;
+  std::optional<PassState> passes;  // the tracing estimate's, for a warm-started refit
 };
 
 // Per surface: `albedo` where `weight` > 0 (seen), else a guess from what is seen: walls the
@@ -524,19 +548,7 @@ struct LightingFit {
   // 2. Mean radiance of each surface where the photo shows it.
   std::vector<Vec3> surfaceRadiance;
 
-  // What the first fit knows of the room, used in the second pass to predict the radiance of
-  // what the camera does not see (the wall behind it, parts out of frame) instead of guessing
-  // it from the mean of what it does see.
-  struct RoomModel {
-    bool active = false;
-    std::vector<Vec3> rho;        // per surface
-    std::vector<Vec3> gammaMean;  // per surface, mean gathered light over its visible pixels
-    std::vector<Vec3> lights;     // radiance per light
-    SurfacePatches patches;       // gathered light per patch (where no photo pixel tells)
-    // With suns: the part of patches.gamma that the suns' light brought (their clipped patches'
-    // light and their direct light on unseen surfaces, bounced), at the strengths in `lights`.
-    std::vector<Vec3> sunGamma;
-  } model;
+  RoomModel model;
   // Gain already given to clipped pixels' radiance (after the first fit): radianceAt returns
   // b (1 + gain) there, so the second pass predicts the unseen parts with the fitted light.
   std::array<double, 3> clippedGainApplied = {0, 0, 0};
@@ -640,9 +652,8 @@ struct LightingFit {
   bool measureSurfaceRadiance();
   void countClippedPixels();
   bool computeDirectLight();
-  void spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
-              const std::function<void(int x, int y, const double* v)>& store,
-              const std::function<void(int x, int y, double* v)>& compute);
+  template <class GridValue, class Store, class Compute>
+  void spread(int dims, const GridValue& gridValue, const Store& store, const Compute& compute);
   double lightE(const PixelSurface& p, size_t j, uint32_t id) const;
   long seenPixel(const SurfaceHit& h) const;
   Vec3 radianceAt(const SurfaceHit& h, uint32_t sampleId) const;
@@ -683,7 +694,7 @@ struct LightingFit {
                          int c);
   void reportUnseenCeiling();
   double bounceAlbedoOf(size_t u, int c, const std::vector<std::array<double, 3>>& rhoNow) const;
-  double unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+  double unseenBounceAt(size_t idx, int c, const std::vector<double>& albedo,
                         const std::vector<Vec3>& lights) const;
   double fixedGathered(size_t idx, int c) const;
   void addUnseenBounceTerms(size_t idx, int c, std::vector<double>& e, std::vector<BounceTerm>& bounce,
@@ -693,6 +704,7 @@ struct LightingFit {
   void averageFitPhoto();
   void chooseGatherSamples();
   bool gatherAndFit();
+  bool startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain);
   void predictUnseenFromFit();
   bool fit();
   double fitStartRadiance() const;
@@ -825,9 +837,11 @@ bool LightingFit::computeDirectLight() {
 
 // Spreads grid values to every pixel with bilinear weights over the grid samples of the same
 // surface; `compute` fills a pixel whose neighbours are all on other surfaces (a sliver).
-void LightingFit::spread(int dims, const std::function<double(size_t g, int d)>& gridValue,
-                         const std::function<void(int x, int y, const double* v)>& store,
-                         const std::function<void(int x, int y, double* v)>& compute) {
+// gridValue(g, d), store(x, y, const double* v) and compute(x, y, double* v) are called per
+// pixel and corner: templates, so that they inline.
+template <class GridValue, class Store, class Compute>
+void LightingFit::spread(int dims, const GridValue& gridValue, const Store& store,
+                         const Compute& compute) {
   parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     std::vector<double> v(size_t(std::max(dims, 1)));
     for (int y = rows.begin(); y < rows.end(); ++y)
@@ -1361,15 +1375,15 @@ double LightingFit::bounceAlbedoOf(size_t u, int c,
   return a;
 }
 
-// The unseen bounce at pixel `idx`, channel c, with the albedos `rhoNow` and area lights'
-// radiances `lights` (0 when it is not apart).
-double LightingFit::unseenBounceAt(size_t idx, int c, const std::vector<std::array<double, 3>>& rhoNow,
+// The unseen bounce at pixel `idx`, channel c, with each unseen surface's albedo in channel c
+// (`albedo`, U values: bounceAlbedoOf) and the area lights' radiances `lights` (0 when it is not
+// apart).
+double LightingFit::unseenBounceAt(size_t idx, int c, const std::vector<double>& albedo,
                                    const std::vector<Vec3>& lights) const {
   const size_t U = bounceSurfaces.size();
-  if (unseenBounce.empty() || U == 0) return 0.0;
   double sum = 0;
   for (size_t u = 0; u < U; ++u) {
-    const double a = bounceAlbedoOf(u, c, rhoNow);
+    const double a = albedo[u];
     for (size_t j = 0; j < J; ++j) sum += lights[j][c] * a * double(unseenBounce[(idx * J + j) * U + u]);
   }
   return std::isfinite(sum) ? sum : 0.0;
@@ -1413,12 +1427,20 @@ void LightingFit::moveUnseenBounceToFittedLights() {
   if (unseenBounce.empty()) return;
   std::vector<Vec3> lights;
   for (size_t j = 0; j < J; ++j) lights.push_back(out.lights[j].radiance);
-  for (size_t idx = 0; idx < size_t(W) * H; ++idx) {
-    if (ps[idx].surface < 0) continue;
-    const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
-    for (int c = 0; c < 3; ++c)
-      out.gathered.at(x, y, c) = float(fixedGathered(idx, c) + unseenBounceAt(idx, c, rho, lights));
-  }
+  // The unseen surfaces' albedos once, not per pixel.
+  std::array<std::vector<double>, 3> albedo;
+  for (int c = 0; c < 3; ++c)
+    for (size_t u = 0; u < bounceSurfaces.size(); ++u)
+      albedo[size_t(c)].push_back(bounceAlbedoOf(u, c, rho));
+  parallelFor(tbb::blocked_range<size_t>(0, size_t(W) * H), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t idx = r.begin(); idx < r.end(); ++idx) {
+      if (ps[idx].surface < 0) continue;
+      const int x = int(idx % size_t(W)), y = int(idx / size_t(W));
+      for (int c = 0; c < 3; ++c)
+        out.gathered.at(x, y, c) =
+            float(fixedGathered(idx, c) + unseenBounceAt(idx, c, albedo[size_t(c)], lights));
+    }
+  });
 }
 
 // Step 4: the pixels the light fit uses and its unknowns. Clipped pixels count only inside a
@@ -1521,7 +1543,9 @@ bool LightingFit::gatherAndFit() {
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
-  for (int pass = 0; pass < passes; ++pass) {
+  // A warm start goes on from the earlier estimate's passes: its first pass is this one's second.
+  const int first = startWarm(previousGathered, previousGain) ? 1 : 0;
+  for (int pass = first; pass < passes; ++pass) {
     {
       const StepTimer timer(out.steps, "gather");
       gatherAll();
@@ -1538,19 +1562,36 @@ bool LightingFit::gatherAndFit() {
       const StepTimer timer(out.steps, "light fit");
       if (!fit()) return false;
     }
-    out.passes = pass + 1;
+    out.passes = pass + 1 - first;
     if (pass >= 2 && change < opt.passTolerance) break;
     if (pass == passes - 1) {
       if (passes > 2)
         out.notes.push_back("gathered light still changed by " +
                             std::to_string(int(std::lround(100 * change))) + "% in the last of " +
-                            std::to_string(passes) +
+                            std::to_string(passes - first) +
                             " passes (the walls the camera does not see are uncertain)");
       break;
     }
     const StepTimer timer(out.steps, "unseen patches");
     predictUnseenFromFit();
   }
+  if (traced && K == 0) traced->passes = PassState{model, previousGathered, previousGain};
+  return true;
+}
+
+// Adopts the passes of the estimate whose rays this one replays (LightingOptions::warmStart): its
+// room model, Gamma and clipped gain, so that the first pass predicts the unseen room as that
+// estimate's later passes did. Rooms with a sun keep their two plain passes. True when adopted.
+bool LightingFit::startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain) {
+  if (!opt.warmStart || K > 0 || !out.raysReused || !rays->passes) return false;
+  const PassState& state = *rays->passes;
+  if (!state.model.active || state.gathered.width != W || state.gathered.height != H ||
+      state.model.rho.size() != S || state.model.lights.size() != C)
+    return false;
+  model = state.model;
+  previousGathered = state.gathered;
+  previousGain = clippedGainApplied = state.clippedGainApplied;
+  out.warmStarted = true;
   return true;
 }
 

@@ -624,7 +624,8 @@ std::vector<StageStep> stepsOf(const LightingEstimate& e) {
 // passes, the first estimate's rays replayed, ...": LightingEstimate::raysReused).
 std::string gatherText(const LightingEstimate& e) {
   return std::to_string(e.passes) + (e.passes == 1 ? " pass, " : " passes, ") +
-         (e.raysReused ? "the first estimate's rays replayed, " : "") + std::to_string(e.gatherPoints) +
+         (e.raysReused ? "the first estimate's rays replayed, " : "") +
+         (e.warmStarted ? "going on from its passes, " : "") + std::to_string(e.gatherPoints) +
          " points x " + std::to_string(e.gatherSamples) + " rays, " + std::to_string(e.fitIterations) +
          " light fit iterations";
 }
@@ -1050,23 +1051,23 @@ std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vecto
   return ids;
 }
 
-// The lighting's maps, estimated on the working copy, at the photo's size for the render and
-// the composite: the albedo, the direct light and the fit's albedos by joint bilateral
+// The lighting's maps, estimated on the working copy, at the photo's size where the render and
+// the composite read them: the albedo (and with a sun the fit's albedos) by joint bilateral
 // upsampling of their ratio to the photo (a smooth factor but at shadow edges, which the photo
-// guides), times the photo, so they keep its full-size texture; the gathered light (smooth) and
-// the suns' bounce bilinearly; and each pixel's surface cast again through the photo's pixel
-// centres. The decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped) and the
-// albedos only diagnostics read (see below) stay at
-// the working size.
+// guides), times the photo, so they keep its full-size texture; with a sun the gathered light
+// (smooth) bilinearly; and each pixel's surface cast again through the photo's pixel centres.
+// Only a sun's clipped patch reads the gathered light and the fit's albedo at the photo's size
+// (radianceForBounces); the direct light only the studio's view (which resizes it), the suns'
+// bounce and the decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped)
+// nothing after the refit; Retinex's albedo only `inlay-cli decompose`, which works at the
+// photo's size. Those stay at the working size (LightingEstimate says which).
 Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
   LightingEstimate& L = p.ps.lighting;
   const ImageF& photo = p.ps.photo.linearRgb;
   const ImageF& low = p.work.photo;
   const auto t = Clock::now();
-  // The maps share the upsampling's weights (they depend on the photo only). The fit's albedo
-  // is read at the photo's size only for a sun's clipped patch (radianceForBounces); Retinex's
-  // only by `inlay-cli decompose`, which works at the photo's size.
-  std::vector<ImageF*> maps{&L.albedo, &L.direct};
+  // The maps share the upsampling's weights (they depend on the photo only).
+  std::vector<ImageF*> maps{&L.albedo};
   if (!L.suns.empty()) maps.push_back(&L.physicalAlbedo);
   maps.erase(
       std::remove_if(maps.begin(), maps.end(),
@@ -1082,9 +1083,8 @@ Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
     for (float& v : up[k].data) v = v > 0 ? std::min(v, highest) : 0.f;
     *maps[k] = std::move(up[k]);
   }
-  if (!L.gathered.empty()) L.gathered = resizeImage(L.gathered, photo.width, photo.height);
-  for (ImageF& b : L.sunBounce)
-    if (!b.empty()) b = resizeImage(b, photo.width, photo.height);
+  if (!L.suns.empty() && !L.gathered.empty())
+    L.gathered = resizeImage(L.gathered, photo.width, photo.height);
   if (p.cancelled()) return cancelledError();
   const double mapsSeconds = secondsSince(t);
   L.firstSurfacePerPixel = firstSurfacesAtPhotoSize(p, L.firstSurfacePerPixel);

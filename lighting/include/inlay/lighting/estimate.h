@@ -146,6 +146,12 @@ struct LightingOptions {
   // a fingerprint of all of them; otherwise the estimate traces its own): the estimate is then
   // the one it would compute tracing them, up to the order of its sums.
   std::shared_ptr<const LightingRays> reuseRays;
+  // With reuseRays replayed (and no sun): start from where that estimate's passes stopped (its
+  // room model of what the camera does not see, its Gamma and clipped gain) instead of from the
+  // surfaces' mean radiance: its first pass is the earlier estimate's next one, so the passes
+  // stop one to three sooner (a refit after the refinement moved the lights by a few percent).
+  // False: every estimate starts cold.
+  bool warmStart = true;
   const CancelToken* cancel = nullptr;
 };
 
@@ -169,11 +175,14 @@ struct LightingEstimate {
   std::vector<DecomposeSample> decomposeHistory;  // objective and residuals against time
   std::string decomposeReport;                    // converged, or why the solver stopped
   bool decomposeConverged = true;                 // false: stopped at its iteration cap
-  ImageF gathered;                                // Gamma: W x H x 3, indirect irradiance / pi
-  ImageF direct;                                  // D = B - rho * Gamma: W x H x 3, >= 0
-  std::vector<AreaLight> lights;                  // with fitted radiance
-  std::vector<SunLight> suns;                     // with fitted strength
-  std::vector<Vec3> surfaceMeanAlbedo;            // per surface id of the geometry
+  // Gamma: W x H x 3, indirect irradiance / pi. D = B - rho * Gamma: W x H x 3, >= 0. W x H: the
+  // photo the estimate ran on; the preparation (pipeline.h) brings a working copy's albedo to the
+  // photo's size, `gathered` only with a sun, `direct` never (the composite does not read it).
+  ImageF gathered;
+  ImageF direct;
+  std::vector<AreaLight> lights;          // with fitted radiance
+  std::vector<SunLight> suns;             // with fitted strength
+  std::vector<Vec3> surfaceMeanAlbedo;    // per surface id of the geometry
   // The light fit's estimate of the albedo of a ceiling the camera does not see
   // (LightingOptions::fitUnseenCeiling), in the fit's albedo scale; NaN when it made none (the
   // photo shows the ceiling, no light's bounce is apart, or the option is off). Per channel:
@@ -204,6 +213,7 @@ struct LightingEstimate {
   // MB, dropped by the preparation once the refit ran). raysReused: replayed, not traced.
   std::shared_ptr<const LightingRays> rays;
   bool raysReused = false;
+  bool warmStarted = false;  // its passes went on from the replayed rays' (warmStart)
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
