@@ -1317,7 +1317,7 @@ bool LightingFit::chooseFitPixels() {
       if (isNonMatte(opt.nonMatteSurfaces, p.surface)) continue;
       if (isProxy(p.surface)) continue;
       if (saturated(x, y) && !inSunBeam(idx)) continue;
-      if (luminance(photo.rgb(x, y)) < 1e-4) continue;
+      if (luminance(photo.rgb(x, y)) < opt.blackBelow) continue;
       candidates.push_back(idx);
     }
   if (candidates.empty()) return false;
@@ -1594,8 +1594,9 @@ std::string LightingFit::fitChannel(int c, double& cost) {
     }
     addUnseenBounceTerms(idx, c, e, bounce, blockOf);
     auto* f = new LogResidualCost(
-        LogResidual(std::log(std::max(1e-6, b)), fixedGathered(idx, c), e, b >= opt.saturatedAbove,
-                    fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)),
+        LogResidual(std::log(std::max(0.01 * opt.blackBelow, b)), fixedGathered(idx, c), e,
+                    b >= opt.saturatedAbove, fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0,
+                    std::move(bounce)),
         int(blocks.size()));
     problem.AddResidualBlock(f, loss, blocks);
   }
@@ -1797,7 +1798,7 @@ void Decomposer::masks() {
       const size_t idx = size_t(y) * W + x;
       clipped[idx] = f.saturated(x, y) ? 1 : 0;
       validPhoto[idx] = f.ps[idx].surface >= 0 && !f.isLight(x, y) && !clipped[idx] &&
-                        luminance(f.photo.rgb(x, y)) > 1e-5;
+                        luminance(f.photo.rgb(x, y)) > 0.1 * opt.blackBelow;
       // A pixel brighter than any reflectance could make it under the modelled light is one
       // the model does not explain (a light or an opening it lacks, a surface that is not
       // where the geometry says, such as the floor seen between a table's legs): its albedo
