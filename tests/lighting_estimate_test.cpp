@@ -79,14 +79,15 @@ SyntheticRoom makeRoom(const Vec3& radiance, int spp, int width = 160) {
   return r;
 }
 
-ImageF lightMaskOf(const SyntheticRoom& r) {
+// The light's outline's bounding box grown by `growPx` pixels (negative: shrunk).
+ImageF lightMaskOf(const SyntheticRoom& r, int growPx = 2) {
   ImageF m(r.photo.width, r.photo.height, 1, 0.f);
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
   for (const Vec2& p : r.lightOutlinePx)
     x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()),
     y1 = std::max(y1, p.y());
-  for (int y = std::max(0, int(y0) - 2); y <= std::min(r.photo.height - 1, int(y1) + 2); ++y)
-    for (int x = std::max(0, int(x0) - 2); x <= std::min(r.photo.width - 1, int(x1) + 2); ++x)
+  for (int y = std::max(0, int(y0) - growPx); y <= std::min(r.photo.height - 1, int(y1) + growPx); ++y)
+    for (int x = std::max(0, int(x0) - growPx); x <= std::min(r.photo.width - 1, int(x1) + growPx); ++x)
       m.at(x, y) = 1;
   return m;
 }
@@ -884,19 +885,6 @@ ShoulderPhoto throughALongShoulder(const SyntheticRoom& r, const ImageF& mask,
   return out;
 }
 
-// The light's outline drawn tight (its bounding box less one pixel): the panel's edge pixels stay
-// in the room, as a hand-drawn outline leaves them.
-ImageF tightLightMask(const SyntheticRoom& r) {
-  ImageF m(r.photo.width, r.photo.height, 1, 0.f);
-  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-  for (const Vec2& p : r.lightOutlinePx)
-    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x()), y0 = std::min(y0, p.y()),
-    y1 = std::max(y1, p.y());
-  for (int y = std::max(0, int(y0) + 1); y < std::min(r.photo.height, int(y1)); ++y)
-    for (int x = std::max(0, int(x0) + 1); x < std::min(r.photo.width, int(x1)); ++x) m.at(x, y) = 1;
-  return m;
-}
-
 // A long shoulder's top codes are decoded right, and the light fit holds up on them: with most of
 // the room in codes where one step is more than a tenth in log radiance (and a code of noise on
 // every pixel), the fitted light stays near the truth. Reading those codes as clipped instead
@@ -906,7 +894,7 @@ TEST(Lighting, TheLightFitHoldsOnALongShouldersDecodedHighlights) {
   const Vec3 trueRadiance(6, 6, 6);
   const SyntheticRoom r = makeRoom(trueRadiance, 64);
   const CameraResponse camera = CameraResponse::toeShoulder({1.0, 0.0, 1000.0});
-  const ImageF mask = tightLightMask(r);
+  const ImageF mask = lightMaskOf(r, -1);  // tight: the panel's edge pixels stay in the room
   const ShoulderPhoto shot = throughALongShoulder(r, mask, camera);
   const auto& table = camera.table8();
   size_t firstSteep = 128;  // the first code whose step to the next exceeds 0.1 in log radiance
