@@ -1455,7 +1455,7 @@ bool LightingFit::chooseFitPixels() {
       if (isNonMatte(opt.nonMatteSurfaces, p.surface)) continue;
       if (isProxy(p.surface)) continue;
       if (saturated(x, y) && !inSunBeam(idx)) continue;
-      if (luminance(photo.rgb(x, y)) < 1e-4) continue;
+      if (luminance(photo.rgb(x, y)) < opt.blackBelow) continue;
       candidates.push_back(idx);
     }
   if (candidates.empty()) return false;
@@ -1779,8 +1779,9 @@ ceres::ResidualBlockId LightingFit::addPixelResidual(ceres::Problem& problem, si
   }
   addUnseenBounceTerms(idx, c, e, bounce, blockOf);
   auto* f = new LogResidualCost(
-      LogResidual(std::log(std::max(1e-6, b)), fixedGathered(idx, c), e, b >= opt.saturatedAbove,
-                  fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0, std::move(bounce)),
+      LogResidual(std::log(std::max(0.01 * opt.blackBelow, b)), fixedGathered(idx, c), e,
+                  b >= opt.saturatedAbove, fitClipped ? double(gatheredClipped.at(x, y, c)) : -1.0,
+                  std::move(bounce)),
       int(blocks.size()));
   return problem.AddResidualBlock(f, loss, blocks);
 }
@@ -2072,7 +2073,7 @@ void Decomposer::masks() {
       const size_t idx = size_t(y) * W + x;
       clipped[idx] = f.saturated(x, y) ? 1 : 0;
       validPhoto[idx] = f.ps[idx].surface >= 0 && !f.isLight(x, y) && !clipped[idx] &&
-                        luminance(f.photo.rgb(x, y)) > 1e-5;
+                        luminance(f.photo.rgb(x, y)) > 0.1 * opt.blackBelow;
       // A pixel brighter than any reflectance could make it under the modelled light is one
       // the model does not explain (a light or an opening it lacks, a surface that is not
       // where the geometry says, such as the floor seen between a table's legs): its albedo

@@ -28,7 +28,7 @@ response error against its seconds); prints Markdown tables per half.
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
                                [--seconds S] [--spp N [--long-spp M]] [--product [CAP]] [--no-albedo]
                                [--no-plain] [--rescore]
-                               [--variants ROOM_CAMERA,...]
+                               [--variants ROOM_CAMERA,...] [--oracle-curve]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
   --spp N       render exactly N samples per pixel instead (no clock, uniform sampling): the
@@ -51,6 +51,10 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 estimate). With --spp the 16-sample columns are kept for comparison
   --variants t03_s1,t11_s2  measure only these room_camera variants (e.g. the photos where two
                 builds choose different responses; merge with the other build's rows by --from-csv)
+  --oracle-curve  an oracle run (benchmark only): each scene's camera.response is the toe_shoulder
+                member nearest the variant's true curve (bench_response.true_family_params, from
+                camera_variant.json), "srgb" for the plain photos: the pipeline as if the curve
+                estimate were perfect
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
@@ -225,6 +229,8 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
            "table": bool(truth.get("table"))}
     scene = os.path.join(out, tag + ".json")
     run([PY, os.path.join(tools, "harness.py"), "scene", vdir, scene, "--seconds", str(o["seconds"])])
+    if o.get("oracle_curve"):
+        set_true_curve(scene, cam)
     comp, lj = os.path.join(out, tag + ".png"), os.path.join(out, tag + "_lights.json")
     budget = (["--spp", str(o["spp"]), "--seconds", "0", "--noise", "0"] if o["spp"]
               else ["--spp", "100000", "--seconds", str(o["seconds"])])
@@ -244,6 +250,19 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     row.update(response_error(cli, o["has_response"], scene, os.path.join(out, tag + "_response.json"),
                               cam, o["rescore"]))
     return row
+
+
+def set_true_curve(scene, cam):
+    """The oracle: the scene's camera.response set to the family member nearest the true curve."""
+    import bench_response
+    j = json.load(open(scene))
+    if cam["curve"] == "srgb":
+        response = "srgb"
+    else:
+        p, t, s = bench_response.true_family_params(cam)
+        response = {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s}
+    j.setdefault("camera", {})["response"] = response
+    json.dump(j, open(scene, "w"), indent=1)
 
 
 def clamp_label(c):
@@ -607,7 +626,7 @@ def main():
     rc, _, help_text, help_err = run([cli, "--help"])
     o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")),
          "product": product_cap(argv), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
-         "has_response": "inlay-cli response" in help_text + help_err}
+         "has_response": "inlay-cli response" in help_text + help_err, "oracle_curve": "--oracle-curve" in argv}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     if opt("--clamp-grid", ""):
         if not o["spp"]:

@@ -897,6 +897,15 @@ Status sunsFromShafts(Preparation& p, std::string& detail) {
   return {};
 }
 
+// LightingOptions::blackBelow for the photo's camera response: `srgbLevel` (sRGB's, below its
+// code 1) times the response's code 1 over sRGB's, so that the same codes are black whatever the
+// curve (a long shoulder decodes code 64 to 5e-5). sRGB, linear and EXR photos keep `srgbLevel`.
+double blackLevelOf(const PreparedScene& ps, double srgbLevel) {
+  if (!ps.photo.wasSrgbEncoded || ps.response.family() != ResponseFamily::ToeShoulder) return srgbLevel;
+  const double code1 = ps.response.table8()[1], srgb1 = CameraResponse::srgb().table8()[1];
+  return code1 > 0 && std::isfinite(code1) ? srgbLevel * code1 / srgb1 : srgbLevel;
+}
+
 // The gathered light, the albedo and the lights' radiances (lighting/estimate.h).
 Status estimateTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
@@ -909,6 +918,7 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   lo.fitUnseenCeiling = p.opt.fitUnseenCeiling;
   lo.renderFittedCeiling = p.opt.renderFittedCeiling;
   lo.gatherSunBounceUnseen = p.opt.sunsFromShadowRatio && p.opt.sunsFromBounce;
+  lo.blackBelow = blackLevelOf(ps, lo.blackBelow);
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();

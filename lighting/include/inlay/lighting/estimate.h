@@ -91,6 +91,12 @@ struct LightingOptions {
   // half A of the training rooms, docs/generalization.md).
   int fitWindow = 4;
   double saturatedAbove = 0.98;  // linear value treated as clipped
+  // Luminance below which a photo pixel is black (no measurement): the light fit leaves it out,
+  // the decomposition's data terms below a tenth of it, the fit's log floors at a hundredth. 1e-4
+  // is below sRGB's code 1 (3e-4); a camera response with a long highlight shoulder decodes far
+  // more of the codes below it (shoulder 1000: code 85), so the pipeline scales it with the
+  // response's code 1 (blackLevelOf in pipeline.cpp; docs/camera-response.md).
+  double blackBelow = 1e-4;
   // A pixel whose photo over the modelled shading exceeds this in a channel is not explained by
   // the model (a light or opening it lacks, wrong geometry): its albedo comes from the photo's
   // Retinex and the decomposition's data terms leave it out.
