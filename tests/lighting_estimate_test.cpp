@@ -441,6 +441,24 @@ SyntheticRoom roomLookingDown() {
 }
 
 // `r` rendered with `sw`'s sky and sun (r.photo) and clipped at 1, as a photo has it.
+// t04's albedos on the synthetic room (roomLookingDown): walls 0.45, a floor 0.5, a white ceiling
+// (0.88) the camera does not see.
+SyntheticRoom whiteCeilingSunRoom() {
+  SyntheticRoom r = roomLookingDown();
+  const Vec3 wall(0.45, 0.45, 0.48);
+  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
+  return r;
+}
+
+// 128 gather rays a pixel on every second pixel, two threads.
+LightingOptions sunRoomOptions() {
+  LightingOptions opt;
+  opt.gatherSamples = 128;
+  opt.gatherStride = 2;
+  opt.threads = 2;
+  return opt;
+}
+
 ImageF clippedSunPhoto(SyntheticRoom& r, const SunWindow& sw) {
   r.photo = renderRoom(r, {sw.window}, {sw.sun}, 32);
   ImageF photo = r.photo;
@@ -1625,17 +1643,15 @@ TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
 
 // t04's albedos on the synthetic room: walls 0.45, a floor 0.5 the sun patch clips, a white
 // ceiling (0.88) the camera does not see, a blue sky through a window out of view and a warm sun
-// (t04's radiances). With the window in the back wall the fit, its unseen ceiling the walls'
-// mean, gets the sky within 10 % (measured 0.95 / 0.99 / 1.08) and the sun within 20 % (0.83 /
-// 0.83 / 0.89); with the window in the left wall (t04's and t10's side) both come out low, as on
-// t04 (sky 0.70 / 0.74 / 0.81, sun 0.61 / 0.63 / 0.70; not noise: the same with 512 gather
-// samples; not the opening's place: the true window is lower still, 0.63-0.72). The truth's
-// ceiling inside the fit (fitUnseenCeilingAlbedo), printed for the record, makes both too bright
-// (back 1.8, left 1.3-1.4). docs/generalization.md, "t10's object error, taken apart".
+// (t04's radiances). The sun room's passes go on to a fixed point (LightingOptions::
+// sunRoomToFixedPoint): the sky of either window within 10 % (measured: back wall 1.01 / 1.03 /
+// 1.05, left wall 0.93 / 0.94 / 0.95), the sun within 25 % (0.80-0.82, 0.76-0.78). Stopped after
+// two passes, as before, the left (side) wall's sky was 0.70 / 0.74 / 0.81 and its sun 0.61-0.70,
+// as on t04. The truth's ceiling inside the fit (fitUnseenCeilingAlbedo), printed for the record,
+// makes both too bright (1.3-1.5). docs/generalization.md, "The sun room's passes to a fixed
+// point".
 TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
-  SyntheticRoom r = roomLookingDown();
-  const Vec3 wall(0.45, 0.45, 0.48);
-  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
+  SyntheticRoom r = whiteCeilingSunRoom();
   for (const bool leftWall : {false, true}) {
     SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7), leftWall);
     sw.window.radiance = Vec3(2.4, 3.05, 4.4);
@@ -1644,10 +1660,7 @@ TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
     ASSERT_TRUE(opening.has_value());
     ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
     for (const bool trueCeiling : {false, true}) {
-      LightingOptions opt;
-      opt.gatherSamples = 128;
-      opt.gatherStride = 2;
-      opt.threads = 2;
+      LightingOptions opt = sunRoomOptions();
       if (trueCeiling) opt.fitUnseenCeilingAlbedo = r.albedo[1];
       const auto est = estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(),
                                         {sw.sun}, opt);
@@ -1659,29 +1672,23 @@ TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
                   trueCeiling ? "the truth's ceiling in the fit" : "the product", sky.x(), sky.y(),
                   sky.z(), sun.x(), sun.y(), sun.z());
       if (trueCeiling) continue;
-      // The left wall's: a guard against worse (it is the case to fix).
-      const double tolerance = leftWall ? 0.35 : 0.2;
       for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(sky[c], 1.0, tolerance) << "channel " << c;
-        EXPECT_NEAR(sun[c], 1.0, tolerance + 0.1) << "channel " << c;
+        EXPECT_NEAR(sky[c], 1.0, 0.1) << "channel " << c;
+        EXPECT_NEAR(sun[c], 1.0, 0.3) << "channel " << c;
       }
     }
   }
 }
 
-// The same rooms lit by the sky alone (no sun, no clipped patch: the fit's plain passes): the
-// sky of either window comes within 15 % (measured: back wall 1.09 / 1.09 / 1.10, left wall
-// 0.94 / 0.94 / 0.95). So the side window's low sky above comes with the sun's scheme (its
-// clipped patch, two plain passes); printed for the record, not asserted: with the sun, the
-// same fit stopped after 3 and 4 passes (LightingOptions::sunRoomPasses), which swings.
+// The same rooms lit by the sky alone (no sun, no clipped patch: the fit's plain passes) give the
+// sky of either window within 15 % (measured: back wall 1.09 / 1.09 / 1.10, left wall 0.94 /
+// 0.94 / 0.95). With the sun, its passes settled, the side window's sky is the sky alone's within
+// 0.1 (measured 0.01 left, 0.04-0.08 back; stopped after two passes the left was 0.24 lower), and
+// going on to 8 passes changes it by less than 3 % (two, three and four passes swung by up to
+// 0.3 before).
 TEST(Lighting, TheSkyOfASideWindowAloneIsFittedRight) {
-  SyntheticRoom r = roomLookingDown();
-  const Vec3 wall(0.45, 0.45, 0.48);
-  r.albedo = {Vec3(0.5, 0.47, 0.45), Vec3(0.88, 0.88, 0.9), wall, wall, wall, wall};
-  LightingOptions opt;
-  opt.gatherSamples = 128;
-  opt.gatherStride = 2;
-  opt.threads = 2;
+  SyntheticRoom r = whiteCeilingSunRoom();
+  const LightingOptions opt = sunRoomOptions();
   for (const bool leftWall : {false, true}) {
     SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7), leftWall);
     sw.window.radiance = Vec3(2.4, 3.05, 4.4);
@@ -1695,18 +1702,78 @@ TEST(Lighting, TheSkyOfASideWindowAloneIsFittedRight) {
     const Vec3 sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
     std::printf("window in the %s wall, the sky alone: sky / true %.2f %.2f %.2f\n",
                 leftWall ? "left" : "back", sky.x(), sky.y(), sky.z());
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(sky[c], 1.0, 0.15) << "channel " << c;
     const ImageF photo = clippedSunPhoto(r, sw);
-    for (const int passes : {3, 4}) {
+    std::array<Vec3, 2> withSun;
+    for (const int passes : {5, 8}) {
       LightingOptions o = opt;
-      o.sunRoomPasses = passes;
-      const auto withSun =
+      o.maxPasses = passes;
+      const auto e =
           estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(), {sw.sun}, o);
-      ASSERT_TRUE(withSun.ok()) << withSun.error().message();
-      const Vec3 s3 = withSun->lights[0].radiance.cwiseQuotient(sw.window.radiance);
-      const Vec3 sun = withSun->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
-      std::printf("  with the sun, %d passes: sky / true %.2f %.2f %.2f, sun / true %.2f %.2f %.2f\n",
-                  passes, s3.x(), s3.y(), s3.z(), sun.x(), sun.y(), sun.z());
+      ASSERT_TRUE(e.ok()) << e.error().message();
+      withSun[passes == 8] = e->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+      const Vec3& s = withSun[passes == 8];
+      std::printf("  with the sun, at most %d passes (%d run): sky / true %.2f %.2f %.2f\n", passes,
+                  e->passes, s.x(), s.y(), s.z());
+    }
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(sky[c], 1.0, 0.15) << "channel " << c;
+      EXPECT_NEAR(withSun[0][c], sky[c], 0.1) << "channel " << c;
+      EXPECT_NEAR(withSun[1][c], withSun[0][c], 0.03) << "channel " << c;
+    }
+  }
+}
+
+// The sun room's passes on stiff inputs: a sun so strong that its patch clips in every channel
+// far above the clip level, a black sky (the window sends nothing), a sun at a grazing angle to
+// the floor, and passes capped at the least the scheme runs (3): finite lights and albedo, and
+// where the passes did not settle a note says so.
+TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
+  SyntheticRoom r = whiteCeilingSunRoom();
+  struct Case {
+    const char* name;
+    Vec3 sun, sky, travel;
+    int maxPasses;
+  };
+  const Vec3 grazing = Vec3(1.0, -0.12, 0.2).normalized(), blue(2.4, 3.05, 4.4), warm(3.3, 3.1, 2.7);
+  const Vec3 none = Vec3::Zero();  // the window's own sun direction
+  for (const Case& k :
+       {Case{"patch clipped far above", Vec3(300, 280, 250), blue, none, 5},
+        Case{"black sky", warm, none, none, 5}, Case{"grazing sun", warm, blue, grazing, 5},
+        Case{"three passes", warm, blue, none, 3}}) {
+    SunWindow sw = sunThroughWindow(r, k.sun, true);
+    sw.window.radiance = k.sky;
+    if (k.travel.norm() > 0) sw.sun.travelDirection = k.travel;
+    const ImageF photo = clippedSunPhoto(r, sw);
+    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+    std::vector<AreaLight> lights;
+    if (opening) lights.push_back(opening->light);
+    LightingOptions o = sunRoomOptions();
+    o.maxPasses = k.maxPasses;
+    const auto est = estimateLighting(photo, r.camera, r.geometry, lights,
+                                      std::vector<bool>(lights.size(), true), ImageF(), {sw.sun}, o);
+    ASSERT_TRUE(est.ok()) << k.name << ": " << est.error().message();
+    for (const auto& l : est->lights)
+      EXPECT_TRUE(l.radiance.allFinite() && (l.radiance.array() >= 0).all());
+    const Vec3 sun = est->suns[0].irradianceOverPi;
+    EXPECT_TRUE(sun.allFinite() && (sun.array() >= 0).all()) << k.name;
+    for (float v : est->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1) << k.name;
+    for (float v : est->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0) << k.name;
+    EXPECT_GE(est->passes, 3) << k.name;
+    EXPECT_LE(est->passes, k.maxPasses) << k.name;
+    const bool noted = std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
+      return n.find("gathered light still changed") != std::string::npos;
+    });
+    std::printf("%s: %d passes%s, sun %.3g %.3g %.3g, sky %s\n", k.name, est->passes,
+                noted ? " (noted: not settled)" : "", sun.x(), sun.y(), sun.z(),
+                lights.empty() ? "none" : std::to_string(est->lights[0].radiance.y()).c_str());
+    if (noted) {
+      EXPECT_EQ(est->passes, k.maxPasses) << k.name;
+    }
+    if (k.maxPasses == 3) {
+      EXPECT_TRUE(noted) << k.name;  // too few to tell it settled
+    }
+    if (lights.size() == 1 && k.sky.norm() == 0) {
+      EXPECT_LT(est->lights[0].radiance.maxCoeff(), 1.0) << k.name;
     }
   }
 }

@@ -1535,11 +1535,15 @@ void LightingFit::chooseGatherSamples() {
 // The gather-and-fit passes. Pass 1 guesses what the camera does not see from the mean of what
 // it sees; later passes predict it from the fitted albedo and lights. False when cancelled.
 bool LightingFit::gatherAndFit() {
-  // With a sun, pass 2 gathers its clipped patch apart and fits its bounce with its strength; that
-  // scheme is made for two plain passes (mixing pass 1 into it counts the bounce twice, and more
-  // passes drift the sun's strength down: 0.6 of the truth in
-  // AClippedSunPatchsBounceTellsTheSunsStrength), so sun rooms keep them.
-  const int passes = K > 0 ? std::max(1, opt.sunRoomPasses) : std::max(2, opt.maxPasses);
+  // With a sun, pass 2 gathers its clipped patch apart and fits its bounce with its strength:
+  // pass 1 is not mixed into it (that counts the bounce twice). From pass 3 on the passes are
+  // relaxed and stop as the plain ones do (LightingOptions::sunRoomToFixedPoint).
+  const bool sunScheme = K > 0;
+  const bool settle = !sunScheme || opt.sunRoomToFixedPoint;
+  const int passes = !sunScheme ? std::max(2, opt.maxPasses)
+                     : settle   ? std::max(3, opt.maxPasses)
+                                : std::max(1, opt.sunRoomPasses);
+  const int firstRelaxed = sunScheme ? 2 : 1;
   const double relax = std::clamp(opt.passRelaxation, 0.05, 1.0);
   ImageF previousGathered;  // the last pass's Gamma as its fit used it (before the suns' bounce)
   std::array<double, 3> previousGain = {0, 0, 0};  // the clipped pixels' gain in that Gamma
@@ -1550,7 +1554,7 @@ bool LightingFit::gatherAndFit() {
       const StepTimer timer(out.steps, "gather");
       gatherAll();
     }
-    const double r = pass >= 1 && K == 0 ? relax : 1.0;
+    const double r = settle && pass >= firstRelaxed ? relax : 1.0;
     const double change = relaxGathered(out.gathered, previousGathered, r);
     previousGathered = out.gathered;
     // The mixed Gamma holds the clipped pixels' gain mixed alike: the fit's extra gain is on
@@ -1563,7 +1567,7 @@ bool LightingFit::gatherAndFit() {
       if (!fit()) return false;
     }
     out.passes = pass + 1 - first;
-    if (pass >= 2 && change < opt.passTolerance) break;
+    if (settle && pass >= firstRelaxed + 1 && change < opt.passTolerance) break;
     if (pass == passes - 1) {
       if (passes > 2)
         out.notes.push_back("gathered light still changed by " +
@@ -1641,6 +1645,9 @@ void LightingFit::predictUnseenFromFit() {
   model.lights.clear();
   for (const auto& l : out.lights) model.lights.push_back(l.radiance);
   for (const auto& sun : out.suns) model.lights.push_back(sun.irradianceOverPi);
+  // The unseen patches take the sunlit patch's full radiance and the suns' direct light (in
+  // every pass: apart, from the third pass on they lost the sun's bounce through the unseen room).
+  sunApart = false;
   gatherUnseenPatches();
   if (K == 1) gatherUnseenSunPatches();
   // The unseen patches took the sunlit patch's full radiance; the fit's gather takes its sun

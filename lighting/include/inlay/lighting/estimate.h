@@ -77,10 +77,14 @@ struct LightingOptions {
   // light behind the camera makes the plain iteration overshoot and swing (Gamma too low, then
   // far too high), and stopping after the second pass kept the overshoot (albedo too dark, the
   // light too bright). Passes stop when the mean Gamma changes by less than passTolerance
-  // (relative), after at most maxPasses. Rooms with a sun keep two plain passes (estimate.cpp).
+  // (relative), after at most maxPasses. Rooms with a sun: sunRoomToFixedPoint.
   int maxPasses = 5;
-  // Diagnostics: the passes a room with a sun runs (its scheme is made for two; the answer is
-  // not a fixed point of the passes: docs/generalization.md, "t10's object error, taken apart").
+  // A room with a sun: its pass 2 gathers the sunlit patch apart; from pass 3 on the passes are
+  // relaxed and stop as the plain ones do (at most maxPasses, at least 3). False: the scheme
+  // before, sunRoomPasses plain passes (2: not a fixed point of the passes, the sky of a window
+  // out of view in a side wall low; docs/generalization.md, "The sun room's passes to a fixed
+  // point").
+  bool sunRoomToFixedPoint = true;
   int sunRoomPasses = 2;
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
