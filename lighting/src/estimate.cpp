@@ -1485,7 +1485,7 @@ void LightingFit::averageFitPhoto() {
   // Rooms with a sun keep the pixels as they are: the fit ties the sun's strength to its clipped
   // patch's bounce and the window's clipped gain pixel by pixel next to the beam's sharp edge
   // (averaged, AClippedSunPatchsBounceTellsTheSunsStrength and
-  // ClippedSunPatchDoesNotShareTheWindowsGain fail), as they keep two plain passes.
+  // ClippedSunPatchDoesNotShareTheWindowsGain fail).
   if (r == 0 || K > 0) return;
   auto usable = [&](int x, int y, int surface) {
     return ps[size_t(y) * W + x].surface == surface && !isLight(x, y) && !saturated(x, y);
@@ -1585,7 +1585,8 @@ bool LightingFit::gatherAndFit() {
 
 // Adopts the passes of the estimate whose rays this one replays (LightingOptions::warmStart): its
 // room model, Gamma and clipped gain, so that the first pass predicts the unseen room as that
-// estimate's later passes did. Rooms with a sun keep their two plain passes. True when adopted.
+// estimate's later passes did. Rooms with a sun start over (their pass 2 gathers the sunlit
+// patch apart). True when adopted.
 bool LightingFit::startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain) {
   if (!opt.warmStart || K > 0 || !out.raysReused || !rays->passes) return false;
   const PassState& state = *rays->passes;
