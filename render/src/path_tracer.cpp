@@ -129,7 +129,9 @@ struct LightData {
   double area = 0;
   Vec3 radiance;
   Vec3 centre;
-  double power = 0;  // area x mean radiance; 0: never picked
+  double radius = 0;              // the largest distance from the centre to a corner
+  double firstTriangleShare = 0;  // sampleQuadUniform's split of the emitter by area
+  double power = 0;               // area x mean radiance; 0: never picked
 };
 
 // An emissive object (or the emissive part of a multi-material one) as a light: its triangles
@@ -396,6 +398,24 @@ struct PathTracer::Impl {
   // Below this solid angle (sr) a light is sampled by area: the spherical angles lose
   // precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
+  // A light whose corners all lie within 1 / kFarLightRatio of its centre's distance from a
+  // point (a bounding sphere seen under at most asin(1/kFarLightRatio)) is sampled by area
+  // from there: across it 1/d^2 and the cosines vary by a few per cent, so the area pdf is
+  // nearly proportional to the solid-angle one, and a point and its pdf cost a tenth of the
+  // spherical quad's set-up and inversion. NEE and lightPdf() apply the same test.
+  static constexpr double kFarLightRatio = 8.0;
+  static bool sampledByArea(const LightData& l, const Vec3& from) {
+    return (l.centre - from).squaredNorm() > (kFarLightRatio * kFarLightRatio) * (l.radius * l.radius);
+  }
+  // The solid-angle pdf of a point onLight that NEE from `from` drew uniformly by area on light
+  // l, picked with probability selectProb; 0 when `from` lies behind the light.
+  static double areaPdf(const LightData& l, double selectProb, const Vec3& from, const Vec3& onLight) {
+    const Vec3 w = onLight - from;
+    const double d2 = w.squaredNorm();
+    const double cosL = -l.normal.dot(w) / std::sqrt(d2);
+    if (!(cosL > 0)) return 0;
+    return selectProb * d2 / (l.area * cosL);
+  }
 
   // NEE sources: area lights 0 .. lights.size() - 1, then the emissive objects.
   size_t sourceCount() const { return lights.size() + meshLights.size(); }
@@ -549,6 +569,7 @@ struct PathTracer::Impl {
     if (!(l.area > 0)) return 0;
     const double selectProb = selectionProbability(size_t(i), from, fromNormal);
     if (!(selectProb > 0)) return 0;
+    if (sampledByArea(l, from)) return areaPdf(l, selectProb, from, onLight);
     if (l.rectangle) {
       const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
       if (sr.solidAngle > kMinSolidAngle) return selectProb / sr.solidAngle;
@@ -556,11 +577,7 @@ struct PathTracer::Impl {
       const SphericalQuad sq(l.emitter, from);
       if (sq.solidAngle > kMinSolidAngle) return selectProb / sq.solidAngle;
     }
-    Vec3 w = onLight - from;
-    const double d2 = w.squaredNorm();
-    const double cosL = -l.normal.dot(w) / std::sqrt(d2);
-    if (!(cosL > 0)) return 0;
-    return selectProb * d2 / (l.area * cosL);
+    return areaPdf(l, selectProb, from, onLight);
   }
 
   // The material the user gave room surface `id` (Glossy or Mirror), or null: Lambertian.
@@ -1134,7 +1151,8 @@ bool PathTracer::Impl::bounceFrom(PathState& st, const Vertex& v, const Lobe& lo
 }
 
 // A point on NEE source `li` seen from `from`: on an area light uniform in its solid angle
-// (rectangles and quads; by area when that is tiny), on an emissive object uniform by area.
+// (rectangles and quads; by area when the light is far, sampledByArea, or its solid angle tiny),
+// on an emissive object uniform by area.
 PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Vec3& from,
                                                              const std::array<double, 2>& u) const {
   SourcePoint p;
@@ -1146,14 +1164,16 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
     return p;
   }
   const LightData& l = lights[li];
-  if (l.rectangle) {
-    const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
-    if (sr.solidAngle > kMinSolidAngle) p.y = sr.sample(u[0], u[1]), p.solidAngle = sr.solidAngle;
-  } else {
-    const SphericalQuad sq(l.emitter, from);
-    if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
+  if (!sampledByArea(l, from)) {
+    if (l.rectangle) {
+      const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
+      if (sr.solidAngle > kMinSolidAngle) p.y = sr.sample(u[0], u[1]), p.solidAngle = sr.solidAngle;
+    } else {
+      const SphericalQuad sq(l.emitter, from);
+      if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
+    }
   }
-  if (p.solidAngle == 0) p.y = sampleQuadUniform(l.emitter, u[0], u[1]);
+  if (p.solidAngle == 0) p.y = sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
   p.normal = l.normal;
   p.radiance = l.radiance;
   return p;
@@ -1185,7 +1205,7 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
   const double pdfLight =
       p.mesh             ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
       : p.solidAngle > 0 ? selectProb / p.solidAngle
-                         : lightPdf(int(li), v.point, lobe.selectNormal, p.y);
+                         : areaPdf(lights[li], selectProb, v.point, p.y);
   const Vec3 c = pdfLight > 0
                      ? clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
                                           (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
@@ -1697,6 +1717,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     const double power = valid ? l.area * meanComponent(l.radiance) : 0.0;
     l.power = std::isfinite(power) ? power : 0.0;
     l.centre = 0.25 * (l.emitter[0] + l.emitter[1] + l.emitter[2] + l.emitter[3]);
+    for (const Vec3& c : l.emitter) l.radius = std::max(l.radius, (c - l.centre).norm());
+    l.firstTriangleShare = firstTriangleShare(l.emitter);
     d.lights.push_back(l);
     const unsigned geomId = d.surfaceCount + unsigned(i);
     if (valid) {
