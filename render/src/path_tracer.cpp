@@ -610,13 +610,15 @@ struct PathTracer::Impl {
     RayCounters counters;
   };
 
-  // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
-  int64_t rayClockNs() const {
-    if (!options.timeRays) return 0;
+  static int64_t clockNs() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(
                std::chrono::steady_clock::now().time_since_epoch())
         .count();
   }
+  // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
+  int64_t rayClockNs() const { return options.timeRays ? clockNs() : 0; }
+  // The same around next-event estimation: also when only TracerOptions::timeNee asks.
+  int64_t neeClockNs() const { return options.timeRays || options.timeNee ? clockNs() : 0; }
   // Appends a ray to TracerOptions::rayLog (benchmarks only).
   void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear,
               double tFar) const {
@@ -1119,11 +1121,11 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
     *next = castPathRay(mode, ray, rng, out, true);
   }
   if (nee) {
-    const int64_t neeStart = rayClockNs();
+    const int64_t neeStart = neeClockNs();
     addSourceSample(mode, st, v, lobe, rng, out);
     addSunLight(mode, st, v, lobe, out);
     if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
-    out.counters.neeNs += rayClockNs() - neeStart;
+    out.counters.neeNs += neeClockNs() - neeStart;
   }
   if (goesOn) st = after;
   return goesOn;
