@@ -1175,7 +1175,11 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
       if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
     }
   }
-  if (p.solidAngle == 0) p.y = sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
+  // By area: a rectangle through its edges (one smooth map, so stratified u stay stratified over
+  // it), any other quad through its two triangles.
+  if (p.solidAngle == 0)
+    p.y = l.rectangle ? Vec3(l.corner + u[0] * l.edgeX + u[1] * l.edgeY)
+                      : sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
   p.normal = l.normal;
   p.radiance = l.radiance;
   return p;
