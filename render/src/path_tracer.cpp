@@ -770,6 +770,8 @@ struct PathTracer::Impl {
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
                   const SampleRng& rng) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
+  static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
+                                   Vec3* y);
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SampleRng& rng, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
@@ -1166,15 +1168,7 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
     return p;
   }
   const LightData& l = lights[li];
-  if (!sampledByArea(l, from)) {
-    if (l.rectangle) {
-      const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
-      if (sr.solidAngle > kMinSolidAngle) p.y = sr.sample(u[0], u[1]), p.solidAngle = sr.solidAngle;
-    } else {
-      const SphericalQuad sq(l.emitter, from);
-      if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
-    }
-  }
+  if (!sampledByArea(l, from)) p.solidAngle = sampleBySolidAngle(l, from, u, &p.y);
   // By area: a rectangle through its edges (one smooth map, so stratified u stay stratified over
   // it), any other quad through its two triangles.
   if (p.solidAngle == 0)
@@ -1183,6 +1177,22 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
   p.normal = l.normal;
   p.radiance = l.radiance;
   return p;
+}
+
+// A point on area light l uniform in the solid angle it subtends from `from` into *y; returns
+// that solid angle, or 0 (y untouched) when it is below kMinSolidAngle.
+double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from,
+                                            const std::array<double, 2>& u, Vec3* y) {
+  if (l.rectangle) {
+    const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
+    if (!(sr.solidAngle > kMinSolidAngle)) return 0;
+    *y = sr.sample(u[0], u[1]);
+    return sr.solidAngle;
+  }
+  const SphericalQuad sq(l.emitter, from);
+  if (!(sq.solidAngle > kMinSolidAngle)) return 0;
+  *y = sq.sample(u[0], u[1]);
+  return sq.solidAngle;
 }
 
 // Next-event estimation to one source (area light or emissive object) picked by power over
