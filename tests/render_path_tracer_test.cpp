@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <functional>
 
 namespace inlay {
 namespace {
@@ -308,6 +309,38 @@ double polygonFormFactor(const Vec3& p, const Vec3& n, const std::array<Vec3, 4>
   return std::abs(sum) / (2 * kPi);
 }
 
+// Direct light only (maxDepth 1, NEE + MIS) from `light` on the floor of a box room, against
+// albedo x le x Lambert's polygon formula at each pixel's centre from row firstRow down, the
+// pixels split into two groups by region(floor point) (0 or 1); the far floor, where the light
+// is too faint to compare, is left out.
+std::array<test::RelativeError, 2> directLightErrors(const AreaLight& light, int spp, uint32_t seed,
+                                                     int firstRow,
+                                                     const std::function<int(const Vec3&)>& region) {
+  const int w = 48, h = 36;
+  const double albedo = 0.5;
+  RenderScene s = test::roomScene(test::testCamera(w, h, 60, 0.6, -35), RoomBox{}, albedo);
+  s.lights.push_back(light);
+  TracerOptions opt;
+  opt.maxDepth = 1;
+  PathTracer tracer(s, opt);
+  DifferentialBuffers b(w, h);
+  EXPECT_TRUE(tracer.render(b, 0, spp, seed));
+  const ImageF with = b.meanWith();
+  std::array<test::RelativeError, 2> err;
+  for (int y = firstRow; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
+      if (d.y() >= 0) continue;
+      const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
+      if (!(q.x() > -1.9 && q.x() < 1.9 && q.z() > -3.9)) continue;
+      const double expected = albedo * light.radiance.x() *
+                              polygonFormFactor(q, Vec3(0, 1, 0), light.cornersWorld);
+      if (expected < 0.005) continue;
+      err[size_t(region(q) != 0)].add(with.at(x, y, 0), expected);
+    }
+  return err;
+}
+
 // A trapezoid light (not a rectangle: sampled by spherical triangles) over the floor: the
 // RoomTracer and the path tracer (direct light) against Lambert's polygon formula.
 TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
@@ -330,32 +363,38 @@ TEST(DiffusePlane, TrapezoidLightMatchesPolygonFormula) {
                 point.x(), point.y(), point.z(), got, expected);
     EXPECT_NEAR(got / expected, 1.0, point.y() > 1 ? 0.02 : 0.01);  // 1 cm under it: the 1 mm offset
   }
-  const int w = 48, h = 36;
-  const double albedo = 0.5;
-  RenderScene s = test::roomScene(test::testCamera(w, h, 60, 0.6, -35), RoomBox{}, albedo);
-  s.lights.push_back(light);
-  TracerOptions opt;
-  opt.maxDepth = 1;
-  PathTracer tracer(s, opt);
-  DifferentialBuffers b(w, h);
-  ASSERT_TRUE(tracer.render(b, 0, 64, 5));
-  const ImageF with = b.meanWith();
-  test::RelativeError err;
-  for (int y = h / 2; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const Vec3 d = s.camera.directionThroughPixel(Vec2(x + 0.5, y + 0.5));
-      if (d.y() >= 0) continue;
-      const Vec3 q = s.camera.centreWorld() - s.camera.heightM / d.y() * d;
-      if (!(q.x() > -1.9 && q.x() < 1.9 && q.z() > -3.9)) continue;
-      const double expected = albedo * 3.0 * polygonFormFactor(q, Vec3(0, 1, 0), light.cornersWorld);
-      if (expected < 0.005) continue;
-      err.add(with.at(x, y, 0), expected);
-    }
+  const test::RelativeError err =
+      directLightErrors(light, 64, 5, 36 / 2, [](const Vec3&) { return 0; })[0];
   ASSERT_GT(err.n, 200);
   std::printf("[ plane ] trapezoid, path tracer 64 spp: %d px, mean rel err %+.4f, rms %.4f\n", err.n,
               err.mean(), err.rms());
   EXPECT_LT(std::abs(err.mean()), 0.01);
   EXPECT_LT(err.rms(), 0.05);
+}
+
+// NEE samples a light by area from points where its corners lie within an eighth of its
+// centre's distance (PathTracer's kFarLightRatio) and by solid angle nearer: a trapezoid of 0.17 m
+// radius 1.2 m above the floor is near for the floor under it and far beyond about 0.6 m. Both
+// parts of the floor match Lambert's polygon formula (the area pdf with its d^2 / cos, and MIS
+// with the same rule when a BSDF ray finds the light).
+TEST(DiffusePlane, NearAndFarFromALightMatchPolygonFormula) {
+  AreaLight light;
+  light.cornersWorld = {Vec3(-0.14, 1.2, -2.1), Vec3(0.14, 1.2, -2.1), Vec3(0.05, 1.2, -1.9),
+                        Vec3(-0.05, 1.2, -1.9)};
+  light.radiance = Vec3::Constant(3.0);
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& c : light.cornersWorld) centre += 0.25 * c;
+  double radius = 0;
+  for (const Vec3& c : light.cornersWorld) radius = std::max(radius, (c - centre).norm());
+  const auto region = [&](const Vec3& q) { return (q - centre).norm() > 8.0 * radius ? 1 : 0; };
+  const std::array<test::RelativeError, 2> err = directLightErrors(light, 64, 7, 0, region);
+  for (int k = 0; k < 2; ++k) {
+    std::printf("[ plane ] trapezoid near and far, %s: %d px, mean rel err %+.4f, rms %.4f\n",
+                k ? "far (by area)" : "near (by solid angle)", err[k].n, err[k].mean(), err[k].rms());
+    ASSERT_GT(err[k].n, 80);
+    EXPECT_LT(std::abs(err[k].mean()), 0.015);
+    EXPECT_LT(err[k].rms(), 0.06);
+  }
 }
 
 // A scaled diffuse sphere (instance with scale) on the floor under a ceiling light, direct

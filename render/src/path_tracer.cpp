@@ -129,7 +129,9 @@ struct LightData {
   double area = 0;
   Vec3 radiance;
   Vec3 centre;
-  double power = 0;  // area x mean radiance; 0: never picked
+  double radius = 0;              // the largest distance from the centre to a corner
+  double firstTriangleShare = 0;  // sampleQuadUniform's split of the emitter by area
+  double power = 0;               // area x mean radiance; 0: never picked
 };
 
 // An emissive object (or the emissive part of a multi-material one) as a light: its triangles
@@ -396,6 +398,24 @@ struct PathTracer::Impl {
   // Below this solid angle (sr) a light is sampled by area: the spherical angles lose
   // precision, and a far light has no 1/d^2 trouble anyway.
   static constexpr double kMinSolidAngle = 1e-6;
+  // A light whose corners all lie within 1 / kFarLightRatio of its centre's distance from a
+  // point (a bounding sphere seen under at most asin(1/kFarLightRatio)) is sampled by area
+  // from there: across it 1/d^2 and the cosines vary by a few per cent, so the area pdf is
+  // nearly proportional to the solid-angle one, and a point and its pdf cost a tenth of the
+  // spherical quad's set-up and inversion. NEE and lightPdf() apply the same test.
+  static constexpr double kFarLightRatio = 8.0;
+  static bool sampledByArea(const LightData& l, const Vec3& from) {
+    return (l.centre - from).squaredNorm() > (kFarLightRatio * kFarLightRatio) * (l.radius * l.radius);
+  }
+  // The solid-angle pdf of a point onLight that NEE from `from` drew uniformly by area on light
+  // l, picked with probability selectProb; 0 when `from` lies behind the light.
+  static double areaPdf(const LightData& l, double selectProb, const Vec3& from, const Vec3& onLight) {
+    const Vec3 w = onLight - from;
+    const double d2 = w.squaredNorm();
+    const double cosL = -l.normal.dot(w) / std::sqrt(d2);
+    if (!(cosL > 0)) return 0;
+    return selectProb * d2 / (l.area * cosL);
+  }
 
   // NEE sources: area lights 0 .. lights.size() - 1, then the emissive objects.
   size_t sourceCount() const { return lights.size() + meshLights.size(); }
@@ -549,6 +569,7 @@ struct PathTracer::Impl {
     if (!(l.area > 0)) return 0;
     const double selectProb = selectionProbability(size_t(i), from, fromNormal);
     if (!(selectProb > 0)) return 0;
+    if (sampledByArea(l, from)) return areaPdf(l, selectProb, from, onLight);
     if (l.rectangle) {
       const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
       if (sr.solidAngle > kMinSolidAngle) return selectProb / sr.solidAngle;
@@ -556,11 +577,7 @@ struct PathTracer::Impl {
       const SphericalQuad sq(l.emitter, from);
       if (sq.solidAngle > kMinSolidAngle) return selectProb / sq.solidAngle;
     }
-    Vec3 w = onLight - from;
-    const double d2 = w.squaredNorm();
-    const double cosL = -l.normal.dot(w) / std::sqrt(d2);
-    if (!(cosL > 0)) return 0;
-    return selectProb * d2 / (l.area * cosL);
+    return areaPdf(l, selectProb, from, onLight);
   }
 
   // The material the user gave room surface `id` (Glossy or Mirror), or null: Lambertian.
@@ -593,13 +610,15 @@ struct PathTracer::Impl {
     RayCounters counters;
   };
 
-  // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
-  int64_t rayClockNs() const {
-    if (!options.timeRays) return 0;
+  static int64_t clockNs() {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(
                std::chrono::steady_clock::now().time_since_epoch())
         .count();
   }
+  // Nanoseconds on the steady clock when TracerOptions::timeRays, else 0 (no clock read).
+  int64_t rayClockNs() const { return options.timeRays ? clockNs() : 0; }
+  // The same around next-event estimation: also when only TracerOptions::timeNee asks.
+  int64_t neeClockNs() const { return options.timeRays || options.timeNee ? clockNs() : 0; }
   // Appends a ray to TracerOptions::rayLog (benchmarks only).
   void logRay(LoggedRay::Type type, RTCScene s, const Vec3& o, const Vec3& dir, double tNear,
               double tFar) const {
@@ -751,6 +770,8 @@ struct PathTracer::Impl {
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
                   const SampleRng& rng) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
+  static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
+                                   Vec3* y);
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SampleRng& rng, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
@@ -1102,11 +1123,11 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
     *next = castPathRay(mode, ray, rng, out, true);
   }
   if (nee) {
-    const int64_t neeStart = rayClockNs();
+    const int64_t neeStart = neeClockNs();
     addSourceSample(mode, st, v, lobe, rng, out);
     addSunLight(mode, st, v, lobe, out);
     if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
-    out.counters.neeNs += rayClockNs() - neeStart;
+    out.counters.neeNs += neeClockNs() - neeStart;
   }
   if (goesOn) st = after;
   return goesOn;
@@ -1134,7 +1155,8 @@ bool PathTracer::Impl::bounceFrom(PathState& st, const Vertex& v, const Lobe& lo
 }
 
 // A point on NEE source `li` seen from `from`: on an area light uniform in its solid angle
-// (rectangles and quads; by area when that is tiny), on an emissive object uniform by area.
+// (rectangles and quads; by area when the light is far, sampledByArea, or its solid angle tiny),
+// on an emissive object uniform by area.
 PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Vec3& from,
                                                              const std::array<double, 2>& u) const {
   SourcePoint p;
@@ -1146,17 +1168,31 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
     return p;
   }
   const LightData& l = lights[li];
-  if (l.rectangle) {
-    const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
-    if (sr.solidAngle > kMinSolidAngle) p.y = sr.sample(u[0], u[1]), p.solidAngle = sr.solidAngle;
-  } else {
-    const SphericalQuad sq(l.emitter, from);
-    if (sq.solidAngle > kMinSolidAngle) p.y = sq.sample(u[0], u[1]), p.solidAngle = sq.solidAngle;
-  }
-  if (p.solidAngle == 0) p.y = sampleQuadUniform(l.emitter, u[0], u[1]);
+  if (!sampledByArea(l, from)) p.solidAngle = sampleBySolidAngle(l, from, u, &p.y);
+  // By area: a rectangle through its edges (one smooth map, so stratified u stay stratified over
+  // it), any other quad through its two triangles.
+  if (p.solidAngle == 0)
+    p.y = l.rectangle ? Vec3(l.corner + u[0] * l.edgeX + u[1] * l.edgeY)
+                      : sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
   p.normal = l.normal;
   p.radiance = l.radiance;
   return p;
+}
+
+// A point on area light l uniform in the solid angle it subtends from `from` into *y; returns
+// that solid angle, or 0 (y untouched) when it is below kMinSolidAngle.
+double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from,
+                                            const std::array<double, 2>& u, Vec3* y) {
+  if (l.rectangle) {
+    const SphericalRect sr(l.corner, l.edgeX, l.edgeY, from);
+    if (!(sr.solidAngle > kMinSolidAngle)) return 0;
+    *y = sr.sample(u[0], u[1]);
+    return sr.solidAngle;
+  }
+  const SphericalQuad sq(l.emitter, from);
+  if (!(sq.solidAngle > kMinSolidAngle)) return 0;
+  *y = sq.sample(u[0], u[1]);
+  return sq.solidAngle;
 }
 
 // Next-event estimation to one source (area light or emissive object) picked by power over
@@ -1185,7 +1221,7 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
   const double pdfLight =
       p.mesh             ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
       : p.solidAngle > 0 ? selectProb / p.solidAngle
-                         : lightPdf(int(li), v.point, lobe.selectNormal, p.y);
+                         : areaPdf(lights[li], selectProb, v.point, p.y);
   const Vec3 c = pdfLight > 0
                      ? clampIndirect(Vec3(st.throughput.cwiseProduct(fcos).cwiseProduct(p.radiance) *
                                           (powerHeuristic(pdfLight, pdfBsdf) / pdfLight)),
@@ -1697,6 +1733,8 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
     const double power = valid ? l.area * meanComponent(l.radiance) : 0.0;
     l.power = std::isfinite(power) ? power : 0.0;
     l.centre = 0.25 * (l.emitter[0] + l.emitter[1] + l.emitter[2] + l.emitter[3]);
+    for (const Vec3& c : l.emitter) l.radius = std::max(l.radius, (c - l.centre).norm());
+    l.firstTriangleShare = firstTriangleShare(l.emitter);
     d.lights.push_back(l);
     const unsigned geomId = d.surfaceCount + unsigned(i);
     if (valid) {

@@ -155,14 +155,18 @@ inline Vec3 sampleCosineHemisphere(double u1, double u2) {
   return Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u1)));
 }
 
-// A point uniformly distributed over a planar quad given by corners in order (pdf = 1 / area):
-// u picks one of the two triangles (c0 c1 c2), (c0 c2 c3) by area and is reused inside it, so
-// stratified (u, v) stay stratified.
-inline Vec3 sampleQuadUniform(const std::array<Vec3, 4>& c, double u, double v) {
+// The share of a planar quad's area in its first triangle (c0 c1 c2); 0.5 for a quad of no area.
+inline double firstTriangleShare(const std::array<Vec3, 4>& c) {
   const double a1 = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
   const double a2 = 0.5 * (c[2] - c[0]).cross(c[3] - c[0]).norm();
   const double total = a1 + a2;
-  const double p1 = total > 0 ? a1 / total : 0.5;
+  return total > 0 ? a1 / total : 0.5;
+}
+
+// A point uniformly distributed over a planar quad given by corners in order (pdf = 1 / area),
+// p1 = firstTriangleShare(c): u picks one of the two triangles (c0 c1 c2), (c0 c2 c3) by area and
+// is reused inside it, so stratified (u, v) stay stratified.
+inline Vec3 sampleQuadUniform(const std::array<Vec3, 4>& c, double p1, double u, double v) {
   Vec3 b, e1, e2;
   if (u < p1) {
     u = p1 > 0 ? u / p1 : 0.0;
@@ -174,6 +178,9 @@ inline Vec3 sampleQuadUniform(const std::array<Vec3, 4>& c, double u, double v) 
   u = std::clamp(u, 0.0, 1.0);
   const double su = std::sqrt(u);
   return (1.0 - su) * b + su * (1.0 - v) * e1 + su * v * e2;
+}
+inline Vec3 sampleQuadUniform(const std::array<Vec3, 4>& c, double u, double v) {
+  return sampleQuadUniform(c, firstTriangleShare(c), u, v);
 }
 
 // Uniform sampling of the solid angle a rectangle subtends (Urena, Fajardo, King 2013, "An

@@ -6,8 +6,11 @@
 //   thread, thread CPU time, median of REPEATS) to one type:
 //     camera: a frame with maxDepth 0 (camera rays and their first hit only), per camera ray;
 //     shadow: next-event estimation as a whole (light pick, point on the light, BSDF evaluation,
-//             shadow rays; RayCounters::neeNs as a share of the timed frame, applied to the
-//             untimed frame's CPU time);
+//             shadow rays; RayCounters::neeNs as a share of a frame that reads the clock around
+//             NEE only, TracerOptions::timeNee, applied to the untimed frame's CPU time; the
+//             share in a frame that also times every ray, timeRays, as the passes before the
+//             seventh measured it, is printed too: its two clock reads per shadow ray fall
+//             inside NEE and overstate it);
 //     bounce: the rest of the full frame (its camera rays at the camera rate, and NEE, taken off).
 //   The bare loop casts the very rays the frame cast (TracerOptions::rayLog), each type on its
 //   own, as the renderer cast them (rtcIntersect8 for its camera packets, rtcIntersect1 /
@@ -279,13 +282,15 @@ double bareSeconds(const BareScenes& bare, const std::vector<LoggedRay>& rays, L
 void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
   TracerOptions camOnly;
   camOnly.maxDepth = 0;
-  TracerOptions timed;
+  TracerOptions timed, neeTimed;
   timed.timeRays = true;
+  neeTimed.timeNee = true;
   const Frame cam = renderFrames(scene, camOnly, repeats);
   const Frame full = renderFrames(scene, {}, repeats);
   const Frame fullTimed = renderFrames(scene, timed, repeats);
+  const Frame fullNeeTimed = renderFrames(scene, neeTimed, repeats);
   const double perCamera = cam.cpuSeconds / double(std::max<uint64_t>(1, cam.rays.cameraRays));
-  const double neeSeconds = fullTimed.neeShare * full.cpuSeconds;
+  const double neeSeconds = fullNeeTimed.neeShare * full.cpuSeconds;
   const double bounceSeconds = full.cpuSeconds - neeSeconds - perCamera * double(full.rays.cameraRays);
   const BareScenes bare(scene);
   const std::vector<LoggedRay> rays = logRays(scene, {});
@@ -300,6 +305,7 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
   const Row rows[] = {{"camera", LoggedRay::Type::Camera, cam.rays.cameraRays, cam.cpuSeconds, &camRays},
                       {"bounce", LoggedRay::Type::Bounce, full.rays.bounceRays, bounceSeconds, &rays},
                       {"shadow", LoggedRay::Type::Shadow, full.rays.shadowRays, neeSeconds, &rays}};
+  double bareRate[3] = {0, 0, 0};
   for (const Row& r : rows) {
     size_t n = 0;
     const double bareS = bareSeconds(bare, *r.rays, r.type, repeats, &n);
@@ -308,6 +314,7 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
                    static_cast<unsigned long long>(r.count));
     const double single = double(n) / bareSeconds(bare, *r.rays, r.type, repeats, &n, false);
     const double ours = double(r.count) / r.seconds, plain = double(n) / bareS;
+    bareRate[&r - rows] = plain;
     csv << r.name << ',' << r.count << ',' << ours << ',' << plain << ',' << ours / plain << ','
         << single << ',' << ours / single << '\n';
     std::printf(
@@ -318,9 +325,17 @@ void types(const RenderScene& scene, int repeats, std::ofstream& csv) {
   }
   std::printf(
       "frame: %.3f s CPU (maxDepth 0: %.3f s), NEE %.1f %% of it, timing overhead %.1f %%, checksum %016llx\n",
-      full.cpuSeconds, cam.cpuSeconds, 100 * fullTimed.neeShare,
-      100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1),
+      full.cpuSeconds, cam.cpuSeconds, 100 * fullNeeTimed.neeShare,
+      100 * (fullNeeTimed.cpuSeconds / full.cpuSeconds - 1),
       static_cast<unsigned long long>(full.checksum));
+  // The passes before the seventh took NEE's share from the frame that times every ray too.
+  const double perRayNee = fullTimed.neeShare * full.cpuSeconds;
+  const double perRayBounce = full.cpuSeconds - perRayNee - perCamera * double(full.rays.cameraRays);
+  std::printf(
+      "with every ray timed: NEE %.1f %%, timing overhead %.1f %%, ratios bounce %.3f shadow %.3f\n",
+      100 * fullTimed.neeShare, 100 * (fullTimed.cpuSeconds / full.cpuSeconds - 1),
+      double(full.rays.bounceRays) / perRayBounce / bareRate[1],
+      double(full.rays.shadowRays) / perRayNee / bareRate[2]);
   csv.flush();
 }
 

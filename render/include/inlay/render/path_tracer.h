@@ -53,6 +53,8 @@ struct TracerOptions {
   int russianRouletteDepth = 3;  // roulette starts at this depth
   double clampRadiance = 0;      // per-sample clamp of indirect radiance; 0 = off (unbiased)
   bool timeRays = false;         // time every ray by type (benchmarks: two clock reads per ray)
+  bool timeNee = false;          // time next-event estimation alone (RayCounters::neeNs; two clock
+                                 // reads per NEE vertex, none per ray): implied by timeRays
   bool roughGlassNee = true;     // next-event estimation (with MIS) at rough glass; false: found
                                  // by BSDF sampling alone (for comparison; suns then miss it)
   // Next-event estimation (with MIS) toward the sunlit patches the photo shows (the texels of
@@ -101,7 +103,8 @@ struct RayCounters {
   uint64_t shadowRays = 0;  // NEE and sun shadow rays
   int64_t cameraNs = 0, bounceNs = 0, shadowNs = 0;
   // Thread time in next-event estimation as a whole (light pick, point on the light, BSDF
-  // evaluation, shadow rays; suns included), when timeRays: what a shadow ray costs the renderer.
+  // evaluation, shadow rays; suns included), when timeRays or timeNee: what a shadow ray costs
+  // the renderer.
   int64_t neeNs = 0;
   RayCounters& operator+=(const RayCounters& o) {
     cameraRays += o.cameraRays, bounceRays += o.bounceRays, shadowRays += o.shadowRays;
