@@ -806,10 +806,9 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   e.layoutScore = lr.ok ? lr.score01 : 0.0;
   // One sentence about the box at most: what to do in the studio, then why.
   const auto dragAll = [&](const std::string& why) {
-    detail::LayoutResult r;
-    r.cornersPx = e.backWallPx;
-    r.refused = why;
-    return "box layout: " + detail::boxAdvice(r, e.camera.widthPx, e.camera.heightPx);
+    detail::BoxDoubts d;
+    d.refused = why;
+    return "box layout: " + detail::boxAdvice(d, e.backWallPx, e.camera.widthPx, e.camera.heightPx);
   };
   const size_t before = e.warnings.size();
   if (!lr.ok) e.warnings.push_back(dragAll(lr.problem + "; the back wall is a default"));

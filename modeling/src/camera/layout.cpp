@@ -846,7 +846,7 @@ using BestBox = std::pair<LayoutSearch::Score, std::array<double, 4>>;
 
 // The automatic box only: an implausible best box gives way to the best plausible one (the
 // search again, refusing implausible boxes; a ceiling the photo shows stays, the floor crease
-// must come down to a plausible one), else to the ordinary room. out.refused says which.
+// must come down to a plausible one), else to the ordinary room. out.doubts.refused says which.
 // Returns true when `out` is final (the ordinary room).
 bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LineParams& lp, BestBox& best,
                            LayoutResult& out) {
@@ -865,10 +865,10 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, lp.t, lp.isFixed), lp.isFixed);
   std::array<Vec2, 4> c2;
   const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
-  out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
-                "; " +
-                (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
-                       : std::string("an ordinary room is assumed"));
+  out.doubts.refused = "the best-supported box (" + metresText(refused) +
+                       ") is implausible: " + why.why + "; " +
+                       (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                              : std::string("an ordinary room is assumed"));
   if (found) {
     best = {best2, bestT2};
     return false;
@@ -877,7 +877,7 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   if (search.corners(lp.t, c0)) out.cornersPx = c0;
   out.ok = true;
   out.score01 = 0;
-  out.advice = boxAdvice(out, cam.widthPx, cam.heightPx);
+  out.advice = boxAdvice(out.doubts, out.cornersPx, cam.widthPx, cam.heightPx);
   return true;
 }
 
@@ -886,8 +886,10 @@ std::string cornerText(const Vec2& p, double W, double H) {
   if (!p.allFinite()) return "(undefined)";
   char b[96];
   const bool inside = p.x() >= -0.5 && p.y() >= -0.5 && p.x() <= W + 0.5 &&
-                      p.y() <= H + 0.5;  // as printed
-  std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", p.x(), p.y(), inside ? "" : ", outside the photo");
+                      p.y() <= H + 0.5;                                     // as printed
+  const auto whole = [](double v) { return std::abs(v) < 0.5 ? 0.0 : v; };  // no "-0"
+  std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", whole(p.x()), whole(p.y()),
+                inside ? "" : ", outside the photo");
   return b;
 }
 
@@ -993,13 +995,12 @@ std::vector<bool> furnitureTops(const std::vector<LineSegment>& segs, double tol
   return top;
 }
 
-std::string boxAdvice(const LayoutResult& r, double W, double H) {
+std::string boxAdvice(const BoxDoubts& r, const std::array<Vec2, 4>& c, double W, double H) {
   std::string why = r.unseenCrease;
   if (!r.refused.empty()) why += (why.empty() ? "" : "; and ") + r.refused;
   if (why.empty()) return {};
   // A refused box: the photo's best evidence misled once, every edge is in doubt; else only the
   // floor crease is.
-  const std::array<Vec2, 4>& c = r.cornersPx;
   const std::string what =
       !r.refused.empty() || r.unseenCrease.empty()
           ? "drag the back wall's corners, now at " + cornerText(c[0], W, H) + ", " +
@@ -1119,11 +1120,12 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   out.ok = true;
   out.score01 = supportedShare(best.first);
   if (!lp.isFixed[1] && !in.startCornersPx) {
-    out.unseenCrease = unseenCreaseReason(best.first);
-    out.floorOutOfView = out.unseenCrease.empty() && !floorOutOfViewReason(best.first, cam, c).empty();
-    if (out.floorOutOfView) out.unseenCrease = floorOutOfViewReason(best.first, cam, c);
+    BoxDoubts& d = out.doubts;
+    d.unseenCrease = unseenCreaseReason(best.first);
+    if (d.unseenCrease.empty()) d.unseenCrease = floorOutOfViewReason(best.first, cam, c);
+    d.floorOutOfView = !d.unseenCrease.empty() && d.unseenCrease.rfind("the back wall's foot", 0) == 0;
   }
-  out.advice = boxAdvice(out, W, H);
+  out.advice = boxAdvice(out.doubts, out.cornersPx, W, H);
   return out;
 }
 

@@ -50,24 +50,12 @@ struct LayoutResult {
   std::array<Vec2, 4> cornersPx;  // TL, TR, BR, BL, photo pixels
   double score01 = 0;             // share of the box's visible edges and faces the lines support
   std::string problem;            // why not ok
-  // When the best-supported box was refused as implausible: why, and what replaced it (a
-  // sentence for CameraEstimate::warnings); empty otherwise.
-  std::string refused;
-  // When the automatic box's floor crease is in view but nothing in the photo marks it, or lies
-  // below the photo (floorOutOfView: the box shows no floor): why; empty otherwise.
-  std::string unseenCrease;
-  bool floorOutOfView = false;
-  // The one sentence for CameraEstimate::warnings when the box is doubtful (refused, or its floor
-  // crease unseen or out of view): what to do in the studio first, then every reason (boxAdvice);
-  // empty otherwise.
+  BoxDoubts doubts;               // why the automatic box is in doubt (refused, its floor crease unseen)
+  // The one sentence for CameraEstimate::warnings when the box is doubtful (boxAdvice); empty
+  // otherwise.
   std::string advice;
 };
 
 LayoutResult estimateLayout(const LayoutInput& input);
-
-// "check the room box: drag <which corners, now where> onto <which creases>; why: <reasons>"
-// for r's doubts (unseenCrease, refused), the corners to drag those of r.cornersPx in a W x H
-// photo (a corner outside it named so; a non-finite one "(undefined)"); empty without a doubt.
-std::string boxAdvice(const LayoutResult& r, double W, double H);
 
 }  // namespace inlay::detail
