@@ -1122,8 +1122,10 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   if (!lp.isFixed[1] && !in.startCornersPx) {
     BoxDoubts& d = out.doubts;
     d.unseenCrease = unseenCreaseReason(best.first);
-    if (d.unseenCrease.empty()) d.unseenCrease = floorOutOfViewReason(best.first, cam, c);
-    d.floorOutOfView = !d.unseenCrease.empty() && d.unseenCrease.rfind("the back wall's foot", 0) == 0;
+    if (d.unseenCrease.empty()) {
+      d.unseenCrease = floorOutOfViewReason(best.first, cam, c);
+      d.floorOutOfView = !d.unseenCrease.empty();
+    }
   }
   out.advice = boxAdvice(out.doubts, out.cornersPx, W, H);
   return out;
