@@ -8,6 +8,8 @@
 #include "test_support.h"
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <vector>
 
 namespace inlay {
@@ -131,7 +133,9 @@ std::vector<LineSegment> clutteredRoomForTheCamera(const Camera& c) {
 
 bool refusalWarned(const CameraEstimate& e) {
   for (const std::string& w : e.warnings)
-    if (w.rfind("box layout: the best-supported box", 0) == 0) return true;
+    if (w.rfind("box layout: check the room box", 0) == 0 &&
+        w.find("the best-supported box") != std::string::npos)
+      return true;
   return false;
 }
 
@@ -166,7 +170,7 @@ TEST(LayoutRules, ASillThatWouldMakeTheBox17mDeepIsRefused) {
   ASSERT_TRUE(refusalWarned(*ruled));
   std::string warning;
   for (const std::string& w : ruled->warnings)
-    if (w.rfind("box layout: the best-supported box", 0) == 0) warning = w;
+    if (w.rfind("box layout: check the room box", 0) == 0) warning = w;
   EXPECT_NE(warning.find("top of furniture or a sill"), std::string::npos) << warning;
   EXPECT_NE(warning.find("the next-best box is used (5."), std::string::npos) << warning;
   // Placed corners are the user's: never refused, whatever box they make.
@@ -348,8 +352,9 @@ TEST(LayoutRules, NoCreaseFurnitureOnlyAndATinyPhotoGiveAFiniteBoxAndAWarning) {
     const auto e = estimateCameraFromSegments(640, 480, segs);
     ASSERT_TRUE(e.ok()) << e.error().message();
     for (const Vec2& p : e->backWallPx) EXPECT_TRUE(p.allFinite());
-    // No floor crease seen, or none in view: either way the warning says which corners to drag.
-    EXPECT_TRUE(warned(*e, "drag the back wall's bottom corners"))
+    // No floor crease seen, or none in view: either way the warning says which corners to drag
+    // (all four when the box was refused as well).
+    EXPECT_TRUE(warned(*e, "box layout: check the room box: ") && warned(*e, "drag the back wall's"))
         << ::testing::PrintToString(e->warnings);
   }
   // The same room, 32 x 24 pixels (f = 28 px): a box or a clear error.
@@ -410,10 +415,10 @@ TEST(FloorCrease, NoCreaseAtAllIsAWarningNamingTheCorners) {
   const auto e = estimateCameraFromSegments(640, 480, roomWithoutFloorCrease(c));
   ASSERT_TRUE(e.ok()) << e.error().message();
   for (const Vec2& p : e->backWallPx) EXPECT_TRUE(p.allFinite());
-  ASSERT_TRUE(warned(*e, "box layout: no floor crease is seen"))
+  ASSERT_TRUE(warned(*e, "box layout: check the room box: drag the back wall's bottom corners"))
       << ::testing::PrintToString(e->warnings) << " " << boxOf(e).depthM << " "
       << e->backWallPx[2].transpose() << " " << e->backWallPx[3].transpose();
-  EXPECT_TRUE(warned(*e, "drag the back wall's bottom corners"));
+  EXPECT_TRUE(warned(*e, "; why: no floor crease is seen"));
   // A placed crease is the user's: no warning.
   EstimateCorrection placed;
   placed.backWallCornersPx[2] = e->backWallPx[2];
@@ -439,6 +444,104 @@ TEST(FloorCrease, NoLinesOrLinesInOneDirectionGiveAFiniteBoxOrAnError) {
     for (const Vec2& p : e->backWallPx) EXPECT_TRUE(p.allFinite()) << segs.size();
     EXPECT_TRUE(std::isfinite(e->camera.focalPx));
   }
+}
+
+// The warnings about the box ("box layout: ..."): how many, and whether each is advice that
+// starts with what to drag.
+struct BoxWarnings {
+  int count = 0;
+  bool allAdvice = true;
+  std::string text;
+};
+
+BoxWarnings boxWarnings(const CameraEstimate& e) {
+  BoxWarnings b;
+  for (const std::string& w : e.warnings) {
+    if (w.rfind("box layout:", 0) != 0) continue;
+    ++b.count;
+    const size_t drag = w.find("drag the back wall's"), why = w.find("; why: ");
+    b.allAdvice = b.allAdvice && w.rfind("box layout: check the room box: ", 0) == 0 &&
+                  drag != std::string::npos && why != std::string::npos && drag < why &&
+                  w.find("nan") == std::string::npos && w.find("inf") == std::string::npos &&
+                  w.find("(-0,") == std::string::npos && w.find(", -0)") == std::string::npos;
+    b.text += w + "\n";
+  }
+  return b;
+}
+
+// The sill room with no floor crease at all (clutteredRoomForTheCamera without its three
+// pieces): the 17 m box is refused and its replacement has no crease to stand on, two doubts that
+// used to be two warnings, each with its own "what to do" ("check the box"; "drag the bottom
+// corners"). One sentence now, every corner to drag (the refused box's evidence misled once),
+// then both reasons.
+TEST(BoxAdvice, ARefusedBoxWithNoCreaseIsOneWarningThatSaysWhatToDragFirst) {
+  const Camera c = roomCamera();
+  std::vector<LineSegment> segs = clutteredRoomForTheCamera(c);
+  std::erase_if(segs, [&](const LineSegment& s) {
+    const Vec3 d = c.directionThroughPixel(0.5 * (s.aPx + s.bPx));
+    return s.family == 0 && d.y() < 0 && (s.bPx - s.aPx).norm() < 60;  // the crease's pieces
+  });
+  const auto e = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  const BoxWarnings b = boxWarnings(*e);
+  ASSERT_EQ(b.count, 1) << b.text;
+  EXPECT_TRUE(b.allAdvice) << b.text;
+  EXPECT_NE(b.text.find("the best-supported box"), std::string::npos) << b.text;
+  EXPECT_NE(b.text.find("no floor crease is seen"), std::string::npos) << b.text;
+  EXPECT_NE(b.text.find("drag the back wall's corners, now at ("), std::string::npos) << b.text;
+}
+
+// Every synthetic room of this file, and the degenerate line sets: at most one warning about the
+// box, and that one advice naming finite corners.
+TEST(BoxAdvice, EveryRoomAndDegenerateLinesGiveAtMostOneAdvice) {
+  const Camera c = roomCamera();
+  Lines flat{c, {}}, upright{c, {}};
+  for (double y = 0; y <= 2.7; y += 0.3) flat.add({-2.5, y, -5}, {2.5, y, -5}, 0);
+  for (double x = -2.5; x <= 2.5; x += 0.5) upright.add({x, 0, -5}, {x, 2.7, -5}, 1);
+  std::vector<LineSegment> tables = ceilingOnly(c);
+  const std::vector<LineSegment> t = tablesOnly(c);
+  tables.insert(tables.end(), t.begin(), t.end());
+  int advised = 0;
+  for (const auto& segs : {clutteredRoomForTheCamera(c), roomWithoutFloorCrease(c), ceilingOnly(c),
+                           tables, std::vector<LineSegment>{}, flat.segs, upright.segs}) {
+    const auto e = estimateCameraFromSegments(640, 480, segs);
+    if (!e.ok()) continue;
+    const BoxWarnings b = boxWarnings(*e);
+    EXPECT_LE(b.count, 1) << b.text;
+    EXPECT_TRUE(b.allAdvice) << b.text;
+    advised += b.count;
+  }
+  EXPECT_GE(advised, 3);  // the sill refused, no crease, no crease under the faint ceiling
+}
+
+// boxAdvice alone: nothing without a doubt; an unseen crease alone, the bottom corners (one outside
+// the photo named so); non-finite corners never print as numbers.
+TEST(BoxAdvice, WhatToDragFollowsTheDoubtAndCornersPrintSafely) {
+  detail::BoxDoubts r;
+  std::array<Vec2, 4> c = {Vec2(10, 10), Vec2(600, 12), Vec2(610, 500), Vec2(20, 400)};
+  EXPECT_EQ(detail::boxAdvice(r, c, 640, 480), "");
+  r.unseenCrease = "no floor crease is seen";
+  const std::string crease = detail::boxAdvice(r, c, 640, 480);
+  EXPECT_EQ(crease.rfind("check the room box: drag the back wall's bottom corners, now at (20, 400) and "
+                         "(610, 500), outside the photo,",
+                         0),
+            0u)
+      << crease;
+  r.floorOutOfView = true;
+  EXPECT_NE(detail::boxAdvice(r, c, 640, 480).find("if the photo shows the floor, drag"),
+            std::string::npos);
+  r.refused = "the best-supported box is implausible";
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  c[1] = Vec2(nan, 3);
+  c[2] = Vec2(std::numeric_limits<double>::infinity(), 3);
+  const std::string both = detail::boxAdvice(r, c, 640, 480);
+  EXPECT_NE(both.find("drag the back wall's corners, now at (10, 10), (undefined), (undefined) and "
+                      "(20, 400), onto"),
+            std::string::npos)
+      << both;
+  EXPECT_NE(both.find("; why: no floor crease is seen; and the best-supported box"), std::string::npos)
+      << both;
+  EXPECT_EQ(detail::boxAdvice(r, c, 0, 0).find("nan"), std::string::npos);
 }
 
 }  // namespace

@@ -804,9 +804,15 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
   const auto lr = detail::estimateLayout(li);
   e.backWallPx = lr.cornersPx;
   e.layoutScore = lr.ok ? lr.score01 : 0.0;
-  if (!lr.ok) e.warnings.push_back("box layout: " + lr.problem + "; the back wall is a default");
-  if (!lr.refused.empty()) e.warnings.push_back("box layout: " + lr.refused);
-  if (!lr.unseenCrease.empty()) e.warnings.push_back("box layout: " + lr.unseenCrease);
+  // One sentence about the box at most: what to do in the studio, then why.
+  const auto dragAll = [&](const std::string& why) {
+    detail::BoxDoubts d;
+    d.refused = why;
+    return "box layout: " + detail::boxAdvice(d, e.backWallPx, e.camera.widthPx, e.camera.heightPx);
+  };
+  const size_t before = e.warnings.size();
+  if (!lr.ok) e.warnings.push_back(dragAll(lr.problem + "; the back wall is a default"));
+  else if (!lr.advice.empty()) e.warnings.push_back("box layout: " + lr.advice);
   // A box the room builder accepts, or an ordinary room in front of the camera.
   if (!roomFromBackWall(e.camera, e.backWallPx).ok()) {
     bool anyFixed = false;
@@ -819,7 +825,8 @@ void runLayout(CameraEstimate& e, const EstimateOptions& o,
       box.ceilingM = e.camera.heightM + 1.1;
       e.backWallPx = backWallCornersPx(e.camera, box);
       e.layoutScore = 0;
-      e.warnings.push_back("box layout: no valid back wall found; an ordinary 5 m room is assumed");
+      e.warnings.resize(before);  // this replaces what the search said about its box
+      e.warnings.push_back(dragAll("no valid back wall found; an ordinary 5 m room is assumed"));
     }
   }
 }

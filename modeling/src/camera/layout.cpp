@@ -846,7 +846,7 @@ using BestBox = std::pair<LayoutSearch::Score, std::array<double, 4>>;
 
 // The automatic box only: an implausible best box gives way to the best plausible one (the
 // search again, refusing implausible boxes; a ceiling the photo shows stays, the floor crease
-// must come down to a plausible one), else to the ordinary room. out.refused says which.
+// must come down to a plausible one), else to the ordinary room. out.doubts.refused says which.
 // Returns true when `out` is final (the ordinary room).
 bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LineParams& lp, BestBox& best,
                            LayoutResult& out) {
@@ -865,11 +865,10 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, lp.t, lp.isFixed), lp.isFixed);
   std::array<Vec2, 4> c2;
   const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
-  out.refused = "the best-supported box (" + metresText(refused) + ") is implausible: " + why.why +
-                "; " +
-                (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
-                       : std::string("an ordinary room is assumed")) +
-                ": check the box";
+  out.doubts.refused = "the best-supported box (" + metresText(refused) +
+                       ") is implausible: " + why.why + "; " +
+                       (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                              : std::string("an ordinary room is assumed"));
   if (found) {
     best = {best2, bestT2};
     return false;
@@ -878,23 +877,26 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   if (search.corners(lp.t, c0)) out.cornersPx = c0;
   out.ok = true;
   out.score01 = 0;
+  out.advice = boxAdvice(out.doubts, out.cornersPx, cam.widthPx, cam.heightPx);
   return true;
 }
 
 // A corner in a warning: "(x, y)", or "(x, y), outside the photo".
 std::string cornerText(const Vec2& p, double W, double H) {
+  if (!p.allFinite()) return "(undefined)";
   char b[96];
   const bool inside = p.x() >= -0.5 && p.y() >= -0.5 && p.x() <= W + 0.5 &&
-                      p.y() <= H + 0.5;  // as printed
-  std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", p.x(), p.y(), inside ? "" : ", outside the photo");
+                      p.y() <= H + 0.5;                                     // as printed
+  const auto whole = [](double v) { return std::abs(v) < 0.5 ? 0.0 : v; };  // no "-0"
+  std::snprintf(b, sizeof b, "(%.0f, %.0f)%s", whole(p.x()), whole(p.y()),
+                inside ? "" : ", outside the photo");
   return b;
 }
 
 // When the automatic box's floor crease is in view but nothing in the photo marks it (every
-// candidate hidden behind furniture, or no horizontal line below the horizon at all): a
-// sentence for CameraEstimate::warnings naming the corners to drag; empty otherwise.
-std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<Vec2, 4>& c, double W,
-                                double H) {
+// candidate hidden behind furniture, or no horizontal line below the horizon at all): why the
+// depth is a guess (for boxAdvice); empty otherwise.
+std::string unseenCreaseReason(const LayoutSearch::Score& s) {
   // Under 2 % of the edge on a line or a step in brightness. Chosen on York half A: no box a user
   // accepts warns (a facade's faint base along a sidewalk, P1080005, has 3 %).
   constexpr double kSeenShare = 0.02;
@@ -902,30 +904,25 @@ std::string unseenCreaseWarning(const LayoutSearch::Score& s, const std::array<V
   char buf[160];
   std::snprintf(buf, sizeof buf, "%.0f%%", 100 * s.bottomSupported / s.bottomVisible);
   return "no floor crease is seen along the back wall's bottom edge (" + std::string(buf) +
-         " of it on a line or an edge in the photo): the room's depth is a guess; drag the back "
-         "wall's bottom corners, now at " +
-         cornerText(c[3], W, H) + " and " + cornerText(c[2], W, H) +
-         ", onto the crease where the floor meets the far wall";
+         " of it on a line or an edge in the photo): the room's depth is a guess";
 }
 
 // When the automatic box's floor crease lies below the photo (both bottom corners at or below its
 // bottom edge, no part of the crease in view): the box shows no floor, everything in the photo's
 // lower part is back wall. Right for a wall photographed from close by; wrong, and silent until
-// now, when the only lines below the eye are furniture (tops with legs hanging from them: no
-// crease to hold the edge; York P1080025, P1080049, P1040801, all rejected boxes). A sentence
-// for CameraEstimate::warnings; empty otherwise.
-std::string floorOutOfViewWarning(const LayoutSearch::Score& s, const Camera& cam,
-                                  const std::array<Vec2, 4>& c) {
-  const double W = cam.widthPx, H = cam.heightPx;
+// the fourth York round, when the only lines below the eye are furniture (tops with legs hanging
+// from them: no crease to hold the edge; York P1080025, P1080049, P1040801, all rejected boxes).
+// Why (for boxAdvice); empty otherwise.
+std::string floorOutOfViewReason(const LayoutSearch::Score& s, const Camera& cam,
+                                 const std::array<Vec2, 4>& c) {
+  const double H = cam.heightPx;
   if (s.bottomVisible > 0 || !(c[2].y() >= H && c[3].y() >= H)) return {};
   const BoxSize b = boxSizeOf(cam, c);
   char buf[96];
   std::snprintf(buf, sizeof buf, "%.1f m", b.depthM);
   return "the back wall's foot lies below the photo (the wall " + std::string(b.ok ? buf : "?") +
          " away): the box shows no floor, and everything in the photo's lower part is taken for "
-         "the back wall; if the photo shows the floor, drag the back wall's bottom corners, now at " +
-         cornerText(c[3], W, H) + " and " + cornerText(c[2], W, H) +
-         ", onto the crease where the floor meets the far wall";
+         "the back wall";
 }
 
 // The share of the box the photo supports: its visible edges' support and its faces' agreement
@@ -996,6 +993,25 @@ std::vector<bool> furnitureTops(const std::vector<LineSegment>& segs, double tol
     top[i] = hangs > stands;
   }
   return top;
+}
+
+std::string boxAdvice(const BoxDoubts& r, const std::array<Vec2, 4>& c, double W, double H) {
+  std::string why = r.unseenCrease;
+  if (!r.refused.empty()) why += (why.empty() ? "" : "; and ") + r.refused;
+  if (why.empty()) return {};
+  // A refused box: the photo's best evidence misled once, every edge is in doubt; else only the
+  // floor crease is.
+  const std::string what =
+      !r.refused.empty() || r.unseenCrease.empty()
+          ? "drag the back wall's corners, now at " + cornerText(c[0], W, H) + ", " +
+                cornerText(c[1], W, H) + ", " + cornerText(c[2], W, H) + " and " +
+                cornerText(c[3], W, H) +
+                ", onto the far wall's corners in the photo (where it meets the floor, the "
+                "ceiling and the side walls)"
+          : std::string(r.floorOutOfView ? "if the photo shows the floor, " : "") +
+                "drag the back wall's bottom corners, now at " + cornerText(c[3], W, H) + " and " +
+                cornerText(c[2], W, H) + ", onto the crease where the floor meets the far wall";
+  return "check the room box: " + what + "; why: " + why;
 }
 
 BoxSize boxSizeOf(const Camera& cam, const std::array<Vec2, 4>& c) {
@@ -1104,9 +1120,14 @@ LayoutResult estimateLayout(const LayoutInput& in) {
   out.ok = true;
   out.score01 = supportedShare(best.first);
   if (!lp.isFixed[1] && !in.startCornersPx) {
-    out.unseenCrease = unseenCreaseWarning(best.first, c, W, H);
-    if (out.unseenCrease.empty()) out.unseenCrease = floorOutOfViewWarning(best.first, cam, c);
+    BoxDoubts& d = out.doubts;
+    d.unseenCrease = unseenCreaseReason(best.first);
+    if (d.unseenCrease.empty()) {
+      d.unseenCrease = floorOutOfViewReason(best.first, cam, c);
+      d.floorOutOfView = !d.unseenCrease.empty();
+    }
   }
+  out.advice = boxAdvice(out.doubts, out.cornersPx, W, H);
   return out;
 }
 

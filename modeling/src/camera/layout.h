@@ -50,13 +50,10 @@ struct LayoutResult {
   std::array<Vec2, 4> cornersPx;  // TL, TR, BR, BL, photo pixels
   double score01 = 0;             // share of the box's visible edges and faces the lines support
   std::string problem;            // why not ok
-  // When the best-supported box was refused as implausible: why, and what replaced it (a
-  // sentence for CameraEstimate::warnings); empty otherwise.
-  std::string refused;
-  // When the automatic box's floor crease is in view but nothing in the photo marks it, or lies
-  // below the photo (the box shows no floor): what to do (a sentence for
-  // CameraEstimate::warnings); empty otherwise.
-  std::string unseenCrease;
+  BoxDoubts doubts;               // why the automatic box is in doubt (refused, its floor crease unseen)
+  // The one sentence for CameraEstimate::warnings when the box is doubtful (boxAdvice); empty
+  // otherwise.
+  std::string advice;
 };
 
 LayoutResult estimateLayout(const LayoutInput& input);

@@ -82,4 +82,21 @@ std::vector<bool> furnitureTops(const std::vector<LineSegment>& segments, double
                                 const std::optional<Vec2>& forwardPx = std::nullopt,
                                 double ambiguousPx = 0);
 
+// What makes an automatic box doubtful, each a reason (empty: no doubt).
+struct BoxDoubts {
+  // The floor crease is in view but nothing in the photo marks it, or (floorOutOfView) lies below
+  // the photo: the box shows no floor.
+  std::string unseenCrease;
+  bool floorOutOfView = false;
+  // The best-supported box was refused as implausible: why, and what replaced it.
+  std::string refused;
+};
+// One sentence for CameraEstimate::warnings (issue #16, fifth York round): what to do in the
+// studio first, then every reason: "check the room box: drag the back wall's <corners>, now at
+// <where>, onto <which creases>; why: <reasons>". A refused box: all four corners (the photo's
+// best evidence misled once); an unseen crease alone: the bottom two. cornersPx (TL, TR, BR, BL)
+// in a W x H photo; a corner outside it is named so, a non-finite one "(undefined)". Empty
+// without a doubt.
+std::string boxAdvice(const BoxDoubts& doubts, const std::array<Vec2, 4>& cornersPx, double W, double H);
+
 }  // namespace inlay::detail
