@@ -586,9 +586,9 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
     }
   }
   const std::vector<std::string> expected = {
-      "photo",    "response",       "working copy", "camera",       "layout",   "occluders",
-      "surfaces", "room",           "lights",       "shafts",       "lighting", "sun ratio",
-      "refine",   "lighting refit", "photo size",   "render scene", "objects",  "grain"};
+      "photo",          "response",   "working copy", "camera",   "layout",     "occluders", "surfaces",
+      "room",           "lights",     "shafts",       "lighting", "vignetting", "sun ratio", "refine",
+      "lighting refit", "photo size", "render scene", "objects",  "grain"};
   EXPECT_EQ(names, expected);
   for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio", "photo size"})
     EXPECT_FALSE(stageNamed(*ps, skipped)->ran) << skipped;
