@@ -186,9 +186,9 @@ struct LightingEstimate {
   // photo's size, `gathered` only with a sun, `direct` never (the composite does not read it).
   ImageF gathered;
   ImageF direct;
-  std::vector<AreaLight> lights;          // with fitted radiance
-  std::vector<SunLight> suns;             // with fitted strength
-  std::vector<Vec3> surfaceMeanAlbedo;    // per surface id of the geometry
+  std::vector<AreaLight> lights;        // with fitted radiance
+  std::vector<SunLight> suns;           // with fitted strength
+  std::vector<Vec3> surfaceMeanAlbedo;  // per surface id of the geometry
   // The light fit's estimate of the albedo of a ceiling the camera does not see
   // (LightingOptions::fitUnseenCeiling), in the fit's albedo scale; NaN when it made none (the
   // photo shows the ceiling, no light's bounce is apart, or the option is off). Per channel:
