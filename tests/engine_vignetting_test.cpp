@@ -1,14 +1,11 @@
 // camera.vignetting (engine/pipeline.h): the fall-off V = 1 - v r^2, devignetting a photo and
-// putting V back, the rule "auto" applies to the light fit's estimate, and the pipeline on the
-// bundled example: the physics in devignetted radiance, the photo's codes kept where no object
-// changes them, a vignetted photo's light fitted as the unvignetted photo's.
+// putting V back, and the rule "auto" applies to the light fit's estimate (the pipeline on the
+// bundled example: engine_pipeline_test.cpp, Engine.AVignettedPhotosLightIsFittedInDevignettedRadiance).
 #include "inlay/engine/pipeline.h"
-#include "inlay/modeling/image_io.h"
-#include "inlay/render/path_tracer.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 
 namespace inlay {
@@ -94,87 +91,6 @@ TEST(Vignetting, AutoAppliesOnlyAConfidentEstimate) {
   EXPECT_EQ(vignettingToApply(given, 0.0), 0.25);  // the scene file's strength, estimate or not
   EXPECT_EQ(vignettingToApply(given, kNaN), 0.25);
   EXPECT_EQ(vignettingToApply({VignettingKeys::Mode::Given, 0.0}, 0.4), 0.0);
-}
-
-SceneDoc exampleDoc() {
-  auto loaded = loadSceneFile(std::string(INLAY_SOURCE_DIR) + "/resources/example/scene.json");
-  EXPECT_TRUE(loaded.ok()) << (loaded.ok() ? "" : loaded.error().message());
-  return loaded->doc;
-}
-
-RenderFrame renderFrame(const PreparedScene& ps, int spp) {
-  PathTracer tracer(ps.renderScene);
-  DifferentialBuffers buf(ps.photo.linearRgb.width, ps.photo.linearRgb.height);
-  EXPECT_TRUE(tracer.render(buf, 0, spp, 1));
-  RenderFrame f;
-  f.width = buf.width, f.height = buf.height, f.spp = spp;
-  f.withObjects = buf.meanWith();
-  f.withoutObjects = buf.meanWithout();
-  f.mask = buf.meanMask();
-  return f;
-}
-
-const StageRecord* stageNamed(const PreparedScene& ps, const std::string& name) {
-  for (const StageRecord& s : ps.stages)
-    if (s.name == name) return &s;
-  return nullptr;
-}
-
-double lightLuminance(const PreparedScene& ps) {
-  double sum = 0;
-  for (const AreaLight& l : ps.lighting.lights) sum += l.radiance.mean() * l.area();
-  return sum;
-}
-
-// The example (a plain render, no vignetting) through a camera with v = 0.3, prepared with
-// "auto": the estimate is applied, the light fit in the devignetted radiance finds the plain
-// photo's lights within half of "none"'s error on the vignetted photo, and with no object
-// the PNG keeps the vignetted photo's codes bit for bit. The plain example keeps "auto" at 0.
-TEST(Vignetting, AVignettedPhotosLightIsFittedInDevignettedRadiance) {
-  SceneDoc plainDoc = exampleDoc();
-  auto plain = prepareScene(plainDoc);
-  ASSERT_TRUE(plain.ok()) << plain.error().message();
-  EXPECT_EQ(plain->vignetting, 0.0);  // a plain photo: nothing applied
-  EXPECT_LT(plain->vignettingEstimated, kMinAutoVignetting);
-  ASSERT_NE(stageNamed(*plain, "vignetting"), nullptr);
-  EXPECT_TRUE(stageNamed(*plain, "vignetting")->ran);
-
-  ImageF vignetted = plain->photo.linearRgb;
-  divideByVignetting(vignetted, 0.3, /*undo=*/true);
-  const auto dir = test::tempDir("engine_vignetting");
-  const std::string photoPath = (dir / "vignetted.png").string();
-  ASSERT_TRUE(saveImage(photoPath, vignetted).ok());
-  SceneDoc doc = plainDoc;
-  doc.photo = doc.photoResolved = photoPath;
-  doc.objects.clear();
-  doc.camera.vignetting.mode = VignettingKeys::Mode::None;
-  auto none = prepareScene(doc);
-  ASSERT_TRUE(none.ok()) << none.error().message();
-  EXPECT_EQ(none->vignetting, 0.0);
-  EXPECT_FALSE(stageNamed(*none, "vignetting")->ran);
-  doc.camera.vignetting.mode = VignettingKeys::Mode::Auto;
-  auto fixed = prepareScene(doc);
-  ASSERT_TRUE(fixed.ok()) << fixed.error().message();
-  EXPECT_GT(fixed->vignetting, 0.15);
-  EXPECT_LT(fixed->vignetting, 0.45);
-  const double truth = lightLuminance(*plain);
-  const double errNone = std::abs(std::log(lightLuminance(*none) / truth));
-  const double errFixed = std::abs(std::log(lightLuminance(*fixed) / truth));
-  std::printf("lights over the plain photo's: none %.3f, auto (v %.2f) %.3f\n",
-              lightLuminance(*none) / truth, fixed->vignetting, lightLuminance(*fixed) / truth);
-  EXPECT_LT(errFixed, 0.5 * errNone);
-
-  // No object: V (f^-1(photo) / V) encodes back to the vignetted photo's own codes.
-  const ImageF composite = compositeOf(*fixed, renderFrame(*fixed, 1));
-  for (float f : composite.data) ASSERT_TRUE(std::isfinite(f));
-  SaveOptions so;
-  so.response = &fixed->response;
-  ASSERT_TRUE(saveImage((dir / "composite.png").string(), composite, so).ok());
-  auto written = loadImage((dir / "composite.png").string());
-  auto photo = loadImage(photoPath);
-  ASSERT_TRUE(written.ok() && photo.ok());
-  EXPECT_EQ(srgbCodesOf(written->linearRgb), srgbCodesOf(photo->linearRgb));
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -366,14 +366,17 @@ TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
   EXPECT_EQ(again->doc.camera.vanishingLinesPx, l);
 }
 
+// A scene whose camera has `key` set to the JSON `value`.
+Expected<SceneLoadResult> parseCameraKey(const fs::path& dir, const std::string& key,
+                                         const std::string& value) {
+  return parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {")" +
+                            key + "\": " + value + "}}",
+                        dir.string(), "scene.json");
+}
+
 TEST(SceneFile, CameraResponseParsesAndRoundTrips) {
   const fs::path dir = sceneDir("response");
-  auto parse = [&](const std::string& response) {
-    return parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-            response + "}}",
-        dir.string(), "scene.json");
-  };
+  auto parse = [&](const std::string& response) { return parseCameraKey(dir, "response", response); };
   auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
                                 dir.string(), "scene.json");
   ASSERT_TRUE(missing.ok());
@@ -421,10 +424,7 @@ TEST(SceneFile, BadCameraResponseNamesItsKey) {
       {R"({"family": "toe_shoulder", "shoulder": 1e9})", "camera.response.shoulder"},
       {R"({"family": "srgb", "power": 1})", "camera.response.power"}};
   for (const auto& [text, key] : cases) {
-    auto r = parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-            std::string(text) + "}}",
-        dir.string(), "scene.json");
+    auto r = parseCameraKey(dir, "response", text);
     ASSERT_FALSE(r.ok()) << text;
     EXPECT_EQ(r.error().key, key) << text << ": " << r.error().message();
   }
@@ -433,12 +433,7 @@ TEST(SceneFile, BadCameraResponseNamesItsKey) {
 // camera.vignetting: "auto" (the default, not written back), "none" or a strength in [0, 0.9].
 TEST(SceneFile, CameraVignettingParsesAndRoundTrips) {
   const fs::path dir = sceneDir("vignetting");
-  auto parse = [&](const std::string& v) {
-    return parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"vignetting": )" + v +
-            "}}",
-        dir.string(), "scene.json");
-  };
+  auto parse = [&](const std::string& v) { return parseCameraKey(dir, "vignetting", v); };
   auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
                                 dir.string(), "scene.json");
   ASSERT_TRUE(missing.ok());
@@ -472,10 +467,7 @@ TEST(SceneFile, BadCameraVignettingNamesItsKeyAndRange) {
                                                        {"true", "got a boolean"},
                                                        {R"({"v": 0.2})", "got an object"}};
   for (const auto& [text, reason] : cases) {
-    auto r = parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"vignetting": )" +
-            std::string(text) + "}}",
-        dir.string(), "scene.json");
+    auto r = parseCameraKey(dir, "vignetting", text);
     ASSERT_FALSE(r.ok()) << text;
     EXPECT_EQ(r.error().key, "camera.vignetting") << text;
     EXPECT_NE(r.error().message().find(reason), std::string::npos)
