@@ -738,15 +738,24 @@ double lightLuminance(const PreparedScene& ps) {
 // The example (a plain render, no vignetting) through a camera with v = 0.3, prepared with
 // "auto": the estimate is applied, the light fit in the devignetted radiance finds the plain
 // photo's lights within half of "none"'s error on the vignetted photo, and with no object
-// the PNG keeps the vignetted photo's codes bit for bit. The plain example keeps "auto" at 0.
+// the PNG keeps the vignetted photo's codes bit for bit. "auto" leaves the plain example alone,
+// and "none" (the default) skips the stage.
 TEST(Engine, AVignettedPhotosLightIsFittedInDevignettedRadiance) {
   const SceneDoc plainDoc = exampleDoc();
   auto plain = preparedExample();
   ASSERT_TRUE(plain.ok()) << plain.error().message();
-  EXPECT_EQ(plain->vignetting, 0.0);  // a plain photo: nothing applied
-  EXPECT_LT(plain->vignettingEstimated, kMinAutoVignetting);
-  ASSERT_NE(stageNamed(*plain, "vignetting"), nullptr);
-  EXPECT_TRUE(stageNamed(*plain, "vignetting")->ran);
+  EXPECT_EQ(plain->vignetting, 0.0);
+  EXPECT_FALSE(stageNamed(*plain, "vignetting")->ran);
+  EXPECT_EQ(describeStage(*stageNamed(*plain, "vignetting")),
+            "vignetting: skipped, camera.vignetting is \"none\" (the default)");
+  SceneDoc plainAuto = plainDoc;
+  plainAuto.objects.clear();
+  plainAuto.camera.vignetting.mode = VignettingKeys::Mode::Auto;
+  auto untouched = prepareScene(plainAuto);
+  ASSERT_TRUE(untouched.ok()) << untouched.error().message();
+  EXPECT_TRUE(stageNamed(*untouched, "vignetting")->ran);
+  EXPECT_EQ(untouched->vignetting, 0.0);  // a plain photo: nothing applied
+  EXPECT_LT(untouched->vignettingEstimated, kMinAutoVignetting);
 
   ImageF vignetted = plain->photo.linearRgb;
   divideByVignetting(vignetted, 0.3, /*undo=*/true);

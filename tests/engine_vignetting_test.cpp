@@ -78,7 +78,7 @@ TEST(Vignetting, DevignettingAndPuttingItBackKeepsThePhotoAndItsNonFiniteValues)
 }
 
 TEST(Vignetting, AutoAppliesOnlyAConfidentEstimate) {
-  const VignettingKeys automatic, none{VignettingKeys::Mode::None, 0.0};
+  const VignettingKeys none, automatic{VignettingKeys::Mode::Auto, 0.0};  // "none" is the default
   const VignettingKeys given{VignettingKeys::Mode::Given, 0.25};
   EXPECT_EQ(vignettingToApply(automatic, 0.2), 0.2);
   EXPECT_EQ(vignettingToApply(automatic, kMinAutoVignetting), kMinAutoVignetting);
@@ -88,6 +88,7 @@ TEST(Vignetting, AutoAppliesOnlyAConfidentEstimate) {
   EXPECT_EQ(vignettingToApply(automatic, kNaN), 0.0);
   EXPECT_EQ(vignettingToApply(automatic, kInf), 0.0);
   EXPECT_EQ(vignettingToApply(none, 0.3), 0.0);
+  EXPECT_EQ(none.mode, VignettingKeys::Mode::None);
   EXPECT_EQ(vignettingToApply(given, 0.0), 0.25);  // the scene file's strength, estimate or not
   EXPECT_EQ(vignettingToApply(given, kNaN), 0.25);
   EXPECT_EQ(vignettingToApply({VignettingKeys::Mode::Given, 0.0}, 0.4), 0.0);

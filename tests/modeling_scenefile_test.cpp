@@ -430,15 +430,15 @@ TEST(SceneFile, BadCameraResponseNamesItsKey) {
   }
 }
 
-// camera.vignetting: "auto" (the default, not written back), "none" or a strength in [0, 0.9].
+// camera.vignetting: "none" (the default, not written back), "auto" or a strength in [0, 0.9].
 TEST(SceneFile, CameraVignettingParsesAndRoundTrips) {
   const fs::path dir = sceneDir("vignetting");
   auto parse = [&](const std::string& v) { return parseCameraKey(dir, "vignetting", v); };
   auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
                                 dir.string(), "scene.json");
   ASSERT_TRUE(missing.ok());
-  EXPECT_EQ(missing->doc.camera.vignetting.mode, VignettingKeys::Mode::Auto);
-  EXPECT_EQ(sceneToJson(missing->doc).find("vignetting"), std::string::npos);  // auto is not written
+  EXPECT_EQ(missing->doc.camera.vignetting.mode, VignettingKeys::Mode::None);
+  EXPECT_EQ(sceneToJson(missing->doc).find("vignetting"), std::string::npos);  // none is not written
   const std::tuple<const char*, VignettingKeys::Mode, double> cases[] = {
       {R"("auto")", VignettingKeys::Mode::Auto, 0.0},
       {R"("none")", VignettingKeys::Mode::None, 0.0},

@@ -55,9 +55,9 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 member nearest the variant's true curve (bench_response.true_family_params, from
                 camera_variant.json), "srgb" for the plain photos: the pipeline as if the curve
                 estimate were perfect
-  --vignetting V  set every scene's camera.vignetting: "auto" (the product's default), "none" (the
-                pipeline before issue #16's vignetting round), a number, or "true": the oracle, the
-                variant's true strength from camera_variant.json (0 for the plain photos)
+  --vignetting V  set every scene's camera.vignetting: "none" (the product's default), "auto" (the
+                light fit's residual estimate), a number, or "true": the oracle, the variant's
+                true strength from camera_variant.json (0 for the plain photos)
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and

@@ -992,8 +992,9 @@ Status devignetteThePhoto(Preparation& p, std::string& detail) {
 }
 
 std::string vignettingNotNeeded(const Preparation& p) {
-  return p.doc.camera.vignetting.mode == VignettingKeys::Mode::None ? "camera.vignetting is \"none\""
-                                                                    : "";
+  return p.doc.camera.vignetting.mode == VignettingKeys::Mode::None
+             ? "camera.vignetting is \"none\" (the default)"
+             : "";
 }
 
 Status sunsFromRatio(Preparation& p, std::string& detail) {

@@ -438,7 +438,7 @@ class Reader {
     if (j.contains("vignetting")) c.vignetting = readVignetting(j["vignetting"]);
   }
 
-  // camera.vignetting: "auto", "none" or a strength v in [0, VignettingKeys::kMax].
+  // camera.vignetting: "none", "auto" or a strength v in [0, VignettingKeys::kMax].
   VignettingKeys readVignetting(const json& j) {
     const std::string p = "camera.vignetting";
     VignettingKeys k;
@@ -927,7 +927,7 @@ ojson cameraJson(const CameraKeys& c, bool anyLines) {
                        {"power", c.response.power},
                        {"toe", c.response.toe},
                        {"shoulder", c.response.shoulder}};
-  if (c.vignetting.mode == VignettingKeys::Mode::None) cam["vignetting"] = "none";
+  if (c.vignetting.mode == VignettingKeys::Mode::Auto) cam["vignetting"] = "auto";
   if (c.vignetting.mode == VignettingKeys::Mode::Given) cam["vignetting"] = c.vignetting.v;
   return cam;
 }
@@ -1039,7 +1039,7 @@ ojson buildJson(const SceneDoc& doc) {
   const bool anyLines = std::any_of(c.vanishingLinesPx.begin(), c.vanishingLinesPx.end(),
                                     [](const auto& l) { return l.has_value(); });
   const bool anyResponse = c.response.mode != ResponseKeys::Mode::Auto;
-  const bool anyVignetting = c.vignetting.mode != VignettingKeys::Mode::Auto;
+  const bool anyVignetting = c.vignetting.mode != VignettingKeys::Mode::None;
   if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse ||
       anyVignetting)
     j["camera"] = cameraJson(c, anyLines);

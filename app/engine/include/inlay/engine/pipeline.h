@@ -285,7 +285,8 @@ double vignettingFalloff(double v, int x, int y, int w, int h);
 // Divides every pixel of `image` by V (devignetting) or multiplies it (`undo`); v = 0: unchanged.
 // Non-finite values stay as they were.
 void divideByVignetting(ImageF& image, double v, bool undo = false);
-// The strength "auto" applies for the light fit's residual estimate `estimatedV`: the estimate
+// The strength camera.vignetting asks for ("none", the default: 0; a number: it); for "auto" the
+// light fit's residual estimate `estimatedV`: the estimate
 // when it is at least kMinAutoVignetting (below it: a plain photo's noise, 0 to 0.03 on the
 // training rooms) and inside its search's range (LightingEstimate::vignetting stops at
 // kMaxAutoVignetting: an estimate at that bound found no minimum), else 0.
