@@ -108,6 +108,11 @@ def main():
         check("bad camera.response " + json.dumps(bad), r.returncode == 2 and key in r.stderr, r.stderr)
         r = run(cli, "render", p, "-o", os.path.join(tmp, "never.png"))
         check("render refuses bad camera.response", r.returncode == 2 and key in r.stderr, r.stderr)
+    for bad in ("strong", 1.5, -0.1, [0.2]):  # camera.vignetting: "auto", "none" or v in [0, 0.9]
+        p = scene(lambda s: s.setdefault("camera", {}).update(vignetting=bad), "vignetting_bad")
+        r = run(cli, "render", p, "-o", os.path.join(tmp, "never.png"))
+        check("render refuses camera.vignetting " + json.dumps(bad),
+              r.returncode == 2 and "camera.vignetting" in r.stderr and "vignetting_bad.json" in r.stderr, r.stderr)
     r = run(cli, "response", photo)
     check("response needs -o", r.returncode == 2 and "-o" in r.stderr, r.stderr)
     r = run(cli, "response", photo, "-o", out, "--cue", "wavelet")

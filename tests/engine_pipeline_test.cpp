@@ -586,9 +586,9 @@ TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {
     }
   }
   const std::vector<std::string> expected = {
-      "photo",    "response",       "working copy", "camera",       "layout",   "occluders",
-      "surfaces", "room",           "lights",       "shafts",       "lighting", "sun ratio",
-      "refine",   "lighting refit", "photo size",   "render scene", "objects",  "grain"};
+      "photo",          "response",   "working copy", "camera",   "layout",     "occluders", "surfaces",
+      "room",           "lights",     "shafts",       "lighting", "vignetting", "sun ratio", "refine",
+      "lighting refit", "photo size", "render scene", "objects",  "grain"};
   EXPECT_EQ(names, expected);
   for (const char* skipped : {"occluders", "surfaces", "shafts", "sun ratio", "photo size"})
     EXPECT_FALSE(stageNamed(*ps, skipped)->ran) << skipped;
@@ -727,6 +727,72 @@ TEST(Engine, TheRefitIsSkippedWhenTheLightsHardlyMoved) {
   // The refit goes on from the first estimate's passes (LightingOptions::warmStart).
   EXPECT_NE(describeStage(*stageNamed(*ran, "lighting refit")).find("going on from its passes"),
             std::string::npos);
+}
+
+double lightLuminance(const PreparedScene& ps) {
+  double sum = 0;
+  for (const AreaLight& l : ps.lighting.lights) sum += l.radiance.mean() * l.area();
+  return sum;
+}
+
+// The example (a plain render, no vignetting) through a camera with v = 0.3, prepared with
+// "auto": the estimate is applied, the light fit in the devignetted radiance finds the plain
+// photo's lights within half of "none"'s error on the vignetted photo, and with no object
+// the PNG keeps the vignetted photo's codes bit for bit. "auto" leaves the plain example alone,
+// and "none" (the default) skips the stage.
+TEST(Engine, AVignettedPhotosLightIsFittedInDevignettedRadiance) {
+  const SceneDoc plainDoc = exampleDoc();
+  auto plain = preparedExample();
+  ASSERT_TRUE(plain.ok()) << plain.error().message();
+  EXPECT_EQ(plain->vignetting, 0.0);
+  EXPECT_FALSE(stageNamed(*plain, "vignetting")->ran);
+  EXPECT_EQ(describeStage(*stageNamed(*plain, "vignetting")),
+            "vignetting: skipped, camera.vignetting is \"none\" (the default)");
+  SceneDoc plainAuto = plainDoc;
+  plainAuto.objects.clear();
+  plainAuto.camera.vignetting.mode = VignettingKeys::Mode::Auto;
+  auto untouched = prepareScene(plainAuto);
+  ASSERT_TRUE(untouched.ok()) << untouched.error().message();
+  EXPECT_TRUE(stageNamed(*untouched, "vignetting")->ran);
+  EXPECT_EQ(untouched->vignetting, 0.0);  // a plain photo: nothing applied
+  EXPECT_LT(untouched->vignettingEstimated, kMinAutoVignetting);
+
+  ImageF vignetted = plain->photo.linearRgb;
+  divideByVignetting(vignetted, 0.3, /*undo=*/true);
+  const auto dir = test::tempDir("engine_vignetting");
+  const std::string photoPath = (dir / "vignetted.png").string();
+  ASSERT_TRUE(saveImage(photoPath, vignetted).ok());
+  SceneDoc doc = plainDoc;
+  doc.photo = doc.photoResolved = photoPath;
+  doc.objects.clear();
+  doc.camera.vignetting.mode = VignettingKeys::Mode::None;
+  auto none = prepareScene(doc);
+  ASSERT_TRUE(none.ok()) << none.error().message();
+  EXPECT_EQ(none->vignetting, 0.0);
+  EXPECT_FALSE(stageNamed(*none, "vignetting")->ran);
+  doc.camera.vignetting.mode = VignettingKeys::Mode::Auto;
+  auto fixed = prepareScene(doc);
+  ASSERT_TRUE(fixed.ok()) << fixed.error().message();
+  EXPECT_GT(fixed->vignetting, 0.15);
+  EXPECT_LT(fixed->vignetting, 0.45);
+  const double truth = lightLuminance(*plain);
+  const double errNone = std::abs(std::log(lightLuminance(*none) / truth));
+  const double errFixed = std::abs(std::log(lightLuminance(*fixed) / truth));
+  std::printf("lights over the plain photo's: none %.3f, auto (v %.2f) %.3f\n",
+              lightLuminance(*none) / truth, fixed->vignetting, lightLuminance(*fixed) / truth);
+  EXPECT_LT(errFixed, 0.5 * errNone);
+
+  // No object: V (f^-1(photo) / V) encodes back to the vignetted photo's own codes.
+  const ImageF composite = compositeOf(*fixed, renderFrame(*fixed, 1));
+  for (float f : composite.data) ASSERT_TRUE(std::isfinite(f));
+  SaveOptions so;
+  so.response = &fixed->response;
+  ASSERT_TRUE(saveImage((dir / "composite.png").string(), composite, so).ok());
+  auto written = loadImage((dir / "composite.png").string());
+  auto photo = loadImage(photoPath);
+  ASSERT_TRUE(written.ok() && photo.ok());
+  EXPECT_EQ(srgbCodesOf(written->linearRgb), srgbCodesOf(photo->linearRgb));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

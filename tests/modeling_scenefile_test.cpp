@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace inlay {
 namespace {
@@ -365,14 +366,17 @@ TEST(SceneFile, VanishingLinesParseAndRoundTrip) {
   EXPECT_EQ(again->doc.camera.vanishingLinesPx, l);
 }
 
+// A scene whose camera has `key` set to the JSON `value`.
+Expected<SceneLoadResult> parseCameraKey(const fs::path& dir, const std::string& key,
+                                         const std::string& value) {
+  return parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {")" +
+                            key + "\": " + value + "}}",
+                        dir.string(), "scene.json");
+}
+
 TEST(SceneFile, CameraResponseParsesAndRoundTrips) {
   const fs::path dir = sceneDir("response");
-  auto parse = [&](const std::string& response) {
-    return parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-            response + "}}",
-        dir.string(), "scene.json");
-  };
+  auto parse = [&](const std::string& response) { return parseCameraKey(dir, "response", response); };
   auto missing = parseSceneJson(R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg"})",
                                 dir.string(), "scene.json");
   ASSERT_TRUE(missing.ok());
@@ -420,12 +424,53 @@ TEST(SceneFile, BadCameraResponseNamesItsKey) {
       {R"({"family": "toe_shoulder", "shoulder": 1e9})", "camera.response.shoulder"},
       {R"({"family": "srgb", "power": 1})", "camera.response.power"}};
   for (const auto& [text, key] : cases) {
-    auto r = parseSceneJson(
-        R"({"format": "inlay-scene", "version": 1, "photo": "room.jpg", "camera": {"response": )" +
-            std::string(text) + "}}",
-        dir.string(), "scene.json");
+    auto r = parseCameraKey(dir, "response", text);
     ASSERT_FALSE(r.ok()) << text;
     EXPECT_EQ(r.error().key, key) << text << ": " << r.error().message();
+  }
+}
+
+// camera.vignetting: "none" (the default, not written back), "auto" or a strength in [0, 0.9].
+TEST(SceneFile, CameraVignettingParsesAndRoundTrips) {
+  const fs::path dir = sceneDir("vignetting");
+  auto parse = [&](const std::string& v) { return parseCameraKey(dir, "vignetting", v); };
+  const auto missing = parseCameraKey(dir, "height_m", "1.5");  // a camera without the key
+  ASSERT_TRUE(missing.ok()) << missing.error().message();
+  EXPECT_EQ(missing->doc.camera.vignetting.mode, VignettingKeys::Mode::None);
+  EXPECT_EQ(sceneToJson(missing->doc).find("vignetting"), std::string::npos);  // none is not written
+  const std::tuple<const char*, VignettingKeys::Mode, double> cases[] = {
+      {R"("auto")", VignettingKeys::Mode::Auto, 0.0},
+      {R"("none")", VignettingKeys::Mode::None, 0.0},
+      {"0", VignettingKeys::Mode::Given, 0.0},
+      {"0.25", VignettingKeys::Mode::Given, 0.25},
+      {"0.9", VignettingKeys::Mode::Given, 0.9}};
+  for (const auto& [text, mode, v] : cases) {
+    auto r = parse(text);
+    ASSERT_TRUE(r.ok()) << text << ": " << r.error().message();
+    EXPECT_EQ(r->doc.camera.vignetting.mode, mode) << text;
+    EXPECT_EQ(r->doc.camera.vignetting.v, v) << text;
+    auto again = parseSceneJson(sceneToJson(r->doc), dir.string(), "scene.json");
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    EXPECT_EQ(again->doc.camera.vignetting, r->doc.camera.vignetting) << text;
+  }
+}
+
+TEST(SceneFile, BadCameraVignettingNamesItsKeyAndRange) {
+  const fs::path dir = sceneDir("bad_vignetting");
+  const std::pair<const char*, const char*> cases[] = {{R"("strong")", "unknown vignetting 'strong'"},
+                                                       {"-0.1", "must be in [0, 0.9]"},
+                                                       {"0.95", "must be in [0, 0.9]"},
+                                                       {"1e308", "must be in [0, 0.9]"},
+                                                       {"null", "got null"},
+                                                       {"[0.2]", "got an array"},
+                                                       {"true", "got a boolean"},
+                                                       {R"({"v": 0.2})", "got an object"}};
+  for (const auto& [text, reason] : cases) {
+    auto r = parseCameraKey(dir, "vignetting", text);
+    ASSERT_FALSE(r.ok()) << text;
+    EXPECT_EQ(r.error().key, "camera.vignetting") << text;
+    EXPECT_NE(r.error().message().find(reason), std::string::npos)
+        << text << ": " << r.error().message();
   }
 }
 

@@ -315,7 +315,7 @@ Status BatchRunner::renderAndSave(PreparedGroup& g, const BatchLine& line, const
   // As `inlay-cli render` writes it: the line's grain and exposure, the photo's response.
   const ImageF composite = compositeOf(ps.photo.linearRgb, doc.render.exposure, *frame,
                                        doc.render.grain ? &ps.photoNoise : nullptr, doc.render.seed,
-                                       nullptr, &ps.renderScene.roomAlbedo.photoRadiance);
+                                       nullptr, &ps.renderScene.roomAlbedo.photoRadiance, ps.vignetting);
   SaveOptions save;
   save.response = outputResponseOf(ps);
   std::error_code ec;

@@ -544,8 +544,11 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
           {"suns_initial", sunsJson(ps.initialSuns)},
           {"suns_refined", sunsJson(ps.lighting.suns)},
           {"unseen_ceiling", unseenCeilingJson(ps)},
-          {"vignetting",  // the light fit's residual read as 1 - v r^2 (a diagnostic, not applied)
-           {{"v", ps.lighting.vignetting}, {"residual_ratio", ps.lighting.vignettingResidualRatio}}},
+          {"vignetting",  // the last light fit's residual read as 1 - v r^2; camera.vignetting's choice
+           {{"v", ps.lighting.vignetting},
+            {"residual_ratio", ps.lighting.vignettingResidualRatio},
+            {"estimated_before_devignetting", ps.vignettingEstimated},  // camera.vignetting
+            {"applied", ps.vignetting}}},
           {"refinement",
            {{"ran", !r.history.empty()},
             {"seconds", r.seconds},

@@ -15,6 +15,7 @@ std::shared_ptr<const PreparedScene> CompositeSink::compositeContextOf(const Pre
   context->doc.render = scene.doc.render;
   context->photo = scene.photo;
   context->response = scene.response;
+  context->vignetting = scene.vignetting;
   context->photoNoise = scene.photoNoise;
   context->camera = scene.camera;
   context->box = scene.box;
@@ -80,7 +81,7 @@ void CompositeSink::onFrame(std::shared_ptr<const RenderFrame> frame) {
   image.frame = frame;
   auto linear = std::make_shared<ImageF>(compositeOf(
       context->photo.linearRgb, keys.exposure, *frame, grain ? &context->photoNoise : nullptr, keys.seed,
-      field.get(), &context->renderScene.roomAlbedo.photoRadiance));
+      field.get(), &context->renderScene.roomAlbedo.photoRadiance, context->vignetting));
   // compositeOf already applied the scene's exposure. The room's unclipped radiance makes an
   // object's shadow on a clipped sunlit patch the same in the live frames as in the final render.
   image.srgb8 = encoded8FromLinear(*linear, context->response, 0.0);

@@ -28,7 +28,7 @@ response error against its seconds); prints Markdown tables per half.
 usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--cameras N]
                                [--seconds S] [--spp N [--long-spp M]] [--product [CAP]] [--no-albedo]
                                [--no-plain] [--rescore]
-                               [--variants ROOM_CAMERA,...] [--oracle-curve]
+                               [--variants ROOM_CAMERA,...] [--oracle-curve] [--vignetting V]
   --cameras N   random cameras per room, seeds 1..N (default 3; 0: plain only)
   --seconds S   render seconds per composite (default 15)
   --spp N       render exactly N samples per pixel instead (no clock, uniform sampling): the
@@ -55,6 +55,9 @@ usage: bench_generalization.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--ca
                 member nearest the variant's true curve (bench_response.true_family_params, from
                 camera_variant.json), "srgb" for the plain photos: the pipeline as if the curve
                 estimate were perfect
+  --vignetting V  set every scene's camera.vignetting: "none" (the product's default), "auto" (the
+                light fit's residual estimate), a number, or "true": the oracle, the variant's
+                true strength from camera_variant.json (0 for the plain photos)
   --rescore     reuse the composites, albedo and lights files already in OUT (only re-score)
   --from-csv F1,F2,...  measure nothing: read the rows of these generalization.csv files (later
                 files win for the same room and camera; e.g. two runs that split the rooms) and
@@ -231,6 +234,8 @@ def measure(cli, tools, room_dir, vdir, kind, out, o):
     run([PY, os.path.join(tools, "harness.py"), "scene", vdir, scene, "--seconds", str(o["seconds"])])
     if o.get("oracle_curve"):
         set_true_curve(scene, cam)
+    if o.get("vignetting"):
+        set_vignetting(scene, cam, o["vignetting"])
     comp, lj = os.path.join(out, tag + ".png"), os.path.join(out, tag + "_lights.json")
     budget = (["--spp", str(o["spp"]), "--seconds", "0", "--noise", "0"] if o["spp"]
               else ["--spp", "100000", "--seconds", str(o["seconds"])])
@@ -262,6 +267,17 @@ def set_true_curve(scene, cam):
         p, t, s = bench_response.true_family_params(cam)
         response = {"family": "toe_shoulder", "power": p, "toe": t, "shoulder": s}
     j.setdefault("camera", {})["response"] = response
+    json.dump(j, open(scene, "w"), indent=1)
+
+
+def set_vignetting(scene, cam, value):
+    """--vignetting: the scene's camera.vignetting ("true": the camera's own strength, an oracle)."""
+    j = json.load(open(scene))
+    if value == "true":
+        v = float(cam.get("vignetting", 0.0))
+    else:
+        v = value if value in ("auto", "none") else float(value)
+    j.setdefault("camera", {})["vignetting"] = v
     json.dump(j, open(scene, "w"), indent=1)
 
 
@@ -626,7 +642,8 @@ def main():
     rc, _, help_text, help_err = run([cli, "--help"])
     o = {"seconds": float(opt("--seconds", "15")), "spp": int(opt("--spp", "0")), "long_spp": int(opt("--long-spp", "0")),
          "product": product_cap(argv), "albedo": "--no-albedo" not in argv, "rescore": "--rescore" in argv,
-         "has_response": "inlay-cli response" in help_text + help_err, "oracle_curve": "--oracle-curve" in argv}
+         "has_response": "inlay-cli response" in help_text + help_err, "oracle_curve": "--oracle-curve" in argv,
+         "vignetting": opt("--vignetting", "")}
     print("response command:", "yes" if o["has_response"] else "no (n/a)", flush=True)
     if opt("--clamp-grid", ""):
         if not o["spp"]:

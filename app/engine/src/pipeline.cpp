@@ -352,12 +352,43 @@ Material materialFromKeys(const MaterialKeys& keys, const TriangleMesh* meshObje
 
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
                    const PhotoNoise* grain, uint32_t grainSeed, const ImageF* grainField,
-                   const ImageF* unclipped) {
+                   const ImageF* unclipped, double vignetting) {
   ImageF c =
       differentialComposite(photoLinear, frame.withObjects, frame.withoutObjects, frame.mask, unclipped);
   if (grain) addGrain(c, photoLinear, frame, *grain, grainSeed, grainField);
+  divideByVignetting(c, vignetting, /*undo=*/true);
   applyExposure(c, exposureStops);
   return c;
+}
+
+double vignettingFalloff(double v, int x, int y, int w, int h) {
+  const double cx = w / 2.0, cy = h / 2.0, corner2 = cx * cx + cy * cy;
+  const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
+  const double r2 = corner2 > 0 ? std::min(1.0, (dx * dx + dy * dy) / corner2) : 0.0;
+  const double strength = std::isfinite(v) ? std::clamp(v, 0.0, VignettingKeys::kMax) : 0.0;
+  return 1 - strength * r2;
+}
+
+void divideByVignetting(ImageF& image, double v, bool undo) {
+  if (!(std::isfinite(v) && v > 0)) return;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const double V = vignettingFalloff(v, x, y, image.width, image.height);
+      float* px = image.pixel(x, y);
+      for (int c = 0; c < std::min(image.channels, 3); ++c)  // further channels (alpha) kept
+        if (std::isfinite(px[c])) px[c] = float(undo ? px[c] * V : px[c] / V);
+    }
+}
+
+double vignettingToApply(const VignettingKeys& keys, double estimatedV) {
+  switch (keys.mode) {
+    case VignettingKeys::Mode::None: return 0;
+    case VignettingKeys::Mode::Given: return std::clamp(keys.v, 0.0, VignettingKeys::kMax);
+    case VignettingKeys::Mode::Auto: break;
+  }
+  const bool confident = std::isfinite(estimatedV) && estimatedV >= kMinAutoVignetting &&
+                         estimatedV < kMaxAutoVignetting;
+  return confident ? estimatedV : 0;
 }
 
 std::string exampleScenePath() {
@@ -907,20 +938,10 @@ double blackLevelOf(const PreparedScene& ps, double srgbLevel) {
 }
 
 // The gathered light, the albedo and the lights' radiances (lighting/estimate.h).
-Status estimateTheLighting(Preparation& p, std::string& detail) {
+Status fitTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
-  LightingOptions& lo = p.lightingOptions;
-  lo.nonMatteSurfaces = p.nonMatte;
-  lo.cancel = p.opt.cancel;
-  lo.threads = p.opt.threads;
-  lo.seed += p.opt.seed;
-  lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
-  lo.fitUnseenCeiling = p.opt.fitUnseenCeiling;
-  lo.renderFittedCeiling = p.opt.renderFittedCeiling;
-  lo.gatherSunBounceUnseen = p.opt.sunsFromShadowRatio && p.opt.sunsFromBounce;
-  lo.blackBelow = blackLevelOf(ps, lo.blackBelow);
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
-                                   p.lightMask, p.suns, lo);
+                                   p.lightMask, p.suns, p.lightingOptions);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
   p.stageSteps = stepsOf(ps.lighting);
@@ -930,6 +951,50 @@ Status estimateTheLighting(Preparation& p, std::string& detail) {
   detail = countOf(ps.lighting.lights.size(), "light") + ", " + countOf(ps.lighting.suns.size(), "sun") +
            ", " + gatherText(ps.lighting);
   return {};
+}
+
+Status estimateTheLighting(Preparation& p, std::string& detail) {
+  LightingOptions& lo = p.lightingOptions;
+  lo.nonMatteSurfaces = p.nonMatte;
+  lo.cancel = p.opt.cancel;
+  lo.threads = p.opt.threads;
+  lo.seed += p.opt.seed;
+  lo.fitUnseenCeilingAlbedo = p.opt.fitUnseenCeilingAlbedo;
+  lo.fitUnseenCeiling = p.opt.fitUnseenCeiling;
+  lo.renderFittedCeiling = p.opt.renderFittedCeiling;
+  lo.gatherSunBounceUnseen = p.opt.sunsFromShadowRatio && p.opt.sunsFromBounce;
+  lo.blackBelow = blackLevelOf(p.ps, lo.blackBelow);
+  return fitTheLighting(p, detail);
+}
+
+// camera.vignetting: the strength to apply (given, or the light fit's estimate when confident);
+// when it is not 0 the photo and its working copy are devignetted and the light fit runs again
+// on them, so every later stage (and the render's bounces) sees the devignetted radiance.
+Status devignetteThePhoto(Preparation& p, std::string& detail) {
+  PreparedScene& ps = p.ps;
+  const double estimated = ps.lighting.vignetting;
+  const double v = vignettingToApply(p.doc.camera.vignetting, estimated);
+  char text[96];
+  std::snprintf(text, sizeof text, "v %.2f applied (the light fit's residual shows %.2f)", v, estimated);
+  detail = text;
+  ps.vignettingEstimated = estimated;
+  if (v == 0) return {};
+  ps.vignetting = v;
+  divideByVignetting(ps.photo.linearRgb, v);
+  if (p.work.reduced) divideByVignetting(p.work.photo, v);
+  // The first fit's notes are the last warnings (its stage ran just before): the refit's replace them.
+  const size_t notes = std::min(ps.lighting.notes.size(), ps.warnings.size());
+  ps.warnings.resize(ps.warnings.size() - notes);
+  std::string again;
+  if (Status st = fitTheLighting(p, again); !st) return st;
+  detail += "; lighting again: " + again;
+  return {};
+}
+
+std::string vignettingNotNeeded(const Preparation& p) {
+  return p.doc.camera.vignetting.mode == VignettingKeys::Mode::None
+             ? "camera.vignetting is \"none\" (the default)"
+             : "";
 }
 
 Status sunsFromRatio(Preparation& p, std::string& detail) {
@@ -1205,6 +1270,7 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
       {"lights", "lighting", nullptr, lightsFromMarks, At::Working},
       {"shafts", nullptr, noShafts, sunsFromShafts, At::Working},
       {"lighting", nullptr, nullptr, estimateTheLighting, At::Working},
+      {"vignetting", nullptr, vignettingNotNeeded, devignetteThePhoto, At::Working},
       {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio, At::Working},
       {"refine", "refine", refineNotNeeded, refineTheLights, At::Working},
       {"lighting refit", "lighting", refitNotNeeded, refitTheLighting, At::Working},
@@ -1235,7 +1301,7 @@ ImageF compositeOf(const PreparedScene& scene, const RenderFrame& frame, bool wi
   const bool grain = withGrain && scene.doc.render.grain;
   return compositeOf(scene.photo.linearRgb, scene.doc.render.exposure, frame,
                      grain ? &scene.photoNoise : nullptr, scene.doc.render.seed, nullptr,
-                     &scene.renderScene.roomAlbedo.photoRadiance);
+                     &scene.renderScene.roomAlbedo.photoRadiance, scene.vignetting);
 }
 
 const CameraResponse* outputResponseOf(const PreparedScene& scene) {

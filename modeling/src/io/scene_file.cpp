@@ -422,7 +422,7 @@ class Reader {
     object(j, p);
     knownKeys(j, p,
               {"height_m", "focal_px", "principal_px", "vanishing_points_px", "vanishing_lines_px",
-               "response"});
+               "response", "vignetting"});
     if (j.contains("height_m")) c.heightM = positive(j["height_m"], child(p, "height_m"));
     if (j.contains("focal_px")) c.focalPx = positive(j["focal_px"], child(p, "focal_px"));
     if (j.contains("principal_px")) c.principalPx = vec<2>(j["principal_px"], child(p, "principal_px"));
@@ -435,6 +435,32 @@ class Reader {
     }
     if (j.contains("vanishing_lines_px")) readVanishingLines(j["vanishing_lines_px"], c);
     if (j.contains("response")) c.response = readResponse(j["response"]);
+    if (j.contains("vignetting")) c.vignetting = readVignetting(j["vignetting"]);
+  }
+
+  // camera.vignetting: "none", "auto" or a strength v in [0, VignettingKeys::kMax].
+  VignettingKeys readVignetting(const json& j) {
+    const std::string p = "camera.vignetting";
+    VignettingKeys k;
+    if (j.is_string()) {
+      const std::string v = j.get<std::string>();
+      if (v == "auto") k.mode = VignettingKeys::Mode::Auto;
+      else if (v == "none") k.mode = VignettingKeys::Mode::None;
+      else
+        fail(p, "unknown vignetting '" + v + "' (expected \"auto\", \"none\" or a number in [0, 0.9])");
+      return k;
+    }
+    if (!j.is_number())
+      fail(p, std::string("expected \"auto\", \"none\" or a number in [0, 0.9], got ") + typeName(j));
+    k.mode = VignettingKeys::Mode::Given;
+    k.v = number(j, p);
+    if (!(k.v >= 0 && k.v <= VignettingKeys::kMax)) {
+      char buf[120];
+      std::snprintf(buf, sizeof buf, "must be in [0, %g] (got %s)", VignettingKeys::kMax,
+                    j.dump().c_str());
+      fail(p, buf);
+    }
+    return k;
   }
 
   // camera.response: "auto", "srgb", "linear" or {"family": ..., parameters}.
@@ -901,6 +927,8 @@ ojson cameraJson(const CameraKeys& c, bool anyLines) {
                        {"power", c.response.power},
                        {"toe", c.response.toe},
                        {"shoulder", c.response.shoulder}};
+  if (c.vignetting.mode == VignettingKeys::Mode::Auto) cam["vignetting"] = "auto";
+  if (c.vignetting.mode == VignettingKeys::Mode::Given) cam["vignetting"] = c.vignetting.v;
   return cam;
 }
 
@@ -1011,7 +1039,9 @@ ojson buildJson(const SceneDoc& doc) {
   const bool anyLines = std::any_of(c.vanishingLinesPx.begin(), c.vanishingLinesPx.end(),
                                     [](const auto& l) { return l.has_value(); });
   const bool anyResponse = c.response.mode != ResponseKeys::Mode::Auto;
-  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse)
+  const bool anyVignetting = c.vignetting.mode != VignettingKeys::Mode::None;
+  if (c.heightM || c.focalPx || c.principalPx || c.vanishingPointsPx || anyLines || anyResponse ||
+      anyVignetting)
     j["camera"] = cameraJson(c, anyLines);
   if (doc.layout.backWallPx || doc.layout.rearM) {
     ojson layout = ojson::object();

@@ -27,6 +27,21 @@ struct ResponseKeys {
   bool operator==(const ResponseKeys&) const = default;
 };
 
+// "camera.vignetting": the camera's radial fall-off V = 1 - v r^2 (r^2: the squared distance
+// from the image centre over the corner's). "none" (the default; also when missing): the photo
+// is taken as it is; "auto": the light fit's residual estimate, applied when it is between
+// kMinAutoVignetting and kMaxAutoVignetting (engine/pipeline.h; measured worse than "none" on
+// half A of the random cameras, so not the default: docs/camera-response.md); a number v in
+// [0, kMax]: that strength. The physics works in the devignetted radiance f^-1(photo) / V, and
+// the composite puts V back.
+struct VignettingKeys {
+  enum class Mode { Auto, None, Given };
+  static constexpr double kMax = 0.9;
+  Mode mode = Mode::None;
+  double v = 0.0;  // Given
+  bool operator==(const VignettingKeys&) const = default;
+};
+
 struct CameraKeys {
   std::optional<double> heightM;  // default 1.6 when missing
   std::optional<double> focalPx;
@@ -37,6 +52,7 @@ struct CameraKeys {
   // axis's vanishing point. Each segment is >= 2 px long and the two are not one line.
   std::array<std::optional<std::array<Vec2, 4>>, 3> vanishingLinesPx;
   ResponseKeys response;
+  VignettingKeys vignetting;
 };
 
 struct LayoutKeys {

@@ -72,6 +72,11 @@ struct PreparedScene {
   // Linear for EXR/HDR photos.
   CameraResponse response;
   std::optional<ResponseEstimate> responseEstimate;  // when "auto" ran the estimate
+  // The vignetting strength v applied (camera.vignetting; 0: none): from the stage "vignetting"
+  // on, photo.linearRgb is the devignetted radiance f^-1(photo) / V (V = vignettingFalloff),
+  // and compositeOf multiplies the composite by V again, so untouched pixels keep their codes.
+  double vignetting = 0;
+  double vignettingEstimated = 0;  // LightingEstimate::vignetting of the fit before devignetting
   Camera camera;
   RoomBox box;
   std::array<Vec2, 4> backWallPx{};  // the corners the box was made from
@@ -267,9 +272,27 @@ const CameraResponse* outputResponseOf(const PreparedScene& scene);
 // frames (render/grain.h; the same bits, without drawing the grain per frame). `unclipped`: the
 // room's radiance where the photo clips it (differentialComposite; the prepared scene's
 // renderScene.roomAlbedo.photoRadiance), or null.
+// `vignetting`: the scene's PreparedScene::vignetting (the composite is multiplied by V).
 ImageF compositeOf(const ImageF& photoLinear, double exposureStops, const RenderFrame& frame,
                    const PhotoNoise* grain = nullptr, uint32_t grainSeed = 1,
-                   const ImageF* grainField = nullptr, const ImageF* unclipped = nullptr);
+                   const ImageF* grainField = nullptr, const ImageF* unclipped = nullptr,
+                   double vignetting = 0);
+
+// The radial fall-off V = 1 - v r^2 at pixel (x, y) of a w x h image (r^2: the squared distance
+// of the pixel's centre from the image centre over the corner's; LightingEstimate::vignetting's
+// model). `v` is clamped to [0, VignettingKeys::kMax], so V >= 0.1 and finite.
+double vignettingFalloff(double v, int x, int y, int w, int h);
+// Divides every pixel of `image` by V (devignetting) or multiplies it (`undo`); v = 0: unchanged.
+// Non-finite values stay as they were.
+void divideByVignetting(ImageF& image, double v, bool undo = false);
+// The strength camera.vignetting asks for ("none", the default: 0; a number: it); for "auto" the
+// light fit's residual estimate `estimatedV`: the estimate
+// when it is at least kMinAutoVignetting (below it: a plain photo's noise, 0 to 0.03 on the
+// training rooms) and inside its search's range (LightingEstimate::vignetting stops at
+// kMaxAutoVignetting: an estimate at that bound found no minimum), else 0.
+inline constexpr double kMinAutoVignetting = 0.05;
+inline constexpr double kMaxAutoVignetting = 0.6;
+double vignettingToApply(const VignettingKeys& keys, double estimatedV);
 
 // An object's mesh as the scene file asks for it: loaded (mesh key), then smoothly subdivided
 // by its `subdivide` levels (Catmull-Clark for quad meshes, Loop for triangles). Errors are keyed
