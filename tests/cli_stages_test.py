@@ -15,7 +15,7 @@ import json, os, subprocess, sys, tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STAGES = ["photo", "response", "working copy", "camera", "layout", "occluders", "surfaces", "room", "lights",
-          "shafts", "lighting", "sun ratio", "refine", "lighting refit", "photo size", "render scene", "objects",
+          "shafts", "lighting", "vignetting", "sun ratio", "refine", "lighting refit", "photo size", "render scene", "objects",
           "grain"]
 
 
@@ -73,6 +73,7 @@ def main():
     out = tempfile.mkdtemp(prefix="inlay_stages_")
     failures = []
     not_marked = {"occluders": "none marked", "surfaces": "none marked", "shafts": "no sun marked",
+                  "vignetting": 'camera.vignetting is "none" (the default)',
                   "sun ratio": "no sun marked", "photo size": "the working copy is the photo"}
     lines, report, lights = render(cli, example, out, "example")
     check("example", lines, report, lights, ["photo", "camera", "lighting", "refine", "objects"], not_marked, failures)

@@ -145,6 +145,7 @@ const char* const kStageTexts[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "lights moved by at most %1 % of their size (under %2 %): the first "
                       "estimate's lights are kept"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "camera.vignetting is \"none\" (the default)"),
     // What a stage did, part by part.
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 x %2 px"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "linear photo"),
@@ -157,6 +158,9 @@ const char* const kStageTexts[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 m high"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 matte"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 mattes"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "v %1 applied"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the light fit's residual shows %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the light fit run again"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surface built"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surfaces built"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 surface"),

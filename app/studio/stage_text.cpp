@@ -23,6 +23,7 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "lights"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "shafts"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "lighting"),
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "vignetting"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "sun ratio"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "refine"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "lighting refit"),

@@ -975,7 +975,7 @@ Status devignetteThePhoto(Preparation& p, std::string& detail) {
   const double estimated = ps.lighting.vignetting;
   const double v = vignettingToApply(p.doc.camera.vignetting, estimated);
   char text[96];
-  std::snprintf(text, sizeof text, "v %.2f applied (the light fit's residual shows %.2f)", v, estimated);
+  std::snprintf(text, sizeof text, "v %.2f applied, the light fit's residual shows %.2f", v, estimated);
   detail = text;
   ps.vignettingEstimated = estimated;
   if (v == 0) return {};
@@ -985,9 +985,9 @@ Status devignetteThePhoto(Preparation& p, std::string& detail) {
   // The first fit's notes are the last warnings (its stage ran just before): the refit's replace them.
   const size_t notes = std::min(ps.lighting.notes.size(), ps.warnings.size());
   ps.warnings.resize(ps.warnings.size() - notes);
-  std::string again;
+  std::string again;  // the first fit's detail stands in the lighting stage's line
   if (Status st = fitTheLighting(p, again); !st) return st;
-  detail += "; lighting again: " + again;
+  detail += ", the light fit run again";
   return {};
 }
 
