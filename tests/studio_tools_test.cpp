@@ -11,6 +11,8 @@
 #include "image_convert.h"
 #include "inlay/engine/pipeline.h"
 #include "inlay/modeling/image_io.h"
+#include "inlay/modeling/image_resample.h"
+#include "inlay/modeling/scene_file.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -38,6 +40,31 @@ void waitPrepared(Document* doc) {
   while (doc->state() == Document::State::Preparing && t.elapsed() < waitMs(180000)) QTest::qWait(20);
 }
 
+// The example photographed twice as large (1024 x 768, above the working copy's 0.5 MP): its
+// photo enlarged into `dir`, its pixel keys scaled, saved as `dir`/big.json.
+QString enlargedExample(const QTemporaryDir& dir) {
+  auto loaded = loadSceneFile(inlay::test::exampleScene().toStdString());
+  if (!loaded.ok()) return {};
+  SceneDoc doc = loaded->doc;
+  auto photo = loadImage(doc.photoResolved.empty() ? doc.photo : doc.photoResolved);
+  if (!photo.ok()) return {};
+  const double k = 2;
+  const std::string image = dir.filePath(QStringLiteral("big.png")).toStdString();
+  if (!saveImage(image, resizeImage(photo->linearRgb, 1024, 768)).ok()) return {};
+  doc.photo = doc.photoResolved = image;
+  if (doc.camera.focalPx) *doc.camera.focalPx *= k;
+  if (doc.camera.principalPx) *doc.camera.principalPx *= k;
+  if (doc.camera.vanishingPointsPx)
+    for (Vec2& v : *doc.camera.vanishingPointsPx) v *= k;
+  if (doc.layout.backWallPx)
+    for (Vec2& v : *doc.layout.backWallPx) v *= k;
+  for (LightKeys& l : doc.lights)
+    for (Vec2& v : l.pointsPx) v *= k;
+  for (ObjectKeys& o : doc.objects) o.basePx *= k;
+  const QString scene = dir.filePath(QStringLiteral("big.json"));
+  return saveSceneFile(scene.toStdString(), doc).ok() ? scene : QString();
+}
+
 // A drag with `button` between two image points.
 void dragImage(Viewport* view, Qt::MouseButton button, const Vec2& a, const Vec2& b, int steps = 6) {
   const QPoint from = view->widgetFromImage(a).toPoint(), to = view->widgetFromImage(b).toPoint();
@@ -63,6 +90,7 @@ class StudioToolsTest : public QObject {
   void exportShownLayer();
   void exportSceneAsGltf();
   void logListsEachPreparationsStages();
+  void directLightOfABigPhotoAtThePhotosSize();
 
  private:
   std::unique_ptr<MainWindow> window_;
@@ -340,6 +368,42 @@ void StudioToolsTest::logListsEachPreparationsStages() {
   QDir dir(QCoreApplication::applicationDirPath());
   dir.mkpath(QStringLiteral("studio_tools_artifacts"));
   QVERIFY(window_->grab().save(dir.filePath(QStringLiteral("studio_tools_artifacts/log_dock.png"))));
+}
+
+// The preparation keeps a big photo's direct light at its working copy's size: the View menu's
+// "Direct light" shows it at the photo's size, under the other layers' pixels (a picture of it
+// beside the test binary).
+void StudioToolsTest::directLightOfABigPhotoAtThePhotosSize() {
+  QTemporaryDir dir;
+  const QString scene = enlargedExample(dir);
+  QVERIFY(!scene.isEmpty());
+  window_ = inlay::test::openStudio(scene);
+  QVERIFY(window_);
+  doc_ = window_->document();
+  view_ = window_->viewport();
+  waitPrepared(doc_);
+  QVERIFY2(doc_->isReady(), qPrintable(doc_->prepareError()));
+  const PreparedScene* prepared = doc_->prepared();
+  QCOMPARE(prepared->photo.linearRgb.width, 1024);
+  QVERIFY(prepared->lighting.direct.width < 1024);  // the working copy's
+  view_->setLayer(Layer::DirectLight);
+  const QImage direct = window_->renderer()->layerImage(Layer::DirectLight);
+  QCOMPARE(direct.size(), QSize(1024, 768));
+  QCOMPARE(window_->renderer()->layerImage(Layer::Albedo).size(), direct.size());
+  // Not black and not one flat colour: the lights' fall-off is there.
+  const QImage grey = direct.convertToFormat(QImage::Format_Grayscale8);
+  int lo = 255, hi = 0;
+  for (int y = 0; y < grey.height(); y += 8)
+    for (int x = 0; x < grey.width(); x += 8) {
+      lo = std::min(lo, qGray(grey.pixel(x, y)));
+      hi = std::max(hi, qGray(grey.pixel(x, y)));
+    }
+  QVERIFY2(hi - lo > 40, qPrintable(QStringLiteral("codes %1..%2").arg(lo).arg(hi)));
+  QTest::qWait(50);
+  QDir out(QCoreApplication::applicationDirPath());
+  out.mkpath(QStringLiteral("studio_tools_artifacts"));
+  QVERIFY(
+      window_->grab().save(out.filePath(QStringLiteral("studio_tools_artifacts/direct_light_big.png"))));
 }
 
 QTEST_MAIN(StudioToolsTest)
