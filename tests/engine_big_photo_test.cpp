@@ -7,6 +7,7 @@
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/image_resample.h"
 #include "test_support.h"
+#include "scene_scaling.h"
 
 #include <gtest/gtest.h>
 
@@ -49,15 +50,7 @@ SceneDoc enlargedExample(double k, int W, int H, const std::filesystem::path& di
   const std::string path = (dir / "big.jpg").string();
   EXPECT_TRUE(saveImage(path, resizeImage(photo->linearRgb, W, H)).ok());
   doc.photo = doc.photoResolved = path;
-  if (doc.camera.focalPx) *doc.camera.focalPx *= k;
-  if (doc.camera.principalPx) *doc.camera.principalPx *= k;
-  if (doc.camera.vanishingPointsPx)
-    for (Vec2& v : *doc.camera.vanishingPointsPx) v *= k;
-  if (doc.layout.backWallPx)
-    for (Vec2& v : *doc.layout.backWallPx) v *= k;
-  for (LightKeys& l : doc.lights)
-    for (Vec2& v : l.pointsPx) v *= k;
-  for (ObjectKeys& o : doc.objects) o.basePx *= k;
+  inlay::test::scalePixelKeys(doc, k);
   return doc;
 }
 

@@ -27,6 +27,7 @@
 #include <QtTest>
 
 #include "studio_test_support.h"
+#include "scene_scaling.h"
 
 using namespace inlay;
 using inlay::test::waitMs;
@@ -52,15 +53,7 @@ QString enlargedExample(const QTemporaryDir& dir) {
   const std::string image = dir.filePath(QStringLiteral("big.png")).toStdString();
   if (!saveImage(image, resizeImage(photo->linearRgb, 1024, 768)).ok()) return {};
   doc.photo = doc.photoResolved = image;
-  if (doc.camera.focalPx) *doc.camera.focalPx *= k;
-  if (doc.camera.principalPx) *doc.camera.principalPx *= k;
-  if (doc.camera.vanishingPointsPx)
-    for (Vec2& v : *doc.camera.vanishingPointsPx) v *= k;
-  if (doc.layout.backWallPx)
-    for (Vec2& v : *doc.layout.backWallPx) v *= k;
-  for (LightKeys& l : doc.lights)
-    for (Vec2& v : l.pointsPx) v *= k;
-  for (ObjectKeys& o : doc.objects) o.basePx *= k;
+  inlay::test::scalePixelKeys(doc, k);
   const QString scene = dir.filePath(QStringLiteral("big.json"));
   return saveSceneFile(scene.toStdString(), doc).ok() ? scene : QString();
 }
@@ -93,6 +86,7 @@ class StudioToolsTest : public QObject {
   void directLightOfABigPhotoAtThePhotosSize();
 
  private:
+  void openPrepared(const QString& scene);
   std::unique_ptr<MainWindow> window_;
   Document* doc_ = nullptr;
   Viewport* view_ = nullptr;
@@ -108,6 +102,11 @@ void StudioToolsTest::initTestCase() {
 void StudioToolsTest::init() {
   const QString scene = inlay::test::exampleScene();
   if (scene.isEmpty() || !QFile::exists(scene)) QSKIP("resources/example/scene.json absent");
+  openPrepared(scene);
+}
+
+// The studio on `scene`, prepared (the test fails when it is not).
+void StudioToolsTest::openPrepared(const QString& scene) {
   window_ = inlay::test::openStudio(scene);
   QVERIFY(window_);
   doc_ = window_->document();
@@ -377,12 +376,8 @@ void StudioToolsTest::directLightOfABigPhotoAtThePhotosSize() {
   QTemporaryDir dir;
   const QString scene = enlargedExample(dir);
   QVERIFY(!scene.isEmpty());
-  window_ = inlay::test::openStudio(scene);
-  QVERIFY(window_);
-  doc_ = window_->document();
-  view_ = window_->viewport();
-  waitPrepared(doc_);
-  QVERIFY2(doc_->isReady(), qPrintable(doc_->prepareError()));
+  openPrepared(scene);
+  if (QTest::currentTestFailed()) return;
   const PreparedScene* prepared = doc_->prepared();
   QCOMPARE(prepared->photo.linearRgb.width, 1024);
   QVERIFY(prepared->lighting.direct.width < 1024);  // the working copy's
