@@ -3,7 +3,6 @@
 
 #include "code_statistics.h"
 #include "lines.h"
-#include "../io/code_table.h"
 #include "noise_level.h"
 #include "inlay/modeling/parallel.h"
 
@@ -141,21 +140,7 @@ std::vector<unsigned char> srgbCodesOf(const ImageF& img) {
   return codes;
 }
 
-namespace {
-
-// Whether `response` decodes every value an 8-bit photo read as sRGB holds to itself (sRGB does:
-// its table is the loader's), so decoding such a photo again changes nothing.
-bool keepsLoadedCodes(const CameraResponse& response) {
-  const auto& loaded = detail::srgbCodeTable8();
-  for (float v : loaded)
-    if (response.table8()[srgbCode8(v)] != v) return false;
-  return true;
-}
-
-}  // namespace
-
 void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& response) {
-  if (bitsPerChannel <= 8 && keepsLoadedCodes(response)) return;
   const auto& table = response.table8();
   const double levels = std::exp2(std::min(bitsPerChannel, 16)) - 1;
   const size_t rowValues = size_t(std::max(0, img.width)) * size_t(img.channels);

@@ -1,7 +1,5 @@
 // Image input and output through OpenImageIO (the only unit that includes it).
 #include "inlay/modeling/image_io.h"
-
-#include "code_table.h"
 #include "inlay/modeling/parallel.h"
 #include "inlay/modeling/response.h"
 
@@ -27,7 +25,6 @@
 #include <unistd.h>
 
 namespace inlay {
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -461,6 +458,20 @@ Status checkExr(const std::string& path, const ImageLimits& limits) {
     std::ungetc(next, f);
   }
 }
+// The linear value of each 8-bit sRGB code: srgbToLinear of the float OpenImageIO makes of it.
+const std::array<float, 256>& codeTable8() {
+  static const std::array<float, 256> table = [] {
+    std::array<unsigned char, 256> codes{};
+    for (int k = 0; k < 256; ++k) codes[size_t(k)] = (unsigned char)k;
+    std::array<float, 256> t{};
+    OIIO::convert_pixel_values(OIIO::TypeDesc::UINT8, codes.data(), OIIO::TypeDesc::FLOAT, t.data(),
+                               256);
+    for (float& v : t) v = srgbToLinear(v);
+    return t;
+  }();
+  return table;
+}
+
 // The R, G and B source channels of a decoded image (grey: channel 0 three times).
 std::array<int, 3> rgbChannels(const OIIO::ImageSpec& spec) {
   if (spec.nchannels < 3) return {0, 0, 0};  // grey (and grey + alpha): alpha dropped
@@ -502,24 +513,6 @@ ImageF orientedRgb(const float* raw, const OIIO::ImageSpec& spec, int o, bool is
 }
 
 }  // namespace
-
-namespace detail {
-
-// The linear value of each 8-bit sRGB code: srgbToLinear of the float OpenImageIO makes of it.
-const std::array<float, 256>& srgbCodeTable8() {
-  static const std::array<float, 256> table = [] {
-    std::array<unsigned char, 256> codes{};
-    for (int k = 0; k < 256; ++k) codes[size_t(k)] = (unsigned char)k;
-    std::array<float, 256> t{};
-    OIIO::convert_pixel_values(OIIO::TypeDesc::UINT8, codes.data(), OIIO::TypeDesc::FLOAT, t.data(),
-                               256);
-    for (float& v : t) v = srgbToLinear(v);
-    return t;
-  }();
-  return table;
-}
-
-}  // namespace detail
 
 std::optional<double> ExifInfo::focalPx(int width, int height) const {
   const double longSide = double(std::max(width, height));
@@ -600,7 +593,7 @@ Expected<LoadedImage> loadImage(const std::string& path, const ImageLimits& limi
   result.wasSrgbEncoded = !isLinear;
   result.sourceBitsPerChannel = int(spec.format.size()) * 8;
   const int o = result.exif.orientation;
-  result.linearRgb = codes8 ? orientedRgb(raw8.data(), spec, o, detail::srgbCodeTable8())
+  result.linearRgb = codes8 ? orientedRgb(raw8.data(), spec, o, codeTable8())
                             : orientedRgb(rawF.data(), spec, o, isLinear);
   return result;
 }
