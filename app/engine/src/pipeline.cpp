@@ -1158,12 +1158,7 @@ Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
   for (size_t k = 0; k < maps.size(); ++k) {
     // Albedos in [0, 1]; the direct light and the fit's albedo >= 0 (NaN to 0).
     const float highest = maps[k] == &L.albedo ? 1.f : std::numeric_limits<float>::max();
-    std::vector<float>& values = up[k].data;
-    parallelFor(tbb::blocked_range<size_t>(0, values.size(), 1 << 16),
-                [&](const tbb::blocked_range<size_t>& r) {
-                  for (size_t i = r.begin(); i < r.end(); ++i)
-                    values[i] = values[i] > 0 ? std::min(values[i], highest) : 0.f;
-                });
+    for (float& v : up[k].data) v = v > 0 ? std::min(v, highest) : 0.f;
     *maps[k] = std::move(up[k]);
   }
   if (!L.suns.empty() && !L.gathered.empty())
