@@ -1095,6 +1095,25 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
 // working pixel and its eight neighbours show one surface, that surface; elsewhere (edges
 // between surfaces) the pixel's own ray is cast. A surface narrower than a working pixel that
 // no working pixel centre hits is not seen.
+// Per working pixel: whether it and its eight neighbours (clamped at the borders) show one surface.
+std::vector<unsigned char> uniformNeighbourhoods(const std::vector<int>& ids, int w, int h) {
+  std::vector<unsigned char> uniform(ids.size(), 1);
+  parallelFor(tbb::blocked_range<int>(0, h), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y)
+      for (int x = 0; x < w; ++x) {
+        const int id = ids[size_t(y) * w + x];
+        bool same = true;
+        for (int dy = -1; dy <= 1 && same; ++dy)
+          for (int dx = -1; dx <= 1 && same; ++dx) {
+            const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
+            same = ids[size_t(qy) * w + qx] == id;
+          }
+        uniform[size_t(y) * w + x] = same;
+      }
+  });
+  return uniform;
+}
+
 std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vector<int>& working) {
   const int W = p.ps.photo.linearRgb.width, H = p.ps.photo.linearRgb.height;
   const int w = p.work.photo.width, h = p.work.photo.height;
@@ -1102,20 +1121,14 @@ std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vecto
   if (working.size() != size_t(w) * h) return ids;
   const RoomTracer tracer(p.ps.geometry);
   const Camera& camera = p.ps.camera;
+  const std::vector<unsigned char> uniform = uniformNeighbourhoods(working, w, h);
   parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y) {
       const int ly = std::min(h - 1, int((y + 0.5) * p.work.sy));
       for (int x = 0; x < W; ++x) {
         const int lx = std::min(w - 1, int((x + 0.5) * p.work.sx));
-        const int id = working[size_t(ly) * w + lx];
-        bool uniform = true;
-        for (int dy = -1; dy <= 1 && uniform; ++dy)
-          for (int dx = -1; dx <= 1 && uniform; ++dx) {
-            const int qx = std::clamp(lx + dx, 0, w - 1), qy = std::clamp(ly + dy, 0, h - 1);
-            uniform = working[size_t(qy) * w + qx] == id;
-          }
-        if (uniform) {
-          ids[size_t(y) * W + x] = id;
+        if (uniform[size_t(ly) * w + lx]) {
+          ids[size_t(y) * W + x] = working[size_t(ly) * w + lx];
           continue;
         }
         const auto hit = tracer.intersect(camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)), 1e-6);
@@ -1126,16 +1139,6 @@ std::vector<int> firstSurfacesAtPhotoSize(const Preparation& p, const std::vecto
   return ids;
 }
 
-// The lighting's maps, estimated on the working copy, at the photo's size where the render and
-// the composite read them: the albedo (and with a sun the fit's albedos) by joint bilateral
-// upsampling of their ratio to the photo (a smooth factor but at shadow edges, which the photo
-// guides), times the photo, so they keep its full-size texture; with a sun the gathered light
-// (smooth) bilinearly; and each pixel's surface cast again through the photo's pixel centres.
-// Only a sun's clipped patch reads the gathered light and the fit's albedo at the photo's size
-// (radianceForBounces); the direct light only the studio's view (which resizes it), the suns'
-// bounce and the decomposition's inputs (decomposeStart, decomposeValid, decomposeClipped)
-// nothing after the refit; Retinex's albedo only `inlay-cli decompose`, which works at the
-// photo's size. Those stay at the working size (LightingEstimate says which).
 Status lightingAtPhotoSize(Preparation& p, std::string& detail) {
   LightingEstimate& L = p.ps.lighting;
   const ImageF& photo = p.ps.photo.linearRgb;

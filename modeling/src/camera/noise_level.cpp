@@ -1,6 +1,8 @@
 // The photo's noise level against its codes (see noise_level.h).
 #include "noise_level.h"
 
+#include "inlay/modeling/parallel.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -22,31 +24,63 @@ struct BlockPoint {
   double code, sigma;
 };
 
-// One channel's flat blocks: 3 x 3 mean codes within the block spread by less than
-// max(8, 10 % of the mean), none near clipping.
-void flatBlocksOf(const std::vector<unsigned char>& codes, int W, int H, int c,
-                  std::vector<BlockPoint>& out) {
+// One block row's flat blocks of channel c, left to right: 3 x 3 mean codes within the block
+// spread by less than max(8, 10 % of the mean), none near clipping. The 3 x 3 sums are whole
+// numbers (a row of 3-sums, then three of those), so every value is what the direct sums give.
+// `sums` is scratch.
+void flatBlocksInRow(const unsigned char* codes, int W, int c, int by, std::vector<BlockPoint>& out,
+                     std::vector<int>& sums) {
   auto at = [&](int x, int y) {
-    return double(codes[(size_t(y) * size_t(W) + size_t(x)) * 3 + size_t(c)]);
+    return int(codes[(size_t(y) * size_t(W) + size_t(x)) * 3 + size_t(c)]);
   };
-  for (int by = 1; by + kBlock < H; by += kBlock)
-    for (int bx = 1; bx + kBlock < W; bx += kBlock) {
-      double lo = 1e9, hi = -1e9, sum = 0, sum2 = 0;
-      for (int y = by; y < by + kBlock; ++y)
-        for (int x = bx; x < bx + kBlock; ++x) {
-          double mean = 0;
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) mean += at(x + dx, y + dy);
-          mean /= 9;
-          lo = std::min(lo, mean), hi = std::max(hi, mean);
-          const double r = at(x, y) - 0.25 * (at(x - 1, y) + at(x + 1, y) + at(x, y - 1) + at(x, y + 1));
-          sum += mean, sum2 += r * r;
-        }
-      const double n = kBlock * kBlock, m = sum / n;
-      if (lo <= 3 || hi >= 250 || hi - lo >= std::max(8.0, 0.1 * m)) continue;
-      // The residual of white noise against its four neighbours' mean has 1.25 x its variance.
-      out.push_back({m, std::sqrt(sum2 / n / 1.25)});
+  constexpr int kRows = kBlock + 2;  // rows by - 1 .. by + kBlock
+  sums.assign(size_t(kRows) * size_t(W), 0);
+  for (int k = 0; k < kRows; ++k)
+    for (int x = 1; x + 1 < W; ++x)
+      sums[size_t(k) * size_t(W) + size_t(x)] = at(x - 1, by - 1 + k) + at(x, by - 1 + k) +
+                                                at(x + 1, by - 1 + k);
+  auto box = [&](int x, int k) {  // the 3 x 3 sum around (x, by - 1 + k)
+    const size_t i = size_t(k) * size_t(W) + size_t(x);
+    return sums[i - size_t(W)] + sums[i] + sums[i + size_t(W)];
+  };
+  for (int bx = 1; bx + kBlock < W; bx += kBlock) {
+    double lo = 1e9, hi = -1e9, sum = 0, sum2 = 0;
+    // A mean at or beyond the clipping codes, or a spread above 25.5 (10 % of the largest mean),
+    // rejects the block whatever its other pixels.
+    bool rejected = false;
+    for (int y = by; y < by + kBlock && !rejected; ++y) {
+      for (int x = bx; x < bx + kBlock; ++x) {
+        const double mean = double(box(x, y - by + 1)) / 9;
+        lo = std::min(lo, mean), hi = std::max(hi, mean);
+        const int four = at(x - 1, y) + at(x + 1, y) + at(x, y - 1) + at(x, y + 1);
+        const double r = at(x, y) - 0.25 * four;
+        sum += mean, sum2 += r * r;
+      }
+      rejected = lo <= 3 || hi >= 250 || hi - lo > 25.5;
     }
+    if (rejected) continue;
+    const double n = kBlock * kBlock, m = sum / n;
+    if (hi - lo >= std::max(8.0, 0.1 * m)) continue;
+    // The residual of white noise against its four neighbours' mean has 1.25 x its variance.
+    out.push_back({m, std::sqrt(sum2 / n / 1.25)});
+  }
+}
+
+// Every channel's flat blocks (flatBlocksInRow), channel by channel, each top to bottom: block
+// rows in parallel, joined in that order (the points' order does not depend on the threads).
+std::vector<BlockPoint> flatBlocksOf(const std::vector<unsigned char>& codes, int W, int H) {
+  std::vector<int> rowStarts;
+  for (int by = 1; by + kBlock < H; by += kBlock) rowStarts.push_back(by);
+  const int rows = int(rowStarts.size());
+  std::vector<std::vector<BlockPoint>> perRow(size_t(3 * rows));
+  parallelFor(tbb::blocked_range<int>(0, 3 * rows), [&](const tbb::blocked_range<int>& r) {
+    std::vector<int> sums;
+    for (int i = r.begin(); i < r.end(); ++i)
+      flatBlocksInRow(codes.data(), W, i / rows, rowStarts[size_t(i % rows)], perRow[size_t(i)], sums);
+  });
+  std::vector<BlockPoint> out;
+  for (const auto& row : perRow) out.insert(out.end(), row.begin(), row.end());
+  return out;
 }
 
 // The q-quantile (nearest rank) of a non-empty list; q = 0.5 is the median.
@@ -73,7 +107,7 @@ NoiseLevel measureNoiseLevel(const std::vector<unsigned char>& codes, int W, int
   const double q = std::isnan(sigmaQuantile) ? 0.5 : std::clamp(sigmaQuantile, 0.0, 1.0);
   std::vector<BlockPoint> points;
   if (W > kBlock + 2 && H > kBlock + 2 && codes.size() >= size_t(W) * size_t(H) * 3)
-    for (int c = 0; c < 3; ++c) flatBlocksOf(codes, W, H, c, points);
+    points = flatBlocksOf(codes, W, H);
   out.flatBlocks = int(points.size());
   std::sort(points.begin(), points.end(),
             [](const BlockPoint& a, const BlockPoint& b) { return a.code < b.code; });

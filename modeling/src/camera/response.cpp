@@ -1,6 +1,7 @@
 // The camera response model and its estimate from a photo's edges (see response.h).
 #include "inlay/modeling/response.h"
 
+#include "code_statistics.h"
 #include "lines.h"
 #include "noise_level.h"
 #include "inlay/modeling/parallel.h"
@@ -482,21 +483,9 @@ std::string unsupportedShoulder(const ResponseEstimateOptions& options, const Re
 // The 1st percentile of the pixels' sRGB-decoded luminance (the mean of the three channels'
 // linear values) over its median, in [0, 1]; 1 (no evidence of contrast) when the median is black.
 double darkFillOf(const std::vector<unsigned char>& codes) {
-  const size_t n = codes.size() / 3;
-  if (n == 0) return 1;
-  std::array<double, 256> lin{};
-  for (int k = 0; k < 256; ++k) lin[size_t(k)] = srgbToLinear(float(k) / 255.f);
-  std::vector<float> luminance(n);
-  for (size_t i = 0; i < n; ++i) {
-    const unsigned char* c = &codes[i * 3];
-    luminance[i] = float((lin[c[0]] + lin[c[1]] + lin[c[2]]) / 3);
-  }
-  auto quantile = [&](double q) {
-    const auto at = luminance.begin() + std::ptrdiff_t(q * double(n - 1));
-    std::nth_element(luminance.begin(), at, luminance.end());
-    return double(*at);
-  };
-  const double median = quantile(0.5), dark = quantile(0.01);
+  const std::vector<float> q = detail::luminanceQuantiles(codes, {0.5, 0.01});
+  if (q.empty()) return 1;
+  const double median = q[0], dark = q[1];
   return median > 0 ? std::clamp(dark / median, 0.0, 1.0) : 1.0;
 }
 
@@ -557,23 +546,15 @@ double threadCpuSeconds() {
 
 // Why the photo cannot determine a curve, or empty: nearly flat, nearly binary, mostly clipped.
 std::string photoIsUndetermined(const std::vector<unsigned char>& codes) {
-  const size_t n = codes.size() / 3;
+  const detail::LumaSpread spread = detail::lumaSpreadOf(codes);
+  const size_t n = spread.pixels;
   if (n == 0) return "the photo is empty";
-  std::array<size_t, 256> hist{};
-  double sum = 0, sum2 = 0;
-  size_t clipped = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const unsigned char* c = &codes[i * 3];
-    const int l = int(std::lround(lumaCode(c)));
-    ++hist[size_t(l)];
-    sum += l, sum2 += double(l) * l;
-    clipped += std::max({c[0], c[1], c[2]}) >= 254 || std::min({c[0], c[1], c[2]}) <= 1;
-  }
+  const double sum = double(spread.sum), sum2 = double(spread.sumOfSquares);
   const double sd = std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)));
-  if (double(clipped) > 0.5 * n) return "most of the photo is clipped to black or white";
+  if (double(spread.clipped) > 0.5 * n) return "most of the photo is clipped to black or white";
   if (sd < 2) return "the photo is nearly one flat colour";
-  const size_t populated =
-      size_t(std::count_if(hist.begin(), hist.end(), [&](size_t h) { return h * 1000 >= n; }));
+  const size_t populated = size_t(std::count_if(spread.histogram.begin(), spread.histogram.end(),
+                                                [&](size_t h) { return h * 1000 >= n; }));
   if (populated < 8)
     return "the photo is nearly binary (" + std::to_string(populated) + " grey levels in use)";
   return {};
