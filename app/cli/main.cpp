@@ -112,7 +112,7 @@ Render options:
                           glass object's bounding radius (default 0.05)
   --pixel-filter W        diagnostics: the camera's pixel filter, a Blackman-Harris window
                           reaching W pixels either side of a pixel's centre (Cycles'
-                          filter width); 0 or "box": the box of the pixel (default 0)
+                          filter width); 0 or "box": the box of the pixel (default 1.5)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
   --prepare-seed K        diagnostics: the preparation's own randomness (the lighting fit's

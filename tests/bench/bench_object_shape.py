@@ -4,8 +4,9 @@ the camera's pixel filter do to it, per room of ../shared/scenes-train.
 
 Per room the harness writes the assisted scene file (harness.py scene, the room's own photo) and
 inlay-cli renders it, seed 1, exactly --spp samples (uniform), once per run:
-  box           the product's render (the pixel filter as the CLI's default)
-  bh            --pixel-filter 1.5: Cycles' Blackman-Harris window of 1.5 px (the truth's filter)
+  box           --pixel-filter 0: the box of the pixel (the product's render before the filter)
+  bh            --pixel-filter 1.5: Cycles' Blackman-Harris window of 1.5 px (the truth's filter,
+                now the default)
   subdivided    the scene's mesh objects (a file, not builtin:) with "subdivide": --levels
                 (default 2): the truth renders its meshes as a subdivision surface of the file's
                 cage (below)
@@ -22,7 +23,9 @@ catmull_clark_wd_over_h those of its Catmull-Clark subdivision at 1..4 levels (t
 subdivision, boundaries as B-spline curves), for a mesh file only.
 
 Writes OUT/object_shape.csv (one row per room), OUT/object_shape.png (object RMSE per run and
-room; edge and inside parts), docs/bench/object_shape.md; composites stay in OUT.
+room; edge and inside parts), OUT/object_shape_crops.png (mesh rooms: the truth, the product and
+the subdivided render with the filter, and their differences), docs/bench/object_shape.md;
+composites stay in OUT.
 
 usage: bench_object_shape.py INLAY_CLI [--out DIR] [--rooms t01,t03|A|B] [--spp 64]
                              [--runs box,bh,...] [--levels 2] [--reuse]
@@ -154,7 +157,7 @@ def measure_room(cli, tools, room_dir, out, spp, runs, levels, reuse):
         if run.startswith("subdivided") and not meshes:
             continue
         sf = p("scene_subdivided.json") if run.startswith("subdivided") else p("scene.json")
-        extra = ["--pixel-filter", "1.5"] if run.endswith("bh") else []
+        extra = ["--pixel-filter", "1.5" if run.endswith("bh") else "0"]
         png = p(run + ".png")
         if not (reuse and os.path.exists(png)):
             cmd = [cli, "render", sf, "-o", png, "--quiet", "--seed", "1", "--spp", str(spp), "--seconds", "0",
@@ -190,6 +193,32 @@ def plot(out, rows):
         ax[0].legend(fontsize=7)
 
 
+def plot_crops(out, sdir, rows):
+    """Rooms whose object is a mesh file: the truth, the product's render and the subdivided one
+    with Cycles' filter around the object, and each one's difference to the truth (x3)."""
+    rows = [r for r in rows if isinstance(r.get("subdivided_bh_rmse"), float)]
+    runs = [("box", "product (the file's cage, box filter)"), ("subdivided_bh", "subdivided, 1.5 px filter")]
+    with benchlib.figure(os.path.join(out, "object_shape_crops.png"), len(rows), 5, figsize=(13, 2.8 * len(rows)),
+                         squeeze=False) as ax:
+        if ax is None:
+            return
+        for k, r in enumerate(rows):
+            room_dir = os.path.join(sdir, r["room"])
+            x0, y0, x1, y1 = json.load(open(os.path.join(room_dir, "truth.json")))["object"]["projected_bbox_2d"]
+            m = 8
+            box = (slice(max(int(y0) - m, 0), int(y1) + m), slice(max(int(x0) - m, 0), int(x1) + m))
+            rd = lambda f: cv2.imread(f, cv2.IMREAD_COLOR)[..., ::-1].astype(np.float64)[box] / 255
+            t = rd(os.path.join(room_dir, "truth.png"))
+            panels = [(t, "%s truth" % r["room"])]
+            for run, name in runs:
+                o = rd(os.path.join(out, "%s_%s.png" % (r["room"], run)))
+                panels += [(o, "%s: %.4f" % (name, r[run + "_rmse"])), (np.clip(0.5 + 3 * (o - t), 0, 1), "x3 difference")]
+            for a, (im, title) in zip(ax[k], panels):
+                a.imshow(im, interpolation="nearest")
+                a.set_title(title, fontsize=7)
+                a.axis("off")
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
@@ -206,6 +235,7 @@ def main():
                                                                                                "_inside_rmse")]
     benchlib.write_csv(os.path.join(out, "object_shape.csv"), rows, table="object_shape", columns=cols)
     plot(out, rows)
+    plot_crops(out, sdir, rows)
     print("wrote", os.path.join(out, "object_shape.csv"))
     return 0
 
