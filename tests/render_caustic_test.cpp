@@ -38,6 +38,7 @@ constexpr int kPhotons = 200000;  // the setting docs/generalization.md measures
 
 Rendered render(const RenderScene& s, int firstSample, int spp, int causticPhotons = kPhotons) {
   TracerOptions opt;
+  opt.pixelFilterWidth = 0;  // the box: the sample sequences the tolerances below were read on
   opt.maxDepth = 12;
   opt.causticPhotons = causticPhotons;
   PathTracer tracer(s, opt);

@@ -110,6 +110,9 @@ Render options:
                           setting; default 0: off, caustics by path tracing alone)
   --caustic-radius F      diagnostics: the caustic photons' gather radius as a fraction of the
                           glass object's bounding radius (default 0.05)
+  --pixel-filter W        diagnostics: the camera's pixel filter, a Blackman-Harris window
+                          reaching W pixels either side of a pixel's centre (Cycles'
+                          filter width); 0 or "box": the box of the pixel (default 1.5)
   --report FILE           the preparation's report as JSON: every stage with its seconds or why
                           this scene skipped it, and the warnings (also with decompose, export)
   --prepare-seed K        diagnostics: the preparation's own randomness (the lighting fit's
@@ -190,6 +193,7 @@ struct Args {
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
   std::optional<int> causticPhotons;    // --caustic-photons
   std::optional<double> causticRadius;  // --caustic-radius
+  std::optional<double> pixelFilter;    // --pixel-filter (0: the box)
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -233,7 +237,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
         s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
         s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
-        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius") {
+        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
+        s == "--pixel-filter") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -295,6 +300,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         const auto c = *v == "off" ? std::optional<double>(0.0) : parseNumber<double>(*v);
         if (!c) return "--clamp-indirect: '" + *v + "' is not a non-negative number or \"off\"";
         a.clampIndirect = *c;
+      } else if (s == "--pixel-filter") {
+        a.pixelFilter = *v == "box" ? std::optional<double>(0.0) : parseNumber<double>(*v);
+        if (!a.pixelFilter || !(*a.pixelFilter >= 0) || !(*a.pixelFilter <= 8))
+          return "--pixel-filter: '" + *v + "' is not a width in pixels in [0, 8] or \"box\"";
       } else if (s == "--caustic-radius") {
         a.causticRadius = parseNumber<double>(*v);
         if (!a.causticRadius || !(*a.causticRadius > 0))
@@ -669,6 +678,7 @@ TracerOptions tracerOptions(const Args& a, double clampIndirect) {
   t.clampRadiance = clampIndirect;
   if (a.causticPhotons) t.causticPhotons = *a.causticPhotons;
   if (a.causticRadius) t.causticRadius = *a.causticRadius;
+  if (a.pixelFilter) t.pixelFilterWidth = *a.pixelFilter;
   return t;
 }
 

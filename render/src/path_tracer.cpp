@@ -54,6 +54,7 @@
 #include "bsdf.h"
 #include "caustic_map.h"
 #include "embree_util.h"
+#include "pixel_filter.h"
 #include "room_texture.h"
 #include "sampling.h"
 #include "sun_patch.h"
@@ -205,7 +206,8 @@ double powerHeuristic(double a, double b) {
 struct PathTracer::Impl {
   RenderScene scene;
   TracerOptions options;
-  RoomTexture room;  // scene.roomAlbedo as room hits read it
+  PixelFilter pixelFilter;  // where in and around its pixel a camera sample leaves
+  RoomTexture room;         // scene.roomAlbedo as room hits read it
   RTCDevice device = nullptr;
   RTCScene withScene = nullptr;
   RTCScene withoutScene = nullptr;
@@ -1701,6 +1703,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   };
   d.scene = scene;
   d.options = options;
+  d.pixelFilter = PixelFilter(options.pixelFilterWidth);
   d.room = RoomTexture(scene.roomAlbedo);
   // The texture holds what room hits read of these (so the tracer's copy of the scene, which
   // scene() returns, keeps of roomAlbedo the camera, the surface means and the photo for
@@ -1896,7 +1899,8 @@ PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuff
 Vec3 PathTracer::Impl::cameraDirection(int x, int y, const PixelScale& scale,
                                        const SampleRng& rng) const {
   const auto jitter = rng.get2(0);
-  return scene.camera.directionThroughPixel(Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y));
+  return scene.camera.directionThroughPixel(Vec2((x + pixelFilter.position(jitter[0])) * scale.x,
+                                                 (y + pixelFilter.position(jitter[1])) * scale.y));
 }
 
 // The camera ray in direction `dir`.

@@ -99,7 +99,7 @@ def sky_window(truth):
     """The sky through a sun's window out of view as the truth has it (the window's rectangle,
     emitting into the room at the sky's radiance, photo units), or None."""
     sun = truth.get("sun") or {}
-    win, sky = sun.get("window", {}), sun.get("sky") or truth.get("spec", {}).get("sun", {}).get("sky")
+    win, sky = sun.get("window", {}), sun.get("sky") or (truth.get("spec", {}).get("sun") or {}).get("sky")
     if win.get("view_status") != "out_of_view" or not sky:
         return None
     c = np.array(to_ours(truth, win["world_corners"]), float)

@@ -57,6 +57,11 @@ struct TracerOptions {
                                  // reads per NEE vertex, none per ray): implied by timeRays
   bool roughGlassNee = true;     // next-event estimation (with MIS) at rough glass; false: found
                                  // by BSDF sampling alone (for comparison; suns then miss it)
+  // The camera's pixel filter (render/src/pixel_filter.h): 0 the box of the pixel; w > 0 a
+  // Blackman-Harris window reaching w pixels either side of the pixel's centre (Cycles'
+  // filter_width). 1.5, Cycles' default and the benchmark truth's: chosen on half A over the
+  // box (docs/generalization.md, "t06's object error, taken apart").
+  double pixelFilterWidth = 1.5;
   // Next-event estimation (with MIS) toward the sunlit patches the photo shows (the texels of
   // a sun's lit mask that bounces read the photo's radiance at): without it a bounce finds such
   // a bright patch by BSDF sampling alone, as fireflies. Scenes without a sun are unaffected.
