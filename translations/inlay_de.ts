@@ -561,6 +561,16 @@
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
+        <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2, mit sRGB %3</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the estimated curve was not used (%1); using sRGB</source>
+        <translation>die geschätzte Kurve wurde nicht verwendet (%1); verwende sRGB</translation>
+    </message>
+    <message>
         <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
@@ -2731,6 +2741,11 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <location filename="../app/studio/stage_text.cpp" line="28"/>
         <source>lighting refit</source>
         <translation>Neuanpassung der Beleuchtung</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="33"/>
+        <source>response check</source>
+        <translation>Prüfung der Kamerakennlinie</translation>
     </message>
     <message>
         <location filename="../app/studio/stage_text.cpp" line="29"/>

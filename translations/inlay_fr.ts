@@ -561,6 +561,16 @@
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
+        <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1, %3 avec sRGB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the estimated curve was not used (%1); using sRGB</source>
+        <translation>la courbe estimée n&apos;a pas été utilisée (%1) ; sRGB est utilisée</translation>
+    </message>
+    <message>
         <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
@@ -2731,6 +2741,11 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <location filename="../app/studio/stage_text.cpp" line="28"/>
         <source>lighting refit</source>
         <translation>réajustement de l&apos;éclairage</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="33"/>
+        <source>response check</source>
+        <translation>vérification de la courbe de réponse</translation>
     </message>
     <message>
         <location filename="../app/studio/stage_text.cpp" line="29"/>
