@@ -571,6 +571,49 @@ const StageRecord* stageNamed(const PreparedScene& ps, const std::string& name) 
   return nullptr;
 }
 
+// PrepareOptions::checkResponseByLightFit: the example (a plain sRGB render) with the noise cue's
+// evidence gate and acceptance off gets a false shoulder (about 880). The light fit explains
+// the photo worse with it (residual about 0.71 against sRGB's 0.15), so the check prepares the
+// scene again with sRGB and says why; off, the curve stays. The plain example under the
+// default gate keeps sRGB and is not prepared twice (no "response check" stage).
+TEST(Engine, TheLightFitTakesAwayACurveItExplainsThePhotoWorseWith) {
+  SceneDoc doc = exampleDoc();
+  PrepareOptions opt;
+  opt.responseEstimate.minSrgbResidual = 0;
+  opt.responseEstimate.minImprovement = 0;
+  opt.checkResponseByLightFit = false;
+  auto curved = prepareScene(doc, opt);
+  ASSERT_TRUE(curved.ok()) << curved.error().message();
+  ASSERT_EQ(curved->response.family(), ResponseFamily::ToeShoulder);
+  EXPECT_GT(curved->response.params().shoulder, 100);
+  EXPECT_EQ(stageNamed(*curved, "response check"), nullptr);
+  opt.checkResponseByLightFit = true;
+  auto checked = prepareScene(doc, opt);
+  ASSERT_TRUE(checked.ok()) << checked.error().message();
+  EXPECT_EQ(checked->response, CameraResponse::srgb());
+  ASSERT_TRUE(checked->responseEstimate);
+  EXPECT_EQ(checked->responseEstimate->response, CameraResponse::srgb());
+  EXPECT_EQ(checked->responseEstimate->decision.rfind("kept sRGB: the light fit's residual", 0), 0u)
+      << checked->responseEstimate->decision;
+  EXPECT_EQ(checked->doc.camera.response.mode, ResponseKeys::Mode::Auto);  // not written back as sRGB
+  EXPECT_LT(checked->lighting.fitResidualRelative, curved->lighting.fitResidualRelative);
+  const StageRecord* check = stageNamed(*checked, "response check");
+  ASSERT_NE(check, nullptr);
+  EXPECT_EQ(check->detail.rfind("sRGB kept: ", 0), 0u) << check->detail;
+  EXPECT_EQ(stageNamed(*checked, "response")->detail, "estimated");
+  size_t warned = 0;
+  for (const auto& w : checked->warnings)
+    warned += w.find("the estimated curve was not used") != std::string::npos;
+  EXPECT_EQ(warned, 1u);
+  // The same as preparing with sRGB outright: the lights are those of the plain example.
+  auto plain = preparedExample();
+  ASSERT_TRUE(plain.ok());
+  EXPECT_EQ(stageNamed(*plain, "response check"), nullptr);
+  ASSERT_EQ(checked->lighting.lights.size(), plain->lighting.lights.size());
+  for (size_t i = 0; i < plain->lighting.lights.size(); ++i)
+    EXPECT_EQ(checked->lighting.lights[i].radiance, plain->lighting.lights[i].radiance) << i;
+}
+
 // Every stage of the preparation is on record, in order, with its seconds or the reason this
 // scene skipped it: the example marks no occluder, surface or shaft.
 TEST(Engine, EveryStageIsReportedWithItsSecondsOrWhyItWasSkipped) {

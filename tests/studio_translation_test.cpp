@@ -513,6 +513,22 @@ void StudioTranslationTest::responseEstimateSentencesFollowTheLanguage() {
            QStringLiteral("sRGB conservée : la courbe ajustée toe_shoulder (power 0.996, toe 0.541, "
                           "shoulder 6.11) ne réduit le résidu (niveau de bruit) que de 0.7113 "
                           "à 0.3843"));
+  // The pipeline's check of an estimated curve (PrepareOptions::checkResponseByLightFit): its
+  // decision and warning.
+  const QString why = QStringLiteral(
+      "the light fit's residual with the fitted toe_shoulder (power 0.990, toe 0.000, shoulder 998) is "
+      "0.2010, with sRGB 0.1797");
+  QCOMPARE(engineText(QStringLiteral("kept sRGB: ") + why),
+           QStringLiteral("sRGB conservée : le résidu de l'ajustement de la lumière vaut 0.2010 avec la "
+                          "courbe ajustée toe_shoulder (power 0.990, toe 0.000, shoulder 998), 0.1797 "
+                          "avec sRGB"));
+  QVERIFY(installTranslators(QStringLiteral("de")));
+  QCOMPARE(
+      engineText(QStringLiteral("camera response: the estimated curve was not used (") + why +
+                 QStringLiteral("); using sRGB")),
+      QStringLiteral("Kamerakennlinie: die geschätzte Kurve wurde nicht verwendet (das Residuum der "
+                     "Lichtanpassung ist mit der angepassten Kurve toe_shoulder (power 0.990, toe "
+                     "0.000, shoulder 998) 0.2010, mit sRGB 0.1797); verwende sRGB"));
   removeTranslators();
 }
 

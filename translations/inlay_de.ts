@@ -561,417 +561,427 @@
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
+        <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2, mit sRGB %3</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <source>the estimated curve was not used (%1); using sRGB</source>
+        <translation>die geschätzte Kurve wurde nicht verwendet (%1); verwende sRGB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="113"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="115"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="118"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="137"/>
         <source>none marked</source>
         <translation>keine markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>no sun marked</source>
         <translation>keine Sonne markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>none inserted</source>
         <translation>keine eingefügt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>turned off</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="139"/>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
         <source>no light marked</source>
         <translation>kein Licht markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>every light locked</source>
         <translation>jedes Licht gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="146"/>
         <source>the working copy is the photo</source>
         <translation>die Arbeitskopie ist das Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="147"/>
         <source>the lights were not refined</source>
         <translation>die Lichter wurden nicht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="148"/>
         <source>no light moved</source>
         <translation>kein Licht bewegt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting ist &quot;none&quot; (die Voreinstellung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>linear photo</source>
         <translation>lineares Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>the photo area-averaged</source>
         <translation>das Foto flächengemittelt verkleinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the photo&apos;s own size</source>
         <translation>die eigene Größe des Fotos</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>estimated from the photo</source>
         <translation>aus dem Foto geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>v %1 applied</source>
         <translation>v %1 angewandt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>das Residuum der Lichtanpassung zeigt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>the light fit run again</source>
         <translation>die Lichtanpassung erneut ausgeführt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="277"/>
+        <location filename="../app/studio/engine_text.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2758,6 +2768,11 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Neuanpassung der Beleuchtung</translation>
     </message>
     <message>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <source>response check</source>
+        <translation>Prüfung der Kamerakennlinie</translation>
+    </message>
+    <message>
         <location filename="../app/studio/stage_text.cpp" line="30"/>
         <source>photo size</source>
         <translation>Fotogröße</translation>
@@ -2778,62 +2793,62 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Körnung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="35"/>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
         <source>gather</source>
         <translation>Sammeln</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <location filename="../app/studio/stage_text.cpp" line="37"/>
         <source>light fit</source>
         <translation>Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
         <source>unseen patches</source>
         <translation>unsichtbare Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
         <source>retinex</source>
         <translation>Retinex</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
         <source>direct light</source>
         <translation>direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <location filename="../app/studio/stage_text.cpp" line="42"/>
         <source>fit pixels</source>
         <translation>Anpassungspixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="42"/>
+        <location filename="../app/studio/stage_text.cpp" line="43"/>
         <source>per-pixel albedo</source>
         <translation>Albedo je Pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <location filename="../app/studio/stage_text.cpp" line="58"/>
         <source>; CPU s: %1</source>
         <translation>; CPU-s: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="66"/>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="68"/>
+        <location filename="../app/studio/stage_text.cpp" line="69"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1: %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="75"/>
+        <location filename="../app/studio/stage_text.cpp" line="76"/>
         <source>at %1 x %2 px</source>
         <translation>bei %1 x %2 px</translation>
     </message>

@@ -561,417 +561,427 @@
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="109"/>
+        <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
+        <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1, %3 avec sRGB</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <source>the estimated curve was not used (%1); using sRGB</source>
+        <translation>la courbe estimée n&apos;a pas été utilisée (%1) ; sRGB est utilisée</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="113"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="118"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="115"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="118"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="137"/>
         <source>none marked</source>
         <translation>aucun marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>no sun marked</source>
         <translation>aucun soleil marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>none inserted</source>
         <translation>aucun inséré</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>turned off</source>
         <translation>désactivé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="139"/>
+        <location filename="../app/studio/engine_text.cpp" line="143"/>
         <source>no light marked</source>
         <translation>aucune lumière marquée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>every light locked</source>
         <translation>chaque lumière verrouillée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="146"/>
         <source>the working copy is the photo</source>
         <translation>la copie de travail est la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="147"/>
         <source>the lights were not refined</source>
         <translation>les lumières n&apos;ont pas été affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="148"/>
         <source>no light moved</source>
         <translation>aucune lumière déplacée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting vaut &quot;none&quot; (par défaut)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>linear photo</source>
         <translation>photo linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>the photo area-averaged</source>
         <translation>la photo réduite par moyenne de surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the photo&apos;s own size</source>
         <translation>la taille propre de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>estimated from the photo</source>
         <translation>estimée d&apos;après la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>v %1 applied</source>
         <translation>v %1 appliqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>le résidu de l&apos;ajustement des lumières montre %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>the light fit run again</source>
         <translation>l&apos;ajustement des lumières refait</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="277"/>
+        <location filename="../app/studio/engine_text.cpp" line="281"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -2758,6 +2768,11 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>réajustement de l&apos;éclairage</translation>
     </message>
     <message>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <source>response check</source>
+        <translation>vérification de la courbe de réponse</translation>
+    </message>
+    <message>
         <location filename="../app/studio/stage_text.cpp" line="30"/>
         <source>photo size</source>
         <translation>taille de la photo</translation>
@@ -2778,62 +2793,62 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>grain</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="35"/>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
         <source>gather</source>
         <translation>collecte</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <location filename="../app/studio/stage_text.cpp" line="37"/>
         <source>light fit</source>
         <translation>ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
         <source>unseen patches</source>
         <translation>zones hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
         <source>retinex</source>
         <translation>Retinex</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
         <source>direct light</source>
         <translation>lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <location filename="../app/studio/stage_text.cpp" line="42"/>
         <source>fit pixels</source>
         <translation>pixels de l&apos;ajustement</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="42"/>
+        <location filename="../app/studio/stage_text.cpp" line="43"/>
         <source>per-pixel albedo</source>
         <translation>albédo par pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <location filename="../app/studio/stage_text.cpp" line="58"/>
         <source>; CPU s: %1</source>
         <translation> ; s CPU : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="66"/>
+        <location filename="../app/studio/stage_text.cpp" line="67"/>
         <source>%1: skipped, %2</source>
         <translation>%1 : ignorée, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="68"/>
+        <location filename="../app/studio/stage_text.cpp" line="69"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1 : %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="75"/>
+        <location filename="../app/studio/stage_text.cpp" line="76"/>
         <source>at %1 x %2 px</source>
         <translation>à %1 x %2 px</translation>
     </message>

@@ -553,6 +553,8 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
           {"suns_initial", sunsJson(ps.initialSuns)},
           {"suns_refined", sunsJson(ps.lighting.suns)},
           {"unseen_ceiling", unseenCeilingJson(ps)},
+          {"fit",  // the last light fit's residual (LightingEstimate::fitResidualRelative, fitRmsLog)
+           {{"residual_relative", ps.lighting.fitResidualRelative}, {"rms_log", ps.lighting.fitRmsLog}}},
           {"vignetting",  // the last light fit's residual read as 1 - v r^2; camera.vignetting's choice
            {{"v", ps.lighting.vignetting},
             {"residual_ratio", ps.lighting.vignettingResidualRatio},

@@ -105,6 +105,10 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "too little evidence for a curve other than sRGB (%1)"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "an implausible curve was refused (%1); using sRGB"),
+    // The pipeline's check of an estimated curve (app/engine/src/pipeline.cpp).
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the light fit's residual with the fitted %1 is %2, with sRGB %3"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the estimated curve was not used (%1); using sRGB"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the fitted %1 lies at the family's bound (%2): the camera's curve may be "
                       "stronger than the family holds"),

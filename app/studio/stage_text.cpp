@@ -31,6 +31,7 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "render scene"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "objects"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "grain"),
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "response check"),
     // The lighting's steps.
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "gather"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "light fit"),

@@ -730,7 +730,7 @@ Status loadPhoto(Preparation& p, std::string& detail) {
 
 // The camera response; from here on everything works in the linearised radiance.
 Status chooseResponse(Preparation& p, std::string& detail) {
-  ResponseEstimateOptions ro;
+  ResponseEstimateOptions ro = p.opt.responseEstimate;
   ro.cancel = p.opt.cancel;
   ChosenResponse chosen = responseOf(p.doc.camera.response, p.ps.photo, ro);
   if (p.cancelled()) return cancelledError();
@@ -1257,9 +1257,8 @@ Status runStage(const Stage& stage, Preparation& p) {
   return p.cancelled() ? Status(cancelledError()) : Status();
 }
 
-}  // namespace
-
-Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+// Every stage of prepareScene() in turn.
+Expected<PreparedScene> prepareStages(const SceneDoc& doc, const PrepareOptions& opt) {
   using At = Stage::At;
   static const Stage kStages[] = {
       {"photo", "photo", nullptr, loadPhoto, At::Photo},
@@ -1288,8 +1287,62 @@ Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& 
     // The lighting's rays (tens of MB) serve only its refit: dropped before the photo-size maps.
     if (stage.run == refitTheLighting) p.ps.lighting.rays.reset();
   }
-  if (opt.progress) opt.progress("objects", 1);
   return std::move(p.ps);
+}
+
+// The scene prepared with sRGB in place of the estimated curve `curved` used: the estimate and
+// the scene file's "auto" kept, the decision and a warning saying why, the "response" stage's
+// detail "estimated" again.
+PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved,
+                                    const std::string& why) {
+  srgb.doc = std::move(curved.doc);
+  srgb.responseEstimate = std::move(curved.responseEstimate);
+  srgb.responseEstimate->decision = "kept sRGB: " + why;
+  srgb.responseEstimate->response = CameraResponse::srgb();
+  srgb.warnings.push_back("camera response: the estimated curve was not used (" + why + "); using sRGB");
+  for (StageRecord& r : srgb.stages)
+    if (r.name == "response") r.detail = "estimated";
+  return std::move(srgb);
+}
+
+// PrepareOptions::checkResponseByLightFit: `curved` (prepared with the estimated curve) against
+// the scene prepared again with sRGB; the one whose light fit explains the photo better, and a
+// stage record "response check" with the two residuals.
+Expected<PreparedScene> checkTheCurveByTheLightFit(PreparedScene&& curved, const SceneDoc& doc,
+                                                   const PrepareOptions& opt) {
+  const auto t = Clock::now();
+  const double cpu0 = processCpuSeconds();
+  SceneDoc srgbDoc = doc;
+  srgbDoc.camera.response = {ResponseKeys::Mode::Srgb};
+  Expected<PreparedScene> srgb = prepareStages(srgbDoc, opt);
+  if (!srgb && srgb.error().reason == cancelledError().reason) return srgb.error();
+  StageRecord record;
+  record.name = "response check";
+  record.ran = true;
+  const double withCurve = curved.lighting.fitResidualRelative;
+  const double withSrgb = srgb ? srgb->lighting.fitResidualRelative : std::nan("");
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "the light fit's residual with the fitted %s is %.4f, with sRGB %.4f",
+                curved.response.describe().c_str(), withCurve, withSrgb);
+  const bool keepCurve = !srgb || !refitFitsWorse(withSrgb, withCurve, opt.responseFitTolerance);
+  record.detail = std::string(keepCurve ? "the curve kept: " : "sRGB kept: ") + buf;
+  PreparedScene out = keepCurve ? std::move(curved)
+                                : srgbInsteadOfTheCurve(std::move(*srgb), std::move(curved), buf);
+  record.seconds = secondsSince(t);
+  record.cpuSeconds = processCpuSeconds() - cpu0;
+  out.stages.push_back(std::move(record));
+  return out;
+}
+
+}  // namespace
+
+Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
+  Expected<PreparedScene> ps = prepareStages(doc, opt);
+  if (ps && opt.checkResponseByLightFit && ps->responseEstimate &&
+      ps->response.family() == ResponseFamily::ToeShoulder)
+    ps = checkTheCurveByTheLightFit(std::move(*ps), doc, opt);
+  if (ps && opt.progress) opt.progress("objects", 1);
+  return ps;
 }
 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {

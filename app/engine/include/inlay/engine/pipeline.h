@@ -187,6 +187,19 @@ struct PrepareOptions {
   // LightingOptions::fitUnseenCeiling and renderFittedCeiling (diagnostics: --unseen-ceiling).
   bool fitUnseenCeiling = true;
   bool renderFittedCeiling = false;
+  // camera.response "auto": a curve the estimate fitted is kept only when the light fit explains
+  // the photo at least as well with it as with sRGB. The scene is prepared again with sRGB, and
+  // when the curve's LightingEstimate::fitResidualRelative is larger than sRGB's by more than
+  // `responseFitTolerance` of it (refitFitsWorse), the sRGB preparation is returned, with a
+  // warning and the estimate's decision saying why. Measured on half A of the random cameras
+  // (docs/camera-response.md, "The light fit checks the estimated curve"): both curves it met
+  // made the object worse and both left a larger residual. Costs a second preparation, only on
+  // photos the estimate gives a curve. False: the estimate's curve is always kept.
+  bool checkResponseByLightFit = true;
+  double responseFitTolerance = 0;
+  // The response estimate's options for "auto" (its `cancel` is this struct's): tests and
+  // diagnostics.
+  ResponseEstimateOptions responseEstimate;
 };
 
 // The camera and back wall of a scene: what the file gives is kept, the rest estimated from the
