@@ -83,6 +83,13 @@ TEST(SampleRng, FastPathMatchesTheReferenceBitForBit) {
       const auto fast = rng.get2(pair), reference = rng.getReference2(pair);
       ASSERT_EQ(fast[0], reference[0]) << sample << " " << pair;
       ASSERT_EQ(fast[1], reference[1]) << sample << " " << pair;
+      // A vertex's four pairs at once: the same numbers as four calls (pairs past the table's
+      // end, and pair + k wrapping around at 2^32, included).
+      const auto four = rng.get2x4(pair);
+      for (uint32_t k = 0; k < 4; ++k) {
+        ASSERT_EQ(four[k][0], rng.getReference2(pair + k)[0]) << sample << " " << pair << "+" << k;
+        ASSERT_EQ(four[k][1], rng.getReference2(pair + k)[1]) << sample << " " << pair << "+" << k;
+      }
     }
 }
 

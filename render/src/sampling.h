@@ -117,6 +117,22 @@ class SampleRng {
     return {toUnit(reverseBits(laineKarras(index, pcgHash(pairSeed)))),
             toUnit(reverseBits(laineKarras(reversedSobol1(index), pcgHash(pairSeed + 1u))))};
   }
+  // get2(first), ..., get2(first + 3): the same numbers, the four pairs' chains of hashes
+  // interleaved (a path vertex draws its four pairs at once; one call's chain is latency-bound).
+  std::array<std::array<double, 2>, 4> get2x4(uint32_t first) const {
+    uint32_t seed[4], index[4], a[4], b[4];
+    for (uint32_t k = 0; k < 4; ++k) {
+      const uint32_t pair = first + k;
+      seed[k] = pcgHash(pixelKey_ ^ (pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair)));
+    }
+    for (uint32_t k = 0; k < 4; ++k) index[k] = reverseBits(laineKarras(reversedSample_, seed[k]));
+    for (uint32_t k = 0; k < 4; ++k) a[k] = reverseBits(laineKarras(index[k], pcgHash(seed[k])));
+    for (uint32_t k = 0; k < 4; ++k) b[k] = reverseBits(laineKarras(reversedSobol1(index[k]), pcgHash(seed[k] + 1u)));
+    return {{{toUnit(a[0]), toUnit(b[0])},
+             {toUnit(a[1]), toUnit(b[1])},
+             {toUnit(a[2]), toUnit(b[2])},
+             {toUnit(a[3]), toUnit(b[3])}}};
+  }
   // get2() as Burley's paper writes it (the tests hold get2() to it).
   std::array<double, 2> getReference2(uint32_t pair) const {
     const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
