@@ -127,7 +127,8 @@ class SampleRng {
     }
     for (uint32_t k = 0; k < 4; ++k) index[k] = reverseBits(laineKarras(reversedSample_, seed[k]));
     for (uint32_t k = 0; k < 4; ++k) a[k] = reverseBits(laineKarras(index[k], pcgHash(seed[k])));
-    for (uint32_t k = 0; k < 4; ++k) b[k] = reverseBits(laineKarras(reversedSobol1(index[k]), pcgHash(seed[k] + 1u)));
+    for (uint32_t k = 0; k < 4; ++k)
+      b[k] = reverseBits(laineKarras(reversedSobol1(index[k]), pcgHash(seed[k] + 1u)));
     return {{{toUnit(a[0]), toUnit(b[0])},
              {toUnit(a[1]), toUnit(b[1])},
              {toUnit(a[2]), toUnit(b[2])},
