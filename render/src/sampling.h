@@ -151,6 +151,37 @@ class SampleRng {
   uint32_t reversedSample_;  // reverseBits(sample_)
 };
 
+// sin x and cos x together for the samplers' angles (2 pi u, a spherical polygon's area): the
+// nearest multiple q of pi/2 taken off in two parts (Cody and Waite; exact for |q| < 2^20), then
+// Taylor polynomials to x^15 and x^16 on [-pi/4, pi/4] (truncation below 1e-17) turned by the
+// quadrant. Within a few ulp of std::sin / std::cos, without glibc's sincos call and its
+// general range reduction; |x| >= 1e6, Inf and NaN go to the library.
+inline void sinCos(double x, double* sinX, double* cosX) {
+  if (!(std::abs(x) < 1e6)) {
+    *sinX = std::sin(x), *cosX = std::cos(x);
+    return;
+  }
+  constexpr double kTwoOverPi = 0.63661977236758134308, kPiOver2Hi = 1.57079632673412561417,
+                   kPiOver2Lo = 6.07710050650619224932e-11;
+  const double q = std::floor(x * kTwoOverPi + 0.5);
+  const double r = (x - q * kPiOver2Hi) - q * kPiOver2Lo, z = r * r;
+  // Taylor coefficients: sin r = r + r z (kSin[0] + z kSin[1] + ...), cos r = 1 + z (kCos[0] + ...).
+  constexpr double kSin[7] = {-1.0 / 6,        1.0 / 120,        -1.0 / 5040,         1.0 / 362880,
+                              -1.0 / 39916800, 1.0 / 6227020800, -1.0 / 1307674368000};
+  constexpr double kCos[8] = {-1.0 / 2,       1.0 / 24,        -1.0 / 720,         1.0 / 40320,
+                              -1.0 / 3628800, 1.0 / 479001600, -1.0 / 87178291200, 1.0 / 20922789888000};
+  double ps = kSin[6], pc = kCos[7];
+  for (int i = 5; i >= 0; --i) ps = kSin[i] + z * ps;
+  for (int i = 6; i >= 0; --i) pc = kCos[i] + z * pc;
+  const double s = r + r * z * ps, c = 1.0 + z * pc;
+  switch (int64_t(q) & 3) {
+    case 0: *sinX = s, *cosX = c; break;
+    case 1: *sinX = c, *cosX = -s; break;
+    case 2: *sinX = -s, *cosX = -c; break;
+    default: *sinX = -c, *cosX = s; break;
+  }
+}
+
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
 struct Frame {
   Vec3 s, t, n;
@@ -168,8 +199,9 @@ struct Frame {
 // Cosine-weighted hemisphere around +z (local); pdf = cos / pi.
 inline Vec3 sampleCosineHemisphere(double u1, double u2) {
   const double r = std::sqrt(u1);
-  const double phi = 2.0 * kPi * u2;
-  return Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u1)));
+  double sinPhi, cosPhi;
+  sinCos(2.0 * kPi * u2, &sinPhi, &cosPhi);
+  return Vec3(r * cosPhi, r * sinPhi, std::sqrt(std::max(0.0, 1.0 - u1)));
 }
 
 // The share of a planar quad's area in its first triangle (c0 c1 c2); 0.5 for a quad of no area.
@@ -234,8 +266,9 @@ struct SphericalRect {
   }
 
   Vec3 sample(double u, double v) const {
-    const double au = u * solidAngle + k;
-    const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
+    double sinAu, cosAu;
+    sinCos(u * solidAngle + k, &sinAu, &cosAu);
+    const double fu = (cosAu * b0 - b1) / sinAu;
     double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + b0 * b0);
     cu = std::clamp(cu, -1.0, 1.0);
     double xu = -(cu * z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
@@ -286,8 +319,9 @@ struct SphericalTriangle {
     const Vec3 uab = nab.normalized(), uca = nca.normalized();
     const double cosA = std::clamp(-uab.dot(uca), -1.0, 1.0), sinA = uab.cross(uca).norm();
     // sin and cos of pi + u0 solidAngle (the sub-triangle's angle sum).
-    const double sub = u0 * solidAngle;
-    const double sinAp = -std::sin(sub), cosAp = -std::cos(sub);
+    double sinSub, cosSub;
+    sinCos(u0 * solidAngle, &sinSub, &cosSub);
+    const double sinAp = -sinSub, cosAp = -cosSub;
     const double sinPhi = sinAp * cosA - cosAp * sinA;
     const double cosPhi = cosAp * cosA + sinAp * sinA;
     const double k1 = cosPhi + cosA;
@@ -387,11 +421,12 @@ inline double ggxG1(const Vec3& w, double alpha) {
 }
 // Half vector sampled with pdf D(h) cos(h).
 inline Vec3 sampleGgxHalfVector(double alpha, double u1, double u2) {
-  const double phi = 2.0 * kPi * u2;
+  double sinPhi, cosPhi;
+  sinCos(2.0 * kPi * u2, &sinPhi, &cosPhi);
   const double tan2 = alpha * alpha * u1 / std::max(1e-300, 1.0 - u1);
   const double cosT = 1.0 / std::sqrt(1.0 + tan2);
   const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
-  return Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
+  return Vec3(sinT * cosPhi, sinT * sinPhi, cosT);
 }
 
 inline double maxComponent(const Vec3& v) { return std::max({v.x(), v.y(), v.z()}); }
