@@ -288,6 +288,7 @@ struct SphericalTriangle {
   Vec3 o, a, b, c;  // unit directions to the corners
   Vec3 planePoint, planeNormal;
   Vec3 nab, nbc, nca;  // normals of the great circles through the corners (not unit)
+  double triple = 0;   // |a . (b x c)|
   double solidAngle = 0;
 
   // The solid angle only: the triangle's angles are worked out when it is sampled (a quad
@@ -299,7 +300,7 @@ struct SphericalTriangle {
   SphericalTriangle(const Vec3& A, const Vec3& B, const Vec3& C, const Vec3& origin, const Vec3& unitA,
                     const Vec3& unitB, const Vec3& unitC)
       : o(origin), a(unitA), b(unitB), c(unitC), planePoint(A), planeNormal((B - A).cross(C - A)) {
-    const double triple = std::abs(a.dot(b.cross(c)));
+    triple = std::abs(a.dot(b.cross(c)));
     // The arctangent in float: its relative error (~1e-7) is far below any image's noise, and
     // glibc's double atan2 costs twice as much (it saves and restores the rounding mode).
     const double sa = 2.0 *
@@ -312,12 +313,13 @@ struct SphericalTriangle {
   }
 
   // The point on the triangle in the sampled direction. Arvo's inversion needs the corner
-  // angle alpha at a only as its cosine and sine (a dot and a cross product of the great
-  // circles' normals, no inverse trigonometry), and the sub-triangle's area u0 x solidAngle
-  // (the same solid angle the pdf uses): one sincos in all.
+  // angle alpha at a only as its cosine and sine (the great circles' normals' dot product, and
+  // |nab x nca| = |a . (b x c)|, both over |nab| |nca|: no inverse trigonometry, one square
+  // root), and the sub-triangle's area u0 x solidAngle (the same solid angle the pdf uses): one
+  // sincos in all.
   Vec3 sample(double u0, double u1) const {
-    const Vec3 uab = nab.normalized(), uca = nca.normalized();
-    const double cosA = std::clamp(-uab.dot(uca), -1.0, 1.0), sinA = uab.cross(uca).norm();
+    const double inv = 1.0 / std::sqrt(nab.squaredNorm() * nca.squaredNorm());
+    const double cosA = std::clamp(-nab.dot(nca) * inv, -1.0, 1.0), sinA = std::min(1.0, triple * inv);
     // sin and cos of pi + u0 solidAngle (the sub-triangle's angle sum).
     double sinSub, cosSub;
     sinCos(u0 * solidAngle, &sinSub, &cosSub);
