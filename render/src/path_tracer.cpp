@@ -1230,12 +1230,11 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
                                      st.depth >= 1)
                      : Vec3(Vec3::Zero());
   // The shadow ray runs from the offset origin to the sampled point itself, stopping just
-  // short of the emitter (which would otherwise block its own light).
+  // short of the emitter (which would otherwise block its own light): its direction is the
+  // segment itself, not normalised (Embree's t is then the fraction of it).
   const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
-  Vec3 ws = p.y - o;
-  const double ds = ws.norm();
-  ws /= ds;
-  const double tFar = ds * (1.0 - 1e-4);
+  const Vec3 ws = p.y - o;
+  const double tFar = 1.0 - 1e-4;
   if (p.mesh) {
     // An emissive object exists in the with-scene only.
     if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
