@@ -768,7 +768,8 @@ struct PathTracer::Impl {
   void addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const;
   bool endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const;
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
-  Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
+  // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
+  [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                           const SampleRng& rng, Sums& out, Hit* next) const;
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
