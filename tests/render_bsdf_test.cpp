@@ -115,6 +115,32 @@ TEST(SinCos, MatchesTheLibraryToAFewUlp) {
   }
 }
 
+// The spherical triangles' arctangent agrees with the library's to a relative 1e-7 over the
+// upper half plane (tiny, huge, on the axes and the diagonals) and passes zeros, Inf and NaN
+// on as the library does.
+TEST(Atan2NonNegative, MatchesTheLibrary) {
+  double worst = 0;
+  for (int i = -300; i <= 300; ++i)
+    for (int j = 0; j <= 64; ++j) {
+      const double r = std::pow(10.0, i / 20.0), phi = kPi * j / 64;
+      const double y = std::abs(r * std::sin(phi)), x = r * std::cos(phi), ref = std::atan2(y, x);
+      if (ref > 0) worst = std::max(worst, std::abs(atan2NonNegative(y, x) - ref) / ref);
+    }
+  EXPECT_LT(worst, 1e-7);
+  const double inf = std::numeric_limits<double>::infinity(),
+               nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& [y, x] : std::vector<std::pair<double, double>>{{0.0, 1.0},
+                                                                   {0.0, -1.0},
+                                                                   {0.0, 0.0},
+                                                                   {0.0, -0.0},
+                                                                   {1.0, 0.0},
+                                                                   {inf, 1.0},
+                                                                   {1.0, -inf},
+                                                                   {inf, inf}})
+    EXPECT_EQ(atan2NonNegative(y, x), std::atan2(y, x)) << y << " " << x;
+  EXPECT_TRUE(std::isnan(atan2NonNegative(nan, 1.0)) && std::isnan(atan2NonNegative(1.0, nan)));
+}
+
 // Lambert's closed form of the projected solid angle a triangle subtends at o (normal n):
 // half the sum over its edges of the edge's angle times n . the unit normal of its plane.
 double projectedSolidAngle(const std::array<Vec3, 3>& c, const Vec3& o, const Vec3& n) {

@@ -182,6 +182,26 @@ inline void sinCos(double x, double* sinX, double* cosX) {
   }
 }
 
+// atan2(y, x) for y >= 0 (a spherical triangle's half solid angle, in [0, pi]) to a relative
+// 2e-8 (the float arctangent it replaces: 2e-7), without a libm call: the octant by comparisons,
+// one division, then Cephes' atanf polynomial on |t| <= tan(pi/8). Zero and non-finite
+// arguments go to the library.
+inline double atan2NonNegative(double y, double x) {
+  const double ax = std::abs(x);
+  const bool steep = y > ax;  // above the diagonal: pi/2 - atan(ax / y)
+  const double num = steep ? ax : y, den = steep ? y : ax;
+  if (!(den > 0) || !std::isfinite(den) || !(num >= 0)) return std::atan2(y, x);
+  const bool upper = num > 0.41421356237309503 * den;  // t > tan(pi/8): pi/4 + atan((t-1)/(t+1))
+  const double t = upper ? (num - den) / (num + den) : num / den, z = t * t;
+  double r =
+      (((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z - 3.33329491539e-1) * z *
+          t +
+      t;
+  if (upper) r += kPi / 4;
+  if (steep) r = kPi / 2 - r;
+  return x < 0 ? kPi - r : r;
+}
+
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
 struct Frame {
   Vec3 s, t, n;
@@ -301,10 +321,8 @@ struct SphericalTriangle {
                     const Vec3& unitB, const Vec3& unitC)
       : o(origin), a(unitA), b(unitB), c(unitC), planePoint(A), planeNormal((B - A).cross(C - A)) {
     triple = std::abs(a.dot(b.cross(c)));
-    // The arctangent in float: its relative error (~1e-7) is far below any image's noise, and
-    // glibc's double atan2 costs twice as much (it saves and restores the rounding mode).
-    const double sa = 2.0 *
-                      double(std::atan2(float(triple), float(1.0 + a.dot(b) + b.dot(c) + c.dot(a))));
+    // The arctangent to a relative 2e-8, far below any image's noise, without libm's call.
+    const double sa = 2.0 * atan2NonNegative(triple, 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
     nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
     if (!(sa > 0) || !std::isfinite(sa) || nab.squaredNorm() == 0 || nbc.squaredNorm() == 0 ||
         nca.squaredNorm() == 0)
