@@ -735,14 +735,18 @@ struct PathTracer::Impl {
 
   // tracePath's steps.
   // A surface vertex as the steps after its hit see it: the normals turned to the side the
-  // path arrived from, the ray offset, the vertex's first random dimension and its light-pick
-  // and lobe numbers.
+  // path arrived from, the ray offset, the vertex's first random dimension and its four pairs
+  // of random numbers, drawn at once (SampleRng::get2x4).
   struct Vertex {
     Vec3 point, wo, ngFacing, ns;
     bool frontSide = true;  // the path arrived on the side the geometric normal points to
     double eps = 0;
     uint32_t dim = 0;
-    std::array<double, 2> pickAndLobe{};
+    std::array<std::array<double, 2>, 4> u{};  // pairs dim / 2 + 0 .. 3: the roles below
+    const std::array<double, 2>& lightPoint() const { return u[0]; }   // NEE's point on the source
+    const std::array<double, 2>& direction() const { return u[1]; }    // the BSDF's direction
+    const std::array<double, 2>& pickAndLobe() const { return u[2]; }  // light pick, BSDF lobe
+    double roulette() const { return u[3][0]; }                        // (dim + 7: occluder cards)
   };
   // A non-specular BSDF in its local frame at a vertex.
   struct Lobe {
@@ -766,16 +770,16 @@ struct PathTracer::Impl {
   void addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const;
   bool endsOnPhoto(Mode mode, PathState& st, const Hit& hit, const SampleRng& rng, Sums& out) const;
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
-  Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
+  // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
+  [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                           const SampleRng& rng, Sums& out, Hit* next) const;
-  bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
-                  const SampleRng& rng) const;
+  bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
                                    Vec3* y);
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                       const SampleRng& rng, Sums& out) const;
+                       Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
   void addSunPatchSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                          const SampleRng& rng, Sums& out) const;
@@ -792,7 +796,7 @@ struct PathTracer::Impl {
   bool scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const;
   bool splitGlass(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                   const SampleRng& rng, Sums& out) const;
-  bool survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const;
+  bool survivesRoulette(PathState& st, const Vertex& v) const;
 
   // The caustic photon pass (TracerOptions::causticPhotons).
   struct GlassTarget {
@@ -916,7 +920,7 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
                                                             : scatterGlass(st, v, bsdf);
     if (!goesOn) return;
     st.tNear = 0;
-    if (!survivesRoulette(st, v, rng)) return;
+    if (!survivesRoulette(st, v)) return;
   }
 }
 
@@ -1097,7 +1101,7 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
   if (v.ns.dot(v.ngFacing) < 0) v.ns = -v.ns;
   v.eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
   v.dim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex;
-  v.pickAndLobe = rng.get2(v.dim / 2 + 2);
+  v.u = rng.get2x4(v.dim / 2);
   return v;
 }
 
@@ -1118,7 +1122,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   // copies its state.
   if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
   PathState after = st;
-  const bool goesOn = bounceFrom(after, v, lobe, nee, rng) && survivesRoulette(after, v, rng);
+  const bool goesOn = bounceFrom(after, v, lobe, nee) && survivesRoulette(after, v);
   if (goesOn) {
     PathState ray = after;
     ++ray.depth;
@@ -1126,7 +1130,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   }
   if (nee) {
     const int64_t neeStart = neeClockNs();
-    addSourceSample(mode, st, v, lobe, rng, out);
+    addSourceSample(mode, st, v, lobe, out);
     addSunLight(mode, st, v, lobe, out);
     if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
     out.counters.neeNs += neeClockNs() - neeStart;
@@ -1137,10 +1141,9 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
 
 // The next ray from a non-specular vertex, sampled from its BSDF, into `st`; false when the
 // path ends here.
-bool PathTracer::Impl::bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
-                                  const SampleRng& rng) const {
-  const auto uDir = rng.get2(v.dim / 2 + 1);
-  const BsdfSample s = lobe.bsdf.sample(lobe.woLocal, v.pickAndLobe[1], uDir[0], uDir[1]);
+bool PathTracer::Impl::bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const {
+  const auto& uDir = v.direction();
+  const BsdfSample s = lobe.bsdf.sample(lobe.woLocal, v.pickAndLobe()[1], uDir[0], uDir[1]);
   if (!s.valid) return false;
   st.dir = lobe.frame.toWorld(s.dir).normalized();
   const bool reflected = s.dir.z() > 0;
@@ -1201,13 +1204,13 @@ double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from
 // squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
 // the BSDF, with a shadow ray.
 void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                                       const SampleRng& rng, Sums& out) const {
+                                       Sums& out) const {
   double selectProb = 0;
   const size_t li = sourceCount() == 0
                         ? sourceCount()
-                        : pickLight(v.point, lobe.selectNormal, v.pickAndLobe[0], &selectProb);
+                        : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &selectProb);
   if (li >= sourceCount() || !(selectProb > 0)) return;
-  const SourcePoint p = sampleSource(li, v.point, rng.get2(v.dim / 2));
+  const SourcePoint p = sampleSource(li, v.point, v.lightPoint());
   Vec3 w = p.y - v.point;
   const double d = std::sqrt(w.squaredNorm());
   if (d > 0) w /= d;
@@ -1230,12 +1233,11 @@ void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Ver
                                      st.depth >= 1)
                      : Vec3(Vec3::Zero());
   // The shadow ray runs from the offset origin to the sampled point itself, stopping just
-  // short of the emitter (which would otherwise block its own light).
+  // short of the emitter (which would otherwise block its own light): its direction is the
+  // segment itself, not normalised (Embree's t is then the fraction of it).
   const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
-  Vec3 ws = p.y - o;
-  const double ds = ws.norm();
-  ws /= ds;
-  const double tFar = ds * (1.0 - 1e-4);
+  const Vec3 ws = p.y - o;
+  const double tFar = 1.0 - 1e-4;
   if (p.mesh) {
     // An emissive object exists in the with-scene only.
     if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
@@ -1369,7 +1371,7 @@ bool PathTracer::Impl::reflectMirror(PathState& st, const Vertex& v, const Surfa
 bool PathTracer::Impl::scatterGlass(PathState& st, const Vertex& v, const SurfaceBsdf& bsdf) const {
   // Entering when the ray comes from the outward side.
   const double eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
-  const SmoothGlassSample s = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, v.pickAndLobe[1]);
+  const SmoothGlassSample s = sampleSmoothGlass(v.wo, v.ngFacing, v.ns, eta, v.pickAndLobe()[1]);
   st.dir = s.dir;
   st.origin = v.point + (s.reflected ? v.eps : -v.eps) * v.ngFacing;
   st.lastSpecular = true;
@@ -1406,10 +1408,10 @@ bool PathTracer::Impl::splitGlass(Mode mode, PathState& st, const Vertex& v, con
 }
 
 // Russian roulette from russianRouletteDepth: survival min(0.95, max throughput).
-bool PathTracer::Impl::survivesRoulette(PathState& st, const Vertex& v, const SampleRng& rng) const {
+bool PathTracer::Impl::survivesRoulette(PathState& st, const Vertex& v) const {
   if (st.depth + 1 < options.russianRouletteDepth) return true;
   const double q = std::min(0.95, maxComponent(st.throughput));
-  if (!(q > 0) || rng.get(v.dim + 6) >= q) return false;
+  if (!(q > 0) || v.roulette() >= q) return false;
   st.throughput /= q;
   return true;
 }

@@ -117,6 +117,23 @@ class SampleRng {
     return {toUnit(reverseBits(laineKarras(index, pcgHash(pairSeed)))),
             toUnit(reverseBits(laineKarras(reversedSobol1(index), pcgHash(pairSeed + 1u))))};
   }
+  // get2(first), ..., get2(first + 3): the same numbers, the four pairs' chains of hashes
+  // interleaved (a path vertex draws its four pairs at once; one call's chain is latency-bound).
+  std::array<std::array<double, 2>, 4> get2x4(uint32_t first) const {
+    uint32_t seed[4], index[4], a[4], b[4];
+    for (uint32_t k = 0; k < 4; ++k) {
+      const uint32_t pair = first + k;
+      seed[k] = pcgHash(pixelKey_ ^ (pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair)));
+    }
+    for (uint32_t k = 0; k < 4; ++k) index[k] = reverseBits(laineKarras(reversedSample_, seed[k]));
+    for (uint32_t k = 0; k < 4; ++k) a[k] = reverseBits(laineKarras(index[k], pcgHash(seed[k])));
+    for (uint32_t k = 0; k < 4; ++k)
+      b[k] = reverseBits(laineKarras(reversedSobol1(index[k]), pcgHash(seed[k] + 1u)));
+    return {{{toUnit(a[0]), toUnit(b[0])},
+             {toUnit(a[1]), toUnit(b[1])},
+             {toUnit(a[2]), toUnit(b[2])},
+             {toUnit(a[3]), toUnit(b[3])}}};
+  }
   // get2() as Burley's paper writes it (the tests hold get2() to it).
   std::array<double, 2> getReference2(uint32_t pair) const {
     const uint32_t pairSeed = pcgHash(pixelKey_ ^ pcgHash(pair));
@@ -133,6 +150,57 @@ class SampleRng {
   uint32_t sample_;
   uint32_t reversedSample_;  // reverseBits(sample_)
 };
+
+// sin x and cos x together for the samplers' angles (2 pi u, a spherical polygon's area): the
+// nearest multiple q of pi/2 taken off in two parts (Cody and Waite; exact for |q| < 2^20), then
+// Taylor polynomials to x^15 and x^16 on [-pi/4, pi/4] (truncation below 1e-17) turned by the
+// quadrant. Within a few ulp of std::sin / std::cos, without glibc's sincos call and its
+// general range reduction; |x| >= 1e6, Inf and NaN go to the library.
+inline void sinCos(double x, double* sinX, double* cosX) {
+  if (!(std::abs(x) < 1e6)) {
+    *sinX = std::sin(x), *cosX = std::cos(x);
+    return;
+  }
+  constexpr double kTwoOverPi = 0.63661977236758134308, kPiOver2Hi = 1.57079632673412561417,
+                   kPiOver2Lo = 6.07710050650619224932e-11;
+  const double q = std::floor(x * kTwoOverPi + 0.5);
+  const double r = (x - q * kPiOver2Hi) - q * kPiOver2Lo, z = r * r;
+  // Taylor coefficients: sin r = r + r z (kSin[0] + z kSin[1] + ...), cos r = 1 + z (kCos[0] + ...).
+  constexpr double kSin[7] = {-1.0 / 6,        1.0 / 120,        -1.0 / 5040,         1.0 / 362880,
+                              -1.0 / 39916800, 1.0 / 6227020800, -1.0 / 1307674368000};
+  constexpr double kCos[8] = {-1.0 / 2,       1.0 / 24,        -1.0 / 720,         1.0 / 40320,
+                              -1.0 / 3628800, 1.0 / 479001600, -1.0 / 87178291200, 1.0 / 20922789888000};
+  double ps = kSin[6], pc = kCos[7];
+  for (int i = 5; i >= 0; --i) ps = kSin[i] + z * ps;
+  for (int i = 6; i >= 0; --i) pc = kCos[i] + z * pc;
+  const double s = r + r * z * ps, c = 1.0 + z * pc;
+  switch (int64_t(q) & 3) {
+    case 0: *sinX = s, *cosX = c; break;
+    case 1: *sinX = c, *cosX = -s; break;
+    case 2: *sinX = -s, *cosX = -c; break;
+    default: *sinX = -c, *cosX = s; break;
+  }
+}
+
+// atan2(y, x) for y >= 0 (a spherical triangle's half solid angle, in [0, pi]) to a relative
+// 2e-8 (the float arctangent it replaces: 2e-7), without a libm call: the octant by comparisons,
+// one division, then Cephes' atanf polynomial on |t| <= tan(pi/8). Zero and non-finite
+// arguments go to the library.
+inline double atan2NonNegative(double y, double x) {
+  const double ax = std::abs(x);
+  const bool steep = y > ax;  // above the diagonal: pi/2 - atan(ax / y)
+  const double num = steep ? ax : y, den = steep ? y : ax;
+  if (!(den > 0) || !std::isfinite(den) || !(num >= 0)) return std::atan2(y, x);
+  const bool upper = num > 0.41421356237309503 * den;  // t > tan(pi/8): pi/4 + atan((t-1)/(t+1))
+  const double t = upper ? (num - den) / (num + den) : num / den, z = t * t;
+  double r =
+      (((8.05374449538e-2 * z - 1.38776856032e-1) * z + 1.99777106478e-1) * z - 3.33329491539e-1) * z *
+          t +
+      t;
+  if (upper) r += kPi / 4;
+  if (steep) r = kPi / 2 - r;
+  return x < 0 ? kPi - r : r;
+}
 
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
 struct Frame {
@@ -151,8 +219,9 @@ struct Frame {
 // Cosine-weighted hemisphere around +z (local); pdf = cos / pi.
 inline Vec3 sampleCosineHemisphere(double u1, double u2) {
   const double r = std::sqrt(u1);
-  const double phi = 2.0 * kPi * u2;
-  return Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u1)));
+  double sinPhi, cosPhi;
+  sinCos(2.0 * kPi * u2, &sinPhi, &cosPhi);
+  return Vec3(r * cosPhi, r * sinPhi, std::sqrt(std::max(0.0, 1.0 - u1)));
 }
 
 // The share of a planar quad's area in its first triangle (c0 c1 c2); 0.5 for a quad of no area.
@@ -217,8 +286,9 @@ struct SphericalRect {
   }
 
   Vec3 sample(double u, double v) const {
-    const double au = u * solidAngle + k;
-    const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
+    double sinAu, cosAu;
+    sinCos(u * solidAngle + k, &sinAu, &cosAu);
+    const double fu = (cosAu * b0 - b1) / sinAu;
     double cu = std::copysign(1.0, fu) / std::sqrt(fu * fu + b0 * b0);
     cu = std::clamp(cu, -1.0, 1.0);
     double xu = -(cu * z0) / std::sqrt(std::max(1e-300, 1.0 - cu * cu));
@@ -238,6 +308,7 @@ struct SphericalTriangle {
   Vec3 o, a, b, c;  // unit directions to the corners
   Vec3 planePoint, planeNormal;
   Vec3 nab, nbc, nca;  // normals of the great circles through the corners (not unit)
+  double triple = 0;   // |a . (b x c)|
   double solidAngle = 0;
 
   // The solid angle only: the triangle's angles are worked out when it is sampled (a quad
@@ -249,11 +320,9 @@ struct SphericalTriangle {
   SphericalTriangle(const Vec3& A, const Vec3& B, const Vec3& C, const Vec3& origin, const Vec3& unitA,
                     const Vec3& unitB, const Vec3& unitC)
       : o(origin), a(unitA), b(unitB), c(unitC), planePoint(A), planeNormal((B - A).cross(C - A)) {
-    const double triple = std::abs(a.dot(b.cross(c)));
-    // The arctangent in float: its relative error (~1e-7) is far below any image's noise, and
-    // glibc's double atan2 costs twice as much (it saves and restores the rounding mode).
-    const double sa = 2.0 *
-                      double(std::atan2(float(triple), float(1.0 + a.dot(b) + b.dot(c) + c.dot(a))));
+    triple = std::abs(a.dot(b.cross(c)));
+    // The arctangent to a relative 2e-8, far below any image's noise, without libm's call.
+    const double sa = 2.0 * atan2NonNegative(triple, 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
     nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
     if (!(sa > 0) || !std::isfinite(sa) || nab.squaredNorm() == 0 || nbc.squaredNorm() == 0 ||
         nca.squaredNorm() == 0)
@@ -262,15 +331,17 @@ struct SphericalTriangle {
   }
 
   // The point on the triangle in the sampled direction. Arvo's inversion needs the corner
-  // angle alpha at a only as its cosine and sine (a dot and a cross product of the great
-  // circles' normals, no inverse trigonometry), and the sub-triangle's area u0 x solidAngle
-  // (the same solid angle the pdf uses): one sincos in all.
+  // angle alpha at a only as its cosine and sine (the great circles' normals' dot product, and
+  // |nab x nca| = |a . (b x c)|, both over |nab| |nca|: no inverse trigonometry, one square
+  // root), and the sub-triangle's area u0 x solidAngle (the same solid angle the pdf uses): one
+  // sincos in all.
   Vec3 sample(double u0, double u1) const {
-    const Vec3 uab = nab.normalized(), uca = nca.normalized();
-    const double cosA = std::clamp(-uab.dot(uca), -1.0, 1.0), sinA = uab.cross(uca).norm();
+    const double inv = 1.0 / std::sqrt(nab.squaredNorm() * nca.squaredNorm());
+    const double cosA = std::clamp(-nab.dot(nca) * inv, -1.0, 1.0), sinA = std::min(1.0, triple * inv);
     // sin and cos of pi + u0 solidAngle (the sub-triangle's angle sum).
-    const double sub = u0 * solidAngle;
-    const double sinAp = -std::sin(sub), cosAp = -std::cos(sub);
+    double sinSub, cosSub;
+    sinCos(u0 * solidAngle, &sinSub, &cosSub);
+    const double sinAp = -sinSub, cosAp = -cosSub;
     const double sinPhi = sinAp * cosA - cosAp * sinA;
     const double cosPhi = cosAp * cosA + sinAp * sinA;
     const double k1 = cosPhi + cosA;
@@ -370,11 +441,12 @@ inline double ggxG1(const Vec3& w, double alpha) {
 }
 // Half vector sampled with pdf D(h) cos(h).
 inline Vec3 sampleGgxHalfVector(double alpha, double u1, double u2) {
-  const double phi = 2.0 * kPi * u2;
+  double sinPhi, cosPhi;
+  sinCos(2.0 * kPi * u2, &sinPhi, &cosPhi);
   const double tan2 = alpha * alpha * u1 / std::max(1e-300, 1.0 - u1);
   const double cosT = 1.0 / std::sqrt(1.0 + tan2);
   const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT));
-  return Vec3(sinT * std::cos(phi), sinT * std::sin(phi), cosT);
+  return Vec3(sinT * cosPhi, sinT * sinPhi, cosT);
 }
 
 inline double maxComponent(const Vec3& v) { return std::max({v.x(), v.y(), v.z()}); }
