@@ -76,12 +76,9 @@ TEST(PixelFilter, StiffWidthsAndNumbersGiveFinitePositions) {
   }
 }
 
-// A wall-sized object covers the right half of the picture, its edge on the boundary between
-// pixels 19 and 20 of 40. The object's coverage (the mask) of pixel 19: none with the box, the
-// window's tail beyond half a pixel with Cycles' 1.5 px (12 %); pixel 18 stays uncovered
-// (its window ends at the edge). The default is the window.
-TEST(PixelFilter, AnObjectsOutlineReachesTheNextPixelAsInCycles) {
-  const int w = 40, h = 30;
+// A wall-sized object covering the right half of a w x h picture, its edge on the boundary
+// between pixels w/2 - 1 and w/2.
+RenderScene halfCoveredScene(int w, int h) {
   RenderScene s = test::roomScene(test::testCamera(w, h, 60), RoomBox{}, 0.5);
   s.lights.push_back(
       test::rectLight(Vec3(0, 2.5, -2), Vec3(0.3, 0, 0), Vec3(0, 0, 0.3), Vec3::Constant(5)));
@@ -89,23 +86,46 @@ TEST(PixelFilter, AnObjectsOutlineReachesTheNextPixelAsInCycles) {
   slab.xLeftM = 0, slab.xRightM = 1.9, slab.zBackM = -2.2, slab.zRearM = -2.0, slab.ceilingM = 3;
   s.objects.push_back(
       test::placedObject(test::boxMesh(slab), Vec3(0, -0.5, 0), Material::Kind::Diffuse));
-  auto coverage = [&](const TracerOptions& o, int x) {
-    PathTracer tracer(s, o);
-    DifferentialBuffers b(w, h);
-    EXPECT_TRUE(tracer.render(b, 0, 64, 3));
-    double m = 0, n = 0;
-    for (int y = 10; y < 20; ++y) m += b.sumMask.at(x, y), n += b.samples[size_t(y) * w + x];
-    return m / n;
-  };
+  return s;
+}
+
+// The object's coverage (the mask) of column x of buffers bw x bh, rows of its middle third.
+double maskCoverage(const RenderScene& s, const TracerOptions& o, int bw, int bh, int x) {
+  PathTracer tracer(s, o);
+  DifferentialBuffers b(bw, bh);
+  EXPECT_TRUE(tracer.render(b, 0, 64, 3));
+  double m = 0, n = 0;
+  for (int y = bh / 3; y < 2 * bh / 3; ++y) m += b.sumMask.at(x, y), n += b.samples[size_t(y) * bw + x];
+  return m / n;
+}
+
+// The edge between pixels 19 and 20 of 40. The object's coverage of pixel 19: none with the box,
+// the window's tail beyond half a pixel with Cycles' 1.5 px (12 %); pixel 18 stays uncovered
+// (its window ends at the edge). The default is the window.
+TEST(PixelFilter, AnObjectsOutlineReachesTheNextPixelAsInCycles) {
+  const int w = 40, h = 30;
+  const RenderScene s = halfCoveredScene(w, h);
   TracerOptions box;
   box.pixelFilterWidth = 0;
   const TracerOptions cycles;  // the default
   EXPECT_EQ(cycles.pixelFilterWidth, 1.5);
-  EXPECT_EQ(coverage(box, 19), 0.0);
-  EXPECT_EQ(coverage(box, 20), 1.0);
-  EXPECT_NEAR(coverage(cycles, 19), 0.12, 0.03);
-  EXPECT_NEAR(coverage(cycles, 20), 0.88, 0.03);
-  EXPECT_EQ(coverage(cycles, 18), 0.0);
+  EXPECT_EQ(maskCoverage(s, box, w, h, 19), 0.0);
+  EXPECT_EQ(maskCoverage(s, box, w, h, 20), 1.0);
+  EXPECT_NEAR(maskCoverage(s, cycles, w, h, 19), 0.12, 0.03);
+  EXPECT_NEAR(maskCoverage(s, cycles, w, h, 20), 0.88, 0.03);
+  EXPECT_EQ(maskCoverage(s, cycles, w, h, 18), 0.0);
+}
+
+// The studio's coarse previews render buffers d times smaller than the camera: the filter's
+// width is in the camera's pixels, so a coarse pixel samples its own d x d cell (the box) and
+// the edge stays on its boundary; a 1.5-pixel window there would reach 1.5 coarse pixels
+// (24 camera pixels at 1/16 resolution) and blur a dragged object's first frames away.
+TEST(PixelFilter, ACoarsePreviewsPixelSamplesItsOwnCell) {
+  const int w = 40, h = 30, d = 2;
+  const RenderScene s = halfCoveredScene(w, h);
+  const TracerOptions cycles;
+  EXPECT_EQ(maskCoverage(s, cycles, w / d, h / d, 9), 0.0);
+  EXPECT_EQ(maskCoverage(s, cycles, w / d, h / d, 10), 1.0);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "i18n.h"
 #include "log_dock.h"
 #include "main_window.h"
+#include "response_dock.h"
 #include "stage_text.h"
 #include "status_bar.h"
 #include "steps_dock.h"
@@ -314,6 +315,7 @@ class StudioTranslationTest : public QObject {
   void everyTextFollowsTheLanguage();
   void engineMessagesFollowTheLanguage();
   void responseEstimateSentencesFollowTheLanguage();
+  void responseDockSaysWhenTheLightFitKeptSrgb();
   void logStageLinesFollowTheLanguage();
   void cleanupTestCase() {
     window_.reset();
@@ -655,6 +657,29 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
   }
   StepLog shots(QStringLiteral("studio_translation_artifacts/log"));
   QVERIFY(shots.shot(window.logDock(), QStringLiteral("log_de")));
+  removeTranslators();
+}
+
+// The pipeline's check took an estimated curve away (PrepareOptions::checkResponseByLightFit):
+// the Camera Response dock's note says so, not that the photo's noise showed no curve.
+void StudioTranslationTest::responseDockSaysWhenTheLightFitKeptSrgb() {
+  removeTranslators();
+  PreparedScene ps;
+  ps.photo.wasSrgbEncoded = true;
+  ps.responseEstimate = ResponseEstimate{};
+  ps.responseEstimate->determined = true;
+  ps.responseEstimate->noiseBins = 12;
+  ps.responseEstimate->decision =
+      "kept sRGB: the light fit's residual with the fitted toe_shoulder (power 0.990, toe 0.000, "
+      "shoulder 998) is 0.2010, with sRGB 0.1797";
+  const QString english = responseDecisionText(ResponseKeys::Mode::Auto, ps);
+  QVERIFY2(english.contains(QStringLiteral("lighting explains the photo better")), qPrintable(english));
+  ps.responseEstimate->decision = "kept sRGB: the noise level's residual is too small";
+  QVERIFY(responseDecisionText(ResponseKeys::Mode::Auto, ps).contains(QStringLiteral("noise")));
+  QVERIFY(installTranslators(QStringLiteral("de")));
+  ps.responseEstimate->decision = "kept sRGB: the light fit's residual with the fitted curve";
+  const QString german = responseDecisionText(ResponseKeys::Mode::Auto, ps);
+  QVERIFY2(german != english && !german.isEmpty(), qPrintable(german));
   removeTranslators();
 }
 

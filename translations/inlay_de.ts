@@ -2446,92 +2446,97 @@ Ins Foto ziehen, um es einzusetzen.</translation>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Foto zeigt zu wenig, um seine eigene Tonwertkurve zu schätzen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
+        <translation>Die übliche sRGB-Kurve wurde beibehalten: die Beleuchtung des Raums erklärt das Foto mit ihr besser als mit der aus dem Foto geschätzten Kurve.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="88"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Rauschen des Fotos zeigt keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <location filename="../app/studio/response_dock.cpp" line="91"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Kanten des Fotos zeigen keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="89"/>
+        <location filename="../app/studio/response_dock.cpp" line="94"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus dem Rauschen des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <location filename="../app/studio/response_dock.cpp" line="97"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus den Kanten des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="102"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Wirken die eingefügten Objekte neben dem Raum zu hell oder zu flach, wählen Sie oben in der Liste sRGB und vergleichen Sie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <location filename="../app/studio/response_dock.cpp" line="110"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Wurde das Foto bearbeitet oder stammt es von einem Handy mit starkem Kontrast, kann seine Kurve trotzdem abweichen: wählen Sie oben in der Liste Linear (es liest den Kontrast des Fotos weicher) und vergleichen Sie die Schattierung der Objekte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <location filename="../app/studio/response_dock.cpp" line="120"/>
         <source>Curve: %1</source>
         <translation>Kurve: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <location filename="../app/studio/response_dock.cpp" line="123"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <location filename="../app/studio/response_dock.cpp" line="127"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Aus %1 Kanten geschätzt in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="215"/>
+        <location filename="../app/studio/response_dock.cpp" line="224"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="216"/>
+        <location filename="../app/studio/response_dock.cpp" line="225"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="217"/>
+        <location filename="../app/studio/response_dock.cpp" line="226"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="218"/>
+        <location filename="../app/studio/response_dock.cpp" line="227"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="219"/>
+        <location filename="../app/studio/response_dock.cpp" line="228"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="220"/>
+        <location filename="../app/studio/response_dock.cpp" line="229"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="221"/>
+        <location filename="../app/studio/response_dock.cpp" line="230"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="222"/>
+        <location filename="../app/studio/response_dock.cpp" line="231"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Die Parameter der Kurve und was die Schätzung gemessen hat</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="247"/>
+        <location filename="../app/studio/response_dock.cpp" line="256"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>

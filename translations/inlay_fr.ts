@@ -2446,92 +2446,97 @@ Faites-le glisser dans la photo.</translation>
         <translation>La courbe sRGB standard est conservée : la photo n&apos;en montre pas assez pour estimer sa propre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="83"/>
+        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
+        <translation>La courbe sRGB standard est conservée : l&apos;éclairage de la pièce explique mieux la photo avec elle qu&apos;avec la courbe estimée à partir de la photo.</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/response_dock.cpp" line="88"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : le bruit de la photo ne montre pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="86"/>
+        <location filename="../app/studio/response_dock.cpp" line="91"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : les contours de la photo ne montrent pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="89"/>
+        <location filename="../app/studio/response_dock.cpp" line="94"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après le bruit de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="92"/>
+        <location filename="../app/studio/response_dock.cpp" line="97"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après les contours de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="102"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Si les objets insérés paraissent trop clairs ou trop plats par rapport à la pièce, choisissez sRGB dans la liste ci-dessus et comparez.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <location filename="../app/studio/response_dock.cpp" line="110"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Si la photo a été retouchée, ou vient d&apos;un téléphone au contraste marqué, sa courbe peut tout de même différer : choisissez Linéaire dans la liste ci-dessus (elle lit le contraste de la photo plus doux) et comparez l&apos;ombrage des objets.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <location filename="../app/studio/response_dock.cpp" line="120"/>
         <source>Curve: %1</source>
         <translation>Courbe : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="118"/>
+        <location filename="../app/studio/response_dock.cpp" line="123"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Estimée d&apos;après le bruit de la photo (%1 niveaux) en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <location filename="../app/studio/response_dock.cpp" line="127"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Estimée d&apos;après %1 contours en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="215"/>
+        <location filename="../app/studio/response_dock.cpp" line="224"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="216"/>
+        <location filename="../app/studio/response_dock.cpp" line="225"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="217"/>
+        <location filename="../app/studio/response_dock.cpp" line="226"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="218"/>
+        <location filename="../app/studio/response_dock.cpp" line="227"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="219"/>
+        <location filename="../app/studio/response_dock.cpp" line="228"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="220"/>
+        <location filename="../app/studio/response_dock.cpp" line="229"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="221"/>
+        <location filename="../app/studio/response_dock.cpp" line="230"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="222"/>
+        <location filename="../app/studio/response_dock.cpp" line="231"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Les paramètres de la courbe et ce que l&apos;estimation a mesuré</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="247"/>
+        <location filename="../app/studio/response_dock.cpp" line="256"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>

@@ -79,6 +79,11 @@ QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
     return ResponseDock::tr(
         "Kept the standard sRGB curve: the photo does not show enough to estimate "
         "its own tone curve.");
+  // The pipeline's check (PrepareOptions::checkResponseByLightFit) took the fitted curve away.
+  if (e->decision.rfind("kept sRGB: the light fit's residual", 0) == 0)
+    return ResponseDock::tr(
+        "Kept the standard sRGB curve: the room's lighting explains the photo better with it "
+        "than with the curve estimated from the photo.");
   if (e->decision != "fitted")
     return noise ? ResponseDock::tr(
                        "Kept the standard sRGB curve: the photo's noise does not show a "
@@ -156,6 +161,10 @@ class NotesScrollArea : public QScrollArea {
 };
 
 }  // namespace
+
+QString responseDecisionText(ResponseKeys::Mode mode, const PreparedScene& prepared) {
+  return decisionOf(mode, prepared);
+}
 
 ResponseDock::ResponseDock(Document* document, QWidget* parent)
     : QDockWidget(parent), document_(document) {
@@ -251,7 +260,7 @@ void ResponseDock::refresh() {
   }
   curve_->setResponse(prepared->response);
   // The decision in bold, the advice below it.
-  QString text = QStringLiteral("<b>%1</b>").arg(decisionOf(mode, *prepared).toHtmlEscaped());
+  QString text = QStringLiteral("<b>%1</b>").arg(responseDecisionText(mode, *prepared).toHtmlEscaped());
   if (const QString advice = adviceOf(mode, *prepared); !advice.isEmpty())
     text += QStringLiteral("<br>") + advice.toHtmlEscaped();
   const QString details = detailsOf(*prepared);

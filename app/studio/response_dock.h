@@ -21,6 +21,10 @@ class WrappedLabelFitter;
 
 class ResponseCurveView;
 
+// What the dock's note says was decided about the photo's curve, in one plain sentence (the
+// current language).
+QString responseDecisionText(ResponseKeys::Mode mode, const PreparedScene& prepared);
+
 class ResponseDock : public QDockWidget {
   Q_OBJECT
  public:

@@ -1901,6 +1901,11 @@ PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuff
 Vec3 PathTracer::Impl::cameraDirection(int x, int y, const PixelScale& scale,
                                        const SampleRng& rng) const {
   const auto jitter = rng.get2(0);
+  // The filter's width is in the camera's pixels: a coarse buffer's pixel (a preview, scale > 1)
+  // covers several of them and samples its own cell, the box.
+  if (scale.x > 1 || scale.y > 1)
+    return scene.camera.directionThroughPixel(
+        Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y));
   return scene.camera.directionThroughPixel(Vec2((x + pixelFilter.position(jitter[0])) * scale.x,
                                                  (y + pixelFilter.position(jitter[1])) * scale.y));
 }
