@@ -2,6 +2,7 @@
 // of a photo's codes, and the estimate on synthetic photos (known curves; flat, binary, clipped
 // and noise-free photos, which must give a finite monotone curve and a warning when undetermined).
 #include "inlay/modeling/response.h"
+#include "inlay/modeling/photo_codes.h"
 
 #include "inlay/modeling/image_io.h"
 
@@ -573,76 +574,43 @@ TEST(ResponseEstimate, APhotoWithoutStraightEdgesIsUndeterminedWithAWarning) {
   EXPECT_NE(warning.find("edges"), std::string::npos) << warning;
 }
 
-}  // namespace
-}  // namespace inlay
-
-namespace inlay {
-namespace {
-
-// The median noise (in codes) over the noise cue's bins of `photo` at the given quantile.
-double medianBinSigma(const ImageF& photo, double quantile) {
-  ResponseEstimateOptions o;
-  o.cue = ResponseEstimateOptions::Cue::Noise;
-  o.noiseQuantile = quantile;
-  o.minSrgbResidual = 0;
-  const ResponseEstimate e = estimateResponse(photo, o);
-  expectSane(e);
-  std::vector<double> s;
-  for (const auto& bin : e.noiseLevel) s.push_back(bin[1]);
-  if (s.empty()) return std::nan("");
-  std::nth_element(s.begin(), s.begin() + std::ptrdiff_t(s.size() / 2), s.end());
-  return s[s.size() / 2];
-}
-
-TEST(ResponseEstimate, ALowerNoiseQuantileIsLessFooledByTexture) {
-  // Texture in 40 % of the flat regions (a +-2 code checkerboard, as a fine weave or a rendered
-  // photo's unevenly lit patch would add) inflates the median block noise (here by 47 %); the
-  // lower quartile less (29 %).
-  const ImageF clean = syntheticPhoto(CameraResponse::srgb(), 0.01, 31);
-  ImageF textured = clean;
-  std::mt19937 rng(5);
-  std::bernoulli_distribution pick(0.4);
-  for (int by = 0; by < textured.height; by += 8)
-    for (int bx = 0; bx < textured.width; bx += 8) {
-      if (!pick(rng)) continue;
-      for (int y = by; y < std::min(by + 8, textured.height); ++y)
-        for (int x = bx; x < std::min(bx + 8, textured.width); ++x)
-          for (int c = 0; c < 3; ++c) {
-            float& v = textured.at(x, y, c);
-            const int code = int(std::lround(255 * linearToSrgb(v))) + ((x + y) % 2 ? 2 : -2);
-            v = srgbToLinear(float(std::clamp(code, 0, 255)) / 255.f);
-          }
+// The codes found once (photo_codes.h) give what finding them in the re-decode and the estimate
+// gives, value for value: every code, values between codes, out of range and NaN, with every
+// kind of response; an image that is not three channels takes redecodePhoto's own path.
+TEST(PhotoCodes, TheRedecodeFromCodesIsTheRedecode) {
+  ImageF photo(67, 5, 3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> U(-0.1f, 1.1f);
+  for (size_t i = 0; i < photo.data.size(); ++i)
+    photo.data[i] = i < 256 ? srgbToLinear(float(i) / 255.f) : U(rng);
+  photo.data[300] = std::numeric_limits<float>::quiet_NaN();
+  photo.data[301] = std::numeric_limits<float>::infinity();
+  ImageF grey(9, 4, 1);
+  for (size_t i = 0; i < grey.data.size(); ++i) grey.data[i] = srgbToLinear(float(i * 7) / 255.f);
+  for (const CameraResponse& r : allKindsOfResponse()) {
+    for (const ImageF& img : {photo, grey}) {
+      ImageF plain = img, fromCodes = img;
+      redecodePhoto(plain, 8, r);
+      redecodePhotoFromCodes(fromCodes, srgbCodesOf(img), r);
+      for (size_t i = 0; i < img.data.size(); ++i)
+        ASSERT_EQ(fromCodes.data[i], plain.data[i]) << r.describe() << " at " << i;
     }
-  const double q50 = medianBinSigma(clean, 0.5), q25 = medianBinSigma(clean, 0.25);
-  const double t50 = medianBinSigma(textured, 0.5), t25 = medianBinSigma(textured, 0.25);
-  std::printf("noise in codes: clean median %.3f, lower quartile %.3f; textured %.3f, %.3f\n", q50, q25,
-              t50, t25);
-  ASSERT_TRUE(std::isfinite(q50) && std::isfinite(q25) && std::isfinite(t50) && std::isfinite(t25));
-  EXPECT_LE(q25, q50);
-  EXPECT_LT(std::fabs(std::log(t25 / q25)), 0.75 * std::fabs(std::log(t50 / q50)));
+  }
 }
 
-TEST(ResponseEstimate, EveryNoiseQuantileGivesASaneCurveOnExtremePhotos) {
-  const ImageF onePixel(1, 1, 3, srgbToLinear(0.5f));
-  const ImageF white(64, 48, 3, 1.f);  // fully clipped
-  const ImageF black(64, 48, 3, 0.f);
-  const ImageF grey(64, 48, 3, srgbToLinear(0.5f));  // one flat colour
-  const ImageF noisy = syntheticPhoto(CameraResponse::toeShoulder({1, 0.3, 20}), 0.02, 3, 96, 72);
-  for (const double q : {0.0, 0.05, 0.25, 0.5, 1.0, std::nan("")}) {
+TEST(PhotoCodes, TheEstimateFromCodesIsTheEstimate) {
+  for (const ResponseEstimateOptions::Cue cue : kEstimateCues) {
     ResponseEstimateOptions o;
-    o.cue = ResponseEstimateOptions::Cue::Noise;
-    o.noiseQuantile = q;
-    for (const ImageF* photo : {&onePixel, &white, &black, &grey}) {
-      const ResponseEstimate e = estimateResponse(*photo, o);
-      expectSane(e);
-      EXPECT_FALSE(e.determined) << "quantile " << q << ", " << photo->width << " px wide";
-      EXPECT_EQ(e.response, CameraResponse::srgb());
-      EXPECT_EQ(e.warnings.size(), 1u);
-    }
-    const ResponseEstimate e = estimateResponse(noisy, o);  // a small photo that has noise
-    expectSane(e);
-    EXPECT_TRUE(std::isfinite(e.srgbObjective)) << "quantile " << q;
-    for (const auto& bin : e.noiseLevel) EXPECT_TRUE(std::isfinite(bin[1]) && bin[1] >= 0);
+    o.cue = cue;
+    o.minSrgbResidual = 0;
+    const ImageF img = syntheticPhoto(CameraResponse::toeShoulder({1.0, 0.3, 8.0}), 0.02, 5);
+    const ResponseEstimate plain = estimateResponse(img, o);
+    const ResponseEstimate fromCodes = estimateResponseFromCodes(img, srgbCodesOf(img), o);
+    EXPECT_EQ(fromCodes.response.table8(), plain.response.table8());
+    EXPECT_EQ(fromCodes.decision, plain.decision);
+    EXPECT_EQ(fromCodes.objective, plain.objective);
+    EXPECT_EQ(fromCodes.darkFill, plain.darkFill);
+    EXPECT_EQ(fromCodes.noiseLevel, plain.noiseLevel);
   }
 }
 

@@ -5,6 +5,7 @@
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image_resample.h"
 #include "inlay/modeling/occluder.h"
+#include "inlay/modeling/photo_codes.h"
 #include "inlay/lighting/shaft.h"
 #include "inlay/lighting/sun_ratio.h"
 #include "inlay/render/composite.h"
@@ -478,8 +479,12 @@ Expected<CameraAndLayout> cameraAndLayoutOf(const CameraKeys& camera, const Layo
   return out;
 }
 
-ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
-                          const ResponseEstimateOptions& options) {
+namespace {
+
+// responseOf with the photo's 8-bit codes (srgbCodesOf) when they are already found, else null.
+ChosenResponse responseOfCodes(const ResponseKeys& keys, const LoadedImage& photo,
+                               const ResponseEstimateOptions& options,
+                               const std::vector<unsigned char>* codes) {
   ChosenResponse out;
   if (!photo.wasSrgbEncoded) {
     out.response = CameraResponse::linear();
@@ -494,7 +499,8 @@ ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
       out.response = CameraResponse::toeShoulder({keys.power, keys.toe, keys.shoulder});
       break;
     case ResponseKeys::Mode::Auto: {
-      ResponseEstimate e = estimateResponse(photo.linearRgb, options);
+      ResponseEstimate e = codes ? estimateResponseFromCodes(photo.linearRgb, *codes, options)
+                                 : estimateResponse(photo.linearRgb, options);
       out.response = e.response;
       out.warnings = e.warnings;
       out.estimate = std::move(e);
@@ -502,6 +508,13 @@ ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
     }
   }
   return out;
+}
+
+}  // namespace
+
+ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
+                          const ResponseEstimateOptions& options) {
+  return responseOfCodes(keys, photo, options, nullptr);
 }
 
 Expected<Placement> placeObjectAt(const PreparedScene& scene, size_t index) {
@@ -732,14 +745,24 @@ Status loadPhoto(Preparation& p, std::string& detail) {
 Status chooseResponse(Preparation& p, std::string& detail) {
   ResponseEstimateOptions ro = p.opt.responseEstimate;
   ro.cancel = p.opt.cancel;
-  ChosenResponse chosen = responseOf(p.doc.camera.response, p.ps.photo, ro);
-  if (p.cancelled()) return cancelledError();
   PreparedScene& ps = p.ps;
+  // An estimated response of an 8-bit photo: its codes found once for the estimate and the
+  // re-decode (the same values as finding them in each).
+  const bool shareCodes = ps.photo.wasSrgbEncoded && ps.photo.sourceBitsPerChannel <= 8 &&
+                          p.doc.camera.response.mode == ResponseKeys::Mode::Auto &&
+                          !ps.photo.linearRgb.empty() && ps.photo.linearRgb.channels == 3;
+  const std::vector<unsigned char> codes =
+      shareCodes ? srgbCodesOf(ps.photo.linearRgb) : std::vector<unsigned char>{};
+  ChosenResponse chosen =
+      responseOfCodes(p.doc.camera.response, ps.photo, ro, shareCodes ? &codes : nullptr);
+  if (p.cancelled()) return cancelledError();
   ps.response = chosen.response;
   detail = !ps.photo.wasSrgbEncoded ? "linear photo" : chosen.estimate ? "estimated" : "camera.response";
   ps.responseEstimate = std::move(chosen.estimate);
   for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
-  if (ps.photo.wasSrgbEncoded)
+  if (shareCodes)
+    redecodePhotoFromCodes(ps.photo.linearRgb, codes, ps.response);
+  else if (ps.photo.wasSrgbEncoded)
     redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
   return {};
 }

@@ -1,5 +1,6 @@
 // The camera response model and its estimate from a photo's edges (see response.h).
 #include "inlay/modeling/response.h"
+#include "inlay/modeling/photo_codes.h"
 
 #include "code_statistics.h"
 #include "lines.h"
@@ -154,6 +155,17 @@ void redecodePhoto(ImageF& img, int bitsPerChannel, const CameraResponse& respon
         v = float(response.decode(e));
       }
     }
+  });
+}
+
+void redecodePhotoFromCodes(ImageF& img, const std::vector<unsigned char>& codes,
+                            const CameraResponse& response) {
+  if (img.channels != 3 || codes.size() != img.data.size()) return redecodePhoto(img, 8, response);
+  const auto& table = response.table8();
+  const size_t rowValues = size_t(img.width) * 3;
+  parallelFor(tbb::blocked_range<int>(0, img.height), [&](const tbb::blocked_range<int>& rows) {
+    for (size_t i = size_t(rows.begin()) * rowValues; i < size_t(rows.end()) * rowValues; ++i)
+      img.data[i] = table[codes[i]];
   });
 }
 
@@ -587,6 +599,13 @@ std::string cleanEdgesOf(const ImageF& img, const std::vector<unsigned char>& co
 }  // namespace
 
 ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptions& options) {
+  const bool empty = img.width <= 0 || img.height <= 0 || img.empty();
+  return estimateResponseFromCodes(img, empty ? std::vector<unsigned char>{} : srgbCodesOf(img),
+                                   options);
+}
+
+ResponseEstimate estimateResponseFromCodes(const ImageF& img, const std::vector<unsigned char>& codes,
+                                           const ResponseEstimateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -603,7 +622,7 @@ ResponseEstimate estimateResponse(const ImageF& img, const ResponseEstimateOptio
     return out;
   };
   if (img.width <= 0 || img.height <= 0 || img.empty()) return undetermined("the photo is empty");
-  const std::vector<unsigned char> codes = srgbCodesOf(img);
+  INLAY_CHECK(codes.size() == img.pixelCount() * 3);
   if (std::string why = photoIsUndetermined(codes); !why.empty()) return undetermined(why);
   out.darkFill = darkFillOf(codes);
 
