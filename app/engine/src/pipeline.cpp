@@ -751,8 +751,8 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   const bool shareCodes = ps.photo.wasSrgbEncoded && ps.photo.sourceBitsPerChannel <= 8 &&
                           p.doc.camera.response.mode == ResponseKeys::Mode::Auto &&
                           !ps.photo.linearRgb.empty() && ps.photo.linearRgb.channels == 3;
-  const std::vector<unsigned char> codes =
-      shareCodes ? srgbCodesOf(ps.photo.linearRgb) : std::vector<unsigned char>{};
+  const std::vector<unsigned char> codes = shareCodes ? srgbCodesOf(ps.photo.linearRgb)
+                                                      : std::vector<unsigned char>{};
   ChosenResponse chosen =
       responseOfCodes(p.doc.camera.response, ps.photo, ro, shareCodes ? &codes : nullptr);
   if (p.cancelled()) return cancelledError();
@@ -760,8 +760,7 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   detail = !ps.photo.wasSrgbEncoded ? "linear photo" : chosen.estimate ? "estimated" : "camera.response";
   ps.responseEstimate = std::move(chosen.estimate);
   for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
-  if (shareCodes)
-    redecodePhotoFromCodes(ps.photo.linearRgb, codes, ps.response);
+  if (shareCodes) redecodePhotoFromCodes(ps.photo.linearRgb, codes, ps.response);
   else if (ps.photo.wasSrgbEncoded)
     redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
   return {};
