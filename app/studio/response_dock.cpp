@@ -80,7 +80,7 @@ QString decisionOf(ResponseKeys::Mode mode, const PreparedScene& prepared) {
         "Kept the standard sRGB curve: the photo does not show enough to estimate "
         "its own tone curve.");
   // The pipeline's check (PrepareOptions::checkResponseByLightFit) took the fitted curve away.
-  if (e->decision.rfind("kept sRGB: the light fit's residual", 0) == 0)
+  if (curveRefusedByTheLightFit(*e))
     return ResponseDock::tr(
         "Kept the standard sRGB curve: the room's lighting explains the photo better with it "
         "than with the curve estimated from the photo.");

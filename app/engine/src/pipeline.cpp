@@ -1312,6 +1312,11 @@ Expected<PreparedScene> prepareStages(const SceneDoc& doc, const PrepareOptions&
   return std::move(p.ps);
 }
 
+// The decision's start when the light fit's check takes the estimate's curve away (`why` below
+// starts so).
+const std::string kRefusedByTheLightFit = "kept sRGB: ";
+const std::string kTheLightFitsResidual = "the light fit's residual";
+
 // The scene prepared with sRGB in place of the estimated curve `curved` used: the estimate and
 // the scene file's "auto" kept, the decision and a warning saying why, the "response" stage's
 // detail "estimated" again.
@@ -1319,7 +1324,7 @@ PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved
                                     const std::string& why) {
   srgb.doc = std::move(curved.doc);
   srgb.responseEstimate = std::move(curved.responseEstimate);
-  srgb.responseEstimate->decision = "kept sRGB: " + why;
+  srgb.responseEstimate->decision = kRefusedByTheLightFit + why;
   srgb.responseEstimate->response = CameraResponse::srgb();
   srgb.warnings.push_back("camera response: the estimated curve was not used (" + why + "); using sRGB");
   for (StageRecord& r : srgb.stages)
@@ -1344,8 +1349,8 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(PreparedScene&& curved, const
   const double withCurve = curved.lighting.fitResidualRelative;
   const double withSrgb = srgb ? srgb->lighting.fitResidualRelative : std::nan("");
   char buf[320];
-  std::snprintf(buf, sizeof buf, "the light fit's residual with the fitted %s is %.4f, with sRGB %.4f",
-                curved.response.describe().c_str(), withCurve, withSrgb);
+  std::snprintf(buf, sizeof buf, "%s with the fitted %s is %.4f, with sRGB %.4f",
+                kTheLightFitsResidual.c_str(), curved.response.describe().c_str(), withCurve, withSrgb);
   const bool keepCurve = !srgb || !refitFitsWorse(withSrgb, withCurve, opt.responseFitTolerance);
   record.detail = std::string(keepCurve ? "the curve kept: " : "sRGB kept: ") + buf;
   PreparedScene out = keepCurve ? std::move(curved)
@@ -1357,6 +1362,10 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(PreparedScene&& curved, const
 }
 
 }  // namespace
+
+bool curveRefusedByTheLightFit(const ResponseEstimate& estimate) {
+  return estimate.decision.rfind(kRefusedByTheLightFit + kTheLightFitsResidual, 0) == 0;
+}
 
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
   Expected<PreparedScene> ps = prepareStages(doc, opt);

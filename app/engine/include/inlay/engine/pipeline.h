@@ -230,6 +230,10 @@ ChosenResponse responseOf(const ResponseKeys& keys, const LoadedImage& photo,
 // Everything needed to render `doc`. Errors name the scene file's key and the reason.
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& options = {});
 
+// Whether the estimate's curve was taken away by PrepareOptions::checkResponseByLightFit (its
+// decision says so; the wording is prepareScene's).
+bool curveRefusedByTheLightFit(const ResponseEstimate& estimate);
+
 // PrepareOptions::keepBetterFit's test: whether the refit's robust log residual `refit` is worse
 // than the first estimate's `first` by more than `tolerance` of it (a relative tie keeps the
 // refit). A residual that is not finite never wins; a negative or NaN tolerance counts as 0, an
