@@ -814,8 +814,8 @@ struct PathTracer::Impl {
   [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
   bool walkPath(PathCursor& c, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
                 PausedNee* pause) const;
-  void finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng, Sums& out,
-                    PrimaryRecord* rec) const;
+  bool finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng, Sums& out,
+                    PrimaryRecord* rec, PausedNee* pause) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                           const SampleRng& rng, Sums& out, Hit* next) const;
   void pauseNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
@@ -993,19 +993,20 @@ bool PathTracer::Impl::walkPath(PathCursor& c, const SampleRng& rng, Sums& out, 
 }
 
 // A path paused by walkPath: its NEE toward the source with the shadow ray's answer `blocked`
-// (cast in a packet; -1: cast here), the suns' NEE, then the rest of the path.
-void PathTracer::Impl::finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng,
-                                    Sums& out, PrimaryRecord* rec) const {
+// (cast in a packet; -1: cast here), the suns' NEE, then the rest of the path, paused again at
+// its next NEE when `pause` is given (it may be &p: p is not read once the path goes on).
+bool PathTracer::Impl::finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng,
+                                    Sums& out, PrimaryRecord* rec, PausedNee* pause) const {
   const int64_t neeStart = neeClockNs();
   const Lobe lobe = p.lobe();
   addSourceShadow(c.mode, p.shadow, blocked, out);
   addSunNee(c.mode, c.st, p.v, lobe, rng, out);
   out.counters.neeNs += neeClockNs() - neeStart;
-  if (!p.goesOn) return;
+  if (!p.goesOn) return false;
   c.st = p.after;
   ++c.st.depth;
   c.castAhead = true, c.firstHit = nullptr;
-  walkPath(c, rng, out, rec, nullptr);
+  return walkPath(c, rng, out, rec, pause);
 }
 
 Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out,
@@ -2144,6 +2145,7 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);
 }
 
+constexpr bool kLockstep = true;
 // One path of a camera packet (tracePacket).
 struct PathTracer::Impl::PacketPath {
   PathCursor cursor;
@@ -2173,13 +2175,19 @@ void PathTracer::Impl::tracePacket(PixelSums* sums, const int* pixel, int m, con
     q.rec.wantGuide = wantGuide;
     q.paused = walkPath(q.cursor, rngOf(pixel[j]), q.sums, &q.rec, &q.nee);
   }
-  std::array<int, kPacket> blocked;
-  castShadowPacket(paths.data(), m, blocked.data(), tileCounters);
-  for (int j = 0; j < m; ++j) {
-    PacketPath& q = paths[size_t(j)];
-    if (q.paused) finishPaused(q.cursor, q.nee, blocked[size_t(j)], rngOf(pixel[j]), q.sums, &q.rec);
-    addSums(sums[pixel[j]], q.rec, q.sums, tileCounters);
+  for (bool any = true; any;) {
+    std::array<int, kPacket> blocked;
+    castShadowPacket(paths.data(), m, blocked.data(), tileCounters);
+    any = false;
+    for (int j = 0; j < m; ++j) {
+      PacketPath& q = paths[size_t(j)];
+      if (!q.paused) continue;
+      q.paused = finishPaused(q.cursor, q.nee, blocked[size_t(j)], rngOf(pixel[j]), q.sums, &q.rec,
+                              kLockstep ? &q.nee : nullptr);
+      any = any || q.paused;
+    }
   }
+  for (int j = 0; j < m; ++j) addSums(sums[pixel[j]], paths[size_t(j)].rec, paths[size_t(j)].sums, tileCounters);
 }
 
 // The first shadow ray (into withScene: the paths paused in Shared or WithOnly mode) of every
