@@ -694,46 +694,6 @@ TEST(Determinism, SameSeedSameBuffersAnyThreadCount) {
     ASSERT_NEAR(d.sumWith.data[i], a.sumWith.data[i], 1e-4 * (1 + std::abs(a.sumWith.data[i])));
 }
 
-// The first vertices' NEE of a camera packet, its shadow rays cast in one rtcOccluded8
-// (TracerOptions::shadowPackets), gives the sums of the paths traced one at a time bit for bit:
-// a sphere shadowing the floor (the shadow ray retried without it), an emissive box (a source in
-// the with-scene only), a row of 44 pixels (a packet of 4 at its end), pixels with 0 to 3
-// samples (lanes missing from a packet) and the denoiser's guides.
-TEST(ShadowPackets, FirstVertexNeeEqualsOneAtATime) {
-  const int w = 44, h = 30;
-  RenderScene s = closedRoomScene(w, h, true);
-  InsertedObject glow = test::placedObject(test::boxMesh(RoomBox{-0.1, 0.1, -0.1, 0.1, 0.3}),
-                                           Vec3(-0.6, 0, -2.2), Material::Kind::Emissive);
-  glow.material.emission = Vec3(2, 3, 4);
-  s.objects.push_back(glow);
-  std::vector<int> counts(size_t(w) * h);
-  for (size_t i = 0; i < counts.size(); ++i) counts[i] = int((i * 7) % 4);
-  auto renderWith = [&](bool packets, DifferentialBuffers& b, PathTracer::Stats* stats) {
-    TracerOptions o;
-    o.shadowPackets = packets;
-    PathTracer tracer(s, o);
-    b.enableGuides();
-    ASSERT_TRUE(tracer.render(b, 0, 2, 31));
-    ASSERT_TRUE(tracer.renderCounts(b, counts, 31));
-    *stats = tracer.stats();
-  };
-  DifferentialBuffers a(w, h), b(w, h);
-  PathTracer::Stats sa, sb;
-  renderWith(true, a, &sa);
-  renderWith(false, b, &sb);
-  EXPECT_EQ(sa.shadowRays, sb.shadowRays);
-  EXPECT_EQ(sa.rays, sb.rays);
-  EXPECT_TRUE(sameBits(a.sumWith, b.sumWith));
-  EXPECT_TRUE(sameBits(a.sumWithout, b.sumWithout));
-  EXPECT_TRUE(sameBits(a.sumChange, b.sumChange));
-  EXPECT_TRUE(sameBits(a.sumDiffSq, b.sumDiffSq));
-  EXPECT_TRUE(sameBits(a.sumMask, b.sumMask));
-  EXPECT_TRUE(sameBits(a.sumGuideAlbedo, b.sumGuideAlbedo));
-  EXPECT_EQ(a.samples, b.samples);
-  // Not vacuous: the objects shadow and light the room, so with and without differ.
-  EXPECT_FALSE(sameBits(a.sumWith, a.sumWithout));
-}
-
 TEST(Determinism, MovingAnObjectEqualsBuildingItThere) {
   const int w = 40, h = 30;
   RenderScene s = closedRoomScene(w, h, true);

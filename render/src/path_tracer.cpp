@@ -645,20 +645,15 @@ struct PathTracer::Impl {
     out.counters.shadowNs += rayClockNs() - t0;
     return hit;
   }
-  // The answer of a shadow ray known already (cast in a packet: 0 open, 1 blocked), or, when
-  // `known` < 0, blocked() cast here.
-  bool blockedUnless(int known, Sums& out, RTCScene s, const Vec3& o, const Vec3& dir, double tFar) const {
-    return known >= 0 ? known != 0 : blocked(out, s, o, dir, tFar);
-  }
   // Adds light c reaching o from direction dir (up to tFar) to the sums of `mode`: with the
   // paths still shared, a ray the objects block is retried without them (only then do the
-  // two sums differ). firstBlocked: the first ray's answer, if known (blockedUnless).
+  // two sums differ).
   void addUnlessBlocked(Mode mode, RTCScene with, RTCScene without, const Vec3& o, const Vec3& dir,
-                        double tFar, const Vec3& c, Sums& out, int firstBlocked = -1) const {
+                        double tFar, const Vec3& c, Sums& out) const {
     if (mode == Mode::Shared) {
-      if (!blockedUnless(firstBlocked, out, with, o, dir, tFar)) out.with += c, out.without += c;
+      if (!blocked(out, with, o, dir, tFar)) out.with += c, out.without += c;
       else if (!blocked(out, without, o, dir, tFar)) out.without += c;  // only an object blocks it
-    } else if (!blockedUnless(firstBlocked, out, mode == Mode::WithOnly ? with : without, o, dir, tFar)) {
+    } else if (!blocked(out, mode == Mode::WithOnly ? with : without, o, dir, tFar)) {
       (mode == Mode::WithOnly ? out.with : out.without) += c;
     }
   }
@@ -705,11 +700,6 @@ struct PathTracer::Impl {
                     const int* count, uint32_t seed, RayCounters& tileCounters) const;
   void castCameraPacket(int n, const Vec3& eye, const Vec3* dirs, Hit* hits,
                         RayCounters& tileCounters) const;
-  struct PacketPath;
-  template <class RngOf>
-  void tracePacket(PixelSums* sums, const int* pixel, int m, const Vec3* dirs, const Hit* hits,
-                   bool wantGuide, const RngOf& rngOf, RayCounters& tileCounters) const;
-  void castShadowPacket(const PacketPath* paths, int m, int* answers, RayCounters& tileCounters) const;
   template <class RenderRun>
   bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
                     const CancelToken* cancel, RenderRun&& renderRun) const;
@@ -739,7 +729,6 @@ struct PathTracer::Impl {
   // firstHit: the camera ray's hit in withScene, cast already (in a packet), or null.
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
                  const Hit* firstHit = nullptr) const;
-  void addSums(PixelSums& p, const PrimaryRecord& rec, const Sums& sums, RayCounters& tileCounters) const;
   void recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const;
   bool guideReflectance(const Hit& hit, Vec3* albedo) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
@@ -776,35 +765,6 @@ struct PathTracer::Impl {
     if (mode != Mode::WithoutOnly) out.with += c;
     if (mode != Mode::WithOnly) out.without += c;
   }
-  // NEE's shadow ray toward a source, worked out and not yet cast: from o along the segment ws
-  // to the source's point (Embree's t the segment's fraction, up to kTFar), c if it is open.
-  struct SourceShadow {
-    static constexpr double kTFar = 1.0 - 1e-4;
-    Vec3 o, ws, c;
-    bool cast = false;  // a ray to cast (else the sample adds nothing)
-    bool mesh = false;  // toward an emissive object: the with-scene only
-  };
-  // Where a path stands between two vertices: tracePath's loop (walkPath), which a camera
-  // packet pauses at the first NEE and resumes (finishPaused).
-  struct PathCursor {
-    Mode mode = Mode::Shared;
-    PathState st;
-    const Hit* firstHit = nullptr;  // the camera ray's hit, cast in a packet
-    Hit ahead;                      // this vertex's hit when the last vertex cast its ray
-    bool castAhead = false;
-  };
-  // A non-specular vertex paused after its bounce's ray was cast and its NEE sample toward a
-  // source worked out, before that sample's shadow ray (the cursor keeps the vertex's state).
-  struct PausedNee {
-    Vertex v;
-    SurfaceBsdf bsdf;
-    Frame frame{Vec3(0, 0, 1)};
-    Vec3 woLocal, selectNormal;
-    PathState after;  // the state the bounce left (goesOn)
-    bool goesOn = false;
-    SourceShadow shadow;
-    Lobe lobe() const { return {bsdf, frame, woLocal, selectNormal}; }
-  };
   Hit castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out,
                   bool prefetchTexel = false) const;
   void addLightSeen(Mode mode, const PathState& st, const Hit& hit, Sums& out) const;
@@ -812,31 +772,14 @@ struct PathTracer::Impl {
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
   // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
   [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
-  bool walkPath(PathCursor& c, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
-                PausedNee* pause) const;
-  bool finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng, Sums& out,
-                    PrimaryRecord* rec, PausedNee* pause) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                           const SampleRng& rng, Sums& out, Hit* next) const;
-  void pauseNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                        const SampleRng& rng, Sums& out, Hit* next, PausedNee& p) const;
-  Lobe lobeAt(const Vertex& v, const SurfaceBsdf& bsdf) const {
-    const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
-    // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
-    // transmits (rough glass): then every side counts (a zero normal says so).
-    return {bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
-  }
-  bool neeAt(const SurfaceBsdf& bsdf) const { return !bsdf.transmits() || options.roughGlassNee; }
-  bool bounceAhead(Mode mode, PathState& st, const Vertex& v, const Lobe& lobe, bool nee,
-                   const SampleRng& rng, Sums& out, PathState& after, Hit* next) const;
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
                                    Vec3* y);
-  SourceShadow sourceShadow(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe) const;
-  void addSourceShadow(Mode mode, const SourceShadow& q, int firstBlocked, Sums& out) const;
-  void addSunNee(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                 const SampleRng& rng, Sums& out) const;
+  void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                       Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
   void addSunPatchSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                          const SampleRng& rng, Sums& out) const;
@@ -940,73 +883,45 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 // vertex casts the next ray before its NEE (scatterNonSpecular), so the ray's hit waits here.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  PrimaryRecord* rec, const Hit* firstHit) const {
-  PathCursor c;
-  c.mode = mode, c.st = st, c.firstHit = firstHit;
-  walkPath(c, rng, out, rec, nullptr);
-}
-
-// tracePath's loop from the cursor. With `pause`, the path stops at its first vertex that makes
-// NEE, once the NEE's sample toward a source is worked out and before its shadow ray (into
-// *pause; finishPaused goes on from there): true when it paused.
-bool PathTracer::Impl::walkPath(PathCursor& c, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
-                                PausedNee* pause) const {
-  PathState& st = c.st;
-  for (;; ++st.depth, c.firstHit = nullptr) {
-    Hit hit = c.firstHit ? *c.firstHit : c.castAhead ? c.ahead : castPathRay(c.mode, st, rng, out);
-    if (std::exchange(c.castAhead, false)) checkTexel(hit);
-    if (rec && rec->wantGuide && rec->guideOpen && c.mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
-    if (c.mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
+  Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
+  bool castAhead = false;
+  for (;; ++st.depth, firstHit = nullptr) {
+    Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
+    if (std::exchange(castAhead, false)) checkTexel(hit);
+    if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
+    if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (st.depth == 0 && rec) rec->objectFirst = true;
       // The paths part here: the same ray goes on through the room alone, from the same state
       // and with the same depth-indexed random dimensions; this path goes on with the objects.
       tracePath(Mode::WithoutOnly, st, rng, out, nullptr);
-      c.mode = Mode::WithOnly;
+      mode = Mode::WithOnly;
     }
-    if (hit.kind == Hit::Kind::None) return false;
-    if (hit.kind == Hit::Kind::Light) return addLightSeen(c.mode, st, hit, out), false;
-    if (endsOnPhoto(c.mode, st, hit, rng, out)) return false;
+    if (hit.kind == Hit::Kind::None) return;
+    if (hit.kind == Hit::Kind::Light) return addLightSeen(mode, st, hit, out);
+    if (endsOnPhoto(mode, st, hit, rng, out)) return;
     SurfaceBsdf bsdf;
-    if (!surfaceBsdf(c.mode, st, hit, out, &bsdf)) return false;  // a glowing object ends the path
+    if (!surfaceBsdf(mode, st, hit, out, &bsdf)) return;  // a glowing object ends the path
     const bool glass = bsdf.kind == Material::Kind::Glass;
     if (glass ? st.glassVertices >= options.maxGlassDepth
               : st.depth - st.glassVertices >= options.maxDepth)
-      return false;
+      return;
     st.glassVertices += glass ? 1 : 0;
     st.causticChain = glass && st.causticChain != 0 ? 2 : 0;
     const Vertex v = vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
-      if (pause && neeAt(bsdf) && c.mode != Mode::WithoutOnly)
-        return pauseNonSpecular(c.mode, st, v, bsdf, rng, out, &c.ahead, *pause), true;
-      if (!scatterNonSpecular(c.mode, st, v, bsdf, rng, out, &c.ahead)) return false;
-      c.castAhead = true;
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead)) return;
+      castAhead = true;
       continue;
     }
     const bool split = glass && st.depth == 0 && options.splitGlassAtCamera;
     const bool goesOn = bsdf.kind == Material::Kind::Mirror ? reflectMirror(st, v, bsdf)
-                        : split                             ? splitGlass(c.mode, st, v, bsdf, rng, out)
+                        : split                             ? splitGlass(mode, st, v, bsdf, rng, out)
                                                             : scatterGlass(st, v, bsdf);
-    if (!goesOn) return false;
+    if (!goesOn) return;
     st.tNear = 0;
-    if (!survivesRoulette(st, v)) return false;
+    if (!survivesRoulette(st, v)) return;
   }
-}
-
-// A path paused by walkPath: its NEE toward the source with the shadow ray's answer `blocked`
-// (cast in a packet; -1: cast here), the suns' NEE, then the rest of the path, paused again at
-// its next NEE when `pause` is given (it may be &p: p is not read once the path goes on).
-bool PathTracer::Impl::finishPaused(PathCursor& c, const PausedNee& p, int blocked, const SampleRng& rng,
-                                    Sums& out, PrimaryRecord* rec, PausedNee* pause) const {
-  const int64_t neeStart = neeClockNs();
-  const Lobe lobe = p.lobe();
-  addSourceShadow(c.mode, p.shadow, blocked, out);
-  addSunNee(c.mode, c.st, p.v, lobe, rng, out);
-  out.counters.neeNs += neeClockNs() - neeStart;
-  if (!p.goesOn) return false;
-  c.st = p.after;
-  ++c.st.depth;
-  c.castAhead = true, c.firstHit = nullptr;
-  return walkPath(c, rng, out, rec, pause);
 }
 
 Hit PathTracer::Impl::castPathRay(Mode mode, const PathState& st, const SampleRng& rng, Sums& out,
@@ -1198,57 +1113,30 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
                                           const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
                                           Hit* next) const {
-  const Lobe lobe = lobeAt(v, bsdf);
-  const bool nee = neeAt(bsdf);
-  PathState after;
-  const bool goesOn = bounceAhead(mode, st, v, lobe, nee, rng, out, after, next);
-  if (nee) {
-    const int64_t neeStart = neeClockNs();
-    addSourceShadow(mode, sourceShadow(mode, st, v, lobe), -1, out);
-    addSunNee(mode, st, v, lobe, rng, out);
-    out.counters.neeNs += neeClockNs() - neeStart;
-  }
-  if (goesOn) st = after;
-  return goesOn;
-}
-
-// scatterNonSpecular up to the shadow ray of its NEE toward a source, into `p` (the vertex
-// makes NEE: neeAt).
-void PathTracer::Impl::pauseNonSpecular(Mode mode, PathState& st, const Vertex& v,
-                                        const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
-                                        Hit* next, PausedNee& p) const {
-  p.v = v, p.bsdf = bsdf;
-  const Lobe lobe = lobeAt(p.v, p.bsdf);
-  p.frame = lobe.frame, p.woLocal = lobe.woLocal, p.selectNormal = lobe.selectNormal;
-  p.goesOn = bounceAhead(mode, st, v, lobe, true, rng, out, p.after, next);
-  const int64_t neeStart = neeClockNs();
-  p.shadow = sourceShadow(mode, st, v, lobe);
-  out.counters.neeNs += neeClockNs() - neeStart;
-}
-
-// The caustic map's light at a non-specular vertex (it marks the path, PathState::causticChain,
-// before the bounce copies its state), then the bounce into `after` and the roulette, and the
-// bounce's ray cast into *next when the path goes on (the return value).
-bool PathTracer::Impl::bounceAhead(Mode mode, PathState& st, const Vertex& v, const Lobe& lobe,
-                                   bool nee, const SampleRng& rng, Sums& out, PathState& after,
-                                   Hit* next) const {
-  if (lobe.bsdf.kind == Material::Kind::Diffuse && !caustics.empty())
-    addCausticLight(mode, st, v, lobe.bsdf, out);
-  after = st;
+  const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
+  // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
+  // transmits (rough glass): then every side counts (a zero normal says so).
+  const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
+  const bool nee = !bsdf.transmits() || options.roughGlassNee;
+  // The caustic map's light here marks the path (PathState::causticChain) before the bounce
+  // copies its state.
+  if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
+  PathState after = st;
   const bool goesOn = bounceFrom(after, v, lobe, nee) && survivesRoulette(after, v);
   if (goesOn) {
     PathState ray = after;
     ++ray.depth;
     *next = castPathRay(mode, ray, rng, out, true);
   }
+  if (nee) {
+    const int64_t neeStart = neeClockNs();
+    addSourceSample(mode, st, v, lobe, out);
+    addSunLight(mode, st, v, lobe, out);
+    if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
+    out.counters.neeNs += neeClockNs() - neeStart;
+  }
+  if (goesOn) st = after;
   return goesOn;
-}
-
-// NEE toward the suns and the sunlit patches.
-void PathTracer::Impl::addSunNee(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                                 const SampleRng& rng, Sums& out) const {
-  addSunLight(mode, st, v, lobe, out);
-  if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
 }
 
 // The next ray from a non-specular vertex, sampled from its BSDF, into `st`; false when the
@@ -1314,15 +1202,14 @@ double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from
 
 // Next-event estimation to one source (area light or emissive object) picked by power over
 // squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
-// the BSDF: its shadow ray and what it adds if open (addSourceShadow casts it).
-PathTracer::Impl::SourceShadow PathTracer::Impl::sourceShadow(Mode mode, const PathState& st,
-                                                              const Vertex& v, const Lobe& lobe) const {
-  SourceShadow q;
+// the BSDF, with a shadow ray.
+void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
+                                       Sums& out) const {
   double selectProb = 0;
   const size_t li = sourceCount() == 0
                         ? sourceCount()
                         : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &selectProb);
-  if (li >= sourceCount() || !(selectProb > 0)) return q;
+  if (li >= sourceCount() || !(selectProb > 0)) return;
   const SourcePoint p = sampleSource(li, v.point, v.lightPoint());
   Vec3 w = p.y - v.point;
   const double d = std::sqrt(w.squaredNorm());
@@ -1332,10 +1219,10 @@ PathTracer::Impl::SourceShadow PathTracer::Impl::sourceShadow(Mode mode, const P
   const bool above = w.dot(v.ngFacing) > 0;
   const Vec3 wLocal = lobe.frame.toLocal(w);
   if (!(d > 2 * v.eps && cosL > 0 && (above || lobe.bsdf.transmits()) && (wLocal.z() > 0) == above))
-    return q;
+    return;
   double pdfBsdf = 0;
   const Vec3 fcos = lobe.bsdf.eval(lobe.woLocal, wLocal, &pdfBsdf);
-  if (!(fcos.maxCoeff() > 0)) return q;
+  if (!(fcos.maxCoeff() > 0)) return;
   const double pdfLight =
       p.mesh             ? meshLightPdf(li - lights.size(), v.point, lobe.selectNormal, p.y, p.normal)
       : p.solidAngle > 0 ? selectProb / p.solidAngle
@@ -1348,24 +1235,16 @@ PathTracer::Impl::SourceShadow PathTracer::Impl::sourceShadow(Mode mode, const P
   // The shadow ray runs from the offset origin to the sampled point itself, stopping just
   // short of the emitter (which would otherwise block its own light): its direction is the
   // segment itself, not normalised (Embree's t is then the fraction of it).
-  q.o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
-  q.ws = p.y - q.o;
-  q.c = c;
-  q.mesh = p.mesh;
-  // An emissive object exists in the with-scene only.
-  q.cast = !p.mesh || (mode != Mode::WithoutOnly && c.maxCoeff() > 0);
-  return q;
-}
-
-// Casts NEE's shadow ray q (its first ray's answer given when firstBlocked >= 0) and adds its
-// light to the sums of `mode` if it is open.
-void PathTracer::Impl::addSourceShadow(Mode mode, const SourceShadow& q, int firstBlocked,
-                                       Sums& out) const {
-  if (!q.cast) return;
-  if (!q.mesh)
-    return addUnlessBlocked(mode, withScene, withoutScene, q.o, q.ws, SourceShadow::kTFar, q.c, out,
-                            firstBlocked);
-  if (!blockedUnless(firstBlocked, out, withScene, q.o, q.ws, SourceShadow::kTFar)) out.with += q.c;
+  const Vec3 o = v.point + (above ? v.eps : -v.eps) * v.ngFacing;
+  const Vec3 ws = p.y - o;
+  const double tFar = 1.0 - 1e-4;
+  if (p.mesh) {
+    // An emissive object exists in the with-scene only.
+    if (mode != Mode::WithoutOnly && c.maxCoeff() > 0 && !blocked(out, withScene, o, ws, tFar))
+      out.with += c;
+  } else {
+    addUnlessBlocked(mode, withScene, withoutScene, o, ws, tFar, c, out);
+  }
 }
 
 // The sunlit patches the photo shows (sun_patch.h): a point picked on them by power, its photo
@@ -2046,12 +1925,6 @@ void PathTracer::Impl::addSample(PixelSums& p, bool wantGuide, const PathState& 
   PrimaryRecord rec;
   rec.wantGuide = wantGuide;
   tracePath(Mode::Shared, st, rng, sums, &rec, firstHit);
-  addSums(p, rec, sums, tileCounters);
-}
-
-// One sample's path sums and record (traced) added to its pixel's sums `p`.
-void PathTracer::Impl::addSums(PixelSums& p, const PrimaryRecord& rec, const Sums& sums,
-                               RayCounters& tileCounters) const {
   tileCounters += sums.counters;
   if (rec.wantGuide) p.guide.add(rec);
   if (!sums.with.allFinite() || !sums.without.allFinite()) {
@@ -2130,11 +2003,6 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
     }
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
-    if (options.shadowPackets) {
-      tracePacket(sums.data(), pixel.data(), m, dirs.data(), hits.data(), buffers.hasGuides(), rngOf,
-                  tileCounters);
-      continue;
-    }
     for (int j = 0; j < m; ++j) {
       const int i = pixel[size_t(j)];
       addSample(sums[size_t(i)], buffers.hasGuides(), cameraRay(dirs[size_t(j)]), rngOf(i),
@@ -2143,87 +2011,6 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
   }
   for (int i = 0; i < n; ++i)
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);
-}
-
-constexpr bool kLockstep = true;
-// One path of a camera packet (tracePacket).
-struct PathTracer::Impl::PacketPath {
-  PathCursor cursor;
-  Sums sums;
-  PrimaryRecord rec;
-  PausedNee nee;
-  bool paused = false;
-};
-
-// The paths of a camera packet's m rays (dirs, their hits cast) in lockstep up to their first
-// NEE: each is traced to its NEE sample toward a source (walkPath pauses it), the samples'
-// shadow rays go in one rtcOccluded8, then each path goes on alone; lane j's sums are added to
-// sums[pixel[j]]. The same paths and sums as addSample's, one after the other.
-template <class RngOf>
-void PathTracer::Impl::tracePacket(PixelSums* sums, const int* pixel, int m, const Vec3* dirs,
-                                   const Hit* hits, bool wantGuide, const RngOf& rngOf,
-                                   RayCounters& tileCounters) const {
-  // Kept from one packet to the next: cleared in full, eight paths' state costs about a tenth of
-  // a camera ray's time outside Embree (the pause is written over before it is read).
-  static thread_local std::array<PacketPath, kPacket> paths;
-  for (int j = 0; j < m; ++j) {
-    PacketPath& q = paths[size_t(j)];
-    q.cursor.mode = Mode::Shared, q.cursor.castAhead = false;
-    q.cursor.st = cameraRay(dirs[j]), q.cursor.firstHit = &hits[j];
-    q.sums = Sums();
-    q.rec = PrimaryRecord();
-    q.rec.wantGuide = wantGuide;
-    q.paused = walkPath(q.cursor, rngOf(pixel[j]), q.sums, &q.rec, &q.nee);
-  }
-  for (bool any = true; any;) {
-    std::array<int, kPacket> blocked;
-    castShadowPacket(paths.data(), m, blocked.data(), tileCounters);
-    any = false;
-    for (int j = 0; j < m; ++j) {
-      PacketPath& q = paths[size_t(j)];
-      if (!q.paused) continue;
-      q.paused = finishPaused(q.cursor, q.nee, blocked[size_t(j)], rngOf(pixel[j]), q.sums, &q.rec,
-                              kLockstep ? &q.nee : nullptr);
-      any = any || q.paused;
-    }
-  }
-  for (int j = 0; j < m; ++j) addSums(sums[pixel[j]], paths[size_t(j)].rec, paths[size_t(j)].sums, tileCounters);
-}
-
-// The first shadow ray (into withScene: the paths paused in Shared or WithOnly mode) of every
-// paused path's NEE sample that casts one, in one rtcOccluded8; answers[j]: 1 blocked, 0 open,
-// -1 no ray. Counted (and timed, if asked) as shadow rays and NEE.
-void PathTracer::Impl::castShadowPacket(const PacketPath* paths, int m, int* answers,
-                                        RayCounters& tileCounters) const {
-  const int64_t neeStart = neeClockNs();
-  alignas(32) RTCRay8 r;
-  alignas(32) int valid[kPacket];
-  int n = 0;
-  for (int k = 0; k < kPacket; ++k) {
-    const SourceShadow* q = k < m && paths[k].paused && paths[k].nee.shadow.cast ? &paths[k].nee.shadow
-                                                                                 : nullptr;
-    valid[k] = q ? -1 : 0;
-    answers[k] = -1;
-    const RTCRay one = q ? makeRay(q->o, q->ws, 0, SourceShadow::kTFar) : makeRay(Vec3::Zero(), Vec3::UnitZ(), 0, 0);
-    r.org_x[k] = one.org_x, r.org_y[k] = one.org_y, r.org_z[k] = one.org_z;
-    r.dir_x[k] = one.dir_x, r.dir_y[k] = one.dir_y, r.dir_z[k] = one.dir_z;
-    r.tnear[k] = one.tnear, r.tfar[k] = one.tfar;
-    r.time[k] = 0, r.mask[k] = one.mask, r.id[k] = unsigned(k), r.flags[k] = 0;
-    if (!q) continue;
-    ++n;
-    if (options.rayLog) logRay(LoggedRay::Type::Shadow, withScene, q->o, q->ws, 0, SourceShadow::kTFar);
-  }
-  if (n > 0) {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    const int64_t t0 = rayClockNs();
-    rtcOccluded8(valid, withScene, &ctx, &r);
-    tileCounters.shadowNs += rayClockNs() - t0;
-    tileCounters.shadowRays += uint64_t(n);
-    for (int k = 0; k < kPacket; ++k)
-      if (valid[k] == -1) answers[k] = r.tfar[k] < 0 ? 1 : 0;
-  }
-  tileCounters.neeNs += neeClockNs() - neeStart;
 }
 
 // Renders the pixels of [x0,x1) x [y0,y1) (clipped to the buffers) by `renderOne(x, y, counters)`

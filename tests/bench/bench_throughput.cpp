@@ -13,10 +13,8 @@
 //             inside NEE and overstate it);
 //     bounce: the rest of the full frame (its camera rays at the camera rate, and NEE, taken off).
 //   The bare loop casts the very rays the frame cast (TracerOptions::rayLog), each type on its
-//   own, as the renderer cast them (rtcIntersect8 for its camera packets, rtcOccluded8 for runs
-//   of shadow rays into the scene with the objects logged one after the other, as the packets'
-//   first NEE casts them, rtcIntersect1 / rtcOccluded1 for the rest; the single-ray figure of
-//   every type is printed too) into scenes
+//   own, as the renderer cast them (rtcIntersect8 for its camera packets, rtcIntersect1 /
+//   rtcOccluded1 for the rest; the single-ray figure of every type is printed too) into scenes
 //   built here from the same RenderScene (room
 //   surfaces, light quads, one instanced BVH per object; the sun scenes without box walls and
 //   emitters), nothing else in the loop.
@@ -146,11 +144,8 @@ class BareScenes {
     for (size_t i = 0; i < rays.size(); ++i) {
       const LoggedRay& r = rays[i];
       if (r.type != type) continue;
-      const int run = asCast ? packetRun(rays, i) : 1;
-      if (run > 1 && type == LoggedRay::Type::Shadow) {
-        hits += castShadowPacket(&r, run);
-        n += size_t(run), i += size_t(run) - 1;
-      } else if (run > 1) {
+      const int run = asCast ? cameraRun(rays, i) : 1;
+      if (run > 1) {
         hits += castPacket(&r, run);
         n += size_t(run), i += size_t(run) - 1;
       } else {
@@ -166,35 +161,14 @@ class BareScenes {
   }
 
  private:
-  // How many camera (or shadow) rays into the scene with the objects follow one another from
-  // rays[i], rays[i]'s type (at most 8; 0 or 1: cast alone).
-  static int packetRun(const std::vector<LoggedRay>& rays, size_t i) {
-    const LoggedRay::Type type = rays[i].type;
-    if (type == LoggedRay::Type::Bounce) return 1;
+  // How many camera rays into the scene with the objects follow one another from rays[i] (at
+  // most 8; 0 or 1: cast alone).
+  static int cameraRun(const std::vector<LoggedRay>& rays, size_t i) {
     int n = 0;
-    while (n < 8 && i + size_t(n) < rays.size() && rays[i + size_t(n)].type == type &&
+    while (n < 8 && i + size_t(n) < rays.size() && rays[i + size_t(n)].type == LoggedRay::Type::Camera &&
            rays[i + size_t(n)].target == LoggedRay::Target::With)
       ++n;
     return n;
-  }
-  // Shadow rays r[0 .. n-1] (n <= 8, one target) in one rtcOccluded8; how many are blocked.
-  unsigned castShadowPacket(const LoggedRay* r, int n) const {
-    alignas(32) RTCRay8 ray;
-    alignas(32) int valid[8];
-    for (int k = 0; k < 8; ++k) {
-      const LoggedRay& q = r[std::min(k, n - 1)];
-      valid[k] = k < n ? -1 : 0;
-      ray.org_x[k] = q.org[0], ray.org_y[k] = q.org[1], ray.org_z[k] = q.org[2];
-      ray.dir_x[k] = q.dir[0], ray.dir_y[k] = q.dir[1], ray.dir_z[k] = q.dir[2];
-      ray.tnear[k] = q.tnear, ray.tfar[k] = q.tfar;
-      ray.time[k] = 0, ray.mask[k] = 0xFFFFFFFFu, ray.id[k] = 0, ray.flags[k] = 0;
-    }
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcOccluded8(valid, targets_[int(r[0].target)], &ctx, &ray);
-    unsigned hits = 0;
-    for (int k = 0; k < n; ++k) hits += ray.tfar[k] < 0;
-    return hits;
   }
   unsigned castOne(const LoggedRay& r) const {
     RTCIntersectContext ctx;

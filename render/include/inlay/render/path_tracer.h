@@ -55,10 +55,6 @@ struct TracerOptions {
   bool timeRays = false;         // time every ray by type (benchmarks: two clock reads per ray)
   bool timeNee = false;          // time next-event estimation alone (RayCounters::neeNs; two clock
                                  // reads per NEE vertex, none per ray): implied by timeRays
-  // With camera packets, the first vertices' next-event estimation toward the area lights and
-  // emissive objects is done for the whole packet and its shadow rays are cast as one
-  // rtcOccluded8; false: one path at a time (the same rays and sums: tests compare the two).
-  bool shadowPackets = true;
   bool roughGlassNee = true;     // next-event estimation (with MIS) at rough glass; false: found
                                  // by BSDF sampling alone (for comparison; suns then miss it)
   // The camera's pixel filter (render/src/pixel_filter.h): 0 the box of the pixel; w > 0 a
