@@ -235,7 +235,6 @@ class LayoutSearch {
     double topSupported = 0, topVisible = 0;        // the back wall's top edge alone
     double bottomSupported = 0, bottomVisible = 0;  // its bottom edge, the floor crease
     double ceilingZ = 0, ceilingY = 0;              // receding and vertical line samples on the ceiling
-    double standing = 0;                            // layout px of verticals standing on the floor crease
   };
 
   // Whether the photo shows the box's top edge as a ceiling crease: at least kCeilingSeenShare of
@@ -338,8 +337,7 @@ class LayoutSearch {
     }
     s.total -= 0.5 * ws_ * prior;
     // Vertical edges standing on the floor crease (the back wall's bottom edge, BL to BR).
-    s.standing = ws_ * standingOn(uprights_, c[3], c[2], uY_, kTopTolLayoutPx / ws_);
-    s.total += kStandingWeight * s.standing;
+    s.total += kStandingWeight * ws_ * standingOn(uprights_, c[3], c[2], uY_, kTopTolLayoutPx / ws_);
     if (refuse_ && implausible(t, s)) s.total = -1e300;
     return s;
   }
@@ -1040,7 +1038,8 @@ bool continuesBelow(const std::vector<Upright>& uprights, const Upright& u, cons
     if (&v == &u) continue;
     const double vUp = (v.upPx - a).dot(n), vDown = (v.downPx - a).dot(n);
     const bool inLine = vUp > tolPx && off(v.upPx) <= 1.5 * tolPx && off(v.downPx) <= 1.5 * tolPx;
-    const bool hangsHere = std::abs(vUp) <= tolPx && vDown > tolPx && (v.upPx - u.downPx).norm() <= 2 * tolPx;
+    const bool hangsHere = std::abs(vUp) <= tolPx && vDown > tolPx &&
+                           (v.upPx - u.downPx).norm() <= 2 * tolPx;
     if (inLine || hangsHere) return true;
   }
   return false;
