@@ -1054,10 +1054,14 @@ double standingOn(const std::vector<Upright>& uprights, const Vec2& a, const Vec
   if (!(e2 > 0) || !std::isfinite(e2) || !down.allFinite()) return 0;
   Vec2 n = Vec2(-e.y(), e.x()) / std::sqrt(e2);  // across the line, pointing down
   if (n.dot(down) < 0) n = -n;
+  // Between a and b, within tolPx beyond either end: an edge standing at the line's end (the wall's
+  // own corner) counts whether the end lies just inside or just outside it, so the side edges
+  // gain nothing by taking it in.
+  const double margin = tolPx / std::sqrt(e2);
   double sum = 0;
   for (const Upright& u : uprights) {
     const double t = (u.downPx - a).dot(e) / e2;
-    if (!(t >= 0 && t <= 1)) continue;
+    if (!(t >= -margin && t <= 1 + margin)) continue;
     const double below = (u.downPx - a).dot(n), upBelow = (u.upPx - a).dot(n);
     if (std::abs(below) <= tolPx && upBelow < -tolPx && !continuesBelow(uprights, u, a, n, tolPx))
       sum += (u.downPx - u.upPx).norm();
