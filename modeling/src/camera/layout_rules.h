@@ -82,6 +82,27 @@ std::vector<bool> furnitureTops(const std::vector<LineSegment>& segments, double
                                 const std::optional<Vec2>& forwardPx = std::nullopt,
                                 double ambiguousPx = 0);
 
+// A vertical (family 1) edge of the photo, its ends in photo pixels.
+struct Upright {
+  Vec2 upPx, downPx;  // its upper and lower end in the photo
+};
+// The vertical edges that may stand on a floor crease: family 1, not the user's, not skip[i] (a
+// saturated patch's outline), and not along the forward vanishing point (as furnitureTops).
+std::vector<Upright> uprightsOf(const std::vector<LineSegment>& segments, const std::vector<bool>& skip,
+                                const std::optional<Vec2>& forwardPx, double ambiguousPx);
+// How much vertical edge stands on the line through a and b (issue #16, York round 17b): the
+// photo-pixel length of the uprights whose lower end lies within tolPx of the line, between a
+// and b, and whose upper end lies more than tolPx above it (`down`: the photo's downward
+// direction, across the line). Things stand on a floor crease: a door's frame, a cabinet's side,
+// the wall's own corner end there, and nothing of them goes on below it. An upright that another
+// continues below the line (its two ends within 1.5 tolPx of the upright's line, or its upper end
+// within 2 tolPx of the upright's foot: a tiled wall's joint, a pillar found in two pieces, a
+// frame and its reflection) crosses the line and does not count. Legs hanging from a
+// top are not counted against it (furnitureTops does that for the top's own segment). 0 for a
+// degenerate line or no uprights.
+double standingOn(const std::vector<Upright>& uprights, const Vec2& a, const Vec2& b, const Vec2& down,
+                  double tolPx);
+
 // What makes an automatic box doubtful, each a reason (empty: no doubt).
 struct BoxDoubts {
   // The floor crease is in view but nothing in the photo marks it, or (floorOutOfView) lies below
