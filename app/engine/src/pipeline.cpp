@@ -621,6 +621,7 @@ struct Preparation {
   // The photo as loaded, before the response decoded it: kept when the response check will
   // prepare it again with sRGB (PrepareOptions::checkResponseByLightFit).
   std::optional<LoadedImage> photoAsLoaded;
+  MeshCache* meshes = nullptr;  // the objects' meshes, shared by the response check's candidates
 
   // The image the image stages read, and the camera in its pixels.
   const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
@@ -1230,7 +1231,7 @@ Status buildRenderScene(Preparation& p, std::string&) {
 }
 
 Status placeTheObjects(Preparation& p, std::string& detail) {
-  auto placed = placeObjects(p.doc.objects, p.ps.geometry, p.ps.camera);
+  auto placed = placeObjects(p.doc.objects, p.ps.geometry, p.ps.camera, p.meshes);
   if (!placed) return placed.error();
   p.ps.renderScene.objects = std::move(placed->objects);
   p.ps.placements = std::move(placed->placements);
@@ -1412,15 +1413,26 @@ Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb,
   return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), checkWhy(curved, withSrgb));
 }
 
+// Whether the objects stand in the curve's room seen by its camera (its "objects" stage would
+// place them): the curve's preparation ran through before the check did, so a scene whose
+// objects do not stand there failed whichever response the check would have kept.
+Status curveObjectsStand(const Preparation& curved) {
+  auto placed = placeObjects(curved.doc.objects, curved.ps.geometry, curved.ps.camera, curved.meshes);
+  return placed ? Status() : Status(placed.error());
+}
+
 // PrepareOptions::checkResponseByLightFit: `curved` (prepared up to the refit with the
 // estimated curve) against the photo as loaded prepared up to the refit with sRGB; the stages
 // after the refit run once, for the one whose light fit explains the photo better. When sRGB's
-// preparation fails the curve stands.
+// preparation fails the curve stands; when sRGB is kept but the objects do not stand with the
+// curve, the preparation fails as it did when the curve's ran through first.
 Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
   const StageClock clock;
   SceneDoc srgbDoc = curved.doc;
   srgbDoc.camera.response = {ResponseKeys::Mode::Srgb};
   Preparation srgb(srgbDoc, curved.opt);
+  MeshCache meshes;
+  curved.meshes = srgb.meshes = &meshes;
   srgb.ps.photo = std::move(*curved.photoAsLoaded);
   curved.photoAsLoaded.reset();
   const Status ran = runStages(kResponseStages, srgb);
@@ -1429,6 +1441,7 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
   const double residual = srgb.ps.lighting.fitResidualRelative;
   const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
   if (srgbFitsBetter) {
+    if (Status st = curveObjectsStand(curved); !st) return st.error();
     Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, again, clock);
     if (kept || isCancelled(kept.error())) return kept;
   }
