@@ -8,7 +8,9 @@ Builds are alternated (their order reversed every round), each run at nice -n 10
 
 From the report: the preparation's wall and CPU seconds (the sums over its stage records, the
 response check's included), the response check's own (its record), the response it kept (the
-check's detail); and the process's CPU seconds (user + system, the 1-sample frame included).
+check's detail); and the process's CPU seconds (user + system, the 1-sample frame included: the
+measure to compare builds by, since a build before resp17c recorded, when sRGB was kept, the
+sRGB preparation's stages and then the same again as the check, and never the curve's).
 
 Photos are camera variants named ROOM_sK (../shared/tools/camera_variants.py, room ROOM of
 ../shared/scenes-train, seed K) or ROOM_plain, with harness.py's assisted scene. --mp M (0: the
@@ -23,7 +25,7 @@ usage: bench_response_check_cost.py --builds LABEL=BUILD_DIR,LABEL=BUILD_DIR --p
 
 Writes OUT/response_check_cost.csv (one row per build, round, size and photo; --append keeps the
 rows already there), OUT/response_check_cost_summary.csv (medians per build, size and photo, and
-each build's ratio to the first) and OUT/response_check_cost.png (median preparation CPU per
+each build's ratio to the first) and OUT/response_check_cost.png (median process CPU per
 photo and build). Variants and scenes are cached under OUT/variants.
 """
 import csv, importlib.util, json, math, os, resource, statistics, subprocess, sys, time
@@ -138,7 +140,8 @@ def summary(rows):
             base = base or med
             out.append({"build": label, "mp": mp, "photo": photo, "runs": len(sel), "kept": sel[0]["kept"],
                         **{k: round(v, 3) for k, v in med.items()},
-                        "prepare_cpu_ratio": round(med["prepare_cpu_s"] / base["prepare_cpu_s"], 3)})
+                        "prepare_cpu_ratio": round(med["prepare_cpu_s"] / base["prepare_cpu_s"], 3),
+                        "process_cpu_ratio": round(med["process_cpu_s"] / base["process_cpu_s"], 3)})
     return out
 
 
@@ -151,23 +154,26 @@ def plot(summ, path):
     for s in summ:
         if (s["mp"], s["photo"]) not in cases:
             cases.append((s["mp"], s["photo"]))
-    with benchlib.figure(path, 1, 1, figsize=(max(6, 1.2 * len(cases) + 2), 4)) as ax:
+    panels = (("process_cpu_s", "process CPU s (median)", "the preparation and a 1-sample frame"),
+              ("check_cpu_s", "response check CPU s (median)", "the check's own record"))
+    with benchlib.figure(path, 1, 2, figsize=(max(10, 2.4 * len(cases) + 2), 4)) as ax:
         if ax is None:
             return
         width = 0.8 / max(1, len(labels))
-        for i, label in enumerate(labels):
-            xs, ys = [], []
-            for j, case in enumerate(cases):
-                s = [x for x in summ if x["build"] == label and (x["mp"], x["photo"]) == case]
-                if s:
-                    xs.append(j + i * width)
-                    ys.append(float(s[0]["prepare_cpu_s"]))
-            ax.bar(xs, ys, width, label=label)
-        ax.set_xticks([j + 0.4 - width / 2 for j in range(len(cases))],
-                      ["%s\n%s MP" % (p, "own" if float(m) == 0 else m) for m, p in cases], fontsize=7)
-        ax.set_ylabel("preparation CPU s (median)")
-        ax.set_title("the response check's cost: preparation CPU per photo")
-        ax.legend()
+        for a, (key, ylabel, title) in zip(ax, panels):
+            for i, label in enumerate(labels):
+                xs, ys = [], []
+                for j, case in enumerate(cases):
+                    s = [x for x in summ if x["build"] == label and (x["mp"], x["photo"]) == case]
+                    if s:
+                        xs.append(j + i * width)
+                        ys.append(float(s[0][key]))
+                a.bar(xs, ys, width, label=label)
+            a.set_xticks([j + 0.4 - width / 2 for j in range(len(cases))],
+                         ["%s\n%s" % (p, "own size" if float(m) == 0 else m + " MP") for m, p in cases], fontsize=7)
+            a.set_ylabel(ylabel)
+            a.set_title(title)
+            a.legend()
 
 
 def main():
