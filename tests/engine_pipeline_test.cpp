@@ -8,9 +8,11 @@
 #include "inlay/modeling/image_io.h"
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 
 namespace inlay {
 namespace {
@@ -571,6 +573,53 @@ const StageRecord* stageNamed(const PreparedScene& ps, const std::string& name) 
   return nullptr;
 }
 
+std::vector<std::string> stageNames(const PreparedScene& ps) {
+  std::vector<std::string> names;
+  for (const StageRecord& s : ps.stages) names.push_back(s.name);
+  return names;
+}
+
+// Counts, per label, the stages PrepareOptions::progress announced (fraction 0 at a stage's start).
+void countStageStarts(PrepareOptions& opt, std::map<std::string, int>& starts) {
+  opt.progress = [&starts](const std::string& label, double fraction) {
+    if (fraction == 0) ++starts[label];
+  };
+}
+
+// What the render and the composite read of a prepared scene, bit for bit.
+void expectSameRenderInputs(const PreparedScene& a, const PreparedScene& b) {
+  EXPECT_EQ(a.response, b.response);
+  EXPECT_TRUE(a.photo.linearRgb.data == b.photo.linearRgb.data);
+  const ProjectedAlbedo &pa = a.renderScene.roomAlbedo, &pb = b.renderScene.roomAlbedo;
+  EXPECT_TRUE(pa.albedo.data == pb.albedo.data);
+  EXPECT_TRUE(pa.photoRadiance.data == pb.photoRadiance.data);
+  EXPECT_EQ(pa.firstSurfacePerPixel, pb.firstSurfacePerPixel);
+  ASSERT_EQ(a.renderScene.lights.size(), b.renderScene.lights.size());
+  for (size_t i = 0; i < a.renderScene.lights.size(); ++i) {
+    EXPECT_EQ(a.renderScene.lights[i].radiance, b.renderScene.lights[i].radiance) << i;
+    EXPECT_EQ(a.renderScene.lights[i].cornersWorld, b.renderScene.lights[i].cornersWorld) << i;
+  }
+  EXPECT_EQ(a.photoNoise.grainWidthPx, b.photoNoise.grainWidthPx);
+  EXPECT_EQ(a.photoNoise.channelCorrelation, b.photoNoise.channelCorrelation);
+  for (size_t c = 0; c < 3; ++c) {
+    ASSERT_EQ(a.photoNoise.levels[c].size(), b.photoNoise.levels[c].size()) << c;
+    for (size_t k = 0; k < a.photoNoise.levels[c].size(); ++k)
+      EXPECT_EQ(a.photoNoise.levels[c][k].sigma, b.photoNoise.levels[c][k].sigma) << c << " " << k;
+  }
+  ASSERT_EQ(a.placements.size(), b.placements.size());
+  for (size_t i = 0; i < a.placements.size(); ++i)
+    EXPECT_TRUE(a.placements[i].worldFromObject == b.placements[i].worldFromObject) << i;
+}
+
+// The noise cue's evidence gate and acceptance off: the example (a plain sRGB render) gets a
+// false shoulder (about 880), a curve for the response check to check.
+PrepareOptions optionsGivingTheExampleACurve() {
+  PrepareOptions opt;
+  opt.responseEstimate.minSrgbResidual = 0;
+  opt.responseEstimate.minImprovement = 0;
+  return opt;
+}
+
 // PrepareOptions::checkResponseByLightFit: the example (a plain sRGB render) with the noise cue's
 // evidence gate and acceptance off gets a false shoulder (about 880). The light fit explains
 // the photo worse with it (residual about 0.71 against sRGB's 0.15), so the check prepares the
@@ -578,9 +627,7 @@ const StageRecord* stageNamed(const PreparedScene& ps, const std::string& name) 
 // default gate keeps sRGB and is not prepared twice (no "response check" stage).
 TEST(Engine, TheLightFitTakesAwayACurveItExplainsThePhotoWorseWith) {
   SceneDoc doc = exampleDoc();
-  PrepareOptions opt;
-  opt.responseEstimate.minSrgbResidual = 0;
-  opt.responseEstimate.minImprovement = 0;
+  PrepareOptions opt = optionsGivingTheExampleACurve();
   opt.checkResponseByLightFit = false;
   auto curved = prepareScene(doc, opt);
   ASSERT_TRUE(curved.ok()) << curved.error().message();
@@ -588,6 +635,8 @@ TEST(Engine, TheLightFitTakesAwayACurveItExplainsThePhotoWorseWith) {
   EXPECT_GT(curved->response.params().shoulder, 100);
   EXPECT_EQ(stageNamed(*curved, "response check"), nullptr);
   opt.checkResponseByLightFit = true;
+  std::map<std::string, int> starts;
+  countStageStarts(opt, starts);
   auto checked = prepareScene(doc, opt);
   ASSERT_TRUE(checked.ok()) << checked.error().message();
   EXPECT_EQ(checked->response, CameraResponse::srgb());
@@ -612,6 +661,74 @@ TEST(Engine, TheLightFitTakesAwayACurveItExplainsThePhotoWorseWith) {
   ASSERT_EQ(checked->lighting.lights.size(), plain->lighting.lights.size());
   for (size_t i = 0; i < plain->lighting.lights.size(); ++i)
     EXPECT_EQ(checked->lighting.lights[i].radiance, plain->lighting.lights[i].radiance) << i;
+  // ... and everything the render reads; the photo loaded once, the stages after the refit run
+  // once (for sRGB), the check's record before them.
+  expectSameRenderInputs(*checked, *plain);
+  EXPECT_EQ(starts["photo"], 1);
+  EXPECT_EQ(starts["objects"], 1);
+  std::vector<std::string> expected = stageNames(*plain);
+  expected.insert(std::find(expected.begin(), expected.end(), "photo size"), "response check");
+  EXPECT_EQ(stageNames(*checked), expected);
+}
+
+// The response check prepares sRGB only up to the lighting refit, from the photo as loaded: the
+// photo is loaded once, and the stages after the refit (photo size, render scene, objects,
+// grain) run once, for the kept candidate. Its record stands before them, with the stages it
+// ran again as its steps, inside its own seconds. A curve the check keeps (an infinite
+// tolerance keeps any finite residual) gives the scene prepared with the check off, bit for bit.
+TEST(Engine, TheResponseCheckRunsTheStagesAfterTheRefitOnlyForTheKeptResponse) {
+  SceneDoc doc = exampleDoc();
+  PrepareOptions opt = optionsGivingTheExampleACurve();
+  opt.checkResponseByLightFit = false;
+  std::map<std::string, int> offStarts, onStarts;
+  countStageStarts(opt, offStarts);
+  auto off = prepareScene(doc, opt);
+  ASSERT_TRUE(off.ok()) << off.error().message();
+  ASSERT_EQ(off->response.family(), ResponseFamily::ToeShoulder);
+  opt.checkResponseByLightFit = true;
+  opt.responseFitTolerance = std::numeric_limits<double>::infinity();
+  countStageStarts(opt, onStarts);
+  auto kept = prepareScene(doc, opt);
+  ASSERT_TRUE(kept.ok()) << kept.error().message();
+  expectSameRenderInputs(*kept, *off);
+  EXPECT_EQ(onStarts["photo"], 1);
+  EXPECT_EQ(onStarts["objects"], offStarts["objects"]);
+  EXPECT_EQ(onStarts["camera"], 2 * offStarts["camera"]);
+  EXPECT_GT(onStarts["lighting"], offStarts["lighting"]);  // sRGB's refit may be skipped
+  std::vector<std::string> expected = stageNames(*off);
+  expected.insert(std::find(expected.begin(), expected.end(), "photo size"), "response check");
+  EXPECT_EQ(stageNames(*kept), expected);
+  const StageRecord* check = stageNamed(*kept, "response check");
+  ASSERT_NE(check, nullptr);
+  EXPECT_EQ(check->detail.rfind("the curve kept: ", 0), 0u) << check->detail;
+  std::vector<std::string> again;
+  double againSeconds = 0;
+  for (const StageStep& s : check->steps) {
+    again.push_back(s.name);
+    againSeconds += s.seconds;
+  }
+  ASSERT_FALSE(again.empty());
+  EXPECT_EQ(again.front(), "response");
+  EXPECT_NE(std::find(again.begin(), again.end(), "lighting"), again.end());
+  for (const char* once : {"photo", "photo size", "render scene", "objects", "grain"})
+    EXPECT_EQ(std::find(again.begin(), again.end(), once), again.end()) << once;
+  EXPECT_GE(check->seconds, againSeconds);
+}
+
+// Cancelling while the check prepares sRGB (at its camera stage) cancels the preparation.
+TEST(Engine, CancellingTheResponseCheckCancelsThePreparation) {
+  SceneDoc doc = exampleDoc();
+  PrepareOptions opt = optionsGivingTheExampleACurve();
+  CancelToken cancel;
+  opt.cancel = &cancel;
+  int cameras = 0;
+  opt.progress = [&](const std::string& label, double) {
+    if (label == "camera" && ++cameras == 2) cancel.cancel();
+  };
+  auto ps = prepareScene(doc, opt);
+  EXPECT_EQ(cameras, 2);
+  ASSERT_FALSE(ps.ok());
+  EXPECT_EQ(ps.error().reason, "cancelled");
 }
 
 // Every stage of the preparation is on record, in order, with its seconds or the reason this

@@ -25,6 +25,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 
 namespace inlay {
 
@@ -617,6 +618,10 @@ struct Preparation {
   // (the camera estimate reduces the photo itself); set by the stage, read by runStage.
   std::array<int, 2> stagePx{};
   std::vector<StageStep> stageSteps;  // the steps a stage timed (StageRecord::steps), set by it
+  // The photo as loaded, before the response decoded it: kept when the response check will
+  // prepare it again with sRGB (PrepareOptions::checkResponseByLightFit).
+  std::optional<LoadedImage> photoAsLoaded;
+  MeshCache* meshes = nullptr;  // the objects' meshes, shared by the response check's candidates
 
   // The image the image stages read, and the camera in its pixels.
   const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
@@ -760,6 +765,9 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   detail = !ps.photo.wasSrgbEncoded ? "linear photo" : chosen.estimate ? "estimated" : "camera.response";
   ps.responseEstimate = std::move(chosen.estimate);
   for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
+  if (p.opt.checkResponseByLightFit && ps.responseEstimate &&
+      ps.response.family() == ResponseFamily::ToeShoulder)
+    p.photoAsLoaded = ps.photo;
   if (shareCodes) redecodePhotoFromCodes(ps.photo.linearRgb, codes, ps.response);
   else if (ps.photo.wasSrgbEncoded)
     redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
@@ -1223,7 +1231,7 @@ Status buildRenderScene(Preparation& p, std::string&) {
 }
 
 Status placeTheObjects(Preparation& p, std::string& detail) {
-  auto placed = placeObjects(p.doc.objects, p.ps.geometry, p.ps.camera);
+  auto placed = placeObjects(p.doc.objects, p.ps.geometry, p.ps.camera, p.meshes);
   if (!placed) return placed.error();
   p.ps.renderScene.objects = std::move(placed->objects);
   p.ps.placements = std::move(placed->placements);
@@ -1251,6 +1259,16 @@ struct Stage {
   enum class At { None, Photo, Working } at = At::None;
 };
 
+// Wall and CPU seconds since it was made, for a stage's record.
+struct StageClock {
+  Clock::time_point start = Clock::now();
+  double cpuStart = processCpuSeconds();
+  void stamp(StageRecord& record) const {
+    record.seconds = secondsSince(start);
+    record.cpuSeconds = processCpuSeconds() - cpuStart;
+  }
+};
+
 // Runs `stage` when the scene needs it and records its seconds, or records why it was skipped.
 Status runStage(const Stage& stage, Preparation& p) {
   StageRecord record;
@@ -1258,15 +1276,13 @@ Status runStage(const Stage& stage, Preparation& p) {
   if (stage.notNeeded) record.reason = stage.notNeeded(p);
   if (record.reason.empty()) {
     if (stage.progress && p.opt.progress) p.opt.progress(stage.progress, 0);
-    const auto t = Clock::now();
-    const double cpu0 = processCpuSeconds();
+    const StageClock clock;
     p.stagePx = {0, 0};
     p.stageSteps.clear();
     if (Status st = stage.run(p, record.detail); !st) return st;
     record.steps = std::move(p.stageSteps);
     record.ran = true;
-    record.seconds = secondsSince(t);
-    record.cpuSeconds = processCpuSeconds() - cpu0;
+    clock.stamp(record);
     const ImageF& photo = p.ps.photo.linearRgb;
     std::array<int, 2> px = p.stagePx;
     if (px[0] == 0 && stage.at == Stage::At::Photo) px = {photo.width, photo.height};
@@ -1279,47 +1295,102 @@ Status runStage(const Stage& stage, Preparation& p) {
   return p.cancelled() ? Status(cancelledError()) : Status();
 }
 
-// Every stage of prepareScene() in turn.
-Expected<PreparedScene> prepareStages(const SceneDoc& doc, const PrepareOptions& opt) {
-  using At = Stage::At;
-  static const Stage kStages[] = {
-      {"photo", "photo", nullptr, loadPhoto, At::Photo},
-      {"response", nullptr, nullptr, chooseResponse, At::Photo},
-      {"working copy", nullptr, nullptr, makeWorkingCopy, At::Working},
-      {"camera", "camera", nullptr, findCamera, At::Photo},
-      {"layout", "room", nullptr, boxFromBackWall},
-      {"occluders", nullptr, noOccluders, occluderMattes, At::Photo},
-      {"surfaces", nullptr, noSurfaces, buildSurfaces},
-      {"room", nullptr, nullptr, assembleRoom},
-      {"lights", "lighting", nullptr, lightsFromMarks, At::Working},
-      {"shafts", nullptr, noShafts, sunsFromShafts, At::Working},
-      {"lighting", nullptr, nullptr, estimateTheLighting, At::Working},
-      {"vignetting", nullptr, vignettingNotNeeded, devignetteThePhoto, At::Working},
-      {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio, At::Working},
-      {"refine", "refine", refineNotNeeded, refineTheLights, At::Working},
-      {"lighting refit", "lighting", refitNotNeeded, refitTheLighting, At::Working},
-      {"photo size", "objects", photoSizeNotNeeded, lightingAtPhotoSize, At::Photo},
-      {"render scene", "objects", nullptr, buildRenderScene, At::Photo},
-      {"objects", nullptr, noObjects, placeTheObjects},
-      {"grain", nullptr, nullptr, measureGrain, At::Photo},
-  };
-  Preparation p(doc, opt);
-  for (const Stage& stage : kStages) {
-    if (Status st = runStage(stage, p); !st) return st.error();
+using At = Stage::At;
+
+// The stages of prepareScene(), in three runs. The photo, loaded once:
+const Stage kLoadStages[] = {{"photo", "photo", nullptr, loadPhoto, At::Photo}};
+
+// Those whose work depends on the camera response (from the linearised photo on; the camera
+// estimate finds its edges in it too): the response check runs them a second time, with sRGB.
+const Stage kResponseStages[] = {
+    {"response", nullptr, nullptr, chooseResponse, At::Photo},
+    {"working copy", nullptr, nullptr, makeWorkingCopy, At::Working},
+    {"camera", "camera", nullptr, findCamera, At::Photo},
+    {"layout", "room", nullptr, boxFromBackWall},
+    {"occluders", nullptr, noOccluders, occluderMattes, At::Photo},
+    {"surfaces", nullptr, noSurfaces, buildSurfaces},
+    {"room", nullptr, nullptr, assembleRoom},
+    {"lights", "lighting", nullptr, lightsFromMarks, At::Working},
+    {"shafts", nullptr, noShafts, sunsFromShafts, At::Working},
+    {"lighting", nullptr, nullptr, estimateTheLighting, At::Working},
+    {"vignetting", nullptr, vignettingNotNeeded, devignetteThePhoto, At::Working},
+    {"sun ratio", nullptr, sunRatioNotNeeded, sunsFromRatio, At::Working},
+    {"refine", "refine", refineNotNeeded, refineTheLights, At::Working},
+    {"lighting refit", "lighting", refitNotNeeded, refitTheLighting, At::Working},
+};
+
+// After the response check, once, for the response it kept:
+const Stage kSceneStages[] = {
+    {"photo size", "objects", photoSizeNotNeeded, lightingAtPhotoSize, At::Photo},
+    {"render scene", "objects", nullptr, buildRenderScene, At::Photo},
+    {"objects", nullptr, noObjects, placeTheObjects},
+    {"grain", nullptr, nullptr, measureGrain, At::Photo},
+};
+
+// `stages` in turn, each recorded.
+Status runStages(std::span<const Stage> stages, Preparation& p) {
+  for (const Stage& stage : stages) {
+    if (Status st = runStage(stage, p); !st) return st;
     // The lighting's rays (tens of MB) serve only its refit: dropped before the photo-size maps.
     if (stage.run == refitTheLighting) p.ps.lighting.rays.reset();
   }
+  return {};
+}
+
+// The stages after the response check, then the last progress report.
+Expected<PreparedScene> finishScene(Preparation& p) {
+  if (Status st = runStages(kSceneStages, p); !st) return st.error();
+  if (p.opt.progress) p.opt.progress("objects", 1);
   return std::move(p.ps);
 }
+
+bool isCancelled(const Error& e) { return e.reason == cancelledError().reason; }
 
 // The decision's start when the light fit's check takes the estimate's curve away (`why` below
 // starts so).
 const std::string kRefusedByTheLightFit = "kept sRGB: ";
 const std::string kTheLightFitsResidual = "the light fit's residual";
 
+// The check's reason: both light fits' residuals (sRGB's NaN when its preparation failed).
+std::string checkWhy(const Preparation& curved, double withSrgb) {
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%s with the fitted %s is %.4f, with sRGB %.4f",
+                kTheLightFitsResidual.c_str(), curved.ps.response.describe().c_str(),
+                curved.ps.lighting.fitResidualRelative, withSrgb);
+  return buf;
+}
+
+// Whether the curve explains the photo at least as well as sRGB (a residual that is not
+// finite never wins; sRGB's is NaN when its preparation failed).
+bool keepsTheCurve(const Preparation& curved, double withSrgb) {
+  return !refitFitsWorse(withSrgb, curved.ps.lighting.fitResidualRelative,
+                         curved.opt.responseFitTolerance);
+}
+
+// The "response check" record: the response it kept and why, the stages it ran again with sRGB
+// (`again`) as its steps, and its own seconds since `clock`.
+StageRecord checkRecord(const Preparation& curved, double withSrgb, const std::vector<StageStep>& again,
+                        const StageClock& clock) {
+  StageRecord record;
+  record.name = "response check";
+  record.ran = true;
+  record.detail = std::string(keepsTheCurve(curved, withSrgb) ? "the curve kept: " : "sRGB kept: ") +
+                  checkWhy(curved, withSrgb);
+  record.steps = again;
+  clock.stamp(record);
+  return record;
+}
+
+// The stages a preparation ran, as steps.
+std::vector<StageStep> stepsOf(const std::vector<StageRecord>& stages) {
+  std::vector<StageStep> out;
+  for (const StageRecord& r : stages)
+    if (r.ran) out.push_back({r.name, r.seconds, r.cpuSeconds});
+  return out;
+}
+
 // The scene prepared with sRGB in place of the estimated curve `curved` used: the estimate and
-// the scene file's "auto" kept, the decision and a warning saying why, the "response" stage's
-// detail "estimated" again.
+// the scene file's "auto" kept, the decision and a warning saying why.
 PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved,
                                     const std::string& why) {
   srgb.doc = std::move(curved.doc);
@@ -1327,38 +1398,57 @@ PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved
   srgb.responseEstimate->decision = kRefusedByTheLightFit + why;
   srgb.responseEstimate->response = CameraResponse::srgb();
   srgb.warnings.push_back("camera response: the estimated curve was not used (" + why + "); using sRGB");
-  for (StageRecord& r : srgb.stages)
-    if (r.name == "response") r.detail = "estimated";
   return std::move(srgb);
 }
 
-// PrepareOptions::checkResponseByLightFit: `curved` (prepared with the estimated curve) against
-// the scene prepared again with sRGB; the one whose light fit explains the photo better, and a
-// stage record "response check" with the two residuals.
-Expected<PreparedScene> checkTheCurveByTheLightFit(PreparedScene&& curved, const SceneDoc& doc,
-                                                   const PrepareOptions& opt) {
-  const auto t = Clock::now();
-  const double cpu0 = processCpuSeconds();
-  SceneDoc srgbDoc = doc;
+// sRGB kept: the stages after the refit run on its preparation, after the curve's records (the
+// stages that ran first) and the check's.
+Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb,
+                                       const std::vector<StageStep>& again, const StageClock& clock) {
+  const double withSrgb = srgb.ps.lighting.fitResidualRelative;
+  srgb.ps.stages = curved.ps.stages;
+  srgb.ps.stages.push_back(checkRecord(curved, withSrgb, again, clock));
+  Expected<PreparedScene> done = finishScene(srgb);
+  if (!done) return done;
+  return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), checkWhy(curved, withSrgb));
+}
+
+// Whether the objects stand in the curve's room seen by its camera (its "objects" stage would
+// place them): the curve's preparation ran through before the check did, so a scene whose
+// objects do not stand there failed whichever response the check would have kept.
+Status curveObjectsStand(const Preparation& curved) {
+  auto placed = placeObjects(curved.doc.objects, curved.ps.geometry, curved.ps.camera, curved.meshes);
+  return placed ? Status() : Status(placed.error());
+}
+
+// PrepareOptions::checkResponseByLightFit: `curved` (prepared up to the refit with the
+// estimated curve) against the photo as loaded prepared up to the refit with sRGB; the stages
+// after the refit run once, for the one whose light fit explains the photo better. When sRGB's
+// preparation fails the curve stands; when sRGB is kept but the objects do not stand with the
+// curve, the preparation fails as it did when the curve's ran through first.
+Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
+  const StageClock clock;
+  SceneDoc srgbDoc = curved.doc;
   srgbDoc.camera.response = {ResponseKeys::Mode::Srgb};
-  Expected<PreparedScene> srgb = prepareStages(srgbDoc, opt);
-  if (!srgb && srgb.error().reason == cancelledError().reason) return srgb.error();
-  StageRecord record;
-  record.name = "response check";
-  record.ran = true;
-  const double withCurve = curved.lighting.fitResidualRelative;
-  const double withSrgb = srgb ? srgb->lighting.fitResidualRelative : std::nan("");
-  char buf[320];
-  std::snprintf(buf, sizeof buf, "%s with the fitted %s is %.4f, with sRGB %.4f",
-                kTheLightFitsResidual.c_str(), curved.response.describe().c_str(), withCurve, withSrgb);
-  const bool keepCurve = !srgb || !refitFitsWorse(withSrgb, withCurve, opt.responseFitTolerance);
-  record.detail = std::string(keepCurve ? "the curve kept: " : "sRGB kept: ") + buf;
-  PreparedScene out = keepCurve ? std::move(curved)
-                                : srgbInsteadOfTheCurve(std::move(*srgb), std::move(curved), buf);
-  record.seconds = secondsSince(t);
-  record.cpuSeconds = processCpuSeconds() - cpu0;
-  out.stages.push_back(std::move(record));
-  return out;
+  Preparation srgb(srgbDoc, curved.opt);
+  MeshCache meshes;
+  curved.meshes = srgb.meshes = &meshes;
+  srgb.ps.photo = std::move(*curved.photoAsLoaded);
+  curved.photoAsLoaded.reset();
+  const Status ran = runStages(kResponseStages, srgb);
+  if (!ran && isCancelled(ran.error())) return ran.error();
+  const std::vector<StageStep> again = stepsOf(srgb.ps.stages);
+  const double residual = srgb.ps.lighting.fitResidualRelative;
+  const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
+  if (srgbFitsBetter) {
+    if (Status st = curveObjectsStand(curved); !st) return st.error();
+    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, again, clock);
+    if (kept || isCancelled(kept.error())) return kept;
+  }
+  // sRGB's preparation failed (before the refit, or after it with sRGB kept): NaN.
+  const double withSrgb = ran && !srgbFitsBetter ? residual : std::nan("");
+  curved.ps.stages.push_back(checkRecord(curved, withSrgb, again, clock));
+  return finishScene(curved);
 }
 
 }  // namespace
@@ -1368,12 +1458,10 @@ bool curveRefusedByTheLightFit(const ResponseEstimate& estimate) {
 }
 
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
-  Expected<PreparedScene> ps = prepareStages(doc, opt);
-  if (ps && opt.checkResponseByLightFit && ps->responseEstimate &&
-      ps->response.family() == ResponseFamily::ToeShoulder)
-    ps = checkTheCurveByTheLightFit(std::move(*ps), doc, opt);
-  if (ps && opt.progress) opt.progress("objects", 1);
-  return ps;
+  Preparation p(doc, opt);
+  if (Status st = runStages(kLoadStages, p); !st) return st.error();
+  if (Status st = runStages(kResponseStages, p); !st) return st.error();
+  return p.photoAsLoaded ? checkTheCurveByTheLightFit(p) : finishScene(p);
 }
 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {

@@ -27,8 +27,8 @@
 namespace inlay {
 
 // One stage of prepareScene() (photo, response, working copy, camera, layout, occluders,
-// surfaces, room, lights, shafts, lighting, sun ratio, refine, lighting refit, photo size,
-// render scene, objects, grain):
+// surfaces, room, lights, shafts, lighting, vignetting, sun ratio, refine, lighting refit,
+// response check (when it checks a curve), photo size, render scene, objects, grain):
 // what it took, or why the scene did not need it ("shafts": "no sun marked"). A skipped stage
 // does none of its work.
 // One step inside a stage (StageRecord::steps): the lighting's surfaces, direct light, gather,
@@ -103,6 +103,10 @@ struct PreparedScene {
   PhotoNoise photoNoise;
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
   // Every stage of the preparation in order: its seconds, or why this scene did not need it.
+  // When PrepareOptions::checkResponseByLightFit checks a curve, the stages up to the lighting
+  // refit are the curve's (they ran first), then "response check": its own seconds, which
+  // response it kept and why, and as its steps the stages it ran again with sRGB; the stages
+  // after it ran once, for the response kept.
   std::vector<StageRecord> stages;
 };
 
@@ -188,13 +192,16 @@ struct PrepareOptions {
   bool fitUnseenCeiling = true;
   bool renderFittedCeiling = false;
   // camera.response "auto": a curve the estimate fitted is kept only when the light fit explains
-  // the photo at least as well with it as with sRGB. The scene is prepared again with sRGB, and
-  // when the curve's LightingEstimate::fitResidualRelative is larger than sRGB's by more than
-  // `responseFitTolerance` of it (refitFitsWorse), the sRGB preparation is returned, with a
-  // warning and the estimate's decision saying why. Measured on half A of the random cameras
-  // (docs/camera-response.md, "The light fit checks the estimated curve"): both curves it met
-  // made the object worse and both left a larger residual. Costs a second preparation, only on
-  // photos the estimate gives a curve. False: the estimate's curve is always kept.
+  // the photo at least as well with it as with sRGB. The photo as loaded is prepared again with
+  // sRGB up to the lighting refit (the stages that depend on the response), and when the curve's
+  // LightingEstimate::fitResidualRelative is larger than sRGB's by more than
+  // `responseFitTolerance` of it (refitFitsWorse), the sRGB preparation is kept, with a warning
+  // and the estimate's decision saying why; the stages after the refit run once, for the one
+  // kept. Measured on half A of the random cameras (docs/camera-response.md, "The light fit
+  // checks the estimated curve"): both curves it met made the object worse and both left a
+  // larger residual. Costs those stages a second time (docs/benchmarks.md, "The response check
+  // prepares sRGB only up to the refit"), only on photos the estimate gives a curve. False: the
+  // estimate's curve is always kept.
   bool checkResponseByLightFit = true;
   double responseFitTolerance = 0;
   // The response estimate's options for "auto" (its `cancel` is this struct's): tests and
