@@ -139,13 +139,18 @@ bool refusalWarned(const CameraEstimate& e) {
   return false;
 }
 
+// The estimate of a 640 x 480 photo's lines with the plausibility rules off.
+Expected<CameraEstimate> withoutRules(const std::vector<LineSegment>& segs) {
+  EstimateOptions off;
+  off.refuseImplausibleBox = false;
+  return estimateCameraFromSegments(640, 480, segs, off);
+}
+
 TEST(LayoutRules, ASillThatWouldMakeTheBox17mDeepIsRefused) {
   const Camera c = roomCamera();
   const std::vector<LineSegment> segs = clutteredRoomForTheCamera(c);
   // The premise: without the rules the sill wins and the box is about 17 m deep.
-  EstimateOptions off;
-  off.refuseImplausibleBox = false;
-  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  const auto free = withoutRules(segs);
   ASSERT_TRUE(free.ok()) << free.error().message();
   ASSERT_TRUE(free->manhattan);
   const detail::BoxSize fs = detail::boxSizeOf(free->camera, free->backWallPx);
@@ -306,9 +311,7 @@ TEST(LayoutRules, ACeilingCreaseSeenOverAThirdOfItsLengthIsACeiling) {
   std::erase_if(room, [&](const LineSegment& s) { return xLineAboveTheEye(c, s); });
   const std::vector<LineSegment> segs = faintCeiling(c, room);
   // The premise: without the rules the sill wins, the box about 17 m deep.
-  EstimateOptions off;
-  off.refuseImplausibleBox = false;
-  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  const auto free = withoutRules(segs);
   ASSERT_TRUE(free.ok()) << free.error().message();
   ASSERT_GT(boxOf(free).depthM, 14.0);
   // With them: the faint crease shows the ceiling, the sill is refused and the floor crease found
@@ -588,12 +591,10 @@ std::vector<LineSegment> shopWindowRoom(const Camera& c, bool mullions = true) {
 TEST(BoxAdvice, ABoxLeadingOnlyThroughFramesOnASillIsRefusedWithoutAWarning) {
   const Camera c = roomCamera();
   const std::vector<LineSegment> segs = shopWindowRoom(c);
-  EstimateOptions off;
-  off.refuseImplausibleBox = false;
-  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  const auto free = withoutRules(segs);
   ASSERT_TRUE(free.ok()) << free.error().message();
   EXPECT_GT(boxOf(free).depthM, 14.0);  // the premise: the sill leads, through its mullions
-  const auto bare = estimateCameraFromSegments(640, 480, shopWindowRoom(c, false), off);
+  const auto bare = withoutRules(shopWindowRoom(c, false));
   ASSERT_TRUE(bare.ok()) << bare.error().message();
   EXPECT_LT(boxOf(bare).depthM, 6.0);
   const auto e = estimateCameraFromSegments(640, 480, segs);
