@@ -139,13 +139,18 @@ bool refusalWarned(const CameraEstimate& e) {
   return false;
 }
 
+// The estimate of a 640 x 480 photo's lines with the plausibility rules off.
+Expected<CameraEstimate> withoutRules(const std::vector<LineSegment>& segs) {
+  EstimateOptions off;
+  off.refuseImplausibleBox = false;
+  return estimateCameraFromSegments(640, 480, segs, off);
+}
+
 TEST(LayoutRules, ASillThatWouldMakeTheBox17mDeepIsRefused) {
   const Camera c = roomCamera();
   const std::vector<LineSegment> segs = clutteredRoomForTheCamera(c);
   // The premise: without the rules the sill wins and the box is about 17 m deep.
-  EstimateOptions off;
-  off.refuseImplausibleBox = false;
-  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  const auto free = withoutRules(segs);
   ASSERT_TRUE(free.ok()) << free.error().message();
   ASSERT_TRUE(free->manhattan);
   const detail::BoxSize fs = detail::boxSizeOf(free->camera, free->backWallPx);
@@ -306,9 +311,7 @@ TEST(LayoutRules, ACeilingCreaseSeenOverAThirdOfItsLengthIsACeiling) {
   std::erase_if(room, [&](const LineSegment& s) { return xLineAboveTheEye(c, s); });
   const std::vector<LineSegment> segs = faintCeiling(c, room);
   // The premise: without the rules the sill wins, the box about 17 m deep.
-  EstimateOptions off;
-  off.refuseImplausibleBox = false;
-  const auto free = estimateCameraFromSegments(640, 480, segs, off);
+  const auto free = withoutRules(segs);
   ASSERT_TRUE(free.ok()) << free.error().message();
   ASSERT_GT(boxOf(free).depthM, 14.0);
   // With them: the faint crease shows the ceiling, the sill is refused and the floor crease found
@@ -566,6 +569,59 @@ TEST(FloorCrease, DoorFramesStandingOnTheCreaseOutweighASideboardsTop) {
                         want = detail::boxSizeOf(e->camera, cornersOf(c, -2.5, 2.5, -5, 2.7));
   ASSERT_TRUE(got.ok && want.ok);
   EXPECT_NEAR(got.depthM, want.depthM, 0.05 * want.depthM) << ::testing::PrintToString(e->warnings);
+}
+
+// A shop window across the back wall (York P1080005, round 17f): its sill 1.06 m up, a 4 m x line
+// with the window's mullions standing on it every 0.25 m; the floor crease seen but for four short
+// gaps. Taken for the floor, the sill makes a 17 m deep box under a 5.6 m ceiling; without the
+// mullions the photo's lines prefer the crease, with them (standingOn) the sill leads.
+std::vector<LineSegment> shopWindowRoom(const Camera& c, bool mullions = true) {
+  std::vector<LineSegment> segs = roomWithoutFloorCrease(c);
+  Lines l{c, {}};
+  for (double x0 = -2.4; x0 < 2.3; x0 += 1.2) l.add({x0, 0, -5}, {x0 + 1.08, 0, -5}, 0);
+  l.add({-2.0, 1.06, -5}, {2.0, 1.06, -5}, 0);
+  for (double x = -1.9; mullions && x < 1.95; x += 0.25) l.add({x, 1.06, -5}, {x, 2.2, -5}, 1);
+  segs.insert(segs.end(), l.segs.begin(), l.segs.end());
+  return segs;
+}
+
+// A refused box that led only through the uprights standing on its crease is no doubt about the
+// box kept: no warning, the box the true one. (Without ledByStandingAlone the refusal warns;
+// ASillThatWouldMakeTheBox17mDeepIsRefused, whose sill leads on its lines, still does.)
+TEST(BoxAdvice, ABoxLeadingOnlyThroughFramesOnASillIsRefusedWithoutAWarning) {
+  const Camera c = roomCamera();
+  const std::vector<LineSegment> segs = shopWindowRoom(c);
+  const auto free = withoutRules(segs);
+  ASSERT_TRUE(free.ok()) << free.error().message();
+  EXPECT_GT(boxOf(free).depthM, 14.0);  // the premise: the sill leads, through its mullions
+  const auto bare = withoutRules(shopWindowRoom(c, false));
+  ASSERT_TRUE(bare.ok()) << bare.error().message();
+  EXPECT_LT(boxOf(bare).depthM, 6.0);
+  const auto e = estimateCameraFromSegments(640, 480, segs);
+  ASSERT_TRUE(e.ok()) << e.error().message();
+  const detail::BoxSize got = boxOf(e),
+                        want = detail::boxSizeOf(e->camera, cornersOf(c, -2.5, 2.5, -5, 2.7));
+  ASSERT_TRUE(got.ok && want.ok);
+  EXPECT_NEAR(got.depthM, want.depthM, 0.1 * want.depthM);
+  EXPECT_FALSE(refusalWarned(*e)) << ::testing::PrintToString(e->warnings);
+  EXPECT_EQ(boxWarnings(*e).count, 0) << ::testing::PrintToString(e->warnings);
+}
+
+// ledByStandingAlone alone: the lead covered by the standing bonus, or not; no lead at all (the
+// first search missed a better box: the refusal is not the cue's); NaN and infinite scores warn.
+TEST(BoxAdvice, LedByStandingAloneOnlyWhenTheLeadIsTheCues) {
+  EXPECT_TRUE(detail::ledByStandingAlone(2030.8, 199.7, 1878.1, 41.9));   // P1080005
+  EXPECT_FALSE(detail::ledByStandingAlone(2219.4, 0.0, 2192.5, 0.0));     // P1020841
+  EXPECT_FALSE(detail::ledByStandingAlone(1401.5, 0.0, 1435.1, 0.0));     // P1080078: no lead
+  EXPECT_FALSE(detail::ledByStandingAlone(2835.9, 67.5, 2743.2, 115.5));  // P1040801
+  EXPECT_TRUE(detail::ledByStandingAlone(10, 10, 0, 0));                  // the lead equals the bonus
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(detail::ledByStandingAlone(nan, 10, 0, 0));
+  EXPECT_FALSE(detail::ledByStandingAlone(10, nan, 0, 0));
+  EXPECT_FALSE(detail::ledByStandingAlone(inf, inf, 0, 0));
+  EXPECT_FALSE(detail::ledByStandingAlone(10, inf, 0, inf));
+  EXPECT_FALSE(detail::ledByStandingAlone(1e308, 1e308, -1e308, -1e308));  // overflows
 }
 
 TEST(StandingOn, FramesStandOnALineJointsAndLegsDoNot) {

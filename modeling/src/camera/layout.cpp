@@ -235,6 +235,7 @@ class LayoutSearch {
     double topSupported = 0, topVisible = 0;        // the back wall's top edge alone
     double bottomSupported = 0, bottomVisible = 0;  // its bottom edge, the floor crease
     double ceilingZ = 0, ceilingY = 0;              // receding and vertical line samples on the ceiling
+    double standing = 0;  // in total: the uprights standing on the floor crease
   };
 
   // Whether the photo shows the box's top edge as a ceiling crease: at least kCeilingSeenShare of
@@ -337,7 +338,8 @@ class LayoutSearch {
     }
     s.total -= 0.5 * ws_ * prior;
     // Vertical edges standing on the floor crease (the back wall's bottom edge, BL to BR).
-    s.total += kStandingWeight * ws_ * standingOn(uprights_, c[3], c[2], uY_, kTopTolLayoutPx / ws_);
+    s.standing = kStandingWeight * ws_ * standingOn(uprights_, c[3], c[2], uY_, kTopTolLayoutPx / ws_);
+    s.total += s.standing;
     if (refuse_ && implausible(t, s)) s.total = -1e300;
     return s;
   }
@@ -877,10 +879,11 @@ bool replaceImplausibleBox(LayoutSearch& search, const LayoutInput& in, LinePara
   auto [best2, bestT2] = ascend(search, in, globalStarts(search, in, lp.t, lp.isFixed), lp.isFixed);
   std::array<Vec2, 4> c2;
   const bool found = best2.total > -1e299 && search.corners(bestT2, c2);
-  out.doubts.refused = "the best-supported box (" + metresText(refused) +
-                       ") is implausible: " + why.why + "; " +
-                       (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
-                              : std::string("an ordinary room is assumed"));
+  if (!found || !ledByStandingAlone(best.first.total, best.first.standing, best2.total, best2.standing))
+    out.doubts.refused = "the best-supported box (" + metresText(refused) +
+                         ") is implausible: " + why.why + "; " +
+                         (found ? "the next-best box is used (" + metresText(boxSizeOf(cam, c2)) + ")"
+                                : std::string("an ordinary room is assumed"));
   if (found) {
     best = {best2, bestT2};
     return false;
@@ -1067,6 +1070,13 @@ double standingOn(const std::vector<Upright>& uprights, const Vec2& a, const Vec
       sum += (u.downPx - u.upPx).norm();
   }
   return sum;
+}
+
+bool ledByStandingAlone(double refusedTotal, double refusedStanding, double nextTotal,
+                        double nextStanding) {
+  const double lead = refusedTotal - nextTotal;
+  return std::isfinite(lead) && std::isfinite(refusedStanding - nextStanding) && lead > 0 &&
+         lead <= refusedStanding - nextStanding;
 }
 
 std::string boxAdvice(const BoxDoubts& r, const std::array<Vec2, 4>& c, double W, double H) {

@@ -103,13 +103,22 @@ std::vector<Upright> uprightsOf(const std::vector<LineSegment>& segments, const 
 double standingOn(const std::vector<Upright>& uprights, const Vec2& a, const Vec2& b, const Vec2& down,
                   double tolPx);
 
+// Whether a refused box (its score refusedTotal, of it refusedStanding from standingOn) led the
+// box that replaced it only through the uprights standing on its floor crease: it leads, and not
+// without them. A sill under a window's mullions (York P1080005's shop windows): the photo's edges
+// and faces prefer the replacement, the refusal undid the cue's mistake, and the box kept is not
+// in doubt for it. False for a non-finite score (the refusal then warns).
+bool ledByStandingAlone(double refusedTotal, double refusedStanding, double nextTotal,
+                        double nextStanding);
+
 // What makes an automatic box doubtful, each a reason (empty: no doubt).
 struct BoxDoubts {
   // The floor crease is in view but nothing in the photo marks it, or (floorOutOfView) lies below
   // the photo: the box shows no floor.
   std::string unseenCrease;
   bool floorOutOfView = false;
-  // The best-supported box was refused as implausible: why, and what replaced it.
+  // The best-supported box was refused as implausible: why, and what replaced it (empty when it led
+  // only through the uprights standing on its crease: ledByStandingAlone).
   std::string refused;
 };
 // One sentence for CameraEstimate::warnings (issue #16, fifth York round): what to do in the
