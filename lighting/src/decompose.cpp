@@ -588,6 +588,7 @@ LevelResult solveLevel(const ImageF& photo, const ImageF& gathered, const ImageF
     const std::vector<uint8_t> validS = maskDown(valid, W, H, 2), clippedS = maskDown(clipped, W, H, 2);
     DecomposeOptions coarseOpt = opt;
     coarseOpt.g2 *= 4;
+    coarseOpt.maxIterations = std::min(opt.maxIterations, opt.coarseIterations);
     LevelResult c = solveLevel(Bs, Gs, r0s, validS, clippedS, coarseOpt, kappa, levels - 1, t0);
     const ImageF change = upsample(blockChange(c.out.albedo, Bs, Gs, r0s, clippedS), W, H, 2);
     warm.emplace();

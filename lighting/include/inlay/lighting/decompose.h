@@ -60,10 +60,11 @@ struct DecomposeOptions {
   bool unitsFromNoise = true;
   bool normaliseByMeanGamma = false;
   // The solver stops on convergence or at the iteration cap, never on the clock, so a photo
-  // and geometry give the same albedo bit for bit on every run and machine load. The cap keeps
-  // a 640 x 480 photo near a second on 2 threads (bench_decompose); on the rooms more
-  // iterations do not lower the albedo error (bench_albedo.py's error against iterations).
-  int maxIterations = 30;
+  // and geometry give the same albedo bit for bit on every run and machine load. The bundled
+  // example and the training rooms converge in 80 to 200 iterations at the photo's level
+  // (after the coarse levels' warm start; docs/benchmarks.md, "The decomposition's steps and
+  // coarse-to-fine start"); the cap is only a guard.
+  int maxIterations = 300;
   int minIterations = 10;
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
   // each times its step (so in units of rho and of the dual variable in [-1,1]), both fall
@@ -80,8 +81,11 @@ struct DecomposeOptions {
   // discretises the same continuous objective), each level's albedo change and dual variable
   // interpolated as the next finer level's start. The coarse levels take the smooth, slow part
   // of the solution (what the fine level's local steps spread over hundreds of iterations) for
-  // a quarter of the cost per level. 0: the photo's level alone.
+  // a quarter of the cost per level. 0: the photo's level alone. A coarser level is only a
+  // start: it stops at coarseIterations (or converged); more did not shorten the photo's level
+  // on half A.
   int pyramidLevels = 2;
+  int coarseIterations = 30;
   int historyEvery = 10;  // record objective and residuals every n iterations (and the last)
   const CancelToken* cancel = nullptr;
 };
