@@ -202,6 +202,7 @@ class PrimalDualSolver {
   };
   void edgeMasks();
   void chooseSteps();
+  void diagonalSteps();
   float lap(const std::vector<float>& u, size_t i, int x, int y) const;
   void gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
   void gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
@@ -275,15 +276,29 @@ void PrimalDualSolver::edgeMasks() {
   });
 }
 
-// Steps: the Condat-Vu iteration with diagonal step metrics (Pock & Chambolle 2011's
-// preconditioning, extended to the smooth term). It converges when
-// T^-1 - Q / 2 - Lap^T sigma Lap is positive definite, Q >= the smooth part's Hessian. By
-// Gershgorin's bounds (Q = diag(q), q_i the absolute row sum of the Hessian; |Lap^T Lap| rows
-// <= 64) a per-pixel step 1 / tau_i = (q_i / 2 + 64 sigma) / 0.95 satisfies it. A scalar tau
-// set by the brightest pixel's q (max Gamma^2) crawled where Gamma is small. sigma balances the
-// dual step against the median pixel's primal one (64 sigma = median q / 2).
+// Steps of the Condat-Vu iteration; it converges when T^-1 - Q / 2 - Lap^T sigma Lap is positive
+// definite, T the primal steps, Q >= the smooth part's Hessian, |Lap^T Lap| <= 64.
 void PrimalDualSolver::chooseSteps() {
   g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
+  if (opt.diagonalSteps) {
+    diagonalSteps();
+    return;
+  }
+  // Scalar: tau Lf / 2 + tau sigma 64 <= 0.95 with Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal
+  // step takes what the smooth part allows, the dual step the rest.
+  const double Lf = 16 * opt.g1 + 16 * opt.g3 * double(gammaMax) * gammaMax;
+  const double tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
+  sigma = 0.5 / (64 * tau);
+  sigmaF = float(sigma);
+  for (auto& p : P) p.tau.assign(N, float(tau));
+}
+
+// Diagonal step metrics (Pock & Chambolle 2011's preconditioning, extended to the smooth term):
+// by Gershgorin's bounds (Q = diag(q), q_i the absolute row sum of the Hessian) a per-pixel step
+// 1 / tau_i = (q_i / 2 + 64 sigma) / 0.95 satisfies the condition. The scalar step is set by
+// the brightest pixel's q (max Gamma^2) and crawls where Gamma is small. sigma balances the
+// dual step against the median pixel's primal one (64 sigma = median q / 2).
+void PrimalDualSolver::diagonalSteps() {
   std::vector<double> q(3 * N);
   for (int c = 0; c < 3; ++c) {
     const Plane& p = P[size_t(c)];
@@ -525,27 +540,69 @@ void PrimalDualSolver::warmStart(const WarmStart& warm) {
   }
 }
 
-ImageF boxDown(const ImageF& img, int f, const std::vector<uint8_t>& use);
-std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f);
-float albedoCap(float b, float g, bool clippedPixel);
+// Largest albedo a pixel allows: 1, and rho * Gamma <= B where B is a measurement (not clipped).
+float albedoCap(float b, float g, bool clippedPixel) {
+  if (clippedPixel || !std::isfinite(b) || !std::isfinite(g) || !(g > 0)) return 1.f;
+  return std::clamp(b / g, 0.f, 1.f);
+}
 
-// `small` (w x h, one value per f x f block) bilinearly interpolated at the pixel centres of a
-// W x H image.
-ImageF upsample(const ImageF& small, int W, int H, int f) {
-  const int w = small.width, h = small.height;
+// Box average of f x f blocks; `use` (may be empty) picks the samples, all when none is used.
+ImageF boxDown(const ImageF& img, int f, const std::vector<uint8_t>& use) {
+  const int W = img.width, H = img.height, w = (W + f - 1) / f, h = (H + f - 1) / f;
+  ImageF out(w, h, 3, 0.f);
+  forRows(h, [&](int by) {
+    for (int bx = 0; bx < w; ++bx)
+      for (int pass = 0; pass < 2; ++pass) {
+        double sum[3] = {0, 0, 0}, n = 0;
+        for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
+          for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) {
+            if (pass == 0 && !use.empty() && !use[size_t(y) * W + x]) continue;
+            const float* p = img.pixel(x, y);
+            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+            for (int c = 0; c < 3; ++c) sum[c] += std::max(p[c], 0.f);
+            n += 1;
+          }
+        if (n == 0) continue;
+        for (int c = 0; c < 3; ++c) out.at(bx, by, c) = float(sum[c] / n);
+        break;
+      }
+  });
+  return out;
+}
+
+// Mask of f x f blocks: set where at least half the block's pixels are.
+std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f) {
+  const int w = (W + f - 1) / f, h = (H + f - 1) / f;
+  std::vector<uint8_t> out(size_t(w) * h, 0);
+  if (m.empty()) return {};
+  for (int by = 0; by < h; ++by)
+    for (int bx = 0; bx < w; ++bx) {
+      int on = 0, n = 0;
+      for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
+        for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) on += m[size_t(y) * W + x] != 0, ++n;
+      out[size_t(by) * w + bx] = 2 * on >= n;
+    }
+  return out;
+}
+
+// `blocks` (one value per f x f block of a larger image) bilinearly interpolated at the centre of
+// that image's pixel (x, y), channel c.
+float interpolateBlocks(const ImageF& blocks, int f, int x, int y, int c) {
+  const int w = blocks.width, h = blocks.height;
+  const double fy = std::clamp((y + 0.5) / f - 0.5, 0.0, double(h - 1));
+  const double fx = std::clamp((x + 0.5) / f - 0.5, 0.0, double(w - 1));
+  const int y0 = int(fy), y1 = std::min(y0 + 1, h - 1), x0 = int(fx), x1 = std::min(x0 + 1, w - 1);
+  const float ay = float(fy - y0), ax = float(fx - x0);
+  return (1 - ay) * ((1 - ax) * blocks.at(x0, y0, c) + ax * blocks.at(x1, y0, c)) +
+         ay * ((1 - ax) * blocks.at(x0, y1, c) + ax * blocks.at(x1, y1, c));
+}
+
+// `blocks` interpolated over a W x H image (interpolateBlocks).
+ImageF upsample(const ImageF& blocks, int W, int H, int f) {
   ImageF out(W, H, 3, 0.f);
   forRows(H, [&](int y) {
-    const double fy = std::clamp((y + 0.5) / f - 0.5, 0.0, double(h - 1));
-    const int y0 = int(fy), y1 = std::min(y0 + 1, h - 1);
-    const float ay = float(fy - y0);
-    for (int x = 0; x < W; ++x) {
-      const double fx = std::clamp((x + 0.5) / f - 0.5, 0.0, double(w - 1));
-      const int x0 = int(fx), x1 = std::min(x0 + 1, w - 1);
-      const float ax = float(fx - x0);
-      for (int c = 0; c < 3; ++c)
-        out.at(x, y, c) = (1 - ay) * ((1 - ax) * small.at(x0, y0, c) + ax * small.at(x1, y0, c)) +
-                          ay * ((1 - ax) * small.at(x0, y1, c) + ax * small.at(x1, y1, c));
-    }
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = interpolateBlocks(blocks, f, x, y, c);
   });
   return out;
 }
@@ -630,51 +687,6 @@ Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF&
   return std::move(r.out);
 }
 
-// Largest albedo a pixel allows: 1, and rho * Gamma <= B where B is a measurement (not clipped).
-float albedoCap(float b, float g, bool clippedPixel) {
-  if (clippedPixel || !std::isfinite(b) || !std::isfinite(g) || !(g > 0)) return 1.f;
-  return std::clamp(b / g, 0.f, 1.f);
-}
-
-// Box average of f x f blocks; `use` (may be empty) picks the samples, all when none is used.
-ImageF boxDown(const ImageF& img, int f, const std::vector<uint8_t>& use) {
-  const int W = img.width, H = img.height, w = (W + f - 1) / f, h = (H + f - 1) / f;
-  ImageF out(w, h, 3, 0.f);
-  forRows(h, [&](int by) {
-    for (int bx = 0; bx < w; ++bx)
-      for (int pass = 0; pass < 2; ++pass) {
-        double sum[3] = {0, 0, 0}, n = 0;
-        for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
-          for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) {
-            if (pass == 0 && !use.empty() && !use[size_t(y) * W + x]) continue;
-            const float* p = img.pixel(x, y);
-            if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-            for (int c = 0; c < 3; ++c) sum[c] += std::max(p[c], 0.f);
-            n += 1;
-          }
-        if (n == 0) continue;
-        for (int c = 0; c < 3; ++c) out.at(bx, by, c) = float(sum[c] / n);
-        break;
-      }
-  });
-  return out;
-}
-
-// Mask of f x f blocks: set where at least half the block's pixels are.
-std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f) {
-  const int w = (W + f - 1) / f, h = (H + f - 1) / f;
-  std::vector<uint8_t> out(size_t(w) * h, 0);
-  if (m.empty()) return {};
-  for (int by = 0; by < h; ++by)
-    for (int bx = 0; bx < w; ++bx) {
-      int on = 0, n = 0;
-      for (int y = by * f; y < std::min(H, (by + 1) * f); ++y)
-        for (int x = bx * f; x < std::min(W, (bx + 1) * f); ++x) on += m[size_t(y) * W + x] != 0, ++n;
-      out[size_t(by) * w + bx] = 2 * on >= n;
-    }
-  return out;
-}
-
 }  // namespace
 
 std::atomic<uint64_t> gDecompositionRuns{0};
@@ -704,7 +716,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   const std::vector<uint8_t> validS = maskDown(valid, W, H, f), clippedS = maskDown(clipped, W, H, f);
   auto small = solveAtFullResolution(Bs, Gs, r0s, validS, clippedS, opt);
   if (!small) return small;
-  const ImageF change = upsample(blockChange(small->albedo, Bs, Gs, r0s, clippedS), W, H, f);
+  const ImageF change = blockChange(small->albedo, Bs, Gs, r0s, clippedS);
   Decomposition out;
   out.history = std::move(small->history);
   out.iterations = small->iterations;
@@ -717,7 +729,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
       for (int c = 0; c < 3; ++c) {
         float b = photo.at(x, y, c), g = gathered.at(x, y, c), r = rho0.at(x, y, c);
         const float cap = albedoCap(b, g, lower);
-        r = std::clamp((std::isfinite(r) ? r : 0.5f) + change.at(x, y, c), 0.f, cap);
+        r = std::clamp((std::isfinite(r) ? r : 0.5f) + interpolateBlocks(change, f, x, y, c), 0.f, cap);
         b = std::isfinite(b) ? std::max(b, 0.f) : 0.f;
         g = std::isfinite(g) ? std::max(g, 0.f) : 0.f;
         out.albedo.at(x, y, c) = r;
