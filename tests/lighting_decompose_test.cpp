@@ -236,6 +236,37 @@ TEST(Decompose, ExtremePhotosStayFiniteAndSayWhetherTheyConverged) {
   check(makeLayers(1, 1, 1), "a single pixel");
 }
 
+// holdInvalid: a pixel outside the data terms keeps its start (to rounding); without it the solver
+// moves it (the test could fail).
+TEST(Decompose, HeldPixelsOutsideTheDataTermsKeepTheirStart) {
+  Layers l = makeLayers(48, 40, 8);
+  for (int y = 10; y < 30; ++y)
+    for (int x = 12; x < 36; ++x) l.valid[size_t(y) * 48 + x] = 0;
+  ImageF start = anchoredRetinex(l);
+  for (int y = 10; y < 30; ++y)
+    for (int x = 12; x < 36; ++x) start.setRgb(x, y, Vec3(0.9, 0.1, 0.5));  // far from the truth
+  for (bool hold : {true, false}) {
+    DecomposeOptions o;
+    o.diagonalSteps = true;
+    o.pyramidLevels = 1;
+    o.holdInvalid = hold;
+    o.maxIterations = 300;
+    auto d = decomposeIntrinsic(l.B, l.gamma, start, l.valid, l.clipped, o);
+    ASSERT_TRUE(d);
+    expectFeasible(l, *d);
+    double moved = 0;
+    for (int y = 10; y < 30; ++y)
+      for (int x = 12; x < 36; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float cap = std::min(1.f, l.B.at(x, y, c) / l.gamma.at(x, y, c));
+          moved = std::max(
+              moved, double(std::abs(d->albedo.at(x, y, c) - std::clamp(start.at(x, y, c), 0.f, cap))));
+        }
+    if (hold) EXPECT_LT(moved, 1e-6) << d->report;  // the cap B / Gamma: rounding
+    else EXPECT_GT(moved, 0.05) << d->report;
+  }
+}
+
 TEST(Decompose, ReportsWhenStoppedBeforeConvergence) {
   const Layers l = makeLayers(32, 32);
   DecomposeOptions o;

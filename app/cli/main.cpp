@@ -35,7 +35,7 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
-            [--gathered G.exr] [--iterations N] [--solver scalar|diagonal] [--progress-csv F]
+            [--gathered G.exr] [--iterations N] [--solver scalar|diagonal|diagonal+hold] [--progress-csv F]
                                                      the room's albedo and direct light; G: the
                                                      gathered indirect light (irradiance / pi),
                                                      N: the solver's iteration cap, F: objective
@@ -968,8 +968,8 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     return usageError("--seconds applies to render; decompose takes --iterations N");
   if (a.method != "ours" && a.method != "retinex")
     return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
-  if (!a.solver.empty() && a.solver != "scalar" && a.solver != "diagonal")
-    return usageError("--solver " + a.solver + ": expected 'scalar' or 'diagonal'");
+  if (!a.solver.empty() && a.solver != "scalar" && a.solver != "diagonal" && a.solver != "diagonal+hold")
+    return usageError("--solver " + a.solver + ": expected 'scalar', 'diagonal' or 'diagonal+hold'");
   Progress progress(a.quiet);
   auto prepared = loadAndPrepare(scenePath, a, progress);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
@@ -982,7 +982,8 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   if (!retinex && (a.iterations || !a.solver.empty()) && !le.decomposeStart.empty()) {
     DecomposeOptions o;
     if (a.iterations) o.maxIterations = *a.iterations;
-    if (a.solver == "diagonal") o.diagonalSteps = true, o.pyramidLevels = 2;
+    if (a.solver.rfind("diagonal", 0) == 0) o.diagonalSteps = true, o.pyramidLevels = 2;
+    o.holdInvalid = a.solver == "diagonal+hold";
     o.cancel = &gCancel;
     auto d = decomposeIntrinsic(prepared->photo.linearRgb, le.gathered, le.decomposeStart,
                                 le.decomposeValid, le.decomposeClipped, o);

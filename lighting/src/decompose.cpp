@@ -198,7 +198,7 @@ class PrimalDualSolver {
  private:
   // Per channel planes (row-major, W x H).
   struct Plane {
-    std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn, tau;  // tau: step
+    std::vector<float> B, G, x0, lo, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn, tau;  // tau: step
   };
   void edgeMasks();
   void chooseSteps();
@@ -228,7 +228,7 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
   P.assign(3, Plane{});
   for (int c = 0; c < 3; ++c) {
     Plane& p = P[size_t(c)];
-    p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N);
+    p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N), p.lo.assign(N, 0.f);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
@@ -248,6 +248,7 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
         p.hi[i] = std::max(hi, 0.f);
         p.x0[i] = std::clamp(r0, 0.f, p.hi[i]);
         p.wg2[i] = (valid[i] && finite) ? float(2 * opt.g2) * g * g : 0.f;
+        if (opt.holdInvalid && !valid[i]) p.lo[i] = p.hi[i] = p.x0[i];
       }
     p.x = p.x0;
     p.y.assign(N, 0.f);
@@ -408,7 +409,7 @@ void PrimalDualSolver::step(Plane& p, bool record, double& pSum, double& dSum) c
       p.ly[i] = lap(p.y, i, x, y);
       const float v = p.x[i] - p.tau[i] * (p.gf[i] + p.ly[i]);
       const float w = p.tau[i] * p.wg2[i];
-      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), 0.f, p.hi[i]);
+      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), p.lo[i], p.hi[i]);
     }
   });
   // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
@@ -534,7 +535,7 @@ void PrimalDualSolver::warmStart(const WarmStart& warm) {
     Plane& p = P[size_t(c)];
     for (size_t i = 0; i < N; ++i) {
       const float a = warm.albedo.data[i * 3 + size_t(c)], d = warm.dual.data[i * 3 + size_t(c)];
-      if (std::isfinite(a)) p.x[i] = std::clamp(a, 0.f, p.hi[i]);
+      if (std::isfinite(a)) p.x[i] = std::clamp(a, p.lo[i], p.hi[i]);
       if (std::isfinite(d)) p.y[i] = std::clamp(d, -1.f, 1.f);
     }
   }

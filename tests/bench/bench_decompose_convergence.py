@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""The decomposition's convergence against its run time: the scalar-step solver (the product's)
-and the diagonal steps with the coarse-to-fine start, side by side.
+"""The decomposition's convergence against its run time: the scalar-step solver (the product's),
+the diagonal steps with the coarse-to-fine start, and those with the pixels outside the data terms
+held at their start, side by side.
 
-For each scene, `inlay-cli decompose SCENE --iterations CAP --solver scalar|diagonal
+For each scene, `inlay-cli decompose SCENE --iterations CAP --solver scalar|diagonal|diagonal+hold
 --progress-csv` (the solver re-run from its start after one preparation per solver, its objective
 and residuals every 10 iterations against seconds). The objective's gap is taken to the lowest
-objective either solver reached on that scene (both solve the same objective from the same
-start). Rooms are named as for harness.py (t02, d4): their
+objective the scalar and diagonal solvers reached on that scene (they solve the same objective
+from the same start); diagonal+hold solves it with more constraints, its gap to its own minimum. Rooms are named as for harness.py (t02, d4): their
 assisted scene is written first; `example` is the bundled example.
 
 Writes OUT/decompose_convergence.csv (scene, solver, seconds, iteration, objective, gap, primal,
@@ -21,6 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import benchlib  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+SOLVERS = ("scalar", "diagonal", "diagonal+hold")
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 
@@ -56,9 +58,10 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         for name in opt("--scenes", "example").split(","):
             scene = scene_file(name, tmp)
-            runs = {b: run(cli, b, scene, cap, tmp) for b in ("scalar", "diagonal")}
-            best = min(float(r["objective"]) for h, _ in runs.values() for r in h)
+            runs = {b: run(cli, b, scene, cap, tmp) for b in SOLVERS}
+            lowest = lambda names: min(float(r["objective"]) for b in names for r in runs[b][0])
             for b, (hist, report) in runs.items():
+                best = lowest([b] if b == "diagonal+hold" else ["scalar", "diagonal"])
                 for r in hist:
                     f = float(r["objective"])
                     rows.append({"scene": name, "solver": b, "seconds": float(r["seconds"]),
@@ -85,7 +88,7 @@ def plot(out, rows):
             return
         scenes = sorted({r["scene"] for r in rows})
         for k, s in enumerate(scenes):
-            for b, style in (("scalar", "--"), ("diagonal", "-")):
+            for b, style in zip(SOLVERS, ("--", "-", ":")):
                 pts = [r for r in rows if r["scene"] == s and r["solver"] == b]
                 t = [r["seconds"] for r in pts]
                 ax[0].semilogy(t, [max(r["gap"], 1e-9) for r in pts], style, color="C%d" % k,

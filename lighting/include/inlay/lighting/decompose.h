@@ -83,6 +83,11 @@ struct DecomposeOptions {
   // 30 iterations on half B and the dev rooms (docs/benchmarks.md, "The decomposition's steps
   // and coarse-to-fine start"): the cap acts as a regulariser of an objective to be re-weighed.
   bool diagonalSteps = false;
+  // Pixels outside `valid` keep their start (the lighting gives them the photo's own Retinex:
+  // the model does not explain them). Off: only the smoothness and g3 terms hold them, and a
+  // converged solve moves them, which made its albedo worse than 30 scalar iterations' on half B
+  // (on: better on both halves; docs/benchmarks.md, same section).
+  bool holdInvalid = false;
   // Coarse-to-fine start: the objective is first solved on up to this many coarser levels (2 x 2
   // block means each, down to a short side of 32 pixels, g2 x 4 per level so that each level
   // discretises the same continuous objective), each level's albedo change and dual variable
