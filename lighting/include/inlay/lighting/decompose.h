@@ -63,8 +63,9 @@ struct DecomposeOptions {
   // and geometry give the same albedo bit for bit on every run and machine load. The cap keeps
   // a 640 x 480 photo near a second on 2 threads (bench_decompose); on the rooms more
   // iterations do not lower the albedo error (bench_albedo.py's error against iterations).
-  // The scalar solver converges after 600 to 1400+ iterations on the example and the training
-  // rooms, the diagonal one with the coarse start after 80 to 300+ (diagonalSteps below).
+  // The scalar solver converges after 120 to more than 1500 iterations on the example (1430)
+  // and the training rooms, the diagonal one with the coarse start after 80 to 300+
+  // (diagonalSteps below).
   int maxIterations = 30;
   int minIterations = 10;
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
@@ -80,8 +81,8 @@ struct DecomposeOptions {
   // Per-pixel primal steps (diagonal preconditioning, decompose.cpp) instead of one scalar step
   // set by the brightest pixel. Off by default, with pyramidLevels 0: both reach the objective's
   // minimum many times sooner, and that minimum's albedo is worse than the scalar solver's after
-  // 30 iterations on half B and the dev rooms (docs/benchmarks.md, "The decomposition's steps
-  // and coarse-to-fine start"): the cap acts as a regulariser of an objective to be re-weighed.
+  // 30 iterations on half B and the dev rooms, through the pixels outside the data terms
+  // (holdInvalid; docs/benchmarks.md, "The decomposition's steps and coarse-to-fine start").
   bool diagonalSteps = false;
   // Pixels outside `valid` keep their start (the lighting gives them the photo's own Retinex:
   // the model does not explain them). Off: only the smoothness and g3 terms hold them, and a
