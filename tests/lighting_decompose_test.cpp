@@ -156,6 +156,117 @@ TEST(Decompose, ConvergesOnASmallProblemAndSaysSo) {
   expectFeasible(l, *d);
 }
 
+// A photo the size of the bundled example's (512 x 384) with a band the data terms do not apply
+// to (a lamp, an unexplained patch: only the smoothness and the g3 term hold its albedo): the
+// diagonal steps with the coarse start converge well within 200 iterations; the scalar step, set
+// by the brightest pixel, does not (docs/benchmarks.md, "The decomposition's steps and
+// coarse-to-fine start").
+TEST(Decompose, AnExampleSizedPhotoConvergesWithinTheCap) {
+  Layers l = makeLayers(512, 384, 24);
+  for (int y = 100; y < 160; ++y)
+    for (int x = 200; x < 330; ++x) l.valid[size_t(y) * 512 + x] = 0;
+  for (int y = 0; y < 384; ++y)
+    for (int x = 0; x < 512; ++x) l.gamma.setRgb(x, y, l.gamma.rgb(x, y) * (0.2 + 3.0 * x / 512));
+  DecomposeOptions o;
+  o.maxIterations = 200;
+  o.diagonalSteps = true;
+  o.pyramidLevels = 2;
+  o.coarseIterations = 200;  // coarse levels to convergence (30 leave it at 1e-3 here)
+  auto d = decomposeIntrinsic(l.B, l.gamma, anchoredRetinex(l), l.valid, l.clipped, o);
+  ASSERT_TRUE(d);
+  EXPECT_TRUE(d->converged) << d->report;
+  EXPECT_LT(d->iterations, 200) << d->report;
+  expectFeasible(l, *d);
+  o.diagonalSteps = false;
+  o.pyramidLevels = 0;
+  auto scalar = decomposeIntrinsic(l.B, l.gamma, anchoredRetinex(l), l.valid, l.clipped, o);
+  ASSERT_TRUE(scalar);
+  EXPECT_FALSE(scalar->converged) << scalar->report;
+}
+
+// Finite, feasible, and a report that says "converged" or why not.
+void checkExtreme(const Layers& l, const DecomposeOptions& o) {
+  const ImageF start(l.B.width, l.B.height, 3, 0.5f);
+  auto d = decomposeIntrinsic(l.B, l.gamma, start, l.valid, l.clipped, o);
+  ASSERT_TRUE(d);
+  expectFeasible(l, *d);
+  for (const auto& h : d->history)
+    ASSERT_TRUE(std::isfinite(h.objective) && std::isfinite(h.primalResidual) &&
+                std::isfinite(h.dualResidual));
+  EXPECT_TRUE(d->report.rfind("converged (", 0) == 0 ||
+              d->report.rfind("not converged: stopped by ", 0) == 0)
+      << d->report;
+  EXPECT_EQ(d->converged, d->report.rfind("converged (", 0) == 0) << d->report;
+}
+
+// Stiff and extreme photos: all black, one flat colour, saturated, a huge dynamic range of B and
+// Gamma, a tiny Gamma, a single pixel. Nothing non-finite escapes, and the report says
+// "converged" or why not.
+TEST(Decompose, ExtremePhotosStayFiniteAndSayWhetherTheyConverged) {
+  auto check = [](const Layers& l, const char* what) {
+    for (bool diagonal : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << what << (diagonal ? ", diagonal steps" : ", scalar step"));
+      DecomposeOptions o;
+      o.diagonalSteps = diagonal;
+      o.pyramidLevels = diagonal ? 2 : 0;
+      checkExtreme(l, o);
+    }
+  };
+  Layers black = makeLayers(64, 48);
+  black.B = ImageF(64, 48, 3, 0.f);
+  check(black, "black photo");
+  Layers flat = makeLayers(64, 48);
+  flat.B = ImageF(64, 48, 3, 0.37f);
+  check(flat, "one flat colour");
+  Layers saturated = makeLayers(64, 48);
+  saturated.B = ImageF(64, 48, 3, 1.f);
+  std::fill(saturated.clipped.begin(), saturated.clipped.end(), uint8_t(1));
+  check(saturated, "saturated");
+  Layers range = makeLayers(64, 48);
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const double s = std::pow(10.0, -6 + 12.0 * x / 63);  // 1e-6 .. 1e6 across the photo
+      range.B.setRgb(x, y, range.B.rgb(x, y) * s);
+      range.gamma.setRgb(x, y, range.gamma.rgb(x, y) * s);
+    }
+  check(range, "twelve decades of dynamic range");
+  Layers tiny = makeLayers(64, 48);
+  tiny.gamma = ImageF(64, 48, 3, 1e-30f);
+  check(tiny, "tiny Gamma");
+  check(makeLayers(1, 1, 1), "a single pixel");
+}
+
+// holdInvalid: a pixel outside the data terms keeps its start (to rounding); without it the solver
+// moves it (the test could fail).
+TEST(Decompose, HeldPixelsOutsideTheDataTermsKeepTheirStart) {
+  Layers l = makeLayers(48, 40, 8);
+  for (int y = 10; y < 30; ++y)
+    for (int x = 12; x < 36; ++x) l.valid[size_t(y) * 48 + x] = 0;
+  ImageF start = anchoredRetinex(l);
+  for (int y = 10; y < 30; ++y)
+    for (int x = 12; x < 36; ++x) start.setRgb(x, y, Vec3(0.9, 0.1, 0.5));  // far from the truth
+  for (bool hold : {true, false}) {
+    DecomposeOptions o;
+    o.diagonalSteps = true;
+    o.pyramidLevels = 1;
+    o.holdInvalid = hold;
+    o.maxIterations = 300;
+    auto d = decomposeIntrinsic(l.B, l.gamma, start, l.valid, l.clipped, o);
+    ASSERT_TRUE(d);
+    expectFeasible(l, *d);
+    double moved = 0;
+    for (int y = 10; y < 30; ++y)
+      for (int x = 12; x < 36; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const float cap = std::min(1.f, l.B.at(x, y, c) / l.gamma.at(x, y, c));
+          moved = std::max(
+              moved, double(std::abs(d->albedo.at(x, y, c) - std::clamp(start.at(x, y, c), 0.f, cap))));
+        }
+    if (hold) EXPECT_LT(moved, 1e-6) << d->report;  // the cap B / Gamma: rounding
+    else EXPECT_GT(moved, 0.05) << d->report;
+  }
+}
+
 TEST(Decompose, ReportsWhenStoppedBeforeConvergence) {
   const Layers l = makeLayers(32, 32);
   DecomposeOptions o;

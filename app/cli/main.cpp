@@ -35,7 +35,7 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
-            [--gathered G.exr] [--iterations N] [--progress-csv F]
+            [--gathered G.exr] [--iterations N] [--solver scalar|diagonal|diagonal+hold] [--progress-csv F]
                                                      the room's albedo and direct light; G: the
                                                      gathered indirect light (irradiance / pi),
                                                      N: the solver's iteration cap, F: objective
@@ -178,7 +178,8 @@ struct Args {
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, replaceRadiance, surfaceAlbedo, cue,
-      report;  // cue: empty = the default
+      report;          // cue: empty = the default
+  std::string solver;  // decompose --solver: empty = the lighting's own decomposition
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
@@ -238,7 +239,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
         s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
         s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
-        s == "--pixel-filter") {
+        s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -248,6 +249,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--direct") a.direct = *v;
       else if (s == "--gathered") a.gathered = *v;
       else if (s == "--method") a.method = *v;
+      else if (s == "--solver") a.solver = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
       else if (s == "--lights-json") a.lightsJson = *v;
       else if (s == "--report") a.report = *v;
@@ -966,18 +968,22 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
     return usageError("--seconds applies to render; decompose takes --iterations N");
   if (a.method != "ours" && a.method != "retinex")
     return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
+  if (!a.solver.empty() && a.solver != "scalar" && a.solver != "diagonal" && a.solver != "diagonal+hold")
+    return usageError("--solver " + a.solver + ": expected 'scalar', 'diagonal' or 'diagonal+hold'");
   Progress progress(a.quiet);
   auto prepared = loadAndPrepare(scenePath, a, progress);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
   if (!prepared) return inputError(prepared.error());
   const LightingEstimate& le = prepared->lighting;
   const bool retinex = a.method == "retinex";
-  // --iterations N: re-run the solver from its start with that iteration cap (error against
-  // solver time at a reproducible budget).
+  // --iterations N, --solver: re-run the solver from its start with that iteration cap (error
+  // against solver time at a reproducible budget) and steps.
   std::optional<Decomposition> rerun;
-  if (!retinex && a.iterations && !le.decomposeStart.empty()) {
+  if (!retinex && (a.iterations || !a.solver.empty()) && !le.decomposeStart.empty()) {
     DecomposeOptions o;
-    o.maxIterations = *a.iterations;
+    if (a.iterations) o.maxIterations = *a.iterations;
+    if (a.solver.rfind("diagonal", 0) == 0) o.diagonalSteps = true, o.pyramidLevels = 2;
+    o.holdInvalid = a.solver == "diagonal+hold";
     o.cancel = &gCancel;
     auto d = decomposeIntrinsic(prepared->photo.linearRgb, le.gathered, le.decomposeStart,
                                 le.decomposeValid, le.decomposeClipped, o);

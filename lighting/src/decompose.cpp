@@ -176,6 +176,11 @@ double objectiveUnit(const ImageF& photo, const ImageF& gathered, const std::vec
   return kappa / units;
 }
 
+// A start for the solver other than rho0: the albedo and the dual variable (W x H x 3).
+struct WarmStart {
+  ImageF albedo, dual;
+};
+
 // The primal-dual (Condat-Vu) solve of the objective in decompose.h, per channel plane, in the
 // objective's units: the planes, the edge masks and the steps, then iterations until the
 // residuals or the objective settle.
@@ -185,16 +190,19 @@ class PrimalDualSolver {
       : W(width), H(height), N(size_t(width) * size_t(height)), kappa(unit), opt(options) {}
   void load(const ImageF& photo, const ImageF& gathered, const ImageF& rho0,
             const std::vector<uint8_t>& valid, const std::vector<uint8_t>& clipped);
+  void warmStart(const WarmStart& warm);
   void iterate(Decomposition& out, Clock::time_point t0);
   void writeLayers(Decomposition& out) const;
+  ImageF dual() const;
 
  private:
   // Per channel planes (row-major, W x H).
   struct Plane {
-    std::vector<float> B, G, x0, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn;
+    std::vector<float> B, G, x0, lo, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn, tau;  // tau: step
   };
   void edgeMasks();
   void chooseSteps();
+  void diagonalSteps();
   float lap(const std::vector<float>& u, size_t i, int x, int y) const;
   void gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
   void gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
@@ -208,8 +216,8 @@ class PrimalDualSolver {
   std::vector<Plane> P;
   std::vector<float> mx, my;  // mask on the edge to the right / below
   float gammaMax = 0;
-  double tau = 0, sigma = 0;
-  float tauF = 0, sigmaF = 0, g1x2 = 0, g3x2 = 0;
+  double sigma = 0;  // the dual step (the primal one is per pixel: Plane::tau)
+  float sigmaF = 0, g1x2 = 0, g3x2 = 0;
 };
 
 // B and Gamma in the objective's units, the start x0 within its box [0, min(1, B / Gamma)]
@@ -220,7 +228,7 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
   P.assign(3, Plane{});
   for (int c = 0; c < 3; ++c) {
     Plane& p = P[size_t(c)];
-    p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N);
+    p.B.resize(N), p.G.resize(N), p.x0.resize(N), p.hi.resize(N), p.wg2.resize(N), p.lo.assign(N, 0.f);
     for (int y = 0; y < H; ++y)
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
@@ -240,6 +248,7 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
         p.hi[i] = std::max(hi, 0.f);
         p.x0[i] = std::clamp(r0, 0.f, p.hi[i]);
         p.wg2[i] = (valid[i] && finite) ? float(2 * opt.g2) * g * g : 0.f;
+        if (opt.holdInvalid && !valid[i]) p.lo[i] = p.hi[i] = p.x0[i];
       }
     p.x = p.x0;
     p.y.assign(N, 0.f);
@@ -268,15 +277,61 @@ void PrimalDualSolver::edgeMasks() {
   });
 }
 
-// Steps (Condat-Vu): tau Lf / 2 + tau sigma |Lap|^2 <= 0.95 with |Lap|^2 <= 64 and
-// Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal step takes what the smooth part allows, the
-// dual step the rest.
+// Steps of the Condat-Vu iteration; it converges when T^-1 - Q / 2 - Lap^T sigma Lap is positive
+// definite, T the primal steps, Q >= the smooth part's Hessian, |Lap^T Lap| <= 64.
 void PrimalDualSolver::chooseSteps() {
-  const double Lf = 16 * opt.g1 + 16 * opt.g3 * double(gammaMax) * gammaMax;
-  tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
-  sigma = 0.5 / (64 * tau);
-  tauF = float(tau), sigmaF = float(sigma);
   g1x2 = float(2 * opt.g1), g3x2 = float(2 * opt.g3);
+  if (opt.diagonalSteps) {
+    diagonalSteps();
+    return;
+  }
+  // Scalar: tau Lf / 2 + tau sigma 64 <= 0.95 with Lf <= 16 g1 + 16 g3 max(Gamma)^2; the primal
+  // step takes what the smooth part allows, the dual step the rest.
+  const double Lf = 16 * opt.g1 + 16 * opt.g3 * double(gammaMax) * gammaMax;
+  const double tau = std::min(0.9 / std::max(Lf, 1e-30), 1.0 / 16);
+  sigma = 0.5 / (64 * tau);
+  sigmaF = float(sigma);
+  for (auto& p : P) p.tau.assign(N, float(tau));
+}
+
+// Diagonal step metrics (Pock & Chambolle 2011's preconditioning, extended to the smooth term):
+// by Gershgorin's bounds (Q = diag(q), q_i the absolute row sum of the Hessian) a per-pixel step
+// 1 / tau_i = (q_i / 2 + 64 sigma) / 0.95 satisfies the condition. The scalar step is set by
+// the brightest pixel's q (max Gamma^2) and crawls where Gamma is small. sigma balances the
+// dual step against the median pixel's primal one (64 sigma = median q / 2).
+void PrimalDualSolver::diagonalSteps() {
+  std::vector<double> q(3 * N);
+  for (int c = 0; c < 3; ++c) {
+    const Plane& p = P[size_t(c)];
+    forRows(H, [&](int y) {
+      for (int x = 0; x < W; ++x) {
+        const size_t i = size_t(y) * W + x;
+        double m = 0, degree = 0, gammaAround = 0;
+        auto edge = [&](size_t j, float mask) { m += mask, degree += 1, gammaAround += p.G[j]; };
+        if (x > 0) edge(i - 1, mx[i - 1]);
+        if (x + 1 < W) edge(i + 1, mx[i]);
+        if (y > 0) edge(i - size_t(W), my[i - size_t(W)]);
+        if (y + 1 < H) edge(i + size_t(W), my[i]);
+        const double g = p.G[i];
+        q[size_t(c) * N + i] = 4 * opt.g1 * m + 2 * opt.g3 * g * (degree * g + gammaAround);
+      }
+    });
+  }
+  std::vector<double> sorted(q);
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double qMedian = sorted[sorted.size() / 2];
+  // Without a smooth part the unpreconditioned balance: tau = sigma = 1 / 8.
+  sigma = std::isfinite(qMedian) && qMedian > 1e-12 ? qMedian / 2 / 64 : 1.0 / 8;
+  if (!std::isfinite(sigma)) sigma = 1.0 / 8;
+  sigmaF = float(sigma);
+  for (int c = 0; c < 3; ++c) {
+    Plane& p = P[size_t(c)];
+    p.tau.resize(N);
+    for (size_t i = 0; i < N; ++i) {
+      const double t = 0.95 / (q[size_t(c) * N + i] / 2 + 64 * sigma);
+      p.tau[i] = std::isfinite(t) ? float(t) : 0.f;
+    }
+  }
 }
 
 float PrimalDualSolver::lap(const std::vector<float>& u, size_t i, int x, int y) const {
@@ -352,9 +407,9 @@ void PrimalDualSolver::step(Plane& p, bool record, double& pSum, double& dSum) c
     for (int x = 0; x < W; ++x) {
       const size_t i = size_t(y) * W + x;
       p.ly[i] = lap(p.y, i, x, y);
-      const float v = p.x[i] - tauF * (p.gf[i] + p.ly[i]);
-      const float w = tauF * p.wg2[i];
-      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), 0.f, p.hi[i]);
+      const float v = p.x[i] - p.tau[i] * (p.gf[i] + p.ly[i]);
+      const float w = p.tau[i] * p.wg2[i];
+      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), p.lo[i], p.hi[i]);
     }
   });
   // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
@@ -369,14 +424,14 @@ void PrimalDualSolver::step(Plane& p, bool record, double& pSum, double& dSum) c
   gradFfromQ(p, p.xn, p.gfn);
   if (record) {
     // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
-    // term's gradient change (Condat-Vu).
+    // term's gradient change (Condat-Vu); the primal one times its per-pixel step.
     std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
     forRows(H, [&](int y) {
       double sp = 0, sd = 0;
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
         const double dly = p.ly[i] - lap(p.yn, i, x, y);
-        const double rp = (p.x[i] - p.xn[i]) / tau - dly - (p.gf[i] - p.gfn[i]);
+        const double rp = (p.x[i] - p.xn[i]) - p.tau[i] * (dly + (p.gf[i] - p.gfn[i]));
         const double rd = (p.y[i] - p.yn[i]) / sigma - (p.lx[i] - p.lxn[i]);
         sp += rp * rp, sd += rd * rd;
       }
@@ -410,7 +465,7 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
     for (auto& p : P) step(p, record, pSum, dSum);
     out.iterations = it;
     if (record) {
-      primal = tau * std::sqrt(pSum / (3.0 * N));
+      primal = std::sqrt(pSum / (3.0 * N));  // already times the steps
       dual = sigma * std::sqrt(dSum / (3.0 * N));
       const double f = objective();
       const double fPrev = out.history.empty() ? INFINITY : out.history.back().objective;
@@ -468,21 +523,22 @@ void PrimalDualSolver::writeLayers(Decomposition& out) const {
   }
 }
 
-// The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
-Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF& gathered,
-                                              const ImageF& rho0, const std::vector<uint8_t>& valid,
-                                              const std::vector<uint8_t>& clipped,
-                                              const DecomposeOptions& opt) {
-  const auto t0 = Clock::now();
-  if (auto error = checkSolverInput(photo, gathered, rho0, valid, clipped, opt)) return *error;
-  PrimalDualSolver solver(photo.width, photo.height, objectiveUnit(photo, gathered, valid, clipped, opt),
-                          opt);
-  solver.load(photo, gathered, rho0, valid, clipped);
-  Decomposition out;
-  solver.iterate(out, t0);
-  solver.writeLayers(out);
-  out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+ImageF PrimalDualSolver::dual() const {
+  ImageF out(W, H, 3, 0.f);
+  for (int c = 0; c < 3; ++c)
+    for (size_t i = 0; i < N; ++i) out.data[i * 3 + size_t(c)] = P[size_t(c)].y[i];
   return out;
+}
+
+void PrimalDualSolver::warmStart(const WarmStart& warm) {
+  for (int c = 0; c < 3; ++c) {
+    Plane& p = P[size_t(c)];
+    for (size_t i = 0; i < N; ++i) {
+      const float a = warm.albedo.data[i * 3 + size_t(c)], d = warm.dual.data[i * 3 + size_t(c)];
+      if (std::isfinite(a)) p.x[i] = std::clamp(a, p.lo[i], p.hi[i]);
+      if (std::isfinite(d)) p.y[i] = std::clamp(d, -1.f, 1.f);
+    }
+  }
 }
 
 // Largest albedo a pixel allows: 1, and rho * Gamma <= B where B is a measurement (not clipped).
@@ -530,6 +586,108 @@ std::vector<uint8_t> maskDown(const std::vector<uint8_t>& m, int W, int H, int f
   return out;
 }
 
+// `blocks` (one value per f x f block of a larger image) bilinearly interpolated at the centre of
+// that image's pixel (x, y), channel c.
+float interpolateBlocks(const ImageF& blocks, int f, int x, int y, int c) {
+  const int w = blocks.width, h = blocks.height;
+  const double fy = std::clamp((y + 0.5) / f - 0.5, 0.0, double(h - 1));
+  const double fx = std::clamp((x + 0.5) / f - 0.5, 0.0, double(w - 1));
+  const int y0 = int(fy), y1 = std::min(y0 + 1, h - 1), x0 = int(fx), x1 = std::min(x0 + 1, w - 1);
+  const float ay = float(fy - y0), ax = float(fx - x0);
+  return (1 - ay) * ((1 - ax) * blocks.at(x0, y0, c) + ax * blocks.at(x1, y0, c)) +
+         ay * ((1 - ax) * blocks.at(x0, y1, c) + ax * blocks.at(x1, y1, c));
+}
+
+// `blocks` interpolated over a W x H image (interpolateBlocks).
+ImageF upsample(const ImageF& blocks, int W, int H, int f) {
+  ImageF out(W, H, 3, 0.f);
+  forRows(H, [&](int y) {
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = interpolateBlocks(blocks, f, x, y, c);
+  });
+  return out;
+}
+
+// The albedo change the solver made on f x f block means (against the start as it clamped it),
+// per block.
+ImageF blockChange(const ImageF& albedoS, const ImageF& Bs, const ImageF& Gs, const ImageF& r0s,
+                   const std::vector<uint8_t>& clippedS) {
+  const int w = Bs.width, h = Bs.height;
+  ImageF change(w, h, 3, 0.f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const bool lower = !clippedS.empty() && clippedS[size_t(y) * w + x];
+        const float start =
+            std::clamp(r0s.at(x, y, c), 0.f, albedoCap(Bs.at(x, y, c), Gs.at(x, y, c), lower));
+        change.at(x, y, c) = albedoS.at(x, y, c) - start;
+      }
+  return change;
+}
+
+struct LevelResult {
+  Decomposition out;
+  ImageF dual;
+  int coarseIterations = 0, coarseLevels = 0;
+};
+
+// One level of the pyramid: the level below (2 x 2 block means, g2 x 4 so that the objective
+// approximates the same continuous one) solved first, its albedo change and dual variable
+// carried up as the start.
+LevelResult solveLevel(const ImageF& photo, const ImageF& gathered, const ImageF& rho0,
+                       const std::vector<uint8_t>& valid, const std::vector<uint8_t>& clipped,
+                       const DecomposeOptions& opt, double kappa, int levels, Clock::time_point t0) {
+  const int W = photo.width, H = photo.height;
+  LevelResult r;
+  std::optional<WarmStart> warm;
+  if (levels > 0 && std::min(W, H) >= 64) {
+    const ImageF Bs = boxDown(photo, 2, valid), Gs = boxDown(gathered, 2, valid);
+    const ImageF r0s = boxDown(rho0, 2, {});
+    const std::vector<uint8_t> validS = maskDown(valid, W, H, 2), clippedS = maskDown(clipped, W, H, 2);
+    DecomposeOptions coarseOpt = opt;
+    coarseOpt.g2 *= 4;
+    coarseOpt.maxIterations = std::min(opt.maxIterations, opt.coarseIterations);
+    LevelResult c = solveLevel(Bs, Gs, r0s, validS, clippedS, coarseOpt, kappa, levels - 1, t0);
+    const ImageF change = upsample(blockChange(c.out.albedo, Bs, Gs, r0s, clippedS), W, H, 2);
+    warm.emplace();
+    warm->albedo = rho0;
+    for (size_t i = 0; i < warm->albedo.data.size(); ++i) {
+      const float a = std::isfinite(rho0.data[i]) ? rho0.data[i] : 0.5f;
+      warm->albedo.data[i] = a + change.data[i];
+    }
+    warm->dual = upsample(c.dual, W, H, 2);
+    r.coarseIterations = c.coarseIterations + c.out.iterations;
+    r.coarseLevels = c.coarseLevels + 1;
+  }
+  PrimalDualSolver solver(W, H, kappa, opt);
+  solver.load(photo, gathered, rho0, valid, clipped);
+  if (warm) solver.warmStart(*warm);
+  solver.iterate(r.out, t0);
+  solver.writeLayers(r.out);
+  r.dual = solver.dual();
+  return r;
+}
+
+// The solver at the photo's own resolution (decomposeIntrinsic checks the input first).
+Expected<Decomposition> solveAtFullResolution(const ImageF& photo, const ImageF& gathered,
+                                              const ImageF& rho0, const std::vector<uint8_t>& valid,
+                                              const std::vector<uint8_t>& clipped,
+                                              const DecomposeOptions& opt) {
+  const auto t0 = Clock::now();
+  if (auto error = checkSolverInput(photo, gathered, rho0, valid, clipped, opt)) return *error;
+  const double kappa = objectiveUnit(photo, gathered, valid, clipped, opt);
+  LevelResult r =
+      solveLevel(photo, gathered, rho0, valid, clipped, opt, kappa, std::max(0, opt.pyramidLevels), t0);
+  if (r.coarseLevels > 0) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " (started from %d coarser levels: %d iterations there)",
+                  r.coarseLevels, r.coarseIterations);
+    r.out.report += buf;
+  }
+  r.out.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return std::move(r.out);
+}
+
 }  // namespace
 
 std::atomic<uint64_t> gDecompositionRuns{0};
@@ -559,17 +717,7 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   const std::vector<uint8_t> validS = maskDown(valid, W, H, f), clippedS = maskDown(clipped, W, H, f);
   auto small = solveAtFullResolution(Bs, Gs, r0s, validS, clippedS, opt);
   if (!small) return small;
-  const int w = Bs.width, h = Bs.height;
-  // The change the solver made, per block (against the start as the solver clamped it).
-  ImageF change(w, h, 3, 0.f);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) {
-        const bool lower = !clippedS.empty() && clippedS[size_t(y) * w + x];
-        const float start =
-            std::clamp(r0s.at(x, y, c), 0.f, albedoCap(Bs.at(x, y, c), Gs.at(x, y, c), lower));
-        change.at(x, y, c) = small->albedo.at(x, y, c) - start;
-      }
+  const ImageF change = blockChange(small->albedo, Bs, Gs, r0s, clippedS);
   Decomposition out;
   out.history = std::move(small->history);
   out.iterations = small->iterations;
@@ -577,20 +725,12 @@ Expected<Decomposition> decomposeIntrinsic(const ImageF& photo, const ImageF& ga
   out.albedo = ImageF(W, H, 3, 0.f);
   out.direct = ImageF(W, H, 3, 0.f);
   forRows(H, [&](int y) {
-    const double fy = std::clamp((y + 0.5) / f - 0.5, 0.0, double(h - 1));
-    const int y0 = int(fy), y1 = std::min(y0 + 1, h - 1);
-    const float ay = float(fy - y0);
     for (int x = 0; x < W; ++x) {
-      const double fx = std::clamp((x + 0.5) / f - 0.5, 0.0, double(w - 1));
-      const int x0 = int(fx), x1 = std::min(x0 + 1, w - 1);
-      const float ax = float(fx - x0);
       const bool lower = !clipped.empty() && clipped[size_t(y) * W + x];
       for (int c = 0; c < 3; ++c) {
-        const float d = (1 - ay) * ((1 - ax) * change.at(x0, y0, c) + ax * change.at(x1, y0, c)) +
-                        ay * ((1 - ax) * change.at(x0, y1, c) + ax * change.at(x1, y1, c));
         float b = photo.at(x, y, c), g = gathered.at(x, y, c), r = rho0.at(x, y, c);
         const float cap = albedoCap(b, g, lower);
-        r = std::clamp((std::isfinite(r) ? r : 0.5f) + d, 0.f, cap);
+        r = std::clamp((std::isfinite(r) ? r : 0.5f) + interpolateBlocks(change, f, x, y, c), 0.f, cap);
         b = std::isfinite(b) ? std::max(b, 0.f) : 0.f;
         g = std::isfinite(g) ? std::max(g, 0.f) : 0.f;
         out.albedo.at(x, y, c) = r;

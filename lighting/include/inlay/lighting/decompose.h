@@ -63,6 +63,9 @@ struct DecomposeOptions {
   // and geometry give the same albedo bit for bit on every run and machine load. The cap keeps
   // a 640 x 480 photo near a second on 2 threads (bench_decompose); on the rooms more
   // iterations do not lower the albedo error (bench_albedo.py's error against iterations).
+  // The scalar solver converges after 120 to more than 1500 iterations on the example (1430)
+  // and the training rooms, the diagonal one with the coarse start after 80 to 300+
+  // (diagonalSteps below).
   int maxIterations = 30;
   int minIterations = 10;
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
@@ -75,6 +78,27 @@ struct DecomposeOptions {
   // solver's change to the start is carried back to full resolution (memory and time bounded
   // for 50 MP photos). <= 0: always full resolution.
   long maxSolvePixels = 2'000'000;
+  // Per-pixel primal steps (diagonal preconditioning, decompose.cpp) instead of one scalar step
+  // set by the brightest pixel. Off by default, with pyramidLevels 0: both reach the objective's
+  // minimum many times sooner, and that minimum's albedo is worse than the scalar solver's after
+  // 30 iterations on half B and the dev rooms, through the pixels outside the data terms
+  // (holdInvalid; docs/benchmarks.md, "The decomposition's steps and coarse-to-fine start").
+  bool diagonalSteps = false;
+  // Pixels outside `valid` keep their start (the lighting gives them the photo's own Retinex:
+  // the model does not explain them). Off: only the smoothness and g3 terms hold them, and a
+  // converged solve moves them, which made its albedo worse than 30 scalar iterations' on half B
+  // (on: better on both halves; docs/benchmarks.md, same section).
+  bool holdInvalid = false;
+  // Coarse-to-fine start: the objective is first solved on up to this many coarser levels (2 x 2
+  // block means each, down to a short side of 32 pixels, g2 x 4 per level so that each level
+  // discretises the same continuous objective), each level's albedo change and dual variable
+  // interpolated as the next finer level's start. The coarse levels take the smooth, slow part
+  // of the solution (what the fine level's local steps spread over hundreds of iterations) for
+  // a quarter of the cost per level. 0: the photo's level alone. A coarser level is only a
+  // start: it stops at coarseIterations (or converged); more did not shorten the photo's level
+  // on the example, t03 and t07 (a synthetic checker needed its coarse levels converged).
+  int pyramidLevels = 0;
+  int coarseIterations = 30;
   int historyEvery = 10;  // record objective and residuals every n iterations (and the last)
   const CancelToken* cancel = nullptr;
 };
