@@ -165,6 +165,22 @@ TEST(Lighting, RecoversLightAndAlbedoOfARenderedRoom) {
               est->fitRmsLog, est->seconds);
 }
 
+// No light outlined and no sun (a photo opened before any light is marked, as in the studio): the
+// unseen patches' gather reads each ray's lights' share from an empty list. The estimate is
+// finite, and the empty list is never indexed (UBSan: reference binding to a null pointer).
+TEST(Lighting, NoLightsAndNoSunsGatherTheUnseenPatchesSafely) {
+  const SyntheticRoom r = makeRoom(Vec3(6.0, 5.0, 4.0), 16);
+  LightingOptions opt;
+  opt.gatherSamples = 16;
+  opt.gatherStride = 4;
+  const ImageF noMask(r.photo.width, r.photo.height, 1, 0.f);
+  const auto est = estimateLighting(r.photo, r.camera, r.geometry, {}, {}, noMask, {}, opt);
+  ASSERT_TRUE(est.ok()) << est.error().message();
+  EXPECT_TRUE(est->lights.empty());
+  for (float v : est->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+  for (float v : est->gathered.data) ASSERT_TRUE(std::isfinite(v) && v >= 0);
+}
+
 // Over-exposed: a tenth of the room clips at 1 (a bright wall by the lamp). The clipped pixels
 // are only a lower bound of their radiance, so the light they send gets a fitted extra gain
 // (never below 1 overall, bounded by what was clipped) and the albedo stays right.

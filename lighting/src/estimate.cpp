@@ -994,7 +994,7 @@ Vec3 LightingFit::meanOverRays(const PointRays& r, const Seen& seen, const Unsee
   }
   for (size_t k = 0; k < r.unseen.size(); ++k) {
     const UnseenRay& u = r.unseen[k];
-    const Vec3 radiance = lit ? unseenRadianceOf(u.hit, lit->patch[k], &lit->e[k * C])
+    const Vec3 radiance = lit ? unseenRadianceOf(u.hit, lit->patch[k], lit->e.data() + k * C)
                               : Vec3(unseen(u.hit, u.sampleId));
     if (radiance.allFinite()) sum += radiance;
   }
