@@ -1413,19 +1413,11 @@ Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb,
   return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), checkWhy(curved, withSrgb));
 }
 
-// Whether the objects stand in the curve's room seen by its camera (its "objects" stage would
-// place them): the curve's preparation ran through before the check did, so a scene whose
-// objects do not stand there failed whichever response the check would have kept.
-Status curveObjectsStand(const Preparation& curved) {
-  auto placed = placeObjects(curved.doc.objects, curved.ps.geometry, curved.ps.camera, curved.meshes);
-  return placed ? Status() : Status(placed.error());
-}
-
 // PrepareOptions::checkResponseByLightFit: `curved` (prepared up to the refit with the
 // estimated curve) against the photo as loaded prepared up to the refit with sRGB; the stages
 // after the refit run once, for the one whose light fit explains the photo better. When sRGB's
-// preparation fails the curve stands; when sRGB is kept but the objects do not stand with the
-// curve, the preparation fails as it did when the curve's ran through first.
+// preparation fails the curve stands. The objects are placed only in the kept response's room:
+// the rejected one's camera and box never refuse them.
 Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
   const StageClock clock;
   SceneDoc srgbDoc = curved.doc;
@@ -1441,7 +1433,6 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
   const double residual = srgb.ps.lighting.fitResidualRelative;
   const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
   if (srgbFitsBetter) {
-    if (Status st = curveObjectsStand(curved); !st) return st.error();
     Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, again, clock);
     if (kept || isCancelled(kept.error())) return kept;
   }
