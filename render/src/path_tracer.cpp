@@ -51,6 +51,7 @@
 //
 // Rays leave surfaces from the hit point offset along the geometric normal (rayEpsilon); the
 // emitters sit 1 mm in front of their lights (kLightOffsetM).
+#include "camera_directions.h"
 #include "bsdf.h"
 #include "caustic_map.h"
 #include "embree_util.h"
@@ -684,6 +685,7 @@ struct PathTracer::Impl {
     double x, y;
   };
   PixelScale pixelScale(const DifferentialBuffers& buffers) const;
+  Vec2 cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
   Vec3 cameraDirection(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
   PathState cameraRay(const Vec3& dir) const;
   void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
@@ -1896,18 +1898,21 @@ PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuff
   return {double(cam.widthPx) / buffers.width, double(cam.heightPx) / buffers.height};
 }
 
-// The direction of the camera ray of sample `rng` through pixel (x, y) of the buffers (scaled
-// into the camera's pixel frame by `scale`).
-Vec3 PathTracer::Impl::cameraDirection(int x, int y, const PixelScale& scale,
-                                       const SampleRng& rng) const {
+// Where in the camera's pixel frame the camera ray of sample `rng` through pixel (x, y) of the
+// buffers (scaled into that frame by `scale`) leaves.
+Vec2 PathTracer::Impl::cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const {
   const auto jitter = rng.get2(0);
   // The filter's width is in the camera's pixels: a coarse buffer's pixel (a preview, scale > 1)
   // covers several of them and samples its own cell, the box.
-  if (scale.x > 1 || scale.y > 1)
-    return scene.camera.directionThroughPixel(
-        Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y));
-  return scene.camera.directionThroughPixel(Vec2((x + pixelFilter.position(jitter[0])) * scale.x,
-                                                 (y + pixelFilter.position(jitter[1])) * scale.y));
+  if (scale.x > 1 || scale.y > 1) return Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y);
+  return Vec2((x + pixelFilter.position(jitter[0])) * scale.x,
+              (y + pixelFilter.position(jitter[1])) * scale.y);
+}
+
+// The direction of that camera ray.
+Vec3 PathTracer::Impl::cameraDirection(int x, int y, const PixelScale& scale,
+                                       const SampleRng& rng) const {
+  return scene.camera.directionThroughPixel(cameraPixel(x, y, scale, rng));
 }
 
 // The camera ray in direction `dir`.
@@ -1994,13 +1999,17 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
     auto rngOf = [&](int i) {
       return SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
     };
-    std::array<Vec3, kPacket> dirs;
+    // The lanes' pixel positions, then their directions two at a time.
+    std::array<double, kPacket> px, py;
     std::array<int, kPacket> pixel;
     int m = 0;
     for (int i = 0; i < n; ++i) {
       if (k >= count[i]) continue;
-      dirs[size_t(m)] = cameraDirection(x0 + i, y, scale, rngOf(i)), pixel[size_t(m)] = i, ++m;
+      const Vec2 at = cameraPixel(x0 + i, y, scale, rngOf(i));
+      px[size_t(m)] = at.x(), py[size_t(m)] = at.y(), pixel[size_t(m)] = i, ++m;
     }
+    std::array<Vec3, kPacket> dirs;
+    directionsThroughPixels(scene.camera, m, px.data(), py.data(), dirs.data());
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
     for (int j = 0; j < m; ++j) {
