@@ -8,11 +8,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace inlay::detail {
 
@@ -207,80 +202,6 @@ inline double atan2NonNegative(double y, double x) {
   return x < 0 ? kPi - r : r;
 }
 
-// The set-up of a quad's two spherical triangles in the two lanes of SSE2 registers
-// (SphericalQuad): every lane runs SphericalTriangle's constructor's operations in the same
-// order (Eigen's: a dot product as (x + y) + z, the cross product by its components, a
-// normalisation as a division by the square root of the squared norm), and atan2NonNegative()
-// without its branches, so the triangles are the scalar constructor's to the bit.
-#if defined(__SSE2__)
-namespace pair {
-
-// Two 3-vectors, one per lane.
-struct V2 {
-  __m128d x, y, z;
-};
-inline __m128d add(__m128d a, __m128d b) { return _mm_add_pd(a, b); }
-inline __m128d sub(__m128d a, __m128d b) { return _mm_sub_pd(a, b); }
-inline __m128d mul(__m128d a, __m128d b) { return _mm_mul_pd(a, b); }
-inline __m128d div(__m128d a, __m128d b) { return _mm_div_pd(a, b); }
-inline __m128d both(double v) { return _mm_set1_pd(v); }
-// Lane-wise `mask ? a : b`.
-inline __m128d select(__m128d mask, __m128d a, __m128d b) {
-  return _mm_or_pd(_mm_and_pd(mask, a), _mm_andnot_pd(mask, b));
-}
-inline V2 sub(const V2& a, const V2& b) { return {sub(a.x, b.x), sub(a.y, b.y), sub(a.z, b.z)}; }
-inline __m128d dot(const V2& a, const V2& b) {
-  return add(add(mul(a.x, b.x), mul(a.y, b.y)), mul(a.z, b.z));
-}
-inline V2 cross(const V2& a, const V2& b) {
-  return {sub(mul(a.y, b.z), mul(a.z, b.y)), sub(mul(a.z, b.x), mul(a.x, b.z)),
-          sub(mul(a.x, b.y), mul(a.y, b.x))};
-}
-// Eigen's normalized(): divided by the norm where the squared norm is > 0, else as it is.
-inline V2 normalized(const V2& v) {
-  const __m128d s = dot(v, v);
-  const __m128d q = select(_mm_cmpgt_pd(s, _mm_setzero_pd()), _mm_sqrt_pd(s), both(1.0));
-  return {div(v.x, q), div(v.y, q), div(v.z, q)};
-}
-inline V2 lanes(const Vec3& first, const Vec3& second) {
-  return {_mm_set_pd(second.x(), first.x()), _mm_set_pd(second.y(), first.y()),
-          _mm_set_pd(second.z(), first.z())};
-}
-inline Vec3 lane(const V2& v, int i) {
-  alignas(16) double x[2], y[2], z[2];
-  _mm_store_pd(x, v.x), _mm_store_pd(y, v.y), _mm_store_pd(z, v.z);
-  return Vec3(x[i], y[i], z[i]);
-}
-inline double lane(__m128d v, int i) {
-  alignas(16) double d[2];
-  _mm_store_pd(d, v);
-  return d[i];
-}
-
-// atan2NonNegative(y, x) in both lanes, its branches as selects; `fallback` gets the lanes
-// whose arguments it hands to the library (zero or non-finite), which the caller computes alone.
-inline __m128d atan2NonNegative(__m128d y, __m128d x, int* fallback) {
-  const __m128d ax = _mm_andnot_pd(both(-0.0), x);
-  const __m128d steep = _mm_cmpgt_pd(y, ax);
-  const __m128d num = select(steep, ax, y), den = select(steep, y, ax);
-  const __m128d finite = _mm_cmplt_pd(den, both(std::numeric_limits<double>::infinity()));
-  const __m128d ok = _mm_and_pd(_mm_and_pd(_mm_cmpgt_pd(den, _mm_setzero_pd()), finite),
-                                _mm_cmpge_pd(num, _mm_setzero_pd()));
-  *fallback = _mm_movemask_pd(ok) ^ 3;
-  const __m128d upper = _mm_cmpgt_pd(num, mul(both(0.41421356237309503), den));
-  const __m128d t = div(select(upper, sub(num, den), num), select(upper, add(num, den), den));
-  const __m128d z = mul(t, t);
-  __m128d r = sub(mul(both(8.05374449538e-2), z), both(1.38776856032e-1));
-  r = add(mul(r, z), both(1.99777106478e-1));
-  r = sub(mul(r, z), both(3.33329491539e-1));
-  r = add(mul(mul(r, z), t), t);
-  r = select(upper, add(r, both(kPi / 4)), r);
-  r = select(steep, sub(both(kPi / 2), r), r);
-  return select(_mm_cmplt_pd(x, _mm_setzero_pd()), sub(both(kPi), r), r);
-}
-}  // namespace pair
-#endif
-
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
 struct Frame {
   Vec3 s, t, n;
@@ -390,7 +311,6 @@ struct SphericalTriangle {
   double triple = 0;   // |a . (b x c)|
   double solidAngle = 0;
 
-  SphericalTriangle() = default;  // set up by SphericalQuad's two lanes
   // The solid angle only: the triangle's angles are worked out when it is sampled (a quad
   // samples one of its two triangles; a pdf needs none).
   SphericalTriangle(const Vec3& A, const Vec3& B, const Vec3& C, const Vec3& origin)
@@ -404,10 +324,6 @@ struct SphericalTriangle {
     // The arctangent to a relative 2e-8, far below any image's noise, without libm's call.
     const double sa = 2.0 * atan2NonNegative(triple, 1.0 + a.dot(b) + b.dot(c) + c.dot(a));
     nab = a.cross(b), nbc = b.cross(c), nca = c.cross(a);
-    setSolidAngle(sa);
-  }
-  // solidAngle = sa unless sa or a great circle is degenerate (the normals set).
-  void setSolidAngle(double sa) {
     if (!(sa > 0) || !std::isfinite(sa) || nab.squaredNorm() == 0 || nbc.squaredNorm() == 0 ||
         nca.squaredNorm() == 0)
       return;
@@ -453,15 +369,8 @@ struct SphericalTriangle {
 struct SphericalQuad {
   SphericalTriangle t1, t2;
   double solidAngle = 0;
-  // The two triangles set up together, one per SSE2 lane (the same bits as the next).
-  SphericalQuad(const std::array<Vec3, 4>& c, const Vec3& o) {
-#if defined(__SSE2__)
-    setUpInLanes(c, o);
-#else
-    *this = SphericalQuad(c, o, unitDirections(c, o));
-#endif
-  }
-  // One triangle after the other, from the unit directions u to the corners.
+  SphericalQuad(const std::array<Vec3, 4>& c, const Vec3& o)
+      : SphericalQuad(c, o, unitDirections(c, o)) {}
   SphericalQuad(const std::array<Vec3, 4>& c, const Vec3& o, const std::array<Vec3, 4>& u)
       : t1(c[0], c[1], c[2], o, u[0], u[1], u[2]), t2(c[0], c[2], c[3], o, u[0], u[2], u[3]) {
     if (t1.solidAngle > 0 && t2.solidAngle > 0) solidAngle = t1.solidAngle + t2.solidAngle;
@@ -471,38 +380,6 @@ struct SphericalQuad {
     if (u0 < p1) return t1.sample(std::clamp(u0 / p1, 0.0, 1.0), u1);
     return t2.sample(std::clamp((u0 - p1) / (1.0 - p1), 0.0, 1.0), u1);
   }
-#if defined(__SSE2__)
-  // SphericalTriangle's constructor for (c0 c1 c2) in lane 0 and (c0 c2 c3) in lane 1.
-  void setUpInLanes(const std::array<Vec3, 4>& c, const Vec3& o) {
-    using namespace pair;
-    const V2 origin = lanes(o, o);
-    const V2 u01 = normalized(sub(lanes(c[0], c[1]), origin)),
-             u23 = normalized(sub(lanes(c[2], c[3]), origin));
-    auto firstBoth = [](__m128d v) { return _mm_unpacklo_pd(v, v); };
-    auto secondThird = [](__m128d v01, __m128d v23) { return _mm_shuffle_pd(v01, v23, 1); };
-    const V2 a{firstBoth(u01.x), firstBoth(u01.y), firstBoth(u01.z)};
-    const V2 b{secondThird(u01.x, u23.x), secondThird(u01.y, u23.y), secondThird(u01.z, u23.z)};
-    const V2& cc = u23;
-    const V2 A = lanes(c[0], c[0]), B = lanes(c[1], c[2]), C = lanes(c[2], c[3]);
-    const V2 planeNormal = cross(sub(B, A), sub(C, A));
-    const V2 nab = cross(a, b), nbc = cross(b, cc), nca = cross(cc, a);
-    const __m128d triple = _mm_andnot_pd(both(-0.0), dot(a, nbc));
-    const __m128d cosSum = add(add(add(both(1.0), dot(a, b)), dot(b, cc)), dot(cc, a));
-    int fallback = 0;
-    const __m128d sa = mul(both(2.0), pair::atan2NonNegative(triple, cosSum, &fallback));
-    SphericalTriangle* t[2] = {&t1, &t2};
-    for (int i = 0; i < 2; ++i) {
-      SphericalTriangle& ti = *t[i];
-      ti.o = o, ti.a = lane(a, i), ti.b = lane(b, i), ti.c = lane(cc, i);
-      ti.planePoint = c[0], ti.planeNormal = lane(planeNormal, i);
-      ti.nab = lane(nab, i), ti.nbc = lane(nbc, i), ti.nca = lane(nca, i);
-      ti.triple = lane(triple, i);
-      ti.setSolidAngle(fallback & (1 << i) ? 2.0 * detail::atan2NonNegative(ti.triple, lane(cosSum, i))
-                                           : lane(sa, i));
-    }
-    if (t1.solidAngle > 0 && t2.solidAngle > 0) solidAngle = t1.solidAngle + t2.solidAngle;
-  }
-#endif
   // The unit directions from o to the corners, each normalised once.
   static std::array<Vec3, 4> unitDirections(const std::array<Vec3, 4>& c, const Vec3& o) {
     return {(c[0] - o).normalized(), (c[1] - o).normalized(), (c[2] - o).normalized(),
