@@ -763,6 +763,12 @@ struct PathTracer::Impl {
     double solidAngle = 0;  // > 0: sampled by solid angle (the same rule as lightPdf)
     bool mesh = false;      // on an emissive object
   };
+  // NEE's source and the point on it (pickSource); li == sourceCount(): none.
+  struct SourcePick {
+    size_t li = 0;
+    double selectProb = 0;
+    SourcePoint p;
+  };
   static void addTo(Mode mode, Sums& out, const Vec3& c) {
     if (mode != Mode::WithoutOnly) out.with += c;
     if (mode != Mode::WithOnly) out.without += c;
@@ -780,8 +786,9 @@ struct PathTracer::Impl {
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
                                    Vec3* y);
+  SourcePick pickSource(const Vertex& v, const Lobe& lobe) const;
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                       Sums& out) const;
+                       const SourcePick& pick, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
   void addSunPatchSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                          const SampleRng& rng, Sums& out) const;
@@ -1123,6 +1130,11 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   // The caustic map's light here marks the path (PathState::causticChain) before the bounce
   // copies its state.
   if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
+  // NEE's source and point first: their chain of square roots and divisions (the spherical
+  // quad) does not depend on the bounce's, so the core overlaps the two.
+  const int64_t pickStart = neeClockNs();
+  const SourcePick pick = nee ? pickSource(v, lobe) : SourcePick{sourceCount(), 0, {}};
+  out.counters.neeNs += neeClockNs() - pickStart;
   PathState after = st;
   const bool goesOn = bounceFrom(after, v, lobe, nee) && survivesRoulette(after, v);
   if (goesOn) {
@@ -1132,7 +1144,7 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   }
   if (nee) {
     const int64_t neeStart = neeClockNs();
-    addSourceSample(mode, st, v, lobe, out);
+    addSourceSample(mode, st, v, lobe, pick, out);
     addSunLight(mode, st, v, lobe, out);
     if (sunPatchNeeAt(st.depth)) addSunPatchSample(mode, st, v, lobe, rng, out);
     out.counters.neeNs += neeClockNs() - neeStart;
@@ -1205,14 +1217,23 @@ double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from
 // Next-event estimation to one source (area light or emissive object) picked by power over
 // squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
 // the BSDF, with a shadow ray.
+PathTracer::Impl::SourcePick PathTracer::Impl::pickSource(const Vertex& v, const Lobe& lobe) const {
+  SourcePick pick;
+  pick.li = sourceCount() == 0
+                ? sourceCount()
+                : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &pick.selectProb);
+  if (pick.li >= sourceCount() || !(pick.selectProb > 0)) pick.li = sourceCount();
+  else pick.p = sampleSource(pick.li, v.point, v.lightPoint());
+  return pick;
+}
+
+// The rest of it, for the source and point `pick` drew.
 void PathTracer::Impl::addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
-                                       Sums& out) const {
-  double selectProb = 0;
-  const size_t li = sourceCount() == 0
-                        ? sourceCount()
-                        : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &selectProb);
-  if (li >= sourceCount() || !(selectProb > 0)) return;
-  const SourcePoint p = sampleSource(li, v.point, v.lightPoint());
+                                       const SourcePick& pick, Sums& out) const {
+  if (pick.li >= sourceCount()) return;
+  const size_t li = pick.li;
+  const double selectProb = pick.selectProb;
+  const SourcePoint& p = pick.p;
   Vec3 w = p.y - v.point;
   const double d = std::sqrt(w.squaredNorm());
   if (d > 0) w /= d;
