@@ -170,9 +170,13 @@ inline void sinCos(double x, double* sinX, double* cosX) {
                               -1.0 / 39916800, 1.0 / 6227020800, -1.0 / 1307674368000};
   constexpr double kCos[8] = {-1.0 / 2,       1.0 / 24,        -1.0 / 720,         1.0 / 40320,
                               -1.0 / 3628800, 1.0 / 479001600, -1.0 / 87178291200, 1.0 / 20922789888000};
-  double ps = kSin[6], pc = kCos[7];
-  for (int i = 5; i >= 0; --i) ps = kSin[i] + z * ps;
-  for (int i = 6; i >= 0; --i) pc = kCos[i] + z * pc;
+  // Estrin's scheme (pairs, then powers z^2 and z^4): a third of Horner's chain of dependent
+  // multiply-adds, which sat on the critical path of every bounce direction and light point.
+  const double z2 = z * z, z4 = z2 * z2;
+  const double ps = (kSin[0] + z * kSin[1]) + z2 * (kSin[2] + z * kSin[3]) +
+                    z4 * ((kSin[4] + z * kSin[5]) + z2 * kSin[6]);
+  const double pc = (kCos[0] + z * kCos[1]) + z2 * (kCos[2] + z * kCos[3]) +
+                    z4 * ((kCos[4] + z * kCos[5]) + z2 * (kCos[6] + z * kCos[7]));
   const double s = r + r * z * ps, c = 1.0 + z * pc;
   switch (int64_t(q) & 3) {
     case 0: *sinX = s, *cosX = c; break;
