@@ -1,0 +1,137 @@
+// Nanoseconds per call of the path tracer's latency-bound steps, one thread, each timed in a
+// loop over varied inputs (docs/benchmarks.md, bench_throughput's tenth pass):
+//   camera_direction_scalar / _lanes: a packet's 8 camera directions by
+//     Camera::directionThroughPixel one at a time, and two lanes at a time
+//     (directionsThroughPixels); per direction;
+//   quad_setup / quad_sample: a quad light's spherical quad seen from a point near it (its two
+//     triangles' solid angles), and one point sampled on it;
+//   sincos_chain: sinCos with each call's argument taken from the last one's result (its latency).
+// Writes STEP,ns_per_call,repeats as CSV to stdout: the median of `repeats` timings.
+//
+// usage: bench_render_steps [--repeats 7]
+#include "../../render/src/camera_directions.h"
+#include "../../render/src/sampling.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace inlay;
+using namespace inlay::detail;
+
+volatile double gSink = 0;  // keeps the timed results alive
+
+// The median over `repeats` of the nanoseconds per call of `run(calls)`.
+double medianNs(int repeats, long calls, const std::function<double(long)>& run) {
+  std::vector<double> ns;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    gSink = gSink + run(calls);
+    ns.push_back(
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() /
+        double(calls));
+  }
+  std::sort(ns.begin(), ns.end());
+  return ns[ns.size() / 2];
+}
+
+struct Pixels {
+  std::vector<double> x, y;
+};
+Pixels randomPixels(std::mt19937_64& g, const Camera& cam, size_t n) {
+  std::uniform_real_distribution<double> u(0, 1);
+  Pixels p;
+  for (size_t i = 0; i < n; ++i) p.x.push_back(u(g) * cam.widthPx), p.y.push_back(u(g) * cam.heightPx);
+  return p;
+}
+
+// A ceiling light of 0.5 x 0.4 m (a trapezoid: not a rectangle) and points up to 1.5 m from it.
+struct QuadCases {
+  std::vector<std::array<Vec3, 4>> quads;
+  std::vector<Vec3> from;
+};
+QuadCases nearQuads(std::mt19937_64& g, size_t n) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  QuadCases q;
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 c(u(g), 2.5, u(g));
+    q.quads.push_back({c, c + Vec3(0.5, 0, 0), c + Vec3(0.6, 0, 0.4), c + Vec3(0, 0, 0.4)});
+    q.from.push_back(c + Vec3(1.5 * u(g), -0.2 - 0.6 * (u(g) + 1), 1.5 * u(g)));
+  }
+  return q;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repeats = 7;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (!std::strcmp(argv[i], "--repeats")) repeats = std::max(1, std::atoi(argv[i + 1]));
+  std::mt19937_64 g(18);
+  Camera cam = levelCamera(512, 384, 450, 1.6);
+  cam.worldFromCamera = Eigen::AngleAxisd(0.3, Vec3(0.2, 1, 0.1).normalized()).toRotationMatrix();
+  const size_t n = 4096;
+  const Pixels px = randomPixels(g, cam, 8 * n);
+  std::printf("step,ns_per_call,repeats\n");
+  auto report = [&](const char* step, double ns) { std::printf("%s,%.2f,%d\n", step, ns, repeats); };
+
+  Vec3 dirs[8];
+  report("camera_direction_scalar", medianNs(repeats, long(8 * n) * 50, [&](long calls) {
+           double s = 0;
+           for (long k = 0; k < calls / 8; ++k) {
+             const size_t i = 8 * (size_t(k) % n);
+             for (int j = 0; j < 8; ++j)
+               dirs[j] = cam.directionThroughPixel(Vec2(px.x[i + j], px.y[i + j]));
+             s += dirs[3].x();
+           }
+           return s;
+         }));
+  report("camera_direction_lanes", medianNs(repeats, long(8 * n) * 50, [&](long calls) {
+           double s = 0;
+           for (long k = 0; k < calls / 8; ++k) {
+             const size_t i = 8 * (size_t(k) % n);
+             directionsThroughPixels(cam, 8, &px.x[i], &px.y[i], dirs);
+             s += dirs[3].x();
+           }
+           return s;
+         }));
+
+  const QuadCases q = nearQuads(g, n);
+  report("quad_setup", medianNs(repeats, long(n) * 100, [&](long calls) {
+           double s = 0;
+           for (long k = 0; k < calls; ++k) {
+             const size_t i = size_t(k) % n;
+             s += SphericalQuad(q.quads[i], q.from[i]).solidAngle;
+           }
+           return s;
+         }));
+  std::vector<SphericalQuad> set;
+  for (size_t i = 0; i < n; ++i) set.emplace_back(q.quads[i], q.from[i]);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<double> u0(n), u1(n);
+  for (size_t i = 0; i < n; ++i) u0[i] = u(g), u1[i] = u(g);
+  report("quad_sample", medianNs(repeats, long(n) * 100, [&](long calls) {
+           double s = 0;
+           for (long k = 0; k < calls; ++k) {
+             const size_t i = size_t(k) % n;
+             if (set[i].solidAngle > 0) s += set[i].sample(u0[i], u1[i]).x();
+           }
+           return s;
+         }));
+  report("sincos_chain", medianNs(repeats, 5000000, [&](long calls) {
+           double x = 0.1, sn = 0, cs = 0;
+           for (long k = 0; k < calls; ++k) {
+             sinCos(x, &sn, &cs);
+             x = 0.5 + 0.25 * sn * cs + double(k) * 1e-7;
+           }
+           return x;
+         }));
+  return 0;
+}
