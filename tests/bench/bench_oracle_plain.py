@@ -28,12 +28,21 @@ of these levels alone costs, and bias = sqrt(max(0, product^2 - noise_floor^2)),
 Lights pair with the truth's in order (the harness lists them as truth.json does); a room whose
 light count differs from the truth's skips the light swaps.
 
+With --dev the rooms are the six dev rooms of ../shared/scenes (their own photos, half "dev";
+--rooms d1,d3 picks some): GEN is made here first, per room the harness's assisted scene
+(GEN/ROOM_plain.json), its product render at --spp with its lights (GEN/ROOM_plain_long.png,
+GEN/ROOM_plain_lights.json) and GEN/variants/ROOM_plain a link to the room's folder.
+
 Writes OUT/oracle_plain.csv (one row per room: each run's RMSE and adjusted RMSE), OUT/oracle_plain.png
 (per room, each run's RMSE) and docs/bench/oracle_plain.md; renders stay in OUT. Each room's row is
 kept in OUT/rows/ so that processes can split the rooms (--rows-only writes the union).
 
 usage: bench_oracle_plain.py INLAY_CLI --gen GEN_OUT [--out DIR] [--rooms t01,t07|A|B]
                              [--spp 128] [--runs product,true_power,...] [--rows-only] [--reuse]
+                             [--score-only] [--dev]
+  --reuse       keep the composites already in OUT (render only the missing ones)
+  --score-only  render nothing: score the composites already in OUT (runs split over processes
+                and folders, copied together)
 """
 import json, os, subprocess, sys, time
 
@@ -111,11 +120,11 @@ def run_args(name, room, gen, out, truth, ours):
     return scene, extra, factor
 
 
-def measure_room(cli, tools, gen, out, room, spp, runs, reuse):
+def measure_room(cli, tools, gen, out, room, spp, runs, reuse, score_only=False):
     vdir = os.path.join(gen, "variants", room + "_plain")
     truth = json.load(open(os.path.join(vdir, "truth.json")))
     ours = json.load(open(os.path.join(gen, room + "_plain_lights.json")))["refined"]
-    row = {"room": room, "half": benchlib.half(room), "material": truth["object"]["material"]["type"],
+    row = {"room": room, "half": "dev" if room.startswith("d") else benchlib.half(room), "material": truth["object"]["material"]["type"],
            "lights": "+".join(L["view_status"] for L in truth["lights"]), "spp": spp,
            "true_rear_m": round(true_rear_m(truth), 2)}
     pngs = {}
@@ -128,7 +137,9 @@ def measure_room(cli, tools, gen, out, room, spp, runs, reuse):
         long_png = os.path.join(gen, room + "_plain_long.png")
         if name == "product" and not os.path.exists(png) and os.path.exists(long_png) and spp == 128:
             png = long_png  # the benchmark's own --long-spp 128 composite
-        if not (reuse and os.path.exists(png)) and png != long_png:
+        if score_only and not os.path.exists(png):
+            continue
+        if not (reuse and os.path.exists(png)) and png != long_png and not score_only:
             t = time.monotonic()
             p = subprocess.run([cli, "render", scene, "-o", png, "--quiet", "--seed", "1", "--spp", str(spp * factor),
                                 "--seconds", "0", "--noise", "0"] + extra, capture_output=True, text=True)
@@ -171,10 +182,39 @@ def plot(out, rows, runs):
         ax[1].set_title("product: noise floor and the rest", fontsize=9)
 
 
+def dev_rooms(only):
+    """(scenes folder, tools folder, dev room names filtered by `only`, comma-separated prefixes)."""
+    shared = benchlib.shared_dir()
+    sdir, tools = os.path.join(shared, "scenes"), os.path.join(shared, "tools")
+    names = sorted(n for n in os.listdir(sdir) if os.path.isfile(os.path.join(sdir, n, "truth.json")))
+    return sdir, tools, [n for n in names if not only or only in ("A", "B")
+                         or any(n.startswith(p) for p in only.split(","))]
+
+
+def prepare_dev(cli, tools, sdir, gen, room, spp):
+    """The benchmark's layout for a dev room (see the docstring); False when a step failed."""
+    os.makedirs(os.path.join(gen, "variants"), exist_ok=True)
+    link = os.path.join(gen, "variants", room + "_plain")
+    if not os.path.exists(link):
+        os.symlink(os.path.join(sdir, room), link)
+    scene, png = os.path.join(gen, room + "_plain.json"), os.path.join(gen, room + "_plain_long.png")
+    if os.path.exists(png):
+        return True
+    if subprocess.run([PY, os.path.join(tools, "harness.py"), "scene", os.path.join(sdir, room), scene]).returncode != 0:
+        return False
+    p = subprocess.run([cli, "render", scene, "-o", png, "--quiet", "--seed", "1", "--spp", str(spp), "--seconds", "0",
+                        "--noise", "0", "--lights-json", os.path.join(gen, room + "_plain_lights.json")],
+                       capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.stderr.write("%s: the product render failed: %s\n" % (room, p.stderr[-400:]))
+    return p.returncode == 0
+
+
 def main():
     cli, opt, out = benchlib.command_line(__doc__)
     gen = os.path.abspath(opt("--gen", os.path.join(HERE, "out")))
-    sdir, tools, names = benchlib.train_rooms_of(opt("--rooms", "A"))
+    dev = "--dev" in sys.argv[1:]
+    sdir, tools, names = (dev_rooms if dev else benchlib.train_rooms_of)(opt("--rooms", "" if dev else "A"))
     runs = opt("--runs", ",".join(RUNS)).split(",")
     unknown = [r for r in runs if r not in RUNS]
     if unknown:
@@ -184,7 +224,10 @@ def main():
     os.makedirs(rows_dir, exist_ok=True)
     if "--rows-only" not in sys.argv[1:]:
         for room in names:
-            row = measure_room(cli, tools, gen, out, room, int(opt("--spp", "128")), runs, "--reuse" in sys.argv[1:])
+            if dev and not prepare_dev(cli, tools, sdir, gen, room, int(opt("--spp", "128"))):
+                continue
+            row = measure_room(cli, tools, gen, out, room, int(opt("--spp", "128")), runs, "--reuse" in sys.argv[1:],
+                               "--score-only" in sys.argv[1:])
             json.dump(row, open(os.path.join(rows_dir, room + ".json"), "w"))
             print(json.dumps(row), flush=True)
     rows = benchlib.read_rows(rows_dir)
