@@ -19,6 +19,13 @@ light placed behind the camera, so a true light reaching farther back would be p
 (docs/generalization.md, "The floor (half A)").
   true_albedo   the room's albedo (--replace-albedo albedo.exr)
   no_grain      without the grain the render adds (--no-grain)
+  place_fit     not a composite: how well the user's place and the true place of the lights
+                placed in 3D (rect_m) explain the photo. The scene with the true rear wall is
+                prepared twice, once as given and once with each rect_m light moved to the true
+                rectangle, rendered with one sample and --lights-json: the refinement's data term
+                at the start (fit_user_data, fit_true_data: its relative error against the
+                decomposition's direct light, intensities solved) and the light fit's robust log
+                residual (fit_user_rms_log, fit_true_rms_log). Lower explains the photo better.
 and reads the noise over the object (pixels of object_mask.png >= 250 whose row neighbours are too;
 the RMS second difference along rows over sqrt 6, sRGB: white noise's standard deviation, the
 shading's slope removed): truth_noise (Cycles' own, which no render shares), product_noise (our
@@ -56,7 +63,8 @@ from bench_error_budget import quad_area, true_lights, with_true_power  # noqa: 
 from bench_floor import true_rear_m  # noqa: E402
 
 PY = "/usr/bin/python3"
-RUNS = ["product", "true_rear", "true_power", "true_places", "true_lights", "true_albedo", "no_grain", "more_spp"]
+RUNS = ["product", "true_rear", "true_power", "true_places", "true_lights", "true_albedo", "no_grain", "more_spp",
+        "place_fit"]
 
 
 def with_true_places(ours, truth):
@@ -120,6 +128,29 @@ def run_args(name, room, gen, out, truth, ours):
     return scene, extra, factor
 
 
+def place_fit(cli, gen, out, room, truth, row):
+    """The place_fit readings (see the docstring) into `row`."""
+    rear = json.load(open(rear_scene(gen, out, room, truth)))
+    placed = [i for i, L in enumerate(rear.get("lights", [])) if L.get("kind") == "rect_m"]
+    tl = true_lights(truth)
+    if not placed or len(rear["lights"]) != len(tl):
+        return
+    moved = json.loads(json.dumps(rear))
+    for i in placed:
+        moved["lights"][i]["corners"] = tl[i]["corners"]
+    for key, doc in (("user", rear), ("true", moved)):
+        scene, lights = (os.path.join(out, "%s_place_%s%s" % (room, key, ext)) for ext in (".json", "_lights.json"))
+        json.dump(doc, open(scene, "w"), indent=1)
+        p = subprocess.run([cli, "render", scene, "-o", os.path.join(out, "%s_place_%s.png" % (room, key)), "--quiet",
+                            "--seed", "1", "--spp", "1", "--seconds", "0", "--noise", "0", "--lights-json", lights],
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            return
+        d = json.load(open(lights))
+        row["fit_%s_data" % key] = round(d["refinement"]["initial_data_term"], 5)
+        row["fit_%s_rms_log" % key] = round(d["fit"]["rms_log"], 5)
+
+
 def measure_room(cli, tools, gen, out, room, spp, runs, reuse, score_only=False):
     vdir = os.path.join(gen, "variants", room + "_plain")
     truth = json.load(open(os.path.join(vdir, "truth.json")))
@@ -128,7 +159,12 @@ def measure_room(cli, tools, gen, out, room, spp, runs, reuse, score_only=False)
            "lights": "+".join(L["view_status"] for L in truth["lights"]), "spp": spp,
            "true_rear_m": round(true_rear_m(truth), 2)}
     pngs = {}
-    for name in runs:
+    if "place_fit" in runs and not score_only:
+        place_fit(cli, gen, out, room, truth, row)
+    prev = os.path.join(out, "rows", room + ".json")
+    if score_only and os.path.exists(prev):  # keep the place_fit readings of an earlier run
+        row.update({k: v for k, v in json.load(open(prev)).items() if k.startswith("fit_")})
+    for name in [r for r in runs if r != "place_fit"]:
         made = run_args(name, room, gen, out, truth, ours)
         if made is None:
             continue
@@ -233,11 +269,13 @@ def main():
     rows = benchlib.read_rows(rows_dir)
     if not rows:
         return 1
-    cols = ["room", "half", "material", "lights", "spp", "true_rear_m"] + [n + k for n in RUNS for k in ("_rmse", "_adjusted")]
+    cols = ["room", "half", "material", "lights", "spp", "true_rear_m"] + [n + k for n in RUNS[:-1]
+                                                                           for k in ("_rmse", "_adjusted")]
     cols += ["truth_noise", "product_noise", "no_grain_noise", "noise_floor", "bias"]
+    cols += ["fit_user_data", "fit_true_data", "fit_user_rms_log", "fit_true_rms_log"]
     benchlib.write_csv(os.path.join(out, "oracle_plain.csv"), rows, table="oracle_plain",
                        columns=[c for c in cols if any(c in r for r in rows)])
-    plot(out, rows, [n for n in RUNS if any(n + "_rmse" in r for r in rows)])
+    plot(out, rows, [n for n in RUNS[:-1] if any(n + "_rmse" in r for r in rows)])
     print("wrote", os.path.join(out, "oracle_plain.csv"))
     return 0
 
