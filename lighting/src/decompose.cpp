@@ -269,7 +269,9 @@ class PrimalDualSolver {
   void edgeMasks();
   void chooseSteps();
   void diagonalSteps();
-  SmoothPart smoothPart(const Plane& p) const { return {p.G.data(), p.lapB.data(), mx.data(), my.data(), g1x2, g3x2}; }
+  SmoothPart smoothPart(const Plane& p) const {
+    return {p.G.data(), p.lapB.data(), mx.data(), my.data(), g1x2, g3x2};
+  }
   double objective() const;
   void step(Plane& p) const;
   void residuals(const Plane& p, double& pSum, double& dSum) const;
@@ -318,7 +320,9 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
     p.x = p.x0;
     p.y.assign(N, 0.f);
     p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.lapB.assign(N, 0.f);
-    forRows(H, [&](int y) { forRowPixels(W, H, y, [&](size_t i, Around a) { p.lapB[i] = lap(p.B, i, a); }); });
+    forRows(H, [&](int y) {
+      forRowPixels(W, H, y, [&](size_t i, Around a) { p.lapB[i] = lap(p.B, i, a); });
+    });
   }
   edgeMasks();
   chooseSteps();
