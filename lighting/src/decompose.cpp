@@ -274,14 +274,15 @@ class PrimalDualSolver {
   }
   double objective() const;
   void step(Plane& p) const;
-  void residuals(const Plane& p, double& pSum, double& dSum) const;
+  void residuals(const Plane& p, double& pSum, double& dSum);
 
   const int W, H;
   const size_t N;
   const double kappa;
   const DecomposeOptions& opt;
   std::vector<Plane> P;
-  std::vector<float> mx, my;  // mask on the edge to the right / below
+  std::vector<float> mx, my;                      // mask on the edge to the right / below
+  std::vector<float> scratchPrimal, scratchDual;  // squared residuals per pixel (residuals())
   float gammaMax = 0;
   double sigma = 0;  // the dual step (the primal one is per pixel: Plane::tau)
   float sigmaF = 0, g1x2 = 0, g3x2 = 0;
@@ -324,6 +325,7 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
       forRowPixels(W, H, y, [&](size_t i, Around a) { p.lapB[i] = lap(p.B, i, a); });
     });
   }
+  scratchPrimal.assign(N, 0.f), scratchDual.assign(N, 0.f);
   edgeMasks();
   chooseSteps();
 }
@@ -462,22 +464,42 @@ void PrimalDualSolver::step(Plane& p) const {
 
 // Squared residuals of the last step (x -> xn, y -> yn) of the primal-dual iteration (Goldstein et
 // al. 2013), with the smooth term's gradient change (Condat-Vu); the primal one times its
-// per-pixel step. Added to pSum and dSum.
-void PrimalDualSolver::residuals(const Plane& p, double& pSum, double& dSum) const {
+// per-pixel step. Per pixel into the scratch planes (a vectorised pass), then summed per row;
+// added to pSum and dSum.
+void PrimalDualSolver::residuals(const Plane& p, double& pSum, double& dSum) {
   const SmoothPart f = smoothPart(p);
+  const float *x = p.x.data(), *y = p.y.data(), *xn = p.xn.data(), *yn = p.yn.data();
+  const float *tau = p.tau.data(), invSigma = float(1 / sigma);
+  float *sp = scratchPrimal.data(), *sd = scratchDual.data();
   std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
-  forRows(H, [&](int y) {
-    double sp = 0, sd = 0;
-    forRowPixels(W, H, y, [&](size_t i, Around a) {
-      const double dly = lap(p.y, i, a) - lap(p.yn, i, a);
-      const double dgf = smoothGradient(f, p.x.data(), i, a) - smoothGradient(f, p.xn.data(), i, a);
-      const double rp = (p.x[i] - p.xn[i]) - p.tau[i] * (dly + dgf);
-      const double rd = (p.y[i] - p.yn[i]) / sigma - (lap(p.x, i, a) - lap(p.xn, i, a));
-      sp += rp * rp, sd += rd * rd;
+  forRows(H, [&](int row) {
+    forRowPixels(W, H, row, [&](size_t i, Around a) INLAY_INLINE {
+      const float dly = lap(y, i, a) - lap(yn, i, a);
+      const float dgf = smoothGradient(f, x, i, a) - smoothGradient(f, xn, i, a);
+      const float rp = (x[i] - xn[i]) - tau[i] * (dly + dgf);
+      const float rd = (y[i] - yn[i]) * invSigma - (lap(x, i, a) - lap(xn, i, a));
+      sp[i] = rp * rp, sd[i] = rd * rd;
     });
-    ps[size_t(y)] = sp, ds[size_t(y)] = sd;
+    double sumP = 0, sumD = 0;
+    for (size_t i = size_t(row) * size_t(W); i < size_t(row + 1) * size_t(W); ++i)
+      sumP += sp[i], sumD += sd[i];
+    ps[size_t(row)] = sumP, ds[size_t(row)] = sumD;
   });
-  for (int y = 0; y < H; ++y) pSum += ps[size_t(y)], dSum += ds[size_t(y)];
+  for (int row = 0; row < H; ++row) pSum += ps[size_t(row)], dSum += ds[size_t(row)];
+}
+
+// The objective's decrease still to come per pixel and channel, extrapolated from the last two
+// decreases in `history` as a geometric series (ratio r = last / previous: r / (1 - r) times the
+// last); infinite while the objective rises or its decrease does not shrink.
+double remainingDecrease(const std::vector<DecomposeSample>& history, size_t values) {
+  const size_t n = history.size();
+  if (n < 3 || values == 0) return INFINITY;
+  const double previous = history[n - 3].objective - history[n - 2].objective;
+  const double last = history[n - 2].objective - history[n - 1].objective;
+  if (last == 0 && previous == 0) return 0;
+  if (!(last >= 0) || !(last < previous)) return INFINITY;
+  const double r = last / previous;
+  return last * r / (1 - r) / double(values);
 }
 
 // Iterates until converged (residuals or objective), the cap, non-finite residuals or
@@ -510,9 +532,10 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
       }
       const bool residualsSmall = primal < opt.tolerance && dual < opt.tolerance;
       const bool objectiveFlat = std::abs(fPrev - f) <= opt.objectiveTolerance * std::abs(f);
-      if (it >= opt.minIterations && (residualsSmall || objectiveFlat)) {
+      const bool gapSmall = 2 * remainingDecrease(out.history, 3 * N) <= opt.gapTolerance;
+      if (it >= opt.minIterations && (residualsSmall || objectiveFlat || gapSmall)) {
         out.converged = true;
-        convergedBy = residualsSmall ? "residuals" : "objective";
+        convergedBy = residualsSmall ? "residuals" : objectiveFlat ? "objective" : "objective gap";
         break;
       }
     }
