@@ -552,9 +552,9 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   if (out.converged)
     std::snprintf(buf, sizeof buf,
                   "converged (%s) after %d iterations (%.2f s): primal residual %.2e, dual %.2e, "
-                  "tolerance %.1e, objective change tolerance %.1e",
+                  "tolerance %.1e, objective change tolerance %.1e, gap tolerance %.1e per value",
                   convergedBy, out.iterations, seconds(), primal, dual, opt.tolerance,
-                  opt.objectiveTolerance);
+                  opt.objectiveTolerance, opt.gapTolerance);
   else
     std::snprintf(buf, sizeof buf,
                   "not converged: stopped by %s after %d iterations (%.2f s): primal residual "
