@@ -124,8 +124,9 @@ def main():
             s, h = scene_rows(name, cli, baseline, cap, tmp)
             summary += s
             history += h
-    benchlib.write_csv(os.path.join(out, "decompose_default.csv"), summary)
-    benchlib.write_csv(os.path.join(out, "decompose_default_history.csv"), history)
+            # after each scene: a long run cut short keeps what it measured
+            benchlib.write_csv(os.path.join(out, "decompose_default.csv"), summary)
+            benchlib.write_csv(os.path.join(out, "decompose_default_history.csv"), history)
     table(summary)
     plot(out, summary, history)
     return 0
