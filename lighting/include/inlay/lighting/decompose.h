@@ -63,9 +63,9 @@ struct DecomposeOptions {
   // and geometry give the same albedo bit for bit on every run and machine load. With the
   // defaults below (diagonal steps, coarse start, held pixels, gapTolerance) the example and the
   // training rooms converge after 30 to 110 iterations at the photo's level (docs/benchmarks.md,
-  // "A converged decomposition at the old one's cost"); the cap is a guard (200 iterations of
-  // a 640 x 480 photo: under a second of CPU). The scalar solver with the old cap of 30 stopped
-  // before converging on every room (1430 iterations to converge on the example).
+  // "A converged decomposition at the old one's cost"); the cap is a guard. The scalar solver
+  // with the old cap of 30 stopped before converging on every room (1430 iterations to converge
+  // on the example).
   int maxIterations = 200;
   int minIterations = 10;
   // Converged when the RMS primal and dual residuals (Goldstein et al. 2013 for primal-dual),
@@ -76,12 +76,11 @@ struct DecomposeOptions {
   double objectiveTolerance = 1e-6;
   // Or when the objective's gap to its minimum, per pixel and channel, is below `gapTolerance`:
   // the gap estimated from the last two decreases over `historyEvery` iterations as a geometric
-  // series, times 2 (the ratio of the decreases grows on a grainy photo: the estimate was 25 %
+  // series, times 2 (the ratio of the decreases grows on a grainy photo: the estimate was a fifth
   // short on t09). In the objective's units (B in standard deviations of the photo's noise, or
   // 8-bit codes on a clean photo), 1e-3 is a change of D by about 1/30 of the noise at one pixel
   // and channel, or of the albedo's Laplacian by 1e-3, below what the photo and the renders can
-  // show (chosen on half A: the same albedo error as 1e-4 and 3e-4 at a third of the
-  // iterations). 0: off.
+  // show (chosen on half A: the same albedo error as 1e-4 and 3e-4 in fewer iterations). 0: off.
   double gapTolerance = 1e-3;
   // Photos with more pixels are solved on block means of at most this many pixels; the
   // solver's change to the start is carried back to full resolution (memory and time bounded
