@@ -502,8 +502,8 @@ double remainingDecrease(const std::vector<DecomposeSample>& history, size_t val
   return last * r / (1 - r) / double(values);
 }
 
-// Iterates until converged (residuals or objective), the cap, non-finite residuals or
-// cancellation; fills out's history, iterations, converged and report.
+// Iterates until converged (residuals, a flat objective or its estimated gap), the cap,
+// non-finite residuals or cancellation; fills out's history, iterations, converged and report.
 void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   const int every = std::max(1, opt.historyEvery);
