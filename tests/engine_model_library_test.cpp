@@ -146,7 +146,7 @@ TEST(ModelLibrary, EveryPieceRendersIntoTheExampleWithoutWarnings) {
   fast.refineLights = false;
   auto ps = prepareScene(doc, fast);
   ASSERT_TRUE(ps.ok()) << ps.error().message();
-  // The example has warnings of its own (its decomposition's iteration cap); a piece adds none.
+  // The example's own warnings (if any) are the baseline; a piece adds none.
   SceneDoc empty = doc;
   empty.objects.clear();
   auto baseline = prepareScene(empty, fast);

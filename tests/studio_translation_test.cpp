@@ -600,7 +600,8 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
   QCOMPARE(stageLine(unknown),
            QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "
                           "template has)"));
-  // The decomposition's note when it stops at its cap (the example's preparation says it).
+  // The decomposition's note when it stops at its cap (the example's preparation said it until
+  // issue #16).
   QCOMPARE(engineText(QStringLiteral(
                "lighting: decomposition: not converged: stopped by the iteration cap after 30 "
                "iterations (1.40 s): primal residual 3.40e-04, dual 6.53e-02, tolerance 1.0e-04")),

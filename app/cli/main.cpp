@@ -10,6 +10,7 @@
 #include "inlay/render/session.h"
 
 #include <nlohmann/json.hpp>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -35,7 +36,7 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
-            [--gathered G.exr] [--iterations N] [--solver scalar|diagonal|diagonal+hold] [--progress-csv F]
+            [--gathered G.exr] [--iterations N] [--solver default|scalar|diagonal|diagonal+hold] [--progress-csv F]
                                                      the room's albedo and direct light; G: the
                                                      gathered indirect light (irradiance / pi),
                                                      N: the solver's iteration cap, F: objective
@@ -962,14 +963,36 @@ int commandResponse(const std::string& input, const Args& a) {
   return 0;
 }
 
+// decompose --solver: the product's solver (default, DecomposeOptions' defaults), the one before
+// issue #16 (scalar: one scalar step, cap 30), and the previous opt-in ones (diagonal steps with
+// the coarse start, without and with the held pixels), those three stopping only on their
+// residuals or a flat objective as before.
+DecomposeOptions solverOptions(const std::string& solver) {
+  DecomposeOptions o;
+  if (solver.empty() || solver == "default") return o;
+  o.gapTolerance = 0;
+  o.holdInvalid = solver == "diagonal+hold";
+  if (solver == "scalar") o.diagonalSteps = false, o.pyramidLevels = 0, o.maxIterations = 30;
+  return o;
+}
+
+double processCpuSeconds() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+         1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
+
 int commandDecompose(const std::string& scenePath, const Args& a) {
   if (a.albedo.empty()) return usageError("decompose needs --albedo ALBEDO.exr");
   if (a.seconds)  // the solver stops on convergence or an iteration cap, never on the clock
     return usageError("--seconds applies to render; decompose takes --iterations N");
   if (a.method != "ours" && a.method != "retinex")
     return usageError("--method " + a.method + ": expected 'ours' or 'retinex'");
-  if (!a.solver.empty() && a.solver != "scalar" && a.solver != "diagonal" && a.solver != "diagonal+hold")
-    return usageError("--solver " + a.solver + ": expected 'scalar', 'diagonal' or 'diagonal+hold'");
+  if (!a.solver.empty() && a.solver != "default" && a.solver != "scalar" && a.solver != "diagonal" &&
+      a.solver != "diagonal+hold")
+    return usageError("--solver " + a.solver +
+                      ": expected 'default', 'scalar', 'diagonal' or 'diagonal+hold'");
   Progress progress(a.quiet);
   auto prepared = loadAndPrepare(scenePath, a, progress);
   if (gInterrupted) return std::fprintf(stderr, "inlay-cli: interrupted\n"), 1;
@@ -980,14 +1003,16 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   // against solver time at a reproducible budget) and steps.
   std::optional<Decomposition> rerun;
   if (!retinex && (a.iterations || !a.solver.empty()) && !le.decomposeStart.empty()) {
-    DecomposeOptions o;
+    DecomposeOptions o = solverOptions(a.solver);
     if (a.iterations) o.maxIterations = *a.iterations;
-    if (a.solver.rfind("diagonal", 0) == 0) o.diagonalSteps = true, o.pyramidLevels = 2;
-    o.holdInvalid = a.solver == "diagonal+hold";
     o.cancel = &gCancel;
+    const double cpu0 = processCpuSeconds();
     auto d = decomposeIntrinsic(prepared->photo.linearRgb, le.gathered, le.decomposeStart,
                                 le.decomposeValid, le.decomposeClipped, o);
     if (!d) return inputError(d.error());
+    if (!a.quiet)  // the process is idle but for the solver now: its CPU time
+      std::fprintf(stderr, "inlay-cli: decomposition re-run: %.3f s of CPU\n",
+                   processCpuSeconds() - cpu0);
     rerun = std::move(*d);
   }
   const std::vector<DecomposeSample>& history = rerun ? rerun->history : le.decomposeHistory;

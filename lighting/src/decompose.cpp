@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cstddef>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -25,6 +26,70 @@ void forRows(int H, F&& f) {
   parallelFor(tbb::blocked_range<int>(0, H, 16), [&](const tbb::blocked_range<int>& r) {
     for (int y = r.begin(); y < r.end(); ++y) f(y);
   });
+}
+
+// The per-pixel kernels' loops carry no dependence between iterations (GCC: skip the run-time
+// alias checks that stop the vectoriser; lighting/CMakeLists.txt adds -fno-trapping-math so that
+// the clamps are if-converted).
+#if defined(__GNUC__) && !defined(__clang__)
+#define INLAY_IVDEP _Pragma("GCC ivdep")
+#define INLAY_INLINE __attribute__((always_inline))
+#else
+#define INLAY_IVDEP
+#define INLAY_INLINE
+#endif
+
+// Offsets of a pixel's four neighbours in a row-major plane; 0 where the neighbour is outside the
+// image, so that its difference to the pixel is 0 (the Neumann boundary of decompose.h's
+// Laplacian and gradients).
+struct Around {
+  ptrdiff_t l, r, u, d;
+};
+
+inline Around aroundPixel(int W, int H, int x, int y) {
+  return {x > 0 ? -1 : 0, x + 1 < W ? 1 : 0, y > 0 ? -ptrdiff_t(W) : 0, y + 1 < H ? ptrdiff_t(W) : 0};
+}
+
+// f(i, Around) for every pixel of row y: the first and last columns apart, so that the interior's
+// loop has constant offsets (and vectorises).
+template <class F>
+INLAY_INLINE inline void forRowPixels(int W, int H, int y, F&& f) {
+  const size_t row = size_t(y) * size_t(W);
+  if (W < 3) {
+    for (int x = 0; x < W; ++x) f(row + size_t(x), aroundPixel(W, H, x, y));
+    return;
+  }
+  const Around first = aroundPixel(W, H, 0, y), last = aroundPixel(W, H, W - 1, y);
+  const Around inner{-1, 1, first.u, first.d};
+  f(row, first);
+  INLAY_IVDEP
+  for (size_t i = row + 1; i + 1 < row + size_t(W); ++i) f(i, inner);
+  f(row + size_t(W) - 1, last);
+}
+
+// The 5-point Laplacian of u at pixel i.
+INLAY_INLINE inline float lap(const float* u, size_t i, Around a) {
+  const float c = u[i];
+  return (u[i + a.l] - c) + (u[i + a.r] - c) + (u[i + a.u] - c) + (u[i + a.d] - c);
+}
+
+inline float lap(const std::vector<float>& u, size_t i, Around a) { return lap(u.data(), i, a); }
+
+// What the smooth part's gradient reads besides x: Gamma, Lap B, the edge masks and the weights.
+struct SmoothPart {
+  const float *G, *lapB, *mx, *my;
+  float g1x2, g3x2;
+};
+
+// Gradient of the smooth part (the g1 and g3 terms) at `xs`, pixel i.
+INLAY_INLINE inline float smoothGradient(const SmoothPart& f, const float* xs, size_t i, Around a) {
+  const float xi = xs[i], gxi = f.G[i] * xi;
+  const float smooth = f.mx[i + a.l] * (xi - xs[i + a.l]) + f.mx[i] * (xi - xs[i + a.r]) +
+                       f.my[i + a.u] * (xi - xs[i + a.u]) + f.my[i] * (xi - xs[i + a.d]);
+  // Lap(Gamma x - B) = Lap(Gamma x) - Lap B
+  const float lapGx = (f.G[i + a.l] * xs[i + a.l] - gxi) + (f.G[i + a.r] * xs[i + a.r] - gxi) +
+                      (f.G[i + a.u] * xs[i + a.u] - gxi) + (f.G[i + a.d] * xs[i + a.d] - gxi);
+  return f.g1x2 * smooth - f.g3x2 * f.G[i] * (lapGx - f.lapB[i]);
 }
 
 }  // namespace
@@ -198,23 +263,26 @@ class PrimalDualSolver {
  private:
   // Per channel planes (row-major, W x H).
   struct Plane {
-    std::vector<float> B, G, x0, lo, hi, wg2, x, y, xn, yn, q, ly, gf, gfn, lx, lxn, tau;  // tau: step
+    // lapB: the Laplacian of B (a constant of the smooth part's gradient); tau: the primal step.
+    std::vector<float> B, G, lapB, x0, lo, hi, wg2, tau, x, y, xn, yn;
   };
   void edgeMasks();
   void chooseSteps();
   void diagonalSteps();
-  float lap(const std::vector<float>& u, size_t i, int x, int y) const;
-  void gradFfromQ(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
-  void gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const;
+  SmoothPart smoothPart(const Plane& p) const {
+    return {p.G.data(), p.lapB.data(), mx.data(), my.data(), g1x2, g3x2};
+  }
   double objective() const;
-  void step(Plane& p, bool record, double& pSum, double& dSum) const;
+  void step(Plane& p) const;
+  void residuals(const Plane& p, double& pSum, double& dSum);
 
   const int W, H;
   const size_t N;
   const double kappa;
   const DecomposeOptions& opt;
   std::vector<Plane> P;
-  std::vector<float> mx, my;  // mask on the edge to the right / below
+  std::vector<float> mx, my;                      // mask on the edge to the right / below
+  std::vector<float> scratchPrimal, scratchDual;  // squared residuals per pixel (residuals())
   float gammaMax = 0;
   double sigma = 0;  // the dual step (the primal one is per pixel: Plane::tau)
   float sigmaF = 0, g1x2 = 0, g3x2 = 0;
@@ -252,9 +320,12 @@ void PrimalDualSolver::load(const ImageF& photo, const ImageF& gathered, const I
       }
     p.x = p.x0;
     p.y.assign(N, 0.f);
-    p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.q.assign(N, 0.f), p.ly.assign(N, 0.f);
-    p.gf.assign(N, 0.f), p.gfn.assign(N, 0.f), p.lx.assign(N, 0.f), p.lxn.assign(N, 0.f);
+    p.xn.assign(N, 0.f), p.yn.assign(N, 0.f), p.lapB.assign(N, 0.f);
+    forRows(H, [&](int y) {
+      forRowPixels(W, H, y, [&](size_t i, Around a) { p.lapB[i] = lap(p.B, i, a); });
+    });
   }
+  scratchPrimal.assign(N, 0.f), scratchDual.assign(N, 0.f);
   edgeMasks();
   chooseSteps();
 }
@@ -334,38 +405,6 @@ void PrimalDualSolver::diagonalSteps() {
   }
 }
 
-float PrimalDualSolver::lap(const std::vector<float>& u, size_t i, int x, int y) const {
-  if (x > 0 && x + 1 < W && y > 0 && y + 1 < H)  // interior: no boundary tests
-    return (u[i - 1] + u[i + 1]) + (u[i - size_t(W)] + u[i + size_t(W)]) - 4 * u[i];
-  float s = 0;
-  if (x > 0) s += u[i - 1] - u[i];
-  if (x + 1 < W) s += u[i + 1] - u[i];
-  if (y > 0) s += u[i - size_t(W)] - u[i];
-  if (y + 1 < H) s += u[i + size_t(W)] - u[i];
-  return s;
-}
-
-// Gradient of the smooth part at `xs` into `out`, given p.q = Gamma xs - B.
-void PrimalDualSolver::gradFfromQ(Plane& p, const std::vector<float>& xs,
-                                  std::vector<float>& out) const {
-  forRows(H, [&](int y) {
-    for (int x = 0; x < W; ++x) {
-      const size_t i = size_t(y) * W + x;
-      float sm = 0;
-      if (x > 0) sm += mx[i - 1] * (xs[i] - xs[i - 1]);
-      if (x + 1 < W) sm += mx[i] * (xs[i] - xs[i + 1]);
-      if (y > 0) sm += my[i - size_t(W)] * (xs[i] - xs[i - size_t(W)]);
-      if (y + 1 < H) sm += my[i] * (xs[i] - xs[i + size_t(W)]);
-      out[i] = g1x2 * sm - g3x2 * p.G[i] * lap(p.q, i, x, y);
-    }
-  });
-}
-
-void PrimalDualSolver::gradF(Plane& p, const std::vector<float>& xs, std::vector<float>& out) const {
-  for (size_t i = 0; i < N; ++i) p.q[i] = p.G[i] * xs[i] - p.B[i];
-  gradFfromQ(p, xs, out);
-}
-
 // The objective at the current x, summed over the channels.
 double PrimalDualSolver::objective() const {
   double f = 0;
@@ -376,7 +415,7 @@ double PrimalDualSolver::objective() const {
       double s = 0;
       for (int x = 0; x < W; ++x) {
         const size_t i = size_t(y) * W + x;
-        s += std::abs(lap(p.x, i, x, y));
+        s += std::abs(lap(p.x, i, aroundPixel(W, H, x, y)));
         const double d = p.x[i] - p.x0[i];
         s += 0.5 * p.wg2[i] * d * d;
         const double Di = p.B[i] - p.G[i] * p.x[i];
@@ -399,62 +438,74 @@ double PrimalDualSolver::objective() const {
   return f;
 }
 
-// One iteration on one plane; with `record`, its squared primal and dual residuals are added to
-// pSum and dSum.
-void PrimalDualSolver::step(Plane& p, bool record, double& pSum, double& dSum) const {
+// One iteration on one plane, two passes over it: the primal step (the smooth part's gradient and
+// Lap^T y computed on the fly), then the dual step from the new and old x.
+void PrimalDualSolver::step(Plane& p) const {
+  const SmoothPart f = smoothPart(p);
+  const float *x = p.x.data(), *y = p.y.data(), *tau = p.tau.data(), *wg2 = p.wg2.data();
+  const float *x0 = p.x0.data(), *lo = p.lo.data(), *hi = p.hi.data();
+  float *xn = p.xn.data(), *yn = p.yn.data();
   // Primal: x+ = prox_{tau g}(x - tau (grad f + Lap^T y)), g = box + g2 term.
-  forRows(H, [&](int y) {
-    for (int x = 0; x < W; ++x) {
-      const size_t i = size_t(y) * W + x;
-      p.ly[i] = lap(p.y, i, x, y);
-      const float v = p.x[i] - p.tau[i] * (p.gf[i] + p.ly[i]);
-      const float w = p.tau[i] * p.wg2[i];
-      p.xn[i] = std::clamp((v + w * p.x0[i]) / (1 + w), p.lo[i], p.hi[i]);
-    }
+  forRows(H, [&](int row) {
+    forRowPixels(W, H, row, [&](size_t i, Around a) INLAY_INLINE {
+      const float v = x[i] - tau[i] * (smoothGradient(f, x, i, a) + lap(y, i, a));
+      const float w = tau[i] * wg2[i];
+      xn[i] = std::min(std::max((v + w * x0[i]) / (1 + w), lo[i]), hi[i]);
+    });
   });
   // Dual: y+ = clip(y + sigma Lap(2 x+ - x), -1, 1) (prox of the conjugate of |.|_1).
-  forRows(H, [&](int y) {
-    for (int x = 0; x < W; ++x) {
-      const size_t i = size_t(y) * W + x;
-      p.lxn[i] = lap(p.xn, i, x, y);
-      p.yn[i] = std::clamp(p.y[i] + sigmaF * (2 * p.lxn[i] - p.lx[i]), -1.f, 1.f);
-      p.q[i] = p.G[i] * p.xn[i] - p.B[i];
-    }
-  });
-  gradFfromQ(p, p.xn, p.gfn);
-  if (record) {
-    // Residuals of the primal-dual iteration (Goldstein et al. 2013), with the smooth
-    // term's gradient change (Condat-Vu); the primal one times its per-pixel step.
-    std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
-    forRows(H, [&](int y) {
-      double sp = 0, sd = 0;
-      for (int x = 0; x < W; ++x) {
-        const size_t i = size_t(y) * W + x;
-        const double dly = p.ly[i] - lap(p.yn, i, x, y);
-        const double rp = (p.x[i] - p.xn[i]) - p.tau[i] * (dly + (p.gf[i] - p.gfn[i]));
-        const double rd = (p.y[i] - p.yn[i]) / sigma - (p.lx[i] - p.lxn[i]);
-        sp += rp * rp, sd += rd * rd;
-      }
-      ps[size_t(y)] = sp, ds[size_t(y)] = sd;
+  const float s = sigmaF;
+  forRows(H, [&](int row) {
+    forRowPixels(W, H, row, [&](size_t i, Around a) INLAY_INLINE {
+      yn[i] = std::min(std::max(y[i] + s * (2 * lap(xn, i, a) - lap(x, i, a)), -1.f), 1.f);
     });
-    for (int y = 0; y < H; ++y) pSum += ps[size_t(y)], dSum += ds[size_t(y)];
-  }
-  std::swap(p.x, p.xn);
-  std::swap(p.y, p.yn);
-  std::swap(p.gf, p.gfn);
-  std::swap(p.lx, p.lxn);
+  });
 }
 
-// Iterates until converged (residuals or objective), the cap, non-finite residuals or
-// cancellation; fills out's history, iterations, converged and report.
+// Squared residuals of the last step (x -> xn, y -> yn) of the primal-dual iteration (Goldstein et
+// al. 2013), with the smooth term's gradient change (Condat-Vu); the primal one times its
+// per-pixel step. Per pixel into the scratch planes (a vectorised pass), then summed per row;
+// added to pSum and dSum.
+void PrimalDualSolver::residuals(const Plane& p, double& pSum, double& dSum) {
+  const SmoothPart f = smoothPart(p);
+  const float *x = p.x.data(), *y = p.y.data(), *xn = p.xn.data(), *yn = p.yn.data();
+  const float *tau = p.tau.data(), invSigma = float(1 / sigma);
+  float *sp = scratchPrimal.data(), *sd = scratchDual.data();
+  std::vector<double> ps(size_t(H), 0.0), ds(size_t(H), 0.0);
+  forRows(H, [&](int row) {
+    forRowPixels(W, H, row, [&](size_t i, Around a) INLAY_INLINE {
+      const float dly = lap(y, i, a) - lap(yn, i, a);
+      const float dgf = smoothGradient(f, x, i, a) - smoothGradient(f, xn, i, a);
+      const float rp = (x[i] - xn[i]) - tau[i] * (dly + dgf);
+      const float rd = (y[i] - yn[i]) * invSigma - (lap(x, i, a) - lap(xn, i, a));
+      sp[i] = rp * rp, sd[i] = rd * rd;
+    });
+    double sumP = 0, sumD = 0;
+    for (size_t i = size_t(row) * size_t(W); i < size_t(row + 1) * size_t(W); ++i)
+      sumP += sp[i], sumD += sd[i];
+    ps[size_t(row)] = sumP, ds[size_t(row)] = sumD;
+  });
+  for (int row = 0; row < H; ++row) pSum += ps[size_t(row)], dSum += ds[size_t(row)];
+}
+
+// The objective's decrease still to come per pixel and channel, extrapolated from the last two
+// decreases in `history` as a geometric series (ratio r = last / previous: r / (1 - r) times the
+// last); infinite while the objective rises or its decrease does not shrink.
+double remainingDecrease(const std::vector<DecomposeSample>& history, size_t values) {
+  const size_t n = history.size();
+  if (n < 3 || values == 0) return INFINITY;
+  const double previous = history[n - 3].objective - history[n - 2].objective;
+  const double last = history[n - 2].objective - history[n - 1].objective;
+  if (last == 0 && previous == 0) return 0;
+  if (!(last >= 0) || !(last < previous)) return INFINITY;
+  const double r = last / previous;
+  return last * r / (1 - r) / double(values);
+}
+
+// Iterates until converged (residuals, a flat objective or its estimated gap), the cap,
+// non-finite residuals or cancellation; fills out's history, iterations, converged and report.
 void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
-  for (auto& p : P) {
-    gradF(p, p.x, p.gf);
-    forRows(H, [&](int y) {
-      for (int x = 0; x < W; ++x) p.lx[size_t(y) * W + x] = lap(p.x, size_t(y) * W + x, x, y);
-    });
-  }
   const int every = std::max(1, opt.historyEvery);
   double primal = INFINITY, dual = INFINITY;
   std::string stopReason = "the iteration cap";
@@ -462,7 +513,12 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   for (int it = 1; it <= std::max(1, opt.maxIterations); ++it) {
     const bool record = (it % every == 0) || it == opt.maxIterations;
     double pSum = 0, dSum = 0;
-    for (auto& p : P) step(p, record, pSum, dSum);
+    for (auto& p : P) {
+      step(p);
+      if (record) residuals(p, pSum, dSum);
+      std::swap(p.x, p.xn);
+      std::swap(p.y, p.yn);
+    }
     out.iterations = it;
     if (record) {
       primal = std::sqrt(pSum / (3.0 * N));  // already times the steps
@@ -476,9 +532,10 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
       }
       const bool residualsSmall = primal < opt.tolerance && dual < opt.tolerance;
       const bool objectiveFlat = std::abs(fPrev - f) <= opt.objectiveTolerance * std::abs(f);
-      if (it >= opt.minIterations && (residualsSmall || objectiveFlat)) {
+      const bool gapSmall = 2 * remainingDecrease(out.history, 3 * N) <= opt.gapTolerance;
+      if (it >= opt.minIterations && (residualsSmall || objectiveFlat || gapSmall)) {
         out.converged = true;
-        convergedBy = residualsSmall ? "residuals" : "objective";
+        convergedBy = residualsSmall ? "residuals" : objectiveFlat ? "objective" : "objective gap";
         break;
       }
     }
@@ -495,9 +552,9 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
   if (out.converged)
     std::snprintf(buf, sizeof buf,
                   "converged (%s) after %d iterations (%.2f s): primal residual %.2e, dual %.2e, "
-                  "tolerance %.1e, objective change tolerance %.1e",
+                  "tolerance %.1e, objective change tolerance %.1e, gap tolerance %.1e per value",
                   convergedBy, out.iterations, seconds(), primal, dual, opt.tolerance,
-                  opt.objectiveTolerance);
+                  opt.objectiveTolerance, opt.gapTolerance);
   else
     std::snprintf(buf, sizeof buf,
                   "not converged: stopped by %s after %d iterations (%.2f s): primal residual "
