@@ -130,6 +130,21 @@ inline constexpr double kKeepBetterFitTolerance = 0.016;
 // its refit does (object RMSE 0.0226 against 0.0225).
 inline constexpr double kRefitMinLightMove = 0.05;
 
+// PrepareOptions::checkResponseByLightFit's first, quick comparison: the curve and sRGB each
+// prepared up to the lighting on a copy of the photo area-averaged to at most `maxPixels`, with
+// the lights as marked (no refinement, no refit), fitPixels pixels in the light fit and no
+// decomposition (the residual is the light fit's, before it). When the log of the ratio of their
+// relative residuals (the curve's over sRGB's times 1 + responseFitTolerance) is beyond
+// `margin` either way, that verdict stands and only the response it keeps is prepared; inside
+// it (or when a copy's fit fails) the full check runs as before, on the photo's working copy.
+// Chosen on half A's camera variants (docs/benchmarks.md, "The response check decides on a
+// small copy first").
+struct ResponseQuickCheck {
+  double maxPixels = 160 * 120;  // <= 0: no quick comparison, the full check always
+  int fitPixels = 1500;          // LightingOptions::fitPixels of the copies' fits
+  double margin = 0.1;           // |log ratio| beyond which the copies decide; infinite: never
+};
+
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
   // The image stages (the lights' mask, shafts, lighting, sun ratio, refine, refit) run on the
@@ -204,6 +219,9 @@ struct PrepareOptions {
   // estimate's curve is always kept.
   bool checkResponseByLightFit = true;
   double responseFitTolerance = 0;
+  // The check's first comparison on small copies (ResponseQuickCheck): when it is clear, the
+  // second preparation is not run at all.
+  ResponseQuickCheck responseQuick;
   // The response estimate's options for "auto" (its `cancel` is this struct's): tests and
   // diagnostics.
   ResponseEstimateOptions responseEstimate;
@@ -246,6 +264,13 @@ bool curveRefusedByTheLightFit(const ResponseEstimate& estimate);
 // refit). A residual that is not finite never wins; a negative or NaN tolerance counts as 0, an
 // infinite one keeps every finite refit.
 bool refitFitsWorse(double first, double refit, double tolerance);
+
+// ResponseQuickCheck's verdict from the copies' relative residuals with the curve and with sRGB:
+// +1 the curve is kept, -1 sRGB, 0 the copies do not decide (the full check runs). They decide
+// when |log(withCurve / (withSrgb (1 + tolerance)))| > margin; a residual that is not finite and
+// positive never decides, nor does a tie; a negative or NaN tolerance counts as 0, so does a
+// negative margin; a NaN margin never decides.
+int quickResponseVerdict(double withCurve, double withSrgb, double tolerance, double margin);
 
 // PrepareOptions::refitMinLightMove's measure: over the lights, the largest distance a corner
 // moved from `before` to `after`, in units of that light's size (the square root of its area
