@@ -755,7 +755,7 @@ TEST(Engine, TheResponseCopiesDecideOnlyBeyondTheMargin) {
   }
   EXPECT_EQ(quickResponseVerdict(1e-300, 1e300, 0, 0.1), 1);  // extreme but finite: no overflow
   EXPECT_EQ(quickResponseVerdict(1e300, 1e-300, 0, 0.1), -1);
-  EXPECT_EQ(quickResponseVerdict(5e-324, 1.0, 0, 0.1), 1);   // a denormal residual
+  EXPECT_EQ(quickResponseVerdict(5e-324, 1.0, 0, 0.1), 1);  // a denormal residual
 }
 
 // The response (given as `params` through ResponseEstimateOptions::evaluateAt) of the example's

@@ -145,6 +145,9 @@ Render options:
                           diagnostics: the camera response check's copies decide when the log
                           of their residuals' ratio is beyond M (default 0.1); "inf": the full
                           check always (the copies' ratio is still reported)
+  --response-quick-copy N,F,P
+                          diagnostics: the check's copies have at most N pixels (0: no copies),
+                          F light fit pixels and P gather-and-fit passes (default 19200,1500,5)
   --min-srgb-residual R, --min-improvement F
                           diagnostics: the "auto" response estimate's evidence gate, as for
                           inlay-cli response (0 and 0: every fitted curve goes to the check)
@@ -200,6 +203,7 @@ struct Args {
   std::optional<double> seconds, noise;
   std::optional<double> workingMp;      // --working-mp
   std::optional<double> quickMargin;    // --response-quick-margin (inf: the full check always)
+  std::string quickCopy;                // --response-quick-copy PIXELS,FIT_PIXELS,PASSES
   std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
   std::optional<int> causticPhotons;    // --caustic-photons
   std::optional<double> causticRadius;  // --caustic-radius
@@ -244,11 +248,11 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
         s == "--replace-radiance" || s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" ||
         s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
-        s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" || s == "--response-quick-margin" ||
-        s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
-        s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
-        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
-        s == "--pixel-filter" || s == "--solver") {
+        s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
+        s == "--response-quick-margin" || s == "--response-quick-copy" || s == "--clamp-indirect" ||
+        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
+        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
+        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -259,6 +263,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--gathered") a.gathered = *v;
       else if (s == "--method") a.method = *v;
       else if (s == "--solver") a.solver = *v;
+      else if (s == "--response-quick-copy") a.quickCopy = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
       else if (s == "--lights-json") a.lightsJson = *v;
       else if (s == "--report") a.report = *v;
@@ -486,6 +491,14 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";
   if (a.quickMargin) po.responseQuick.margin = *a.quickMargin;
+  if (!a.quickCopy.empty()) {
+    ResponseQuickCheck& q = po.responseQuick;
+    char tail = 0;
+    if (std::sscanf(a.quickCopy.c_str(), "%lf,%d,%d%c", &q.maxPixels, &q.fitPixels, &q.maxPasses,
+                    &tail) != 3 ||
+        !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1)
+      return Error{"", "--response-quick-copy", "'" + a.quickCopy + "' is not PIXELS,FIT_PIXELS,PASSES"};
+  }
   // The response estimate's evidence gate (diagnostics, as for inlay-cli response).
   if (a.minImprovement) po.responseEstimate.minImprovement = *a.minImprovement;
   if (a.minSrgbResidual) po.responseEstimate.minSrgbResidual = *a.minSrgbResidual;

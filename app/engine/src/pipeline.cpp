@@ -1409,8 +1409,7 @@ StageRecord checkRecord(bool kept, const std::string& why, const QuickCheck& qui
     std::snprintf(buf, sizeof buf, "; on %d x %d copies %.4f against %.4f, log ratio %.3f %s %.3f",
                   quick.copyPx[0], quick.copyPx[1], quick.withCurve, quick.withSrgb, r,
                   quick.decides(opt) ? "beyond" : "within", opt.responseQuick.margin);
-  else
-    std::snprintf(buf, sizeof buf, "; no quick comparison");
+  else std::snprintf(buf, sizeof buf, "; no quick comparison");
   record.detail += buf;
   record.steps = quick.steps;
   record.steps.insert(record.steps.end(), again.begin(), again.end());
@@ -1460,6 +1459,7 @@ Status quickFit(Preparation& q, std::span<const Stage> stages, const std::string
                 QuickCheck& quick, double& residual) {
   q.lightingOptions.objective = false;
   q.lightingOptions.fitPixels = q.opt.responseQuick.fitPixels;
+  q.lightingOptions.maxPasses = q.opt.responseQuick.maxPasses;
   const Status ran = runStages(stages, q);
   const std::vector<StageStep> steps = stepsOf(q.ps.stages, label);
   quick.steps.insert(quick.steps.end(), steps.begin(), steps.end());
@@ -1482,8 +1482,9 @@ Expected<QuickCheck> quickCheck(const Preparation& curved) {
   if (!a && isCancelled(a.error())) return a.error();
   const SceneDoc srgbDoc = withSrgb(curved.doc);
   Preparation srgb(srgbDoc, qopt);
-  srgb.ps.photo = *curved.photoAsLoaded;
-  const Status b = quickFit(srgb, kResponseStages, "copy, sRGB: ", quick, quick.withSrgb);
+  srgb.ps.photo = *curved.photoAsLoaded;  // as loaded: decoded as sRGB
+  srgb.ps.response = CameraResponse::srgb();
+  const Status b = quickFit(srgb, afterTheResponse(), "copy, sRGB: ", quick, quick.withSrgb);
   if (!b && isCancelled(b.error())) return b.error();
   StageRecord timing;
   clock.stamp(timing);
@@ -1497,8 +1498,8 @@ Expected<PreparedScene> finishWithTheCurve(Preparation& curved, const QuickCheck
   curved.photoAsLoaded.reset();
   if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
   const StageClock none;
-  StageRecord record = checkRecord(
-      true, checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb), quick, {}, none, curved.opt);
+  StageRecord record = checkRecord(true, checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb),
+                                   quick, {}, none, curved.opt);
   record.seconds = quick.seconds;
   record.cpuSeconds = quick.cpuSeconds;
   curved.ps.stages.push_back(std::move(record));
@@ -1568,7 +1569,8 @@ Expected<PreparedScene> prepareSrgbInstead(Preparation& curved, QuickCheck quick
   Status ran = runStages(theResponseStage(), srgb);
   const std::vector<StageStep> decode = stepsOf(srgb.ps.stages, "sRGB: ");
   quick.steps.insert(quick.steps.end(), decode.begin(), decode.end());
-  for (const StageStep& step : decode) quick.seconds += step.seconds, quick.cpuSeconds += step.cpuSeconds;
+  for (const StageStep& step : decode)
+    quick.seconds += step.seconds, quick.cpuSeconds += step.cpuSeconds;
   srgb.ps.stages = curved.ps.stages;
   if (ran) ran = runStages(afterTheResponse(), srgb);
   const std::string why = checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb);
