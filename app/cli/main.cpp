@@ -145,9 +145,10 @@ Render options:
                           diagnostics: the camera response check's copies decide when the log
                           of their residuals' ratio is beyond M (default 0.1); "inf": the full
                           check always (the copies' ratio is still reported)
-  --response-quick-copy N,F,P
+  --response-quick-copy N,F,P[,T]
                           diagnostics: the check's copies have at most N pixels (0: no copies),
-                          F light fit pixels and P gather-and-fit passes (default 19200,1500,5)
+                          F light fit pixels, P gather-and-fit passes and the light fit's
+                          function tolerance T (its defaults: ResponseQuickCheck)
   --min-srgb-residual R, --min-improvement F
                           diagnostics: the "auto" response estimate's evidence gate, as for
                           inlay-cli response (0 and 0: every fitted curve goes to the check)
@@ -494,10 +495,12 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (!a.quickCopy.empty()) {
     ResponseQuickCheck& q = po.responseQuick;
     char tail = 0;
-    if (std::sscanf(a.quickCopy.c_str(), "%lf,%d,%d%c", &q.maxPixels, &q.fitPixels, &q.maxPasses,
-                    &tail) != 3 ||
-        !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1)
-      return Error{"", "--response-quick-copy", "'" + a.quickCopy + "' is not PIXELS,FIT_PIXELS,PASSES"};
+    const int n = std::sscanf(a.quickCopy.c_str(), "%lf,%d,%d,%lf%c", &q.maxPixels, &q.fitPixels,
+                              &q.maxPasses, &q.fitTolerance, &tail);
+    if ((n != 3 && n != 4) || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
+        !(q.fitTolerance > 0 && q.fitTolerance < 1))
+      return Error{"", "--response-quick-copy",
+                   "'" + a.quickCopy + "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE]"};
   }
   // The response estimate's evidence gate (diagnostics, as for inlay-cli response).
   if (a.minImprovement) po.responseEstimate.minImprovement = *a.minImprovement;

@@ -1460,6 +1460,7 @@ Status quickFit(Preparation& q, std::span<const Stage> stages, const std::string
   q.lightingOptions.objective = false;
   q.lightingOptions.fitPixels = q.opt.responseQuick.fitPixels;
   q.lightingOptions.maxPasses = q.opt.responseQuick.maxPasses;
+  q.lightingOptions.fitFunctionTolerance = q.opt.responseQuick.fitTolerance;
   const Status ran = runStages(stages, q);
   const std::vector<StageStep> steps = stepsOf(q.ps.stages, label);
   quick.steps.insert(quick.steps.end(), steps.begin(), steps.end());

@@ -143,6 +143,7 @@ struct ResponseQuickCheck {
   double maxPixels = 160 * 120;  // <= 0: no quick comparison, the full check always
   int fitPixels = 1500;          // LightingOptions::fitPixels of the copies' fits
   int maxPasses = 5;             // LightingOptions::maxPasses of the copies' fits
+  double fitTolerance = 1e-6;    // LightingOptions::fitFunctionTolerance of the copies' fits
   double margin = 0.1;           // |log ratio| beyond which the copies decide; infinite: never
 };
 
