@@ -104,9 +104,10 @@ struct PreparedScene {
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
   // Every stage of the preparation in order: its seconds, or why this scene did not need it.
   // When PrepareOptions::checkResponseByLightFit checks a curve, the stages up to the lighting
-  // refit are the curve's (they ran first), then "response check": its own seconds, which
-  // response it kept and why, and as its steps the stages it ran again with sRGB; the stages
-  // after it ran once, for the response kept.
+  // refit are those of the response kept (the curve's when the full check ran), then "response
+  // check": its own seconds, which response it kept and why, and as its steps the copies'
+  // stages ("copy, curve: lighting", ...) and those it ran again with sRGB; the stages after it
+  // ran once, for the response kept.
   std::vector<StageRecord> stages;
 };
 
@@ -216,9 +217,10 @@ struct PrepareOptions {
   // and the estimate's decision saying why; the stages after the refit run once, for the one
   // kept. Measured on half A of the random cameras (docs/camera-response.md, "The light fit
   // checks the estimated curve"): both curves it met made the object worse and both left a
-  // larger residual. Costs those stages a second time (docs/benchmarks.md, "The response check
-  // prepares sRGB only up to the refit"), only on photos the estimate gives a curve. False: the
-  // estimate's curve is always kept.
+  // larger residual. The two are first compared on small copies (responseQuick); only when
+  // those do not decide are the stages run a second time (docs/benchmarks.md, "The response
+  // check decides on small copies first"), only on photos the estimate gives a curve. False:
+  // the estimate's curve is always kept.
   bool checkResponseByLightFit = true;
   double responseFitTolerance = 0;
   // The check's first comparison on small copies (ResponseQuickCheck): when it is clear, the
