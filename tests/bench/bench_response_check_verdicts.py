@@ -167,8 +167,11 @@ def report(a, out):
                  if float(r["copies_log_ratio"]) * float(r["full_log_ratio"]) < 0]
         print(json.dumps({"group": g, "checked": len(sel), "copies_decide": sum(r["decided_by_copies"] for r in sel),
                           "sign_disagreements": len(wrong), "widest_disagreeing_copies_ratio": max(wrong or [0])}))
+    missing = [r["photo"] for r in rows if not r["kept_after"]]
+    if missing:
+        print("not run by the product build:", ",".join(missing))
     for r in rows:
-        if r["kept_before"] != r["kept_after"]:
+        if r["kept_after"] and r["kept_before"] != r["kept_after"]:
             print("verdict differs:", json.dumps(r))
     return 0
 

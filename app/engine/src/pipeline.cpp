@@ -1498,12 +1498,9 @@ Expected<QuickCheck> quickCheck(const Preparation& curved) {
 Expected<PreparedScene> finishWithTheCurve(Preparation& curved, const QuickCheck& quick) {
   curved.photoAsLoaded.reset();
   if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
-  const StageClock none;
-  StageRecord record = checkRecord(true, checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb),
-                                   quick, {}, none, curved.opt);
-  record.seconds = quick.seconds;
-  record.cpuSeconds = quick.cpuSeconds;
-  curved.ps.stages.push_back(std::move(record));
+  const StageClock now;  // the record's seconds: the copies'
+  curved.ps.stages.push_back(checkRecord(
+      true, checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb), quick, {}, now, curved.opt));
   return finishScene(curved);
 }
 
@@ -1576,11 +1573,8 @@ Expected<PreparedScene> prepareSrgbInstead(Preparation& curved, QuickCheck quick
   if (ran) ran = runStages(afterTheResponse(), srgb);
   const std::string why = checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb);
   if (ran) {
-    const StageClock none;
-    StageRecord record = checkRecord(false, why, quick, {}, none, curved.opt);
-    record.seconds = quick.seconds;
-    record.cpuSeconds = quick.cpuSeconds;
-    srgb.ps.stages.push_back(std::move(record));
+    const StageClock now;  // the record's seconds: the copies' and the sRGB decode
+    srgb.ps.stages.push_back(checkRecord(false, why, quick, {}, now, curved.opt));
     Expected<PreparedScene> done = finishScene(srgb);
     if (done) return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), why);
     ran = done.error();
