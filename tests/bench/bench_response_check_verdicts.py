@@ -17,7 +17,10 @@ copies first) keep the verdicts of the full check? (issue #16: the response fit 
           log ratio, the check's CPU seconds before and after), prints the disagreements and the
           widest copies' ratio that disagrees with the full check per half, and draws
           OUT/response_check_verdicts.png (the copies' log ratio against the full check's, the
-          margin as a band; right: the check's CPU seconds before and after per photo).
+          margin as a band; right: the check's CPU seconds before and after per photo). --open:
+          runs with the evidence gate open (run ... --args "--response-quick-margin inf
+          --min-srgb-residual 0 --min-improvement 0"), more photos for the margin: drawn hollow,
+          counted apart, written to OUT/response_check_verdicts_open.csv.
 
 Photos: camera variants ROOM_sK / ROOM_plain as bench_response_check_cost.py makes them (cached
 under OUT/variants), and York photos PNNNNNNN (a scene of the photo alone, camera estimated; --york
@@ -26,7 +29,7 @@ DIR). Half A: odd rooms; half B: even rooms; York: its own group.
 usage: bench_response_check_verdicts.py run INLAY_CLI LABEL --photos t01_s1,...,P1020177 [--args "..."]
                                         [--york DIR] [--out DIR]
        bench_response_check_verdicts.py report --base LABEL --full LABEL --product LABEL
-                                        [--margin 0.1] [--out DIR]
+                                        [--open LABEL,LABEL] [--margin 0.1] [--out DIR]
 """
 import csv, json, math, os, re, subprocess, sys
 
@@ -124,7 +127,25 @@ def merged(out, base, full, product):
     return rows
 
 
-def plot(rows, margin, path):
+def open_rows(out, labels):
+    """Runs with the evidence gate open (--open): per photo the full and the copies' log ratio."""
+    rows = []
+    for label in [x for x in labels.split(",") if x]:
+        for r in benchlib.read_csv(os.path.join(out, "verdicts_%s.csv" % label)):
+            if r.get("q_log") not in ("", None):
+                rows.append({"photo": r["photo"], "group": group(r["photo"]), "run": label,
+                             "full_log_ratio": round(log_ratio(r["curve_res"], r["srgb_res"]), 4),
+                             "copies_log_ratio": r["q_log"]})
+    return rows
+
+
+def disagreements(rows):
+    """The copies' |log ratio| on the photos where its sign is not the full check's."""
+    return [abs(float(r["copies_log_ratio"])) for r in rows
+            if float(r["copies_log_ratio"]) * float(r["full_log_ratio"]) < 0]
+
+
+def plot(rows, margin, path, opened=()):
     checked = [r for r in rows if r["copies_log_ratio"] not in ("", None)]
     with benchlib.figure(path, 1, 2, figsize=(12, 4.6)) as ax:
         if ax is None:
@@ -136,6 +157,11 @@ def plot(rows, margin, path):
                           s=18, c=colour, label="half " + g if g != "York" else g)
         lim = max([0.3] + [abs(float(r[k])) for r in checked for k in ("full_log_ratio", "copies_log_ratio")
                            if math.isfinite(float(r[k]))]) * 1.05
+        for g, colour in colours.items():
+            sel = [r for r in opened if r["group"] == g]
+            if sel:
+                ax[0].scatter([float(r["full_log_ratio"]) for r in sel], [float(r["copies_log_ratio"]) for r in sel],
+                              s=22, facecolors="none", edgecolors=colour, label="half %s, gate open" % g)
         ax[0].axhspan(-margin, margin, color="grey", alpha=0.2, label="margin: the full check runs")
         ax[0].axhline(0, color="k", lw=0.5)
         ax[0].axvline(0, color="k", lw=0.5)
@@ -160,13 +186,21 @@ def report(a, out):
     margin = float(opt("--margin", "0.1"))
     rows = merged(out, opt("--base", "base"), opt("--full", "full"), opt("--product", "product"))
     benchlib.write_csv(os.path.join(out, "response_check_verdicts.csv"), rows)
-    plot(rows, margin, os.path.join(out, "response_check_verdicts.png"))
+    opened = open_rows(out, opt("--open", ""))
+    if opened:
+        benchlib.write_csv(os.path.join(out, "response_check_verdicts_open.csv"), opened)
+    plot(rows, margin, os.path.join(out, "response_check_verdicts.png"), opened)
     for g in ("A", "B", "York"):
         sel = [r for r in rows if r["group"] == g and r["copies_log_ratio"] not in ("", None)]
-        wrong = [abs(float(r["copies_log_ratio"])) for r in sel
-                 if float(r["copies_log_ratio"]) * float(r["full_log_ratio"]) < 0]
+        wrong = disagreements(sel)
         print(json.dumps({"group": g, "checked": len(sel), "copies_decide": sum(r["decided_by_copies"] for r in sel),
                           "sign_disagreements": len(wrong), "widest_disagreeing_copies_ratio": max(wrong or [0])}))
+        sel = [r for r in opened if r["group"] == g]
+        if sel:
+            wrong = disagreements(sel)
+            print(json.dumps({"group": g, "gate_open": len(sel), "beyond_margin": sum(
+                abs(float(r["copies_log_ratio"])) > margin for r in sel), "sign_disagreements": len(wrong),
+                "widest_disagreeing_copies_ratio": max(wrong or [0])}))
     missing = [r["photo"] for r in rows if not r["kept_after"]]
     if missing:
         print("not run by the product build:", ",".join(missing))
