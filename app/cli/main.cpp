@@ -202,13 +202,13 @@ struct Args {
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::string unseenCeiling = "fit";             // --unseen-ceiling walls|fit|fit-render
   std::optional<double> seconds, noise;
-  std::optional<double> workingMp;      // --working-mp
-  std::optional<double> quickMargin;    // --response-quick-margin (inf: the full check always)
-  std::string quickCopy;                // --response-quick-copy PIXELS,FIT_PIXELS,PASSES
-  std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
-  std::optional<int> causticPhotons;    // --caustic-photons
-  std::optional<double> causticRadius;  // --caustic-radius
-  std::optional<double> pixelFilter;    // --pixel-filter (0: the box)
+  std::optional<double> workingMp;              // --working-mp
+  std::optional<double> quickMargin;            // --response-quick-margin (inf: the full check always)
+  std::optional<ResponseQuickCheck> quickCopy;  // --response-quick-copy N,F,P[,T]
+  std::optional<double> clampIndirect;          // --clamp-indirect (0: off); else render.clamp_indirect
+  std::optional<int> causticPhotons;            // --caustic-photons
+  std::optional<double> causticRadius;          // --caustic-radius
+  std::optional<double> pixelFilter;            // --pixel-filter (0: the box)
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -264,7 +264,6 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--gathered") a.gathered = *v;
       else if (s == "--method") a.method = *v;
       else if (s == "--solver") a.solver = *v;
-      else if (s == "--response-quick-copy") a.quickCopy = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
       else if (s == "--lights-json") a.lightsJson = *v;
       else if (s == "--report") a.report = *v;
@@ -297,6 +296,15 @@ std::string parseArgs(int argc, char** argv, Args& a) {
                                     : parseNumber<double>(*v);
         if (!a.quickMargin || !(*a.quickMargin >= 0))
           return "--response-quick-margin: '" + *v + "' is not a non-negative number or \"inf\"";
+      } else if (s == "--response-quick-copy") {
+        ResponseQuickCheck q;
+        char tail = 0;
+        const int n = std::sscanf(v->c_str(), "%lf,%d,%d,%lf%c", &q.maxPixels, &q.fitPixels,
+                                  &q.maxPasses, &q.fitTolerance, &tail);
+        if ((n != 3 && n != 4) || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
+            !(q.fitTolerance > 0 && q.fitTolerance < 1))
+          return "--response-quick-copy: '" + *v + "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE]";
+        a.quickCopy = q;
       } else if (s == "--working-mp") {
         a.workingMp = parseNumber<double>(*v);
         if (!a.workingMp) return "--working-mp: '" + *v + "' is not a non-negative number of megapixels";
@@ -492,15 +500,10 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";
   if (a.quickMargin) po.responseQuick.margin = *a.quickMargin;
-  if (!a.quickCopy.empty()) {
-    ResponseQuickCheck& q = po.responseQuick;
-    char tail = 0;
-    const int n = std::sscanf(a.quickCopy.c_str(), "%lf,%d,%d,%lf%c", &q.maxPixels, &q.fitPixels,
-                              &q.maxPasses, &q.fitTolerance, &tail);
-    if ((n != 3 && n != 4) || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
-        !(q.fitTolerance > 0 && q.fitTolerance < 1))
-      return Error{"", "--response-quick-copy",
-                   "'" + a.quickCopy + "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE]"};
+  if (a.quickCopy) {
+    const double margin = po.responseQuick.margin;
+    po.responseQuick = *a.quickCopy;
+    po.responseQuick.margin = margin;
   }
   // The response estimate's evidence gate (diagnostics, as for inlay-cli response).
   if (a.minImprovement) po.responseEstimate.minImprovement = *a.minImprovement;
