@@ -20,7 +20,10 @@ copies first) keep the verdicts of the full check? (issue #16: the response fit 
           margin as a band; right: the check's CPU seconds before and after per photo). --open:
           runs with the evidence gate open (run ... --args "--response-quick-margin inf
           --min-srgb-residual 0 --min-improvement 0"), more photos for the margin: drawn hollow,
-          counted apart, written to OUT/response_check_verdicts_open.csv.
+          counted apart, written to OUT/response_check_verdicts_open.csv. --copies LABEL (and
+          LABEL:COPIES in --open): the copies' log ratio from another run, one with
+          --response-quick-margin 0 (the copies always decide), e.g. with other copy settings
+          (--response-quick-copy); the full check's ratio stays FULL's.
 
 Photos: camera variants ROOM_sK / ROOM_plain as bench_response_check_cost.py makes them (cached
 under OUT/variants), and York photos PNNNNNNN (a scene of the photo alone, camera estimated; --york
@@ -29,7 +32,7 @@ DIR). Half A: odd rooms; half B: even rooms; York: its own group.
 usage: bench_response_check_verdicts.py run INLAY_CLI LABEL --photos t01_s1,...,P1020177 [--args "..."]
                                         [--york DIR] [--out DIR]
        bench_response_check_verdicts.py report --base LABEL --full LABEL --product LABEL
-                                        [--open LABEL,LABEL] [--margin 0.1] [--out DIR]
+                                        [--copies LABEL] [--open LABEL[:COPIES],...] [--margin 0.1] [--out DIR]
 """
 import csv, json, math, os, re, subprocess, sys
 
@@ -112,16 +115,20 @@ def log_ratio(curve, srgb):
         return float("nan")
 
 
-def merged(out, base, full, product):
-    load = lambda label: {r["photo"]: r for r in benchlib.read_csv(os.path.join(out, "verdicts_%s.csv" % label))}
-    b, f, p = load(base), load(full), load(product)
+def load(out, label):
+    return {r["photo"]: r for r in benchlib.read_csv(os.path.join(out, "verdicts_%s.csv" % label))}
+
+
+def merged(out, base, full, product, copies):
+    b, f, p = load(out, base), load(out, full), load(out, product)
+    c = load(out, copies) if copies else f
     rows = []
     for name in b:
-        rb, rf, rp = b[name], f.get(name, {}), p.get(name, {})
+        rb, rf, rp, rc = b[name], f.get(name, {}), p.get(name, {}), c.get(name, {})
         rows.append({"photo": name, "group": group(name), "kept_before": rb.get("kept", ""),
                      "kept_full": rf.get("kept", ""), "kept_after": rp.get("kept", ""),
                      "full_log_ratio": round(log_ratio(rf.get("curve_res"), rf.get("srgb_res")), 4),
-                     "copies_log_ratio": rf.get("q_log", ""), "decided_by_copies": rp.get("q_decided", "") == "beyond",
+                     "copies_log_ratio": rc.get("q_log", ""), "decided_by_copies": rp.get("q_decided", "") == "beyond",
                      "check_cpu_before": rb.get("check_cpu", ""), "check_cpu_after": rp.get("check_cpu", ""),
                      "response_cpu_after": rp.get("response_cpu", "")})
     return rows
@@ -130,12 +137,15 @@ def merged(out, base, full, product):
 def open_rows(out, labels):
     """Runs with the evidence gate open (--open): per photo the full and the copies' log ratio."""
     rows = []
-    for label in [x for x in labels.split(",") if x]:
+    for pair in [x for x in labels.split(",") if x]:
+        label, copies = (pair.split(":", 1) + [""])[:2]
+        c = load(out, copies) if copies else {}
         for r in benchlib.read_csv(os.path.join(out, "verdicts_%s.csv" % label)):
-            if r.get("q_log") not in ("", None):
-                rows.append({"photo": r["photo"], "group": group(r["photo"]), "run": label,
+            q = c.get(r["photo"], r) if copies else r
+            if r.get("q_log") not in ("", None) and q.get("q_log") not in ("", None):
+                rows.append({"photo": r["photo"], "group": group(r["photo"]), "run": pair,
                              "full_log_ratio": round(log_ratio(r["curve_res"], r["srgb_res"]), 4),
-                             "copies_log_ratio": r["q_log"]})
+                             "copies_log_ratio": q["q_log"]})
     return rows
 
 
@@ -184,7 +194,7 @@ def plot(rows, margin, path, opened=()):
 def report(a, out):
     opt = lambda key, default: benchlib.option(a, key, default)
     margin = float(opt("--margin", "0.1"))
-    rows = merged(out, opt("--base", "base"), opt("--full", "full"), opt("--product", "product"))
+    rows = merged(out, opt("--base", "base"), opt("--full", "full"), opt("--product", "product"), opt("--copies", ""))
     benchlib.write_csv(os.path.join(out, "response_check_verdicts.csv"), rows)
     opened = open_rows(out, opt("--open", ""))
     if opened:
