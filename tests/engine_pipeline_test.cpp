@@ -811,6 +811,26 @@ TEST(Engine, TheResponseCopiesReachTheFullChecksVerdict) {
   expectTheCopiesDecideAsTheFullCheck(nullptr, strong, false, "response_copies_wrong");
 }
 
+// The copies' solver tolerance (ResponseQuickCheck::fitTolerance, LightingOptions::
+// fitFunctionTolerance) outside (0, 1) falls back to Ceres' default: the example's false curve is
+// still taken away by the copies, with finite residuals.
+TEST(Engine, TheResponseCopiesSurviveAToleranceThatIsNoTolerance) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  for (const double tolerance : {std::nan(""), 0.0, -1.0, 1e300}) {
+    PrepareOptions opt = optionsGivingTheExampleACurve();
+    opt.responseQuick.fitTolerance = tolerance;
+    auto ps = prepareScene(doc, opt);
+    ASSERT_TRUE(ps.ok()) << ps.error().message();
+    EXPECT_EQ(ps->response, CameraResponse::srgb()) << tolerance;
+    const StageRecord* check = stageNamed(*ps, "response check");
+    ASSERT_NE(check, nullptr);
+    EXPECT_NE(check->detail.find(" beyond "), std::string::npos) << check->detail;
+    EXPECT_EQ(check->detail.find("nan"), std::string::npos) << check->detail;
+    EXPECT_TRUE(std::isfinite(ps->lighting.fitResidualRelative)) << tolerance;
+  }
+}
+
 // Stiff photos under "auto" with the check on: a black photo and a clipped one give no curve to
 // check (sRGB with a warning saying why), and their preparation either succeeds with finite
 // residuals or fails with one message naming the photo; never a crash or a NaN decision.
