@@ -79,7 +79,10 @@ def main():
     for flag, values in (("--keep-better-fit-tolerance", ("-1", "nan", "inf", "low")),
                          ("--prepare-seed", ("-1", "x")),
                          ("--fit-unseen-ceiling", ("0.5,0.5", "0.5,0.5,0.5,0.5", "0.5,-1,0.5", "nan,0.5,0.5", "white")),
-                         ("--unseen-ceiling", ("white", "", "FIT"))):
+                         ("--unseen-ceiling", ("white", "", "FIT")),
+                         ("--response-quick-margin", ("-1", "nan", "wide")),
+                         ("--response-quick-copy", ("abc", "19200,0,5", "19200,1500,0", "-1,1500,5",
+                                                    "19200,1500,5,2", "19200,1500,5,0", "19200,1500,5,1e-3,9"))):
         for v in values:
             r = run(cli, "render", "x.json", flag, v, "-o", "a.png")
             check("bad %s %s" % (flag, v), r.returncode == 2 and flag in r.stderr, r.stderr)

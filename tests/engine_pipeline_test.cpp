@@ -687,6 +687,7 @@ TEST(Engine, TheResponseCheckRunsTheStagesAfterTheRefitOnlyForTheKeptResponse) {
   ASSERT_EQ(off->response.family(), ResponseFamily::ToeShoulder);
   opt.checkResponseByLightFit = true;
   opt.responseFitTolerance = std::numeric_limits<double>::infinity();
+  opt.responseQuick.maxPixels = 0;  // the full check (with an infinite tolerance copies never decide)
   countStageStarts(opt, onStarts);
   auto kept = prepareScene(doc, opt);
   ASSERT_TRUE(kept.ok()) << kept.error().message();
@@ -715,10 +716,11 @@ TEST(Engine, TheResponseCheckRunsTheStagesAfterTheRefitOnlyForTheKeptResponse) {
   EXPECT_GE(check->seconds, againSeconds);
 }
 
-// Cancelling while the check prepares sRGB (at its camera stage) cancels the preparation.
+// Cancelling while the full check prepares sRGB (at its camera stage) cancels the preparation.
 TEST(Engine, CancellingTheResponseCheckCancelsThePreparation) {
   SceneDoc doc = exampleDoc();
   PrepareOptions opt = optionsGivingTheExampleACurve();
+  opt.responseQuick.maxPixels = 0;
   CancelToken cancel;
   opt.cancel = &cancel;
   int cameras = 0;
@@ -729,6 +731,137 @@ TEST(Engine, CancellingTheResponseCheckCancelsThePreparation) {
   EXPECT_EQ(cameras, 2);
   ASSERT_FALSE(ps.ok());
   EXPECT_EQ(ps.error().reason, "cancelled");
+}
+
+// ResponseQuickCheck's verdict: beyond the margin either way it decides, inside it (ties
+// included) it leaves the choice to the full check; residuals that are not finite and positive,
+// and a NaN margin, never decide; the tolerance widens sRGB's residual as refitFitsWorse does.
+TEST(Engine, TheResponseCopiesDecideOnlyBeyondTheMargin) {
+  const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(quickResponseVerdict(0.09, 0.13, 0, 0.1), 1);    // log 0.69 = -0.37: the curve
+  EXPECT_EQ(quickResponseVerdict(0.20, 0.17, 0, 0.1), -1);   // +0.16: sRGB
+  EXPECT_EQ(quickResponseVerdict(0.100, 0.105, 0, 0.1), 0);  // -0.05: the full check
+  EXPECT_EQ(quickResponseVerdict(0.1, 0.1, 0, 0), 0);        // a tie never decides
+  EXPECT_EQ(quickResponseVerdict(0.1, 0.1, 0, -1), 0);
+  EXPECT_EQ(quickResponseVerdict(0.2, 0.17, 0.5, 0.1), 1);   // the tolerance moves the centre
+  EXPECT_EQ(quickResponseVerdict(0.2, 0.17, -3, 0.1), -1);   // a negative tolerance is 0
+  EXPECT_EQ(quickResponseVerdict(0.2, 0.17, nan, 0.1), -1);  // so is NaN
+  EXPECT_EQ(quickResponseVerdict(0.2, 0.17, inf, 0.1), 0);   // an infinite one: never decides
+  EXPECT_EQ(quickResponseVerdict(0.09, 0.13, 0, inf), 0);    // an infinite margin: never
+  EXPECT_EQ(quickResponseVerdict(0.09, 0.13, 0, nan), 0);
+  for (double bad : {nan, inf, -inf, 0.0, -0.1}) {
+    EXPECT_EQ(quickResponseVerdict(bad, 0.13, 0, 0.1), 0) << bad;
+    EXPECT_EQ(quickResponseVerdict(0.13, bad, 0, 0.1), 0) << bad;
+  }
+  EXPECT_EQ(quickResponseVerdict(1e-300, 1e300, 0, 0.1), 1);  // extreme but finite: no overflow
+  EXPECT_EQ(quickResponseVerdict(1e300, 1e-300, 0, 0.1), -1);
+  EXPECT_EQ(quickResponseVerdict(5e-324, 1.0, 0, 0.1), 1);  // a denormal residual
+}
+
+// The response (given as `params` through ResponseEstimateOptions::evaluateAt) of the example's
+// photo, saved through `encodeWith` (null: as sRGB, the example's own codes), checked by the full
+// check alone (copies off) and by the copies first (the default): the same response kept, and
+// the copies decided it without the second preparation (their record says so, the scene is the
+// full check's bit for bit).
+void expectTheCopiesDecideAsTheFullCheck(const CameraResponse* encodeWith, const ResponseParams& params,
+                                         bool curveKept, const std::string& name) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  const auto dir = test::tempDir(name);
+  if (encodeWith) {
+    auto plain = preparedExample();
+    ASSERT_TRUE(plain.ok());
+    SaveOptions so;
+    so.response = encodeWith;
+    const std::string photoPath = (dir / "photo.png").string();
+    ASSERT_TRUE(saveImage(photoPath, plain->photo.linearRgb, so).ok());
+    doc.photo = doc.photoResolved = photoPath;
+  }
+  PrepareOptions opt;
+  opt.responseEstimate.evaluateAt = params;
+  PrepareOptions full = opt;
+  full.responseQuick.maxPixels = 0;
+  auto byFull = prepareScene(doc, full);
+  auto byCopies = prepareScene(doc, opt);
+  ASSERT_TRUE(byFull.ok() && byCopies.ok()) << name;
+  const StageRecord* fullCheck = stageNamed(*byFull, "response check");
+  const StageRecord* copiesCheck = stageNamed(*byCopies, "response check");
+  ASSERT_TRUE(fullCheck && copiesCheck) << name;
+  const std::string kept = curveKept ? "the curve kept: " : "sRGB kept: ";
+  EXPECT_EQ(fullCheck->detail.rfind(kept, 0), 0u) << fullCheck->detail;
+  EXPECT_EQ(copiesCheck->detail.rfind(kept, 0), 0u) << copiesCheck->detail;
+  EXPECT_NE(copiesCheck->detail.find(" copies "), std::string::npos) << copiesCheck->detail;
+  EXPECT_NE(copiesCheck->detail.find(" beyond "), std::string::npos) << copiesCheck->detail;
+  EXPECT_EQ(byCopies->response, byFull->response) << name;
+  EXPECT_EQ(stageNames(*byCopies), stageNames(*byFull)) << name;
+  expectSameRenderInputs(*byCopies, *byFull);
+  for (const StageStep& step : copiesCheck->steps)  // the second preparation never ran
+    EXPECT_TRUE(step.name.rfind("copy, ", 0) == 0 || step.name == "sRGB: response") << step.name;
+  EXPECT_LT(copiesCheck->cpuSeconds, fullCheck->cpuSeconds) << name;
+  std::filesystem::remove_all(dir);
+}
+
+// PrepareOptions::responseQuick on a synthetic photo pair: the example's linear radiance saved
+// through a strong toe-and-shoulder curve and "auto" given exactly that curve (right: the curve
+// kept), and the example's own sRGB photo given that curve (wrong: sRGB kept).
+TEST(Engine, TheResponseCopiesReachTheFullChecksVerdict) {
+  const ResponseParams strong{0.8, 0.3, 12.0};
+  const CameraResponse curve = CameraResponse::toeShoulder(strong);
+  expectTheCopiesDecideAsTheFullCheck(&curve, strong, true, "response_copies_right");
+  expectTheCopiesDecideAsTheFullCheck(nullptr, strong, false, "response_copies_wrong");
+}
+
+// The copies' solver tolerance (ResponseQuickCheck::fitTolerance, LightingOptions::
+// fitFunctionTolerance) outside (0, 1) falls back to Ceres' default: the example's false curve is
+// still taken away by the copies, with finite residuals.
+TEST(Engine, TheResponseCopiesSurviveAToleranceThatIsNoTolerance) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  for (const double tolerance : {std::nan(""), 0.0, -1.0, 1e300}) {
+    PrepareOptions opt = optionsGivingTheExampleACurve();
+    opt.responseQuick.fitTolerance = tolerance;
+    auto ps = prepareScene(doc, opt);
+    ASSERT_TRUE(ps.ok()) << ps.error().message();
+    EXPECT_EQ(ps->response, CameraResponse::srgb()) << tolerance;
+    const StageRecord* check = stageNamed(*ps, "response check");
+    ASSERT_NE(check, nullptr);
+    EXPECT_NE(check->detail.find(" beyond "), std::string::npos) << check->detail;
+    EXPECT_EQ(check->detail.find("nan"), std::string::npos) << check->detail;
+    EXPECT_TRUE(std::isfinite(ps->lighting.fitResidualRelative)) << tolerance;
+  }
+}
+
+// Stiff photos under "auto" with the check on: a black photo and a clipped one give no curve to
+// check (sRGB with a warning saying why), and their preparation either succeeds with finite
+// residuals or fails with one message naming the photo; never a crash or a NaN decision.
+TEST(Engine, StiffPhotosNeverReachTheResponseCheck) {
+  SceneDoc base = exampleDoc();
+  base.objects.clear();
+  const auto dir = test::tempDir("response_check_stiff");
+  for (const float value : {0.0f, 1.0f}) {
+    ImageF flat(320, 240, 3);
+    for (float& v : flat.data) v = value;
+    const std::string photoPath = (dir / (value > 0 ? "clipped.png" : "black.png")).string();
+    ASSERT_TRUE(saveImage(photoPath, flat).ok());
+    SceneDoc doc = base;
+    doc.photo = doc.photoResolved = photoPath;
+    doc.lights.clear();
+    PrepareOptions opt;
+    opt.responseEstimate.evaluateAt = ResponseParams{0.8, 0.3, 12.0};
+    auto ps = prepareScene(doc, opt);
+    if (!ps.ok()) {
+      EXPECT_EQ(ps.error().key, "photo") << ps.error().message();
+      EXPECT_FALSE(ps.error().reason.empty());
+      continue;
+    }
+    EXPECT_EQ(ps->response, CameraResponse::srgb()) << value;
+    EXPECT_EQ(stageNamed(*ps, "response check"), nullptr) << value;
+    size_t warned = 0;
+    for (const auto& w : ps->warnings) warned += w.rfind("camera response: ", 0) == 0;
+    EXPECT_EQ(warned, 1u) << value;
+    EXPECT_FALSE(std::isinf(ps->lighting.fitResidualRelative)) << value;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // Every stage of the preparation is on record, in order, with its seconds or the reason this

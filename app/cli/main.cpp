@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -141,6 +142,17 @@ Render options:
                           megapixels (default 0.5; 0: the photo's own size); their maps are
                           brought back to the photo's size, the render and composite stay at
                           it (decompose always works at the photo's size)
+  --response-quick-margin M
+                          diagnostics: the camera response check's copies decide when the log
+                          of their residuals' ratio is beyond M (default 0.1); "inf": the full
+                          check always (the copies' ratio is still reported)
+  --response-quick-copy N,F,P[,T]
+                          diagnostics: the check's copies have at most N pixels (0: no copies),
+                          F light fit pixels, P gather-and-fit passes and the light fit's
+                          function tolerance T (its defaults: ResponseQuickCheck)
+  --min-srgb-residual R, --min-improvement F
+                          diagnostics: the "auto" response estimate's evidence gate, as for
+                          inlay-cli response (0 and 0: every fitted curve goes to the check)
   --verbose               list every stage of the preparation on stderr: its seconds, or why it
                           was skipped ("shafts: skipped, no sun marked")
   --quiet                 no progress on stderr
@@ -191,11 +203,13 @@ struct Args {
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::string unseenCeiling = "fit";             // --unseen-ceiling walls|fit|fit-render
   std::optional<double> seconds, noise;
-  std::optional<double> workingMp;      // --working-mp
-  std::optional<double> clampIndirect;  // --clamp-indirect (0: off); else render.clamp_indirect
-  std::optional<int> causticPhotons;    // --caustic-photons
-  std::optional<double> causticRadius;  // --caustic-radius
-  std::optional<double> pixelFilter;    // --pixel-filter (0: the box)
+  std::optional<double> workingMp;              // --working-mp
+  std::optional<double> quickMargin;            // --response-quick-margin (inf: the full check always)
+  std::optional<ResponseQuickCheck> quickCopy;  // --response-quick-copy N,F,P[,T]
+  std::optional<double> clampIndirect;          // --clamp-indirect (0: off); else render.clamp_indirect
+  std::optional<int> causticPhotons;            // --caustic-photons
+  std::optional<double> causticRadius;          // --caustic-radius
+  std::optional<double> pixelFilter;            // --pixel-filter (0: the box)
   bool quiet = false;
   bool verbose = false;
   bool noFocus = false;
@@ -237,10 +251,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--replace-radiance" || s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" ||
         s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
         s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
-        s == "--clamp-indirect" || s == "--max-dark-fill" || s == "--prepare-seed" ||
-        s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
-        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
-        s == "--pixel-filter" || s == "--solver") {
+        s == "--response-quick-margin" || s == "--response-quick-copy" || s == "--clamp-indirect" ||
+        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
+        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
+        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -278,6 +292,20 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       } else if (s == "--refit-min-move") {
         a.refitMinMove = parseNumber<double>(*v);
         if (!a.refitMinMove) return "--refit-min-move: '" + *v + "' is not a non-negative fraction";
+      } else if (s == "--response-quick-margin") {
+        a.quickMargin = *v == "inf" ? std::optional<double>(std::numeric_limits<double>::infinity())
+                                    : parseNumber<double>(*v);
+        if (!a.quickMargin || !(*a.quickMargin >= 0))
+          return "--response-quick-margin: '" + *v + "' is not a non-negative number or \"inf\"";
+      } else if (s == "--response-quick-copy") {
+        ResponseQuickCheck q;
+        char tail = 0;
+        const int n = std::sscanf(v->c_str(), "%lf,%d,%d,%lf%c", &q.maxPixels, &q.fitPixels,
+                                  &q.maxPasses, &q.fitTolerance, &tail);
+        if ((n != 3 && n != 4) || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
+            !(q.fitTolerance > 0 && q.fitTolerance < 1))
+          return "--response-quick-copy: '" + *v + "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE]";
+        a.quickCopy = q;
       } else if (s == "--working-mp") {
         a.workingMp = parseNumber<double>(*v);
         if (!a.workingMp) return "--working-mp: '" + *v + "' is not a non-negative number of megapixels";
@@ -472,6 +500,15 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";
+  if (a.quickMargin) po.responseQuick.margin = *a.quickMargin;
+  if (a.quickCopy) {
+    const double margin = po.responseQuick.margin;
+    po.responseQuick = *a.quickCopy;
+    po.responseQuick.margin = margin;
+  }
+  // The response estimate's evidence gate (diagnostics, as for inlay-cli response).
+  if (a.minImprovement) po.responseEstimate.minImprovement = *a.minImprovement;
+  if (a.minSrgbResidual) po.responseEstimate.minSrgbResidual = *a.minSrgbResidual;
   // decompose writes the decomposition itself: at the photo's own size.
   po.workingMaxPixels = a.command == "decompose" ? 0.0
                         : a.workingMp            ? *a.workingMp * 1e6

@@ -1830,6 +1830,8 @@ std::string LightingFit::fitChannel(int c, double& cost) {
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
   so.max_num_iterations = 100;
+  if (opt.fitFunctionTolerance > 0 && opt.fitFunctionTolerance < 1)  // else Ceres' default
+    so.function_tolerance = opt.fitFunctionTolerance;
   so.num_threads = 1;  // the channels run in parallel (fit)
   so.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;

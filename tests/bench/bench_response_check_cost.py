@@ -26,7 +26,11 @@ usage: bench_response_check_cost.py --builds LABEL=BUILD_DIR,LABEL=BUILD_DIR --p
 Writes OUT/response_check_cost.csv (one row per build, round, size and photo; --append keeps the
 rows already there), OUT/response_check_cost_summary.csv (medians per build, size and photo, and
 each build's ratio to the first) and OUT/response_check_cost.png (median process CPU per
-photo and build). Variants and scenes are cached under OUT/variants.
+photo and build), OUT/response_check_cost_size.png (the response stage plus the check, median
+CPU seconds, against megapixels: the issue's budget is 1 s at 640 x 480, --mp 0.3072). Rows
+also give the response stage's CPU seconds and whether the check's copies decided
+(ResponseQuickCheck; "full": the full check ran). Variants and scenes are cached under
+OUT/variants.
 """
 import csv, importlib.util, json, math, os, resource, statistics, subprocess, sys, time
 
@@ -112,9 +116,13 @@ def run_once(cli, scene, threads, work):
     ran = [s for s in stages if s.get("ran")]
     check = [s for s in ran if s["name"] == "response check"]
     kept = "-" if not check else ("curve" if check[0]["detail"].startswith("the curve kept") else "srgb")
+    response = [s for s in ran if s["name"] == "response"]
+    decided = "-" if not check else ("copies" if " beyond " in check[0]["detail"] else "full")
     return {"prepare_s": round(sum(s["seconds"] for s in ran), 3),
             "prepare_cpu_s": round(sum(s["cpu_seconds"] for s in ran), 3),
             "check_cpu_s": round(check[0]["cpu_seconds"], 3) if check else 0.0,
+            "response_cpu_s": round(response[0]["cpu_seconds"], 3) if response else 0.0,
+            "decided_by": decided,
             "kept": kept, "process_cpu_s": round(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, 3),
             "wall_s": round(wall, 3), "load": round(os.getloadavg()[0], 2)}
 
@@ -135,10 +143,14 @@ def summary(rows):
             sel = [r for r in rows if r["build"] == label and r["mp"] == mp and r["photo"] == photo]
             if not sel:
                 continue
+            for r in sel:  # rows of CSVs written before the response stage was recorded: 0
+                r["response_plus_check_cpu_s"] = float(r.get("response_cpu_s") or 0) + float(r["check_cpu_s"])
             med = {k: statistics.median(float(r[k]) for r in sel)
-                   for k in ("prepare_s", "prepare_cpu_s", "check_cpu_s", "process_cpu_s")}
+                   for k in ("prepare_s", "prepare_cpu_s", "check_cpu_s", "response_plus_check_cpu_s",
+                             "process_cpu_s")}
             base = base or med
             out.append({"build": label, "mp": mp, "photo": photo, "runs": len(sel), "kept": sel[0]["kept"],
+                        "decided_by": sel[0].get("decided_by", ""),
                         **{k: round(v, 3) for k, v in med.items()},
                         "prepare_cpu_ratio": round(med["prepare_cpu_s"] / base["prepare_cpu_s"], 3),
                         "process_cpu_ratio": round(med["process_cpu_s"] / base["process_cpu_s"], 3)})
@@ -176,6 +188,31 @@ def plot(summ, path):
             a.legend()
 
 
+def plot_against_size(summ, path):
+    """The response stage plus the check, median CPU seconds, against the photo's megapixels
+    (0: the room's own size, 0.2 MP), one line per build and photo."""
+    with benchlib.figure(path, 1, 1, figsize=(6.5, 4.2)) as ax:
+        if ax is None:
+            return
+        series = {}
+        for s in summ:
+            if s["kept"] == "-":
+                continue
+            mp = float(s["mp"]) or 0.197
+            series.setdefault((s["build"], s["photo"]), []).append((mp, float(s["response_plus_check_cpu_s"])))
+        styles = {}
+        for (build, photo), pts in sorted(series.items()):
+            pts.sort()
+            style = styles.setdefault(build, "-o" if not styles else "--s")
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], style, label="%s %s" % (build, photo))
+        ax.axhline(1.0, color="grey", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_xlabel("photo megapixels")
+        ax.set_ylabel("response + response check, CPU s (median)")
+        ax.set_title("the response fit and its check against photo size")
+        ax.legend(fontsize=6)
+
+
 def main():
     a = benchlib.args(__doc__, 0)
     opt = lambda key, default: benchlib.option(a, key, default)
@@ -208,6 +245,7 @@ def main():
     summ = summary(rows)
     benchlib.write_csv(os.path.join(out, "response_check_cost_summary.csv"), summ)
     plot(summ, os.path.join(out, "response_check_cost.png"))
+    plot_against_size(summ, os.path.join(out, "response_check_cost_size.png"))
     for s in summ:
         print(json.dumps(s))
     return 0

@@ -1352,12 +1352,14 @@ const std::string kRefusedByTheLightFit = "kept sRGB: ";
 const std::string kTheLightFitsResidual = "the light fit's residual";
 
 // The check's reason: both light fits' residuals (sRGB's NaN when its preparation failed).
-std::string checkWhy(const Preparation& curved, double withSrgb) {
+std::string checkWhy(const CameraResponse& curve, double withCurve, double withSrgb) {
   char buf[320];
   std::snprintf(buf, sizeof buf, "%s with the fitted %s is %.4f, with sRGB %.4f",
-                kTheLightFitsResidual.c_str(), curved.ps.response.describe().c_str(),
-                curved.ps.lighting.fitResidualRelative, withSrgb);
+                kTheLightFitsResidual.c_str(), curve.describe().c_str(), withCurve, withSrgb);
   return buf;
+}
+std::string checkWhy(const Preparation& curved, double withSrgb) {
+  return checkWhy(curved.ps.response, curved.ps.lighting.fitResidualRelative, withSrgb);
 }
 
 // Whether the curve explains the photo at least as well as sRGB (a residual that is not
@@ -1367,26 +1369,139 @@ bool keepsTheCurve(const Preparation& curved, double withSrgb) {
                          curved.opt.responseFitTolerance);
 }
 
-// The "response check" record: the response it kept and why, the stages it ran again with sRGB
-// (`again`) as its steps, and its own seconds since `clock`.
-StageRecord checkRecord(const Preparation& curved, double withSrgb, const std::vector<StageStep>& again,
-                        const StageClock& clock) {
+// --- The quick comparison on small copies (ResponseQuickCheck) ---
+
+// The log of the curve's residual over sRGB's widened by the tolerance (NaN: not told).
+double quickLogRatio(double withCurve, double withSrgb, double tolerance) {
+  const double tol = std::isnan(tolerance) ? 0.0 : std::max(0.0, tolerance);
+  const double r = std::log(withCurve) - std::log(withSrgb) - std::log1p(tol);
+  const bool told = withCurve > 0 && withSrgb > 0 && std::isfinite(withCurve) && std::isfinite(withSrgb);
+  return told && std::isfinite(r) ? r : std::nan("");
+}
+
+// Its result: both copies' light fit residuals, the copies' size and the stages it ran as steps.
+struct QuickCheck {
+  double withCurve = std::nan(""), withSrgb = std::nan("");
+  std::array<int, 2> copyPx{};
+  std::vector<StageStep> steps;
+  double seconds = 0, cpuSeconds = 0;
+  double logRatio(double tolerance) const { return quickLogRatio(withCurve, withSrgb, tolerance); }
+  int verdict(const PrepareOptions& opt) const {
+    return quickResponseVerdict(withCurve, withSrgb, opt.responseFitTolerance, opt.responseQuick.margin);
+  }
+  bool decides(const PrepareOptions& opt) const { return verdict(opt) != 0; }
+  bool keepsTheCurve(const PrepareOptions& opt) const { return verdict(opt) > 0; }
+};
+
+// The "response check" record: the response it kept and why (`kept`, `why`), the stages it ran
+// (the copies', then those run again with sRGB: `again`) as its steps, and its own seconds since
+// `clock` plus the copies'.
+StageRecord checkRecord(bool kept, const std::string& why, const QuickCheck& quick,
+                        const std::vector<StageStep>& again, const StageClock& clock,
+                        const PrepareOptions& opt) {
   StageRecord record;
   record.name = "response check";
   record.ran = true;
-  record.detail = std::string(keepsTheCurve(curved, withSrgb) ? "the curve kept: " : "sRGB kept: ") +
-                  checkWhy(curved, withSrgb);
-  record.steps = again;
+  record.detail = std::string(kept ? "the curve kept: " : "sRGB kept: ") + why;
+  char buf[200];
+  const double r = quick.logRatio(opt.responseFitTolerance);
+  if (quick.copyPx[0] > 0)
+    std::snprintf(buf, sizeof buf, "; on %d x %d copies %.4f against %.4f, log ratio %.3f %s %.3f",
+                  quick.copyPx[0], quick.copyPx[1], quick.withCurve, quick.withSrgb, r,
+                  quick.decides(opt) ? "beyond" : "within", opt.responseQuick.margin);
+  else std::snprintf(buf, sizeof buf, "; no quick comparison");
+  record.detail += buf;
+  record.steps = quick.steps;
+  record.steps.insert(record.steps.end(), again.begin(), again.end());
   clock.stamp(record);
+  record.seconds += quick.seconds;
+  record.cpuSeconds += quick.cpuSeconds;
   return record;
 }
+StageRecord checkRecord(const Preparation& curved, double withSrgb, const QuickCheck& quick,
+                        const std::vector<StageStep>& again, const StageClock& clock) {
+  return checkRecord(keepsTheCurve(curved, withSrgb), checkWhy(curved, withSrgb), quick, again, clock,
+                     curved.opt);
+}
 
-// The stages a preparation ran, as steps.
-std::vector<StageStep> stepsOf(const std::vector<StageRecord>& stages) {
+// The stages a preparation ran, as steps (each name after `prefix`).
+std::vector<StageStep> stepsOf(const std::vector<StageRecord>& stages, const std::string& prefix = "") {
   std::vector<StageStep> out;
   for (const StageRecord& r : stages)
-    if (r.ran) out.push_back({r.name, r.seconds, r.cpuSeconds});
+    if (r.ran) out.push_back({prefix + r.name, r.seconds, r.cpuSeconds});
   return out;
+}
+
+// The response stage alone, and the response stages after it.
+std::span<const Stage> theResponseStage() { return std::span<const Stage>(kResponseStages).first(1); }
+std::span<const Stage> afterTheResponse() { return std::span<const Stage>(kResponseStages).subspan(1); }
+
+SceneDoc withSrgb(const SceneDoc& doc) {
+  SceneDoc srgbDoc = doc;
+  srgbDoc.camera.response = {ResponseKeys::Mode::Srgb};
+  return srgbDoc;
+}
+
+// The options of the copies' preparations: the working copy at ResponseQuickCheck::maxPixels,
+// the lights as marked, no progress reports and no check of their own.
+PrepareOptions quickOptionsOf(const PrepareOptions& opt) {
+  PrepareOptions q = opt;
+  q.progress = nullptr;
+  q.workingMaxPixels = opt.responseQuick.maxPixels;
+  q.refineLights = false;
+  q.checkResponseByLightFit = false;
+  return q;
+}
+
+// One response's copy prepared through `stages` (from the photo `q` holds): its light fit's
+// residual (NaN when a stage failed) and its stages, named after `label`, as the check's steps.
+Status quickFit(Preparation& q, std::span<const Stage> stages, const std::string& label,
+                QuickCheck& quick, double& residual) {
+  q.lightingOptions.objective = false;
+  q.lightingOptions.fitPixels = q.opt.responseQuick.fitPixels;
+  q.lightingOptions.maxPasses = q.opt.responseQuick.maxPasses;
+  q.lightingOptions.fitFunctionTolerance = q.opt.responseQuick.fitTolerance;
+  const Status ran = runStages(stages, q);
+  const std::vector<StageStep> steps = stepsOf(q.ps.stages, label);
+  quick.steps.insert(quick.steps.end(), steps.begin(), steps.end());
+  residual = ran ? q.ps.lighting.fitResidualRelative : std::nan("");
+  if (ran) quick.copyPx = q.ps.workingPx;
+  return ran;
+}
+
+// The quick comparison of `curved`, whose response stage fitted a curve: a copy of its decoded
+// photo with the curve, and of the photo as loaded with sRGB. Fails only when cancelled.
+Expected<QuickCheck> quickCheck(const Preparation& curved) {
+  QuickCheck quick;
+  if (!(curved.opt.responseQuick.maxPixels > 0)) return quick;
+  const StageClock clock;
+  const PrepareOptions qopt = quickOptionsOf(curved.opt);
+  Preparation curve(curved.doc, qopt);
+  curve.ps.photo = curved.ps.photo;  // a copy: the vignetting stage divides the photo in place
+  curve.ps.response = curved.ps.response;
+  const Status a = quickFit(curve, afterTheResponse(), "copy, curve: ", quick, quick.withCurve);
+  if (!a && isCancelled(a.error())) return a.error();
+  const SceneDoc srgbDoc = withSrgb(curved.doc);
+  Preparation srgb(srgbDoc, qopt);
+  srgb.ps.photo = *curved.photoAsLoaded;  // as loaded: decoded as sRGB
+  srgb.ps.response = CameraResponse::srgb();
+  const Status b = quickFit(srgb, afterTheResponse(), "copy, sRGB: ", quick, quick.withSrgb);
+  if (!b && isCancelled(b.error())) return b.error();
+  StageRecord timing;
+  clock.stamp(timing);
+  quick.seconds = timing.seconds;
+  quick.cpuSeconds = timing.cpuSeconds;
+  return quick;
+}
+
+// The copies kept the curve: it is prepared alone.
+Expected<PreparedScene> finishWithTheCurve(Preparation& curved, const QuickCheck& quick) {
+  curved.photoAsLoaded.reset();
+  if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
+  const StageClock now;  // the record's seconds: the copies'
+  curved.ps.stages.push_back(checkRecord(
+      true, checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb), quick, {}, now, curved.opt));
+  return finishScene(curved);
 }
 
 // The scene prepared with sRGB in place of the estimated curve `curved` used: the estimate and
@@ -1403,11 +1518,11 @@ PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved
 
 // sRGB kept: the stages after the refit run on its preparation, after the curve's records (the
 // stages that ran first) and the check's.
-Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb,
+Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb, const QuickCheck& quick,
                                        const std::vector<StageStep>& again, const StageClock& clock) {
   const double withSrgb = srgb.ps.lighting.fitResidualRelative;
   srgb.ps.stages = curved.ps.stages;
-  srgb.ps.stages.push_back(checkRecord(curved, withSrgb, again, clock));
+  srgb.ps.stages.push_back(checkRecord(curved, withSrgb, quick, again, clock));
   Expected<PreparedScene> done = finishScene(srgb);
   if (!done) return done;
   return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), checkWhy(curved, withSrgb));
@@ -1418,10 +1533,9 @@ Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb,
 // after the refit run once, for the one whose light fit explains the photo better. When sRGB's
 // preparation fails the curve stands. The objects are placed only in the kept response's room:
 // the rejected one's camera and box never refuse them.
-Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
+Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved, const QuickCheck& quick) {
   const StageClock clock;
-  SceneDoc srgbDoc = curved.doc;
-  srgbDoc.camera.response = {ResponseKeys::Mode::Srgb};
+  const SceneDoc srgbDoc = withSrgb(curved.doc);
   Preparation srgb(srgbDoc, curved.opt);
   MeshCache meshes;
   curved.meshes = srgb.meshes = &meshes;
@@ -1433,13 +1547,53 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved) {
   const double residual = srgb.ps.lighting.fitResidualRelative;
   const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
   if (srgbFitsBetter) {
-    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, again, clock);
+    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, quick, again, clock);
     if (kept || isCancelled(kept.error())) return kept;
   }
   // sRGB's preparation failed (before the refit, or after it with sRGB kept): NaN.
   const double withSrgb = ran && !srgbFitsBetter ? residual : std::nan("");
-  curved.ps.stages.push_back(checkRecord(curved, withSrgb, again, clock));
+  curved.ps.stages.push_back(checkRecord(curved, withSrgb, quick, again, clock));
   return finishScene(curved);
+}
+
+// The copies kept sRGB: the photo as loaded is prepared with sRGB alone (its response stage
+// counted in the check), after the curve's photo and response records. When that preparation
+// fails the curve is prepared after all, as the full check does.
+Expected<PreparedScene> prepareSrgbInstead(Preparation& curved, QuickCheck quick) {
+  const SceneDoc srgbDoc = withSrgb(curved.doc);
+  Preparation srgb(srgbDoc, curved.opt);
+  srgb.ps.photo = std::move(*curved.photoAsLoaded);
+  curved.photoAsLoaded.reset();
+  Status ran = runStages(theResponseStage(), srgb);
+  const std::vector<StageStep> decode = stepsOf(srgb.ps.stages, "sRGB: ");
+  quick.steps.insert(quick.steps.end(), decode.begin(), decode.end());
+  for (const StageStep& step : decode)
+    quick.seconds += step.seconds, quick.cpuSeconds += step.cpuSeconds;
+  srgb.ps.stages = curved.ps.stages;
+  if (ran) ran = runStages(afterTheResponse(), srgb);
+  const std::string why = checkWhy(curved.ps.response, quick.withCurve, quick.withSrgb);
+  if (ran) {
+    const StageClock now;  // the record's seconds: the copies' and the sRGB decode
+    srgb.ps.stages.push_back(checkRecord(false, why, quick, {}, now, curved.opt));
+    Expected<PreparedScene> done = finishScene(srgb);
+    if (done) return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), why);
+    ran = done.error();
+  }
+  if (isCancelled(ran.error())) return ran.error();
+  quick.withSrgb = std::nan("");
+  return finishWithTheCurve(curved, quick);
+}
+
+// After the curve's response stage, when PrepareOptions::checkResponseByLightFit checks it: the
+// copies first (ResponseQuickCheck), then the response they keep alone, or both up to the refit.
+Expected<PreparedScene> prepareCheckingTheCurve(Preparation& curved) {
+  Expected<QuickCheck> quick = quickCheck(curved);
+  if (!quick) return quick.error();
+  if (quick->decides(curved.opt))
+    return quick->keepsTheCurve(curved.opt) ? finishWithTheCurve(curved, *quick)
+                                            : prepareSrgbInstead(curved, *quick);
+  if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
+  return checkTheCurveByTheLightFit(curved, *quick);
 }
 
 }  // namespace
@@ -1451,8 +1605,10 @@ bool curveRefusedByTheLightFit(const ResponseEstimate& estimate) {
 Expected<PreparedScene> prepareScene(const SceneDoc& doc, const PrepareOptions& opt) {
   Preparation p(doc, opt);
   if (Status st = runStages(kLoadStages, p); !st) return st.error();
-  if (Status st = runStages(kResponseStages, p); !st) return st.error();
-  return p.photoAsLoaded ? checkTheCurveByTheLightFit(p) : finishScene(p);
+  if (Status st = runStages(theResponseStage(), p); !st) return st.error();
+  if (p.photoAsLoaded) return prepareCheckingTheCurve(p);
+  if (Status st = runStages(afterTheResponse(), p); !st) return st.error();
+  return finishScene(p);
 }
 
 PhotoNoise photoNoiseOf(const LoadedImage& photo) {
@@ -1475,6 +1631,12 @@ const CameraResponse* outputResponseOf(const PreparedScene& scene) {
   const bool linearPhoto = scene.response.family() == ResponseFamily::Linear &&
                            !scene.photo.wasSrgbEncoded;
   return linearPhoto ? nullptr : &scene.response;
+}
+
+int quickResponseVerdict(double withCurve, double withSrgb, double tolerance, double margin) {
+  const double r = quickLogRatio(withCurve, withSrgb, tolerance);
+  if (std::isnan(margin) || !(std::abs(r) > std::max(0.0, margin))) return 0;  // a tie never decides
+  return r < 0 ? 1 : -1;
 }
 
 bool refitFitsWorse(double before, double after, double tolerance) {

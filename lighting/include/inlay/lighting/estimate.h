@@ -89,6 +89,11 @@ struct LightingOptions {
   double passRelaxation = 0.5;
   double passTolerance = 0.03;
   int fitPixels = 6000;  // pixels sampled for the fit
+  // The light fit's solver stops when its cost changes by less than this fraction in an
+  // iteration (Ceres' function_tolerance; its default). A coarser one ends the fit sooner: the
+  // pipeline's response check compares two responses on small copies with 1e-3
+  // (ResponseQuickCheck in app/engine/pipeline.h). Outside (0, 1) (NaN too): Ceres' default.
+  double fitFunctionTolerance = 1e-6;
   // The fit reads each pixel as the mean of the photo over the (2 fitWindow + 1)^2 pixels around
   // it on the same surface (0: the pixel alone): the log of a noisy or finely textured pixel is
   // biased low, which made the albedo too dark and the lights too bright (estimate.cpp; chosen on

@@ -104,9 +104,10 @@ struct PreparedScene {
   std::vector<std::string> warnings;  // one line each, for stderr or a status bar
   // Every stage of the preparation in order: its seconds, or why this scene did not need it.
   // When PrepareOptions::checkResponseByLightFit checks a curve, the stages up to the lighting
-  // refit are the curve's (they ran first), then "response check": its own seconds, which
-  // response it kept and why, and as its steps the stages it ran again with sRGB; the stages
-  // after it ran once, for the response kept.
+  // refit are those of the response kept (the curve's when the full check ran), then "response
+  // check": its own seconds, which response it kept and why, and as its steps the copies'
+  // stages ("copy, curve: lighting", ...) and those it ran again with sRGB; the stages after it
+  // ran once, for the response kept.
   std::vector<StageRecord> stages;
 };
 
@@ -129,6 +130,25 @@ inline constexpr double kKeepBetterFitTolerance = 0.016;
 // (t09) or by 9 to 41 % of their size; t09 alone falls below, and its first estimate scores as
 // its refit does (object RMSE 0.0226 against 0.0225).
 inline constexpr double kRefitMinLightMove = 0.05;
+
+// PrepareOptions::checkResponseByLightFit's first, quick comparison: the curve and sRGB each
+// prepared up to the lighting on a copy of the photo area-averaged to at most `maxPixels`, with
+// the lights as marked (no refinement, no refit), fitPixels pixels in the light fit and no
+// decomposition (the residual is the light fit's, before it). When the log of the ratio of their
+// relative residuals (the curve's over sRGB's times 1 + responseFitTolerance) is beyond
+// `margin` either way, that verdict stands and only the response it keeps is prepared; inside
+// it (or when a copy's fit fails) the full check runs as before, on the photo's working copy.
+// The copies' light fit stops at a coarser solver tolerance (1e-3 against Ceres' 1e-6): a
+// quarter less CPU, the same photos decided on half A.
+// Chosen on half A's camera variants (docs/benchmarks.md, "The response check decides on a
+// small copy first").
+struct ResponseQuickCheck {
+  double maxPixels = 160 * 120;  // <= 0: no quick comparison, the full check always
+  int fitPixels = 1500;          // LightingOptions::fitPixels of the copies' fits
+  int maxPasses = 5;             // LightingOptions::maxPasses of the copies' fits
+  double fitTolerance = 1e-3;    // LightingOptions::fitFunctionTolerance of the copies' fits
+  double margin = 0.1;           // |log ratio| beyond which the copies decide; infinite: never
+};
 
 struct PrepareOptions {
   const CancelToken* cancel = nullptr;
@@ -199,11 +219,15 @@ struct PrepareOptions {
   // and the estimate's decision saying why; the stages after the refit run once, for the one
   // kept. Measured on half A of the random cameras (docs/camera-response.md, "The light fit
   // checks the estimated curve"): both curves it met made the object worse and both left a
-  // larger residual. Costs those stages a second time (docs/benchmarks.md, "The response check
-  // prepares sRGB only up to the refit"), only on photos the estimate gives a curve. False: the
-  // estimate's curve is always kept.
+  // larger residual. The two are first compared on small copies (responseQuick); only when
+  // those do not decide are the stages run a second time (docs/benchmarks.md, "The response
+  // check decides on small copies first"), only on photos the estimate gives a curve. False:
+  // the estimate's curve is always kept.
   bool checkResponseByLightFit = true;
   double responseFitTolerance = 0;
+  // The check's first comparison on small copies (ResponseQuickCheck): when it is clear, the
+  // second preparation is not run at all.
+  ResponseQuickCheck responseQuick;
   // The response estimate's options for "auto" (its `cancel` is this struct's): tests and
   // diagnostics.
   ResponseEstimateOptions responseEstimate;
@@ -246,6 +270,13 @@ bool curveRefusedByTheLightFit(const ResponseEstimate& estimate);
 // refit). A residual that is not finite never wins; a negative or NaN tolerance counts as 0, an
 // infinite one keeps every finite refit.
 bool refitFitsWorse(double first, double refit, double tolerance);
+
+// ResponseQuickCheck's verdict from the copies' relative residuals with the curve and with sRGB:
+// +1 the curve is kept, -1 sRGB, 0 the copies do not decide (the full check runs). They decide
+// when |log(withCurve / (withSrgb (1 + tolerance)))| > margin; a residual that is not finite and
+// positive never decides, nor does a tie; a negative or NaN tolerance counts as 0, so does a
+// negative margin; a NaN margin never decides.
+int quickResponseVerdict(double withCurve, double withSrgb, double tolerance, double margin);
 
 // PrepareOptions::refitMinLightMove's measure: over the lights, the largest distance a corner
 // moved from `before` to `after`, in units of that light's size (the square root of its area
