@@ -596,6 +596,12 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
                           "(Log-Residuum 0.05920 gegen 0.06510) und bleibt; die Neuanpassung brauchte "
                           "3 Durchgänge, die Strahlen der ersten Schätzung wiederverwendet, 11834 "
                           "Punkte x 36 Strahlen, 9 Iterationen der Lichtanpassung)"));
+  // The response check's steps: its copies' stages and those it ran again with sRGB.
+  StageRecord checkSteps = stageThatRan("response check", "");
+  checkSteps.steps = {{"copy, curve: lighting", 0.1, 0.2}, {"sRGB: light fit", 0.3, 0.4}};
+  QCOMPARE(stageLine(checkSteps),
+           QStringLiteral("Prüfung der Kamerakennlinie: 20.100 s, CPU 38.900 s; CPU-s: Kopie, Kurve: "
+                          "Beleuchtung 0.20, mit sRGB: Lichtanpassung 0.40"));
   // A detail with a part no template knows stays English whole, never half translated.
   QCOMPARE(stageLine(unknown),
            QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "

@@ -2698,162 +2698,177 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::StageText</name>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="15"/>
+        <location filename="../app/studio/stage_text.cpp" line="17"/>
         <source>photo</source>
         <translation>Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="16"/>
+        <location filename="../app/studio/stage_text.cpp" line="18"/>
         <source>response</source>
         <translation>Kennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="17"/>
+        <location filename="../app/studio/stage_text.cpp" line="19"/>
         <source>working copy</source>
         <translation>Arbeitskopie</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="18"/>
+        <location filename="../app/studio/stage_text.cpp" line="20"/>
         <source>camera</source>
         <translation>Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="19"/>
+        <location filename="../app/studio/stage_text.cpp" line="21"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="20"/>
+        <location filename="../app/studio/stage_text.cpp" line="22"/>
         <source>occluders</source>
         <translation>Verdecker</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="21"/>
+        <location filename="../app/studio/stage_text.cpp" line="23"/>
         <source>surfaces</source>
         <translation>Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="22"/>
+        <location filename="../app/studio/stage_text.cpp" line="24"/>
         <source>room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="23"/>
+        <location filename="../app/studio/stage_text.cpp" line="25"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="24"/>
+        <location filename="../app/studio/stage_text.cpp" line="26"/>
         <source>shafts</source>
         <translation>Sonnenstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="25"/>
+        <location filename="../app/studio/stage_text.cpp" line="27"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="26"/>
+        <location filename="../app/studio/stage_text.cpp" line="28"/>
         <source>vignetting</source>
         <translation>Vignettierung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="27"/>
+        <location filename="../app/studio/stage_text.cpp" line="29"/>
         <source>sun ratio</source>
         <translation>Sonnenverhältnis</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="28"/>
+        <location filename="../app/studio/stage_text.cpp" line="30"/>
         <source>refine</source>
         <translation>Verfeinerung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="29"/>
+        <location filename="../app/studio/stage_text.cpp" line="31"/>
         <source>lighting refit</source>
         <translation>Neuanpassung der Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
         <source>response check</source>
         <translation>Prüfung der Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="30"/>
+        <location filename="../app/studio/stage_text.cpp" line="32"/>
         <source>photo size</source>
         <translation>Fotogröße</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="31"/>
+        <location filename="../app/studio/stage_text.cpp" line="33"/>
         <source>render scene</source>
         <translation>Render-Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="32"/>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
         <source>objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="33"/>
+        <location filename="../app/studio/stage_text.cpp" line="35"/>
         <source>grain</source>
         <translation>Körnung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
         <source>gather</source>
         <translation>Sammeln</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
         <source>light fit</source>
         <translation>Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
         <source>unseen patches</source>
         <translation>unsichtbare Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
         <source>retinex</source>
         <translation>Retinex</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <location filename="../app/studio/stage_text.cpp" line="42"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <location filename="../app/studio/stage_text.cpp" line="43"/>
         <source>direct light</source>
         <translation>direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="42"/>
+        <location filename="../app/studio/stage_text.cpp" line="44"/>
         <source>fit pixels</source>
         <translation>Anpassungspixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="43"/>
+        <location filename="../app/studio/stage_text.cpp" line="45"/>
         <source>per-pixel albedo</source>
         <translation>Albedo je Pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="58"/>
+        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <source>copy, curve: %1</source>
+        <translation>Kopie, Kurve: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <source>copy, sRGB: %1</source>
+        <translation>Kopie, sRGB: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <source>sRGB: %1</source>
+        <translation>mit sRGB: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="75"/>
         <source>; CPU s: %1</source>
         <translation>; CPU-s: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="67"/>
+        <location filename="../app/studio/stage_text.cpp" line="84"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="69"/>
+        <location filename="../app/studio/stage_text.cpp" line="86"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1: %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="76"/>
+        <location filename="../app/studio/stage_text.cpp" line="93"/>
         <source>at %1 x %2 px</source>
         <translation>bei %1 x %2 px</translation>
     </message>

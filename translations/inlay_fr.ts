@@ -2698,162 +2698,177 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::StageText</name>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="15"/>
+        <location filename="../app/studio/stage_text.cpp" line="17"/>
         <source>photo</source>
         <translation>photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="16"/>
+        <location filename="../app/studio/stage_text.cpp" line="18"/>
         <source>response</source>
         <translation>réponse</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="17"/>
+        <location filename="../app/studio/stage_text.cpp" line="19"/>
         <source>working copy</source>
         <translation>copie de travail</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="18"/>
+        <location filename="../app/studio/stage_text.cpp" line="20"/>
         <source>camera</source>
         <translation>caméra</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="19"/>
+        <location filename="../app/studio/stage_text.cpp" line="21"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="20"/>
+        <location filename="../app/studio/stage_text.cpp" line="22"/>
         <source>occluders</source>
         <translation>masques d&apos;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="21"/>
+        <location filename="../app/studio/stage_text.cpp" line="23"/>
         <source>surfaces</source>
         <translation>surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="22"/>
+        <location filename="../app/studio/stage_text.cpp" line="24"/>
         <source>room</source>
         <translation>pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="23"/>
+        <location filename="../app/studio/stage_text.cpp" line="25"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="24"/>
+        <location filename="../app/studio/stage_text.cpp" line="26"/>
         <source>shafts</source>
         <translation>rayons de soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="25"/>
+        <location filename="../app/studio/stage_text.cpp" line="27"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="26"/>
+        <location filename="../app/studio/stage_text.cpp" line="28"/>
         <source>vignetting</source>
         <translation>vignetage</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="27"/>
+        <location filename="../app/studio/stage_text.cpp" line="29"/>
         <source>sun ratio</source>
         <translation>rapport d&apos;ombre du soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="28"/>
+        <location filename="../app/studio/stage_text.cpp" line="30"/>
         <source>refine</source>
         <translation>affinage</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="29"/>
+        <location filename="../app/studio/stage_text.cpp" line="31"/>
         <source>lighting refit</source>
         <translation>réajustement de l&apos;éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="34"/>
+        <location filename="../app/studio/stage_text.cpp" line="36"/>
         <source>response check</source>
         <translation>vérification de la courbe de réponse</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="30"/>
+        <location filename="../app/studio/stage_text.cpp" line="32"/>
         <source>photo size</source>
         <translation>taille de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="31"/>
+        <location filename="../app/studio/stage_text.cpp" line="33"/>
         <source>render scene</source>
         <translation>scène de rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="32"/>
+        <location filename="../app/studio/stage_text.cpp" line="34"/>
         <source>objects</source>
         <translation>objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="33"/>
+        <location filename="../app/studio/stage_text.cpp" line="35"/>
         <source>grain</source>
         <translation>grain</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="36"/>
+        <location filename="../app/studio/stage_text.cpp" line="38"/>
         <source>gather</source>
         <translation>collecte</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="37"/>
+        <location filename="../app/studio/stage_text.cpp" line="39"/>
         <source>light fit</source>
         <translation>ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="38"/>
+        <location filename="../app/studio/stage_text.cpp" line="40"/>
         <source>unseen patches</source>
         <translation>zones hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="39"/>
+        <location filename="../app/studio/stage_text.cpp" line="41"/>
         <source>retinex</source>
         <translation>Retinex</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="40"/>
+        <location filename="../app/studio/stage_text.cpp" line="42"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="41"/>
+        <location filename="../app/studio/stage_text.cpp" line="43"/>
         <source>direct light</source>
         <translation>lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="42"/>
+        <location filename="../app/studio/stage_text.cpp" line="44"/>
         <source>fit pixels</source>
         <translation>pixels de l&apos;ajustement</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="43"/>
+        <location filename="../app/studio/stage_text.cpp" line="45"/>
         <source>per-pixel albedo</source>
         <translation>albédo par pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="58"/>
+        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <source>copy, curve: %1</source>
+        <translation>copie, courbe : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <source>copy, sRGB: %1</source>
+        <translation>copie, sRGB : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <source>sRGB: %1</source>
+        <translation>avec sRGB : %1</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="75"/>
         <source>; CPU s: %1</source>
         <translation> ; s CPU : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="67"/>
+        <location filename="../app/studio/stage_text.cpp" line="84"/>
         <source>%1: skipped, %2</source>
         <translation>%1 : ignorée, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="69"/>
+        <location filename="../app/studio/stage_text.cpp" line="86"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1 : %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="76"/>
+        <location filename="../app/studio/stage_text.cpp" line="93"/>
         <source>at %1 x %2 px</source>
         <translation>à %1 x %2 px</translation>
     </message>

@@ -3,6 +3,8 @@
 
 #include <QCoreApplication>
 
+#include <cstring>
+
 namespace inlay::studio {
 namespace {
 
@@ -43,7 +45,23 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "per-pixel albedo"),
 };
 
+// The response check's steps (app/engine/src/pipeline.cpp): the stages of its small copies and
+// those it ran again with sRGB, each name after one of these prefixes.
+struct Prefixed {
+  const char* prefix;
+  const char* text;
+};
+const Prefixed kPrefixed[] = {
+    {"copy, curve: ", QT_TRANSLATE_NOOP("inlay::studio::StageText", "copy, curve: %1")},
+    {"copy, sRGB: ", QT_TRANSLATE_NOOP("inlay::studio::StageText", "copy, sRGB: %1")},
+    {"sRGB: ", QT_TRANSLATE_NOOP("inlay::studio::StageText", "sRGB: %1")},
+};
+
 QString nameOf(const std::string& name) {
+  for (const Prefixed& p : kPrefixed)
+    if (name.starts_with(p.prefix))
+      return QCoreApplication::translate(kContext, p.text)
+          .arg(nameOf(name.substr(std::strlen(p.prefix))));
   for (const char* n : kNames)
     if (name == n) return QCoreApplication::translate(kContext, n);
   return QString::fromStdString(name);
@@ -82,6 +100,7 @@ QString stageLine(const StageRecord& stage) {
 QStringList stageNames() {
   QStringList out;
   for (const char* n : kNames) out << QString::fromUtf8(n);
+  for (const Prefixed& p : kPrefixed) out << QString::fromUtf8(p.text);
   return out;
 }
 
