@@ -4,13 +4,13 @@
 #include "batch.h"
 #include "inlay/engine/pipeline.h"
 #include "inlay/lighting/estimate.h"
+#include "inlay/modeling/cpu_time.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/image_io.h"
 #include "inlay/modeling/scene_file.h"
 #include "inlay/render/session.h"
 
 #include <nlohmann/json.hpp>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -1011,13 +1011,6 @@ DecomposeOptions solverOptions(const std::string& solver) {
   o.holdInvalid = solver == "diagonal+hold";
   if (solver == "scalar") o.diagonalSteps = false, o.pyramidLevels = 0, o.maxIterations = 30;
   return o;
-}
-
-double processCpuSeconds() {
-  rusage ru{};
-  getrusage(RUSAGE_SELF, &ru);
-  return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-         1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
 int commandDecompose(const std::string& scenePath, const Args& a) {

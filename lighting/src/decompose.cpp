@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include "inlay/modeling/parallel.h"
+#include "inlay/modeling/vectorize.h"
 
 #include <algorithm>
 #include <array>
@@ -27,17 +28,6 @@ void forRows(int H, F&& f) {
     for (int y = r.begin(); y < r.end(); ++y) f(y);
   });
 }
-
-// The per-pixel kernels' loops carry no dependence between iterations (GCC: skip the run-time
-// alias checks that stop the vectoriser; lighting/CMakeLists.txt adds -fno-trapping-math so that
-// the clamps are if-converted).
-#if defined(__GNUC__) && !defined(__clang__)
-#define INLAY_IVDEP _Pragma("GCC ivdep")
-#define INLAY_INLINE __attribute__((always_inline))
-#else
-#define INLAY_IVDEP
-#define INLAY_INLINE
-#endif
 
 // Offsets of a pixel's four neighbours in a row-major plane; 0 where the neighbour is outside the
 // image, so that its difference to the pixel is 0 (the Neumann boundary of decompose.h's
@@ -532,7 +522,8 @@ void PrimalDualSolver::iterate(Decomposition& out, Clock::time_point t0) {
       }
       const bool residualsSmall = primal < opt.tolerance && dual < opt.tolerance;
       const bool objectiveFlat = std::abs(fPrev - f) <= opt.objectiveTolerance * std::abs(f);
-      const bool gapSmall = 2 * remainingDecrease(out.history, 3 * N) <= opt.gapTolerance;
+      const bool gapSmall = opt.gapTolerance > 0 &&
+                            2 * remainingDecrease(out.history, 3 * N) <= opt.gapTolerance;
       if (it >= opt.minIterations && (residualsSmall || objectiveFlat || gapSmall)) {
         out.converged = true;
         convergedBy = residualsSmall ? "residuals" : objectiveFlat ? "objective" : "objective gap";

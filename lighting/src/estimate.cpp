@@ -8,6 +8,7 @@
 #include <ceres/ceres.h>
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include "inlay/modeling/cpu_time.h"
 #include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
 
@@ -87,13 +88,6 @@ class Fingerprint {
  private:
   uint64_t h_ = 0xcbf29ce484222325ull;
 };
-
-// User and system CPU seconds of the process, every thread.
-double processCpuSeconds() {
-  timespec ts{};
-  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0;
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 // Adds the wall and CPU seconds of its lifetime to the step `name` of `steps` (LightingEstimate::
 // steps), which it appends on its first call.

@@ -8,6 +8,7 @@
 #include "inlay/render/denoise.h"
 
 #include "inlay/modeling/parallel.h"
+#include "inlay/modeling/vectorize.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/task_arena.h>
@@ -20,15 +21,6 @@
 #include <map>
 #include <memory>
 #include <mutex>
-
-// The filter's loops carry no dependence between iterations (GCC: skip the run-time alias checks
-// that would stop the vectoriser; render/CMakeLists.txt adds -fno-trapping-math so the weights'
-// selects are if-converted).
-#if defined(__GNUC__) && !defined(__clang__)
-#define INLAY_IVDEP _Pragma("GCC ivdep")
-#else
-#define INLAY_IVDEP
-#endif
 
 namespace inlay {
 

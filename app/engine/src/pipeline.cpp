@@ -13,6 +13,7 @@
 #include "inlay/render/grain.h"
 #include "inlay/render/path_tracer.h"
 #include "inlay/render/scene.h"
+#include "inlay/modeling/cpu_time.h"
 #include "inlay/modeling/parallel.h"
 #include "inlay/modeling/subdivide.h"
 
@@ -44,13 +45,6 @@ Error inFileKeys(Error e) {
 }
 
 using Clock = std::chrono::steady_clock;
-
-// User and system CPU seconds of the process, every thread.
-double processCpuSeconds() {
-  timespec ts{};
-  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return 0;
-  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
