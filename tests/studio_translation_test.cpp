@@ -602,6 +602,26 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
   QCOMPARE(stageLine(checkSteps),
            QStringLiteral("Prüfung der Kamerakennlinie: 20.100 s, CPU 38.900 s; CPU-s: Kopie, Kurve: "
                           "Beleuchtung 0.20, mit sRGB: Lichtanpassung 0.40"));
+  // The check's verdict: a curve's parameters inside parentheses are one part, not three.
+  const StageRecord verdict = stageThatRan(
+      "response check",
+      "the curve kept: the light fit's residual with the fitted toe_shoulder (power 0.990, toe "
+      "0.000, shoulder 998) is 0.1234, with sRGB 0.2345; on 160 x 120 copies 0.1000 against "
+      "0.2000, log ratio -0.123 beyond 0.100");
+  QCOMPARE(stageLine(verdict),
+           QStringLiteral("Prüfung der Kamerakennlinie: 20.100 s, CPU 38.900 s (Kurve behalten: das "
+                          "Residuum der Lichtanpassung ist mit der angepassten Kurve toe_shoulder "
+                          "(Exponent 0.990, Fuß 0.000, Schulter 998) 0.1234, mit sRGB 0.2345; auf "
+                          "Kopien von 160 x 120 px 0.1000 gegen 0.2000, Log-Verhältnis -0.123 "
+                          "jenseits von 0.100)"));
+  // A warning's curve reads in the language too.
+  QCOMPARE(engineText(QStringLiteral(
+               "camera response: the fitted toe_shoulder (power 0.990, toe 0.000, shoulder 996) "
+               "lies at the family's bound (shoulder): the camera's curve may be stronger than the "
+               "family holds")),
+           QStringLiteral("Kamerakennlinie: die angepasste Kurve toe_shoulder (Exponent 0.990, Fuß "
+                          "0.000, Schulter 996) liegt an der Grenze ihrer Familie (shoulder): die "
+                          "Kurve der Kamera kann stärker sein, als die Familie fasst"));
   // A detail with a part no template knows stays English whole, never half translated.
   QCOMPARE(stageLine(unknown),
            QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "

@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include <algorithm>
 #include <optional>
 #include <vector>
 
@@ -126,6 +127,8 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the flat regions cover too few codes to measure the noise against them"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo shows no measurable noise"),
+    // A fitted curve as CameraResponse::describe() gives it (inside the sentences above).
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)"),
 };
 
 // The preparation's stage lines (app/engine/src/pipeline.cpp: the reasons a scene skips a
@@ -198,6 +201,16 @@ const char* const kStageTexts[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 object"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 objects"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "none"),
+    // The response check's verdict (pipeline.cpp, checkRecord): both light fits' residuals, then
+    // the small copies' comparison.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the curve kept: %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "sRGB kept: %1"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the light fit's residual with the fitted %1 is %2"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "with sRGB %1; on %2 x %3 copies %4 against %5"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "with sRGB %1; no quick comparison"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "log ratio %1 beyond %2"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "log ratio %1 within %2"),
 };
 
 // Heads of "HEAD: REST" that are words rather than keys: translated, then the rest.
@@ -301,11 +314,30 @@ QString stagePart(const QString& english) {
   return translateWhole(english, stagePatterns(), stagePart).value_or(english);
 }
 
+// `text` split at each ", " outside parentheses: a part such as a curve's "(power 0.990, toe
+// 0.000, shoulder 998)" stays whole.
+QStringList splitOutsideParentheses(const QString& text, const QString& separator) {
+  QStringList parts;
+  qsizetype start = 0;
+  int depth = 0;
+  for (qsizetype i = 0; i < text.size(); ++i) {
+    if (text[i] == QLatin1Char('(')) ++depth;
+    else if (text[i] == QLatin1Char(')')) depth = std::max(0, depth - 1);
+    else if (depth == 0 && QStringView(text).mid(i).startsWith(separator)) {
+      parts << text.mid(start, i - start);
+      start = i + separator.size();
+      i = start - 1;
+    }
+  }
+  parts << text.mid(start);
+  return parts;
+}
+
 }  // namespace
 
 QString engineStageText(const QString& english) {
   const QString separator = QStringLiteral(", ");
-  QStringList parts = english.split(separator);
+  QStringList parts = splitOutsideParentheses(english, separator);
   for (QString& part : parts) {
     // A scene key ("camera.response": the curve the file gave) reads the same in every language.
     if (!part.contains(QLatin1Char(' ')) && part.contains(QLatin1Char('.'))) continue;
