@@ -2454,130 +2454,130 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="36"/>
-        <source>code</source>
-        <translation>Code</translation>
+        <location filename="../app/studio/response_dock.cpp" line="72"/>
+        <source>code (up: stops above mid-grey)</source>
+        <translation>Code (nach oben: Blendenstufen über Mittelgrau)</translation>
     </message>
 </context>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="71"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Verwendet die übliche sRGB-Kurve, wie in der Liste gewählt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="73"/>
+        <location filename="../app/studio/response_dock.cpp" line="109"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Verwendet eine gerade (lineare) Kurve, wie in der Liste gewählt: die Werte des Fotos werden direkt als Licht gelesen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="76"/>
+        <location filename="../app/studio/response_dock.cpp" line="112"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Verwendet die Kurve aus der Szenendatei.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="69"/>
+        <location filename="../app/studio/response_dock.cpp" line="105"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>Das Foto enthält bereits Lichtwerte (EXR/HDR): es braucht keine Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="79"/>
+        <location filename="../app/studio/response_dock.cpp" line="115"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Foto zeigt zu wenig, um seine eigene Tonwertkurve zu schätzen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <location filename="../app/studio/response_dock.cpp" line="120"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Beleuchtung des Raums erklärt das Foto mit ihr besser als mit der aus dem Foto geschätzten Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="88"/>
+        <location filename="../app/studio/response_dock.cpp" line="124"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Rauschen des Fotos zeigt keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="91"/>
+        <location filename="../app/studio/response_dock.cpp" line="127"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Kanten des Fotos zeigen keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="94"/>
+        <location filename="../app/studio/response_dock.cpp" line="130"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus dem Rauschen des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="97"/>
+        <location filename="../app/studio/response_dock.cpp" line="133"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus den Kanten des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="143"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Wirken die eingefügten Objekte neben dem Raum zu hell oder zu flach, wählen Sie oben in der Liste sRGB und vergleichen Sie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="110"/>
+        <location filename="../app/studio/response_dock.cpp" line="146"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Wurde das Foto bearbeitet oder stammt es von einem Handy mit starkem Kontrast, kann seine Kurve trotzdem abweichen: wählen Sie oben in der Liste Linear (es liest den Kontrast des Fotos weicher) und vergleichen Sie die Schattierung der Objekte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="120"/>
+        <location filename="../app/studio/response_dock.cpp" line="156"/>
         <source>Curve: %1</source>
         <translation>Kurve: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="123"/>
+        <location filename="../app/studio/response_dock.cpp" line="159"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="127"/>
+        <location filename="../app/studio/response_dock.cpp" line="163"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Aus %1 Kanten geschätzt in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="224"/>
+        <location filename="../app/studio/response_dock.cpp" line="260"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="225"/>
+        <location filename="../app/studio/response_dock.cpp" line="261"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="226"/>
+        <location filename="../app/studio/response_dock.cpp" line="262"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="227"/>
+        <location filename="../app/studio/response_dock.cpp" line="263"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="228"/>
+        <location filename="../app/studio/response_dock.cpp" line="264"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="229"/>
+        <location filename="../app/studio/response_dock.cpp" line="265"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="230"/>
+        <location filename="../app/studio/response_dock.cpp" line="266"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="231"/>
+        <location filename="../app/studio/response_dock.cpp" line="267"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Die Parameter der Kurve und was die Schätzung gemessen hat</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="256"/>
+        <location filename="../app/studio/response_dock.cpp" line="292"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>

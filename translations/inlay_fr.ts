@@ -2454,130 +2454,130 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="36"/>
-        <source>code</source>
-        <translation>code</translation>
+        <location filename="../app/studio/response_dock.cpp" line="72"/>
+        <source>code (up: stops above mid-grey)</source>
+        <translation>code (en hauteur : diaphragmes au-dessus du gris moyen)</translation>
     </message>
 </context>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="71"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Utilise la courbe sRGB standard, choisie dans la liste.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="73"/>
+        <location filename="../app/studio/response_dock.cpp" line="109"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Utilise une courbe droite (linéaire), choisie dans la liste : les valeurs de la photo sont lues directement comme de la lumière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="76"/>
+        <location filename="../app/studio/response_dock.cpp" line="112"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Utilise la courbe indiquée dans le fichier de scène.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="69"/>
+        <location filename="../app/studio/response_dock.cpp" line="105"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>La photo contient déjà des valeurs de lumière (EXR/HDR) : elle n&apos;a besoin d&apos;aucune courbe.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="79"/>
+        <location filename="../app/studio/response_dock.cpp" line="115"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>La courbe sRGB standard est conservée : la photo n&apos;en montre pas assez pour estimer sa propre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="84"/>
+        <location filename="../app/studio/response_dock.cpp" line="120"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>La courbe sRGB standard est conservée : l&apos;éclairage de la pièce explique mieux la photo avec elle qu&apos;avec la courbe estimée à partir de la photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="88"/>
+        <location filename="../app/studio/response_dock.cpp" line="124"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : le bruit de la photo ne montre pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="91"/>
+        <location filename="../app/studio/response_dock.cpp" line="127"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : les contours de la photo ne montrent pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="94"/>
+        <location filename="../app/studio/response_dock.cpp" line="130"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après le bruit de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="97"/>
+        <location filename="../app/studio/response_dock.cpp" line="133"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après les contours de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="143"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Si les objets insérés paraissent trop clairs ou trop plats par rapport à la pièce, choisissez sRGB dans la liste ci-dessus et comparez.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="110"/>
+        <location filename="../app/studio/response_dock.cpp" line="146"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Si la photo a été retouchée, ou vient d&apos;un téléphone au contraste marqué, sa courbe peut tout de même différer : choisissez Linéaire dans la liste ci-dessus (elle lit le contraste de la photo plus doux) et comparez l&apos;ombrage des objets.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="120"/>
+        <location filename="../app/studio/response_dock.cpp" line="156"/>
         <source>Curve: %1</source>
         <translation>Courbe : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="123"/>
+        <location filename="../app/studio/response_dock.cpp" line="159"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Estimée d&apos;après le bruit de la photo (%1 niveaux) en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="127"/>
+        <location filename="../app/studio/response_dock.cpp" line="163"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Estimée d&apos;après %1 contours en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="224"/>
+        <location filename="../app/studio/response_dock.cpp" line="260"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="225"/>
+        <location filename="../app/studio/response_dock.cpp" line="261"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="226"/>
+        <location filename="../app/studio/response_dock.cpp" line="262"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="227"/>
+        <location filename="../app/studio/response_dock.cpp" line="263"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="228"/>
+        <location filename="../app/studio/response_dock.cpp" line="264"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="229"/>
+        <location filename="../app/studio/response_dock.cpp" line="265"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="230"/>
+        <location filename="../app/studio/response_dock.cpp" line="266"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="231"/>
+        <location filename="../app/studio/response_dock.cpp" line="267"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Les paramètres de la courbe et ce que l&apos;estimation a mesuré</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="256"/>
+        <location filename="../app/studio/response_dock.cpp" line="292"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>

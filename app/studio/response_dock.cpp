@@ -13,14 +13,47 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+
 namespace inlay::studio {
 
-// The decode curve (code 0..255 across, linear 0..1 up) over the sRGB curve for reference.
+ResponsePlot responsePlot(const CameraResponse& response) {
+  ResponsePlot plot;
+  const auto stopsOf = [](const CameraResponse& r) {
+    std::array<double, 256> out{};
+    const double mid = r.table8()[size_t(kResponsePlotMidCode)];
+    for (size_t k = 0; k < out.size(); ++k) {
+      const double ratio = r.table8()[k] / mid;
+      // Code 0 (and a curve that is not finite) sits on the plot's floor.
+      out[k] = std::isfinite(ratio) && ratio > 0 ? std::log2(ratio) : -kResponsePlotMaxStops;
+    }
+    return out;
+  };
+  plot.curve = stopsOf(response);
+  plot.srgb = stopsOf(CameraResponse::srgb());
+  double top = 0, bottom = 0;
+  for (const auto* c : {&plot.curve, &plot.srgb}) {  // code 0 (no light) left out
+    top = std::max(top, *std::max_element(c->begin() + 1, c->end()));
+    bottom = std::min(bottom, *std::min_element(c->begin() + 1, c->end()));
+  }
+  plot.top = std::ceil(std::clamp(top, 1.0, kResponsePlotMaxStops));
+  plot.bottom = std::floor(std::clamp(bottom, -kResponsePlotMaxStops, -1.0));
+  for (auto* c : {&plot.curve, &plot.srgb}) {
+    for (double& v : *c) v = std::clamp(v, plot.bottom, plot.top);
+    (*c)[0] = plot.bottom;
+  }
+  return plot;
+}
+
+// The decode curve in stops above the code of mid-grey (code across, stops up) over the sRGB
+// curve for reference: a linear axis would show a long shoulder as a line along zero.
 class ResponseCurveView : public QWidget {
  public:
   explicit ResponseCurveView(QWidget* parent) : QWidget(parent) { setMinimumSize(160, 90); }
   void setResponse(const CameraResponse& r) {
-    response_ = r;
+    plot_ = responsePlot(r);
     update();
   }
 
@@ -29,30 +62,35 @@ class ResponseCurveView : public QWidget {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
-    const QRectF area = QRectF(rect()).adjusted(28, 8, -8, -20);
+    const QRectF area = QRectF(rect()).adjusted(34, 8, -8, -20);
+    const auto y = [&](double stops) {
+      return area.bottom() - area.height() * (stops - plot_.bottom) / (plot_.top - plot_.bottom);
+    };
     p.setPen(palette().mid().color());
     p.drawRect(area);
+    p.drawLine(QPointF(area.left(), y(0)), QPointF(area.right(), y(0)));
     p.setPen(palette().text().color());
-    p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 16), Qt::AlignCenter, tr("code"));
-    p.drawText(QRectF(0, area.top(), 26, 16), Qt::AlignRight, QStringLiteral("1"));
-    p.drawText(QRectF(0, area.bottom() - 16, 26, 16), Qt::AlignRight, QStringLiteral("0"));
-    auto curve = [&](const CameraResponse& r) {
-      QPainterPath path;
-      for (int k = 0; k < 256; ++k) {
-        const QPointF q(area.left() + area.width() * k / 255.0,
-                        area.bottom() - area.height() * r.table8()[size_t(k)]);
-        k == 0 ? path.moveTo(q) : path.lineTo(q);
+    p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 16), Qt::AlignCenter,
+               tr("code (up: stops above mid-grey)"));
+    for (double stops : {plot_.top, 0.0, plot_.bottom})
+      p.drawText(QRectF(0, y(stops) - 8, 32, 16), Qt::AlignRight | Qt::AlignVCenter,
+                 stops > 0 ? QStringLiteral("+%1").arg(stops) : QString::number(stops));
+    const auto path = [&](const std::array<double, 256>& stops) {
+      QPainterPath out;
+      for (size_t k = 0; k < stops.size(); ++k) {
+        const QPointF q(area.left() + area.width() * double(k) / 255.0, y(stops[k]));
+        k == 0 ? out.moveTo(q) : out.lineTo(q);
       }
-      return path;
+      return out;
     };
     p.setPen(QPen(palette().mid().color(), 1, Qt::DashLine));
-    p.drawPath(curve(CameraResponse::srgb()));
+    p.drawPath(path(plot_.srgb));
     p.setPen(QPen(palette().highlight().color(), 2));
-    p.drawPath(curve(response_));
+    p.drawPath(path(plot_.curve));
   }
 
  private:
-  CameraResponse response_;
+  ResponsePlot plot_ = responsePlot(CameraResponse::srgb());
 };
 
 namespace {

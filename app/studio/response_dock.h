@@ -11,6 +11,8 @@
 
 #include <QDockWidget>
 
+#include <array>
+
 class QComboBox;
 class QLabel;
 class QToolButton;
@@ -20,6 +22,21 @@ namespace inlay::studio {
 class WrappedLabelFitter;
 
 class ResponseCurveView;
+
+// The code of mid-grey in sRGB (118: linear 0.18), where every plotted curve reads 0 stops:
+// exposure does not change a curve's shape.
+inline constexpr int kResponsePlotMidCode = 118;
+// The plot's vertical range is at most this many stops either way.
+inline constexpr double kResponsePlotMaxStops = 16;
+
+// What the dock's curve draws: each code's decoded radiance in stops above the curve's own at
+// kResponsePlotMidCode, clamped to [bottom, top] (whole stops, the range of both curves; code
+// 0 at the bottom), for the response and for sRGB (dashed, for reference).
+struct ResponsePlot {
+  std::array<double, 256> curve{}, srgb{};
+  double bottom = -1, top = 1;
+};
+ResponsePlot responsePlot(const CameraResponse& response);
 
 // What the dock's note says was decided about the photo's curve, in one plain sentence (the
 // current language).
