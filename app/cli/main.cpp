@@ -915,21 +915,27 @@ const char* cueName(ResponseEstimateOptions::Cue cue) {
                                    : "both";
 }
 
+// The cue `name` (as cueName writes it), or none.
+std::optional<ResponseEstimateOptions::Cue> cueNamed(const std::string& name) {
+  using Cue = ResponseEstimateOptions::Cue;
+  for (const Cue cue : {Cue::Noise, Cue::NoiseColour, Cue::Symmetry, Cue::Colour, Cue::Both})
+    if (name == cueName(cue)) return cue;
+  return std::nullopt;
+}
+
 // RESPONSE.json: the camera response of a scene's photo (its camera.response, estimated when
 // "auto") or of a bare photo (estimated), with the 256 codes' linear values.
 int commandResponse(const std::string& input, const Args& a) {
   if (a.output.empty()) return usageError("response needs -o RESPONSE.json");
   ResponseEstimateOptions o;
   o.cancel = &gCancel;
-  if (a.cue.empty()) {
-  } else if (a.cue == "symmetry") o.cue = ResponseEstimateOptions::Cue::Symmetry;
-  else if (a.cue == "colour") o.cue = ResponseEstimateOptions::Cue::Colour;
-  else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
-  else if (a.cue == "noise") o.cue = ResponseEstimateOptions::Cue::Noise;
-  else if (a.cue == "noise-colour") o.cue = ResponseEstimateOptions::Cue::NoiseColour;
-  else
-    return usageError("--cue " + a.cue +
-                      ": expected 'noise', 'noise-colour', 'symmetry', 'colour' or 'both'");
+  if (!a.cue.empty()) {
+    const auto cue = cueNamed(a.cue);
+    if (!cue)
+      return usageError("--cue " + a.cue +
+                        ": expected 'noise', 'noise-colour', 'symmetry', 'colour' or 'both'");
+    o.cue = *cue;
+  }
   if (a.edgeWeight) o.edgeWeight = *a.edgeWeight;
   if (a.prior) o.priorWeight = *a.prior;
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
