@@ -109,9 +109,10 @@ struct ResponseEstimateOptions {
   //   NoiseColour: the noise level plus edgeWeight times the colour edges' residual, in one fit
   //     (the noise sees toes and shoulders but hardly a power; the colour mixtures see the
   //     power where there are edges). Without minEdges clean edges it is the noise level
-  //     alone. The noise cue's evidence gate and acceptance apply to its noise part and its
-  //     sum (opt-in diagnostic; measured in docs/camera-response.md, "The noise and the edge
-  //     mixtures in one fit").
+  //     alone. The noise cue's acceptance, evidence gate and shoulder rule apply to the fit's
+  //     noise part. Opt-in diagnostic: on the camera variants it does not beat Noise and it
+  //     gives real photos implausible curves (docs/camera-response.md, "The noise and the
+  //     edge mixtures in one fit").
   enum class Cue { Symmetry, Colour, Both, Noise, NoiseColour };
   // The noise level is (part of) the cue.
   bool noiseCue() const { return cue == Cue::Noise || cue == Cue::NoiseColour; }
@@ -121,16 +122,16 @@ struct ResponseEstimateOptions {
   Cue cue = Cue::Noise;
   // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
   // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
-  // half A by bench_response.py).
+  // half A by bench_response.py; noise-colour 0.02, the colour cue's light pull, not tuned).
   std::optional<double> priorWeight;
   // The same for toe and shoulder (a Gaussian prior on toe / 0.25 and log(1 + shoulder) / 1.5).
-  // Unset: edge cues as priorWeight, noise 0 (the noise cue sees toes and shoulders; the power
+  // Unset: edge cues as priorWeight, noise cues 0 (the noise sees toes and shoulders; the power
   // hardly).
   std::optional<double> shapePriorWeight;
   int minEdges = 8;  // fewer clean edges: sRGB with a warning
   // The fitted curve is kept only when it lowers the cue's residual by at least this fraction
   // of sRGB's; otherwise sRGB (the photo shows no curve clearly different from it). Unset: the
-  // cue's default (edge cues 0.1, noise 0.5).
+  // cue's default (edge cues 0.1, noise cues 0.5 of the noise part: ResponseEstimate::evidence).
   std::optional<double> minImprovement;
   // The three numbers above with the cue's defaults filled in.
   double priorWeightOrDefault() const {
