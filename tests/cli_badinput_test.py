@@ -126,6 +126,13 @@ def main():
     r = run(cli, "response", photo, "-o", out, "--quiet", "--cue", "noise", "--noise-quantile", "0.25")
     check("response --noise-quantile 0.25", r.returncode == 0 and json.load(open(out))["estimate"]["noise_quantile"] == 0.25,
           r.stderr)
+    for w in ("-1", "nan", "x"):
+        r = run(cli, "response", photo, "-o", out, "--cue", "noise-colour", "--edge-weight", w)
+        check("response bad --edge-weight " + w, r.returncode == 2 and "--edge-weight" in r.stderr, r.stderr)
+    r = run(cli, "response", photo, "-o", out, "--quiet", "--cue", "noise-colour", "--edge-weight", "10")
+    est = json.load(open(out)).get("estimate", {}) if r.returncode == 0 else {}
+    check("response --cue noise-colour --edge-weight 10", est.get("cue") == "noise-colour"
+          and est.get("edge_weight") == 10 and "srgb_evidence" in est, r.stderr + json.dumps(est)[:300])
     for d in ("-0.1", "1.5", "nan", "x"):
         r = run(cli, "response", photo, "-o", out, "--max-dark-fill", d)
         check("response bad --max-dark-fill " + d, r.returncode == 2 and "--max-dark-fill" in r.stderr, r.stderr)

@@ -45,7 +45,8 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
                                                      vanishing points, focal length, rotation,
                                                      back wall; --scene keeps what it fixes
-  inlay-cli response SCENE.json|PHOTO -o RESPONSE.json [--cue noise|colour|symmetry|both] [--prior W]
+  inlay-cli response SCENE.json|PHOTO -o RESPONSE.json
+                   [--cue noise|noise-colour|colour|symmetry|both] [--prior W] [--edge-weight E]
                    [--min-improvement F] [--min-srgb-residual R] [--noise-quantile Q]
                    [--max-top-stops S] [--max-dark-fill D] [--evaluate-at P,T,S]
                                                      the camera response (camera.response, or
@@ -194,6 +195,7 @@ struct Args {
       report;          // cue: empty = the default
   std::string solver;  // decompose --solver: empty = the lighting's own decomposition
   std::optional<double> prior, minImprovement, minSrgbResidual, noiseQuantile, maxTopStops, maxDarkFill;
+  std::optional<double> edgeWeight;
   std::string evaluateAt;  // response diagnostics: "power,toe,shoulder"
   bool initialLights = false;
   bool sunsFromBounce = false;  // --suns-from-bounce
@@ -252,9 +254,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
         s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
         s == "--response-quick-margin" || s == "--response-quick-copy" || s == "--clamp-indirect" ||
-        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
-        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
+        s == "--max-dark-fill" || s == "--edge-weight" || s == "--prepare-seed" ||
+        s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
+        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
+        s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -323,6 +326,9 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         a.maxDarkFill = parseNumber<double>(*v);
         if (!a.maxDarkFill || *a.maxDarkFill > 1)
           return "--max-dark-fill: '" + *v + "' is not a number in [0, 1] (0: off)";
+      } else if (s == "--edge-weight") {
+        a.edgeWeight = parseNumber<double>(*v);
+        if (!a.edgeWeight) return "--edge-weight: '" + *v + "' is not a non-negative number";
       } else if (s == "--noise-quantile") {
         a.noiseQuantile = parseNumber<double>(*v);
         if (!a.noiseQuantile || *a.noiseQuantile <= 0 || *a.noiseQuantile > 1)
@@ -902,10 +908,19 @@ int commandEstimate(const std::string& photoPath, const Args& a) {
 
 const char* cueName(ResponseEstimateOptions::Cue cue) {
   using Cue = ResponseEstimateOptions::Cue;
-  return cue == Cue::Noise      ? "noise"
-         : cue == Cue::Symmetry ? "symmetry"
-         : cue == Cue::Colour   ? "colour"
-                                : "both";
+  return cue == Cue::Noise         ? "noise"
+         : cue == Cue::NoiseColour ? "noise-colour"
+         : cue == Cue::Symmetry    ? "symmetry"
+         : cue == Cue::Colour      ? "colour"
+                                   : "both";
+}
+
+// The cue `name` (as cueName writes it), or none.
+std::optional<ResponseEstimateOptions::Cue> cueNamed(const std::string& name) {
+  using Cue = ResponseEstimateOptions::Cue;
+  for (const Cue cue : {Cue::Noise, Cue::NoiseColour, Cue::Symmetry, Cue::Colour, Cue::Both})
+    if (name == cueName(cue)) return cue;
+  return std::nullopt;
 }
 
 // RESPONSE.json: the camera response of a scene's photo (its camera.response, estimated when
@@ -914,12 +929,14 @@ int commandResponse(const std::string& input, const Args& a) {
   if (a.output.empty()) return usageError("response needs -o RESPONSE.json");
   ResponseEstimateOptions o;
   o.cancel = &gCancel;
-  if (a.cue.empty()) {
-  } else if (a.cue == "symmetry") o.cue = ResponseEstimateOptions::Cue::Symmetry;
-  else if (a.cue == "colour") o.cue = ResponseEstimateOptions::Cue::Colour;
-  else if (a.cue == "both") o.cue = ResponseEstimateOptions::Cue::Both;
-  else if (a.cue == "noise") o.cue = ResponseEstimateOptions::Cue::Noise;
-  else return usageError("--cue " + a.cue + ": expected 'noise', 'symmetry', 'colour' or 'both'");
+  if (!a.cue.empty()) {
+    const auto cue = cueNamed(a.cue);
+    if (!cue)
+      return usageError("--cue " + a.cue +
+                        ": expected 'noise', 'noise-colour', 'symmetry', 'colour' or 'both'");
+    o.cue = *cue;
+  }
+  if (a.edgeWeight) o.edgeWeight = *a.edgeWeight;
   if (a.prior) o.priorWeight = *a.prior;
   if (a.minImprovement) o.minImprovement = *a.minImprovement;
   if (a.minSrgbResidual) o.minSrgbResidual = *a.minSrgbResidual;
@@ -985,6 +1002,10 @@ int commandResponse(const std::string& input, const Args& a) {
                      {"segments_found", e.segmentsFound},
                      {"objective", e.objective},
                      {"srgb_objective", e.srgbObjective},
+                     {"evidence", e.evidence},
+                     {"srgb_evidence", e.srgbEvidence},
+                     {"edge_weight", o.edgeWeightOrDefault()},
+                     {"edge_note", e.edgeNote},
                      {"seconds", e.seconds},
                      {"cpu_seconds", e.cpuSeconds},
                      {"history", history}};

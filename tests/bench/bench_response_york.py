@@ -15,8 +15,10 @@ three stops there) or mid_vs_srgb lies outside [1/4, 4].
 Writes OUT/response_york.csv, OUT/response_york.png (every estimated curve per build, sRGB
 dashed; and stops_128_254 per photo) and prints the counts.
 
-usage: bench_response_york.py INLAY_CLI[,LABEL] [INLAY_CLI2[,LABEL2] ...] [--out DIR] [--york DIR]
-                              [--max-stops 6] [--photos P1030004,P1040814]
+usage: bench_response_york.py INLAY_CLI[,LABEL[,ARGS]] [INLAY_CLI2[,LABEL2[,ARGS2]] ...] [--out DIR]
+                              [--york DIR] [--max-stops 6] [--photos P1030004,P1040814]
+ARGS: extra `inlay-cli response` arguments joined by '+' (e.g. --cue+noise-colour+--edge-weight+10),
+so one build can be run with several settings.
 """
 import glob, json, math, os, subprocess, sys
 
@@ -29,12 +31,12 @@ import benchlib  # noqa: E402
 SRGB_128 = ((128 / 255 + 0.055) / 1.055) ** 2.4
 
 
-def one(cli, photo, out_json):
+def one(cli, photo, out_json, extra=()):
     """The response of one photo as `inlay-cli response` writes it (None when it failed)."""
     if os.path.exists(out_json):
         os.remove(out_json)
-    r = subprocess.run([cli, "response", photo, "-o", out_json, "--quiet"], capture_output=True, text=True,
-                       timeout=300)
+    r = subprocess.run([cli, "response", photo, "-o", out_json, "--quiet"] + list(extra), capture_output=True,
+                       text=True, timeout=300)
     if r.returncode != 0 or not os.path.exists(out_json):
         return None, r.stderr.strip()[-200:]
     return json.load(open(out_json)), ""
@@ -96,23 +98,25 @@ def main():
     for a in argv:
         if a.startswith("--"):
             break
-        cli, _, label = a.partition(",")
-        builds.append((os.path.abspath(cli), label or os.path.basename(os.path.dirname(os.path.abspath(cli)))))
+        cli, _, rest = a.partition(",")
+        label, _, extra = rest.partition(",")
+        builds.append((os.path.abspath(cli), label or os.path.basename(os.path.dirname(os.path.abspath(cli))),
+                       extra.split("+") if extra else []))
     photos = sorted(glob.glob(os.path.join(york, "*.jpg")))
     only = opt("--photos", "")
     if only:
         photos = [p for p in photos if any(os.path.basename(p).startswith(o) for o in only.split(","))]
     max_stops = float(opt("--max-stops", "6"))
     rows = []
-    for cli, label in builds:
+    for cli, label, extra in builds:
         for p in photos:
-            j, err = one(cli, p, os.path.join(out, "york_response.json"))
+            j, err = one(cli, p, os.path.join(out, "york_response.json"), extra)
             rows.append(row_of(label, p, j, err, max_stops))
             print(json.dumps({k: v for k, v in rows[-1].items() if k != "table"}), flush=True)
     benchlib.write_csv(os.path.join(out, "response_york.csv"), [{k: v for k, v in r.items() if k != "table"}
                                                                for r in rows])
     plot(os.path.join(out, "response_york.png"), rows, [b[1] for b in builds])
-    for _, label in builds:
+    for _, label, _ in builds:
         sel = [r for r in rows if r["build"] == label]
         fitted = [r for r in sel if r.get("family") == "toe_shoulder"]
         cpu = sorted(r["cpu_s"] for r in sel if isinstance(r.get("cpu_s"), float))

@@ -355,27 +355,43 @@ struct Fit {
     q.shoulder = std::expm1(std::max(0.0, x[2]));
     return q.clamped();
   }
-  // The cue's residual (without the prior): the noise level's distance from a power law, or
-  // the mean robust edge residual.
+  // The cue's residual (without the prior): the noise level's distance from a quadratic
+  // variance, the mean robust edge residual, or (NoiseColour) the first plus edgeWeight times
+  // the colour edges' part of the second.
   double data(const ResponseParams& q) const {
     const CameraResponse f = CameraResponse::toeShoulder(q);
     std::array<double, 256> g;
     for (int k = 0; k < 256; ++k) g[size_t(k)] = f.table8()[size_t(k)];
-    if (options.cue == ResponseEstimateOptions::Cue::Noise) return detail::noiseLevelResidual(*noise, g);
+    using Cue = ResponseEstimateOptions::Cue;
+    if (options.cue == Cue::Noise) return detail::noiseLevelResidual(*noise, g);
+    if (options.cue == Cue::NoiseColour)
+      return detail::noiseLevelResidual(*noise, g) +
+             (edges->empty() ? 0.0 : options.edgeWeightOrDefault() * edgeResidual(g, Cue::Colour));
+    return edgeResidual(g, options.cue);
+  }
+  // The noise level's residual alone (noise cues; 0 otherwise).
+  double noiseData(const ResponseParams& q) const {
+    if (!options.noiseCue()) return 0;
+    const CameraResponse f = CameraResponse::toeShoulder(q);
+    std::array<double, 256> g;
+    for (int k = 0; k < 256; ++k) g[size_t(k)] = f.table8()[size_t(k)];
+    return detail::noiseLevelResidual(*noise, g);
+  }
+  // The mean over the edges of the `cue` residual (Symmetry, Colour or Both), each through a
+  // Cauchy-like cap at its scale (a skew of 0.2; two codes of noise off the colour line), so a
+  // few odd edges cannot dominate; an edge whose middle got lost counts as a bad one (1).
+  double edgeResidual(const std::array<double, 256>& g, ResponseEstimateOptions::Cue cue) const {
+    using Cue = ResponseEstimateOptions::Cue;
+    auto robust = [](double raw, double scale) { return raw / (1 + raw / scale) / scale; };
     double sum = 0;
     int n = 0;
     for (const Edge& e : *edges) {
       const EdgeResiduals r = residualsOf(e, g);
-      double v = 1.0;  // an edge whose middle got lost counts as a bad one
-      if (r.valid) {
-        // Each cue's residual through a Cauchy-like cap at its scale (a skew of 0.2; two codes
-        // of noise off the colour line), so a few odd edges cannot dominate.
-        auto robust = [](double raw, double scale) { return raw / (1 + raw / scale) / scale; };
-        using Cue = ResponseEstimateOptions::Cue;
-        v = options.cue == Cue::Symmetry ? robust(r.symmetry, 0.04)
-            : options.cue == Cue::Colour ? robust(r.colour, 4.0)
-                                         : 0.5 * (robust(r.symmetry, 0.04) + robust(r.colour, 4.0));
-      }
+      double v = 1.0;
+      if (r.valid)
+        v = cue == Cue::Symmetry ? robust(r.symmetry, 0.04)
+            : cue == Cue::Colour ? robust(r.colour, 4.0)
+                                 : 0.5 * (robust(r.symmetry, 0.04) + robust(r.colour, 4.0));
       sum += v, ++n;
     }
     return n ? sum / n : 0;
@@ -503,8 +519,7 @@ double darkFillOf(const std::vector<unsigned char>& codes) {
 
 // Whether the photo's shadows show a contrast curve (ResponseEstimateOptions::maxDarkFill).
 bool darkFillShowsContrast(const ResponseEstimateOptions& options, const ResponseEstimate& out) {
-  return options.cue == ResponseEstimateOptions::Cue::Noise && options.darkFillOn() &&
-         out.darkFill < *options.maxDarkFill;
+  return options.noiseCue() && options.darkFillOn() && out.darkFill < *options.maxDarkFill;
 }
 
 // Keeps the fitted curve in `out` only when it lowers the cue's residual enough, the cue (or
@@ -512,23 +527,23 @@ bool darkFillShowsContrast(const ResponseEstimateOptions& options, const Respons
 // than extrapolated; otherwise sRGB, with the reason in `decision` (and a warning when only the
 // evidence was missing).
 void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& out) {
-  const bool noiseCue = options.cue == ResponseEstimateOptions::Cue::Noise;
+  const bool noiseCue = options.noiseCue();
   const bool contrast = darkFillShowsContrast(options, out);
   const double minImprovement = contrast ? options.darkFillMinImprovement
                                          : options.minImprovementOrDefault();
   char buf[320];
   out.decision = "fitted";
-  if (!(out.objective <= (1 - minImprovement) * out.srgbObjective)) {
+  if (!(out.evidence <= (1 - minImprovement) * out.srgbEvidence)) {
     std::snprintf(buf, sizeof buf,
                   "kept sRGB: the fitted %s lowers the %s residual only from %.4f to %.4f",
-                  out.response.describe().c_str(), noiseCue ? "noise level" : "edge", out.srgbObjective,
-                  out.objective);
+                  out.response.describe().c_str(), noiseCue ? "noise level" : "edge", out.srgbEvidence,
+                  out.evidence);
     out.decision = buf;
-  } else if (out.srgbObjective < options.minSrgbResidualOrDefault() && !contrast) {
+  } else if (out.srgbEvidence < options.minSrgbResidualOrDefault() && !contrast) {
     std::snprintf(buf, sizeof buf,
                   "kept sRGB: the %s residual of sRGB, %.4f, is within what photos read rightly as "
                   "sRGB show (below %.2f), so the fitted %s is not trusted",
-                  noiseCue ? "noise level" : "edge", out.srgbObjective,
+                  noiseCue ? "noise level" : "edge", out.srgbEvidence,
                   options.minSrgbResidualOrDefault(), out.response.describe().c_str());
     out.decision = buf;
     out.warnings.push_back("camera response: too little evidence for a curve other than sRGB (" +
@@ -539,10 +554,11 @@ void acceptOrKeepSrgb(const ResponseEstimateOptions& options, ResponseEstimate& 
                            why.substr(std::string("kept sRGB: ").size()) + "); using sRGB");
   }
   out.darkFillEvidence = contrast && out.decision == "fitted" &&
-                         out.srgbObjective < options.minSrgbResidualOrDefault();
+                         out.srgbEvidence < options.minSrgbResidualOrDefault();
   if (out.decision != "fitted") {
     out.response = CameraResponse::srgb();
     out.objective = out.srgbObjective;
+    out.evidence = out.srgbEvidence;
   } else if (const std::string bound = atBoundOf(out.response.params()); !bound.empty()) {
     out.warnings.push_back("camera response: the fitted " + out.response.describe() +
                            " lies at the family's bound (" + bound +
@@ -628,22 +644,32 @@ ResponseEstimate estimateResponseFromCodes(const ImageF& img, const std::vector<
 
   std::vector<Edge> edges;
   detail::NoiseLevel noise;
-  if (options.cue == ResponseEstimateOptions::Cue::Noise) {
+  if (options.noiseCue()) {
     noise = detail::measureNoiseLevel(codes, img.width, img.height, options.noiseQuantileOrDefault());
     out.noiseBins = int(noise.bins.size());
     if (!noise.undetermined.empty()) return undetermined(noise.undetermined);
-  } else if (std::string why = cleanEdgesOf(img, codes, options, edges, out.segmentsFound);
-             !why.empty()) {
-    out.edgesUsed = int(edges.size());
-    return undetermined(why);
+  }
+  if (options.cue == ResponseEstimateOptions::Cue::NoiseColour) {
+    // The edges where there are enough of them; otherwise the noise level alone.
+    if (std::string why = cleanEdgesOf(img, codes, options, edges, out.segmentsFound); !why.empty()) {
+      out.edgeNote = "the noise level alone: " + why;
+      edges.clear();
+    }
+  } else if (!options.noiseCue()) {
+    if (std::string why = cleanEdgesOf(img, codes, options, edges, out.segmentsFound); !why.empty()) {
+      out.edgesUsed = int(edges.size());
+      return undetermined(why);
+    }
   }
   out.edgesUsed = int(edges.size());
 
   Fit fit{&edges, &noise, options};
   out.srgbObjective = fit.data(ResponseParams{});
+  out.srgbEvidence = options.noiseCue() ? fit.noiseData(ResponseParams{}) : out.srgbObjective;
   if (options.evaluateAt) {
     out.response = CameraResponse::toeShoulder(*options.evaluateAt);
     out.objective = fit.data(out.response.params());
+    out.evidence = options.noiseCue() ? fit.noiseData(out.response.params()) : out.objective;
     out.determined = true;
     out.seconds = seconds();
     return out;
@@ -651,10 +677,11 @@ ResponseEstimate estimateResponseFromCodes(const ImageF& img, const std::vector<
   auto improved = [&](double v) { out.history.emplace_back(seconds(), v); };
   const std::optional<ResponseParams> fitted = searchParams(fit, options.cancel, improved);
   if (!fitted) return undetermined("cancelled");
-  if (options.cue == ResponseEstimateOptions::Cue::Noise)
+  if (options.noiseCue())
     for (const detail::NoiseBin& b : noise.bins) out.noiseLevel.push_back({b.code, b.sigma});
   out.response = CameraResponse::toeShoulder(*fitted);
   out.objective = fit.data(*fitted);
+  out.evidence = options.noiseCue() ? fit.noiseData(*fitted) : out.objective;
   out.determined = true;
   acceptOrKeepSrgb(options, out);
   out.seconds = seconds();

@@ -26,6 +26,7 @@
 #include "inlay/modeling/core.h"
 #include "inlay/modeling/image.h"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -104,33 +105,46 @@ struct ResponseEstimateOptions {
   //   Noise: the photo's noise variance, decoded, is a non-negative quadratic a + b x + c x^2
   //     of the linear radiance (read, shot and gain or sampling noise), which a wrong curve
   //     bends (Matsushita and Lin 2007); needs flat regions over a range of codes and
-  //     measurable noise.
-  enum class Cue { Symmetry, Colour, Both, Noise };
+  //     measurable noise;
+  //   NoiseColour: the noise level plus edgeWeight times the colour edges' residual, in one fit
+  //     (the noise sees toes and shoulders but hardly a power; the colour mixtures see the
+  //     power where there are edges). Without minEdges clean edges it is the noise level
+  //     alone. The noise cue's acceptance, evidence gate and shoulder rule apply to the fit's
+  //     noise part. Opt-in diagnostic: on the camera variants it does not beat Noise and it
+  //     gives real photos implausible curves (docs/camera-response.md, "The noise and the
+  //     edge mixtures in one fit").
+  enum class Cue { Symmetry, Colour, Both, Noise, NoiseColour };
+  // The noise level is (part of) the cue.
+  bool noiseCue() const { return cue == Cue::Noise || cue == Cue::NoiseColour; }
   // The noise level with its evidence gate (minSrgbResidual): it keeps sRGB on every plain
   // render and lowers half A's object RMSE under random cameras, where the colour edges (the
   // old default) keep sRGB on every photo (docs/camera-response.md).
   Cue cue = Cue::Noise;
   // Weight of the pull toward sRGB's power (a Gaussian prior on (power - 1) / 0.25), relative
   // to the cue's residual. Unset: the cue's own default (edge cues 2, noise 0.1; chosen on
-  // half A by bench_response.py).
+  // half A by bench_response.py; noise-colour 0.02, the colour cue's light pull, not tuned).
   std::optional<double> priorWeight;
   // The same for toe and shoulder (a Gaussian prior on toe / 0.25 and log(1 + shoulder) / 1.5).
-  // Unset: edge cues as priorWeight, noise 0 (the noise cue sees toes and shoulders; the power
+  // Unset: edge cues as priorWeight, noise cues 0 (the noise sees toes and shoulders; the power
   // hardly).
   std::optional<double> shapePriorWeight;
   int minEdges = 8;  // fewer clean edges: sRGB with a warning
   // The fitted curve is kept only when it lowers the cue's residual by at least this fraction
   // of sRGB's; otherwise sRGB (the photo shows no curve clearly different from it). Unset: the
-  // cue's default (edge cues 0.1, noise 0.5).
+  // cue's default (edge cues 0.1, noise cues 0.5 of the noise part: ResponseEstimate::evidence).
   std::optional<double> minImprovement;
   // The three numbers above with the cue's defaults filled in.
-  double priorWeightOrDefault() const { return priorWeight.value_or(cue == Cue::Noise ? 0.1 : 2.0); }
+  double priorWeightOrDefault() const {
+    return priorWeight.value_or(cue == Cue::NoiseColour ? 0.02 : noiseCue() ? 0.1 : 2.0);
+  }
   double shapePriorWeightOrDefault() const {
-    return shapePriorWeight.value_or(cue == Cue::Noise ? 0.0 : priorWeightOrDefault());
+    return shapePriorWeight.value_or(noiseCue() ? 0.0 : priorWeightOrDefault());
   }
-  double minImprovementOrDefault() const {
-    return minImprovement.value_or(cue == Cue::Noise ? 0.5 : 0.1);
-  }
+  double minImprovementOrDefault() const { return minImprovement.value_or(noiseCue() ? 0.5 : 0.1); }
+  // NoiseColour: the weight of the colour edges' mean robust residual (0 to 1 per edge) against
+  // the noise level's residual (an RMS log deviation). Unset: 1.
+  std::optional<double> edgeWeight;
+  double edgeWeightOrDefault() const { return std::max(0.0, edgeWeight.value_or(1.0)); }
   // Noise cue: a curve is fitted only when sRGB's residual is at least this (the RMS log
   // deviation of the decoded noise variance from a quadratic), i.e. when the noise contradicts
   // sRGB more than it does on any photo that is sRGB (half A's plain photos and the dev rooms
@@ -138,9 +152,7 @@ struct ResponseEstimateOptions {
   // brightness alone, which a long shoulder mimics). Unset: 0.5 for the noise cue
   // (docs/camera-response.md), 0 (no check) for the edge cues.
   std::optional<double> minSrgbResidual;
-  double minSrgbResidualOrDefault() const {
-    return minSrgbResidual.value_or(cue == Cue::Noise ? 0.5 : 0.0);
-  }
+  double minSrgbResidualOrDefault() const { return minSrgbResidual.value_or(noiseCue() ? 0.5 : 0.0); }
   // A fitted curve must show what it claims about the bright half of the codes: one that spans
   // more than maxTopStops stops between codes 128 and 254 (sRGB spans 2.2; a real camera's
   // shoulder adds two to three) is kept only when the photo's noise was measured at no fewer
@@ -188,6 +200,13 @@ struct ResponseEstimate {
   int segmentsFound = 0;
   double objective = 0;      // the fit's mean edge residual at the result (without prior)
   double srgbObjective = 0;  // the same for plain sRGB
+  // What the acceptance (minImprovement) and the evidence gate (minSrgbResidual) compare: the
+  // noise level's residual at the result and for sRGB for the noise cues (objective and
+  // srgbObjective without the edges for NoiseColour), objective and srgbObjective otherwise.
+  double evidence = 0;
+  double srgbEvidence = 0;
+  // NoiseColour without enough clean edges: why the fit used the noise level alone.
+  std::string edgeNote;
   // Noise cue: the measured noise level (code, sigma in codes) per bin, increasing code.
   std::vector<std::array<double, 2>> noiseLevel;
   // The photo's 1st percentile of sRGB-decoded luminance over its median, in [0, 1] (1 when
