@@ -192,7 +192,7 @@ struct Args {
   std::string command;
   std::vector<std::string> positional;
   std::string output, layers, progressCsv, albedo, direct, gathered, physical, method = "ours",
-      sceneForEstimate;
+                                                                               sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, replaceRadiance, surfaceAlbedo, cue,
       report;          // cue: empty = the default
   std::string solver;  // decompose --solver: empty = the lighting's own decomposition
@@ -248,16 +248,17 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       return std::string(argv[++i]);
     };
     if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" || s == "--albedo" ||
-        s == "--direct" || s == "--gathered" || s == "--physical" || s == "--method" || s == "--scene" || s == "--spp" ||
-        s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
-        s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
-        s == "--replace-radiance" || s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" ||
-        s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
-        s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
-        s == "--response-quick-margin" || s == "--response-quick-copy" || s == "--clamp-indirect" ||
-        s == "--max-dark-fill" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
-        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
+        s == "--direct" || s == "--gathered" || s == "--physical" || s == "--method" || s == "--scene" ||
+        s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
+        s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
+        s == "--replace-albedo" || s == "--cue" || s == "--replace-radiance" ||
+        s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
+        s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
+        s == "--working-mp" || s == "--max-top-stops" || s == "--response-quick-margin" ||
+        s == "--response-quick-copy" || s == "--clamp-indirect" || s == "--max-dark-fill" ||
+        s == "--prepare-seed" || s == "--keep-better-fit-tolerance" || s == "--refit-min-move" ||
+        s == "--fit-unseen-ceiling" || s == "--caustic-photons" || s == "--unseen-ceiling" ||
+        s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
