@@ -1879,11 +1879,12 @@ TEST(Lighting, SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite) {
     std::array<SunRoomAlbedo, 2> a;
     for (const bool rule : {false, true}) {
       a[rule] = sunRoomAlbedo(r, k.sun, sky, k.leftWall, rule ? kUnseenCeilingAlbedo : 0.0);
-      std::printf("%s, window %s, ceiling at least %.2f: albedo MAE %.4f scale %.3f, sky %.2f %.2f "
-                  "%.2f, sun %.2f %.2f %.2f, note %s\n",
-                  k.name, k.leftWall ? "left" : "back", rule ? kUnseenCeilingAlbedo : 0.0, a[rule].mae,
-                  a[rule].scale, a[rule].sky.x(), a[rule].sky.y(), a[rule].sky.z(), a[rule].sun.x(),
-                  a[rule].sun.y(), a[rule].sun.z(), a[rule].noted ? "yes" : "no");
+      std::printf(
+          "%s, window %s, ceiling at least %.2f: albedo MAE %.4f scale %.3f, sky %.2f %.2f "
+          "%.2f, sun %.2f %.2f %.2f, note %s\n",
+          k.name, k.leftWall ? "left" : "back", rule ? kUnseenCeilingAlbedo : 0.0, a[rule].mae,
+          a[rule].scale, a[rule].sky.x(), a[rule].sky.y(), a[rule].sky.z(), a[rule].sun.x(),
+          a[rule].sun.y(), a[rule].sun.z(), a[rule].noted ? "yes" : "no");
     }
     SCOPED_TRACE(std::string(k.name) + (k.leftWall ? ", window left" : ", window back"));
     EXPECT_LT(a[1].mae, 0.75 * a[0].mae);  // measured 0.63, 0.44, 0.70
