@@ -24,6 +24,10 @@ lighting/src/estimate.cpp anchoredRetinex), so a global scale error of ours is t
 Writes OUT/sun_albedo.csv and OUT/sun_albedo.png (per room: the regions, |error|, log2 of ours /
 truth, of Gamma / truth's, of the fit's direct / truth's); prints a Markdown table.
 
+A CLI without --physical (a build before it) gets NaN in the light fit's columns. --rooms takes
+any rooms (a room without a sun has no sunlit regions): the "all" rows are the albedo MAE of ours
+and Retinex per room, as bench_albedo.py scores them.
+
 usage: bench_sun_albedo.py INLAY_CLI [--rooms d4,t04,t10] [--out DIR]
 """
 import json, os, subprocess, sys, tempfile
@@ -55,13 +59,18 @@ def run_cli(cli, room, tmp):
     subprocess.run(["/usr/bin/python3", os.path.join(benchlib.shared_dir(), "tools", "harness.py"),
                     "scene", room, scene], check=True, capture_output=True)
     f = {k: os.path.join(tmp, k + ".exr") for k in ("ours", "direct", "gathered", "physical", "retinex")}
-    subprocess.run([cli, "decompose", scene, "--albedo", f["ours"], "--direct", f["direct"],
-                    "--gathered", f["gathered"], "--physical", f["physical"], "--quiet"], check=True,
-                   capture_output=True)
+    cmd = [cli, "decompose", scene, "--albedo", f["ours"], "--direct", f["direct"], "--gathered", f["gathered"],
+           "--quiet"]
+    # A build before --physical (exit 2 on the option): the light fit's albedo columns are NaN.
+    if subprocess.run(cmd + ["--physical", f["physical"]], capture_output=True).returncode == 2:
+        subprocess.run(cmd, check=True, capture_output=True)
+        f.pop("physical")
     subprocess.run([cli, "decompose", scene, "--albedo", f["retinex"], "--method", "retinex", "--quiet"],
                    check=True, capture_output=True)
     photo = json.load(open(scene))["photo"]
-    return {k: read(p) for k, p in f.items()}, cv2.imread(photo, cv2.IMREAD_UNCHANGED)
+    est = {k: read(p) for k, p in f.items()}
+    est.setdefault("physical", np.full_like(est["ours"], np.nan))
+    return est, cv2.imread(photo, cv2.IMREAD_UNCHANGED)
 
 
 def truth_of(room):
@@ -147,7 +156,8 @@ def room_rows(name, cli):
 
 
 def plot(path, maps):
-    names = ["regions", "|ours - truth|", "log2 ours / truth", "log2 Gamma / truth's", "log2 fit direct / truth's"]
+    names = ["regions: floor orange, walls green, ceiling red (in shade); sunlit purple, sunlit\n"
+             "clipped brown, clipped pink; not scored blue", "|ours - truth|", "log2 ours / truth", "log2 Gamma / truth's", "log2 fit direct / truth's"]
     with benchlib.figure(path, len(maps), 5, figsize=(17, 2.9 * len(maps)), squeeze=False) as ax:
         if ax is None:
             return
@@ -163,7 +173,7 @@ def plot(path, maps):
                    (lg(mp["fit_direct"], tr["direct"]), "coolwarm", -1.5, 1.5)]
             for j, (img, cm, lo, hi) in enumerate(ims):
                 h = ax[i][j].imshow(img, cmap=cm, vmin=lo, vmax=hi)
-                ax[i][j].set_title("%s: %s" % (name, names[j]), fontsize=8)
+                ax[i][j].set_title("%s: %s" % (name, names[j]), fontsize=7 if j == 0 else 8)
                 ax[i][j].axis("off")
                 if j:
                     ax[i][j].figure.colorbar(h, ax=ax[i][j], fraction=0.035)
