@@ -21,7 +21,9 @@ Gamma_true)), true direct (B / (direct_true + Gamma_fit)), both true.
 The decomposition's start takes its scale from the light fit's albedo (the median ratio,
 lighting/src/estimate.cpp anchoredRetinex), so a global scale error of ours is the light fit's.
 
-Writes OUT/sun_albedo.csv and OUT/sun_albedo.png (per room: the regions, |error|, log2 of ours /
+Writes OUT/sun_albedo.csv and OUT/sun_albedo.png (per room: the regions (floor orange, walls
+green, ceiling red in the sun's shade; sunlit purple, sunlit and clipped brown, clipped pink; not
+scored blue), |error|, log2 of ours /
 truth, of Gamma / truth's, of the fit's direct / truth's); prints a Markdown table.
 
 A CLI without --physical (a build before it) gets NaN in the light fit's columns. --rooms takes
@@ -156,8 +158,9 @@ def room_rows(name, cli):
 
 
 def plot(path, maps):
-    names = ["regions: floor orange, walls green, ceiling red (in shade); sunlit purple, sunlit\n"
-             "clipped brown, clipped pink; not scored blue", "|ours - truth|", "log2 ours / truth", "log2 Gamma / truth's", "log2 fit direct / truth's"]
+    # regions: floor orange, walls green, ceiling red (in shade); sunlit purple, sunlit clipped
+    # brown, clipped pink; not scored blue
+    names = ["regions", "|ours - truth|", "log2 ours / truth", "log2 Gamma / truth's", "log2 fit direct / truth's"]
     with benchlib.figure(path, len(maps), 5, figsize=(17, 2.9 * len(maps)), squeeze=False) as ax:
         if ax is None:
             return
@@ -173,7 +176,7 @@ def plot(path, maps):
                    (lg(mp["fit_direct"], tr["direct"]), "coolwarm", -1.5, 1.5)]
             for j, (img, cm, lo, hi) in enumerate(ims):
                 h = ax[i][j].imshow(img, cmap=cm, vmin=lo, vmax=hi)
-                ax[i][j].set_title("%s: %s" % (name, names[j]), fontsize=7 if j == 0 else 8)
+                ax[i][j].set_title("%s: %s" % (name, names[j]), fontsize=8)
                 ax[i][j].axis("off")
                 if j:
                     ax[i][j].figure.colorbar(h, ax=ax[i][j], fraction=0.035)
