@@ -6,6 +6,7 @@
   room-wide ratio within 7 % on d1 and d2 (measured: d1 1.055 and d2 1.040 with the light fit
   reading single pixels; 1.066 and 1.031 with its 9 x 9 window, LightingOptions::fitWindow), and within 12 % on every surface with 2000 pixels
   (it was 6-16 % high when the unseen parts of the room radiated their surface's mean).
+- --physical writes the light fit's per-pixel albedo (the photo's size, in [0, 1], set on the room).
 - The albedo (ours) beats Retinex on those rooms (../shared/tools/score_albedo.py), and a second
   run writes the same albedo bit for bit.
 Exit 77 (skipped) without ../shared.
@@ -65,9 +66,17 @@ def main():
             failures.append("%s: albedo MAE ours %.4f not below Retinex %.4f" % (name, o["mae"], t["mae"]))
         if name.startswith("d1"):
             again = os.path.join(out, name + "_again.exr")
-            subprocess.run([cli, "decompose", sf, "--albedo", again, "--quiet"], check=True)
+            physical = os.path.join(out, name + "_physical.exr")
+            subprocess.run([cli, "decompose", sf, "--albedo", again, "--physical", physical, "--quiet"],
+                           check=True)
             if not np.array_equal(read(albedo), read(again)):
                 failures.append("%s: a second run wrote a different albedo" % name)
+            # --physical: the light fit's per-pixel albedo, the photo's size, in [0, 1] on the room.
+            ph = read(physical)
+            if ph.shape != read(albedo).shape or not np.isfinite(ph).all() or ph.min() < 0 or ph.max() > 1:
+                failures.append("%s: --physical wrote %s, range %.3g..%.3g" % (name, ph.shape, ph.min(), ph.max()))
+            elif not (ph[room] > 0).mean() > 0.9:
+                failures.append("%s: --physical is 0 on %.2f of the room" % (name, 1 - (ph[room] > 0).mean()))
     for f in failures:
         print("FAIL", f)
     return 1 if failures else 0

@@ -1667,7 +1667,9 @@ TEST(Lighting, TheUnseenBounceTermStaysFiniteOnStiffInputs) {
 // two passes, as before, the left (side) wall's sky was 0.70 / 0.74 / 0.81 and its sun 0.61-0.70,
 // as on t04. The truth's ceiling inside the fit (fitUnseenCeilingAlbedo), printed for the record,
 // makes both too bright (1.3-1.5). docs/generalization.md, "The sun room's passes to a fixed
-// point".
+// point". Measured with the fit's unseen ceiling at the walls' mean (the rule before
+// LightingOptions::sunRoomUnseenCeilingAtLeast, whose lights SunRoomAlbedoWithTheUnseenCeiling
+// AtLeastWhite checks).
 TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
   SyntheticRoom r = whiteCeilingSunRoom();
   for (const bool leftWall : {false, true}) {
@@ -1679,6 +1681,7 @@ TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
     ASSERT_LT(opening->visibleShare, 0.5) << "the window must be out of view";
     for (const bool trueCeiling : {false, true}) {
       LightingOptions opt = sunRoomOptions();
+      opt.sunRoomUnseenCeilingAtLeast = 0;  // the walls' mean: the passes' fixed point alone
       if (trueCeiling) opt.fitUnseenCeilingAlbedo = r.albedo[1];
       const auto est = estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(),
                                         {sw.sun}, opt);
@@ -1704,9 +1707,11 @@ TEST(Lighting, TheSkyOfAWindowOutOfViewUnderAWhiteUnseenCeiling) {
 // 0.1 (measured 0.01 left, 0.04-0.08 back; stopped after two passes the left was 0.24 lower), and
 // going on to 8 passes changes it by less than 3 % (two, three and four passes swung by up to
 // 0.3 before).
+// (The fit's unseen ceiling at the walls' mean, as above.)
 TEST(Lighting, TheSkyOfASideWindowAloneIsFittedRight) {
   SyntheticRoom r = whiteCeilingSunRoom();
-  const LightingOptions opt = sunRoomOptions();
+  LightingOptions opt = sunRoomOptions();
+  opt.sunRoomUnseenCeilingAtLeast = 0;  // the walls' mean: the passes' fixed point alone
   for (const bool leftWall : {false, true}) {
     SunWindow sw = sunThroughWindow(r, Vec3(3.3, 3.1, 2.7), leftWall);
     sw.window.radiance = Vec3(2.4, 3.05, 4.4);
@@ -1781,6 +1786,10 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
     const bool noted = std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
       return n.find("gathered light still changed") != std::string::npos;
     });
+    // The unseen ceiling (0.88) under walls of 0.45: lifted in the fit's model, and said so.
+    EXPECT_TRUE(std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
+      return n.find("the ceiling the camera does not see") != std::string::npos;
+    })) << k.name;
     std::printf("%s: %d passes%s, sun %.3g %.3g %.3g, sky %s\n", k.name, est->passes,
                 noted ? " (noted: not settled)" : "", sun.x(), sun.y(), sun.z(),
                 lights.empty() ? "none" : std::to_string(est->lights[0].radiance.y()).c_str());
@@ -1793,6 +1802,102 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
     if (lights.size() == 1 && k.sky.norm() == 0) {
       EXPECT_LT(est->lights[0].radiance.maxCoeff(), 1.0) << k.name;
     }
+  }
+}
+
+// The light fit on a synthetic sun room (`r`, the window out of view in the left wall or the back
+// wall, sky `sky`, sun `sun`, the photo clipped at 1) with the fit's model of the unseen ceiling
+// at least `ceilingAtLeast` (LightingOptions::fitUnseenCeilingAtLeast): the sky and the sun over
+// the truth, and the albedo's mean absolute error and its best single scale over the room pixels
+// the photo shows (score_albedo.py's measure). Every albedo and gathered value finite.
+struct SunRoomAlbedo {
+  Vec3 sky, sun;
+  double mae = 0, scale = 0;
+  bool noted = false;  // the estimate's notes say the unseen ceiling was lifted
+};
+SunRoomAlbedo sunRoomAlbedo(SyntheticRoom r, const Vec3& sun, const Vec3& sky, bool leftWall,
+                            double ceilingAtLeast) {
+  SunWindow sw = sunThroughWindow(r, sun, leftWall);
+  sw.window.radiance = sky;
+  const ImageF photo = clippedSunPhoto(r, sw);
+  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+  EXPECT_TRUE(opening.has_value());
+  if (!opening) return {};
+  LightingOptions opt = sunRoomOptions();
+  opt.sunRoomUnseenCeilingAtLeast = ceilingAtLeast;
+  const auto est =
+      estimateLighting(photo, r.camera, r.geometry, {opening->light}, {true}, ImageF(), {sw.sun}, opt);
+  EXPECT_TRUE(est.ok()) << est.error().message();
+  if (!est.ok()) return {};
+  for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
+  SunRoomAlbedo out;
+  out.sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+  out.sun = est->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
+  out.noted = std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
+    return n.find("the ceiling the camera does not see") != std::string::npos;
+  });
+  double err = 0, te = 0, ee = 0;
+  long n = 0;
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      const auto h = r.geometry.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)));
+      if (!h) continue;
+      const Vec3 a = est->albedo.rgb(x, y), t = r.albedo[size_t(h->surfaceId)];
+      EXPECT_TRUE(a.allFinite());
+      err += (a - t).cwiseAbs().sum() / 3, te += t.dot(a), ee += a.dot(a), ++n;
+    }
+  out.mae = n ? err / double(n) : 0;
+  out.scale = ee > 0 ? te / ee : 0;
+  return out;
+}
+
+// The fit's model of a sun room's unseen ceiling at least white grey (LightingOptions::
+// sunRoomUnseenCeilingAtLeast) on the synthetic sun rooms: t04's albedos (walls 0.45, floor 0.5,
+// a white ceiling 0.88 the camera does not see, the patch clipped at about 1.5 times the clip
+// level) with the window out of view in the back wall and in the left wall, and a room with dark
+// walls (0.28, t10's) whose patch clips at about 15 times. With the walls' mean the albedo came
+// out 1.3 to 1.8 times too bright (best scale 0.74, 0.76, 0.56; MAE 0.134, 0.151, 0.309): the
+// sunlit patch's bounce off the ceiling is much of the seen walls' light. With the rule, measured:
+// MAE 0.085, 0.067, 0.215, scale 0.99, 0.95, 0.79; the lights go up (t04's: sky 1.35 / 1.19, sun
+// 1.08-1.13 / 0.99-1.06 of the truth, against 1.02 / 0.94 and 0.79 / 0.77 before), the dark room's
+// stay wrong in colour either way (sky 0.44 / 0.66 / 1.59, sun 0.40 / 0.61 / 2.54). (The dark room
+// with the window in the back wall, not run here for time: MAE 0.207 -> 0.274, worse.)
+// docs/generalization.md, "The sun rooms' albedo: the unseen ceiling".
+TEST(Lighting, SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite) {
+  struct Case {
+    const char* name;
+    Vec3 wall, ceiling, sun;
+    bool leftWall;
+  };
+  const Vec3 sky(2.4, 3.05, 4.4), t04Wall(0.45, 0.45, 0.48), t04Ceiling(0.88, 0.88, 0.9);
+  for (const Case& k : {Case{"t04-like", t04Wall, t04Ceiling, Vec3(3.3, 3.1, 2.7), false},
+                        Case{"t04-like", t04Wall, t04Ceiling, Vec3(3.3, 3.1, 2.7), true},
+                        Case{"dark walls, patch 15x", Vec3(0.28, 0.28, 0.3), Vec3(0.84, 0.81, 0.82),
+                             Vec3(33, 31, 27), true}}) {
+    SyntheticRoom r = roomLookingDown();
+    r.albedo = {Vec3(0.5, 0.47, 0.45), k.ceiling, k.wall, k.wall, k.wall, k.wall};
+    std::array<SunRoomAlbedo, 2> a;
+    for (const bool rule : {false, true}) {
+      a[rule] = sunRoomAlbedo(r, k.sun, sky, k.leftWall, rule ? kUnseenCeilingAlbedo : 0.0);
+      std::printf(
+          "%s, window %s, ceiling at least %.2f: albedo MAE %.4f scale %.3f, sky %.2f %.2f "
+          "%.2f, sun %.2f %.2f %.2f, note %s\n",
+          k.name, k.leftWall ? "left" : "back", rule ? kUnseenCeilingAlbedo : 0.0, a[rule].mae,
+          a[rule].scale, a[rule].sky.x(), a[rule].sky.y(), a[rule].sky.z(), a[rule].sun.x(),
+          a[rule].sun.y(), a[rule].sun.z(), a[rule].noted ? "yes" : "no");
+    }
+    SCOPED_TRACE(std::string(k.name) + (k.leftWall ? ", window left" : ", window back"));
+    EXPECT_LT(a[1].mae, 0.75 * a[0].mae);  // measured 0.63, 0.44, 0.70
+    EXPECT_LT(a[0].scale, 0.8);            // too bright with the walls' mean
+    EXPECT_GT(a[1].scale, 0.75);
+    EXPECT_LT(a[1].scale, 1.1);
+    EXPECT_FALSE(a[0].noted);
+    EXPECT_TRUE(a[1].noted);  // the photo does not show the ceiling: said so
+    if (k.wall.x() > 0.4)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(a[1].sun[c], 1.0, 0.25) << "channel " << c;  // 0.79 / 0.77 with the walls' mean
+        EXPECT_NEAR(a[1].sky[c], 1.0, 0.45) << "channel " << c;  // 1.02 / 0.94 with the walls' mean
+      }
   }
 }
 

@@ -37,9 +37,11 @@ constexpr const char* kUsage = R"(Usage:
   inlay-cli render SCENE.json -o OUT.png [options]   render the inserted objects into the photo
   inlay-cli demo -o OUT.png [options]                render the bundled example scene
   inlay-cli decompose SCENE.json --albedo ALBEDO.exr [--direct DIRECT.exr] [--method ours|retinex]
-            [--gathered G.exr] [--iterations N] [--solver default|scalar|diagonal|diagonal+hold] [--progress-csv F]
+            [--gathered G.exr] [--physical P.exr] [--iterations N] [--solver default|scalar|diagonal|diagonal+hold] [--progress-csv F]
                                                      the room's albedo and direct light; G: the
                                                      gathered indirect light (irradiance / pi),
+                                                     P: the light fit's albedo B / (its lights'
+                                                     direct light + G) per pixel,
                                                      N: the solver's iteration cap, F: objective
                                                      and residuals against time
   inlay-cli estimate PHOTO -o CAMERA.json [--scene SCENE.json]
@@ -190,7 +192,8 @@ int inputError(const Error& e) {
 struct Args {
   std::string command;
   std::vector<std::string> positional;
-  std::string output, layers, progressCsv, albedo, direct, gathered, method = "ours", sceneForEstimate;
+  std::string output, layers, progressCsv, albedo, direct, gathered, physical, method = "ours",
+                                                                               sceneForEstimate;
   std::string lightsJson, replaceLights, replaceAlbedo, replaceRadiance, surfaceAlbedo, cue,
       report;          // cue: empty = the default
   std::string solver;  // decompose --solver: empty = the lighting's own decomposition
@@ -247,17 +250,17 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       return std::string(argv[++i]);
     };
     if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" || s == "--albedo" ||
-        s == "--direct" || s == "--gathered" || s == "--method" || s == "--scene" || s == "--spp" ||
-        s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" || s == "--iterations" ||
-        s == "--lights-json" || s == "--replace-lights" || s == "--replace-albedo" || s == "--cue" ||
-        s == "--replace-radiance" || s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" ||
-        s == "--min-improvement" || s == "--report" || s == "--min-srgb-residual" ||
-        s == "--noise-quantile" || s == "--working-mp" || s == "--max-top-stops" ||
-        s == "--response-quick-margin" || s == "--response-quick-copy" || s == "--clamp-indirect" ||
-        s == "--max-dark-fill" || s == "--edge-weight" || s == "--prepare-seed" ||
-        s == "--keep-better-fit-tolerance" || s == "--refit-min-move" || s == "--fit-unseen-ceiling" ||
-        s == "--caustic-photons" || s == "--unseen-ceiling" || s == "--caustic-radius" ||
-        s == "--pixel-filter" || s == "--solver") {
+        s == "--direct" || s == "--gathered" || s == "--physical" || s == "--method" || s == "--scene" ||
+        s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
+        s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
+        s == "--replace-albedo" || s == "--cue" || s == "--replace-radiance" ||
+        s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
+        s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
+        s == "--working-mp" || s == "--max-top-stops" || s == "--response-quick-margin" ||
+        s == "--response-quick-copy" || s == "--clamp-indirect" || s == "--max-dark-fill" ||
+        s == "--edge-weight" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
+        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
+        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
@@ -266,6 +269,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--albedo") a.albedo = *v;
       else if (s == "--direct") a.direct = *v;
       else if (s == "--gathered") a.gathered = *v;
+      else if (s == "--physical") a.physical = *v;
       else if (s == "--method") a.method = *v;
       else if (s == "--solver") a.solver = *v;
       else if (s == "--scene") a.sceneForEstimate = *v;
@@ -1092,6 +1096,9 @@ int commandDecompose(const std::string& scenePath, const Args& a) {
   }
   if (!a.gathered.empty())
     if (auto st = saveImage(a.gathered, le.gathered, SaveOptions{false}); !st)
+      return inputError(st.error());
+  if (!a.physical.empty())
+    if (auto st = saveImage(a.physical, le.physicalAlbedo, SaveOptions{false}); !st)
       return inputError(st.error());
   // The solver's report goes to stderr even with --quiet when it stopped before converging.
   const bool converged = rerun ? rerun->converged : le.decomposeConverged;

@@ -619,6 +619,8 @@ struct LightingFit {
   // none this pass): its rho entry is the unknown; its prior (the fitted walls' mean, in the
   // fit's unknowns) and, per channel, whether the photo told it (false: it fell back to the prior).
   int freeCeiling = -1;
+  // Set by unseenRoomAlbedo when a sun room's unseen ceiling was lifted above the walls' mean.
+  std::string ceilingFloorNote;
   UnseenAlbedo ceilingPrior;
   std::array<bool, 3> ceilingTold = {false, false, false};
 
@@ -698,6 +700,7 @@ struct LightingFit {
   void averageFitPhoto();
   void chooseGatherSamples();
   bool gatherAndFit();
+  std::vector<Vec3> unseenRoomAlbedo(const std::vector<Vec3>& fitted, const std::vector<double>& weight);
   bool startWarm(ImageF& previousGathered, std::array<double, 3>& previousGain);
   void predictUnseenFromFit();
   bool fit();
@@ -1594,6 +1597,39 @@ bool LightingFit::startWarm(ImageF& previousGathered, std::array<double, 3>& pre
   return true;
 }
 
+// The fit's model of the albedo of the surfaces the camera does not see (albedoOfUnseen, from the
+// fitted ones `fitted` where `weight` > 0). An unseen ceiling takes the oracle
+// fitUnseenCeilingAlbedo when given, else the fit's own estimate (freeCeiling) when it made one,
+// else, in a room with a sun, at least LightingOptions::sunRoomUnseenCeilingAtLeast grey: when
+// that lifts it above the walls' mean, ceilingFloorNote says so (the photo does not show it).
+std::vector<Vec3> LightingFit::unseenRoomAlbedo(const std::vector<Vec3>& fitted,
+                                                const std::vector<double>& weight) {
+  const double atLeast = K > 0 ? std::max(0.0, opt.sunRoomUnseenCeilingAtLeast) : 0.0;
+  std::vector<Vec3> a = albedoOfUnseen(geometry, fitted, weight, atLeast);
+  const std::vector<Vec3> wallsMean = albedoOfUnseen(geometry, fitted, weight, 0.0);
+  const Vec3& told = opt.fitUnseenCeilingAlbedo;
+  const bool oracle = (told.array() >= 0).all() && told.allFinite();
+  ceilingFloorNote.clear();
+  for (size_t s = 0; s < S; ++s) {
+    if (weight[s] != 0 || geometry.surfaces[s].kind != SurfaceKind::Ceiling) continue;
+    if (oracle) {
+      a[s] = told;
+    } else if (freeCeiling >= 0) {
+      const auto& r = rho[size_t(freeCeiling)];
+      a[s] = Vec3(r[0], r[1], r[2]);
+    } else if (a[s] != wallsMean[s]) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "the ceiling the camera does not see: the light fit's model of the room gives it "
+                    "%.2f grey, not the seen walls' mean (%.2f; a sunlit patch lights the ceiling "
+                    "straight on, and the photo does not show its albedo)",
+                    a[s].x(), luminance(wallsMean[s]));
+      ceilingFloorNote = text;
+    }
+  }
+  return a;
+}
+
 // After a pass's fit: the room model (per-surface albedo and mean Gamma, the fitted lights, the
 // patches' gathered light) that the next pass predicts what the camera does not see from.
 void LightingFit::predictUnseenFromFit() {
@@ -1620,17 +1656,7 @@ void LightingFit::predictUnseenFromFit() {
     fitted[s] = Vec3(rho[s][0], rho[s][1], rho[s][2]);
     weight[s] = n[s] > 0 ? 1.0 : 0.0;
   }
-  model.rho = albedoOfUnseen(geometry, fitted, weight);
-  if ((opt.fitUnseenCeilingAlbedo.array() >= 0).all() && opt.fitUnseenCeilingAlbedo.allFinite())
-    for (size_t s = 0; s < S; ++s)
-      if (weight[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
-        model.rho[s] = opt.fitUnseenCeilingAlbedo;
-  // The unseen ceiling the fit estimated: its estimate (every unseen ceiling shares it).
-  if (freeCeiling >= 0)
-    for (size_t s = 0; s < S; ++s)
-      if (weight[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
-        model.rho[s] =
-            Vec3(rho[size_t(freeCeiling)][0], rho[size_t(freeCeiling)][1], rho[size_t(freeCeiling)][2]);
+  model.rho = unseenRoomAlbedo(fitted, weight);
   if (!clippedInBeam.empty()) {
     beamRadiance = predictedBeamRadiance(photo, clippedInBeam, ps, model.rho, out.gathered, E,
                                          out.lights, out.suns, true);
@@ -1654,6 +1680,7 @@ void LightingFit::predictUnseenFromFit() {
 // unseenCeilingTold); a note names the channels the photo did not tell (they took the walls'
 // mean) and an estimate at a bound of [0.05, 1].
 void LightingFit::reportUnseenCeiling() {
+  if (!ceilingFloorNote.empty()) out.notes.push_back(ceilingFloorNote);
   if (freeCeiling < 0) return;
   const auto& a = rho[size_t(freeCeiling)];
   out.unseenCeilingAlbedo = Vec3(a[0], a[1], a[2]);

@@ -51,6 +51,14 @@ inline DecomposeOptions lightingDecomposeOptions() {
   return d;
 }
 
+// The least albedo an unseen ceiling is given (neutral grey; its luminance): ceilings are painted
+// white far more often than walls are, so the walls' mean is a poor guess for them in a room
+// with dark or tiled walls. 0.77 is the median of half A's seven ceilings (scenes-train t01..t13:
+// 0.71-0.86 against walls of 0.34-0.81); an object lit from above by a ceiling the photo does
+// not show came out 6-9 % too dark in linear light with the walls' mean (docs/generalization.md,
+// "The ~6 % darker diffuse object").
+inline constexpr double kUnseenCeilingAlbedo = 0.77;
+
 struct LightingOptions {
   // Cosine-weighted rays per gathered pixel (gather.h); 0: chosen from a pilot so that Gamma's
   // relative standard error per gathered pixel is about gatherNoise.
@@ -153,6 +161,16 @@ struct LightingOptions {
   // where the photo told it (each channel); false (or not told), albedoOfUnseen's rule with
   // kUnseenCeilingAlbedo.
   bool renderFittedCeiling = false;
+  // In a room with a sun, the least albedo (grey, in luminance) the fit's own model of the
+  // unseen room gives a ceiling it makes no estimate of (no unknown for it: no in-view light
+  // whose bounce is apart), as the render does (kUnseenCeilingAlbedo); the walls' mean when they
+  // are brighter. The sunlit patch lights the ceiling straight on, and its bounce off the ceiling
+  // is much of the light on the seen walls, so the walls' mean (t04: 0.45 against 0.89) left
+  // Gamma short and the albedo 1.3 to 1.5 times too bright everywhere. Chosen on synthetic sun
+  // rooms; a room without a sun keeps the walls' mean (there half A's t13 came out worse with
+  // the floor). docs/generalization.md, "The sun rooms' albedo: the unseen ceiling". 0: the
+  // walls' mean (the rule before).
+  double sunRoomUnseenCeilingAtLeast = kUnseenCeilingAlbedo;
   // Room surfaces (by surface id) the user marked glossy or mirror: their pixels show a
   // reflection, not rho * (sum L E + Gamma), so the light fit leaves them out.
   std::vector<bool> nonMatteSurfaces;
@@ -262,22 +280,15 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
                                      const std::vector<Vec2>& outlinePx,
                                      const std::string& keyForMessages);
 
-// The least albedo an unseen ceiling is given (neutral grey; its luminance): ceilings are painted
-// white far more often than walls are, so the walls' mean is a poor guess for them in a room
-// with dark or tiled walls. 0.77 is the median of half A's seven ceilings (scenes-train t01..t13:
-// 0.71-0.86 against walls of 0.34-0.81); an object lit from above by a ceiling the photo does
-// not show came out 6-9 % too dark in linear light with the walls' mean (docs/generalization.md,
-// "The ~6 % darker diffuse object").
-inline constexpr double kUnseenCeilingAlbedo = 0.77;
-
 // The albedo of the surfaces the camera does not see (`weight[s]` = 0, e.g. their seen pixel
 // count): walls take the weighted mean of the walls it sees (the room's mean when it sees none),
 // the ceiling the same or, when that is darker (luminance), `ceilingAtLeast` grey; any other
 // surface the room's mean (0.5 grey when nothing is seen); a seen surface keeps `albedo[s]`.
 // One entry per surface of `geometry`. The render's room takes kUnseenCeilingAlbedo
 // (LightingEstimate::surfaceMeanAlbedo); the light fit's own model of the unseen room passes 0
-// (its per-surface albedos are its passes' intermediate scale: an absolute floor there moved
-// the fitted lights, e.g. a sky through an unseen window 2.0 times its radiance instead of 1.4).
+// in a room without a sun (its per-surface albedos are its passes' intermediate scale: an
+// absolute floor there moved the fitted lights, e.g. a sky through an unseen window 2.0 times its
+// radiance instead of 1.4) and LightingOptions::sunRoomUnseenCeilingAtLeast with a sun.
 std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
                                  const std::vector<double>& weight, double ceilingAtLeast = 0);
 
