@@ -1,0 +1,114 @@
+// The AVX2 lanes of spherical quads (quad_lanes.h) against the scalar SphericalQuad, bit for bit.
+#include "../render/src/quad_lanes.h"
+#include "../render/src/sampling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+using namespace inlay;
+using namespace inlay::detail;
+
+namespace {
+
+struct QuadCase {
+  std::array<Vec3, 4> corner;
+  Vec3 origin;
+  double u0 = 0, u1 = 0;
+};
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// A planar convex quad (a light's emitter) of random size, place and tilt, and a point near or far.
+QuadCase randomCase(std::mt19937_64& gen) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  const Vec3 centre(3 * sym(gen), 2 + sym(gen), 3 * sym(gen));
+  const Vec3 ex = Vec3(sym(gen), 0.2 * sym(gen), sym(gen)).normalized();
+  const Vec3 ey = ex.cross(Vec3(sym(gen), 1.0, sym(gen))).normalized();
+  const double w = 0.05 + unit(gen), h = 0.05 + unit(gen), skew = 0.3 * sym(gen);
+  QuadCase c;
+  c.corner = {centre - w * ex - h * ey, centre + w * ex - h * ey, centre + (w + skew) * ex + h * ey,
+              centre - w * ex + h * ey};
+  const double reach = unit(gen) < 0.5 ? 0.5 : 20.0;
+  c.origin = centre + reach * Vec3(sym(gen), sym(gen) - 1.0, sym(gen));
+  c.u0 = unit(gen), c.u1 = unit(gen);
+  return c;
+}
+
+// Runs the cases through the kernel four at a time; counts the lanes it left to the scalar code
+// and the values that differ from SphericalQuad's bits.
+struct Outcome {
+  int lanes = 0, leftToScalar = 0, differ = 0;
+};
+Outcome compare(const std::vector<QuadCase>& cases) {
+  Outcome out;
+  for (size_t first = 0; first < cases.size(); first += kQuadLanes) {
+    QuadLanes q{};
+    const int n = int(std::min<size_t>(kQuadLanes, cases.size() - first));
+    for (int l = 0; l < kQuadLanes; ++l) {
+      const QuadCase& c = cases[first + size_t(std::min(l, n - 1))];
+      for (int k = 0; k < 4; ++k)
+        for (int a = 0; a < 3; ++a) q.corner[k][a][l] = c.corner[size_t(k)][a];
+      for (int a = 0; a < 3; ++a) q.origin[a][l] = c.origin[a];
+      q.u0[l] = c.u0, q.u1[l] = c.u1;
+    }
+    const int scalarMask = sphericalQuadLanesAvx2(q);
+    for (int l = 0; l < n; ++l) {
+      ++out.lanes;
+      if (scalarMask & (1 << l)) {
+        ++out.leftToScalar;
+        continue;
+      }
+      const QuadCase& c = cases[first + size_t(l)];
+      const SphericalQuad sq(c.corner, c.origin);
+      bool same = sameBits(sq.solidAngle, q.solidAngle[l]);
+      if (sq.solidAngle > 0) {
+        const Vec3 y = sq.sample(c.u0, c.u1);
+        for (int a = 0; a < 3; ++a) same = same && sameBits(y[a], q.y[a][l]);
+      }
+      out.differ += same ? 0 : 1;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(QuadLanes, MatchSphericalQuadBitForBit) {
+  if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the tracer uses the scalar code";
+  std::mt19937_64 gen(20261127);
+  std::vector<QuadCase> cases;
+  for (int i = 0; i < 40001; ++i) cases.push_back(randomCase(gen));  // not a multiple of 4
+  const Outcome o = compare(cases);
+  EXPECT_EQ(o.lanes, 40001);
+  EXPECT_EQ(o.leftToScalar, 0);
+  EXPECT_EQ(o.differ, 0);
+}
+
+TEST(QuadLanes, ExtremeInputsMatchOrGoToTheScalarCode) {
+  if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the tracer uses the scalar code";
+  std::mt19937_64 gen(7);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+  std::vector<QuadCase> cases;
+  for (int i = 0; i < 64; ++i) {
+    QuadCase c = randomCase(gen);
+    switch (i % 8) {
+      case 0: c.origin = c.corner[0]; break;                                      // at a corner
+      case 1: c.origin = 0.5 * (c.corner[0] + c.corner[2]); break;                // on the quad
+      case 2: c.origin = c.corner[0] + 3.0 * (c.corner[1] - c.corner[0]); break;  // in its plane
+      case 3: c.origin *= 1e300; break;
+      case 4: c.origin.x() = inf; break;
+      case 5: c.corner[2].y() = nan; break;
+      case 6: c.u0 = 1.0, c.u1 = 1.0; break;                        // the far ends
+      default: c.origin = c.corner[1] + Vec3(1e-300, 0, 0); break;  // a denormal away
+    }
+    cases.push_back(c);
+  }
+  const Outcome o = compare(cases);
+  EXPECT_EQ(o.lanes, 64);
+  EXPECT_EQ(o.differ, 0);
+}
