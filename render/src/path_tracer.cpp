@@ -56,6 +56,7 @@
 #include "caustic_map.h"
 #include "embree_util.h"
 #include "pixel_filter.h"
+#include "quad_lanes.h"
 #include "room_texture.h"
 #include "sampling.h"
 #include "sun_patch.h"
@@ -679,6 +680,7 @@ struct PathTracer::Impl {
   };
 
   struct PixelSums;
+  struct FirstVertex;
   void startPixel(const DifferentialBuffers& buffers, int x, int y, PixelSums& p) const;
   // The buffers' pixel size in the camera's pixels (a preview's buffers are smaller).
   struct PixelScale {
@@ -689,7 +691,7 @@ struct PathTracer::Impl {
   Vec3 cameraDirection(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
   PathState cameraRay(const Vec3& dir) const;
   void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
-                 const Hit* firstHit, RayCounters& tileCounters) const;
+                 const Hit* firstHit, const FirstVertex* first, RayCounters& tileCounters) const;
   void storePixel(DifferentialBuffers& buffers, int x, int y, int count, const PixelSums& p) const;
   void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
                    RayCounters& tileCounters) const;
@@ -729,8 +731,9 @@ struct PathTracer::Impl {
   };
   struct GuideSums;
   // firstHit: the camera ray's hit in withScene, cast already (in a packet), or null.
+  // first: that hit's vertex and NEE pick, worked out already (firstVertices), or null.
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
-                 const Hit* firstHit = nullptr) const;
+                 const Hit* firstHit = nullptr, const FirstVertex* first = nullptr) const;
   void recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const;
   bool guideReflectance(const Hit& hit, Vec3* albedo) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
@@ -769,6 +772,14 @@ struct PathTracer::Impl {
     double selectProb = 0;
     SourcePoint p;
   };
+  // A camera packet's lane worked out ahead of its path (firstVertices): the first hit's vertex
+  // and, for a BSDF that does not transmit, NEE's source and point there.
+  struct FirstVertex {
+    bool set = false;     // v holds vertexAt() of the first hit
+    bool picked = false;  // pick holds pickSource() for a reflecting BSDF at v
+    Vertex v;
+    SourcePick pick;
+  };
   static void addTo(Mode mode, Sums& out, const Vec3& c) {
     if (mode != Mode::WithoutOnly) out.with += c;
     if (mode != Mode::WithOnly) out.without += c;
@@ -781,12 +792,21 @@ struct PathTracer::Impl {
   // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
   [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                          const SampleRng& rng, Sums& out, Hit* next) const;
+                          const SampleRng& rng, Sums& out, Hit* next, const FirstVertex* first) const;
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
                                    Vec3* y);
   SourcePick pickSource(const Vertex& v, const Lobe& lobe) const;
+  SourcePick chooseSource(const Vertex& v, const Vec3& selectNormal) const;
+  void finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u, SourcePoint& p) const;
+  // Several lanes' near lights in SIMD lanes (quad_lanes.h): set by the constructor when the CPU
+  // runs AVX2 (quadLanesEnabled()).
+  bool quadLanes = false;
+  void firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs, FirstVertex* out,
+                     RayCounters& tileCounters) const;
+  bool nearQuad(const SourcePick& pick, const Vec3& from) const;
+  void pickNearQuads(int n, FirstVertex* const* lanes) const;
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SourcePick& pick, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
@@ -891,10 +911,12 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 // otherwise the surface's BSDF, next-event estimation, and the next direction. A non-specular
 // vertex casts the next ray before its NEE (scatterNonSpecular), so the ray's hit waits here.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
-                                 PrimaryRecord* rec, const Hit* firstHit) const {
+                                 PrimaryRecord* rec, const Hit* firstHit,
+                                 const FirstVertex* first) const {
   Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
   bool castAhead = false;
-  for (;; ++st.depth, firstHit = nullptr) {
+  if (!firstHit) first = nullptr;
+  for (;; ++st.depth, firstHit = nullptr, first = nullptr) {
     Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
     if (std::exchange(castAhead, false)) checkTexel(hit);
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
@@ -916,10 +938,10 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       return;
     st.glassVertices += glass ? 1 : 0;
     st.causticChain = glass && st.causticChain != 0 ? 2 : 0;
-    const Vertex v = vertexAt(st, hit, rng);
+    const Vertex v = first && first->set ? first->v : vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
-      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead)) return;
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead, first)) return;
       castAhead = true;
       continue;
     }
@@ -1121,7 +1143,7 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
 // here.
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
                                           const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
-                                          Hit* next) const {
+                                          Hit* next, const FirstVertex* first) const {
   const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
@@ -1131,9 +1153,12 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   // copies its state.
   if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
   // NEE's source and point first: their chain of square roots and divisions (the spherical
-  // quad) does not depend on the bounce's, so the core overlaps the two.
+  // quad) does not depend on the bounce's, so the core overlaps the two. A camera packet's first
+  // vertex may have it already (firstVertices: a BSDF that does not transmit).
   const int64_t pickStart = neeClockNs();
-  const SourcePick pick = nee ? pickSource(v, lobe) : SourcePick{sourceCount(), 0, {}};
+  const SourcePick pick = !nee ? SourcePick{sourceCount(), 0, {}}
+                          : first && first->picked && !bsdf.transmits() ? first->pick
+                                                                        : pickSource(v, lobe);
   out.counters.neeNs += neeClockNs() - pickStart;
   PathState after = st;
   const bool goesOn = bounceFrom(after, v, lobe, nee) && survivesRoulette(after, v);
@@ -1188,14 +1213,20 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
   }
   const LightData& l = lights[li];
   if (!sampledByArea(l, from)) p.solidAngle = sampleBySolidAngle(l, from, u, &p.y);
-  // By area: a rectangle through its edges (one smooth map, so stratified u stay stratified over
-  // it), any other quad through its two triangles.
+  finishAreaLightPoint(l, u, p);
+  return p;
+}
+
+// The rest of an area light's point once its solid-angle sample is known (p.solidAngle > 0, p.y
+// set) or not (p.solidAngle 0): by area, a rectangle through its edges (one smooth map, so
+// stratified u stay stratified over it), any other quad through its two triangles.
+void PathTracer::Impl::finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u,
+                                            SourcePoint& p) const {
   if (p.solidAngle == 0)
     p.y = l.rectangle ? Vec3(l.corner + u[0] * l.edgeX + u[1] * l.edgeY)
                       : sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
   p.normal = l.normal;
   p.radiance = l.radiance;
-  return p;
 }
 
 // A point on area light l uniform in the solid angle it subtends from `from` into *y; returns
@@ -1218,13 +1249,84 @@ double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from
 // squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
 // the BSDF, with a shadow ray.
 PathTracer::Impl::SourcePick PathTracer::Impl::pickSource(const Vertex& v, const Lobe& lobe) const {
-  SourcePick pick;
-  pick.li = sourceCount() == 0
-                ? sourceCount()
-                : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &pick.selectProb);
-  if (pick.li >= sourceCount() || !(pick.selectProb > 0)) pick.li = sourceCount();
-  else pick.p = sampleSource(pick.li, v.point, v.lightPoint());
+  SourcePick pick = chooseSource(v, lobe.selectNormal);
+  if (pick.li < sourceCount()) pick.p = sampleSource(pick.li, v.point, v.lightPoint());
   return pick;
+}
+
+// The source alone (pick.p left unset).
+PathTracer::Impl::SourcePick PathTracer::Impl::chooseSource(const Vertex& v,
+                                                            const Vec3& selectNormal) const {
+  SourcePick pick;
+  pick.li = sourceCount() == 0 ? sourceCount()
+                               : pickLight(v.point, selectNormal, v.pickAndLobe()[0], &pick.selectProb);
+  if (pick.li >= sourceCount() || !(pick.selectProb > 0)) pick.li = sourceCount();
+  return pick;
+}
+
+// A camera packet's first vertices, worked out before each lane's path goes on alone: every room
+// or object hit's vertex (vertexAt) and NEE's source and point there as a BSDF that does not
+// transmit picks them, the near lights' spherical quads (NEE's slowest part, a chain of dependent
+// square roots and divisions each) four at a time in AVX2 lanes, whose chains overlap. The same
+// vertices and points, bit for bit, as the paths would find alone (a transmitting BSDF, whose
+// light selection sees every side, picks again). Only with the lanes, and a path that goes on.
+void PathTracer::Impl::firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs,
+                                     FirstVertex* out, RayCounters& tileCounters) const {
+  if (!quadLanes || options.maxDepth <= 0) return;
+  for (int j = 0; j < n; ++j) {
+    if (hits[j].kind != Hit::Kind::Room && hits[j].kind != Hit::Kind::Object) continue;
+    out[j].v = vertexAt(cameraRay(dirs[j]), hits[j], rngs[j]);
+    out[j].set = true;
+  }
+  const int64_t start = neeClockNs();
+  std::array<FirstVertex*, kPacket> near;
+  int m = 0;
+  for (int j = 0; j < n; ++j) {
+    FirstVertex& f = out[j];
+    if (!f.set) continue;
+    f.pick = chooseSource(f.v, f.v.ngFacing);
+    f.picked = true;
+    if (f.pick.li >= sourceCount()) continue;
+    if (nearQuad(f.pick, f.v.point)) near[size_t(m++)] = &f;
+    else f.pick.p = sampleSource(f.pick.li, f.v.point, f.v.lightPoint());
+  }
+  for (int j = 0; j < m; j += kQuadLanes) pickNearQuads(std::min(kQuadLanes, m - j), &near[size_t(j)]);
+  tileCounters.neeNs += neeClockNs() - start;
+}
+
+// True when NEE's point on the picked source is a spherical quad's: an area light that is not a
+// rectangle, near enough to be sampled by solid angle (sampleSource).
+bool PathTracer::Impl::nearQuad(const SourcePick& pick, const Vec3& from) const {
+  if (pick.li >= lights.size()) return false;
+  const LightData& l = lights[pick.li];
+  return !l.rectangle && !sampledByArea(l, from);
+}
+
+// sampleSource() for n <= kQuadLanes picks of near quads, in the lanes of one kernel call (lanes
+// past n repeat the last pick); a lane the kernel leaves to the scalar code takes it.
+void PathTracer::Impl::pickNearQuads(int n, FirstVertex* const* lanes) const {
+  QuadLanes q;
+  for (int l = 0; l < kQuadLanes; ++l) {
+    const FirstVertex& f = *lanes[std::min(l, n - 1)];
+    const std::array<Vec3, 4>& c = lights[f.pick.li].emitter;
+    for (int a = 0; a < 3; ++a) {
+      for (int k = 0; k < 4; ++k) q.corner[k][a][l] = c[size_t(k)][a];
+      q.origin[a][l] = f.v.point[a];
+    }
+    q.u0[l] = f.v.lightPoint()[0], q.u1[l] = f.v.lightPoint()[1];
+  }
+  const int scalarLanes = sphericalQuadLanesAvx2(q);
+  for (int l = 0; l < n; ++l) {
+    SourcePick& pick = lanes[l]->pick;
+    const std::array<double, 2>& u = lanes[l]->v.lightPoint();
+    if (scalarLanes & (1 << l)) {
+      pick.p = sampleSource(pick.li, lanes[l]->v.point, u);
+      continue;
+    }
+    if (q.solidAngle[l] > kMinSolidAngle)
+      pick.p.solidAngle = q.solidAngle[l], pick.p.y = Vec3(q.y[0][l], q.y[1][l], q.y[2][l]);
+    finishAreaLightPoint(lights[pick.li], u, pick.p);
+  }
 }
 
 // The rest of it, for the source and point `pick` drew.
@@ -1740,6 +1842,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
   d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
   d.packetsSupported = rtcGetDeviceProperty(d.device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
+  d.quadLanes = quadLanesEnabled();
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -1946,11 +2049,12 @@ PathTracer::Impl::PathState PathTracer::Impl::cameraRay(const Vec3& dir) const {
 
 // Traces one sample's path from `st` (its first hit given, or cast here) and adds it to `p`.
 void PathTracer::Impl::addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
-                                 const Hit* firstHit, RayCounters& tileCounters) const {
+                                 const Hit* firstHit, const FirstVertex* first,
+                                 RayCounters& tileCounters) const {
   Sums sums;
   PrimaryRecord rec;
   rec.wantGuide = wantGuide;
-  tracePath(Mode::Shared, st, rng, sums, &rec, firstHit);
+  tracePath(Mode::Shared, st, rng, sums, &rec, firstHit, first);
   tileCounters += sums.counters;
   if (rec.wantGuide) p.guide.add(rec);
   if (!sums.with.allFinite() || !sums.without.allFinite()) {
@@ -2001,7 +2105,7 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
   for (int k = 0; k < count; ++k) {
     const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
     addSample(p, buffers.hasGuides(), cameraRay(cameraDirection(x, y, scale, rng)), rng, nullptr,
-              tileCounters);
+              nullptr, tileCounters);
   }
   storePixel(buffers, x, y, count, p);
 }
@@ -2017,27 +2121,26 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
     startPixel(buffers, x0 + i, y, sums[size_t(i)]), most = std::max(most, count[i]);
   const PixelScale scale = pixelScale(buffers);
   for (int k = 0; k < most; ++k) {
-    auto rngOf = [&](int i) {
-      return SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
-    };
     // The lanes' pixel positions, then their directions two at a time.
     std::array<double, kPacket> px, py;
     std::array<int, kPacket> pixel;
+    std::array<SampleRng, kPacket> rngs;
     int m = 0;
     for (int i = 0; i < n; ++i) {
       if (k >= count[i]) continue;
-      const Vec2 at = cameraPixel(x0 + i, y, scale, rngOf(i));
+      rngs[size_t(m)] = SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
+      const Vec2 at = cameraPixel(x0 + i, y, scale, rngs[size_t(m)]);
       px[size_t(m)] = at.x(), py[size_t(m)] = at.y(), pixel[size_t(m)] = i, ++m;
     }
     std::array<Vec3, kPacket> dirs;
     directionsThroughPixels(scene.camera, m, px.data(), py.data(), dirs.data());
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
-    for (int j = 0; j < m; ++j) {
-      const int i = pixel[size_t(j)];
-      addSample(sums[size_t(i)], buffers.hasGuides(), cameraRay(dirs[size_t(j)]), rngOf(i),
-                &hits[size_t(j)], tileCounters);
-    }
+    std::array<FirstVertex, kPacket> firsts;
+    firstVertices(m, dirs.data(), hits.data(), rngs.data(), firsts.data(), tileCounters);
+    for (int j = 0; j < m; ++j)
+      addSample(sums[size_t(pixel[size_t(j)])], buffers.hasGuides(), cameraRay(dirs[size_t(j)]),
+                rngs[size_t(j)], &hits[size_t(j)], &firsts[size_t(j)], tileCounters);
   }
   for (int i = 0; i < n; ++i)
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);

@@ -102,6 +102,7 @@ inline constexpr PairHashes kPairHashes{};
 // 2^m samples form a (0,m,2)-net.
 class SampleRng {
  public:
+  SampleRng() = default;  // a placeholder (key 0) to assign a pixel's to
   SampleRng(uint32_t x, uint32_t y, uint32_t sample, uint32_t seed)
       : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))),
         sample_(sample),
@@ -146,9 +147,9 @@ class SampleRng {
 
  private:
   static double toUnit(uint32_t bits) { return double(bits >> 8) * (1.0 / 16777216.0); }
-  uint32_t pixelKey_;
-  uint32_t sample_;
-  uint32_t reversedSample_;  // reverseBits(sample_)
+  uint32_t pixelKey_ = 0;
+  uint32_t sample_ = 0;
+  uint32_t reversedSample_ = 0;  // reverseBits(sample_)
 };
 
 // sin x and cos x together for the samplers' angles (2 pi u, a spherical polygon's area): the

@@ -5,11 +5,15 @@
 //     (directionsThroughPixels); per direction;
 //   quad_setup / quad_sample: a quad light's spherical quad seen from a point near it (its two
 //     triangles' solid angles), and one point sampled on it;
+//   quad_point_scalar / _lanes: the same quads' set-up and one point on each (NEE's light point),
+//     one SphericalQuad after the other, and four at a time in AVX2 lanes (quad_lanes.h, the
+//     lanes filled from the quads as the tracer fills them; only where the CPU runs AVX2); per quad;
 //   sincos_chain: sinCos with each call's argument taken from the last one's result (its latency).
 // Writes STEP,ns_per_call,repeats as CSV to stdout: the median of `repeats` timings.
 //
 // usage: bench_render_steps [--repeats 7]
 #include "../../render/src/camera_directions.h"
+#include "../../render/src/quad_lanes.h"
 #include "../../render/src/sampling.h"
 
 #include <algorithm>
@@ -125,6 +129,32 @@ int main(int argc, char** argv) {
            }
            return s;
          }));
+  report("quad_point_scalar", medianNs(repeats, long(n) * 100, [&](long calls) {
+           double s = 0;
+           for (long k = 0; k < calls; ++k) {
+             const size_t i = size_t(k) % n;
+             const SphericalQuad sq(q.quads[i], q.from[i]);
+             if (sq.solidAngle > 0) s += sq.sample(u0[i], u1[i]).x();
+           }
+           return s;
+         }));
+  if (cpuHasAvx2())
+    report("quad_point_lanes", medianNs(repeats, long(n) * 100, [&](long calls) {
+             double s = 0;
+             QuadLanes lanes;
+             for (long k = 0; k < calls; k += kQuadLanes) {
+               for (int l = 0; l < kQuadLanes; ++l) {
+                 const size_t i = size_t(k + l) % n;
+                 for (int a = 0; a < 3; ++a) {
+                   for (int c = 0; c < 4; ++c) lanes.corner[c][a][l] = q.quads[i][size_t(c)][a];
+                   lanes.origin[a][l] = q.from[i][a];
+                 }
+                 lanes.u0[l] = u0[i], lanes.u1[l] = u1[i];
+               }
+               s += double(sphericalQuadLanesAvx2(lanes)) + lanes.y[0][1];
+             }
+             return s;
+           }));
   report("sincos_chain", medianNs(repeats, 5000000, [&](long calls) {
            double x = 0.1, sn = 0, cs = 0;
            for (long k = 0; k < calls; ++k) {
