@@ -803,6 +803,7 @@ struct PathTracer::Impl {
   // Several lanes' near lights in SIMD lanes (quad_lanes.h): set by the constructor when the CPU
   // runs AVX2 (quadLanesEnabled()).
   bool quadLanes = false;
+  bool verticesAhead() const { return quadLanes && options.maxDepth > 0; }
   void firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs, FirstVertex* out,
                      RayCounters& tileCounters) const;
   bool nearQuad(const SourcePick& pick, const Vec3& from) const;
@@ -1269,11 +1270,12 @@ PathTracer::Impl::SourcePick PathTracer::Impl::chooseSource(const Vertex& v,
 // transmit picks them, the near lights' spherical quads (NEE's slowest part, a chain of dependent
 // square roots and divisions each) four at a time in AVX2 lanes, whose chains overlap. The same
 // vertices and points, bit for bit, as the paths would find alone (a transmitting BSDF, whose
-// light selection sees every side, picks again). Only with the lanes, and a path that goes on.
+// light selection sees every side, picks again). Only with the lanes, and paths that go on
+// (verticesAhead()).
 void PathTracer::Impl::firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs,
                                      FirstVertex* out, RayCounters& tileCounters) const {
-  if (!quadLanes || options.maxDepth <= 0) return;
   for (int j = 0; j < n; ++j) {
+    out[j].set = out[j].picked = false;
     if (hits[j].kind != Hit::Kind::Room && hits[j].kind != Hit::Kind::Object) continue;
     out[j].v = vertexAt(cameraRay(dirs[j]), hits[j], rngs[j]);
     out[j].set = true;
@@ -2116,6 +2118,8 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
 void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y, int n, const int* first,
                                     const int* count, uint32_t seed, RayCounters& tileCounters) const {
   std::array<PixelSums, kPacket> sums;
+  std::array<FirstVertex, kPacket> firsts;
+  const bool ahead = verticesAhead();
   int most = 0;
   for (int i = 0; i < n; ++i)
     startPixel(buffers, x0 + i, y, sums[size_t(i)]), most = std::max(most, count[i]);
@@ -2136,11 +2140,10 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
     directionsThroughPixels(scene.camera, m, px.data(), py.data(), dirs.data());
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
-    std::array<FirstVertex, kPacket> firsts;
-    firstVertices(m, dirs.data(), hits.data(), rngs.data(), firsts.data(), tileCounters);
+    if (ahead) firstVertices(m, dirs.data(), hits.data(), rngs.data(), firsts.data(), tileCounters);
     for (int j = 0; j < m; ++j)
       addSample(sums[size_t(pixel[size_t(j)])], buffers.hasGuides(), cameraRay(dirs[size_t(j)]),
-                rngs[size_t(j)], &hits[size_t(j)], &firsts[size_t(j)], tileCounters);
+                rngs[size_t(j)], &hits[size_t(j)], ahead ? &firsts[size_t(j)] : nullptr, tileCounters);
   }
   for (int i = 0; i < n; ++i)
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);
