@@ -56,7 +56,7 @@
 #include "caustic_map.h"
 #include "embree_util.h"
 #include "pixel_filter.h"
-#include "quad_lanes.h"
+#include "simd_lanes.h"
 #include "room_texture.h"
 #include "sampling.h"
 #include "sun_patch.h"
@@ -688,6 +688,7 @@ struct PathTracer::Impl {
   };
   PixelScale pixelScale(const DifferentialBuffers& buffers) const;
   Vec2 cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
+  Vec2 cameraPixelAt(int x, int y, const PixelScale& scale, const std::array<double, 2>& jitter) const;
   Vec3 cameraDirection(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
   PathState cameraRay(const Vec3& dir) const;
   void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
@@ -791,6 +792,7 @@ struct PathTracer::Impl {
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
   // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
   [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
+  static Vertex vertexFrom(const PathState& st, const Hit& hit);
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
                           const SampleRng& rng, Sums& out, Hit* next, const FirstVertex* first) const;
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
@@ -800,11 +802,21 @@ struct PathTracer::Impl {
   SourcePick pickSource(const Vertex& v, const Lobe& lobe) const;
   SourcePick chooseSource(const Vertex& v, const Vec3& selectNormal) const;
   void finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u, SourcePoint& p) const;
-  // Several lanes' near lights in SIMD lanes (quad_lanes.h): set by the constructor when the CPU
-  // runs AVX2 (quadLanesEnabled()).
+  // A camera packet's lanes in AVX2 (simd_lanes.h: the sampler's numbers, the near lights'
+  // points): set by the constructor when the CPU runs AVX2 (simdLanesEnabled()).
   bool quadLanes = false;
   bool verticesAhead() const { return quadLanes && options.maxDepth > 0; }
-  void firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs, FirstVertex* out,
+  // Sample k of a camera packet (packetLanes).
+  struct PacketLanes {
+    int m = 0;                         // lanes
+    std::array<int, kPacket> pixel{};  // lane j: pixel x0 + pixel[j] of the packet's row
+    std::array<SampleRng, kPacket> rngs;
+    std::array<double, kPacket> px{}, py{};
+    SamplerLanes numbers;  // pairs 0 (the jitter) and, ahead, 1 .. 4 (the first vertex's)
+  };
+  void packetLanes(int x0, int y, int n, const int* first, const int* count, int k, uint32_t seed,
+                   const PixelScale& scale, PacketLanes& p) const;
+  void firstVertices(const PacketLanes& lanes, const Vec3* dirs, const Hit* hits, FirstVertex* out,
                      RayCounters& tileCounters) const;
   bool nearQuad(const SourcePick& pick, const Vec3& from) const;
   void pickNearQuads(int n, FirstVertex* const* lanes) const;
@@ -1123,6 +1135,13 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
 
 PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const Hit& hit,
                                                     const SampleRng& rng) const {
+  Vertex v = vertexFrom(st, hit);
+  v.u = rng.get2x4(v.dim / 2);
+  return v;
+}
+
+// The vertex but its random numbers.
+PathTracer::Impl::Vertex PathTracer::Impl::vertexFrom(const PathState& st, const Hit& hit) {
   Vertex v;
   v.point = hit.point;
   v.wo = -st.dir;
@@ -1133,7 +1152,6 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
   if (v.ns.dot(v.ngFacing) < 0) v.ns = -v.ns;
   v.eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
   v.dim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex;
-  v.u = rng.get2x4(v.dim / 2);
   return v;
 }
 
@@ -1272,12 +1290,15 @@ PathTracer::Impl::SourcePick PathTracer::Impl::chooseSource(const Vertex& v,
 // vertices and points, bit for bit, as the paths would find alone (a transmitting BSDF, whose
 // light selection sees every side, picks again). Only with the lanes, and paths that go on
 // (verticesAhead()).
-void PathTracer::Impl::firstVertices(int n, const Vec3* dirs, const Hit* hits, const SampleRng* rngs,
+void PathTracer::Impl::firstVertices(const PacketLanes& lanes, const Vec3* dirs, const Hit* hits,
                                      FirstVertex* out, RayCounters& tileCounters) const {
+  const int n = lanes.m;
   for (int j = 0; j < n; ++j) {
     out[j].set = out[j].picked = false;
     if (hits[j].kind != Hit::Kind::Room && hits[j].kind != Hit::Kind::Object) continue;
-    out[j].v = vertexAt(cameraRay(dirs[j]), hits[j], rngs[j]);
+    out[j].v = vertexFrom(cameraRay(dirs[j]), hits[j]);
+    for (size_t k = 0; k < 4; ++k)  // pairs 1 .. 4 of the packet's numbers (packetLanes)
+      out[j].v.u[k] = {lanes.numbers.u[k + 1][0][j], lanes.numbers.u[k + 1][1][j]};
     out[j].set = true;
   }
   const int64_t start = neeClockNs();
@@ -1844,7 +1865,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
   d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
   d.packetsSupported = rtcGetDeviceProperty(d.device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
-  d.quadLanes = quadLanesEnabled();
+  d.quadLanes = simdLanesEnabled();
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -2027,7 +2048,12 @@ PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuff
 // Where in the camera's pixel frame the camera ray of sample `rng` through pixel (x, y) of the
 // buffers (scaled into that frame by `scale`) leaves.
 Vec2 PathTracer::Impl::cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const {
-  const auto jitter = rng.get2(0);
+  return cameraPixelAt(x, y, scale, rng.get2(0));
+}
+
+// The same for the sample's numbers `jitter` (its pair 0).
+Vec2 PathTracer::Impl::cameraPixelAt(int x, int y, const PixelScale& scale,
+                                     const std::array<double, 2>& jitter) const {
   // The filter's width is in the camera's pixels: a coarse buffer's pixel (a preview, scale > 1)
   // covers several of them and samples its own cell, the box.
   if (scale.x > 1 || scale.y > 1) return Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y);
@@ -2112,6 +2138,42 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
   storePixel(buffers, x, y, count, p);
 }
 
+// Sample k of a packet's pixels x0 + i of row y, those with k < count[i] (lane j: pixel
+// x0 + pixel[j]): each lane's SampleRng and the position its camera ray leaves from. With the
+// lanes (simd_lanes.h), the rngs' keys, the jitter and, when verticesAhead(), the first vertex's
+// four pairs come from one samplerLanesAvx2 call: the same numbers as the rngs draw.
+void PathTracer::Impl::packetLanes(int x0, int y, int n, const int* first, const int* count, int k,
+                                   uint32_t seed, const PixelScale& scale, PacketLanes& p) const {
+  static_assert(kSamplerLanes == kPacket && kFirstVertexDim / 2 + 4 <= kSamplerPairs);
+  p.m = 0;
+  for (int i = 0; i < n; ++i)
+    if (k < count[i]) p.pixel[size_t(p.m++)] = i;
+  SamplerLanes& s = p.numbers;
+  if (quadLanes && p.m > 0) {
+    s.seed = seed, s.pairs = verticesAhead() ? int(kFirstVertexDim / 2 + 4) : 1;
+    for (int q = 0; q < s.pairs; ++q) s.pairHash[q] = SampleRng::pairHash(uint32_t(q));
+    s.sobol1Reversed = &kSobol1Reversed.byByte[0][0];
+    for (int l = 0; l < kSamplerLanes; ++l) {
+      const int i = p.pixel[size_t(std::min(l, p.m - 1))];
+      s.x[l] = uint32_t(x0 + i), s.y[l] = uint32_t(y), s.sample[l] = uint32_t(first[i] + k);
+    }
+    samplerLanesAvx2(s);
+  }
+  for (int j = 0; j < p.m; ++j) {
+    const int x = x0 + p.pixel[size_t(j)];
+    const uint32_t sample = uint32_t(first[p.pixel[size_t(j)]] + k);
+    Vec2 at;
+    if (quadLanes) {
+      p.rngs[size_t(j)] = SampleRng::fromKey(s.pixelKey[j], sample, s.reversedSample[j]);
+      at = cameraPixelAt(x, y, scale, {s.u[0][0][j], s.u[0][1][j]});
+    } else {
+      p.rngs[size_t(j)] = SampleRng(uint32_t(x), uint32_t(y), sample, seed);
+      at = cameraPixel(x, y, scale, p.rngs[size_t(j)]);
+    }
+    p.px[size_t(j)] = at.x(), p.py[size_t(j)] = at.y();
+  }
+}
+
 // Pixels x0 .. x0 + n - 1 (n <= kPacket) of row y, pixel i's samples [first[i], first[i] +
 // count[i]): sample k of every pixel that has it leaves the camera in one packet, then each path
 // goes on alone. A pixel's sums are those renderPixel() gives when the packet finds the same hits.
@@ -2124,26 +2186,20 @@ void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y,
   for (int i = 0; i < n; ++i)
     startPixel(buffers, x0 + i, y, sums[size_t(i)]), most = std::max(most, count[i]);
   const PixelScale scale = pixelScale(buffers);
+  PacketLanes lanes;
   for (int k = 0; k < most; ++k) {
-    // The lanes' pixel positions, then their directions two at a time.
-    std::array<double, kPacket> px, py;
-    std::array<int, kPacket> pixel;
-    std::array<SampleRng, kPacket> rngs;
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      if (k >= count[i]) continue;
-      rngs[size_t(m)] = SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
-      const Vec2 at = cameraPixel(x0 + i, y, scale, rngs[size_t(m)]);
-      px[size_t(m)] = at.x(), py[size_t(m)] = at.y(), pixel[size_t(m)] = i, ++m;
-    }
+    // The lanes' numbers and pixel positions, then their directions two at a time.
+    packetLanes(x0, y, n, first, count, k, seed, scale, lanes);
+    const int m = lanes.m;
     std::array<Vec3, kPacket> dirs;
-    directionsThroughPixels(scene.camera, m, px.data(), py.data(), dirs.data());
+    directionsThroughPixels(scene.camera, m, lanes.px.data(), lanes.py.data(), dirs.data());
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
-    if (ahead) firstVertices(m, dirs.data(), hits.data(), rngs.data(), firsts.data(), tileCounters);
+    if (ahead) firstVertices(lanes, dirs.data(), hits.data(), firsts.data(), tileCounters);
     for (int j = 0; j < m; ++j)
-      addSample(sums[size_t(pixel[size_t(j)])], buffers.hasGuides(), cameraRay(dirs[size_t(j)]),
-                rngs[size_t(j)], &hits[size_t(j)], ahead ? &firsts[size_t(j)] : nullptr, tileCounters);
+      addSample(sums[size_t(lanes.pixel[size_t(j)])], buffers.hasGuides(), cameraRay(dirs[size_t(j)]),
+                lanes.rngs[size_t(j)], &hits[size_t(j)], ahead ? &firsts[size_t(j)] : nullptr,
+                tileCounters);
   }
   for (int i = 0; i < n; ++i)
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);

@@ -3,7 +3,7 @@
 // operation is the scalar code's, lane by lane, in its order: Eigen's dot product as (x + y) + z,
 // the cross product by its components, a normalisation as a division by the square root, the
 // branches as selects. Nothing here is inline in a header the rest of the build shares.
-#include "quad_lanes.h"
+#include "simd_lanes.h"
 
 #if defined(__AVX2__)
 #include <immintrin.h>

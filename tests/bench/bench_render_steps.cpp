@@ -6,14 +6,14 @@
 //   quad_setup / quad_sample: a quad light's spherical quad seen from a point near it (its two
 //     triangles' solid angles), and one point sampled on it;
 //   quad_point_scalar / _lanes: the same quads' set-up and one point on each (NEE's light point),
-//     one SphericalQuad after the other, and four at a time in AVX2 lanes (quad_lanes.h, the
+//     one SphericalQuad after the other, and four at a time in AVX2 lanes (simd_lanes.h, the
 //     lanes filled from the quads as the tracer fills them; only where the CPU runs AVX2); per quad;
 //   sincos_chain: sinCos with each call's argument taken from the last one's result (its latency).
 // Writes STEP,ns_per_call,repeats as CSV to stdout: the median of `repeats` timings.
 //
 // usage: bench_render_steps [--repeats 7]
 #include "../../render/src/camera_directions.h"
-#include "../../render/src/quad_lanes.h"
+#include "../../render/src/simd_lanes.h"
 #include "../../render/src/sampling.h"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
-// The AVX2 lanes of spherical quads (quad_lanes.h) against the scalar SphericalQuad, bit for bit.
-#include "../render/src/quad_lanes.h"
+// The AVX2 lanes (simd_lanes.h) against the scalar code, bit for bit: spherical quads against
+// SphericalQuad, the sampler against SampleRng, the tracer with them against the tracer without.
+#include "../render/src/simd_lanes.h"
 #include "../render/src/sampling.h"
 #include "render_test_scenes.h"
 #include "inlay/render/path_tracer.h"
@@ -115,6 +116,38 @@ TEST(QuadLanes, ExtremeInputsMatchOrGoToTheScalarCode) {
   EXPECT_EQ(o.differ, 0);
 }
 
+// Eight lanes' SampleRng numbers (pixels, samples and seeds at random, pairs from the camera's
+// jitter to beyond the pair-hash table) against SampleRng::get2's bits.
+TEST(SamplerLanes, MatchSampleRngBitForBit) {
+  if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the tracer uses the scalar code";
+  std::mt19937 gen(18);
+  int differ = 0, compared = 0;
+  for (int round = 0; round < 2000; ++round) {
+    SamplerLanes s;
+    s.seed = gen();
+    s.pairs = 1 + round % kSamplerPairs;
+    const uint32_t firstPair = round % 3 == 0 ? 0u : round % 3 == 1 ? gen() % 300u : gen();
+    for (int k = 0; k < s.pairs; ++k) s.pairHash[k] = SampleRng::pairHash(firstPair + uint32_t(k));
+    s.sobol1Reversed = &kSobol1Reversed.byByte[0][0];
+    for (int l = 0; l < kSamplerLanes; ++l)
+      s.x[l] = gen() % 5000u, s.y[l] = gen() % 5000u, s.sample[l] = round % 2 ? gen() : gen() % 64u;
+    samplerLanesAvx2(s);
+    for (int l = 0; l < kSamplerLanes; ++l) {
+      const SampleRng rng(s.x[l], s.y[l], s.sample[l], s.seed);
+      const SampleRng fromKey = SampleRng::fromKey(s.pixelKey[l], s.sample[l], s.reversedSample[l]);
+      for (int k = 0; k < s.pairs; ++k) {
+        const auto u = rng.get2(firstPair + uint32_t(k)), v = fromKey.get2(firstPair + uint32_t(k));
+        for (int c = 0; c < 2; ++c) {
+          ++compared;
+          differ += sameBits(u[size_t(c)], s.u[k][c][l]) && sameBits(u[size_t(c)], v[size_t(c)]) ? 0 : 1;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 90000);
+  EXPECT_EQ(differ, 0);
+}
+
 namespace {
 
 // A room under a trapezoid ceiling light (not a rectangle: Arvo's spherical quad, near for most
@@ -143,9 +176,9 @@ DifferentialBuffers renderRoom(bool lanes) {
   TracerOptions opt;
   opt.maxDepth = 3;
   opt.roughGlassNee = true;
-  setQuadLanesEnabled(lanes);
+  setSimdLanesEnabled(lanes);
   PathTracer tracer(s, opt);
-  setQuadLanesEnabled(true);
+  setSimdLanesEnabled(true);
   DifferentialBuffers b(w, h);
   b.enableGuides();
   EXPECT_TRUE(tracer.render(b, 0, 4, 11));
