@@ -742,13 +742,14 @@ struct PathTracer::Impl {
   // tracePath's steps.
   // A surface vertex as the steps after its hit see it: the normals turned to the side the
   // path arrived from, the ray offset, the vertex's first random dimension and its four pairs
-  // of random numbers, drawn at once (SampleRng::get2x4).
+  // of random numbers, drawn at once (SampleRng::get2x4). Left unset on construction (a camera
+  // packet keeps eight, FirstVertex): vertexFrom() sets all but u, vertexAt() all.
   struct Vertex {
     Vec3 point, wo, ngFacing, ns;
-    bool frontSide = true;  // the path arrived on the side the geometric normal points to
-    double eps = 0;
-    uint32_t dim = 0;
-    std::array<std::array<double, 2>, 4> u{};  // pairs dim / 2 + 0 .. 3: the roles below
+    bool frontSide;  // the path arrived on the side the geometric normal points to
+    double eps;
+    uint32_t dim;
+    std::array<std::array<double, 2>, 4> u;  // pairs dim / 2 + 0 .. 3: the roles below
     const std::array<double, 2>& lightPoint() const { return u[0]; }   // NEE's point on the source
     const std::array<double, 2>& direction() const { return u[1]; }    // the BSDF's direction
     const std::array<double, 2>& pickAndLobe() const { return u[2]; }  // light pick, BSDF lobe
@@ -808,10 +809,10 @@ struct PathTracer::Impl {
   bool verticesAhead() const { return quadLanes && options.maxDepth > 0; }
   // Sample k of a camera packet (packetLanes).
   struct PacketLanes {
-    int m = 0;                         // lanes
-    std::array<int, kPacket> pixel{};  // lane j: pixel x0 + pixel[j] of the packet's row
+    int m = 0;                       // lanes
+    std::array<int, kPacket> pixel;  // lane j: pixel x0 + pixel[j] of the packet's row
     std::array<SampleRng, kPacket> rngs;
-    std::array<double, kPacket> px{}, py{};
+    std::array<double, kPacket> px, py;
     SamplerLanes numbers;  // pairs 0 (the jitter) and, ahead, 1 .. 4 (the first vertex's)
   };
   void packetLanes(int x0, int y, int n, const int* first, const int* count, int k, uint32_t seed,
