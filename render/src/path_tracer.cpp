@@ -805,8 +805,8 @@ struct PathTracer::Impl {
   void finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u, SourcePoint& p) const;
   // A camera packet's lanes in AVX2 (simd_lanes.h: the sampler's numbers, the near lights'
   // points): set by the constructor when the CPU runs AVX2 (simdLanesEnabled()).
-  bool quadLanes = false;
-  bool verticesAhead() const { return quadLanes && options.maxDepth > 0; }
+  bool simdLanes = false;
+  bool verticesAhead() const { return simdLanes && options.maxDepth > 0; }
   // Sample k of a camera packet (packetLanes).
   struct PacketLanes {
     int m = 0;                       // lanes
@@ -1866,7 +1866,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
   d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
   d.packetsSupported = rtcGetDeviceProperty(d.device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
-  d.quadLanes = simdLanesEnabled();
+  d.simdLanes = simdLanesEnabled();
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -2150,7 +2150,7 @@ void PathTracer::Impl::packetLanes(int x0, int y, int n, const int* first, const
   for (int i = 0; i < n; ++i)
     if (k < count[i]) p.pixel[size_t(p.m++)] = i;
   SamplerLanes& s = p.numbers;
-  if (quadLanes && p.m > 0) {
+  if (simdLanes && p.m > 0) {
     s.seed = seed, s.pairs = verticesAhead() ? int(kFirstVertexDim / 2 + 4) : 1;
     for (int q = 0; q < s.pairs; ++q) s.pairHash[q] = SampleRng::pairHash(uint32_t(q));
     s.sobol1Reversed = &kSobol1Reversed.byByte[0][0];
@@ -2164,7 +2164,7 @@ void PathTracer::Impl::packetLanes(int x0, int y, int n, const int* first, const
     const int x = x0 + p.pixel[size_t(j)];
     const uint32_t sample = uint32_t(first[p.pixel[size_t(j)]] + k);
     Vec2 at;
-    if (quadLanes) {
+    if (simdLanes) {
       p.rngs[size_t(j)] = SampleRng::fromKey(s.pixelKey[j], sample, s.reversedSample[j]);
       at = cameraPixelAt(x, y, scale, {s.u[0][0][j], s.u[0][1][j]});
     } else {
