@@ -56,6 +56,7 @@
 #include "caustic_map.h"
 #include "embree_util.h"
 #include "pixel_filter.h"
+#include "simd_lanes.h"
 #include "room_texture.h"
 #include "sampling.h"
 #include "sun_patch.h"
@@ -679,6 +680,7 @@ struct PathTracer::Impl {
   };
 
   struct PixelSums;
+  struct FirstVertex;
   void startPixel(const DifferentialBuffers& buffers, int x, int y, PixelSums& p) const;
   // The buffers' pixel size in the camera's pixels (a preview's buffers are smaller).
   struct PixelScale {
@@ -686,10 +688,11 @@ struct PathTracer::Impl {
   };
   PixelScale pixelScale(const DifferentialBuffers& buffers) const;
   Vec2 cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
+  Vec2 cameraPixelAt(int x, int y, const PixelScale& scale, const std::array<double, 2>& jitter) const;
   Vec3 cameraDirection(int x, int y, const PixelScale& scale, const SampleRng& rng) const;
   PathState cameraRay(const Vec3& dir) const;
   void addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
-                 const Hit* firstHit, RayCounters& tileCounters) const;
+                 const Hit* firstHit, const FirstVertex* first, RayCounters& tileCounters) const;
   void storePixel(DifferentialBuffers& buffers, int x, int y, int count, const PixelSums& p) const;
   void renderPixel(DifferentialBuffers& buffers, int x, int y, int firstSample, int count, uint32_t seed,
                    RayCounters& tileCounters) const;
@@ -729,8 +732,9 @@ struct PathTracer::Impl {
   };
   struct GuideSums;
   // firstHit: the camera ray's hit in withScene, cast already (in a packet), or null.
+  // first: that hit's vertex and NEE pick, worked out already (firstVertices), or null.
   void tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out, PrimaryRecord* rec,
-                 const Hit* firstHit = nullptr) const;
+                 const Hit* firstHit = nullptr, const FirstVertex* first = nullptr) const;
   void recordGuide(const PathState& st, const Hit& hit, PrimaryRecord& rec) const;
   bool guideReflectance(const Hit& hit, Vec3* albedo) const;
   void addObjectsEffect(PathState st, const SampleRng& rng, Sums& out) const;
@@ -738,13 +742,14 @@ struct PathTracer::Impl {
   // tracePath's steps.
   // A surface vertex as the steps after its hit see it: the normals turned to the side the
   // path arrived from, the ray offset, the vertex's first random dimension and its four pairs
-  // of random numbers, drawn at once (SampleRng::get2x4).
+  // of random numbers, drawn at once (SampleRng::get2x4). Left unset on construction (a camera
+  // packet keeps eight, FirstVertex): vertexFrom() sets all but u, vertexAt() all.
   struct Vertex {
     Vec3 point, wo, ngFacing, ns;
-    bool frontSide = true;  // the path arrived on the side the geometric normal points to
-    double eps = 0;
-    uint32_t dim = 0;
-    std::array<std::array<double, 2>, 4> u{};  // pairs dim / 2 + 0 .. 3: the roles below
+    bool frontSide;  // the path arrived on the side the geometric normal points to
+    double eps;
+    uint32_t dim;
+    std::array<std::array<double, 2>, 4> u;  // pairs dim / 2 + 0 .. 3: the roles below
     const std::array<double, 2>& lightPoint() const { return u[0]; }   // NEE's point on the source
     const std::array<double, 2>& direction() const { return u[1]; }    // the BSDF's direction
     const std::array<double, 2>& pickAndLobe() const { return u[2]; }  // light pick, BSDF lobe
@@ -769,6 +774,14 @@ struct PathTracer::Impl {
     double selectProb = 0;
     SourcePoint p;
   };
+  // A camera packet's lane worked out ahead of its path (firstVertices): the first hit's vertex
+  // and, for a BSDF that does not transmit, NEE's source and point there.
+  struct FirstVertex {
+    bool set = false;     // v holds vertexAt() of the first hit
+    bool picked = false;  // pick holds pickSource() for a reflecting BSDF at v
+    Vertex v;
+    SourcePick pick;
+  };
   static void addTo(Mode mode, Sums& out, const Vec3& c) {
     if (mode != Mode::WithoutOnly) out.with += c;
     if (mode != Mode::WithOnly) out.without += c;
@@ -780,13 +793,34 @@ struct PathTracer::Impl {
   bool surfaceBsdf(Mode mode, const PathState& st, const Hit& hit, Sums& out, SurfaceBsdf* bsdf) const;
   // Out of line: inlined, its hashes swell tracePath, which camera-only frames run too.
   [[gnu::noinline]] Vertex vertexAt(const PathState& st, const Hit& hit, const SampleRng& rng) const;
+  static Vertex vertexFrom(const PathState& st, const Hit& hit);
   bool scatterNonSpecular(Mode mode, PathState& st, const Vertex& v, const SurfaceBsdf& bsdf,
-                          const SampleRng& rng, Sums& out, Hit* next) const;
+                          const SampleRng& rng, Sums& out, Hit* next, const FirstVertex* first) const;
   bool bounceFrom(PathState& st, const Vertex& v, const Lobe& lobe, bool nee) const;
   SourcePoint sampleSource(size_t li, const Vec3& from, const std::array<double, 2>& u) const;
   static double sampleBySolidAngle(const LightData& l, const Vec3& from, const std::array<double, 2>& u,
                                    Vec3* y);
   SourcePick pickSource(const Vertex& v, const Lobe& lobe) const;
+  SourcePick chooseSource(const Vertex& v, const Vec3& selectNormal) const;
+  void finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u, SourcePoint& p) const;
+  // A camera packet's lanes in AVX2 (simd_lanes.h: the sampler's numbers, the near lights'
+  // points): set by the constructor when the CPU runs AVX2 (simdLanesEnabled()).
+  bool simdLanes = false;
+  bool verticesAhead() const { return simdLanes && options.maxDepth > 0; }
+  // Sample k of a camera packet (packetLanes).
+  struct PacketLanes {
+    int m = 0;                       // lanes
+    std::array<int, kPacket> pixel;  // lane j: pixel x0 + pixel[j] of the packet's row
+    std::array<SampleRng, kPacket> rngs;
+    std::array<double, kPacket> px, py;
+    SamplerLanes numbers;  // pairs 0 (the jitter) and, ahead, 1 .. 4 (the first vertex's)
+  };
+  void packetLanes(int x0, int y, int n, const int* first, const int* count, int k, uint32_t seed,
+                   const PixelScale& scale, PacketLanes& p) const;
+  void firstVertices(const PacketLanes& lanes, const Vec3* dirs, const Hit* hits, FirstVertex* out,
+                     RayCounters& tileCounters) const;
+  bool nearQuad(const SourcePick& pick, const Vec3& from) const;
+  void pickNearQuads(int n, FirstVertex* const* lanes) const;
   void addSourceSample(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe,
                        const SourcePick& pick, Sums& out) const;
   void addSunLight(Mode mode, const PathState& st, const Vertex& v, const Lobe& lobe, Sums& out) const;
@@ -891,10 +925,12 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 // otherwise the surface's BSDF, next-event estimation, and the next direction. A non-specular
 // vertex casts the next ray before its NEE (scatterNonSpecular), so the ray's hit waits here.
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
-                                 PrimaryRecord* rec, const Hit* firstHit) const {
+                                 PrimaryRecord* rec, const Hit* firstHit,
+                                 const FirstVertex* first) const {
   Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
   bool castAhead = false;
-  for (;; ++st.depth, firstHit = nullptr) {
+  if (!firstHit) first = nullptr;
+  for (;; ++st.depth, firstHit = nullptr, first = nullptr) {
     Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
     if (std::exchange(castAhead, false)) checkTexel(hit);
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
@@ -916,10 +952,10 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
       return;
     st.glassVertices += glass ? 1 : 0;
     st.causticChain = glass && st.causticChain != 0 ? 2 : 0;
-    const Vertex v = vertexAt(st, hit, rng);
+    const Vertex v = first && first->set ? first->v : vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
-      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead)) return;
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead, first)) return;
       castAhead = true;
       continue;
     }
@@ -1100,6 +1136,13 @@ bool PathTracer::Impl::surfaceBsdf(Mode mode, const PathState& st, const Hit& hi
 
 PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const Hit& hit,
                                                     const SampleRng& rng) const {
+  Vertex v = vertexFrom(st, hit);
+  v.u = rng.get2x4(v.dim / 2);
+  return v;
+}
+
+// The vertex but its random numbers.
+PathTracer::Impl::Vertex PathTracer::Impl::vertexFrom(const PathState& st, const Hit& hit) {
   Vertex v;
   v.point = hit.point;
   v.wo = -st.dir;
@@ -1110,7 +1153,6 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
   if (v.ns.dot(v.ngFacing) < 0) v.ns = -v.ns;
   v.eps = std::max(rayEpsilon(hit.point), hit.roundOffM);
   v.dim = kFirstVertexDim + uint32_t(st.depth) * kDimsPerVertex;
-  v.u = rng.get2x4(v.dim / 2);
   return v;
 }
 
@@ -1121,7 +1163,7 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexAt(const PathState& st, const H
 // here.
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
                                           const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
-                                          Hit* next) const {
+                                          Hit* next, const FirstVertex* first) const {
   const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
@@ -1131,9 +1173,12 @@ bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex
   // copies its state.
   if (bsdf.kind == Material::Kind::Diffuse && !caustics.empty()) addCausticLight(mode, st, v, bsdf, out);
   // NEE's source and point first: their chain of square roots and divisions (the spherical
-  // quad) does not depend on the bounce's, so the core overlaps the two.
+  // quad) does not depend on the bounce's, so the core overlaps the two. A camera packet's first
+  // vertex may have it already (firstVertices: a BSDF that does not transmit).
   const int64_t pickStart = neeClockNs();
-  const SourcePick pick = nee ? pickSource(v, lobe) : SourcePick{sourceCount(), 0, {}};
+  const SourcePick pick = !nee ? SourcePick{sourceCount(), 0, {}}
+                          : first && first->picked && !bsdf.transmits() ? first->pick
+                                                                        : pickSource(v, lobe);
   out.counters.neeNs += neeClockNs() - pickStart;
   PathState after = st;
   const bool goesOn = bounceFrom(after, v, lobe, nee) && survivesRoulette(after, v);
@@ -1188,14 +1233,20 @@ PathTracer::Impl::SourcePoint PathTracer::Impl::sampleSource(size_t li, const Ve
   }
   const LightData& l = lights[li];
   if (!sampledByArea(l, from)) p.solidAngle = sampleBySolidAngle(l, from, u, &p.y);
-  // By area: a rectangle through its edges (one smooth map, so stratified u stay stratified over
-  // it), any other quad through its two triangles.
+  finishAreaLightPoint(l, u, p);
+  return p;
+}
+
+// The rest of an area light's point once its solid-angle sample is known (p.solidAngle > 0, p.y
+// set) or not (p.solidAngle 0): by area, a rectangle through its edges (one smooth map, so
+// stratified u stay stratified over it), any other quad through its two triangles.
+void PathTracer::Impl::finishAreaLightPoint(const LightData& l, const std::array<double, 2>& u,
+                                            SourcePoint& p) const {
   if (p.solidAngle == 0)
     p.y = l.rectangle ? Vec3(l.corner + u[0] * l.edgeX + u[1] * l.edgeY)
                       : sampleQuadUniform(l.emitter, l.firstTriangleShare, u[0], u[1]);
   p.normal = l.normal;
   p.radiance = l.radiance;
-  return p;
 }
 
 // A point on area light l uniform in the solid angle it subtends from `from` into *y; returns
@@ -1218,13 +1269,88 @@ double PathTracer::Impl::sampleBySolidAngle(const LightData& l, const Vec3& from
 // squared distance (or by power alone, TracerOptions::lightSelection), MIS-weighted against
 // the BSDF, with a shadow ray.
 PathTracer::Impl::SourcePick PathTracer::Impl::pickSource(const Vertex& v, const Lobe& lobe) const {
-  SourcePick pick;
-  pick.li = sourceCount() == 0
-                ? sourceCount()
-                : pickLight(v.point, lobe.selectNormal, v.pickAndLobe()[0], &pick.selectProb);
-  if (pick.li >= sourceCount() || !(pick.selectProb > 0)) pick.li = sourceCount();
-  else pick.p = sampleSource(pick.li, v.point, v.lightPoint());
+  SourcePick pick = chooseSource(v, lobe.selectNormal);
+  if (pick.li < sourceCount()) pick.p = sampleSource(pick.li, v.point, v.lightPoint());
   return pick;
+}
+
+// The source alone (pick.p left unset).
+PathTracer::Impl::SourcePick PathTracer::Impl::chooseSource(const Vertex& v,
+                                                            const Vec3& selectNormal) const {
+  SourcePick pick;
+  pick.li = sourceCount() == 0 ? sourceCount()
+                               : pickLight(v.point, selectNormal, v.pickAndLobe()[0], &pick.selectProb);
+  if (pick.li >= sourceCount() || !(pick.selectProb > 0)) pick.li = sourceCount();
+  return pick;
+}
+
+// A camera packet's first vertices, worked out before each lane's path goes on alone: every room
+// or object hit's vertex (vertexAt) and NEE's source and point there as a BSDF that does not
+// transmit picks them, the near lights' spherical quads (NEE's slowest part, a chain of dependent
+// square roots and divisions each) four at a time in AVX2 lanes, whose chains overlap. The same
+// vertices and points, bit for bit, as the paths would find alone (a transmitting BSDF, whose
+// light selection sees every side, picks again). Only with the lanes, and paths that go on
+// (verticesAhead()).
+void PathTracer::Impl::firstVertices(const PacketLanes& lanes, const Vec3* dirs, const Hit* hits,
+                                     FirstVertex* out, RayCounters& tileCounters) const {
+  const int n = lanes.m;
+  for (int j = 0; j < n; ++j) {
+    out[j].set = out[j].picked = false;
+    if (hits[j].kind != Hit::Kind::Room && hits[j].kind != Hit::Kind::Object) continue;
+    out[j].v = vertexFrom(cameraRay(dirs[j]), hits[j]);
+    for (size_t k = 0; k < 4; ++k)  // pairs 1 .. 4 of the packet's numbers (packetLanes)
+      out[j].v.u[k] = {lanes.numbers.u[k + 1][0][j], lanes.numbers.u[k + 1][1][j]};
+    out[j].set = true;
+  }
+  const int64_t start = neeClockNs();
+  std::array<FirstVertex*, kPacket> near;
+  int m = 0;
+  for (int j = 0; j < n; ++j) {
+    FirstVertex& f = out[j];
+    if (!f.set) continue;
+    f.pick = chooseSource(f.v, f.v.ngFacing);
+    f.picked = true;
+    if (f.pick.li >= sourceCount()) continue;
+    if (nearQuad(f.pick, f.v.point)) near[size_t(m++)] = &f;
+    else f.pick.p = sampleSource(f.pick.li, f.v.point, f.v.lightPoint());
+  }
+  for (int j = 0; j < m; j += kQuadLanes) pickNearQuads(std::min(kQuadLanes, m - j), &near[size_t(j)]);
+  tileCounters.neeNs += neeClockNs() - start;
+}
+
+// True when NEE's point on the picked source is a spherical quad's: an area light that is not a
+// rectangle, near enough to be sampled by solid angle (sampleSource).
+bool PathTracer::Impl::nearQuad(const SourcePick& pick, const Vec3& from) const {
+  if (pick.li >= lights.size()) return false;
+  const LightData& l = lights[pick.li];
+  return !l.rectangle && !sampledByArea(l, from);
+}
+
+// sampleSource() for n <= kQuadLanes picks of near quads, in the lanes of one kernel call (lanes
+// past n repeat the last pick); a lane the kernel leaves to the scalar code takes it.
+void PathTracer::Impl::pickNearQuads(int n, FirstVertex* const* lanes) const {
+  QuadLanes q;
+  for (int l = 0; l < kQuadLanes; ++l) {
+    const FirstVertex& f = *lanes[std::min(l, n - 1)];
+    const std::array<Vec3, 4>& c = lights[f.pick.li].emitter;
+    for (int a = 0; a < 3; ++a) {
+      for (int k = 0; k < 4; ++k) q.corner[k][a][l] = c[size_t(k)][a];
+      q.origin[a][l] = f.v.point[a];
+    }
+    q.u0[l] = f.v.lightPoint()[0], q.u1[l] = f.v.lightPoint()[1];
+  }
+  const int scalarLanes = sphericalQuadLanesAvx2(q);
+  for (int l = 0; l < n; ++l) {
+    SourcePick& pick = lanes[l]->pick;
+    const std::array<double, 2>& u = lanes[l]->v.lightPoint();
+    if (scalarLanes & (1 << l)) {
+      pick.p = sampleSource(pick.li, lanes[l]->v.point, u);
+      continue;
+    }
+    if (q.solidAngle[l] > kMinSolidAngle)
+      pick.p.solidAngle = q.solidAngle[l], pick.p.y = Vec3(q.y[0][l], q.y[1][l], q.y[2][l]);
+    finishAreaLightPoint(lights[pick.li], u, pick.p);
+  }
 }
 
 // The rest of it, for the source and point `pick` drew.
@@ -1740,6 +1866,7 @@ PathTracer::PathTracer(const RenderScene& scene, const TracerOptions& options)
   GgxAlbedoTable::instance();       // built here (~30 ms, once per process), never mid-frame
   d.device = sharedTracerDevice();  // the object BVHs are shared between tracers
   d.packetsSupported = rtcGetDeviceProperty(d.device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) != 0;
+  d.simdLanes = simdLanesEnabled();
   d.withScene = rtcNewScene(d.device);
   d.withoutScene = rtcNewScene(d.device);
   d.surfaceCount = unsigned(scene.room.surfaces.size());
@@ -1922,7 +2049,12 @@ PathTracer::Impl::PixelScale PathTracer::Impl::pixelScale(const DifferentialBuff
 // Where in the camera's pixel frame the camera ray of sample `rng` through pixel (x, y) of the
 // buffers (scaled into that frame by `scale`) leaves.
 Vec2 PathTracer::Impl::cameraPixel(int x, int y, const PixelScale& scale, const SampleRng& rng) const {
-  const auto jitter = rng.get2(0);
+  return cameraPixelAt(x, y, scale, rng.get2(0));
+}
+
+// The same for the sample's numbers `jitter` (its pair 0).
+Vec2 PathTracer::Impl::cameraPixelAt(int x, int y, const PixelScale& scale,
+                                     const std::array<double, 2>& jitter) const {
   // The filter's width is in the camera's pixels: a coarse buffer's pixel (a preview, scale > 1)
   // covers several of them and samples its own cell, the box.
   if (scale.x > 1 || scale.y > 1) return Vec2((x + jitter[0]) * scale.x, (y + jitter[1]) * scale.y);
@@ -1946,11 +2078,12 @@ PathTracer::Impl::PathState PathTracer::Impl::cameraRay(const Vec3& dir) const {
 
 // Traces one sample's path from `st` (its first hit given, or cast here) and adds it to `p`.
 void PathTracer::Impl::addSample(PixelSums& p, bool wantGuide, const PathState& st, const SampleRng& rng,
-                                 const Hit* firstHit, RayCounters& tileCounters) const {
+                                 const Hit* firstHit, const FirstVertex* first,
+                                 RayCounters& tileCounters) const {
   Sums sums;
   PrimaryRecord rec;
   rec.wantGuide = wantGuide;
-  tracePath(Mode::Shared, st, rng, sums, &rec, firstHit);
+  tracePath(Mode::Shared, st, rng, sums, &rec, firstHit, first);
   tileCounters += sums.counters;
   if (rec.wantGuide) p.guide.add(rec);
   if (!sums.with.allFinite() || !sums.without.allFinite()) {
@@ -2001,9 +2134,45 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
   for (int k = 0; k < count; ++k) {
     const SampleRng rng(uint32_t(x), uint32_t(y), uint32_t(firstSample + k), seed);
     addSample(p, buffers.hasGuides(), cameraRay(cameraDirection(x, y, scale, rng)), rng, nullptr,
-              tileCounters);
+              nullptr, tileCounters);
   }
   storePixel(buffers, x, y, count, p);
+}
+
+// Sample k of a packet's pixels x0 + i of row y, those with k < count[i] (lane j: pixel
+// x0 + pixel[j]): each lane's SampleRng and the position its camera ray leaves from. With the
+// lanes (simd_lanes.h), the rngs' keys, the jitter and, when verticesAhead(), the first vertex's
+// four pairs come from one samplerLanesAvx2 call: the same numbers as the rngs draw.
+void PathTracer::Impl::packetLanes(int x0, int y, int n, const int* first, const int* count, int k,
+                                   uint32_t seed, const PixelScale& scale, PacketLanes& p) const {
+  static_assert(kSamplerLanes == kPacket && kFirstVertexDim / 2 + 4 <= kSamplerPairs);
+  p.m = 0;
+  for (int i = 0; i < n; ++i)
+    if (k < count[i]) p.pixel[size_t(p.m++)] = i;
+  SamplerLanes& s = p.numbers;
+  if (simdLanes && p.m > 0) {
+    s.seed = seed, s.pairs = verticesAhead() ? int(kFirstVertexDim / 2 + 4) : 1;
+    for (int q = 0; q < s.pairs; ++q) s.pairHash[q] = SampleRng::pairHash(uint32_t(q));
+    s.sobol1Reversed = &kSobol1Reversed.byByte[0][0];
+    for (int l = 0; l < kSamplerLanes; ++l) {
+      const int i = p.pixel[size_t(std::min(l, p.m - 1))];
+      s.x[l] = uint32_t(x0 + i), s.y[l] = uint32_t(y), s.sample[l] = uint32_t(first[i] + k);
+    }
+    samplerLanesAvx2(s);
+  }
+  for (int j = 0; j < p.m; ++j) {
+    const int x = x0 + p.pixel[size_t(j)];
+    const uint32_t sample = uint32_t(first[p.pixel[size_t(j)]] + k);
+    Vec2 at;
+    if (simdLanes) {
+      p.rngs[size_t(j)] = SampleRng::fromKey(s.pixelKey[j], sample, s.reversedSample[j]);
+      at = cameraPixelAt(x, y, scale, {s.u[0][0][j], s.u[0][1][j]});
+    } else {
+      p.rngs[size_t(j)] = SampleRng(uint32_t(x), uint32_t(y), sample, seed);
+      at = cameraPixel(x, y, scale, p.rngs[size_t(j)]);
+    }
+    p.px[size_t(j)] = at.x(), p.py[size_t(j)] = at.y();
+  }
 }
 
 // Pixels x0 .. x0 + n - 1 (n <= kPacket) of row y, pixel i's samples [first[i], first[i] +
@@ -2012,32 +2181,26 @@ void PathTracer::Impl::renderPixel(DifferentialBuffers& buffers, int x, int y, i
 void PathTracer::Impl::renderPacket(DifferentialBuffers& buffers, int x0, int y, int n, const int* first,
                                     const int* count, uint32_t seed, RayCounters& tileCounters) const {
   std::array<PixelSums, kPacket> sums;
+  std::array<FirstVertex, kPacket> firsts;
+  const bool ahead = verticesAhead();
   int most = 0;
   for (int i = 0; i < n; ++i)
     startPixel(buffers, x0 + i, y, sums[size_t(i)]), most = std::max(most, count[i]);
   const PixelScale scale = pixelScale(buffers);
+  PacketLanes lanes;
   for (int k = 0; k < most; ++k) {
-    auto rngOf = [&](int i) {
-      return SampleRng(uint32_t(x0 + i), uint32_t(y), uint32_t(first[i] + k), seed);
-    };
-    // The lanes' pixel positions, then their directions two at a time.
-    std::array<double, kPacket> px, py;
-    std::array<int, kPacket> pixel;
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      if (k >= count[i]) continue;
-      const Vec2 at = cameraPixel(x0 + i, y, scale, rngOf(i));
-      px[size_t(m)] = at.x(), py[size_t(m)] = at.y(), pixel[size_t(m)] = i, ++m;
-    }
+    // The lanes' numbers and pixel positions, then their directions two at a time.
+    packetLanes(x0, y, n, first, count, k, seed, scale, lanes);
+    const int m = lanes.m;
     std::array<Vec3, kPacket> dirs;
-    directionsThroughPixels(scene.camera, m, px.data(), py.data(), dirs.data());
+    directionsThroughPixels(scene.camera, m, lanes.px.data(), lanes.py.data(), dirs.data());
     std::array<Hit, kPacket> hits;
     castCameraPacket(m, scene.camera.centreWorld(), dirs.data(), hits.data(), tileCounters);
-    for (int j = 0; j < m; ++j) {
-      const int i = pixel[size_t(j)];
-      addSample(sums[size_t(i)], buffers.hasGuides(), cameraRay(dirs[size_t(j)]), rngOf(i),
-                &hits[size_t(j)], tileCounters);
-    }
+    if (ahead) firstVertices(lanes, dirs.data(), hits.data(), firsts.data(), tileCounters);
+    for (int j = 0; j < m; ++j)
+      addSample(sums[size_t(lanes.pixel[size_t(j)])], buffers.hasGuides(), cameraRay(dirs[size_t(j)]),
+                lanes.rngs[size_t(j)], &hits[size_t(j)], ahead ? &firsts[size_t(j)] : nullptr,
+                tileCounters);
   }
   for (int i = 0; i < n; ++i)
     if (count[i] > 0) storePixel(buffers, x0 + i, y, count[i], sums[size_t(i)]);

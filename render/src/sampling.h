@@ -102,6 +102,18 @@ inline constexpr PairHashes kPairHashes{};
 // 2^m samples form a (0,m,2)-net.
 class SampleRng {
  public:
+  SampleRng() = default;  // a placeholder (key 0) to assign a pixel's to
+  // The same as SampleRng(x, y, sample, seed) from its pixel key pcgHash(y + pcgHash(x +
+  // pcgHash(seed))) and reverseBits(sample), worked out elsewhere (simd_lanes.h).
+  static SampleRng fromKey(uint32_t pixelKey, uint32_t sample, uint32_t reversedSample) {
+    SampleRng r;
+    r.pixelKey_ = pixelKey, r.sample_ = sample, r.reversedSample_ = reversedSample;
+    return r;
+  }
+  // pcgHash(pair), from a table for the first pairs.
+  static uint32_t pairHash(uint32_t pair) {
+    return pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair);
+  }
   SampleRng(uint32_t x, uint32_t y, uint32_t sample, uint32_t seed)
       : pixelKey_(pcgHash(y + pcgHash(x + pcgHash(seed)))),
         sample_(sample),
@@ -111,8 +123,7 @@ class SampleRng {
   // sobol0's, sobol1 comes reversed from a table, the sample index is reversed once per sample
   // and the pair's hash of the first pairs (every path vertex's) comes from a table.
   std::array<double, 2> get2(uint32_t pair) const {
-    const uint32_t pairHash = pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair);
-    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pairHash);
+    const uint32_t pairSeed = pcgHash(pixelKey_ ^ pairHash(pair));
     const uint32_t index = reverseBits(laineKarras(reversedSample_, pairSeed));
     return {toUnit(reverseBits(laineKarras(index, pcgHash(pairSeed)))),
             toUnit(reverseBits(laineKarras(reversedSobol1(index), pcgHash(pairSeed + 1u))))};
@@ -123,7 +134,7 @@ class SampleRng {
     uint32_t seed[4], index[4], a[4], b[4];
     for (uint32_t k = 0; k < 4; ++k) {
       const uint32_t pair = first + k;
-      seed[k] = pcgHash(pixelKey_ ^ (pair < kPairHashes.count ? kPairHashes.hash[pair] : pcgHash(pair)));
+      seed[k] = pcgHash(pixelKey_ ^ pairHash(pair));
     }
     for (uint32_t k = 0; k < 4; ++k) index[k] = reverseBits(laineKarras(reversedSample_, seed[k]));
     for (uint32_t k = 0; k < 4; ++k) a[k] = reverseBits(laineKarras(index[k], pcgHash(seed[k])));
@@ -146,9 +157,9 @@ class SampleRng {
 
  private:
   static double toUnit(uint32_t bits) { return double(bits >> 8) * (1.0 / 16777216.0); }
-  uint32_t pixelKey_;
-  uint32_t sample_;
-  uint32_t reversedSample_;  // reverseBits(sample_)
+  uint32_t pixelKey_ = 0;
+  uint32_t sample_ = 0;
+  uint32_t reversedSample_ = 0;  // reverseBits(sample_)
 };
 
 // sin x and cos x together for the samplers' angles (2 pi u, a spherical polygon's area): the
