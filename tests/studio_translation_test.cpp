@@ -622,6 +622,15 @@ void StudioTranslationTest::logStageLinesFollowTheLanguage() {
            QStringLiteral("Kamerakennlinie: die angepasste Kurve toe_shoulder (Exponent 0.990, Fuß "
                           "0.000, Schulter 996) liegt an der Grenze ihrer Familie (shoulder): die "
                           "Kurve der Kamera kann stärker sein, als die Familie fasst"));
+  // A sun room's note on the ceiling the camera does not see.
+  QCOMPARE(engineText(QStringLiteral(
+               "lighting: the ceiling the camera does not see: the light fit's model of the room "
+               "gives it 0.77 grey, not the seen walls' mean (0.56; a sunlit patch lights the "
+               "ceiling straight on, and the photo does not show its albedo)")),
+           QStringLiteral("Beleuchtung: die Decke, die die Kamera nicht sieht: das Modell des Raums "
+                          "in der Lichtanpassung gibt ihr 0.77 Grau, nicht den Mittelwert der "
+                          "sichtbaren Wände (0.56; ein sonnenbeschienener Fleck beleuchtet die Decke "
+                          "direkt, und das Foto zeigt ihre Albedo nicht)"));
   // A detail with a part no template knows stays English whole, never half translated.
   QCOMPARE(stageLine(unknown),
            QStringLiteral("Kamera: 20.100 s, CPU 38.900 s (estimated from the photo, a part no "

@@ -477,552 +477,557 @@
     </message>
     <message>
         <location filename="../app/studio/engine_text.cpp" line="72"/>
+        <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
+        <translation>die Decke, die die Kamera nicht sieht: das Modell des Raums in der Lichtanpassung gibt ihr %1 Grau, nicht den Mittelwert der sichtbaren Wände (%2; ein sonnenbeschienener Fleck beleuchtet die Decke direkt, und das Foto zeigt ihre Albedo nicht)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="76"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>außerhalb des Raums; um %1 m verschoben, damit es hineinpasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>in jeder Richtung größer als der Raum; seine Position wird beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <location filename="../app/studio/engine_text.cpp" line="79"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 beleuchtet nichts vom Raum, den das Foto zeigt: seine Stärke bleibt beim Startwert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>das direkte Licht des Fotos ist schwarz: die Lichter werden an Dunkelheit angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="79"/>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>nicht konvergiert: angehalten durch %1 nach %2 Iterationen (%3 s): primales Residuum %4, duales %5, Toleranz %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
         <source>the iteration cap</source>
         <translation>die Iterationsgrenze</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>non-finite residuals</source>
         <translation>nicht endliche Residuen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>cancellation</source>
         <translation>den Abbruch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="95"/>
         <source>noise level</source>
         <translation>Rauschpegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <location filename="../app/studio/engine_text.cpp" line="96"/>
         <source>edge</source>
         <translation>Kanten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="99"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="98"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2, mit sRGB %3</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>die geschätzte Kurve wurde nicht verwendet (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="113"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="118"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>none marked</source>
         <translation>keine markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>no sun marked</source>
         <translation>keine Sonne markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="146"/>
         <source>none inserted</source>
         <translation>keine eingefügt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="147"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>turned off</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>no light marked</source>
         <translation>kein Licht markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>every light locked</source>
         <translation>jedes Licht gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
         <source>the working copy is the photo</source>
         <translation>die Arbeitskopie ist das Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>the lights were not refined</source>
         <translation>die Lichter wurden nicht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>no light moved</source>
         <translation>kein Licht bewegt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting ist &quot;none&quot; (die Voreinstellung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>linear photo</source>
         <translation>lineares Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>the photo area-averaged</source>
         <translation>das Foto flächengemittelt verkleinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>the photo&apos;s own size</source>
         <translation>die eigene Größe des Fotos</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>estimated from the photo</source>
         <translation>aus dem Foto geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>v %1 applied</source>
         <translation>v %1 angewandt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>das Residuum der Lichtanpassung zeigt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>the light fit run again</source>
         <translation>die Lichtanpassung erneut ausgeführt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>the curve kept: %1</source>
         <translation>Kurve behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>toe_shoulder (power %1, toe %2, shoulder %3)</source>
         <translation>toe_shoulder (Exponent %1, Fuß %2, Schulter %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>mit sRGB %1; auf Kopien von %2 x %3 px %4 gegen %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>mit sRGB %1; kein schneller Vergleich</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>log ratio %1 beyond %2</source>
         <translation>Log-Verhältnis %1 jenseits von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>log ratio %1 within %2</source>
         <translation>Log-Verhältnis %1 innerhalb von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="218"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="220"/>
+        <location filename="../app/studio/engine_text.cpp" line="224"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="221"/>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="226"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="226"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="231"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="232"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="294"/>
+        <location filename="../app/studio/engine_text.cpp" line="298"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -2454,7 +2459,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="72"/>
+        <location filename="../app/studio/response_dock.cpp" line="74"/>
         <source>code (up: stops above mid-grey)</source>
         <translation>Code (nach oben: Blendenstufen über Mittelgrau)</translation>
     </message>
@@ -2462,122 +2467,122 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="109"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Verwendet die übliche sRGB-Kurve, wie in der Liste gewählt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="109"/>
+        <location filename="../app/studio/response_dock.cpp" line="111"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Verwendet eine gerade (lineare) Kurve, wie in der Liste gewählt: die Werte des Fotos werden direkt als Licht gelesen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="112"/>
+        <location filename="../app/studio/response_dock.cpp" line="114"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Verwendet die Kurve aus der Szenendatei.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>Das Foto enthält bereits Lichtwerte (EXR/HDR): es braucht keine Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <location filename="../app/studio/response_dock.cpp" line="117"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Foto zeigt zu wenig, um seine eigene Tonwertkurve zu schätzen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="120"/>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Beleuchtung des Raums erklärt das Foto mit ihr besser als mit der aus dem Foto geschätzten Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="124"/>
+        <location filename="../app/studio/response_dock.cpp" line="126"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Rauschen des Fotos zeigt keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="127"/>
+        <location filename="../app/studio/response_dock.cpp" line="129"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Kanten des Fotos zeigen keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="130"/>
+        <location filename="../app/studio/response_dock.cpp" line="132"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus dem Rauschen des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="133"/>
+        <location filename="../app/studio/response_dock.cpp" line="135"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus den Kanten des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="143"/>
+        <location filename="../app/studio/response_dock.cpp" line="145"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Wirken die eingefügten Objekte neben dem Raum zu hell oder zu flach, wählen Sie oben in der Liste sRGB und vergleichen Sie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="146"/>
+        <location filename="../app/studio/response_dock.cpp" line="148"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Wurde das Foto bearbeitet oder stammt es von einem Handy mit starkem Kontrast, kann seine Kurve trotzdem abweichen: wählen Sie oben in der Liste Linear (es liest den Kontrast des Fotos weicher) und vergleichen Sie die Schattierung der Objekte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="156"/>
+        <location filename="../app/studio/response_dock.cpp" line="158"/>
         <source>Curve: %1</source>
         <translation>Kurve: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="159"/>
+        <location filename="../app/studio/response_dock.cpp" line="161"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="163"/>
+        <location filename="../app/studio/response_dock.cpp" line="165"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Aus %1 Kanten geschätzt in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="260"/>
+        <location filename="../app/studio/response_dock.cpp" line="262"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="261"/>
+        <location filename="../app/studio/response_dock.cpp" line="263"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="262"/>
+        <location filename="../app/studio/response_dock.cpp" line="264"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="263"/>
+        <location filename="../app/studio/response_dock.cpp" line="265"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="264"/>
+        <location filename="../app/studio/response_dock.cpp" line="266"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="265"/>
+        <location filename="../app/studio/response_dock.cpp" line="267"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="266"/>
+        <location filename="../app/studio/response_dock.cpp" line="268"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="267"/>
+        <location filename="../app/studio/response_dock.cpp" line="269"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Die Parameter der Kurve und was die Schätzung gemessen hat</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="292"/>
+        <location filename="../app/studio/response_dock.cpp" line="294"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>

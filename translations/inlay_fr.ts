@@ -477,552 +477,557 @@
     </message>
     <message>
         <location filename="../app/studio/engine_text.cpp" line="72"/>
+        <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
+        <translation>le plafond que la caméra ne voit pas : le modèle de la pièce de l&apos;ajustement de la lumière lui donne un gris de %1, et non la moyenne des murs vus (%2 ; une tache de soleil éclaire le plafond de face, et la photo ne montre pas son albédo)</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="76"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>hors de la pièce ; déplacée de %1 m pour y tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="73"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>plus grande que la pièce dans toutes les directions ; sa position est gardée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="75"/>
+        <location filename="../app/studio/engine_text.cpp" line="79"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 n&apos;éclaire rien de la pièce que montre la photo : son intensité reste à sa valeur de départ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>la lumière directe de la photo est noire : les lumières sont ajustées sur l&apos;obscurité</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="79"/>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>non convergée : arrêtée par %1 après %2 itérations (%3 s) : résidu primal %4, dual %5, tolérance %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="85"/>
+        <location filename="../app/studio/engine_text.cpp" line="89"/>
         <source>the iteration cap</source>
         <translation>la limite d&apos;itérations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>non-finite residuals</source>
         <translation>des résidus non finis</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="87"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>cancellation</source>
         <translation>l&apos;annulation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="95"/>
         <source>noise level</source>
         <translation>niveau de bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="92"/>
+        <location filename="../app/studio/engine_text.cpp" line="96"/>
         <source>edge</source>
         <translation>contours</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="93"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="99"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="98"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="108"/>
+        <location filename="../app/studio/engine_text.cpp" line="112"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="114"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1, %3 avec sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="116"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>la courbe estimée n&apos;a pas été utilisée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="113"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="120"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="118"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="124"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="140"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>none marked</source>
         <translation>aucun marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="141"/>
+        <location filename="../app/studio/engine_text.cpp" line="145"/>
         <source>no sun marked</source>
         <translation>aucun soleil marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="142"/>
+        <location filename="../app/studio/engine_text.cpp" line="146"/>
         <source>none inserted</source>
         <translation>aucun inséré</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="143"/>
+        <location filename="../app/studio/engine_text.cpp" line="147"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>turned off</source>
         <translation>désactivé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>no light marked</source>
         <translation>aucune lumière marquée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="148"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>every light locked</source>
         <translation>chaque lumière verrouillée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="153"/>
         <source>the working copy is the photo</source>
         <translation>la copie de travail est la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>the lights were not refined</source>
         <translation>les lumières n&apos;ont pas été affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>no light moved</source>
         <translation>aucune lumière déplacée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting vaut &quot;none&quot; (par défaut)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>linear photo</source>
         <translation>photo linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>the photo area-averaged</source>
         <translation>la photo réduite par moyenne de surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>the photo&apos;s own size</source>
         <translation>la taille propre de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>estimated from the photo</source>
         <translation>estimée d&apos;après la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>v %1 applied</source>
         <translation>v %1 appliqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>le résidu de l&apos;ajustement des lumières montre %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>the light fit run again</source>
         <translation>l&apos;ajustement des lumières refait</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>the curve kept: %1</source>
         <translation>courbe conservée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB conservé : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>toe_shoulder (power %1, toe %2, shoulder %3)</source>
         <translation>toe_shoulder (exposant %1, pied %2, épaule %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>%1 avec sRGB ; sur des copies de %2 x %3 px %4 contre %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>%1 avec sRGB ; pas de comparaison rapide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>log ratio %1 beyond %2</source>
         <translation>rapport log %1 au-delà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>log ratio %1 within %2</source>
         <translation>rapport log %1 en deçà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="218"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="220"/>
+        <location filename="../app/studio/engine_text.cpp" line="224"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="221"/>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="226"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="226"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="231"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="232"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="294"/>
+        <location filename="../app/studio/engine_text.cpp" line="298"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -2454,7 +2459,7 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="72"/>
+        <location filename="../app/studio/response_dock.cpp" line="74"/>
         <source>code (up: stops above mid-grey)</source>
         <translation>code (en hauteur : diaphragmes au-dessus du gris moyen)</translation>
     </message>
@@ -2462,122 +2467,122 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="109"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Utilise la courbe sRGB standard, choisie dans la liste.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="109"/>
+        <location filename="../app/studio/response_dock.cpp" line="111"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Utilise une courbe droite (linéaire), choisie dans la liste : les valeurs de la photo sont lues directement comme de la lumière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="112"/>
+        <location filename="../app/studio/response_dock.cpp" line="114"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Utilise la courbe indiquée dans le fichier de scène.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="105"/>
+        <location filename="../app/studio/response_dock.cpp" line="107"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>La photo contient déjà des valeurs de lumière (EXR/HDR) : elle n&apos;a besoin d&apos;aucune courbe.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="115"/>
+        <location filename="../app/studio/response_dock.cpp" line="117"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>La courbe sRGB standard est conservée : la photo n&apos;en montre pas assez pour estimer sa propre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="120"/>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>La courbe sRGB standard est conservée : l&apos;éclairage de la pièce explique mieux la photo avec elle qu&apos;avec la courbe estimée à partir de la photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="124"/>
+        <location filename="../app/studio/response_dock.cpp" line="126"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : le bruit de la photo ne montre pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="127"/>
+        <location filename="../app/studio/response_dock.cpp" line="129"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : les contours de la photo ne montrent pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="130"/>
+        <location filename="../app/studio/response_dock.cpp" line="132"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après le bruit de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="133"/>
+        <location filename="../app/studio/response_dock.cpp" line="135"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après les contours de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="143"/>
+        <location filename="../app/studio/response_dock.cpp" line="145"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Si les objets insérés paraissent trop clairs ou trop plats par rapport à la pièce, choisissez sRGB dans la liste ci-dessus et comparez.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="146"/>
+        <location filename="../app/studio/response_dock.cpp" line="148"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Si la photo a été retouchée, ou vient d&apos;un téléphone au contraste marqué, sa courbe peut tout de même différer : choisissez Linéaire dans la liste ci-dessus (elle lit le contraste de la photo plus doux) et comparez l&apos;ombrage des objets.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="156"/>
+        <location filename="../app/studio/response_dock.cpp" line="158"/>
         <source>Curve: %1</source>
         <translation>Courbe : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="159"/>
+        <location filename="../app/studio/response_dock.cpp" line="161"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Estimée d&apos;après le bruit de la photo (%1 niveaux) en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="163"/>
+        <location filename="../app/studio/response_dock.cpp" line="165"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Estimée d&apos;après %1 contours en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="260"/>
+        <location filename="../app/studio/response_dock.cpp" line="262"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="261"/>
+        <location filename="../app/studio/response_dock.cpp" line="263"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="262"/>
+        <location filename="../app/studio/response_dock.cpp" line="264"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="263"/>
+        <location filename="../app/studio/response_dock.cpp" line="265"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="264"/>
+        <location filename="../app/studio/response_dock.cpp" line="266"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="265"/>
+        <location filename="../app/studio/response_dock.cpp" line="267"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="266"/>
+        <location filename="../app/studio/response_dock.cpp" line="268"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="267"/>
+        <location filename="../app/studio/response_dock.cpp" line="269"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Les paramètres de la courbe et ce que l&apos;estimation a mesuré</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="292"/>
+        <location filename="../app/studio/response_dock.cpp" line="294"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>

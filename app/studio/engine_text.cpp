@@ -69,6 +69,10 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "lights %1 are out of view: they share one radiance (the photo shows only "
                       "their sum)"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "the ceiling the camera does not see: the light fit's model of the room gives "
+                      "it %1 grey, not the seen walls' mean (%2; a sunlit patch lights the ceiling "
+                      "straight on, and the photo does not show its albedo)"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "outside the room; moved %1 m to fit inside it"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "larger than the room in every direction; its position is kept"),
