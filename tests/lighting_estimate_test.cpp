@@ -874,6 +874,17 @@ TEST(Lighting, AGrainyPhotoDoesNotDarkenTheAlbedoNorBrightenTheLight) {
   EXPECT_LT(std::abs(window - 1), std::abs(pixel - 1));
 }
 
+// `photo` with its left 1 / blackPart black, some pixels NaN and some saturated.
+ImageF withBlackNanAndSaturatedPixels(ImageF photo, int blackPart) {
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      if (x < photo.width / blackPart) photo.setRgb(x, y, Vec3::Zero());
+      if ((x + y) % 17 == 0) photo.setRgb(x, y, Vec3(std::nan(""), 1, 2));
+      if ((x * y) % 23 == 1) photo.setRgb(x, y, Vec3(1, 1, 1));
+    }
+  return photo;
+}
+
 TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   const SyntheticRoom r = makeRoom(Vec3(4, 4, 4), 4);
   auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
@@ -889,13 +900,7 @@ TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   ImageF white(r.photo.width, r.photo.height, 3, 1.f);
   EXPECT_FALSE(estimateLighting(white, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt).ok());
   // Half the photo black, some pixels NaN, some saturated: finite, bounded output.
-  ImageF mixed = r.photo;
-  for (int y = 0; y < mixed.height; ++y)
-    for (int x = 0; x < mixed.width; ++x) {
-      if (x < mixed.width / 2) mixed.setRgb(x, y, Vec3::Zero());
-      if ((x + y) % 17 == 0) mixed.setRgb(x, y, Vec3(std::nan(""), 1, 2));
-      if ((x * y) % 23 == 1) mixed.setRgb(x, y, Vec3(1, 1, 1));
-    }
+  const ImageF mixed = withBlackNanAndSaturatedPixels(r.photo, 2);
   auto e2 = estimateLighting(mixed, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt);
   ASSERT_TRUE(e2.ok()) << e2.error().message();
   for (float v : e2->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
@@ -1483,13 +1488,7 @@ TEST(Lighting, ADeferredDecompositionGivesWhatTheEstimateGives) {
   const RefitCase k = refitCase();
   ASSERT_TRUE(k.first);
   const SyntheticRoom& r = k.r;
-  ImageF mixed = k.photo;
-  for (int y = 0; y < mixed.height; ++y)
-    for (int x = 0; x < mixed.width; ++x) {
-      if (x < mixed.width / 4) mixed.setRgb(x, y, Vec3::Zero());
-      if ((x + y) % 17 == 0) mixed.setRgb(x, y, Vec3(std::nan(""), 1, 2));
-      if ((x * y) % 23 == 1) mixed.setRgb(x, y, Vec3(1, 1, 1));
-    }
+  const ImageF mixed = withBlackNanAndSaturatedPixels(k.photo, 4);
   const SyntheticRoom tiny = makeRoom(Vec3(6.0, 5.0, 4.0), 4, 12);
   const ImageF black(k.photo.width, k.photo.height, 3, 0.f);
   LightingOptions plainRetinex = k.opt;
