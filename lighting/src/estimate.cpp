@@ -2056,7 +2056,9 @@ void LightingFit::vignettingFromResidual() {
 // What LightingOptions::deferDecomposition leaves for finishDecomposition: the decomposition's
 // inputs as the estimate made them.
 struct PendingDecomposition {
-  ImageF photo, start;                  // the estimate's photo and the decomposition's start (rho0)
+  // The estimate's photo and gathered light (the sun ratio changes the estimate's before the
+  // response check's verdict) and the decomposition's start (rho0).
+  ImageF photo, gathered, start;
   std::vector<uint8_t> valid, clipped;  // its masks (Decomposer::masks)
   std::vector<int> surface;             // per pixel: the surface it shows (-1: none)
   DecomposeOptions options;
@@ -2068,11 +2070,11 @@ namespace {
 
 // The decomposition from `start`: its albedo and direct light replace the light fit's wherever a
 // pixel shows the room (`surface` >= 0).
-std::optional<Error> decomposeInto(LightingEstimate& out, const ImageF& photo, const ImageF& start,
-                                   const std::vector<uint8_t>& valid,
+std::optional<Error> decomposeInto(LightingEstimate& out, const ImageF& photo, const ImageF& gathered,
+                                   const ImageF& start, const std::vector<uint8_t>& valid,
                                    const std::vector<uint8_t>& clipped, const std::vector<int>& surface,
                                    const DecomposeOptions& options) {
-  auto dec = decomposeIntrinsic(photo, out.gathered, start, valid, clipped, options);
+  auto dec = decomposeIntrinsic(photo, gathered, start, valid, clipped, options);
   out.decomposeStart = start;
   out.decomposeValid = valid;
   out.decomposeClipped = clipped;
@@ -2222,6 +2224,7 @@ std::optional<Error> Decomposer::run() {
   if (f.opt.deferDecomposition) {
     auto pending = std::make_shared<PendingDecomposition>();
     pending->photo = f.photo;
+    pending->gathered = out.gathered;
     pending->start = rho0;
     pending->valid = valid;
     pending->clipped = clipped;
@@ -2233,7 +2236,7 @@ std::optional<Error> Decomposer::run() {
     return std::nullopt;
   }
   timer.emplace(out.steps, "decomposition");
-  return decomposeInto(out, f.photo, rho0, valid, clipped, out.firstSurfacePerPixel, dopt);
+  return decomposeInto(out, f.photo, out.gathered, rho0, valid, clipped, out.firstSurfacePerPixel, dopt);
 }
 
 // Each surface's mean albedo (meanAlbedoOfSurfaces) with the decomposition's masks.
@@ -2311,7 +2314,8 @@ std::optional<Error> finishDecomposition(LightingEstimate& estimate, const Scene
                                                         size_t(d.threads));
   {
     const StepTimer timer(estimate.steps, "decomposition");
-    if (auto error = decomposeInto(estimate, d.photo, d.start, d.valid, d.clipped, d.surface, d.options))
+    if (auto error = decomposeInto(estimate, d.photo, d.gathered, d.start, d.valid, d.clipped, d.surface,
+                                   d.options))
       return error;
   }
   meanAlbedoOfSurfaces(estimate, d.valid, d.surface, geometry, d.renderFittedCeiling);

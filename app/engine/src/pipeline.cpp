@@ -993,11 +993,11 @@ Status decomposeUnlessDeferred(Preparation& p, bool defer, const char* stage, co
 }
 
 // Whether the lighting stage's decomposition may wait for the response check's verdict: no
-// stage before the verdict reads its albedo (the vignetting fits the lighting again, the sun
-// ratio and the refinement read it; without a refinement there is no refit).
+// stage before the verdict reads its albedo (the vignetting fits the lighting again, the
+// refinement reads it; without a refinement there is no refit). The sun ratio changes the
+// gathered light, not the albedo: the decomposition keeps the gathered light it was made with.
 bool decompositionCanWait(const Preparation& p) {
-  return p.deferLastDecomposition && !vignettingNotNeeded(p).empty() && !sunRatioNotNeeded(p).empty() &&
-         !refineNotNeeded(p).empty();
+  return p.deferLastDecomposition && !vignettingNotNeeded(p).empty() && !refineNotNeeded(p).empty();
 }
 
 // The gathered light, the albedo and the lights' radiances (lighting/estimate.h).
