@@ -1004,7 +1004,7 @@ bool decompositionCanWait(const Preparation& p) {
 Status fitTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
   LightingOptions lo = p.lightingOptions;
-  lo.deferDecomposition = true;  // made below, or after the response check's verdict
+  lo.deferDecomposition = p.deferLastDecomposition;  // made below, or after the check's verdict
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
                                    p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
