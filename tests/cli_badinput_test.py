@@ -82,7 +82,8 @@ def main():
                          ("--unseen-ceiling", ("white", "", "FIT")),
                          ("--response-quick-margin", ("-1", "nan", "wide")),
                          ("--response-quick-copy", ("abc", "19200,0,5", "19200,1500,0", "-1,1500,5",
-                                                    "19200,1500,5,2", "19200,1500,5,0", "19200,1500,5,1e-3,9"))):
+                                                    "19200,1500,5,2", "19200,1500,5,0", "19200,1500,5,1e-3,9",
+                                                    "19200,1500,5,1e-3,-1", "19200,1500,5,1e-3,1,7"))):
         for v in values:
             r = run(cli, "render", "x.json", flag, v, "-o", "a.png")
             check("bad %s %s" % (flag, v), r.returncode == 2 and flag in r.stderr, r.stderr)

@@ -716,6 +716,63 @@ TEST(Engine, TheResponseCheckRunsTheStagesAfterTheRefitOnlyForTheKeptResponse) {
   EXPECT_GE(check->seconds, againSeconds);
 }
 
+// Whether the decomposition ran in `stage`'s record before the response check's (the stages of
+// the response the check saw first, the curve's).
+bool decomposedIn(const PreparedScene& ps, const std::string& stage) {
+  for (const StageRecord& s : ps.stages) {
+    if (s.name == "response check") break;
+    if (s.name == stage && s.ran)
+      for (const StageStep& step : s.steps)
+        if (step.name == "decomposition") return true;
+  }
+  return false;
+}
+
+// The full response check (copies off) decomposes only the response it keeps: the curve's last
+// lighting estimate (the refit's with lights; the first's without, no refinement) waits for the
+// verdict. sRGB kept: the scene is the one prepared with sRGB outright, bit for bit, and the
+// curve's record has no decomposition (before, every estimate was decomposed and the curve's
+// record had one); the curve kept: the scene prepared with the check off, its estimate
+// decomposed after the verdict.
+TEST(Engine, TheFullResponseCheckDecomposesOnlyTheResponseKept) {
+  for (const bool withLights : {true, false}) {
+    SCOPED_TRACE(withLights ? "the example's lights, refined and refitted" : "no light: no refit");
+    SceneDoc doc = exampleDoc();
+    if (!withLights) doc.lights.clear();
+    const char* last = withLights ? "lighting refit" : "lighting";
+    PrepareOptions opt = optionsGivingTheExampleACurve();
+    opt.refitMinLightMove =
+        0;  // the example's lights move less than the default's 5 %: refit all the same
+    opt.workingMaxPixels = 320 * 240;  // a quarter of the photo: the test's time
+    PrepareOptions plainOpt;
+    plainOpt.refitMinLightMove = 0;
+    plainOpt.workingMaxPixels = opt.workingMaxPixels;
+    auto plain = prepareScene(doc, plainOpt);  // the default gate: sRGB, no check
+    ASSERT_TRUE(plain.ok()) << plain.error().message();
+    ASSERT_EQ(stageNamed(*plain, "response check"), nullptr);
+    ASSERT_TRUE(stageNamed(*plain, last)->ran);
+    EXPECT_TRUE(decomposedIn(*plain, last));
+    opt.responseQuick.maxPixels = 0;
+    auto srgbKept = prepareScene(doc, opt);
+    ASSERT_TRUE(srgbKept.ok()) << srgbKept.error().message();
+    ASSERT_EQ(srgbKept->response, CameraResponse::srgb());
+    expectSameRenderInputs(*srgbKept, *plain);
+    EXPECT_FALSE(decomposedIn(*srgbKept, last));
+    opt.checkResponseByLightFit = false;
+    auto off = prepareScene(doc, opt);
+    ASSERT_TRUE(off.ok()) << off.error().message();
+    opt.checkResponseByLightFit = true;
+    opt.responseFitTolerance = std::numeric_limits<double>::infinity();  // the curve kept
+    auto curveKept = prepareScene(doc, opt);
+    ASSERT_TRUE(curveKept.ok()) << curveKept.error().message();
+    ASSERT_EQ(curveKept->response.family(), ResponseFamily::ToeShoulder);
+    expectSameRenderInputs(*curveKept, *off);
+    EXPECT_FALSE(curveKept->lighting.pendingDecomposition);
+    EXPECT_FALSE(curveKept->lighting.decomposeReport.empty());  // the estimate kept was decomposed
+    EXPECT_EQ(curveKept->warnings.size(), off->warnings.size());
+  }
+}
+
 // Cancelling while the full check prepares sRGB (at its camera stage) cancels the preparation.
 TEST(Engine, CancellingTheResponseCheckCancelsThePreparation) {
   SceneDoc doc = exampleDoc();

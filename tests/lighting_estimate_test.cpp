@@ -18,6 +18,7 @@
 #include <optional>
 #include <cstdio>
 #include <random>
+#include <regex>
 
 namespace inlay {
 namespace {
@@ -873,6 +874,17 @@ TEST(Lighting, AGrainyPhotoDoesNotDarkenTheAlbedoNorBrightenTheLight) {
   EXPECT_LT(std::abs(window - 1), std::abs(pixel - 1));
 }
 
+// `photo` with its left 1 / blackPart black, some pixels NaN and some saturated.
+ImageF withBlackNanAndSaturatedPixels(ImageF photo, int blackPart) {
+  for (int y = 0; y < photo.height; ++y)
+    for (int x = 0; x < photo.width; ++x) {
+      if (x < photo.width / blackPart) photo.setRgb(x, y, Vec3::Zero());
+      if ((x + y) % 17 == 0) photo.setRgb(x, y, Vec3(std::nan(""), 1, 2));
+      if ((x * y) % 23 == 1) photo.setRgb(x, y, Vec3(1, 1, 1));
+    }
+  return photo;
+}
+
 TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   const SyntheticRoom r = makeRoom(Vec3(4, 4, 4), 4);
   auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
@@ -888,13 +900,7 @@ TEST(Lighting, StiffPhotosStayFiniteOrAreRefusedClearly) {
   ImageF white(r.photo.width, r.photo.height, 3, 1.f);
   EXPECT_FALSE(estimateLighting(white, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt).ok());
   // Half the photo black, some pixels NaN, some saturated: finite, bounded output.
-  ImageF mixed = r.photo;
-  for (int y = 0; y < mixed.height; ++y)
-    for (int x = 0; x < mixed.width; ++x) {
-      if (x < mixed.width / 2) mixed.setRgb(x, y, Vec3::Zero());
-      if ((x + y) % 17 == 0) mixed.setRgb(x, y, Vec3(std::nan(""), 1, 2));
-      if ((x * y) % 23 == 1) mixed.setRgb(x, y, Vec3(1, 1, 1));
-    }
+  const ImageF mixed = withBlackNanAndSaturatedPixels(r.photo, 2);
   auto e2 = estimateLighting(mixed, r.camera, r.geometry, {*light}, {true}, ImageF(), {}, opt);
   ASSERT_TRUE(e2.ok()) << e2.error().message();
   for (float v : e2->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
@@ -1443,6 +1449,112 @@ TEST(Lighting, ARefitReplayingTheFirstEstimatesRaysGivesWhatTracingGives) {
   EXPECT_LT(largestRelativeDifference(replayed->albedo, traced->albedo, 1e-2), 1e-3);
   // The moved light changed the estimate: the replay is not the first estimate returned again.
   EXPECT_GT(std::abs(traced->lights[0].radiance[1] / first->lights[0].radiance[1] - 1), 1e-4);
+}
+
+// A decomposition report or note without its clock ("after 30 iterations (0.06 s)").
+std::string withoutSeconds(const std::string& text) {
+  static const std::regex seconds(R"( \([0-9.]+ s\))");
+  return std::regex_replace(text, seconds, "");
+}
+
+// What finishDecomposition must give: the estimate made without deferring, value for value.
+void expectTheSameDecomposition(const LightingEstimate& a, const LightingEstimate& b) {
+  EXPECT_FALSE(a.pendingDecomposition);
+  EXPECT_TRUE(a.albedo.data == b.albedo.data);
+  EXPECT_TRUE(a.direct.data == b.direct.data);
+  EXPECT_TRUE(a.retinexAlbedo.data == b.retinexAlbedo.data);
+  EXPECT_TRUE(a.decomposeStart.data == b.decomposeStart.data);
+  EXPECT_EQ(a.decomposeValid, b.decomposeValid);
+  EXPECT_EQ(a.decomposeClipped, b.decomposeClipped);
+  EXPECT_EQ(withoutSeconds(a.decomposeReport), withoutSeconds(b.decomposeReport));
+  EXPECT_EQ(a.decomposeConverged, b.decomposeConverged);
+  EXPECT_EQ(a.decomposeHistory.size(), b.decomposeHistory.size());
+  ASSERT_EQ(a.notes.size(), b.notes.size());
+  for (size_t i = 0; i < a.notes.size(); ++i)
+    EXPECT_EQ(withoutSeconds(a.notes[i]), withoutSeconds(b.notes[i]));
+  ASSERT_EQ(a.surfaceMeanAlbedo.size(), b.surfaceMeanAlbedo.size());
+  for (size_t s = 0; s < a.surfaceMeanAlbedo.size(); ++s)
+    EXPECT_EQ(a.surfaceMeanAlbedo[s], b.surfaceMeanAlbedo[s]) << s;
+  for (float v : a.albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
+}
+
+// LightingOptions::deferDecomposition: the estimate returns after the light fit with its
+// residuals and lights (the same as without deferring) and the decomposition pending;
+// finishDecomposition then gives the estimate made without deferring, value for value, and a
+// second call changes nothing; the gathered light doubled after the estimate does not reach it.
+// Also on stiff photos (half black, NaN and saturated pixels), a
+// 12 x 9 photo, the decomposition off (nothing pending) and a refusal (a black photo: the same
+// error); cancelled before it finishes, the decomposition stops with a note and finite values.
+TEST(Lighting, ADeferredDecompositionGivesWhatTheEstimateGives) {
+  const RefitCase k = refitCase();
+  ASSERT_TRUE(k.first);
+  const SyntheticRoom& r = k.r;
+  const ImageF mixed = withBlackNanAndSaturatedPixels(k.photo, 4);
+  const SyntheticRoom tiny = makeRoom(Vec3(6.0, 5.0, 4.0), 4, 12);
+  const ImageF black(k.photo.width, k.photo.height, 3, 0.f);
+  LightingOptions plainRetinex = k.opt;
+  plainRetinex.objective = false;
+  struct Case {
+    const char* name;
+    const SyntheticRoom& room;
+    const ImageF& photo;
+    ImageF mask;
+    LightingOptions opt;
+  };
+  const Case cases[] = {{"clipped tenth", r, k.photo, k.mask, k.opt},
+                        {"black, NaN and saturated pixels", r, mixed, k.mask, k.opt},
+                        {"12 x 9", tiny, tiny.photo, lightMaskOf(tiny), k.opt},
+                        {"no decomposition", r, k.photo, k.mask, plainRetinex},
+                        {"black", r, black, k.mask, k.opt}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    auto light =
+        lightFromOutline(c.room.camera, c.room.geometry, c.room.lightOutlinePx, "lights[0].points");
+    ASSERT_TRUE(light.ok());
+    LightingOptions deferring = c.opt;
+    deferring.deferDecomposition = true;
+    const auto whole =
+        estimateLighting(c.photo, c.room.camera, c.room.geometry, {*light}, {true}, c.mask, {}, c.opt);
+    auto deferred = estimateLighting(c.photo, c.room.camera, c.room.geometry, {*light}, {true}, c.mask,
+                                     {}, deferring);
+    ASSERT_EQ(whole.ok(), deferred.ok());
+    if (!whole.ok()) {
+      EXPECT_EQ(whole.error().message(), deferred.error().message());
+      continue;
+    }
+    EXPECT_FALSE(whole->pendingDecomposition);
+    EXPECT_EQ(bool(deferred->pendingDecomposition), c.opt.objective);
+    EXPECT_EQ(deferred->fitRmsLog, whole->fitRmsLog);
+    EXPECT_EQ(deferred->fitResidualRelative, whole->fitResidualRelative);
+    EXPECT_EQ(deferred->lights[0].radiance, whole->lights[0].radiance);
+    if (c.opt.objective) {
+      EXPECT_FALSE(deferred->albedo.data == whole->albedo.data);  // still the light fit's
+    }
+    // The gathered light changed after the estimate (the pipeline's sun ratio does): the
+    // decomposition still reads the estimate's.
+    for (float& v : deferred->gathered.data) v *= 2;
+    EXPECT_FALSE(finishDecomposition(*deferred, c.room.geometry));
+    expectTheSameDecomposition(*deferred, *whole);
+    EXPECT_FALSE(finishDecomposition(*deferred, c.room.geometry));  // nothing pending: no change
+    expectTheSameDecomposition(*deferred, *whole);
+  }
+  // Cancelled between the light fit and the decomposition: it stops at once, says so, finite.
+  CancelToken cancel;
+  LightingOptions deferring = k.opt;
+  deferring.deferDecomposition = true;
+  deferring.cancel = &cancel;
+  auto light = lightFromOutline(r.camera, r.geometry, r.lightOutlinePx, "lights[0].points");
+  ASSERT_TRUE(light.ok());
+  auto deferred =
+      estimateLighting(k.photo, r.camera, r.geometry, {*light}, {true}, k.mask, {}, deferring);
+  ASSERT_TRUE(deferred.ok());
+  cancel.cancel();
+  const auto error = finishDecomposition(*deferred, r.geometry);
+  if (!error) {
+    EXPECT_FALSE(deferred->decomposeConverged);
+    EXPECT_NE(deferred->decomposeReport.find("cancel"), std::string::npos) << deferred->decomposeReport;
+  }
+  for (float v : deferred->albedo.data) ASSERT_TRUE(std::isfinite(v) && v >= 0 && v <= 1);
 }
 
 // A refit that goes on from the first estimate's passes (LightingOptions::warmStart, the default)

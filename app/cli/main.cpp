@@ -149,10 +149,11 @@ Render options:
                           diagnostics: the camera response check's copies decide when the log
                           of their residuals' ratio is beyond M (default 0.1); "inf": the full
                           check always (the copies' ratio is still reported)
-  --response-quick-copy N,F,P[,T]
+  --response-quick-copy N,F,P[,T[,R]]
                           diagnostics: the check's copies have at most N pixels (0: no copies),
-                          F light fit pixels, P gather-and-fit passes and the light fit's
-                          function tolerance T (its defaults: ResponseQuickCheck)
+                          F light fit pixels, P gather-and-fit passes, the light fit's
+                          function tolerance T and R 1 to refine and refit their lights, 0 not
+                          (its defaults: ResponseQuickCheck)
   --min-srgb-residual R, --min-improvement F
                           diagnostics: the "auto" response estimate's evidence gate, as for
                           inlay-cli response (0 and 0: every fitted curve goes to the check)
@@ -307,11 +308,14 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       } else if (s == "--response-quick-copy") {
         ResponseQuickCheck q;
         char tail = 0;
-        const int n = std::sscanf(v->c_str(), "%lf,%d,%d,%lf%c", &q.maxPixels, &q.fitPixels,
-                                  &q.maxPasses, &q.fitTolerance, &tail);
-        if ((n != 3 && n != 4) || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
-            !(q.fitTolerance > 0 && q.fitTolerance < 1))
-          return "--response-quick-copy: '" + *v + "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE]";
+        int refine = int(q.refineLights);
+        const int n = std::sscanf(v->c_str(), "%lf,%d,%d,%lf,%d%c", &q.maxPixels, &q.fitPixels,
+                                  &q.maxPasses, &q.fitTolerance, &refine, &tail);
+        q.refineLights = refine == 1;
+        if (n < 3 || n > 5 || !(q.maxPixels >= 0) || q.fitPixels < 1 || q.maxPasses < 1 ||
+            !(q.fitTolerance > 0 && q.fitTolerance < 1) || (refine != 0 && refine != 1))
+          return "--response-quick-copy: '" + *v +
+                 "' is not PIXELS,FIT_PIXELS,PASSES[,TOLERANCE[,REFINE]]";
         a.quickCopy = q;
       } else if (s == "--working-mp") {
         a.workingMp = parseNumber<double>(*v);

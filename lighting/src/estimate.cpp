@@ -2078,6 +2078,78 @@ void LightingFit::vignettingFromResidual() {
 // Step 6, the decomposition: colour Retinex from the photo alone, scaled per channel so that its
 // median ratio to the physical per-pixel albedo is 1 (Retinex has no scale of its own), then the
 // geometry-aware objective, whose data terms tie rho * Gamma to the photo.
+}  // namespace
+
+// What LightingOptions::deferDecomposition leaves for finishDecomposition: the decomposition's
+// inputs as the estimate made them.
+struct PendingDecomposition {
+  // The estimate's photo and gathered light (the sun ratio changes the estimate's before the
+  // response check's verdict) and the decomposition's start (rho0).
+  ImageF photo, gathered, start;
+  std::vector<uint8_t> valid, clipped;  // its masks (Decomposer::masks)
+  std::vector<int> surface;             // per pixel: the surface it shows (-1: none)
+  DecomposeOptions options;
+  bool renderFittedCeiling = false;
+  int threads = 0;  // LightingOptions::threads
+};
+
+namespace {
+
+// The decomposition from `start`: its albedo and direct light replace the light fit's wherever a
+// pixel shows the room (`surface` >= 0).
+std::optional<Error> decomposeInto(LightingEstimate& out, const ImageF& photo, const ImageF& gathered,
+                                   const ImageF& start, const std::vector<uint8_t>& valid,
+                                   const std::vector<uint8_t>& clipped, const std::vector<int>& surface,
+                                   const DecomposeOptions& options) {
+  auto dec = decomposeIntrinsic(photo, gathered, start, valid, clipped, options);
+  out.decomposeStart = start;
+  out.decomposeValid = valid;
+  out.decomposeClipped = clipped;
+  if (!dec) return dec.error().underKey("decomposition");
+  out.decomposeHistory = dec->history;
+  out.decomposeReport = dec->report;
+  out.decomposeConverged = dec->converged;
+  if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
+  const int W = photo.width, H = photo.height;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      if (surface[size_t(y) * W + x] < 0) continue;
+      out.albedo.setRgb(x, y, dec->albedo.rgb(x, y));
+      out.direct.setRgb(x, y, dec->direct.rgb(x, y));
+    }
+  return std::nullopt;
+}
+
+// Each surface's mean albedo over its valid pixels; surfaces the camera does not see: walls and
+// the ceiling take the mean of the walls it sees.
+void meanAlbedoOfSurfaces(LightingEstimate& out, const std::vector<uint8_t>& valid,
+                          const std::vector<int>& surface, const SceneGeometry& geometry,
+                          bool renderFittedCeiling) {
+  const size_t S = geometry.surfaces.size();
+  const int W = out.albedo.width, H = out.albedo.height;
+  std::vector<Vec3> albedoSum(S, Vec3::Zero());
+  std::vector<double> albedoCount(S, 0);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t idx = size_t(y) * W + x;
+      if (!valid[idx]) continue;
+      albedoSum[size_t(surface[idx])] += out.albedo.rgb(x, y);
+      albedoCount[size_t(surface[idx])] += 1;
+    }
+  std::vector<Vec3> meanSeen(S, Vec3::Zero());
+  for (size_t s = 0; s < S; ++s)
+    if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
+  out.surfaceMeanAlbedo = albedoOfUnseen(geometry, meanSeen, albedoCount, kUnseenCeilingAlbedo);
+  if (!renderFittedCeiling) return;
+  // The fit's estimate of an unseen ceiling where the photo told it (LightingOptions::
+  // renderFittedCeiling).
+  for (size_t s = 0; s < S; ++s)
+    if (albedoCount[s] == 0 && geometry.surfaces[s].kind == SurfaceKind::Ceiling)
+      for (int c = 0; c < 3; ++c)
+        if (out.unseenCeilingTold[size_t(c)] && std::isfinite(out.unseenCeilingAlbedo[c]))
+          out.surfaceMeanAlbedo[s][c] = out.unseenCeilingAlbedo[c];
+}
+
 class Decomposer {
  public:
   explicit Decomposer(LightingFit& fit) : f(fit), W(fit.W), H(fit.H) {}
@@ -2176,51 +2248,27 @@ std::optional<Error> Decomposer::run() {
   const ImageF rho0 = anchoredRetinex(f.shadingFree, valid, true, &out.retinexAlbedo);
   DecomposeOptions dopt = f.opt.decompose;
   if (!dopt.cancel) dopt.cancel = f.opt.cancel;
+  if (f.opt.deferDecomposition) {
+    auto pending = std::make_shared<PendingDecomposition>();
+    pending->photo = f.photo;
+    pending->gathered = out.gathered;
+    pending->start = rho0;
+    pending->valid = valid;
+    pending->clipped = clipped;
+    pending->surface = out.firstSurfacePerPixel;
+    pending->options = dopt;
+    pending->renderFittedCeiling = f.opt.renderFittedCeiling;
+    pending->threads = f.opt.threads;
+    out.pendingDecomposition = std::move(pending);
+    return std::nullopt;
+  }
   timer.emplace(out.steps, "decomposition");
-  auto dec = decomposeIntrinsic(f.photo, out.gathered, rho0, valid, clipped, dopt);
-  out.decomposeStart = rho0;
-  out.decomposeValid = valid;
-  out.decomposeClipped = clipped;
-  if (!dec) return dec.error().underKey("decomposition");
-  out.decomposeHistory = dec->history;
-  out.decomposeReport = dec->report;
-  out.decomposeConverged = dec->converged;
-  if (!dec->converged) out.notes.push_back("decomposition: " + dec->report);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const size_t idx = size_t(y) * W + x;
-      if (f.ps[idx].surface < 0) continue;
-      out.albedo.setRgb(x, y, dec->albedo.rgb(x, y));
-      out.direct.setRgb(x, y, dec->direct.rgb(x, y));
-    }
-  return std::nullopt;
+  return decomposeInto(out, f.photo, out.gathered, rho0, valid, clipped, out.firstSurfacePerPixel, dopt);
 }
 
-// Each surface's mean albedo over its valid pixels; surfaces the camera does not see: walls and
-// the ceiling take the mean of the walls it sees.
+// Each surface's mean albedo (meanAlbedoOfSurfaces) with the decomposition's masks.
 void Decomposer::surfaceMeanAlbedo() {
-  const size_t S = f.S;
-  std::vector<Vec3> albedoSum(S, Vec3::Zero());
-  std::vector<double> albedoCount(S, 0);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const size_t idx = size_t(y) * W + x;
-      if (!valid[idx]) continue;
-      albedoSum[f.ps[idx].surface] += f.out.albedo.rgb(x, y);
-      albedoCount[f.ps[idx].surface] += 1;
-    }
-  std::vector<Vec3> meanSeen(S, Vec3::Zero());
-  for (size_t s = 0; s < S; ++s)
-    if (albedoCount[s] > 0) meanSeen[s] = albedoSum[s] / albedoCount[s];
-  f.out.surfaceMeanAlbedo = albedoOfUnseen(f.geometry, meanSeen, albedoCount, kUnseenCeilingAlbedo);
-  if (!f.opt.renderFittedCeiling) return;
-  // The fit's estimate of an unseen ceiling where the photo told it (LightingOptions::
-  // renderFittedCeiling).
-  for (size_t s = 0; s < S; ++s)
-    if (albedoCount[s] == 0 && f.geometry.surfaces[s].kind == SurfaceKind::Ceiling)
-      for (int c = 0; c < 3; ++c)
-        if (f.out.unseenCeilingTold[size_t(c)] && std::isfinite(f.out.unseenCeilingAlbedo[c]))
-          f.out.surfaceMeanAlbedo[s][c] = f.out.unseenCeilingAlbedo[c];
+  meanAlbedoOfSurfaces(f.out, valid, f.out.firstSurfacePerPixel, f.geometry, f.opt.renderFittedCeiling);
 }
 
 }  // namespace
@@ -2277,9 +2325,28 @@ Expected<LightingEstimate> estimateLighting(const ImageF& photo, const Camera& c
   timer.reset();
   Decomposer decomposer(fit);
   if (auto error = decomposer.run()) return *error;
-  decomposer.surfaceMeanAlbedo();
+  if (!fit.out.pendingDecomposition) decomposer.surfaceMeanAlbedo();
   fit.out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return std::move(fit.out);
+}
+
+std::optional<Error> finishDecomposition(LightingEstimate& estimate, const SceneGeometry& geometry) {
+  const std::shared_ptr<const PendingDecomposition> pending = std::move(estimate.pendingDecomposition);
+  estimate.pendingDecomposition.reset();
+  if (!pending) return std::nullopt;
+  const PendingDecomposition& d = *pending;
+  std::unique_ptr<tbb::global_control> threadLimit;  // the estimate's, as estimateLighting sets it
+  if (d.threads > 0)
+    threadLimit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                        size_t(d.threads));
+  {
+    const StepTimer timer(estimate.steps, "decomposition");
+    if (auto error = decomposeInto(estimate, d.photo, d.gathered, d.start, d.valid, d.clipped, d.surface,
+                                   d.options))
+      return error;
+  }
+  meanAlbedoOfSurfaces(estimate, d.valid, d.surface, geometry, d.renderFittedCeiling);
+  return std::nullopt;
 }
 
 ImageF radianceForBounces(const ImageF& photo, const Camera& camera, const SceneGeometry& geometry,

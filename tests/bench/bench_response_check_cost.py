@@ -13,7 +13,8 @@ measure to compare builds by, since a build before resp17c recorded, when sRGB w
 sRGB preparation's stages and then the same again as the check, and never the curve's).
 
 Photos are camera variants named ROOM_sK (../shared/tools/camera_variants.py, room ROOM of
-../shared/scenes-train, seed K) or ROOM_plain, with harness.py's assisted scene. --mp M (0: the
+../shared/scenes-train, seed K) or ROOM_plain, with harness.py's assisted scene, or York photos
+PNNNNNNN (../shared/york, 640 x 480, the photo alone: camera estimated; always at their own size). --mp M (0: the
 room's own size, 512 x 384) makes the variant at about M megapixels: the room's linear render
 resized (bicubic) and put through the same random camera (camera_variants.py's draw_camera and
 encode; its noise per pixel k times the camera's, k the linear scale: the same sensor area
@@ -64,6 +65,22 @@ def native_variant(name, folder):
         subprocess.run([PY, os.path.join(tools_dir(), "harness.py"), "scene", vdir, scene, "--seconds", "15"],
                        check=True, capture_output=True)
     return scene
+
+
+def york_scene(name, folder, york=None):
+    """The scene of York photo `name` (PNNNNNNN, 640 x 480): the photo alone, camera estimated."""
+    path = os.path.join(folder, name + ".json")
+    if not os.path.exists(path):
+        photo = os.path.join(york or os.path.join(benchlib.shared_dir(), "york"), name + ".jpg")
+        json.dump({"format": "inlay-scene", "version": 1, "photo": photo}, open(path, "w"))
+    return path
+
+
+def scene_of(name, mp, folder):
+    """A York photo at its own size, or a camera variant at `mp` megapixels (0: the room's size)."""
+    if name.startswith("P"):
+        return york_scene(name, folder)
+    return resized_variant(name, mp, folder) if mp > 0 else native_variant(name, folder)
 
 
 def resized_variant(name, mp, folder):
@@ -230,7 +247,7 @@ def main():
         scenes = []
         for mp in [float(m) for m in opt("--mp", "0").split(",")]:
             for name in opt("--photos", "").split(","):
-                scenes.append((mp, name, resized_variant(name, mp, folder) if mp > 0 else native_variant(name, folder)))
+                scenes.append((mp, name, scene_of(name, mp, folder)))
         start = 1 + max([int(r["round"]) for r in rows] or [0])
         for rnd in range(start, start + int(opt("--rounds", "3"))):
             order = builds if rnd % 2 else builds[::-1]

@@ -47,13 +47,7 @@ NUMBER = r"(-?[0-9.]+|nan|-?inf)"
 
 
 def scene_of(name, folder, york):
-    if name.startswith("P"):
-        path = os.path.join(folder, name + ".json")
-        if not os.path.exists(path):
-            json.dump({"format": "inlay-scene", "version": 1, "photo": os.path.join(york, name + ".jpg")},
-                      open(path, "w"))
-        return path
-    return cost.native_variant(name, folder)
+    return cost.york_scene(name, folder, york) if name.startswith("P") else cost.native_variant(name, folder)
 
 
 def parse_check(stages):

@@ -616,6 +616,11 @@ struct Preparation {
   // prepare it again with sRGB (PrepareOptions::checkResponseByLightFit).
   std::optional<LoadedImage> photoAsLoaded;
   MeshCache* meshes = nullptr;  // the objects' meshes, shared by the response check's candidates
+  // The response check's full comparison: the last lighting estimate's decomposition waits for
+  // the verdict (LightingOptions::deferDecomposition), made only for the response kept.
+  // `pendingStage`: the stage whose estimate waits, and the prefix of its notes as warnings.
+  bool deferLastDecomposition = false;
+  std::string pendingStage, pendingNotes;
 
   // The image the image stages read, and the camera in its pixels.
   const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
@@ -961,15 +966,53 @@ double blackLevelOf(const PreparedScene& ps, double srgbLevel) {
   return code1 > 0 && std::isfinite(code1) ? srgbLevel * code1 / srgb1 : srgbLevel;
 }
 
+std::string vignettingNotNeeded(const Preparation& p);
+
+// The decomposition the lighting estimate left (LightingOptions::deferDecomposition), its notes
+// added to the warnings after `prefix` as the stage that made the estimate adds them.
+Status finishTheDecomposition(Preparation& p, const std::string& prefix) {
+  LightingEstimate& lighting = p.ps.lighting;
+  const size_t notes = lighting.notes.size();
+  if (auto error = finishDecomposition(lighting, p.ps.geometry))
+    return p.cancelled() ? cancelledError() : *error;
+  for (size_t i = notes; i < lighting.notes.size(); ++i)
+    p.ps.warnings.push_back(prefix + lighting.notes[i]);
+  return {};
+}
+
+// Leaves the estimate's decomposition for the response check's verdict when `p` defers it
+// (Preparation::deferLastDecomposition), otherwise runs it now. `stage` and `prefix`: its stage
+// and its notes' prefix.
+Status decomposeUnlessDeferred(Preparation& p, bool defer, const char* stage, const char* prefix) {
+  if (defer && p.ps.lighting.pendingDecomposition) {
+    p.pendingStage = stage;
+    p.pendingNotes = prefix;
+    return {};
+  }
+  return finishTheDecomposition(p, prefix);
+}
+
+// Whether the lighting stage's decomposition may wait for the response check's verdict: no
+// stage before the verdict reads its albedo (the vignetting fits the lighting again, the
+// refinement reads it; without a refinement there is no refit). The sun ratio changes the
+// gathered light, not the albedo: the decomposition keeps the gathered light it was made with.
+bool decompositionCanWait(const Preparation& p) {
+  return p.deferLastDecomposition && !vignettingNotNeeded(p).empty() && !refineNotNeeded(p).empty();
+}
+
 // The gathered light, the albedo and the lights' radiances (lighting/estimate.h).
 Status fitTheLighting(Preparation& p, std::string& detail) {
   PreparedScene& ps = p.ps;
+  LightingOptions lo = p.lightingOptions;
+  lo.deferDecomposition = p.deferLastDecomposition;  // made below, or after the check's verdict
   auto lighting = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, p.lights, p.estimated,
-                                   p.lightMask, p.suns, p.lightingOptions);
+                                   p.lightMask, p.suns, lo);
   if (!lighting) return lighting.error();
   ps.lighting = std::move(*lighting);
-  p.stageSteps = stepsOf(ps.lighting);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting: " + n);
+  if (Status st = decomposeUnlessDeferred(p, decompositionCanWait(p), "lighting", "lighting: "); !st)
+    return st;
+  p.stageSteps = stepsOf(ps.lighting);
   ps.initialLights = ps.lighting.lights;
   ps.initialSuns = ps.lighting.suns;
   detail = countOf(ps.lighting.lights.size(), "light") + ", " + countOf(ps.lighting.suns.size(), "sun") +
@@ -1085,6 +1128,7 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   // (they do not depend on the lights), and only the radiances along them computed again.
   LightingOptions lo = p.lightingOptions;
   lo.reuseRays = ps.lighting.rays;
+  lo.deferDecomposition = true;  // made only when the refit is kept
   auto again = estimateLighting(p.workPhoto(), p.workCamera(), ps.geometry, ps.lighting.lights, fitAgain,
                                 p.lightMask, ps.lighting.suns, lo);
   if (!again) return p.cancelled() ? cancelledError() : again.error();
@@ -1106,6 +1150,10 @@ Status refitTheLighting(Preparation& p, std::string& detail) {
   }
   ps.lighting = std::move(*again);
   for (const auto& n : ps.lighting.notes) ps.warnings.push_back("lighting (refit): " + n);
+  const char* prefix = "lighting (refit): ";
+  if (Status st = decomposeUnlessDeferred(p, p.deferLastDecomposition, "lighting refit", prefix); !st)
+    return st;
+  p.stageSteps = stepsOf(ps.lighting);
   char buf[200];
   std::snprintf(buf, sizeof buf,
                 "lights moved by at most %.1f %% of their size; the refit is kept (log residual "
@@ -1442,7 +1490,7 @@ PrepareOptions quickOptionsOf(const PrepareOptions& opt) {
   PrepareOptions q = opt;
   q.progress = nullptr;
   q.workingMaxPixels = opt.responseQuick.maxPixels;
-  q.refineLights = false;
+  q.refineLights = opt.responseQuick.refineLights;
   q.checkResponseByLightFit = false;
   return q;
 }
@@ -1463,29 +1511,59 @@ Status quickFit(Preparation& q, std::span<const Stage> stages, const std::string
   return ran;
 }
 
-// The quick comparison of `curved`, whose response stage fitted a curve: a copy of its decoded
-// photo with the curve, and of the photo as loaded with sRGB. Fails only when cancelled.
-Expected<QuickCheck> quickCheck(const Preparation& curved) {
+// One copy prepared from `photo` (quickFit), lent to it and given back: no stage of a copy
+// changes the photo but the vignetting, which divides it in place (then the copy gets its own).
+// At 12 MP a copy of the photo is 144 MB written and freed per response.
+Status quickFitOn(LoadedImage& photo, Preparation& q, const std::string& label, QuickCheck& quick,
+                  double& residual) {
+  const bool lend = !vignettingNotNeeded(q).empty();
+  if (lend) q.ps.photo = std::move(photo);
+  else q.ps.photo = photo;
+  const Status ran = quickFit(q, afterTheResponse(), label, quick, residual);
+  if (lend) photo = std::move(q.ps.photo);
+  return ran;
+}
+
+// The quick comparison of `curved`, whose response stage fitted a curve: its decoded photo with
+// the curve, and the photo as loaded with sRGB, each lent to a copy's preparation. Fails only
+// when cancelled.
+Expected<QuickCheck> quickCheck(Preparation& curved) {
   QuickCheck quick;
   if (!(curved.opt.responseQuick.maxPixels > 0)) return quick;
   const StageClock clock;
   const PrepareOptions qopt = quickOptionsOf(curved.opt);
   Preparation curve(curved.doc, qopt);
-  curve.ps.photo = curved.ps.photo;  // a copy: the vignetting stage divides the photo in place
   curve.ps.response = curved.ps.response;
-  const Status a = quickFit(curve, afterTheResponse(), "copy, curve: ", quick, quick.withCurve);
+  const Status a = quickFitOn(curved.ps.photo, curve, "copy, curve: ", quick, quick.withCurve);
   if (!a && isCancelled(a.error())) return a.error();
   const SceneDoc srgbDoc = withSrgb(curved.doc);
   Preparation srgb(srgbDoc, qopt);
-  srgb.ps.photo = *curved.photoAsLoaded;  // as loaded: decoded as sRGB
-  srgb.ps.response = CameraResponse::srgb();
-  const Status b = quickFit(srgb, afterTheResponse(), "copy, sRGB: ", quick, quick.withSrgb);
+  srgb.ps.response = CameraResponse::srgb();  // the photo as loaded: decoded as sRGB
+  const Status b = quickFitOn(*curved.photoAsLoaded, srgb, "copy, sRGB: ", quick, quick.withSrgb);
   if (!b && isCancelled(b.error())) return b.error();
   StageRecord timing;
   clock.stamp(timing);
   quick.seconds = timing.seconds;
   quick.cpuSeconds = timing.cpuSeconds;
   return quick;
+}
+
+// After the response check's verdict: the decomposition the kept response's preparation left
+// (Preparation::deferLastDecomposition), its time and step added to the stage that made it.
+Status decomposeTheKept(Preparation& p) {
+  if (!p.ps.lighting.pendingDecomposition) return {};
+  const StageClock clock;
+  if (Status st = finishTheDecomposition(p, p.pendingNotes); !st) return st;
+  StageRecord spent;
+  clock.stamp(spent);
+  for (auto it = p.ps.stages.rbegin(); it != p.ps.stages.rend(); ++it)
+    if (it->name == p.pendingStage && it->ran) {
+      it->seconds += spent.seconds;
+      it->cpuSeconds += spent.cpuSeconds;
+      it->steps = stepsOf(p.ps.lighting);
+      break;
+    }
+  return {};
 }
 
 // The copies kept the curve: it is prepared alone.
@@ -1513,8 +1591,10 @@ PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved
 // sRGB kept: the stages after the refit run on its preparation, after the curve's records (the
 // stages that ran first) and the check's.
 Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb, const QuickCheck& quick,
-                                       const std::vector<StageStep>& again, const StageClock& clock) {
+                                       const StageClock& clock) {
   const double withSrgb = srgb.ps.lighting.fitResidualRelative;
+  if (Status st = decomposeTheKept(srgb); !st) return st.error();
+  const std::vector<StageStep> again = stepsOf(srgb.ps.stages);
   srgb.ps.stages = curved.ps.stages;
   srgb.ps.stages.push_back(checkRecord(curved, withSrgb, quick, again, clock));
   Expected<PreparedScene> done = finishScene(srgb);
@@ -1535,18 +1615,20 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved, const Qu
   curved.meshes = srgb.meshes = &meshes;
   srgb.ps.photo = std::move(*curved.photoAsLoaded);
   curved.photoAsLoaded.reset();
+  srgb.deferLastDecomposition = true;
   const Status ran = runStages(kResponseStages, srgb);
   if (!ran && isCancelled(ran.error())) return ran.error();
   const std::vector<StageStep> again = stepsOf(srgb.ps.stages);
   const double residual = srgb.ps.lighting.fitResidualRelative;
   const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
   if (srgbFitsBetter) {
-    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, quick, again, clock);
+    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, quick, clock);
     if (kept || isCancelled(kept.error())) return kept;
   }
   // sRGB's preparation failed (before the refit, or after it with sRGB kept): NaN.
   const double withSrgb = ran && !srgbFitsBetter ? residual : std::nan("");
   curved.ps.stages.push_back(checkRecord(curved, withSrgb, quick, again, clock));
+  if (Status st = decomposeTheKept(curved); !st) return st.error();
   return finishScene(curved);
 }
 
@@ -1586,6 +1668,7 @@ Expected<PreparedScene> prepareCheckingTheCurve(Preparation& curved) {
   if (quick->decides(curved.opt))
     return quick->keepsTheCurve(curved.opt) ? finishWithTheCurve(curved, *quick)
                                             : prepareSrgbInstead(curved, *quick);
+  curved.deferLastDecomposition = true;
   if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
   return checkTheCurveByTheLightFit(curved, *quick);
 }

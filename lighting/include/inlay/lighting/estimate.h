@@ -25,6 +25,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ namespace inlay {
 // lights' mask (the refit after the lights' refinement) replays them instead of tracing them
 // again (LightingOptions::reuseRays). The hits do not depend on the lights.
 struct LightingRays;
+struct PendingDecomposition;
 
 // The decomposition of a working copy larger than a 640 x 480 photo runs on block means of at
 // most this many pixels, its change to the start carried back bilinearly
@@ -185,6 +187,13 @@ struct LightingOptions {
   // stop one to three sooner (a refit after the refinement moved the lights by a few percent).
   // False: every estimate starts cold.
   bool warmStart = true;
+  // The decomposition (the albedo after the light fit, the estimate's last and, at 0.3 MP, a
+  // sixth of its CPU) is left for finishDecomposition: the estimate returns after the light
+  // fit's residuals (fitRmsLog, fitResidualRelative) with the light fit's per-pixel albedo in
+  // `albedo` and `pendingDecomposition` set. A caller that compares residuals first (the
+  // pipeline's refit and its camera response check) decomposes only the estimate it keeps, and
+  // gets what the estimate would have given without this.
+  bool deferDecomposition = false;
   const CancelToken* cancel = nullptr;
 };
 
@@ -247,6 +256,8 @@ struct LightingEstimate {
   std::shared_ptr<const LightingRays> rays;
   bool raysReused = false;
   bool warmStarted = false;  // its passes went on from the replayed rays' (warmStart)
+  // LightingOptions::deferDecomposition: what the decomposition needs (null: none pending).
+  std::shared_ptr<const PendingDecomposition> pendingDecomposition;
   // Extra gain the fit gave the light gathered from clipped photo pixels (their radiance is only
   // a lower bound); already folded into `gathered`. Zero when the photo has few clipped pixels.
   Vec3 clippedGain = Vec3::Zero();
@@ -291,6 +302,13 @@ Expected<AreaLight> lightFromOutline(const Camera& camera, const SceneGeometry& 
 // radiance instead of 1.4) and LightingOptions::sunRoomUnseenCeilingAtLeast with a sun.
 std::vector<Vec3> albedoOfUnseen(const SceneGeometry& geometry, const std::vector<Vec3>& albedo,
                                  const std::vector<double>& weight, double ceilingAtLeast = 0);
+
+// The decomposition an estimate left (LightingOptions::deferDecomposition): `estimate`'s albedo,
+// direct light, decomposition fields, notes and surfaceMeanAlbedo become what estimateLighting
+// would have given, value for value; `geometry` is the room it was estimated in. Nothing pending:
+// nothing changes. An error is the decomposition's (its key "decomposition"), the one
+// estimateLighting would have returned instead of the estimate.
+std::optional<Error> finishDecomposition(LightingEstimate& estimate, const SceneGeometry& geometry);
 
 // The gather's stride on a width x height photo: `stride` (LightingOptions::gatherStride, at
 // least 1), or the smallest larger one whose grid, ceil(width / s) x ceil(height / s), has at

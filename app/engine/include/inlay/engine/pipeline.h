@@ -148,6 +148,7 @@ struct ResponseQuickCheck {
   int maxPasses = 5;             // LightingOptions::maxPasses of the copies' fits
   double fitTolerance = 1e-3;    // LightingOptions::fitFunctionTolerance of the copies' fits
   double margin = 0.1;           // |log ratio| beyond which the copies decide; infinite: never
+  bool refineLights = false;     // the copies' lights refined and refitted as the full check's
 };
 
 struct PrepareOptions {
