@@ -241,6 +241,21 @@ std::optional<T> parseNumber(const std::string& s) {
   }
 }
 
+// The options followed by a value.
+bool takesValue(const std::string& option) {
+  static const std::string options =
+      "-o --output --layers --progress-csv --albedo --direct --gathered --physical --method "
+      "--scene --spp --seconds --noise --seed --threads --iterations --lights-json "
+      "--replace-lights --replace-albedo --cue --replace-radiance --surface-albedo --prior "
+      "--evaluate-at --min-improvement --report --min-srgb-residual --noise-quantile "
+      "--working-mp --max-top-stops --response-quick-margin --response-quick-copy "
+      "--clamp-indirect --max-dark-fill --edge-weight --prepare-seed "
+      "--keep-better-fit-tolerance --refit-min-move --fit-unseen-ceiling --caustic-photons "
+      "--unseen-ceiling --caustic-radius --pixel-filter --solver ";
+  if (option.empty() || option.find(' ') != std::string::npos) return false;
+  return (" " + options).find(" " + option + " ") != std::string::npos;
+}
+
 // Returns an error message, or empty on success.
 std::string parseArgs(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
@@ -250,18 +265,7 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       (void)flag;
       return std::string(argv[++i]);
     };
-    if (s == "-o" || s == "--output" || s == "--layers" || s == "--progress-csv" || s == "--albedo" ||
-        s == "--direct" || s == "--gathered" || s == "--physical" || s == "--method" || s == "--scene" ||
-        s == "--spp" || s == "--seconds" || s == "--noise" || s == "--seed" || s == "--threads" ||
-        s == "--iterations" || s == "--lights-json" || s == "--replace-lights" ||
-        s == "--replace-albedo" || s == "--cue" || s == "--replace-radiance" ||
-        s == "--surface-albedo" || s == "--prior" || s == "--evaluate-at" || s == "--min-improvement" ||
-        s == "--report" || s == "--min-srgb-residual" || s == "--noise-quantile" ||
-        s == "--working-mp" || s == "--max-top-stops" || s == "--response-quick-margin" ||
-        s == "--response-quick-copy" || s == "--clamp-indirect" || s == "--max-dark-fill" ||
-        s == "--edge-weight" || s == "--prepare-seed" || s == "--keep-better-fit-tolerance" ||
-        s == "--refit-min-move" || s == "--fit-unseen-ceiling" || s == "--caustic-photons" ||
-        s == "--unseen-ceiling" || s == "--caustic-radius" || s == "--pixel-filter" || s == "--solver") {
+    if (takesValue(s)) {
       const auto v = value(s.c_str());
       if (!v) return s + " needs a value";
       if (s == "-o" || s == "--output") a.output = *v;
