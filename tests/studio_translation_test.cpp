@@ -512,8 +512,8 @@ void StudioTranslationTest::responseEstimateSentencesFollowTheLanguage() {
   QCOMPARE(engineText(QStringLiteral("kept sRGB: the fitted toe_shoulder (power 0.996, toe 0.541, "
                                      "shoulder 6.11) lowers the noise level residual only from "
                                      "0.7113 to 0.3843")),
-           QStringLiteral("sRGB conservée : la courbe ajustée toe_shoulder (power 0.996, toe 0.541, "
-                          "shoulder 6.11) ne réduit le résidu (niveau de bruit) que de 0.7113 "
+           QStringLiteral("sRGB conservée : la courbe ajustée toe_shoulder (exposant 0.996, pied "
+                          "0.541, épaule 6.11) ne réduit le résidu (niveau de bruit) que de 0.7113 "
                           "à 0.3843"));
   // The pipeline's check of an estimated curve (PrepareOptions::checkResponseByLightFit): its
   // decision and warning.
@@ -522,15 +522,16 @@ void StudioTranslationTest::responseEstimateSentencesFollowTheLanguage() {
       "0.2010, with sRGB 0.1797");
   QCOMPARE(engineText(QStringLiteral("kept sRGB: ") + why),
            QStringLiteral("sRGB conservée : le résidu de l'ajustement de la lumière vaut 0.2010 avec la "
-                          "courbe ajustée toe_shoulder (power 0.990, toe 0.000, shoulder 998), 0.1797 "
+                          "courbe ajustée toe_shoulder (exposant 0.990, pied 0.000, épaule 998), "
+                          "0.1797 "
                           "avec sRGB"));
   QVERIFY(installTranslators(QStringLiteral("de")));
   QCOMPARE(
       engineText(QStringLiteral("camera response: the estimated curve was not used (") + why +
                  QStringLiteral("); using sRGB")),
       QStringLiteral("Kamerakennlinie: die geschätzte Kurve wurde nicht verwendet (das Residuum der "
-                     "Lichtanpassung ist mit der angepassten Kurve toe_shoulder (power 0.990, toe "
-                     "0.000, shoulder 998) 0.2010, mit sRGB 0.1797); verwende sRGB"));
+                     "Lichtanpassung ist mit der angepassten Kurve toe_shoulder (Exponent 0.990, "
+                     "Fuß 0.000, Schulter 998) 0.2010, mit sRGB 0.1797); verwende sRGB"));
   removeTranslators();
 }
 
