@@ -326,708 +326,707 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
         <source>empty file</source>
         <translation>leere Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
         <source>cannot open for reading</source>
         <translation>kann nicht zum Lesen geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
         <source>read failed</source>
         <translation>Lesen fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
         <source>no triangles</source>
         <translation>keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
         <source>import failed: %1</source>
         <translation>Import fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>nicht endliche Koordinate „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>non-finite coordinate</source>
         <translation>nicht endliche Koordinate</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>fehlerhafte Zahl „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>fehlerhafter Flächenindex „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>face corner without a vertex index</source>
         <translation>Flächenecke ohne Eckpunktindex</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>Flächenindex 0 (OBJ-Indizes beginnen bei 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>a face needs at least 3 vertices</source>
         <translation>eine Fläche braucht mindestens 3 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>more than %1 triangles</source>
         <translation>mehr als %1 Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>more than %1 vertices</source>
         <translation>mehr als %1 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 Eckpunkte überschreiten die Grenze von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>„%1“ braucht %2 Zahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>keine PLY-Datei (die Kennung „ply“ fehlt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>not a GLB file</source>
         <translation>keine GLB-Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="40"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>invalid glTF JSON</source>
         <translation>ungültiges glTF-JSON</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="46"/>
         <source>buffer file not found: %1</source>
         <translation>Pufferdatei nicht gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>keine angegeben; die Objekte werden nur vom gesammelten Licht des Raums beleuchtet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="45"/>
+        <location filename="../app/studio/engine_text.cpp" line="50"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignoriert, das Foto ist bereits linear (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="46"/>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>die geschätzte Rückwand ist unbrauchbar (%1); ein Raum von 5 x 5,5 m wird verwendet: layout.back_wall_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="49"/>
+        <location filename="../app/studio/engine_text.cpp" line="54"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Brennweite aus der Annahme, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="53"/>
+        <location filename="../app/studio/engine_text.cpp" line="58"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Standardbrennweite, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="57"/>
+        <location filename="../app/studio/engine_text.cpp" line="62"/>
         <source>strength kept as estimated: %1</source>
         <translation>Stärke wie geschätzt beibehalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="58"/>
+        <location filename="../app/studio/engine_text.cpp" line="63"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>das Fenster, durch das die Sonne scheint, ist nicht im Bild; sein Himmel ist ein Licht von %1 x %2 m auf %3 (woher der Strahl kam), seine Stärke angepasst (zur Wahl source_box_px angeben oder das Fenster als Licht umranden)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="62"/>
+        <location filename="../app/studio/engine_text.cpp" line="67"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>die Maske von %1 zeigt an %2 von %3 Punkten den Boden unter der Platte, also ist sie eine %4 m dicke Platte (zur Wahl thickness_m angeben; 0: massiv)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="66"/>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>das gesammelte Licht änderte sich im letzten von %2 Durchgängen noch um %1 % (die Wände, die die Kamera nicht sieht, sind unsicher)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="69"/>
+        <location filename="../app/studio/engine_text.cpp" line="74"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>die Lichter %1 sind nicht im Bild: sie teilen sich eine Strahldichte (das Foto zeigt nur ihre Summe)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="72"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
         <translation>die Decke, die die Kamera nicht sieht: das Modell des Raums in der Lichtanpassung gibt ihr %1 Grau, nicht den Mittelwert der sichtbaren Wände (%2; ein sonnenbeschienener Fleck beleuchtet die Decke direkt, und das Foto zeigt ihre Albedo nicht)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="76"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>außerhalb des Raums; um %1 m verschoben, damit es hineinpasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="82"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>in jeder Richtung größer als der Raum; seine Position wird beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="79"/>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 beleuchtet nichts vom Raum, den das Foto zeigt: seine Stärke bleibt beim Startwert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>das direkte Licht des Fotos ist schwarz: die Lichter werden an Dunkelheit angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>nicht konvergiert: angehalten durch %1 nach %2 Iterationen (%3 s): primales Residuum %4, duales %5, Toleranz %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the iteration cap</source>
         <translation>die Iterationsgrenze</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <location filename="../app/studio/engine_text.cpp" line="95"/>
         <source>non-finite residuals</source>
         <translation>nicht endliche Residuen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="96"/>
         <source>cancellation</source>
         <translation>den Abbruch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
         <source>noise level</source>
         <translation>Rauschpegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="96"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>edge</source>
         <translation>Kanten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="104"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2, mit sRGB %3</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>die geschätzte Kurve wurde nicht verwendet (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="130"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>none marked</source>
         <translation>keine markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>no sun marked</source>
         <translation>keine Sonne markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>none inserted</source>
         <translation>keine eingefügt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>turned off</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>no light marked</source>
         <translation>kein Licht markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>every light locked</source>
         <translation>jedes Licht gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the working copy is the photo</source>
         <translation>die Arbeitskopie ist das Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>the lights were not refined</source>
         <translation>die Lichter wurden nicht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>no light moved</source>
         <translation>kein Licht bewegt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting ist &quot;none&quot; (die Voreinstellung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>linear photo</source>
         <translation>lineares Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>the photo area-averaged</source>
         <translation>das Foto flächengemittelt verkleinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>the photo&apos;s own size</source>
         <translation>die eigene Größe des Fotos</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>estimated from the photo</source>
         <translation>aus dem Foto geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>v %1 applied</source>
         <translation>v %1 angewandt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>das Residuum der Lichtanpassung zeigt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>the light fit run again</source>
         <translation>die Lichtanpassung erneut ausgeführt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>the curve kept: %1</source>
         <translation>Kurve behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
         <source>toe_shoulder (power %1, toe %2, shoulder %3)</source>
         <translation>toe_shoulder (Exponent %1, Fuß %2, Schulter %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="219"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>mit sRGB %1; auf Kopien von %2 x %3 px %4 gegen %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="215"/>
+        <location filename="../app/studio/engine_text.cpp" line="220"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>mit sRGB %1; kein schneller Vergleich</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="216"/>
+        <location filename="../app/studio/engine_text.cpp" line="221"/>
         <source>log ratio %1 beyond %2</source>
         <translation>Log-Verhältnis %1 jenseits von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>log ratio %1 within %2</source>
         <translation>Log-Verhältnis %1 innerhalb von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="226"/>
+        <location filename="../app/studio/engine_text.cpp" line="231"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="232"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="298"/>
+        <location filename="../app/studio/engine_text.cpp" line="303"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

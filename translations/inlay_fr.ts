@@ -326,708 +326,707 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="22"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
         <source>empty file</source>
         <translation>fichier vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="23"/>
+        <location filename="../app/studio/engine_text.cpp" line="28"/>
         <source>cannot open for reading</source>
         <translation>impossible de l&apos;ouvrir en lecture</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="24"/>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
         <source>read failed</source>
         <translation>la lecture a échoué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="25"/>
+        <location filename="../app/studio/engine_text.cpp" line="30"/>
         <source>no triangles</source>
         <translation>aucun triangle</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="26"/>
+        <location filename="../app/studio/engine_text.cpp" line="31"/>
         <source>import failed: %1</source>
         <translation>l&apos;import a échoué : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="32"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>coordonnée non finie « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>non-finite coordinate</source>
         <translation>coordonnée non finie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>nombre mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>indice de face mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>face corner without a vertex index</source>
         <translation>coin de face sans indice de sommet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>indice de face 0 (les indices OBJ commencent à 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>a face needs at least 3 vertices</source>
         <translation>une face demande au moins 3 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>more than %1 triangles</source>
         <translation>plus de %1 triangles</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>more than %1 vertices</source>
         <translation>plus de %1 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 sommets dépassent la limite de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>« %1 » demande %2 nombres</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>pas un fichier PLY (la signature « ply » manque)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>not a GLB file</source>
         <translation>pas un fichier GLB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="40"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>invalid glTF JSON</source>
         <translation>JSON glTF invalide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="46"/>
         <source>buffer file not found: %1</source>
         <translation>fichier de tampon introuvable : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="45"/>
+        <location filename="../app/studio/engine_text.cpp" line="50"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignorée, la photo est déjà linéaire (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="46"/>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>le mur du fond estimé est inutilisable (%1) ; une pièce de 5 x 5,5 m est utilisée : indiquez layout.back_wall_px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="49"/>
+        <location filename="../app/studio/engine_text.cpp" line="54"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale a priori, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="53"/>
+        <location filename="../app/studio/engine_text.cpp" line="58"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale par défaut, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="57"/>
+        <location filename="../app/studio/engine_text.cpp" line="62"/>
         <source>strength kept as estimated: %1</source>
         <translation>intensité gardée telle qu&apos;estimée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="58"/>
+        <location filename="../app/studio/engine_text.cpp" line="63"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>la fenêtre par laquelle entre le soleil est hors champ ; son ciel est une lumière de %1 x %2 m sur %3 (d&apos;où vient le faisceau), d&apos;intensité ajustée (indiquez source_box_px, ou détourez la fenêtre comme lumière, pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="62"/>
+        <location filename="../app/studio/engine_text.cpp" line="67"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>le masque de %1 montre le sol sous le plateau en %2 points sur %3 : c&apos;est une plaque de %4 m d&apos;épaisseur (indiquez thickness_m pour choisir ; 0 : plein)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="66"/>
+        <location filename="../app/studio/engine_text.cpp" line="71"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>la lumière réfléchie a encore changé de %1 % à la dernière des %2 passes (les murs que la caméra ne voit pas sont incertains)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="69"/>
+        <location filename="../app/studio/engine_text.cpp" line="74"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>les lumières %1 sont hors champ : elles partagent une même radiance (la photo ne montre que leur somme)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="72"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
         <translation>le plafond que la caméra ne voit pas : le modèle de la pièce de l&apos;ajustement de la lumière lui donne un gris de %1, et non la moyenne des murs vus (%2 ; une tache de soleil éclaire le plafond de face, et la photo ne montre pas son albédo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="76"/>
+        <location filename="../app/studio/engine_text.cpp" line="81"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>hors de la pièce ; déplacée de %1 m pour y tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="82"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>plus grande que la pièce dans toutes les directions ; sa position est gardée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="79"/>
+        <location filename="../app/studio/engine_text.cpp" line="84"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 n&apos;éclaire rien de la pièce que montre la photo : son intensité reste à sa valeur de départ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <location filename="../app/studio/engine_text.cpp" line="86"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>la lumière directe de la photo est noire : les lumières sont ajustées sur l&apos;obscurité</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="83"/>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="91"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>non convergée : arrêtée par %1 après %2 itérations (%3 s) : résidu primal %4, dual %5, tolérance %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="89"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>the iteration cap</source>
         <translation>la limite d&apos;itérations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="90"/>
+        <location filename="../app/studio/engine_text.cpp" line="95"/>
         <source>non-finite residuals</source>
         <translation>des résidus non finis</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="96"/>
         <source>cancellation</source>
         <translation>l&apos;annulation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
         <source>noise level</source>
         <translation>niveau de bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="96"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>edge</source>
         <translation>contours</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="97"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="99"/>
+        <location filename="../app/studio/engine_text.cpp" line="104"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="106"/>
+        <location filename="../app/studio/engine_text.cpp" line="111"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="110"/>
+        <location filename="../app/studio/engine_text.cpp" line="115"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="112"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="114"/>
+        <location filename="../app/studio/engine_text.cpp" line="119"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1, %3 avec sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="116"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>la courbe estimée n&apos;a pas été utilisée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="122"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="120"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="126"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="123"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="124"/>
+        <location filename="../app/studio/engine_text.cpp" line="129"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="130"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="131"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="144"/>
+        <location filename="../app/studio/engine_text.cpp" line="149"/>
         <source>none marked</source>
         <translation>aucun marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="145"/>
+        <location filename="../app/studio/engine_text.cpp" line="150"/>
         <source>no sun marked</source>
         <translation>aucun soleil marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="146"/>
+        <location filename="../app/studio/engine_text.cpp" line="151"/>
         <source>none inserted</source>
         <translation>aucun inséré</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="147"/>
+        <location filename="../app/studio/engine_text.cpp" line="152"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="154"/>
         <source>turned off</source>
         <translation>désactivé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>no light marked</source>
         <translation>aucune lumière marquée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>every light locked</source>
         <translation>chaque lumière verrouillée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="153"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the working copy is the photo</source>
         <translation>la copie de travail est la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="159"/>
         <source>the lights were not refined</source>
         <translation>les lumières n&apos;ont pas été affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>no light moved</source>
         <translation>aucune lumière déplacée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting vaut &quot;none&quot; (par défaut)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="162"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>linear photo</source>
         <translation>photo linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="163"/>
+        <location filename="../app/studio/engine_text.cpp" line="168"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="169"/>
         <source>the photo area-averaged</source>
         <translation>la photo réduite par moyenne de surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="165"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>the photo&apos;s own size</source>
         <translation>la taille propre de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="171"/>
         <source>estimated from the photo</source>
         <translation>estimée d&apos;après la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>v %1 applied</source>
         <translation>v %1 appliqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>le résidu de l&apos;ajustement des lumières montre %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>the light fit run again</source>
         <translation>l&apos;ajustement des lumières refait</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="206"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="212"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>the curve kept: %1</source>
         <translation>courbe conservée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB conservé : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="135"/>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="23"/>
         <source>toe_shoulder (power %1, toe %2, shoulder %3)</source>
         <translation>toe_shoulder (exposant %1, pied %2, épaule %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="219"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>%1 avec sRGB ; sur des copies de %2 x %3 px %4 contre %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="215"/>
+        <location filename="../app/studio/engine_text.cpp" line="220"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>%1 avec sRGB ; pas de comparaison rapide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="216"/>
+        <location filename="../app/studio/engine_text.cpp" line="221"/>
         <source>log ratio %1 beyond %2</source>
         <translation>rapport log %1 au-delà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>log ratio %1 within %2</source>
         <translation>rapport log %1 en deçà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="226"/>
+        <location filename="../app/studio/engine_text.cpp" line="231"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="232"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="298"/>
+        <location filename="../app/studio/engine_text.cpp" line="303"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>

@@ -17,6 +17,11 @@ constexpr const char* kContext = "inlay::studio::EngineText";
 // the engine's strings (modeling/src/io/mesh.cpp, app/engine/src/pipeline.cpp,
 // lighting/src/estimate.cpp, refine.cpp and decompose.cpp, modeling/src/camera/response.cpp and
 // noise_level.cpp): a sentence changed there stays English here.
+// A fitted curve as CameraResponse::describe() gives it: inside a warning's sentence and inside
+// the response check's stage line alike.
+const char* const kCurveText =
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)");
+
 const char* const kSentences[] = {
     // Model files refused by the readers (the studio adds the file name).
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "empty file"),
@@ -131,8 +136,8 @@ const char* const kSentences[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText",
                       "the flat regions cover too few codes to measure the noise against them"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo shows no measurable noise"),
-    // A fitted curve as CameraResponse::describe() gives it (inside the sentences above).
-    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)"),
+    // A fitted curve inside the sentences above.
+    kCurveText,
 };
 
 // The preparation's stage lines (app/engine/src/pipeline.cpp: the reasons a scene skips a
@@ -210,7 +215,7 @@ const char* const kStageTexts[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the curve kept: %1"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "sRGB kept: %1"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the light fit's residual with the fitted %1 is %2"),
-    QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)"),
+    kCurveText,
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "with sRGB %1; on %2 x %3 copies %4 against %5"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "with sRGB %1; no quick comparison"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "log ratio %1 beyond %2"),
