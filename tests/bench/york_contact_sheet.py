@@ -3,7 +3,7 @@
 numpy, OpenCV and matplotlib).
 
 usage: york_contact_sheet.py INLAY_CLI YORK_DIR [--out DIR] [--label NAME] [--verdicts CSV]
-                             [--cols N] [--thumb W] [--small PNG] [--rejected]
+                             [--cols N] [--thumb W] [--small PNG] [--rejected] [--keep DIR]
 
 Runs `INLAY_CLI estimate PHOTO -o CAMERA.json --quiet` on every photo of YORK_DIR (sorted by
 name; INLAY_CLI may be a build folder, then BUILD/app/inlay-cli) and draws the box it writes on a
@@ -26,7 +26,8 @@ Writes DIR/york_boxes_<label>.csv (per photo: exit status, seconds, focal length
 width and ceiling in m, layout confidence, warnings, verdict) and DIR/york_boxes_<label>.png;
 --small PNG also writes a 256-colour copy with half-size thumbnails (for the docs). --rejected:
 the sheet shows only the rejected boxes, each captioned with its failure class (the note's
-leading `[class]`), and the summary counts the classes. Prints a JSON
+leading `[class]`), and the summary counts the classes. --keep DIR: each photo's estimate is kept
+as DIR/<photo>.json (york_box_moves.py compares two such folders). Prints a JSON
 summary (photos, failures, boxes refused as implausible, the accepted count per scene type and
 per half A (even indices) and B (odd) when verdicts are given).
 """
@@ -44,9 +45,11 @@ def cli_path(arg):
     return os.path.join(arg, "app", "inlay-cli") if os.path.isdir(arg) else arg
 
 
-def estimate(cli, photo, tmp):
-    """(exit status, seconds, the estimate's JSON or None, stderr)."""
-    out = os.path.join(tmp, "estimate.json")
+def estimate(cli, photo, tmp, keep=None):
+    """(exit status, seconds, the estimate's JSON or None, stderr); with `keep` (a folder) the
+    estimate is written there as <photo's stem>.json."""
+    out = os.path.join(keep, os.path.splitext(os.path.basename(photo))[0] + ".json") if keep else \
+        os.path.join(tmp, "estimate.json")
     if os.path.exists(out):
         os.remove(out)
     t0 = time.time()
@@ -130,12 +133,12 @@ def read_verdicts(path, label):
     return out
 
 
-def run_all(cli, york, verdicts):
+def run_all(cli, york, verdicts, keep=None):
     photos = sorted(f for f in os.listdir(york) if f.lower().endswith((".jpg", ".png")))
     rows, drawn = [], []
     with tempfile.TemporaryDirectory() as tmp:
         for i, name in enumerate(photos):
-            code, dt, est, err = estimate(cli, os.path.join(york, name), tmp)
+            code, dt, est, err = estimate(cli, os.path.join(york, name), tmp, keep)
             scene, verdict, note = verdicts.get(name, ("", "", ""))
             row = {"index": i, "image": name, "exit": code, "seconds": round(dt, 3)}
             lines = []
@@ -235,7 +238,11 @@ def main():
         print("skipped: no", york)
         return
     os.makedirs(out, exist_ok=True)
-    rows, drawn = run_all(cli, york, verdicts)
+    keep = benchlib.option(a, "--keep", "")
+    if keep:
+        keep = os.path.abspath(keep)
+        os.makedirs(keep, exist_ok=True)
+    rows, drawn = run_all(cli, york, verdicts, keep or None)
     benchlib.write_csv(os.path.join(out, "york_boxes_%s.csv" % label), rows, table="york_boxes_%s" % label)
     png = os.path.join(out, "york_boxes_%s.png" % label)
     rejected = "--rejected" in a
