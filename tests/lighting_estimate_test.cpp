@@ -231,7 +231,11 @@ struct SunWindow {
   SunLight sun;
 };
 
-SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool leftWall = false) {
+// `revealDepth` > 0: the window is a hole through a wall that thick (its reveal), and the beam is
+// what passes both its inner and its outer opening (t04's and t10's windows, 0.2 m); the sky
+// light stays the inner opening.
+SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool leftWall = false,
+                           double revealDepth = 0) {
   // The window spans u0..u1 along the wall (x on the back wall, z on the left) and y0..y1.
   const double u0 = leftWall ? -3.6 : -0.8, u1 = leftWall ? -2.0 : 0.8, y0 = 1.0, y1 = 2.2;
   const int axis = leftWall ? 0 : 2, along = leftWall ? 2 : 0;  // the wall's normal, along it
@@ -259,8 +263,11 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool
       const Ray ray = r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
       if (!(ray.direction.y() < 0)) continue;
       const Vec3 q = ray.origin - ray.origin.y() / ray.direction.y() * ray.direction;
-      const Vec3 w = q - (q[axis] - wall) / sun.travelDirection[axis] * sun.travelDirection;
-      const double inside = std::min({w[along] - u0, u1 - w[along], w.y() - y0, y1 - w.y()});
+      auto insideAt = [&](double plane) {
+        const Vec3 w = q - (q[axis] - plane) / sun.travelDirection[axis] * sun.travelDirection;
+        return std::min({w[along] - u0, u1 - w[along], w.y() - y0, y1 - w.y()});
+      };
+      const double inside = std::min(insideAt(wall), insideAt(wall - revealDepth));
       sun.litMask.at(x, y) = float(std::clamp(inside / 0.1 + 0.5, 0.0, 1.0));
     }
   return out;
@@ -443,6 +450,62 @@ TEST(Lighting, TheBeamCarriedBackFindsItsWindow) {
   SunLight dark = sw.sun;
   for (float& v : dark.litMask.data) v = 0.f;
   EXPECT_FALSE(openingOfBeam(dark, r.camera, r.geometry).has_value());
+}
+
+// The bounds of a rectangle's corners.
+std::pair<Vec3, Vec3> boundsOf(const AreaLight& l) {
+  Vec3 lo = Vec3::Constant(1e9), hi = Vec3::Constant(-1e9);
+  for (const Vec3& c : l.cornersWorld) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  return {lo, hi};
+}
+
+// A window through a wall 0.2 m thick (t04's, t10's and d4's): the beam is what passes both its
+// inner and outer opening, so carried back it is the window less its top 0.17 m (and 0.03 m on
+// one side), the part whose light the reveal takes. openingOfBeam with the reveal's depth widens
+// it back to the window (within the mask's soft edge, 0.08 m), on either wall; without it the
+// top is short. Stiff depths stay finite and inside the room: NaN or negative is no reveal, a
+// depth of 1e6 (a beam grazing the wall) grows each side by at most the section's extent.
+TEST(Lighting, TheOpeningOfABeamThroughAThickWallIsTheWholeWindow) {
+  SyntheticRoom r = emptyRoom();
+  r.camera.worldFromCamera = Eigen::AngleAxisd(-40 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  for (const bool leftWall : {false, true}) {
+    SCOPED_TRACE(leftWall ? "left wall" : "back wall");
+    const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4), leftWall, 0.2);
+    const auto beam = openingOfBeam(sw.sun, r.camera, r.geometry);
+    const auto widened = openingOfBeam(sw.sun, r.camera, r.geometry, 50, 0.2);
+    ASSERT_TRUE(beam.has_value() && widened.has_value());
+    const auto [wlo, whi] = boundsOf(sw.window);
+    const auto [blo, bhi] = boundsOf(beam->light);
+    const auto [lo, hi] = boundsOf(widened->light);
+    std::printf("%s wall: window y %.3f..%.3f, beam %.3f..%.3f, widened %.3f..%.3f (%.2f x %.2f m)\n",
+                leftWall ? "left" : "back", wlo.y(), whi.y(), blo.y(), bhi.y(), lo.y(), hi.y(),
+                widened->widthM, widened->heightM);
+    EXPECT_LT(bhi.y(), whi.y() - 0.1);  // the beam alone: the window's top is missing
+    for (int a : {0, 1, 2}) {
+      EXPECT_NEAR(lo[a], wlo[a], 0.08) << "axis " << a;
+      EXPECT_NEAR(hi[a], whi[a], 0.08) << "axis " << a;
+    }
+    EXPECT_EQ(widened->surface, beam->surface);
+    EXPECT_GT(widened->light.normal().dot(beam->light.normal()), 0.99);  // still into the room
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double noReveal : {nan, -1.0, 0.0}) {
+      const auto same = openingOfBeam(sw.sun, r.camera, r.geometry, 50, noReveal);
+      ASSERT_TRUE(same.has_value());
+      EXPECT_EQ(same->light.cornersWorld, beam->light.cornersWorld) << noReveal;
+    }
+    const auto deep = openingOfBeam(sw.sun, r.camera, r.geometry, 50, 1e6);
+    ASSERT_TRUE(deep.has_value());
+    const RoomBox& box = r.geometry.box;
+    for (const Vec3& c : deep->light.cornersWorld) {
+      EXPECT_TRUE(c.allFinite());
+      EXPECT_GE(c.y(), -1e-9);
+      EXPECT_LE(c.y(), box.ceilingM + 1e-9);
+      EXPECT_GE(c.x(), std::min(box.xLeftM, box.xRightM) - 1e-9);
+      EXPECT_LE(c.x(), std::max(box.xLeftM, box.xRightM) + 1e-9);
+    }
+    EXPECT_LE(deep->heightM, 2 * beam->heightM + 1e-9);
+    EXPECT_LE(deep->widthM, 2 * beam->widthM + 1e-9);
+  }
 }
 
 // t04's and t10's case: the sun comes through a window the photo does not show, and that

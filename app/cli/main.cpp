@@ -131,6 +131,9 @@ Render options:
                           only when a light's corner moved by at least F of the light's size,
                           else the first estimate's lights are kept (default 0.05; 0: any move
                           over a millimetre refits)
+  --window-reveal M       diagnostics: the depth (m) of the reveal of a sun's window the photo
+                          does not show; its sky's opening is the beam's section widened by it
+                          on the side the light comes from (default 0.2; 0: the beam's section)
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)
@@ -206,6 +209,7 @@ struct Args {
   std::optional<int> spp, seed, threads, iterations, prepareSeed;
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
   std::optional<double> refitMinMove;            // --refit-min-move
+  std::optional<double> windowReveal;            // --window-reveal
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::string unseenCeiling = "fit";             // --unseen-ceiling walls|fit|fit-render
   std::optional<double> seconds, noise;
@@ -250,7 +254,7 @@ bool takesValue(const std::string& option) {
       "--evaluate-at --min-improvement --report --min-srgb-residual --noise-quantile "
       "--working-mp --max-top-stops --response-quick-margin --response-quick-copy "
       "--clamp-indirect --max-dark-fill --edge-weight --prepare-seed "
-      "--keep-better-fit-tolerance --refit-min-move --fit-unseen-ceiling --caustic-photons "
+      "--keep-better-fit-tolerance --refit-min-move --fit-unseen-ceiling --caustic-photons --window-reveal "
       "--unseen-ceiling --caustic-radius --pixel-filter --solver ";
   if (option.empty() || option.find(' ') != std::string::npos) return false;
   return (" " + options).find(" " + option + " ") != std::string::npos;
@@ -301,6 +305,10 @@ std::string parseArgs(int argc, char** argv, Args& a) {
         a.keepBetterFitTolerance = parseNumber<double>(*v);
         if (!a.keepBetterFitTolerance)
           return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
+      } else if (s == "--window-reveal") {
+        a.windowReveal = parseNumber<double>(*v);
+        if (!a.windowReveal || !(*a.windowReveal >= 0) || !(*a.windowReveal <= 10))
+          return "--window-reveal: '" + *v + "' is not a depth in metres from 0 to 10";
       } else if (s == "--refit-min-move") {
         a.refitMinMove = parseNumber<double>(*v);
         if (!a.refitMinMove) return "--refit-min-move: '" + *v + "' is not a non-negative fraction";
@@ -515,6 +523,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
   if (a.refitMinMove) po.refitMinLightMove = *a.refitMinMove;
+  if (a.windowReveal) po.windowRevealDepthM = *a.windowReveal;
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";
