@@ -1987,15 +1987,16 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
 // the photo shows (score_albedo.py's measure). Every albedo and gathered value finite.
 struct SunRoomAlbedo {
   Vec3 sky, sun;
+  Vec3 skyPower;  // the sky's radiance x the opening's area over the truth's
   double mae = 0, scale = 0;
   bool noted = false;  // the estimate's notes say the unseen ceiling was lifted
 };
 SunRoomAlbedo sunRoomAlbedo(SyntheticRoom r, const Vec3& sun, const Vec3& sky, bool leftWall,
-                            double ceilingAtLeast) {
-  SunWindow sw = sunThroughWindow(r, sun, leftWall);
+                            double ceilingAtLeast, double wallDepth = 0, double revealDepth = 0) {
+  SunWindow sw = sunThroughWindow(r, sun, leftWall, wallDepth);
   sw.window.radiance = sky;
   const ImageF photo = clippedSunPhoto(r, sw);
-  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry, 50, revealDepth);
   EXPECT_TRUE(opening.has_value());
   if (!opening) return {};
   LightingOptions opt = sunRoomOptions();
@@ -2007,6 +2008,7 @@ SunRoomAlbedo sunRoomAlbedo(SyntheticRoom r, const Vec3& sun, const Vec3& sky, b
   for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
   SunRoomAlbedo out;
   out.sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+  out.skyPower = out.sky * (opening->light.area() / sw.window.area());
   out.sun = est->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
   out.noted = std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
     return n.find("the ceiling the camera does not see") != std::string::npos;
@@ -2073,6 +2075,48 @@ TEST(Lighting, SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite) {
         EXPECT_NEAR(a[1].sun[c], 1.0, 0.25) << "channel " << c;  // 0.79 / 0.77 with the walls' mean
         EXPECT_NEAR(a[1].sky[c], 1.0, 0.45) << "channel " << c;  // 1.02 / 0.94 with the walls' mean
       }
+  }
+}
+
+// The synthetic sun rooms of SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite (t04's albedos, the
+// window out of view in the back or the left wall) with the window through a wall 0.2 m thick:
+// the beam is what passes the inner and the outer opening, the sky comes in through the inner
+// one. The opening carried back from the beam alone lacks the window's top, and the fit makes
+// up for it with a brighter sky (its radiance 1.50 / 1.31 times the truth's in green) and a
+// darker albedo (best scale 0.967 / 0.917). Widened by the reveal (PrepareOptions::
+// windowRevealDepthM) the opening is the window: the radiance comes closer (1.37 / 1.20), the
+// albedo's scale within 3 % (1.017 / 0.977), the sun up by 6 %. Not everything improves: the
+// sky's power (radiance x area) overshoots more (1.22 / 1.10 against 1.10 / 0.97: the too
+// small window hid the overshoot of the unseen ceiling's rule, "The sun rooms' albedo") and
+// the albedo's MAE is no better (0.0811 -> 0.0872, 0.0686 -> 0.0690; measured, printed).
+// docs/generalization.md, "The unseen window's reveal".
+TEST(Lighting, TheSunRoomsSkyThroughAThickWallsWindow) {
+  const Vec3 sky(2.4, 3.05, 4.4), wall(0.45, 0.45, 0.48), ceiling(0.88, 0.88, 0.9);
+  for (const bool leftWall : {false, true}) {
+    SyntheticRoom r = roomLookingDown();
+    r.albedo = {Vec3(0.5, 0.47, 0.45), ceiling, wall, wall, wall, wall};
+    std::array<SunRoomAlbedo, 2> a;
+    for (const bool reveal : {false, true}) {
+      a[reveal] = sunRoomAlbedo(r, Vec3(3.3, 3.1, 2.7), sky, leftWall, kUnseenCeilingAlbedo, 0.2,
+                                reveal ? 0.2 : 0.0);
+      const SunRoomAlbedo& k = a[reveal];
+      std::printf(
+          "window %s, opening %s: albedo MAE %.4f scale %.3f, sky %.2f %.2f %.2f (power %.2f %.2f "
+          "%.2f), sun %.2f %.2f %.2f\n",
+          leftWall ? "left" : "back", reveal ? "widened by the reveal" : "the beam's section", k.mae,
+          k.scale, k.sky.x(), k.sky.y(), k.sky.z(), k.skyPower.x(), k.skyPower.y(), k.skyPower.z(),
+          k.sun.x(), k.sun.y(), k.sun.z());
+    }
+    SCOPED_TRACE(leftWall ? "window left" : "window back");
+    EXPECT_LT(std::abs(a[1].scale - 1), std::abs(a[0].scale - 1));  // measured 0.02 against 0.03-0.08
+    EXPECT_LT(std::abs(a[1].scale - 1), 0.05);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LT(std::abs(a[1].sky[c] - 1), std::abs(a[0].sky[c] - 1)) << "channel " << c;
+      EXPECT_GT(a[1].sun[c], a[0].sun[c]) << "channel " << c;
+      EXPECT_NEAR(a[1].sun[c], 1.0, 0.25) << "channel " << c;
+      EXPECT_NEAR(a[1].skyPower[c], 1.0, 0.35) << "channel " << c;
+    }
+    EXPECT_LT(a[1].mae, 1.15 * a[0].mae);  // no better: 0.0811 -> 0.0872, 0.0686 -> 0.0690
   }
 }
 
