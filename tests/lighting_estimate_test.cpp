@@ -1942,7 +1942,9 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
     sw.window.radiance = k.sky;
     if (k.travel.norm() > 0) sw.sun.travelDirection = k.travel;
     const ImageF photo = clippedSunPhoto(r, sw);
-    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+    // The product's opening (widened by the reveal; the beam of a thin window: the window and
+    // a strip above it).
+    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry, 50, kWindowRevealDepthM);
     std::vector<AreaLight> lights;
     if (opening) lights.push_back(opening->light);
     LightingOptions o = sunRoomOptions();
