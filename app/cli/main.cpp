@@ -260,6 +260,38 @@ bool takesValue(const std::string& option) {
   return (" " + options).find(" " + option + " ") != std::string::npos;
 }
 
+// The light fit's diagnostics that take a value (--unseen-ceiling, --fit-unseen-ceiling,
+// --keep-better-fit-tolerance, --window-reveal, --refit-min-move): nullopt when `s` is none of
+// them, else an error message (empty: parsed into `a`).
+std::optional<std::string> parseLightFitDiagnostic(const std::string& s, const std::string& v, Args& a) {
+  if (s == "--unseen-ceiling") {
+    if (v != "walls" && v != "fit" && v != "fit-render")
+      return "--unseen-ceiling: '" + v + "' is not walls, fit or fit-render";
+    a.unseenCeiling = v;
+  } else if (s == "--fit-unseen-ceiling") {
+    double r = -1, g = -1, b = -1;
+    char tail = 0;
+    if (std::sscanf(v.c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
+        !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
+      return "--fit-unseen-ceiling: '" + v + "' is not three non-negative numbers R,G,B";
+    a.fitUnseenCeiling = Vec3(r, g, b);
+  } else if (s == "--keep-better-fit-tolerance") {
+    a.keepBetterFitTolerance = parseNumber<double>(v);
+    if (!a.keepBetterFitTolerance)
+      return "--keep-better-fit-tolerance: '" + v + "' is not a non-negative fraction";
+  } else if (s == "--window-reveal") {
+    a.windowReveal = parseNumber<double>(v);
+    if (!a.windowReveal || !(*a.windowReveal <= 10))
+      return "--window-reveal: '" + v + "' is not a depth in metres from 0 to 10";
+  } else if (s == "--refit-min-move") {
+    a.refitMinMove = parseNumber<double>(v);
+    if (!a.refitMinMove) return "--refit-min-move: '" + v + "' is not a non-negative fraction";
+  } else {
+    return std::nullopt;
+  }
+  return std::string();
+}
+
 // Returns an error message, or empty on success.
 std::string parseArgs(int argc, char** argv, Args& a) {
   for (int i = 1; i < argc; ++i) {
@@ -290,28 +322,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--unseen-ceiling") {
-        if (*v != "walls" && *v != "fit" && *v != "fit-render")
-          return "--unseen-ceiling: '" + *v + "' is not walls, fit or fit-render";
-        a.unseenCeiling = *v;
-      } else if (s == "--fit-unseen-ceiling") {
-        double r = -1, g = -1, b = -1;
-        char tail = 0;
-        if (std::sscanf(v->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
-            !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
-          return "--fit-unseen-ceiling: '" + *v + "' is not three non-negative numbers R,G,B";
-        a.fitUnseenCeiling = Vec3(r, g, b);
-      } else if (s == "--keep-better-fit-tolerance") {
-        a.keepBetterFitTolerance = parseNumber<double>(*v);
-        if (!a.keepBetterFitTolerance)
-          return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
-      } else if (s == "--window-reveal") {
-        a.windowReveal = parseNumber<double>(*v);
-        if (!a.windowReveal || !(*a.windowReveal >= 0) || !(*a.windowReveal <= 10))
-          return "--window-reveal: '" + *v + "' is not a depth in metres from 0 to 10";
-      } else if (s == "--refit-min-move") {
-        a.refitMinMove = parseNumber<double>(*v);
-        if (!a.refitMinMove) return "--refit-min-move: '" + *v + "' is not a non-negative fraction";
+      else if (const auto e = parseLightFitDiagnostic(s, *v, a)) {
+        if (!e->empty()) return *e;
       } else if (s == "--response-quick-margin") {
         a.quickMargin = *v == "inf" ? std::optional<double>(std::numeric_limits<double>::infinity())
                                     : parseNumber<double>(*v);
