@@ -239,10 +239,6 @@ double visibleShareOf(const AreaLight& light, int surface, const Camera& camera,
   return seen / 64.0;
 }
 
-}  // namespace
-
-namespace {
-
 // The beam's section [a0, a1] x [b0, b1] (along u, v in the wall's plane, inward normal n)
 // widened to the inner opening of a wall `depth` thick (openingOfBeam): the outer opening, seen
 // along the beam, is the inner one shifted by depth x the beam's slope across the wall, so the

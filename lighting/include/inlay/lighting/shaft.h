@@ -34,17 +34,17 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
                                      const Camera& camera, const SceneGeometry& geometry,
                                      const std::string& key);
 
+// The wall thickness a window of a sun's beam is assumed to have when the photo does not show it
+// (PrepareOptions::windowRevealDepthM): 0.2 m, an outer wall's, chosen on the dev sun room d4
+// (docs/generalization.md, "The unseen window's reveal").
+inline constexpr double kWindowRevealDepthM = 0.2;
+
 // The opening a sun's beam came through, as far as its lit patch shows it. Sunlight enters
 // through a window that lets the sky in as well; when the photo does not show that window, its
 // sky is a light no outline marks, and the room's light would be short by it. Every lit pixel
 // of the beam's mask (> 0.5) is carried back against the light to the box surface (a wall or
 // the ceiling) it crosses; the rectangle spanning the 2nd to 98th percentiles of those points
 // in that surface's plane, 1 mm into the room, is the opening.
-// The wall thickness a window of a sun's beam is assumed to have when the photo does not show it
-// (PrepareOptions::windowRevealDepthM): 0.2 m, an outer wall's, chosen on the dev sun room d4
-// (docs/generalization.md, "The unseen window's reveal").
-inline constexpr double kWindowRevealDepthM = 0.2;
-
 struct BeamOpening {
   AreaLight light;   // facing into the room, radiance (1, 1, 1): the lighting fit finds it
   int surface = -1;  // the box surface it lies on
