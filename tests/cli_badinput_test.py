@@ -78,6 +78,7 @@ def main():
     # Diagnostics of the preparation: a bad value exits 2 naming the flag.
     for flag, values in (("--keep-better-fit-tolerance", ("-1", "nan", "inf", "low")),
                          ("--prepare-seed", ("-1", "x")),
+                         ("--window-reveal", ("-0.1", "nan", "inf", "11", "deep")),
                          ("--fit-unseen-ceiling", ("0.5,0.5", "0.5,0.5,0.5,0.5", "0.5,-1,0.5", "nan,0.5,0.5", "white")),
                          ("--unseen-ceiling", ("white", "", "FIT")),
                          ("--response-quick-margin", ("-1", "nan", "wide")),

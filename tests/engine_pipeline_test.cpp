@@ -390,6 +390,20 @@ TEST(Engine, AShaftsWindowOutOfViewBecomesALight) {
   auto without = prepareScene(doc, off);
   ASSERT_TRUE(without.ok()) << without.error().message();
   EXPECT_EQ(without->lighting.lights.size(), doc.lights.size());
+  // The opening is the beam's section widened by the window's reveal
+  // (PrepareOptions::windowRevealDepthM, 0.2 m): larger than the section alone, on the same plane.
+  PrepareOptions flat = off;
+  flat.skyThroughUnseenWindows = true;
+  flat.windowRevealDepthM = 0;
+  auto section = prepareScene(doc, flat);
+  ASSERT_TRUE(section.ok()) << section.error().message();
+  ASSERT_EQ(section->lighting.lights.size(), doc.lights.size() + 1);
+  const AreaLight& beam = section->lighting.lights.back();
+  std::printf("the sky's opening: %.3f m2 widened by the reveal, %.3f m2 the beam's section\n",
+              sky.area(), beam.area());
+  EXPECT_GT(sky.area(), 1.05 * beam.area());
+  EXPECT_NEAR(std::abs(sky.normal().dot(beam.normal())), 1.0, 1e-9);
+  EXPECT_NEAR((sky.centre() - beam.centre()).dot(beam.normal()), 0.0, 1e-9);
 }
 
 TEST(Engine, TheRenderUsesTheRefinedLightsAndALockedLightStays) {

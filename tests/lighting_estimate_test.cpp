@@ -231,7 +231,11 @@ struct SunWindow {
   SunLight sun;
 };
 
-SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool leftWall = false) {
+// `revealDepth` > 0: the window is a hole through a wall that thick (its reveal), and the beam is
+// what passes both its inner and its outer opening (t04's and t10's windows, 0.2 m); the sky
+// light stays the inner opening.
+SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool leftWall = false,
+                           double revealDepth = 0) {
   // The window spans u0..u1 along the wall (x on the back wall, z on the left) and y0..y1.
   const double u0 = leftWall ? -3.6 : -0.8, u1 = leftWall ? -2.0 : 0.8, y0 = 1.0, y1 = 2.2;
   const int axis = leftWall ? 0 : 2, along = leftWall ? 2 : 0;  // the wall's normal, along it
@@ -259,8 +263,11 @@ SunWindow sunThroughWindow(const SyntheticRoom& r, const Vec3& sunStrength, bool
       const Ray ray = r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5));
       if (!(ray.direction.y() < 0)) continue;
       const Vec3 q = ray.origin - ray.origin.y() / ray.direction.y() * ray.direction;
-      const Vec3 w = q - (q[axis] - wall) / sun.travelDirection[axis] * sun.travelDirection;
-      const double inside = std::min({w[along] - u0, u1 - w[along], w.y() - y0, y1 - w.y()});
+      auto insideAt = [&](double plane) {
+        const Vec3 w = q - (q[axis] - plane) / sun.travelDirection[axis] * sun.travelDirection;
+        return std::min({w[along] - u0, u1 - w[along], w.y() - y0, y1 - w.y()});
+      };
+      const double inside = std::min(insideAt(wall), insideAt(wall - revealDepth));
       sun.litMask.at(x, y) = float(std::clamp(inside / 0.1 + 0.5, 0.0, 1.0));
     }
   return out;
@@ -443,6 +450,62 @@ TEST(Lighting, TheBeamCarriedBackFindsItsWindow) {
   SunLight dark = sw.sun;
   for (float& v : dark.litMask.data) v = 0.f;
   EXPECT_FALSE(openingOfBeam(dark, r.camera, r.geometry).has_value());
+}
+
+// The bounds of a rectangle's corners.
+std::pair<Vec3, Vec3> boundsOf(const AreaLight& l) {
+  Vec3 lo = Vec3::Constant(1e9), hi = Vec3::Constant(-1e9);
+  for (const Vec3& c : l.cornersWorld) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  return {lo, hi};
+}
+
+// A window through a wall 0.2 m thick (t04's, t10's and d4's): the beam is what passes both its
+// inner and outer opening, so carried back it is the window less its top 0.17 m (and 0.03 m on
+// one side), the part whose light the reveal takes. openingOfBeam with the reveal's depth widens
+// it back to the window (within the mask's soft edge, 0.08 m), on either wall; without it the
+// top is short. Stiff depths stay finite and inside the room: NaN or negative is no reveal, a
+// depth of 1e6 (a beam grazing the wall) grows each side by at most the section's extent.
+TEST(Lighting, TheOpeningOfABeamThroughAThickWallIsTheWholeWindow) {
+  SyntheticRoom r = emptyRoom();
+  r.camera.worldFromCamera = Eigen::AngleAxisd(-40 * M_PI / 180, Vec3::UnitX()).toRotationMatrix();
+  for (const bool leftWall : {false, true}) {
+    SCOPED_TRACE(leftWall ? "left wall" : "back wall");
+    const SunWindow sw = sunThroughWindow(r, Vec3(5, 4.6, 4), leftWall, 0.2);
+    const auto beam = openingOfBeam(sw.sun, r.camera, r.geometry);
+    const auto widened = openingOfBeam(sw.sun, r.camera, r.geometry, 50, 0.2);
+    ASSERT_TRUE(beam.has_value() && widened.has_value());
+    const auto [wlo, whi] = boundsOf(sw.window);
+    const auto [blo, bhi] = boundsOf(beam->light);
+    const auto [lo, hi] = boundsOf(widened->light);
+    std::printf("%s wall: window y %.3f..%.3f, beam %.3f..%.3f, widened %.3f..%.3f (%.2f x %.2f m)\n",
+                leftWall ? "left" : "back", wlo.y(), whi.y(), blo.y(), bhi.y(), lo.y(), hi.y(),
+                widened->widthM, widened->heightM);
+    EXPECT_LT(bhi.y(), whi.y() - 0.1);  // the beam alone: the window's top is missing
+    for (int a : {0, 1, 2}) {
+      EXPECT_NEAR(lo[a], wlo[a], 0.08) << "axis " << a;
+      EXPECT_NEAR(hi[a], whi[a], 0.08) << "axis " << a;
+    }
+    EXPECT_EQ(widened->surface, beam->surface);
+    EXPECT_GT(widened->light.normal().dot(beam->light.normal()), 0.99);  // still into the room
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double noReveal : {nan, -1.0, 0.0}) {
+      const auto same = openingOfBeam(sw.sun, r.camera, r.geometry, 50, noReveal);
+      ASSERT_TRUE(same.has_value());
+      EXPECT_EQ(same->light.cornersWorld, beam->light.cornersWorld) << noReveal;
+    }
+    const auto deep = openingOfBeam(sw.sun, r.camera, r.geometry, 50, 1e6);
+    ASSERT_TRUE(deep.has_value());
+    const RoomBox& box = r.geometry.box;
+    for (const Vec3& c : deep->light.cornersWorld) {
+      EXPECT_TRUE(c.allFinite());
+      EXPECT_GE(c.y(), -1e-9);
+      EXPECT_LE(c.y(), box.ceilingM + 1e-9);
+      EXPECT_GE(c.x(), std::min(box.xLeftM, box.xRightM) - 1e-9);
+      EXPECT_LE(c.x(), std::max(box.xLeftM, box.xRightM) + 1e-9);
+    }
+    EXPECT_LE(deep->heightM, 2 * beam->heightM + 1e-9);
+    EXPECT_LE(deep->widthM, 2 * beam->widthM + 1e-9);
+  }
 }
 
 // t04's and t10's case: the sun comes through a window the photo does not show, and that
@@ -1879,7 +1942,9 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
     sw.window.radiance = k.sky;
     if (k.travel.norm() > 0) sw.sun.travelDirection = k.travel;
     const ImageF photo = clippedSunPhoto(r, sw);
-    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+    // The product's opening (widened by the reveal; the beam of a thin window: the window and
+    // a strip above it).
+    const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry, 50, kWindowRevealDepthM);
     std::vector<AreaLight> lights;
     if (opening) lights.push_back(opening->light);
     LightingOptions o = sunRoomOptions();
@@ -1924,15 +1989,16 @@ TEST(Lighting, TheSunRoomsPassesStayFiniteOnStiffInputs) {
 // the photo shows (score_albedo.py's measure). Every albedo and gathered value finite.
 struct SunRoomAlbedo {
   Vec3 sky, sun;
+  Vec3 skyPower;  // the sky's radiance x the opening's area over the truth's
   double mae = 0, scale = 0;
   bool noted = false;  // the estimate's notes say the unseen ceiling was lifted
 };
 SunRoomAlbedo sunRoomAlbedo(SyntheticRoom r, const Vec3& sun, const Vec3& sky, bool leftWall,
-                            double ceilingAtLeast) {
-  SunWindow sw = sunThroughWindow(r, sun, leftWall);
+                            double ceilingAtLeast, double wallDepth = 0, double revealDepth = 0) {
+  SunWindow sw = sunThroughWindow(r, sun, leftWall, wallDepth);
   sw.window.radiance = sky;
   const ImageF photo = clippedSunPhoto(r, sw);
-  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry);
+  const auto opening = openingOfBeam(sw.sun, r.camera, r.geometry, 50, revealDepth);
   EXPECT_TRUE(opening.has_value());
   if (!opening) return {};
   LightingOptions opt = sunRoomOptions();
@@ -1944,6 +2010,7 @@ SunRoomAlbedo sunRoomAlbedo(SyntheticRoom r, const Vec3& sun, const Vec3& sky, b
   for (float v : est->gathered.data) EXPECT_TRUE(std::isfinite(v) && v >= 0);
   SunRoomAlbedo out;
   out.sky = est->lights[0].radiance.cwiseQuotient(sw.window.radiance);
+  out.skyPower = out.sky * (opening->light.area() / sw.window.area());
   out.sun = est->suns[0].irradianceOverPi.cwiseQuotient(sw.sun.irradianceOverPi);
   out.noted = std::any_of(est->notes.begin(), est->notes.end(), [](const std::string& n) {
     return n.find("the ceiling the camera does not see") != std::string::npos;
@@ -2010,6 +2077,57 @@ TEST(Lighting, SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite) {
         EXPECT_NEAR(a[1].sun[c], 1.0, 0.25) << "channel " << c;  // 0.79 / 0.77 with the walls' mean
         EXPECT_NEAR(a[1].sky[c], 1.0, 0.45) << "channel " << c;  // 1.02 / 0.94 with the walls' mean
       }
+  }
+}
+
+// The synthetic sun rooms of SunRoomAlbedoWithTheUnseenCeilingAtLeastWhite (t04's albedos, the
+// window out of view in the back or the left wall) with the window through a wall 0.2 m thick:
+// the beam is what passes the inner and the outer opening, the sky comes in through the inner
+// one. The opening carried back from the beam alone lacks the window's top, and the fit makes
+// up for it with a brighter sky (its radiance 1.50 / 1.31 times the truth's in green) and a
+// darker albedo (best scale 0.967 / 0.917). Widened by the reveal (PrepareOptions::
+// windowRevealDepthM) the opening is the window: the radiance comes closer (1.37 / 1.20), the
+// albedo's scale within 3 % (1.017 / 0.977), the sun up by 6 %. Not everything improves: the
+// sky's power (radiance x area) overshoots more (1.22 / 1.10 against 1.10 / 0.97: the too
+// small window hid the overshoot of the unseen ceiling's rule, "The sun rooms' albedo") and
+// the albedo's MAE is no better (0.0811 -> 0.0872, 0.0686 -> 0.0690; measured, printed).
+// docs/generalization.md, "The unseen window's reveal".
+TEST(Lighting, TheSunRoomsSkyThroughAThickWallsWindow) {
+  const Vec3 sky(2.4, 3.05, 4.4), wall(0.45, 0.45, 0.48), ceiling(0.88, 0.88, 0.9);
+  for (const bool leftWall : {false, true}) {
+    SyntheticRoom r = roomLookingDown();
+    r.albedo = {Vec3(0.5, 0.47, 0.45), ceiling, wall, wall, wall, wall};
+    std::array<SunRoomAlbedo, 2> a;
+    for (const bool reveal : {false, true}) {
+      a[reveal] = sunRoomAlbedo(r, Vec3(3.3, 3.1, 2.7), sky, leftWall, kUnseenCeilingAlbedo, 0.2,
+                                reveal ? 0.2 : 0.0);
+      const SunRoomAlbedo& k = a[reveal];
+      std::printf(
+          "window %s, opening %s: albedo MAE %.4f scale %.3f, sky %.2f %.2f %.2f (power %.2f %.2f "
+          "%.2f), sun %.2f %.2f %.2f\n",
+          leftWall ? "left" : "back", reveal ? "widened by the reveal" : "the beam's section", k.mae,
+          k.scale, k.sky.x(), k.sky.y(), k.sky.z(), k.skyPower.x(), k.skyPower.y(), k.skyPower.z(),
+          k.sun.x(), k.sun.y(), k.sun.z());
+    }
+    SCOPED_TRACE(leftWall ? "window left" : "window back");
+    EXPECT_LT(std::abs(a[1].scale - 1), std::abs(a[0].scale - 1));  // measured 0.02 against 0.03-0.08
+    EXPECT_LT(std::abs(a[1].scale - 1), 0.05);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LT(std::abs(a[1].sky[c] - 1), std::abs(a[0].sky[c] - 1)) << "channel " << c;
+      EXPECT_GT(a[1].sun[c], a[0].sun[c]) << "channel " << c;
+      EXPECT_NEAR(a[1].sun[c], 1.0, 0.25) << "channel " << c;
+      EXPECT_NEAR(a[1].skyPower[c], 1.0, 0.35) << "channel " << c;
+    }
+    EXPECT_LT(a[1].mae, 1.15 * a[0].mae);  // no better: 0.0811 -> 0.0872, 0.0686 -> 0.0690
+    // A window with no reveal (a thin wall, a glass door), widened all the same: the opening is
+    // too tall by 0.17 m, and the fit spreads the sky over it (printed for the record).
+    const SunRoomAlbedo thin =
+        sunRoomAlbedo(r, Vec3(3.3, 3.1, 2.7), sky, leftWall, kUnseenCeilingAlbedo, 0.0, 0.2);
+    std::printf(
+        "window %s in a thin wall, widened: albedo MAE %.4f scale %.3f, sky %.2f (power %.2f), "
+        "sun %.2f\n",
+        leftWall ? "left" : "back", thin.mae, thin.scale, thin.sky.y(), thin.skyPower.y(), thin.sun.y());
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(thin.sky[c]) && std::isfinite(thin.sun[c]));
   }
 }
 

@@ -131,6 +131,9 @@ Render options:
                           only when a light's corner moved by at least F of the light's size,
                           else the first estimate's lights are kept (default 0.05; 0: any move
                           over a millimetre refits)
+  --window-reveal M       diagnostics: the depth (m) of the reveal of a sun's window the photo
+                          does not show; its sky's opening is the beam's section widened by it
+                          on the side the light comes from (default 0.2; 0: the beam's section)
   --fit-unseen-ceiling R,G,B
                           diagnostics: the albedo the light fit's model gives a ceiling the
                           photo does not show (default: the seen walls' mean)
@@ -206,6 +209,7 @@ struct Args {
   std::optional<int> spp, seed, threads, iterations, prepareSeed;
   std::optional<double> keepBetterFitTolerance;  // --keep-better-fit-tolerance
   std::optional<double> refitMinMove;            // --refit-min-move
+  std::optional<double> windowReveal;            // --window-reveal
   std::optional<Vec3> fitUnseenCeiling;          // --fit-unseen-ceiling R,G,B
   std::string unseenCeiling = "fit";             // --unseen-ceiling walls|fit|fit-render
   std::optional<double> seconds, noise;
@@ -250,10 +254,42 @@ bool takesValue(const std::string& option) {
       "--evaluate-at --min-improvement --report --min-srgb-residual --noise-quantile "
       "--working-mp --max-top-stops --response-quick-margin --response-quick-copy "
       "--clamp-indirect --max-dark-fill --edge-weight --prepare-seed "
-      "--keep-better-fit-tolerance --refit-min-move --fit-unseen-ceiling --caustic-photons "
+      "--keep-better-fit-tolerance --refit-min-move --fit-unseen-ceiling --caustic-photons --window-reveal "
       "--unseen-ceiling --caustic-radius --pixel-filter --solver ";
   if (option.empty() || option.find(' ') != std::string::npos) return false;
   return (" " + options).find(" " + option + " ") != std::string::npos;
+}
+
+// The light fit's diagnostics that take a value (--unseen-ceiling, --fit-unseen-ceiling,
+// --keep-better-fit-tolerance, --window-reveal, --refit-min-move): nullopt when `s` is none of
+// them, else an error message (empty: parsed into `a`).
+std::optional<std::string> parseLightFitDiagnostic(const std::string& s, const std::string& v, Args& a) {
+  if (s == "--unseen-ceiling") {
+    if (v != "walls" && v != "fit" && v != "fit-render")
+      return "--unseen-ceiling: '" + v + "' is not walls, fit or fit-render";
+    a.unseenCeiling = v;
+  } else if (s == "--fit-unseen-ceiling") {
+    double r = -1, g = -1, b = -1;
+    char tail = 0;
+    if (std::sscanf(v.c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
+        !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
+      return "--fit-unseen-ceiling: '" + v + "' is not three non-negative numbers R,G,B";
+    a.fitUnseenCeiling = Vec3(r, g, b);
+  } else if (s == "--keep-better-fit-tolerance") {
+    a.keepBetterFitTolerance = parseNumber<double>(v);
+    if (!a.keepBetterFitTolerance)
+      return "--keep-better-fit-tolerance: '" + v + "' is not a non-negative fraction";
+  } else if (s == "--window-reveal") {
+    a.windowReveal = parseNumber<double>(v);
+    if (!a.windowReveal || !(*a.windowReveal <= 10))
+      return "--window-reveal: '" + v + "' is not a depth in metres from 0 to 10";
+  } else if (s == "--refit-min-move") {
+    a.refitMinMove = parseNumber<double>(v);
+    if (!a.refitMinMove) return "--refit-min-move: '" + v + "' is not a non-negative fraction";
+  } else {
+    return std::nullopt;
+  }
+  return std::string();
 }
 
 // Returns an error message, or empty on success.
@@ -286,24 +322,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       else if (s == "--surface-albedo") a.surfaceAlbedo = *v;
       else if (s == "--cue") a.cue = *v;
       else if (s == "--evaluate-at") a.evaluateAt = *v;
-      else if (s == "--unseen-ceiling") {
-        if (*v != "walls" && *v != "fit" && *v != "fit-render")
-          return "--unseen-ceiling: '" + *v + "' is not walls, fit or fit-render";
-        a.unseenCeiling = *v;
-      } else if (s == "--fit-unseen-ceiling") {
-        double r = -1, g = -1, b = -1;
-        char tail = 0;
-        if (std::sscanf(v->c_str(), "%lf,%lf,%lf%c", &r, &g, &b, &tail) != 3 ||
-            !(r >= 0 && g >= 0 && b >= 0) || !std::isfinite(r + g + b))
-          return "--fit-unseen-ceiling: '" + *v + "' is not three non-negative numbers R,G,B";
-        a.fitUnseenCeiling = Vec3(r, g, b);
-      } else if (s == "--keep-better-fit-tolerance") {
-        a.keepBetterFitTolerance = parseNumber<double>(*v);
-        if (!a.keepBetterFitTolerance)
-          return "--keep-better-fit-tolerance: '" + *v + "' is not a non-negative fraction";
-      } else if (s == "--refit-min-move") {
-        a.refitMinMove = parseNumber<double>(*v);
-        if (!a.refitMinMove) return "--refit-min-move: '" + *v + "' is not a non-negative fraction";
+      else if (const auto e = parseLightFitDiagnostic(s, *v, a)) {
+        if (!e->empty()) return *e;
       } else if (s == "--response-quick-margin") {
         a.quickMargin = *v == "inf" ? std::optional<double>(std::numeric_limits<double>::infinity())
                                     : parseNumber<double>(*v);
@@ -515,6 +535,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (a.prepareSeed) po.seed = uint32_t(*a.prepareSeed);
   if (a.keepBetterFitTolerance) po.keepBetterFitTolerance = *a.keepBetterFitTolerance;
   if (a.refitMinMove) po.refitMinLightMove = *a.refitMinMove;
+  if (a.windowReveal) po.windowRevealDepthM = *a.windowReveal;
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";

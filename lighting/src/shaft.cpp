@@ -239,10 +239,50 @@ double visibleShareOf(const AreaLight& light, int surface, const Camera& camera,
   return seen / 64.0;
 }
 
+// The beam's section [a0, a1] x [b0, b1] (along u, v in the wall's plane, inward normal n)
+// widened to the inner opening of a wall `depth` thick (openingOfBeam): the outer opening, seen
+// along the beam, is the inner one shifted by depth x the beam's slope across the wall, so the
+// section is the inner opening less that shift on the side the shift leaves. Each side grows by
+// at most the section's extent (a beam grazing the wall); nothing for depth <= 0, not finite, or
+// a beam that does not cross the wall into the room.
+void widenByReveal(const Vec3& travel, const Vec3& n, const Vec3& u, const Vec3& v, double depth,
+                   double& a0, double& a1, double& b0, double& b1) {
+  const double across = travel.dot(n);
+  if (!(depth > 0) || !std::isfinite(depth) || !(across > 1e-6) || !travel.allFinite()) return;
+  auto widen = [&](double along, double& lo, double& hi) {
+    const double shift = std::clamp(depth * along / across, -(hi - lo), hi - lo);
+    if (shift > 0) lo -= shift;
+    else hi -= shift;
+  };
+  widen(travel.dot(u), a0, a1);
+  widen(travel.dot(v), b0, b1);
+}
+
+// The rectangle [a0, a1] x [b0, b1] (from `origin` along u, v: a box surface's axes) cut to the
+// room box (a window cannot reach past its wall's edges).
+void clampToBox(const RoomBox& box, const Vec3& origin, const Vec3& u, const Vec3& v, double& a0,
+                double& a1, double& b0, double& b1) {
+  const Vec3 lo(std::min(box.xLeftM, box.xRightM), 0.0, std::min(box.zBackM, box.zRearM));
+  const Vec3 hi(std::max(box.xLeftM, box.xRightM), box.ceilingM, std::max(box.zBackM, box.zRearM));
+  auto limits = [&](const Vec3& axis, double& l0, double& l1) {
+    // The range of t with origin + t axis inside the box along the axis' main coordinate.
+    int k = 0;
+    axis.cwiseAbs().maxCoeff(&k);
+    if (std::abs(axis[k]) < 0.5) return;
+    double t0 = (lo[k] - origin[k]) / axis[k], t1 = (hi[k] - origin[k]) / axis[k];
+    if (t0 > t1) std::swap(t0, t1);
+    const double n0 = std::max(l0, t0), n1 = std::min(l1, t1);
+    if (n1 - n0 > 1e-3) l0 = n0, l1 = n1;
+  };
+  limits(u, a0, a1);
+  limits(v, b0, b1);
+}
+
 }  // namespace
 
 std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& camera,
-                                         const SceneGeometry& geometry, int minPixels) {
+                                         const SceneGeometry& geometry, int minPixels,
+                                         double revealDepthM) {
   const auto crossings = beamCrossings(sun, camera, geometry);
   const auto most = std::max_element(crossings.begin(), crossings.end(),
                                      [](auto& a, auto& b) { return a.second.size() < b.second.size(); });
@@ -261,9 +301,11 @@ std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& came
   std::vector<double> a(pts.size()), b(pts.size());
   for (size_t i = 0; i < pts.size(); ++i)
     a[i] = (pts[i] - pts[0]).dot(u), b[i] = (pts[i] - pts[0]).dot(v);
-  const double a0 = quantileOf(a, 0.02), a1 = quantileOf(a, 0.98), b0 = quantileOf(b, 0.02),
-               b1 = quantileOf(b, 0.98);
+  double a0 = quantileOf(a, 0.02), a1 = quantileOf(a, 0.98), b0 = quantileOf(b, 0.02),
+         b1 = quantileOf(b, 0.98);
   if (!(a1 - a0 > 1e-3 && b1 - b0 > 1e-3)) return std::nullopt;
+  widenByReveal(sun.travelDirection, n, u, v, revealDepthM, a0, a1, b0, b1);
+  clampToBox(box, pts[0], u, v, a0, a1, b0, b1);
   BeamOpening out;
   const Vec3 o = pts[0] + 1e-3 * n;
   out.light.cornersWorld = {o + a0 * u + b0 * v, o + a1 * u + b0 * v, o + a1 * u + b1 * v,

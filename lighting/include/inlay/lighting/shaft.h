@@ -34,6 +34,11 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
                                      const Camera& camera, const SceneGeometry& geometry,
                                      const std::string& key);
 
+// The wall thickness a window of a sun's beam is assumed to have when the photo does not show it
+// (PrepareOptions::windowRevealDepthM): 0.2 m, an outer wall's, chosen on the dev sun room d4
+// (docs/generalization.md, "The unseen window's reveal").
+inline constexpr double kWindowRevealDepthM = 0.2;
+
 // The opening a sun's beam came through, as far as its lit patch shows it. Sunlight enters
 // through a window that lets the sky in as well; when the photo does not show that window, its
 // sky is a light no outline marks, and the room's light would be short by it. Every lit pixel
@@ -51,8 +56,16 @@ struct BeamOpening {
 // Nullopt when fewer than `minPixels` lit pixels reach one box surface (the beam's mask empty,
 // or the lit points blocked by a table top). The patch is cut where the photo ends, and so is
 // the opening.
+// A window lies in a wall of some thickness: the beam that reaches the room is what passes both
+// the wall's outer and inner openings, so its section in the inner plane is the window cut on the
+// side the light comes from (a high sun: the window's top part lights the reveal, not the room).
+// The sky comes in through the whole inner opening. `revealDepthM` > 0: the rectangle is widened
+// by that cut, revealDepthM times the beam's slope across the wall (its in-plane part over its
+// part along the normal), on the side opposite the beam's in-plane shift, each side by at most
+// the section's own extent and within the box; 0 (or not finite): the beam's section as it is.
 std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& camera,
-                                         const SceneGeometry& geometry, int minPixels = 50);
+                                         const SceneGeometry& geometry, int minPixels = 50,
+                                         double revealDepthM = 0);
 
 namespace detail {
 // Otsu's threshold between the two modes of `values` (OpenCV's, on 256 levels between their

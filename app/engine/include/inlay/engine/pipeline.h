@@ -7,6 +7,7 @@
 
 #include "inlay/lighting/estimate.h"
 #include "inlay/lighting/refine.h"
+#include "inlay/lighting/shaft.h"
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/estimate_camera.h"
 #include "inlay/modeling/geometry.h"
@@ -202,6 +203,12 @@ struct PrepareOptions {
   // opening (lighting/shaft.h, openingOfBeam) becomes an area light whose intensity the lighting
   // fit finds and the refinement does not move.
   bool skyThroughUnseenWindows = true;
+  // The depth of that window's reveal (the wall's thickness, m): the opening is the beam's
+  // section widened on the side the light comes from, as the inner opening of a wall this thick
+  // (openingOfBeam's revealDepthM): a high sun lights the reveal through the window's top part,
+  // so the beam alone gave the sky too small a window (docs/generalization.md, "The unseen
+  // window's reveal"). 0: the beam's section.
+  double windowRevealDepthM = kWindowRevealDepthM;
   // The preparation's own randomness (the lighting fit's light samples and gathering, the
   // refinement's fixed samples), added to each stage's default seed. It is fixed per scene and
   // never the render seed (render.seed, --seed): renders of one scene with different render
