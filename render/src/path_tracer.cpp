@@ -705,6 +705,7 @@ struct PathTracer::Impl {
                     const int* count, uint32_t seed, RayCounters& tileCounters) const;
   void castCameraPacket(int n, const Vec3& eye, const Vec3* dirs, Hit* hits,
                         RayCounters& tileCounters) const;
+  void prefetchRun(const DifferentialBuffers& buffers, int x, int y, int n) const;
   template <class RenderRun>
   bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
                     const CancelToken* cancel, RenderRun&& renderRun) const;
@@ -2227,9 +2228,22 @@ bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, 
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; x += kPacket) {
       if (cancel && cancel->shouldStop()) return false;
+      // The next run's first reads (its camera hits' texels and albedo, cache misses at one
+      // sample a pixel) are fetched while this run renders.
+      const bool sameRow = x + kPacket < x1;
+      if (sameRow || y + 1 < y1)
+        prefetchRun(buffers, sameRow ? x + kPacket : x0, sameRow ? y : y + 1,
+                    std::min(kPacket, x1 - (sameRow ? x + kPacket : x0)));
       renderRun(x, y, std::min(kPacket, x1 - x), rectCounters);
     }
   return true;
+}
+
+// Prefetches the room records camera hits through pixels x .. x + n - 1 of row y of the buffers
+// read first (RoomTexture::prefetchRun).
+void PathTracer::Impl::prefetchRun(const DifferentialBuffers& buffers, int x, int y, int n) const {
+  const double w = buffers.width, h = buffers.height;
+  room.prefetchRun((x + 0.5) / w, (x + n - 0.5) / w, (y + 0.5) / h);
 }
 
 // The arena render() and renderCounts() run their tiles in, kept from one call to the next
