@@ -758,9 +758,13 @@ struct PathTracer::Impl {
   };
   // A non-specular BSDF in its local frame at a vertex.
   struct Lobe {
+    // The frame around `normal` and wo in it, made in place (Frame's three-argument
+    // constructor: no store-forwarding stall on its axes).
+    Lobe(const SurfaceBsdf& b, const Vec3& normal, const Vec3& wo, const Vec3& select)
+        : bsdf(b), frame(normal, wo, &woLocal), selectNormal(select) {}
     const SurfaceBsdf& bsdf;
+    Vec3 woLocal;  // (before `frame`, which sets it)
     Frame frame;
-    Vec3 woLocal;
     Vec3 selectNormal;  // light selection's normal; zero after a transmitting BSDF (every side)
   };
   // A point NEE picked on a source.
@@ -1165,10 +1169,10 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexFrom(const PathState& st, const
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
                                           const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
                                           Hit* next, const FirstVertex* first) const {
-  const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
-  const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
+  const Lobe lobe(bsdf, bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns, v.wo,
+                  bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing);
   const bool nee = !bsdf.transmits() || options.roughGlassNee;
   // The caustic map's light here marks the path (PathState::causticChain) before the bounce
   // copies its state.
