@@ -932,12 +932,17 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  PrimaryRecord* rec, const Hit* firstHit,
                                  const FirstVertex* first) const {
-  Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
+  // This vertex's hit, cast here or by the last vertex (castAhead), and the next one's, which a
+  // non-specular vertex casts ahead: the two take turns, so a hit is never copied (its copy, a
+  // tenth of tracePath's samples, waited on the loads of the record just written).
+  std::array<Hit, 2> cast;
+  int at = 0;
   bool castAhead = false;
   if (!firstHit) first = nullptr;
   for (;; ++st.depth, firstHit = nullptr, first = nullptr) {
-    Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
-    if (std::exchange(castAhead, false)) checkTexel(hit);
+    if (!firstHit && !castAhead) cast[size_t(at)] = castPathRay(mode, st, rng, out);
+    if (std::exchange(castAhead, false)) checkTexel(cast[size_t(at)]);
+    const Hit& hit = firstHit ? *firstHit : cast[size_t(at)];
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (st.depth == 0 && rec) rec->objectFirst = true;
@@ -960,7 +965,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Vertex v = first && first->set ? first->v : vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
-      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead, first)) return;
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &cast[size_t(1 - at)], first)) return;
+      at = 1 - at;
       castAhead = true;
       continue;
     }
