@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
 
 namespace inlay::detail {
 namespace {
@@ -96,6 +99,33 @@ TEST(SampleRng, FastPathMatchesTheReferenceBitForBit) {
 // The samplers' sin and cos (no libm call) agree with the library's to a few ulp of 1 over the
 // angles they take (2 pi u, a spherical polygon's area up to 4 pi) and far beyond, and pass
 // Inf and NaN on as the library does.
+// Frame's three-argument constructor (a vertex's Lobe: the frame and wo in it at once) makes the
+// same axes as Frame(n) and the same local vector as its toLocal(w), bit for bit: random unit
+// normals, the poles, n.z of -0 and next to -1, and world vectors up to 1e200 and NaN.
+TEST(Frame, MadeWithAVectorMatchesToLocalBitForBit) {
+  std::mt19937 gen(12);
+  std::normal_distribution<double> g;
+  auto same = [](const Vec3& a, const Vec3& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * 3) == 0;
+  };
+  std::vector<Vec3> normals = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 0, -0.0), Vec3(0.6, 0.8, 0),
+                               Vec3(1e-8, 0, -1).normalized()};
+  for (int k = 0; k < 20000; ++k) normals.push_back(Vec3(g(gen), g(gen), g(gen)).normalized());
+  int differ = 0;
+  for (size_t k = 0; k < normals.size(); ++k) {
+    const double scale = k % 5 == 0 ? 1e200 : k % 5 == 1 ? 1e-200 : 1.0;
+    const Vec3 w = k % 97 == 0 ? Vec3(std::nan(""), 1, 0) : Vec3(g(gen), g(gen), g(gen)) * scale;
+    const Frame plain(normals[k]);
+    Vec3 local;
+    const Frame made(normals[k], w, &local);
+    differ += same(made.s, plain.s) && same(made.t, plain.t) && same(made.n, plain.n) &&
+                      same(local, plain.toLocal(w))
+                  ? 0
+                  : 1;
+  }
+  EXPECT_EQ(differ, 0);
+}
+
 TEST(SinCos, MatchesTheLibraryToAFewUlp) {
   double worst = 0;
   auto check = [&](double x) {

@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <vector>
+
 namespace inlay {
 namespace {
 
@@ -76,6 +80,56 @@ TEST(RoomTexture, AnswersAsProjectedAlbedoToTheBit) {
   EXPECT_EQ(room.texel(2).surface(), 1 << 29);
   EXPECT_FALSE(room.texel(0).radianceUsable());
   EXPECT_TRUE(room.texel(3).radianceUsable());
+}
+
+// prefetchRun() asks for the texels camera hits through a run of pixels read first: through
+// every pixel centre of a run of a frame at the grid's size and at a preview's coarser ones, a
+// point at any depth lands in a texel of the range it returns (a coarse pixel's centre that falls
+// on the grid's lines between rows or columns may show either: those are left out). Fractions
+// outside [0, 1), NaN and reversed runs ask for nothing.
+TEST(RoomTexture, PrefetchRunCoversTheTexelsItsPixelsShow) {
+  const int w = 32, h = 24;
+  const ProjectedAlbedo pa = testAlbedo(w, h);
+  const RoomTexture room(pa);
+  int checked = 0;
+  for (const auto& [bw, bh] : std::vector<std::array<int, 2>>{{w, h}, {21, 16}, {13, 10}}) {
+    for (int y = 0; y < bh; ++y)
+      for (int x0 = 0; x0 < bw; x0 += 8) {
+        const int n = std::min(8, bw - x0);
+        const auto [first, last] =
+            room.prefetchRun((x0 + 0.5) / bw, (x0 + n - 0.5) / bw, (y + 0.5) / bh);
+        ASSERT_LE(first, last);
+        for (int x = x0; x < x0 + n; ++x) {
+          const Vec2 centre((x + 0.5) * w / bw, (y + 0.5) * h / bh);
+          if (std::abs(centre.x() - std::round(centre.x())) < 1e-9 ||
+              std::abs(centre.y() - std::round(centre.y())) < 1e-9)
+            continue;
+          const Ray r = pa.camera.rayThroughPixel(centre);
+          for (double depth : {0.5, 2.0, 3.999}) {
+            const RoomTexture::Texel* t = room.texelAt(r.at(depth / std::max(1e-9, -r.direction.z())));
+            ASSERT_NE(t, nullptr);
+            EXPECT_GE(room.indexOf(t), first) << bw << " " << x << " " << y;
+            EXPECT_LE(room.indexOf(t), last) << bw << " " << x << " " << y;
+            ++checked;
+          }
+        }
+      }
+  }
+  EXPECT_GT(checked, 3 * w * h);
+  const double nan = std::nan("");
+  for (const auto& [a, b, c] : std::vector<std::array<double, 3>>{{0.0, 1.0, 0.5},
+                                                                  {-0.1, 0.5, 0.5},
+                                                                  {0.6, 0.5, 0.5},
+                                                                  {0.1, 0.5, 1.0},
+                                                                  {0.1, 0.5, -1e-300},
+                                                                  {nan, 0.5, 0.5},
+                                                                  {0.1, nan, 0.5},
+                                                                  {0.1, 0.5, nan},
+                                                                  {0.1, 1e300, 0.5}}) {
+    const auto range = room.prefetchRun(a, b, c);
+    EXPECT_GT(range.first, range.second) << a << " " << b << " " << c;
+  }
+  EXPECT_GT(RoomTexture().prefetchRun(0.1, 0.2, 0.3).first, 0u);  // an empty texture
 }
 
 }  // namespace

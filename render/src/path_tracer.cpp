@@ -705,6 +705,7 @@ struct PathTracer::Impl {
                     const int* count, uint32_t seed, RayCounters& tileCounters) const;
   void castCameraPacket(int n, const Vec3& eye, const Vec3* dirs, Hit* hits,
                         RayCounters& tileCounters) const;
+  void prefetchRun(const DifferentialBuffers& buffers, int x, int y, int n) const;
   template <class RenderRun>
   bool renderPixels(const DifferentialBuffers& buffers, int x0, int y0, int x1, int y1,
                     const CancelToken* cancel, RenderRun&& renderRun) const;
@@ -757,9 +758,13 @@ struct PathTracer::Impl {
   };
   // A non-specular BSDF in its local frame at a vertex.
   struct Lobe {
+    // The frame around `normal` and wo in it, made in place (Frame's three-argument
+    // constructor: no store-forwarding stall on its axes).
+    Lobe(const SurfaceBsdf& b, const Vec3& normal, const Vec3& wo, const Vec3& select)
+        : bsdf(b), frame(normal, wo, &woLocal), selectNormal(select) {}
     const SurfaceBsdf& bsdf;
+    Vec3 woLocal;  // (before `frame`, which sets it)
     Frame frame;
-    Vec3 woLocal;
     Vec3 selectNormal;  // light selection's normal; zero after a transmitting BSDF (every side)
   };
   // A point NEE picked on a source.
@@ -927,12 +932,17 @@ Vec3 PathTracer::Impl::sampleMeshLight(const MeshLightData& m, double u, double 
 void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, Sums& out,
                                  PrimaryRecord* rec, const Hit* firstHit,
                                  const FirstVertex* first) const {
-  Hit ahead;  // this vertex's hit when the last vertex cast its ray (castAhead)
+  // This vertex's hit, cast here or by the last vertex (castAhead), and the next one's, which a
+  // non-specular vertex casts ahead: the two take turns, so a hit is never copied (its copy, a
+  // tenth of tracePath's samples, waited on the loads of the record just written).
+  std::array<Hit, 2> cast;
+  int at = 0;
   bool castAhead = false;
   if (!firstHit) first = nullptr;
   for (;; ++st.depth, firstHit = nullptr, first = nullptr) {
-    Hit hit = firstHit ? *firstHit : castAhead ? ahead : castPathRay(mode, st, rng, out);
-    if (std::exchange(castAhead, false)) checkTexel(hit);
+    if (!firstHit && !castAhead) cast[size_t(at)] = castPathRay(mode, st, rng, out);
+    if (std::exchange(castAhead, false)) checkTexel(cast[size_t(at)]);
+    const Hit& hit = firstHit ? *firstHit : cast[size_t(at)];
     if (rec && rec->wantGuide && rec->guideOpen && mode != Mode::WithoutOnly) recordGuide(st, hit, *rec);
     if (mode == Mode::Shared && hit.kind == Hit::Kind::Object) {
       if (st.depth == 0 && rec) rec->objectFirst = true;
@@ -955,7 +965,8 @@ void PathTracer::Impl::tracePath(Mode mode, PathState st, const SampleRng& rng, 
     const Vertex v = first && first->set ? first->v : vertexAt(st, hit, rng);
     if (bsdf.kind == Material::Kind::RoughGlass) bsdf.eta = v.frontSide ? bsdf.ior : 1.0 / bsdf.ior;
     if (bsdf.nonSpecular()) {
-      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &ahead, first)) return;
+      if (!scatterNonSpecular(mode, st, v, bsdf, rng, out, &cast[size_t(1 - at)], first)) return;
+      at = 1 - at;
       castAhead = true;
       continue;
     }
@@ -1164,10 +1175,10 @@ PathTracer::Impl::Vertex PathTracer::Impl::vertexFrom(const PathState& st, const
 bool PathTracer::Impl::scatterNonSpecular(Mode mode, PathState& st, const Vertex& v,
                                           const SurfaceBsdf& bsdf, const SampleRng& rng, Sums& out,
                                           Hit* next, const FirstVertex* first) const {
-  const Frame frame(bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns);
   // Light selection and its pdfs skip sources below the tangent plane, unless the BSDF
   // transmits (rough glass): then every side counts (a zero normal says so).
-  const Lobe lobe{bsdf, frame, frame.toLocal(v.wo), bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing};
+  const Lobe lobe(bsdf, bsdf.transmits() && v.wo.dot(v.ns) <= 0 ? v.ngFacing : v.ns, v.wo,
+                  bsdf.transmits() ? Vec3(Vec3::Zero()) : v.ngFacing);
   const bool nee = !bsdf.transmits() || options.roughGlassNee;
   // The caustic map's light here marks the path (PathState::causticChain) before the bounce
   // copies its state.
@@ -2227,9 +2238,22 @@ bool PathTracer::Impl::renderPixels(const DifferentialBuffers& buffers, int x0, 
   for (int y = y0; y < y1; ++y)
     for (int x = x0; x < x1; x += kPacket) {
       if (cancel && cancel->shouldStop()) return false;
+      // The next run's first reads (its camera hits' texels and albedo, cache misses at one
+      // sample a pixel) are fetched while this run renders.
+      const bool sameRow = x + kPacket < x1;
+      if (sameRow || y + 1 < y1)
+        prefetchRun(buffers, sameRow ? x + kPacket : x0, sameRow ? y : y + 1,
+                    std::min(kPacket, x1 - (sameRow ? x + kPacket : x0)));
       renderRun(x, y, std::min(kPacket, x1 - x), rectCounters);
     }
   return true;
+}
+
+// Prefetches the room records camera hits through pixels x .. x + n - 1 of row y of the buffers
+// read first (RoomTexture::prefetchRun).
+void PathTracer::Impl::prefetchRun(const DifferentialBuffers& buffers, int x, int y, int n) const {
+  const double w = buffers.width, h = buffers.height;
+  room.prefetchRun((x + 0.5) / w, (x + n - 0.5) / w, (y + 0.5) / h);
 }
 
 // The arena render() and renderCounts() run their tiles in, kept from one call to the next

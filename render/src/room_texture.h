@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace inlay::detail {
@@ -100,6 +101,20 @@ class RoomTexture {
   const Texel& texel(size_t i) const { return texels_[i]; }
   // The index of a texel texelShowing() returned.
   size_t indexOf(const Texel* t) const { return size_t(t - texels_.data()); }
+  // Asks the cache for what camera hits through a run of the frame's row read first: the texels
+  // and albedo records of the grid's row at fraction fy of its height, from fraction fx0 to fx1
+  // of its width (a frame's pixel centres; the camera sees the photo's frame). A hint: nothing is
+  // read, and a point the filter's jitter moves to a neighbour just misses as before. Returns
+  // the first and last index (indexOf) it asked for; {1, 0} when none.
+  std::pair<size_t, size_t> prefetchRun(double fx0, double fx1, double fy) const {
+    if (texels_.empty() || !(fy >= 0 && fy < 1) || !(fx0 >= 0 && fx0 <= fx1 && fx1 < 1)) return {1, 0};
+    const size_t row = size_t(std::min(height_ - 1, int(fy * height_))) * size_t(width_);
+    const size_t first = row + size_t(std::min(width_ - 1, int(fx0 * width_)));
+    const size_t last = row + size_t(std::min(width_ - 1, int(fx1 * width_)));
+    prefetchLines(&texels_[first], &texels_[last]);
+    prefetchLines(&albedo_[first], &albedo_[last]);
+    return {first, last};
+  }
   // ProjectedAlbedo::radianceAtPixel().
   static bool radiance(const Texel* t, Vec3* radiance) {
     if (!t || !t->radianceUsable()) return false;
@@ -108,6 +123,15 @@ class RoomTexture {
   }
 
  private:
+  // Every cache line from the one holding `first` to the one holding `last`.
+  template <class T>
+  static void prefetchLines(const T* first, const T* last) {
+    constexpr uintptr_t kLine = 64;
+    const uintptr_t end = reinterpret_cast<uintptr_t>(last + 1);
+    for (uintptr_t a = reinterpret_cast<uintptr_t>(first) & ~(kLine - 1); a < end; a += kLine)
+      __builtin_prefetch(reinterpret_cast<const void*>(a));
+  }
+
   std::vector<Texel> texels_;  // albedo.width x albedo.height; empty: no pixel shows anything
   std::vector<std::array<float, 3>> albedo_;  // albedo.rgb() of the pixels, as texels_
   std::vector<Vec3> surfaceMean_;

@@ -220,15 +220,24 @@ inline double atan2NonNegative(double y, double x) {
 // An orthonormal frame around unit n (Duff et al. 2017, branchless).
 struct Frame {
   Vec3 s, t, n;
-  explicit Frame(const Vec3& normal) : n(normal) {
+  explicit Frame(const Vec3& normal) : n(normal) { set(nullptr, nullptr); }
+  // The frame, and *wLocal = toLocal(w) taken from its axes as they are made: read back from
+  // the frame's memory at once, they stalled on the stores that had just written them (each
+  // 16-byte load straddled two stores: no store forwarding).
+  Frame(const Vec3& normal, const Vec3& w, Vec3* wLocal) : n(normal) { set(&w, wLocal); }
+  Vec3 toWorld(const Vec3& local) const { return local.x() * s + local.y() * t + local.z() * n; }
+  Vec3 toLocal(const Vec3& world) const { return Vec3(world.dot(s), world.dot(t), world.dot(n)); }
+
+ private:
+  void set(const Vec3* w, Vec3* wLocal) {
     const double sign = std::copysign(1.0, n.z());
     const double a = -1.0 / (sign + n.z());
     const double b = n.x() * n.y() * a;
-    s = Vec3(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
-    t = Vec3(b, sign + n.y() * n.y() * a, -n.y());
+    const Vec3 s0(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
+    const Vec3 t0(b, sign + n.y() * n.y() * a, -n.y());
+    s = s0, t = t0;
+    if (w) *wLocal = Vec3(w->dot(s0), w->dot(t0), w->dot(n));
   }
-  Vec3 toWorld(const Vec3& local) const { return local.x() * s + local.y() * t + local.z() * n; }
-  Vec3 toLocal(const Vec3& world) const { return Vec3(world.dot(s), world.dot(t), world.dot(n)); }
 };
 
 // Cosine-weighted hemisphere around +z (local); pdf = cos / pi.
