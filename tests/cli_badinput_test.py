@@ -56,6 +56,7 @@ def main():
     r = run(cli, "--help")
     check("help", r.returncode == 0 and "render" in r.stdout and "Exit status" in r.stdout, r.stderr)
     check("help names --no-grain", "--no-grain" in r.stdout, r.stdout)
+    check("help names --no-response-check", "--no-response-check" in r.stdout, r.stdout)
     r = run(cli, "--version")
     check("version", r.returncode == 0 and r.stdout.startswith("inlay-cli "), r.stdout)
     check("no args", run(cli).returncode == 2)

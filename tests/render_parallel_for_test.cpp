@@ -10,6 +10,7 @@
 
 #include <tbb/blocked_range.h>
 
+#include <atomic>
 #include <chrono>
 #include <thread>
 #include <vector>
@@ -38,6 +39,49 @@ TEST(ParallelFor, VisitsEveryIndexOnceAndTheStackIsReusableAfterward) {
   }
   for (int i = 0; i < kSize; ++i) ASSERT_EQ(visits[i], kLoops) << "index " << i;
   EXPECT_NE(scribbled, 0);
+}
+
+// runAlongside (parallel.h): `here` runs on the calling thread, `alongside` once, both finished
+// when it returns, their parallel loops complete; with a free TBB worker they overlap (`here`
+// waits for `alongside` to start, which one after the other would never see), and what
+// `alongside` wrote is the caller's to read afterwards (the join TSan sees).
+TEST(ParallelFor, RunAlongsideRunsBothSideBySideAndHereOnTheCallingThread) {
+  constexpr int kSize = 256;
+  for (int round = 0; round < 20; ++round) {
+    std::vector<int> a(kSize, 0), b(kSize, 0);
+    std::atomic<bool> alongsideStarted{false};
+    bool sawAlongside = false;
+    int hereRuns = 0, alongsideRuns = 0;
+    std::thread::id hereThread;
+    const auto loop = [](std::vector<int>& v) {
+      parallelFor(tbb::blocked_range<int>(0, kSize, 8), [&](const tbb::blocked_range<int>& r) {
+        for (int i = r.begin(); i < r.end(); ++i) v[size_t(i)] += i;
+      });
+    };
+    runAlongside(
+        [&] {
+          ++hereRuns;
+          hereThread = std::this_thread::get_id();
+          const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+          while (!alongsideStarted.load() && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::microseconds(50));
+          sawAlongside = alongsideStarted.load();
+          loop(a);
+        },
+        [&] {
+          ++alongsideRuns;
+          alongsideStarted.store(true);
+          loop(b);
+        });
+    EXPECT_EQ(hereThread, std::this_thread::get_id());
+    ASSERT_EQ(hereRuns, 1);
+    ASSERT_EQ(alongsideRuns, 1);
+    for (int i = 0; i < kSize; ++i) ASSERT_TRUE(a[size_t(i)] == i && b[size_t(i)] == i) << i;
+    if (tbb::this_task_arena::max_concurrency() >= 2) {
+      EXPECT_TRUE(sawAlongside) << round;
+    }
+    scribbleStack(round);
+  }
 }
 
 }  // namespace

@@ -2883,37 +2883,47 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Albedo je Pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <location filename="../app/studio/stage_text.cpp" line="47"/>
+        <source>both candidates, side by side</source>
+        <translation>beide Kandidaten, nebeneinander</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="48"/>
+        <source>both candidates, one after the other</source>
+        <translation>beide Kandidaten, nacheinander</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="58"/>
         <source>copy, curve: %1</source>
         <translation>Kopie, Kurve: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <location filename="../app/studio/stage_text.cpp" line="59"/>
         <source>copy, sRGB: %1</source>
         <translation>Kopie, sRGB: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <location filename="../app/studio/stage_text.cpp" line="60"/>
         <source>sRGB: %1</source>
         <translation>mit sRGB: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="76"/>
+        <location filename="../app/studio/stage_text.cpp" line="79"/>
         <source>; CPU s: %1</source>
         <translation>; CPU-s: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="85"/>
+        <location filename="../app/studio/stage_text.cpp" line="88"/>
         <source>%1: skipped, %2</source>
         <translation>%1: übersprungen, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="87"/>
+        <location filename="../app/studio/stage_text.cpp" line="90"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1: %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="94"/>
+        <location filename="../app/studio/stage_text.cpp" line="97"/>
         <source>at %1 x %2 px</source>
         <translation>bei %1 x %2 px</translation>
     </message>

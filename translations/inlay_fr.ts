@@ -2883,37 +2883,47 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>albédo par pixel</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="55"/>
+        <location filename="../app/studio/stage_text.cpp" line="47"/>
+        <source>both candidates, side by side</source>
+        <translation>les deux candidats, côte à côte</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="48"/>
+        <source>both candidates, one after the other</source>
+        <translation>les deux candidats, l’un après l’autre</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/stage_text.cpp" line="58"/>
         <source>copy, curve: %1</source>
         <translation>copie, courbe : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="56"/>
+        <location filename="../app/studio/stage_text.cpp" line="59"/>
         <source>copy, sRGB: %1</source>
         <translation>copie, sRGB : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="57"/>
+        <location filename="../app/studio/stage_text.cpp" line="60"/>
         <source>sRGB: %1</source>
         <translation>avec sRGB : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="76"/>
+        <location filename="../app/studio/stage_text.cpp" line="79"/>
         <source>; CPU s: %1</source>
         <translation> ; s CPU : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="85"/>
+        <location filename="../app/studio/stage_text.cpp" line="88"/>
         <source>%1: skipped, %2</source>
         <translation>%1 : ignorée, %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="87"/>
+        <location filename="../app/studio/stage_text.cpp" line="90"/>
         <source>%1: %2 s, CPU %3 s</source>
         <translation>%1 : %2 s, CPU %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/stage_text.cpp" line="94"/>
+        <location filename="../app/studio/stage_text.cpp" line="97"/>
         <source>at %1 x %2 px</source>
         <translation>à %1 x %2 px</translation>
     </message>

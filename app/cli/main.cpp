@@ -157,6 +157,9 @@ Render options:
                           F light fit pixels, P gather-and-fit passes, the light fit's
                           function tolerance T and R 1 to refine and refit their lights, 0 not
                           (its defaults: ResponseQuickCheck)
+  --no-response-check     diagnostics: an estimated curve is kept without the light fit's
+                          check against sRGB (default: checked; docs/benchmarks.md measures
+                          what the check adds by it)
   --min-srgb-residual R, --min-improvement F
                           diagnostics: the "auto" response estimate's evidence gate, as for
                           inlay-cli response (0 and 0: every fitted curve goes to the check)
@@ -224,7 +227,8 @@ struct Args {
   bool verbose = false;
   bool noFocus = false;
   bool noGrain = false;
-  std::optional<bool> denoise;  // --denoise / --no-denoise; unset: the command's default
+  bool noResponseCheck = false;  // --no-response-check
+  std::optional<bool> denoise;   // --denoise / --no-denoise; unset: the command's default
 };
 
 template <class T>
@@ -408,6 +412,8 @@ std::string parseArgs(int argc, char** argv, Args& a) {
       a.noFocus = true;
     } else if (s == "--no-grain") {
       a.noGrain = true;
+    } else if (s == "--no-response-check") {
+      a.noResponseCheck = true;
     } else if (s == "--denoise" || s == "--no-denoise") {
       a.denoise = s == "--denoise";
     } else if (s == "--initial-lights") {
@@ -539,6 +545,7 @@ Expected<PreparedScene> loadAndPrepare(const std::string& scenePath, const Args&
   if (a.fitUnseenCeiling) po.fitUnseenCeilingAlbedo = *a.fitUnseenCeiling;
   po.fitUnseenCeiling = a.unseenCeiling != "walls";
   po.renderFittedCeiling = a.unseenCeiling == "fit-render";
+  if (a.noResponseCheck) po.checkResponseByLightFit = false;
   if (a.quickMargin) po.responseQuick.margin = *a.quickMargin;
   if (a.quickCopy) {
     const double margin = po.responseQuick.margin;

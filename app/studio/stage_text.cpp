@@ -43,6 +43,9 @@ const char* const kNames[] = {
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "direct light"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "fit pixels"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "per-pixel albedo"),
+    // The response check's step timing its two candidates together (pipeline.cpp, blockStep).
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "both candidates, side by side"),
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "both candidates, one after the other"),
 };
 
 // The response check's steps (app/engine/src/pipeline.cpp): the stages of its small copies and

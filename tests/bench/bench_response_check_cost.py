@@ -23,6 +23,14 @@ scaled.
 
 usage: bench_response_check_cost.py --builds LABEL=BUILD_DIR,LABEL=BUILD_DIR --photos t02_s2,t04_s1,...
            [--mp 0,12] [--rounds 3] [--threads 2] [--out DIR] [--append] [--plot-only]
+           [--reference LABEL]
+
+A build may carry extra flags after its directory, each after a "+": LABEL=BUILD_DIR+--no-response-check
+(resp20: the curve kept without the check, to measure what the check adds). --reference LABEL:
+the summary gives each build's median process wall and CPU seconds minus LABEL's on the same
+photo (added_wall_s, added_cpu_s): what the check adds to the run, whatever its stage records
+say (resp20 prepares the check's two candidates side by side, so the records overlap), and
+OUT/response_check_added.png draws them per photo and build.
 
 Writes OUT/response_check_cost.csv (one row per build, round, size and photo; --append keeps the
 rows already there), OUT/response_check_cost_summary.csv (medians per build, size and photo, and
@@ -119,11 +127,11 @@ def resized_variant(name, mp, folder):
     return out
 
 
-def run_once(cli, scene, threads, work):
-    """The report's figures for one render of `scene`."""
+def run_once(cli, scene, threads, work, extra=()):
+    """The report's figures for one render of `scene` (`extra`: more flags)."""
     report = os.path.join(work, "report.json")
     cmd = ["nice", "-n", "10", cli, "render", scene, "-o", os.path.join(work, "comp.png"), "--spp", "1",
-           "--seconds", "0", "--noise", "0", "--threads", str(threads), "--quiet", "--report", report]
+           "--seconds", "0", "--noise", "0", "--threads", str(threads), "--quiet", "--report", report] + list(extra)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.time()
     subprocess.run(cmd, check=True)
@@ -138,10 +146,52 @@ def run_once(cli, scene, threads, work):
     return {"prepare_s": round(sum(s["seconds"] for s in ran), 3),
             "prepare_cpu_s": round(sum(s["cpu_seconds"] for s in ran), 3),
             "check_cpu_s": round(check[0]["cpu_seconds"], 3) if check else 0.0,
+            "check_s": round(check[0]["seconds"], 3) if check else 0.0,
             "response_cpu_s": round(response[0]["cpu_seconds"], 3) if response else 0.0,
             "decided_by": decided,
             "kept": kept, "process_cpu_s": round(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime, 3),
             "wall_s": round(wall, 3), "load": round(os.getloadavg()[0], 2)}
+
+
+def added_by_the_check(out, reference):
+    """Each summary row's process wall and CPU medians minus the reference build's (same size and
+    photo): added_wall_s, added_cpu_s."""
+    for s in out:
+        ref = [r for r in out if r["build"] == reference and (r["mp"], r["photo"]) == (s["mp"], s["photo"])]
+        if ref:
+            s["added_wall_s"] = round(s["wall_s"] - ref[0]["wall_s"], 3)
+            s["added_cpu_s"] = round(s["process_cpu_s"] - ref[0]["process_cpu_s"], 3)
+
+
+def plot_added(summ, reference, path):
+    """What the check adds (process medians minus the reference build's), wall and CPU, per photo."""
+    labels = []
+    for s in summ:
+        if s["build"] not in labels and s["build"] != reference and "added_wall_s" in s:
+            labels.append(s["build"])
+    cases = []
+    for s in summ:
+        if (s["mp"], s["photo"]) not in cases and "added_wall_s" in s:
+            cases.append((s["mp"], s["photo"]))
+    with benchlib.figure(path, 1, 2, figsize=(max(10, 1.6 * len(cases) + 2), 4)) as ax:
+        if ax is None:
+            return
+        width = 0.8 / max(1, len(labels))
+        for a, key, title in ((ax[0], "added_wall_s", "wall s"), (ax[1], "added_cpu_s", "CPU s")):
+            for i, label in enumerate(labels):
+                xs, ys = [], []
+                for j, case in enumerate(cases):
+                    sel = [x for x in summ if x["build"] == label and (x["mp"], x["photo"]) == case]
+                    if sel and "added_wall_s" in sel[0]:
+                        xs.append(j + i * width)
+                        ys.append(float(sel[0][key]))
+                a.bar(xs, ys, width, label=label)
+            a.axhline(1.0, color="grey", lw=0.8)
+            a.set_xticks([j + 0.4 - width / 2 for j in range(len(cases))],
+                         ["%s\n%s" % (p, "own size" if float(m) == 0 else m + " MP") for m, p in cases], fontsize=7)
+            a.set_ylabel("added by the check, %s (median run - %s)" % (title, reference))
+            a.set_title("what the response check adds: " + title)
+            a.legend(fontsize=7)
 
 
 def summary(rows):
@@ -164,7 +214,7 @@ def summary(rows):
                 r["response_plus_check_cpu_s"] = float(r.get("response_cpu_s") or 0) + float(r["check_cpu_s"])
             med = {k: statistics.median(float(r[k]) for r in sel)
                    for k in ("prepare_s", "prepare_cpu_s", "check_cpu_s", "response_plus_check_cpu_s",
-                             "process_cpu_s")}
+                             "process_cpu_s", "wall_s")}
             base = base or med
             out.append({"build": label, "mp": mp, "photo": photo, "runs": len(sel), "kept": sel[0]["kept"],
                         "decided_by": sel[0].get("decided_by", ""),
@@ -239,6 +289,7 @@ def main():
     rows = benchlib.read_csv(csv_path) if ("--append" in a or "--plot-only" in a) and os.path.exists(csv_path) else []
     if "--plot-only" not in a:
         builds = [b.split("=", 1) for b in opt("--builds", "").split(",") if b]
+        builds = [(label, spec.split("+")[0], spec.split("+")[1:]) for label, spec in builds]
         if not builds or not opt("--photos", ""):
             sys.stderr.write(__doc__.strip() + "\n")
             return 2
@@ -252,14 +303,18 @@ def main():
         for rnd in range(start, start + int(opt("--rounds", "3"))):
             order = builds if rnd % 2 else builds[::-1]
             for mp, name, scene in scenes:
-                for label, build in order:
+                for label, build, extra in order:
                     r = run_once(os.path.join(os.path.abspath(build), "app", "inlay-cli"), scene,
-                                 opt("--threads", "2"), out)
+                                 opt("--threads", "2"), out, extra)
                     row = {"build": label, "round": rnd, "mp": "%g" % mp, "photo": name, **r}
                     print(json.dumps(row), flush=True)
                     rows.append(row)
                     benchlib.write_csv(csv_path, rows)
     summ = summary(rows)
+    reference = opt("--reference", "")
+    if reference:
+        added_by_the_check(summ, reference)
+        plot_added(summ, reference, os.path.join(out, "response_check_added.png"))
     benchlib.write_csv(os.path.join(out, "response_check_cost_summary.csv"), summ)
     plot(summ, os.path.join(out, "response_check_cost.png"))
     plot_against_size(summ, os.path.join(out, "response_check_cost_size.png"))

@@ -1591,10 +1591,11 @@ PreparedScene srgbInsteadOfTheCurve(PreparedScene&& srgb, PreparedScene&& curved
 // sRGB kept: the stages after the refit run on its preparation, after the curve's records (the
 // stages that ran first) and the check's.
 Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb, const QuickCheck& quick,
-                                       const StageClock& clock) {
+                                       const StageClock& clock, const StageStep& both) {
   const double withSrgb = srgb.ps.lighting.fitResidualRelative;
   if (Status st = decomposeTheKept(srgb); !st) return st.error();
-  const std::vector<StageStep> again = stepsOf(srgb.ps.stages);
+  std::vector<StageStep> again = stepsOf(srgb.ps.stages);
+  again.push_back(both);
   srgb.ps.stages = curved.ps.stages;
   srgb.ps.stages.push_back(checkRecord(curved, withSrgb, quick, again, clock));
   Expected<PreparedScene> done = finishScene(srgb);
@@ -1602,27 +1603,97 @@ Expected<PreparedScene> finishWithSrgb(Preparation& curved, Preparation& srgb, c
   return srgbInsteadOfTheCurve(std::move(*done), std::move(curved.ps), checkWhy(curved, withSrgb));
 }
 
-// PrepareOptions::checkResponseByLightFit: `curved` (prepared up to the refit with the
-// estimated curve) against the photo as loaded prepared up to the refit with sRGB; the stages
-// after the refit run once, for the one whose light fit explains the photo better. When sRGB's
-// preparation fails the curve stands. The objects are placed only in the kept response's room:
-// the rejected one's camera and box never refuse them.
+// The names of blockStep's step.
+const char* const kCandidatesSideBySide = "both candidates, side by side";
+const char* const kCandidatesOneAfterTheOther = "both candidates, one after the other";
+
+// The options of the sRGB candidate the full check prepares beside the curve: no progress
+// reports (they belong to the calling thread, where the curve's stages run).
+PrepareOptions alongsideOptionsOf(const PrepareOptions& opt) {
+  PrepareOptions q = opt;
+  q.progress = nullptr;
+  return q;
+}
+
+// Whether the full check may prepare its two candidates side by side: not when the preparation
+// is held to one thread (PrepareOptions::threads 1), which prepares them one after the other.
+bool candidatesSideBySide(const PrepareOptions& opt) { return opt.threads != 1; }
+
+// The full check's two candidates, independent of each other: the curve's stages after the
+// response (on the calling thread, with its progress reports) and sRGB's from the response on
+// (`ranSrgb`), side by side (runAlongside) or, held to one thread, one after the other as
+// before. Each writes only its own Preparation: they share the scene file and the options
+// (read only; the cancel token is atomic) and nothing else. The curve's failure is the
+// preparation's (then, one after the other, sRGB is not prepared at all).
+Status prepareBothCandidates(Preparation& curved, Preparation& srgb, Status& ranSrgb) {
+  Status ranCurve;
+  const auto curve = [&] { ranCurve = runStages(afterTheResponse(), curved); };
+  const auto other = [&] { ranSrgb = runStages(kResponseStages, srgb); };
+  if (candidatesSideBySide(curved.opt)) {
+    runAlongside(curve, other);
+  } else {
+    curve();
+    if (ranCurve) other();
+  }
+  return ranCurve;
+}
+
+// The seconds the stage records from `first` on took, summed (wall and CPU).
+StageStep secondsOf(const std::vector<StageRecord>& stages, size_t first) {
+  StageStep sum;
+  for (size_t i = first; i < stages.size(); ++i)
+    sum.seconds += stages[i].seconds, sum.cpuSeconds += stages[i].cpuSeconds;
+  return sum;
+}
+
+// The check's own clock when the curve's stages ran inside it (`curveStages`): started that
+// much later, so the curve's records and the check's add up to the preparation's seconds. Side
+// by side the curve's records hold the process's CPU while they ran, sRGB's beside them too.
+StageClock withoutTheCurve(StageClock clock, const StageStep& curveStages) {
+  clock.start +=
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(curveStages.seconds));
+  clock.cpuStart += curveStages.cpuSeconds;
+  return clock;
+}
+
+// The check's step that times both candidates together, from `block` (started before them) to
+// now: side by side, each candidate's stage records count the process's CPU while they ran, the
+// other candidate's included, so this is the one figure that covers the two without overlap.
+StageStep blockStep(const StageClock& block, bool sideBySide) {
+  StageRecord spent;
+  block.stamp(spent);
+  return {sideBySide ? kCandidatesSideBySide : kCandidatesOneAfterTheOther, spent.seconds,
+          spent.cpuSeconds};
+}
+
+// PrepareOptions::checkResponseByLightFit: `curved` (its response stage fitted a curve) prepared
+// up to the refit with the curve, and the photo as loaded prepared up to the refit with sRGB,
+// side by side (prepareBothCandidates); the stages after the refit run once, for the one whose
+// light fit explains the photo better. When sRGB's preparation fails the curve stands. The
+// objects are placed only in the kept response's room: the rejected one's camera and box never
+// refuse them. Both last lighting estimates wait for the verdict to be decomposed.
 Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved, const QuickCheck& quick) {
-  const StageClock clock;
+  const StageClock block;
   const SceneDoc srgbDoc = withSrgb(curved.doc);
-  Preparation srgb(srgbDoc, curved.opt);
+  const PrepareOptions srgbOpt = alongsideOptionsOf(curved.opt);
+  Preparation srgb(srgbDoc, srgbOpt);
   MeshCache meshes;
   curved.meshes = srgb.meshes = &meshes;
   srgb.ps.photo = std::move(*curved.photoAsLoaded);
   curved.photoAsLoaded.reset();
-  srgb.deferLastDecomposition = true;
-  const Status ran = runStages(kResponseStages, srgb);
+  curved.deferLastDecomposition = srgb.deferLastDecomposition = true;
+  const size_t curveFirst = curved.ps.stages.size();
+  Status ran;
+  if (Status st = prepareBothCandidates(curved, srgb, ran); !st) return st.error();
   if (!ran && isCancelled(ran.error())) return ran.error();
-  const std::vector<StageStep> again = stepsOf(srgb.ps.stages);
+  const StageClock clock = withoutTheCurve(block, secondsOf(curved.ps.stages, curveFirst));
+  const StageStep both = blockStep(block, candidatesSideBySide(curved.opt));
+  std::vector<StageStep> again = stepsOf(srgb.ps.stages);
+  again.push_back(both);
   const double residual = srgb.ps.lighting.fitResidualRelative;
   const bool srgbFitsBetter = ran && !keepsTheCurve(curved, residual);
   if (srgbFitsBetter) {
-    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, quick, clock);
+    Expected<PreparedScene> kept = finishWithSrgb(curved, srgb, quick, clock, both);
     if (kept || isCancelled(kept.error())) return kept;
   }
   // sRGB's preparation failed (before the refit, or after it with sRGB kept): NaN.
@@ -1668,8 +1739,6 @@ Expected<PreparedScene> prepareCheckingTheCurve(Preparation& curved) {
   if (quick->decides(curved.opt))
     return quick->keepsTheCurve(curved.opt) ? finishWithTheCurve(curved, *quick)
                                             : prepareSrgbInstead(curved, *quick);
-  curved.deferLastDecomposition = true;
-  if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
   return checkTheCurveByTheLightFit(curved, *quick);
 }
 

@@ -16,6 +16,8 @@
 #include "inlay/modeling/tsan_edge.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -61,6 +63,35 @@ void parallelFor(const Range& range, const Body& body) {
     body(chunk);
     join.release();
   });
+  join.acquire();
+  detail::acquireTbbFrames(__builtin_frame_address(0));
+}
+
+// Runs `alongside` as a TBB task and `here` on the calling thread, then waits for both: two
+// independent jobs side by side (the response check's two candidates, app/engine/pipeline.cpp).
+// `here` runs isolated: while it waits inside its own parallel loops the calling thread never
+// picks up `alongside` whole (which would hold `here` back until `alongside` ended); a worker
+// that runs `alongside` may still help `here`'s loops and the other way round. With no free
+// worker (one core, or a thread limit of 1) `alongside` runs on the calling thread after `here`.
+// The fork and join are stated to TSan as parallelFor states them. Neither may throw past its
+// call (an exception from `here` still waits for `alongside` before it propagates).
+template <class Here, class Alongside>
+void runAlongside(const Here& here, const Alongside& alongside) {
+  TsanEdge fork, join;
+  fork.release();
+  tbb::task_group group;
+  group.run([&] {
+    fork.acquire();
+    alongside();
+    join.release();
+  });
+  try {
+    tbb::this_task_arena::isolate([&] { here(); });
+  } catch (...) {
+    group.wait();
+    throw;
+  }
+  group.wait();
   join.acquire();
   detail::acquireTbbFrames(__builtin_frame_address(0));
 }

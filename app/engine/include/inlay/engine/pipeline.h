@@ -108,7 +108,11 @@ struct PreparedScene {
   // refit are those of the response kept (the curve's when the full check ran), then "response
   // check": its own seconds, which response it kept and why, and as its steps the copies'
   // stages ("copy, curve: lighting", ...) and those it ran again with sRGB; the stages after it
-  // ran once, for the response kept.
+  // ran once, for the response kept. The full check prepares the two candidates side by side
+  // (PrepareOptions::checkResponseByLightFit): each of their stages counts the process's CPU
+  // while it ran, the other candidate's included; the check's own record holds the rest of that
+  // block, so the records add up to the process's seconds, and its last step ("both
+  // candidates, side by side") times the two together.
   std::vector<StageRecord> stages;
 };
 
@@ -229,8 +233,11 @@ struct PrepareOptions {
   // checks the estimated curve"): both curves it met made the object worse and both left a
   // larger residual. The two are first compared on small copies (responseQuick); only when
   // those do not decide are the stages run a second time (docs/benchmarks.md, "The response
-  // check decides on small copies first"), only on photos the estimate gives a curve. False:
-  // the estimate's curve is always kept.
+  // check decides on small copies first"), only on photos the estimate gives a curve. The full
+  // check's two candidates are independent and prepared side by side: the curve's stages on the
+  // calling thread (with the progress reports), sRGB's as a TBB task beside them (none); with
+  // `threads` 1 one after the other (docs/benchmarks.md, "The response check's two candidates
+  // side by side"). False: the estimate's curve is always kept.
   bool checkResponseByLightFit = true;
   double responseFitTolerance = 0;
   // The check's first comparison on small copies (ResponseQuickCheck): when it is clear, the
