@@ -927,7 +927,8 @@ Status lightsFromMarks(Preparation& p, std::string& detail) {
 // skyThroughUnseenWindows). Returns whether it was added.
 bool addSkyOfUnseenWindow(Preparation& p, size_t i, const SunLight& sun) {
   if (!p.opt.skyThroughUnseenWindows || p.doc.shafts[i].sourceBoxPx) return false;
-  const auto opening = openingOfBeam(sun, p.ps.camera, p.ps.geometry, 50, p.opt.windowRevealDepthM);
+  const auto opening =
+      openingOfBeam(sun, p.ps.camera, p.ps.geometry, kMinBeamPixels, p.opt.windowRevealDepthM);
   if (!opening || opening->visibleShare >= 0.5) return false;
   p.lights.push_back(opening->light);
   p.estimated.push_back(true);

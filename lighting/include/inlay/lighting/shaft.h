@@ -39,6 +39,9 @@ Expected<ShaftEstimate> sunFromShaft(const ShaftKeys& shaft, const ImageF& photo
 // (docs/generalization.md, "The unseen window's reveal").
 inline constexpr double kWindowRevealDepthM = 0.2;
 
+// The fewest lit pixels on one box surface from which openingOfBeam places an opening.
+inline constexpr int kMinBeamPixels = 50;
+
 // The opening a sun's beam came through, as far as its lit patch shows it. Sunlight enters
 // through a window that lets the sky in as well; when the photo does not show that window, its
 // sky is a light no outline marks, and the room's light would be short by it. Every lit pixel
@@ -64,7 +67,7 @@ struct BeamOpening {
 // part along the normal), on the side opposite the beam's in-plane shift, each side by at most
 // the section's own extent and within the box; 0 (or not finite): the beam's section as it is.
 std::optional<BeamOpening> openingOfBeam(const SunLight& sun, const Camera& camera,
-                                         const SceneGeometry& geometry, int minPixels = 50,
+                                         const SceneGeometry& geometry, int minPixels = kMinBeamPixels,
                                          double revealDepthM = 0);
 
 namespace detail {
