@@ -1,11 +1,19 @@
 // Light refinement (refine.h): on a room whose direct light is known, moved and mis-scaled
 // lights go back toward the truth; locked lights stay; stiff input (lights outside the room or
 // touching a wall, intensities from 1e-4 to 1e4, a black photo, a light that lights nothing)
-// gives finite lights inside the room and a note.
+// gives finite lights inside the room and a note. The solve ends at its budget of evaluations,
+// the same on a slow or loaded machine; a time guard that fires says so.
 #include "inlay/lighting/estimate.h"
 #include "inlay/lighting/refine.h"
 #include "refine_room.h"
 #include "test_support.h"
+
+#include <algorithm>
+#include <atomic>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <thread>
 
 namespace inlay {
 namespace {
@@ -432,6 +440,178 @@ TEST(LightRefine, OutlineBoundsOnStiffInputStayFiniteAndAreNamedWhenBad) {
     ASSERT_FALSE(res.ok());
     EXPECT_EQ(res.error().key, "lights[1]");
   }
+}
+
+}  // namespace
+}  // namespace inlay
+
+// Reproducible preparation (issue 18): the solve ends at its budget of evaluations, the same on
+// every machine; the wall clock is only a last-resort guard, and a result it cut short says so.
+namespace inlay {
+namespace {
+
+using test::perturbed;
+
+const test::RefineRoom& budgetRoom() {
+  static const test::RefineRoom r = test::makeRefineRoom(160, 120, 64);
+  return r;
+}
+
+// Bit for bit: the lights, their intensities, the objective and the work done.
+void expectSameLights(const LightRefineResult& a, const LightRefineResult& b, const char* what) {
+  ASSERT_EQ(a.lights.size(), b.lights.size()) << what;
+  for (size_t j = 0; j < a.lights.size(); ++j) {
+    for (size_t k = 0; k < a.lights[j].cornersWorld.size(); ++k)
+      EXPECT_EQ(a.lights[j].cornersWorld[k], b.lights[j].cornersWorld[k]) << what << ", light " << j;
+    EXPECT_EQ(a.lights[j].radiance, b.lights[j].radiance) << what << ", light " << j;
+  }
+  EXPECT_EQ(a.finalObjective, b.finalObjective) << what;
+  EXPECT_EQ(a.evaluations, b.evaluations) << what;
+}
+
+// A clock that advances `step` seconds at each read: a machine that much slower per iteration.
+std::function<double()> slowClock(double step, std::shared_ptr<int> reads = std::make_shared<int>(0)) {
+  auto t = std::make_shared<double>(0);
+  return [t, step, reads] {
+    ++*reads;
+    return *t += step;
+  };
+}
+
+// Two threads spinning while `f` runs: the machine loaded.
+template <class F>
+auto underLoad(F f) {
+  std::atomic<bool> stop{false};
+  std::vector<std::thread> busy;
+  for (int k = 0; k < 2; ++k)
+    busy.emplace_back([&stop] {
+      volatile double x = 1;
+      while (!stop.load(std::memory_order_relaxed)) x = x * 1.0000001 + 1e-9;
+    });
+  auto r = f();
+  stop = true;
+  for (auto& t : busy) t.join();
+  return r;
+}
+
+Expected<LightRefineResult> refineWith(const LightRefineOptions& o) {
+  const auto& r = budgetRoom();
+  return refineLights(r.camera, r.geometry, r.albedo, r.direct, {}, perturbed(r.truth, 0.3, 1.4), {}, {},
+                      o);
+}
+
+TEST(LightRefineBudget, ASlowOrLoadedMachineRefinesTheSameLights) {
+  const auto normal = refineWith({});
+  ASSERT_TRUE(normal.ok()) << normal.error().message();
+  EXPECT_FALSE(normal->stoppedByBudget || normal->stoppedByGuard) << normal->report;
+  LightRefineOptions slow;
+  slow.clock = slowClock(1.0);  // a second per iteration: about a thousand times this machine
+  const auto slowRun = refineWith(slow);
+  ASSERT_TRUE(slowRun.ok());
+  expectSameLights(*normal, *slowRun, "slow clock");
+  EXPECT_FALSE(slowRun->stoppedByGuard) << slowRun->report;
+  const auto loaded = underLoad([] { return refineWith({}); });
+  ASSERT_TRUE(loaded.ok());
+  expectSameLights(*normal, *loaded, "loaded");
+  // A budget far above what the solve needs changes nothing.
+  LightRefineOptions huge;
+  huge.maxEvaluations = std::numeric_limits<int>::max();
+  huge.guardSeconds = INFINITY;
+  const auto unbounded = refineWith(huge);
+  ASSERT_TRUE(unbounded.ok());
+  expectSameLights(*normal, *unbounded, "huge budget, no guard");
+}
+
+TEST(LightRefineBudget, TheBudgetEndsTheSolveAtTheSameIterationEverywhere) {
+  const auto normal = refineWith({});
+  ASSERT_TRUE(normal.ok());
+  LightRefineOptions o;
+  o.maxEvaluations = normal->evaluations / 2;
+  const auto cut = refineWith(o);
+  ASSERT_TRUE(cut.ok());
+  EXPECT_TRUE(cut->stoppedByBudget) << cut->report;
+  EXPECT_FALSE(cut->stoppedByGuard);
+  EXPECT_NE(cut->report.find("budget"), std::string::npos) << cut->report;
+  // It stops after the iteration that reaches the budget: one Jacobian (2 lights x 3 axes) and a
+  // step's evaluations past it at most.
+  EXPECT_GE(cut->evaluations, o.maxEvaluations);
+  EXPECT_LE(cut->evaluations, o.maxEvaluations + 10);
+  EXPECT_LT(cut->evaluations, normal->evaluations);
+  EXPECT_TRUE(finiteLights(*cut));
+  o.clock = slowClock(5.0);
+  const auto slowCut = underLoad([&] { return refineWith(o); });
+  ASSERT_TRUE(slowCut.ok());
+  expectSameLights(*cut, *slowCut, "budget, slow clock and loaded");
+}
+
+TEST(LightRefineBudget, ATimeGuardThatFiresSaysTheLightsMayDiffer) {
+  const auto normal = refineWith({});
+  ASSERT_TRUE(normal.ok());
+  for (const bool injected : {false, true}) {
+    LightRefineOptions o;
+    if (injected) o.clock = slowClock(100.0);  // the default guard (300 s) fires on the 3rd read
+    else o.guardSeconds = 1e-6;                // a tiny guard on the real clock
+    const auto res = refineWith(o);
+    ASSERT_TRUE(res.ok()) << res.error().message();
+    ASSERT_TRUE(finiteLights(*res));
+    const auto said = std::find_if(res->notes.begin(), res->notes.end(), [](const std::string& n) {
+      return n.find("time guard") != std::string::npos &&
+             n.find("may differ on another machine") != std::string::npos;
+    });
+    // Cut short by the clock, the result says so; else it is the normal one.
+    if (res->stoppedByGuard) {
+      EXPECT_NE(said, res->notes.end()) << "injected " << injected << ": " << res->report;
+    } else {
+      EXPECT_EQ(said, res->notes.end());
+      expectSameLights(*normal, *res, "guard not fired");
+    }
+    if (injected) {
+      EXPECT_TRUE(res->stoppedByGuard);
+    }
+    EXPECT_LT(res->evaluations, normal->evaluations) << "injected " << injected;
+  }
+}
+
+TEST(LightRefineBudget, CancelStopsTheSolveAtTheNextIteration) {
+  CancelToken token;
+  auto reads = std::make_shared<int>(0);
+  auto inner = slowClock(0.001, reads);
+  LightRefineOptions o;
+  o.cancel = &token;
+  int readsAtCancel = -1;
+  o.clock = [&] {
+    if (*reads == 3) token.cancel(), readsAtCancel = *reads;
+    return inner();
+  };
+  const auto res = refineWith(o);
+  ASSERT_FALSE(res.ok());
+  EXPECT_EQ(res.error().reason, "cancelled");
+  ASSERT_EQ(readsAtCancel, 3);
+  EXPECT_LE(*reads - readsAtCancel, 3) << "the solve went on after the cancel";
+}
+
+TEST(LightRefineBudget, AZeroOrNaNBudgetOrGuardIsNamed) {
+  for (int bad : {0, -1, std::numeric_limits<int>::min()}) {
+    LightRefineOptions o;
+    o.maxEvaluations = bad;
+    const auto res = refineWith(o);
+    ASSERT_FALSE(res.ok());
+    EXPECT_EQ(res.error().key, "options.maxEvaluations");
+    EXPECT_NE(res.error().reason.find("at least 1"), std::string::npos) << res.error().reason;
+  }
+  for (double bad : {0.0, -1.0, double(NAN), -double(INFINITY)}) {
+    LightRefineOptions o;
+    o.guardSeconds = bad;
+    const auto res = refineWith(o);
+    ASSERT_FALSE(res.ok());
+    EXPECT_EQ(res.error().key, "options.guardSeconds");
+  }
+  LightRefineOptions one;  // the smallest budget: one iteration, finite lights
+  one.maxEvaluations = 1;
+  const auto res = refineWith(one);
+  ASSERT_TRUE(res.ok());
+  EXPECT_TRUE(res->stoppedByBudget);
+  EXPECT_TRUE(finiteLights(*res));
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 
 namespace inlay {
 
@@ -415,23 +417,48 @@ class RefineCost : public ceres::CostFunction {
 
 namespace {
 
-// Records the objective per iteration and stops on cancel.
+// Seconds on LightRefineOptions::clock, or on the steady clock when none is given.
+class RefineClock {
+ public:
+  explicit RefineClock(const std::function<double()>& clock) : clock_(clock), t0_(now()) {}
+  double now() const {
+    if (clock_) return clock_();
+    return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+  }
+  double seconds() const { return now() - t0_; }
+
+ private:
+  const std::function<double()>& clock_;
+  double t0_;
+};
+
+// After each iteration: records the objective, and ends the solve on cancel (abort), at the
+// evaluation budget (the deterministic stop) or at the time guard (the last resort, flagged).
 class RefineCallback : public ceres::IterationCallback {
  public:
-  RefineCallback(Clock::time_point t0, const CancelToken* cancel,
-                 std::vector<LightRefineSample>* history)
-      : t0_(t0), cancel_(cancel), history_(history) {}
+  RefineCallback(const RefineClock& clock, const LightRefineOptions& opt, const Refinement& problem,
+                 LightRefineResult& out)
+      : clock_(clock), opt_(opt), problem_(problem), out_(out) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     // An unsuccessful step reports its rejected candidate's cost: only accepted points count.
-    if (s.iteration == 0 || s.step_is_successful)
-      history_->push_back({std::chrono::duration<double>(Clock::now() - t0_).count(), 2 * s.cost});
-    return cancel_ && cancel_->shouldStop() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
+    if (s.iteration == 0 || s.step_is_successful) out_.history.push_back({clock_.seconds(), 2 * s.cost});
+    if (opt_.cancel && opt_.cancel->shouldStop()) return ceres::SOLVER_ABORT;
+    if (problem_.evaluations() >= opt_.maxEvaluations) {
+      out_.stoppedByBudget = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    if (clock_.seconds() >= opt_.guardSeconds) {
+      out_.stoppedByGuard = true;
+      return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    }
+    return ceres::SOLVER_CONTINUE;
   }
 
  private:
-  Clock::time_point t0_;
-  const CancelToken* cancel_;
-  std::vector<LightRefineSample>* history_;
+  const RefineClock& clock_;
+  const LightRefineOptions& opt_;
+  const Refinement& problem_;
+  LightRefineResult& out_;
 };
 
 double sumSquares(const std::vector<double>& r, size_t from, size_t to) {
@@ -501,6 +528,14 @@ Status checkRefineInput(const ImageF& albedo, const ImageF& direct, const std::v
         opt.sunIntensityWeight >= 0 && std::isfinite(opt.sunIntensityWeight) && opt.sizeRange >= 1 &&
         std::isfinite(opt.sizeRange)))
     return Error{"", "options", "refinement options out of range"};
+  if (!(opt.maxEvaluations >= 1))
+    return Error{"", "options.maxEvaluations",
+                 "the refinement's budget is " + std::to_string(opt.maxEvaluations) +
+                     " evaluations; give at least 1 (default 2000)"};
+  if (!(opt.guardSeconds > 0))  // NaN too; infinity: no guard
+    return Error{"", "options.guardSeconds",
+                 "the refinement's time guard is not a positive number of seconds; give one, or "
+                 "infinity for none (default 300)"};
   for (size_t k = 0; k < suns.size(); ++k) {
     if (!suns[k].irradianceOverPi.allFinite())
       return Error{"", "suns[" + std::to_string(k) + "]", "the sun's strength is not a finite number"};
@@ -700,7 +735,7 @@ void evaluateAt(Refinement& problem, const std::vector<AreaLight>& lights, const
 // goes to out.history. An unusable solution leaves the start (a note says so). Returns why the
 // solver stopped.
 std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefineOptions& opt,
-                       Clock::time_point t0, LightRefineResult& out) {
+                       const RefineClock& clock, LightRefineResult& out) {
   const std::vector<FreeLight>& free = problem.free_;
   ceres::Problem cp;
   std::vector<double*> blocks;
@@ -718,13 +753,12 @@ std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefin
   }
   ceres::Solver::Options so;
   so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = opt.maxIterations;
-  so.max_solver_time_in_seconds = opt.maxSeconds;
+  so.max_num_iterations = opt.maxIterations;  // the time limit is RefineCallback's guard alone
   so.num_threads = 1;
   so.logging_type = ceres::SILENT;
   so.function_tolerance = 1e-4;
   so.parameter_tolerance = 1e-4;  // of the normalised position: about half a millimetre
-  RefineCallback callback(t0, opt.cancel, &out.history);
+  RefineCallback callback(clock, opt, problem, out);
   so.callbacks.push_back(&callback);
   // No projected line search at the bounds: each of its steps costs a full Jacobian.
   so.max_num_line_search_step_size_iterations = 0;
@@ -735,7 +769,20 @@ std::string solvePoses(Refinement& problem, PoseBlocks& params, const LightRefin
     params.reset();
   }
   params.clampToBounds();
-  return summary.message + " (" + std::to_string(summary.iterations.size()) + " iterations)";
+  const std::string iterations = " (" + std::to_string(summary.iterations.size()) + " iterations)";
+  if (out.stoppedByGuard) {
+    char note[256];
+    std::snprintf(note, sizeof note,
+                  "stopped by its time guard after %.0f s (%d of its budget of %d evaluations): the "
+                  "machine was too slow or too loaded, and the lights may differ on another machine",
+                  clock.seconds(), problem.evaluations(), opt.maxEvaluations);
+    out.notes.push_back(note);
+    return std::string("Stopped by the time guard.") + iterations;
+  }
+  if (out.stoppedByBudget)
+    return "Stopped at the budget of " + std::to_string(opt.maxEvaluations) + " evaluations." +
+           iterations;
+  return summary.message + iterations;
 }
 
 // The refined lights into `out`: the free ones at their solved poses (a grown one kept inside
@@ -764,10 +811,6 @@ void storeRefinedLights(const Refinement& problem, const PoseBlocks& params,
   }
 }
 
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
 std::atomic<uint64_t> gRefinementRuns{0};
 
 }  // namespace
@@ -781,7 +824,7 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
                                          const std::vector<LightRefineSpec>& specsIn,
                                          const std::vector<SunLight>& suns,
                                          const LightRefineOptions& opt) {
-  const auto t0 = Clock::now();
+  const RefineClock clock(opt.clock);
   gRefinementRuns.fetch_add(1);
   if (Status st = checkRefineInput(albedo, direct, usable, suns, opt); !st) return st.error();
   std::vector<LightRefineSpec> specs = specsIn;
@@ -815,18 +858,18 @@ Expected<LightRefineResult> refineLights(const Camera& camera, const SceneGeomet
   evaluateAt(problem, lights, params, r, nullptr);
   out.initialObjective = sumSquares(r, 0, R);
   out.initialDataTerm = sumSquares(r, 0, dataEnd);
-  out.history.push_back({secondsSince(t0), out.initialObjective});
+  out.history.push_back({clock.seconds(), out.initialObjective});
   out.report = problem.free_.empty() ? "no light free to move: intensities solved in closed form"
-                                     : solvePoses(problem, params, opt, t0, out);
+                                     : solvePoses(problem, params, opt, clock, out);
   if (opt.cancel && opt.cancel->shouldStop()) return Error{"", "", "cancelled"};
   std::vector<Vec3> radiance;
   evaluateAt(problem, lights, params, r, &radiance);
   out.finalObjective = sumSquares(r, 0, R);
   out.finalDataTerm = sumSquares(r, 0, dataEnd);
-  out.history.push_back({secondsSince(t0), out.finalObjective});
+  out.history.push_back({clock.seconds(), out.finalObjective});
   storeRefinedLights(problem, params, radiance, *room, opt, std::move(lights), out);
   out.evaluations = problem.evaluations();
-  out.seconds = secondsSince(t0);
+  out.seconds = clock.seconds();
   return out;
 }
 

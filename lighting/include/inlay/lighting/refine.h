@@ -31,6 +31,7 @@
 #include "inlay/render/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -55,10 +56,23 @@ struct LightRefineSpec {
 };
 
 struct LightRefineOptions {
-  int gridPixels = 3000;         // the render's reduced resolution: at most about this many pixels
-  int samplesPerLight = 9;       // fixed stratified points per light and pixel
-  int maxIterations = 25;        // Ceres trust-region iterations
-  double maxSeconds = 10;        // wall-clock limit of the solve
+  int gridPixels = 3000;    // the render's reduced resolution: at most about this many pixels
+  int samplesPerLight = 9;  // fixed stratified points per light and pixel
+  int maxIterations = 25;   // Ceres trust-region iterations
+  // The solve's deterministic budget, in direct-light evaluations of one light on the grid
+  // (LightRefineResult::evaluations): the solve stops after the iteration that reaches it, so
+  // the refined lights are the same on every machine and under any load. At the default grid
+  // one evaluation takes about 5 ms of one core here, so 2000 is the 10 s the wall-clock
+  // limit before it allowed on an idle core; the scenes measured use at most 70
+  // (docs/benchmarks.md, "Reproducible preparation"). At least 1.
+  int maxEvaluations = 2000;
+  // Last-resort guard against a hang, in wall-clock seconds (infinity: none). It is read only
+  // between iterations, far beyond what the budget takes; when it stops the solve, a note says
+  // that the lights may differ on another machine. Positive.
+  double guardSeconds = 300;
+  // Seconds on a monotonic clock for the guard and the history; empty: std::chrono's steady
+  // clock. Tests inject a slow one.
+  std::function<double()> clock;
   double prior = 2e-3;           // scale of the priors against the relative data term
   double intensityRange = 8;     // normalised intensity 1 = this many times the start's largest channel
   double stepNormalised = 2e-3;  // finite-difference step on the normalised position
@@ -106,6 +120,8 @@ struct LightRefineResult {
   int pixels = 0;       // grid pixels that took part
   int evaluations = 0;  // direct-light renders of one light
   double seconds = 0;
+  bool stoppedByBudget = false;    // LightRefineOptions::maxEvaluations ended the solve
+  bool stoppedByGuard = false;     // LightRefineOptions::guardSeconds did (a note says so)
   std::string report;              // why the solver stopped
   std::vector<std::string> notes;  // lights moved into the room, lights that light nothing, ...
 };
