@@ -13,7 +13,8 @@ P1020839), camera and box estimated. Each is prepared once per call (`inlay-cli 
 turn with --append into one DIR (alternated runs). Writes DIR/bench_refine_budget.csv (one row
 per label, scene and run) and DIR/bench_refine_budget_summary.csv (per label and set: the
 largest evaluations, iterations and CPU seconds, the CPU seconds per evaluation) under DIR
-(default tests/bench/out).
+(default tests/bench/out). Each row also has the preparation's seconds (its stages' sum), for the
+stage times before and after a change (alternated runs; medians from the CSV).
 """
 import json
 import os
@@ -86,7 +87,8 @@ def run_once(cli, scene, threads, work):
             "cpu_seconds": refine.get("cpu_seconds", float("nan")),
             "stopped_by": ref["report"].split(".")[0].split(" (")[0],
             "time_warning": int(any("time guard" in w for w in warnings)),
-            "lights": len(json.load(open(lights)).get("refined", []))}
+            "lights": len(json.load(open(lights)).get("refined", [])),
+            "prepare_seconds": sum(s.get("seconds", 0) for s in stages.values() if s.get("ran"))}
 
 
 def summarise(rows):
