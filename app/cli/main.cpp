@@ -651,6 +651,8 @@ nlohmann::json lightsReport(const PreparedScene& ps) {
             {"seconds", r.seconds},
             {"pixels", r.pixels},
             {"evaluations", r.evaluations},
+            {"stopped_by_budget", r.stoppedByBudget},  // LightRefineOptions::maxEvaluations
+            {"stopped_by_time_guard", r.stoppedByGuard},
             {"initial_objective", r.initialObjective},
             {"final_objective", r.finalObjective},
             {"initial_data_term", r.initialDataTerm},

@@ -1111,7 +1111,10 @@ Status refineTheLights(Preparation& p, std::string& detail) {
   const auto locked =
       std::count_if(specs.begin(), specs.end(), [](const LightRefineSpec& s) { return s.lock; });
   detail = std::to_string(specs.size() - size_t(locked)) + " of " + countOf(specs.size(), "light") +
-           " refined, " + countOf(size_t(ps.refinement.evaluations), "evaluation");
+           " refined, " + countOf(size_t(ps.refinement.evaluations), "evaluation") +
+           (ps.refinement.stoppedByGuard    ? ", stopped by the time guard"
+            : ps.refinement.stoppedByBudget ? ", stopped at the budget"
+                                            : "");
   return {};
 }
 
