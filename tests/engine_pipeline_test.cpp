@@ -1131,6 +1131,33 @@ TEST(Engine, ASceneWithEveryLightLockedSkipsTheRefinementAndItsRefit) {
   EXPECT_TRUE(stageNamed(*example, "refine")->ran);
 }
 
+// A refinement cut short by its last-resort time guard (here one of a nanosecond) is not hidden:
+// the preparation warns that the lights may differ on another machine, and the refine stage's
+// record says so. The example's own refinement ends on its tolerances, well within its budget.
+TEST(Engine, ARefinementCutShortByItsTimeGuardIsAWarning) {
+  SceneDoc doc = exampleDoc();
+  doc.objects.clear();
+  PrepareOptions opt;
+  opt.refine.guardSeconds = 1e-9;
+  auto ps = prepareScene(doc, opt);
+  ASSERT_TRUE(ps.ok()) << ps.error().message();
+  EXPECT_TRUE(ps->refinement.stoppedByGuard);
+  const bool warned = std::any_of(ps->warnings.begin(), ps->warnings.end(), [](const std::string& w) {
+    return w.rfind("light refinement: stopped by its time guard", 0) == 0 &&
+           w.find("may differ on another machine") != std::string::npos;
+  });
+  EXPECT_TRUE(warned) << ::testing::PrintToString(ps->warnings);
+  EXPECT_NE(describeStage(*stageNamed(*ps, "refine")).find("stopped by the time guard"),
+            std::string::npos)
+      << describeStage(*stageNamed(*ps, "refine"));
+  const auto example = preparedExample();
+  ASSERT_TRUE(example.ok());
+  EXPECT_FALSE(example->refinement.stoppedByGuard || example->refinement.stoppedByBudget)
+      << example->refinement.report;
+  EXPECT_LT(example->refinement.evaluations, opt.refine.maxEvaluations / 10);
+  for (const std::string& w : example->warnings) EXPECT_EQ(w.find("time guard"), std::string::npos) << w;
+}
+
 }  // namespace
 }  // namespace inlay
 
