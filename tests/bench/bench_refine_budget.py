@@ -3,7 +3,7 @@ evaluations (the unit of its deterministic budget, LightRefineOptions::maxEvalua
 and CPU seconds and why it stopped, per scene. The budget is chosen from these figures.
 
   INLAY_SHARED_DIR=../shared /usr/bin/python3 tests/bench/bench_refine_budget.py build
-      [--label NAME] [--sets example,dev,A,B,york] [--threads 2] [--out DIR] [--append]
+      [--label NAME] [--sets example,dev,A,B,york] [--threads 2] [--out DIR] [--append] [--plot-only]
 
 Scenes: the bundled example; the dev rooms (../shared/scenes, harness.py scene: assisted);
 scenes-train half A (odd rooms: the budget is chosen on them) and half B (even rooms: reported);
@@ -13,7 +13,8 @@ P1020839), camera and box estimated. Each is prepared once per call (`inlay-cli 
 turn with --append into one DIR (alternated runs). Writes DIR/bench_refine_budget.csv (one row
 per label, scene and run) and DIR/bench_refine_budget_summary.csv (per label and set: the
 largest evaluations, iterations and CPU seconds, the CPU seconds per evaluation) under DIR
-(default tests/bench/out). Each row also has the preparation's seconds (its stages' sum), for the
+(default tests/bench/out), and bench_refine_budget.png (per scene, the first label's evaluations
+and CPU seconds against the budget and the old 10 s limit; --plot-only redraws it). Each row also has the preparation's seconds (its stages' sum), for the
 stage times before and after a change (alternated runs; medians from the CSV).
 """
 import json
@@ -109,7 +110,42 @@ def summarise(rows):
     return out
 
 
+BUDGET = 2000  # LightRefineOptions::maxEvaluations
+
+
+def plot(rows, path):
+    """Per scene (the first label's first run): the evaluations the solve used and its CPU
+    seconds, against the budget and the 10 s the wall-clock limit allowed before."""
+    label = rows[0]["label"]
+    first = {}
+    for r in rows:
+        if r["label"] == label:
+            first.setdefault(r["scene"], r)
+    names = list(first)
+    with benchlib.figure(path, 1, 2, figsize=(12, 4.5)) as ax:
+        if ax is None:
+            return
+        x = range(len(names))
+        colours = {"example": "C0", "dev": "C1", "A": "C2", "B": "C3", "york": "C4"}
+        c = [colours.get(first[n]["set"], "C7") for n in names]
+        ax[0].bar(x, [int(first[n]["evaluations"]) for n in names], color=c)
+        ax[0].axhline(BUDGET, color="k", ls="--", label="budget (maxEvaluations %d)" % BUDGET)
+        ax[0].set_yscale("log")
+        ax[0].set_ylabel("direct-light evaluations used")
+        ax[0].legend(loc="center right")
+        ax[1].bar(x, [float(first[n]["cpu_seconds"]) for n in names], color=c)
+        ax[1].axhline(10, color="k", ls=":", label="the 10 s wall-clock limit before")
+        ax[1].set_yscale("log")
+        ax[1].set_ylabel("refine stage CPU seconds")
+        ax[1].legend(loc="center right")
+        for a in ax:
+            a.set_xticks(list(x))
+            a.set_xticklabels(names, rotation=70, fontsize=7)
+        ax[0].set_title("colour: example, dev, half A, half B, York")
+
+
 def main():
+    benchlib.args(__doc__)
     opt = lambda k, d: benchlib.option(sys.argv, k, d)  # noqa: E731
     build, label = sys.argv[1], opt("--label", "current")
     out = opt("--out", os.path.join(HERE, "out"))
@@ -117,6 +153,9 @@ def main():
     cli = os.path.join(build, "app", "inlay-cli")
     path = os.path.join(out, "bench_refine_budget.csv")
     rows = benchlib.read_csv(path) if os.path.exists(path) and "--append" in sys.argv else []
+    if "--plot-only" in sys.argv:
+        plot(benchlib.read_csv(path), os.path.join(out, "bench_refine_budget.png"))
+        return
     work = os.path.join(out, "refine_budget_scenes")
     os.makedirs(work, exist_ok=True)
     for s, name, scene in scenes(opt("--sets", "example,dev,A,B,york").split(","), work):
@@ -132,6 +171,7 @@ def main():
               (s, name, r["lights"], r["iterations"], r["evaluations"], r["seconds"], r["cpu_seconds"],
                r["stopped_by"]), flush=True)
         benchlib.write_csv(path, rows)
+    plot(rows, os.path.join(out, "bench_refine_budget.png"))
     summ = summarise(rows)
     benchlib.write_csv(os.path.join(out, "bench_refine_budget_summary.csv"), summ)
     for r in summ:
