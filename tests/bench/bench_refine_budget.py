@@ -14,7 +14,7 @@ turn with --append into one DIR (alternated runs). Writes DIR/bench_refine_budge
 per label, scene and run) and DIR/bench_refine_budget_summary.csv (per label and set: the
 largest evaluations, iterations and CPU seconds, the CPU seconds per evaluation) under DIR
 (default tests/bench/out), and bench_refine_budget.png (per scene, the first label's evaluations
-and CPU seconds against the budget and the old 10 s limit; --plot-only redraws it). Each row also has the preparation's seconds (its stages' sum), for the
+and CPU seconds against the budget and the old 10 s limit; --plot-only redraws it). Each row also has the preparation's wall and CPU seconds (its stages' sums), for the
 stage times before and after a change (alternated runs; medians from the CSV).
 """
 import json
@@ -89,7 +89,8 @@ def run_once(cli, scene, threads, work):
             "stopped_by": ref["report"].split(".")[0].split(" (")[0],
             "time_warning": int(any("time guard" in w for w in warnings)),
             "lights": len(json.load(open(lights)).get("refined", [])),
-            "prepare_seconds": sum(s.get("seconds", 0) for s in stages.values() if s.get("ran"))}
+            "prepare_seconds": sum(s.get("seconds", 0) for s in stages.values() if s.get("ran")),
+            "prepare_cpu_seconds": sum(s.get("cpu_seconds", 0) for s in stages.values() if s.get("ran"))}
 
 
 def summarise(rows):
