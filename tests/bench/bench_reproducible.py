@@ -97,6 +97,7 @@ def prepare(cli, scene, way, slowdown, work):
 
 
 def main():
+    benchlib.args(__doc__)
     opt = lambda k, d: benchlib.option(sys.argv, k, d)  # noqa: E731
     build, label = sys.argv[1], opt("--label", "current")
     out = opt("--out", os.path.join(HERE, "out"))
