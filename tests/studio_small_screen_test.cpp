@@ -5,12 +5,14 @@
 // whole content's height, so the window could not be made shorter than that and its bottom,
 // with the status bar and the last fields of Properties, lay below the screen. Each tall dock
 // now scrolls its content when the window is short: the window fits, in every language, and
-// every field of Properties can still be scrolled to.
+// every field of Properties can still be scrolled to. The Camera Response curve's caption, which
+// stayed English, now follows the language.
 #include "document.h"
 #include "i18n.h"
 #include "main_window.h"
 
 #include <QDockWidget>
+#include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSettings>
@@ -37,6 +39,18 @@ QString dockMinimums(const MainWindow& window) {
                  .arg(dock->objectName())
                  .arg(dock->minimumSizeHint().width())
                  .arg(dock->minimumSizeHint().height());
+  return out.join(QStringLiteral(", "));
+}
+
+// Properties' labels cut short ("Renderr" for "Rendern:" in German), empty when none is.
+QString cutLabels(const QDockWidget* properties) {
+  QStringList out;
+  for (const QLabel* label : properties->findChildren<QLabel*>())
+    if (label->isVisible() && !label->wordWrap() && label->width() < label->sizeHint().width())
+      out << QStringLiteral("\"%1\" %2 of %3 px")
+                 .arg(label->text())
+                 .arg(label->width())
+                 .arg(label->sizeHint().width());
   return out.join(QStringLiteral(", "));
 }
 
@@ -80,6 +94,20 @@ void StudioSmallScreenTest::theWindowFitsASmallScreen() {
                                 .arg(window.minimumSizeHint().width())
                                 .arg(window.minimumSizeHint().height())
                                 .arg(dockMinimums(window))));
+    auto* properties = window.findChild<QDockWidget*>(QStringLiteral("propertiesDock"));
+    QTRY_VERIFY2(
+        cutLabels(properties).isEmpty(),
+        qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(language)).arg(cutLabels(properties))));
+    // The response curve's caption speaks the language (it stayed English: tr() had QWidget's
+    // context); it is also the curve's accessible name.
+    const QWidget* curve = window.findChild<QWidget*>(QStringLiteral("responseCurve"));
+    QVERIFY(curve);
+    const char* caption = QByteArray(language) == "de"
+                              ? "Code (nach oben: Blendenstufen über Mittelgrau)"
+                          : QByteArray(language) == "fr"
+                              ? "code (en hauteur : diaphragmes au-dessus du gris moyen)"
+                              : "code (up: stops above mid-grey)";
+    QTRY_COMPARE(curve->accessibleName(), QString::fromUtf8(caption));
     QVERIFY(shots.shot(&window, QStringLiteral("window_%1_1024x700").arg(QLatin1String(language))));
   }
   // Properties' last field (New models ▸ Height) is still reachable: its dock scrolls to it.
@@ -92,7 +120,9 @@ void StudioSmallScreenTest::theWindowFitsASmallScreen() {
   const QWidget* body = scroll->widget();
   const QRect seen(-body->pos(), scroll->viewport()->size());
   QVERIFY2(seen.bottom() >= body->height() - 1,
-           qPrintable(QStringLiteral("scrolled to %1, the fields end at %2").arg(seen.bottom()).arg(body->height())));
+           qPrintable(QStringLiteral("scrolled to %1, the fields end at %2")
+                          .arg(seen.bottom())
+                          .arg(body->height())));
 }
 
 QTEST_MAIN(StudioSmallScreenTest)
