@@ -48,6 +48,7 @@
 #include <QImage>
 #include <QPointF>
 #include <QRectF>
+#include <QRegion>
 #include <QWidget>
 
 #include <optional>
@@ -172,6 +173,9 @@ class Viewport : public QWidget {
   void paintScaled(QPainter& p, const QImage& image, const QRectF& target);
   void paintRoom(QPainter& p);
   void paintVanishingLines(QPainter& p);
+  // The pixels the shown frame's objects cover (mask over one half), in the frame's pixels;
+  // cached per frame. The estimate's lines are not drawn over them.
+  const QRegion& objectRegion();
   void paintMarks(QPainter& p);
   void paintObjects(QPainter& p);
   void paintHandles(QPainter& p);
@@ -197,6 +201,8 @@ class Viewport : public QWidget {
   bool fit_ = true;     // keep fitting on resize until the user zooms or pans
   bool showBefore_ = false;
   bool showVanishing_ = true;
+  QRegion objectRegion_;
+  const void* objectRegionFrame_ = nullptr;  // the frame objectRegion_ was made from
   Layer layer_ = Layer::Composite;
   Tool tool_ = Tool::Select;
 
