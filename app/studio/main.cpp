@@ -32,6 +32,21 @@ using inlay::studio::MainWindow;
 
 namespace {
 
+// `inlay --help` and `--version` print and exit without a window: with no display (over ssh,
+// in a container) Qt's windowing plugin would abort before they are read ("could not connect to
+// display ... Reinstalling the application may fix this problem"), so they run offscreen.
+void printWithoutDisplay(int argc, char** argv) {
+  const bool display = qEnvironmentVariableIsSet("DISPLAY") ||
+                       qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
+                       qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+  if (display) return;
+  for (int i = 1; i < argc; ++i) {
+    const QByteArray arg(argv[i]);
+    if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "-v" || arg == "--version")
+      qputenv("QT_QPA_PLATFORM", "offscreen");
+  }
+}
+
 int writeScreenshot(MainWindow& window, const QString& path) {
   const QPixmap shot = window.grab();
   if (shot.isNull() || !shot.save(path)) {
@@ -44,6 +59,7 @@ int writeScreenshot(MainWindow& window, const QString& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  printWithoutDisplay(argc, argv);
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("Inlay"));
   QApplication::setApplicationName(QStringLiteral("inlay"));
