@@ -6,8 +6,10 @@
 // with the status bar and the last fields of Properties, lay below the screen. Each tall dock
 // now scrolls its content when the window is short: the window fits, in every language, and
 // every field of Properties can still be scrolled to. The Camera Response curve's caption, which
-// stayed English, now follows the language.
+// stayed English, now follows the language, and so do the camera estimate's warnings drawn on
+// the photo.
 #include "document.h"
+#include "engine_text.h"
 #include "i18n.h"
 #include "main_window.h"
 
@@ -108,6 +110,12 @@ void StudioSmallScreenTest::theWindowFitsASmallScreen() {
                               ? "code (en hauteur : diaphragmes au-dessus du gris moyen)"
                               : "code (up: stops above mid-grey)";
     QTRY_COMPARE(curve->accessibleName(), QString::fromUtf8(caption));
+    // The estimate's warnings drawn on the photo read in the language too (the example's: one
+    // vanishing point rests on two lines; they stayed English in the overlay and status bar).
+    QVERIFY(!window.document()->lastEstimate()->warnings.empty());
+    if (QByteArray(language) != "en")
+      for (const std::string& w : window.document()->lastEstimate()->warnings)
+        QVERIFY2(engineText(QString::fromStdString(w)) != QString::fromStdString(w), w.c_str());
     QVERIFY(shots.shot(&window, QStringLiteral("window_%1_1024x700").arg(QLatin1String(language))));
   }
   // Properties' last field (New models ▸ Height) is still reachable: its dock scrolls to it.

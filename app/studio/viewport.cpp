@@ -818,7 +818,7 @@ void Viewport::paintStatus(QPainter& p) {
                .arg(e->camera.focalPx, 0, 'f', 0)
                .arg(e->focalMinPx, 0, 'f', 0)
                .arg(e->focalMaxPx, 0, 'f', 0);
-  for (const std::string& w : e->warnings) lines << QString::fromStdString(w);
+  for (const std::string& w : e->warnings) lines << engineText(QString::fromStdString(w));
   const bool weak = e->overallConfidence < 0.5 || !e->manhattan;
   box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
       Qt::AlignLeft | Qt::AlignBottom);
