@@ -86,10 +86,12 @@ void StudioOverlayTest::theEstimatesLinesLeaveTheObjectsClear() {
       }
     }
   QVERIFY2(inside > 500, qPrintable(QStringLiteral("the cube covers %1 widget pixels").arg(inside)));
-  QVERIFY2(outsideChanged > 1000, qPrintable(QStringLiteral("the lines changed %1 pixels").arg(outsideChanged)));
-  QVERIFY2(insideChanged == 0, qPrintable(QStringLiteral("the lines cross the cube on %1 of its %2 pixels")
-                                              .arg(insideChanged)
-                                              .arg(inside)));
+  QVERIFY2(outsideChanged > 1000,
+           qPrintable(QStringLiteral("the lines changed %1 pixels").arg(outsideChanged)));
+  QVERIFY2(insideChanged == 0,
+           qPrintable(QStringLiteral("the lines cross the cube on %1 of its %2 pixels")
+                          .arg(insideChanged)
+                          .arg(inside)));
 }
 
 QTEST_MAIN(StudioOverlayTest)

@@ -21,6 +21,7 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QScreen>
 #include <QTimer>
 
 #include <algorithm>
@@ -136,7 +137,11 @@ int main(int argc, char** argv) {
 
   MainWindow window;
   window.setInteractive(!screenshot);
-  if (screenshot) window.resize(1280, 800);
+  // Screenshots at 1280 x 800, or the screen's size when it is smaller (xvfb-run -s "-screen 0
+  // 1024x700x24" shows the studio as a small screen does).
+  if (screenshot)
+    window.resize(QSize(1280, 800).boundedTo(
+        window.screen() ? window.screen()->availableGeometry().size() : QSize(1280, 800)));
   window.show();
   if (parser.isSet(showLogOpt)) {  // across the bottom, where its lines are read whole
     window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
