@@ -2,7 +2,8 @@
 // clear. Tried as a new user on York photos (P1020839, a bust in front of lockers; P1040814, a
 // cow on a carpet), every inserted model looked transparent: the detected edges of the photo
 // under it (the lockers', the carpet's) were drawn across it, so the photo's structure showed
-// through. The lines now stop at the objects' outline (the shown frame's mask).
+// through. The lines now stop at the objects' outline (the shown frame's mask). And the
+// estimate's warnings no longer cover the photo's lower half on a small screen.
 #include "document.h"
 #include "main_window.h"
 #include "render_controller.h"
@@ -25,6 +26,7 @@ class StudioOverlayTest : public QObject {
  private Q_SLOTS:
   void initTestCase();
   void theEstimatesLinesLeaveTheObjectsClear();
+  void theEstimatesWarningsLeaveThePhotoOnASmallScreen();
 };
 
 void StudioOverlayTest::initTestCase() {
@@ -92,6 +94,41 @@ void StudioOverlayTest::theEstimatesLinesLeaveTheObjectsClear() {
            qPrintable(QStringLiteral("the lines cross the cube on %1 of its %2 pixels")
                           .arg(insideChanged)
                           .arg(inside)));
+}
+
+// York P1040845 (an office) at 1024 x 700: the box advice wrapped to eight lines covered the
+// lower half of the photo, where the inserted model stands. The box now stays within a fifth of
+// the viewport: each warning on one line, and where the whole text is.
+void StudioOverlayTest::theEstimatesWarningsLeaveThePhotoOnASmallScreen() {
+  const QString shared = qEnvironmentVariable("INLAY_SHARED_DIR");
+  const QString photo = shared + QStringLiteral("/york/P1040845.jpg");
+  if (shared.isEmpty() || !QFile::exists(photo)) QSKIP("the York photos (INLAY_SHARED_DIR) are absent");
+  MainWindow window;
+  window.setInteractive(false);
+  window.resize(1024, 700);
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(window.openPath(photo));
+  QVERIFY2(waitReady(window.document(), waitMs(200000)), qPrintable(window.document()->prepareError()));
+  Viewport* viewport = window.viewport();
+  const CameraEstimate* e = window.document()->lastEstimate();
+  QVERIFY(e && !e->warnings.empty());
+  const QStringList lines = viewport->estimateLines();
+  const QRect area = viewport->rect().adjusted(10, 10, -10, -10);
+  const int height = viewport->fontMetrics()
+                         .boundingRect(area, Qt::TextWordWrap, lines.join(QLatin1Char('\n')))
+                         .height();
+  QVERIFY2(height <= viewport->height() / 5, qPrintable(QStringLiteral("%1 px of %2: %3")
+                                                            .arg(height)
+                                                            .arg(viewport->height())
+                                                            .arg(lines.join(QStringLiteral(" | ")))));
+  QVERIFY2(lines.last().contains(QStringLiteral("Log")), qPrintable(lines.last()));
+  // A tall viewport shows them whole, as before.
+  window.resize(1600, 1400);
+  QTRY_VERIFY(viewport->height() > 1000);
+  const QStringList whole = viewport->estimateLines();
+  QCOMPARE(whole.size(), int(e->warnings.size()) + 2);
+  QCOMPARE(whole.last(), QString::fromStdString(e->warnings.back()));
 }
 
 QTEST_MAIN(StudioOverlayTest)

@@ -3160,73 +3160,78 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="813"/>
+        <location filename="../app/studio/viewport.cpp" line="822"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="817"/>
+        <location filename="../app/studio/viewport.cpp" line="826"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="876"/>
+        <location filename="../app/studio/viewport.cpp" line="837"/>
+        <source>The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and Confidence</source>
+        <translation>Die ganzen Warnungen: der Reiter Protokoll (Ansicht ▸ Protokoll); dieser Text: Ansicht ▸ Fluchtlinien und Konfidenz</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>Before</source>
         <translation>Vorher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="876"/>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>After</source>
         <translation>Nachher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="963"/>
+        <location filename="../app/studio/viewport.cpp" line="979"/>
         <source>the left wall</source>
         <translation>der linken Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="964"/>
+        <location filename="../app/studio/viewport.cpp" line="980"/>
         <source>the right wall</source>
         <translation>der rechten Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="965"/>
+        <location filename="../app/studio/viewport.cpp" line="981"/>
         <source>the back wall</source>
         <translation>der Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="966"/>
+        <location filename="../app/studio/viewport.cpp" line="982"/>
         <source>the wall behind the camera</source>
         <translation>der Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="967"/>
+        <location filename="../app/studio/viewport.cpp" line="983"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Mit dem Rücken an %1 (Umschalt gedrückt halten: frei platzieren).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="988"/>
+        <location filename="../app/studio/viewport.cpp" line="1004"/>
         <source>Turned %1°</source>
         <translation>Gedreht auf %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="998"/>
+        <location filename="../app/studio/viewport.cpp" line="1014"/>
         <source>Height %1 m</source>
         <translation>Höhe %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1031"/>
+        <location filename="../app/studio/viewport.cpp" line="1047"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="956"/>
-        <location filename="../app/studio/viewport.cpp" line="1354"/>
+        <location filename="../app/studio/viewport.cpp" line="972"/>
+        <location filename="../app/studio/viewport.cpp" line="1370"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1287"/>
+        <location filename="../app/studio/viewport.cpp" line="1303"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>

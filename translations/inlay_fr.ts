@@ -3160,73 +3160,78 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="813"/>
+        <location filename="../app/studio/viewport.cpp" line="822"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="817"/>
+        <location filename="../app/studio/viewport.cpp" line="826"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="876"/>
+        <location filename="../app/studio/viewport.cpp" line="837"/>
+        <source>The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and Confidence</source>
+        <translation>Les avertissements en entier : l’onglet Journal (Affichage ▸ Journal) ; ce texte : Affichage ▸ Lignes de fuite et confiance</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>Before</source>
         <translation>Avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="876"/>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>After</source>
         <translation>Après</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="963"/>
+        <location filename="../app/studio/viewport.cpp" line="979"/>
         <source>the left wall</source>
         <translation>le mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="964"/>
+        <location filename="../app/studio/viewport.cpp" line="980"/>
         <source>the right wall</source>
         <translation>le mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="965"/>
+        <location filename="../app/studio/viewport.cpp" line="981"/>
         <source>the back wall</source>
         <translation>le mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="966"/>
+        <location filename="../app/studio/viewport.cpp" line="982"/>
         <source>the wall behind the camera</source>
         <translation>le mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="967"/>
+        <location filename="../app/studio/viewport.cpp" line="983"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="988"/>
+        <location filename="../app/studio/viewport.cpp" line="1004"/>
         <source>Turned %1°</source>
         <translation>Tourné à %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="998"/>
+        <location filename="../app/studio/viewport.cpp" line="1014"/>
         <source>Height %1 m</source>
         <translation>Hauteur %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1031"/>
+        <location filename="../app/studio/viewport.cpp" line="1047"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="956"/>
-        <location filename="../app/studio/viewport.cpp" line="1354"/>
+        <location filename="../app/studio/viewport.cpp" line="972"/>
+        <location filename="../app/studio/viewport.cpp" line="1370"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1287"/>
+        <location filename="../app/studio/viewport.cpp" line="1303"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>

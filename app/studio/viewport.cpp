@@ -807,8 +807,17 @@ void Viewport::paintStatus(QPainter& p) {
   const QRectF area = QRectF(rect()).adjusted(10, 10, -10, -10);
   if (!banner.isEmpty()) box(area, banner, bannerColour, Qt::AlignLeft | Qt::AlignTop);
   // The estimate's confidences and warnings, bottom left.
+  const QStringList lines = estimateLines();
+  if (lines.isEmpty()) return;
+  const bool weak = document_->lastEstimate()->overallConfidence < 0.5 ||
+                    !document_->lastEstimate()->manhattan;
+  box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
+      Qt::AlignLeft | Qt::AlignBottom);
+}
+
+QStringList Viewport::estimateLines() const {
   const CameraEstimate* e = showVanishing_ ? document_->lastEstimate() : nullptr;
-  if (!e) return;
+  if (!e) return {};
   QStringList lines;
   lines << tr("Vanishing points: x %1, y %2, z %3 (confidence)")
                .arg(e->confidence[0], 0, 'f', 2)
@@ -818,10 +827,17 @@ void Viewport::paintStatus(QPainter& p) {
                .arg(e->camera.focalPx, 0, 'f', 0)
                .arg(e->focalMinPx, 0, 'f', 0)
                .arg(e->focalMaxPx, 0, 'f', 0);
-  for (const std::string& w : e->warnings) lines << engineText(QString::fromStdString(w));
-  const bool weak = e->overallConfidence < 0.5 || !e->manhattan;
-  box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
-      Qt::AlignLeft | Qt::AlignBottom);
+  QStringList warnings;
+  for (const std::string& w : e->warnings) warnings << engineText(QString::fromStdString(w));
+  const QRect area = rect().adjusted(10, 10, -10, -10);
+  const QString whole = (lines + warnings).join(QLatin1Char('\n'));
+  if (fontMetrics().boundingRect(area, Qt::TextWordWrap, whole).height() <= height() / 5)
+    return lines + warnings;
+  for (const QString& w : warnings) lines << fontMetrics().elidedText(w, Qt::ElideRight, area.width());
+  lines << tr(
+      "The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and "
+      "Confidence");
+  return lines;
 }
 
 // ---------------------------------------------------------------- before/after split

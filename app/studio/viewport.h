@@ -135,6 +135,11 @@ class Viewport : public QWidget {
   // The banner's text over the shown final image (a change of language).
   void setFinalCaption(const QString& caption);
   const QString& finalCaption() const { return finalCaption_; }
+  // The camera estimate's lines drawn bottom left on the photo (confidences, focal length,
+  // warnings), empty when hidden. When they would cover more than a fifth of the viewport's
+  // height (a York photo's box advice is 8 lines at 1024 x 700, over the inserted object), each
+  // warning keeps its first line and a last line says where the whole text is.
+  QStringList estimateLines() const;
   // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
   void commitToolInput();
   void cancelToolInput();
