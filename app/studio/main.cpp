@@ -48,6 +48,15 @@ void printWithoutDisplay(int argc, char** argv) {
   }
 }
 
+// --show-log: the Log dock across the bottom, where its lines are read whole.
+void showLogAcrossTheBottom(MainWindow& window) {
+  window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
+  window.logDock()->show();
+  // Once laid out: a dock added before the window's first layout keeps its minimum height.
+  QTimer::singleShot(0, &window,
+                     [&window] { window.resizeDocks({window.logDock()}, {300}, Qt::Vertical); });
+}
+
 int writeScreenshot(MainWindow& window, const QString& path) {
   const QPixmap shot = window.grab();
   if (shot.isNull() || !shot.save(path)) {
@@ -143,13 +152,7 @@ int main(int argc, char** argv) {
     window.resize(QSize(1280, 800).boundedTo(
         window.screen() ? window.screen()->availableGeometry().size() : QSize(1280, 800)));
   window.show();
-  if (parser.isSet(showLogOpt)) {  // across the bottom, where its lines are read whole
-    window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
-    window.logDock()->show();
-    // Once laid out: a dock added before the window's first layout keeps its minimum height.
-    QTimer::singleShot(0, &window,
-                       [&window] { window.resizeDocks({window.logDock()}, {300}, Qt::Vertical); });
-  }
+  if (parser.isSet(showLogOpt)) showLogAcrossTheBottom(window);
   bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
   // Work a crash left behind replaces what was opened (after asking, unless --recover).
   if (parser.isSet(recoverOpt)) opened = window.restoreRecovery() || opened;
