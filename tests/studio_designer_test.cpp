@@ -494,7 +494,7 @@ void StudioDesignerTest::propertiesLabelEveryFieldInEveryLanguage() {
   window.show();
   QVERIFY(QTest::qWaitForWindowExposed(&window));
   PropertiesDock* dock = window.propertiesDock();
-  auto* form = qobject_cast<QFormLayout*>(dock->widget()->layout());
+  auto* form = dock->findChild<QFormLayout*>();  // inside the dock's scroll area
   QVERIFY(form);
   auto labels = [&] {
     QStringList out;

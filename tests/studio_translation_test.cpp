@@ -397,8 +397,12 @@ void StudioTranslationTest::everyTextFollowsTheLanguage() {
   switchTo(QStringLiteral("en"), window);
   const Texts again = collect(window);
   QStringList changed;
+  // The zoom ("144 %") is a measure of the layout, not a text: at this window's 750 px height
+  // (it fits now that Properties scrolls) the docks may end a pixel wider after the longer
+  // French and German texts, and the fitted zoom follows.
+  static const QRegularExpression zoom(QStringLiteral("^\\d+ %$"));
   for (const auto& [where, text] : english)
-    if (again.count(where) && again.at(where) != text)
+    if (again.count(where) && again.at(where) != text && !zoom.match(text).hasMatch())
       changed << QStringLiteral("%1: \"%2\" (was \"%3\")").arg(where, again.at(where), text);
   QVERIFY2(changed.isEmpty(), qPrintable(changed.join(QStringLiteral("; "))));
   QCOMPARE(historyTexts(window), englishHistory);

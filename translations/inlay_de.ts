@@ -326,607 +326,607 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>empty file</source>
         <translation>leere Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>cannot open for reading</source>
         <translation>kann nicht zum Lesen geöffnet werden</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>read failed</source>
         <translation>Lesen fehlgeschlagen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>no triangles</source>
         <translation>keine Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>import failed: %1</source>
         <translation>Import fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>nicht endliche Koordinate „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>non-finite coordinate</source>
         <translation>nicht endliche Koordinate</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>fehlerhafte Zahl „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>fehlerhafter Flächenindex „%1“</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>face corner without a vertex index</source>
         <translation>Flächenecke ohne Eckpunktindex</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>Flächenindex 0 (OBJ-Indizes beginnen bei 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>a face needs at least 3 vertices</source>
         <translation>eine Fläche braucht mindestens 3 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>more than %1 triangles</source>
         <translation>mehr als %1 Dreiecke</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="40"/>
+        <location filename="../app/studio/engine_text.cpp" line="46"/>
         <source>more than %1 vertices</source>
         <translation>mehr als %1 Eckpunkte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="47"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 Eckpunkte überschreiten die Grenze von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="42"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>„%1“ braucht %2 Zahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="49"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>keine PLY-Datei (die Kennung „ply“ fehlt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <location filename="../app/studio/engine_text.cpp" line="50"/>
         <source>not a GLB file</source>
         <translation>keine GLB-Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="45"/>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
         <source>invalid glTF JSON</source>
         <translation>ungültiges glTF-JSON</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="46"/>
+        <location filename="../app/studio/engine_text.cpp" line="52"/>
         <source>buffer file not found: %1</source>
         <translation>Pufferdatei nicht gefunden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="48"/>
+        <location filename="../app/studio/engine_text.cpp" line="54"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>keine angegeben; die Objekte werden nur vom gesammelten Licht des Raums beleuchtet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="50"/>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignoriert, das Foto ist bereits linear (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <location filename="../app/studio/engine_text.cpp" line="57"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>die geschätzte Rückwand ist unbrauchbar (%1); ein Raum von 5 x 5,5 m wird verwendet: layout.back_wall_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="54"/>
+        <location filename="../app/studio/engine_text.cpp" line="60"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Brennweite aus der Annahme, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="58"/>
+        <location filename="../app/studio/engine_text.cpp" line="64"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>das Foto zeigt keine klare Raumstruktur; die Kamera ist eine Notlösung (Standardbrennweite, aufrecht): für ein verlässliches Ergebnis camera.vanishing_points_px angeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="62"/>
+        <location filename="../app/studio/engine_text.cpp" line="68"/>
         <source>strength kept as estimated: %1</source>
         <translation>Stärke wie geschätzt beibehalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="63"/>
+        <location filename="../app/studio/engine_text.cpp" line="69"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>das Fenster, durch das die Sonne scheint, ist nicht im Bild; sein Himmel ist ein Licht von %1 x %2 m auf %3 (woher der Strahl kam), seine Stärke angepasst (zur Wahl source_box_px angeben oder das Fenster als Licht umranden)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <location filename="../app/studio/engine_text.cpp" line="73"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>die Maske von %1 zeigt an %2 von %3 Punkten den Boden unter der Platte, also ist sie eine %4 m dicke Platte (zur Wahl thickness_m angeben; 0: massiv)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>das gesammelte Licht änderte sich im letzten von %2 Durchgängen noch um %1 % (die Wände, die die Kamera nicht sieht, sind unsicher)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="74"/>
+        <location filename="../app/studio/engine_text.cpp" line="80"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>die Lichter %1 sind nicht im Bild: sie teilen sich eine Strahldichte (das Foto zeigt nur ihre Summe)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
         <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
         <translation>die Decke, die die Kamera nicht sieht: das Modell des Raums in der Lichtanpassung gibt ihr %1 Grau, nicht den Mittelwert der sichtbaren Wände (%2; ein sonnenbeschienener Fleck beleuchtet die Decke direkt, und das Foto zeigt ihre Albedo nicht)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <location filename="../app/studio/engine_text.cpp" line="87"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>außerhalb des Raums; um %1 m verschoben, damit es hineinpasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>in jeder Richtung größer als der Raum; seine Position wird beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 beleuchtet nichts vom Raum, den das Foto zeigt: seine Stärke bleibt beim Startwert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>das direkte Licht des Fotos ist schwarz: die Lichter werden an Dunkelheit angepasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>Verfeinerung der Lichter fehlgeschlagen (%1): der Startwert bleibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>nicht konvergiert: angehalten durch %1 nach %2 Iterationen (%3 s): primales Residuum %4, duales %5, Toleranz %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="94"/>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
         <source>the iteration cap</source>
         <translation>die Iterationsgrenze</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>non-finite residuals</source>
         <translation>nicht endliche Residuen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="96"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>cancellation</source>
         <translation>den Abbruch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
         <source>noise level</source>
         <translation>Rauschpegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="101"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>edge</source>
         <translation>Kanten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>die angepasste Kurve %1 senkt das Residuum (%2) nur von %3 auf %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>das Residuum (%1) von sRGB, %2, liegt im Bereich dessen, was zu Recht als sRGB gelesene Fotos zeigen (unter %3), daher wird der angepassten Kurve %4 nicht vertraut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufe gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>die angepasste Kurve %1 umfasst %2 Blendenstufen zwischen den Codes 128 und 254 (sRGB 2,2, höchstens %3 glaubhaft), aber das Rauschen des Fotos wurde in dieser Hälfte nur auf %4 Code-Stufen gemessen (%5 nötig), die Schulter ist also extrapoliert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="115"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>zu wenig Anhaltspunkte für eine andere Kurve als sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>eine unplausible Kurve wurde abgelehnt (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2, mit sRGB %3</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>die geschätzte Kurve wurde nicht verwendet (%1); verwende sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>die angepasste Kurve %1 liegt an der Grenze ihrer Familie (%2): die Kurve der Kamera kann stärker sein, als die Familie fasst</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1; verwende sRGB (camera.response angeben, um zu wählen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
         <source>the photo is empty</source>
         <translation>das Foto ist leer</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>der Großteil des Fotos ist zu Schwarz oder Weiß abgeschnitten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>the photo is nearly one flat colour</source>
         <translation>das Foto ist fast eine einzige flache Farbe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>das Foto ist fast binär (%1 Graustufen belegt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>zu wenige saubere Kanten zwischen flachen Bereichen (%1 von %2 nötigen)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>die Kanten decken nur die Codes %1 bis %2 ab</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>cancelled</source>
         <translation>abgebrochen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>zu wenige flache Bereiche, um das Rauschen zu messen (%1 flache 8 x 8-Blöcke)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>die flachen Bereiche decken zu wenige Codes ab, um das Rauschen über sie zu messen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>the photo shows no measurable noise</source>
         <translation>das Foto zeigt kein messbares Rauschen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>none marked</source>
         <translation>keine markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>no sun marked</source>
         <translation>keine Sonne markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>none inserted</source>
         <translation>keine eingefügt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>die Lichter bleiben wie geschätzt (erste Lichter verlangt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>turned off</source>
         <translation>ausgeschaltet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>no light marked</source>
         <translation>kein Licht markiert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>jedes Licht gesperrt oder vorgegeben („refine“: false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>every light locked</source>
         <translation>jedes Licht gesperrt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>the working copy is the photo</source>
         <translation>die Arbeitskopie ist das Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>the lights were not refined</source>
         <translation>die Lichter wurden nicht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>no light moved</source>
         <translation>kein Licht bewegt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt (unter %2 %): die Lichter der ersten Schätzung bleiben</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting ist &quot;none&quot; (die Voreinstellung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>linear photo</source>
         <translation>lineares Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>the photo area-averaged</source>
         <translation>das Foto flächengemittelt verkleinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>the photo&apos;s own size</source>
         <translation>die eigene Größe des Fotos</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>estimated from the photo</source>
         <translation>aus dem Foto geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>v %1 applied</source>
         <translation>v %1 angewandt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>das Residuum der Lichtanpassung zeigt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>the light fit run again</source>
         <translation>die Lichtanpassung erneut ausgeführt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="215"/>
+        <location filename="../app/studio/engine_text.cpp" line="221"/>
         <source>the curve kept: %1</source>
         <translation>Kurve behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="216"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2</translation>
     </message>
@@ -936,97 +936,107 @@
         <translation>toe_shoulder (Exponent %1, Fuß %2, Schulter %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <source>vanishing point %1: only %2 supporting line(s); it rests on the other two</source>
+        <translation>Fluchtpunkt %1: nur %2 stützende Linie(n); er stützt sich auf die anderen beiden</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <source>vanishing point %1: its lines are nearly parallel in the photo, so its distance is uncertain</source>
+        <translation>Fluchtpunkt %1: seine Linien sind im Foto fast parallel, daher ist seine Entfernung unsicher</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>mit sRGB %1; auf Kopien von %2 x %3 px %4 gegen %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="220"/>
+        <location filename="../app/studio/engine_text.cpp" line="226"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>mit sRGB %1; kein schneller Vergleich</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="221"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>log ratio %1 beyond %2</source>
         <translation>Log-Verhältnis %1 jenseits von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>log ratio %1 within %2</source>
         <translation>Log-Verhältnis %1 innerhalb von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="241"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="236"/>
+        <location filename="../app/studio/engine_text.cpp" line="242"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="237"/>
+        <location filename="../app/studio/engine_text.cpp" line="243"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="238"/>
+        <location filename="../app/studio/engine_text.cpp" line="244"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="239"/>
+        <location filename="../app/studio/engine_text.cpp" line="245"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="240"/>
+        <location filename="../app/studio/engine_text.cpp" line="246"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="303"/>
+        <location filename="../app/studio/engine_text.cpp" line="309"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1052,47 +1062,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="219"/>
+        <location filename="../app/studio/docks.cpp" line="254"/>
         <source>Layers</source>
         <translation>Ebenen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Composite</source>
         <translation>Komposit</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Photo</source>
         <translation>Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Albedo</source>
         <translation>Albedo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>Direct light</source>
         <translation>Direktes Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>With objects</source>
         <translation>Mit Objekten</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>Without objects</source>
         <translation>Ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="222"/>
+        <location filename="../app/studio/docks.cpp" line="257"/>
         <source>Mask</source>
         <translation>Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="222"/>
+        <location filename="../app/studio/docks.cpp" line="257"/>
         <source>Difference</source>
         <translation>Differenz</translation>
     </message>
@@ -2226,231 +2236,231 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="351"/>
+        <location filename="../app/studio/docks.cpp" line="386"/>
         <source>Properties</source>
         <translation>Eigenschaften</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="356"/>
+        <location filename="../app/studio/docks.cpp" line="391"/>
         <source>Name:</source>
         <translation>Name:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="357"/>
+        <location filename="../app/studio/docks.cpp" line="392"/>
         <source>Render:</source>
         <translation>Rendern:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="358"/>
+        <location filename="../app/studio/docks.cpp" line="393"/>
         <source>Shown</source>
         <translation>Sichtbar</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="359"/>
+        <location filename="../app/studio/docks.cpp" line="394"/>
         <source>A hidden object stays in the scene but is not rendered</source>
         <translation>Ein ausgeblendetes Objekt bleibt in der Szene, wird aber nicht gerendert</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="360"/>
+        <location filename="../app/studio/docks.cpp" line="395"/>
         <source>Size (W × D × H):</source>
         <translation>Größe (B × T × H):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="361"/>
+        <location filename="../app/studio/docks.cpp" line="396"/>
         <source>Width × depth × height in metres, as placed (before its turn)</source>
         <translation>Breite × Tiefe × Höhe in Metern, wie platziert (vor der Drehung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="363"/>
+        <location filename="../app/studio/docks.cpp" line="398"/>
         <source>The photo pixel the centre of the object&apos;s base stands on</source>
         <translation>Der Fotopixel, auf dem die Mitte der Standfläche des Objekts steht</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="368"/>
+        <location filename="../app/studio/docks.cpp" line="403"/>
         <source>Surface:</source>
         <translation>Fläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="369"/>
+        <location filename="../app/studio/docks.cpp" line="404"/>
         <source>Finish:</source>
         <translation>Oberfläche:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="370"/>
+        <location filename="../app/studio/docks.cpp" line="405"/>
         <source>Roughness:</source>
         <translation>Rauheit:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="371"/>
-        <location filename="../app/studio/docks.cpp" line="383"/>
+        <location filename="../app/studio/docks.cpp" line="406"/>
+        <location filename="../app/studio/docks.cpp" line="418"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="372"/>
+        <location filename="../app/studio/docks.cpp" line="407"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
         <source>Diffuse</source>
         <translation>Matt (diffus)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Glossy</source>
         <translation>Glänzend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Mirror</source>
         <translation>Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
         <source>Metal</source>
         <translation>Metall</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Glass</source>
         <translation>Glas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Frosted glass</source>
         <translation>Milchglas</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Emissive</source>
         <translation>Leuchtend</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>From the file</source>
         <translation>Aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="376"/>
+        <location filename="../app/studio/docks.cpp" line="411"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Reflexionsgrad der Objektoberfläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="362"/>
+        <location filename="../app/studio/docks.cpp" line="397"/>
         <source>Base (px):</source>
         <translation>Fußpunkt (px):</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="48"/>
+        <location filename="../app/studio/docks.cpp" line="83"/>
         <source>Floor</source>
         <translation>Boden</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="49"/>
+        <location filename="../app/studio/docks.cpp" line="84"/>
         <source>Ceiling</source>
         <translation>Decke</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="50"/>
+        <location filename="../app/studio/docks.cpp" line="85"/>
         <source>Left wall</source>
         <translation>Linke Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="51"/>
+        <location filename="../app/studio/docks.cpp" line="86"/>
         <source>Right wall</source>
         <translation>Rechte Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="52"/>
+        <location filename="../app/studio/docks.cpp" line="87"/>
         <source>Back wall</source>
         <translation>Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="53"/>
+        <location filename="../app/studio/docks.cpp" line="88"/>
         <source>Wall behind the camera</source>
         <translation>Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="57"/>
+        <location filename="../app/studio/docks.cpp" line="92"/>
         <source>Surface %1, top</source>
         <translation>Fläche %1, oben</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="58"/>
+        <location filename="../app/studio/docks.cpp" line="93"/>
         <source>Surface %1, sides</source>
         <translation>Fläche %1, Seiten</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="364"/>
-        <location filename="../app/studio/docks.cpp" line="382"/>
+        <location filename="../app/studio/docks.cpp" line="399"/>
+        <location filename="../app/studio/docks.cpp" line="417"/>
         <source>Height:</source>
         <translation>Höhe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="365"/>
+        <location filename="../app/studio/docks.cpp" line="400"/>
         <source>Turn:</source>
         <translation>Drehung:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="366"/>
+        <location filename="../app/studio/docks.cpp" line="401"/>
         <source>Material:</source>
         <translation>Material:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="367"/>
+        <location filename="../app/studio/docks.cpp" line="402"/>
         <source>Colour:</source>
         <translation>Farbe:</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="377"/>
+        <location filename="../app/studio/docks.cpp" line="412"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Raumfläche&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Matte</source>
         <translation>Matt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="380"/>
+        <location filename="../app/studio/docks.cpp" line="415"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Eine echte Fläche im Foto, die spiegelt: ein glänzender Boden, ein Spiegel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="381"/>
+        <location filename="../app/studio/docks.cpp" line="416"/>
         <source>&lt;b&gt;New models&lt;/b&gt;</source>
         <translation>&lt;b&gt;Neue Modelle&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="385"/>
+        <location filename="../app/studio/docks.cpp" line="420"/>
         <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
         <translation>Die Höhe, die ein Modell erhält, wenn seine Datei keine Einheit nennt (OBJ, PLY, 3DS) oder eine absurde Größe angibt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="444"/>
+        <location filename="../app/studio/docks.cpp" line="479"/>
         <source>No object selected</source>
         <translation>Kein Objekt ausgewählt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="451"/>
+        <location filename="../app/studio/docks.cpp" line="486"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objekt %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="455"/>
+        <location filename="../app/studio/docks.cpp" line="490"/>
         <source>%1 × %2 × %3 m</source>
         <translation>%1 × %2 × %3 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="459"/>
+        <location filename="../app/studio/docks.cpp" line="494"/>
         <source>– (the scene is being prepared)</source>
         <translation>– (die Szene wird vorbereitet)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="503"/>
+        <location filename="../app/studio/docks.cpp" line="538"/>
         <source>Object colour</source>
         <translation>Objektfarbe</translation>
     </message>
@@ -2458,7 +2468,7 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="74"/>
+        <location filename="../app/studio/response_dock.cpp" line="63"/>
         <source>code (up: stops above mid-grey)</source>
         <translation>Code (nach oben: Blendenstufen über Mittelgrau)</translation>
     </message>
@@ -2466,122 +2476,122 @@ Ins Foto ziehen, um es einzusetzen.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="109"/>
+        <location filename="../app/studio/response_dock.cpp" line="124"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Verwendet die übliche sRGB-Kurve, wie in der Liste gewählt.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="111"/>
+        <location filename="../app/studio/response_dock.cpp" line="126"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Verwendet eine gerade (lineare) Kurve, wie in der Liste gewählt: die Werte des Fotos werden direkt als Licht gelesen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="114"/>
+        <location filename="../app/studio/response_dock.cpp" line="129"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Verwendet die Kurve aus der Szenendatei.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>Das Foto enthält bereits Lichtwerte (EXR/HDR): es braucht keine Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="117"/>
+        <location filename="../app/studio/response_dock.cpp" line="132"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Foto zeigt zu wenig, um seine eigene Tonwertkurve zu schätzen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <location filename="../app/studio/response_dock.cpp" line="137"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Beleuchtung des Raums erklärt das Foto mit ihr besser als mit der aus dem Foto geschätzten Kurve.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="126"/>
+        <location filename="../app/studio/response_dock.cpp" line="141"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: das Rauschen des Fotos zeigt keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="129"/>
+        <location filename="../app/studio/response_dock.cpp" line="144"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>Die übliche sRGB-Kurve wurde beibehalten: die Kanten des Fotos zeigen keine andere Tonwertkurve deutlich.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="132"/>
+        <location filename="../app/studio/response_dock.cpp" line="147"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus dem Rauschen des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="135"/>
+        <location filename="../app/studio/response_dock.cpp" line="150"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Verwendet die aus den Kanten des Fotos geschätzte Tonwertkurve; sie weicht von der üblichen sRGB-Kurve (gestrichelt) ab.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="145"/>
+        <location filename="../app/studio/response_dock.cpp" line="160"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Wirken die eingefügten Objekte neben dem Raum zu hell oder zu flach, wählen Sie oben in der Liste sRGB und vergleichen Sie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="148"/>
+        <location filename="../app/studio/response_dock.cpp" line="163"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Wurde das Foto bearbeitet oder stammt es von einem Handy mit starkem Kontrast, kann seine Kurve trotzdem abweichen: wählen Sie oben in der Liste Linear (es liest den Kontrast des Fotos weicher) und vergleichen Sie die Schattierung der Objekte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="158"/>
+        <location filename="../app/studio/response_dock.cpp" line="173"/>
         <source>Curve: %1</source>
         <translation>Kurve: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="161"/>
+        <location filename="../app/studio/response_dock.cpp" line="176"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Aus dem Rauschen des Fotos geschätzt (%1 Stufen) in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="165"/>
+        <location filename="../app/studio/response_dock.cpp" line="180"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Aus %1 Kanten geschätzt in %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="262"/>
+        <location filename="../app/studio/response_dock.cpp" line="277"/>
         <source>Camera Response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="263"/>
+        <location filename="../app/studio/response_dock.cpp" line="278"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Automatisch (aus dem Foto geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="264"/>
+        <location filename="../app/studio/response_dock.cpp" line="279"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="265"/>
+        <location filename="../app/studio/response_dock.cpp" line="280"/>
         <source>Linear</source>
         <translation>Linear</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="266"/>
+        <location filename="../app/studio/response_dock.cpp" line="281"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explizit (aus der Szenendatei)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="267"/>
+        <location filename="../app/studio/response_dock.cpp" line="282"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Wie die Pixelwerte des Fotos auf Licht abgebildet werden (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="268"/>
+        <location filename="../app/studio/response_dock.cpp" line="284"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="269"/>
+        <location filename="../app/studio/response_dock.cpp" line="285"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Die Parameter der Kurve und was die Schätzung gemessen hat</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="294"/>
+        <location filename="../app/studio/response_dock.cpp" line="310"/>
         <source>Preparing the scene...</source>
         <translation>Die Szene wird vorbereitet...</translation>
     </message>
@@ -2601,132 +2611,132 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="37"/>
+        <location filename="../app/studio/docks.cpp" line="72"/>
         <source>sphere</source>
         <translation>Kugel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="38"/>
+        <location filename="../app/studio/docks.cpp" line="73"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="63"/>
+        <location filename="../app/studio/docks.cpp" line="98"/>
         <source>table top or step</source>
         <translation>Tischplatte oder Stufe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="64"/>
+        <location filename="../app/studio/docks.cpp" line="99"/>
         <source>box</source>
         <translation>Quader</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="65"/>
+        <location filename="../app/studio/docks.cpp" line="100"/>
         <source>stairs</source>
         <translation>Treppe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="121"/>
+        <location filename="../app/studio/docks.cpp" line="156"/>
         <source>Scene</source>
         <translation>Szene</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="122"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Item</source>
         <translation>Element</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="122"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Details</source>
         <translation>Details</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="126"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Room</source>
         <translation>Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="129"/>
+        <location filename="../app/studio/docks.cpp" line="164"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="134"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>back wall given</source>
         <translation>Rückwand vorgegeben</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="134"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>estimated</source>
         <translation>geschätzt</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="137"/>
+        <location filename="../app/studio/docks.cpp" line="172"/>
         <source>Lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="177"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="178"/>
         <source>outline on the photo</source>
         <translation>Umriss im Foto</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="178"/>
         <source>rectangle in 3D</source>
         <translation>Rechteck im Raum</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="157"/>
+        <location filename="../app/studio/docks.cpp" line="192"/>
         <source>Shafts</source>
         <translation>Sonnenstrahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="157"/>
+        <location filename="../app/studio/docks.cpp" line="192"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="158"/>
+        <location filename="../app/studio/docks.cpp" line="193"/>
         <source>sunlit patch and its window</source>
         <translation>Sonnenfleck und sein Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="159"/>
+        <location filename="../app/studio/docks.cpp" line="194"/>
         <source>Surfaces</source>
         <translation>Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="159"/>
+        <location filename="../app/studio/docks.cpp" line="194"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="161"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Occluders</source>
         <translation>Verdecker</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="161"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Occluder %1</source>
         <translation>Verdecker %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="162"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 Striche davor, %2 dahinter</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="201"/>
         <source>Objects</source>
         <translation>Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="171"/>
+        <location filename="../app/studio/docks.cpp" line="206"/>
         <source>hidden: %1</source>
         <translation>ausgeblendet: %1</translation>
     </message>
@@ -2735,7 +2745,7 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
         <translation type="vanished">Objekt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="169"/>
+        <location filename="../app/studio/docks.cpp" line="204"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -3045,178 +3055,183 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="321"/>
+        <location filename="../app/studio/viewport.cpp" line="322"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Ziehen Sie ein Objekt oder eine Ecke der Rückwand.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="323"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Klicken Sie um eine Lampe herum; ein Klick auf den ersten Punkt (oder Eingabe) schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="326"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Ziehen Sie nun einen Rahmen um das Fenster, durch das die Sonne scheint.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="326"/>
+        <location filename="../app/studio/viewport.cpp" line="327"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Ziehen Sie einen Rahmen um den Sonnenfleck.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="329"/>
+        <location filename="../app/studio/viewport.cpp" line="330"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Klicken Sie auf den Boden genau unter dem ersten Punkt des Umrisses.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="330"/>
+        <location filename="../app/studio/viewport.cpp" line="331"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Klicken Sie um eine Tischplatte oder Stufe herum; ein Klick auf den ersten Punkt schließt den Umriss.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="332"/>
+        <location filename="../app/studio/viewport.cpp" line="333"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Mit links über das ziehen, was davor ist, mit rechts über das, was dahinter ist; Eingabe beginnt einen weiteren Verdecker.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="338"/>
+        <location filename="../app/studio/viewport.cpp" line="339"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Ziehen Sie entlang einer Kante in %1-Richtung (die Tasten X, Y, Z wählen sie).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="340"/>
+        <location filename="../app/studio/viewport.cpp" line="341"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Ziehen Sie nun entlang einer zweiten Kante in %1-Richtung.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="436"/>
+        <location filename="../app/studio/viewport.cpp" line="437"/>
         <source>Back wall (yours)</source>
         <translation>Rückwand (Ihre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="436"/>
+        <location filename="../app/studio/viewport.cpp" line="437"/>
         <source>Back wall (estimated)</source>
         <translation>Rückwand (geschätzt)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="493"/>
+        <location filename="../app/studio/viewport.cpp" line="525"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="532"/>
+        <location filename="../app/studio/viewport.cpp" line="565"/>
         <source>%1: %2 px</source>
         <translation>%1: %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="565"/>
+        <location filename="../app/studio/viewport.cpp" line="598"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="579"/>
+        <location filename="../app/studio/viewport.cpp" line="612"/>
         <source>Shaft %1</source>
         <translation>Sonnenstrahl %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="594"/>
+        <location filename="../app/studio/viewport.cpp" line="627"/>
         <source>Surface %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="655"/>
+        <location filename="../app/studio/viewport.cpp" line="688"/>
         <source>%1 hidden</source>
         <translation>%1 ausgeblendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="748"/>
+        <location filename="../app/studio/viewport.cpp" line="781"/>
         <source>Preparing the scene…</source>
         <translation>Szene wird vorbereitet …</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="750"/>
+        <location filename="../app/studio/viewport.cpp" line="783"/>
         <source>The scene could not be prepared: %1</source>
         <translation>Die Szene konnte nicht vorbereitet werden: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="754"/>
+        <location filename="../app/studio/viewport.cpp" line="787"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Öffnen Sie eine Szene oder ein Foto (Menü Datei).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="757"/>
+        <location filename="../app/studio/viewport.cpp" line="790"/>
         <source>Before: the photo without objects</source>
         <translation>Vorher: das Foto ohne Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="780"/>
+        <location filename="../app/studio/viewport.cpp" line="822"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Fluchtpunkte: x %1, y %2, z %3 (Konfidenz)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="784"/>
+        <location filename="../app/studio/viewport.cpp" line="826"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Brennweite %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="843"/>
+        <location filename="../app/studio/viewport.cpp" line="837"/>
+        <source>The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and Confidence</source>
+        <translation>Die ganzen Warnungen: der Reiter Protokoll (Ansicht ▸ Protokoll); dieser Text: Ansicht ▸ Fluchtlinien und Konfidenz</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>Before</source>
         <translation>Vorher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="843"/>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>After</source>
         <translation>Nachher</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="979"/>
         <source>the left wall</source>
         <translation>der linken Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="931"/>
+        <location filename="../app/studio/viewport.cpp" line="980"/>
         <source>the right wall</source>
         <translation>der rechten Wand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="932"/>
+        <location filename="../app/studio/viewport.cpp" line="981"/>
         <source>the back wall</source>
         <translation>der Rückwand</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="982"/>
         <source>the wall behind the camera</source>
         <translation>der Wand hinter der Kamera</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="934"/>
+        <location filename="../app/studio/viewport.cpp" line="983"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Mit dem Rücken an %1 (Umschalt gedrückt halten: frei platzieren).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="955"/>
+        <location filename="../app/studio/viewport.cpp" line="1004"/>
         <source>Turned %1°</source>
         <translation>Gedreht auf %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="965"/>
+        <location filename="../app/studio/viewport.cpp" line="1014"/>
         <source>Height %1 m</source>
         <translation>Höhe %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="998"/>
+        <location filename="../app/studio/viewport.cpp" line="1047"/>
         <source>An outline needs at least three points.</source>
         <translation>Ein Umriss braucht mindestens drei Punkte.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="923"/>
-        <location filename="../app/studio/viewport.cpp" line="1321"/>
+        <location filename="../app/studio/viewport.cpp" line="972"/>
+        <location filename="../app/studio/viewport.cpp" line="1370"/>
         <source>Cannot place the object here: %1</source>
         <translation>Das Objekt kann hier nicht stehen: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1254"/>
+        <location filename="../app/studio/viewport.cpp" line="1303"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Jede Linie muss mindestens zwei Pixel lang sein.</translation>
     </message>
@@ -3224,53 +3239,53 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="55"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="77"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="81"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="68"/>
+        <location filename="../app/studio/main.cpp" line="85"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="72"/>
+        <location filename="../app/studio/main.cpp" line="89"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>Stattdessen: Render-Sekunden des angezeigten Bildes, auf die gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>Show the Log dock across the bottom of the window.</source>
         <translation>Das Protokoll über die ganze Breite unten im Fenster zeigen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="96"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="82"/>
+        <location filename="../app/studio/main.cpp" line="99"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
+        <location filename="../app/studio/main.cpp" line="118"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="108"/>
-        <location filename="../app/studio/main.cpp" line="116"/>
+        <location filename="../app/studio/main.cpp" line="125"/>
+        <location filename="../app/studio/main.cpp" line="133"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

@@ -326,607 +326,607 @@
 <context>
     <name>inlay::studio::EngineText</name>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <location filename="../app/studio/engine_text.cpp" line="33"/>
         <source>empty file</source>
         <translation>fichier vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="28"/>
+        <location filename="../app/studio/engine_text.cpp" line="34"/>
         <source>cannot open for reading</source>
         <translation>impossible de l&apos;ouvrir en lecture</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <location filename="../app/studio/engine_text.cpp" line="35"/>
         <source>read failed</source>
         <translation>la lecture a échoué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="30"/>
+        <location filename="../app/studio/engine_text.cpp" line="36"/>
         <source>no triangles</source>
         <translation>aucun triangle</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="31"/>
+        <location filename="../app/studio/engine_text.cpp" line="37"/>
         <source>import failed: %1</source>
         <translation>l&apos;import a échoué : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="32"/>
+        <location filename="../app/studio/engine_text.cpp" line="38"/>
         <source>non-finite coordinate &apos;%1&apos;</source>
         <translation>coordonnée non finie « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="33"/>
+        <location filename="../app/studio/engine_text.cpp" line="39"/>
         <source>non-finite coordinate</source>
         <translation>coordonnée non finie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="34"/>
+        <location filename="../app/studio/engine_text.cpp" line="40"/>
         <source>malformed number &apos;%1&apos;</source>
         <translation>nombre mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="35"/>
+        <location filename="../app/studio/engine_text.cpp" line="41"/>
         <source>malformed face index &apos;%1&apos;</source>
         <translation>indice de face mal formé « %1 »</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="36"/>
+        <location filename="../app/studio/engine_text.cpp" line="42"/>
         <source>face corner without a vertex index</source>
         <translation>coin de face sans indice de sommet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="37"/>
+        <location filename="../app/studio/engine_text.cpp" line="43"/>
         <source>face index 0 (OBJ indices start at 1)</source>
         <translation>indice de face 0 (les indices OBJ commencent à 1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="38"/>
+        <location filename="../app/studio/engine_text.cpp" line="44"/>
         <source>a face needs at least 3 vertices</source>
         <translation>une face demande au moins 3 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="39"/>
+        <location filename="../app/studio/engine_text.cpp" line="45"/>
         <source>more than %1 triangles</source>
         <translation>plus de %1 triangles</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="40"/>
+        <location filename="../app/studio/engine_text.cpp" line="46"/>
         <source>more than %1 vertices</source>
         <translation>plus de %1 sommets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="41"/>
+        <location filename="../app/studio/engine_text.cpp" line="47"/>
         <source>%1 vertices exceed the limit of %2</source>
         <translation>%1 sommets dépassent la limite de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="42"/>
+        <location filename="../app/studio/engine_text.cpp" line="48"/>
         <source>&apos;%1&apos; needs %2 numbers</source>
         <translation>« %1 » demande %2 nombres</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="43"/>
+        <location filename="../app/studio/engine_text.cpp" line="49"/>
         <source>not a PLY file (missing &apos;ply&apos; magic)</source>
         <translation>pas un fichier PLY (la signature « ply » manque)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="44"/>
+        <location filename="../app/studio/engine_text.cpp" line="50"/>
         <source>not a GLB file</source>
         <translation>pas un fichier GLB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="45"/>
+        <location filename="../app/studio/engine_text.cpp" line="51"/>
         <source>invalid glTF JSON</source>
         <translation>JSON glTF invalide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="46"/>
+        <location filename="../app/studio/engine_text.cpp" line="52"/>
         <source>buffer file not found: %1</source>
         <translation>fichier de tampon introuvable : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="48"/>
+        <location filename="../app/studio/engine_text.cpp" line="54"/>
         <source>none given; the objects are lit by the room&apos;s gathered light only</source>
         <translation>aucune indiquée ; les objets ne sont éclairés que par la lumière réfléchie de la pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="50"/>
+        <location filename="../app/studio/engine_text.cpp" line="56"/>
         <source>ignored, the photo is already linear (EXR/HDR)</source>
         <translation>ignorée, la photo est déjà linéaire (EXR/HDR)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="51"/>
+        <location filename="../app/studio/engine_text.cpp" line="57"/>
         <source>the estimated back wall is unusable (%1); using a 5 x 5.5 m room: give layout.back_wall_px</source>
         <translation>le mur du fond estimé est inutilisable (%1) ; une pièce de 5 x 5,5 m est utilisée : indiquez layout.back_wall_px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="54"/>
+        <location filename="../app/studio/engine_text.cpp" line="60"/>
         <source>the photo shows no clear room structure; the camera is a fallback (prior focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale a priori, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="58"/>
+        <location filename="../app/studio/engine_text.cpp" line="64"/>
         <source>the photo shows no clear room structure; the camera is a fallback (default focal length, upright): give camera.vanishing_points_px for a reliable result</source>
         <translation>la photo ne montre pas nettement la structure de la pièce ; la caméra est une solution de repli (focale par défaut, droite) : indiquez camera.vanishing_points_px pour un résultat fiable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="62"/>
+        <location filename="../app/studio/engine_text.cpp" line="68"/>
         <source>strength kept as estimated: %1</source>
         <translation>intensité gardée telle qu&apos;estimée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="63"/>
+        <location filename="../app/studio/engine_text.cpp" line="69"/>
         <source>the window the sun comes through is out of view; its sky is a light of %1 x %2 m on the %3 (where the beam came from), its intensity fitted (give source_box_px, or outline the window as a light, to choose)</source>
         <translation>la fenêtre par laquelle entre le soleil est hors champ ; son ciel est une lumière de %1 x %2 m sur %3 (d&apos;où vient le faisceau), d&apos;intensité ajustée (indiquez source_box_px, ou détourez la fenêtre comme lumière, pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="67"/>
+        <location filename="../app/studio/engine_text.cpp" line="73"/>
         <source>%1&apos;s matte shows the floor under the top at %2 of %3 points, so it is a slab %4 m thick (give thickness_m to choose; 0: solid)</source>
         <translation>le masque de %1 montre le sol sous le plateau en %2 points sur %3 : c&apos;est une plaque de %4 m d&apos;épaisseur (indiquez thickness_m pour choisir ; 0 : plein)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="71"/>
+        <location filename="../app/studio/engine_text.cpp" line="77"/>
         <source>gathered light still changed by %1% in the last of %2 passes (the walls the camera does not see are uncertain)</source>
         <translation>la lumière réfléchie a encore changé de %1 % à la dernière des %2 passes (les murs que la caméra ne voit pas sont incertains)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="74"/>
+        <location filename="../app/studio/engine_text.cpp" line="80"/>
         <source>lights %1 are out of view: they share one radiance (the photo shows only their sum)</source>
         <translation>les lumières %1 sont hors champ : elles partagent une même radiance (la photo ne montre que leur somme)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="77"/>
+        <location filename="../app/studio/engine_text.cpp" line="83"/>
         <source>the ceiling the camera does not see: the light fit&apos;s model of the room gives it %1 grey, not the seen walls&apos; mean (%2; a sunlit patch lights the ceiling straight on, and the photo does not show its albedo)</source>
         <translation>le plafond que la caméra ne voit pas : le modèle de la pièce de l&apos;ajustement de la lumière lui donne un gris de %1, et non la moyenne des murs vus (%2 ; une tache de soleil éclaire le plafond de face, et la photo ne montre pas son albédo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="81"/>
+        <location filename="../app/studio/engine_text.cpp" line="87"/>
         <source>outside the room; moved %1 m to fit inside it</source>
         <translation>hors de la pièce ; déplacée de %1 m pour y tenir</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="82"/>
+        <location filename="../app/studio/engine_text.cpp" line="88"/>
         <source>larger than the room in every direction; its position is kept</source>
         <translation>plus grande que la pièce dans toutes les directions ; sa position est gardée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="84"/>
+        <location filename="../app/studio/engine_text.cpp" line="90"/>
         <source>%1 lights none of the room the photo shows: its intensity stays at its start</source>
         <translation>%1 n&apos;éclaire rien de la pièce que montre la photo : son intensité reste à sa valeur de départ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="86"/>
+        <location filename="../app/studio/engine_text.cpp" line="92"/>
         <source>the photo&apos;s direct light is black: the lights are fitted to darkness</source>
         <translation>la lumière directe de la photo est noire : les lumières sont ajustées sur l&apos;obscurité</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="88"/>
+        <location filename="../app/studio/engine_text.cpp" line="94"/>
         <source>light refinement failed (%1): the start is kept</source>
         <translation>l&apos;affinage des lumières a échoué (%1) : le départ est gardé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="91"/>
+        <location filename="../app/studio/engine_text.cpp" line="97"/>
         <source>not converged: stopped by %1 after %2 iterations (%3 s): primal residual %4, dual %5, tolerance %6</source>
         <translation>non convergée : arrêtée par %1 après %2 itérations (%3 s) : résidu primal %4, dual %5, tolérance %6</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="94"/>
+        <location filename="../app/studio/engine_text.cpp" line="100"/>
         <source>the iteration cap</source>
         <translation>la limite d&apos;itérations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="95"/>
+        <location filename="../app/studio/engine_text.cpp" line="101"/>
         <source>non-finite residuals</source>
         <translation>des résidus non finis</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="96"/>
+        <location filename="../app/studio/engine_text.cpp" line="102"/>
         <source>cancellation</source>
         <translation>l&apos;annulation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="100"/>
+        <location filename="../app/studio/engine_text.cpp" line="106"/>
         <source>noise level</source>
         <translation>niveau de bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="101"/>
+        <location filename="../app/studio/engine_text.cpp" line="107"/>
         <source>edge</source>
         <translation>contours</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="102"/>
+        <location filename="../app/studio/engine_text.cpp" line="108"/>
         <source>the fitted %1 lowers the %2 residual only from %3 to %4</source>
         <translation>la courbe ajustée %1 ne réduit le résidu (%2) que de %3 à %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="104"/>
+        <location filename="../app/studio/engine_text.cpp" line="110"/>
         <source>the %1 residual of sRGB, %2, is within what photos read rightly as sRGB show (below %3), so the fitted %4 is not trusted</source>
         <translation>le résidu (%1) de sRGB, %2, reste dans ce que montrent les photos lues à juste titre en sRGB (moins de %3), donc la courbe ajustée %4 n&apos;est pas retenue</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="107"/>
+        <location filename="../app/studio/engine_text.cpp" line="113"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code level in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveau de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="111"/>
+        <location filename="../app/studio/engine_text.cpp" line="117"/>
         <source>the fitted %1 spans %2 stops between codes 128 and 254 (sRGB 2.2, at most %3 trusted), but the photo&apos;s noise was measured at only %4 code levels in that half (%5 needed), so the shoulder is an extrapolation</source>
         <translation>la courbe ajustée %1 couvre %2 diaphragmes entre les codes 128 et 254 (sRGB 2,2, au plus %3 crédibles), mais le bruit de la photo n&apos;a été mesuré qu&apos;à %4 niveaux de code dans cette moitié (%5 nécessaires), donc l&apos;épaule est une extrapolation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="115"/>
+        <location filename="../app/studio/engine_text.cpp" line="121"/>
         <source>too little evidence for a curve other than sRGB (%1)</source>
         <translation>trop peu d&apos;indices pour une autre courbe que sRGB (%1)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="117"/>
+        <location filename="../app/studio/engine_text.cpp" line="123"/>
         <source>an implausible curve was refused (%1); using sRGB</source>
         <translation>une courbe invraisemblable a été refusée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="119"/>
+        <location filename="../app/studio/engine_text.cpp" line="125"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2, with sRGB %3</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1, %3 avec sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="121"/>
+        <location filename="../app/studio/engine_text.cpp" line="127"/>
         <source>the estimated curve was not used (%1); using sRGB</source>
         <translation>la courbe estimée n&apos;a pas été utilisée (%1) ; sRGB est utilisée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="122"/>
+        <location filename="../app/studio/engine_text.cpp" line="128"/>
         <source>the fitted %1 lies at the family&apos;s bound (%2): the camera&apos;s curve may be stronger than the family holds</source>
         <translation>la courbe ajustée %1 est à la limite de sa famille (%2) : la courbe de l&apos;appareil peut être plus forte que ce que la famille représente</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="125"/>
+        <location filename="../app/studio/engine_text.cpp" line="131"/>
         <source>%1; using sRGB (give camera.response to choose)</source>
         <translation>%1 ; sRGB est utilisée (indiquez camera.response pour choisir)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="126"/>
+        <location filename="../app/studio/engine_text.cpp" line="132"/>
         <source>the photo is empty</source>
         <translation>la photo est vide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="127"/>
+        <location filename="../app/studio/engine_text.cpp" line="133"/>
         <source>most of the photo is clipped to black or white</source>
         <translation>la plus grande partie de la photo est écrêtée en noir ou en blanc</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="128"/>
+        <location filename="../app/studio/engine_text.cpp" line="134"/>
         <source>the photo is nearly one flat colour</source>
         <translation>la photo est presque d&apos;une seule couleur unie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="129"/>
+        <location filename="../app/studio/engine_text.cpp" line="135"/>
         <source>the photo is nearly binary (%1 grey levels in use)</source>
         <translation>la photo est presque binaire (%1 niveaux de gris utilisés)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="130"/>
+        <location filename="../app/studio/engine_text.cpp" line="136"/>
         <source>too few clean edges between flat regions (%1 of %2 needed)</source>
         <translation>trop peu de contours nets entre des zones unies (%1 sur %2 nécessaires)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="132"/>
+        <location filename="../app/studio/engine_text.cpp" line="138"/>
         <source>the edges cover only codes %1 to %2</source>
         <translation>les contours ne couvrent que les codes %1 à %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="133"/>
+        <location filename="../app/studio/engine_text.cpp" line="139"/>
         <source>cancelled</source>
         <translation>annulée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="134"/>
+        <location filename="../app/studio/engine_text.cpp" line="140"/>
         <source>too few flat regions to measure the noise (%1 flat 8 x 8 blocks)</source>
         <translation>trop peu de zones unies pour mesurer le bruit (%1 blocs unis de 8 x 8)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="136"/>
+        <location filename="../app/studio/engine_text.cpp" line="142"/>
         <source>the flat regions cover too few codes to measure the noise against them</source>
         <translation>les zones unies couvrent trop peu de codes pour y mesurer le bruit</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="138"/>
+        <location filename="../app/studio/engine_text.cpp" line="144"/>
         <source>the photo shows no measurable noise</source>
         <translation>la photo ne montre aucun bruit mesurable</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="149"/>
+        <location filename="../app/studio/engine_text.cpp" line="155"/>
         <source>none marked</source>
         <translation>aucun marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="150"/>
+        <location filename="../app/studio/engine_text.cpp" line="156"/>
         <source>no sun marked</source>
         <translation>aucun soleil marqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="151"/>
+        <location filename="../app/studio/engine_text.cpp" line="157"/>
         <source>none inserted</source>
         <translation>aucun inséré</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="152"/>
+        <location filename="../app/studio/engine_text.cpp" line="158"/>
         <source>the lights are kept as estimated (initial lights asked for)</source>
         <translation>les lumières restent telles qu&apos;estimées (lumières initiales demandées)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="154"/>
+        <location filename="../app/studio/engine_text.cpp" line="160"/>
         <source>turned off</source>
         <translation>désactivé</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="155"/>
+        <location filename="../app/studio/engine_text.cpp" line="161"/>
         <source>no light marked</source>
         <translation>aucune lumière marquée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="156"/>
+        <location filename="../app/studio/engine_text.cpp" line="162"/>
         <source>every light locked or given (&quot;refine&quot;: false)</source>
         <translation>chaque lumière verrouillée ou donnée (« refine » : false)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="157"/>
+        <location filename="../app/studio/engine_text.cpp" line="163"/>
         <source>every light locked</source>
         <translation>chaque lumière verrouillée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="158"/>
+        <location filename="../app/studio/engine_text.cpp" line="164"/>
         <source>the working copy is the photo</source>
         <translation>la copie de travail est la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="159"/>
+        <location filename="../app/studio/engine_text.cpp" line="165"/>
         <source>the lights were not refined</source>
         <translation>les lumières n&apos;ont pas été affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="160"/>
+        <location filename="../app/studio/engine_text.cpp" line="166"/>
         <source>no light moved</source>
         <translation>aucune lumière déplacée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="161"/>
+        <location filename="../app/studio/engine_text.cpp" line="167"/>
         <source>lights moved by at most %1 % of their size (under %2 %): the first estimate&apos;s lights are kept</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille (moins de %2 %) : les lumières de la première estimation sont conservées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="164"/>
+        <location filename="../app/studio/engine_text.cpp" line="170"/>
         <source>camera.vignetting is &quot;none&quot; (the default)</source>
         <translation>camera.vignetting vaut &quot;none&quot; (par défaut)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="166"/>
+        <location filename="../app/studio/engine_text.cpp" line="172"/>
         <source>%1 x %2 px</source>
         <translation>%1 x %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="167"/>
+        <location filename="../app/studio/engine_text.cpp" line="173"/>
         <source>linear photo</source>
         <translation>photo linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="168"/>
+        <location filename="../app/studio/engine_text.cpp" line="174"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="169"/>
+        <location filename="../app/studio/engine_text.cpp" line="175"/>
         <source>the photo area-averaged</source>
         <translation>la photo réduite par moyenne de surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="170"/>
+        <location filename="../app/studio/engine_text.cpp" line="176"/>
         <source>the photo&apos;s own size</source>
         <translation>la taille propre de la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="171"/>
+        <location filename="../app/studio/engine_text.cpp" line="177"/>
         <source>estimated from the photo</source>
         <translation>estimée d&apos;après la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="172"/>
+        <location filename="../app/studio/engine_text.cpp" line="178"/>
         <source>the file&apos;s vanishing points and back wall</source>
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="174"/>
+        <location filename="../app/studio/engine_text.cpp" line="180"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>v %1 applied</source>
         <translation>v %1 appliqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>le résidu de l&apos;ajustement des lumières montre %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>the light fit run again</source>
         <translation>l&apos;ajustement des lumières refait</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="205"/>
+        <location filename="../app/studio/engine_text.cpp" line="211"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="208"/>
+        <location filename="../app/studio/engine_text.cpp" line="214"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="209"/>
+        <location filename="../app/studio/engine_text.cpp" line="215"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="215"/>
+        <location filename="../app/studio/engine_text.cpp" line="221"/>
         <source>the curve kept: %1</source>
         <translation>courbe conservée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="216"/>
+        <location filename="../app/studio/engine_text.cpp" line="222"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB conservé : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1</translation>
     </message>
@@ -936,97 +936,107 @@
         <translation>toe_shoulder (exposant %1, pied %2, épaule %3)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="27"/>
+        <source>vanishing point %1: only %2 supporting line(s); it rests on the other two</source>
+        <translation>point de fuite %1 : seulement %2 ligne(s) d’appui ; il repose sur les deux autres</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="29"/>
+        <source>vanishing point %1: its lines are nearly parallel in the photo, so its distance is uncertain</source>
+        <translation>point de fuite %1 : ses lignes sont presque parallèles sur la photo, sa distance est donc incertaine</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>%1 avec sRGB ; sur des copies de %2 x %3 px %4 contre %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="220"/>
+        <location filename="../app/studio/engine_text.cpp" line="226"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>%1 avec sRGB ; pas de comparaison rapide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="221"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>log ratio %1 beyond %2</source>
         <translation>rapport log %1 au-delà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>log ratio %1 within %2</source>
         <translation>rapport log %1 en deçà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="227"/>
+        <location filename="../app/studio/engine_text.cpp" line="233"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="228"/>
+        <location filename="../app/studio/engine_text.cpp" line="234"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="241"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="236"/>
+        <location filename="../app/studio/engine_text.cpp" line="242"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="237"/>
+        <location filename="../app/studio/engine_text.cpp" line="243"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="238"/>
+        <location filename="../app/studio/engine_text.cpp" line="244"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="239"/>
+        <location filename="../app/studio/engine_text.cpp" line="245"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="240"/>
+        <location filename="../app/studio/engine_text.cpp" line="246"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="303"/>
+        <location filename="../app/studio/engine_text.cpp" line="309"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -1052,47 +1062,47 @@
 <context>
     <name>inlay::studio::LayersDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="219"/>
+        <location filename="../app/studio/docks.cpp" line="254"/>
         <source>Layers</source>
         <translation>Calques</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Composite</source>
         <translation>Composition</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Photo</source>
         <translation>Photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="220"/>
+        <location filename="../app/studio/docks.cpp" line="255"/>
         <source>Albedo</source>
         <translation>Albédo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>Direct light</source>
         <translation>Lumière directe</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>With objects</source>
         <translation>Avec les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="221"/>
+        <location filename="../app/studio/docks.cpp" line="256"/>
         <source>Without objects</source>
         <translation>Sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="222"/>
+        <location filename="../app/studio/docks.cpp" line="257"/>
         <source>Mask</source>
         <translation>Masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="222"/>
+        <location filename="../app/studio/docks.cpp" line="257"/>
         <source>Difference</source>
         <translation>Différence</translation>
     </message>
@@ -2226,231 +2236,231 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::PropertiesDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="351"/>
+        <location filename="../app/studio/docks.cpp" line="386"/>
         <source>Properties</source>
         <translation>Propriétés</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="356"/>
+        <location filename="../app/studio/docks.cpp" line="391"/>
         <source>Name:</source>
         <translation>Nom :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="357"/>
+        <location filename="../app/studio/docks.cpp" line="392"/>
         <source>Render:</source>
         <translation>Rendu :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="358"/>
+        <location filename="../app/studio/docks.cpp" line="393"/>
         <source>Shown</source>
         <translation>Affiché</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="359"/>
+        <location filename="../app/studio/docks.cpp" line="394"/>
         <source>A hidden object stays in the scene but is not rendered</source>
         <translation>Un objet masqué reste dans la scène mais n&apos;est pas rendu</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="360"/>
+        <location filename="../app/studio/docks.cpp" line="395"/>
         <source>Size (W × D × H):</source>
         <translation>Taille (L × P × H) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="361"/>
+        <location filename="../app/studio/docks.cpp" line="396"/>
         <source>Width × depth × height in metres, as placed (before its turn)</source>
         <translation>Largeur × profondeur × hauteur en mètres, telle que placée (avant sa rotation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="363"/>
+        <location filename="../app/studio/docks.cpp" line="398"/>
         <source>The photo pixel the centre of the object&apos;s base stands on</source>
         <translation>Le pixel de la photo sur lequel repose le centre de la base de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="368"/>
+        <location filename="../app/studio/docks.cpp" line="403"/>
         <source>Surface:</source>
         <translation>Surface :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="369"/>
+        <location filename="../app/studio/docks.cpp" line="404"/>
         <source>Finish:</source>
         <translation>Finition :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="370"/>
+        <location filename="../app/studio/docks.cpp" line="405"/>
         <source>Roughness:</source>
         <translation>Rugosité :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="371"/>
-        <location filename="../app/studio/docks.cpp" line="383"/>
+        <location filename="../app/studio/docks.cpp" line="406"/>
+        <location filename="../app/studio/docks.cpp" line="418"/>
         <source> m</source>
         <translation> m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="372"/>
+        <location filename="../app/studio/docks.cpp" line="407"/>
         <source> °</source>
         <translation> °</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
         <source>Diffuse</source>
         <translation>Diffus</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Glossy</source>
         <translation>Brillant</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Mirror</source>
         <translation>Miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="373"/>
+        <location filename="../app/studio/docks.cpp" line="408"/>
         <source>Metal</source>
         <translation>Métal</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Glass</source>
         <translation>Verre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Frosted glass</source>
         <translation>Verre dépoli</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>Emissive</source>
         <translation>Émissif</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="374"/>
+        <location filename="../app/studio/docks.cpp" line="409"/>
         <source>From the file</source>
         <translation>Celui du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="376"/>
+        <location filename="../app/studio/docks.cpp" line="411"/>
         <source>Reflectance of the object&apos;s surface</source>
         <translation>Réflectance de la surface de l&apos;objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="362"/>
+        <location filename="../app/studio/docks.cpp" line="397"/>
         <source>Base (px):</source>
         <translation>Base (px) :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="48"/>
+        <location filename="../app/studio/docks.cpp" line="83"/>
         <source>Floor</source>
         <translation>Sol</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="49"/>
+        <location filename="../app/studio/docks.cpp" line="84"/>
         <source>Ceiling</source>
         <translation>Plafond</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="50"/>
+        <location filename="../app/studio/docks.cpp" line="85"/>
         <source>Left wall</source>
         <translation>Mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="51"/>
+        <location filename="../app/studio/docks.cpp" line="86"/>
         <source>Right wall</source>
         <translation>Mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="52"/>
+        <location filename="../app/studio/docks.cpp" line="87"/>
         <source>Back wall</source>
         <translation>Mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="53"/>
+        <location filename="../app/studio/docks.cpp" line="88"/>
         <source>Wall behind the camera</source>
         <translation>Mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="57"/>
+        <location filename="../app/studio/docks.cpp" line="92"/>
         <source>Surface %1, top</source>
         <translation>Surface %1, dessus</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="58"/>
+        <location filename="../app/studio/docks.cpp" line="93"/>
         <source>Surface %1, sides</source>
         <translation>Surface %1, côtés</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="364"/>
-        <location filename="../app/studio/docks.cpp" line="382"/>
+        <location filename="../app/studio/docks.cpp" line="399"/>
+        <location filename="../app/studio/docks.cpp" line="417"/>
         <source>Height:</source>
         <translation>Hauteur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="365"/>
+        <location filename="../app/studio/docks.cpp" line="400"/>
         <source>Turn:</source>
         <translation>Rotation :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="366"/>
+        <location filename="../app/studio/docks.cpp" line="401"/>
         <source>Material:</source>
         <translation>Matériau :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="367"/>
+        <location filename="../app/studio/docks.cpp" line="402"/>
         <source>Colour:</source>
         <translation>Couleur :</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="377"/>
+        <location filename="../app/studio/docks.cpp" line="412"/>
         <source>&lt;b&gt;Room surface&lt;/b&gt;</source>
         <translation>&lt;b&gt;Surface de la pièce&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="378"/>
+        <location filename="../app/studio/docks.cpp" line="413"/>
         <source>Matte</source>
         <translation>Mat</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="380"/>
+        <location filename="../app/studio/docks.cpp" line="415"/>
         <source>A real surface of the photo that reflects: a glossy floor, a mirror</source>
         <translation>Une vraie surface de la photo qui réfléchit : un sol brillant, un miroir</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="381"/>
+        <location filename="../app/studio/docks.cpp" line="416"/>
         <source>&lt;b&gt;New models&lt;/b&gt;</source>
         <translation>&lt;b&gt;Nouveaux modèles&lt;/b&gt;</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="385"/>
+        <location filename="../app/studio/docks.cpp" line="420"/>
         <source>The height a model gets when its file does not state its unit (OBJ, PLY, 3DS) or states an absurd size</source>
         <translation>La hauteur que reçoit un modèle quand son fichier n&apos;indique pas d&apos;unité (OBJ, PLY, 3DS) ou une taille absurde</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="444"/>
+        <location filename="../app/studio/docks.cpp" line="479"/>
         <source>No object selected</source>
         <translation>Aucun objet sélectionné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="451"/>
+        <location filename="../app/studio/docks.cpp" line="486"/>
         <source>&lt;b&gt;Object %1&lt;/b&gt; (%2)</source>
         <translation>&lt;b&gt;Objet %1&lt;/b&gt; (%2)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="455"/>
+        <location filename="../app/studio/docks.cpp" line="490"/>
         <source>%1 × %2 × %3 m</source>
         <translation>%1 × %2 × %3 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="459"/>
+        <location filename="../app/studio/docks.cpp" line="494"/>
         <source>– (the scene is being prepared)</source>
         <translation>– (la scène est en préparation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="503"/>
+        <location filename="../app/studio/docks.cpp" line="538"/>
         <source>Object colour</source>
         <translation>Couleur de l&apos;objet</translation>
     </message>
@@ -2458,7 +2468,7 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseCurveView</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="74"/>
+        <location filename="../app/studio/response_dock.cpp" line="63"/>
         <source>code (up: stops above mid-grey)</source>
         <translation>code (en hauteur : diaphragmes au-dessus du gris moyen)</translation>
     </message>
@@ -2466,122 +2476,122 @@ Faites-le glisser dans la photo.</translation>
 <context>
     <name>inlay::studio::ResponseDock</name>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="109"/>
+        <location filename="../app/studio/response_dock.cpp" line="124"/>
         <source>Uses the standard sRGB curve, as chosen in the list.</source>
         <translation>Utilise la courbe sRGB standard, choisie dans la liste.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="111"/>
+        <location filename="../app/studio/response_dock.cpp" line="126"/>
         <source>Uses a straight (linear) curve, as chosen in the list: the photo&apos;s values are read as light directly.</source>
         <translation>Utilise une courbe droite (linéaire), choisie dans la liste : les valeurs de la photo sont lues directement comme de la lumière.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="114"/>
+        <location filename="../app/studio/response_dock.cpp" line="129"/>
         <source>Uses the curve given in the scene file.</source>
         <translation>Utilise la courbe indiquée dans le fichier de scène.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="107"/>
+        <location filename="../app/studio/response_dock.cpp" line="122"/>
         <source>The photo already holds light values (EXR/HDR): it needs no curve.</source>
         <translation>La photo contient déjà des valeurs de lumière (EXR/HDR) : elle n&apos;a besoin d&apos;aucune courbe.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="117"/>
+        <location filename="../app/studio/response_dock.cpp" line="132"/>
         <source>Kept the standard sRGB curve: the photo does not show enough to estimate its own tone curve.</source>
         <translation>La courbe sRGB standard est conservée : la photo n&apos;en montre pas assez pour estimer sa propre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="122"/>
+        <location filename="../app/studio/response_dock.cpp" line="137"/>
         <source>Kept the standard sRGB curve: the room&apos;s lighting explains the photo better with it than with the curve estimated from the photo.</source>
         <translation>La courbe sRGB standard est conservée : l&apos;éclairage de la pièce explique mieux la photo avec elle qu&apos;avec la courbe estimée à partir de la photo.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="126"/>
+        <location filename="../app/studio/response_dock.cpp" line="141"/>
         <source>Kept the standard sRGB curve: the photo&apos;s noise does not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : le bruit de la photo ne montre pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="129"/>
+        <location filename="../app/studio/response_dock.cpp" line="144"/>
         <source>Kept the standard sRGB curve: the photo&apos;s edges do not show a different tone curve clearly.</source>
         <translation>La courbe sRGB standard est conservée : les contours de la photo ne montrent pas clairement une autre courbe de tons.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="132"/>
+        <location filename="../app/studio/response_dock.cpp" line="147"/>
         <source>Uses the tone curve estimated from the photo&apos;s noise; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après le bruit de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="135"/>
+        <location filename="../app/studio/response_dock.cpp" line="150"/>
         <source>Uses the tone curve estimated from the photo&apos;s edges; it differs from the standard sRGB curve (dashed).</source>
         <translation>Utilise la courbe de tons estimée d&apos;après les contours de la photo ; elle diffère de la courbe sRGB standard (en pointillés).</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="145"/>
+        <location filename="../app/studio/response_dock.cpp" line="160"/>
         <source>If the inserted objects look too bright or too flat against the room, choose sRGB in the list above and compare.</source>
         <translation>Si les objets insérés paraissent trop clairs ou trop plats par rapport à la pièce, choisissez sRGB dans la liste ci-dessus et comparez.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="148"/>
+        <location filename="../app/studio/response_dock.cpp" line="163"/>
         <source>If the photo was edited, or comes from a phone with strong contrast, its curve may still differ: choose Linear in the list above (it reads the photo&apos;s contrast as softer) and compare the objects&apos; shading.</source>
         <translation>Si la photo a été retouchée, ou vient d&apos;un téléphone au contraste marqué, sa courbe peut tout de même différer : choisissez Linéaire dans la liste ci-dessus (elle lit le contraste de la photo plus doux) et comparez l&apos;ombrage des objets.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="158"/>
+        <location filename="../app/studio/response_dock.cpp" line="173"/>
         <source>Curve: %1</source>
         <translation>Courbe : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="161"/>
+        <location filename="../app/studio/response_dock.cpp" line="176"/>
         <source>Estimated from the photo&apos;s noise (%1 levels) in %2 ms.</source>
         <translation>Estimée d&apos;après le bruit de la photo (%1 niveaux) en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="165"/>
+        <location filename="../app/studio/response_dock.cpp" line="180"/>
         <source>Estimated from %1 edges in %2 ms.</source>
         <translation>Estimée d&apos;après %1 contours en %2 ms.</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="262"/>
+        <location filename="../app/studio/response_dock.cpp" line="277"/>
         <source>Camera Response</source>
         <translation>Réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="263"/>
+        <location filename="../app/studio/response_dock.cpp" line="278"/>
         <source>Auto (estimated from the photo)</source>
         <translation>Auto (estimée d&apos;après la photo)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="264"/>
+        <location filename="../app/studio/response_dock.cpp" line="279"/>
         <source>sRGB</source>
         <translation>sRGB</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="265"/>
+        <location filename="../app/studio/response_dock.cpp" line="280"/>
         <source>Linear</source>
         <translation>Linéaire</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="266"/>
+        <location filename="../app/studio/response_dock.cpp" line="281"/>
         <source>Explicit (from the scene file)</source>
         <translation>Explicite (du fichier de scène)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="267"/>
+        <location filename="../app/studio/response_dock.cpp" line="282"/>
         <source>How the photo&apos;s pixel values map to light (camera.response)</source>
         <translation>Comment les valeurs des pixels de la photo correspondent à la lumière (camera.response)</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="268"/>
+        <location filename="../app/studio/response_dock.cpp" line="284"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="269"/>
+        <location filename="../app/studio/response_dock.cpp" line="285"/>
         <source>The curve&apos;s parameters and what the estimate measured</source>
         <translation>Les paramètres de la courbe et ce que l&apos;estimation a mesuré</translation>
     </message>
     <message>
-        <location filename="../app/studio/response_dock.cpp" line="294"/>
+        <location filename="../app/studio/response_dock.cpp" line="310"/>
         <source>Preparing the scene...</source>
         <translation>Préparation de la scène...</translation>
     </message>
@@ -2601,132 +2611,132 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::SceneTreeDock</name>
     <message>
-        <location filename="../app/studio/docks.cpp" line="37"/>
+        <location filename="../app/studio/docks.cpp" line="72"/>
         <source>sphere</source>
         <translation>sphère</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="38"/>
+        <location filename="../app/studio/docks.cpp" line="73"/>
         <source>cube</source>
         <translation>cube</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="63"/>
+        <location filename="../app/studio/docks.cpp" line="98"/>
         <source>table top or step</source>
         <translation>dessus de table ou marche</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="64"/>
+        <location filename="../app/studio/docks.cpp" line="99"/>
         <source>box</source>
         <translation>boîte</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="65"/>
+        <location filename="../app/studio/docks.cpp" line="100"/>
         <source>stairs</source>
         <translation>escalier</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="121"/>
+        <location filename="../app/studio/docks.cpp" line="156"/>
         <source>Scene</source>
         <translation>Scène</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="122"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Item</source>
         <translation>Élément</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="122"/>
+        <location filename="../app/studio/docks.cpp" line="157"/>
         <source>Details</source>
         <translation>Détails</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="126"/>
+        <location filename="../app/studio/docks.cpp" line="161"/>
         <source>Room</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="129"/>
+        <location filename="../app/studio/docks.cpp" line="164"/>
         <source>%1 × %2 m, %3 m high</source>
         <translation>%1 × %2 m, %3 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="134"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>back wall given</source>
         <translation>mur du fond donné</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="134"/>
+        <location filename="../app/studio/docks.cpp" line="169"/>
         <source>estimated</source>
         <translation>estimée</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="137"/>
+        <location filename="../app/studio/docks.cpp" line="172"/>
         <source>Lights</source>
         <translation>Lampes</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="142"/>
+        <location filename="../app/studio/docks.cpp" line="177"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="178"/>
         <source>outline on the photo</source>
         <translation>contour sur la photo</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="143"/>
+        <location filename="../app/studio/docks.cpp" line="178"/>
         <source>rectangle in 3D</source>
         <translation>rectangle en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="157"/>
+        <location filename="../app/studio/docks.cpp" line="192"/>
         <source>Shafts</source>
         <translation>Rayons de soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="157"/>
+        <location filename="../app/studio/docks.cpp" line="192"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="158"/>
+        <location filename="../app/studio/docks.cpp" line="193"/>
         <source>sunlit patch and its window</source>
         <translation>tache de soleil et sa fenêtre</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="159"/>
+        <location filename="../app/studio/docks.cpp" line="194"/>
         <source>Surfaces</source>
         <translation>Surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="159"/>
+        <location filename="../app/studio/docks.cpp" line="194"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="161"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Occluders</source>
         <translation>Masques d&apos;avant-plan</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="161"/>
+        <location filename="../app/studio/docks.cpp" line="196"/>
         <source>Occluder %1</source>
         <translation>Masque d&apos;avant-plan %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="162"/>
+        <location filename="../app/studio/docks.cpp" line="197"/>
         <source>%1 strokes in front, %2 behind</source>
         <translation>%1 traits devant, %2 derrière</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="166"/>
+        <location filename="../app/studio/docks.cpp" line="201"/>
         <source>Objects</source>
         <translation>Objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="171"/>
+        <location filename="../app/studio/docks.cpp" line="206"/>
         <source>hidden: %1</source>
         <translation>masqué : %1</translation>
     </message>
@@ -2735,7 +2745,7 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
         <translation type="vanished">Objet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/docks.cpp" line="169"/>
+        <location filename="../app/studio/docks.cpp" line="204"/>
         <source>%1, %2 m</source>
         <translation>%1, %2 m</translation>
     </message>
@@ -3045,178 +3055,183 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>inlay::studio::Viewport</name>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="321"/>
+        <location filename="../app/studio/viewport.cpp" line="322"/>
         <source>Drag an object or a corner of the back wall.</source>
         <translation>Faites glisser un objet ou un coin du mur du fond.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="323"/>
+        <location filename="../app/studio/viewport.cpp" line="324"/>
         <source>Click around a light; click the first point (or press Enter) to close.</source>
         <translation>Cliquez autour d’une lampe ; cliquez sur le premier point (ou appuyez sur Entrée) pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="325"/>
+        <location filename="../app/studio/viewport.cpp" line="326"/>
         <source>Now drag a box around the window the sunlight comes through.</source>
         <translation>Tracez maintenant un cadre autour de la fenêtre par où entre le soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="326"/>
+        <location filename="../app/studio/viewport.cpp" line="327"/>
         <source>Drag a box around the patch of sunlight.</source>
         <translation>Tracez un cadre autour de la tache de soleil.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="329"/>
+        <location filename="../app/studio/viewport.cpp" line="330"/>
         <source>Click the floor straight below the first point of the outline.</source>
         <translation>Cliquez sur le sol juste en dessous du premier point du contour.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="330"/>
+        <location filename="../app/studio/viewport.cpp" line="331"/>
         <source>Click around the top of a table or step; click the first point to close.</source>
         <translation>Cliquez autour du dessus d&apos;une table ou d&apos;une marche ; cliquez sur le premier point pour fermer.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="332"/>
+        <location filename="../app/studio/viewport.cpp" line="333"/>
         <source>Left drag over the thing in front, right drag over what is behind it; Enter starts another occluder.</source>
         <translation>Glissez avec le bouton gauche sur ce qui est devant, avec le droit sur ce qui est derrière ; Entrée commence un autre masque.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="338"/>
+        <location filename="../app/studio/viewport.cpp" line="339"/>
         <source>Drag along an edge that runs in the %1 direction (keys X, Y, Z choose it).</source>
         <translation>Faites glisser le long d’une arête dans la direction %1 (les touches X, Y, Z la choisissent).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="340"/>
+        <location filename="../app/studio/viewport.cpp" line="341"/>
         <source>Now drag along a second edge in the %1 direction.</source>
         <translation>Faites maintenant glisser le long d’une deuxième arête dans la direction %1.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="436"/>
+        <location filename="../app/studio/viewport.cpp" line="437"/>
         <source>Back wall (yours)</source>
         <translation>Mur du fond (le vôtre)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="436"/>
+        <location filename="../app/studio/viewport.cpp" line="437"/>
         <source>Back wall (estimated)</source>
         <translation>Mur du fond (estimé)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="493"/>
+        <location filename="../app/studio/viewport.cpp" line="525"/>
         <source>%1 px</source>
         <translation>%1 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="532"/>
+        <location filename="../app/studio/viewport.cpp" line="565"/>
         <source>%1: %2 px</source>
         <translation>%1 : %2 px</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="565"/>
+        <location filename="../app/studio/viewport.cpp" line="598"/>
         <source>Light %1</source>
         <translation>Lampe %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="579"/>
+        <location filename="../app/studio/viewport.cpp" line="612"/>
         <source>Shaft %1</source>
         <translation>Rayon de soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="594"/>
+        <location filename="../app/studio/viewport.cpp" line="627"/>
         <source>Surface %1</source>
         <translation>Surface %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="655"/>
+        <location filename="../app/studio/viewport.cpp" line="688"/>
         <source>%1 hidden</source>
         <translation>%1 masqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="748"/>
+        <location filename="../app/studio/viewport.cpp" line="781"/>
         <source>Preparing the scene…</source>
         <translation>Préparation de la scène…</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="750"/>
+        <location filename="../app/studio/viewport.cpp" line="783"/>
         <source>The scene could not be prepared: %1</source>
         <translation>La scène n&apos;a pas pu être préparée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="754"/>
+        <location filename="../app/studio/viewport.cpp" line="787"/>
         <source>Open a scene or a photo (File menu).</source>
         <translation>Ouvrez une scène ou une photo (menu Fichier).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="757"/>
+        <location filename="../app/studio/viewport.cpp" line="790"/>
         <source>Before: the photo without objects</source>
         <translation>Avant : la photo sans les objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="780"/>
+        <location filename="../app/studio/viewport.cpp" line="822"/>
         <source>Vanishing points: x %1, y %2, z %3 (confidence)</source>
         <translation>Points de fuite : x %1, y %2, z %3 (confiance)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="784"/>
+        <location filename="../app/studio/viewport.cpp" line="826"/>
         <source>Focal length %1 px (%2–%3 px)</source>
         <translation>Focale %1 px (%2–%3 px)</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="843"/>
+        <location filename="../app/studio/viewport.cpp" line="837"/>
+        <source>The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and Confidence</source>
+        <translation>Les avertissements en entier : l’onglet Journal (Affichage ▸ Journal) ; ce texte : Affichage ▸ Lignes de fuite et confiance</translation>
+    </message>
+    <message>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>Before</source>
         <translation>Avant</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="843"/>
+        <location filename="../app/studio/viewport.cpp" line="892"/>
         <source>After</source>
         <translation>Après</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="930"/>
+        <location filename="../app/studio/viewport.cpp" line="979"/>
         <source>the left wall</source>
         <translation>le mur de gauche</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="931"/>
+        <location filename="../app/studio/viewport.cpp" line="980"/>
         <source>the right wall</source>
         <translation>le mur de droite</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="932"/>
+        <location filename="../app/studio/viewport.cpp" line="981"/>
         <source>the back wall</source>
         <translation>le mur du fond</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="933"/>
+        <location filename="../app/studio/viewport.cpp" line="982"/>
         <source>the wall behind the camera</source>
         <translation>le mur derrière l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="934"/>
+        <location filename="../app/studio/viewport.cpp" line="983"/>
         <source>Its back against %1 (hold Shift to place it freely).</source>
         <translation>Le dos contre %1 (maintenez Maj pour le placer librement).</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="955"/>
+        <location filename="../app/studio/viewport.cpp" line="1004"/>
         <source>Turned %1°</source>
         <translation>Tourné à %1°</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="965"/>
+        <location filename="../app/studio/viewport.cpp" line="1014"/>
         <source>Height %1 m</source>
         <translation>Hauteur %1 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="998"/>
+        <location filename="../app/studio/viewport.cpp" line="1047"/>
         <source>An outline needs at least three points.</source>
         <translation>Un contour demande au moins trois points.</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="923"/>
-        <location filename="../app/studio/viewport.cpp" line="1321"/>
+        <location filename="../app/studio/viewport.cpp" line="972"/>
+        <location filename="../app/studio/viewport.cpp" line="1370"/>
         <source>Cannot place the object here: %1</source>
         <translation>Impossible de placer l&apos;objet ici : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/viewport.cpp" line="1254"/>
+        <location filename="../app/studio/viewport.cpp" line="1303"/>
         <source>Each line must be at least two pixels long.</source>
         <translation>Chaque ligne doit mesurer au moins deux pixels.</translation>
     </message>
@@ -3224,53 +3239,53 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="55"/>
+        <location filename="../app/studio/main.cpp" line="72"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="60"/>
+        <location filename="../app/studio/main.cpp" line="77"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="64"/>
+        <location filename="../app/studio/main.cpp" line="81"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="68"/>
+        <location filename="../app/studio/main.cpp" line="85"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="72"/>
+        <location filename="../app/studio/main.cpp" line="89"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>À la place : secondes de rendu de l&apos;image affichée à attendre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="76"/>
+        <location filename="../app/studio/main.cpp" line="93"/>
         <source>Show the Log dock across the bottom of the window.</source>
         <translation>Afficher le journal sur toute la largeur du bas de la fenêtre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="79"/>
+        <location filename="../app/studio/main.cpp" line="96"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="82"/>
+        <location filename="../app/studio/main.cpp" line="99"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="101"/>
+        <location filename="../app/studio/main.cpp" line="118"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="108"/>
-        <location filename="../app/studio/main.cpp" line="116"/>
+        <location filename="../app/studio/main.cpp" line="125"/>
+        <location filename="../app/studio/main.cpp" line="133"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>

@@ -20,10 +20,13 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace inlay::studio {
@@ -32,6 +35,38 @@ namespace {
 constexpr int kRoleObject = Qt::UserRole + 1;    // object index, or -1
 constexpr int kRoleMarkKind = Qt::UserRole + 2;  // MarkKind as int
 constexpr int kRoleMarkIndex = Qt::UserRole + 3;
+
+// A dock's body that scrolls when the window is short: it asks for all of its content's size
+// (so a tall enough window shows every field, as before) but insists only on a few lines of it.
+// Without it, Properties' fields fixed the window's minimum height: 870 to 940 px with the docks
+// stacked beside it, more than a 1024 x 768 screen or a 1366 x 768 laptop has (issue #16).
+class ScrollingBody : public QScrollArea {
+ public:
+  ScrollingBody(QWidget* parent, QWidget* body) : QScrollArea(parent) {
+    setWidgetResizable(true);
+    setFrameShape(QFrame::NoFrame);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setWidget(body);
+    body->installEventFilter(this);
+  }
+  QSize sizeHint() const override {
+    return widget()->sizeHint() + QSize(verticalScrollBar()->sizeHint().width(), 0);
+  }
+  QSize minimumSizeHint() const override {
+    const QSize body = widget()->minimumSizeHint();
+    const int lines = kMinimumLines * fontMetrics().lineSpacing();
+    return {body.width() + verticalScrollBar()->sizeHint().width(), std::min(body.height(), lines)};
+  }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override {
+    if (watched == widget() && event->type() == QEvent::LayoutRequest) updateGeometry();
+    return QScrollArea::eventFilter(watched, event);
+  }
+
+ private:
+  static constexpr int kMinimumLines = 8;  // about four rows of fields
+};
 
 QString meshName(const ObjectKeys& o) {
   if (o.mesh == "builtin:sphere") return SceneTreeDock::tr("sphere");
@@ -313,7 +348,7 @@ PropertiesDock::PropertiesDock(Document* document, QWidget* parent)
                                             ? form->itemAt(row, QFormLayout::LabelRole)->widget()
                                             : nullptr))
       if (QLayoutItem* f = form->itemAt(row, QFormLayout::FieldRole)) l->setBuddy(f->widget());
-  setWidget(panel);
+  setWidget(new ScrollingBody(this, panel));
   retranslate();
 
   connect(roomSurface_, &QComboBox::currentIndexChanged, this, [this] { refreshRoom(); });
@@ -349,7 +384,7 @@ void PropertiesDock::changeEvent(QEvent* event) {
 
 void PropertiesDock::retranslate() {
   setWindowTitle(tr("Properties"));
-  auto* form = static_cast<QFormLayout*>(widget()->layout());
+  auto* form = static_cast<QFormLayout*>(title_->parentWidget()->layout());
   auto label = [form](QWidget* field, const QString& text) {
     if (auto* l = qobject_cast<QLabel*>(form->labelForField(field))) l->setText(text);
   };

@@ -23,6 +23,12 @@ const char* const kCurveText =
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "toe_shoulder (power %1, toe %2, shoulder %3)");
 
 const char* const kSentences[] = {
+    // The camera estimate's (modeling/src/camera/estimate_camera.cpp), drawn on the photo.
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "vanishing point %1: only %2 supporting line(s); it rests on the other two"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "vanishing point %1: its lines are nearly parallel in the photo, so its "
+                      "distance is uncertain"),
     // Model files refused by the readers (the studio adds the file name).
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "empty file"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "cannot open for reading"),

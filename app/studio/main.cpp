@@ -21,6 +21,7 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QScreen>
 #include <QTimer>
 
 #include <algorithm>
@@ -31,6 +32,30 @@ using inlay::studio::Document;
 using inlay::studio::MainWindow;
 
 namespace {
+
+// `inlay --help` and `--version` print and exit without a window: with no display (over ssh,
+// in a container) Qt's windowing plugin would abort before they are read ("could not connect to
+// display ... Reinstalling the application may fix this problem"), so they run offscreen.
+void printWithoutDisplay(int argc, char** argv) {
+  const bool display = qEnvironmentVariableIsSet("DISPLAY") ||
+                       qEnvironmentVariableIsSet("WAYLAND_DISPLAY") ||
+                       qEnvironmentVariableIsSet("QT_QPA_PLATFORM");
+  if (display) return;
+  for (int i = 1; i < argc; ++i) {
+    const QByteArray arg(argv[i]);
+    if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "-v" || arg == "--version")
+      qputenv("QT_QPA_PLATFORM", "offscreen");
+  }
+}
+
+// --show-log: the Log dock across the bottom, where its lines are read whole.
+void showLogAcrossTheBottom(MainWindow& window) {
+  window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
+  window.logDock()->show();
+  // Once laid out: a dock added before the window's first layout keeps its minimum height.
+  QTimer::singleShot(0, &window,
+                     [&window] { window.resizeDocks({window.logDock()}, {300}, Qt::Vertical); });
+}
 
 int writeScreenshot(MainWindow& window, const QString& path) {
   const QPixmap shot = window.grab();
@@ -44,6 +69,7 @@ int writeScreenshot(MainWindow& window, const QString& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  printWithoutDisplay(argc, argv);
   QApplication app(argc, argv);
   QApplication::setOrganizationName(QStringLiteral("Inlay"));
   QApplication::setApplicationName(QStringLiteral("inlay"));
@@ -120,15 +146,13 @@ int main(int argc, char** argv) {
 
   MainWindow window;
   window.setInteractive(!screenshot);
-  if (screenshot) window.resize(1280, 800);
+  // Screenshots at 1280 x 800, or the screen's size when it is smaller (xvfb-run -s "-screen 0
+  // 1024x700x24" shows the studio as a small screen does).
+  if (screenshot)
+    window.resize(QSize(1280, 800).boundedTo(
+        window.screen() ? window.screen()->availableGeometry().size() : QSize(1280, 800)));
   window.show();
-  if (parser.isSet(showLogOpt)) {  // across the bottom, where its lines are read whole
-    window.addDockWidget(Qt::BottomDockWidgetArea, window.logDock());
-    window.logDock()->show();
-    // Once laid out: a dock added before the window's first layout keeps its minimum height.
-    QTimer::singleShot(0, &window,
-                       [&window] { window.resizeDocks({window.logDock()}, {300}, Qt::Vertical); });
-  }
+  if (parser.isSet(showLogOpt)) showLogAcrossTheBottom(window);
   bool opened = files.isEmpty() ? window.openExample() : window.openPath(files.first());
   // Work a crash left behind replaces what was opened (after asking, unless --recover).
   if (parser.isSet(recoverOpt)) opened = window.restoreRecovery() || opened;

@@ -4,6 +4,7 @@
 #include "wrapped_labels.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QLabel>
 #include <QPainter>
@@ -50,8 +51,16 @@ ResponsePlot responsePlot(const CameraResponse& response) {
 // The decode curve in stops above the code of mid-grey (code across, stops up) over the sRGB
 // curve for reference: a linear axis would show a long shoulder as a line along zero.
 class ResponseCurveView : public QWidget {
+  // Its own translation context (without it tr() was QWidget's, and the caption stayed English
+  // in German and French although the .ts files translate it).
+  Q_DECLARE_TR_FUNCTIONS(inlay::studio::ResponseCurveView)
+
  public:
-  explicit ResponseCurveView(QWidget* parent) : QWidget(parent) { setMinimumSize(160, 90); }
+  explicit ResponseCurveView(QWidget* parent) : QWidget(parent) {
+    setMinimumSize(160, 90);
+    setObjectName(QStringLiteral("responseCurve"));
+  }
+  static QString caption() { return tr("code (up: stops above mid-grey)"); }
   void setResponse(const CameraResponse& r) {
     plot_ = responsePlot(r);
     update();
@@ -62,7 +71,13 @@ class ResponseCurveView : public QWidget {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
     p.fillRect(rect(), palette().base());
-    const QRectF area = QRectF(rect()).adjusted(34, 8, -8, -20);
+    // The caption wraps below the plot when the dock is narrower than it (French is long).
+    const int captionWidth = width() - 34 - 8;
+    const int captionHeight =
+        fontMetrics()
+            .boundingRect(QRect(0, 0, captionWidth, 1 << 16), Qt::TextWordWrap, caption())
+            .height();
+    const QRectF area = QRectF(rect()).adjusted(34, 8, -8, -(captionHeight + 4));
     const auto y = [&](double stops) {
       return area.bottom() - area.height() * (stops - plot_.bottom) / (plot_.top - plot_.bottom);
     };
@@ -70,8 +85,8 @@ class ResponseCurveView : public QWidget {
     p.drawRect(area);
     p.drawLine(QPointF(area.left(), y(0)), QPointF(area.right(), y(0)));
     p.setPen(palette().text().color());
-    p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 16), Qt::AlignCenter,
-               tr("code (up: stops above mid-grey)"));
+    p.drawText(QRectF(area.left(), area.bottom() + 2, area.width(), captionHeight),
+               Qt::AlignHCenter | Qt::AlignTop | Qt::TextWordWrap, caption());
     for (double stops : {plot_.top, 0.0, plot_.bottom})
       p.drawText(QRectF(0, y(stops) - 8, 32, 16), Qt::AlignRight | Qt::AlignVCenter,
                  stops > 0 ? QStringLiteral("+%1").arg(stops) : QString::number(stops));
@@ -265,6 +280,7 @@ void ResponseDock::retranslate() {
   choice_->setItemText(2, tr("Linear"));
   choice_->setItemText(3, tr("Explicit (from the scene file)"));
   choice_->setToolTip(tr("How the photo's pixel values map to light (camera.response)"));
+  curve_->setAccessibleName(ResponseCurveView::caption());  // what a screen reader says
   detailsButton_->setText(tr("Details"));
   detailsButton_->setToolTip(tr("The curve's parameters and what the estimate measured"));
   refresh();

@@ -4,6 +4,7 @@
 #include "document.h"
 #include "model_import.h"
 
+#include <QBitmap>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QElapsedTimer>
@@ -456,9 +457,40 @@ void Viewport::paintRoom(QPainter& p) {
     }
 }
 
+const QRegion& Viewport::objectRegion() {
+  const RenderFrame* frame = renderer_->hasFrame() ? renderer_->frameInfo().frame.get() : nullptr;
+  if (frame == objectRegionFrame_) return objectRegion_;
+  objectRegionFrame_ = frame;
+  objectRegion_ = {};
+  if (!frame || frame->mask.empty()) return objectRegion_;
+  QImage bits(frame->mask.width, frame->mask.height, QImage::Format_MonoLSB);
+  bits.setColorTable({qRgb(255, 255, 255), qRgb(0, 0, 0)});  // 1: black, a QBitmap's set bit
+  bits.fill(0);
+  for (int y = 0; y < frame->mask.height; ++y)
+    for (int x = 0; x < frame->mask.width; ++x)
+      if (frame->mask.at(x, y, 0) > 0.5f) bits.setPixel(x, y, 1);
+  objectRegion_ = QRegion(QBitmap::fromImage(bits));
+  return objectRegion_;
+}
+
 void Viewport::paintVanishingLines(QPainter& p) {
   const CameraEstimate* e = document_->lastEstimate();
   if (!e) return;
+  // Not over the inserted objects: the photo's edges drawn across an object (the lockers'
+  // behind a bust) made it look transparent (issue #16, York P1020839).
+  p.save();
+  if (layer_ == Layer::Composite && !showBefore_ && !split_ && !objectRegion().isEmpty()) {
+    const QSize frameSize(renderer_->frameInfo().frame->mask.width,
+                          renderer_->frameInfo().frame->mask.height);
+    const QSize shown = imageSize();
+    QTransform toWidget;
+    toWidget.translate(offset_.x(), offset_.y());
+    toWidget.scale(scale_ * shown.width() / frameSize.width(),
+                   scale_ * shown.height() / frameSize.height());
+    p.setTransform(toWidget);
+    p.setClipRegion(QRegion(QRect(QPoint(0, 0), frameSize)).subtracted(objectRegion()));
+    p.resetTransform();
+  }
   const QColor* family = kAxisColour;
   // Every supporting segment in its family's colour, thin.
   std::array<std::vector<const LineSegment*>, 3> byFamily;
@@ -493,6 +525,7 @@ void Viewport::paintVanishingLines(QPainter& p) {
       labelAt(p, widgetFromImage(s.bPx), tr("%1 px").arg(s.residualPx, 0, 'f', 2), family[f]);
     }
   }
+  p.restore();
 }
 
 void Viewport::paintMarkHandles(QPainter& p) {
@@ -774,8 +807,17 @@ void Viewport::paintStatus(QPainter& p) {
   const QRectF area = QRectF(rect()).adjusted(10, 10, -10, -10);
   if (!banner.isEmpty()) box(area, banner, bannerColour, Qt::AlignLeft | Qt::AlignTop);
   // The estimate's confidences and warnings, bottom left.
+  const QStringList lines = estimateLines();
+  if (lines.isEmpty()) return;
+  const bool weak = document_->lastEstimate()->overallConfidence < 0.5 ||
+                    !document_->lastEstimate()->manhattan;
+  box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
+      Qt::AlignLeft | Qt::AlignBottom);
+}
+
+QStringList Viewport::estimateLines() const {
   const CameraEstimate* e = showVanishing_ ? document_->lastEstimate() : nullptr;
-  if (!e) return;
+  if (!e) return {};
   QStringList lines;
   lines << tr("Vanishing points: x %1, y %2, z %3 (confidence)")
                .arg(e->confidence[0], 0, 'f', 2)
@@ -785,10 +827,17 @@ void Viewport::paintStatus(QPainter& p) {
                .arg(e->camera.focalPx, 0, 'f', 0)
                .arg(e->focalMinPx, 0, 'f', 0)
                .arg(e->focalMaxPx, 0, 'f', 0);
-  for (const std::string& w : e->warnings) lines << QString::fromStdString(w);
-  const bool weak = e->overallConfidence < 0.5 || !e->manhattan;
-  box(area, lines.join(QLatin1Char('\n')), weak ? QColor(255, 190, 120) : QColor(220, 235, 255),
-      Qt::AlignLeft | Qt::AlignBottom);
+  QStringList warnings;
+  for (const std::string& w : e->warnings) warnings << engineText(QString::fromStdString(w));
+  const QRect area = rect().adjusted(10, 10, -10, -10);
+  const QString whole = (lines + warnings).join(QLatin1Char('\n'));
+  if (fontMetrics().boundingRect(area, Qt::TextWordWrap, whole).height() <= height() / 5)
+    return lines + warnings;
+  for (const QString& w : warnings) lines << fontMetrics().elidedText(w, Qt::ElideRight, area.width());
+  lines << tr(
+      "The whole warnings: the Log tab (View ▸ Log); this text: View ▸ Vanishing Lines and "
+      "Confidence");
+  return lines;
 }
 
 // ---------------------------------------------------------------- before/after split

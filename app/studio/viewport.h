@@ -48,6 +48,7 @@
 #include <QImage>
 #include <QPointF>
 #include <QRectF>
+#include <QRegion>
 #include <QWidget>
 
 #include <optional>
@@ -134,6 +135,11 @@ class Viewport : public QWidget {
   // The banner's text over the shown final image (a change of language).
   void setFinalCaption(const QString& caption);
   const QString& finalCaption() const { return finalCaption_; }
+  // The camera estimate's lines drawn bottom left on the photo (confidences, focal length,
+  // warnings), empty when hidden. When they would cover more than a fifth of the viewport's
+  // height (a York photo's box advice is 8 lines at 1024 x 700, over the inserted object), each
+  // warning keeps its first line and a last line says where the whole text is.
+  QStringList estimateLines() const;
   // Enter: closes the outline being drawn / ends the occluder; Escape drops the tool's input.
   void commitToolInput();
   void cancelToolInput();
@@ -172,6 +178,9 @@ class Viewport : public QWidget {
   void paintScaled(QPainter& p, const QImage& image, const QRectF& target);
   void paintRoom(QPainter& p);
   void paintVanishingLines(QPainter& p);
+  // The pixels the shown frame's objects cover (mask over one half), in the frame's pixels;
+  // cached per frame. The estimate's lines are not drawn over them.
+  const QRegion& objectRegion();
   void paintMarks(QPainter& p);
   void paintObjects(QPainter& p);
   void paintHandles(QPainter& p);
@@ -197,6 +206,8 @@ class Viewport : public QWidget {
   bool fit_ = true;     // keep fitting on resize until the user zooms or pans
   bool showBefore_ = false;
   bool showVanishing_ = true;
+  QRegion objectRegion_;
+  const void* objectRegionFrame_ = nullptr;  // the frame objectRegion_ was made from
   Layer layer_ = Layer::Composite;
   Tool tool_ = Tool::Select;
 
