@@ -832,11 +832,11 @@ uint64_t photoFingerprint(const ImageF& photo) {
 }
 
 // The camera stage's detail when it took the camera the response check's copy found on the same
-// photo (Preparation::cameraFound).
+// photo (Preparation::camera).
 const char* const kCameraOfTheCopy = "estimated from the photo once, for the response check's copy";
 
 // The camera and the back wall: the file's, or estimated from the photo, or the estimate that
-// an earlier preparation made on the same photo with the same keys (Preparation::cameraFound).
+// an earlier preparation made on the same photo with the same keys (Preparation::camera).
 Status findCamera(Preparation& p, std::string& detail) {
   const bool keyed = p.camera.found || p.handsCameraOn;  // the fingerprint only when it serves
   const uint64_t key = keyed ? photoFingerprint(p.ps.photo.linearRgb) : 0;
@@ -1485,7 +1485,7 @@ struct QuickCheck {
   std::array<int, 2> copyPx{};
   std::vector<StageStep> steps;
   double seconds = 0, cpuSeconds = 0;
-  FoundCamera curveCamera, srgbCamera;  // what each copy's camera stage found, for the full-size
+  FoundCamera curveCamera, srgbCamera;  // each copy's camera, for its response's full size
   double logRatio(double tolerance) const { return quickLogRatio(withCurve, withSrgb, tolerance); }
   int verdict(const PrepareOptions& opt) const {
     return quickResponseVerdict(withCurve, withSrgb, opt.responseFitTolerance, opt.responseQuick.margin);
