@@ -933,8 +933,8 @@ std::string verdictOf(const StageRecord& check) {
 // The response check's copies estimate each response's camera, and the full-size preparation
 // of the same response takes its copy's instead of estimating it again (its camera stage says
 // so): the curve's copy reads the curve's decoded photo, sRGB's the photo decoded as the sRGB
-// candidates' response stage decodes it (srgbDecoded; the loader's values differ in the last
-// bit). The example with its camera and back wall taken out of the scene file (estimated from
+// candidates' response stage decodes it (srgbDecoded; the loader's values differ in some
+// values). The example with its camera and back wall taken out of the scene file (estimated from
 // the photo) and no object: with the false curve (optionsGivingTheExampleACurve) the copies keep
 // sRGB, and the full check keeps sRGB or, with an infinite tolerance, the curve; its photo saved
 // through a strong curve and "auto" given it, the copies keep the curve. Each time the verdict,

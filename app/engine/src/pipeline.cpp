@@ -762,7 +762,8 @@ Status loadPhoto(Preparation& p, std::string& detail) {
 // `photo` decoded as the response stage decodes it with sRGB (from its 8-bit `codes` when
 // found, else its values): what the response check's sRGB candidates read, its copy's included,
 // so that the copy's camera serves the full-size preparation (Preparation::camera). The loader's
-// sRGB values may differ from it in the last bit; decoding it again with sRGB changes nothing.
+// sRGB values differ from it in some values (their fingerprints differed on the example and on
+// York); decoding it again with sRGB changes nothing.
 LoadedImage srgbDecoded(const LoadedImage& photo, const std::vector<unsigned char>* codes) {
   LoadedImage out = photo;
   if (codes) redecodePhotoFromCodes(out.linearRgb, *codes, CameraResponse::srgb());
