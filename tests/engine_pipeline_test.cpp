@@ -910,6 +910,115 @@ TEST(Engine, TheFullChecksCandidatesSideBySideGiveWhatTheyGiveOneAfterTheOther) 
   std::filesystem::remove_all(dir);
 }
 
+// The camera a preparation ran with, value for value: the camera stage's result and the room.
+void expectSameCamera(const PreparedScene& a, const PreparedScene& b) {
+  EXPECT_EQ(a.camera.focalPx, b.camera.focalPx);
+  EXPECT_EQ(a.camera.principalPx, b.camera.principalPx);
+  EXPECT_TRUE(a.camera.worldFromCamera == b.camera.worldFromCamera);
+  EXPECT_EQ(a.camera.heightM, b.camera.heightM);
+  EXPECT_EQ(a.backWallPx, b.backWallPx);
+  EXPECT_EQ(a.box.xLeftM, b.box.xLeftM);
+  EXPECT_EQ(a.box.xRightM, b.box.xRightM);
+  EXPECT_EQ(a.box.zRearM, b.box.zRearM);
+  EXPECT_EQ(a.box.ceilingM, b.box.ceilingM);
+  EXPECT_EQ(a.cameraEstimate.has_value(), b.cameraEstimate.has_value());
+}
+
+// The response check's verdict without the copies' part ("the curve kept: the light fit's
+// residual with ... is 0.1969, with sRGB 0.1786").
+std::string verdictOf(const StageRecord& check) {
+  return check.detail.substr(0, check.detail.find("; "));
+}
+
+// The response check's copies estimate each response's camera, and the full-size preparation
+// of the same response takes its copy's instead of estimating it again (its camera stage says
+// so): the curve's copy reads the curve's decoded photo, sRGB's the photo decoded as the sRGB
+// candidates' response stage decodes it (srgbDecoded; the loader's values differ in some
+// values). The example with its camera and back wall taken out of the scene file (estimated from
+// the photo) and no object: with the false curve (optionsGivingTheExampleACurve) the copies keep
+// sRGB, and the full check keeps sRGB or, with an infinite tolerance, the curve; its photo saved
+// through a strong curve and "auto" given it, the copies keep the curve. Each time the verdict,
+// the residuals, camera, room and scene are those of the check without copies (which estimates
+// every camera at full size) bit for bit, side by side (threads 0) and one after the other
+// (threads 1) alike, and the copies' step says which. Without the hand-over the camera stage
+// reads "estimated from the photo"; with the sRGB copy given the photo as loaded, sRGB's does.
+TEST(Engine, TheResponseCheckEstimatesEachResponsesCameraOnce) {
+  SceneDoc doc = exampleDoc();
+  doc.camera.vanishingPointsPx.reset();
+  doc.layout.backWallPx.reset();
+  doc.objects.clear();
+  const auto dir = test::tempDir("response_check_camera_once");
+  const ResponseParams strong{0.8, 0.3, 12.0};
+  const CameraResponse curve = CameraResponse::toeShoulder(strong);
+  auto plain = preparedExample();
+  ASSERT_TRUE(plain.ok());
+  SaveOptions so;
+  so.response = &curve;
+  const std::string curvedPhoto = (dir / "photo.png").string();
+  ASSERT_TRUE(saveImage(curvedPhoto, plain->photo.linearRgb, so).ok());
+  struct Case {
+    std::string name;
+    bool trueCurve;
+    double margin, tolerance;
+    int threads;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<Case> cases = {{"the copies keep the curve, side by side", true, 0.1, 0.0, 0},
+                                   {"the copies keep the curve, one after the other", true, 0.1, 0.0, 1},
+                                   {"the copies keep sRGB", false, 0.1, 0.0, 0},
+                                   {"the full check keeps sRGB", false, inf, 0.0, 0},
+                                   {"the full check keeps the curve", false, inf, inf, 1}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    SceneDoc d = doc;
+    PrepareOptions opt = optionsGivingTheExampleACurve();
+    if (c.trueCurve) {
+      d.photo = d.photoResolved = curvedPhoto;
+      opt = PrepareOptions();
+      opt.responseEstimate.evaluateAt = strong;
+    }
+    opt.responseFitTolerance = c.tolerance;
+    opt.responseQuick.margin = c.margin;
+    opt.threads = c.threads;
+    opt.workingMaxPixels = 320 * 240;  // the test's time
+    PrepareOptions noCopies = opt;
+    noCopies.responseQuick.maxPixels = 0;
+    auto alone = prepareScene(d, noCopies);
+    auto handed = prepareScene(d, opt);
+    ASSERT_TRUE(alone.ok()) << alone.error().message();
+    ASSERT_TRUE(handed.ok()) << handed.error().message();
+    const StageRecord* a = stageNamed(*alone, "response check");
+    const StageRecord* b = stageNamed(*handed, "response check");
+    ASSERT_TRUE(a && b);   // a curve was fitted and checked
+    if (c.margin < inf) {  // the copies decided: their verdict quotes their residuals
+      EXPECT_NE(b->detail.find(" beyond "), std::string::npos) << b->detail;
+      EXPECT_EQ(a->detail.substr(0, 16), b->detail.substr(0, 16));
+    } else {
+      EXPECT_EQ(verdictOf(*a), verdictOf(*b));
+      EXPECT_EQ(withoutSeconds(alone->warnings), withoutSeconds(handed->warnings));
+    }
+    EXPECT_EQ(verdictOf(*b).find("nan"), std::string::npos) << b->detail;
+    EXPECT_EQ(a->detail.rfind(c.tolerance < inf && !c.trueCurve ? "sRGB kept: " : "the curve kept: ", 0),
+              0u)
+        << a->detail;
+    EXPECT_EQ(stageNames(*alone), stageNames(*handed));
+    expectSameCamera(*alone, *handed);
+    expectSameRenderInputs(*alone, *handed);
+    ASSERT_TRUE(handed->cameraEstimate.has_value());
+    EXPECT_EQ(stageNamed(*alone, "camera")->detail, "estimated from the photo");
+    EXPECT_EQ(stageNamed(*handed, "camera")->detail,
+              "estimated from the photo once, for the response check's copy");
+    const auto step = std::find_if(b->steps.begin(), b->steps.end(), [](const StageStep& s) {
+      return s.name.rfind("both copies, ", 0) == 0;
+    });
+    ASSERT_NE(step, b->steps.end());
+    EXPECT_EQ(step->name,
+              c.threads == 1 ? "both copies, one after the other" : "both copies, side by side");
+    EXPECT_GE(step->seconds, 0);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 // ResponseQuickCheck's verdict: beyond the margin either way it decides, inside it (ties
 // included) it leaves the choice to the full check; residuals that are not finite and positive,
 // and a NaN margin, never decide; the tolerance widens sRGB's residual as refitFitsWorse does.
@@ -973,7 +1082,9 @@ void expectTheCopiesDecideAsTheFullCheck(const CameraResponse* encodeWith, const
   EXPECT_EQ(stageNames(*byCopies), stageNames(*byFull)) << name;
   expectSameRenderInputs(*byCopies, *byFull);
   for (const StageStep& step : copiesCheck->steps)  // the second preparation never ran
-    EXPECT_TRUE(step.name.rfind("copy, ", 0) == 0 || step.name == "sRGB: response") << step.name;
+    EXPECT_TRUE(step.name.rfind("copy, ", 0) == 0 || step.name.rfind("both copies, ", 0) == 0 ||
+                step.name == "sRGB: response")
+        << step.name;
   // The copies cost less than the full check's two candidates (its last step times them
   // together: side by side, its own record holds only what they took beyond the curve's stages).
   EXPECT_LT(copiesCheck->cpuSeconds, fullCheck->steps.back().cpuSeconds) << name;

@@ -176,6 +176,8 @@ const char* const kStageTexts[] = {
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the photo's own size"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "estimated from the photo"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "the file's vanishing points and back wall"),
+    QT_TRANSLATE_NOOP("inlay::studio::EngineText",
+                      "estimated from the photo once, for the response check's copy"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 x %2 m"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 m high"),
     QT_TRANSLATE_NOOP("inlay::studio::EngineText", "%1 matte"),

@@ -46,6 +46,9 @@ const char* const kNames[] = {
     // The response check's step timing its two candidates together (pipeline.cpp, blockStep).
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "both candidates, side by side"),
     QT_TRANSLATE_NOOP("inlay::studio::StageText", "both candidates, one after the other"),
+    // ... and its step timing its two small copies together (pipeline.cpp, quickCheck).
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "both copies, side by side"),
+    QT_TRANSLATE_NOOP("inlay::studio::StageText", "both copies, one after the other"),
 };
 
 // The response check's steps (app/engine/src/pipeline.cpp): the stages of its small copies and

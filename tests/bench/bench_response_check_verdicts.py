@@ -56,10 +56,13 @@ def parse_check(stages):
     if not check:
         return {"kept": "-"}
     d = check[0]["detail"]
+    steps = check[0].get("steps", [])
+    # Since resp21 the two copies run side by side: each copy's records then count the process's
+    # CPU while they ran, the other copy's included; the step "both copies, ..." times them together.
+    both = [s for s in steps if s["name"].startswith("both copies, ")]
+    copies = both[0]["cpu_seconds"] if both else sum(s["cpu_seconds"] for s in steps if s["name"].startswith("copy"))
     row = {"kept": "curve" if d.startswith("the curve kept") else "srgb",
-           "check_cpu": round(check[0]["cpu_seconds"], 3),
-           "copies_cpu": round(sum(s["cpu_seconds"] for s in check[0].get("steps", [])
-                                   if s["name"].startswith("copy")), 3)}
+           "check_cpu": round(check[0]["cpu_seconds"], 3), "copies_cpu": round(copies, 3)}
     m = re.search(r"is %s, with sRGB %s" % (NUMBER, NUMBER), d)
     if m:
         row["curve_res"], row["srgb_res"] = m.group(1), m.group(2)

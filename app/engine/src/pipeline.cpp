@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -584,6 +585,13 @@ struct WorkingCopy {
   ImageF photoLightMask;  // the lights' mask at the photo's size (when reduced)
 };
 
+// The camera stage's result (cameraAndLayoutOf) and the fingerprint of the photo it was found on
+// (photoFingerprint; the scene file's camera and layout keys are the same for both responses).
+struct FoundCamera {
+  std::shared_ptr<const CameraAndLayout> found;
+  uint64_t photoKey = 0;
+};
+
 // What the stages of prepareScene() hand on to each other besides the PreparedScene they fill.
 struct Preparation {
   Preparation(const SceneDoc& d, const PrepareOptions& o) : doc(d), opt(o) { ps.doc = d; }
@@ -612,8 +620,9 @@ struct Preparation {
   // (the camera estimate reduces the photo itself); set by the stage, read by runStage.
   std::array<int, 2> stagePx{};
   std::vector<StageStep> stageSteps;  // the steps a stage timed (StageRecord::steps), set by it
-  // The photo as loaded, before the response decoded it: kept when the response check will
-  // prepare it again with sRGB (PrepareOptions::checkResponseByLightFit).
+  // The photo as loaded, decoded as sRGB (srgbDecoded) before the response decoded it with the
+  // curve: kept when the response check will prepare it again with sRGB
+  // (PrepareOptions::checkResponseByLightFit).
   std::optional<LoadedImage> photoAsLoaded;
   MeshCache* meshes = nullptr;  // the objects' meshes, shared by the response check's candidates
   // The response check's full comparison: the last lighting estimate's decomposition waits for
@@ -621,6 +630,11 @@ struct Preparation {
   // `pendingStage`: the stage whose estimate waits, and the prefix of its notes as warnings.
   bool deferLastDecomposition = false;
   std::string pendingStage, pendingNotes;
+  // The camera the camera stage found (FoundCamera): kept when `handsCameraOn` (the response
+  // check's copies hand theirs to the preparation of the same response after them); when set
+  // before the stage, taken instead of estimating it again if the photo is the same.
+  FoundCamera camera;
+  bool handsCameraOn = false;
 
   // The image the image stages read, and the camera in its pixels.
   const ImageF& workPhoto() const { return work.reduced ? work.photo : ps.photo.linearRgb; }
@@ -745,6 +759,19 @@ Status loadPhoto(Preparation& p, std::string& detail) {
   return {};
 }
 
+// `photo` decoded as the response stage decodes it with sRGB (from its 8-bit `codes` when
+// found, else its values): what the response check's sRGB candidates read, its copy's included,
+// so that the copy's camera serves the full-size preparation (Preparation::camera). The loader's
+// sRGB values differ from it in some values (their fingerprints differed on the example and on
+// York); decoding it again with sRGB changes nothing.
+LoadedImage srgbDecoded(const LoadedImage& photo, const std::vector<unsigned char>* codes) {
+  LoadedImage out = photo;
+  if (codes) redecodePhotoFromCodes(out.linearRgb, *codes, CameraResponse::srgb());
+  else if (out.wasSrgbEncoded)
+    redecodePhoto(out.linearRgb, out.sourceBitsPerChannel, CameraResponse::srgb());
+  return out;
+}
+
 // The camera response; from here on everything works in the linearised radiance.
 Status chooseResponse(Preparation& p, std::string& detail) {
   ResponseEstimateOptions ro = p.opt.responseEstimate;
@@ -766,7 +793,7 @@ Status chooseResponse(Preparation& p, std::string& detail) {
   for (const auto& w : chosen.warnings) ps.warnings.push_back(w);
   if (p.opt.checkResponseByLightFit && ps.responseEstimate &&
       ps.response.family() == ResponseFamily::ToeShoulder)
-    p.photoAsLoaded = ps.photo;
+    p.photoAsLoaded = srgbDecoded(ps.photo, shareCodes ? &codes : nullptr);
   if (shareCodes) redecodePhotoFromCodes(ps.photo.linearRgb, codes, ps.response);
   else if (ps.photo.wasSrgbEncoded)
     redecodePhoto(ps.photo.linearRgb, ps.photo.sourceBitsPerChannel, ps.response);
@@ -789,19 +816,50 @@ Status makeWorkingCopy(Preparation& p, std::string& detail) {
   return {};
 }
 
+// FNV-1a over the photo's values, 64 bits at a time (a tail shorter than a word padded with
+// zeros), and its size: what the camera estimate reads of it.
+uint64_t photoFingerprint(const ImageF& photo) {
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&h](uint64_t v) { h = (h ^ v) * 1099511628211ull; };
+  for (const int v : {photo.width, photo.height, photo.channels}) mix(uint64_t(uint32_t(v)));
+  const auto* bytes = reinterpret_cast<const unsigned char*>(photo.data.data());
+  const size_t n = photo.data.size() * sizeof(float);
+  for (size_t i = 0; i < n; i += 8) {
+    uint64_t word = 0;
+    std::memcpy(&word, bytes + i, std::min<size_t>(8, n - i));
+    mix(word);
+  }
+  return h;
+}
+
+// The camera stage's detail when it took the camera the response check's copy found on the same
+// photo (Preparation::camera).
+const char* const kCameraOfTheCopy = "estimated from the photo once, for the response check's copy";
+
+// The camera and the back wall: the file's, or estimated from the photo, or the estimate that
+// an earlier preparation made on the same photo with the same keys (Preparation::camera).
 Status findCamera(Preparation& p, std::string& detail) {
-  auto cl = cameraAndLayoutOf(p.doc.camera, p.doc.layout, p.ps.photo, false, p.opt.cancel);
-  if (!cl) return cl.error();
-  p.ps.camera = cl->camera;
-  p.layoutCorners = cl->backWallPx;
-  detail = cl->estimate ? "estimated from the photo" : "the file's vanishing points and back wall";
-  if (cl->estimate) {  // the estimate reduces the photo itself (EstimateOptions::maxWorkingSidePx)
+  const bool keyed = p.camera.found || p.handsCameraOn;  // the fingerprint only when it serves
+  const uint64_t key = keyed ? photoFingerprint(p.ps.photo.linearRgb) : 0;
+  const bool reused = p.camera.found && p.camera.photoKey == key;
+  if (!reused) {
+    auto found = cameraAndLayoutOf(p.doc.camera, p.doc.layout, p.ps.photo, false, p.opt.cancel);
+    if (!found) return found.error();
+    p.camera = {std::make_shared<const CameraAndLayout>(std::move(*found)), key};
+  }
+  const CameraAndLayout& cl = *p.camera.found;
+  p.ps.camera = cl.camera;
+  p.layoutCorners = cl.backWallPx;
+  detail = !cl.estimate ? "the file's vanishing points and back wall"
+           : reused     ? kCameraOfTheCopy
+                        : "estimated from the photo";
+  if (cl.estimate) {  // the estimate reduces the photo itself (EstimateOptions::maxWorkingSidePx)
     const ImageF& photo = p.ps.photo.linearRgb;
-    const double s = cl->estimate->workingScale;
+    const double s = cl.estimate->workingScale;
     p.stagePx = {int(std::lround(photo.width * s)), int(std::lround(photo.height * s))};
   }
-  p.ps.cameraEstimate = std::move(cl->estimate);
-  for (const auto& w : cl->warnings) p.ps.warnings.push_back(w);
+  p.ps.cameraEstimate = cl.estimate;
+  for (const auto& w : cl.warnings) p.ps.warnings.push_back(w);
   return {};
 }
 
@@ -1431,6 +1489,7 @@ struct QuickCheck {
   std::array<int, 2> copyPx{};
   std::vector<StageStep> steps;
   double seconds = 0, cpuSeconds = 0;
+  FoundCamera curveCamera, srgbCamera;  // each copy's camera, for its response's full size
   double logRatio(double tolerance) const { return quickLogRatio(withCurve, withSrgb, tolerance); }
   int verdict(const PrepareOptions& opt) const {
     return quickResponseVerdict(withCurve, withSrgb, opt.responseFitTolerance, opt.responseQuick.margin);
@@ -1499,38 +1558,61 @@ PrepareOptions quickOptionsOf(const PrepareOptions& opt) {
   return q;
 }
 
-// One response's copy prepared through `stages` (from the photo `q` holds): its light fit's
-// residual (NaN when a stage failed) and its stages, named after `label`, as the check's steps.
-Status quickFit(Preparation& q, std::span<const Stage> stages, const std::string& label,
-                QuickCheck& quick, double& residual) {
+// One response's copy, prepared: whether its stages ran, its light fit's residual (NaN when a
+// stage failed), its stages as the check's steps, its size and the camera its camera stage found.
+struct CopyFit {
+  Status ran;
+  double residual = std::nan("");
+  std::vector<StageStep> steps;
+  std::array<int, 2> copyPx{};
+  FoundCamera camera;
+};
+
+// One response's copy prepared through `stages` (from the photo `q` holds), its stages named
+// after `label`.
+CopyFit quickFit(Preparation& q, std::span<const Stage> stages, const std::string& label) {
   q.lightingOptions.objective = false;
   q.lightingOptions.fitPixels = q.opt.responseQuick.fitPixels;
   q.lightingOptions.maxPasses = q.opt.responseQuick.maxPasses;
   q.lightingOptions.fitFunctionTolerance = q.opt.responseQuick.fitTolerance;
-  const Status ran = runStages(stages, q);
-  const std::vector<StageStep> steps = stepsOf(q.ps.stages, label);
-  quick.steps.insert(quick.steps.end(), steps.begin(), steps.end());
-  residual = ran ? q.ps.lighting.fitResidualRelative : std::nan("");
-  if (ran) quick.copyPx = q.ps.workingPx;
-  return ran;
+  q.handsCameraOn = true;
+  CopyFit out;
+  out.ran = runStages(stages, q);
+  out.steps = stepsOf(q.ps.stages, label);
+  if (out.ran) {
+    out.residual = q.ps.lighting.fitResidualRelative;
+    out.copyPx = q.ps.workingPx;
+  }
+  out.camera = q.camera;
+  return out;
 }
 
 // One copy prepared from `photo` (quickFit), lent to it and given back: no stage of a copy
 // changes the photo but the vignetting, which divides it in place (then the copy gets its own).
 // At 12 MP a copy of the photo is 144 MB written and freed per response.
-Status quickFitOn(LoadedImage& photo, Preparation& q, const std::string& label, QuickCheck& quick,
-                  double& residual) {
+CopyFit quickFitOn(LoadedImage& photo, Preparation& q, const std::string& label) {
   const bool lend = !vignettingNotNeeded(q).empty();
   if (lend) q.ps.photo = std::move(photo);
   else q.ps.photo = photo;
-  const Status ran = quickFit(q, afterTheResponse(), label, quick, residual);
+  CopyFit fit = quickFit(q, afterTheResponse(), label);
   if (lend) photo = std::move(q.ps.photo);
-  return ran;
+  return fit;
 }
 
+// The names of the step that times both copies together (quickCheck).
+const char* const kCopiesSideBySide = "both copies, side by side";
+const char* const kCopiesOneAfterTheOther = "both copies, one after the other";
+
+// Whether the check may prepare its two candidates (the copies, or the full check's) side by
+// side: not when the preparation is held to one thread (PrepareOptions::threads 1), which
+// prepares them one after the other.
+bool candidatesSideBySide(const PrepareOptions& opt) { return opt.threads != 1; }
+
 // The quick comparison of `curved`, whose response stage fitted a curve: its decoded photo with
-// the curve, and the photo as loaded with sRGB, each lent to a copy's preparation. Fails only
-// when cancelled.
+// the curve, and the photo as loaded with sRGB, each lent to a copy's preparation, the two side
+// by side (runAlongside: they share nothing they write, as the full check's candidates) or,
+// held to one thread, one after the other. Each copy's camera is kept for the full-size
+// preparation of its response. Fails only when cancelled.
 Expected<QuickCheck> quickCheck(Preparation& curved) {
   QuickCheck quick;
   if (!(curved.opt.responseQuick.maxPixels > 0)) return quick;
@@ -1538,15 +1620,29 @@ Expected<QuickCheck> quickCheck(Preparation& curved) {
   const PrepareOptions qopt = quickOptionsOf(curved.opt);
   Preparation curve(curved.doc, qopt);
   curve.ps.response = curved.ps.response;
-  const Status a = quickFitOn(curved.ps.photo, curve, "copy, curve: ", quick, quick.withCurve);
-  if (!a && isCancelled(a.error())) return a.error();
   const SceneDoc srgbDoc = withSrgb(curved.doc);
   Preparation srgb(srgbDoc, qopt);
   srgb.ps.response = CameraResponse::srgb();  // the photo as loaded: decoded as sRGB
-  const Status b = quickFitOn(*curved.photoAsLoaded, srgb, "copy, sRGB: ", quick, quick.withSrgb);
-  if (!b && isCancelled(b.error())) return b.error();
+  CopyFit a, b;
+  const auto curveCopy = [&] { a = quickFitOn(curved.ps.photo, curve, "copy, curve: "); };
+  const auto srgbCopy = [&] { b = quickFitOn(*curved.photoAsLoaded, srgb, "copy, sRGB: "); };
+  const bool sideBySide = candidatesSideBySide(curved.opt);
+  if (sideBySide) runAlongside(curveCopy, srgbCopy);
+  else {
+    curveCopy();
+    if (a.ran || !isCancelled(a.ran.error())) srgbCopy();
+  }
+  for (const CopyFit* fit : {&a, &b})
+    if (!fit->ran && isCancelled(fit->ran.error())) return fit->ran.error();
+  quick.withCurve = a.residual, quick.withSrgb = b.residual;
+  quick.copyPx = b.ran ? b.copyPx : a.copyPx;
+  quick.steps = a.steps;
+  quick.steps.insert(quick.steps.end(), b.steps.begin(), b.steps.end());
+  quick.curveCamera = a.camera, quick.srgbCamera = b.camera;
   StageRecord timing;
   clock.stamp(timing);
+  quick.steps.push_back(
+      {sideBySide ? kCopiesSideBySide : kCopiesOneAfterTheOther, timing.seconds, timing.cpuSeconds});
   quick.seconds = timing.seconds;
   quick.cpuSeconds = timing.cpuSeconds;
   return quick;
@@ -1573,6 +1669,7 @@ Status decomposeTheKept(Preparation& p) {
 // The copies kept the curve: it is prepared alone.
 Expected<PreparedScene> finishWithTheCurve(Preparation& curved, const QuickCheck& quick) {
   curved.photoAsLoaded.reset();
+  curved.camera = quick.curveCamera;
   if (Status st = runStages(afterTheResponse(), curved); !st) return st.error();
   const StageClock now;  // the record's seconds: the copies'
   curved.ps.stages.push_back(checkRecord(
@@ -1618,10 +1715,6 @@ PrepareOptions alongsideOptionsOf(const PrepareOptions& opt) {
   q.progress = nullptr;
   return q;
 }
-
-// Whether the full check may prepare its two candidates side by side: not when the preparation
-// is held to one thread (PrepareOptions::threads 1), which prepares them one after the other.
-bool candidatesSideBySide(const PrepareOptions& opt) { return opt.threads != 1; }
 
 // The full check's two candidates, independent of each other: the curve's stages after the
 // response (on the calling thread, with its progress reports) and sRGB's from the response on
@@ -1685,6 +1778,7 @@ Expected<PreparedScene> checkTheCurveByTheLightFit(Preparation& curved, const Qu
   curved.meshes = srgb.meshes = &meshes;
   srgb.ps.photo = std::move(*curved.photoAsLoaded);
   curved.photoAsLoaded.reset();
+  curved.camera = quick.curveCamera, srgb.camera = quick.srgbCamera;
   curved.deferLastDecomposition = srgb.deferLastDecomposition = true;
   const size_t curveFirst = curved.ps.stages.size();
   Status ran;
@@ -1715,6 +1809,7 @@ Expected<PreparedScene> prepareSrgbInstead(Preparation& curved, QuickCheck quick
   Preparation srgb(srgbDoc, curved.opt);
   srgb.ps.photo = std::move(*curved.photoAsLoaded);
   curved.photoAsLoaded.reset();
+  srgb.camera = quick.srgbCamera;
   Status ran = runStages(theResponseStage(), srgb);
   const std::vector<StageStep> decode = stepsOf(srgb.ps.stages, "sRGB: ");
   quick.steps.insert(quick.steps.end(), decode.begin(), decode.end());
