@@ -33,9 +33,17 @@ photos whose power moved) and OUT/response_power_scan.png (left: per photo, the 
 of each scanned power against its object RMSE change; right: cameras / plain per rule and half).
 --from-csv merges earlier runs' CSVs (no rendering).
 
+--york P1020177,P1080015 instead scans York photos (a scene of the photo alone, as
+bench_response_check_cost.py makes it; no truth, so no object RMSE): per photo and power the light
+fit's residual, the noise objective and whether the curve is plausible by bench_response_york.py's
+rule (at most 6 stops between codes 128 and 254, code 128 within 1/4-4 of sRGB's value); writes
+OUT/response_power_scan_york.csv and prints, per rule, the power it picks and that curve's
+plausibility.
+
 usage: bench_response_power_scan.py INLAY_CLI --variants DIR --photos t01_s1,t01_plain,... [--out OUT]
                                     [--spp 8] [--scan 0.6,0.8,1.25] [--rules light<=1.0,joint:0.1<=0.95]
                                     [--from-csv A.csv,B.csv]
+       bench_response_power_scan.py INLAY_CLI --york P1020177,... [--spp 1] [--scan ...] [--out OUT]
 """
 import csv, json, math, os, re, statistics, subprocess, sys, time
 
@@ -113,8 +121,71 @@ def measure(cli, tools, vdir, name, out, spp, scan):
     return row
 
 
+def plausible(cli, scene, curve, out_json):
+    """(stops between codes 128 and 254, code 128 over sRGB's, plausible) of `curve` as
+    bench_response_york.py judges it, from `inlay-cli response` with the curve set explicitly."""
+    j = json.load(open(scene))
+    j.setdefault("camera", {})["response"] = {"family": "toe_shoulder", "power": curve[0], "toe": curve[1],
+                                              "shoulder": curve[2]}
+    s = out_json[:-5] + "_scene.json"
+    json.dump(j, open(s, "w"))
+    run([cli, "response", s, "-o", out_json, "--quiet"])
+    t = json.load(open(out_json))["table"]
+    t = [sum(v) / len(v) if isinstance(v, list) else v for v in t]
+    srgb128 = ((128 / 255 + 0.055) / 1.055) ** 2.4
+    stops, mid = math.log2(max(t[254], 1e-30) / max(t[128], 1e-30)), t[128] / srgb128
+    return round(stops, 3), round(mid, 4), stops <= 6 and 0.25 <= mid <= 4
+
+
+def measure_york(cli, york, name, out, spp, scan):
+    """The power scan of York photo `name`: residuals, noise objectives and plausibility, no score."""
+    scene = os.path.join(out, name + "_scene.json")
+    photo = os.path.join(york, name + ".jpg")
+    json.dump({"format": "inlay-scene", "version": 1, "photo": photo}, open(scene, "w"))
+    row = {"photo": name, "half": "York", "curve": "unknown"}
+    for m in [1.0] + scan:
+        k = "x%g" % m
+        if m == 1.0:
+            p, secs = run([cli, "render", scene, "-o", os.path.join(out, name + "_x1.png"), "--seed", "1", "--spp",
+                           str(spp), "--seconds", "0", "--noise", "0", "--lights-json", os.path.join(out, name + "_l.json")])
+            if p.returncode:
+                print(name, p.stderr.strip()[-300:], file=sys.stderr)
+                return None
+            c0 = used_curve(p.stderr)
+            row.update({"auto_power": c0[0], "auto_toe": c0[1], "auto_shoulder": c0[2]})
+            c, resp = c0, "auto"
+        else:
+            c = (min(2.5, max(0.4, c0[0] * m)), c0[1], c0[2])
+            resp = {"family": "toe_shoulder", "power": c[0], "toe": c[1], "shoulder": c[2]}
+            j = {"format": "inlay-scene", "version": 1, "photo": photo, "camera": {"response": resp}}
+            sc = os.path.join(out, "%s_%s.json" % (name, k))
+            json.dump(j, open(sc, "w"))
+            p, secs = run([cli, "render", sc, "-o", os.path.join(out, "%s_%s.png" % (name, k)), "--seed", "1",
+                           "--spp", str(spp), "--seconds", "0", "--noise", "0", "--lights-json",
+                           os.path.join(out, name + "_l.json")])
+        fit = json.load(open(os.path.join(out, name + "_l.json"))).get("fit", {}) if not p.returncode else {}
+        stops, mid, ok = plausible(cli, scene, c, os.path.join(out, "%s_%s_resp.json" % (name, k)))
+        row.update({"residual_" + k: fit.get("residual_relative"), "s_" + k: round(secs, 1),
+                    "noise_" + k: round(noise_objective(cli, photo, c, os.path.join(out, name + "_n.json")), 5),
+                    "stops_" + k: stops, "mid_" + k: mid, "plausible_" + k: ok, "rmse_" + k: ""})
+    print(json.dumps(row), flush=True)
+    return row
+
+
+def york_choices(rows, rules):
+    """Per York photo and rule: the power picked and whether its curve is plausible."""
+    out = []
+    for r in rows:
+        for rule in rules:
+            if rule == "oracle":
+                continue
+            k = choice(r, rule)
+            out.append({"photo": r["photo"], "rule": rule, "picked": k, "plausible": r["plausible_" + k]})
+    return out
+
+
 def keys_of(r):
-    return sorted({k[len("rmse_"):] for k in r if k.startswith("rmse_") and r[k] not in (None, "")},
+    return sorted({k[len("residual_"):] for k in r if k.startswith("residual_") and r[k] not in (None, "")},
                   key=lambda k: float(k[1:]))
 
 
@@ -202,6 +273,17 @@ def main():
     os.makedirs(out, exist_ok=True)
     rules = ["auto"] + opt("--rules", DEFAULT_RULES).split(",") + ["oracle"]
     rows = []
+    if opt("--york", ""):
+        york = os.path.join(benchlib.shared_dir(), "york")
+        scan = [float(x) for x in opt("--scan", "0.6,0.8,1.25").split(",")]
+        for name in opt("--york", "").split(","):
+            r = measure_york(cli, york, name, out, int(opt("--spp", "1")), scan)
+            if r:
+                rows.append({k: str(v) for k, v in r.items()})
+        benchlib.write_csv(os.path.join(out, "response_power_scan_york.csv"), rows)
+        for c in york_choices(rows, rules):
+            print(c)
+        return 0
     if opt("--from-csv", ""):
         for f in opt("--from-csv", "").split(","):
             rows += [dict(r) for r in csv.DictReader(open(f))]
