@@ -736,202 +736,202 @@
         <translation>Fluchtpunkte und Rückwand aus der Datei</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>estimated from the photo once, for the response check&apos;s copy</source>
         <translation>einmal aus dem Foto geschätzt, für die Kopie der Prüfung der Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 m high</source>
         <translation>%1 m hoch</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 matte</source>
         <translation>%1 Maske</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 mattes</source>
         <translation>%1 Masken</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>v %1 applied</source>
         <translation>v %1 angewandt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>das Residuum der Lichtanpassung zeigt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>the light fit run again</source>
         <translation>die Lichtanpassung erneut ausgeführt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 surface built</source>
         <translation>%1 Fläche gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 surfaces built</source>
         <translation>%1 Flächen gebaut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 surface</source>
         <translation>%1 Fläche</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 surfaces</source>
         <translation>%1 Flächen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 reflective</source>
         <translation>%1 spiegelnd</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 outlined</source>
         <translation>%1 umrissen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 placed in 3D</source>
         <translation>%1 in 3D platziert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 sun</source>
         <translation>%1 Sonne</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 suns</source>
         <translation>%1 Sonnen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 Himmel durch ein nicht sichtbares Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 Himmel durch nicht sichtbare Fenster</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 light</source>
         <translation>%1 Licht</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 lights</source>
         <translation>%1 Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>%1 pass</source>
         <translation>%1 Durchgang</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>%1 passes</source>
         <translation>%1 Durchgänge</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>die Strahlen der ersten Schätzung wiederverwendet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 Punkte x %2 Strahlen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 light fit iterations</source>
         <translation>%1 Iterationen der Lichtanpassung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 von %2 Licht verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 von %2 Lichtern verfeinert</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>%1 evaluation</source>
         <translation>%1 Auswertung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>%1 evaluations</source>
         <translation>%1 Auswertungen</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die erste Schätzung passt besser zum Foto (Log-Residuum %2 gegen %3) und bleibt; die Neuanpassung brauchte %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>Lichter um höchstens %1 % ihrer Größe bewegt; die Neuanpassung bleibt (Log-Residuum %2 gegen %3 der ersten Schätzung)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>aus %1 x %2 px: Karten %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>surfaces cast %1 s</source>
         <translation>Flächen je Pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>%1 object</source>
         <translation>%1 Objekt</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="219"/>
         <source>%1 objects</source>
         <translation>%1 Objekte</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="220"/>
         <source>none</source>
         <translation>keine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>the curve kept: %1</source>
         <translation>Kurve behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="218"/>
+        <location filename="../app/studio/engine_text.cpp" line="224"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB behalten: %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>das Residuum der Lichtanpassung ist mit der angepassten Kurve %1 %2</translation>
     </message>
@@ -951,97 +951,97 @@
         <translation>Fluchtpunkt %1: seine Linien sind im Foto fast parallel, daher ist seine Entfernung unsicher</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>mit sRGB %1; auf Kopien von %2 x %3 px %4 gegen %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>mit sRGB %1; kein schneller Vergleich</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>log ratio %1 beyond %2</source>
         <translation>Log-Verhältnis %1 jenseits von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>log ratio %1 within %2</source>
         <translation>Log-Verhältnis %1 innerhalb von %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>line %1</source>
         <translation>Zeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>header line %1</source>
         <translation>Kopfzeile %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>vertex %1</source>
         <translation>Eckpunkt %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>face %1</source>
         <translation>Fläche %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>sun %1</source>
         <translation>Sonne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>lights</source>
         <translation>Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="241"/>
         <source>estimate</source>
         <translation>Schätzung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="236"/>
+        <location filename="../app/studio/engine_text.cpp" line="242"/>
         <source>lighting</source>
         <translation>Beleuchtung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="237"/>
+        <location filename="../app/studio/engine_text.cpp" line="243"/>
         <source>lighting (refit)</source>
         <translation>Beleuchtung (neu angepasst)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="238"/>
+        <location filename="../app/studio/engine_text.cpp" line="244"/>
         <source>light refinement</source>
         <translation>Verfeinerung der Lichter</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="239"/>
+        <location filename="../app/studio/engine_text.cpp" line="245"/>
         <source>decomposition</source>
         <translation>Zerlegung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="240"/>
+        <location filename="../app/studio/engine_text.cpp" line="246"/>
         <source>layout</source>
         <translation>Raumaufteilung</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="241"/>
+        <location filename="../app/studio/engine_text.cpp" line="247"/>
         <source>camera response</source>
         <translation>Kamerakennlinie</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="242"/>
+        <location filename="../app/studio/engine_text.cpp" line="248"/>
         <source>kept sRGB</source>
         <translation>sRGB beibehalten</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="305"/>
+        <location filename="../app/studio/engine_text.cpp" line="311"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3254,53 +3254,53 @@ Aus %1 Kanten in %2 ms geschätzt.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="72"/>
+        <location filename="../app/studio/main.cpp" line="81"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Synthetische Objekte in ein Foto einfügen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="77"/>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Eine Szenendatei (.json) oder ein Foto; ohne Angabe: das Beispiel.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="81"/>
+        <location filename="../app/studio/main.cpp" line="90"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Das Fenster nach dem Rendern in &lt;file&gt; speichern, dann beenden.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="85"/>
+        <location filename="../app/studio/main.cpp" line="94"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Abzuwartende Samples pro Pixel (Vorgabe 4).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="89"/>
+        <location filename="../app/studio/main.cpp" line="98"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>Stattdessen: Render-Sekunden des angezeigten Bildes, auf die gewartet wird.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="93"/>
+        <location filename="../app/studio/main.cpp" line="102"/>
         <source>Show the Log dock across the bottom of the window.</source>
         <translation>Das Protokoll über die ganze Breite unten im Fenster zeigen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="96"/>
+        <location filename="../app/studio/main.cpp" line="105"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Ungesicherte Arbeit nach einem Absturz ohne Nachfrage wiederherstellen.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="99"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Das Modell &lt;file&gt; in die Szene einfügen, sobald sie vorbereitet ist.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="118"/>
+        <location filename="../app/studio/main.cpp" line="127"/>
         <source>Give at most one file.</source>
         <translation>Geben Sie höchstens eine Datei an.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="125"/>
-        <location filename="../app/studio/main.cpp" line="133"/>
+        <location filename="../app/studio/main.cpp" line="134"/>
+        <location filename="../app/studio/main.cpp" line="142"/>
         <source>expected a number &gt;= 0</source>
         <translation>eine Zahl &gt;= 0 erwartet</translation>
     </message>

@@ -736,202 +736,202 @@
         <translation>points de fuite et mur du fond du fichier</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="173"/>
+        <location filename="../app/studio/engine_text.cpp" line="179"/>
         <source>estimated from the photo once, for the response check&apos;s copy</source>
         <translation>estimée une seule fois d&apos;après la photo, pour la copie de la vérification de la courbe de réponse</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="175"/>
+        <location filename="../app/studio/engine_text.cpp" line="181"/>
         <source>%1 x %2 m</source>
         <translation>%1 x %2 m</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="176"/>
+        <location filename="../app/studio/engine_text.cpp" line="182"/>
         <source>%1 m high</source>
         <translation>%1 m de haut</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="177"/>
+        <location filename="../app/studio/engine_text.cpp" line="183"/>
         <source>%1 matte</source>
         <translation>%1 masque</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="178"/>
+        <location filename="../app/studio/engine_text.cpp" line="184"/>
         <source>%1 mattes</source>
         <translation>%1 masques</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="179"/>
+        <location filename="../app/studio/engine_text.cpp" line="185"/>
         <source>v %1 applied</source>
         <translation>v %1 appliqué</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="180"/>
+        <location filename="../app/studio/engine_text.cpp" line="186"/>
         <source>the light fit&apos;s residual shows %1</source>
         <translation>le résidu de l&apos;ajustement des lumières montre %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="181"/>
+        <location filename="../app/studio/engine_text.cpp" line="187"/>
         <source>the light fit run again</source>
         <translation>l&apos;ajustement des lumières refait</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="182"/>
+        <location filename="../app/studio/engine_text.cpp" line="188"/>
         <source>%1 surface built</source>
         <translation>%1 surface construite</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="183"/>
+        <location filename="../app/studio/engine_text.cpp" line="189"/>
         <source>%1 surfaces built</source>
         <translation>%1 surfaces construites</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="184"/>
+        <location filename="../app/studio/engine_text.cpp" line="190"/>
         <source>%1 surface</source>
         <translation>%1 surface</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="185"/>
+        <location filename="../app/studio/engine_text.cpp" line="191"/>
         <source>%1 surfaces</source>
         <translation>%1 surfaces</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="186"/>
+        <location filename="../app/studio/engine_text.cpp" line="192"/>
         <source>%1 reflective</source>
         <translation>%1 réfléchissante(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="187"/>
+        <location filename="../app/studio/engine_text.cpp" line="193"/>
         <source>%1 outlined</source>
         <translation>%1 détourée(s)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="188"/>
+        <location filename="../app/studio/engine_text.cpp" line="194"/>
         <source>%1 placed in 3D</source>
         <translation>%1 placée(s) en 3D</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="189"/>
+        <location filename="../app/studio/engine_text.cpp" line="195"/>
         <source>%1 sun</source>
         <translation>%1 soleil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="190"/>
+        <location filename="../app/studio/engine_text.cpp" line="196"/>
         <source>%1 suns</source>
         <translation>%1 soleils</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="191"/>
+        <location filename="../app/studio/engine_text.cpp" line="197"/>
         <source>%1 sky through an unseen window</source>
         <translation>%1 ciel par une fenêtre hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="192"/>
+        <location filename="../app/studio/engine_text.cpp" line="198"/>
         <source>%1 skies through unseen windows</source>
         <translation>%1 ciels par des fenêtres hors champ</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="193"/>
+        <location filename="../app/studio/engine_text.cpp" line="199"/>
         <source>%1 light</source>
         <translation>%1 lumière</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="194"/>
+        <location filename="../app/studio/engine_text.cpp" line="200"/>
         <source>%1 lights</source>
         <translation>%1 lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="195"/>
+        <location filename="../app/studio/engine_text.cpp" line="201"/>
         <source>%1 pass</source>
         <translation>%1 passe</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="196"/>
+        <location filename="../app/studio/engine_text.cpp" line="202"/>
         <source>%1 passes</source>
         <translation>%1 passes</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="197"/>
+        <location filename="../app/studio/engine_text.cpp" line="203"/>
         <source>the first estimate&apos;s rays replayed</source>
         <translation>rayons de la première estimation rejoués</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="198"/>
+        <location filename="../app/studio/engine_text.cpp" line="204"/>
         <source>%1 points x %2 rays</source>
         <translation>%1 points x %2 rayons</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="199"/>
+        <location filename="../app/studio/engine_text.cpp" line="205"/>
         <source>%1 light fit iterations</source>
         <translation>%1 itérations de l&apos;ajustement des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="200"/>
+        <location filename="../app/studio/engine_text.cpp" line="206"/>
         <source>%1 of %2 light refined</source>
         <translation>%1 lumière sur %2 affinée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="201"/>
+        <location filename="../app/studio/engine_text.cpp" line="207"/>
         <source>%1 of %2 lights refined</source>
         <translation>%1 lumières sur %2 affinées</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="202"/>
+        <location filename="../app/studio/engine_text.cpp" line="208"/>
         <source>%1 evaluation</source>
         <translation>%1 évaluation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="203"/>
+        <location filename="../app/studio/engine_text.cpp" line="209"/>
         <source>%1 evaluations</source>
         <translation>%1 évaluations</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="204"/>
+        <location filename="../app/studio/engine_text.cpp" line="210"/>
         <source>lights moved by at most %1 % of their size; the first estimate fits the photo better (log residual %2 against %3) and is kept; the refit took %4</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; la première estimation s&apos;accorde mieux à la photo (résidu log %2 contre %3) et est conservée ; le réajustement a pris %4</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="207"/>
+        <location filename="../app/studio/engine_text.cpp" line="213"/>
         <source>lights moved by at most %1 % of their size; the refit is kept (log residual %2 against the first estimate&apos;s %3)</source>
         <translation>lumières déplacées d&apos;au plus %1 % de leur taille ; le réajustement est conservé (résidu log %2 contre %3 pour la première estimation)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="210"/>
+        <location filename="../app/studio/engine_text.cpp" line="216"/>
         <source>from %1 x %2 px: maps %3 s</source>
         <translation>depuis %1 x %2 px : cartes %3 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="211"/>
+        <location filename="../app/studio/engine_text.cpp" line="217"/>
         <source>surfaces cast %1 s</source>
         <translation>surfaces par pixel %1 s</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="212"/>
+        <location filename="../app/studio/engine_text.cpp" line="218"/>
         <source>%1 object</source>
         <translation>%1 objet</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="213"/>
+        <location filename="../app/studio/engine_text.cpp" line="219"/>
         <source>%1 objects</source>
         <translation>%1 objets</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="214"/>
+        <location filename="../app/studio/engine_text.cpp" line="220"/>
         <source>none</source>
         <translation>aucun</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="217"/>
+        <location filename="../app/studio/engine_text.cpp" line="223"/>
         <source>the curve kept: %1</source>
         <translation>courbe conservée : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="218"/>
+        <location filename="../app/studio/engine_text.cpp" line="224"/>
         <source>sRGB kept: %1</source>
         <translation>sRGB conservé : %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="219"/>
+        <location filename="../app/studio/engine_text.cpp" line="225"/>
         <source>the light fit&apos;s residual with the fitted %1 is %2</source>
         <translation>le résidu de l&apos;ajustement de la lumière vaut %2 avec la courbe ajustée %1</translation>
     </message>
@@ -951,97 +951,97 @@
         <translation>point de fuite %1 : ses lignes sont presque parallèles sur la photo, sa distance est donc incertaine</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="225"/>
+        <location filename="../app/studio/engine_text.cpp" line="227"/>
         <source>with sRGB %1; on %2 x %3 copies %4 against %5</source>
         <translation>%1 avec sRGB ; sur des copies de %2 x %3 px %4 contre %5</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="222"/>
+        <location filename="../app/studio/engine_text.cpp" line="228"/>
         <source>with sRGB %1; no quick comparison</source>
         <translation>%1 avec sRGB ; pas de comparaison rapide</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="223"/>
+        <location filename="../app/studio/engine_text.cpp" line="229"/>
         <source>log ratio %1 beyond %2</source>
         <translation>rapport log %1 au-delà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="224"/>
+        <location filename="../app/studio/engine_text.cpp" line="230"/>
         <source>log ratio %1 within %2</source>
         <translation>rapport log %1 en deçà de %2</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="229"/>
+        <location filename="../app/studio/engine_text.cpp" line="235"/>
         <source>line %1</source>
         <translation>ligne %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="230"/>
+        <location filename="../app/studio/engine_text.cpp" line="236"/>
         <source>header line %1</source>
         <translation>ligne d&apos;en-tête %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="231"/>
+        <location filename="../app/studio/engine_text.cpp" line="237"/>
         <source>vertex %1</source>
         <translation>sommet %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="232"/>
+        <location filename="../app/studio/engine_text.cpp" line="238"/>
         <source>face %1</source>
         <translation>face %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="233"/>
+        <location filename="../app/studio/engine_text.cpp" line="239"/>
         <source>sun %1</source>
         <translation>soleil %1</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="234"/>
+        <location filename="../app/studio/engine_text.cpp" line="240"/>
         <source>lights</source>
         <translation>lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="235"/>
+        <location filename="../app/studio/engine_text.cpp" line="241"/>
         <source>estimate</source>
         <translation>estimation</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="236"/>
+        <location filename="../app/studio/engine_text.cpp" line="242"/>
         <source>lighting</source>
         <translation>éclairage</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="237"/>
+        <location filename="../app/studio/engine_text.cpp" line="243"/>
         <source>lighting (refit)</source>
         <translation>éclairage (réajusté)</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="238"/>
+        <location filename="../app/studio/engine_text.cpp" line="244"/>
         <source>light refinement</source>
         <translation>affinage des lumières</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="239"/>
+        <location filename="../app/studio/engine_text.cpp" line="245"/>
         <source>decomposition</source>
         <translation>décomposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="240"/>
+        <location filename="../app/studio/engine_text.cpp" line="246"/>
         <source>layout</source>
         <translation>disposition</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="241"/>
+        <location filename="../app/studio/engine_text.cpp" line="247"/>
         <source>camera response</source>
         <translation>réponse de l&apos;appareil</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="242"/>
+        <location filename="../app/studio/engine_text.cpp" line="248"/>
         <source>kept sRGB</source>
         <translation>sRGB conservée</translation>
     </message>
     <message>
-        <location filename="../app/studio/engine_text.cpp" line="305"/>
+        <location filename="../app/studio/engine_text.cpp" line="311"/>
         <source>%1: %2</source>
         <translation>%1 : %2</translation>
     </message>
@@ -3254,53 +3254,53 @@ Estimée à partir de %1 arêtes en %2 ms.</translation>
 <context>
     <name>main</name>
     <message>
-        <location filename="../app/studio/main.cpp" line="72"/>
+        <location filename="../app/studio/main.cpp" line="81"/>
         <source>Insert synthetic objects into a photograph.</source>
         <translation>Insérer des objets de synthèse dans une photographie.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="77"/>
+        <location filename="../app/studio/main.cpp" line="86"/>
         <source>A scene file (.json) or a photo; none: the example.</source>
         <translation>Un fichier de scène (.json) ou une photo ; aucun : l&apos;exemple.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="81"/>
+        <location filename="../app/studio/main.cpp" line="90"/>
         <source>Grab the window to &lt;file&gt; once rendered, then exit.</source>
         <translation>Capturer la fenêtre dans &lt;file&gt; une fois rendue, puis quitter.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="85"/>
+        <location filename="../app/studio/main.cpp" line="94"/>
         <source>Samples per pixel to wait for (default 4).</source>
         <translation>Échantillons par pixel à attendre (4 par défaut).</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="89"/>
+        <location filename="../app/studio/main.cpp" line="98"/>
         <source>Instead: render seconds of the shown frame to wait for.</source>
         <translation>À la place : secondes de rendu de l&apos;image affichée à attendre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="93"/>
+        <location filename="../app/studio/main.cpp" line="102"/>
         <source>Show the Log dock across the bottom of the window.</source>
         <translation>Afficher le journal sur toute la largeur du bas de la fenêtre.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="96"/>
+        <location filename="../app/studio/main.cpp" line="105"/>
         <source>Restore unsaved work left by a crash without asking.</source>
         <translation>Restaurer sans demander le travail non enregistré laissé par un plantage.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="99"/>
+        <location filename="../app/studio/main.cpp" line="108"/>
         <source>Insert the model &lt;file&gt; into the scene once it is prepared.</source>
         <translation>Insérer le modèle &lt;file&gt; dans la scène dès qu’elle est préparée.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="118"/>
+        <location filename="../app/studio/main.cpp" line="127"/>
         <source>Give at most one file.</source>
         <translation>Donnez au plus un fichier.</translation>
     </message>
     <message>
-        <location filename="../app/studio/main.cpp" line="125"/>
-        <location filename="../app/studio/main.cpp" line="133"/>
+        <location filename="../app/studio/main.cpp" line="134"/>
+        <location filename="../app/studio/main.cpp" line="142"/>
         <source>expected a number &gt;= 0</source>
         <translation>un nombre &gt;= 0 est attendu</translation>
     </message>
