@@ -147,13 +147,7 @@ def plot(rows, path):
 
 def main():
     benchlib.args(__doc__)
-    opt = lambda k, d: benchlib.option(sys.argv, k, d)  # noqa: E731
-    build, label = sys.argv[1], opt("--label", "current")
-    out = opt("--out", os.path.join(HERE, "out"))
-    os.makedirs(out, exist_ok=True)
-    cli = os.path.join(build, "app", "inlay-cli")
-    path = os.path.join(out, "bench_refine_budget.csv")
-    rows = benchlib.read_csv(path) if os.path.exists(path) and "--append" in sys.argv else []
+    opt, build, label, out, cli, path, rows = benchlib.labelled_run("bench_refine_budget.csv")
     if "--plot-only" in sys.argv:
         plot(benchlib.read_csv(path), os.path.join(out, "bench_refine_budget.png"))
         return

@@ -24,7 +24,6 @@ import multiprocessing
 import os
 import signal
 import subprocess
-import sys
 import tempfile
 import threading
 import time
@@ -98,13 +97,7 @@ def prepare(cli, scene, way, slowdown, work):
 
 def main():
     benchlib.args(__doc__)
-    opt = lambda k, d: benchlib.option(sys.argv, k, d)  # noqa: E731
-    build, label = sys.argv[1], opt("--label", "current")
-    out = opt("--out", os.path.join(HERE, "out"))
-    os.makedirs(out, exist_ok=True)
-    cli = os.path.join(build, "app", "inlay-cli")
-    path = os.path.join(out, "bench_reproducible.csv")
-    rows = benchlib.read_csv(path) if os.path.exists(path) and "--append" in sys.argv else []
+    opt, build, label, out, cli, path, rows = benchlib.labelled_run("bench_reproducible.csv")
     work = os.path.join(out, "refine_budget_scenes")
     os.makedirs(work, exist_ok=True)
     wanted = opt("--scenes", "example,t08,P1020839").split(",")

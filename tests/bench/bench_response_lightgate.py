@@ -33,7 +33,7 @@ and half). --from-csv merges earlier runs' CSVs (no rendering).
 usage: bench_response_lightgate.py INLAY_CLI --variants DIR --photos t01_s2,t03_plain,... [--out OUT]
                                    [--spp 16] [--gates veto<=1.0,open<=1.0,...] [--from-csv A.csv,B.csv]
 """
-import csv, json, os, statistics, sys
+import csv, json, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -113,11 +113,8 @@ def summary(rows, gates):
             d = [chosen(r, g) - chosen(r, "auto") for r in hr]
             fitted = sum(1 for r in hr if r["candidate"] != "srgb" and chosen(r, g) == float(r["candidate_rmse"])
                          and float(r["candidate_rmse"]) != float(r["srgb_rmse"]))
-            pm, cm = statistics.median(plain), statistics.median(cams)
             out.append({"gate": g, "half": h, "photos": len(hr), "given_curve": fitted,
-                        "plain_median": round(pm, 4), "cameras_median": round(cm, 4),
-                        "cameras_mean": round(statistics.mean(cams), 4), "ratio": round(cm / pm, 3),
-                        "better": sum(1 for x in d if x < -0.005), "worse": sum(1 for x in d if x > 0.005)})
+                        **benchlib.cameras_against_plain(plain, cams, d)})
     return out
 
 

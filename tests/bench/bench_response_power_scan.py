@@ -45,7 +45,7 @@ usage: bench_response_power_scan.py INLAY_CLI --variants DIR --photos t01_s1,t01
                                     [--from-csv A.csv,B.csv]
        bench_response_power_scan.py INLAY_CLI --york P1020177,... [--spp 1] [--scan ...] [--out OUT]
 """
-import csv, json, math, os, re, statistics, subprocess, sys, time
+import csv, json, math, os, re, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -231,13 +231,10 @@ def summary(rows, rules):
             if not plain or not cams:
                 continue
             d = [num(r["rmse_" + choice(r, rule)]) - num(r["rmse_x1"]) for r in hr]
-            pm, cm = statistics.median(plain), statistics.median(cams)
             out.append({"rule": rule, "half": h, "photos": len(hr),
                         "power_moved": sum(1 for r in hr if choice(r, rule) != "x1"),
                         "plain_moved": sum(1 for r in hr if r["curve"] == "srgb" and choice(r, rule) != "x1"),
-                        "plain_median": round(pm, 4), "cameras_median": round(cm, 4),
-                        "cameras_mean": round(statistics.mean(cams), 4), "ratio": round(cm / pm, 3),
-                        "better": sum(1 for x in d if x < -0.005), "worse": sum(1 for x in d if x > 0.005)})
+                        **benchlib.cameras_against_plain(plain, cams, d)})
     return out
 
 

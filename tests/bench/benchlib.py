@@ -7,7 +7,7 @@ of earlier runs); --command names what wrote the CSV, --fresh says it ran just n
 then gives today's date and load):
     /usr/bin/python3 tests/bench/benchlib.py table CSV NAME --command "..." [--fresh] [--columns a,b,c]
 writes docs/bench/NAME.md (or under $INLAY_BENCH_TABLES)."""
-import contextlib, csv, datetime, json, os, subprocess, sys
+import contextlib, csv, datetime, json, os, statistics, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -256,3 +256,24 @@ if __name__ == "__main__":
     cols = option(a, "--columns", "")
     write_table(a[2], read_csv(a[1]), cols.split(",") if cols else None, source=a[1],
                 command=option(a, "--command", "?"), converted="--fresh" not in a)
+
+
+def cameras_against_plain(plain, cams, changes):
+    """The columns a camera-ratio summary shares: the plain and camera medians, their ratio, and
+    how many photos a rule made better or worse than the product by more than 0.005."""
+    pm, cm = statistics.median(plain), statistics.median(cams)
+    return {"plain_median": round(pm, 4), "cameras_median": round(cm, 4),
+            "cameras_mean": round(statistics.mean(cams), 4), "ratio": round(cm / pm, 3),
+            "better": sum(1 for x in changes if x < -0.005), "worse": sum(1 for x in changes if x > 0.005)}
+
+
+def labelled_run(csv_name):
+    """A build-labelled benchmark's start: (opt, build, label, out, cli, csv path, rows so far).
+    argv[1] is the build; --label, --out and --append as every such script reads them."""
+    opt = lambda k, d: option(sys.argv, k, d)  # noqa: E731
+    build, label = sys.argv[1], opt("--label", "current")
+    out = opt("--out", os.path.join(os.path.dirname(os.path.abspath(__file__)), "out"))
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, csv_name)
+    rows = read_csv(path) if os.path.exists(path) and "--append" in sys.argv else []
+    return opt, build, label, out, os.path.join(build, "app", "inlay-cli"), path, rows
