@@ -33,7 +33,7 @@ and half). --from-csv merges earlier runs' CSVs (no rendering).
 usage: bench_response_lightgate.py INLAY_CLI --variants DIR --photos t01_s2,t03_plain,... [--out OUT]
                                    [--spp 16] [--gates veto<=1.0,open<=1.0,...] [--from-csv A.csv,B.csv]
 """
-import csv, json, os, sys
+import json, os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -51,11 +51,7 @@ def is_srgb(est):
 
 def render(cli, tools, vdir, scene, response, tag, out, spp):
     """Object RMSE and the light fit's residual of `scene` rendered with camera.response `response`."""
-    j = json.load(open(scene))
-    j.setdefault("camera", {})["response"] = response
-    s = os.path.join(out, tag + ".json")
-    json.dump(j, open(s, "w"), indent=1)
-    lj = os.path.join(out, tag + "_lights.json")
+    s, lj = benchlib.scene_with_response(scene, response, out, tag)
     p, secs = brd.run([cli, "render", s, "-o", os.path.join(out, tag + ".png"), "--quiet", "--seed", "1", "--spp",
                        str(spp), "--seconds", "0", "--noise", "0", "--lights-json", lj])
     if p.returncode:
@@ -150,8 +146,7 @@ def main():
     gates = ["auto", "srgb"] + opt("--gates", "veto<=0.95,veto<=1.0,open<=0.95,open<=1.0").split(",") + ["oracle"]
     rows = []
     if opt("--from-csv", ""):
-        for f in opt("--from-csv", "").split(","):
-            rows += [dict(r) for r in csv.DictReader(open(f))]
+        rows = benchlib.rows_of_csvs(opt("--from-csv", ""))
     else:
         if not opt("--variants", "") or not opt("--photos", ""):
             sys.stderr.write("bench_response_lightgate.py: --variants DIR and --photos NAMES are needed\n")
@@ -160,12 +155,8 @@ def main():
         for name in opt("--photos", "").split(","):
             rows.append(measure(cli, tools, os.path.join(opt("--variants", ""), name), name, out,
                                 int(opt("--spp", "16"))))
-    benchlib.write_csv(os.path.join(out, "response_lightgate.csv"), rows)
     summ = summary(rows, gates)
-    benchlib.write_csv(os.path.join(out, "response_lightgate_summary.csv"), summ)
-    for s in summ:
-        print(s)
-    plot(rows, summ, os.path.join(out, "response_lightgate.png"))
+    benchlib.write_rows_and_summary(out, "response_lightgate", rows, summ, plot)
     return 0
 
 

@@ -45,7 +45,7 @@ usage: bench_response_power_scan.py INLAY_CLI --variants DIR --photos t01_s1,t01
                                     [--from-csv A.csv,B.csv]
        bench_response_power_scan.py INLAY_CLI --york P1020177,... [--spp 1] [--scan ...] [--out OUT]
 """
-import csv, json, math, os, re, subprocess, sys, time
+import json, math, os, re, subprocess, sys, time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -81,11 +81,7 @@ def noise_objective(cli, photo, curve, out_json):
 
 def render(cli, tools, vdir, scene, response, tag, out, spp):
     """Object RMSE, the light fit's residual and the used curve of `scene` rendered with `response`."""
-    j = json.load(open(scene))
-    j.setdefault("camera", {})["response"] = response
-    s = os.path.join(out, tag + ".json")
-    json.dump(j, open(s, "w"), indent=1)
-    lj = os.path.join(out, tag + "_lights.json")
+    s, lj = benchlib.scene_with_response(scene, response, out, tag)
     comp = os.path.join(out, tag + ".png")
     p, secs = run([cli, "render", s, "-o", comp, "--seed", "1", "--spp", str(spp), "--seconds", "0", "--noise", "0",
                    "--lights-json", lj])
@@ -282,8 +278,7 @@ def main():
             print(c)
         return 0
     if opt("--from-csv", ""):
-        for f in opt("--from-csv", "").split(","):
-            rows += [dict(r) for r in csv.DictReader(open(f))]
+        rows = benchlib.rows_of_csvs(opt("--from-csv", ""))
     else:
         if not opt("--variants", "") or not opt("--photos", ""):
             sys.stderr.write("bench_response_power_scan.py: --variants DIR and --photos NAMES are needed\n")
@@ -294,12 +289,8 @@ def main():
             r = measure(cli, tools, os.path.join(opt("--variants", ""), name), name, out, int(opt("--spp", "8")), scan)
             if r:
                 rows.append(r)
-    benchlib.write_csv(os.path.join(out, "response_power_scan.csv"), rows)
     summ = summary(rows, rules)
-    benchlib.write_csv(os.path.join(out, "response_power_scan_summary.csv"), summ)
-    for s in summ:
-        print(s)
-    plot(rows, summ, os.path.join(out, "response_power_scan.png"))
+    benchlib.write_rows_and_summary(out, "response_power_scan", rows, summ, plot)
     return 0
 
 

@@ -277,3 +277,31 @@ def labelled_run(csv_name):
     path = os.path.join(out, csv_name)
     rows = read_csv(path) if os.path.exists(path) and "--append" in sys.argv else []
     return opt, build, label, out, os.path.join(build, "app", "inlay-cli"), path, rows
+
+
+def scene_with_response(scene, response, out, tag):
+    """A copy of the scene file `scene` with camera.response set to `response`, written to
+    OUT/TAG.json; returns its path and the path its --lights-json is to take (OUT/TAG_lights.json)."""
+    j = json.load(open(scene))
+    j.setdefault("camera", {})["response"] = response
+    path = os.path.join(out, tag + ".json")
+    json.dump(j, open(path, "w"), indent=1)
+    return path, os.path.join(out, tag + "_lights.json")
+
+
+def rows_of_csvs(paths):
+    """The rows of several CSV files (a --from-csv list, comma-separated), one after the other."""
+    rows = []
+    for f in paths.split(","):
+        rows += [dict(r) for r in csv.DictReader(open(f))]
+    return rows
+
+
+def write_rows_and_summary(out, name, rows, summ, plot):
+    """OUT/NAME.csv (the rows), OUT/NAME_summary.csv (printed too) and plot(rows, summ, OUT/NAME.png)."""
+    write_csv(os.path.join(out, name + ".csv"), rows)
+    write_csv(os.path.join(out, name + "_summary.csv"), summ)
+    for s in summ:
+        print(s)
+    plot(rows, summ, os.path.join(out, name + ".png"))
+
