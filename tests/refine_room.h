@@ -6,10 +6,10 @@
 #include "inlay/lighting/refine.h"
 #include "inlay/modeling/camera.h"
 #include "inlay/modeling/geometry.h"
+#include "inlay/modeling/parallel.h"
 #include "inlay/render/path_tracer.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 
@@ -52,7 +52,7 @@ inline RefineRoom makeRefineRoom(int W, int H, int truthSamples) {
   r.albedo = ImageF(W, H, 3, 0.f);
   r.direct = ImageF(W, H, 3, 0.f);
   const RoomTracer tracer(r.geometry);
-  tbb::parallel_for(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
+  parallelFor(tbb::blocked_range<int>(0, H), [&](const tbb::blocked_range<int>& rows) {
     for (int y = rows.begin(); y < rows.end(); ++y)
       for (int x = 0; x < W; ++x) {
         const auto h = tracer.intersect(r.camera.rayThroughPixel(Vec2(x + 0.5, y + 0.5)), 1e-6);
