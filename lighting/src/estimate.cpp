@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include "inlay/modeling/cpu_time.h"
+#include "inlay/modeling/fingerprint.h"
 #include "inlay/modeling/parallel.h"
 #include <tbb/task_arena.h>
 
@@ -20,7 +21,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -66,27 +66,6 @@ struct UnseenLights {
 struct UnseenAlbedo {
   Vec3 constant = Vec3::Zero();
   std::vector<std::pair<int, double>> fitted;  // (surface, weight)
-};
-
-// FNV-1a over 64-bit words (a tail shorter than a word padded with zeros).
-class Fingerprint {
- public:
-  void bytes(const void* data, size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < n; i += 8) {
-      uint64_t word = 0;
-      std::memcpy(&word, p + i, std::min<size_t>(8, n - i));
-      h_ = (h_ ^ word) * 0x100000001b3ull;
-    }
-  }
-  template <class T>
-  void value(const T& v) {
-    bytes(&v, sizeof v);
-  }
-  uint64_t get() const { return h_; }
-
- private:
-  uint64_t h_ = 0xcbf29ce484222325ull;
 };
 
 // Adds the wall and CPU seconds of its lifetime to the step `name` of `steps` (LightingEstimate::

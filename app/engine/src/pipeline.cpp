@@ -14,6 +14,7 @@
 #include "inlay/render/path_tracer.h"
 #include "inlay/render/scene.h"
 #include "inlay/modeling/cpu_time.h"
+#include "inlay/modeling/fingerprint.h"
 #include "inlay/modeling/parallel.h"
 #include "inlay/modeling/subdivide.h"
 
@@ -21,7 +22,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -816,20 +816,12 @@ Status makeWorkingCopy(Preparation& p, std::string& detail) {
   return {};
 }
 
-// FNV-1a over the photo's values, 64 bits at a time (a tail shorter than a word padded with
-// zeros), and its size: what the camera estimate reads of it.
+// The photo's size and values: what the camera estimate reads of it.
 uint64_t photoFingerprint(const ImageF& photo) {
-  uint64_t h = 1469598103934665603ull;
-  auto mix = [&h](uint64_t v) { h = (h ^ v) * 1099511628211ull; };
-  for (const int v : {photo.width, photo.height, photo.channels}) mix(uint64_t(uint32_t(v)));
-  const auto* bytes = reinterpret_cast<const unsigned char*>(photo.data.data());
-  const size_t n = photo.data.size() * sizeof(float);
-  for (size_t i = 0; i < n; i += 8) {
-    uint64_t word = 0;
-    std::memcpy(&word, bytes + i, std::min<size_t>(8, n - i));
-    mix(word);
-  }
-  return h;
+  Fingerprint f;
+  for (const int v : {photo.width, photo.height, photo.channels}) f.value(v);
+  f.bytes(photo.data.data(), photo.data.size() * sizeof(float));
+  return f.get();
 }
 
 // The camera stage's detail when it took the camera the response check's copy found on the same
