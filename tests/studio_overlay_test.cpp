@@ -37,9 +37,8 @@ void StudioOverlayTest::initTestCase() {
 }
 
 void StudioOverlayTest::theEstimatesLinesLeaveTheObjectsClear() {
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
-  const QString photo = QFileInfo(scene).absoluteDir().filePath(QStringLiteral("photo.png"));
+  const QString photo = examplePhoto();
+  if (photo.isEmpty()) QSKIP("the bundled example is not found");
   MainWindow window;
   QVERIFY(showForWorkflow(window));
   QVERIFY(window.openPath(photo));  // estimated: the tiles' lines are drawn on the floor

@@ -75,9 +75,8 @@ void StudioSmallScreenTest::initTestCase() {
 }
 
 void StudioSmallScreenTest::theWindowFitsASmallScreen() {
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
-  const QString photo = QFileInfo(scene).absoluteDir().filePath(QStringLiteral("photo.png"));
+  const QString photo = examplePhoto();
+  if (photo.isEmpty()) QSKIP("the bundled example is not found");
   MainWindow window;
   QVERIFY(showForWorkflow(window));
   QVERIFY(window.openPath(photo));  // estimated: the Steps dock's longest texts

@@ -96,9 +96,8 @@ void StudioStepsDockTest::initTestCase() {
 }
 
 void StudioStepsDockTest::everyStepFitsInEveryLanguage() {
-  const QString scene = exampleScene();
-  if (scene.isEmpty()) QSKIP("the bundled example is not found");
-  const QString photo = QFileInfo(scene).absoluteDir().filePath(QStringLiteral("photo.png"));
+  const QString photo = examplePhoto();
+  if (photo.isEmpty()) QSKIP("the bundled example is not found");
   MainWindow window;
   QVERIFY(showForWorkflow(window));  // 1280 × 800, the workflow tests' window
   QVERIFY(window.openPath(photo));

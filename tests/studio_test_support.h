@@ -5,7 +5,9 @@
 
 #include "inlay/engine/pipeline.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QString>
 #include <QtTest>
 
@@ -27,6 +29,14 @@ inline QString exampleScene() {
   if (!src.isEmpty() && QFile::exists(src + QStringLiteral("/resources/example/scene.json")))
     return src + QStringLiteral("/resources/example/scene.json");
   return QString::fromStdString(exampleScenePath());
+}
+
+// The bundled example's photo, beside its scene (empty when the example is not found): opened
+// as a photo, the studio estimates the camera and the box itself.
+inline QString examplePhoto() {
+  const QString scene = exampleScene();
+  return scene.isEmpty() ? QString()
+                         : QFileInfo(scene).absoluteDir().filePath(QStringLiteral("photo.png"));
 }
 
 // A drag with the left button along a straight line, in `steps` moves.
